@@ -1,0 +1,65 @@
+"""The model of Section 2: collision matrices, collision words and their matrices.
+
+Relative coordinates p_i = x_{i+1} - x_i, q_i = v_{i+1} - v_i (i = 1, 2, 3).  A
+collision of type a, b, c (pairs 1-2, 2-3, 3-4) maps q to A q, B q, C q.  A word
+w = c_1 c_2 ... c_n (collisions in time order) has the matrix
+M_w = K_{c_n} ... K_{c_1}; for ababcb, M = BCBABA.
+"""
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from .poly import lam, r
+from .runner import UsageError
+
+LETTERS = "abc"
+INDEX = {"a": 0, "b": 1, "c": 2}          # the component p_i that vanishes at the collision
+
+
+def collision_matrix(letter: str, rr=r) -> sp.Matrix:
+    """A, B or C of the paper (l. 209-232)."""
+    h = (1 + rr) / 2
+    return {
+        "a": sp.Matrix([[-rr, 0, 0], [h, 1, 0], [0, 0, 1]]),
+        "b": sp.Matrix([[1, h, 0], [0, -rr, 0], [0, h, 1]]),
+        "c": sp.Matrix([[1, 0, 0], [0, 1, h], [0, 0, -rr]]),
+    }[letter]
+
+
+A, B, C = (collision_matrix(k) for k in LETTERS)
+
+
+def check_word(word: str) -> str:
+    """A collision word over a, b, c, with no letter repeated consecutively
+    (cyclically, as the word is a period); raise UsageError otherwise."""
+    if not isinstance(word, str) or not re.fullmatch(r"[abc]+", word or ""):
+        raise UsageError(f"invalid pattern word {word!r}: use the letters a, b, c")
+    if len(word) < 2 or any(x == y for x, y in zip(word, word[1:] + word[0])):
+        raise UsageError(f"invalid pattern word {word!r}: the same pair cannot collide twice in a row")
+    return word
+
+
+def word_matrix(word: str, rr=r) -> sp.Matrix:
+    """M_w = K_{c_n} ... K_{c_1}: the velocities after one period are M_w q(0)."""
+    M = sp.eye(3)
+    for letter in word:
+        M = collision_matrix(letter, rr) * M
+    return M.applyfunc(sp.factor)
+
+
+def characteristic_polynomial(M: sp.Matrix) -> sp.Expr:
+    """cp(M) = det(λI - M), expanded in λ and r."""
+    return sp.expand((lam * sp.eye(3) - M).det())
+
+
+def check_r(value) -> sp.Rational:
+    """A restitution coefficient in ]0, 1[ as an exact rational; UsageError otherwise."""
+    try:
+        q = sp.Rational(str(value))
+    except (TypeError, ValueError, SyntaxError):
+        raise UsageError(f"invalid restitution coefficient {value!r}: give a number in ]0,1[")
+    if not 0 < q < 1:
+        raise UsageError(f"restitution coefficient r = {value} is outside ]0,1[")
+    return q

@@ -1,0 +1,146 @@
+"""Polynomials over Q: the paper's notation in, python-flint out.
+
+Printed formulas are transcribed as text (``"41*r**10 - 646*r**9 + ..."``) and
+parsed by SymPy with the paper's names: ``r`` the restitution coefficient, ``λ``
+(or ``lam``) the eigenvalue, ``x`` the position fixed point, ``u``, ``v``.
+Heavy arithmetic (Sturm sequences, resultants, root isolation) runs on
+python-flint's ``fmpz_poly``/``fmpq_poly`` and ``fmpz_mpoly``.
+"""
+from __future__ import annotations
+
+import hashlib
+from functools import reduce
+
+import flint
+import sympy as sp
+
+r, lam, x, u, v, s = sp.symbols("r λ x u v s")
+NAMES = {"r": r, "λ": lam, "lam": lam, "lambda": lam, "la": lam, "x": x, "u": u, "v": v}
+
+
+def parse(text: str) -> sp.Expr:
+    """A formula transcribed from the paper, as a SymPy expression (exact)."""
+    text = text.replace("λ", "lam").replace("^", "**").replace("−", "-")
+    return sp.sympify(text, locals=NAMES, rational=True)
+
+
+def expr(e) -> sp.Expr:
+    """Accept a string (parsed) or a SymPy expression."""
+    return parse(e) if isinstance(e, str) else sp.sympify(e)
+
+
+def to_fmpq_poly(e, var=r) -> flint.fmpq_poly:
+    """A univariate polynomial with rational coefficients as ``fmpq_poly``."""
+    coeffs = sp.Poly(expr(e), var).all_coeffs()[::-1]
+    return flint.fmpq_poly([flint.fmpq(int(sp.numer(c)), int(sp.denom(c))) for c in coeffs])
+
+
+def primitive(p) -> flint.fmpz_poly:
+    """The primitive integer polynomial proportional to ``p`` (positive leading coefficient)."""
+    if isinstance(p, flint.fmpz_poly):
+        q = p
+    else:
+        p = flint.fmpq_poly(p)
+        den = _lcm([c.q for c in p.coeffs()])
+        q = flint.fmpz_poly([int(c * den) for c in p.coeffs()])
+    if q.is_zero():
+        return q
+    g = q.content()
+    q = flint.fmpz_poly([c // g for c in q.coeffs()])
+    if q.leading_coefficient() < 0:
+        q = -q
+    return q
+
+
+def _lcm(values):
+    out = flint.fmpz(1)
+    for v_ in values:
+        v_ = flint.fmpz(v_)
+        out = out * v_ // out.gcd(v_)
+    return out
+
+
+def to_fmpz_poly(e, var=r) -> flint.fmpz_poly:
+    """The primitive integer polynomial proportional to a univariate ``e``."""
+    if isinstance(e, (flint.fmpz_poly, flint.fmpq_poly)):
+        return primitive(e)
+    return primitive(to_fmpq_poly(e, var))
+
+
+def from_flint(p, var=r) -> sp.Expr:
+    """An ``fmpz_poly``/``fmpq_poly`` back as a SymPy expression in ``var``."""
+    return sum((sp.Rational(int(c.p), int(c.q)) if isinstance(c, flint.fmpq) else sp.Integer(int(c))) * var**k
+               for k, c in enumerate(p.coeffs()))
+
+
+def squarefree_part(p: flint.fmpz_poly) -> flint.fmpz_poly:
+    """The product of the distinct irreducible factors of ``p``."""
+    _, factors = p.factor_squarefree()
+    return primitive(reduce(lambda a, b: a * b, (f for f, _ in factors), flint.fmpz_poly([1])))
+
+
+def irreducible_factors(p: flint.fmpz_poly) -> list[tuple[flint.fmpz_poly, int]]:
+    """The irreducible factors of ``p`` over Q with multiplicities, primitive, sorted."""
+    _, factors = p.factor()
+    out = [(primitive(f), m) for f, m in factors if f.degree() > 0]
+    return sorted(out, key=lambda fm: (fm[0].degree(), [int(c) for c in fm[0].coeffs()]))
+
+
+def show(e) -> str:
+    """A polynomial in the paper's notation (``r^2 - 10r + 1``) for reports."""
+    if isinstance(e, (flint.fmpz_poly, flint.fmpq_poly)):
+        e = from_flint(e)
+    text = sp.sstr(sp.sympify(e), order="lex")
+    return text.replace("**", "^").replace("*", "")
+
+
+def show_factored(e) -> str:
+    """The factored form of a polynomial expression, for evidence."""
+    if isinstance(e, (flint.fmpz_poly, flint.fmpq_poly)):
+        e = from_flint(e)
+    return show(sp.factor(e))
+
+
+def digest(e) -> str:
+    """A short hash of a large intermediate result, for the report."""
+    return hashlib.sha256(sp.srepr(sp.expand(expr(e))).encode()).hexdigest()[:16]
+
+
+# --- bivariate polynomials in (r, λ) on fmpz_mpoly -------------------------------
+
+MCTX = flint.fmpz_mpoly_ctx.get(("r", "lam", "s"), "lex")
+
+
+def to_mpoly(e) -> flint.fmpz_mpoly:
+    """An integer polynomial in r, λ (and s) as ``fmpz_mpoly``; rational input is cleared
+    of denominators (a positive constant multiple, so signs are kept)."""
+    P = sp.Poly(expr(e), r, lam, s)
+    den = _lcm([int(sp.denom(c)) for c in P.coeffs()] or [1])
+    terms = {m: int(c * int(den)) for m, c in P.terms()}
+    return MCTX.from_dict(terms)
+
+
+def mpoly_to_univariate(p: flint.fmpz_mpoly) -> flint.fmpz_poly:
+    """An ``fmpz_mpoly`` in r alone as ``fmpz_poly``."""
+    d = p.to_dict()
+    deg = max((m[0] for m in d), default=0)
+    coeffs = [0] * (deg + 1)
+    for m, c in d.items():
+        if m[1] or m[2]:
+            raise ValueError("polynomial still depends on λ or s")
+        coeffs[m[0]] = int(c)
+    return flint.fmpz_poly(coeffs)
+
+
+def mpoly_to_expr(p: flint.fmpz_mpoly) -> sp.Expr:
+    return sum(sp.Integer(int(c)) * r**m[0] * lam**m[1] * s**m[2] for m, c in p.to_dict().items())
+
+
+def resultant_lambda(f, g) -> flint.fmpz_poly:
+    """Res_λ(f, g) ∈ Z[r] by python-flint (f, g integer polynomials in r, λ)."""
+    return mpoly_to_univariate(to_mpoly(f).resultant(to_mpoly(g), "lam"))
+
+
+def discriminant_lambda(f) -> flint.fmpz_poly:
+    """Disc_λ(f) ∈ Z[r] by python-flint."""
+    return mpoly_to_univariate(to_mpoly(f).discriminant("lam"))

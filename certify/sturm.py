@@ -1,0 +1,144 @@
+"""Sturm sequences over Q: exact real-root counting and isolation.
+
+Our own implementation, independent of python-flint's root finder, which serves
+as the second route (:func:`flint_real_roots`).  Counts are of *distinct* real
+roots; a polynomial with multiple roots is first divided by gcd(p, p').
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+
+import flint
+
+Q = flint.fmpq
+
+
+def _q(a) -> flint.fmpq:
+    if isinstance(a, flint.fmpq):
+        return a
+    if isinstance(a, Fraction):
+        return Q(a.numerator, a.denominator)
+    return Q(a)
+
+
+def sturm_sequence(p) -> list[flint.fmpq_poly]:
+    """The Sturm sequence p0 = p/gcd(p,p'), p1 = p0', p_{k+1} = -rem(p_{k-1}, p_k)."""
+    p = flint.fmpq_poly(p)
+    g = p.gcd(p.derivative())
+    p0 = p // g if g.degree() > 0 else p
+    seq = [p0, p0.derivative()]
+    while seq[-1].degree() > 0:
+        rem = -(seq[-2] % seq[-1])
+        if rem.is_zero():
+            break
+        seq.append(rem)
+    return seq
+
+
+def _sign(a) -> int:
+    return (a > 0) - (a < 0)
+
+
+def sign_changes(seq, a) -> int:
+    """Number of sign changes of the Sturm sequence at the rational a (zeros skipped)."""
+    a = _q(a)
+    signs = [s for s in (_sign(p(a)) for p in seq) if s != 0]
+    return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
+
+
+def _sign_changes_at_infinity(seq, sign: int) -> int:
+    signs = []
+    for p in seq:
+        lc = _sign(p.coeffs()[-1]) if p.degree() >= 0 else 0
+        signs.append(lc * (sign ** p.degree()) if p.degree() >= 0 else 0)
+    signs = [s for s in signs if s]
+    return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
+
+
+def count_roots(p, a=None, b=None, seq=None) -> int:
+    """Number of distinct real roots of p in ]a, b] (a = -∞, b = +∞ when None)."""
+    seq = seq or sturm_sequence(p)
+    va = _sign_changes_at_infinity(seq, -1) if a is None else sign_changes(seq, a)
+    vb = _sign_changes_at_infinity(seq, 1) if b is None else sign_changes(seq, b)
+    return va - vb
+
+
+def cauchy_bound(p) -> flint.fmpq:
+    """1 + max |a_i / a_n|: every complex root has modulus below it."""
+    c = flint.fmpq_poly(p).coeffs()
+    lead = abs(c[-1])
+    return 1 + max((abs(a) / lead for a in c[:-1]), default=Q(0))
+
+
+def isolate(p, a=None, b=None, width=None) -> list[tuple[flint.fmpq, flint.fmpq]]:
+    """Isolating intervals (lo, hi) of the distinct real roots of p in the open
+    interval ]a, b[, increasing.  Each interval holds exactly one root; lo == hi
+    means the root is that rational; otherwise the root lies in ]lo, hi[ and p
+    does not vanish at lo or hi.  ``width`` refines each interval below it."""
+    p = flint.fmpq_poly(p)
+    seq = sturm_sequence(p)
+    p0 = seq[0]
+    bound = cauchy_bound(p0)
+    a = -bound if a is None else _q(a)
+    b = bound if b is None else _q(b)
+    out = []
+    # roots exactly at b are excluded (open interval): count in ]a, b] minus root at b
+    stack = [(a, b)]
+    while stack:
+        lo, hi = stack.pop()
+        n = count_roots(p0, lo, hi, seq) - (1 if p0(hi) == 0 else 0)
+        if n == 0:
+            continue
+        if n == 1 and p0(hi) != 0 and p0(lo) != 0:
+            out.append((lo, hi))
+            continue
+        mid = (lo + hi) / 2
+        if p0(mid) == 0 and lo < mid < hi:
+            out.append((mid, mid))
+        stack.append((lo, mid))
+        stack.append((mid, hi))
+    # a root at a itself is not in ]a, b[, and count_roots excludes it already
+    out = sorted(set(out), key=lambda iv: iv[0])
+    if width is not None:
+        out = [refine(p0, lo, hi, width) for lo, hi in out]
+    return out
+
+
+def refine(p, lo, hi, width) -> tuple[flint.fmpq, flint.fmpq]:
+    """Bisect an isolating interval of a simple root of p until hi - lo <= width."""
+    p = flint.fmpq_poly(p)
+    lo, hi, width = _q(lo), _q(hi), _q(width)
+    if lo == hi:
+        return lo, hi
+    slo = _sign(p(lo))
+    while hi - lo > width:
+        mid = (lo + hi) / 2
+        sm = _sign(p(mid))
+        if sm == 0:
+            return mid, mid
+        if sm == slo:
+            lo = mid
+        else:
+            hi = mid
+    return lo, hi
+
+
+def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
+    """Second route: python-flint's certified complex root isolation, keeping the
+    roots it proves real (imaginary part exactly zero) inside ]a, b[ (the ball
+    must lie strictly inside, else ValueError: undecided)."""
+    from .poly import primitive, squarefree_part
+    P = squarefree_part(primitive(flint.fmpq_poly(p)))
+    out = []
+    for c, _m in P.complex_roots():
+        if not c.imag.is_zero():
+            continue
+        x = c.real
+        inside_a = a is None or x > _q(a)
+        inside_b = b is None or x < _q(b)
+        outside = (a is not None and x < _q(a)) or (b is not None and x > _q(b))
+        if inside_a and inside_b:
+            out.append(x)
+        elif not outside:
+            raise ValueError(f"root {x} not separated from the interval ends")
+    return sorted(out, key=lambda z: float(z.mid()))
