@@ -8,6 +8,7 @@ printed from certified enclosures only.
 """
 from __future__ import annotations
 
+import itertools
 from fractions import Fraction
 from functools import total_ordering
 
@@ -22,6 +23,20 @@ Q = flint.fmpq
 
 def _sign(a) -> int:
     return (a > 0) - (a < 0)
+
+
+def to_fmpq(a) -> flint.fmpq:
+    """An exact rational from int, Fraction, SymPy Rational, str or fmpq."""
+    if isinstance(a, flint.fmpq):
+        return a
+    if isinstance(a, (int, flint.fmpz)):
+        return Q(a)
+    if isinstance(a, str):
+        a = Fraction(a)
+    if isinstance(a, Fraction):
+        return Q(a.numerator, a.denominator)
+    a = sp.Rational(a)
+    return Q(int(a.p), int(a.q))
 
 
 @total_ordering
@@ -41,7 +56,7 @@ class Algebraic:
 
     @classmethod
     def rational(cls, a) -> "Algebraic":
-        a = Q(a) if not isinstance(a, Fraction) else Q(a.numerator, a.denominator)
+        a = to_fmpq(a)
         return cls(flint.fmpq_poly([-a, 1]), a, a)
 
     @classmethod
@@ -53,11 +68,26 @@ class Algebraic:
     @classmethod
     def surd(cls, a, b, n) -> "Algebraic":
         """a + b·√n for rationals a, b and a positive integer n, not a square."""
-        a, b = Q(a), Q(b)
+        a, b = to_fmpq(a), to_fmpq(b)
         # (t - a)^2 - b^2 n = 0
         p = flint.fmpq_poly([a * a - b * b * n, -2 * a, 1])
         roots = cls.roots(p)
         return roots[1] if b > 0 else roots[0]
+
+    def minimal_polynomial(self) -> flint.fmpz_poly:
+        """The irreducible factor of p vanishing at the number (p is replaced by it)."""
+        if self.p.degree() > 1:
+            _, factors = self.p.factor()
+            for f, _m in factors:
+                f = primitive(f)
+                if self.is_rational:
+                    if f(self.lo) == 0:
+                        self.p = f
+                        break
+                elif count_roots(f, self.lo, self.hi) - (f(self.hi) == 0) == 1:
+                    self.p = f
+                    break
+        return self.p
 
     @property
     def is_rational(self) -> bool:
@@ -82,9 +112,17 @@ class Algebraic:
             flint.ctx.prec = old
 
     def digits(self, n: int = 10) -> str:
-        """The number rounded to n significant digits, from a certified enclosure."""
-        self.refine(Q(1, 10 ** (n + 3)))
-        return _fmt((self.lo + self.hi) / 2, n)
+        """The number rounded to n significant digits, from a certified enclosure:
+        the interval is refined until both of its ends round alike."""
+        for k in itertools.count():
+            a, b = _fmt(self.lo, n), _fmt(self.hi, n)
+            if a == b:
+                return a
+            if k == 100 and self.minimal_polynomial().degree() == 1:
+                # a rational number (possibly a rounding tie): make it exact
+                c = self.p.coeffs()
+                self.lo = self.hi = Q(-c[0], c[1])
+            self.refine((self.hi - self.lo) / 2)
 
     def __float__(self) -> float:
         self.refine(Q(1, 2 ** 60))
@@ -138,7 +176,8 @@ class Algebraic:
         return self._cmp(other) < 0
 
     def __hash__(self):
-        return hash((str(self.p),))
+        # equal numbers may be given by different polynomials: hash the minimal one
+        return hash((str(self.minimal_polynomial()),))
 
     def in_rounding_interval(self, printed: str) -> bool:
         """Whether the number rounds to the printed decimal ``printed`` (e.g. "0.11384"):
@@ -154,16 +193,44 @@ class Algebraic:
         """'root of p in ]lo, hi[ ≈ digits' for the report."""
         if self.is_rational:
             return f"{self.lo}"
-        return f"the root of {show(self.p)} in ]{self.lo}, {self.hi}[ ≈ {self.digits(12)}"
+        self.minimal_polynomial()
+        self.refine(Q(1, 10 ** 12))
+        lo, hi = self.lo, self.hi
+        for k in range(12, 40, 4):            # a short isolating interval with decimal ends
+            s = 10 ** k
+            L, H = Q((self.lo * s).floor(), s), Q((self.hi * s).ceil(), s)
+            if self.p(L) != 0 and self.p(H) != 0 and count_roots(self.p, L, H) == 1:
+                lo, hi = L, H
+                break
+        return f"the root of {show(self.p)} in ]{_dec(lo)}, {_dec(hi)}[ ≈ {self.digits(12)}"
 
     def __repr__(self):
         return f"Algebraic({self.describe()})"
 
 
+def _dec(q: flint.fmpq) -> str:
+    """A rational with a power-of-ten denominator as a decimal string (exact)."""
+    d = int(q.q)
+    k = len(str(d)) - 1
+    if 10 ** k != d:
+        return str(q)
+    n = int(q.p)
+    sign, n = ("-" if n < 0 else ""), abs(n)
+    return f"{sign}{n // d}.{str(n % d).zfill(k)}" if k else f"{sign}{n}"
+
+
 def _fmt(q: flint.fmpq, n: int) -> str:
-    """q to n significant digits (q is a certified midpoint of a tiny interval)."""
-    f = sp.Rational(int(q.p), int(q.q))
-    return str(sp.Float(f, n))
+    """The rational q correctly rounded (half to even) to n significant digits."""
+    f = Fraction(int(q.p), int(q.q))
+    if f == 0:
+        return str(sp.Float(0, n))
+    e = len(str(abs(f.numerator))) - len(str(f.denominator))
+    while Fraction(10) ** e > abs(f):
+        e -= 1
+    while Fraction(10) ** (e + 1) <= abs(f):
+        e += 1
+    d = round(f / Fraction(10) ** (e - n + 1))          # exact integer rounding
+    return str(sp.Float(sp.Rational(d) * sp.Rational(10) ** (e - n + 1), n))
 
 
 def sign_at(poly, alpha: Algebraic, prec: int = 64, maxprec: int = 4096) -> int:
@@ -171,6 +238,8 @@ def sign_at(poly, alpha: Algebraic, prec: int = 64, maxprec: int = 4096) -> int:
     0 when the polynomial and the minimal factor share the root, otherwise decided
     by ball evaluation at increasing precision."""
     P = flint.fmpq_poly(poly) if not isinstance(poly, flint.fmpq_poly) else poly
+    if P.is_zero():
+        return 0
     if alpha.is_rational:
         return _sign(P(alpha.lo))
     g = primitive(P).gcd(alpha.p) if P.degree() >= 0 else flint.fmpz_poly([0])
@@ -189,3 +258,23 @@ def sign_at(poly, alpha: Algebraic, prec: int = 64, maxprec: int = 4096) -> int:
             return -1
         prec *= 2
     raise ArithmeticError("sign undecided")
+
+
+def sign_intervals(poly, lo, hi) -> list[tuple[object, object, int]]:
+    """The sign of a univariate polynomial on each open interval between its
+    consecutive real roots in ]lo, hi[: [(left end, right end, sign)], the ends
+    rationals or Algebraic roots (exact Sturm isolation, exact sample signs)."""
+    P = flint.fmpq_poly(poly) if not isinstance(poly, flint.fmpq_poly) else poly
+    roots = Algebraic.roots(primitive(P), lo, hi)
+    ends = [Algebraic.rational(lo)] + roots + [Algebraic.rational(hi)]
+    out = []
+    for a, b in zip(ends, ends[1:]):
+        a.refine(Q(1, 2 ** 20))
+        b.refine(Q(1, 2 ** 20))
+        t = (a.hi + b.lo) / 2 if a.hi < b.lo else None
+        while t is None or not (a < Algebraic.rational(t) < b):
+            a.refine((a.hi - a.lo) / 16)
+            b.refine((b.hi - b.lo) / 16)
+            t = (a.hi + b.lo) / 2
+        out.append((a, b, _sign(P(t))))
+    return out

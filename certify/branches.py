@@ -191,6 +191,7 @@ class Spectrum:
         self.disc = primitive(discriminant_lambda(self.cp))
         self.lc = primitive(flint.fmpq_poly([0]) + _univariate(self.P.LC()))
         self._resultants = {}
+        self._tables = {}
 
     def at(self, r0) -> flint.fmpq_poly:
         """cp(λ; r0) ∈ Q[λ] for a rational r0."""
@@ -229,7 +230,14 @@ class Spectrum:
             else [a for a in Algebraic.roots(P, _outer(lo, -1), _outer(hi, 1)) if lo < a < hi]
 
     def sign_table(self, cond: Condition, lo, hi) -> SignTable:
-        """Certified signs of ``cond`` on every branch over ]lo, hi[."""
+        """Certified signs of ``cond`` on every branch over ]lo, hi[ (memoised per
+        condition and interval, so certificates sharing a condition share the work)."""
+        key = (sp.srepr(cond.N), sp.srepr(cond.D), sp.srepr(cond.delta), repr(lo), repr(hi))
+        if key not in self._tables:
+            self._tables[key] = self._sign_table(cond, lo, hi)
+        return self._tables[key]
+
+    def _sign_table(self, cond: Condition, lo, hi) -> SignTable:
         crit = self.critical_values(cond, lo, hi)
         ends = [_alg(lo)] + crit + [_alg(hi)]
         cells = []
@@ -240,33 +248,179 @@ class Spectrum:
         points = [self.sign_at_point(cond, rc) for rc in crit]
         return SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, points)
 
+    def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
+        """Exact test that the polynomial h(r, λ) vanishes on branch ``branch`` at r = rc:
+        G = gcd(cp(λ; rc), h(rc, λ)) is computed in Q(rc)[λ]; h vanishes there iff
+        the branch's eigenvalue is a root of G, decided by disjoint certified balls."""
+        m = sp.Poly(r - sp.Rational(int(rc.lo.p), int(rc.lo.q)), r) if rc.is_rational \
+            else _mod_poly(rc.minimal_polynomial())
+        H = sp.Poly(sp.expand(expr(h)), lam)
+        f = [_kred(c, m) for c in self.P.all_coeffs()]
+        hk = [_kred(c, m) for c in H.all_coeffs()]
+        while hk and hk[0].is_zero:
+            hk = hk[1:]
+        if not hk:
+            return True
+        G = _kpoly_gcd(f, hk, m)
+        if len(G) == 1:
+            return False
+        dG = [_kred((c * (len(G) - 1 - i)).as_expr(), m) for i, c in enumerate(G[:-1])]
+        g2 = _kpoly_gcd(G, dG, m)
+        G = _kpoly_div(G, g2, m) if len(g2) > 1 else G
+        branches = _branches_at(self.P, rc, maxprec)
+        if branches is None or branch >= len(branches):
+            raise ArithmeticError("branch not isolated at this point")
+        prec = 128
+        while prec <= maxprec:
+            zeros = _sorted_real_roots(G, rc, prec)
+            balls = [b(prec) for b in branches]
+            if zeros is not None:
+                mine = balls[branch]
+                others = [b for k, b in enumerate(balls) if k != branch and not (b.overlaps(mine))]
+                hit = [z for z in zeros if z.overlaps(mine)]
+                if all(not z.overlaps(o) for z in hit for o in others):
+                    return bool(hit)
+            prec *= 2
+        raise ArithmeticError("zero test undecided")
+
     def sign_at_point(self, cond: Condition, rc: Algebraic, maxprec: int = 1024):
         """Signs of g on the branches at an algebraic r ('?' where undecided: g
-        vanishing or a pole there), or None when the branches cannot be isolated
-        (two of them collide at rc)."""
+        vanishing or a pole there), or None when the branches cannot be isolated.
+        Where two branches collide at rc, cp(λ; rc) is made squarefree exactly in
+        Q(rc)[λ] first, and the multiple root is listed once per branch."""
+        roots = _branches_at(self.P, rc, maxprec)
+        if roots is None:
+            return None
         prec, out = 128, None
         while prec <= maxprec:
             old = flint.ctx.prec
             flint.ctx.prec = prec + 30
             try:
                 R = rc.arb(prec)
-                coeffs = [_arb_eval_r(c, R) for c in self.P.all_coeffs()[::-1]]
-                reals = _real_roots(flint.acb_poly(coeffs).roots())
-            except ValueError:
-                reals = None
+                out = [_sign_ball(cond, R, L(prec)) for L in roots]
             finally:
                 flint.ctx.prec = old
-            if reals is not None:
-                reals.sort(key=lambda z: float(z.mid()), reverse=True)
-                flint.ctx.prec = prec + 30
-                try:
-                    out = [_sign_ball(cond, R, L) for L in reals]
-                finally:
-                    flint.ctx.prec = old
-                if "?" not in out:
-                    return out
+            if "?" not in out:
+                return out
             prec *= 2
         return out
+
+
+def _mod_poly(m):
+    return sp.Poly(from_flint_int(m), r)
+
+
+def from_flint_int(m):
+    return sum(sp.Integer(int(c)) * r ** k for k, c in enumerate(m.coeffs()))
+
+
+def _kred(c, m):
+    """An element of Q(rc) = Q[r]/(m) in normal form."""
+    return sp.Poly(c, r).rem(m)
+
+
+def _kpoly_gcd(f, g, m):
+    """gcd in K[λ], K = Q[r]/(m), m irreducible; polynomials as lists of K-elements
+    (sympy Polys in r), highest degree first; the result is monic."""
+    def strip(p):
+        while p and p[0].is_zero:
+            p = p[1:]
+        return p
+
+    def monic(p):
+        inv = sp.Poly(sp.invert(p[0].as_expr(), m.as_expr(), r), r)
+        return [_kred((c * inv).as_expr(), m) for c in p]
+
+    f, g = strip(f), strip(g)
+    while g:
+        g = monic(g)
+        while len(f) >= len(g):
+            q = f[0]
+            shifted = g + [sp.Poly(0, r)] * (len(f) - len(g))
+            f = strip([_kred((a - q * b).as_expr(), m) for a, b in zip(f, shifted)])
+        f, g = g, f
+    return monic(f)
+
+
+def _kpoly_div(f, g, m):
+    """Exact quotient f / g in K[λ] (g monic)."""
+    f, out = list(f), []
+    while len(f) >= len(g):
+        q = f[0]
+        out.append(q)
+        shifted = g + [sp.Poly(0, r)] * (len(f) - len(g))
+        f = [_kred((a - q * b).as_expr(), m) for a, b in zip(f, shifted)][1:]
+    return out
+
+
+def _branches_at(P: sp.Poly, rc: Algebraic, maxprec: int):
+    """The real roots of cp(λ; rc), largest first, each repeated by its multiplicity
+    (1, or 2 for the root of a linear gcd(cp, cp')), as functions prec -> arb ball;
+    None when they cannot be isolated."""
+    if rc.is_rational:
+        m = sp.Poly(r - sp.Rational(int(rc.lo.p), int(rc.lo.q)), r)
+    else:
+        m = _mod_poly(rc.minimal_polynomial())
+    f = [_kred(c, m) for c in P.all_coeffs()]
+    df = [_kred(c, m) for c in P.diff(lam).all_coeffs()]
+    g = _kpoly_gcd(f, df, m)
+    if len(g) > 2:
+        return None                      # a root of multiplicity > 2: not handled
+    sqf = _kpoly_div(f, g, m) if len(g) > 1 else f
+    prec = 128
+    while prec <= maxprec:
+        reals = _sorted_real_roots(sqf, rc, prec)
+        if reals is not None:
+            mult = [1] * len(reals)
+            if len(g) == 2:
+                old = flint.ctx.prec
+                flint.ctx.prec = prec + 30
+                try:
+                    vals = [_kpoly_eval(g, rc.arb(prec), z) for z in reals]
+                finally:
+                    flint.ctx.prec = old
+                hits = [i for i, val in enumerate(vals) if val.contains(0)]
+                if len(hits) != 1:
+                    prec *= 2
+                    continue
+                mult[hits[0]] = 2
+            return [_root_function(sqf, rc, k) for k in range(len(reals)) for _ in range(mult[k])]
+        prec *= 2
+    return None
+
+
+def _sorted_real_roots(sqf, rc, prec):
+    """Certified real roots of a squarefree K[λ] polynomial at rc, largest first."""
+    old = flint.ctx.prec
+    flint.ctx.prec = prec + 30
+    try:
+        R = rc.arb(prec)
+        coeffs = [_arb_eval_r(c.as_expr(), R) for c in sqf][::-1]
+        reals = _real_roots(flint.acb_poly(coeffs).roots())
+    except ValueError:
+        return None
+    finally:
+        flint.ctx.prec = old
+    if reals is None:
+        return None
+    return sorted(reals, key=lambda z: float(z.mid()), reverse=True)
+
+
+def _kpoly_eval(g, R, z):
+    val = flint.arb(0)
+    for c in g:
+        val = val * z + _arb_eval_r(c.as_expr(), R).real
+    return val
+
+
+def _root_function(sqf, rc, k):
+    """prec -> a ball around the k-th largest real root of the squarefree polynomial."""
+    def ball(prec):
+        reals = _sorted_real_roots(sqf, rc, prec)
+        if reals is None:
+            raise ValueError("roots lost at higher precision")
+        return reals[k]
+    return ball
 
 
 def _real_roots(roots):

@@ -1,0 +1,256 @@
+"""The command line: ``python -m certify COMMAND`` (or the ``certify`` script).
+
+    all [--check] [--out DIR]   run every certificate, write DIR/REPORT.md,
+                                DIR/report.json, DIR/timings.json, DIR/figures/
+    run ID [ID ...] [--out DIR] run some certificates, print their verdicts
+    list                        list the certificates: id, paper line, statement
+    bench [--repeat N]          time the whole run (benchmarks/bench.py)
+
+Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
+1 when one FAILs (or, with ``all --check``, when the committed REPORT.md is
+stale); 2 for a usage error; 130 when interrupted.  Errors are reported in one
+line on stderr, never as a traceback (set ``CERTIFY_DEBUG=1`` to see one).
+"""
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import os
+import shutil
+import sys
+import traceback
+from contextlib import nullcontext
+from pathlib import Path
+
+from certify import figures, progress, report, runner
+from certify.files import ensure_writable, read_text_or_none
+from certify.runner import FAIL, UsageError
+
+DEFAULT_OUT = Path("reports")
+REPO_ROOT = Path(__file__).resolve().parent.parent
+
+
+# --------------------------------------------------------------------------
+# Running certificates
+
+def prepare_output(out: Path) -> Path:
+    """Check that ``out`` and ``out/figures`` can be written, before any work."""
+    ensure_writable(out)
+    ensure_writable(out / "figures")
+    return out
+
+
+def execute(ids, out: Path | None):
+    """Run the certificates ``ids`` (all when None), figures going to ``out/figures``.
+
+    Returns the runner's ``(results, timings)``."""
+    saving = figures.output_dir(out / "figures") if out is not None else nullcontext()
+    with saving:
+        return runner.run(ids, progress=progress.show)
+
+
+def failing(results) -> list[str]:
+    """The ids of the certificates that FAIL."""
+    return [cert.id for cert, outcome in results if outcome.status == FAIL]
+
+
+def exit_code(results) -> int:
+    """0 when nothing FAILs, 1 otherwise."""
+    return 1 if failing(results) else 0
+
+
+def say(message: str) -> None:
+    """One line on stderr, prefixed with the program name."""
+    print(f"certify: {message}", file=sys.stderr)
+
+
+def warn_missing_figures(results, out: Path) -> None:
+    """Warn about figures an outcome lists but no certificate wrote."""
+    for cert, outcome in results:
+        for name in outcome.figures:
+            if not (out / "figures" / name).is_file():
+                say(f"warning: {cert.id} lists figure {name!r}, which was not written")
+
+
+def finish(results) -> int:
+    """Print the summary line (stdout) and the failing ids (stderr); the exit code."""
+    print(report.summary_line(results))
+    if failing(results):
+        say("FAIL: " + ", ".join(failing(results)))
+    return exit_code(results)
+
+
+# --------------------------------------------------------------------------
+# The commands
+
+def cmd_all(args) -> int:
+    """Run everything, write the report; with --check, also fail on a stale report."""
+    out = prepare_output(args.out)
+    committed = read_text_or_none(out / "REPORT.md")
+    results, timings = execute(None, out)
+    markdown = report.write_report(results, timings, out)
+    figures.prune(out / "figures", keep={name for _, o in results for name in o.figures})
+    warn_missing_figures(results, out)
+    code = finish(results)
+    if args.check:
+        stale = report.changed_parts(committed, markdown)
+        if stale == ["missing"]:
+            say(f"{out / 'REPORT.md'} was missing: generated it now, commit it")
+        elif stale:
+            say(f"{out / 'REPORT.md'} was stale (changed: {', '.join(stale)}): "
+                "regenerated it, commit the new one")
+        code = 1 if stale else code
+    return code
+
+
+def _clip(text: str, width: int | None) -> str:
+    return text if width is None or len(text) <= width else text[: max(width - 1, 0)] + "…"
+
+
+def print_results(results) -> None:
+    """A compact table: id, status, statement; failing checks under a FAIL."""
+    width = shutil.get_terminal_size().columns if sys.stdout.isatty() else None
+    w = max((len(cert.id) for cert, _ in results), default=2)
+    for cert, outcome in results:
+        head = f"{cert.id:<{w}}  {outcome.status:<8}  "
+        print(head + _clip(" ".join(cert.statement.split()), width and width - len(head)))
+        if outcome.status != FAIL:
+            continue
+        for check in outcome.printed + outcome.corrected:
+            if not report.check_holds(check):
+                first = str(check.evidence[0]).strip().split("\n")[0] if check.evidence else ""
+                line = " ".join(check.statement.split()) + (f": {first}" if first else "")
+                print(" " * len(head) + _clip("✗ " + line, width and width - len(head)))
+
+
+def cmd_run(args) -> int:
+    """Run the named certificates; write a report only when --out is given."""
+    runner.select(args.ids)  # an unknown id is a usage error before anything is created
+    out = prepare_output(args.out) if args.out is not None else None
+    results, timings = execute(args.ids, out)
+    print_results(results)
+    if out is not None:
+        report.write_report(results, timings, out)
+        warn_missing_figures(results, out)
+    return finish(results)
+
+
+def cmd_list(args) -> int:
+    """One line per certificate: id, paper line, statement."""
+    certs = runner.select()
+    w = max((len(c.id) for c in certs), default=2)
+    lw = max((len(c.line) for c in certs), default=4)
+    for c in certs:
+        print(f"{c.id:<{w}}  {c.line:<{lw}}  {' '.join(c.statement.split())}")
+    return 0
+
+
+def load_bench():
+    """Import ``benchmarks/bench.py`` from the source checkout (it is not a package)."""
+    path = REPO_ROOT / "benchmarks" / "bench.py"
+    if not path.is_file():
+        raise UsageError(f"no benchmark script at {path} (bench needs a source checkout)")
+    spec = importlib.util.spec_from_file_location("certify_bench", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def cmd_bench(args) -> int:
+    """Time the whole run, see benchmarks/bench.py."""
+    return load_bench().main(["--repeat", str(args.repeat)])
+
+
+# --------------------------------------------------------------------------
+# Parsing
+
+class Parser(argparse.ArgumentParser):
+    """An argument parser whose errors are UsageErrors: one line, exit code 2."""
+
+    def error(self, message):
+        raise UsageError(message)
+
+
+def positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def build_parser() -> Parser:
+    """The parser of ``certify COMMAND [options]``."""
+    parser = Parser(prog="certify", description="Check every claim of arXiv:2411.10324 "
+                    "in exact arithmetic and write the report.",
+                    epilog="exit codes: 0 all PASS/ERRATUM/OBSERVED, 1 a FAIL or a stale "
+                    "report, 2 usage error, 130 interrupted")
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+
+    p = commands.add_parser("all", help="run every certificate and write the report")
+    p.add_argument("--check", action="store_true",
+                   help="exit 1 also when the existing DIR/REPORT.md was stale")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR",
+                   help="output directory (default: reports)")
+    p.set_defaults(func=cmd_all)
+
+    p = commands.add_parser("run", help="run some certificates and print their verdicts")
+    p.add_argument("ids", nargs="+", metavar="ID",
+                   help="claim ids such as T5; T10 also selects T10.1, T10.2, ...")
+    p.add_argument("--out", type=Path, default=None, metavar="DIR",
+                   help="also write a report of these certificates into DIR")
+    p.set_defaults(func=cmd_run)
+
+    p = commands.add_parser("list", help="list the certificates")
+    p.set_defaults(func=cmd_list)
+
+    p = commands.add_parser("bench", help="time the whole run")
+    p.add_argument("--repeat", type=positive_int, default=5, metavar="N",
+                   help="number of runs (default: 5)")
+    p.set_defaults(func=cmd_bench)
+    return parser
+
+
+def describe(exc: BaseException) -> str:
+    """An unexpected exception in one line: type, message, and where it was raised."""
+    text = f"{type(exc).__name__}: {' '.join(str(exc).split())}"
+    frames = traceback.extract_tb(exc.__traceback__)
+    if frames:
+        where = frames[-1]
+        try:
+            name = os.path.relpath(where.filename)
+        except ValueError:
+            name = where.filename
+        text += f" (at {name}:{where.lineno})"
+    return text
+
+
+def main(argv=None) -> int:
+    """Run the command line ``argv`` (default: sys.argv[1:]); return the exit code."""
+    for stream in (sys.stdout, sys.stderr):  # never die on a character the terminal lacks
+        if hasattr(stream, "reconfigure"):
+            stream.reconfigure(errors="replace")
+    try:
+        args = build_parser().parse_args(argv)
+        return args.func(args)
+    except UsageError as exc:
+        progress.clear()
+        say(f"error: {exc}")
+        return 2
+    except KeyboardInterrupt:
+        progress.clear()
+        say("interrupted")
+        return 130
+    except SystemExit as exc:  # --help
+        return exc.code if isinstance(exc.code, int) else 0
+    except BrokenPipeError:  # e.g. `certify list | head`
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except Exception as exc:
+        if os.environ.get("CERTIFY_DEBUG"):
+            raise
+        progress.clear()
+        say(f"internal error: {describe(exc)}; set CERTIFY_DEBUG=1 for the traceback")
+        return 1

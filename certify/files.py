@@ -1,0 +1,73 @@
+"""Writing output files safely: atomically, and only where we may write.
+
+Every file that ``certify`` produces (REPORT.md, report.json, timings.json, the
+figures) is first written to a temporary file in the same directory and then
+moved over the target with :func:`os.replace`, which is atomic on POSIX and
+Windows.  A run that crashes or is interrupted therefore leaves the previous
+file intact, never a half-written one.
+"""
+from __future__ import annotations
+
+import os
+import tempfile
+from contextlib import contextmanager, suppress
+from pathlib import Path
+
+from certify.runner import UsageError
+
+# The process umask, read once: mkstemp creates files readable by the owner
+# only, and a report should get the same permissions as any other new file.
+_UMASK = os.umask(0)
+os.umask(_UMASK)
+
+
+@contextmanager
+def atomic_path(path):
+    """Yield a temporary path next to ``path``; it replaces ``path`` on success.
+
+    If the body raises (or the process dies), the temporary file is removed (or
+    left as a hidden ``.NAME.*.tmp`` file) and ``path`` keeps its old content.
+    """
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        os.chmod(tmp, 0o666 & ~_UMASK)
+        os.replace(tmp, path)
+    except BaseException:
+        with suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
+def write_atomic(path, data: str | bytes) -> None:
+    """Write ``data`` (text as UTF-8, or bytes) to ``path`` atomically."""
+    raw = data.encode("utf-8") if isinstance(data, str) else data
+    with atomic_path(path) as tmp:
+        tmp.write_bytes(raw)
+
+
+def read_text_or_none(path) -> str | None:
+    """The UTF-8 text of ``path``, or None when it does not exist or cannot be read."""
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
+def ensure_writable(directory) -> Path:
+    """Create ``directory`` if needed and prove that a file can be written there.
+
+    Raises :class:`UsageError` (exit code 2) with a one-line reason otherwise, so
+    that the CLI can refuse an output directory *before* running certificates.
+    """
+    directory = Path(directory)
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=directory, prefix=".certify-probe-"):
+            pass
+    except OSError as exc:
+        reason = exc.strerror or type(exc).__name__
+        raise UsageError(f"cannot write to output directory {str(directory)!r}: {reason}") from None
+    return directory

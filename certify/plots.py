@@ -1,0 +1,95 @@
+"""Figures regenerated from certified data (the paper's figures are placeholders).
+
+Curves are drawn with floats (figures only); what they show — the number of real
+branches, the sign of a condition on each branch, the critical values of r — comes
+from the certified sign tables.  Nothing is drawn when figures are not being saved.
+"""
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from . import figures
+from .poly import lam, r
+
+COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:purple")
+BRANCH_NAMES = ("upper", "middle", "lower")
+
+
+def branch_curves(spectrum, rs: np.ndarray) -> np.ndarray:
+    """Real eigenvalues at each r (floats, largest first, NaN where fewer are real)."""
+    coeffs = [sp.lambdify(r, c, "numpy") for c in spectrum.P.all_coeffs()]
+    out = np.full((len(rs), spectrum.degree), np.nan)
+    for i, t in enumerate(rs):
+        roots = np.roots([float(np.broadcast_to(f(t), ())) for f in coeffs])
+        real = np.sort(roots[np.abs(roots.imag) < 1e-9].real)[::-1]
+        out[i, : len(real)] = real
+    return out
+
+
+def _cell_index(table, t: float) -> int | None:
+    for k, cell in enumerate(table.cells):
+        if float(cell.lo) < t < float(cell.hi):
+            return k
+    return None
+
+
+def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
+    """Figures 3.1-3.2: the real spectrum of M on ]0,1[ and its zoom 0<r<0.13, 0<λ<0.05.
+    Branches are taken from the certified table: a point is drawn on branch k only
+    where the table proves k+1 real eigenvalues."""
+    if not figures.enabled():
+        return ["spectrum.png", "spectrum_zoom.png"]
+    import matplotlib.pyplot as plt
+    names = []
+    for name, (r_lo, r_hi), ylim in (("spectrum.png", (1e-4, 0.9999), None),
+                                     ("spectrum_zoom.png", (1e-4, 0.13), (0, 0.05))):
+        rs = np.linspace(r_lo, r_hi, 1500)
+        curves = branch_curves(spectrum, rs)
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        for k in range(spectrum.degree):
+            ok = np.array([(c := _cell_index(table, t)) is not None and k < len(table.cells[c].branches) for t in rs])
+            ax.plot(rs[ok], np.where(ok, curves[:, k], np.nan)[ok], ".", ms=1.5, color=COLORS[k],
+                    label=BRANCH_NAMES[k] + " branch" if k < 3 else f"branch {k}")
+        for label, value in marks.items():
+            ax.axvline(float(value), color="grey", lw=0.6, ls="--")
+            ax.annotate(label, (float(value), 1.0), xycoords=("data", "axes fraction"), fontsize=7,
+                        rotation=90, va="top", ha="right")
+        ax.set_xlim(r_lo, r_hi)
+        if ylim:
+            ax.set_ylim(*ylim)
+        ax.set_xlabel("r")
+        ax.set_ylabel("real eigenvalues λ of M")
+        ax.legend(loc="best", fontsize=7, markerscale=6)
+        names.append(figures.save_figure(fig, name))
+    return names
+
+
+def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=None, marks=None) -> str:
+    """Figures 3.3-3.4: each branch coloured by the certified sign of a condition."""
+    if not figures.enabled():
+        return name
+    import matplotlib.pyplot as plt
+    rs = np.linspace(xlim[0], xlim[1], 1500)
+    curves = branch_curves(spectrum, rs)
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    for sign, color, label in ((1, "tab:red", "> 0"), (-1, "tab:blue", "< 0")):
+        for k in range(spectrum.degree):
+            ok = np.array([(c := _cell_index(table, t)) is not None and k < len(table.cells[c].signs)
+                           and table.cells[c].signs[k] == sign for t in rs])
+            if ok.any():
+                ax.plot(rs[ok], curves[ok, k], ".", ms=1.5, color=color, label=label)
+                label = None
+    for label, value in (marks or {}).items():
+        ax.axvline(float(value), color="grey", lw=0.6, ls="--")
+        ax.annotate(label, (float(value), 1.0), xycoords=("data", "axes fraction"), fontsize=7,
+                    rotation=90, va="top", ha="right")
+    ax.set_xlim(*xlim)
+    if ylim:
+        ax.set_ylim(*ylim)
+    ax.set_yscale("symlog", linthresh=1e-4)
+    ax.set_xlabel("r")
+    ax.set_ylabel("λ")
+    ax.set_title(title, fontsize=9)
+    ax.legend(loc="best", fontsize=7, markerscale=6)
+    return figures.save_figure(fig, name)

@@ -1,0 +1,286 @@
+"""The report: outcomes in, ``REPORT.md``, ``report.json`` and ``timings.json`` out.
+
+``REPORT.md`` and ``report.json`` depend only on the outcomes: the same code
+gives the same bytes (no dates, timings or machine names), so a committed
+report can be compared with a regenerated one (``python -m certify all
+--check``).  Timings go to ``timings.json`` only.
+
+``results`` is what :func:`certify.runner.run` returns first: a list of
+``(Certificate, Outcome)`` pairs, in the order they are to be shown.
+
+Evidence strings and statements are Markdown fragments written by the
+certificates; they are kept as given, except that ``|`` is escaped inside table
+cells and an unclosed code fence is closed so that it cannot swallow the rest
+of the report.
+"""
+from __future__ import annotations
+
+import json
+import re
+from itertools import zip_longest
+from pathlib import Path
+from urllib.parse import quote
+
+from certify.files import write_atomic
+from certify.runner import ERRATUM, FAIL, OBSERVED, PASS, STATUSES
+
+PAPER = ("V. Dolmaire and M. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
+         "particles: asymmetric collision sequences and spherical billiard reduction*, "
+         "arXiv:2411.10324")
+
+MEANING = {
+    PASS: "the statement as printed is certified in exact arithmetic "
+          "(rationals, integer polynomials, isolated algebraic numbers, rigorous ball arithmetic).",
+    ERRATUM: "the statement as printed is false; a corrected statement is certified "
+             "and shown next to it.",
+    FAIL: "neither the printed nor a corrected statement could be certified, "
+          "or a check could not be completed rigorously.",
+    OBSERVED: "a numerical observation (Section 5), reported with its parameters and "
+              "figures; it is not a theorem and is never counted as one.",
+}
+
+MARK = {True: "✓", False: "✗"}
+
+
+# --------------------------------------------------------------------------
+# Small Markdown helpers
+
+def _one_line(text) -> str:
+    """``text`` with every run of whitespace (newlines included) made one space."""
+    return " ".join(str(text).split())
+
+
+def _cell(text) -> str:
+    """``text`` fit for a table cell: one line, ``|`` escaped."""
+    return _one_line(text).replace("|", "\\|")
+
+
+def _fragment(text) -> str:
+    """An evidence fragment as given, without surrounding blank lines and with
+    an unclosed code fence closed."""
+    body = str(text).strip("\n")
+    fences = sum(1 for line in body.splitlines() if line.lstrip().startswith(("```", "~~~")))
+    if fences % 2:
+        body += "\n```"
+    return body
+
+
+def _bullet(text, indent: int = 0) -> str:
+    """``text`` as a list item at ``indent`` spaces; later lines are indented to
+    the item's content column so that code blocks and tables stay inside it."""
+    pad = " " * (indent + 2)
+    first, *rest = _fragment(text).split("\n")
+    lines = [" " * indent + "- " + first]
+    lines += [pad + line if line.strip() else "" for line in rest]
+    return "\n".join(lines)
+
+
+def check_holds(check) -> bool:
+    """The verdict of a check as a plain bool; anything undecidable is False."""
+    try:
+        return bool(check.holds)
+    except Exception:  # e.g. a SymPy relation that cannot be decided
+        return False
+
+
+def anchor(cid: str) -> str:
+    """The HTML anchor of certificate ``cid`` in REPORT.md (``T10.1`` -> ``cert-t10-1``)."""
+    return "cert-" + re.sub(r"[^a-z0-9]+", "-", cid.lower()).strip("-")
+
+
+def _link(cid: str) -> str:
+    return f"[{cid}](#{anchor(cid)})"
+
+
+def _source(cert) -> str:
+    """Where the certificate is written: ``proofs/ababcb.py``, function name."""
+    path = cert.module.replace(".", "/") + ".py"
+    name = getattr(cert.func, "__name__", "")
+    return f"`{path}` (`{name}`)" if name else f"`{path}`"
+
+
+def _figure(cid: str, name: str) -> str:
+    """An inline image for figure file ``name`` of certificate ``cid``."""
+    caption = f"{cid}: " + re.sub(r"[-_]+", " ", Path(name).stem)
+    caption = caption.replace("[", "\\[").replace("]", "\\]")
+    return f"![{caption}](figures/{quote(name)})"
+
+
+def counts(results) -> dict[str, int]:
+    """How many certificates have each status (every status listed, in order)."""
+    n = {s: 0 for s in STATUSES}
+    for _, outcome in results:
+        n[outcome.status] = n.get(outcome.status, 0) + 1
+    return n
+
+
+def summary_line(results) -> str:
+    """``N certificates: a PASS, b ERRATUM, c FAIL, d OBSERVED``."""
+    n = counts(results)
+    parts = ", ".join(f"{n[s]} {s}" for s in STATUSES)
+    return f"{len(results)} certificate{'s' if len(results) != 1 else ''}: {parts}"
+
+
+# --------------------------------------------------------------------------
+# REPORT.md, part by part
+
+def _head() -> str:
+    meanings = "\n".join(f"- **{s}**: {MEANING[s]}" for s in STATUSES)
+    return (f"# certify: the claims of arXiv:2411.10324, checked\n\n"
+            f"Every claim of {PAPER} is checked as printed, with the paper's line "
+            f"numbers.  Each certificate ends in one of four statuses:\n\n{meanings}")
+
+
+def _summary(results) -> str:
+    n = counts(results)
+    rows = [f"| {s} | {n[s]} |" for s in n]
+    lines = ["## Summary", "", "| Status | Certificates |", "|---|---:|", *rows,
+             f"| **Total** | **{len(results)}** |"]
+    failing = [cert.id for cert, outcome in results if outcome.status == FAIL]
+    if failing:
+        lines += ["", "Failing: " + ", ".join(_link(c) for c in failing) + "."]
+    return "\n".join(lines)
+
+
+def _erratum(cert, outcome) -> str:
+    """Printed statements that fail, next to the certified corrections."""
+    wrong = [c for c in outcome.printed if not check_holds(c)]
+    lines = [f"**{_link(cert.id)}** (paper: {_cell(cert.line)}): {_one_line(cert.statement)}", "",
+             "| As printed | Corrected (certified) |", "|---|---|"]
+    for printed, corrected in zip_longest(wrong, outcome.corrected):
+        left = f"{MARK[False]} {_cell(printed.statement)}" if printed else ""
+        right = f"{MARK[check_holds(corrected)]} {_cell(corrected.statement)}" if corrected else ""
+        lines.append(f"| {left} | {right} |")
+    return "\n".join(lines)
+
+
+def _errata(results) -> str:
+    errata = [_erratum(cert, outcome) for cert, outcome in results if outcome.status == ERRATUM]
+    return "\n\n".join(["## Errata", *(errata or ["None: no certificate has status ERRATUM."])])
+
+
+def _table(results) -> str:
+    rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {outcome.status} |"
+            for cert, outcome in results]
+    return "\n".join(["## All certificates", "", "| Id | Paper | Statement | Status |",
+                      "|---|---|---|---|", *rows])
+
+
+def _checks(title: str, checks) -> str:
+    items = []
+    for check in checks:
+        items.append(_bullet(f"{MARK[check_holds(check)]} {_one_line(check.statement)}"))
+        items += [_bullet(e, indent=2) for e in check.evidence]
+    return f"**{title}**\n\n" + "\n".join(items)
+
+
+def _section(cert, outcome) -> str:
+    """Everything about one certificate: verdicts, note, evidence, figures."""
+    parts = [f'### <a id="{anchor(cert.id)}"></a>{cert.id} — {_one_line(cert.statement)}',
+             f"Paper: {_one_line(cert.line)} · Status: **{outcome.status}** · "
+             f"Proof: {_source(cert)}"]
+    if outcome.printed:
+        parts.append(_checks("As printed", outcome.printed))
+    if outcome.corrected:
+        parts.append(_checks("Corrected (certified)", outcome.corrected))
+    if str(outcome.note).strip():
+        parts.append("**Note.** " + _fragment(outcome.note))
+    if outcome.evidence:
+        parts += ["**Evidence**", *(_fragment(e) for e in outcome.evidence)]
+    parts += [_figure(cert.id, name) for name in outcome.figures]
+    return "\n\n".join(parts)
+
+
+def render_markdown(results) -> str:
+    """The text of REPORT.md: head, summary, errata, table, one section per certificate."""
+    sections = [_section(cert, outcome) for cert, outcome in results]
+    parts = [_head(), _summary(results), _errata(results), _table(results),
+             "## Certificates", *sections]
+    return "\n\n".join(parts) + "\n"
+
+
+# --------------------------------------------------------------------------
+# report.json and timings.json
+
+def _check_data(check) -> dict:
+    return {"statement": str(check.statement), "holds": check_holds(check),
+            "evidence": [str(e) for e in check.evidence]}
+
+
+def certificate_data(cert, outcome) -> dict:
+    """One certificate and its outcome as plain JSON data."""
+    return {
+        "id": cert.id,
+        "line": cert.line,
+        "statement": cert.statement,
+        "proof": {"module": cert.module, "function": getattr(cert.func, "__name__", "")},
+        "status": outcome.status,
+        "printed": [_check_data(c) for c in outcome.printed],
+        "corrected": [_check_data(c) for c in outcome.corrected],
+        "note": str(outcome.note),
+        "evidence": [str(e) for e in outcome.evidence],
+        "figures": [f"figures/{name}" for name in outcome.figures],
+    }
+
+
+def render_json(results) -> str:
+    """The text of report.json (deterministic, like REPORT.md)."""
+    data = {"paper": PAPER, "statuses": MEANING, "summary": counts(results),
+            "certificates": [certificate_data(c, o) for c, o in results]}
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+def render_timings(timings: dict) -> str:
+    """The text of timings.json: the runner's timings and their total, in seconds."""
+    per_cert = timings.get("certificates", {})
+    total = round(sum(t["seconds"] for t in per_cert.values()), 4)
+    return json.dumps({"total_seconds": total, **timings}, indent=2) + "\n"
+
+
+# --------------------------------------------------------------------------
+# Writing, and comparing with a committed report
+
+def write_report(results, timings: dict, out_dir) -> str:
+    """Write REPORT.md, report.json and timings.json into ``out_dir``.
+
+    All texts are rendered before anything is written, and each file is
+    replaced atomically; REPORT.md comes last.  Returns the text of REPORT.md.
+    """
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    markdown, data, times = render_markdown(results), render_json(results), render_timings(timings)
+    write_atomic(out / "report.json", data)
+    write_atomic(out / "timings.json", times)
+    write_atomic(out / "REPORT.md", markdown)
+    return markdown
+
+
+_SECTION = re.compile(r'^### <a id="[^"]*"></a>(\S+) — ', re.M)
+
+
+def _split_sections(text: str) -> dict[str, str]:
+    """REPORT.md cut into its head (key "summary") and one piece per certificate id."""
+    pieces = re.split(r'(?m)^(?=### <a id=")', text)
+    parts = {"summary": pieces[0].strip()}
+    for piece in pieces[1:]:
+        match = _SECTION.match(piece)
+        parts[match.group(1) if match else piece.split("\n", 1)[0]] = piece.strip()
+    return parts
+
+
+def changed_parts(old: str | None, new: str) -> list[str]:
+    """What differs between a committed REPORT.md and a regenerated one.
+
+    Returns ``[]`` when they are identical, ``["missing"]`` when there was no
+    committed report, else the changed parts: ``summary`` (head, summary,
+    errata, table) and certificate ids, marked ``(new)`` or ``(removed)``.
+    """
+    if old is None:
+        return ["missing"]
+    if old == new:
+        return []
+    before, after = _split_sections(old), _split_sections(new)
+    changed = [k for k in after if k in before and before[k] != after[k]]
+    changed += [f"{k} (new)" for k in after if k not in before]
+    changed += [f"{k} (removed)" for k in before if k not in after]
+    return changed or ["whitespace"]

@@ -1,0 +1,242 @@
+"""The relative dynamics of four particles, exact (fmpq) or in balls (arb).
+
+The state is p = (p1, p2, p3), the gaps x_{i+1} - x_i >= 0, and q = (q1, q2, q3),
+the relative velocities v_{i+1} - v_i.  Between collisions p moves as p + t q; the
+pair i collides when p_i reaches 0, which needs q_i < 0, after the time -p_i/q_i.
+The next collision is the smallest such time; at a collision of type a, b, c the
+velocities become A q, B q, C q (l. 209-232), and the gap that closed is set to 0
+exactly.
+
+Two number systems behind one interface:
+
+* exact: entries are ``flint.fmpq`` (and r is an fmpq).  Every sign and every
+  comparison is decided; a and c at exactly the same time is the simultaneous
+  collision of the paper (A and C commute, l. 240); b at the same time as a or c
+  is a multiple collision, where the dynamics is not defined
+  (:class:`MultipleCollision`).
+* balls: entries are ``flint.arb`` (r an arb or fmpq).  A sign is used only when the
+  ball proves it (0 only for an exact zero) and the next collision only when its time
+  ball lies strictly below all the other time balls; otherwise :class:`Undecided` is
+  raised, and the caller raises the precision (:func:`run_certified`).
+
+>>> from flint import fmpq
+>>> run(exact([1, 0, 2]), exact([-1, "1/2", -1]), fmpq(1, 2), 3).word   # a at t=1, c at t=2
+'acb'
+"""
+from __future__ import annotations
+
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from typing import Callable, Sequence
+
+import flint
+
+LETTERS = "abc"
+INDEX = {"a": 0, "b": 1, "c": 2}
+
+
+class Undecided(ArithmeticError):
+    """A sign or a comparison of balls that the working precision cannot decide."""
+
+
+class MultipleCollision(ArithmeticError):
+    """b at the same time as a or c: a particle meets two others, the law is undefined."""
+
+
+# --- numbers -------------------------------------------------------------------
+
+def is_ball(z) -> bool:
+    return isinstance(z, flint.arb)
+
+
+def sign(z) -> int:
+    """The sign of an exact rational, or of a ball when the ball proves it
+    (an exact zero ball is 0); Undecided otherwise."""
+    if not is_ball(z):
+        return (z > 0) - (z < 0)
+    if z > 0:
+        return 1
+    if z < 0:
+        return -1
+    if z.is_zero():
+        return 0
+    raise Undecided(f"sign of {z.str(5, radius=True)} undecided")
+
+
+def zero_like(z):
+    """An exact zero of the same kind as z."""
+    return flint.arb(0) if is_ball(z) else flint.fmpq(0)
+
+
+def less(s, t) -> bool:
+    """s < t, proven (balls) or exact; Undecided when balls overlap."""
+    if not (is_ball(s) or is_ball(t)):
+        return s < t
+    if s < t:
+        return True
+    if s >= t:
+        return False
+    raise Undecided("two collision times not separated")
+
+
+@contextmanager
+def precision(bits: int | None):
+    """Run ball arithmetic at ``bits`` of working precision (restored afterwards)."""
+    old = flint.ctx.prec
+    if bits is not None:
+        flint.ctx.prec = bits
+    try:
+        yield
+    finally:
+        flint.ctx.prec = old
+
+
+# --- collisions ----------------------------------------------------------------
+
+def collide(letter: str, q: Sequence, r) -> tuple:
+    """K q for K = A, B, C (l. 209-232), with h = (1 + r)/2:
+    a: (-r q1, q2 + h q1, q3);  b: (q1 + h q2, -r q2, q3 + h q2);  c: (q1, q2 + h q3, -r q3)."""
+    q1, q2, q3 = q
+    h = (1 + r) / 2
+    if letter == "a":
+        return (-r * q1, q2 + h * q1, q3)
+    if letter == "b":
+        return (q1 + h * q2, -r * q2, q3 + h * q2)
+    if letter == "c":
+        return (q1, q2 + h * q3, -r * q3)
+    raise ValueError(f"unknown collision {letter!r}")
+
+
+def collision_times(p: Sequence, q: Sequence) -> dict[str, object]:
+    """{letter: -p_i/q_i} for every pair with q_i < 0 (certified sign)."""
+    return {L: -p[i] / q[i] for L, i in INDEX.items() if sign(q[i]) < 0}
+
+
+def next_collision(p: Sequence, q: Sequence) -> tuple[str, object] | None:
+    """The next collision as (letters, time): letters is "a", "b", "c" or "ac"
+    (a and c simultaneous, exact mode only); None when no pair approaches.
+    Raises Undecided (balls) or MultipleCollision (b tied with a or c)."""
+    times = collision_times(p, q)
+    if not times:
+        return None
+    for L, t in times.items():
+        if all(less(t, s) for M, s in times.items() if M != L):
+            return L, t
+    # no strict minimum: in exact mode a tie, in ball mode undecided
+    if any(is_ball(t) for t in times.values()):
+        raise Undecided("the smallest collision time is not separated from the others")
+    tmin = min(times.values())
+    first = "".join(L for L in LETTERS if L in times and times[L] == tmin)
+    if first == "ac":
+        return first, tmin
+    raise MultipleCollision(f"collisions {first} at the same time")
+
+
+def step(p: Sequence, q: Sequence, r) -> tuple[str, object, tuple, tuple] | None:
+    """Advance to the next collision: (letters, time, p, q) right after it
+    (velocities post-collisional, l. 195), or None when no collision comes."""
+    nxt = next_collision(p, q)
+    if nxt is None:
+        return None
+    letters, t = nxt
+    p = [pi + t * qi for pi, qi in zip(p, q)]
+    for L in letters:
+        p[INDEX[L]] = zero_like(p[INDEX[L]])    # the closed gap is exactly zero
+        q = collide(L, q, r)
+    return letters, t, tuple(p), tuple(q)
+
+
+# --- orbits --------------------------------------------------------------------
+
+@dataclass
+class State:
+    """The state right after a collision (or the initial state)."""
+
+    t: object            # the time since t = 0
+    p: tuple
+    q: tuple
+
+
+@dataclass
+class Run:
+    """An orbit: the collisions (``events``, "ac" for a simultaneous pair) and
+    the states right after each (``states[0]`` is the initial state).  ``stop`` says
+    why it ended: "n" (all requested collisions), "free" (no pair approaches),
+    "undecided" (a ball comparison failed: raise the precision) or "multiple"."""
+
+    events: list[str] = field(default_factory=list)
+    states: list[State] = field(default_factory=list)
+    stop: str = "n"
+    reason: str = ""
+
+    @property
+    def word(self) -> str:
+        return "".join(e if len(e) == 1 else f"[{e}]" for e in self.events)
+
+
+def run(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
+        until: Callable[[Run], bool] | None = None) -> Run:
+    """At most n collisions from (p0, q0); ball arithmetic at ``prec`` bits.
+    A comparison that cannot be decided ends the run with stop="undecided" (the
+    prefix is certified).  ``until(run)`` may stop the run early (stop="until")."""
+    t = zero_like(p0[0])
+    out = Run(states=[State(t, tuple(p0), tuple(q0))])
+    p, q = tuple(p0), tuple(q0)
+    with precision(prec):
+        for _ in range(n):
+            try:
+                nxt = step(p, q, r)
+            except Undecided as exc:
+                out.stop, out.reason = "undecided", str(exc)
+                return out
+            except MultipleCollision as exc:
+                out.stop, out.reason = "multiple", str(exc)
+                return out
+            if nxt is None:
+                out.stop = "free"
+                return out
+            letters, dt, p, q = nxt
+            t = t + dt
+            out.events.append(letters)
+            out.states.append(State(t, p, q))
+            if until is not None and until(out):
+                out.stop = "until"
+                return out
+    return out
+
+
+def run_certified(datum: Callable[[int], tuple], n: int, prec: int = 128,
+                  maxprec: int = 1 << 15, until: Callable[[Run], bool] | None = None
+                  ) -> tuple[Run, int]:
+    """Run with balls, doubling the precision until the run is decided.
+
+    ``datum(prec)`` returns (p0, q0, r) as balls computed at that precision (the
+    initial datum itself must be recomputed when the precision rises).  Returns the
+    run and the precision used; raises Undecided beyond ``maxprec``."""
+    while prec <= maxprec:
+        with precision(prec):
+            p0, q0, r = datum(prec)
+        result = run(p0, q0, r, n, prec, until)
+        if result.stop != "undecided":
+            return result, prec
+        prec *= 2
+    raise Undecided(f"run undecided at {maxprec} bits: {result.reason}")
+
+
+def exact(values) -> tuple:
+    """A tuple of fmpq from integers, strings "p/q", Fractions or fmpq."""
+    out = []
+    for z in values:
+        if isinstance(z, str) and "/" in z:
+            a, b = z.split("/")
+            z = flint.fmpq(int(a), int(b))
+        elif hasattr(z, "numerator") and not isinstance(z, flint.fmpq):
+            z = flint.fmpq(int(z.numerator), int(z.denominator))
+        out.append(flint.fmpq(z))
+    return tuple(out)
+
+
+def balls(values, prec: int | None = None) -> tuple:
+    """A tuple of arb from exact rationals (exact balls) or arbs."""
+    with precision(prec):
+        return tuple(z if is_ball(z) else flint.arb(flint.fmpq(z)) for z in values)

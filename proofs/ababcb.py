@@ -1,0 +1,782 @@
+"""Section 3 (l. 250-516): Theorem 3.1, the pattern ababcb.
+
+Read next to the paper: each certificate states the claim as printed, with its
+line, then computes.  Printed formulas are transcribed below as text, exactly as
+they stand in the paper (only the stray parenthesis of l. 259 is dropped).
+Branches: 0 = upper (largest real eigenvalue), 1 = middle, 2 = lower.
+"""
+import flint
+import sympy as sp
+
+from certify.algebraic import Algebraic, sign_intervals
+from certify.branches import Condition, FixedPoint, Spectrum
+from certify.dynamics import eigenvector, position_map, reduce_mod, run_word, velocities
+from certify.elimination import eliminate, show_factored_int
+from certify.model import characteristic_polynomial, word_matrix, A as A_, B as B_, C as C_
+from certify.poly import to_fmpq_poly, discriminant_lambda, lam, parse, primitive, r, show, to_fmpz_poly, u, v, x
+from certify.runner import Check, certificate, conclude, quantity
+from certify.sturm import count_roots, flint_real_roots
+
+UPPER, MIDDLE, LOWER = 0, 1, 2
+BRANCH = {UPPER: "upper", MIDDLE: "middle", LOWER: "lower"}
+WORD = "ababcb"
+
+# ---------------------------------------------------------------- as printed
+M_PRINTED = """[[(r - 1)^3*(r^3 - 3*r^2 - 5*r - 9)/64, (r - 1)^2*(r^3 - r^2 + 7*r + 9)/32, (r + 1)^2/4],
+ [-r*(r^5 - 7*r^4 + 10*r^3 + 18*r^2 + 5*r + 5)/32, -r*(r^4 - 4*r^3 + 10*r^2 + 4*r + 5)/16, -r*(r+1)/2],
+ [(r + 1)^2*(r^4 - 12*r^3 + 42*r^2 - 20*r + 5)/64, (r - 1)^3*(r^2 - 4*r - 5)/32, (r - 1)^2/4]]"""
+CP_PRINTED = ("λ^3 - λ^2/64*(r^6 - 10*r^5 + 23*r^4 - 44*r^3 + 15*r^2 - 74*r + 25)"
+              " + λ/64*(25*r^6 - 74*r^5 + 15*r^4 - 44*r^3 + 23*r^2 - 10*r + 1) - r^6")
+P0_PRINTED = ("41*r^10 - 646*r^9 + 3733*r^8 - 14600*r^7 + 42306*r^6 - 78052*r^5"
+              " + 42306*r^4 - 14600*r^3 + 3733*r^2 - 646*r + 41")
+DELTA_PRINTED = "-(1/1811939328)*(r - 1)^4*(r + 1)^6*(3*r^2 - 14*r + 3)^2*P0"
+U_PRINTED = "r*(16*λ - r^4 + 8*r^3 + 2*r^2 + 8*r - 1)/(2*(r + 1)*(-r^3 + 6*r^2 - r + 4*λ))"
+V_PRINTED = ("-(λ*(64*λ - r^6 + 10*r^5 - 23*r^4 + 44*r^3 + r^2 + 42*r - 9) + r^2*(20*r^4 - 32*r^3 + 8*r^2 + 4))"
+             "/(4*(r + 1)^2*(-r^3 + 6*r^2 - r + 4*λ))")
+A_PRINTED = "-64*r^2*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ + 1024*r^6"
+B_PRINTED = ("256*r^2*(r^2 - 6*r + 1)*λ^2 - 4*r^2*(r - 1)^2*(r - 3)^2*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ"
+             " + 64*r^6*(r^4 - 8*r^3 + 18*r^2 + 5)")
+C_PRINTED = "16*(r - 1)^2*(r + 1)^2*(r^2 - 10*r + 1)*λ"
+D_PRINTED = ("-64*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ^2 + (r^10 - 18*r^9 + 101*r^8 - 216*r^7 + 66*r^6"
+             " + 372*r^5 + 594*r^4 - 24*r^3 + 253*r^2 - 114*r + 9)*λ")
+AMD_PRINTED = ("λ^2*(64*r^4 - 512*r^3 - 128*r^2 - 512*r + 64) + λ*(r - 1)^2*(-r^8 + 16*r^7 - 68*r^6"
+               " + 64*r^5 + 66*r^4 + 208*r^3 - 116*r^2 + 96*r - 9) + 1024*r^6")
+P1_PRINTED = ("17*r^11 - 435*r^10 + 4363*r^9 - 22753*r^8 + 61530*r^7 - 65806*r^6 - 27194*r^5"
+              " + 24494*r^4 - 9499*r^3 + 3025*r^2 - 545*r + 35")
+R1_PRINTED = (5, -2, 6)                     # r1 = 5 - 2√6 ≈ 0.10102
+QUARTIC_B_PRINTED = "5*r^4 - 40*r^3 + 102*r^2 - 40*r + 5"
+P2_PRINTED = "25*r^8 - 224*r^7 + 284*r^6 - 416*r^5 + 150*r^4 - 416*r^3 + 284*r^2 - 224*r + 25"
+P3_PRINTED = "r^5 - 15*r^4 + 66*r^3 - 86*r^2 - 35*r + 5"
+VELOCITIES_PRINTED = {
+    "q2(t1)": (1, 1, "u - (1+r)/2"),
+    "q1(t2)": (2, 0, "(1+r)/2*u - (r-1)^2/4"),
+    "q2(t3)": (3, 1, "(r-1)^2/4*u - (r^3 - 5*r^2 - 5*r + 1)/8"),
+    "q3(t4)": (4, 2, "(r^3 - r^2 + 3*r + 5)/8*u + v - (r + 1)^2*(r^2 - 6*r + 5)/16"),
+    "q2(t5)": (5, 1, "(r^4 - 4*r^3 + 10*r^2 + 4*r + 5)/16*u + (1+r)/2*v - (r + 1)*(r^4 - 8*r^3 + 18*r^2 + 5)/32"),
+}
+P3_T4_PRINTED = ("x + ((-64*r^2 + 384*r - 64)*λ^2 + (r^8 - 16*r^7 + 84*r^6 - 192*r^5 + 222*r^4 - 208*r^3"
+                 " + 196*r^2 - 96*r + 9)*λ + (-16*r^8 + 128*r^7 - 288*r^6 - 80*r^4))"
+                 "/((16*r^4 - 128*r^3 - 32*r^2 - 128*r + 16)*λ - 256*r^4)")
+P1_T5_PRINTED = ("λ*(r^2 - 1)^2*(r^2 - 10*r + 1)/(-64*λ^2 + 4*(-r^5 + 9*r^4 - 6*r^3 + 6*r^2 - 9*r + 1)*λ + 64*r^5)*x"
+                 " + ((64*r^4 - 512*r^3 - 128*r^2 - 512*r + 64)*λ^2 + (-r^10 + 18*r^9 - 101*r^8 + 216*r^7"
+                 " - 66*r^6 + 652*r^5 - 594*r^4 + 24*r^3 - 253*r^2 + 114*r - 9)*λ + (-64*r^9 + 512*r^8"
+                 " + 128*r^7 + 512*r^6 - 64*r^5))/(1024*λ^2 + (64*r^5 - 576*r^4 + 384*r^3 - 384*r^2"
+                 " + 576*r - 64)*λ - 1024*r^5)")
+
+
+# ---------------------------------------------------------------- shared quantities
+@quantity("M")
+def ababcb_matrix():
+    """M = BCBABA: the velocities after one period ababcb are M q(0)."""
+    return word_matrix(WORD)
+
+
+@quantity("cp", needs=["M"])
+def ababcb_cp(M):
+    """cp(M) = det(λI - M)."""
+    return characteristic_polynomial(M)
+
+
+@quantity("spectrum", needs=["cp"])
+def ababcb_spectrum(cp):
+    """The real eigenvalue branches of M over r."""
+    return Spectrum(cp)
+
+
+@quantity("eigenvector", needs=["M"])
+def ababcb_eigenvector(M):
+    """q(0) = (-1, u, v) solving the first two rows of M q = λ q."""
+    return eigenvector(M, first=0, rows=(0, 1))
+
+
+@quantity("steps", needs=["eigenvector"])
+def ababcb_steps(eigenvector):
+    """p(t_k), q(t_k), k = 1..6, from p(0) = (1, 0, x), q(0) = (-1, u, v)."""
+    return run_word(WORD, sp.Matrix([1, 0, x]), eigenvector)
+
+
+@quantity("abcd", needs=["steps"])
+def ababcb_abcd(steps):
+    """(a, b, c, d) with f(x) = p_3(t_6)/p_1(t_6) = (ax + b)/(cx + d), as computed."""
+    return position_map(steps)
+
+
+# ---------------------------------------------------------------- helpers
+def r1_of(printed) -> Algebraic:
+    """The printed threshold a + b√n (5 - 2√6) as an algebraic number."""
+    return Algebraic.surd(*printed)
+
+
+def root_in_unit_interval(poly_text: str):
+    """The roots of a printed polynomial in ]0,1[ by Sturm, and the count by python-flint."""
+    P = to_fmpz_poly(parse(poly_text))
+    return Algebraic.roots(P, 0, 1), len(flint_real_roots(P, 0, 1))
+
+
+def fixed_point(a, b, c, d) -> FixedPoint:
+    return FixedPoint(parse(a), parse(b), parse(c), parse(d))
+
+
+def printed_uv(U, V):
+    return {u: parse(U), v: parse(V)}
+
+
+def table(spectrum, name, g, lo, hi, fp=None):
+    return spectrum.sign_table(Condition.of(name, g, fp), lo, hi)
+
+
+def sign_word(signs) -> str:
+    names = {1: "> 0", -1: "< 0", 0: "= 0", None: "not real", "missing": "absent", "?": "undecided"}
+    return ", ".join(sorted(names.get(s, str(s)) for s in signs))
+
+
+def same_up_to_constant(p, q) -> bool:
+    return primitive(p) == primitive(q)
+
+
+def digits_check(name, root: Algebraic, printed: str) -> Check:
+    return Check(f"{name} ≈ {printed}", root.in_rounding_interval(printed),
+                 [f"{name} is {root.describe()}"])
+
+
+def count_check(name, roots, flint_count, expected) -> Check:
+    return Check(f"{name} has exactly {expected} root(s) in ]0,1[ (Sturm and python-flint)",
+                 len(roots) == expected and flint_count == expected,
+                 [f"Sturm count {len(roots)}, python-flint count {flint_count}"])
+
+
+# ---------------------------------------------------------------- T1-T4: M and its spectrum
+@certificate("T1", "l. 257-263", "M = BCBABA equals the printed matrix, entry by entry.",
+             needs=["M"], printed=dict(M_text=M_PRINTED))
+def matrix_of_ababcb(M, M_text):
+    """The product of the collision matrices in time order a, b, a, b, c, b."""
+    printed = sp.Matrix(parse(M_text))
+    direct = (B_ * C_ * B_ * A_ * B_ * A_).applyfunc(sp.factor)
+    checks = [Check(f"entry ({i + 1},{j + 1}) as printed", sp.simplify(M[i, j] - printed[i, j]) == 0,
+                    [f"computed `{show(M[i, j])}`"]) for i in range(3) for j in range(3)]
+    checks.append(Check("word_matrix('ababcb') is the product BCBABA", (direct - M).applyfunc(sp.simplify) == sp.zeros(3, 3)))
+    return conclude(checks, note="l. 259 has an unbalanced parenthesis, `(r^3 - r^2 + 7r + 9))/32`; read without it.")
+
+
+@certificate("T2", "l. 335-339", "cp(M) equals the printed characteristic polynomial.",
+             needs=["cp"], printed=dict(cp_text=CP_PRINTED))
+def characteristic_polynomial_of_M(cp, cp_text):
+    """det(λI - M) expanded, against the print."""
+    diff = sp.expand(cp - parse(cp_text))
+    return conclude([Check("det(λI - M) - printed cp = 0", diff == 0, [f"det(λI - M) = `{show(sp.collect(cp, lam))}`"])])
+
+
+@certificate("T3", "l. 340", "det M = r^6 > 0, hence a positive real eigenvalue for every r in ]0,1[.",
+             needs=["M", "cp", "spectrum"], printed=dict(det_text="r^6"))
+def determinant_and_positive_eigenvalue(M, cp, spectrum, det_text):
+    """det M as printed; cp(0) = -det M < 0 and cp(λ) → +∞, so a root λ > 0;
+    certified also on the branch table: the largest eigenvalue is > 0 on ]0,1[."""
+    det = sp.factor(M.det())
+    T = table(spectrum, "λ", lam, 0, 1)
+    return conclude([
+        Check("det M = r^6", sp.expand(det - parse(det_text)) == 0, [f"det M = `{show(det)}`"]),
+        Check("cp(0; r) = -det M", sp.expand(cp.subs(lam, 0) + M.det()) == 0),
+        Check("det M > 0 on ]0,1[", all(sg > 0 for _a, _b, sg in sign_intervals(to_fmpz_poly(parse(det_text)), 0, 1))),
+        Check("the largest real eigenvalue is positive on all of ]0,1[", T.holds(UPPER, 1),
+              ["sign of λ per branch:\n\n" + T.markdown()]),
+    ])
+
+
+def cardano(cp):
+    """(q/2)² + (p/3)³ for the depressed cubic t³ + pt + q of the monic cubic cp in λ."""
+    c = sp.Poly(cp, lam).all_coeffs()
+    a2, a1, a0 = [ci / c[0] for ci in c[1:]]
+    p = a1 - a2 ** 2 / 3
+    q = 2 * a2 ** 3 / 27 - a2 * a1 / 3 + a0
+    return sp.expand((q / 2) ** 2 + (p / 3) ** 3)
+
+
+@certificate("T4", "l. 340-349", "Δ_cp = -(1/1811939328)(r-1)^4(r+1)^6(3r^2-14r+3)^2 P0(r), and three real "
+             "roots iff Δ_cp < 0.", needs=["cp"], printed=dict(delta_text=DELTA_PRINTED, P0_text=P0_PRINTED,
+                                                             three_real_when="<"))
+def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
+    """The printed Δ_cp is -Disc_λ(cp)/108 = (q/2)² + (p/3)³ (Cardano's form for the
+    depressed cubic), not the discriminant itself; with that normalisation, three
+    distinct real eigenvalues iff Δ_cp < 0 (Disc > 0)."""
+    delta = parse(delta_text.replace("P0", f"({P0_text})"))
+    disc = sp.discriminant(cp, lam)
+    ratio = sp.cancel(disc / delta) if delta != 0 else None
+    card = cardano(cp)
+    sign_ok = {"<": ratio is not None and ratio.is_negative, ">": ratio is not None and ratio.is_positive}
+    return conclude([
+        Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", ratio is not None and ratio.is_number and ratio != 0,
+              [f"Disc_λ(cp) / Δ_cp = {ratio}"]),
+        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0),
+        Check(f"three distinct real roots iff Δ_cp {three_real_when} 0 (Disc > 0 iff three distinct real roots)",
+              sign_ok.get(three_real_when, False)),
+        Check("flint's Disc_λ(cp) has the same factors", same_up_to_constant(
+            discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))),
+    ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "
+            "'discriminant', l. 341). Disc_λ(cp) = −108·Δ_cp.")
+
+
+# ---------------------------------------------------------------- T5-T8: r* and the branches
+@certificate("T5", "l. 350", "P0 has exactly one root r* in ]0,1[, r* ≈ 0.11384 (Sturm).",
+             needs=["cp"], printed=dict(P0_text=P0_PRINTED, count=1, digits="0.11384"))
+def P0_has_one_root(cp, P0_text, count, digits):
+    """Sturm count and python-flint count; the digits certified by an isolating interval."""
+    roots, nf = root_in_unit_interval(P0_text)
+    checks = [Check("P0 divides Disc_λ(cp)", discriminant_lambda(cp) % to_fmpz_poly(parse(P0_text)) == 0),
+              count_check("P0", roots, nf, count)]
+    if roots:
+        checks.append(digits_check("r*", roots[0], digits))
+    return conclude(checks)
+
+
+def r_star(P0_text) -> Algebraic:
+    roots = Algebraic.roots(to_fmpz_poly(parse(P0_text)), 0, 1)
+    if len(roots) != 1:
+        raise ArithmeticError(f"P0 has {len(roots)} roots in ]0,1[, not one")
+    return roots[0]
+
+
+def r0_of(quadratic_text) -> Algebraic:
+    roots = Algebraic.roots(to_fmpz_poly(parse(quadratic_text)), 0, 1)
+    if len(roots) != 1:
+        raise ArithmeticError(f"{quadratic_text} has {len(roots)} roots in ]0,1[")
+    return roots[0]
+
+
+def _end(a: Algebraic) -> str:
+    return str(a.lo) if a.is_rational else "≈" + a.digits(8)
+
+
+@certificate("T6", "l. 350", "Δ_cp < 0 for r < r*, Δ_cp ≥ 0 for r > r*, with equality only at (7-2√10)/3.",
+             printed=dict(delta_text=DELTA_PRINTED, P0_text=P0_PRINTED, r0=(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
+                          below="<", above=">="))
+def sign_of_delta(delta_text, P0_text, r0, below, above):
+    """Exact sign intervals of the printed Δ_cp (a polynomial in r) on ]0,1[."""
+    delta_expr = parse(delta_text.replace("P0", f"({P0_text})"))
+    delta = flint.fmpq_poly(to_fmpq_poly(delta_expr))
+    ivs = sign_intervals(delta, 0, 1)
+    rs, rz = r_star(P0_text), Algebraic.surd(*r0)
+    want = {"<": {-1}, ">": {1}, ">=": {1, 0}, "<=": {-1, 0}}
+    below_signs = {sg for a, b, sg in ivs if b <= rs}
+    above_signs = {sg for a, b, sg in ivs if a >= rs} | {0 for a, b, sg in ivs[:-1] if a >= rs}
+    zeros = [b for a, b, sg in ivs[:-1]]
+    evidence = [f"sign on ]{_end(a)}, {_end(b)}[: {'+' if sg > 0 else '−'}" for a, b, sg in ivs]
+    return conclude([
+        Check(f"Δ_cp {below} 0 on ]0, r*[", below_signs <= want.get(below, set()) and below_signs != set(), evidence),
+        Check(f"Δ_cp {above} 0 on ]r*, 1[", above_signs <= want.get(above, set())),
+        Check("in ]0,1[, Δ_cp vanishes only at r* and (7-2√10)/3", len(zeros) == 2 and zeros[0] == rs and zeros[1] == rz,
+              [f"zeros: {', '.join(z.describe() for z in zeros)}"]),
+    ])
+
+
+@certificate("T7", "l. 349", "3r^2-14r+3 has the root (7-2√10)/3 ≈ 0.22515 in ]0,1[, and the repeated "
+             "eigenvalue there is negative.", needs=["spectrum"],
+             printed=dict(quadratic="3*r^2 - 14*r + 3", r0=(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
+                          digits="0.22515", repeated_sign=-1))
+def repeated_eigenvalue(spectrum, quadratic, r0, digits, repeated_sign):
+    """At r0 the gcd of cp and ∂cp/∂λ, computed exactly in Q(r0)[λ], is linear: its
+    root is the double eigenvalue, whose sign is certified by ball arithmetic."""
+    roots, nf = root_in_unit_interval(quadratic)
+    rz = Algebraic.surd(*r0)
+    checks = [count_check(quadratic, roots, nf, 1),
+              Check("the root is (7-2√10)/3", bool(roots) and roots[0] == rz)]
+    if roots:
+        checks.append(digits_check("(7-2√10)/3", roots[0], digits))
+        signs = spectrum.sign_at_point(Condition.of("λ", lam), roots[0])
+        double = signs is not None and len(signs) == 3 and signs[1] == signs[2]
+        checks.append(Check("there is a double eigenvalue at r0 with the printed sign",
+                            double and signs[1] == repeated_sign,
+                            [f"signs of the eigenvalues at r0, largest first (the double one listed twice): {signs}"]))
+    return conclude(checks)
+
+
+@certificate("T8", "l. 336, 350, 491", "Three real eigenvalues exactly below r*; the upper branch exists on all of "
+             "]0,1[; the two others are smaller in absolute value; all three are positive up to 5-2√6.",
+             needs=["spectrum"], printed=dict(P0_text=P0_PRINTED, r1=R1_PRINTED, positive_up_to="r1"))
+def branches_of_the_spectrum(spectrum, P0_text, r1, positive_up_to):
+    """Number of real eigenvalues per cell (Sturm at one sample per cell, constant
+    between the zeros of Disc_λ(cp)); the sign of λ on each branch."""
+    from certify.plots import spectrum_figures
+    rs, rr1 = r_star(P0_text), r1_of(r1)
+    T = table(spectrum, "λ", lam, 0, 1)
+    three = all((len(c.branches) == 3) == (c.hi <= rs) for c in T.cells)
+    bound = rr1 if positive_up_to == "r1" else rs
+    positive = all(T.holds(k, 1, 0, bound) for k in range(3))
+    pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
+    figs = spectrum_figures(spectrum, T, marks={"r*": rs, "5-2√6": rr1, "(7-2√10)/3": T.critical[-1]})
+    return conclude([
+        Check("three distinct real eigenvalues exactly on ]0, r*[ (one real eigenvalue on ]r*, 1[ but a double "
+              "one at (7-2√10)/3)", three and T.critical[0] == rs, ["number of real eigenvalues and sign of λ per cell:\n\n"
+                                                                     + T.markdown()]),
+        Check("the upper branch exists on all of ]0,1[", all(len(c.branches) >= 1 for c in T.cells)
+              and all(p is not None and len(p) >= 1 for p in T.points)),
+        Check("all three eigenvalues are positive on ]0, 5-2√6[", positive),
+        Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
+              "(all positive there, ordered)", pos_rstar),
+    ], figures=figs)
+
+
+# ---------------------------------------------------------------- T9-T10: the datum and f
+@certificate("T9", "l. 302-307, 366", "u and v as printed solve the first two components of M q(0) = λ q(0).",
+             needs=["M"], printed=dict(U=U_PRINTED, V=V_PRINTED))
+def eigenvector_components(M, U, V):
+    """Substitute q(0) = (-1, u, v) into rows 1 and 2 of M q - λ q: zero in Q(r, λ)."""
+    q0 = sp.Matrix([-1, parse(U), parse(V)])
+    res = (M * q0 - lam * q0).applyfunc(sp.cancel)
+    third = reduce_mod(res[2], characteristic_polynomial(M))
+    return conclude([
+        Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0),
+        Check("second component vanishes identically", res[1] == 0),
+        Check("and the third vanishes modulo cp(M): q(0) is an eigenvector", third == 0,
+              [f"third component reduced modulo cp: `{show(third)}`"]),
+    ])
+
+
+@certificate("T10", "l. 310-317, 373-379", "After ababcb, p(t6) = p1(t6)(1, 0, f(x)) with f(x) = (ax+b)/(cx+d) "
+             "and a, b, c, d as printed.", needs=["steps", "abcd", "cp"],
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED))
+def position_map_of_ababcb(steps, abcd, cp, a, b, c, d):
+    """The computed (a, b, c, d) and the printed ones are proportional modulo cp:
+    every 2×2 minor of the two quadruples reduces to zero."""
+    P = [parse(e) for e in (a, b, c, d)]
+    minors = {f"{n1}{n2}": reduce_mod(P[i] * abcd[j] - P[j] * abcd[i], cp)
+              for (i, n1), (j, n2) in [((0, "a"), (1, "b")), ((0, "a"), (2, "c")), ((0, "a"), (3, "d")),
+                                       ((1, "b"), (2, "c")), ((1, "b"), (3, "d")), ((2, "c"), (3, "d"))]}
+    word = "".join(s.letter for s in steps)
+    return conclude([
+        Check("the collisions applied are a, b, a, b, c, b", word == WORD),
+        Check("p_2(t6) = 0", steps[-1].p[1] == 0),
+        Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
+              all(m == 0 for m in minors.values()),
+              [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()]),
+    ])
+
+
+# ---------------------------------------------------------------- T11-T16: a-d, b, c
+@certificate("T11", "l. 388-392", "The printed expansion of a-d.", printed=dict(a=A_PRINTED, d=D_PRINTED, amd=AMD_PRINTED))
+def expansion_of_a_minus_d(a, d, amd):
+    """a - d from the printed a and d, expanded, against the printed expansion."""
+    diff = sp.expand(parse(a) - parse(d) - parse(amd))
+    return conclude([Check("(a) - (d) - (printed a-d) = 0", diff == 0, [f"difference: `{show(diff)}`"])])
+
+
+def eliminant_check(name, g, cp, printed_product) -> list[Check]:
+    """The λ-free element of the lex Gröbner basis of {g, cp} equals the printed
+    product up to a constant; the resultant route has the same factors."""
+    E = eliminate(g, cp)
+    P = to_fmpz_poly(parse(printed_product))
+    return [Check(f"Gröbner basis of {{{name}, cp(M)}} (lex λ > r) eliminates to the printed polynomial",
+                  same_up_to_constant(E.groebner, P), E.evidence() + [f"printed: `{show_factored_int(P)}`"]),
+            Check("the resultant route agrees factor by factor", E.agree)]
+
+
+@certificate("T12", "l. 393-400", "Gröbner basis of {a-d, cp(M)}, lex λ>r, gives r^6(r-1)^4(r+1)^4(r^2-10r+1)P1(r).",
+             needs=["cp"], printed=dict(amd=AMD_PRINTED, P1_text=P1_PRINTED))
+def eliminant_of_a_minus_d(cp, amd, P1_text):
+    return conclude(eliminant_check("a-d", parse(amd), cp, f"r^6*(r-1)^4*(r+1)^4*(r^2-10*r+1)*({P1_text})"))
+
+
+@certificate("T13", "l. 401", "P1 has exactly three real roots, exactly one in ]0,1[, r2 ≈ 0.13145.",
+             printed=dict(P1_text=P1_PRINTED, real=3, inside=1, digits="0.13145"))
+def roots_of_P1(P1_text, real, inside, digits):
+    """Sturm counts over R, ]-∞,0] and [1,∞[, with python-flint's count beside them."""
+    P = to_fmpz_poly(parse(P1_text))
+    all_roots = Algebraic.roots(P)
+    roots, nf = root_in_unit_interval(P1_text)
+    n_flint = len(flint_real_roots(P))
+    checks = [Check(f"P1 has exactly {real} real roots (Sturm and python-flint)",
+                    len(all_roots) == real and n_flint == real, [f"Sturm {len(all_roots)}, python-flint {n_flint}; "
+                                                                  + "; ".join(a.describe() for a in all_roots)]),
+              count_check("P1", roots, nf, inside),
+              Check("the others are ≤ 0 and ≥ 1", len(all_roots) == 3 and all_roots[0] <= 0 and all_roots[2] >= 1)]
+    if roots:
+        checks.append(digits_check("r2", roots[0], digits))
+    return conclude(checks)
+
+
+def r2_of(P1_text) -> Algebraic:
+    roots = Algebraic.roots(to_fmpz_poly(parse(P1_text)), 0, 1)
+    if len(roots) != 1:
+        raise ArithmeticError("P1 has no unique root in ]0,1[")
+    return roots[0]
+
+
+def changes_at(T, branch, point) -> bool:
+    """The sign on ``branch`` differs on the two cells adjacent to ``point``."""
+    left = [c for c in T.cells if c.hi == point]
+    right = [c for c in T.cells if c.lo == point]
+    if not left or not right or branch >= len(left[0].signs) or branch >= len(right[0].signs):
+        return False
+    return left[0].signs[branch] * right[0].signs[branch] < 0
+
+
+def keeps_sign_at(T, branch, point) -> bool:
+    """No sign change on ``branch`` across ``point`` (true where the branch ends there)."""
+    left = [c for c in T.cells if c.hi == point]
+    right = [c for c in T.cells if c.lo == point]
+    if not left or not right or branch >= len(left[0].signs) or branch >= len(right[0].signs):
+        return True
+    return left[0].signs[branch] == right[0].signs[branch]
+
+
+@certificate("T14", "l. 402-403", "Sign of a-d on each branch: changes at r1 = 5-2√6 on the middle branch and at "
+             "r2 on the upper branch.", needs=["spectrum"],
+             printed=dict(amd=AMD_PRINTED, r1=R1_PRINTED, P1_text=P1_PRINTED, at_r1="middle", at_r2="upper"))
+def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
+    """The sign table of a-d over ]0,1[ (Figure 3.3)."""
+    from certify.plots import sign_chart
+    rr1, rr2 = r1_of(r1), r2_of(P1_text)
+    T = table(spectrum, "a-d", parse(amd), 0, 1)
+    k1, k2 = {v: k for k, v in BRANCH.items()}.get(at_r1, -1), {v: k for k, v in BRANCH.items()}.get(at_r2, -1)
+    fig = sign_chart(spectrum, T, "sign_a_minus_d.png", "certified sign of a − d on the branches of M",
+                     marks={"5-2√6": rr1, "r2": rr2})
+    return conclude([
+        Check(f"a-d changes sign at r1 on the {at_r1} branch", changes_at(T, k1, rr1), ["sign table of a-d:\n\n" + T.markdown()]),
+        Check(f"a-d changes sign at r2 on the {at_r2} branch", changes_at(T, k2, rr2)),
+        Check("and nowhere else on any branch (other critical values keep every sign)",
+              all(keeps_sign_at(T, k, pt) for pt in T.critical for k in range(3) if (pt, k) not in ((rr1, k1), (rr2, k2)))),
+    ], figures=[fig])
+
+
+@certificate("T15", "l. 418-427", "Gröbner basis of {b, cp(M)} gives r^6(r-1)^4(r+1)^4(r^2-10r+1)(5r^4-40r^3+102r^2"
+             "-40r+5); the quartic has no real root; b changes sign at 5-2√6 on the lower branches.",
+             needs=["cp", "spectrum"], printed=dict(b=B_PRINTED, quartic=QUARTIC_B_PRINTED, r1=R1_PRINTED))
+def sign_of_b(cp, spectrum, b, quartic, r1):
+    """Elimination both ways, the quartic's real roots counted both ways, and the
+    sign table of b (Figure 3.4)."""
+    from certify.plots import sign_chart
+    rr1 = r1_of(r1)
+    Q4 = to_fmpz_poly(parse(quartic))
+    T = table(spectrum, "b", parse(b), 0, 1)
+    fig = sign_chart(spectrum, T, "sign_b.png", "certified sign of b on the branches of M", marks={"5-2√6": rr1})
+    checks = eliminant_check("b", parse(b), cp, f"r^6*(r-1)^4*(r+1)^4*(r^2-10*r+1)*({quartic})")
+    checks += [
+        Check("the quartic has no real root (Sturm and python-flint)",
+              len(Algebraic.roots(Q4)) == 0 and len(flint_real_roots(Q4)) == 0),
+        Check("b changes sign at 5-2√6 on one of the two lower branches (the middle one) and not on the upper one",
+              changes_at(T, MIDDLE, rr1) and keeps_sign_at(T, UPPER, rr1), ["sign table of b:\n\n" + T.markdown()]),
+    ]
+    return conclude(checks, figures=[fig], note="Precisely: b changes sign at 5-2√6 on the middle branch only; "
+                                                "on the lower branch b keeps its sign there.")
+
+
+@certificate("T16", "l. 428-434", "Sign of c equals the sign of r^2-10r+1 on λ>0: c>0 for r<5-2√6 and c>0 for "
+             "r>5-2√6, as printed in both halves of the sentence.",
+             printed=dict(c=C_PRINTED, r1=R1_PRINTED, below="+", above="+"))
+def sign_of_c(c, r1, below, above):
+    """c/λ is a polynomial in r: its exact sign intervals on ]0,1[."""
+    cr = sp.cancel(parse(c) / lam)
+    quad = parse("r^2 - 10*r + 1")
+    rr1 = r1_of(r1)
+    ratio = sp.cancel(cr / quad)
+    ivs = sign_intervals(to_fmpq_poly(sp.expand(cr)), 0, 1)
+    s_below = {sg for a, b_, sg in ivs if b_ <= rr1}
+    s_above = {sg for a, b_, sg in ivs if a >= rr1}
+    want = {"+": {1}, "-": {-1}}
+    ratio_pos = not ratio.has(lam) and all(sg > 0 for _a, _b, sg in sign_intervals(to_fmpq_poly(sp.expand(ratio)), 0, 1))
+    printed = [Check("c/λ = (r^2-10r+1)·(positive on ]0,1[), so sign c = sign(r^2-10r+1) when λ > 0", ratio_pos,
+                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"]),
+               Check(f"c {'>' if below == '+' else '<'} 0 for r < 5-2√6", s_below == want.get(below)),
+               Check(f"c {'>' if above == '+' else '<'} 0 for r > 5-2√6", s_above == want.get(above),
+                     [f"sign of c/λ on ]{_end(a)}, {_end(b_)}[: {'+' if sg > 0 else '−'}" for a, b_, sg in ivs])]
+    corrected = [printed[0], printed[1] if below == "+" else Check("c > 0 for r < 5-2√6", s_below == {1}),
+                 Check("c < 0 for 5-2√6 < r < 1", s_above == {-1})]
+    return conclude(printed, corrected)
+
+
+# ---------------------------------------------------------------- T17-T19: fixed points of f
+def fixed_point_tables(spectrum, a, b, c, d, lo, hi):
+    """Sign tables of x₊ and x₋ = (a-d)/c - x₊ (x real only where Δ ≥ 0)."""
+    fp = fixed_point(a, b, c, d)
+    xp = table(spectrum, "x₊", x, lo, hi, fp)
+    xm = table(spectrum, "x₋", sp.cancel((parse(a) - parse(d)) / parse(c)) - x, lo, hi, fp)
+    return fp, xp, xm
+
+
+def fixed_point_signs_at(spectrum, fp, rc, branch) -> set:
+    """Signs of the real fixed points x₊, x₋ on ``branch`` at the algebraic r = rc:
+    where Δ vanishes exactly there, the double fixed point (a-d)/(2c)."""
+    if spectrum.vanishes_at(fp.delta, rc, branch):
+        pt = spectrum.sign_at_point(Condition.of("(a-d)/c", (fp.a - fp.d) / fp.c), rc)
+        return {pt[branch] if pt else "?"}
+    out = set()
+    for name, g in (("x₊", x), ("x₋", sp.cancel((fp.a - fp.d) / fp.c) - x)):
+        pt = spectrum.sign_at_point(Condition.of(name, g, fp), rc)
+        out.add(pt[branch] if pt else "?")
+    return out
+
+
+def no_positive_fixed_point(spectrum, fp, xp, xm, branch, lo, hi, skip=()) -> tuple[bool, list[str]]:
+    """x₊, x₋ are negative or not real on ``branch`` over ]lo, hi[: cells from the sign
+    tables, interior critical values one by one (except those in ``skip``)."""
+    cells = (xp.signs(branch, lo, hi, include_points=False) | xm.signs(branch, lo, hi, include_points=False)) - {"missing"}
+    ok, ev = cells <= {-1, None}, [f"on the cells: {sign_word(cells)}"]
+    for rc in xp.critical:
+        if lo < rc < hi and not any(rc == s_ for s_ in skip):
+            exists = any(c.hi == rc and branch < len(c.branches) for c in xp.cells)
+            if not exists:
+                continue
+            signs = fixed_point_signs_at(spectrum, fp, rc, branch)
+            ok = ok and signs <= {-1, None}
+            ev.append(f"at r ≈ {rc.digits(8)}: {sign_word(signs)}")
+    return ok, ev
+
+
+@certificate("T17", "l. 435-437", "Step 2.4, upper branch: one positive fixed point x₊ up to 5-2√6; none between "
+             "5-2√6 and r2; not real at r2 and beyond, (a-d)^2+4bc < 0 until r = 1.", needs=["spectrum"],
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, V=V_PRINTED,
+                          r1=R1_PRINTED, P1_text=P1_PRINTED))
+def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
+    """a-d, b, c > 0 on the upper branch below r1, so x₊ > 0 > x₋; the sign tables of
+    x₊, x₋ and Δ = (a-d)² + 4bc on the upper branch over ]0,1[, and exact zero tests
+    of Δ at the critical values."""
+    rr1, rr2 = r1_of(r1), r2_of(P1_text)
+    amd, bb, cc = (table(spectrum, n, g, 0, 1) for n, g in (("a-d", parse(a) - parse(d)), ("b", parse(b)), ("c", parse(c))))
+    fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
+    D = table(spectrum, "Δ", fp.delta, 0, 1)
+    at_r2 = spectrum.sign_at_point(Condition.of("Δ", fp.delta), rr2)
+    between, ev_between = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, rr2)
+    zeros = [rc for rc in D.critical if rr2 < rc and spectrum.vanishes_at(fp.delta, rc, UPPER)]
+    cells_negative = D.signs(UPPER, rr2, 1, include_points=False) == {-1}
+    printed = [
+        Check("a-d, b, c > 0 on the upper branch for r < 5-2√6",
+              all(T.holds(UPPER, 1, 0, rr1) for T in (amd, bb, cc))),
+        Check("exactly one positive fixed point, x₊, for r < 5-2√6", xp.holds(UPPER, 1, 0, rr1) and xm.holds(UPPER, -1, 0, rr1),
+              ["x₊ on the branches:\n\n" + xp.markdown(), "x₋ on the branches:\n\n" + xm.markdown()]),
+        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between),
+        Check("at r2 the fixed points are not real (Δ < 0 on the upper branch)", at_r2 is not None and at_r2[0] == -1),
+        Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1", cells_negative and not zeros,
+              ["Δ on the branches:\n\n" + D.markdown()] +
+              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros]),
+    ]
+    corrected = printed[:4] + [Check("Δ < 0 on the upper branch for r2 ≤ r < 1 except at r0 = (7-2√10)/3, where Δ = 0",
+                                     cells_negative and len(zeros) == 1 and zeros[0] == Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10))]
+    for z in zeros:
+        x0 = sp.cancel((fp.a - fp.d) / (2 * fp.c))
+        sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), z)
+        tc = spectrum.sign_at_point(Condition.of("t_c - t_a", x0 / (-parse(V)) - 1), z)
+        sv = spectrum.sign_at_point(Condition.of("v", parse(V)), z)
+        corrected.append(Check(f"at r ≈ {z.digits(8)} f has the double fixed point x = (a-d)/(2c) > 0 on the upper branch, "
+                               "but from p(0) = (1,0,x), q(0) = (-1,u,v) the first collision is c (v < 0 and "
+                               "t_c = x/(-v) < 1 = t_a), not a: no self-similar datum there",
+                               bool(sx and tc and sv) and sx[UPPER] == 1 and sv[UPPER] == -1 and tc[UPPER] == -1,
+                               [f"signs at that r on the upper branch: x {sx and sx[UPPER]}, v {sv and sv[UPPER]}, "
+                                f"t_c - t_a {tc and tc[UPPER]}"]))
+    return conclude(printed, corrected, note="The printed 'until r = 1' misses one point: at r = (7-2√10)/3 the upper "
+                    "branch has Δ = 0 and a positive double fixed point; it does not give a self-similar datum.")
+
+
+@certificate("T18", "l. 438", "Middle branch: no positive fixed point anywhere in ]0,1[.", needs=["spectrum"],
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, r1=R1_PRINTED, P0_text=P0_PRINTED))
+def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
+    """The middle branch exists on ]0, r*]; x₊ and x₋ are negative or not real there
+    except at r1, where a - d = b = c = 0 exactly on this branch: f is the identity."""
+    rr1, rs = r1_of(r1), r_star(P0_text)
+    fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
+    amd = table(spectrum, "a-d", parse(a) - parse(d), 0, 1)
+    bc = table(spectrum, "bc", parse(b) * parse(c), 0, 1)
+    cc = table(spectrum, "c", parse(c), 0, 1)
+    away, ev = no_positive_fixed_point(spectrum, fp, xp, xm, MIDDLE, 0, rs, skip=(rr1,))
+    degenerate = all(spectrum.vanishes_at(g, rr1, MIDDLE) for g in (fp.a, fp.b, fp.c, fp.d))
+    reasoning = [
+        Check("the middle branch exists exactly on ]0, r*[ (and at r*)", all((len(cl.branches) >= 2) == (cl.hi <= rs) for cl in xp.cells)),
+        Check("for r < 5-2√6: a-d < 0, bc < 0, c > 0 on the middle branch",
+              amd.holds(MIDDLE, -1, 0, rr1) and bc.holds(MIDDLE, -1, 0, rr1) and cc.holds(MIDDLE, 1, 0, rr1)),
+        Check("for 5-2√6 < r < r*: a-d > 0, bc < 0, c < 0 on the middle branch",
+              amd.holds(MIDDLE, 1, rr1, rs) and bc.holds(MIDDLE, -1, rr1, rs) and cc.holds(MIDDLE, -1, rr1, rs)),
+    ]
+    return conclude([Check("x₊ and x₋ are never positive on the middle branch wherever f is defined", away, ev),
+                     Check("at r = 5-2√6 the printed f is undefined on the middle branch: a = b = c = d = 0 exactly",
+                           degenerate)] + reasoning,
+                    note="At r = 5-2√6 on the middle branch a, b, c, d (and the numerators and denominators of u, v) "
+                         "all vanish: the printed formulas define no datum there, so the claim holds vacuously at that point.")
+
+
+@certificate("T19", "l. 439-440", "Lower branch: exactly one positive fixed point x₊ up to 5-2√6.", needs=["spectrum"],
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED))
+def lower_branch_fixed_points(spectrum, a, b, c, d, r1):
+    rr1 = r1_of(r1)
+    fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
+    amd, bb, cc = (table(spectrum, n, g, 0, 1) for n, g in (("a-d", parse(a) - parse(d)), ("b", parse(b)), ("c", parse(c))))
+    return conclude([
+        Check("a-d, b, c > 0 on the lower branch for r < 5-2√6", all(T.holds(LOWER, 1, 0, rr1) for T in (amd, bb, cc))),
+        Check("x₊ > 0 > x₋ on the lower branch for r < 5-2√6", xp.holds(LOWER, 1, 0, rr1) and xm.holds(LOWER, -1, 0, rr1),
+              [f"x₊: {sign_word(xp.signs(LOWER, 0, rr1))}; x₋: {sign_word(xm.signs(LOWER, 0, rr1))}"]),
+    ])
+
+
+# ---------------------------------------------------------------- T20-T22: feasibility
+@certificate("T20", "l. 446-448", "u = 0 forces (r^2-10r+1)(r^5-15r^4+66r^3-86r^2-35r+5) = 0; the quintic has exactly "
+             "one root in ]0,1[, ≈ 0.11376; u > 0 on the upper and lower branches for r < 5-2√6.",
+             needs=["cp", "spectrum"], printed=dict(U=U_PRINTED, quintic=P3_PRINTED, digits="0.11376", r1=R1_PRINTED))
+def sign_of_u(cp, spectrum, U, quintic, digits, r1):
+    """u = 0 iff its numerator 16λ - (r^4 - 8r^3 - 2r^2 - 8r + 1) vanishes (r > 0):
+    eliminate λ both ways; then the sign table of u."""
+    rr1 = r1_of(r1)
+    num, _den = sp.fraction(sp.factor(parse(U)))
+    E = eliminate(num, cp)
+    wanted = {str(f) for f, _ in E.factors if f.degree() > 1 or f(0) != 0}
+    target = {str(f) for f, _ in to_fmpz_poly(parse(f"(r^2-10*r+1)*({quintic})")).factor()[1]}
+    roots, nf = root_in_unit_interval(quintic)
+    T = table(spectrum, "u", parse(U), 0, 1)
+    checks = [Check("the eliminant's factors vanishing in ]0,1[ are r^2-10r+1 and the quintic",
+                    {str(primitive(to_fmpz_poly(parse(s.replace('^', '**'))))) if False else s for s in wanted}
+                    >= target and all(not Algebraic.roots(f, 0, 1) for f, _ in E.factors if str(f) not in target),
+                    E.evidence()),
+              Check("both routes agree", E.agree),
+              count_check("the quintic", roots, nf, 1)]
+    if roots:
+        checks += [digits_check("its root", roots[0], digits), Check("it lies above 5-2√6", roots[0] > rr1)]
+    checks.append(Check("u > 0 on the upper and lower branches for r < 5-2√6",
+                        T.holds(UPPER, 1, 0, rr1) and T.holds(LOWER, 1, 0, rr1), ["sign table of u:\n\n" + T.markdown()]))
+    return conclude(checks)
+
+
+@certificate("T21", "l. 449-458", "The five printed velocity expressions q2(t1), q1(t2), q2(t3), q3(t4), q2(t5) "
+             "equal the dynamics and are < 0 on the upper and lower branches for r < 5-2√6.", needs=["spectrum"],
+             printed=dict(velocities=VELOCITIES_PRINTED, U=U_PRINTED, V=V_PRINTED, r1=R1_PRINTED, direction="<"))
+def velocity_inequalities(spectrum, velocities, U, V, r1, direction):
+    """Each expression against the velocities A q(0), BA q(0), ... for q(0) = (-1, u, v)
+    with u, v free (an identity), then its sign table with the printed u, v."""
+    rr1 = r1_of(r1)
+    qs = velocities_of(WORD)
+    want = {"<": -1, ">": 1}.get(direction)
+    checks = []
+    for name, (k, i, text) in velocities.items():
+        same = sp.expand(qs[k][i] - parse(text)) == 0
+        T = table(spectrum, name, parse(text).subs(printed_uv(U, V)), 0, 1)
+        ok = T.holds(UPPER, want, 0, rr1) and T.holds(LOWER, want, 0, rr1)
+        checks.append(Check(f"{name} = {text} is the dynamics and is {direction} 0 on the upper and lower branches "
+                            "for r < 5-2√6", same and ok,
+                            [f"{name}: identity {'holds' if same else 'FAILS'}; upper: "
+                             f"{sign_word(T.signs(UPPER, 0, rr1))}, lower: {sign_word(T.signs(LOWER, 0, rr1))}"]))
+    return conclude(checks)
+
+
+def velocities_of(word):
+    return velocities(word, sp.Matrix([-1, u, v]))
+
+
+@certificate("T22", "l. 460-486", "The printed p3(t4) and p1(t5) equal the dynamics and are > 0 there; p3(t_i) > 0 "
+             "for i = 1..3 follows.", needs=["steps", "cp", "spectrum"],
+             printed=dict(p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED,
+                          d=D_PRINTED, U=U_PRINTED, V=V_PRINTED, r1=R1_PRINTED))
+def distance_inequalities(steps, cp, spectrum, p3t4, p1t5, a, b, c, d, U, V, r1):
+    """Both distances against the dynamics (modulo cp), their sign tables with x = x₊,
+    and the printed argument for p3(t1..t3): A leaves q3 unchanged and B adds
+    (1+r)/2·q2 with q2 < 0 before each b, so p3 is concave on [0, t4]."""
+    rr1 = r1_of(r1)
+    fp = fixed_point(a, b, c, d)
+    checks = []
+    for name, text, k, i in (("p3(t4)", p3t4, 3, 2), ("p1(t5)", p1t5, 4, 0)):
+        same = reduce_mod(steps[k].p[i] - parse(text), cp) == 0
+        T = table(spectrum, name, parse(text), 0, 1, fp)
+        ok = T.holds(UPPER, 1, 0, rr1) and T.holds(LOWER, 1, 0, rr1)
+        checks.append(Check(f"{name} as printed is the dynamics (modulo cp) and is > 0 on the upper and lower branches "
+                            "for r < 5-2√6 with x = x₊", same and ok,
+                            [f"{name}: identity {'holds' if same else 'FAILS'}", f"sign table of {name}:\n\n" + T.markdown()]))
+    qs = velocities_of(WORD)
+    h = (1 + r) / 2
+    concave = all(sp.expand(qs[k + 1][2] - qs[k][2] - (h * qs[k][1] if WORD[k] == "b" else 0)) == 0 for k in range(4))
+    q2_before_b = [table(spectrum, f"q2(t{k})", qs[k][1].subs(printed_uv(U, V)), 0, 1) for k in (1, 3)]
+    neg = all(T.holds(UPPER, -1, 0, rr1) and T.holds(LOWER, -1, 0, rr1) for T in q2_before_b)
+    checks.append(Check("q3 is non-increasing over the first four collisions (A keeps it, B adds (1+r)/2·q2 < 0), so "
+                        "p3 is concave on [0, t4] and p3(t1), p3(t2), p3(t3) > 0 follow from x > 0 and p3(t4) > 0",
+                        concave and neg))
+    return conclude(checks)
+
+
+# ---------------------------------------------------------------- T23-T24: stability
+@certificate("T23", "l. 492-506", "a+d = 0 with cp(M) = 0 forces r^6(r-1)^6(r+1)^3(r^2-10r+1)P2(r)P3(r) = 0; P2 root "
+             "≈ 0.12879, P3 root ≈ 0.11376, both above 5-2√6.", needs=["cp"],
+             printed=dict(a=A_PRINTED, d=D_PRINTED, P2_text=P2_PRINTED, P3_text=P3_PRINTED, d2="0.12879",
+                          d3="0.11376", r1=R1_PRINTED, degree=30))
+def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, r1, degree):
+    rr1 = r1_of(r1)
+    product = f"r^6*(r-1)^6*(r+1)^3*(r^2-10*r+1)*({P2_text})*({P3_text})"
+    checks = eliminant_check("a+d", parse(a) + parse(d), cp, product)
+    checks.append(Check(f"the polynomial has degree {degree}", to_fmpz_poly(parse(product)).degree() == degree))
+    for name, text, digits in (("P2", P2_text, d2), ("P3", P3_text, d3)):
+        roots, nf = root_in_unit_interval(text)
+        checks.append(count_check(name, roots, nf, 1))
+        if roots:
+            checks += [digits_check(f"the root of {name}", roots[0], digits),
+                       Check(f"the root of {name} lies above 5-2√6", roots[0] > rr1)]
+    return conclude(checks)
+
+
+@certificate("T24", "l. 488-509", "Upper branch: |q| > 1 (fixed point of f repelling) below 5-2√6; lower branch: "
+             "|q| < 1 but λ not dominant.", needs=["spectrum"],
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED,
+                          upper="|q|>1", lower="|q|<1", stable_when="|q|<1"))
+def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_when):
+    """q = (cx₊+d)/(cx₋+d) = (a+d+√Δ)/(a+d-√Δ), so |q| > 1 iff a+d > 0 (√Δ > 0).
+    Since (cx₊+d)(cx₋+d) = ad - bc, f'(x₊) = (ad-bc)/(cx₊+d)² = 1/q: x₊ is repelling
+    iff |q| < 1.  Both facts certified: the identity exactly, the sign of a+d per branch."""
+    rr1 = r1_of(r1)
+    A, B, C, D = (parse(e) for e in (a, b, c, d))
+    fp = fixed_point(a, b, c, d)
+    apd = table(spectrum, "a+d", A + D, 0, rr1)
+    lam_gap = spectrum.sign_table(Condition.of("λ", lam), 0, rr1)
+    s = sp.Symbol("s_")
+    xp, xm = (A - D + s) / (2 * C), (A - D - s) / (2 * C)
+    product = sp.expand(sp.cancel((C * xp + D) * (C * xm + D)).subs(s ** 2, fp.delta) - (A * D - B * C))
+    q_of = {1: "|q|>1", -1: "|q|<1"}
+    up = {q_of.get(sg, "?") for sg in apd.signs(UPPER)}
+    lo = {q_of.get(sg, "?") for sg in apd.signs(LOWER)}
+    # the printed criterion: stable iff |q| < 1.  True criterion: stable iff |f'(x₊)| = 1/|q| < 1 iff |q| > 1.
+    criterion_printed = stable_when == "|q|>1"
+    ev = ["a+d on the branches:\n\n" + apd.markdown()]
+    printed = [
+        Check(f"upper branch, r < 5-2√6: {upper}", up == {upper}, [f"certified: {sorted(up)}"] + ev),
+        Check(f"lower branch, r < 5-2√6: {lower}", lo == {lower}, [f"certified: {sorted(lo)}"]),
+        Check(f"the fixed point x₊ is stable iff {stable_when}", criterion_printed,
+              ["(cx₊+d)(cx₋+d) = ad - bc holds identically" if product == 0 else "identity (cx₊+d)(cx₋+d) = ad-bc FAILS",
+               "hence f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) = 1/q"]),
+    ]
+    corrected = [
+        Check("(cx₊+d)(cx₋+d) = ad - bc, so f'(x₊) = 1/q and x₊ is stable iff |q| > 1", product == 0),
+        Check("upper branch, r < 5-2√6: a+d < 0, so |q| < 1 and |f'(x₊)| > 1: x₊ is repelling (unstable)",
+              apd.holds(UPPER, -1) and product == 0),
+        Check("lower branch, r < 5-2√6: a+d > 0, so |q| > 1 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: "
+              "λ is not dominant (unstable in the velocities)", apd.holds(LOWER, 1) and product == 0
+              and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)),
+    ]
+    return conclude(printed, corrected, note="The theorem's conclusion (instability on both branches) stands; "
+                    "the printed values of |q| and the printed stability criterion are both reversed.")
+
+
+# ---------------------------------------------------------------- T25: the theorem as a whole
+@certificate("T25.1", "l. 276-321", "Theorem 3.1: self-similar data iff r < 5-2√6, given by the printed formulas, "
+             "and unstable.", needs=["spectrum"],
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, V=V_PRINTED,
+                          velocities=VELOCITIES_PRINTED, p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, r1=R1_PRINTED,
+                          P0_text=P0_PRINTED))
+def theorem_3_1(spectrum, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, P0_text):
+    """Assembles the steps from the certified sign tables (shared with T17-T24):
+    for r < r1 on the upper and lower branches the datum has x₊ > 0, u > 0, the five
+    velocities < 0 and the two distances > 0; for r1 < r < 1 no branch has a positive
+    fixed point (the exceptional points of T17, T18 give no datum); instability as
+    in T24 (corrected reading)."""
+    rr1, rs = r1_of(r1), r_star(P0_text)
+    fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
+    uv = printed_uv(U, V)
+    tables = [table(spectrum, "u", parse(U), 0, 1)]
+    tables += [table(spectrum, name, parse(text).subs(uv), 0, 1) for name, (_k, _i, text) in velocities.items()]
+    dist = [table(spectrum, name, parse(text), 0, 1, fp) for name, text in (("p3(t4)", p3t4), ("p1(t5)", p1t5))]
+    feasible = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
+                   and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
+                   for k in (UPPER, LOWER))
+    middle_out = tables[0].signs(MIDDLE, 0, rr1) == {-1}
+    above = all((xp.signs(k, rr1, 1, include_points=False) | xm.signs(k, rr1, 1, include_points=False)) - {"missing"} <= {-1, None}
+                for k in range(3))
+    apd = table(spectrum, "a+d", fp.a + fp.d, 0, rr1)
+    lam_t = table(spectrum, "λ", lam, 0, rr1)
+    unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
+    return conclude([
+        Check("for r < 5-2√6, on the upper and lower branches, the printed datum (x = x₊, u, v) satisfies every "
+              "velocity and distance inequality of Steps 2-3", feasible),
+        Check("on the middle branch u < 0 for r < 5-2√6: no datum", middle_out),
+        Check("for 5-2√6 < r < 1 no branch has a positive fixed point (off the isolated points of T17, T18)", above),
+        Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable),
+    ], note="The isolated exceptions at r = (7-2√10)/3 (T17) and at r = 5-2√6 on the middle branch (T18) give no "
+            "self-similar datum, so the 'iff' stands.")

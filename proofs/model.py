@@ -1,0 +1,103 @@
+"""Section 2 (l. 147-247): the collision law in relative coordinates.
+
+M1  the law (momentum, restitution) gives exactly the printed A, B, C;
+M2  AC = CA;
+M3  a collision turns q_i < 0 into q_i > 0, so particles never cross;
+M4  scaling p or q by a positive factor keeps the collisions and the time ratios.
+"""
+import sympy as sp
+
+from certify.model import INDEX, LETTERS, collision_matrix
+from certify.poly import parse, r, show
+from certify.runner import Check, certificate, conclude
+
+A_PRINTED = "[[-r, 0, 0], [(1+r)/2, 1, 0], [0, 0, 1]]"
+B_PRINTED = "[[1, (1+r)/2, 0], [0, -r, 0], [0, (1+r)/2, 1]]"
+C_PRINTED = "[[1, 0, 0], [0, 1, (1+r)/2], [0, 0, -r]]"
+
+
+def matrix(text: str) -> sp.Matrix:
+    """A printed 3×3 matrix, rows as lists."""
+    return sp.Matrix(parse(text))
+
+
+def law_matrix(letter: str) -> sp.Matrix:
+    """The matrix K with q' = K q derived from the collision law itself: for the pair
+    (i, i+1), v_i' + v_{i+1}' = v_i + v_{i+1} and v_i' - v_{i+1}' = -r(v_i - v_{i+1})."""
+    v = sp.symbols("v1:5")
+    i = INDEX[letter]
+    vp = list(v)
+    a, b = sp.symbols("a b")
+    sol = sp.solve([a + b - (v[i] + v[i + 1]), a - b + r * (v[i] - v[i + 1])], [a, b])
+    vp[i], vp[i + 1] = sol[a], sol[b]
+    q = sp.Matrix([v[k + 1] - v[k] for k in range(3)])
+    qp = sp.Matrix([vp[k + 1] - vp[k] for k in range(3)])
+    # express q' in the basis q: v is determined by q up to a common shift
+    shift = sp.Symbol("w")
+    subs = {v[0]: shift}
+    qs = sp.symbols("q1:4")
+    for k in range(3):
+        subs[v[k + 1]] = shift + sum(qs[: k + 1])
+    qp = qp.subs(subs).applyfunc(sp.expand)
+    K = sp.Matrix(3, 3, lambda row, col: sp.expand(qp[row]).coeff(qs[col]))
+    assert all(sp.expand(qp[row] - sum(K[row, c] * qs[c] for c in range(3))) == 0 for row in range(3))
+    return K.applyfunc(sp.factor)
+
+
+@certificate("M1", "l. 209-232", "The collision law in relative coordinates gives exactly the matrices A, B, C.",
+             printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
+def collision_law_gives_A_B_C(A, B, C):
+    """Derive q' = K q from momentum conservation and restitution, compare with the print."""
+    checks = []
+    for letter, text in zip(LETTERS, (A, B, C)):
+        K = law_matrix(letter)
+        diff = (K - matrix(text)).applyfunc(sp.simplify)
+        checks.append(Check(f"the law for a collision of type {letter} gives the printed {letter.upper()}",
+                            diff == sp.zeros(3, 3), [f"derived: `{show(K.tolist())}`"]))
+    engine = all((law_matrix(k) - collision_matrix(k)).applyfunc(sp.simplify) == sp.zeros(3, 3) for k in LETTERS)
+    checks.append(Check("the engine's collision matrices are the ones the law gives", engine))
+    return conclude(checks)
+
+
+@certificate("M2", "l. 240", "AC = CA.", printed=dict(A=A_PRINTED, C=C_PRINTED))
+def a_and_c_commute(A, C):
+    """The printed A and C commute (simultaneous a and c collisions are well defined)."""
+    comm = (matrix(A) * matrix(C) - matrix(C) * matrix(A)).applyfunc(sp.expand)
+    return conclude([Check("AC - CA = 0 identically in r", comm == sp.zeros(3, 3),
+                           [f"AC - CA = `{show(comm.tolist())}`"])])
+
+
+@certificate("M3", "l. 176-182", "A collision turns an approaching pair (q_i < 0) into a separating one "
+             "(q_i > 0): particles never cross.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
+def collisions_separate(A, B, C):
+    """Row i of K_i is -r e_i, so q_i' = -r q_i > 0 when q_i < 0 and 0 < r < 1.
+    Between collisions p is affine in t and a gap closes only at a collision, after
+    which it reopens: every gap p_i stays >= 0, so the order of the particles holds."""
+    checks = []
+    for letter, text in zip(LETTERS, (A, B, C)):
+        K, i = matrix(text), INDEX[letter]
+        row = K.row(i).applyfunc(sp.expand)
+        expected = sp.Matrix([[-r if k == i else 0 for k in range(3)]])
+        checks.append(Check(f"after {letter}: q_{i + 1}' = -r q_{i + 1}, positive when q_{i + 1} < 0",
+                            row == expected, [f"row {i + 1} of {letter.upper()}: `{show(row.tolist())}`"]))
+    return conclude(checks)
+
+
+@certificate("M4", "l. 521", "Scaling p or q by a positive factor keeps the collision order and the ratios "
+             "of collision times.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
+def scaling_invariance(A, B, C):
+    """With p ↦ αp, q ↦ βq (α, β > 0): every candidate time -p_i/q_i is multiplied by α/β,
+    so the next collision is the same; K(βq) = βK q, and p(t_k) scales by α; by
+    induction all collisions agree and every time is multiplied by α/β."""
+    al, be = sp.symbols("alpha beta", positive=True)
+    p = sp.Matrix(sp.symbols("p1:4", positive=True))
+    q = sp.Matrix(sp.symbols("q1:4"))
+    checks = []
+    for letter, text in zip(LETTERS, (A, B, C)):
+        K, i = matrix(text), INDEX[letter]
+        t, ts = -p[i] / q[i], -(al * p[i]) / (be * q[i])
+        new_p, new_ps = p + t * q, al * p + ts * be * q
+        ok = (sp.simplify(ts - al / be * t) == 0 and (new_ps - al * new_p).applyfunc(sp.simplify) == sp.zeros(3, 1)
+              and (K * (be * q) - be * (K * q)).applyfunc(sp.expand) == sp.zeros(3, 1))
+        checks.append(Check(f"collision {letter}: time ×α/β, p(t) ×α, K q ×β", ok))
+    return conclude(checks)

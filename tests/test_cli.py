@@ -1,0 +1,241 @@
+"""The command line.
+
+In-process tests run ``cli.main`` on a small fake set of certificates (the
+runner's ``load_all`` is replaced, so the real proofs are not run).  Subprocess
+tests check the exit codes and one-line errors of ``python -m certify`` on
+commands whose outcome does not depend on the real certificates.
+"""
+from __future__ import annotations
+
+import io
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import matplotlib.pyplot as plt
+import pytest
+
+from certify import cli, figures, progress, report, runner
+from certify.runner import OBSERVED, Certificate, Check, Outcome, conclude
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+# --------------------------------------------------------------------------
+# A fake set of certificates
+
+def passing():
+    return conclude([Check("holds as printed", True, ["`1 = 1`"])])
+
+
+def erratum():
+    return conclude([Check("as printed", False, ["off by a sign"])],
+                    corrected=[Check("with the sign corrected", True)])
+
+
+def observed():
+    fig, ax = plt.subplots(figsize=(2, 2))
+    ax.plot([0, 1], [1, 0])
+    return Outcome(OBSERVED, [Check("seen", True)], figures=[figures.save_figure(fig, "seen.png")])
+
+
+def broken():
+    raise ZeroDivisionError("division by zero")
+
+
+def interrupted():
+    raise KeyboardInterrupt
+
+
+@pytest.fixture
+def fake(monkeypatch):
+    """Replace the registry by X1 (PASS), X2 (ERRATUM), X3 (OBSERVED, one figure);
+    returns a function that adds more."""
+    registry = {}
+
+    def add(cid, func):
+        registry[cid] = Certificate(cid, f"l. {len(registry) + 1}", f"claim {cid} |x|",
+                                    func, (), {}, "tests.test_cli")
+    for cid, func in (("X1", passing), ("X2", erratum), ("X3", observed)):
+        add(cid, func)
+    monkeypatch.setattr(runner, "load_all", lambda: registry)
+    yield add
+    assert figures.get_output_dir() is None     # the CLI always restores the setting
+
+
+def lines(text: str) -> list[str]:
+    return text.strip().splitlines()
+
+
+# --------------------------------------------------------------------------
+# all
+
+def test_all_writes_report_json_timings_and_figures(fake, tmp_path, capsys):
+    out = tmp_path / "reports"
+    assert cli.main(["all", "--out", str(out)]) == 0
+    for name in ("REPORT.md", "report.json", "timings.json", "figures/seen.png"):
+        assert (out / name).is_file(), name
+    assert "![X3: seen](figures/seen.png)" in (out / "REPORT.md").read_text(encoding="utf-8")
+    std = capsys.readouterr()
+    assert lines(std.out)[-1] == "3 certificates: 1 PASS, 1 ERRATUM, 0 FAIL, 1 OBSERVED"
+    assert std.err == ""                        # stderr is not a terminal: no progress
+
+
+def test_all_is_reproducible(fake, tmp_path):
+    cli.main(["all", "--out", str(tmp_path / "a")])
+    cli.main(["all", "--out", str(tmp_path / "b")])
+    for name in ("REPORT.md", "report.json", "figures/seen.png"):
+        assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes()
+
+
+def test_all_check_fails_on_missing_then_stale_report(fake, tmp_path, capsys):
+    out = tmp_path / "reports"
+    assert cli.main(["all", "--check", "--out", str(out)]) == 1
+    assert "REPORT.md was missing" in capsys.readouterr().err
+    assert cli.main(["all", "--check", "--out", str(out)]) == 0
+    assert capsys.readouterr().err == ""
+
+    fresh = (out / "REPORT.md").read_text(encoding="utf-8")
+    (out / "REPORT.md").write_text(fresh.replace("claim X2", "claim X2 (edited)"), encoding="utf-8")
+    assert cli.main(["all", "--check", "--out", str(out)]) == 1
+    err = lines(capsys.readouterr().err)
+    assert len(err) == 1 and "was stale (changed: summary, X2)" in err[0]
+    assert (out / "REPORT.md").read_text(encoding="utf-8") == fresh     # rewritten anyway
+
+
+def test_a_fail_gives_exit_code_1(fake, tmp_path, capsys):
+    fake("X4", broken)
+    assert cli.main(["all", "--out", str(tmp_path)]) == 1
+    std = capsys.readouterr()
+    assert "1 FAIL" in lines(std.out)[-1]
+    assert lines(std.err) == ["certify: FAIL: X4"]
+
+
+def test_all_removes_figures_no_certificate_made(fake, tmp_path):
+    (tmp_path / "figures").mkdir()
+    (tmp_path / "figures" / "gone.png").write_bytes(b"old")
+    cli.main(["all", "--out", str(tmp_path)])
+    assert sorted(p.name for p in (tmp_path / "figures").iterdir()) == ["seen.png"]
+
+
+# --------------------------------------------------------------------------
+# run, list, bench
+
+def test_run_prints_verdicts_and_writes_nothing(fake, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    fake("X4", broken)
+    assert cli.main(["run", "X2", "X4", "X3"]) == 1
+    out = lines(capsys.readouterr().out)
+    assert out[0].split()[:2] == ["X2", "ERRATUM"] and out[0].endswith("claim X2 |x|")
+    assert out[1].split()[:2] == ["X3", "OBSERVED"]
+    assert out[2].split()[:2] == ["X4", "FAIL"]
+    assert "✗ the certificate ran to completion: ZeroDivisionError: division by zero" in out[3]
+    assert out[-1] == "3 certificates: 0 PASS, 1 ERRATUM, 1 FAIL, 1 OBSERVED"
+    assert list(tmp_path.iterdir()) == []       # no report, no figure
+
+
+def test_run_with_out_writes_a_report(fake, tmp_path):
+    assert cli.main(["run", "X3", "--out", str(tmp_path)]) == 0
+    assert (tmp_path / "figures" / "seen.png").is_file()
+    assert "X1" not in (tmp_path / "REPORT.md").read_text(encoding="utf-8")
+
+
+def test_run_unknown_id_is_a_usage_error(fake, capsys):
+    assert cli.main(["run", "X1", "Y9"]) == 2
+    assert lines(capsys.readouterr().err) == [
+        "certify: error: unknown claim id 'Y9' (see 'python -m certify list')"]
+
+
+def test_list(fake, capsys):
+    assert cli.main(["list"]) == 0
+    out = lines(capsys.readouterr().out)
+    assert [line.split()[:3] for line in out] == [["X1", "l.", "1"], ["X2", "l.", "2"],
+                                                  ["X3", "l.", "3"]]
+
+
+def test_bench(fake, capsys):
+    assert cli.main(["bench", "--repeat", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "2 runs of 3 certificates" in out and "heaviest certificates" in out
+
+
+# --------------------------------------------------------------------------
+# Errors never end in a traceback
+
+def test_internal_error_is_one_line(fake, tmp_path, monkeypatch, capsys):
+    def crash(*args):
+        raise RuntimeError("boom")
+    monkeypatch.setattr(report, "write_report", crash)
+    assert cli.main(["all", "--out", str(tmp_path)]) == 1
+    err = [line for line in lines(capsys.readouterr().err)]
+    assert len(err) == 1 and err[0].startswith("certify: internal error: RuntimeError: boom")
+
+
+def test_interrupt_exits_130(fake, tmp_path, capsys):
+    fake("X4", interrupted)
+    assert cli.main(["all", "--out", str(tmp_path)]) == 130
+    assert lines(capsys.readouterr().err) == ["certify: interrupted"]
+    assert not (tmp_path / "REPORT.md").exists()
+
+
+def test_help_exits_0(capsys):
+    assert cli.main(["--help"]) == 0
+    assert "exit codes" in capsys.readouterr().out
+
+
+# --------------------------------------------------------------------------
+# Progress
+
+class Terminal(io.StringIO):
+    def isatty(self):
+        return True
+
+
+def test_progress_on_a_terminal_only():
+    tty, pipe = Terminal(), io.StringIO()
+    for stream in (tty, pipe):
+        progress.show(0, 2, "T1", stream)
+        progress.show(1, 2, "T2", stream)
+        progress.show(2, 2, "", stream)
+    assert pipe.getvalue() == ""
+    assert tty.getvalue() == "\r\x1b[K[1/2] T1\r\x1b[K[2/2] T2\r\x1b[K"
+
+
+# --------------------------------------------------------------------------
+# The real program, as a user runs it
+
+def certify(*args: str) -> subprocess.CompletedProcess:
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    env.pop("CERTIFY_DEBUG", None)
+    return subprocess.run([sys.executable, "-m", "certify", *args], cwd=ROOT, env=env,
+                          capture_output=True, text=True, timeout=120)
+
+
+@pytest.mark.parametrize("args", [
+    ["run", "NOPE"],
+    ["frobnicate"],
+    [],
+    ["all", "--bogus"],
+    ["all", "--out", "/proc/forbidden"],
+    ["bench", "--repeat", "0"],
+])
+def test_usage_errors_exit_2_with_one_line(args):
+    done = certify(*args)
+    assert done.returncode == 2, done.stderr
+    assert len(lines(done.stderr)) == 1 and done.stderr.startswith("certify: error: ")
+    assert "Traceback" not in done.stderr + done.stdout
+
+
+def test_output_under_a_file_is_a_usage_error(tmp_path):
+    (tmp_path / "file").write_text("")
+    done = certify("all", "--out", str(tmp_path / "file" / "reports"))
+    assert done.returncode == 2
+    assert lines(done.stderr) == [f"certify: error: cannot write to output directory "
+                                  f"{str(tmp_path / 'file' / 'reports')!r}: Not a directory"]
+
+
+def test_list_runs():
+    done = certify("list")
+    assert done.returncode == 0, done.stderr
+    assert "Traceback" not in done.stderr

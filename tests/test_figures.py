@@ -1,0 +1,49 @@
+"""Saving figures: nothing written unless the CLI set a directory; same bytes twice."""
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import pytest
+
+from certify import figures
+
+
+def draw():
+    fig, ax = plt.subplots(figsize=(3, 2))
+    ax.plot([0, 1, 2], [0, 1, 4])
+    ax.set_title("r ↦ λ(r)")
+    return fig
+
+
+def test_nothing_written_without_output_dir(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert not figures.enabled()
+    fig = draw()
+    assert figures.save_figure(fig, "spectrum") == "spectrum.png"
+    assert not plt.fignum_exists(fig.number)          # closed all the same
+    assert list(tmp_path.rglob("*")) == []
+
+
+def test_saved_bytes_are_reproducible(tmp_path):
+    with figures.output_dir(tmp_path / "a"):
+        assert figures.enabled()
+        figures.save_figure(draw(), "f.png")
+    with figures.output_dir(tmp_path / "b"):
+        figures.save_figure(draw(), "f.png")
+    assert not figures.enabled()                        # restored after the block
+    first, second = (tmp_path / "a" / "f.png").read_bytes(), (tmp_path / "b" / "f.png").read_bytes()
+    assert first.startswith(b"\x89PNG") and first == second
+    assert b"Matplotlib" not in first                   # no Software metadata
+    assert sorted(p.name for p in (tmp_path / "a").iterdir()) == ["f.png"]   # no temp file
+
+
+@pytest.mark.parametrize("bad", ["", "../x.png", "sub/x.png", ".."])
+def test_figure_name_must_be_plain(bad):
+    with pytest.raises(ValueError):
+        figures.figure_name(bad)
+
+
+def test_prune_keeps_listed_figures(tmp_path):
+    for name in ("keep.png", "old.png", "notes.txt"):
+        (tmp_path / name).write_text("x")
+    assert figures.prune(tmp_path, keep={"keep.png"}) == ["old.png"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["keep.png", "notes.txt"]

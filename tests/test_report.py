@@ -1,0 +1,173 @@
+"""The report writer, on hand-built outcomes (no real certificate is run)."""
+from __future__ import annotations
+
+import json
+import os
+import re
+
+import pytest
+
+from certify import report
+from certify.runner import ERRATUM, FAIL, OBSERVED, PASS, Certificate, Check, Outcome, conclude
+
+
+def cert(cid, statement="a statement", line="l. 1"):
+    """A certificate record with a do-nothing function."""
+    def claim():
+        """Docstring title."""
+    return Certificate(cid, line, statement, claim, (), {}, "proofs.fake")
+
+
+CODE = "```\nP0 = 1 + r\n    | indented |\n```"
+
+
+def sample_results():
+    """One certificate per status, with evidence, a note and a figure."""
+    return [
+        (cert("M1", "AC = CA"), conclude([Check("AC = CA", True, ["`AC - CA = 0`"])],
+                                         evidence=[CODE])),
+        (cert("T4", "|q| > 1 on the upper branch", "l. 340-349"),
+         conclude([Check("Δ_cp = disc/1811939328", False, ["ratio is `-1/4`", CODE]),
+                   Check("degree 10", True)],
+                  corrected=[Check("Δ_cp = -disc/(4·1811939328)", True, ["exact"])],
+                  note="The paper's normalisation differs by -4.")),
+        (cert("T5", "P0 has one root in ]0,1[", "l. 350"),
+         conclude([Check("one root", False, ["Sturm count 2"])])),
+        (cert("N2", "Figure 5.1", "l. 1071"),
+         Outcome(OBSERVED, [Check("windows of stability", True)], figures=["spectrum.png"])),
+    ]
+
+
+def unescaped_pipes(row: str) -> int:
+    return len(re.findall(r"(?<!\\)\|", row))
+
+
+def test_markdown_is_deterministic():
+    assert report.render_markdown(sample_results()) == report.render_markdown(sample_results())
+    assert report.render_json(sample_results()) == report.render_json(sample_results())
+
+
+def test_markdown_has_no_date_or_timing():
+    text = report.render_markdown(sample_results())
+    assert not re.search(r"\b20\d\d-\d\d-\d\d\b|\bseconds\b", text)
+
+
+def test_summary_counts_every_status():
+    text = report.render_markdown(sample_results())
+    for status, n in [(PASS, 1), (ERRATUM, 1), (FAIL, 1), (OBSERVED, 1)]:
+        assert f"| {status} | {n} |" in text
+    assert "| **Total** | **4** |" in text
+    assert "Failing: [T5](#cert-t5)." in text
+    assert report.summary_line(sample_results()) == \
+        "4 certificates: 1 PASS, 1 ERRATUM, 1 FAIL, 1 OBSERVED"
+
+
+def test_errata_table_shows_printed_next_to_corrected():
+    text = report.render_markdown(sample_results())
+    errata = text.split("## Errata", 1)[1].split("## All certificates", 1)[0]
+    assert "| As printed | Corrected (certified) |" in errata
+    assert "| ✗ Δ_cp = disc/1811939328 | ✓ Δ_cp = -disc/(4·1811939328) |" in errata
+    assert "degree 10" not in errata          # only the failing printed checks
+    assert "T5" not in errata                 # a FAIL is not an erratum
+
+
+def test_no_errata():
+    results = [r for r in sample_results() if r[1].status != ERRATUM]
+    assert "None: no certificate has status ERRATUM." in report.render_markdown(results)
+
+
+def test_table_rows_escape_pipes():
+    text = report.render_markdown(sample_results())
+    header = "| Id | Paper | Statement | Status |"
+    assert header in text
+    table = text.split(header, 1)[1].split("\n\n", 1)[0].splitlines()[2:]
+    assert len(table) == 4
+    assert all(unescaped_pipes(row) == 5 for row in table)
+    assert "\\|q\\| > 1 on the upper branch" in text
+
+
+def test_section_keeps_evidence_and_code_blocks():
+    text = report.render_markdown(sample_results())
+    section = text.split('<a id="cert-t4"></a>', 1)[1].split("### ", 1)[0]
+    assert "T4 — |q| > 1 on the upper branch" in section.splitlines()[0]
+    assert "Paper: l. 340-349 · Status: **ERRATUM**" in section
+    assert "`proofs/fake.py` (`claim`)" in section
+    assert "- ✗ Δ_cp = disc/1811939328\n  - ratio is `-1/4`" in section
+    assert "  - ```\n    P0 = 1 + r\n        | indented |\n    ```" in section   # nested, intact
+    assert "**Corrected (certified)**\n\n- ✓ Δ_cp = -disc/(4·1811939328)" in section
+    assert "**Note.** The paper's normalisation differs by -4." in section
+    m1 = text.split('<a id="cert-m1"></a>', 1)[1].split("### ", 1)[0]
+    assert "**Evidence**\n\n" + CODE in m1    # outcome evidence verbatim
+
+
+def test_unclosed_code_fence_is_closed():
+    results = [(cert("M1"), conclude([Check("x", True)], evidence=["```\nno end"]))]
+    text = report.render_markdown(results)
+    assert text.count("```") % 2 == 0
+
+
+def test_figures_inline():
+    text = report.render_markdown(sample_results())
+    assert "![N2: spectrum](figures/spectrum.png)" in text
+    data = json.loads(report.render_json(sample_results()))
+    assert data["certificates"][3]["figures"] == ["figures/spectrum.png"]
+
+
+def test_json_content():
+    data = json.loads(report.render_json(sample_results()))
+    assert data["summary"] == {PASS: 1, ERRATUM: 1, FAIL: 1, OBSERVED: 1}
+    t4 = data["certificates"][1]
+    assert (t4["id"], t4["line"], t4["status"]) == ("T4", "l. 340-349", ERRATUM)
+    assert t4["printed"][0] == {"statement": "Δ_cp = disc/1811939328", "holds": False,
+                                "evidence": ["ratio is `-1/4`", CODE]}
+    assert t4["corrected"][0]["holds"] is True
+    assert t4["note"] == "The paper's normalisation differs by -4."
+    assert t4["proof"] == {"module": "proofs.fake", "function": "claim"}
+
+
+def test_undecidable_holds_is_not_a_pass():
+    class Undecided:
+        def __bool__(self):
+            raise TypeError("cannot determine truth value")
+    assert report.check_holds(Check("x", Undecided())) is False
+
+
+def test_write_report_writes_three_files(tmp_path):
+    timings = {"certificates": {"M1": {"seconds": 0.5, "of_which_shared": 0.25},
+                                "T4": {"seconds": 1.0, "of_which_shared": 0.0}},
+               "shared": {"M": 0.25}}
+    text = report.write_report(sample_results(), timings, tmp_path)
+    assert (tmp_path / "REPORT.md").read_text(encoding="utf-8") == text
+    assert json.loads((tmp_path / "report.json").read_text())["summary"][PASS] == 1
+    saved = json.loads((tmp_path / "timings.json").read_text())
+    assert saved["total_seconds"] == 1.5 and saved["shared"] == {"M": 0.25}
+    assert not [p for p in os.listdir(tmp_path) if p.endswith(".tmp")]
+
+
+def test_crash_leaves_previous_report_intact(tmp_path, monkeypatch):
+    for name in ("REPORT.md", "report.json", "timings.json"):
+        (tmp_path / name).write_text("old " + name)
+
+    def crash(src, dst):
+        raise OSError("disk on fire")
+    monkeypatch.setattr(os, "replace", crash)
+    with pytest.raises(OSError, match="disk on fire"):
+        report.write_report(sample_results(), {"certificates": {}, "shared": {}}, tmp_path)
+    for name in ("REPORT.md", "report.json", "timings.json"):
+        assert (tmp_path / name).read_text() == "old " + name
+    assert sorted(os.listdir(tmp_path)) == ["REPORT.md", "report.json", "timings.json"]
+
+
+def test_changed_parts_names_what_is_stale():
+    old = report.render_markdown(sample_results())
+    assert report.changed_parts(None, old) == ["missing"]
+    assert report.changed_parts(old, old) == []
+    results = sample_results()
+    results[2] = (results[2][0], conclude([Check("one root", True)]))   # T5 now passes
+    assert report.changed_parts(old, report.render_markdown(results)) == ["summary", "T5"]
+    extra = sample_results() + [(cert("N3"), Outcome(OBSERVED, [Check("x", True)]))]
+    assert report.changed_parts(old, report.render_markdown(extra)) == ["summary", "N3 (new)"]
+
+
+def test_anchor():
+    assert report.anchor("T10.1") == "cert-t10-1"
