@@ -40,52 +40,70 @@ import sympy as sp
 
 from certify.algebraic import Algebraic
 from certify.branches import Condition, Spectrum
-from certify.model import INDEX, characteristic_polynomial, collision_matrix, word_matrix
+from certify.model import INDEX, collision_matrix
 from certify.poly import lam, r, resultant_lambda, show, to_fmpz_poly, x
 from certify.runner import Check, certificate, conclude
 
 Q = flint.fmpq
-K = sp.QQ.frac_field(r, lam)               # Q(r, λ), fast exact arithmetic
+K, _LAM, _R = sp.field([lam, r], sp.QQ, sp.lex)     # Q(λ, r); its ring Q[λ, r] is ordered lex λ > r
+RING = K.ring
 BRANCH_NAMES = ("upper", "middle", "lower")
 
 
 # ---------------------------------------------------------------- symbolic candidate
 @dataclass
 class Candidate:
-    """The self-similar candidate of a word w starting with a and ending with b."""
+    """The self-similar candidate of a word w starting with a and ending with b.
+
+    Rational functions of r and λ are kept with numerator and denominator reduced
+    modulo cp (monic in λ): they take the same values on every eigenvalue branch."""
 
     word: str
     M: sp.Matrix                # M_w = K_{c_n} ... K_{c_1}
     cp: sp.Expr                 # det(λI - M_w)
     spectrum: Spectrum
-    q0: tuple                   # (-1, u, v) over Q(r, λ) (elements of K)
+    q0: tuple                   # (-1, u, v), elements of K
     abcd: tuple                 # (a, b, c, d) polynomials in r, λ: f(x) = (ax + b)/(cx + d)
 
     def fixed_points(self) -> dict[str, "FixedPointData"]:
         """x₊ = (a - d + √Δ)/(2c) and x₋ = (a - d - √Δ)/(2c), reduced modulo cp."""
         return {fp.label: fp for fp in fixed_point_data(self.abcd, self.cp)}
 
-
-def kelt(e):
-    """A SymPy expression in r, λ as an element of Q(r, λ)."""
-    return K.from_sympy(sp.sympify(e))
+    def reducer(self) -> "Reducer":
+        """Identity: reducing along a run spoils the cancellations of K (spurious
+        factors in the resultants); conditions are reduced at the end instead."""
+        return Reducer(None)
 
 
 def expr_of(e) -> sp.Expr:
-    """An element of Q(r, λ) (or a pair P0 + x P1) back as a SymPy expression."""
+    """An element of K (or a pair P0 + x P1) back as a SymPy expression."""
     if isinstance(e, tuple):
-        return K.to_sympy(e[0]) + x * K.to_sympy(e[1])
-    return K.to_sympy(e)
+        return e[0].as_expr() + x * e[1].as_expr()
+    return e.as_expr()
+
+
+class Reducer:
+    """Reduction modulo cp of the numerator and the denominator of elements of K."""
+
+    def __init__(self, cp_ring):
+        self.cp = cp_ring
+
+    def __call__(self, e):
+        if self.cp is None:
+            return e
+        n, d = e.numer.rem(self.cp), e.denom.rem(self.cp)
+        if d == 0:
+            raise ZeroDivisionError("a denominator vanishes on every branch")
+        return K.new(n, d)
 
 
 def collide_k(letter: str, q: tuple) -> tuple:
     """K q over Q(r, λ)."""
-    R = kelt(r)
-    h = (1 + R) / 2
+    h = (1 + _R) / 2
     q1, q2, q3 = q
-    return {"a": (-R * q1, q2 + h * q1, q3),
-            "b": (q1 + h * q2, -R * q2, q3 + h * q2),
-            "c": (q1, q2 + h * q3, -R * q3)}[letter]
+    return {"a": (-_R * q1, q2 + h * q1, q3),
+            "b": (q1 + h * q2, -_R * q2, q3 + h * q2),
+            "c": (q1, q2 + h * q3, -_R * q3)}[letter]
 
 
 @dataclass
@@ -97,9 +115,10 @@ class SymbolicStep:
     q: tuple
 
 
-def run_letters(letters: str, q0: tuple) -> list[SymbolicStep]:
+def run_letters(letters: str, q0: tuple, reduce=None) -> list[SymbolicStep]:
     """From p(0) = (1, 0, x), q(0) = q0, apply the collisions in ``letters`` with
     times *defined* by p_i(t_k) = 0 (l. 460-463): positions stay affine in x."""
+    red = reduce or (lambda e: e)
     p = [(K.one, K.zero), (K.zero, K.zero), (K.zero, K.one)]
     q = tuple(q0)
     out = []
@@ -108,45 +127,69 @@ def run_letters(letters: str, q0: tuple) -> list[SymbolicStep]:
         if q[i] == K.zero:
             raise ZeroDivisionError(f"q_{i + 1} vanishes identically before {letter}")
         t = (-p[i][0] / q[i], -p[i][1] / q[i])
-        p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
+        p = [(red(P0 + t[0] * qj), red(P1 + t[1] * qj)) for (P0, P1), qj in zip(p, q)]
         p[i] = (K.zero, K.zero)
-        q = collide_k(letter, q)
+        q = tuple(red(e) for e in collide_k(letter, q))
         out.append(SymbolicStep(letter, p, q))
     return out
 
 
-def eigenvector_k(M: sp.Matrix) -> tuple:
-    """q = (-1, u, v) solving rows 1 and 2 of M q = λ q (Cramer's rule over Q(r, λ))."""
-    L = kelt(lam)
-    m = [[kelt(M[i, j]) for j in range(3)] for i in range(3)]
-    a11, a12, a21, a22 = m[0][1], m[0][2], m[1][1] - L, m[1][2]
-    b1, b2 = m[0][0] - L, m[1][0]
+def word_matrix_k(word: str) -> list[list]:
+    """M_w = K_{c_n} ... K_{c_1} with entries in K."""
+    h = (1 + _R) / 2
+    o, z = K.one, K.zero
+    mats = {"a": [[-_R, z, z], [h, o, z], [z, z, o]], "b": [[o, h, z], [z, -_R, z], [z, h, o]],
+            "c": [[o, z, z], [z, o, h], [z, z, -_R]]}
+    M = [[o if i == j else z for j in range(3)] for i in range(3)]
+    for letter in word:
+        Kc = mats[letter]
+        M = [[sum((Kc[i][k] * M[k][j] for k in range(3)), z) for j in range(3)] for i in range(3)]
+    return M
+
+
+def det3(A) -> object:
+    return (A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0])
+            + A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]))
+
+
+def eigenvector_k(m, red) -> tuple:
+    """q = (-1, u, v) solving rows 1 and 2 of M q = λ q (Cramer's rule over K)."""
+    a11, a12, a21, a22 = m[0][1], m[0][2], m[1][1] - _LAM, m[1][2]
+    b1, b2 = m[0][0] - _LAM, m[1][0]
     det = a11 * a22 - a12 * a21
-    return (-K.one, (b1 * a22 - a12 * b2) / det, (a11 * b2 - b1 * a21) / det)
+    return (-K.one, red((b1 * a22 - a12 * b2) / det), red((a11 * b2 - b1 * a21) / det))
 
 
-def polynomial_abcd(steps: list[SymbolicStep]) -> tuple:
+def polynomial_abcd(steps: list[SymbolicStep], cp_ring) -> tuple:
     """(a, b, c, d) with p_3(t_n) = ax + b, p_1(t_n) = cx + d, over a common
     denominator (a common factor does not change f; x₊ and x₋ may swap, and both
-    are considered)."""
+    are considered), reduced modulo cp (polynomials in Q[λ, r], not in K: K
+    normalises constants and would scale a, b, c, d differently)."""
     (d0, c0), (b0, a0) = steps[-1].p[0], steps[-1].p[2]
-    num = [sp.fraction(sp.cancel(expr_of(e))) for e in (a0, b0, c0, d0)]
-    den = sp.lcm([n[1] for n in num])
-    return tuple(sp.expand(sp.cancel(n / dd * den)) for n, dd in num)
+    den = RING.one
+    for e in (a0, b0, c0, d0):
+        den = den.lcm(e.denom)
+    return tuple((e.numer * den.quo(e.denom)).rem(cp_ring).as_expr() for e in (a0, b0, c0, d0))
 
 
 @lru_cache(maxsize=None)
 def candidate(word: str) -> Candidate:
     """M_w, cp, the branches, q(0) and the position map of a word (a ... b)."""
-    if not word or word[0] != "a" or word[-1] != "b":
+    if not word or word[0] != "a" or word[-1] != "b" or any(c not in "abc" for c in word):
         raise ValueError(f"the normalisation q(0) = (-1, u, v), p(0) = (1, 0, x) needs a word a...b, not {word!r}")
-    M = word_matrix(word)
-    cp = characteristic_polynomial(M)
-    q0 = eigenvector_k(M)
-    steps = run_letters(word, q0)
+    Mk = word_matrix_k(word)
+    cpk = det3([[(_LAM if i == j else K.zero) - Mk[i][j] for j in range(3)] for i in range(3)])
+    if cpk.denom.is_ground is False:
+        raise ArithmeticError("cp has a denominator in r")
+    cp_ring = cpk.numer.quo_ground(cpk.denom.LC)          # monic in λ
+    red = Reducer(None)
+    q0 = eigenvector_k(Mk, red)
+    steps = run_letters(word, q0, red)
     if steps[-1].p[1] != (K.zero, K.zero):
         raise ArithmeticError("p_2 does not vanish after the last b")
-    return Candidate(word, M, cp, Spectrum(cp), q0, polynomial_abcd(steps))
+    M = sp.Matrix(3, 3, lambda i, j: sp.factor(Mk[i][j].as_expr()))
+    cp = cp_ring.as_expr()
+    return Candidate(word, M, cp, Spectrum(cp), q0, polynomial_abcd(steps, cp_ring))
 
 
 def matrix_of_name(name: str) -> sp.Matrix:
@@ -158,7 +201,6 @@ def matrix_of_name(name: str) -> sp.Matrix:
 
 
 # ---------------------------------------------------------------- conditions reduced modulo cp
-RING = sp.ring([lam, r], sp.QQ, sp.lex)[0]       # Q[λ, r], lex λ > r: division by cp (monic in λ)
 
 
 @dataclass
@@ -175,13 +217,20 @@ class Requirement:
 
 
 def _ring(e):
-    return RING.from_expr(e) if not isinstance(e, sp.polys.rings.PolyElement) else RING(e.as_expr())
+    if isinstance(e, sp.polys.rings.PolyElement):
+        return e if e.ring == RING else RING.from_expr(e.as_expr())
+    return RING.from_expr(e)
+
+
+@lru_cache(maxsize=None)
+def _cp_ring(cp):
+    return _ring(cp)
 
 
 def mod_cp(e, cp):
     """A polynomial in r, λ reduced modulo cp (monic in λ): the same values on
     every branch, λ-degree below 3."""
-    return _ring(e).rem(_ring(cp)).as_expr()
+    return _ring(e).rem(_cp_ring(cp)).as_expr()
 
 
 @dataclass
@@ -512,13 +561,13 @@ class Analysis:
         sg = self.spec.sign_at_point(condition(req, self.spec.cp, x_value=xv), rc)
         return "?" if sg is None else (sg[k] if k < len(sg) else "missing")
 # ---------------------------------------------------------------- the requirements of a prefix
-def prefix_requirements(word: str, m: int, q0) -> tuple[list[Requirement], list[SymbolicStep]]:
+def prefix_requirements(word: str, m: int, q0, reduce=None) -> tuple[list[Requirement], list[SymbolicStep]]:
     """The candidate of ``word`` realises its first m collisions (strictly, l. 449-486):
     u = q_2(0) > 0 (p_2(0) = 0 right after the last b), x > 0, and at each collision
     k the pair approaches (q_i(t_{k-1}) < 0) and the other gaps stay open (p_j(t_k) > 0).
     The gap that closed at the previous collision is open again automatically
     (p_j(t_k) = τ_k q_j(t_{k-1}) with q_j(t_{k-1}) > 0 and τ_k > 0), so it is not listed."""
-    steps = run_letters(word[:m], q0)
+    steps = run_letters(word[:m], q0, reduce)
     reqs = [Requirement("u = q_2(0)", (q0[1], K.zero), 1), Requirement("x", (K.zero, K.one), 1)]
     previous = INDEX[word[-1]]
     for k, st in enumerate(steps):
@@ -534,7 +583,7 @@ def prefix_requirements(word: str, m: int, q0) -> tuple[list[Requirement], list[
 
 
 def _positive_constant(e) -> bool:
-    v = K.to_sympy(e)
+    v = e.as_expr()
     return v.is_number and v > 0
 
 
@@ -556,9 +605,10 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     checks = [Check(f"the matrix of the word {word} (collisions in time order) is {matrix}", same,
                     [f"M_w = `{show(cand.M.tolist())}`", f"cp(M_w) = `{show(sp.collect(cand.cp, lam))}`"])]
     m = word.index(after) + 1
-    feas, steps = prefix_requirements(word, m, cand.q0)
+    red = cand.reducer()
+    feas, steps = prefix_requirements(word, m, cand.q0, red)
     i, o = INDEX[next], INDEX[other]
-    tail = run_letters(word[:m] + next, cand.q0)[-1]
+    tail = run_letters(word[:m] + next, cand.q0, red)[-1]
     claim = [Requirement(f"q_{i + 1}(t_{m})", (steps[-1].q[i], K.zero), -1),
              Requirement(f"p_{o + 1}(t_{m + 1})", tail.p[o], 1)]
     an = Analysis(cand)

@@ -59,12 +59,14 @@ def collision_law_gives_A_B_C(A, B, C):
     return conclude(checks)
 
 
-@certificate("M2", "l. 240", "AC = CA.", printed=dict(A=A_PRINTED, C=C_PRINTED))
-def a_and_c_commute(A, C):
+@certificate("M2", "l. 240", "AC = CA.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, pair="AC"))
+def a_and_c_commute(A, B, C, pair):
     """The printed A and C commute (simultaneous a and c collisions are well defined)."""
-    comm = (matrix(A) * matrix(C) - matrix(C) * matrix(A)).applyfunc(sp.expand)
-    return conclude([Check("AC - CA = 0 identically in r", comm == sp.zeros(3, 3),
-                           [f"AC - CA = `{show(comm.tolist())}`"])])
+    K = {"A": matrix(A), "B": matrix(B), "C": matrix(C)}
+    X, Y = K[pair[0]], K[pair[1]]
+    comm = (X * Y - Y * X).applyfunc(sp.expand)
+    return conclude([Check(f"{pair} - {pair[::-1]} = 0 identically in r", comm == sp.zeros(3, 3),
+                           [f"{pair} - {pair[::-1]} = `{show(comm.tolist())}`"])])
 
 
 @certificate("M3", "l. 176-182", "A collision turns an approaching pair (q_i < 0) into a separating one "
@@ -84,8 +86,8 @@ def collisions_separate(A, B, C):
 
 
 @certificate("M4", "l. 521", "Scaling p or q by a positive factor keeps the collision order and the ratios "
-             "of collision times.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
-def scaling_invariance(A, B, C):
+             "of collision times.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, time_factor="alpha/beta"))
+def scaling_invariance(A, B, C, time_factor):
     """With p ↦ αp, q ↦ βq (α, β > 0): every candidate time -p_i/q_i is multiplied by α/β,
     so the next collision is the same; K(βq) = βK q, and p(t_k) scales by α; by
     induction all collisions agree and every time is multiplied by α/β."""
@@ -97,7 +99,8 @@ def scaling_invariance(A, B, C):
         K, i = matrix(text), INDEX[letter]
         t, ts = -p[i] / q[i], -(al * p[i]) / (be * q[i])
         new_p, new_ps = p + t * q, al * p + ts * be * q
-        ok = (sp.simplify(ts - al / be * t) == 0 and (new_ps - al * new_p).applyfunc(sp.simplify) == sp.zeros(3, 1)
+        factor = sp.sympify(time_factor, locals={"alpha": al, "beta": be})
+        ok = (sp.simplify(ts - factor * t) == 0 and (new_ps - al * new_p).applyfunc(sp.simplify) == sp.zeros(3, 1)
               and (K * (be * q) - be * (K * q)).applyfunc(sp.expand) == sp.zeros(3, 1))
         checks.append(Check(f"collision {letter}: time ×α/β, p(t) ×α, K q ×β", ok))
     return conclude(checks)
