@@ -125,9 +125,8 @@ class Algebraic:
             self.refine((self.hi - self.lo) / 2)
 
     def __float__(self) -> float:
-        self.refine(Q(1, 2 ** 60))
-        m = (self.lo + self.hi) / 2
-        return int(m.p) / int(m.q)
+        # relative, not absolute, accuracy (a width of 2^-60 is useless near 0)
+        return float(self.digits(20))
 
     def compare_rational(self, q) -> int:
         """sign(self - q), exact."""

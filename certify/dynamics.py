@@ -14,17 +14,17 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .model import INDEX, check_word, collision_matrix
-from .poly import lam, r, u, v, x
+from .poly import FIELD, Xf, lam, r, to_field, u, v, x
 
 
 @dataclass
 class Step:
-    """The state right after the k-th collision of the word."""
+    """The state right after the k-th collision of the word (elements of Q(λ, r, x))."""
 
     letter: str
-    t: sp.Expr          # the time since the previous collision
-    p: sp.Matrix
-    q: sp.Matrix
+    t: object           # the time since the previous collision
+    p: list
+    q: list
 
 
 def eigenvector(M: sp.Matrix, first: int, rows=(0, 1)) -> sp.Matrix:
@@ -40,17 +40,19 @@ def eigenvector(M: sp.Matrix, first: int, rows=(0, 1)) -> sp.Matrix:
     return q.subs(sol).applyfunc(sp.factor)
 
 
-def run_word(word: str, p0: sp.Matrix, q0: sp.Matrix) -> list[Step]:
-    """Apply the word's collisions in order, times defined by p_i(t_k) = 0."""
+def run_word(word: str, p0, q0) -> list[Step]:
+    """Apply the word's collisions in order, times defined by p_i(t_k) = 0, in
+    exact rational-function arithmetic over Q(λ, r, x)."""
     check_word(word)
-    p, q = sp.Matrix(p0), sp.Matrix(q0)
+    p, q = [to_field(e) for e in p0], [to_field(e) for e in q0]
+    K = {k: [[to_field(e) for e in row] for row in collision_matrix(k).tolist()] for k in "abc"}
     steps = []
     for letter in word:
         i = INDEX[letter]
-        t = sp.cancel(-p[i] / q[i])
-        p = (p + t * q).applyfunc(sp.cancel)
-        p[i] = 0
-        q = (collision_matrix(letter) * q).applyfunc(sp.cancel)
+        t = -p[i] / q[i]
+        p = [p[k] + t * q[k] for k in range(3)]
+        p[i] = FIELD.zero
+        q = [sum((K[letter][a][b] * q[b] for b in range(3)), FIELD.zero) for a in range(3)]
         steps.append(Step(letter, t, p, q))
     return steps
 
@@ -63,18 +65,17 @@ def velocities(word: str, q0: sp.Matrix) -> list[sp.Matrix]:
     return out
 
 
-def reduce_mod(e, cp) -> sp.Expr:
-    """The numerator of a rational function of λ reduced modulo cp(λ; r), factored:
+def reduce_mod(e, cp):
+    """The numerator of a rational function of λ reduced modulo cp(λ; r) (monic in λ):
     zero exactly when e vanishes on every root λ of cp where its denominator does not."""
-    num, _den = sp.fraction(sp.cancel(sp.together(e)))
-    return sp.factor(sp.Poly(num, lam).rem(sp.Poly(cp, lam)).as_expr())
+    return to_field(e).numer.rem(to_field(cp).numer)
 
 
-def position_map(steps: list[Step]) -> tuple[sp.Expr, sp.Expr, sp.Expr, sp.Expr]:
-    """(a, b, c, d) with f(x) = p_3(t_n)/p_1(t_n) = (a x + b)/(c x + d)."""
-    f = sp.cancel(steps[-1].p[2] / steps[-1].p[0])
-    num, den = sp.fraction(f)
-    N, D = sp.Poly(num, x), sp.Poly(den, x)
-    if N.degree() > 1 or D.degree() > 1:
+def position_map(steps: list[Step]):
+    """(a, b, c, d) ∈ Q[λ, r] with f(x) = p_3(t_n)/p_1(t_n) = (a x + b)/(c x + d)."""
+    f = steps[-1].p[2] / steps[-1].p[0]
+    N, D = f.numer, f.denom
+    X = Xf.numer
+    if N.degree(X) > 1 or D.degree(X) > 1:
         raise ArithmeticError("f is not a Möbius map in x")
-    return (N.coeff_monomial(x), N.coeff_monomial(1), D.coeff_monomial(x), D.coeff_monomial(1))
+    return (N.coeff_wrt(X, 1), N.coeff_wrt(X, 0), D.coeff_wrt(X, 1), D.coeff_wrt(X, 0))

@@ -13,8 +13,16 @@ from functools import reduce
 
 import flint
 import sympy as sp
+from sympy.polys.fields import FracElement, field
+from sympy.polys.orderings import lex
+from sympy.polys.rings import PolyElement
 
 r, lam, x, u, v, s = sp.symbols("r λ x u v s")
+
+# Q(λ, r, x, u, v, s) as sparse rational functions (SymPy's polys), λ first in lex
+# order, so that division by a cp monic in λ is the remainder in λ over Q(r).
+FIELD, Lf, Rf, Xf, Uf, Vf, Sf = field("λ,r,x,u,v,s", sp.QQ, lex)
+RING = FIELD.ring
 NAMES = {"r": r, "λ": lam, "lam": lam, "lambda": lam, "la": lam, "x": x, "u": u, "v": v}
 
 
@@ -90,6 +98,8 @@ def show(e) -> str:
     """A polynomial in the paper's notation (``r^2 - 10r + 1``) for reports."""
     if isinstance(e, (flint.fmpz_poly, flint.fmpq_poly)):
         e = from_flint(e)
+    if isinstance(e, (PolyElement, FracElement)):
+        e = e.as_expr()
     text = sp.sstr(sp.sympify(e), order="lex")
     return text.replace("**", "^").replace("*", "")
 
@@ -114,6 +124,8 @@ MCTX = flint.fmpz_mpoly_ctx.get(("r", "lam", "s"), "lex")
 def to_mpoly(e) -> flint.fmpz_mpoly:
     """An integer polynomial in r, λ (and s) as ``fmpz_mpoly``; rational input is cleared
     of denominators (a positive constant multiple, so signs are kept)."""
+    if isinstance(e, PolyElement):
+        return ring_to_mpoly(e)
     P = sp.Poly(expr(e), r, lam, s)
     den = _lcm([int(sp.denom(c)) for c in P.coeffs()] or [1])
     terms = {m: int(c * int(den)) for m, c in P.terms()}
@@ -144,3 +156,52 @@ def resultant_lambda(f, g) -> flint.fmpz_poly:
 def discriminant_lambda(f) -> flint.fmpz_poly:
     """Disc_λ(f) ∈ Z[r] by python-flint."""
     return mpoly_to_univariate(to_mpoly(f).discriminant("lam"))
+
+
+# --- sparse rational functions in the paper's variables --------------------------
+
+def to_field(e) -> FracElement:
+    """An element of Q(λ, r, x, u, v, s) (from a SymPy expression, text or itself)."""
+    if isinstance(e, FracElement):
+        return e
+    if isinstance(e, PolyElement):
+        return FIELD(e)
+    return FIELD.from_expr(expr(e))
+
+
+def to_ring(e) -> PolyElement:
+    """A polynomial of Q[λ, r, x, u, v, s]; ValueError for a proper fraction."""
+    f = to_field(e)
+    if f.denom != 1:
+        if f.denom.is_ground:
+            return f.numer * (1 / f.denom.LC)
+        raise ValueError("not a polynomial")
+    return f.numer
+
+
+def coefficients_in(p: PolyElement, gen: PolyElement) -> dict[int, PolyElement]:
+    """p as Σ p_k gen^k: {k: p_k}."""
+    deg = p.degree(gen)
+    return {k: p.coeff_wrt(gen, k) for k in range(max(deg, 0) + 1) if p.coeff_wrt(gen, k)}
+
+
+def ring_to_mpoly(p: PolyElement) -> flint.fmpz_mpoly:
+    """A polynomial in λ, r, s as ``fmpz_mpoly`` in (r, λ, s), times a positive integer
+    clearing the denominators (signs are kept)."""
+    den = _lcm([int(c.denominator) for c in p.values()] or [1])
+    terms = {}
+    for (el, er, ex, eu, ev, es), c in p.terms():
+        if ex or eu or ev:
+            raise ValueError("polynomial still depends on x, u or v")
+        terms[(er, el, es)] = int(c * int(den))
+    return MCTX.from_dict(terms)
+
+
+def ring_terms(p: PolyElement) -> list[tuple[flint.fmpq, int, int]]:
+    """The terms (coefficient, exponent of r, exponent of λ) of a polynomial in r, λ."""
+    out = []
+    for (el, er, ex, eu, ev, es), c in p.terms():
+        if ex or eu or ev or es:
+            raise ValueError("polynomial still depends on x, u, v or s")
+        out.append((flint.fmpq(int(c.numerator), int(c.denominator)), er, el))
+    return out

@@ -24,7 +24,7 @@ from urllib.parse import quote
 from certify.files import write_atomic
 from certify.runner import ERRATUM, FAIL, OBSERVED, PASS, STATUSES
 
-PAPER = ("V. Dolmaire and M. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
+PAPER = ("T. Dolmaire and E. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
          "particles: asymmetric collision sequences and spherical billiard reduction*, "
          "arXiv:2411.10324")
 

@@ -312,7 +312,8 @@ def test_flint_real_roots_route(pr):
     assert len(balls) == len(ivs)
     for (lo, hi), ball in zip(ivs, balls):
         if lo == hi:
-            assert ball.contains(lo)
+            with precision(1024):      # lo as a tight ball (it may not be a dyadic)
+                assert ball.contains(flint.arb(lo))
         else:
             assert not ball < lo and not ball > hi
 
@@ -510,6 +511,21 @@ def test_digits(av, n, e):
         ctx.prec = 150
         want = Decimal(D).scaleb(-(n - 1 - E))
         assert Decimal(got) == want, (got, str(want))
+    assert float(beta) == pytest.approx(float(w), rel=1e-15)
+
+
+def test_digits_examples():
+    assert Decimal(Algebraic.surd(0, Q(1, 10 ** 6), 2).digits(10)) == Decimal("1.414213562e-6")
+    assert Decimal(Algebraic.surd(0, -Q(1, 10 ** 40), 3).digits(4)) == Decimal("-1.732e-40")
+    # just below / above the tie 1.255 (3 digits)
+    assert Algebraic.surd(Q(251, 200), -Q(1, 10 ** 12), 2).digits(3) == "1.25"
+    assert Algebraic.surd(Q(251, 200), Q(1, 10 ** 12), 2).digits(3) == "1.26"
+    assert Algebraic.surd(Q(-251, 200), Q(1, 10 ** 12), 2).digits(3) == "-1.25"
+    # a rational on a tie, given by a wide interval, prints like the exact rational
+    eighth = Algebraic(fz([-1, 8]) * fz([-7, 1]), 0, Q(1, 2))
+    assert eighth.digits(2) == Algebraic.rational(Q(1, 8)).digits(2)
+    assert Decimal(eighth.digits(2)) in (Decimal("0.12"), Decimal("0.13"))
+    assert float(Algebraic.surd(0, Q(1, 10 ** 30), 2)) == pytest.approx(2 ** 0.5 * 1e-30, rel=1e-15)
 
 
 # --- 5. sign_at ----------------------------------------------------------------------
