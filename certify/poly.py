@@ -8,7 +8,6 @@ python-flint's ``fmpz_poly``/``fmpq_poly`` and ``fmpz_mpoly``.
 """
 from __future__ import annotations
 
-import hashlib
 from functools import reduce
 
 import flint
@@ -104,19 +103,7 @@ def show(e) -> str:
     return text.replace("**", "^").replace("*", "")
 
 
-def show_factored(e) -> str:
-    """The factored form of a polynomial expression, for evidence."""
-    if isinstance(e, (flint.fmpz_poly, flint.fmpq_poly)):
-        e = from_flint(e)
-    return show(sp.factor(e))
-
-
-def digest(e) -> str:
-    """A short hash of a large intermediate result, for the report."""
-    return hashlib.sha256(sp.srepr(sp.expand(expr(e))).encode()).hexdigest()[:16]
-
-
-# --- bivariate polynomials in (r, λ) on fmpz_mpoly -------------------------------
+# --- polynomials in (r, λ, s) on fmpz_mpoly: resultants and discriminants -------
 
 MCTX = flint.fmpz_mpoly_ctx.get(("r", "lam", "s"), "lex")
 
@@ -142,10 +129,6 @@ def mpoly_to_univariate(p: flint.fmpz_mpoly) -> flint.fmpz_poly:
             raise ValueError("polynomial still depends on λ or s")
         coeffs[m[0]] = int(c)
     return flint.fmpz_poly(coeffs)
-
-
-def mpoly_to_expr(p: flint.fmpz_mpoly) -> sp.Expr:
-    return sum(sp.Integer(int(c)) * r**m[0] * lam**m[1] * s**m[2] for m, c in p.to_dict().items())
 
 
 def resultant_lambda(f, g) -> flint.fmpz_poly:

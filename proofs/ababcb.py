@@ -228,17 +228,11 @@ def P0_has_one_root(cp, P0_text, count, digits):
     return conclude(checks)
 
 
-def r_star(P0_text) -> Algebraic:
-    roots = Algebraic.roots(to_fmpz_poly(parse(P0_text)), 0, 1)
+def unique_root(poly_text: str) -> Algebraic:
+    """The only root in ]0,1[ of a printed polynomial (r*, r2, (7-2√10)/3, ...)."""
+    roots = Algebraic.roots(to_fmpz_poly(parse(poly_text)), 0, 1)
     if len(roots) != 1:
-        raise ArithmeticError(f"P0 has {len(roots)} roots in ]0,1[, not one")
-    return roots[0]
-
-
-def r0_of(quadratic_text) -> Algebraic:
-    roots = Algebraic.roots(to_fmpz_poly(parse(quadratic_text)), 0, 1)
-    if len(roots) != 1:
-        raise ArithmeticError(f"{quadratic_text} has {len(roots)} roots in ]0,1[")
+        raise ArithmeticError(f"{poly_text} has {len(roots)} roots in ]0,1[, not one")
     return roots[0]
 
 
@@ -254,7 +248,7 @@ def sign_of_delta(delta_text, P0_text, r0, below, above):
     delta_expr = parse(delta_text.replace("P0", f"({P0_text})"))
     delta = flint.fmpq_poly(to_fmpq_poly(delta_expr))
     ivs = sign_intervals(delta, 0, 1)
-    rs, rz = r_star(P0_text), Algebraic.surd(*r0)
+    rs, rz = unique_root(P0_text), Algebraic.surd(*r0)
     want = {"<": {-1}, ">": {1}, ">=": {1, 0}, "<=": {-1, 0}}
     below_signs = {sg for a, b, sg in ivs if b <= rs}
     above_signs = {sg for a, b, sg in ivs if a >= rs} | {0 for a, b, sg in ivs[:-1] if a >= rs}
@@ -296,7 +290,7 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive_up_to):
     """Number of real eigenvalues per cell (Sturm at one sample per cell, constant
     between the zeros of Disc_λ(cp)); the sign of λ on each branch."""
     from certify.plots import spectrum_figures
-    rs, rr1 = r_star(P0_text), r1_of(r1)
+    rs, rr1 = unique_root(P0_text), r1_of(r1)
     T = table(spectrum, "λ", lam, 0, 1)
     three = all((len(c.branches) == 3) == (c.hi <= rs) for c in T.cells)
     bound = rr1 if positive_up_to == "r1" else rs
@@ -394,13 +388,6 @@ def roots_of_P1(P1_text, real, inside, digits):
     return conclude(checks)
 
 
-def r2_of(P1_text) -> Algebraic:
-    roots = Algebraic.roots(to_fmpz_poly(parse(P1_text)), 0, 1)
-    if len(roots) != 1:
-        raise ArithmeticError("P1 has no unique root in ]0,1[")
-    return roots[0]
-
-
 def changes_at(T, branch, point) -> bool:
     """The sign on ``branch`` differs on the two cells adjacent to ``point``."""
     left = [c for c in T.cells if c.hi == point]
@@ -425,7 +412,7 @@ def keeps_sign_at(T, branch, point) -> bool:
 def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
     """The sign table of a-d over ]0,1[ (Figure 3.3)."""
     from certify.plots import sign_chart
-    rr1, rr2 = r1_of(r1), r2_of(P1_text)
+    rr1, rr2 = r1_of(r1), unique_root(P1_text)
     T = table(spectrum, "a-d", parse(amd), 0, 1)
     k1, k2 = {v: k for k, v in BRANCH.items()}.get(at_r1, -1), {v: k for k, v in BRANCH.items()}.get(at_r2, -1)
     fig = sign_chart(spectrum, T, "sign_a_minus_d.png", "certified sign of a − d on the branches of M",
@@ -530,7 +517,7 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
     """a-d, b, c > 0 on the upper branch below r1, so x₊ > 0 > x₋; the sign tables of
     x₊, x₋ and Δ = (a-d)² + 4bc on the upper branch over ]0,1[, and exact zero tests
     of Δ at the critical values."""
-    rr1, rr2 = r1_of(r1), r2_of(P1_text)
+    rr1, rr2 = r1_of(r1), unique_root(P1_text)
     amd, bb, cc = (table(spectrum, n, g, 0, 1) for n, g in (("a-d", parse(a) - parse(d)), ("b", parse(b)), ("c", parse(c))))
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     D = table(spectrum, "Δ", fp.delta, 0, 1)
@@ -571,7 +558,7 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
 def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
     """The middle branch exists on ]0, r*]; x₊ and x₋ are negative or not real there
     except at r1, where a - d = b = c = 0 exactly on this branch: f is the identity."""
-    rr1, rs = r1_of(r1), r_star(P0_text)
+    rr1, rs = r1_of(r1), unique_root(P0_text)
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     amd = table(spectrum, "a-d", parse(a) - parse(d), 0, 1)
     bc = table(spectrum, "bc", parse(b) * parse(c), 0, 1)
@@ -757,7 +744,7 @@ def theorem_3_1(spectrum, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, P0_text)
     velocities < 0 and the two distances > 0; for r1 < r < 1 no branch has a positive
     fixed point (the exceptional points of T17, T18 give no datum); instability as
     in T24 (corrected reading)."""
-    rr1, rs = r1_of(r1), r_star(P0_text)
+    rr1, rs = r1_of(r1), unique_root(P0_text)
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     uv = printed_uv(U, V)
     tables = [table(spectrum, "u", parse(U), 0, 1)]
