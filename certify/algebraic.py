@@ -194,28 +194,23 @@ class Algebraic:
             return f"{self.lo}"
         self.minimal_polynomial()
         self.refine(Q(1, 10 ** 12))
-        lo, hi = self.lo, self.hi
+        ends = f"{self.lo}, {self.hi}"
         for k in range(12, 40, 4):            # a short isolating interval with decimal ends
             s = 10 ** k
-            L, H = Q((self.lo * s).floor(), s), Q((self.hi * s).ceil(), s)
-            if self.p(L) != 0 and self.p(H) != 0 and count_roots(self.p, L, H) == 1:
-                lo, hi = L, H
+            L, H = (self.lo * s).floor(), (self.hi * s).ceil()
+            if self.p(Q(L, s)) != 0 and self.p(Q(H, s)) != 0 and count_roots(self.p, Q(L, s), Q(H, s)) == 1:
+                ends = f"{_dec(int(L), k)}, {_dec(int(H), k)}"
                 break
-        return f"the root of {show(self.p)} in ]{_dec(lo)}, {_dec(hi)}[ ≈ {self.digits(12)}"
+        return f"the root of {show(self.p)} in ]{ends}[ ≈ {self.digits(12)}"
 
     def __repr__(self):
         return f"Algebraic({self.describe()})"
 
 
-def _dec(q: flint.fmpq) -> str:
-    """A rational with a power-of-ten denominator as a decimal string (exact)."""
-    d = int(q.q)
-    k = len(str(d)) - 1
-    if 10 ** k != d:
-        return str(q)
-    n = int(q.p)
+def _dec(n: int, k: int) -> str:
+    """n / 10^k as an exact decimal string."""
     sign, n = ("-" if n < 0 else ""), abs(n)
-    return f"{sign}{n // d}.{str(n % d).zfill(k)}" if k else f"{sign}{n}"
+    return f"{sign}{n // 10 ** k}.{str(n % 10 ** k).zfill(k)}"
 
 
 def _fmt(q: flint.fmpq, n: int) -> str:

@@ -135,13 +135,13 @@ def _powers(z, n):
     return out
 
 
-def _sign_ball(cond: Condition, R, L):
+def _sign_ball(cond: Condition, R, L, delta_is_zero=False):
     """Sign of g at balls R, L (r and λ); None when x is not real (Δ < 0); '?' if
-    the balls do not decide it."""
+    the balls do not decide it.  ``delta_is_zero``: Δ = 0 there is known exactly."""
     n = max((max(i, j) for ts in cond.terms.values() for _c, i, j in ts), default=0)
     Rp, Lp = _powers(R, n), _powers(L, n)
     S = flint.arb(0)
-    if cond.delta is not None:
+    if cond.delta is not None and not delta_is_zero:
         dv = _eval_terms(cond.terms["delta"], Rp, Lp)
         if dv < 0:
             return None
@@ -358,7 +358,30 @@ class Spectrum:
             if "?" not in out:
                 return out
             prec *= 2
-        return out
+        return [self._exact_sign(cond, rc, k, roots[k]) if sg == "?" else sg for k, sg in enumerate(out)]
+
+    def _exact_sign(self, cond: Condition, rc: Algebraic, k: int, ball, maxprec: int = 1024):
+        """The sign of g on branch k at rc where balls alone do not decide it: 0 when
+        the numerator vanishes there exactly (and the denominator does not); with
+        Δ = 0 exactly, g evaluated with √Δ = 0; '?' otherwise."""
+        if cond.delta is None:
+            if self.vanishes_at(cond.N[0].as_expr(), rc, k) and not self.vanishes_at(cond.D[0].as_expr(), rc, k):
+                return 0
+            return "?"
+        if not self.vanishes_at(cond.delta.as_expr(), rc, k):
+            return "?"
+        prec = 128
+        while prec <= maxprec:
+            old = flint.ctx.prec
+            flint.ctx.prec = prec + 30
+            try:
+                sg = _sign_ball(cond, rc.arb(prec), ball(prec), delta_is_zero=True)
+            finally:
+                flint.ctx.prec = old
+            if sg != "?":
+                return sg
+            prec *= 2
+        return "?"
 
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) vanishes on branch ``branch`` at r = rc:

@@ -27,11 +27,13 @@ def branch_curves(spectrum, rs: np.ndarray) -> np.ndarray:
     return out
 
 
-def _cell_index(table, t: float) -> int | None:
-    for k, cell in enumerate(table.cells):
-        if float(cell.lo) < t < float(cell.hi):
-            return k
-    return None
+def _cell_indices(table, rs: np.ndarray) -> list[int | None]:
+    """For each r (float), the index of the certified cell holding it (None on a border)."""
+    bounds = [(float(cell.lo), float(cell.hi)) for cell in table.cells]
+    out = []
+    for t in rs:
+        out.append(next((k for k, (lo, hi) in enumerate(bounds) if lo < t < hi), None))
+    return out
 
 
 def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
@@ -47,8 +49,9 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
         rs = np.linspace(r_lo, r_hi, 1500)
         curves = branch_curves(spectrum, rs)
         fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        cells = _cell_indices(table, rs)
         for k in range(spectrum.degree):
-            ok = np.array([(c := _cell_index(table, t)) is not None and k < len(table.cells[c].branches) for t in rs])
+            ok = np.array([c is not None and k < len(table.cells[c].branches) for c in cells])
             ax.plot(rs[ok], np.where(ok, curves[:, k], np.nan)[ok], ".", ms=1.5, color=COLORS[k],
                     label=BRANCH_NAMES[k] + " branch" if k < 3 else f"branch {k}")
         for label, value in marks.items():
@@ -73,10 +76,11 @@ def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=No
     rs = np.linspace(xlim[0], xlim[1], 1500)
     curves = branch_curves(spectrum, rs)
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    cells = _cell_indices(table, rs)
     for sign, color, label in ((1, "tab:red", "> 0"), (-1, "tab:blue", "< 0")):
         for k in range(spectrum.degree):
-            ok = np.array([(c := _cell_index(table, t)) is not None and k < len(table.cells[c].signs)
-                           and table.cells[c].signs[k] == sign for t in rs])
+            ok = np.array([c is not None and k < len(table.cells[c].signs) and table.cells[c].signs[k] == sign
+                           for c in cells])
             if ok.any():
                 ax.plot(rs[ok], curves[ok, k], ".", ms=1.5, color=color, label=label)
                 label = None

@@ -303,6 +303,8 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive_up_to):
                                                                      + T.markdown()]),
         Check("the upper branch exists on all of ]0,1[", all(len(c.branches) >= 1 for c in T.cells)
               and all(p is not None and len(p) >= 1 for p in T.points)),
+        Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
+                                                                             f"r* is {rs.describe()}"]),
         Check("all three eigenvalues are positive on ]0, 5-2√6[", positive),
         Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
               "(all positive there, ordered)", pos_rstar),
