@@ -94,13 +94,15 @@ class Datum:
             return p0, q0, R
 
     def mobius(self, prec: int):
-        """f'(x₊) = (ad - bc)/(cx₊ + d)², the multiplier of the fixed point."""
+        """(f'(x₊), q): the multiplier f'(x₊) = (ad - bc)/(cx₊ + d)² of the fixed point
+        and the paper's q = (a + d + √Δ)/(a + d - √Δ) (l. 496-498)."""
         with sim.precision(prec):
             R, L = flint.arb(self.r0), self.lam.arb(prec)
             f = {k: g(R, L) for k, g in self.formulas.items()}
             a, b, c, d = f["a"], f["b"], f["c"], f["d"]
-            x = (a - d + ((a - d) ** 2 + 4 * b * c).sqrt()) / (2 * c)
-            return (a * d - b * c) / (c * x + d) ** 2
+            sq = ((a - d) ** 2 + 4 * b * c).sqrt()
+            x = (a - d + sq) / (2 * c)
+            return (a * d - b * c) / (c * x + d) ** 2, (a + d + sq) / (a + d - sq)
 
 
 def rel_radius(z) -> float:
@@ -116,6 +118,8 @@ def self_similar_run(datum: Datum, word: str, periods: int, prec: int = 512, max
     n = len(word) * periods
     while prec <= maxprec:
         run = sim.run(*datum.balls(prec), n, prec)
+        if run.stop in ("free", "multiple"):            # decided: the orbit stops colliding
+            return run, prec
         if run.stop == "n":
             last = run.states[-1]
             if all(rel_radius(z) < 2.0 ** -40 for z in last.q + (last.p[0], last.p[2])):
@@ -127,6 +131,8 @@ def self_similar_run(datum: Datum, word: str, periods: int, prec: int = 512, max
 def scaling_checks(run: sim.Run, datum: Datum, word: str, periods: int, prec: int) -> tuple[bool, bool, list[str]]:
     """q(t_nk) ∋ λ^k q(0) and p(t_nk) ∋ μ^k p(0) (overlapping tight balls), k = 1..periods."""
     n = len(word)
+    if len(run.states) <= n * periods:
+        return False, False, [f"the orbit stops after {len(run.events)} collisions ({run.stop})"]
     with sim.precision(prec + 30):
         L = datum.lam.arb(prec + 30)
         s0 = run.states[0]
@@ -195,7 +201,8 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                         f"v ∈ {q0[2].str(10, radius=False)}, x₊ ∈ {p0[2].str(10, radius=False)}; "
                         f"{len(run.events)} collisions proven at {prec} bits: "
                         f"{'(' + word + ')^' + str(periods) if ok_word else run.word}; " + "; ".join(ev)
-                        + f"; multiplier f'(x₊) = (ad-bc)/(cx₊+d)² ∈ {datum.mobius(256).str(8, radius=False)}")
+                        + "; multiplier f'(x₊) = (ad-bc)/(cx₊+d)² ∈ {0}, the paper's q (l. 496) ∈ {1} "
+                          "(f'(x₊) = 1/q)".format(*(z.str(8, radius=False) for z in datum.mobius(256))))
         checks += [
             Check(f"{name} branch: the printed datum repeats {word} for {periods} periods (every collision proven)",
                   ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else []),

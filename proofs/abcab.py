@@ -8,27 +8,30 @@ that the order really is a and then, after a strictly positive time, c)".
 
 The candidate, with the paper's normalisation for a word that starts with a and
 ends with b (l. 270-280): q(0) = (-1, u, v), an eigenvector of M_w = K_b K_a K_c K_b K_a
-for a real eigenvalue λ (any real branch), and p(0) = (1, 0, x) with x a positive
-fixed point of f(x) = p_3(t_5)/p_1(t_5) = (ax + b)/(cx + d).  The collisions a and
-b are *assumed* (times defined by p_i(t_k) = 0) and then checked:
+for a real eigenvalue λ (any real branch), and p(0) = (1, 0, x) with x a fixed point
+x₊ or x₋ of f(x) = p_3(t_5)/p_1(t_5) = (ax + b)/(cx + d).  The collisions are
+*assumed* (times defined by p_i(t_k) = 0, as in l. 460-463) and then checked:
 
-* the candidate exists and realises a, b as its first two collisions when
-  x > 0, u = q_2(0) > 0 (p_2(0) = 0 after the last b), p_3(t_1) > 0 (a comes
-  before c), q_2(t_1) < 0 and p_3(t_2) > 0 (then b, before c);
+* the candidate realises a, b as its first two collisions iff u = q_2(0) > 0
+  (p_2(0) = 0 right after the last b), x > 0, q_2(t_1) < 0 and p_3(t_2) > 0
+  (see :func:`prefix_requirements` for why the other gaps need no condition);
 * the claim: q_1(t_2) < 0 (a comes next) and, at the time t_3 of that a,
   p_3(t_3) > 0, i.e. the a collision happens strictly before any c:
   p_3(t_3) = p_3(t_2) + τ_a q_3(t_2) = -q_3(t_2)(τ_c - τ_a) when q_3(t_2) < 0.
 
-Each condition is a rational function of r, λ and x (x through x₊ or x₋); its sign
-on each real eigenvalue branch is certified over whole r-intervals by
-``Spectrum.sign_table`` (critical values from resultants and discriminants, one
-exact sample per cell, balls with proven signs).  The tables are merged on the
-common refinement of their critical values, and at each critical value the signs
-are decided by ball arithmetic or, where a quantity vanishes there, by an exact
-zero test (the resultant vanishes and every other root of cp is separated).
+Each condition is a rational function of r, λ and x; its sign on each real
+eigenvalue branch is certified over whole r-intervals (critical values from
+resultants and the discriminant, one exact sample per cell, the branches isolated
+by Sturm sequences, signs proven by balls).  :class:`Analysis` imposes the
+conditions one at a time and keeps, per branch and fixed point, the exact set of r
+where all hold (open intervals with algebraic ends, and points).  At a critical
+value the signs are decided by balls, or, where a quantity vanishes or has a pole,
+by the engine's exact zero test in Q(r_c)[λ]; where c = 0 the map f is affine and
+its fixed point b/(d - a) is used.  The dynamics itself (``certify.simulate``,
+balls) is run from the candidate at one rational r per piece as a cross-check.
 
-The helpers below (fast symbolic runs of a word over Q(r, λ), merged sign tables,
-exact zero tests at critical values) are shared with ``proofs/literature.py``.
+The helpers (symbolic runs of a word over Q(λ, r), conditions reduced modulo cp,
+the region analysis) are shared with ``proofs/literature.py``.
 """
 from __future__ import annotations
 
@@ -39,40 +42,37 @@ import flint
 import sympy as sp
 
 from certify.algebraic import Algebraic
-from certify.branches import Condition, Spectrum
+from certify.branches import Cell, Condition, SignTable, Spectrum, evaluate_sign, simple_rational_between
 from certify.model import INDEX, collision_matrix
-from certify.poly import lam, r, resultant_lambda, show, to_fmpz_poly, x
+from certify.poly import FIELD, RING, Lf, Rf, lam, primitive, r, show, to_field, to_ring, x
+from certify import simulate as sim
 from certify.runner import Check, certificate, conclude
+from certify.sturm import count_roots, flint_real_roots
 
 Q = flint.fmpq
-K, _LAM, _R = sp.field([lam, r], sp.QQ, sp.lex)     # Q(λ, r); its ring Q[λ, r] is ordered lex λ > r
-RING = K.ring
+K, _LAM, _R = FIELD, Lf, Rf          # the engine's sparse rational functions, λ first in lex order
 BRANCH_NAMES = ("upper", "middle", "lower")
 
 
 # ---------------------------------------------------------------- symbolic candidate
 @dataclass
 class Candidate:
-    """The self-similar candidate of a word w starting with a and ending with b.
-
-    Rational functions of r and λ are kept with numerator and denominator reduced
-    modulo cp (monic in λ): they take the same values on every eigenvalue branch."""
+    """The self-similar candidate of a word w starting with a and ending with b:
+    q(0) and the run exact in K = Q(λ, r); a, b, c, d reduced modulo cp (monic in
+    λ), which keeps their values on every eigenvalue branch."""
 
     word: str
     M: sp.Matrix                # M_w = K_{c_n} ... K_{c_1}
     cp: sp.Expr                 # det(λI - M_w)
     spectrum: Spectrum
-    q0: tuple                   # (-1, u, v), elements of K
+    q0: tuple                   # (-1, u, v), elements of K (rows 1, 2 of the eigen-equation)
+    q0_other: list              # the same from rows (1, 3) and (2, 3), for points where rows 1, 2 degenerate
     abcd: tuple                 # (a, b, c, d) polynomials in r, λ: f(x) = (ax + b)/(cx + d)
+    steps: list                 # the symbolic run of the word from (p(0), q(0))
 
     def fixed_points(self) -> dict[str, "FixedPointData"]:
         """x₊ = (a - d + √Δ)/(2c) and x₋ = (a - d - √Δ)/(2c), reduced modulo cp."""
         return {fp.label: fp for fp in fixed_point_data(self.abcd, self.cp)}
-
-    def reducer(self) -> "Reducer":
-        """Identity: reducing along a run spoils the cancellations of K (spurious
-        factors in the resultants); conditions are reduced at the end instead."""
-        return Reducer(None)
 
 
 def expr_of(e) -> sp.Expr:
@@ -80,21 +80,6 @@ def expr_of(e) -> sp.Expr:
     if isinstance(e, tuple):
         return e[0].as_expr() + x * e[1].as_expr()
     return e.as_expr()
-
-
-class Reducer:
-    """Reduction modulo cp of the numerator and the denominator of elements of K."""
-
-    def __init__(self, cp_ring):
-        self.cp = cp_ring
-
-    def __call__(self, e):
-        if self.cp is None:
-            return e
-        n, d = e.numer.rem(self.cp), e.denom.rem(self.cp)
-        if d == 0:
-            raise ZeroDivisionError("a denominator vanishes on every branch")
-        return K.new(n, d)
 
 
 def collide_k(letter: str, q: tuple) -> tuple:
@@ -115,10 +100,11 @@ class SymbolicStep:
     q: tuple
 
 
-def run_letters(letters: str, q0: tuple, reduce=None) -> list[SymbolicStep]:
+def run_letters(letters: str, q0: tuple) -> list[SymbolicStep]:
     """From p(0) = (1, 0, x), q(0) = q0, apply the collisions in ``letters`` with
-    times *defined* by p_i(t_k) = 0 (l. 460-463): positions stay affine in x."""
-    red = reduce or (lambda e: e)
+    times *defined* by p_i(t_k) = 0 (l. 460-463): positions stay affine in x.
+    (Exact in K; reducing modulo cp along the way would spoil K's cancellations
+    and put spurious factors in the resultants, so conditions are reduced at the end.)"""
     p = [(K.one, K.zero), (K.zero, K.zero), (K.zero, K.one)]
     q = tuple(q0)
     out = []
@@ -127,9 +113,9 @@ def run_letters(letters: str, q0: tuple, reduce=None) -> list[SymbolicStep]:
         if q[i] == K.zero:
             raise ZeroDivisionError(f"q_{i + 1} vanishes identically before {letter}")
         t = (-p[i][0] / q[i], -p[i][1] / q[i])
-        p = [(red(P0 + t[0] * qj), red(P1 + t[1] * qj)) for (P0, P1), qj in zip(p, q)]
+        p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
         p[i] = (K.zero, K.zero)
-        q = tuple(red(e) for e in collide_k(letter, q))
+        q = collide_k(letter, q)
         out.append(SymbolicStep(letter, p, q))
     return out
 
@@ -152,12 +138,15 @@ def det3(A) -> object:
             + A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]))
 
 
-def eigenvector_k(m, red) -> tuple:
-    """q = (-1, u, v) solving rows 1 and 2 of M q = λ q (Cramer's rule over K)."""
-    a11, a12, a21, a22 = m[0][1], m[0][2], m[1][1] - _LAM, m[1][2]
-    b1, b2 = m[0][0] - _LAM, m[1][0]
+def eigenvector_k(m, rows=(0, 1)) -> tuple:
+    """q = (-1, u, v) solving two rows of (M - λI) q = 0 (Cramer's rule over K); the
+    paper uses rows 1 and 2 (l. 366).  On the eigenvalue branches all three choices
+    agree wherever their determinants do not vanish."""
+    A = [[m[i][j] - (_LAM if i == j else K.zero) for j in range(3)] for i in range(3)]
+    (a11, a12), (a21, a22) = [(A[i][1], A[i][2]) for i in rows]
+    b1, b2 = (A[i][0] for i in rows)
     det = a11 * a22 - a12 * a21
-    return (-K.one, red((b1 * a22 - a12 * b2) / det), red((a11 * b2 - b1 * a21) / det))
+    return (-K.one, (b1 * a22 - a12 * b2) / det, (a11 * b2 - b1 * a21) / det)
 
 
 def polynomial_abcd(steps: list[SymbolicStep], cp_ring) -> tuple:
@@ -182,14 +171,26 @@ def candidate(word: str) -> Candidate:
     if cpk.denom.is_ground is False:
         raise ArithmeticError("cp has a denominator in r")
     cp_ring = cpk.numer.quo_ground(cpk.denom.LC)          # monic in λ
-    red = Reducer(None)
-    q0 = eigenvector_k(Mk, red)
-    steps = run_letters(word, q0, red)
+    q0 = eigenvector_k(Mk)
+    steps = run_letters(word, q0)
     if steps[-1].p[1] != (K.zero, K.zero):
         raise ArithmeticError("p_2 does not vanish after the last b")
     M = sp.Matrix(3, 3, lambda i, j: sp.factor(Mk[i][j].as_expr()))
     cp = cp_ring.as_expr()
-    return Candidate(word, M, cp, Spectrum(cp), q0, polynomial_abcd(steps, cp_ring))
+    abcd = polynomial_abcd(steps, cp_ring)
+    check_position_map(steps, abcd, cp_ring)
+    q0_other = [eigenvector_k(Mk, rows) for rows in ((0, 2), (1, 2))]
+    return Candidate(word, M, cp, Spectrum(cp), q0, q0_other, abcd, steps)
+
+
+def check_position_map(steps, abcd, cp_ring):
+    """(ax + b)/(cx + d) = p_3(t_n)/p_1(t_n) identically in x, modulo cp:
+    a c₁ = c a₁, a d₁ + b c₁ = c b₁ + d a₁, b d₁ = d b₁ with p_1 = d₁ + c₁x, p_3 = b₁ + a₁x."""
+    (d1, c1), (b1, a1) = steps[-1].p[0], steps[-1].p[2]
+    a, b, c, d = (to_field(e) for e in abcd)
+    for e in (a * c1 - c * a1, a * d1 + b * c1 - c * b1 - d * a1, b * d1 - d * b1):
+        if e.numer.rem(cp_ring) != 0:
+            raise ArithmeticError("the position map (a, b, c, d) does not reproduce p_3/p_1")
 
 
 def matrix_of_name(name: str) -> sp.Matrix:
@@ -201,8 +202,6 @@ def matrix_of_name(name: str) -> sp.Matrix:
 
 
 # ---------------------------------------------------------------- conditions reduced modulo cp
-
-
 @dataclass
 class Requirement:
     """A condition g = G0 + x G1 (G0, G1 in Q(r, λ)) and the strict sign it must have."""
@@ -210,6 +209,7 @@ class Requirement:
     name: str
     G: tuple
     sign: int
+    other: tuple = ()          # other representations of the same function on the branches
 
     @property
     def has_x(self) -> bool:
@@ -217,20 +217,19 @@ class Requirement:
 
 
 def _ring(e):
-    if isinstance(e, sp.polys.rings.PolyElement):
-        return e if e.ring == RING else RING.from_expr(e.as_expr())
-    return RING.from_expr(e)
+    """A polynomial in λ, r as an element of the engine's ring (λ first in lex order)."""
+    return to_ring(e)
 
 
 @lru_cache(maxsize=None)
 def _cp_ring(cp):
-    return _ring(cp)
+    return to_ring(cp)
 
 
 def mod_cp(e, cp):
     """A polynomial in r, λ reduced modulo cp (monic in λ): the same values on
     every branch, λ-degree below 3."""
-    return _ring(e).rem(_cp_ring(cp)).as_expr()
+    return _ring(e).rem(_cp_ring(cp))
 
 
 @dataclass
@@ -239,118 +238,105 @@ class FixedPointData:
 
     label: str
     sigma: int
-    amd: sp.Expr
-    c: sp.Expr
-    delta: sp.Expr
+    amd: object                 # polynomials of the engine's ring
+    c: object
+    delta: object
 
 
 def fixed_point_data(abcd, cp) -> list[FixedPointData]:
-    a, b, c, d = abcd
-    amd = mod_cp(sp.expand(a - d), cp)
-    delta = mod_cp(sp.expand((a - d) ** 2 + 4 * b * c), cp)
+    a, b, c, d = (_ring(e) for e in abcd)
+    amd = mod_cp(a - d, cp)
+    delta = mod_cp((a - d) ** 2 + 4 * b * c, cp)
     cc = mod_cp(c, cp)
     return [FixedPointData("x₊", 1, amd, cc, delta), FixedPointData("x₋", -1, amd, cc, delta)]
 
 
 def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=None) -> Condition:
-    """The engine's Condition for g = G0 + x G1 with numerator and denominator
-    reduced modulo cp, x the fixed point ``fp`` (or the rational function ``x_value``)."""
+    """The engine's Condition for g = G0 + x G1, numerator and denominator reduced
+    modulo cp, x the fixed point ``fp`` (x = (A + σ√Δ)/(2c), A = a - d) or the
+    rational function ``x_value``."""
+    C = _cp_ring(cp)
     G0, G1 = req.G
-    n0, d0 = G0.numer.as_expr(), G0.denom.as_expr()
-    n1, d1 = G1.numer.as_expr(), G1.denom.as_expr()
+    n0, d0, n1, d1 = G0.numer, G0.denom, G1.numer, G1.denom
+    zero = RING.zero
     if not req.has_x:
-        return Condition(req.name, (mod_cp(n0, cp), sp.Integer(0)), (mod_cp(d0, cp), sp.Integer(0)), None, None)
-    if x_value is not None:                  # x = X0/X1
-        X0, X1 = sp.fraction(sp.cancel(x_value))
-        N = sp.expand(n0 * d1 * X1 + n1 * d0 * X0)
-        return Condition(req.name, (mod_cp(N, cp), sp.Integer(0)), (mod_cp(sp.expand(d0 * d1 * X1), cp), sp.Integer(0)),
-                         None, None)
-    # g = (n0 d1 + x n1 d0)/(d0 d1), x = (A + σ s)/(2c)
-    A, c = fp.amd, fp.c
-    N0 = sp.expand(2 * c * n0 * d1 + A * n1 * d0)
-    N1 = sp.expand(fp.sigma * n1 * d0)
-    D0 = sp.expand(2 * c * d0 * d1)
-    return Condition(req.name, (mod_cp(N0, cp), mod_cp(N1, cp)), (mod_cp(D0, cp), sp.Integer(0)), fp.delta, fp.c)
+        N0, N1, D0, delta, c = n0, zero, d0, None, None
+    elif x_value is not None:                               # x = X0/X1
+        X = to_field(x_value)
+        N0, N1, D0, delta, c = n0 * d1 * X.denom + n1 * d0 * X.numer, zero, d0 * d1 * X.denom, None, None
+    else:                                                   # g = (n0 d1 + x n1 d0)/(d0 d1)
+        A, c, delta = fp.amd, fp.c, fp.delta
+        N0, N1, D0 = 2 * c * n0 * d1 + A * n1 * d0, fp.sigma * n1 * d0, 2 * c * d0 * d1
+    return Condition(req.name, (N0.rem(C), N1.rem(C)), (D0.rem(C), zero), delta, c)
 
 
-def _table(spec: Spectrum, req: Requirement, fp, lo, hi):
-    return spec.sign_table(condition(req, spec.cp, fp if req.has_x else None), lo, hi)
-
-
-# ---------------------------------------------------------------- exact zero tests at a point
-def _acb_roots(spec: Spectrum, rc: Algebraic, prec: int):
-    """Certified enclosures of the three complex roots of cp(λ; rc), or None."""
-    old = flint.ctx.prec
-    flint.ctx.prec = prec + 30
+# ---------------------------------------------------------------- exact zero tests, fast sign tables
+def vanishes_on_branch(spec: Spectrum, g: sp.Expr, rc: Algebraic, branch: int) -> bool:
+    """Exact: the polynomial g(r, λ) vanishes at r = rc on the real branch ``branch``
+    (the engine's gcd test in Q(rc)[λ]); False when it cannot be proven."""
     try:
-        R = rc.arb(prec)
-        coeffs = []
-        for c in spec.P.all_coeffs()[::-1]:
-            coeffs.append(flint.acb(_eval_r(c, R)))
-        return flint.acb_poly(coeffs).roots(), R
-    except ValueError:
-        return None, None
-    finally:
-        flint.ctx.prec = old
-
-
-def _eval_r(c, R):
-    P = sp.Poly(c, r)
-    val = flint.arb(0)
-    for (k,), co in P.terms():
-        val += flint.arb(Q(int(sp.numer(co)), int(sp.denom(co)))) * R ** k
-    return val
-
-
-def _eval_rl(g, R, L):
-    """A polynomial in r, λ at balls R (arb) and L (acb)."""
-    P = sp.Poly(sp.expand(g), r, lam)
-    val = flint.acb(0)
-    for (i, j), co in P.terms():
-        val += flint.acb(flint.arb(Q(int(sp.numer(co)), int(sp.denom(co))))) * flint.acb(R) ** i * L ** j
-    return val
-
-
-def vanishes_on_branch(spec: Spectrum, g: sp.Expr, rc: Algebraic, branch: int, maxprec: int = 2048) -> bool:
-    """Exact: the polynomial g(r, λ) vanishes at r = rc on the real branch ``branch``.
-
-    Either every λ-coefficient of g vanishes at rc (g ≡ 0 there), or Res_λ(g, cp)
-    vanishes at rc (cp is monic in λ: the resultant is the product of g over the
-    roots of cp, so one factor is zero) and g is proven non-zero at every other
-    root of cp(·; rc) (complex balls).  False when neither can be proven."""
-    m = rc.minimal_polynomial() if not rc.is_rational else flint.fmpz_poly([-rc.lo.p, rc.lo.q])
-
-    def divides(P) -> bool:                  # m irreducible and primitive: m | P iff gcd = m
-        return P.is_zero() or P.gcd(m) == m
-    coeffs = sp.Poly(sp.expand(g), lam).all_coeffs()
-    if all(divides(to_fmpz_poly(c)) for c in coeffs):
-        return True
-    if not divides(resultant_lambda(g, spec.cp)):
+        return spec.vanishes_at(g.as_expr() if hasattr(g, "as_expr") else g, rc, branch)
+    except ArithmeticError:
         return False
-    prec = 128
-    while prec <= maxprec:
-        roots, R = _acb_roots(spec, rc, prec)
-        if roots is not None:
-            old = flint.ctx.prec
-            flint.ctx.prec = prec + 30
-            try:
-                reals = sorted([z for z in roots if z.imag.contains(0) and not _paired(z, roots)],
-                               key=lambda z: -float(z.real.mid()))
-                if branch < len(reals):
-                    target = reals[branch]
-                    others = [z for z in roots if z is not target]
-                    if all(not _eval_rl(g, R, z).contains(0) for z in others):
-                        return True
-            finally:
-                flint.ctx.prec = old
-        prec *= 2
-    return False
 
 
-def _paired(z, roots) -> bool:
-    """z overlaps the conjugate of another enclosure: possibly non-real."""
-    conj = z.conjugate()
-    return any(w is not z and w.overlaps(conj) for w in roots)
+def critical_values(spec: Spectrum, cond: Condition, lo, hi) -> list[Algebraic]:
+    """The engine's critical values (zeros of Disc_λ(cp), of the leading coefficient
+    and of the resultants of the norms of the condition with cp) in ]lo, hi[, found
+    factor by factor: each resultant is factored over Q (python-flint) and every
+    irreducible factor's roots isolated by Sturm sequences (its real roots counted a
+    second time by python-flint's root isolation; disagreement raises).  Same set as
+    ``Spectrum.critical_values``, much faster for resultants of high degree."""
+    polys = [spec.disc] + ([spec.lc] if spec.lc.degree() > 0 else [])
+    for e in cond.norms():
+        R = spec.resultant(e)
+        if R.is_zero():
+            raise ArithmeticError(f"{cond.name}: a factor vanishes on a whole branch")
+        polys.append(R)
+    factors = {}
+    for p in polys:
+        for f, _m in primitive(p).factor()[1]:
+            if f.degree() > 0:
+                f = primitive(f)
+                factors[str(f)] = f
+    a = lo.lo if isinstance(lo, Algebraic) else Q(lo)
+    b = hi.hi if isinstance(hi, Algebraic) else Q(hi)
+    roots = []
+    for f in factors.values():
+        if count_roots(f) != len(flint_real_roots(f)):       # all real roots, both routes
+            raise ArithmeticError(f"Sturm and python-flint disagree on the roots of {show(f)}")
+        roots += Algebraic.roots(f, a, b)
+    return sorted(z for z in roots if _alg(lo) < z < _alg(hi))
+
+
+def _alg(a) -> Algebraic:
+    return a if isinstance(a, Algebraic) else Algebraic.rational(a)
+
+
+_EIGENVALUES: dict = {}
+
+
+def _eigenvalues(spec: Spectrum, t) -> list[Algebraic]:
+    """spec.real_eigenvalues(t), memoised (the same samples recur across tables)."""
+    key = (id(spec), str(t))
+    if key not in _EIGENVALUES:
+        _EIGENVALUES[key] = (spec, spec.real_eigenvalues(t))
+    return _EIGENVALUES[key][1]
+
+
+def sign_table(spec: Spectrum, cond: Condition, lo, hi) -> SignTable:
+    """``Spectrum.sign_table`` with the factor-by-factor critical values: one exact
+    sample per cell, the branches isolated there, signs proven by balls; the signs
+    at the critical values by ``Spectrum.sign_at_point``."""
+    crit = critical_values(spec, cond, lo, hi)
+    ends = [_alg(lo)] + crit + [_alg(hi)]
+    cells = []
+    for a, b in zip(ends, ends[1:]):
+        t = simple_rational_between(a, b)
+        lams = _eigenvalues(spec, t)
+        cells.append(Cell(a, b, t, lams, [evaluate_sign(cond, t, L) for L in lams]))
+    points = [spec.sign_at_point(cond, rc) for rc in crit]
+    return SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, points)
 
 
 # ---------------------------------------------------------------- regions of r, branch by branch
@@ -386,7 +372,20 @@ class Region:
     dropped: list                  # (point, reason) settled exactly as failing
 
     def describe(self) -> str:
-        return " ∪ ".join(str(p) for p in self.pieces) or "∅"
+        """The pieces, with ]a, b[ ∪ {b} ∪ ]b, c[ shown as ]a, c[."""
+        intervals = sorted((p for p in self.pieces if not p.is_point), key=lambda p: p.lo)
+        points = [p for p in self.pieces if p.is_point]
+        merged = []
+        for p in intervals:
+            if merged and merged[-1][1] == p.lo:
+                joint = [q for q in points if q.lo == p.lo and not q.note]
+                if joint:
+                    points.remove(joint[0])
+                    merged[-1][1] = p.hi
+                    continue
+            merged.append([p.lo, p.hi])
+        parts = [str(Piece(a, b)) for a, b in merged] + [str(q) for q in points]
+        return " ∪ ".join(parts) or "∅"
 
 
 def _fmt(a: Algebraic) -> str:
@@ -466,7 +465,7 @@ class Analysis:
         self.cand, self.spec, self.lo, self.hi = cand, cand.spectrum, lo, hi
         self.fps = cand.fixed_points()
         self.tables = {}
-        base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
+        base = sign_table(self.spec, Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
         self.regions = [Region(k, f, [], [], []) for k in range(nb) for f in self.fps]
         for R in self.regions:
@@ -489,8 +488,8 @@ class Analysis:
             return None
         key = (req.name, fname if req.has_x else "", repr(hull))
         if key not in self.tables:
-            self.tables[key] = self.spec.sign_table(condition(req, self.spec.cp, self.fps[fname] if req.has_x else None),
-                                                    *hull)
+            self.tables[key] = sign_table(self.spec, condition(req, self.spec.cp,
+                                                               self.fps[fname] if req.has_x else None), *hull)
         return self.tables[key]
 
     def impose(self, req: Requirement):
@@ -544,7 +543,8 @@ class Analysis:
         sg = self._sign_with_x(req, rc, k, p.x_value) if (p.x_value is not None and req.has_x) else sign_at(T, rc, k)
         ok = _meets(sg, req.sign)
         if ok is not None:
-            return p, "holds" if ok else "fails", "" if ok else f"{req.name} has the wrong sign"
+            return p, "holds" if ok else "fails", "" if ok else \
+                f"{req.name} {'= 0' if sg == 0 else 'is not real' if sg is None else 'has the wrong sign'}"
         a, b, c, d = self.cand.abcd
         if req.has_x and p.x_value is None and vanishes_on_branch(self.spec, c, rc, k):
             xv = sp.cancel(b / (d - a))
@@ -552,33 +552,96 @@ class Analysis:
                 return self._point(R, Piece(rc, None, xv, "c = 0: f affine, fixed point b/(d-a)"), req, T)
             return p, "fails", "c = 0 there (exact): f is affine, its fixed point b/(d-a) is not positive"
         if not req.has_x or p.x_value is not None:
+            # g = N/D without √Δ: N = 0 (g = 0) or D = 0 (g undefined: a collision time or
+            # the normalisation q_1(0) = -1 breaks down) both defeat a strict inequality;
+            # N = D = 0 stays undecided.
             cond = condition(req, self.spec.cp, x_value=p.x_value) if req.has_x else condition(req, self.spec.cp)
-            if vanishes_on_branch(self.spec, sp.expand(cond.N[0] * cond.D[0]), rc, k):
-                return p, "fails", f"{req.name} vanishes or has a pole there (exact)"
+            zero_n = vanishes_on_branch(self.spec, cond.N[0], rc, k)
+            zero_d = vanishes_on_branch(self.spec, cond.D[0], rc, k)
+            if zero_n != zero_d:
+                return p, "fails", f"{req.name} {'vanishes' if zero_n else 'has a pole'} there (exact)"
+            # 0/0: another representation of the same function, with a denominator not vanishing there
+            for G in req.other:
+                alt = Requirement(req.name, G, req.sign)
+                cond = condition(alt, self.spec.cp, x_value=p.x_value) if alt.has_x else condition(alt, self.spec.cp)
+                if vanishes_on_branch(self.spec, cond.D[0], rc, k):
+                    continue
+                if vanishes_on_branch(self.spec, cond.N[0], rc, k):
+                    return p, "fails", f"{req.name} vanishes there (exact, other rows of the eigen-equation)"
+                sg = self.spec.sign_at_point(cond, rc)
+                ok = None if sg is None else _meets(sg[k] if k < len(sg) else "missing", req.sign)
+                if ok is not None:
+                    return p, "holds" if ok else "fails", "" if ok else \
+                        f"{req.name} has the wrong sign (other rows of the eigen-equation)"
         return p, "undecided", req.name
 
     def _sign_with_x(self, req, rc, k, xv):
         sg = self.spec.sign_at_point(condition(req, self.spec.cp, x_value=xv), rc)
         return "?" if sg is None else (sg[k] if k < len(sg) else "missing")
+# ---------------------------------------------------------------- the candidate in balls
+def arb_of(e):
+    """A rational function of r, λ (SymPy) as a function of balls (R, L), exact
+    rational coefficients."""
+    num, den = sp.fraction(sp.together(sp.sympify(e)))
+    terms = [[(i, j, Q(int(sp.numer(c)), int(sp.denom(c)))) for (i, j), c in sp.Poly(p, r, lam).terms()]
+             for p in (num, den)]
+
+    def value(R, L):
+        n, d = (sum((flint.arb(c) * R ** i * L ** j for i, j, c in ts), flint.arb(0)) for ts in terms)
+        return n / d
+    return value
+
+
+def candidate_balls(cand: Candidate, r0, branch: int, sigma: int, prec: int):
+    """(p(0), q(0), r) of the candidate at a rational r0 on a real branch, x = x₊
+    (sigma = 1) or x₋ (sigma = -1), as balls at ``prec`` bits."""
+    lams = cand.spectrum.real_eigenvalues(r0)
+    with sim.precision(prec + 30):
+        R, L = flint.arb(Q(r0)), lams[branch].arb(prec + 30)
+        u, v = (arb_of(expr_of(e))(R, L) for e in cand.q0[1:])
+        a, b, c, d = (arb_of(e)(R, L) for e in cand.abcd)
+        disc = (a - d) ** 2 + 4 * b * c
+        if not disc > 0:
+            raise sim.Undecided("Δ not proven positive")
+        x_ = (a - d + sigma * disc.sqrt()) / (2 * c)
+        return (flint.arb(1), flint.arb(0), x_), (flint.arb(-1), u, v), R
+
+
 # ---------------------------------------------------------------- the requirements of a prefix
-def prefix_requirements(word: str, m: int, q0, reduce=None) -> tuple[list[Requirement], list[SymbolicStep]]:
-    """The candidate of ``word`` realises its first m collisions (strictly, l. 449-486):
-    u = q_2(0) > 0 (p_2(0) = 0 right after the last b), x > 0, and at each collision
-    k the pair approaches (q_i(t_{k-1}) < 0) and the other gaps stay open (p_j(t_k) > 0).
-    The gap that closed at the previous collision is open again automatically
-    (p_j(t_k) = τ_k q_j(t_{k-1}) with q_j(t_{k-1}) > 0 and τ_k > 0), so it is not listed."""
-    steps = run_letters(word[:m], q0, reduce)
-    reqs = [Requirement("u = q_2(0)", (q0[1], K.zero), 1), Requirement("x", (K.zero, K.one), 1)]
-    previous = INDEX[word[-1]]
-    for k, st in enumerate(steps):
-        i = INDEX[st.letter]
-        before = q0 if k == 0 else steps[k - 1].q
+def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=()) -> tuple[list[Requirement], list[SymbolicStep]]:
+    """The candidate of ``word`` realises its first m collisions, strictly, iff
+
+    * u = q_2(0) > 0 (p_2(0) = 0 right after the last b of the previous period), x > 0;
+    * at each collision k the pair i_k approaches: q_{i_k}(t_{k-1}) < 0;
+    * the gap i_k is open just before: p_{i_k}(t_{k-1}) > 0, so that τ_k > 0, except
+      when it is automatic: k = 1 (p_1(0) = 1), or the pair collided at k - 2
+      (p_{i_k}(t_{k-1}) = τ_{k-1} q_{i_k}(t_{k-2}) with q_{i_k}(t_{k-2}) > 0 after that
+      collision);
+    * every gap that does not collide at m is open at t_m (same exception for the gap
+      that collided at m - 1).
+
+    Why this is enough: each collision of type b adds (1+r)/2 q_2 < 0 to q_1 and q_3,
+    a collision a or c adds (1+r)/2 q_1 < 0 or (1+r)/2 q_3 < 0 to q_2, so every gap
+    p_j(t) is concave between two consecutive collisions of its own pair (the slopes
+    only decrease; all τ_k > 0 by the above).  A concave function positive at both
+    ends of an interval (or zero at the left end with a positive slope there) is
+    positive inside, so the gap is open at every intermediate collision and no other
+    pair collides in between (the paper's argument of l. 478-480, for every gap)."""
+    steps = steps[:m] if steps is not None and len(steps) >= m else run_letters(word[:m], q0)
+    reqs = [Requirement("u = q_2(0)", (q0[1], K.zero), 1, tuple((q[1], K.zero) for q in q0_other)),
+            Requirement("x", (K.zero, K.one), 1)]
+    letters = [INDEX[word[-1]]] + [INDEX[c] for c in word[:m]]        # letters[k] = i_k, i_0 = last b
+    for k in range(1, m + 1):
+        i = letters[k]
+        before = q0 if k == 1 else steps[k - 2].q
         if not _positive_constant(-before[i]):
-            reqs.append(Requirement(f"q_{i + 1}(t_{k})", (before[i], K.zero), -1))
-        for j in range(3):
-            if j not in (i, previous):
-                reqs.append(Requirement(f"p_{j + 1}(t_{k + 1})", st.p[j], 1))
-        previous = i
+            reqs.append(Requirement(f"q_{i + 1}(t_{k - 1})", (before[i], K.zero), -1))
+        automatic = k == 1 or letters[k - 2] == i
+        if not automatic:
+            reqs.append(Requirement(f"p_{i + 1}(t_{k - 1})", steps[k - 2].p[i], 1))
+    for j in range(3):
+        if j != letters[m] and j != letters[m - 1]:
+            reqs.append(Requirement(f"p_{j + 1}(t_{m})", steps[m - 1].p[j], 1))
     return reqs, steps
 
 
@@ -605,10 +668,9 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     checks = [Check(f"the matrix of the word {word} (collisions in time order) is {matrix}", same,
                     [f"M_w = `{show(cand.M.tolist())}`", f"cp(M_w) = `{show(sp.collect(cand.cp, lam))}`"])]
     m = word.index(after) + 1
-    red = cand.reducer()
-    feas, steps = prefix_requirements(word, m, cand.q0, red)
+    feas, steps = prefix_requirements(word, m, cand.q0, cand.steps, cand.q0_other)
     i, o = INDEX[next], INDEX[other]
-    tail = run_letters(word[:m] + next, cand.q0, red)[-1]
+    tail = run_letters(word[:m] + next, cand.q0)[-1]
     claim = [Requirement(f"q_{i + 1}(t_{m})", (steps[-1].q[i], K.zero), -1),
              Requirement(f"p_{o + 1}(t_{m + 1})", tail.p[o], 1)]
     an = Analysis(cand)
@@ -637,7 +699,24 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     q_other = Requirement(f"q_{o + 1}(t_{m})", (steps[-1].q[o], K.zero), -1)
     ev.append(f"{q_other.name} < 0 ({other} approaching after {after}) on the same region: "
               + ("yes" if not an.violations(q_other) else "no (where it is ≥ 0, c does not come next at all)"))
+    dynamic = []
+    for R in an.regions:
+        for p in R.pieces:
+            if p.is_point:
+                continue
+            p.lo.refine(Q(1, 10 ** 6)), p.hi.refine(Q(1, 10 ** 6))
+            w = (p.hi.lo - p.lo.hi) / 8
+            r0 = simplest_between(p.lo.hi + w, p.hi.lo - w)
+            sigma = 1 if R.fixed_point == "x₊" else -1
+            run, prec = sim.run_certified(lambda pr: candidate_balls(cand, r0, R.branch, sigma, pr), m + 1)
+            dynamic.append((R, r0, run.word))
+    want = word[:m] + next
+    ev.append("the particle dynamics itself (certify.simulate, every collision proven in balls) from the candidate "
+              "at one rational r per piece: " + "; ".join(f"{BRANCH_NAMES[R.branch]} {R.fixed_point} r = {r0}: "
+                                                          f"{w}" for R, r0, w in dynamic))
     checks += [
+        Check(f"cross-check on the dynamics: from the candidate, the first {m + 1} collisions are {want}",
+              all(w == want for _, _, w in dynamic) and bool(dynamic)),
         Check("every cell and critical value of ]0,1[ decided on every branch, for x₊ and x₋", not undecided,
               [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {_fmt(rc)} ({why})" for R, (rc, why) in undecided]),
         Check(f"wherever the candidate realises {', '.join(word[:m])}, the next collision is {next}, "
@@ -645,4 +724,8 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
               [f"fails on {BRANCH_NAMES[R.branch]} {R.fixed_point} {p}: {why}" for R, p, why in bad]),
         Check("and the candidate does realise them somewhere (the remark is not vacuous)", bool(feasible)),
     ]
-    return conclude(checks, evidence=ev)
+    where = "; ".join(f"{BRANCH_NAMES[R.branch]} branch with {R.fixed_point} on {R.describe()}" for R in feasible)
+    return conclude(checks, evidence=ev,
+                    note=f"The printed reason is checked wherever it applies: the candidate realises "
+                         f"{', '.join(word[:m])} exactly on: {where or 'nowhere'}; elsewhere (other branches, "
+                         f"other fixed point, other r) it fails earlier, so there is no self-similar datum either.")

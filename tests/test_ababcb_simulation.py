@@ -1,0 +1,54 @@
+"""T25.2: Theorem 3.1 on the particle dynamics, certified in ball arithmetic."""
+import flint
+import pytest
+
+from certify import simulate as sim
+from certify.runner import CERTIFICATES, FAIL, PASS, load_all, run_certificate
+from proofs import ababcb_simulation as T
+
+load_all()
+
+
+@pytest.fixture(scope="module")
+def outcome():
+    return run_certificate(CERTIFICATES["T25.2"])
+
+
+def test_t25_2_passes(outcome):
+    assert outcome.status == PASS, [(c.statement, c.evidence) for c in outcome.printed if not c.holds]
+
+
+def test_t25_2_reports_how_the_orbits_leave(outcome):
+    text = "\n".join(outcome.evidence)
+    assert "upper branch, x + ε: leaves the pattern" in text
+    assert "lower branch, v + ε: leaves the pattern" in text
+    assert "(ababcb)^20" in text
+
+
+@pytest.mark.parametrize("overrides", [
+    {"U": T.U_PRINTED.replace("16*λ", "17*λ")},          # a coefficient of u
+    {"V": T.V_PRINTED.replace("64*λ", "65*λ")},          # a coefficient of v
+    {"a": T.A_PRINTED.replace("1024*r^6", "1025*r^6")},  # a coefficient of a
+    {"word": "abacbc"},                                  # another word (its matrix, its eigenvalues)
+    {"word": "abcbab"},
+])
+def test_t25_2_mutations_fail(overrides):
+    assert run_certificate(CERTIFICATES["T25.2"], overrides=overrides).status == FAIL
+
+
+def test_formulas_are_evaluated_exactly():
+    """No float enters: 1/3 r at r = 1 is a ball of radius ~2^-prec around 1/3."""
+    f = T.arb_function("r/3 + λ/7")
+    with sim.precision(300):
+        val = f(flint.arb(1), flint.arb(0))
+        assert val.contains(flint.arb(flint.fmpq(1, 3))) and val.rad() < flint.arb(2) ** -290
+    assert T.rational("1/10^30") == flint.fmpq(1, 10 ** 30)
+
+
+def test_self_similar_run_reaches_the_scalings():
+    data = T.branch_data("ababcb", flint.fmpq(1, 20), {k: T.arb_function(v) for k, v in (
+        ("u", T.U_PRINTED), ("v", T.V_PRINTED), ("a", T.A_PRINTED), ("b", T.B_PRINTED),
+        ("c", T.C_PRINTED), ("d", T.D_PRINTED))})
+    run, prec = T.self_similar_run(data["upper"], "ababcb", 5)
+    q_ok, p_ok, _ = T.scaling_checks(run, data["upper"], "ababcb", 5, prec)
+    assert run.word == "ababcb" * 5 and q_ok and p_ok

@@ -1,0 +1,129 @@
+"""certify.simulate: the four-particle dynamics, exact (fmpq) and in balls (arb)."""
+import doctest
+
+import flint
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from certify import simulate as sim
+from certify.model import collision_matrix
+
+Q = flint.fmpq
+rationals = st.fractions(min_value=-5, max_value=5, max_denominator=50).map(lambda f: Q(f.numerator, f.denominator))
+positive = st.fractions(min_value=0, max_value=5, max_denominator=50).map(lambda f: Q(f.numerator, f.denominator))
+restitution = st.fractions(min_value=0, max_value=1, max_denominator=40).filter(lambda f: 0 < f < 1).map(
+    lambda f: Q(f.numerator, f.denominator))
+
+
+def test_doctest():
+    assert doctest.testmod(sim).failed == 0
+
+
+@given(st.sampled_from("abc"), restitution, st.tuples(rationals, rationals, rationals))
+def test_collide_is_the_collision_matrix(letter, r0, q):
+    """The numerics of A, B, C agree exactly with the engine's matrices (l. 209-232)."""
+    K = collision_matrix(letter, sp.Rational(int(r0.p), int(r0.q)))
+    want = K * sp.Matrix([sp.Rational(int(z.p), int(z.q)) for z in q])
+    got = sim.collide(letter, q, r0)
+    assert [sp.Rational(int(z.p), int(z.q)) for z in got] == list(want)
+
+
+@given(st.sampled_from("abc"), restitution, rationals)
+def test_collision_separates_the_pair(letter, r0, qi):
+    """M3: an approaching pair (q_i < 0) separates (q_i > 0) after its collision."""
+    if qi >= 0:
+        return
+    q = [Q(1), Q(1), Q(1)]
+    q[sim.INDEX[letter]] = qi
+    assert sim.collide(letter, q, r0)[sim.INDEX[letter]] > 0
+
+
+def test_next_collision_exact():
+    p, q = sim.exact([1, 0, 2]), sim.exact([-1, "1/2", -1])
+    assert sim.next_collision(p, q) == ("a", Q(1))
+    assert sim.next_collision(sim.exact([1, 1, 1]), sim.exact([1, 2, 3])) is None
+
+
+def test_simultaneous_a_and_c_exact():
+    """a and c at exactly the same time: one event "ac" (A and C commute, l. 240)."""
+    p, q = sim.exact([1, 1, 2]), sim.exact([-1, 1, -2])
+    assert sim.next_collision(p, q) == ("ac", Q(1))
+    letters, t, p1, q1 = sim.step(p, q, Q(1, 2))
+    assert letters == "ac" and p1[0] == 0 and p1[2] == 0
+    run = sim.run(p, q, Q(1, 2), 3)
+    assert run.events[0] == "ac" and run.word.startswith("[ac]")
+
+
+def test_b_tied_with_a_is_a_multiple_collision():
+    p, q = sim.exact([1, 1, 5]), sim.exact([-1, -1, 1])
+    with pytest.raises(sim.MultipleCollision):
+        sim.next_collision(p, q)
+    assert sim.run(p, q, Q(1, 2), 2).stop == "multiple"
+
+
+def test_balls_undecided_when_times_overlap():
+    """With balls a tie cannot be proven either way: Undecided, and run() stops."""
+    p = sim.balls(sim.exact([1, 1, 2]))
+    q = sim.balls(sim.exact([-1, 1, -2]))
+    with pytest.raises(sim.Undecided):
+        sim.next_collision(p, q)
+    assert sim.run(p, q, flint.arb(Q(1, 2)), 3).stop == "undecided"
+
+
+def test_balls_undecided_sign():
+    with pytest.raises(sim.Undecided):
+        sim.sign(flint.arb(0, 1e-10))
+    assert sim.sign(flint.arb(0)) == 0 and sim.sign(flint.arb(-1)) == -1
+
+
+def test_run_certified_raises_the_precision():
+    """Two collision times 2^-200 apart: decided only once the precision exceeds that."""
+    eps = Q(1, 2 ** 200)
+
+    def datum(prec):
+        return (sim.balls(sim.exact([1, 1, 1 + eps])), sim.balls(sim.exact([-1, 1, -1])), flint.arb(Q(1, 3)))
+    run, prec = sim.run_certified(datum, 2, prec=64)
+    assert prec > 200 and run.events[0] == "a"
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.tuples(positive, positive, positive), st.tuples(rationals, rationals, rationals), restitution)
+def test_exact_run_keeps_gaps_nonnegative(p, q, r0):
+    """Particles never cross (M3): every gap stays >= 0, the closed gap is exactly 0."""
+    run = sim.run(p, q, r0, 25)
+    for ev, s in zip(run.events, run.states[1:]):
+        assert all(z >= 0 for z in s.p)
+        assert all(s.p[sim.INDEX[L]] == 0 for L in ev)
+        assert all(s.q[sim.INDEX[L]] > 0 for L in ev)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.tuples(positive, positive, positive), st.tuples(rationals, rationals, rationals), restitution)
+def test_balls_agree_with_exact(p, q, r0):
+    """The ball run is a certified prefix of the exact run, with enclosing states."""
+    exact_run = sim.run(p, q, r0, 15)
+    ball_run = sim.run(sim.balls(p, 256), sim.balls(q, 256), flint.arb(r0), 15, prec=256)
+    n = len(ball_run.events)
+    assert ball_run.events == exact_run.events[:n]
+    if ball_run.stop == "n" or ball_run.stop == exact_run.stop:
+        assert n == len(exact_run.events)
+    with sim.precision(1024):             # the exact values as (nearly) exact balls
+        for se, sb in zip(exact_run.states[:n + 1], ball_run.states):
+            assert all(b.contains(flint.arb(e)) for e, b in zip(se.p + se.q, sb.p + sb.q))
+
+
+def test_scaling_keeps_the_word():
+    """M4 on the simulator: scaling p or q by a positive factor keeps the collisions."""
+    p, q, r0 = sim.exact([1, "1/3", 2]), sim.exact([-1, "1/2", "-3/4"]), Q(1, 4)
+    w = sim.run(p, q, r0, 12).word
+    assert sim.run(tuple(3 * z for z in p), q, r0, 12).word == w
+    assert sim.run(p, tuple(Q(2, 7) * z for z in q), r0, 12).word == w
+
+
+def test_precision_context_restores():
+    old = flint.ctx.prec
+    with sim.precision(300):
+        assert flint.ctx.prec == 300
+    assert flint.ctx.prec == old
