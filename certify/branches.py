@@ -27,7 +27,7 @@ import sympy as sp
 
 from . import numberfield as nf
 from .algebraic import Algebraic, to_fmpq
-from .poly import (RING, Sf, Xf, coefficients_in, discriminant_lambda, expr, lam, primitive, r,
+from .poly import (RING, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
                    resultant_lambda, ring_terms, squarefree_part, to_field, to_fmpq_poly, to_ring, x)
 from .sturm import count_roots, flint_real_roots, isolate
 
@@ -157,6 +157,15 @@ def _sign_ball(cond: Condition, R, L, delta_is_zero=False):
     return sn * sd
 
 
+def ball_value(cond: Condition, R, L) -> flint.arb:
+    """g = N₀/D₀ at balls R, L, for a condition without √Δ."""
+    if cond.delta is not None:
+        raise ValueError("ball_value needs a condition without √Δ")
+    n = max((max(i, j) for ts in cond.terms.values() for _c, i, j in ts), default=0)
+    Rp, Lp = _powers(R, n), _powers(L, n)
+    return _eval_terms(cond.terms["N0"], Rp, Lp) / _eval_terms(cond.terms["D0"], Rp, Lp)
+
+
 def evaluate_sign(cond: Condition, r0, L: Algebraic, prec: int = 64, maxprec: int = 8192):
     """The sign of g at r = r0 (rational) on the branch λ = L, proven in ball
     arithmetic; None when x is not real there (Δ < 0)."""
@@ -251,6 +260,7 @@ class Spectrum:
         self._resultants = {}
         self._tables = {}
         self._branches = {}
+        self._eigenvalues = {}
 
     def at(self, r0) -> flint.fmpq_poly:
         """cp(λ; r0) ∈ Q[λ] for a rational r0."""
@@ -259,9 +269,13 @@ class Spectrum:
                                 for c in self.P.all_coeffs()[::-1]])
 
     def real_eigenvalues(self, r0) -> list[Algebraic]:
-        """The real roots λ of cp(λ; r0), largest first, as algebraic numbers (Sturm)."""
-        p = self.at(r0)
-        return [Algebraic(p, lo, hi) for lo, hi in isolate(p)][::-1]
+        """The real roots λ of cp(λ; r0), largest first, as algebraic numbers (Sturm);
+        memoised, as the same samples recur across tables."""
+        key = str(to_fmpq(r0))
+        if key not in self._eigenvalues:
+            p = self.at(r0)
+            self._eigenvalues[key] = [Algebraic(p, lo, hi) for lo, hi in isolate(p)][::-1]
+        return self._eigenvalues[key]
 
     def resultant(self, g) -> flint.fmpz_poly:
         """Res_λ(g, cp) ∈ Z[r] (python-flint), cached."""
@@ -270,30 +284,30 @@ class Spectrum:
         return self._resultants[g]
 
     def critical_values(self, cond: Condition | None, lo, hi) -> list[Algebraic]:
-        """The critical values in ]lo, hi[, increasing; the count is checked against
-        python-flint's real root isolation."""
+        """The critical values in ]lo, hi[, increasing: the polynomials are factored
+        over Q (python-flint) and each irreducible factor's real roots isolated by
+        Sturm sequences, their number checked against python-flint's isolation."""
         polys = [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])
         for e in (cond.norms() if cond is not None else []):
             R = self.resultant(e)
             if R.is_zero():
                 raise ArithmeticError(f"{cond.name}: a factor vanishes on a whole branch")
             polys.append(R)
-        P = flint.fmpz_poly([1])
-        for p in polys:
-            P *= squarefree_part(p)
-        P = squarefree_part(P)
         lo, hi = _alg(lo), _alg(hi)
-        if count_roots(P) != len(flint_real_roots(P)):
-            raise ArithmeticError("Sturm and python-flint disagree on the number of critical values")
-        return [a for a in Algebraic.roots(P, lo.lo, hi.hi) if lo < a < hi]
+        roots = []
+        for f in {str(f): f for p in polys for f, _m in irreducible_factors(p)}.values():
+            if count_roots(f) != len(flint_real_roots(f)):
+                raise ArithmeticError(f"Sturm and python-flint disagree on the real roots of {f}")
+            roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if lo < a < hi]
+        return sorted(roots)
 
     def sign_table(self, cond: Condition, lo, hi) -> SignTable:
         """Certified signs of ``cond`` on every branch over ]lo, hi[ (memoised per
         condition and interval, so certificates sharing a condition share the work)."""
         key = (id(cond), repr(lo), repr(hi))
-        if key not in self._tables:
-            self._tables[key] = self._sign_table(cond, lo, hi)
-        return self._tables[key]
+        if key not in self._tables or self._tables[key][0] is not cond:   # ids of dead objects are reused
+            self._tables[key] = (cond, self._sign_table(cond, lo, hi))
+        return self._tables[key][1]
 
     def _sign_table(self, cond: Condition, lo, hi) -> SignTable:
         crit = self.critical_values(cond, lo, hi)
@@ -426,20 +440,30 @@ def _alg(a) -> Algebraic:
     return a if isinstance(a, Algebraic) else Algebraic.rational(a)
 
 
+def simplest_between(lo: flint.fmpq, hi: flint.fmpq) -> flint.fmpq:
+    """The rational with the smallest denominator in [lo, hi] (continued fractions)."""
+    lo, hi = Q(lo), Q(hi)
+    if lo > hi:
+        raise ValueError("empty interval")
+    fl = lo.floor()
+    if Q(fl) == lo:
+        return lo
+    if Q(fl) + 1 <= hi:
+        return Q(fl) + 1
+    return Q(fl) + 1 / simplest_between(1 / (hi - fl), 1 / (lo - fl))
+
+
 def simple_rational_between(a: Algebraic, b: Algebraic) -> flint.fmpq:
-    """A rational strictly between a < b with the smallest denominator that fits
-    (readable samples in the report)."""
+    """A rational strictly between a < b with a small denominator (readable samples):
+    the simplest rational in the middle half of a rational gap between them."""
     width = Q(1, 2)
     while True:
         a.refine(width)
         b.refine(width)
         lo, hi = a.hi, b.lo
         if lo < hi:
-            for den in range(1, 65):
-                t = Q((lo * den).floor() + 1, den)
-                if lo < t < hi and a < t < b:
-                    return t
-            mid = (lo + hi) / 2
-            if a < mid < b:
-                return mid
+            w = (hi - lo) / 4
+            t = simplest_between(lo + w, hi - w)
+            if a < t < b:
+                return t
         width /= 16

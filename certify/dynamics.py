@@ -1,81 +1,174 @@
 """The dynamics of a prescribed collision word, in exact arithmetic.
 
-For a word w ending in letter e, a self-similar datum has p(0) with p_e(0) = 0 and
-q(0) an eigenvector of M_w.  We follow the paper's normalisation for ababcb:
-q(0) = (-1, u, v) (the first collision is a) and p(0) = (1, 0, x).  The collision
-times are *defined* as if the word were realised (t_k = t_{k-1} - p_i/q_i for the
-letter's component i), and p(t_k), q(t_k) are rational functions of r, λ and x;
-identities are checked modulo cp(λ; r).
+For a word w = c_1 ... c_n starting with a and ending with b (the paper's
+normalisation, l. 270-280): q(0) = (-1, u, v) is an eigenvector of
+M_w = K_{c_n} ... K_{c_1} for an eigenvalue λ, found from two rows of the
+eigen-equation over K = Q(λ, r); p(0) = (1, 0, x).  The collision times are
+*defined* as if the word were realised (t_k = t_{k-1} - p_i/q_i for the letter's
+component i, l. 460-463), so p(t_k) = P₀ + x P₁ stays affine in x and q(t_k) is in
+K; the position map is f(x) = p_3(t_n)/p_1(t_n) = (ax + b)/(cx + d).  Everything is
+exact (SymPy's sparse rational functions); identities are checked modulo cp(λ; r),
+which keeps the values on every eigenvalue branch.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
+import flint
 import sympy as sp
 
-from .model import INDEX, check_word, collision_matrix
-from .poly import FIELD, Xf, lam, r, to_field, u, v, x
+from .branches import Spectrum
+from .model import INDEX, characteristic_polynomial, check_word, collision_matrix, word_matrix
+from .poly import FIELD, Lf, RING, to_field, to_ring
+
+K = FIELD
+
+
+def matrix_in_K(letter: str) -> list[list]:
+    """A, B or C with entries in K."""
+    return [[to_field(e) for e in row] for row in collision_matrix(letter).tolist()]
+
+
+_MATRICES = {k: matrix_in_K(k) for k in "abc"}
+
+
+def collide(letter: str, q) -> tuple:
+    """K q over K for the collision matrix of ``letter``."""
+    Km = _MATRICES[letter]
+    return tuple(sum((Km[i][j] * q[j] for j in range(3)), K.zero) for i in range(3))
+
+
+def eigenvector(M, rows=(0, 1)) -> tuple:
+    """q = (-1, u, v) solving two rows of (M - λI) q = 0 by Cramer's rule over K; the
+    paper uses rows 1 and 2 (l. 366).  The three choices of rows agree on the
+    branches wherever their determinants do not vanish."""
+    A = [[M[i][j] - (Lf if i == j else K.zero) for j in range(3)] for i in range(3)]
+    (a11, a12), (a21, a22) = [(A[i][1], A[i][2]) for i in rows]
+    b1, b2 = (A[i][0] for i in rows)
+    det = a11 * a22 - a12 * a21
+    return (-K.one, (b1 * a22 - a12 * b2) / det, (a11 * b2 - b1 * a21) / det)
 
 
 @dataclass
 class Step:
-    """The state right after the k-th collision of the word (elements of Q(λ, r, x))."""
+    """The state right after a collision: p_i = P0_i + x P1_i, q_i ∈ K."""
 
     letter: str
-    t: object           # the time since the previous collision
-    p: list
-    q: list
+    p: list                    # [(P0, P1)] * 3
+    q: tuple
+
+    def position(self, i: int):
+        """p_i as an element of Q(λ, r, x)."""
+        P0, P1 = self.p[i]
+        return P0 + P1 * FIELD.gens[2]
 
 
-def eigenvector(M: sp.Matrix, first: int, rows=(0, 1)) -> sp.Matrix:
-    """q with q_first = -1 solving the given two rows of M q = λ q, over Q(r, λ)."""
-    unknowns = [k for k in range(3) if k != first]
-    q = sp.zeros(3, 1)
-    q[first] = -1
-    sym = {k: sp.Symbol(f"q{k}") for k in unknowns}
-    for k in unknowns:
-        q[k] = sym[k]
-    eqs = [(M * q - lam * q)[i] for i in rows]
-    sol = sp.solve(eqs, list(sym.values()), dict=True)[0]
-    return q.subs(sol).applyfunc(sp.factor)
-
-
-def run_word(word: str, p0, q0) -> list[Step]:
-    """Apply the word's collisions in order, times defined by p_i(t_k) = 0, in
-    exact rational-function arithmetic over Q(λ, r, x)."""
-    check_word(word)
-    p, q = [to_field(e) for e in p0], [to_field(e) for e in q0]
-    K = {k: [[to_field(e) for e in row] for row in collision_matrix(k).tolist()] for k in "abc"}
-    steps = []
+def run_word(word: str, q0: tuple) -> list[Step]:
+    """From p(0) = (1, 0, x), q(0) = q0, apply the collisions of ``word`` with times
+    *defined* by p_i(t_k) = 0 (l. 460-463).  Nothing is reduced modulo cp here:
+    that would spoil K's cancellations; conditions are reduced at the end."""
+    p = [(K.one, K.zero), (K.zero, K.zero), (K.zero, K.one)]
+    q = tuple(q0)
+    out = []
     for letter in word:
         i = INDEX[letter]
-        t = -p[i] / q[i]
-        p = [p[k] + t * q[k] for k in range(3)]
-        p[i] = FIELD.zero
-        q = [sum((K[letter][a][b] * q[b] for b in range(3)), FIELD.zero) for a in range(3)]
-        steps.append(Step(letter, t, p, q))
-    return steps
+        if q[i] == K.zero:
+            raise ZeroDivisionError(f"q_{i + 1} vanishes identically before {letter}")
+        t = (-p[i][0] / q[i], -p[i][1] / q[i])
+        p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
+        p[i] = (K.zero, K.zero)
+        q = collide(letter, q)
+        out.append(Step(letter, p, q))
+    return out
+
+
+def reduce_mod(e, cp):
+    """The numerator of a rational function of λ reduced modulo cp(λ; r), monic in λ
+    (λ leads the lex order): zero exactly when e vanishes on every root λ of cp where
+    its denominator does not."""
+    return to_field(e).numer.rem(to_ring(cp))
+
+
+def position_map(steps: list[Step], cp) -> tuple:
+    """(a, b, c, d), polynomials in r, λ reduced modulo cp, with p_3(t_n) ∝ ax + b and
+    p_1(t_n) ∝ cx + d over a common denominator: f(x) = (ax + b)/(cx + d).  The common
+    factor may be negative, which swaps x₊ and x₋ (both are always considered)."""
+    (d0, c0), (b0, a0) = steps[-1].p[0], steps[-1].p[2]
+    den = RING.one
+    for e in (a0, b0, c0, d0):
+        den = den.lcm(e.denom)
+    C = to_ring(cp)
+    return tuple((e.numer * den.quo(e.denom)).rem(C).as_expr() for e in (a0, b0, c0, d0))
+
+
+def check_position_map(steps, abcd, cp):
+    """(ax + b)/(cx + d) = p_3(t_n)/p_1(t_n) identically in x, modulo cp:
+    a c₁ = c a₁, a d₁ + b c₁ = c b₁ + d a₁, b d₁ = d b₁ with p_1 = d₁ + c₁x, p_3 = b₁ + a₁x."""
+    (d1, c1), (b1, a1) = steps[-1].p[0], steps[-1].p[2]
+    a, b, c, d = (to_field(e) for e in abcd)
+    for e in (a * c1 - c * a1, a * d1 + b * c1 - c * b1 - d * a1, b * d1 - d * b1):
+        if reduce_mod(e, cp) != 0:
+            raise ArithmeticError("the position map (a, b, c, d) does not reproduce p_3/p_1")
 
 
 def velocities(word: str, q0: sp.Matrix) -> list[sp.Matrix]:
-    """q(t_0), q(t_1), ..., q(t_n) for symbolic q(0) (no positions needed)."""
+    """q(t_0), q(t_1), ..., q(t_n) for a symbolic q(0) (no eigenvalue needed)."""
     out = [sp.Matrix(q0)]
     for letter in check_word(word):
         out.append((collision_matrix(letter) * out[-1]).applyfunc(sp.expand))
     return out
 
 
-def reduce_mod(e, cp):
-    """The numerator of a rational function of λ reduced modulo cp(λ; r) (monic in λ):
-    zero exactly when e vanishes on every root λ of cp where its denominator does not."""
-    return to_field(e).numer.rem(to_field(cp).numer)
+@dataclass
+class Candidate:
+    """The self-similar candidate of a word a ... b: its matrix, cp, branches, q(0)
+    (rows 1, 2 of the eigen-equation, and the two other choices for the points
+    where those degenerate), the symbolic run and the position map."""
+
+    word: str
+    M: sp.Matrix
+    cp: sp.Expr
+    spectrum: Spectrum
+    q0: tuple
+    q0_other: list
+    abcd: tuple
+    steps: list
+
+    def balls(self, r0, branch: int, sigma: int, prec: int):
+        """(p(0), q(0), r) at a rational r0 on a real branch, x = x₊ (sigma = 1) or
+        x₋ (sigma = -1), as python-flint balls of about ``prec`` bits."""
+        from .branches import Condition, ball_value
+        lams = self.spectrum.real_eigenvalues(r0)
+        old = flint.ctx.prec
+        flint.ctx.prec = prec + 30
+        try:
+            R, L = flint.arb(flint.fmpq(r0)), lams[branch].arb(prec + 30)
+            u, v = (ball_value(Condition.of(n, e.as_expr()), R, L) for n, e in (("u", self.q0[1]), ("v", self.q0[2])))
+            a, b, c, d = (ball_value(Condition.of(n, e), R, L) for n, e in zip("abcd", self.abcd))
+            disc = (a - d) ** 2 + 4 * b * c
+            if not disc > 0:
+                raise ArithmeticError("Δ not proven positive")
+            x = (a - d + sigma * disc.sqrt()) / (2 * c)
+            return (flint.arb(1), flint.arb(0), x), (flint.arb(-1), u, v), R
+        finally:
+            flint.ctx.prec = old
 
 
-def position_map(steps: list[Step]):
-    """(a, b, c, d) ∈ Q[λ, r] with f(x) = p_3(t_n)/p_1(t_n) = (a x + b)/(c x + d)."""
-    f = steps[-1].p[2] / steps[-1].p[0]
-    N, D = f.numer, f.denom
-    X = Xf.numer
-    if N.degree(X) > 1 or D.degree(X) > 1:
-        raise ArithmeticError("f is not a Möbius map in x")
-    return (N.coeff_wrt(X, 1), N.coeff_wrt(X, 0), D.coeff_wrt(X, 1), D.coeff_wrt(X, 0))
+@lru_cache(maxsize=None)
+def candidate(word: str) -> Candidate:
+    """M_w, cp, the branches, q(0) and the position map of a word a ... b."""
+    check_word(word)
+    if word[0] != "a" or word[-1] != "b":
+        raise ValueError(f"the normalisation q(0) = (-1, u, v), p(0) = (1, 0, x) needs a word a...b, not {word!r}")
+    M = word_matrix(word)
+    cp = characteristic_polynomial(M)
+    Mk = [[to_field(e) for e in row] for row in M.tolist()]
+    q0 = eigenvector(Mk)
+    steps = run_word(word, q0)
+    if steps[-1].p[1] != (K.zero, K.zero):
+        raise ArithmeticError("p_2 does not vanish after the last b")
+    abcd = position_map(steps, cp)
+    check_position_map(steps, abcd, cp)
+    q0_other = [eigenvector(Mk, rows) for rows in ((0, 2), (1, 2))]
+    return Candidate(word, M, cp, Spectrum(cp), q0, q0_other, abcd, steps)

@@ -45,7 +45,7 @@ def word_matrix(word: str, rr=r) -> sp.Matrix:
     """M_w = K_{c_n} ... K_{c_1}: the velocities after one period are M_w q(0)."""
     M = sp.eye(3)
     for letter in word:
-        M = collision_matrix(letter, rr) * M
+        M = (collision_matrix(letter, rr) * M).applyfunc(sp.expand)
     return M.applyfunc(sp.factor)
 
 

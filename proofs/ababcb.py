@@ -10,8 +10,9 @@ import sympy as sp
 
 from certify.algebraic import Algebraic, sign_intervals
 from certify.branches import Condition, FixedPoint, Spectrum
-from certify.dynamics import eigenvector, position_map, reduce_mod, run_word, velocities
+from certify.dynamics import candidate, reduce_mod, velocities
 from certify.elimination import eliminate, show_factored_int
+from certify.feasibility import Analysis, fmt, prefix_requirements
 from certify.model import characteristic_polynomial, word_matrix, A as A_, B as B_, C as C_
 from certify.poly import to_field, to_fmpq_poly, discriminant_lambda, lam, parse, primitive, r, show, to_fmpz_poly, u, v, x
 from certify.runner import Check, certificate, conclude, quantity
@@ -65,40 +66,29 @@ P1_T5_PRINTED = ("λ*(r^2 - 1)^2*(r^2 - 10*r + 1)/(-64*λ^2 + 4*(-r^5 + 9*r^4 - 
 
 
 # ---------------------------------------------------------------- shared quantities
-@quantity("M")
-def ababcb_matrix():
+@quantity("candidate")
+def ababcb_candidate():
+    """M = BCBABA, cp(M), the branches, q(0) = (-1, u, v) from rows 1, 2 of M q = λ q,
+    the run a, b, a, b, c, b from p(0) = (1, 0, x), and f (certify.dynamics)."""
+    return candidate(WORD)
+
+
+@quantity("M", needs=["candidate"])
+def ababcb_matrix(candidate):
     """M = BCBABA: the velocities after one period ababcb are M q(0)."""
-    return word_matrix(WORD)
+    return candidate.M
 
 
-@quantity("cp", needs=["M"])
-def ababcb_cp(M):
+@quantity("cp", needs=["candidate"])
+def ababcb_cp(candidate):
     """cp(M) = det(λI - M)."""
-    return characteristic_polynomial(M)
+    return candidate.cp
 
 
-@quantity("spectrum", needs=["cp"])
-def ababcb_spectrum(cp):
+@quantity("spectrum", needs=["candidate"])
+def ababcb_spectrum(candidate):
     """The real eigenvalue branches of M over r."""
-    return Spectrum(cp)
-
-
-@quantity("eigenvector", needs=["M"])
-def ababcb_eigenvector(M):
-    """q(0) = (-1, u, v) solving the first two rows of M q = λ q."""
-    return eigenvector(M, first=0, rows=(0, 1))
-
-
-@quantity("steps", needs=["eigenvector"])
-def ababcb_steps(eigenvector):
-    """p(t_k), q(t_k), k = 1..6, from p(0) = (1, 0, x), q(0) = (-1, u, v)."""
-    return run_word(WORD, sp.Matrix([1, 0, x]), eigenvector)
-
-
-@quantity("abcd", needs=["steps"])
-def ababcb_abcd(steps):
-    """(a, b, c, d) with f(x) = p_3(t_6)/p_1(t_6) = (ax + b)/(cx + d), as computed."""
-    return position_map(steps)
+    return candidate.spectrum
 
 
 # ---------------------------------------------------------------- helpers
@@ -328,22 +318,25 @@ def eigenvector_components(M, U, V):
 
 
 @certificate("T10", "l. 310-317, 373-379", "After ababcb, p(t6) = p1(t6)(1, 0, f(x)) with f(x) = (ax+b)/(cx+d) "
-             "and a, b, c, d as printed.", needs=["steps", "abcd", "cp"],
+             "and a, b, c, d as printed.", needs=["candidate"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED))
-def position_map_of_ababcb(steps, abcd, cp, a, b, c, d):
+def position_map_of_ababcb(candidate, a, b, c, d):
     """The computed (a, b, c, d) and the printed ones are proportional modulo cp:
     every 2×2 minor of the two quadruples reduces to zero."""
+    steps, abcd, cp = candidate.steps, candidate.abcd, candidate.cp
     P = [to_field(parse(e)) for e in (a, b, c, d)]
-    minors = {f"{n1}{n2}": reduce_mod(P[i] * abcd[j] - P[j] * abcd[i], cp)
-              for (i, n1), (j, n2) in [((0, "a"), (1, "b")), ((0, "a"), (2, "c")), ((0, "a"), (3, "d")),
-                                       ((1, "b"), (2, "c")), ((1, "b"), (3, "d")), ((2, "c"), (3, "d"))]}
+    comp = [to_field(e) for e in abcd]
+    names = "abcd"
+    minors = {f"{names[i]}{names[j]}": reduce_mod(P[i] * comp[j] - P[j] * comp[i], cp)
+              for i in range(4) for j in range(i + 1, 4)}
     word = "".join(s.letter for s in steps)
     return conclude([
         Check("the collisions applied are a, b, a, b, c, b", word == WORD),
-        Check("p_2(t6) = 0", steps[-1].p[1] == 0),
-        Check("p_1(t6) ≠ 0", steps[-1].p[0] != 0),
+        Check("p_2(t6) = 0 and p_1(t6) ≠ 0", steps[-1].position(1) == 0 and steps[-1].position(0) != 0),
         Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
               all(m == 0 for m in minors.values()),
+              [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
+               f"printed c / computed c = {sp.cancel(P[2].as_expr() / comp[2].as_expr())}"] +
               [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()]),
     ])
 
@@ -646,18 +639,19 @@ def velocities_of(word):
 
 
 @certificate("T22", "l. 460-486", "The printed p3(t4) and p1(t5) equal the dynamics and are > 0 there; p3(t_i) > 0 "
-             "for i = 1..3 follows.", needs=["steps", "cp", "spectrum"],
+             "for i = 1..3 follows.", needs=["candidate"],
              printed=dict(p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED,
                           d=D_PRINTED, U=U_PRINTED, V=V_PRINTED, r1=R1_PRINTED))
-def distance_inequalities(steps, cp, spectrum, p3t4, p1t5, a, b, c, d, U, V, r1):
+def distance_inequalities(candidate, p3t4, p1t5, a, b, c, d, U, V, r1):
     """Both distances against the dynamics (modulo cp), their sign tables with x = x₊,
     and the printed argument for p3(t1..t3): A leaves q3 unchanged and B adds
     (1+r)/2·q2 with q2 < 0 before each b, so p3 is concave on [0, t4]."""
+    steps, cp, spectrum = candidate.steps, candidate.cp, candidate.spectrum
     rr1 = r1_of(r1)
     fp = fixed_point(a, b, c, d)
     checks = []
     for name, text, k, i in (("p3(t4)", p3t4, 3, 2), ("p1(t5)", p1t5, 4, 0)):
-        same = reduce_mod(steps[k].p[i] - to_field(parse(text)), cp) == 0
+        same = reduce_mod(steps[k].position(i) - to_field(parse(text)), cp) == 0
         T = table(spectrum, name, parse(text), 0, 1, fp)
         ok = T.holds(UPPER, 1, 0, rr1) and T.holds(LOWER, 1, 0, rr1)
         checks.append(Check(f"{name} as printed is the dynamics (modulo cp) and is > 0 on the upper and lower branches "
@@ -736,36 +730,50 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_
 
 # ---------------------------------------------------------------- T25: the theorem as a whole
 @certificate("T25.1", "l. 276-321", "Theorem 3.1: self-similar data iff r < 5-2√6, given by the printed formulas, "
-             "and unstable.", needs=["spectrum"],
+             "and unstable.", needs=["candidate"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, V=V_PRINTED,
-                          velocities=VELOCITIES_PRINTED, p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, r1=R1_PRINTED,
-                          P0_text=P0_PRINTED))
-def theorem_3_1(spectrum, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, P0_text):
-    """Assembles the steps from the certified sign tables (shared with T17-T24):
-    for r < r1 on the upper and lower branches the datum has x₊ > 0, u > 0, the five
-    velocities < 0 and the two distances > 0; for r1 < r < 1 no branch has a positive
-    fixed point (the exceptional points of T17, T18 give no datum); instability as
-    in T24 (corrected reading)."""
-    rr1, rs = r1_of(r1), unique_root(P0_text)
-    fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
+                          velocities=VELOCITIES_PRINTED, p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, r1=R1_PRINTED))
+def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
+    """Two routes.  (1) The exact region analysis of the computed candidate
+    (certify.feasibility): every inequality needed to realise ababcb — all the gaps,
+    p_1(t_6) > 0 included, which the paper does not list — imposed on every branch
+    and both fixed points over ]0,1[, critical values included.  (2) The printed
+    formulas: x₊ > 0, u > 0, the five velocities < 0 and the two distances > 0 on the
+    upper and lower branches below r1, from the sign tables shared with T17-T22.
+    Instability as in T24 (corrected reading)."""
+    spectrum, rr1 = candidate.spectrum, r1_of(r1)
+    an = Analysis(candidate)
+    reqs, _ = prefix_requirements(WORD, len(WORD), candidate.q0, candidate.steps, candidate.q0_other)
+    for q in reqs:
+        an.impose(q)
+    undecided = [(R, u_) for R in an.regions for u_ in R.undecided]
+    where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
+    exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
+                     and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
+    regions = [f"{BRANCH[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
+               + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}" if R.dropped else "")
+               for R in an.regions]
+    fp, xp, _xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     uv = printed_uv(U, V)
     tables = [table(spectrum, "u", parse(U), 0, 1)]
     tables += [table(spectrum, name, parse(text).subs(uv), 0, 1) for name, (_k, _i, text) in velocities.items()]
     dist = [table(spectrum, name, parse(text), 0, 1, fp) for name, text in (("p3(t4)", p3t4), ("p1(t5)", p1t5))]
-    feasible = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
-                   and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
-                   for k in (UPPER, LOWER))
-    middle_out = tables[0].signs(MIDDLE, 0, rr1) == {-1}
-    above = all((xp.signs(k, rr1, 1, include_points=False) | xm.signs(k, rr1, 1, include_points=False)) - {"missing"} <= {-1, None}
-                for k in range(3))
+    printed_ok = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
+                     and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
+                     for k in (UPPER, LOWER))
     apd = table(spectrum, "a+d", fp.a + fp.d, 0, rr1)
     lam_t = table(spectrum, "λ", lam, 0, rr1)
     unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
     return conclude([
-        Check("for r < 5-2√6, on the upper and lower branches, the printed datum (x = x₊, u, v) satisfies every "
-              "velocity and distance inequality of Steps 2-3", feasible),
-        Check("on the middle branch u < 0 for r < 5-2√6: no datum", middle_out),
-        Check("for 5-2√6 < r < 1 no branch has a positive fixed point (off the isolated points of T17, T18)", above),
+        Check("every cell and critical value of ]0,1[ decided, on every branch, for both fixed points", not undecided,
+              [f"undecided: {BRANCH[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
+        Check("the candidate realises ababcb, with every inequality strict, exactly for 0 < r < 5-2√6 on the upper "
+              "branch and on the lower branch, and nowhere on the middle branch",
+              exactly_below[UPPER] and exactly_below[LOWER] and not where[MIDDLE],
+              ["the inequalities: " + ", ".join(f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs)] + regions),
+        Check("with the printed formulas (x = x₊, u, v): x₊ > 0, u > 0, the five velocities < 0 and p3(t4), p1(t5) > 0 "
+              "on the upper and lower branches for r < 5-2√6", printed_ok),
         Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable),
-    ], note="The isolated exceptions at r = (7-2√10)/3 (T17) and at r = 5-2√6 on the middle branch (T18) give no "
-            "self-similar datum, so the 'iff' stands.")
+    ], note="p_1(t_6) > 0 (μ > 0) is needed too and is not in the paper's list (l. 470-486); it holds on the same "
+            "region. The computed (a, b, c, d) is the printed one times a negative constant (T10), so the paper's x₊ "
+            "is the computed x₋.")

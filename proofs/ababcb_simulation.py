@@ -31,19 +31,9 @@ from certify.algebraic import Algebraic
 from certify.model import characteristic_polynomial, check_word, word_matrix
 from certify.poly import from_flint, lam, parse, r, show
 from certify.runner import Check, certificate, conclude
+from proofs.ababcb import A_PRINTED, B_PRINTED, C_PRINTED, D_PRINTED, U_PRINTED, V_PRINTED
 
 Q = flint.fmpq
-
-# as printed (l. 279-281, 291-300); the same transcription as proofs/ababcb.py
-U_PRINTED = "r*(16*λ - r^4 + 8*r^3 + 2*r^2 + 8*r - 1)/(2*(r + 1)*(-r^3 + 6*r^2 - r + 4*λ))"
-V_PRINTED = ("-(λ*(64*λ - r^6 + 10*r^5 - 23*r^4 + 44*r^3 + r^2 + 42*r - 9) + r^2*(20*r^4 - 32*r^3 + 8*r^2 + 4))"
-             "/(4*(r + 1)^2*(-r^3 + 6*r^2 - r + 4*λ))")
-A_PRINTED = "-64*r^2*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ + 1024*r^6"
-B_PRINTED = ("256*r^2*(r^2 - 6*r + 1)*λ^2 - 4*r^2*(r - 1)^2*(r - 3)^2*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ"
-             " + 64*r^6*(r^4 - 8*r^3 + 18*r^2 + 5)")
-C_PRINTED = "16*(r - 1)^2*(r + 1)^2*(r^2 - 10*r + 1)*λ"
-D_PRINTED = ("-64*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ^2 + (r^10 - 18*r^9 + 101*r^8 - 216*r^7 + 66*r^6"
-             " + 372*r^5 + 594*r^4 - 24*r^3 + 253*r^2 - 114*r + 9)*λ")
 
 PRINTED = dict(U=U_PRINTED, V=V_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, word="ababcb",
                r="1/20", periods=20, perturbation="1/10^30")

@@ -27,8 +27,9 @@ from certify.branches import Condition
 from certify.elimination import eliminate, show_factored_int
 from certify.poly import RING, lam, parse, resultant_lambda, show, to_fmpz_poly
 from certify.runner import Check, certificate, conclude
-from proofs.abcab import (BRANCH_NAMES, K, Analysis, Requirement, _LAM, _cp_ring, _fmt, _ring, candidate, expr_of,
-                          prefix_requirements, sign_table, vanishes_on_branch)
+from certify.dynamics import K, candidate
+from certify.feasibility import BRANCH_NAMES, Analysis, Requirement, fmt, prefix_requirements, vanishes_on_branch
+from certify.poly import Lf, to_ring
 
 Q = flint.fmpq
 
@@ -55,8 +56,8 @@ def stability_conditions(cand, fp) -> list[Condition]:
     """|f'(x)| < 1 at the fixed point x = (a - d + σ√Δ)/(2c), f'(x) = (ad - bc)/(cx + d)²:
     with cx + d = (a + d + σ√Δ)/2, the two conditions (cx + d)² ∓ (ad - bc) > 0 read
     ((a+d)² + Δ)/4 ∓ (ad - bc) + σ(a + d)√Δ/2 > 0 (multiplied by 4 below)."""
-    a, b, c, d = (_ring(e) for e in cand.abcd)
-    C = _cp_ring(cand.cp)
+    a, b, c, d = (to_ring(e) for e in cand.abcd)
+    C = to_ring(cand.cp)
     out = []
     for sg, name in ((-1, "(cx+d)² - (ad-bc)"), (1, "(cx+d)² + (ad-bc)")):
         N0 = ((a + d) ** 2 + fp.delta + 4 * sg * (a * d - b * c)).rem(C)
@@ -83,13 +84,13 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
         return conclude(checks + [Check(f"the threshold lies in our window ]{lo}, {hi}[", False)])
     cand = candidate(word)
     cp = cand.cp
-    u_num, u_den = sp.fraction(sp.cancel(expr_of(cand.q0[1])))
+    u_num, u_den = sp.fraction(sp.cancel(cand.q0[1].as_expr()))
     a, b, c, d = cand.abcd
     ev = [f"w = {word}; M_w = `{show(cand.M.tolist())}`", f"cp(M_w) = `{show(sp.collect(cp, lam))}`",
           f"q(0) = (-1, u, v), u = q_2(0) = `{show(sp.factor(u_num))}` / `{show(sp.factor(u_den))}`"]
     # which basic quantity vanishes at r1: resultants with cp, and the exact Gröbner route for u
     quantities = {"u = q_2(0) (numerator)": u_num, "u (denominator)": u_den,
-                  "v = q_3(0) (numerator)": sp.fraction(sp.cancel(expr_of(cand.q0[2])))[0],
+                  "v = q_3(0) (numerator)": sp.fraction(sp.cancel(cand.q0[2].as_expr()))[0],
                   "a - d": sp.expand(a - d), "b": b, "c": c, "Δ = (a-d)² + 4bc": sp.expand((a - d) ** 2 + 4 * b * c)}
     hits = []
     for name, g in quantities.items():
@@ -103,12 +104,12 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
                         E.agree and divides_q(quad, E.groebner) and divides_q(quad, E.resultant), E.evidence()))
     # the regions, on ]lo, hi[
     an = Analysis(cand, lo, hi)
-    base = sign_table(cand.spectrum, Condition.of("λ", lam), lo, hi)
+    base = cand.spectrum.sign_table(Condition.of("λ", lam), lo, hi)
     three_positive = all(len(cell.branches) == 3 for cell in base.cells) and all(base.holds(k, 1) for k in range(3))
     checks.append(Check(f"on ]{lo}, {hi}[ the three eigenvalues are real and positive, so the largest is the "
                         f"dominant one (strictly)", three_positive, ["sign of λ per branch:\n\n" + base.markdown()]))
     reqs, steps = prefix_requirements(word, len(word), cand.q0, cand.steps, cand.q0_other)
-    reqs.append(Requirement("λ (q(t_12) = λ q(0) keeps the signs)", (K(_LAM), K.zero), 1))
+    reqs.append(Requirement("λ (q(t_12) = λ q(0) keeps the signs)", (K(Lf), K.zero), 1))
     for req in reqs:
         an.impose(req)
     ev.append("the candidate realises w with every inequality strict iff " + ", ".join(
@@ -118,7 +119,7 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
             ev.append(f"sign of {key[0]} per branch:\n\n{T.markdown()}")
     for R in an.regions:
         ev.append(f"{BRANCH_NAMES[R.branch]} branch, {R.fixed_point}: feasible on {R.describe()}"
-                  + (f"; excluded exactly at {', '.join(f'{_fmt(rc)} ({why})' for rc, why in R.dropped)}"
+                  + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}"
                      if R.dropped else ""))
     undecided = [(R, u) for R in an.regions for u in R.undecided]
     upper = [R for R in an.regions if R.branch == 0]
@@ -126,12 +127,12 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
     above = [(R, p) for R in upper for p in R.pieces if (p.lo if p.is_point else p.hi) > r1]
     at_r1 = [(R, p) for R in upper for p in R.pieces if p.is_point and p.lo == r1]
     u_zero = vanishes_on_branch(cand.spectrum, sp.expand(u_num), r1, 0)
-    den_sign = cand.spectrum.sign_at_point(Condition("denominator of u", (_ring(u_den), RING.zero),
+    den_sign = cand.spectrum.sign_at_point(Condition("denominator of u", (to_ring(u_den), RING.zero),
                                                      (RING.one, RING.zero), None, None), r1)
     den_sign = None if den_sign is None else den_sign[0]
     checks += [
         Check("every cell and critical value of the window decided", not undecided,
-              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} {_fmt(rc)} ({why})" for R, (rc, why) in undecided]),
+              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
         Check("dominant branch: the candidate realises w on an interval ]s, 5-2√6[ just below the threshold",
               bool(below), [f"{R.fixed_point}: {p}" for R, p in below]),
         Check("dominant branch: no feasible candidate on ]5-2√6, 1/9[ nor at 5-2√6 (for x₊ and x₋)",
@@ -143,9 +144,9 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
     # stability just below: dominant eigenvalue (velocities) and |f'(x)| < 1 (positions)
     stable = bool(below)
     for R, p in below:
-        fp = cand.fixed_points()[R.fixed_point]
+        fp = an.fps[R.fixed_point]
         for cond in stability_conditions(cand, fp):
-            T = sign_table(cand.spectrum, cond, p.lo, p.hi)
+            T = cand.spectrum.sign_table(cond, p.lo, p.hi)
             ok = T.holds(0, 1)
             stable &= ok
             ev.append(f"{cond.name} at {R.fixed_point} on {p} (|f'(x)| < 1 iff both > 0):\n\n{T.markdown()}")

@@ -1,0 +1,364 @@
+"""Where does the self-similar candidate of a word realise it?  Exact regions of r.
+
+A *requirement* is a condition g = G₀ + x G₁ (G₀, G₁ ∈ Q(λ, r), x the position fixed
+point) with the strict sign it must have for the candidate to realise a prefix of
+its word (:func:`prefix_requirements`).  :class:`Analysis` imposes requirements one
+at a time and keeps, per real branch and fixed point x₊/x₋, the exact set of r
+where all hold: open intervals with algebraic ends, and points.  Signs come from the
+certified sign tables of :mod:`certify.branches`; at a critical value they are
+decided by balls, or, where a quantity vanishes or has a pole, by the exact zero
+test in Q(r_c)[λ]; where c = 0 the map f is affine and its fixed point b/(d - a) is
+used.  Conditions are reduced modulo cp (monic in λ), which keeps their values on
+every branch.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import flint
+import sympy as sp
+
+from .algebraic import Algebraic
+from .branches import Condition, simplest_between
+from .dynamics import K, Candidate, run_word
+from .model import INDEX
+from .poly import RING, lam, to_field, to_ring
+
+Q = flint.fmpq
+BRANCH_NAMES = ("upper", "middle", "lower")
+
+
+@dataclass
+class Requirement:
+    """A condition g = G0 + x G1 (G0, G1 in Q(r, λ)) and the strict sign it must have."""
+
+    name: str
+    G: tuple
+    sign: int
+    other: tuple = ()          # other representations of the same function on the branches
+
+    @property
+    def has_x(self) -> bool:
+        return self.G[1] != K.zero
+
+
+def mod_cp(e, cp):
+    """A polynomial in r, λ reduced modulo cp (monic in λ): the same values on every
+    branch, λ-degree below deg cp."""
+    return to_ring(e).rem(to_ring(cp))
+
+
+@dataclass
+class FixedPointData:
+    """x = (a - d + σ√Δ)/(2c), Δ = (a - d)² + 4bc, all reduced modulo cp."""
+
+    label: str
+    sigma: int
+    amd: object                 # polynomials of the engine's ring
+    c: object
+    delta: object
+
+
+def fixed_point_data(abcd, cp) -> list[FixedPointData]:
+    a, b, c, d = (to_ring(e) for e in abcd)
+    amd = mod_cp(a - d, cp)
+    delta = mod_cp((a - d) ** 2 + 4 * b * c, cp)
+    cc = mod_cp(c, cp)
+    return [FixedPointData("x₊", 1, amd, cc, delta), FixedPointData("x₋", -1, amd, cc, delta)]
+
+
+def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=None) -> Condition:
+    """The engine's Condition for g = G0 + x G1, numerator and denominator reduced
+    modulo cp, x the fixed point ``fp`` (x = (A + σ√Δ)/(2c), A = a - d) or the
+    rational function ``x_value``."""
+    C = to_ring(cp)
+    G0, G1 = req.G
+    n0, d0, n1, d1 = G0.numer, G0.denom, G1.numer, G1.denom
+    zero = RING.zero
+    if not req.has_x:
+        N0, N1, D0, delta, c = n0, zero, d0, None, None
+    elif x_value is not None:                               # x = X0/X1
+        X = to_field(x_value)
+        N0, N1, D0, delta, c = n0 * d1 * X.denom + n1 * d0 * X.numer, zero, d0 * d1 * X.denom, None, None
+    else:                                                   # g = (n0 d1 + x n1 d0)/(d0 d1)
+        A, c, delta = fp.amd, fp.c, fp.delta
+        N0, N1, D0 = 2 * c * n0 * d1 + A * n1 * d0, fp.sigma * n1 * d0, 2 * c * d0 * d1
+    return Condition(req.name, (N0.rem(C), N1.rem(C)), (D0.rem(C), zero), delta, c)
+
+
+def vanishes_on_branch(spec: Spectrum, g: sp.Expr, rc: Algebraic, branch: int) -> bool:
+    """Exact: the polynomial g(r, λ) vanishes at r = rc on the real branch ``branch``
+    (the engine's gcd test in Q(rc)[λ]); False when it cannot be proven."""
+    try:
+        return spec.vanishes_at(g.as_expr() if hasattr(g, "as_expr") else g, rc, branch)
+    except ArithmeticError:
+        return False
+
+
+@dataclass
+class Piece:
+    """An open interval ]lo, hi[ of r, or the single point lo (hi None).  At a point
+    where f degenerates, ``x_value`` is the fixed point used there instead of x±."""
+
+    lo: Algebraic
+    hi: Algebraic | None = None
+    x_value: sp.Expr | None = None
+    note: str = ""
+
+    @property
+    def is_point(self) -> bool:
+        return self.hi is None
+
+    def __str__(self) -> str:
+        if self.is_point:
+            return "{" + fmt(self.lo) + "}" + (f" ({self.note})" if self.note else "")
+        return f"]{fmt(self.lo)}, {fmt(self.hi)}["
+
+
+@dataclass
+class Region:
+    """The set of r where every requirement imposed so far holds, for one real
+    branch and one fixed point; ``undecided`` lists the points no test settled."""
+
+    branch: int
+    fixed_point: str
+    pieces: list
+    undecided: list
+    dropped: list                  # (point, reason) settled exactly as failing
+
+    def describe(self) -> str:
+        """The pieces, with ]a, b[ ∪ {b} ∪ ]b, c[ shown as ]a, c[."""
+        intervals = sorted((p for p in self.pieces if not p.is_point), key=lambda p: p.lo)
+        points = [p for p in self.pieces if p.is_point]
+        merged = []
+        for p in intervals:
+            if merged and merged[-1][1] == p.lo:
+                joint = [q for q in points if q.lo == p.lo and not q.note]
+                if joint:
+                    points.remove(joint[0])
+                    merged[-1][1] = p.hi
+                    continue
+            merged.append([p.lo, p.hi])
+        parts = [str(Piece(a, b)) for a, b in merged] + [str(q) for q in points]
+        return " ∪ ".join(parts) or "∅"
+
+
+def fmt(a: Algebraic) -> str:
+    """A short name for an end of an interval."""
+    return str(a.lo) if a.is_rational else "≈" + a.digits(6)
+
+
+def _meets(sg, want) -> bool | None:
+    if sg == "?":
+        return None
+    if sg in (None, "missing"):
+        return False
+    return sg == want
+
+
+def sign_in_cell(T, branch: int, lo, hi):
+    """The sign of table T on ``branch`` over ]lo, hi[, inside one cell of T."""
+    signs = T.signs(branch, lo, hi, include_points=False)
+    if len(signs) != 1:
+        raise ArithmeticError(f"{T.condition}: signs {signs} on ]{lo}, {hi}[")
+    return next(iter(signs))
+
+
+def sign_at(T, rc: Algebraic, branch: int):
+    """The sign of table T at rc on ``branch``: its point value when rc is one of
+    T's critical values, else the sign of the cell holding rc."""
+    for c, pt in zip(T.critical, T.points):
+        if c == rc:
+            if pt is None:
+                return "?"
+            return pt[branch] if branch < len(pt) else "missing"
+    for cell in T.cells:
+        if cell.lo < rc < cell.hi:
+            return cell.signs[branch] if branch < len(cell.signs) else "missing"
+    raise ArithmeticError(f"{rc} outside the table of {T.condition}")
+
+
+def _hull(regions, lo0, hi0):
+    """An interval ]L, H[ (rational or algebraic ends) containing every piece: an
+    open end of a piece is used as it is, a point at an end is enclosed by a
+    simple rational just outside it."""
+    pieces = [p for R in regions for p in R.pieces]
+    if not pieces:
+        return None
+    L = min(p.lo for p in pieces)
+    H = max(p.lo if p.is_point else p.hi for p in pieces)
+    eps = Q(1, 10 ** 4)
+    if any(p.is_point and p.lo == L for p in pieces):
+        L.refine(eps)
+        top = L.lo if not L.is_rational else L.lo - eps / 2
+        L = Algebraic.rational(simplest_between(max(Q(lo0), L.lo - eps), top))
+    if any(p.is_point and p.lo == H for p in pieces):
+        H.refine(eps)
+        bottom = H.hi if not H.is_rational else H.hi + eps / 2
+        H = Algebraic.rational(simplest_between(bottom, min(Q(hi0), H.hi + eps)))
+    return (L.lo if L.is_rational else L), (H.lo if H.is_rational else H)
+
+
+class Analysis:
+    """Impose requirements one at a time on the candidate of a word and keep, per
+    real branch and fixed point, the region of r where all hold (certified)."""
+
+    def __init__(self, cand: Candidate, lo=0, hi=1):
+        self.cand, self.spec, self.lo, self.hi = cand, cand.spectrum, lo, hi
+        self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd, cand.cp)}
+        self.tables = {}
+        base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
+        nb = max(len(c.branches) for c in base.cells)
+        self.regions = [Region(k, f, [], [], []) for k in range(nb) for f in self.fps]
+        for R in self.regions:
+            ends = [Algebraic.rational(lo)] + base.critical + [Algebraic.rational(hi)]
+            for a, b in zip(ends, ends[1:]):
+                if R.branch < len(next(c for c in base.cells if c.lo == a).branches):
+                    R.pieces.append(Piece(a, b))
+            for c, pt in zip(base.critical, base.points):
+                if pt is None:
+                    R.undecided.append((c, "branches not isolated"))
+                elif R.branch < len(pt):
+                    R.pieces.append(Piece(c))
+            R.pieces.sort(key=lambda p: p.lo)
+
+    def table(self, req: Requirement, fname: str):
+        """The sign table of a requirement over the hull of the current regions."""
+        regions = [R for R in self.regions if R.fixed_point == fname or not req.has_x]
+        hull = _hull(regions, self.lo, self.hi)
+        if hull is None:
+            return None
+        key = (req.name, fname if req.has_x else "", repr(hull))
+        if key not in self.tables:
+            self.tables[key] = self.spec.sign_table(condition(req, self.spec.cp,
+                                                               self.fps[fname] if req.has_x else None), *hull)
+        return self.tables[key]
+
+    def impose(self, req: Requirement):
+        """Keep only the r where req has its required sign."""
+        tables = {f: self.table(req, f) for f in self.fps}       # over the hull before cutting
+        for R in self.regions:
+            if not R.pieces:
+                continue
+            T = tables[R.fixed_point]
+            new = []
+            for p, status, why in self._split(R, p_list=R.pieces, req=req, T=T):
+                if status == "holds":
+                    new.append(p)
+                elif status == "undecided":
+                    R.undecided.append((p.lo, why))
+                elif p.is_point and why:
+                    R.dropped.append((p.lo, why))
+            R.pieces = sorted(new, key=lambda q: q.lo)
+
+    def violations(self, req: Requirement) -> list[tuple[Region, Piece, str]]:
+        """Where, in the current regions, req does not have its sign (or is undecided)."""
+        bad = []
+        tables = {f: self.table(req, f) for f in self.fps}
+        for R in self.regions:
+            if not R.pieces:
+                continue
+            T = tables[R.fixed_point]
+            for p, status, why in self._split(R, R.pieces, req, T):
+                if status != "holds":
+                    bad.append((R, p, status + (f": {why}" if why else "")))
+        return bad
+
+    def _split(self, R: Region, p_list, req: Requirement, T):
+        """Each piece cut at the critical values of T, with the status of req on each
+        part: "holds", "fails" or "undecided" (and a reason at points)."""
+        for p in p_list:
+            if p.is_point:
+                yield self._point(R, p, req, T)
+                continue
+            cuts = [c for c in T.critical if p.lo < c < p.hi]
+            ends = [p.lo] + cuts + [p.hi]
+            for a, b in zip(ends, ends[1:]):
+                ok = _meets(sign_in_cell(T, R.branch, a, b), req.sign)
+                yield Piece(a, b), "holds" if ok else "fails", ""
+            for c in cuts:
+                yield self._point(R, Piece(c), req, T)
+
+    # -- a single point: balls first, exact zero tests where balls cannot decide
+    def _point(self, R: Region, p: Piece, req: Requirement, T):
+        rc, k = p.lo, R.branch
+        sg = self._sign_with_x(req, rc, k, p.x_value) if (p.x_value is not None and req.has_x) else sign_at(T, rc, k)
+        ok = _meets(sg, req.sign)
+        if ok is not None:
+            return p, "holds" if ok else "fails", "" if ok else \
+                f"{req.name} {'= 0' if sg == 0 else 'is not real' if sg is None else 'has the wrong sign'}"
+        a, b, c, d = self.cand.abcd
+        if req.has_x and p.x_value is None and vanishes_on_branch(self.spec, c, rc, k):
+            xv = sp.cancel(b / (d - a))
+            if _meets(self._sign_with_x(Requirement("x", (K.zero, K.one), 1), rc, k, xv), 1):
+                return self._point(R, Piece(rc, None, xv, "c = 0: f affine, fixed point b/(d-a)"), req, T)
+            return p, "fails", "c = 0 there (exact): f is affine, its fixed point b/(d-a) is not positive"
+        if not req.has_x or p.x_value is not None:
+            # g = N/D without √Δ: N = 0 (g = 0) or D = 0 (g undefined: a collision time or
+            # the normalisation q_1(0) = -1 breaks down) both defeat a strict inequality;
+            # N = D = 0 stays undecided.
+            cond = condition(req, self.spec.cp, x_value=p.x_value) if req.has_x else condition(req, self.spec.cp)
+            zero_n = vanishes_on_branch(self.spec, cond.N[0], rc, k)
+            zero_d = vanishes_on_branch(self.spec, cond.D[0], rc, k)
+            if zero_n != zero_d:
+                return p, "fails", f"{req.name} {'vanishes' if zero_n else 'has a pole'} there (exact)"
+            # 0/0: another representation of the same function, with a denominator not vanishing there
+            for G in req.other:
+                alt = Requirement(req.name, G, req.sign)
+                cond = condition(alt, self.spec.cp, x_value=p.x_value) if alt.has_x else condition(alt, self.spec.cp)
+                if vanishes_on_branch(self.spec, cond.D[0], rc, k):
+                    continue
+                if vanishes_on_branch(self.spec, cond.N[0], rc, k):
+                    return p, "fails", f"{req.name} vanishes there (exact, other rows of the eigen-equation)"
+                sg = self.spec.sign_at_point(cond, rc)
+                ok = None if sg is None else _meets(sg[k] if k < len(sg) else "missing", req.sign)
+                if ok is not None:
+                    return p, "holds" if ok else "fails", "" if ok else \
+                        f"{req.name} has the wrong sign (other rows of the eigen-equation)"
+        return p, "undecided", req.name
+
+    def _sign_with_x(self, req, rc, k, xv):
+        sg = self.spec.sign_at_point(condition(req, self.spec.cp, x_value=xv), rc)
+        return "?" if sg is None else (sg[k] if k < len(sg) else "missing")
+def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=()) -> tuple[list[Requirement], list]:
+    """The candidate of ``word`` realises its first m collisions, strictly, iff
+
+    * u = q_2(0) > 0 (p_2(0) = 0 right after the last b of the previous period), x > 0;
+    * at each collision k the pair i_k approaches: q_{i_k}(t_{k-1}) < 0;
+    * the gap i_k is open just before: p_{i_k}(t_{k-1}) > 0, so that τ_k > 0, except
+      when it is automatic: k = 1 (p_1(0) = 1), or the pair collided at k - 2
+      (p_{i_k}(t_{k-1}) = τ_{k-1} q_{i_k}(t_{k-2}) with q_{i_k}(t_{k-2}) > 0 after that
+      collision);
+    * every gap that does not collide at m is open at t_m (same exception for the gap
+      that collided at m - 1).
+
+    Why this is enough: each collision of type b adds (1+r)/2 q_2 < 0 to q_1 and q_3,
+    a collision a or c adds (1+r)/2 q_1 < 0 or (1+r)/2 q_3 < 0 to q_2, so every gap
+    p_j(t) is concave between two consecutive collisions of its own pair (the slopes
+    only decrease; all τ_k > 0 by the above).  A concave function positive at both
+    ends of an interval (or zero at the left end with a positive slope there) is
+    positive inside, so the gap is open at every intermediate collision and no other
+    pair collides in between (the paper's argument of l. 478-480, for every gap)."""
+    steps = steps[:m] if steps is not None and len(steps) >= m else run_word(word[:m], q0)
+    reqs = [Requirement("u = q_2(0)", (q0[1], K.zero), 1, tuple((q[1], K.zero) for q in q0_other)),
+            Requirement("x", (K.zero, K.one), 1)]
+    letters = [INDEX[word[-1]]] + [INDEX[c] for c in word[:m]]        # letters[k] = i_k, i_0 = last b
+    for k in range(1, m + 1):
+        i = letters[k]
+        before = q0 if k == 1 else steps[k - 2].q
+        if not _positive_constant(-before[i]):
+            reqs.append(Requirement(f"q_{i + 1}(t_{k - 1})", (before[i], K.zero), -1))
+        automatic = k == 1 or letters[k - 2] == i
+        if not automatic:
+            reqs.append(Requirement(f"p_{i + 1}(t_{k - 1})", steps[k - 2].p[i], 1))
+    for j in range(3):
+        if j != letters[m] and j != letters[m - 1]:
+            reqs.append(Requirement(f"p_{j + 1}(t_{m})", steps[m - 1].p[j], 1))
+    return reqs, steps
+
+
+def _positive_constant(e) -> bool:
+    v = e.as_expr()
+    return v.is_number and v > 0
+
+

@@ -1,0 +1,64 @@
+"""The candidate of a collision word (certify.dynamics) and its requirements
+(certify.feasibility), against the paper's printed ababcb."""
+import flint
+import pytest
+import sympy as sp
+
+from certify.branches import simplest_between
+from certify.dynamics import candidate, check_position_map
+from certify.feasibility import mod_cp, prefix_requirements
+from certify.poly import parse
+
+Q = flint.fmpq
+
+
+def test_candidate_of_ababcb_matches_the_paper():
+    """The generic candidate reproduces the paper's u (l. 279) and its position map
+    (l. 291-300, up to a common factor modulo cp)."""
+    c = candidate("ababcb")
+    u_printed = parse("r*(16*λ - r^4 + 8*r^3 + 2*r^2 + 8*r - 1)/(2*(r + 1)*(-r^3 + 6*r^2 - r + 4*λ))")
+    diff = sp.fraction(sp.cancel(c.q0[1].as_expr() - u_printed))[0]
+    assert mod_cp(sp.expand(diff), c.cp) == 0
+    a, b, cc, d = (parse(e) for e in (
+        "-64*r^2*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ + 1024*r^6",
+        "256*r^2*(r^2 - 6*r + 1)*λ^2 - 4*r^2*(r - 1)^2*(r - 3)^2*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ"
+        " + 64*r^6*(r^4 - 8*r^3 + 18*r^2 + 5)",
+        "16*(r - 1)^2*(r + 1)^2*(r^2 - 10*r + 1)*λ",
+        "-64*(r^4 - 8*r^3 - 2*r^2 - 8*r + 1)*λ^2 + (r^10 - 18*r^9 + 101*r^8 - 216*r^7 + 66*r^6"
+        " + 372*r^5 + 594*r^4 - 24*r^3 + 253*r^2 - 114*r + 9)*λ"))
+    A, B, C, D = c.abcd
+    for e in (a * B - b * A, a * C - cc * A, a * D - d * A, cc * D - d * C):
+        assert mod_cp(sp.expand(e), c.cp) == 0
+
+
+def test_prefix_requirements_of_ababcb_are_the_papers():
+    """Step 3 of the paper (l. 449-486): the velocity inequalities q2(t1), q1(t2),
+    q2(t3), q3(t4), q2(t5) and the distances p3(t4); our list has p1(t6) (> 0 implies
+    p1(t5) > 0 by concavity) where the paper lists p1(t5)."""
+    c = candidate("ababcb")
+    reqs, _ = prefix_requirements("ababcb", 6, c.q0, c.steps)
+    assert [q.name for q in reqs] == ["u = q_2(0)", "x", "q_2(t_1)", "q_1(t_2)", "q_2(t_3)", "q_3(t_4)",
+                                      "p_3(t_4)", "q_2(t_5)", "p_1(t_6)"]
+    u = c.q0[1].as_expr()
+    printed = {"q_2(t_1)": "u - (1+r)/2", "q_1(t_2)": "(1+r)/2*u - (r-1)^2/4",
+               "q_2(t_3)": "(r-1)^2/4*u - (r^3 - 5*r^2 - 5*r + 1)/8"}
+    for q in reqs:
+        if q.name in printed:
+            diff = sp.cancel(q.G[0].as_expr() - parse(printed[q.name]).subs(sp.Symbol("u"), u))
+            assert diff == 0, q.name
+
+
+def test_position_map_check_catches_a_wrong_map():
+    c = candidate("abcab")
+    a, b, cc, d = c.abcd
+    check_position_map(c.steps, c.abcd, c.cp)
+    with pytest.raises(ArithmeticError):
+        check_position_map(c.steps, (2 * a, b, 2 * cc, d), c.cp)
+
+
+def test_simplest_between():
+    assert simplest_between(Q(1, 3), Q(1, 2)) == Q(1, 2)
+    assert simplest_between(Q(31, 100), Q(32, 100)) == Q(5, 16)
+    assert simplest_between(Q(0), Q(1, 10)) == 0
+
+
