@@ -19,24 +19,10 @@ import flint
 import sympy as sp
 
 from .branches import Spectrum
-from .model import INDEX, characteristic_polynomial, check_word, collision_matrix, word_matrix
-from .poly import FIELD, Lf, RING, to_field, to_ring
+from .model import INDEX, characteristic_polynomial, check_word, collide, collision_matrix, word_matrix
+from .poly import FIELD, Lf, RING, Rf, to_field, to_ring
 
 K = FIELD
-
-
-def matrix_in_K(letter: str) -> list[list]:
-    """A, B or C with entries in K."""
-    return [[to_field(e) for e in row] for row in collision_matrix(letter).tolist()]
-
-
-_MATRICES = {k: matrix_in_K(k) for k in "abc"}
-
-
-def collide(letter: str, q) -> tuple:
-    """K q over K for the collision matrix of ``letter``."""
-    Km = _MATRICES[letter]
-    return tuple(sum((Km[i][j] * q[j] for j in range(3)), K.zero) for i in range(3))
 
 
 def eigenvector(M, rows=(0, 1)) -> tuple:
@@ -78,7 +64,7 @@ def run_word(word: str, q0: tuple) -> list[Step]:
         t = (-p[i][0] / q[i], -p[i][1] / q[i])
         p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
         p[i] = (K.zero, K.zero)
-        q = collide(letter, q)
+        q = collide(letter, q, Rf)
         out.append(Step(letter, p, q))
     return out
 

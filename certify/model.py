@@ -18,14 +18,25 @@ LETTERS = "abc"
 INDEX = {"a": 0, "b": 1, "c": 2}          # the component p_i that vanishes at the collision
 
 
-def collision_matrix(letter: str, rr=r) -> sp.Matrix:
-    """A, B or C of the paper (l. 209-232)."""
+def collide(letter: str, q, rr=r) -> tuple:
+    """K q for K = A, B, C (l. 209-232), h = (1 + r)/2, in any ring holding r and q
+    (SymPy, rationals, balls, rational functions):
+    a: (-r q1, q2 + h q1, q3);  b: (q1 + h q2, -r q2, q3 + h q2);  c: (q1, q2 + h q3, -r q3)."""
+    q1, q2, q3 = q
     h = (1 + rr) / 2
-    return {
-        "a": sp.Matrix([[-rr, 0, 0], [h, 1, 0], [0, 0, 1]]),
-        "b": sp.Matrix([[1, h, 0], [0, -rr, 0], [0, h, 1]]),
-        "c": sp.Matrix([[1, 0, 0], [0, 1, h], [0, 0, -rr]]),
-    }[letter]
+    if letter == "a":
+        return (-rr * q1, q2 + h * q1, q3)
+    if letter == "b":
+        return (q1 + h * q2, -rr * q2, q3 + h * q2)
+    if letter == "c":
+        return (q1, q2 + h * q3, -rr * q3)
+    raise ValueError(f"unknown collision {letter!r}")
+
+
+def collision_matrix(letter: str, rr=r) -> sp.Matrix:
+    """A, B or C of the paper (l. 209-232): the matrix of :func:`collide`."""
+    columns = [collide(letter, e, rr) for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+    return sp.Matrix(3, 3, lambda i, j: sp.sympify(columns[j][i]))
 
 
 A, B, C = (collision_matrix(k) for k in LETTERS)

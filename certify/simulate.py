@@ -31,8 +31,7 @@ from typing import Callable, Sequence
 
 import flint
 
-LETTERS = "abc"
-INDEX = {"a": 0, "b": 1, "c": 2}
+from .model import INDEX, LETTERS, collide
 
 
 class Undecided(ArithmeticError):
@@ -92,20 +91,6 @@ def precision(bits: int | None):
 
 
 # --- collisions ----------------------------------------------------------------
-
-def collide(letter: str, q: Sequence, r) -> tuple:
-    """K q for K = A, B, C (l. 209-232), with h = (1 + r)/2:
-    a: (-r q1, q2 + h q1, q3);  b: (q1 + h q2, -r q2, q3 + h q2);  c: (q1, q2 + h q3, -r q3)."""
-    q1, q2, q3 = q
-    h = (1 + r) / 2
-    if letter == "a":
-        return (-r * q1, q2 + h * q1, q3)
-    if letter == "b":
-        return (q1 + h * q2, -r * q2, q3 + h * q2)
-    if letter == "c":
-        return (q1, q2 + h * q3, -r * q3)
-    raise ValueError(f"unknown collision {letter!r}")
-
 
 def collision_times(p: Sequence, q: Sequence) -> dict[str, object]:
     """{letter: -p_i/q_i} for every pair with q_i < 0 (certified sign)."""
