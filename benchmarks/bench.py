@@ -7,8 +7,8 @@ Each repetition calls :func:`certify.runner.run` over every certificate with a
 fresh context, so the shared quantities (M, cp(M), the branches, ...) are
 computed again each time.  No figure and no report is written.  The proofs
 modules (and SymPy, python-flint) are imported once before the clock starts.
-Caches inside the engine (``functools.lru_cache``) do survive from one
-repetition to the next: the first, cold, run is therefore shown on its own.
+The engine's caches are emptied before each repetition
+(:func:`certify.runner.reset_caches`), so every repetition is a cold run.
 
 Printed: the median and minimum total, the five heaviest certificates (median
 seconds, and the part spent computing shared quantities they were the first
@@ -36,6 +36,7 @@ def time_runs(repeat: int) -> list[dict]:
     runner.load_all()
     runs = []
     for _ in range(repeat):
+        runner.reset_caches()
         start = time.perf_counter()
         results, timings = runner.run()
         total = time.perf_counter() - start

@@ -183,6 +183,18 @@ def run_certificate(cert: Certificate, ctx: Context | None = None,
     return outcome
 
 
+def reset_caches() -> None:
+    """Forget what the engine memoises across runs (the candidates of words with their
+    branches and sign tables, the conditions, SymPy's cache): the next run is cold."""
+    import sympy.core.cache
+
+    from .branches import Condition
+    from .dynamics import candidate
+    candidate.cache_clear()
+    Condition._cache.clear()
+    sympy.core.cache.clear_cache()
+
+
 def run(ids=None, progress=None) -> tuple[list[tuple[Certificate, Outcome]], dict]:
     """Run the selected certificates; return the outcomes and the timings."""
     certs = select(ids)
