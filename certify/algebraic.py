@@ -15,7 +15,7 @@ from functools import total_ordering
 import flint
 import sympy as sp
 
-from .poly import primitive, squarefree_part, to_fmpz_poly, show
+from .poly import primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, isolate, refine
 
 Q = flint.fmpq
@@ -23,20 +23,6 @@ Q = flint.fmpq
 
 def _sign(a) -> int:
     return (a > 0) - (a < 0)
-
-
-def to_fmpq(a) -> flint.fmpq:
-    """An exact rational from int, Fraction, SymPy Rational, str or fmpq."""
-    if isinstance(a, flint.fmpq):
-        return a
-    if isinstance(a, (int, flint.fmpz)):
-        return Q(a)
-    if isinstance(a, str):
-        a = Fraction(a)
-    if isinstance(a, Fraction):
-        return Q(a.numerator, a.denominator)
-    a = sp.Rational(a)
-    return Q(int(a.p), int(a.q))
 
 
 @total_ordering

@@ -75,7 +75,7 @@ def _split_sqrt(P, delta):
     """P = P₀ + P₁ s modulo s² = Δ."""
     P0, P1 = RING.zero, RING.zero
     for k, Pk in coefficients_in(P, Sf.numer).items():
-        term = Pk * (delta ** (k // 2) if delta is not None else RING.one)
+        term = Pk * (delta ** (k // 2) if delta is not None and k > 1 else RING.one)   # no 0**0 when Δ ≡ 0
         if k % 2:
             P1 += term
         else:
@@ -255,6 +255,9 @@ class Spectrum:
         self.P = sp.Poly(self.cp, lam)
         self.degree = self.P.degree()
         self.disc = primitive(discriminant_lambda(self.cp))
+        if self.disc.is_zero():
+            # the branches of a squarefree part could change number where no discriminant vanishes
+            raise ValueError("cp has a repeated factor in λ (its discriminant is identically 0)")
         self.lc = primitive(to_fmpq_poly(self.P.LC(), r))
         self.ring_cp = to_ring(self.cp)
         self._resultants = {}

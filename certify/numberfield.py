@@ -104,7 +104,13 @@ def real_roots(f, alpha: Algebraic, prec: int):
     flint.ctx.prec = prec + 30
     try:
         R = alpha.arb(prec)
-        roots = flint.acb_poly([flint.acb(arb_of(c, R)) for c in f][::-1]).roots()
+        poly = flint.acb_poly([flint.acb(arb_of(c, R)) for c in f][::-1])
+        try:
+            # refined with the precision: roots() alone stops at the first isolation
+            # (32-bit balls, radius ~1e-9, whatever the precision)
+            roots = poly.roots(tol=flint.arb(2) ** -(prec // 2))
+        except ValueError:
+            roots = poly.roots()
     except ValueError:
         return None
     finally:

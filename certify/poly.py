@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from functools import reduce
 
+from fractions import Fraction
+
 import flint
 import sympy as sp
 from sympy.polys.fields import FracElement, field
@@ -34,6 +36,20 @@ def parse(text: str) -> sp.Expr:
 def expr(e) -> sp.Expr:
     """Accept a string (parsed) or a SymPy expression."""
     return parse(e) if isinstance(e, str) else sp.sympify(e)
+
+
+def to_fmpq(a) -> flint.fmpq:
+    """An exact rational from int, Fraction, SymPy Rational, str or fmpq."""
+    if isinstance(a, flint.fmpq):
+        return a
+    if isinstance(a, (int, flint.fmpz)):
+        return flint.fmpq(a)
+    if isinstance(a, str):
+        a = Fraction(a)
+    if isinstance(a, Fraction):
+        return flint.fmpq(a.numerator, a.denominator)
+    a = sp.Rational(a)
+    return flint.fmpq(int(a.p), int(a.q))
 
 
 def to_fmpq_poly(e, var=r) -> flint.fmpq_poly:

@@ -6,19 +6,11 @@ roots; a polynomial with multiple roots is first divided by gcd(p, p').
 """
 from __future__ import annotations
 
-from fractions import Fraction
-
 import flint
 
+from .poly import to_fmpq
+
 Q = flint.fmpq
-
-
-def _q(a) -> flint.fmpq:
-    if isinstance(a, flint.fmpq):
-        return a
-    if isinstance(a, Fraction):
-        return Q(a.numerator, a.denominator)
-    return Q(a)
 
 
 def sturm_sequence(p) -> list[flint.fmpq_poly]:
@@ -41,7 +33,7 @@ def _sign(a) -> int:
 
 def sign_changes(seq, a) -> int:
     """Number of sign changes of the Sturm sequence at the rational a (zeros skipped)."""
-    a = _q(a)
+    a = to_fmpq(a)
     signs = [s for s in (_sign(p(a)) for p in seq) if s != 0]
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
@@ -79,8 +71,8 @@ def isolate(p, a=None, b=None, width=None) -> list[tuple[flint.fmpq, flint.fmpq]
     seq = sturm_sequence(p)
     p0 = seq[0]
     bound = cauchy_bound(p0)
-    a = -bound if a is None else _q(a)
-    b = bound if b is None else _q(b)
+    a = -bound if a is None else to_fmpq(a)
+    b = bound if b is None else to_fmpq(b)
     out = []
     # roots exactly at b are excluded (open interval): count in ]a, b] minus root at b
     stack = [(a, b)]
@@ -107,7 +99,7 @@ def isolate(p, a=None, b=None, width=None) -> list[tuple[flint.fmpq, flint.fmpq]
 def refine(p, lo, hi, width) -> tuple[flint.fmpq, flint.fmpq]:
     """Bisect an isolating interval of a simple root of p until hi - lo <= width."""
     p = flint.fmpq_poly(p)
-    lo, hi, width = _q(lo), _q(hi), _q(width)
+    lo, hi, width = to_fmpq(lo), to_fmpq(hi), to_fmpq(width)
     if lo == hi:
         return lo, hi
     slo = _sign(p(lo))
@@ -134,9 +126,9 @@ def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
         if not c.imag.is_zero():
             continue
         x = c.real
-        inside_a = a is None or x > _q(a)
-        inside_b = b is None or x < _q(b)
-        outside = (a is not None and x < _q(a)) or (b is not None and x > _q(b))
+        inside_a = a is None or x > to_fmpq(a)
+        inside_b = b is None or x < to_fmpq(b)
+        outside = (a is not None and x < to_fmpq(a)) or (b is not None and x > to_fmpq(b))
         if inside_a and inside_b:
             out.append(x)
         elif not outside:
