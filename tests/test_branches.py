@@ -1,0 +1,633 @@
+"""Certified sign tables on eigenvalue branches (certify.branches), exact arithmetic
+in Q(α)[λ] (certify.numberfield) and the two elimination routes (certify.elimination).
+
+Expected values come from outside the code under test:
+
+* hand-solvable spectra (λ² = r, two crossing lines, a cubic with a double root at
+  r = √2/2, a fixed point whose value crosses 1/2 at r = (7 - √13)/8), worked out
+  in the comments next to each test;
+* for random spectra and conditions: SymPy's own discriminants, resultants, exact
+  real-root counts and real roots, and mpmath (60 digits) root finding and
+  evaluation at several rational points inside every cell and at the critical values.
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+
+import flint
+import mpmath
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from certify import numberfield as nf
+from certify.algebraic import Algebraic
+from certify.branches import Condition, FixedPoint, Spectrum
+from certify.elimination import Elimination, eliminate
+from certify.poly import lam, r, x
+
+Q = flint.fmpq
+HALF = sp.Rational(1, 2)
+SETTINGS = dict(deadline=None, database=None, max_examples=15,
+                suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+DPS = 60
+
+
+@pytest.fixture(autouse=True, scope="module")
+def mp_precision():
+    """mpmath at 60 digits for this module only."""
+    old = mpmath.mp.dps
+    mpmath.mp.dps = DPS
+    yield
+    mpmath.mp.dps = old
+
+
+# --- independent numerics -----------------------------------------------------------
+
+def mpq(q) -> mpmath.mpf:
+    """An fmpq / Fraction / SymPy Rational as an mpmath number (to the working precision)."""
+    if isinstance(q, flint.fmpq):
+        return mpmath.mpf(int(q.p)) / int(q.q)
+    q = Fraction(str(q)) if not isinstance(q, Fraction) else q
+    return mpmath.mpf(q.numerator) / q.denominator
+
+
+def srat(q) -> sp.Rational:
+    return sp.Rational(int(q.p), int(q.q))
+
+
+def mp_algebraic(a: Algebraic) -> mpmath.mpf:
+    """An Algebraic to ~200 bits, from its exact isolating interval."""
+    a.refine(Q(1, 2 ** 220))
+    return (mpq(a.lo) + mpq(a.hi)) / 2
+
+
+def lam_coeffs(cp) -> list:
+    """cp's coefficients in λ (highest first), each a SymPy polynomial in r."""
+    return sp.Poly(sp.expand(cp), lam).all_coeffs()
+
+
+def mp_roots(cp, R, real_tol=None):
+    """The real roots of cp(λ; R) (mpmath, 60 digits), largest first, repeated by
+    multiplicity; ``real_tol`` the largest imaginary part counted as real."""
+    cs = [sp.lambdify(r, c, "mpmath")(R) if c.has(r) else mpmath.mpf(sp.Rational(c).p) / sp.Rational(c).q
+          for c in lam_coeffs(cp)]
+    roots = mpmath.polyroots(cs, maxsteps=400, extraprec=400)
+    tol = real_tol if real_tol is not None else mpmath.mpf(10) ** -(DPS // 2)
+    return sorted((mpmath.re(z) for z in roots if abs(mpmath.im(z)) < tol), reverse=True)
+
+
+def exact_real_root_count(cp, t) -> int:
+    """Distinct real roots of cp(λ; t) for a rational t (SymPy, exact)."""
+    return sp.Poly(sp.expand(cp).subs(r, srat(t)), lam).count_roots()
+
+
+def inner_points(cell, n=5) -> list:
+    """n rationals well inside the open cell ]lo, hi[ (the ends refined as Algebraic)."""
+    a, b = cell.lo, cell.hi
+    w = Q(1, 2)
+    while True:
+        a.refine(w)
+        b.refine(w)
+        L, H = a.hi, b.lo
+        if L < H and 2 * (H - L) > b.hi - a.lo:
+            return [L + (H - L) * Q(k, n + 1) for k in range(1, n + 1)]
+        w /= 4
+
+
+def mp_sign(v) -> int:
+    return 1 if v > 0 else -1 if v < 0 else 0
+
+
+def expected_critical(cp, polys, lo, hi) -> list:
+    """The distinct real roots in ]lo, hi[ of disc_λ(cp)·Π Res_λ(p, cp) (SymPy, exact)."""
+    P = sp.discriminant(sp.expand(cp), lam)
+    for p in polys:
+        P *= sp.resultant(sp.expand(p), sp.expand(cp), lam)
+    P = sp.Poly(sp.expand(P), r)
+    if P.is_zero:
+        raise AssertionError("zero product")
+    if P.degree() <= 0:
+        return []
+    roots = sp.Poly(P.sqf_part(), r).real_roots()
+    lo, hi = srat(Q(lo)), srat(Q(hi))
+    return sorted(set(z for z in roots if lo < z < hi), key=lambda z: z.evalf(40))
+
+
+def assert_same_numbers(algebraics, sympy_roots):
+    assert len(algebraics) == len(sympy_roots), (algebraics, sympy_roots)
+    for a, z in zip(algebraics, sympy_roots):
+        assert abs(mp_algebraic(a) - mpmath.mpf(str(sp.N(z, 50)))) < mpmath.mpf(10) ** -40, (a, z)
+
+
+def signs_of(table):
+    return [cell.signs for cell in table.cells]
+
+
+# --- λ² = r: branches ±√r --------------------------------------------------------------
+
+SQRT = lam ** 2 - r
+
+
+def test_sqrt_branches_sign_of_lambda():
+    S = Spectrum(SQRT)
+    T = S.sign_table(Condition.of("λ", lam), 0, 1)
+    # disc = 4r and Res(λ, cp) = -r vanish only at r = 0, an end of the interval
+    assert T.critical == [] and T.points == []
+    assert len(T.cells) == 1
+    cell = T.cells[0]
+    assert cell.signs == [1, -1]
+    t = mpq(cell.sample)
+    assert len(cell.branches) == 2
+    assert abs(mp_algebraic(cell.branches[0]) - mpmath.sqrt(t)) < mpmath.mpf(10) ** -40
+    assert abs(mp_algebraic(cell.branches[1]) + mpmath.sqrt(t)) < mpmath.mpf(10) ** -40
+    assert T.holds(0, 1) and T.holds(1, -1)
+    assert not T.holds(0, -1) and not T.holds(1, 1)
+    assert T.signs(2) == {"missing"}
+
+
+def test_sqrt_branches_lambda_minus_half(monkeypatch):
+    S = Spectrum(SQRT)
+    calls = []
+    original = Spectrum.vanishes_at
+
+    def spy(self, h, rc, branch, *args, **kwargs):
+        out = original(self, h, rc, branch, *args, **kwargs)
+        calls.append((sp.expand(sp.sympify(h)), rc, branch, out))
+        return out
+
+    monkeypatch.setattr(Spectrum, "vanishes_at", spy)
+    cond = Condition.of("λ - 1/2", lam - HALF)
+    T = S.sign_table(cond, 0, 1)
+    # √r = 1/2 at r = 1/4; -√r < 0 < 1/2 throughout
+    assert T.critical == [Algebraic.rational(Q(1, 4))]
+    assert signs_of(T) == [[-1, -1], [1, -1]]
+    assert T.points == [[0, -1]]
+    # the 0 comes from the exact zero test (balls around λ = 1/2 always contain 0)
+    assert any(branch == 0 and out is True and rc == Algebraic.rational(Q(1, 4)) for _h, rc, branch, out in calls)
+    assert not any(branch == 1 for _h, _rc, branch, _out in calls)
+    # sub-intervals
+    assert T.signs(0) == {-1, 0, 1}
+    assert T.signs(0, 0, Q(1, 4)) == {-1}
+    assert T.signs(0, Q(1, 4), 1) == {1}
+    assert T.signs(0, Q(1, 5), Q(1, 3)) == {-1, 0, 1}
+    assert T.signs(0, Q(1, 5), Q(1, 3), include_points=False) == {-1, 1}
+    assert T.holds(0, 1, Q(1, 4), 1) and not T.holds(0, 1, Q(1, 5), 1)
+    assert T.holds(1, -1)
+    # an interval ending at the critical value has no critical value inside
+    T2 = S.sign_table(cond, 0, Q(1, 4))
+    assert T2.critical == [] and signs_of(T2) == [[-1, -1]]
+    T3 = S.sign_table(cond, Q(1, 4), 1)
+    assert T3.critical == [] and signs_of(T3) == [[1, -1]]
+    # the point directly, and one where it does not vanish
+    assert S.sign_at_point(cond, Algebraic.rational(Q(1, 4))) == [0, -1]
+    assert S.sign_at_point(cond, Algebraic.rational(Q(1, 9))) == [-1, -1]
+    assert S.sign_at_point(cond, Algebraic.surd(0, HALF, 2)) == [1, -1]     # √(√2/2) > 1/2
+
+
+def test_sqrt_branches_rational_condition_with_pole():
+    # g = (λ - 1/2)/(λ + 1/2): a zero on branch 0 and a pole on branch 1, both at r = 1/4;
+    # r < 1/4: (−)/(+) on both branches; r > 1/4: (+)/(+) on branch 0, (−)/(−) on branch 1
+    S = Spectrum(SQRT)
+    T = S.sign_table(Condition.of("g", (lam - HALF) / (lam + HALF)), 0, 1)
+    assert T.critical == [Algebraic.rational(Q(1, 4))]
+    assert signs_of(T) == [[-1, -1], [1, 1]]
+    assert T.points == [[0, "?"]]
+    assert T.signs(1) == {-1, "?", 1}
+    # 1/(λ - 1/2): a pole, not a zero, on branch 0
+    T = S.sign_table(Condition.of("1/(λ - 1/2)", 1 / (lam - HALF)), 0, 1)
+    assert signs_of(T) == [[-1, -1], [1, -1]]
+    assert T.points == [["?", -1]]
+
+
+# --- two crossing branches λ = r, λ = 1 - r -----------------------------------------
+
+CROSS = sp.expand((lam - r) * (lam - (1 - r)))
+
+
+def test_crossing_branches():
+    S = Spectrum(CROSS)
+    # disc = (2r - 1)²: the branches cross at r = 1/2; λ > 0 on both over ]0, 1[
+    T = S.sign_table(Condition.of("λ", lam), 0, 1)
+    assert T.critical == [Algebraic.rational(HALF)]
+    assert signs_of(T) == [[1, 1], [1, 1]]
+    assert T.points == [[1, 1]]                       # the double root 1/2, listed twice
+    for cell in T.cells:
+        t = cell.sample
+        assert [L == Algebraic.rational(v) for L, v in zip(cell.branches, (max(t, 1 - t), min(t, 1 - t)))] == [True, True]
+    assert len(S.branches_at(Algebraic.rational(HALF))) == 2
+    # λ - 1/2: branch 0 = max(r, 1-r) > 1/2, branch 1 = min(r, 1-r) < 1/2, both 1/2 at r = 1/2
+    T = S.sign_table(Condition.of("λ - 1/2", lam - HALF), 0, 1)
+    assert T.critical == [Algebraic.rational(HALF)]
+    assert signs_of(T) == [[1, -1], [1, -1]]
+    assert T.points == [[0, 0]]
+    # λ - 1/4: branch 1 = r hits 1/4 at r = 1/4, and = 1 - r at r = 3/4
+    T = S.sign_table(Condition.of("λ - 1/4", lam - sp.Rational(1, 4)), 0, 1)
+    assert T.critical == [Algebraic.rational(Q(1, 4)), Algebraic.rational(HALF), Algebraic.rational(Q(3, 4))]
+    assert signs_of(T) == [[1, -1], [1, 1], [1, 1], [1, -1]]
+    assert T.points == [[1, 0], [1, 1], [1, 0]]
+
+
+@pytest.mark.parametrize("g", [lam - r, lam - 1 + r, (lam - r) * (lam + 5), 1 / (lam - r), (lam + 3) / (lam - 1 + r)])
+def test_condition_vanishing_on_a_whole_branch(g):
+    S = Spectrum(CROSS)
+    with pytest.raises(ArithmeticError, match="vanishes on a whole branch"):
+        S.sign_table(Condition.of(str(g), g), 0, 1)
+
+
+def test_fixed_point_whose_c_vanishes_on_a_branch():
+    fp = FixedPoint(lam, r, lam - r, sp.Integer(1))
+    with pytest.raises(ArithmeticError, match="vanishes on a whole branch"):
+        Spectrum(CROSS).sign_table(Condition.of("x", x, fp), 0, 1)
+
+
+def test_repeated_factor_is_rejected():
+    # cp = (λ² - r)²(λ - 5) has disc ≡ 0: one real branch for r < 0, three for r > 0,
+    # a change no discriminant can see; the spectrum must refuse it, not certify
+    # a single cell over ]-1, 1[
+    with pytest.raises(ValueError, match="repeated factor"):
+        Spectrum(sp.expand((lam ** 2 - r) ** 2 * (lam - 5)))
+
+
+# --- a double root at the irrational r = √2/2 -----------------------------------------
+
+# cp = (λ + 2)(λ² - 2rλ + 1/2): roots -2 and r ± √(r² - 1/2), a double root
+# λ = √2/2 at r = √2/2; Res_λ(λ + 2, ·) vanishes at r = -9/8 only
+CUBIC = sp.expand((lam + 2) * (lam ** 2 - 2 * r * lam + HALF))
+R2 = Algebraic.surd(0, HALF, 2)                     # √2/2
+
+
+def test_double_root_at_irrational_point():
+    S = Spectrum(CUBIC)
+    T = S.sign_table(Condition.of("λ - r", lam - r), 0, 1)
+    # Res(λ - r, cp) = cp(r) = (r + 2)(1/2 - r²): the same √2/2
+    assert T.critical == [R2]
+    assert not T.critical[0].is_rational
+    # r > √2/2: λ - r = ±√(r² - 1/2) on the pair, -2 - r < 0
+    assert signs_of(T) == [[-1], [1, -1, -1]]
+    assert T.points == [[0, 0, -1]]
+    balls = S.branches_at(R2)
+    assert len(balls) == 3
+    b0, b1, b2 = (b(128) for b in balls)
+    assert b0.overlaps(b1) and not b0.overlaps(b2)
+    assert abs(mpmath.mpf(b0.mid().str(50, radius=False)) - mpmath.sqrt(2) / 2) < mpmath.mpf(10) ** -30
+    assert abs(mpmath.mpf(b2.mid().str(50, radius=False)) + 2) < mpmath.mpf(10) ** -30
+
+    # λ - 1/2: Res = (5/2)(3/4 - r), so r = 3/4 too, where the pair is {1, 1/2}
+    T = S.sign_table(Condition.of("λ - 1/2", lam - HALF), 0, 1)
+    assert T.critical == [R2, Algebraic.rational(Q(3, 4))]
+    assert signs_of(T) == [[-1], [1, 1, -1], [1, -1, -1]]
+    assert T.points == [[1, 1, -1], [1, 0, -1]]
+    assert T.signs(1) == {"missing", 1, 0, -1}
+    assert T.holds(1, 1, R2, Q(3, 4))
+    assert T.holds(0, 1, R2, 1) and not T.holds(0, 1)
+
+
+def test_sign_at_point_decides_tiny_nonzero_values():
+    # values of 1e-12 and 1e-15 at the point: the branch balls must shrink as the
+    # precision rises (they once stayed ~1e-9 wide, leaving '?')
+    eps = sp.Rational(1, 10 ** 12)
+    S = Spectrum(SQRT)
+    assert S.sign_at_point(Condition.of("λ - 1/2 - ε", lam - HALF - eps), Algebraic.rational(Q(1, 4))) == [-1, -1]
+    assert S.sign_at_point(Condition.of("λ - 1/2 + ε", lam - HALF + eps), Algebraic.rational(Q(1, 4))) == [1, -1]
+    S = Spectrum(CUBIC)                              # double root √2/2 at r = √2/2
+    eps = sp.Rational(1, 10 ** 15)
+    assert S.sign_at_point(Condition.of("λ - r - ε", lam - r - eps), R2) == [-1, -1, -1]
+    assert S.sign_at_point(Condition.of("λ - r + ε", lam - r + eps), R2) == [1, 1, -1]
+
+
+def test_triple_root_branches_not_isolated():
+    # cp = λ³ - r has a triple root at r = 0: the branches there are not handled
+    S = Spectrum(lam ** 3 - r)
+    assert S.branches_at(Algebraic.rational(0)) is None
+    assert S.sign_at_point(Condition.of("λ + 1", lam + 1), Algebraic.rational(0)) is None
+    T = S.sign_table(Condition.of("λ + 1", lam + 1), -1, 1)
+    assert T.critical == [Algebraic.rational(0)] and T.points == [None]
+    assert signs_of(T) == [[1], [1]]
+    assert T.signs(0) == {1, "?"}
+    assert not T.holds(0, 1) and T.holds(0, 1, 0, 1)
+
+
+# --- conditions with the fixed point x₊ -----------------------------------------------
+
+def test_fixed_point_crossing_half():
+    # f(x) = (λx + r)/(x + 1): Δ = (λ - 1)² + 4r > 0, x₊ = (λ - 1 + √Δ)/2.
+    # x₊ = 1/2 iff f(1/2) = 1/2 iff λ = 3/2 - 2r; on λ = √r: 2r + √r = 3/2,
+    # √r = (√13 - 1)/4, r = (7 - √13)/8 ≈ 0.4243; on λ = -√r only for r > 1.
+    # r → 0: λ → 0, Δ → 1, x₊ → 0 < 1/2; r = 1, λ = -1: x₊ = √2 - 1 < 1/2.
+    S = Spectrum(SQRT)
+    fp = FixedPoint(lam, r, sp.Integer(1), sp.Integer(1))
+    T = S.sign_table(Condition.of("x - 1/2", x - HALF, fp), 0, 1)
+    rstar = Algebraic.surd(Q(7, 8), Q(-1, 8), 13)
+    assert T.critical == [rstar]
+    assert signs_of(T) == [[-1, -1], [1, -1]]
+    assert T.points[0][1] == -1
+    assert T.points[0][0] in (0, "?")                   # never a wrong strict sign
+    for cell in T.cells:
+        for t in inner_points(cell, 3):
+            for k, lv in enumerate(mp_roots(SQRT, mpq(t))):
+                xp = (lv - 1 + mpmath.sqrt((lv - 1) ** 2 + 4 * mpq(t))) / 2
+                assert mp_sign(xp - HALF.p / mpmath.mpf(HALF.q)) == cell.signs[k]
+
+
+def test_fixed_point_not_real_and_delta_zero():
+    # f(x) = (λx - r)/(x + 1): Δ = (λ - 1)² - 4r.  On λ = √r: Δ = (1 - 3√r)(1 + √r),
+    # negative for r > 1/9; on λ = -√r: Δ = (1 + 3√r)(1 - √r) > 0 on ]0, 1[.
+    # Δ < (λ - 1)² (as -4r < 0) and λ - 1 < 0, so x₊ < 0 wherever real.  At r = 1/9,
+    # Δ = 0 exactly on branch 0 and x₊ = (λ - 1)/2 = -1/3.
+    S = Spectrum(SQRT)
+    fp = FixedPoint(lam, -r, sp.Integer(1), sp.Integer(1))
+    assert sp.expand(fp.delta - ((lam - 1) ** 2 - 4 * r)) == 0
+    T = S.sign_table(Condition.of("x", x, fp), 0, 1)
+    assert T.critical == [Algebraic.rational(Q(1, 9))]
+    assert signs_of(T) == [[-1, -1], [None, -1]]
+    assert T.points == [[-1, -1]]
+    assert S.vanishes_at(fp.delta, Algebraic.rational(Q(1, 9)), 0)
+    assert not S.vanishes_at(fp.delta, Algebraic.rational(Q(1, 9)), 1)
+    assert T.signs(0) == {-1, None}
+
+
+# --- the exact zero test in Q(α)[λ] ---------------------------------------------------
+
+def test_vanishes_at_rational_point():
+    S = Spectrum(SQRT)
+    q = Algebraic.rational(Q(1, 4))                  # branches 1/2, -1/2
+    assert S.vanishes_at(lam - 2 * r, q, 0) and not S.vanishes_at(lam - 2 * r, q, 1)
+    assert S.vanishes_at(lam + 2 * r, q, 1) and not S.vanishes_at(lam + 2 * r, q, 0)
+    assert S.vanishes_at(SQRT, q, 0) and S.vanishes_at(SQRT, q, 1)
+    assert not S.vanishes_at(lam + 5, q, 0) and not S.vanishes_at(lam + 5, q, 1)
+    assert S.vanishes_at(4 * r - 1, q, 1)            # no λ: vanishes at r = 1/4 itself
+    assert not S.vanishes_at(r, q, 0)
+    assert S.vanishes_at(sp.Integer(0), q, 0)
+    with pytest.raises(ArithmeticError):
+        S.vanishes_at(lam - 2 * r, q, 2)
+
+
+def test_vanishes_at_irrational_point():
+    # α = 3 - 2√2 = (√2 - 1)² ≈ 0.1716: the branches ±√α = ±(√2 - 1) = ±(1 - α)/2 lie in Q(α)
+    S = Spectrum(SQRT)
+    alpha = Algebraic.surd(3, -2, 2)
+    assert alpha.minimal_polynomial() == flint.fmpz_poly([1, -6, 1])
+    up, down = 2 * lam + r - 1, 2 * lam - r + 1
+    assert S.vanishes_at(up, alpha, 0) and not S.vanishes_at(up, alpha, 1)
+    assert S.vanishes_at(down, alpha, 1) and not S.vanishes_at(down, alpha, 0)
+    # at r = √2/2, λ² - √2/2 is irreducible over Q(√2) (no square root of √2/2 there):
+    # λ - r, i.e. λ - √2/2, vanishes on neither branch
+    assert not S.vanishes_at(lam - r, R2, 0) and not S.vanishes_at(lam - r, R2, 1)
+    # ... and the numbers agree: 2√α + α - 1 = 0
+    a = mp_algebraic(alpha)
+    assert abs(2 * mpmath.sqrt(a) + a - 1) < mpmath.mpf(10) ** -50
+    # sign_at_point through the exact path on the same conditions
+    assert S.sign_at_point(Condition.of("2λ + r - 1", up), alpha) == [0, -1]
+    assert S.sign_at_point(Condition.of("2λ - r + 1", down), alpha) == [1, 0]
+
+
+def test_vanishes_at_double_roots():
+    S = Spectrum(CROSS)
+    half = Algebraic.rational(HALF)                  # the double root 1/2
+    assert S.vanishes_at(2 * lam - 1, half, 0) and S.vanishes_at(2 * lam - 1, half, 1)
+    assert S.vanishes_at(lam - r, half, 0) and S.vanishes_at(lam - r, half, 1)
+    assert not S.vanishes_at(lam - 2 * r, half, 0)
+    third = Algebraic.rational(Q(1, 3))              # branches 2/3, 1/3
+    assert S.vanishes_at(lam - r, third, 1) and not S.vanishes_at(lam - r, third, 0)
+    S = Spectrum(CUBIC)                              # √2/2 double, -2 simple
+    assert [S.vanishes_at(lam - r, R2, k) for k in range(3)] == [True, True, False]
+    assert [S.vanishes_at(lam + 2, R2, k) for k in range(3)] == [False, False, True]
+    assert [S.vanishes_at(2 * lam ** 2 - 1, R2, k) for k in range(3)] == [True, True, False]
+
+
+def test_numberfield_gcd_and_squarefree():
+    # in Q(√2)[λ]: gcd(λ² - 2, λ² - 2√2 λ + 2) = λ - √2
+    m = nf.modulus(Algebraic.surd(0, 1, 2))
+    assert m == sp.Poly(r ** 2 - 2, r)
+    f, g = nf.kpoly(lam ** 2 - 2, m), nf.kpoly(lam ** 2 - 2 * r * lam + 2, m)
+    G = nf.gcd(f, g, m)
+    assert [c.as_expr() for c in G] == [1, -r]
+    # (λ - √2)²(λ + 1): squarefree part (λ - √2)(λ + 1), gcd with the derivative λ - √2
+    h = nf.kpoly(sp.expand((lam - r) ** 2 * (lam + 1)), m)
+    sqf, g = nf.squarefree(h, m)
+    assert [c.as_expr() for c in g] == [1, -r]
+    assert [sp.expand(c.as_expr()) for c in sqf] == [1, 1 - r, -r]
+    assert [c.as_expr() for c in nf.divide(h, sqf, m)] == [1, -r]
+    # coprime: gcd 1
+    assert [c.as_expr() for c in nf.gcd(f, nf.kpoly(lam - 1, m), m)] == [1]
+    # real roots of λ² - 2 over Q(√2)... and of λ² + 1 (none)
+    roots = nf.real_roots(f, Algebraic.surd(0, 1, 2), 128)
+    assert len(roots) == 2 and roots[0] > 0 and roots[1] < 0
+    assert abs(float(roots[0].mid()) - 2 ** 0.5) < 1e-12
+    assert nf.real_roots(nf.kpoly(lam ** 2 + 1, m), Algebraic.surd(0, 1, 2), 128) == []
+    # the balls shrink with the precision asked for
+    for prec in (128, 512):
+        z = nf.real_roots(f, Algebraic.surd(0, 1, 2), prec)[0]
+        assert z.rad() < flint.arb(2) ** -(prec // 2)
+        assert z.overlaps(flint.arb(2).sqrt())
+
+
+def test_fixed_point_with_delta_identically_zero():
+    # a = d, b = 0: Δ ≡ 0, x₊ = 0 double; no crash in the √Δ bookkeeping, but no sign either
+    fp = FixedPoint(lam, sp.Integer(0), sp.Integer(1), lam)
+    assert fp.delta == 0
+    cond = Condition.of("x - 1/2", x - HALF, fp)
+    # numerator (a - d + √Δ) - 2c·(1/2) = √Δ - 1: N₀ = -1, N₁ = 1; denominator 2c = 2
+    parts = [cond.N[0].as_expr(), cond.N[1].as_expr(), cond.D[0].as_expr(), cond.D[1].as_expr()]
+    assert all(p.is_number for p in parts) and parts[1] > 0
+    assert [p / parts[1] for p in parts] == [-1, 1, 2, 0]
+    with pytest.raises(ArithmeticError):
+        Spectrum(SQRT).sign_table(cond, 0, 1)
+
+
+# --- elimination ----------------------------------------------------------------------
+
+def P(*coeffs):
+    return flint.fmpz_poly(list(coeffs))
+
+
+def test_eliminate_two_routes():
+    # λ = r², λ² = r  ⇒  r⁴ = r: r(r - 1)(r² + r + 1)
+    E = eliminate(lam - r ** 2, lam ** 2 - r)
+    assert E.groebner == P(0, -1, 0, 0, 1)
+    assert E.resultant == P(0, -1, 0, 0, 1)
+    assert E.agree
+    assert E.factors == [(P(-1, 1), 1), (P(0, 1), 1), (P(1, 1, 1), 1)]
+    assert "yes" in E.evidence()[-1]
+
+
+def test_eliminate_multiplicities_differ():
+    # ⟨λ², λ² - r⟩ = ⟨λ², r⟩: Gröbner eliminant r; Res_λ(λ², λ² - r) = r²
+    E = eliminate(lam ** 2, lam ** 2 - r)
+    assert E.groebner == P(0, 1)
+    assert E.resultant == P(0, 0, 1)
+    assert E.agree
+    # λ = 0 and λ² = r² + r³ ... ⟨λ, r²(1 + r)⟩: both routes r²(r + 1)
+    E = eliminate(lam, lam ** 2 - r ** 2 - r ** 3)
+    assert E.groebner == P(0, 0, 1, 1) and E.resultant == P(0, 0, 1, 1) and E.agree
+
+
+def test_elimination_disagreement_is_seen():
+    assert not Elimination(P(0, 1), P(0, -1, 1)).agree        # r vs r(r - 1)
+    assert not Elimination(P(0, 1), P(-1, 1)).agree
+    assert "NO" in Elimination(P(0, 1), P(-1, 1)).evidence()[-1]
+
+
+small = st.integers(-3, 3)
+
+
+@settings(**{**SETTINGS, "max_examples": 10})
+@given(st.lists(small, min_size=4, max_size=4), st.lists(small, min_size=4, max_size=4))
+def test_eliminate_random(gc, cc):
+    # g = (g0 + g1 r) + (g2 + g3 r)λ, cp = λ² + (c0 + c1 r)λ + c2 + c3 r²
+    g = sp.expand(gc[0] + gc[1] * r + (gc[2] + gc[3] * r) * lam)
+    assume(g.has(lam))
+    cp = sp.expand(lam ** 2 + (cc[0] + cc[1] * r) * lam + cc[2] + cc[3] * r ** 2)
+    res = sp.resultant(g, cp, lam)
+    assume(sp.expand(res) != 0 and sp.Poly(res, r).degree() > 0)
+    E = eliminate(g, cp)
+    assert E.agree
+    assert E.groebner.degree() > 0
+    # the resultant lies in the elimination ideal: the Gröbner eliminant divides it
+    assert E.resultant % E.groebner == 0
+    # SymPy's resultant, made primitive, is the flint route's
+    sres = sp.Poly(res, r)
+    assert E.resultant.degree() == sres.degree()
+    ratio = {sp.Rational(int(a), 1) / b for a, b in zip(E.resultant.coeffs(), sres.all_coeffs()[::-1]) if b != 0}
+    assert len(ratio) == 1
+
+
+# --- random spectra: every cell against SymPy and mpmath --------------------------
+
+coef = st.integers(-3, 3)
+rpoly = st.lists(coef, min_size=1, max_size=3)             # c0 + c1 r + c2 r²
+
+
+def from_coeffs(cs):
+    return sum(c * r ** k for k, c in enumerate(cs))
+
+
+def check_table(cp, T, cond_value, lo, hi):
+    """Every cell of T against SymPy (critical values, exact branch counts) and mpmath
+    (branches and signs) at 5 rational points inside it; ``cond_value(R, λ)`` the
+    condition in mpmath (None where not real)."""
+    assert len(T.cells) == len(T.critical) + 1 == len(T.points) + 1
+    ends = [Algebraic.rational(Q(lo))] + T.critical + [Algebraic.rational(Q(hi))]
+    for cell, a, b in zip(T.cells, ends, ends[1:]):
+        assert cell.lo == a and cell.hi == b and a < cell.sample < b
+        for t in [cell.sample] + inner_points(cell):
+            assert exact_real_root_count(cp, t) == len(cell.branches)
+            lams = mp_roots(cp, mpq(t))
+            assert len(lams) == len(cell.branches)
+            for k, lv in enumerate(lams):
+                v = cond_value(mpq(t), lv)
+                if v is None:
+                    assert cell.signs[k] is None
+                else:
+                    assert abs(v) > mpmath.mpf(10) ** -40
+                    assert mp_sign(v) == cell.signs[k], (t, k, v, cell.signs)
+
+
+def check_points(cp, T, cond_value):
+    """The signs at the critical values against mpmath: exact zeros numerically tiny,
+    strict signs agreeing wherever the value is not tiny."""
+    tiny = mpmath.mpf(10) ** -18
+    for rc, pt in zip(T.critical, T.points):
+        if pt is None:
+            continue
+        R = mp_algebraic(rc)
+        lams = mp_roots(cp, R, real_tol=mpmath.mpf(10) ** -12)
+        assert len(lams) == len(pt), (rc, lams, pt)
+        assert "?" not in pt                         # a polynomial g: zeros are decided exactly
+        for k, lv in enumerate(lams):
+            v = cond_value(R, lv)
+            if pt[k] == 0:
+                assert v is not None and abs(v) < tiny
+            elif pt[k] in (1, -1) and v is not None and abs(v) > tiny:
+                assert mp_sign(v) == pt[k]
+            elif pt[k] is None:
+                assert v is None or abs(v) < tiny
+
+
+@settings(**SETTINGS)
+@given(rpoly, rpoly, rpoly, st.lists(coef, min_size=6, max_size=6),
+       st.sampled_from([(Q(0), Q(1)), (Q(-1), Q(1)), (Q(1, 2), Q(2)), (Q(-2), Q(0))]))
+def test_random_cubic_sign_tables(a, b, c, gc, interval):
+    lo, hi = interval
+    cp = sp.expand(lam ** 3 + from_coeffs(a) * lam ** 2 + from_coeffs(b) * lam + from_coeffs(c))
+    # g = (g0 + g1 r + g2 r²) + (g3 + g4 r) λ + g5 λ²
+    g = sp.expand(from_coeffs(gc[:3]) + from_coeffs(gc[3:5]) * lam + gc[5] * lam ** 2)
+    assume(g != 0)
+    assume(sp.expand(sp.discriminant(cp, lam)) != 0)
+    S = Spectrum(cp)
+    cond = Condition.of(str(g), g)
+    if sp.expand(sp.resultant(g, cp, lam)) == 0:
+        with pytest.raises(ArithmeticError, match="vanishes on a whole branch"):
+            S.sign_table(cond, lo, hi)
+        return
+    T = S.sign_table(cond, lo, hi)
+    assert_same_numbers(T.critical, expected_critical(cp, [g] if g.has(lam) or g.has(r) else [], lo, hi))
+    gf = sp.lambdify((r, lam), g, "mpmath")
+    check_table(cp, T, gf, lo, hi)
+    check_points(cp, T, gf)
+
+
+lin = st.lists(st.integers(-2, 2), min_size=3, max_size=3)   # c0 + c1 r + c2 λ
+
+
+def from_lin(cs):
+    return cs[0] + cs[1] * r + cs[2] * lam
+
+
+@settings(**SETTINGS)
+@given(lin, lin, lin, lin, rpoly, rpoly, st.sampled_from([0, HALF, -1, 2]))
+def test_random_fixed_point_sign_tables(ac, bc, cc, dc, p1, p0, q):
+    # cp = λ² + p1(r) λ + p0(r); f(x) = (ax + b)/(cx + d) with a, b, c, d linear in r, λ
+    cp = sp.expand(lam ** 2 + from_coeffs(p1) * lam + from_coeffs(p0))
+    A, B, C, D = (sp.expand(from_lin(v)) for v in (ac, bc, cc, dc))
+    assume(C != 0)
+    assume(sp.expand(sp.discriminant(cp, lam)) != 0)
+    fp = FixedPoint(A, B, C, D)
+    delta = sp.expand((A - D) ** 2 + 4 * B * C)
+    # x₊ = q on a branch iff q solves cx² + (d - a)x - b = 0 there (and is the larger root)
+    fixed_eq = sp.expand(C * q ** 2 + (D - A) * q - B)
+    S = Spectrum(cp)
+    cond = Condition.of(f"x - {q}", x - q, fp)
+    nonconstant = [p for p in (C, delta, fixed_eq) if p.has(r) or p.has(lam)]
+    if any(sp.expand(sp.resultant(p, cp, lam)) == 0 for p in nonconstant) or delta == 0:
+        with pytest.raises(ArithmeticError):
+            S.sign_table(cond, 0, 1)
+        return
+    if fixed_eq == 0:
+        # q is a fixed point for every r, λ: x₊ = q (no certificate possible) or x₋ = q
+        try:
+            T = S.sign_table(cond, 0, 1)
+        except ArithmeticError:
+            return
+    else:
+        T = S.sign_table(cond, 0, 1)
+    assert_same_numbers(T.critical, expected_critical(cp, nonconstant, 0, 1))
+    fa, fb, fc, fd = (sp.lambdify((r, lam), e, "mpmath") for e in (A, B, C, D))
+    qq = mpmath.mpf(sp.Rational(q).p) / sp.Rational(q).q
+
+    def value(R, L):
+        av, bv, cv, dv = fa(R, L), fb(R, L), fc(R, L), fd(R, L)
+        disc = (av - dv) ** 2 + 4 * bv * cv
+        if disc < 0:
+            return None
+        return (av - dv + mpmath.sqrt(disc)) / (2 * cv) - qq
+
+    check_table(cp, T, value, 0, 1)
+    for rc, pt in zip(T.critical, T.points):       # strict signs at the critical values
+        if pt is None:
+            continue
+        R = mp_algebraic(rc)
+        lams = mp_roots(cp, R, real_tol=mpmath.mpf(10) ** -12)
+        assert len(lams) == len(pt)
+        for k, lv in enumerate(lams):
+            av, bv, cv, dv = fa(R, lv), fb(R, lv), fc(R, lv), fd(R, lv)
+            disc = (av - dv) ** 2 + 4 * bv * cv
+            if abs(disc) < mpmath.mpf(10) ** -18 or abs(cv) < mpmath.mpf(10) ** -18:
+                continue                              # Δ = 0 or c = 0 there: checked by the hand examples
+            v = value(R, lv)
+            if v is None:
+                assert pt[k] is None
+            elif abs(v) > mpmath.mpf(10) ** -18:
+                assert pt[k] == mp_sign(v)
