@@ -386,6 +386,9 @@ class Spectrum:
                 return 0
             return "?"
         if not self.vanishes_at(cond.delta.as_expr(), rc, k):
+            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball) and \
+                    self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
+                return 0
             return "?"
         prec = 128
         while prec <= maxprec:
@@ -399,6 +402,31 @@ class Spectrum:
                 return sg
             prec *= 2
         return "?"
+
+    def _root_with_sqrt(self, P, delta, rc, k, ball, maxprec: int = 1024):
+        """Whether P₀ + P₁√Δ vanishes on branch k at rc, where Δ > 0: exactly when the
+        norm P₀² - P₁²Δ vanishes (exact test) and P₀ = -P₁√Δ, that is P₁ = 0 (then
+        P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
+        None when undecided."""
+        P0, P1 = P
+        if not self.vanishes_at((P0 ** 2 - P1 ** 2 * delta).as_expr(), rc, k):
+            return False
+        if not P1 or self.vanishes_at(P1.as_expr(), rc, k):
+            return True
+        prec = 128
+        while prec <= maxprec:
+            old = flint.ctx.prec
+            flint.ctx.prec = prec + 30
+            try:
+                n = max((max(i, j) for _c, i, j in ring_terms(P0) + ring_terms(P1)), default=0)
+                Rp, Lp = _powers(rc.arb(prec), n), _powers(ball(prec), n)
+                v0, v1 = _eval_terms(ring_terms(P0), Rp, Lp), _eval_terms(ring_terms(P1), Rp, Lp)
+            finally:
+                flint.ctx.prec = old
+            if (v0 > 0 or v0 < 0) and (v1 > 0 or v1 < 0):
+                return (v0 > 0) != (v1 > 0)
+            prec *= 2
+        return None
 
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) vanishes on branch ``branch`` at r = rc:

@@ -323,7 +323,7 @@ def test_fixed_point_crossing_half():
     assert T.critical == [rstar]
     assert signs_of(T) == [[-1, -1], [1, -1]]
     assert T.points[0][1] == -1
-    assert T.points[0][0] in (0, "?")                   # never a wrong strict sign
+    assert T.points[0][0] == 0                          # N₀ + N₁√Δ = 0 proven exactly (norm and signs)
     for cell in T.cells:
         for t in inner_points(cell, 3):
             for k, lv in enumerate(mp_roots(SQRT, mpq(t))):
