@@ -41,6 +41,19 @@ MEANING = {
 
 MARK = {True: "✓", False: "✗"}
 
+READING = (
+    "How to read the evidence.  Eliminants are shown factored over Q; an algebraic number as "
+    "\"the root of p in ]a, b[\" with p irreducible and ]a, b[ an isolating interval with rational "
+    "ends, followed by certified digits.  Eliminations are done twice (a lex Gröbner basis in SymPy, "
+    "a resultant in python-flint), real-root counts twice (our Sturm sequences, python-flint's root "
+    "isolation).  A sign table lists, for each open cell of r between consecutive critical values, "
+    "an exact rational sample, the number of real eigenvalues of M there and the sign of the "
+    "condition on each branch (upper = largest real eigenvalue); the rows \"(critical)\" give the "
+    "signs at the critical values themselves.  `+`, `−`: sign proven by ball arithmetic at the "
+    "isolated eigenvalue; `0`: the condition vanishes there, proven exactly by a gcd in Q(r)[λ]; "
+    "`·`: the fixed point x is not real there (Δ < 0); `?`: not decided at that point (a pole, or "
+    "two branches colliding); an empty cell: that branch does not exist there.")
+
 
 # --------------------------------------------------------------------------
 # Small Markdown helpers
@@ -128,7 +141,7 @@ def _head() -> str:
     meanings = "\n".join(f"- **{s}**: {MEANING[s]}" for s in STATUSES)
     return (f"# certify: the claims of arXiv:2411.10324, checked\n\n"
             f"Every claim of {PAPER} is checked as printed, with the paper's line "
-            f"numbers.  Each certificate ends in one of four statuses:\n\n{meanings}")
+            f"numbers.  Each certificate ends in one of four statuses:\n\n{meanings}\n\n{READING}")
 
 
 def _summary(results) -> str:
