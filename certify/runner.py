@@ -135,6 +135,7 @@ def select(ids=None) -> list[Certificate]:
         return sorted(certs.values(), key=lambda c: claim_key(c.id))
     chosen = {}
     for i in ids:
+        i = i.strip().upper()
         hits = [c for c in certs.values() if c.id == i or c.id.startswith(i + ".")]
         if not hits:
             raise UsageError(f"unknown claim id {i!r} (see 'python -m certify list')")
