@@ -180,7 +180,7 @@ def run_certificate(cert: Certificate, ctx: Context | None = None,
         outcome = cert.func(**args, **printed)
     except Exception as exc:  # a check that could not be completed is a FAIL
         tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
-        outcome = Outcome(FAIL, [Check("the certificate ran to completion", False, [tb])])
+        outcome = Outcome(FAIL, [Check("the certificate ran to completion", False, [f"`{tb}`"])])
     return outcome
 
 
