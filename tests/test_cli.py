@@ -130,7 +130,7 @@ def test_run_prints_verdicts_and_writes_nothing(fake, tmp_path, monkeypatch, cap
     assert out[0].split()[:2] == ["X2", "ERRATUM"] and out[0].endswith("claim X2 |x|")
     assert out[1].split()[:2] == ["X3", "OBSERVED"]
     assert out[2].split()[:2] == ["X4", "FAIL"]
-    assert "✗ the certificate ran to completion: ZeroDivisionError: division by zero" in out[3]
+    assert "✗ the certificate ran to completion: `ZeroDivisionError: division by zero`" in out[3]
     assert out[-1] == "3 certificates: 0 PASS, 1 ERRATUM, 1 FAIL, 1 OBSERVED"
     assert list(tmp_path.iterdir()) == []       # no report, no figure
 
