@@ -286,7 +286,7 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive_up_to):
     bound = rr1 if positive_up_to == "r1" else rs
     positive = all(T.holds(k, 1, 0, bound) for k in range(3))
     pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
-    figs = spectrum_figures(spectrum, T, marks={"r*": rs, "5-2√6": rr1, "(7-2√10)/3": T.critical[-1]})
+    figs = spectrum_figures(spectrum, T, marks={"r*": rs, "5-2√6": rr1, "(7-2√10)/3": unique_root("3*r^2 - 14*r + 3")})
     return conclude([
         Check("three distinct real eigenvalues exactly on ]0, r*[ (one real eigenvalue on ]r*, 1[ but a double "
               "one at (7-2√10)/3)", three and T.critical[0] == rs, ["number of real eigenvalues and sign of λ per cell:\n\n"
@@ -706,13 +706,13 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_
     q_of = {1: "|q|>1", -1: "|q|<1"}
     up = {q_of.get(sg, "?") for sg in apd.signs(UPPER)}
     lo = {q_of.get(sg, "?") for sg in apd.signs(LOWER)}
-    # the printed criterion: stable iff |q| < 1.  True criterion: stable iff |f'(x₊)| = 1/|q| < 1 iff |q| > 1.
-    criterion_printed = stable_when == "|q|>1"
+    # f'(x₊) = 1/q when the identity holds: x₊ is stable iff |f'(x₊)| < 1 iff |q| > 1
+    criterion = "|q|>1" if product == 0 else "undetermined"
     ev = ["a+d on the branches:\n\n" + apd.markdown()]
     printed = [
         Check(f"upper branch, r < 5-2√6: {upper}", up == {upper}, [f"certified: {sorted(up)}"] + ev),
         Check(f"lower branch, r < 5-2√6: {lower}", lo == {lower}, [f"certified: {sorted(lo)}"]),
-        Check(f"the fixed point x₊ is stable iff {stable_when}", criterion_printed,
+        Check(f"the fixed point x₊ is stable iff {stable_when}", stable_when == criterion,
               ["(cx₊+d)(cx₋+d) = ad - bc holds identically" if product == 0 else "identity (cx₊+d)(cx₋+d) = ad-bc FAILS",
                "hence f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) = 1/q"]),
     ]
