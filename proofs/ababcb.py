@@ -104,32 +104,39 @@ def root_in_unit_interval(poly_text: str):
 
 
 def fixed_point(a, b, c, d) -> FixedPoint:
+    """The fixed point x₊ of the printed f(x) = (ax + b)/(cx + d)."""
     return FixedPoint(parse(a), parse(b), parse(c), parse(d))
 
 
 def printed_uv(U, V):
+    """The substitution u, v -> the printed formulas (l. 279-281)."""
     return {u: parse(U), v: parse(V)}
 
 
 def table(spectrum, name, g, lo, hi, fp=None):
+    """The certified sign table of g on every branch over ]lo, hi[ (shared across certificates)."""
     return spectrum.sign_table(Condition.of(name, g, fp), lo, hi)
 
 
 def sign_word(signs) -> str:
+    """A set of signs from a sign table, in words."""
     names = {1: "> 0", -1: "< 0", 0: "= 0", None: "not real", "missing": "absent", "?": "undecided"}
     return ", ".join(sorted(names.get(s, str(s)) for s in signs))
 
 
 def same_up_to_constant(p, q) -> bool:
+    """p = k q for a non-zero rational k."""
     return primitive(p) == primitive(q)
 
 
 def digits_check(name, root: Algebraic, printed: str) -> Check:
+    """The printed decimal is the root correctly rounded (exact comparison with the rounding interval)."""
     return Check(f"{name} ≈ {printed}", root.in_rounding_interval(printed),
                  [f"{name} is {root.describe()}"])
 
 
 def count_check(name, roots, flint_count, expected) -> Check:
+    """The printed number of roots in ]0,1[, counted by both routes."""
     return Check(f"{name} has exactly {expected} root(s) in ]0,1[ (Sturm and python-flint)",
                  len(roots) == expected and flint_count == expected,
                  [f"Sturm count {len(roots)}, python-flint count {flint_count}"])
@@ -227,6 +234,7 @@ def unique_root(poly_text: str) -> Algebraic:
 
 
 def _end(a: Algebraic) -> str:
+    """An interval end for the evidence."""
     return str(a.lo) if a.is_rational else "≈" + a.digits(8)
 
 
@@ -635,6 +643,7 @@ def velocity_inequalities(spectrum, velocities, U, V, r1, direction):
 
 
 def velocities_of(word):
+    """q(t_0), ..., q(t_n) for q(0) = (-1, u, v) with u, v free."""
     return velocities(word, sp.Matrix([-1, u, v]))
 
 
