@@ -63,14 +63,3 @@ def word_matrix(word: str, rr=r) -> sp.Matrix:
 def characteristic_polynomial(M: sp.Matrix) -> sp.Expr:
     """cp(M) = det(λI - M), expanded in λ and r."""
     return sp.expand((lam * sp.eye(3) - M).det())
-
-
-def check_r(value) -> sp.Rational:
-    """A restitution coefficient in ]0, 1[ as an exact rational; UsageError otherwise."""
-    try:
-        q = sp.Rational(str(value))
-    except (TypeError, ValueError, SyntaxError):
-        raise UsageError(f"invalid restitution coefficient {value!r}: give a number in ]0,1[")
-    if not 0 < q < 1:
-        raise UsageError(f"restitution coefficient r = {value} is outside ]0,1[")
-    return q
