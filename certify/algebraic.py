@@ -15,6 +15,7 @@ from functools import total_ordering
 import flint
 import sympy as sp
 
+from .balls import GUARD, decide, precision
 from .poly import primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, isolate, refine
 
@@ -90,12 +91,8 @@ class Algebraic:
         self.refine(Q(1, 2 ** prec))
         mid = (self.lo + self.hi) / 2
         rad = (self.hi - self.lo) / 2
-        old = flint.ctx.prec
-        flint.ctx.prec = max(old, prec + 20)
-        try:
+        with precision(max(flint.ctx.prec, prec + GUARD)):
             return flint.arb(mid, flint.arb(rad).upper())
-        finally:
-            flint.ctx.prec = old
 
     def digits(self, n: int = 10) -> str:
         """The number rounded to n significant digits, from a certified enclosure:
@@ -225,19 +222,13 @@ def sign_at(poly, alpha: Algebraic, prec: int = 64, maxprec: int = 4096) -> int:
     g = primitive(P).gcd(alpha.p) if P.degree() >= 0 else flint.fmpz_poly([0])
     if g.degree() > 0 and count_roots(g, alpha.lo, alpha.hi) - (g(alpha.hi) == 0) == 1:
         return 0
-    while prec <= maxprec:
-        old = flint.ctx.prec
-        flint.ctx.prec = prec + 20
-        try:
-            val = flint.arb_poly([flint.arb(c) for c in P.coeffs()])(alpha.arb(prec))
-        finally:
-            flint.ctx.prec = old
-        if val > 0:
-            return 1
-        if val < 0:
-            return -1
-        prec *= 2
-    raise ArithmeticError("sign undecided")
+    def attempt(p):
+        val = flint.arb_poly([flint.arb(c) for c in P.coeffs()])(alpha.arb(p))
+        return 1 if val > 0 else -1 if val < 0 else "?"
+    sign = decide(attempt, prec, maxprec)
+    if sign == "?":
+        raise ArithmeticError("sign undecided")
+    return sign
 
 
 def sign_intervals(poly, lo, hi) -> list[tuple[object, object, int]]:

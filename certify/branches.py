@@ -27,6 +27,7 @@ import sympy as sp
 
 from . import numberfield as nf
 from .algebraic import Algebraic, to_fmpq
+from .balls import GUARD, decide, precision
 from .poly import (RING, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
                    resultant_lambda, ring_terms, squarefree_part, to_field, to_fmpq_poly, to_ring, x)
 from .sturm import count_roots, flint_real_roots, isolate
@@ -169,17 +170,10 @@ def ball_value(cond: Condition, R, L) -> flint.arb:
 def evaluate_sign(cond: Condition, r0, L: Algebraic, prec: int = 64, maxprec: int = 8192):
     """The sign of g at r = r0 (rational) on the branch λ = L, proven in ball
     arithmetic; None when x is not real there (Δ < 0)."""
-    while prec <= maxprec:
-        old = flint.ctx.prec
-        flint.ctx.prec = prec + 20
-        try:
-            sg = _sign_ball(cond, flint.arb(Q(r0)), L.arb(prec))
-        finally:
-            flint.ctx.prec = old
-        if sg != "?":
-            return sg
-        prec *= 2
-    raise ArithmeticError(f"sign of {cond.name} undecided at r = {r0}")
+    sg = decide(lambda p: _sign_ball(cond, flint.arb(Q(r0)), L.arb(p)), prec, maxprec)
+    if sg == "?":
+        raise ArithmeticError(f"sign of {cond.name} undecided at r = {r0}")
+    return sg
 
 
 @dataclass
@@ -343,12 +337,8 @@ class Spectrum:
             if reals is not None:
                 mult = [1] * len(reals)
                 if len(g) == 2:
-                    old = flint.ctx.prec
-                    flint.ctx.prec = prec + 30
-                    try:
+                    with precision(prec + GUARD):
                         hits = [i for i, z in enumerate(reals) if nf.evaluate(g, rc.arb(prec), z).contains(0)]
-                    finally:
-                        flint.ctx.prec = old
                     if len(hits) != 1:
                         prec *= 2
                         continue
@@ -363,18 +353,8 @@ class Spectrum:
         roots = self.branches_at(rc)
         if roots is None:
             return None
-        prec, out = 128, None
-        while prec <= maxprec:
-            old = flint.ctx.prec
-            flint.ctx.prec = prec + 30
-            try:
-                R = rc.arb(prec)
-                out = [_sign_ball(cond, R, L(prec)) for L in roots]
-            finally:
-                flint.ctx.prec = old
-            if "?" not in out:
-                return out
-            prec *= 2
+        out = decide(lambda p: [_sign_ball(cond, rc.arb(p), L(p)) for L in roots], 128, maxprec,
+                     undecided=lambda signs: "?" in signs)
         return [self._exact_sign(cond, rc, k, roots[k]) if sg == "?" else sg for k, sg in enumerate(out)]
 
     def _exact_sign(self, cond: Condition, rc: Algebraic, k: int, ball, maxprec: int = 1024):
@@ -390,18 +370,7 @@ class Spectrum:
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
             return "?"
-        prec = 128
-        while prec <= maxprec:
-            old = flint.ctx.prec
-            flint.ctx.prec = prec + 30
-            try:
-                sg = _sign_ball(cond, rc.arb(prec), ball(prec), delta_is_zero=True)
-            finally:
-                flint.ctx.prec = old
-            if sg != "?":
-                return sg
-            prec *= 2
-        return "?"
+        return decide(lambda p: _sign_ball(cond, rc.arb(p), ball(p), delta_is_zero=True), 128, maxprec)
 
     def _root_with_sqrt(self, P, delta, rc, k, ball, maxprec: int = 1024):
         """Whether P₀ + P₁√Δ vanishes on branch k at rc, where Δ > 0: exactly when the
@@ -413,20 +382,16 @@ class Spectrum:
             return False
         if not P1 or self.vanishes_at(P1.as_expr(), rc, k):
             return True
-        prec = 128
-        while prec <= maxprec:
-            old = flint.ctx.prec
-            flint.ctx.prec = prec + 30
-            try:
-                n = max((max(i, j) for _c, i, j in ring_terms(P0) + ring_terms(P1)), default=0)
-                Rp, Lp = _powers(rc.arb(prec), n), _powers(ball(prec), n)
-                v0, v1 = _eval_terms(ring_terms(P0), Rp, Lp), _eval_terms(ring_terms(P1), Rp, Lp)
-            finally:
-                flint.ctx.prec = old
+        t0, t1 = ring_terms(P0), ring_terms(P1)
+        n = max((max(i, j) for _c, i, j in t0 + t1), default=0)
+
+        def opposite(p):
+            Rp, Lp = _powers(rc.arb(p), n), _powers(ball(p), n)
+            v0, v1 = _eval_terms(t0, Rp, Lp), _eval_terms(t1, Rp, Lp)
             if (v0 > 0 or v0 < 0) and (v1 > 0 or v1 < 0):
                 return (v0 > 0) != (v1 > 0)
-            prec *= 2
-        return None
+            return None
+        return decide(opposite, 128, maxprec, undecided=lambda v: v is None)
 
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) vanishes on branch ``branch`` at r = rc:

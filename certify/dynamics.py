@@ -18,7 +18,8 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
-from .branches import Spectrum
+from .balls import GUARD, precision
+from .branches import Condition, Spectrum, ball_value
 from .model import INDEX, characteristic_polynomial, check_word, collide, collision_matrix, word_matrix
 from .poly import FIELD, Lf, RING, Rf, to_field, to_ring
 
@@ -124,21 +125,21 @@ class Candidate:
     def balls(self, r0, branch: int, sigma: int, prec: int):
         """(p(0), q(0), r) at a rational r0 on a real branch, x = x₊ (sigma = 1) or
         x₋ (sigma = -1), as python-flint balls of about ``prec`` bits."""
-        from .branches import Condition, ball_value
         lams = self.spectrum.real_eigenvalues(r0)
-        old = flint.ctx.prec
-        flint.ctx.prec = prec + 30
-        try:
-            R, L = flint.arb(flint.fmpq(r0)), lams[branch].arb(prec + 30)
+        with precision(prec + GUARD):
+            R, L = flint.arb(flint.fmpq(r0)), lams[branch].arb(prec + GUARD)
             u, v = (ball_value(Condition.of(n, e.as_expr()), R, L) for n, e in (("u", self.q0[1]), ("v", self.q0[2])))
             a, b, c, d = (ball_value(Condition.of(n, e), R, L) for n, e in zip("abcd", self.abcd))
-            disc = (a - d) ** 2 + 4 * b * c
-            if not disc > 0:
-                raise ArithmeticError("Δ not proven positive")
-            x = (a - d + sigma * disc.sqrt()) / (2 * c)
+            x = fixed_point_ball(a, b, c, d, sigma)
             return (flint.arb(1), flint.arb(0), x), (flint.arb(-1), u, v), R
-        finally:
-            flint.ctx.prec = old
+
+
+def fixed_point_ball(a, b, c, d, sigma: int = 1) -> flint.arb:
+    """x = (a - d + σ√Δ)/(2c), Δ = (a-d)² + 4bc, from balls; ArithmeticError unless Δ > 0 is proven."""
+    disc = (a - d) ** 2 + 4 * b * c
+    if not disc > 0:
+        raise ArithmeticError("(a-d)² + 4bc not proven positive")
+    return (a - d + sigma * disc.sqrt()) / (2 * c)
 
 
 @lru_cache(maxsize=None)

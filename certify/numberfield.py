@@ -11,6 +11,7 @@ import flint
 import sympy as sp
 
 from .algebraic import Algebraic
+from .balls import GUARD, precision
 from .poly import expr, lam, r
 
 Q = flint.fmpq
@@ -100,21 +101,18 @@ def real_roots(f, alpha: Algebraic, prec: int):
     """Certified balls around the real roots of a squarefree f ∈ K[λ], largest first;
     None when python-flint cannot isolate them at this precision.  A root ball is
     real when it meets its own conjugate and no other root ball does."""
-    old = flint.ctx.prec
-    flint.ctx.prec = prec + 30
     try:
-        R = alpha.arb(prec)
-        poly = flint.acb_poly([flint.acb(arb_of(c, R)) for c in f][::-1])
-        try:
-            # refined with the precision: roots() alone stops at the first isolation
-            # (32-bit balls, radius ~1e-9, whatever the precision)
-            roots = poly.roots(tol=flint.arb(2) ** -(prec // 2))
-        except ValueError:
-            roots = poly.roots()
+        with precision(prec + GUARD):
+            R = alpha.arb(prec)
+            poly = flint.acb_poly([flint.acb(arb_of(c, R)) for c in f][::-1])
+            try:
+                # refined with the precision: roots() alone stops at the first isolation
+                # (32-bit balls, radius ~1e-9, whatever the precision)
+                roots = poly.roots(tol=flint.arb(2) ** -(prec // 2))
+            except ValueError:
+                roots = poly.roots()
     except ValueError:
         return None
-    finally:
-        flint.ctx.prec = old
     reals = []
     for i, z in enumerate(roots):
         if z.imag > 0 or z.imag < 0:

@@ -25,13 +25,14 @@ Two number systems behind one interface:
 """
 from __future__ import annotations
 
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
 import flint
 
+from .balls import precision
 from .model import INDEX, LETTERS, collide
+from .poly import to_fmpq
 
 
 class Undecided(ArithmeticError):
@@ -76,18 +77,6 @@ def less(s, t) -> bool:
     if s >= t:
         return False
     raise Undecided("two collision times not separated")
-
-
-@contextmanager
-def precision(bits: int | None):
-    """Run ball arithmetic at ``bits`` of working precision (restored afterwards)."""
-    old = flint.ctx.prec
-    if bits is not None:
-        flint.ctx.prec = bits
-    try:
-        yield
-    finally:
-        flint.ctx.prec = old
 
 
 # --- collisions ----------------------------------------------------------------
@@ -210,15 +199,7 @@ def run_certified(datum: Callable[[int], tuple], n: int, prec: int = 128,
 
 def exact(values) -> tuple:
     """A tuple of fmpq from integers, strings "p/q", Fractions or fmpq."""
-    out = []
-    for z in values:
-        if isinstance(z, str) and "/" in z:
-            a, b = z.split("/")
-            z = flint.fmpq(int(a), int(b))
-        elif hasattr(z, "numerator") and not isinstance(z, flint.fmpq):
-            z = flint.fmpq(int(z.numerator), int(z.denominator))
-        out.append(flint.fmpq(z))
-    return tuple(out)
+    return tuple(to_fmpq(z) for z in values)
 
 
 def balls(values, prec: int | None = None) -> tuple:

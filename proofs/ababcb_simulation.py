@@ -24,12 +24,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import flint
-import sympy as sp
 
 from certify import simulate as sim
 from certify.algebraic import Algebraic
-from certify.model import characteristic_polynomial, check_word, word_matrix
-from certify.poly import from_flint, lam, parse, r, show
+from certify.balls import GUARD, precision
+from certify.branches import Condition, ball_value
+from certify.dynamics import candidate, fixed_point_ball
+from certify.model import check_word
+from certify.poly import from_flint, lam, parse, show, to_fmpq
 from certify.runner import Check, certificate, conclude
 from proofs.ababcb import A_PRINTED, B_PRINTED, C_PRINTED, D_PRINTED, U_PRINTED, V_PRINTED
 
@@ -41,23 +43,11 @@ MAX_PERIODS = 200                      # how long a perturbed orbit is followed 
 
 
 # ---------------------------------------------------------------- exact formulas in balls
-def arb_function(text: str):
-    """A printed rational function of r, λ evaluated in ball arithmetic with exact
+def ball_function(text: str):
+    """A printed rational function of r, λ as a function of balls (R, L), exact
     rational coefficients (no float ever enters)."""
-    num, den = sp.fraction(sp.together(parse(text)))
-    terms = [[(i, j, Q(int(sp.numer(c)), int(sp.denom(c)))) for (i, j), c in sp.Poly(e, r, lam).terms()]
-             for e in (num, den)]
-
-    def value(R, L):
-        n, d = (sum((flint.arb(c) * R ** i * L ** j for i, j, c in ts), flint.arb(0)) for ts in terms)
-        return n / d
-    return value
-
-
-def rational(text: str) -> flint.fmpq:
-    """"1/20", "1/10^30" as an exact rational."""
-    e = parse(text)
-    return Q(int(sp.numer(e)), int(sp.denom(e)))
+    cond = Condition.of(text, parse(text))
+    return lambda R, L: ball_value(cond, R, L)
 
 
 @dataclass
@@ -69,29 +59,28 @@ class Datum:
     r0: flint.fmpq
     formulas: dict
 
+    def values(self, R, L) -> dict:
+        """u, v, a, b, c, d and x₊ at balls R, L."""
+        f = {k: g(R, L) for k, g in self.formulas.items()}
+        f["x"] = fixed_point_ball(f["a"], f["b"], f["c"], f["d"])
+        return f
+
     def balls(self, prec: int, dx=Q(0), dq=(Q(0), Q(0), Q(0))):
         """(p(0), q(0), r) as balls at ``prec`` bits, x and q shifted by exact rationals."""
-        with sim.precision(prec + 30):
-            R, L = flint.arb(self.r0), self.lam.arb(prec + 30)
-            f = {k: g(R, L) for k, g in self.formulas.items()}
-            a, b, c, d = f["a"], f["b"], f["c"], f["d"]
-            disc = (a - d) ** 2 + 4 * b * c
-            if not disc > 0:
-                raise sim.Undecided("(a-d)² + 4bc not proven positive")
-            x = (a - d + disc.sqrt()) / (2 * c)
-            p0 = (flint.arb(1), flint.arb(0), x + flint.arb(dx))
+        with precision(prec + GUARD):
+            R = flint.arb(self.r0)
+            f = self.values(R, self.lam.arb(prec + GUARD))
+            p0 = (flint.arb(1), flint.arb(0), f["x"] + flint.arb(dx))
             q0 = (flint.arb(-1) + flint.arb(dq[0]), f["u"] + flint.arb(dq[1]), f["v"] + flint.arb(dq[2]))
             return p0, q0, R
 
     def mobius(self, prec: int):
         """(f'(x₊), q): the multiplier f'(x₊) = (ad - bc)/(cx₊ + d)² of the fixed point
-        and the paper's q = (a + d + √Δ)/(a + d - √Δ) (l. 496-498)."""
-        with sim.precision(prec):
-            R, L = flint.arb(self.r0), self.lam.arb(prec)
-            f = {k: g(R, L) for k, g in self.formulas.items()}
-            a, b, c, d = f["a"], f["b"], f["c"], f["d"]
+        and the paper's q = (a + d + √Δ)/(a + d - √Δ) (l. 496-498), computed independently."""
+        with precision(prec):
+            f = self.values(flint.arb(self.r0), self.lam.arb(prec))
+            a, b, c, d, x = f["a"], f["b"], f["c"], f["d"], f["x"]
             sq = ((a - d) ** 2 + 4 * b * c).sqrt()
-            x = (a - d + sq) / (2 * c)
             return (a * d - b * c) / (c * x + d) ** 2, (a + d + sq) / (a + d - sq)
 
 
@@ -123,7 +112,7 @@ def scaling_checks(run: sim.Run, datum: Datum, word: str, periods: int, prec: in
     n = len(word)
     if len(run.states) <= n * periods:
         return False, False, [f"the orbit stops after {len(run.events)} collisions ({run.stop})"]
-    with sim.precision(prec + 30):
+    with precision(prec + 30):
         L = datum.lam.arb(prec + 30)
         s0 = run.states[0]
         mu = run.states[n].p[0]
@@ -133,7 +122,7 @@ def scaling_checks(run: sim.Run, datum: Datum, word: str, periods: int, prec: in
             for i in range(3):
                 pred_q = L ** k * s0.q[i]
                 q_ok &= s.q[i].overlaps(pred_q)
-                worst_q = max(worst_q, rel_radius(s.q[i] - pred_q + pred_q))
+                worst_q = max(worst_q, rel_radius(s.q[i]))
                 pred_p = mu ** k * s0.p[i]
                 p_ok &= s.p[i].overlaps(pred_p) if i != 1 else s.p[1].is_zero()
                 if i != 1:
@@ -163,11 +152,8 @@ def perturbed_run(datum: Datum, word: str, dx, dq, periods: int = MAX_PERIODS, p
 
 def branch_data(word: str, r0: flint.fmpq, formulas: dict) -> dict[str, Datum]:
     """The upper (largest) and lower (smallest) real eigenvalue of M_w at r0."""
-    cp = characteristic_polynomial(word_matrix(check_word(word)))
-    at = sp.Poly(cp.subs(r, sp.Rational(int(r0.p), int(r0.q))), lam)
-    poly = flint.fmpq_poly([Q(int(sp.numer(c)), int(sp.denom(c))) for c in at.all_coeffs()[::-1]])
-    roots = Algebraic.roots(poly)
-    return {"upper": Datum("upper", roots[-1], r0, formulas), "lower": Datum("lower", roots[0], r0, formulas)}
+    lams = candidate(check_word(word)).spectrum.real_eigenvalues(r0)
+    return {"upper": Datum("upper", lams[0], r0, formulas), "lower": Datum("lower", lams[-1], r0, formulas)}
 
 
 @certificate("T25.2", "l. 276-285",
@@ -176,9 +162,8 @@ def branch_data(word: str, r0: flint.fmpq, formulas: dict) -> dict[str, Datum]:
              "(unstable) on the upper and on the lower branch.", printed=PRINTED)
 def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
     """Certified ball simulation of the printed datum and of perturbed data."""
-    r0, eps = rational(r), rational(perturbation)
-    formulas = {"u": arb_function(U), "v": arb_function(V), "a": arb_function(a), "b": arb_function(b),
-                "c": arb_function(c), "d": arb_function(d)}
+    r0, eps = to_fmpq(parse(r)), to_fmpq(parse(perturbation))
+    formulas = {k: ball_function(text) for k, text in (("u", U), ("v", V), ("a", a), ("b", b), ("c", c), ("d", d))}
     data = branch_data(word, r0, formulas)
     checks, evidence = [], [f"r = {r0} (our choice in ]0, 5-2√6[); perturbation ε = {perturbation}; "
                             f"collision choices proven in ball arithmetic (python-flint arb)"]
@@ -237,7 +222,7 @@ def _x_drift(run: sim.Run, n: int, dx, prec: int) -> str:
     K = (len(run.states) - 1) // n
     if K < 2:
         return ""
-    with sim.precision(prec):
+    with precision(prec):
         x0 = run.states[0].p[2] - flint.arb(dx)
         d1, dK = xk(1) - x0, xk(K) - x0
     return f"; x_k - x₊ after 1 period ∈ {d1.str(3, radius=False)}, after {K} ∈ {dK.str(3, radius=False)}"

@@ -9,6 +9,7 @@ from hypothesis import strategies as st
 
 from certify import simulate as sim
 from certify.model import collision_matrix
+from certify.balls import precision
 
 Q = flint.fmpq
 rationals = st.fractions(min_value=-5, max_value=5, max_denominator=50).map(lambda f: Q(f.numerator, f.denominator))
@@ -109,7 +110,7 @@ def test_balls_agree_with_exact(p, q, r0):
     assert ball_run.events == exact_run.events[:n]
     if ball_run.stop == "n" or ball_run.stop == exact_run.stop:
         assert n == len(exact_run.events)
-    with sim.precision(1024):             # the exact values as (nearly) exact balls
+    with precision(1024):             # the exact values as (nearly) exact balls
         for se, sb in zip(exact_run.states[:n + 1], ball_run.states):
             assert all(b.contains(flint.arb(e)) for e, b in zip(se.p + se.q, sb.p + sb.q))
 
@@ -124,6 +125,6 @@ def test_scaling_keeps_the_word():
 
 def test_precision_context_restores():
     old = flint.ctx.prec
-    with sim.precision(300):
+    with precision(300):
         assert flint.ctx.prec == 300
     assert flint.ctx.prec == old
