@@ -1,0 +1,327 @@
+"""The spherical billiard reduction of Section 4: (c_k, P(k)) ↦ (c_{k+1}, P(k+1)).
+
+A state right after a collision is the contact c_k (the pair in contact: a, b, c,
+i.e. p_i = 0 for i = INDEX[c_k]) and the plane P(k) = Span(p(k), q(k)).  One model,
+three representations:
+
+* **projective, exact** (:class:`Plane`): P as a normal vector n in Z^3, primitive
+  and oriented by the paper's convention e_t · n > 0 (t = y, z, x for the contacts
+  a, b, c, l. 950).  Nothing is ever normalised, so every step stays in Q.
+* **vectorial** (:func:`vectorial_step`): the paper's trilinear formula (l. 975),
+  ũ(1) = [u(0) ∧ e_j] ∧ [K_j (u(0) ∧ [e_i ∧ u(0)])], relabelled for each contact.
+* **trigonometric** (:class:`Angles`, :func:`trig_step`): (contact, θ, φ) with
+  cos and sin as certified balls, stepped by the paper's six cases (l. 881-929).
+
+Why the plane is all that matters.  For the physical state (p, q) right after a
+collision put u = p ∧ q.  The next collision j happens at p' = p + t q, and the
+velocity becomes K_j q.  K_j fixes the plane {x_j = 0} pointwise, so K_j p' = p', and
+u' = p' ∧ K_j q = K_j p' ∧ K_j q = cof(K_j)(p' ∧ q) = cof(K_j) u,
+with cof(K) = det(K) K^{-T}: the normal moves *linearly*, whatever the radial part
+of q (the λ of the paper).  That is Theorem 4.1, and it is how :func:`step` works;
+the tangential velocity at p inside P is w = |n|² e_i − n_i n (w_i > 0), and the next
+contact is the j ≠ i with w_j < 0, i.e. n_i n_j > 0.
+
+>>> from flint import fmpq
+>>> P = plane("a", exact([0, 1, 1]), exact([1, -2, "1/2"]))
+>>> [Q.letter for Q in orbit(P, fmpq(1, 10), 6)]
+['a', 'b', 'c', 'a', 'b', 'a', 'b']
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import flint
+
+from .balls import precision
+from .model import INDEX, LETTERS, collide
+from .simulate import exact, sign
+
+ORIENTATION = {"a": 1, "b": 2, "c": 0}       # t with e_t · u(k) ≥ 0 (l. 950)
+E = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
+
+
+class Corner(ArithmeticError):
+    """The orbit meets a corner of the spherical triangle (cos φ = 0, or the position
+    on an edge's end): the reduction map is not defined there."""
+
+
+# --- vectors ---------------------------------------------------------------------
+
+def cross(v, w) -> tuple:
+    """v ∧ w, in any ring."""
+    return (v[1] * w[2] - v[2] * w[1], v[2] * w[0] - v[0] * w[2], v[0] * w[1] - v[1] * w[0])
+
+
+def dot(v, w):
+    """v · w, in any ring."""
+    return v[0] * w[0] + v[1] * w[1] + v[2] * w[2]
+
+
+def scale(c, v) -> tuple:
+    return tuple(c * z for z in v)
+
+
+def primitive(n) -> tuple:
+    """The primitive integer vector positively proportional to the rational n ≠ 0."""
+    if not all(isinstance(z, flint.fmpz) for z in n):
+        n = exact(n)
+        den = n[0].q.lcm(n[1].q).lcm(n[2].q)
+        n = tuple(z.p * (den // z.q) for z in n)
+    g = n[0].gcd(n[1]).gcd(n[2])
+    if g == 0:
+        raise ValueError("the zero vector spans no plane")
+    return n if g == 1 else tuple(z // g for z in n)
+
+
+@lru_cache(maxsize=None)
+def cofactor(letter: str, r: flint.fmpq) -> tuple:
+    """The rows of cof(K) = det(K) K^{-T} for K = A, B, C at r, times the positive
+    integer that clears its denominators (a positive multiple keeps the plane and
+    its orientation).  Since e_1 = e_2 ∧ e_3 (cyclically), cof(K) e_m = K e_{m+1} ∧ K e_{m+2}."""
+    Ke = [collide(letter, tuple(flint.fmpq(z) for z in e), flint.fmpq(r)) for e in E]
+    cols = [cross(Ke[(m + 1) % 3], Ke[(m + 2) % 3]) for m in range(3)]
+    den = flint.fmpz(1)
+    for col in cols:
+        for z in col:
+            den = den.lcm(z.q)
+    return tuple(tuple((cols[m][k] * den).p for m in range(3)) for k in range(3))
+
+
+def cofactor_apply(letter: str, r, n) -> tuple:
+    """A positive multiple of cof(K) n: the normal of K P when n is the normal of P."""
+    return tuple(row[0] * n[0] + row[1] * n[1] + row[2] * n[2] for row in cofactor(letter, flint.fmpq(r)))
+
+
+# --- the projective, exact representation --------------------------------------
+
+@dataclass(frozen=True)
+class Plane:
+    """The state (c_k, P(k)): the contact letter and the primitive normal n of P,
+    oriented so that e_t · n > 0 (t = ORIENTATION[letter])."""
+
+    letter: str
+    n: tuple
+
+    @property
+    def bits(self) -> int:
+        """The largest bit length of the coordinates of n."""
+        return max(int(z).bit_length() for z in self.n)
+
+
+def canonical(letter: str, n) -> Plane:
+    """The Plane with contact ``letter`` and normal ∝ n (orientation e_t · n > 0)."""
+    n = primitive(n)
+    s = sign(n[ORIENTATION[letter]])
+    if s == 0:
+        raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")
+    return Plane(letter, n if s > 0 else tuple(-z for z in n))
+
+
+def normal(p, q) -> tuple:
+    """The primitive integer vector positively proportional to p ∧ q (p, q rational):
+    p and q are first scaled to integer vectors by positive factors."""
+    return primitive(cross(primitive(p), primitive(q)))
+
+
+def plane(letter: str, p, q) -> Plane:
+    """The reduction state of a physical state (p, q) right after a collision of
+    type ``letter`` (p_i = 0, q_i > 0): P = Span(p, q), normal p ∧ q."""
+    i = INDEX[letter]
+    if p[i] != 0 or sign(q[i]) <= 0:
+        raise ValueError(f"not a state right after a collision {letter}: need p_{i + 1} = 0 < q_{i + 1}")
+    return canonical(letter, normal(p, q))
+
+
+def position(P: Plane) -> tuple:
+    """The direction of p in P ∩ {x_i = 0}: ±(n ∧ e_i), with non-negative entries;
+    Corner when it has another zero entry or leaves the octant."""
+    i = INDEX[P.letter]
+    p = cross(P.n, E[i])
+    signs = {sign(z) for k, z in enumerate(p) if k != i}
+    if signs == {1}:
+        return p
+    if signs == {-1}:
+        return scale(-1, p)
+    raise Corner(f"the plane {P.n} meets the face {P.letter} outside its interior")
+
+
+def tangent(P: Plane) -> tuple:
+    """The tangential velocity at p inside P: w = |n|² e_i − n_i n (so w ⊥ n, w ⊥ p
+    and w_i = n_j² + n_k² > 0)."""
+    i, n = INDEX[P.letter], P.n
+    nn = dot(n, n)
+    return tuple((nn if k == i else 0) - n[i] * n[k] for k in range(3))
+
+
+def next_letter(P: Plane) -> str:
+    """The next contact: the j ≠ i where w_j < 0, i.e. n_i n_j > 0.  With the
+    orientation e_t · n > 0 this is the cyclic successor (a→b→c→a) iff cos φ > 0,
+    and cos φ = n_i / |n| (l. 881-929)."""
+    position(P)                              # the state must lie inside its face
+    i, n = INDEX[P.letter], P.n
+    closing = [L for L in LETTERS if L != P.letter and sign(n[i] * n[INDEX[L]]) > 0]
+    if len(closing) != 1:
+        raise Corner(f"cos φ = 0 at {P}: the orbit heads for a corner")
+    return closing[0]
+
+
+def step(P: Plane, r) -> Plane:
+    """(c_k, P(k)) ↦ (c_{k+1}, P(k+1)) with P(k+1) = K_j P(k): normal cof(K_j) n."""
+    j = next_letter(P)
+    return canonical(j, cofactor_apply(j, r, P.n))
+
+
+def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
+    """P and its first n images (fewer if a corner is met and stop_at_corner)."""
+    out = [P]
+    for _ in range(n):
+        try:
+            out.append(step(out[-1], r))
+        except Corner:
+            if not stop_at_corner:
+                raise
+            break
+    return out
+
+
+def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:
+    """The next n collision letters from P, and the final Plane, without keeping the
+    orbit: the normal is made primitive only every ``reduce_every`` steps (its gcd
+    is small, and the sign tests do not need it).  Stops early at a corner."""
+    letters = []
+    try:
+        for k in range(n):
+            j = next_letter(P)
+            m = cofactor_apply(j, r, P.n)
+            if m[ORIENTATION[j]] < 0:
+                m = tuple(-z for z in m)
+            P = canonical(j, m) if k % reduce_every == 0 else Plane(j, m)
+            letters.append(j)
+    except Corner:
+        pass
+    return "".join(letters), canonical(P.letter, P.n)
+
+
+def word(planes) -> str:
+    """The collision word c_1 c_2 ... of an orbit (without its initial contact)."""
+    return "".join(P.letter for P in planes[1:])
+
+
+# --- the vectorial representation (l. 931-987) --------------------------------
+
+def vectorial_step(letter: str, u, r) -> tuple[str, tuple]:
+    """The paper's trilinear formula, relabelled for the contact i and the next
+    collision j: ũ(1) = [u ∧ e_j] ∧ [K_j (u ∧ [e_i ∧ u])], unnormalised (a positive
+    multiple of u(1)).  j is decided by the sign of cos φ = u_i (cyclic successor
+    when positive).  Exact on rationals."""
+    i = INDEX[letter]
+    s = sign(u[i])
+    if s == 0:
+        raise Corner("cos φ = 0: the orbit heads for a corner")
+    succ = LETTERS[(i + 1) % 3]
+    other = LETTERS[(i + 2) % 3]
+    j = succ if s > 0 else other
+    p1 = cross(u, E[INDEX[j]])
+    q0 = cross(u, cross(E[i], u))
+    return j, cross(p1, collide(j, q0, r))
+
+
+# --- the trigonometric representation (l. 881-929) ----------------------------
+
+P0 = {"a": lambda ct, st: (0, ct, st), "b": lambda ct, st: (st, 0, ct), "c": lambda ct, st: (ct, st, 0)}
+Q0 = {"a": lambda ct, st, cp, sp: (sp, -st * cp, ct * cp),
+      "b": lambda ct, st, cp, sp: (ct * cp, sp, -st * cp),
+      "c": lambda ct, st, cp, sp: (-st * cp, ct * cp, sp)}
+# (contact, sign of cos φ) -> (next contact, p(t1) before normalisation), as printed
+CASES = {("a", 1): ("b", lambda ct, st, cp, sp: (ct * sp, 0, cp)),
+         ("a", -1): ("c", lambda ct, st, cp, sp: (st * sp, -cp, 0)),
+         ("b", 1): ("c", lambda ct, st, cp, sp: (cp, ct * sp, 0)),
+         ("b", -1): ("a", lambda ct, st, cp, sp: (0, st * sp, -cp)),
+         ("c", 1): ("a", lambda ct, st, cp, sp: (0, cp, ct * sp)),
+         ("c", -1): ("b", lambda ct, st, cp, sp: (-cp, 0, st * sp))}
+
+
+def e_theta(letter: str, ct, st) -> tuple:
+    """e_θ = dp(0)/dθ, the unit tangent with q(0) = cos φ e_θ + sin φ e_i."""
+    return Q0[letter](ct, st, 1, 0)
+
+
+@dataclass
+class Angles:
+    """(contact, θ, φ) by cos θ, sin θ, cos φ, sin φ (balls or exact): p(0) =
+    P0[letter](cos θ, sin θ), q(0) = Q0[letter](...)."""
+
+    letter: str
+    ct: object
+    st: object
+    cp: object
+    sp: object
+
+    def p(self) -> tuple:
+        return P0[self.letter](self.ct, self.st)
+
+    def q(self) -> tuple:
+        return Q0[self.letter](self.ct, self.st, self.cp, self.sp)
+
+    def u(self) -> tuple:
+        """u = p(0) ∧ q(0), the oriented normal (l. 943)."""
+        return cross(self.p(), self.q())
+
+
+def norm(v):
+    return dot(v, v).sqrt()
+
+
+def angles_of(letter: str, p, q) -> Angles:
+    """θ and φ of a state (p, q) with p_i = 0, in balls: p̂ = p/|p| gives cos θ, sin θ;
+    the unit tangential part of q gives sin φ = q̂_i and cos φ = q̂ · e_θ.  The
+    tangential part |p|² q − (q · p) p is formed before rounding (exactly, when p and q
+    are exact: near a collapse q is almost radial and rounding first would cancel)."""
+    w = tuple(dot(p, p) * qk - dot(q, p) * pk for qk, pk in zip(q, p))
+    p, w = (tuple(flint.arb(z) for z in v) for v in (p, w))
+    ph, wh = scale(1 / norm(p), p), scale(1 / norm(w), w)
+    ct, st = {"a": (ph[1], ph[2]), "b": (ph[2], ph[0]), "c": (ph[0], ph[1])}[letter]
+    return Angles(letter, ct, st, dot(wh, e_theta(letter, ct, st)), wh[INDEX[letter]])
+
+
+def angles(P: Plane, prec: int | None = None) -> Angles:
+    """The trigonometric representation of a Plane (balls at ``prec`` bits)."""
+    with precision(prec):
+        return angles_of(P.letter, position(P), tangent(P))
+
+
+def trig_step(T: Angles, r) -> Angles:
+    """One step of the paper's six cases: the sign of cos φ picks the case, p(t1) is
+    the printed vector normalised, q(t1) = Kq(0) − (Kq(0)·p(t1)) p(t1), normalised."""
+    s = sign(T.cp)
+    if s == 0:
+        raise Corner("cos φ = 0")
+    j, p1 = CASES[(T.letter, s)]
+    p1 = p1(T.ct, T.st, T.cp, T.sp)
+    p1 = tuple(flint.arb(z) for z in p1)
+    p1 = scale(1 / norm(p1), p1)
+    Kq = collide(j, T.q(), flint.arb(r))
+    return angles_of(j, p1, tuple(k - dot(Kq, p1) * z for k, z in zip(Kq, p1)))
+
+
+# --- printed vector formulas ---------------------------------------------------
+
+class _Vec(tuple):
+    """A 3-vector whose ``^`` is the cross product ∧ (for :func:`formula`)."""
+
+    def __xor__(self, other):
+        return _Vec(cross(self, other))
+
+
+def formula(text: str):
+    """A printed vector formula in u(0), e_x, e_y, e_z, A, B, C and ∧, e.g.
+    "[u(0) ∧ e_y] ∧ [B(u(0) ∧ [e_x ∧ u(0)])]", as a function (u, r) ↦ vector in the
+    ring of u.  The brackets of the print are kept: ∧ is not associative (l. 989)."""
+    code = (text.replace("u(0)", "u").replace("∧", "^").replace("[", "(").replace("]", ")"))
+
+    def evaluate(u, r):
+        names = {"u": _Vec(u), "e_x": _Vec(E[0]), "e_y": _Vec(E[1]), "e_z": _Vec(E[2])}
+        names.update({L.upper(): (lambda v, L=L: _Vec(collide(L, v, r))) for L in LETTERS})
+        return tuple(eval(code, {"__builtins__": {}}, names))
+    return evaluate
