@@ -35,7 +35,7 @@ import flint
 
 from .balls import precision
 from .model import INDEX, LETTERS, collide
-from .simulate import exact, sign
+from .simulate import Undecided, exact, sign
 
 ORIENTATION = {"a": 1, "b": 2, "c": 0}       # t with e_t · u(k) ≥ 0 (l. 950)
 E = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
@@ -201,6 +201,26 @@ def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:
     except Corner:
         pass
     return "".join(letters), canonical(P.letter, P.n)
+
+
+def ball_word(P: Plane, r, n: int, prec: int) -> str:
+    """The first n collision letters from P with the normal in balls at ``prec`` bits
+    (rescaled each step so that max |n_k| ≈ 1); every letter is proven by the balls,
+    and the word stops at the first sign they cannot decide."""
+    letters = []
+    with precision(prec):
+        m = tuple(flint.arb(z) for z in P.n)
+        L = P.letter
+        try:
+            for _ in range(n):
+                L = next_letter(Plane(L, m))
+                m = cofactor_apply(L, r, m)
+                top = max(abs(z).upper() for z in m)
+                m = tuple(z / top for z in m)
+                letters.append(L)
+        except (Undecided, Corner):
+            pass
+    return "".join(letters)
 
 
 def word(planes) -> str:
