@@ -5,6 +5,10 @@
     run ID [ID ...] [--out DIR] run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
     bench [--repeat N]          time the whole run (benchmarks/bench.py)
+    particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
+              [--digits D] [--exact]
+                                simulate the four particles exactly, print the
+                                collisions and their times (certify.particles)
 
 Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
 1 when one FAILs (or, with ``all --check``, when the committed REPORT.md is
@@ -16,17 +20,19 @@ from __future__ import annotations
 import argparse
 import importlib.util
 import os
+import re
 import shutil
 import sys
 import traceback
 from contextlib import nullcontext
 from pathlib import Path
 
-from certify import figures, progress, report, runner
+from certify import figures, particles, progress, report, runner
 from certify.files import ensure_writable, read_text_or_none
 from certify.runner import FAIL, UsageError
 
 DEFAULT_OUT = Path("reports")
+MAX_DIGITS = 1000             # particles --digits
 REPO_ROOT = Path(__file__).resolve().parent.parent
 
 
@@ -161,11 +167,27 @@ def cmd_bench(args) -> int:
     return load_bench().main(["--repeat", str(args.repeat)])
 
 
+def cmd_particles(args) -> int:
+    """Simulate the four particles exactly; one line per collision, then why it stopped."""
+    if args.digits > MAX_DIGITS:
+        raise UsageError(f"--digits is at most {MAX_DIGITS} (--exact prints the full fractions)")
+    history = particles.simulate(args.x, args.v, args.r, args.collisions, progress=progress.show)
+    for line in particles.report_lines(history, digits=args.digits, full=args.exact):
+        print(line)
+    return 0
+
+
 # --------------------------------------------------------------------------
 # Parsing
 
 class Parser(argparse.ArgumentParser):
-    """An argument parser whose errors are UsageErrors: one line, exit code 2."""
+    """An argument parser whose errors are UsageErrors: one line, exit code 2.
+    Negative numbers, fractions and decimals included ("-3/7", "-.5"), are values,
+    not options."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = re.compile(r"^-(\d+(/\d+)?|\d+\.\d*|\.\d+)$")
 
     def error(self, message):
         raise UsageError(message)
@@ -210,6 +232,23 @@ def build_parser() -> Parser:
     p.add_argument("--repeat", type=positive_int, default=5, metavar="N",
                    help="number of runs (default: 5)")
     p.set_defaults(func=cmd_bench)
+
+    p = commands.add_parser("particles", help="simulate four particles exactly",
+                            description="Four particles on a line, equal masses, restitution "
+                            "coefficient r: the collisions (a: 1-2, b: 2-3, c: 3-4, ac: a and c "
+                            "at once) and their exact times.  Numbers: -2, 3/7, 0.25 (exact).")
+    p.add_argument("--x", nargs=4, required=True, metavar=("X1", "X2", "X3", "X4"),
+                   help="initial positions, x1 <= x2 <= x3 <= x4")
+    p.add_argument("--v", nargs=4, required=True, metavar=("V1", "V2", "V3", "V4"),
+                   help="initial velocities")
+    p.add_argument("--r", required=True, metavar="R", help="restitution coefficient in ]0,1[")
+    p.add_argument("--collisions", type=positive_int, default=100, metavar="N",
+                   help="stop after N collisions, ac counting as one (default: 100)")
+    p.add_argument("--digits", type=positive_int, default=20, metavar="D",
+                   help="significant digits of the decimal times, correctly rounded (default: 20)")
+    p.add_argument("--exact", action="store_true",
+                   help="print every time as a full fraction, however long")
+    p.set_defaults(func=cmd_particles)
     return parser
 
 

@@ -1,7 +1,9 @@
-"""The model of Section 2: collision matrices, collision words and their matrices.
+"""The model of Section 2: the collision law, collision matrices, words and their matrices.
 
-Relative coordinates p_i = x_{i+1} - x_i, q_i = v_{i+1} - v_i (i = 1, 2, 3).  A
-collision of type a, b, c (pairs 1-2, 2-3, 3-4) maps q to A q, B q, C q.  A word
+The law (l. 158-163) acts on the velocities v = (v1, v2, v3, v4) of the particles:
+:func:`collide_particles`.  In relative coordinates p_i = x_{i+1} - x_i,
+q_i = v_{i+1} - v_i (i = 1, 2, 3), a collision of type a, b, c (pairs 1-2, 2-3, 3-4)
+maps q to A q, B q, C q (:func:`collide`, the printed matrices).  A word
 w = c_1 c_2 ... c_n (collisions in time order) has the matrix
 M_w = K_{c_n} ... K_{c_1}; for ababcb, M = BCBABA.
 """
@@ -31,6 +33,26 @@ def collide(letter: str, q, rr=r) -> tuple:
     if letter == "c":
         return (q1, q2 + h * q3, -rr * q3)
     raise ValueError(f"unknown collision {letter!r}")
+
+
+def collide_particles(letter: str, v, rr=r) -> tuple:
+    """The collision law (l. 158-163) on the velocities v = (v1, v2, v3, v4) of the
+    particles, equal masses: the pair i, i+1 of ``letter`` (a: 1-2, b: 2-3, c: 3-4)
+    keeps its momentum v_i + v_{i+1}, its relative velocity v_{i+1} - v_i becomes
+    -r (v_{i+1} - v_i), the other particles keep their velocities.  With h = (1 + r)/2:
+    v_i' = v_i + h (v_{i+1} - v_i),  v_{i+1}' = v_{i+1} - h (v_{i+1} - v_i).
+
+    In any ring holding r and v.  It is written independently of :func:`collide` (the
+    printed A, B, C), not derived from it: that the differences of this law are A, B, C
+    (l. 208-232) is a check (tests/test_particles.py), and the two simulators built on
+    them (certify.particles, certify.simulate) cross-check each other."""
+    if letter not in INDEX:
+        raise ValueError(f"unknown collision {letter!r}")
+    i = INDEX[letter]
+    d = (1 + rr) / 2 * (v[i + 1] - v[i])
+    w = list(v)
+    w[i], w[i + 1] = v[i] + d, v[i + 1] - d
+    return tuple(w)
 
 
 def collision_matrix(letter: str, rr=r) -> sp.Matrix:

@@ -12,8 +12,8 @@ Two number systems behind one interface:
 * exact: entries are ``flint.fmpq`` (and r is an fmpq).  Every sign and every
   comparison is decided; a and c at exactly the same time is the simultaneous
   collision of the paper (A and C commute, l. 240); b at the same time as a or c
-  is a multiple collision, where the dynamics is not defined
-  (:class:`MultipleCollision`).
+  (or a collision next to particles already in contact) is a multiple collision:
+  three or four particles meet, the dynamics is not defined (:class:`MultipleCollision`).
 * balls: entries are ``flint.arb`` (r an arb or fmpq).  A sign is used only when the
   ball proves it (0 only for an exact zero) and the next collision only when its time
   ball lies strictly below all the other time balls; otherwise :class:`Undecided` is
@@ -40,7 +40,16 @@ class Undecided(ArithmeticError):
 
 
 class MultipleCollision(ArithmeticError):
-    """b at the same time as a or c: a particle meets two others, the law is undefined."""
+    """Three or four particles meet at one point: a particle meets two others at once,
+    a multiple collision, where the collision law is undefined (l. 185).  It happens
+    when b comes at the same time as a or c, or when a pair collides next to a gap
+    that is closed then (particles in contact).  ``particles``: those that meet (1..4,
+    consecutive); ``t``: the time from the current state to the meeting."""
+
+    def __init__(self, particles: Sequence[int], t):
+        self.particles, self.t = tuple(particles), t
+        kind = "triple" if len(self.particles) == 3 else "quadruple"
+        super().__init__(f"{kind} collision of particles {', '.join(map(str, self.particles))}")
 
 
 # --- numbers -------------------------------------------------------------------
@@ -86,13 +95,9 @@ def collision_times(p: Sequence, q: Sequence) -> dict[str, object]:
     return {L: -p[i] / q[i] for L, i in INDEX.items() if sign(q[i]) < 0}
 
 
-def next_collision(p: Sequence, q: Sequence) -> tuple[str, object] | None:
-    """The next collision as (letters, time): letters is "a", "b", "c" or "ac"
-    (a and c simultaneous, exact mode only); None when no pair approaches.
-    Raises Undecided (balls) or MultipleCollision (b tied with a or c)."""
-    times = collision_times(p, q)
-    if not times:
-        return None
+def first_collisions(times: dict[str, object]) -> tuple[str, object]:
+    """(letters, time): the pairs with the smallest collision time, in the order a, b, c.
+    Balls must separate that time from the others (Undecided otherwise)."""
     for L, t in times.items():
         if all(less(t, s) for M, s in times.items() if M != L):
             return L, t
@@ -100,10 +105,39 @@ def next_collision(p: Sequence, q: Sequence) -> tuple[str, object] | None:
     if any(is_ball(t) for t in times.values()):
         raise Undecided("the smallest collision time is not separated from the others")
     tmin = min(times.values())
-    first = "".join(L for L in LETTERS if L in times and times[L] == tmin)
-    if first == "ac":
-        return first, tmin
-    raise MultipleCollision(f"collisions {first} at the same time")
+    return "".join(L for L in LETTERS if L in times and times[L] == tmin), tmin
+
+
+def touches(p: Sequence, q: Sequence, t, i: int) -> bool:
+    """Is the gap p_i of a pair that does not approach (q_i >= 0) zero at the time
+    t >= 0?  p_i + t q_i = 0 exactly when p_i = 0 and t q_i = 0 (signs certified)."""
+    return sign(q[i]) >= 0 and sign(p[i]) == 0 and (sign(q[i]) == 0 or sign(t) == 0)
+
+
+def meeting(p: Sequence, q: Sequence, t, letters: str) -> tuple[int, ...]:
+    """The particles (1..4) that meet at one point at the collisions ``letters`` at the
+    time t, () when the collisions are binary.  The closed gaps then are ``letters`` and
+    the pairs in contact (:func:`touches`; an approaching pair not in ``letters`` closes
+    later); three particles meet when the gap b and a gap next to it are closed."""
+    closed = [INDEX[L] for L in LETTERS if L in letters or touches(p, q, t, INDEX[L])]
+    if INDEX["b"] not in closed or len(closed) == 1:
+        return ()
+    return tuple(range(min(closed) + 1, max(closed) + 3))
+
+
+def next_collision(p: Sequence, q: Sequence) -> tuple[str, object] | None:
+    """The next collision as (letters, time): letters is "a", "b", "c" or "ac"
+    (a and c simultaneous, exact mode only); None when no pair approaches.
+    Raises Undecided (balls) or MultipleCollision (three or four particles meet:
+    b tied with a or c, or a collision next to particles in contact)."""
+    times = collision_times(p, q)
+    if not times:
+        return None
+    letters, t = first_collisions(times)
+    particles = meeting(p, q, t, letters)
+    if particles:
+        raise MultipleCollision(particles, t)
+    return letters, t
 
 
 def step(p: Sequence, q: Sequence, r) -> tuple[str, object, tuple, tuple] | None:
@@ -136,7 +170,8 @@ class Run:
     """An orbit: the collisions (``events``, "ac" for a simultaneous pair) and
     the states right after each (``states[0]`` is the initial state).  ``stop`` says
     why it ended: "n" (all requested collisions), "free" (no pair approaches),
-    "undecided" (a ball comparison failed: raise the precision) or "multiple"."""
+    "undecided" (a ball comparison failed: raise the precision) or "multiple" (three
+    or four particles meet, see :class:`MultipleCollision`; ``reason`` says which)."""
 
     events: list[str] = field(default_factory=list)
     states: list[State] = field(default_factory=list)

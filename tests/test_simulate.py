@@ -58,10 +58,21 @@ def test_simultaneous_a_and_c_exact():
 
 
 def test_b_tied_with_a_is_a_multiple_collision():
+    """Gaps a and b (1 each) both close at speed 1: particles 1, 2, 3 meet at t = 1."""
     p, q = sim.exact([1, 1, 5]), sim.exact([-1, -1, 1])
-    with pytest.raises(sim.MultipleCollision):
+    with pytest.raises(sim.MultipleCollision, match="triple collision of particles 1, 2, 3") as exc:
         sim.next_collision(p, q)
-    assert sim.run(p, q, Q(1, 2), 2).stop == "multiple"
+    assert exc.value.particles == (1, 2, 3) and exc.value.t == 1
+    run = sim.run(p, q, Q(1, 2), 2)
+    assert run.stop == "multiple" and run.reason == "triple collision of particles 1, 2, 3"
+
+
+def test_collision_next_to_a_closed_gap_is_a_multiple_collision():
+    """Particles 3, 4 in contact (p3 = 0, q3 = 0); b closes at t = 2: 2, 3, 4 meet.
+    With q3 = 1 > 0 instead, 3 and 4 have separated by then: a binary b."""
+    with pytest.raises(sim.MultipleCollision, match="triple collision of particles 2, 3, 4"):
+        sim.next_collision(sim.exact([3, 2, 0]), sim.exact([1, -1, 0]))
+    assert sim.next_collision(sim.exact([3, 2, 0]), sim.exact([1, -1, 1])) == ("b", Q(2))
 
 
 def test_balls_undecided_when_times_overlap():
