@@ -4,7 +4,9 @@
                                 DIR/report.json, DIR/timings.json, DIR/figures/
     run ID [ID ...] [--out DIR] run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N]          time the whole run (benchmarks/bench.py)
+    bench [--repeat N] [--reduction [--long]]
+                                time the whole run (benchmarks/bench.py), or the
+                                exact simulator and reduction map (bench_reduction.py)
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
@@ -151,19 +153,22 @@ def cmd_list(args) -> int:
     return 0
 
 
-def load_bench():
-    """Import ``benchmarks/bench.py`` from the source checkout (it is not a package)."""
-    path = REPO_ROOT / "benchmarks" / "bench.py"
+def load_bench(name: str = "bench"):
+    """Import ``benchmarks/<name>.py`` from the source checkout (it is not a package)."""
+    path = REPO_ROOT / "benchmarks" / f"{name}.py"
     if not path.is_file():
         raise UsageError(f"no benchmark script at {path} (bench needs a source checkout)")
-    spec = importlib.util.spec_from_file_location("certify_bench", path)
+    spec = importlib.util.spec_from_file_location(f"certify_{name}", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
 
 
 def cmd_bench(args) -> int:
-    """Time the whole run, see benchmarks/bench.py."""
+    """Time the whole run (benchmarks/bench.py), or with --reduction the exact
+    simulator and reduction map against bit growth (benchmarks/bench_reduction.py)."""
+    if args.reduction:
+        return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
     return load_bench().main(["--repeat", str(args.repeat)])
 
 
@@ -231,6 +236,9 @@ def build_parser() -> Parser:
     p = commands.add_parser("bench", help="time the whole run")
     p.add_argument("--repeat", type=positive_int, default=5, metavar="N",
                    help="number of runs (default: 5)")
+    p.add_argument("--reduction", action="store_true",
+                   help="time the exact simulator and reduction map instead (benchmarks/bench_reduction.py)")
+    p.add_argument("--long", action="store_true", help="with --reduction: also 10^4 collisions, 10^5 steps")
     p.set_defaults(func=cmd_bench)
 
     p = commands.add_parser("particles", help="simulate four particles exactly",

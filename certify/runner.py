@@ -186,12 +186,14 @@ def run_certificate(cert: Certificate, ctx: Context | None = None,
 
 def reset_caches() -> None:
     """Forget what the engine memoises across runs (the candidates of words with their
-    branches and sign tables, the conditions, SymPy's cache): the next run is cold."""
+    branches and sign tables, the conditions, the cofactor matrices, SymPy's cache): the next run is cold."""
     import sympy.core.cache
 
     from .branches import Condition
     from .dynamics import candidate
+    from .reduction import cofactor
     candidate.cache_clear()
+    cofactor.cache_clear()
     Condition._cache.clear()
     sympy.core.cache.clear_cache()
 
