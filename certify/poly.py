@@ -27,10 +27,11 @@ RING = FIELD.ring
 NAMES = {"r": r, "λ": lam, "lam": lam, "lambda": lam, "la": lam, "x": x, "u": u, "v": v}
 
 
-def parse(text: str) -> sp.Expr:
-    """A formula transcribed from the paper, as a SymPy expression (exact)."""
+def parse(text: str, names: dict | None = None) -> sp.Expr:
+    """A formula transcribed from the paper, as a SymPy expression (exact); ``names``
+    adds local names (functions, vectors) to the paper's (see :mod:`certify.trig`)."""
     text = text.replace("λ", "lam").replace("^", "**").replace("−", "-")
-    return sp.sympify(text, locals=NAMES, rational=True)
+    return sp.sympify(text, locals={**NAMES, **names} if names else NAMES, rational=True)
 
 
 def expr(e) -> sp.Expr:

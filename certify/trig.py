@@ -1,0 +1,452 @@
+"""Identities in cos/sin of θ and φ (Section 4), proved in exact polynomial arithmetic.
+
+A printed formula is transcribed as text close to the paper
+(``"sin(φ)*cos(θ) - (1+r)/2*cos(φ)*sin(θ)"``, ``tan(θ)`` allowed) and parsed by
+:func:`certify.poly.parse` with sin θ → sθ, cos θ → cθ, sin φ → sφ, cos φ → cφ:
+a rational function of cθ, sθ, cφ, sφ, r, λ (λ: the radial component of q, l. 611-614)
+and whatever other symbol the text names.  Vectors are 3×1 matrices, written
+``(a, b, c)`` or ``V(a, b, c)`` inside formulas, with ``cross``, ``dot`` and
+``M([[...]])`` for a printed matrix.
+
+An identity E = 0 holds when cθ² + sθ² = 1 and cφ² + sφ² = 1.  :func:`is_zero`
+proves it by two independent routes, which must agree (else :class:`RoutesDisagree`,
+a FAIL of the certificate):
+
+(a) SymPy: the numerator of E in lowest terms (``together``/``cancel`` done in SymPy's
+    sparse rational functions) has normal form 0 modulo the ideal (cθ²+sθ²−1,
+    cφ²+sφ²−1), which ``groebner`` confirms is its own Gröbner basis (grevlex), and
+    the denominator does not reduce to 0;
+(b) python-flint: the Weierstrass substitution cθ = (1−a²)/(1+a²), sθ = 2a/(1+a²),
+    cφ = (1−b²)/(1+b²), sφ = 2b/(1+b²), evaluated in Q(a, b, r, λ, ...), is 0.
+
+The ideal is prime and the parametrisation birational, so both routes decide the
+same question.  Signs (:func:`sign`) are proved by inspection: each factor is a
+hypothesis (cθ, sθ, sφ > 0, the sign of cφ, 0 < r < 1, named quantities such as
+t_b < 0) or a polynomial all of whose terms have the same strict sign, possibly
+after rewriting with the circle relations, or a polynomial in r alone without
+root in ]0, 1[ (Sturm).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import flint
+import sympy as sp
+
+from .poly import lam, parse as parse_paper, r
+from .sturm import count_roots
+
+θ, φ = sp.symbols("θ φ")
+cθ, sθ, cφ, sφ = sp.symbols("cosθ sinθ cosφ sinφ")
+CIRCLE_SYMBOLS = (cθ, sθ, cφ, sφ)
+CIRCLES = (cθ**2 + sθ**2 - 1, cφ**2 + sφ**2 - 1)
+IDEAL = "(cos²θ+sin²θ−1, cos²φ+sin²φ−1)"
+E_X, E_Y, E_Z = (sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]))
+ANGLE = {"0": {cθ: 1, sθ: 0}, "π/2": {cθ: 0, sθ: 1}}      # the limit cases θ = 0, π/2
+
+
+class RoutesDisagree(ArithmeticError):
+    """The Gröbner route and the Weierstrass route gave different answers."""
+
+
+# ---------------------------------------------------------------- parsing
+def _on_circles(e: sp.Expr) -> sp.Expr:
+    """sin/cos of θ, φ (and of sums and multiples, after expansion) as cθ, sθ, cφ, sφ."""
+    e = sp.expand_trig(e).xreplace({sp.cos(θ): cθ, sp.sin(θ): sθ, sp.cos(φ): cφ, sp.sin(φ): sφ})
+    if e.has(sp.sin, sp.cos, sp.tan):
+        raise ValueError(f"not a polynomial in cos/sin of θ, φ: {e}")
+    return e
+
+
+def _vec(*components) -> sp.Matrix:
+    """A column vector of the paper, ``V(a, b, c)``."""
+    return sp.Matrix([sp.sympify(c) for c in components])
+
+
+NAMES = {"θ": θ, "φ": φ, "sin": lambda x: _on_circles(sp.sin(x)), "cos": lambda x: _on_circles(sp.cos(x)),
+         "tan": lambda x: _on_circles(sp.sin(x)) / _on_circles(sp.cos(x)), "V": _vec,
+         "M": lambda rows: sp.Matrix(rows), "cross": lambda u, v: u.cross(v), "dot": lambda u, v: u.dot(v)}
+
+
+def parse(text: str, **names):
+    """A printed formula (scalar, ``(a, b, c)`` vector or ``[[...]]`` matrix) in cθ, sθ, cφ, sφ;
+    ``names`` binds further names (vectors, matrices) the text uses."""
+    e = parse_paper(text, {**NAMES, **names})
+    if isinstance(e, (sp.Tuple, tuple, list)):
+        e = sp.Matrix(list(e))
+    return e
+
+
+def vector(text: str, **names) -> sp.Matrix:
+    """A printed vector as a 3×1 matrix."""
+    v = parse(text, **names)
+    if not isinstance(v, sp.MatrixBase) or v.shape != (3, 1):
+        raise ValueError(f"not a 3-vector: {text!r}")
+    return v
+
+
+def members(text: str) -> list[str]:
+    """The members of a printed chain ``X = Y = Z`` as texts: each further member on a
+    line starting with ``=``, a member may span lines."""
+    parts = [" ".join(m.split()) for m in ("\n" + text.strip()).split("\n=")]
+    return [m for m in parts if m]
+
+
+def chain(text: str, **names) -> list:
+    """The members of a printed chain, parsed."""
+    return [parse(m, **names) for m in members(text)]
+
+
+def show(e) -> str:
+    """A formula for reports: ``-r cosφ^2 sinθ``; vectors as ``(a, b, c)``."""
+    if isinstance(e, sp.MatrixBase):
+        return "(" + ", ".join(show(c) for c in e) + ")"
+    return sp.sstr(sp.sympify(e), order="grlex").replace("**", "^").replace("*", " ")
+
+
+def short(e, limit: int = 160) -> str:
+    """:func:`show`, or its term count and its first characters when long."""
+    text = show(e)
+    if len(text) <= limit:
+        return f"`{text}`"
+    if isinstance(e, sp.MatrixBase):
+        return "a vector of " + ", ".join(str(len(sp.Add.make_args(sp.expand(c)))) for c in e) + " terms"
+    n = len(sp.Add.make_args(sp.expand(e)))
+    return f"{n} terms, `{text[:limit]} …`"
+
+
+# ---------------------------------------------------------------- route (a): Gröbner normal form
+def _gens(*exprs) -> tuple:
+    """The circle symbols first, then every other symbol by name."""
+    others = set().union(*(sp.sympify(e).free_symbols for e in exprs)) - set(CIRCLE_SYMBOLS)
+    return CIRCLE_SYMBOLS + tuple(sorted(others, key=str))
+
+
+@lru_cache(maxsize=None)
+def groebner_basis(gens: tuple) -> sp.GroebnerBasis:
+    """The reduced Gröbner basis (grevlex) of the circle ideal; it is the two circles
+    themselves (their leading terms cθ², cφ² are coprime)."""
+    G = sp.groebner(CIRCLES, *gens, order="grevlex", domain=sp.QQ)
+    if [sp.expand(g) for g in G.exprs] != [sp.expand(c) for c in CIRCLES]:
+        raise ArithmeticError("the circle relations are not their own Gröbner basis")
+    return G
+
+
+@lru_cache(maxsize=None)
+def _field(gens: tuple, order: str = "grevlex"):
+    """Q(gens) as SymPy sparse rational functions, and the circles in its ring."""
+    K = sp.field(gens, sp.QQ, order)[0]
+    return K, [K.ring.from_expr(c) for c in CIRCLES]
+
+
+def _lowest_terms(E):
+    """E in lowest terms in Q(cθ, sθ, cφ, sφ, ...): numerator and denominator as ring elements."""
+    E = sp.sympify(E)
+    K, _ = _field(_gens(E))
+    f = K.from_expr(E)
+    return f.numer, f.denom
+
+
+def fraction(E) -> tuple[sp.Expr, sp.Expr]:
+    """Numerator and denominator of E in lowest terms (``together`` and ``cancel`` done by
+    SymPy's sparse rational functions)."""
+    n, d = _lowest_terms(E)
+    return n.as_expr(), d.as_expr()
+
+
+def normal_form(n) -> sp.Expr:
+    """The normal form of the polynomial n modulo the circle ideal (route a): the remainder
+    of the division by its Gröbner basis, grevlex with cθ > sθ > cφ > sφ > the others."""
+    n = sp.expand(n)
+    if n == 0:
+        return sp.Integer(0)
+    gens = _gens(n)
+    groebner_basis(gens)
+    K, G = _field(gens)
+    return K.ring.from_expr(n).rem(G).as_expr()
+
+
+def groebner_is_zero(E) -> tuple[bool, list[str]]:
+    """Route (a): the numerator of E reduces to 0 and its denominator does not."""
+    gens = _gens(E)
+    groebner_basis(gens)
+    n, d = _lowest_terms(E)
+    G = _field(gens)[1]
+    if d.rem(G) == 0:
+        raise ZeroDivisionError(f"the denominator of {show(E)} vanishes on the circles")
+    nf = n.rem(G)
+    return nf == 0, [short(n.as_expr()), short(nf.as_expr())]
+
+
+# ---------------------------------------------------------------- route (b): Weierstrass substitution
+def weierstrass(E) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly]:
+    """E under cθ = (1−a²)/(1+a²), sθ = 2a/(1+a²), cφ = (1−b²)/(1+b²), sφ = 2b/(1+b²):
+    numerator and denominator in Q[a, b, ...] (python-flint), reduced by their gcd."""
+    E = sp.sympify(E)
+    others = _gens(E)[4:]
+    ctx = flint.fmpq_mpoly_ctx.get(("a", "b") + tuple(f"x{k}" for k in range(len(others))), "lex")
+    a, b, *xs = ctx.gens()
+    one = ctx.constant(1)
+    images = {cθ: (1 - a**2, 1 + a**2), sθ: (2 * a, 1 + a**2), cφ: (1 - b**2, 1 + b**2), sφ: (2 * b, 1 + b**2)}
+    images.update({s: (x, one) for s, x in zip(others, xs)})
+    return _evaluate(E, images, ctx, {})
+
+
+def _reduce(n, d):
+    if n.is_zero():
+        return n, d.context().constant(1)
+    g = n.gcd(d)
+    return n / g, d / g
+
+
+def _evaluate(e, images, ctx, memo):
+    """The expression tree of e, evaluated as fractions of python-flint polynomials."""
+    if e in memo:
+        return memo[e]
+    if e.is_Rational:
+        out = (ctx.constant(flint.fmpq(int(e.p), int(e.q))), ctx.constant(1))
+    elif e.is_Symbol:
+        out = images[e]
+    elif e.is_Add or e.is_Mul:
+        args = [_evaluate(x, images, ctx, memo) for x in e.args]
+        n, d = args[0]
+        for n2, d2 in args[1:]:
+            n, d = _reduce(n * d2 + n2 * d, d * d2) if e.is_Add else _reduce(n * n2, d * d2)
+        out = (n, d)
+    elif e.is_Pow and e.exp.is_Integer:
+        n, d = _evaluate(e.base, images, ctx, memo)
+        k = int(e.exp)
+        if k < 0:
+            if n.is_zero():
+                raise ZeroDivisionError(f"{e.base} vanishes under the Weierstrass substitution")
+            n, d, k = d, n, -k
+        out = (n**k, d**k)
+    else:
+        raise ValueError(f"not a rational function: {e}")
+    memo[e] = out
+    return out
+
+
+def weierstrass_is_zero(E) -> tuple[bool, list[str]]:
+    """Route (b): the Weierstrass substitution of E is the zero rational function."""
+    n, _d = weierstrass(E)
+    return n.is_zero(), ["0" if n.is_zero() else f"non-zero ({len(list(n.terms()))} terms)"]
+
+
+# ---------------------------------------------------------------- identities
+@dataclass
+class Result:
+    """A proved (holds) or refuted statement, with the evidence lines for the report."""
+
+    holds: bool
+    evidence: list[str] = field(default_factory=list)
+    routes: tuple = ()          # (numerator, normal form, Weierstrass) of an identity
+
+    def __bool__(self):
+        return self.holds
+
+
+def is_zero(E) -> Result:
+    """E ≡ 0 on the circles, by both routes; RoutesDisagree if they differ."""
+    za, ea = groebner_is_zero(E)
+    zb, eb = weierstrass_is_zero(E)
+    if za != zb:
+        raise RoutesDisagree(f"Gröbner route says {'0' if za else '≠ 0'}, Weierstrass route says "
+                             f"{'0' if zb else '≠ 0'} for {show(E)}")
+    return Result(za, [f"numerator: {ea[0]}", f"normal form mod {IDEAL}: {ea[1]}",
+                       f"Weierstrass substitution: {eb[0]}"], (ea[0], ea[1], eb[0]))
+
+
+def equal(lhs, rhs) -> Result:
+    """lhs ≡ rhs (scalars, or vectors component by component)."""
+    if isinstance(lhs, sp.MatrixBase) or isinstance(rhs, sp.MatrixBase):
+        if lhs.shape != rhs.shape:
+            return Result(False, [f"shapes differ: {lhs.shape} and {rhs.shape}"])
+        parts = [is_zero(x - y) for x, y in zip(lhs, rhs)]
+        return Result(all(parts), _merge(parts))
+    return is_zero(sp.sympify(lhs) - sp.sympify(rhs))
+
+
+def _merge(parts: list[Result]) -> list[str]:
+    """The evidence of a vector identity, component by component, route by route."""
+    heads = ("numerators of the differences", f"normal forms mod {IDEAL}", "Weierstrass substitution")
+    return [f"{head}: " + ", ".join(p.routes[k] for p in parts) for k, head in enumerate(heads)]
+
+
+def parallel(v, w) -> Result:
+    """v ∧ w ≡ 0 (v, w colinear wherever both are non-zero)."""
+    c = v.cross(w)
+    res = equal(c, sp.zeros(3, 1))
+    return Result(res.holds, [f"v ∧ w = {short(c.applyfunc(sp.cancel))}"] + res.evidence)
+
+
+# ---------------------------------------------------------------- signs by inspection
+@dataclass(frozen=True)
+class Signs:
+    """Hypotheses: strict signs of atoms (cθ, sθ, sφ > 0, r > 0, the sign of cφ, named
+    quantities such as t_b) and the definitions of the named quantities; 0 < r < 1."""
+
+    atoms: tuple = ((cθ, 1), (sθ, 1), (sφ, 1), (r, 1))
+    defs: tuple = ()
+
+    def sign(self, s):
+        return dict(self.atoms).get(s)
+
+    def assume(self, symbol, sign: int, definition=None) -> "Signs":
+        """The hypotheses with ``symbol`` of sign ``sign`` (and its definition)."""
+        atoms = tuple((a, s) for a, s in self.atoms if a != symbol) + ((symbol, sign),)
+        defs = self.defs + (((symbol, definition),) if definition is not None else ())
+        return Signs(atoms, defs)
+
+    def unfold(self, e):
+        """e with the named quantities replaced by their definitions."""
+        for s, d in reversed(self.defs):
+            e = e.subs(s, d)
+        return e
+
+    def describe(self) -> str:
+        names = {cθ: "cos θ", sθ: "sin θ", cφ: "cos φ", sφ: "sin φ", r: "r"}
+        text = [f"{names.get(a, show(a))} {'>' if s > 0 else '<'} 0" for a, s in self.atoms]
+        return ", ".join(text) + ", r < 1"
+
+
+def hypotheses(cos_phi: int | None = None) -> Signs:
+    """θ ∈ ]0, π/2[, sin φ > 0, 0 < r < 1, and cos φ of the given sign (if any)."""
+    H = Signs()
+    return H.assume(cφ, cos_phi) if cos_phi else H
+
+
+def _term_sign(P: sp.Poly, H: Signs) -> int | None:
+    """The common strict sign of all terms of P under H (weak terms allowed: even powers
+    of unknown symbols), or None."""
+    signs, strict = set(), False
+    for monom, coeff in P.terms():
+        s, st = (1 if coeff > 0 else -1), True
+        for g, e in zip(P.gens, monom):
+            if e == 0:
+                continue
+            sg = H.sign(g)
+            if sg is None and e % 2:
+                return None
+            s, st = (s * sg**e, st) if sg is not None else (s, False)
+        signs.add(s)
+        strict = strict or st
+    return signs.pop() if len(signs) == 1 and strict else None
+
+
+def _rewrites(f):
+    """f as written, then rewritten with cθ² → 1−sθ² or sθ² → 1−cθ² (same for φ): the
+    normal forms for the four lex orders with one of each pair leading (lazily)."""
+    f = sp.expand(f)
+    yield f
+    others = _gens(f)[4:]
+    for x, y in ((cθ, sθ), (sθ, cθ)):
+        for u, w in ((cφ, sφ), (sφ, cφ)):
+            K, G = _field((x, y, u, w) + others, "lex")
+            yield K.ring.from_expr(f).rem(G).as_expr()
+
+
+def _factor_sign(f, H: Signs) -> int | None:
+    """The strict sign of one irreducible factor under H, or None."""
+    syms = sp.sympify(f).free_symbols
+    if syms == {r}:
+        P = flint.fmpq_poly([flint.fmpq(int(sp.numer(c)), int(sp.denom(c))) for c in sp.Poly(f, r).all_coeffs()[::-1]])
+        if count_roots(P, 0, 1) - (P(1) == 0) == 0:
+            return 1 if P(flint.fmpq(1, 2)) > 0 else -1
+        return None
+    for g in _rewrites(f):
+        if g.free_symbols:
+            s = _term_sign(sp.Poly(g, *sorted(g.free_symbols, key=str)), H)
+        else:
+            s = int(sp.sign(g)) or None
+        if s:
+            return s
+    return None
+
+
+def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
+    """Strict sign of a polynomial from its factors (even powers need a known factor
+    sign), the polynomial taken as written or rewritten with the circle relations."""
+    if p == 0:
+        return None, ["`0`: no strict sign"]
+    undecided = []
+    for g in _rewrites(p):
+        c, factors = sp.factor_list(g)
+        s, why = (1 if c > 0 else -1), []
+        for f, m in factors:
+            fs = _factor_sign(f, H)
+            if fs is None:
+                undecided.append(f"`{show(f)}`: sign undecided")
+                break
+            s *= fs**m
+            why.append(f"`{show(f)}` {'>' if fs > 0 else '<'} 0")
+        else:
+            return s, [f"`{show(sp.factor(g))}`: " + ", ".join(why or ["constant"])]
+    return None, [f"`{show(sp.factor(p))}`: " + undecided[0]]
+
+
+def sign(E, H: Signs) -> tuple[int | None, list[str]]:
+    """The strict sign of E under the hypotheses H, by inspection of its factors."""
+    n, d = fraction(E)
+    sn, wn = _poly_sign(n, H)
+    sd, wd = _poly_sign(d, H)
+    why = [f"numerator {wn[0]}"] + ([f"denominator {wd[0]}"] if d != 1 else [])
+    return (sn * sd if sn and sd else None), why
+
+
+def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
+    """target has the strict sign ``expected`` under H.  With a ``witness`` W (written in
+    the named quantities of H): target ≡ W after unfolding their definitions, and W has
+    the sign by inspection."""
+    W = target if witness is None else witness
+    ev = []
+    if witness is not None:
+        same = equal(target, H.unfold(W))
+        ev.append(f"`{show(target)}` = `{show(W)}` " + ("(identity, both routes)" if same else "FAILS"))
+        if not same:
+            return Result(False, ev + same.evidence)
+    s, why = sign(W, H)
+    word = {1: "> 0", -1: "< 0", None: "sign undecided"}[s]
+    return Result(s == expected, ev + [f"under {H.describe()}: {word}"] + why)
+
+
+def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
+    """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
+    component i where that quotient has a sign by inspection; then v − k w ≡ 0."""
+    candidates = [ratio] if ratio is not None else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0]
+    for k in candidates:
+        s, why = sign(k, H)
+        if s == 1:
+            same = equal(v, k * w)
+            return Result(same.holds, [f"ratio k = `{show(sp.factor(k))}` > 0 under {H.describe()}: " + "; ".join(why),
+                                       "v − k w ≡ 0: " + ("yes" if same else "no")] + same.evidence)
+    return Result(False, [f"no ratio with a proved positive sign among {', '.join(show(sp.factor(k)) for k in candidates)}"])
+
+
+# ---------------------------------------------------------------- exact rational points
+def circle_point(t) -> tuple[sp.Rational, sp.Rational]:
+    """(cos, sin) of the angle with tan(angle/2) = t, a rational point of the circle."""
+    t = sp.Rational(t)
+    return (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+
+
+def point(tθ, tφ, **values) -> dict:
+    """A rational point of the circles (θ, φ from tan(θ/2) = tθ, tan(φ/2) = tφ) with values
+    for r, λ and other symbols (by name)."""
+    (c1, s1), (c2, s2) = circle_point(tθ), circle_point(tφ)
+    pt = {cθ: c1, sθ: s1, cφ: c2, sφ: s2}
+    names = {"r": r, "λ": lam}
+    pt.update({names.get(k, sp.Symbol(k)): sp.Rational(x) for k, x in values.items()})
+    return pt
+
+
+def at(e, pt: dict):
+    """The exact value of e (scalar or vector) at a rational point."""
+    return sp.sympify(e).xreplace(pt)
+
+
+def satisfied(H: Signs, pt: dict) -> bool:
+    """Every hypothesis of H holds at the rational point (named quantities unfolded), and 0 < r < 1."""
+    ok = all(sp.sign(at(H.unfold(a), pt)) == s for a, s in H.atoms)
+    return ok and (r not in pt or 0 < pt[r] < 1)
