@@ -327,21 +327,25 @@ def trig_step(T: Angles, r) -> Angles:
 
 # --- printed vector formulas ---------------------------------------------------
 
-class _Vec(tuple):
-    """A 3-vector whose ``^`` is the cross product ∧ (for :func:`formula`)."""
+class _Matrix:
+    """A, B or C at r acting by ``K*v`` (for :func:`formula`)."""
 
-    def __xor__(self, other):
-        return _Vec(cross(self, other))
+    def __init__(self, letter: str, r):
+        self.letter, self.r = letter, r
+
+    def __mul__(self, v):
+        return collide(self.letter, v, self.r)
 
 
 def formula(text: str):
-    """A printed vector formula in u(0), e_x, e_y, e_z, A, B, C and ∧, e.g.
-    "[u(0) ∧ e_y] ∧ [B(u(0) ∧ [e_x ∧ u(0)])]", as a function (u, r) ↦ vector in the
-    ring of u.  The brackets of the print are kept: ∧ is not associative (l. 989)."""
-    code = (text.replace("u(0)", "u").replace("∧", "^").replace("[", "(").replace("]", ")"))
+    """A printed vector formula as transcribed in ``proofs/reduction_identities.py``,
+    e.g. "cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))" (l. 976), as a function
+    (u, r) ↦ vector in the ring of u (exact on rationals).  The brackets of the print
+    are kept: ∧ is not associative (l. 989)."""
+    code = compile(text, "<printed formula>", "eval")
 
     def evaluate(u, r):
-        names = {"u": _Vec(u), "e_x": _Vec(E[0]), "e_y": _Vec(E[1]), "e_z": _Vec(E[2])}
-        names.update({L.upper(): (lambda v, L=L: _Vec(collide(L, v, r))) for L in LETTERS})
+        names = {"cross": cross, "dot": dot, "u0": tuple(u), "ex": E[0], "ey": E[1], "ez": E[2],
+                 **{L.upper(): _Matrix(L, r) for L in LETTERS}}
         return tuple(eval(code, {"__builtins__": {}}, names))
     return evaluate

@@ -23,10 +23,12 @@ import sympy as sp
 
 from certify import reduction as R
 from certify import simulate as sim
+from certify import trig as T
 from certify.balls import precision
 from certify.model import INDEX, LETTERS
 from certify.poly import show
 from certify.runner import Check, certificate, conclude, quantity
+from proofs import reduction_identities as I
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
 Q = flint.fmpq
@@ -154,42 +156,28 @@ def spherical_reduction_theorem(section4_data, A, B, C):
 
 
 # ---------------------------------------------------------------- S7.2
-# The six printed cases (l. 881-929): contact, p(0), q(0); per sign of cos φ the
-# next contact and p(t1) before its normalisation.
-PRINTED_S7 = dict(
-    a="p(0) = (0, cos(θ), sin(θ)); q(0) = (sin(φ), -sin(θ)*cos(φ), cos(θ)*cos(φ))",
-    a_plus="b: (cos(θ)*sin(φ), 0, cos(φ))", a_minus="c: (sin(θ)*sin(φ), -cos(φ), 0)",
-    b="p(0) = (sin(θ), 0, cos(θ)); q(0) = (cos(θ)*cos(φ), sin(φ), -sin(θ)*cos(φ))",
-    b_plus="c: (cos(φ), cos(θ)*sin(φ), 0)", b_minus="a: (0, sin(θ)*sin(φ), -cos(φ))",
-    c="p(0) = (cos(θ), sin(θ), 0); q(0) = (-sin(θ)*cos(φ), cos(θ)*cos(φ), sin(φ))",
-    c_plus="a: (0, cos(φ), cos(θ)*sin(φ))", c_minus="b: (-cos(φ), 0, sin(θ)*sin(φ))")
-
-TRIG = sp.symbols("cθ sθ cφ sφ")
-
-
-def trig_vector(text: str) -> sp.Matrix:
-    """A printed vector "(…, …, …)" in sin/cos of θ, φ as a polynomial vector in cθ, sθ, cφ, sφ."""
-    th, ph = sp.symbols("θ φ")
-    e = sp.sympify(text.strip(), locals={"θ": th, "φ": ph}, rational=True)
-    ct, st, cp, spp = TRIG
-    rules = {sp.cos(th): ct, sp.sin(th): st, sp.cos(ph): cp, sp.sin(ph): spp}
-    return sp.Matrix([sp.sympify(z).subs(rules) for z in e])
+# The six printed cases (l. 881-929), transcribed once in proofs/reduction_identities.py (S7.1).
+PRINTED_S7 = {**{f"p0_{c}": I.CONTACT_P0[c] for c in LETTERS}, **{f"q0_{c}": I.CONTACT_Q0[c] for c in LETTERS},
+              **{key: I.SIX_CASES[f"{c}, {I.RANGE[s]}"] for key, (c, s) in I.CASE_KEYS.items()}}
 
 
 def engine_is_printed(printed: dict) -> list[Check]:
-    """The engine's six cases (certify.reduction.P0, Q0, CASES) are the printed ones,
-    polynomial by polynomial."""
+    """The engine's six cases (certify.reduction.P0, Q0, CASES) are the printed ones:
+    the same p(0), q(0), next pair and p(t1), as polynomials in cos, sin of θ, φ."""
+    args = (T.cθ, T.sθ, T.cφ, T.sφ)
     checks = []
-    for L in LETTERS:
-        p0, q0 = (part.split("=", 1)[1] for part in printed[L].split(";"))
-        ok = (trig_vector(p0) == sp.Matrix(R.P0[L](*TRIG[:2])) and
-              (trig_vector(q0) - sp.Matrix(R.Q0[L](*TRIG))).applyfunc(sp.expand) == sp.zeros(3, 1))
-        for s, name in ((1, "plus"), (-1, "minus")):
-            nxt, vec = printed[f"{L}_{name}"].split(":", 1)
-            j, p1 = R.CASES[(L, s)]
-            ok = ok and nxt.strip() == j and (trig_vector(vec) - sp.Matrix(p1(*TRIG))).applyfunc(sp.expand) == sp.zeros(3, 1)
-        checks.append(Check(f"contact {L}: the map steps with the printed p(0), q(0), next contact and p(t1)", ok,
-                            [f"`{printed[L]}`; cos φ > 0: `{printed[L + '_plus']}`; cos φ < 0: `{printed[L + '_minus']}`"]))
+    for c in LETTERS:
+        ok = (T.vector(printed[f"p0_{c}"]) == sp.Matrix(R.P0[c](*args[:2])) and
+              (T.vector(printed[f"q0_{c}"]) - sp.Matrix(R.Q0[c](*args))).applyfunc(sp.expand) == sp.zeros(3, 1))
+        for key, (c2, s) in I.CASE_KEYS.items():
+            if c2 != c:
+                continue
+            pair, _K, vec, _radicand = (x.strip() for x in printed[key].split("|"))
+            j, p1 = R.CASES[(c, s)]
+            ok = ok and I.PAIR.get(pair) == j and \
+                (T.vector(vec) - sp.Matrix(p1(*args))).applyfunc(sp.expand) == sp.zeros(3, 1)
+        checks.append(Check(f"contact {c}: the map steps with the printed p(0), q(0), next pair and p(t1)", ok,
+                            [f"`{printed[k]}`" for k in (f"p0_{c}", f"q0_{c}", f"{c}_pos", f"{c}_neg")]))
     return checks
 
 
@@ -228,32 +216,21 @@ def trigonometric_map_agrees_with_dynamics(section4_data, **printed):
 
 
 # ---------------------------------------------------------------- S8.2
-PRINTED_S8 = dict(
-    u0="p(0) ∧ q(0)", orientation="a: y, b: z, c: x",
-    to_b="[u(0) ∧ e_y] ∧ [B(u(0) ∧ [e_x ∧ u(0)])]",
-    to_c="[u(0) ∧ e_y] ∧ [C(u(0) ∧ [e_x ∧ u(0)])]")
-AXES = {"x": 0, "y": 1, "z": 2}
-
-
-def orientation_of(text: str) -> dict:
-    """"a: y, b: z, c: x" as {letter: axis index}."""
-    return {k.strip(): AXES[v.strip()] for k, v in (item.split(":") for item in text.split(","))}
+# transcribed once in proofs/reduction_identities.py (S8.1)
+PRINTED_S8 = dict(orientation=I.ORIENTATION, to_b=I.TRILINEAR_B, to_c=I.TRILINEAR_C)
 
 
 @certificate("S8.2", "l. 931-987",
              "The vectorial reduction reproduces the next collision of the particle system: u(0) = p(0) ∧ q(0), "
              "the printed trilinear formulas give u(1) ∝ p(1) ∧ q(1), with e_t · u(k) ≥ 0.",
              needs=["section4_data"], printed=PRINTED_S8)
-def vectorial_map_agrees_with_dynamics(section4_data, u0, orientation, to_b, to_c):
+def vectorial_map_agrees_with_dynamics(section4_data, orientation, to_b, to_c):
     """At each collision k of the exact runs, u(k) = p(k) ∧ q(k) (exact); the trilinear
     formula gives ũ(k+1), which must be a positive multiple of p(k+1) ∧ q(k+1), the
     normal of the physical plane with the printed orientation.  The printed formulas
     are for the contact a; the other contacts use the relabelled formula
     (:func:`certify.reduction.vectorial_step`, "in a similar manner", l. 987)."""
-    t = orientation_of(orientation)
-    if u0 != "p(0) ∧ q(0)":                 # the only other reading, q ∧ p, reverses u
-        section4_data = [Datum(d.r, d.letter, d.runs, [tuple(-z for z in n) for n in d.normals], d.planes, d.orbit)
-                         for d in section4_data]
+    t = {c: [k for k in range(3) if e[k]][0] for c, e in I.orientation_axes(orientation).items()}
     formulas = {"b": R.formula(to_b), "c": R.formula(to_c)}
     tally = {"a→b": [0, 0], "a→c": [0, 0], "relabelled": [0, 0]}
     oriented = [0, 0]
@@ -275,8 +252,8 @@ def vectorial_map_agrees_with_dynamics(section4_data, u0, orientation, to_b, to_
                Check("contacts b and c: the relabelled formula [u ∧ e_j] ∧ [K_j(u ∧ [e_i ∧ u])] ∝ p(1) ∧ q(1)",
                      ok["relabelled"], evidence[2:])]
     corrected = []
-    if not ok["a→c"] and "e_y" in to_c:
-        fixed = R.formula(to_c.replace("e_y", "e_z", 1))
+    if not ok["a→c"] and "ey" in to_c:
+        fixed = R.formula(to_c.replace("ey", "ez", 1))
         n = good = 0
         for d in section4_data:
             contacts = [d.letter] + d.runs[0].events
@@ -287,7 +264,7 @@ def vectorial_map_agrees_with_dynamics(section4_data, u0, orientation, to_b, to_
                     good += R.cross(ut, u1) == (0, 0, 0) and R.dot(ut, u1) > 0
         corrected = [printed[0], printed[1],
                      Check("contact a, next c, with p(1) ∝ u(0) ∧ e_z (as in l. 962): "
-                           "`[u(0) ∧ e_z] ∧ [C(u(0) ∧ [e_x ∧ u(0)])]` ∝ p(1) ∧ q(1), positively",
+                           f"`{to_c.replace('ey', 'ez', 1)}` ∝ p(1) ∧ q(1), positively",
                            n > 0 and good == n, [f"{good} of {n} collisions"]), printed[3]]
     return conclude(printed, corrected)
 
