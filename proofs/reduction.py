@@ -95,12 +95,6 @@ def section4_data() -> list[Datum]:
     return [datum(rng) for _ in range(N_DATA)]
 
 
-def states(run: sim.Run):
-    """(contact, p, q) right after each collision of an exact run (single letters)."""
-    for e, s in zip(run.events, run.states[1:]):
-        yield e, s.p, s.q
-
-
 def growth(data: list[Datum]) -> list[str]:
     """Bit sizes along the longest runs: the physical state (p, q, t) and the normal."""
     def bits(z):

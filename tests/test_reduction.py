@@ -158,3 +158,18 @@ def test_admissible_words_and_blocks():
     assert not P.parses("babcb", ["ab", "cb", "acb", "cab"])
     assert P.offsets(P.PRINTED_S10["window"]) == {2, 3}
     assert P.implication(P.PRINTED_S9["cac"]) == ("ca", "c")
+
+
+def test_conversions_round_trip():
+    """trigonometric → vectorial → projective → trigonometric: on rational points of
+    the circles (cos θ, sin θ) = (3/5, 4/5), (cos φ, sin φ) = (∓5/13, 12/13), u = p(0) ∧ q(0)
+    is exact, its Plane has the contact's orientation, and angles() gives θ, φ back."""
+    for L in LETTERS:
+        for cp in (Q(5, 13), Q(-5, 13)):
+            A = R.Angles(L, Q(3, 5), Q(4, 5), cp, Q(12, 13))
+            P = R.canonical(L, A.u())
+            assert R.primitive(A.u()) == P.n                  # the printed orientation e_t · u > 0
+            with precision(128):
+                B = R.angles(P)
+            assert all(flint.arb(x).overlaps(y) for x, y in ((A.ct, B.ct), (A.st, B.st), (A.cp, B.cp), (A.sp, B.sp)))
+            assert R.next_letter(P) == R.CASES[(L, 1 if cp > 0 else -1)][0]
