@@ -163,6 +163,16 @@ class Context:
         return self.values[name]
 
 
+def altered(id: str, name: str, old: str, new: str) -> dict:
+    """Overrides for :func:`run_certificate` replacing the first ``old`` by ``new`` in
+    the printed text ``name`` of certificate ``id``: a mutated print, which must turn
+    the certificate FAIL.  ValueError when ``old`` is not in that text."""
+    text = CERTIFICATES[id].printed[name]
+    if old not in text:
+        raise ValueError(f"{old!r} not in the printed {name} of {id}")
+    return {name: text.replace(old, new, 1)}
+
+
 def run_certificate(cert: Certificate, ctx: Context | None = None,
                     overrides: dict | None = None) -> Outcome:
     """Run one certificate; any exception is a FAIL with its message as evidence.

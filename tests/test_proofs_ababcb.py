@@ -2,7 +2,7 @@
 is altered (a coefficient, a digit, an inequality direction, a sign, a branch)."""
 import pytest
 
-from certify.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, load_all, run_certificate
+from certify.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
 
 load_all()
 CTX = Context()          # shared quantities computed once for the whole module
@@ -10,12 +10,6 @@ CTX = Context()          # shared quantities computed once for the whole module
 
 def outcome(id, **overrides):
     return run_certificate(CERTIFICATES[id], CTX, overrides or None)
-
-
-def altered(id, name, old, new):
-    text = CERTIFICATES[id].printed[name]
-    assert old in text, f"{old!r} not in the printed {name} of {id}"
-    return {name: text.replace(old, new, 1)}
 
 
 EXPECTED = {"M1": PASS, "M2": PASS, "M3": PASS, "M4": PASS, "T1": PASS, "T2": PASS, "T3": PASS, "T4": PASS,

@@ -5,7 +5,7 @@ import sympy as sp
 
 from certify import trig as T
 from certify.poly import lam, r
-from certify.runner import CERTIFICATES, ERRATUM, FAIL, PASS, load_all, run_certificate
+from certify.runner import CERTIFICATES, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
 from certify.trig import cθ, cφ, sθ, sφ
 
 load_all()
@@ -20,12 +20,6 @@ def outcome(id, **overrides):
             _RUNS[id] = run_certificate(CERTIFICATES[id])
         return _RUNS[id]
     return run_certificate(CERTIFICATES[id], overrides=overrides)
-
-
-def altered(id, name, old, new):
-    text = CERTIFICATES[id].printed[name]
-    assert old in text, f"{old!r} not in the printed {name} of {id}"
-    return {name: text.replace(old, new, 1)}
 
 
 # ---------------------------------------------------------------- the engine
