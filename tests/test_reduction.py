@@ -26,7 +26,8 @@ def outcome(id, **overrides):
 EXPECTED = {"S6": PASS, "S7.2": PASS, "S8.2": ERRATUM, "S9.2": PASS, "S10": ERRATUM, "S11": PASS}
 MUTATIONS = {
     "S6": [altered("S6", "B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]"),      # B no longer fixes {y = 0}
-           altered("S6", "C", "[0, 0, -r]", "[0, 1, -r]")],
+           altered("S6", "C", "[0, 0, -r]", "[0, 1, -r]"),
+           altered("S6", "A", "[[-r, 0, 0]", "[[r, 0, 0]")],                   # a column that A does not fix
     "S7.2": [altered("S7.2", "a_pos", "2-3", "3-4"), altered("S7.2", "c_neg", "sin(θ)*sin(φ)", "cos(θ)*sin(φ)"),
              altered("S7.2", "q0_b", "-sin(θ)*cos(φ)", "sin(θ)*cos(φ)")],
     "S8.2": [altered("S8.2", "to_b", "ey", "ez"), altered("S8.2", "orientation", "a: y", "a: z"),
@@ -45,6 +46,11 @@ def test_certificate_as_printed(id):
 @pytest.mark.parametrize("id,k", [(id, k) for id, ms in MUTATIONS.items() for k in range(len(ms))])
 def test_altered_statement_fails(id, k):
     assert outcome(id, **MUTATIONS[id][k]).status == FAIL
+
+
+def test_every_certificate_of_this_part_is_mutated():
+    ours = {c.id for c in CERTIFICATES.values() if c.module == "proofs.reduction"}
+    assert ours == set(MUTATIONS) == set(EXPECTED)
 
 
 def test_s8_erratum_is_the_c_formula():
