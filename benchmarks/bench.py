@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:  # run as a script from a source checkout
     sys.path.insert(0, str(ROOT))
 
-from certify import runner  # noqa: E402
+from certify.run import runner  # noqa: E402
 
 HEAVIEST = 5
 

@@ -27,9 +27,9 @@ if str(ROOT) not in sys.path:  # run as a script from a source checkout
 
 import flint  # noqa: E402
 
-from certify import reduction as R  # noqa: E402
-from certify import simulate as sim  # noqa: E402
-from certify.balls import precision  # noqa: E402
+from certify.dynamics import reduction as R  # noqa: E402
+from certify.dynamics import simulate as sim  # noqa: E402
+from certify.algebra.balls import precision  # noqa: E402
 
 Q = flint.fmpq
 R_PHYS = Q(1, 20)

@@ -29,9 +29,10 @@ import traceback
 from contextlib import nullcontext
 from pathlib import Path
 
-from certify import figures, particles, progress, report, runner
-from certify.files import ensure_writable, read_text_or_none
-from certify.runner import FAIL, UsageError
+from certify.dynamics import particles
+from certify.errors import UsageError
+from certify.run import FAIL, figures, progress, report, runner
+from certify.run.files import ensure_writable, read_text_or_none
 
 DEFAULT_OUT = Path("reports")
 MAX_DIGITS = 1000             # particles --digits

@@ -8,15 +8,13 @@ Branches: 0 = upper (largest real eigenvalue), 1 = middle, 2 = lower.
 import flint
 import sympy as sp
 
-from certify.algebraic import Algebraic, sign_intervals
-from certify.branches import Condition, FixedPoint, Spectrum
-from certify.dynamics import candidate, reduce_mod, velocities
-from certify.elimination import eliminate, show_factored_int
-from certify.feasibility import Analysis, fmt, prefix_requirements
-from certify.model import characteristic_polynomial, word_matrix, A as A_, B as B_, C as C_
-from certify.poly import to_field, to_fmpq_poly, discriminant_lambda, lam, parse, primitive, r, show, to_fmpz_poly, u, v, x
-from certify.runner import Check, certificate, conclude, quantity
-from certify.sturm import count_roots, flint_real_roots
+from certify.algebra import (Algebraic, Condition, FixedPoint, Spectrum, count_roots, discriminant_lambda,
+    eliminate, flint_real_roots, lam, parse, primitive, r, show, show_factored_int, sign_intervals, to_field,
+    to_fmpq_poly, to_fmpz_poly, u, v, x)
+from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characteristic_polynomial, reduce_mod,
+    velocities, word_matrix)
+from certify.patterns import Analysis, fmt, prefix_requirements
+from certify.run import Check, certificate, conclude, quantity
 
 UPPER, MIDDLE, LOWER = 0, 1, 2
 BRANCH = {UPPER: "upper", MIDDLE: "middle", LOWER: "lower"}
@@ -287,7 +285,7 @@ def repeated_eigenvalue(spectrum, quadratic, r0, digits, repeated_sign):
 def branches_of_the_spectrum(spectrum, P0_text, r1, positive_up_to):
     """Number of real eigenvalues per cell (Sturm at one sample per cell, constant
     between the zeros of Disc_λ(cp)); the sign of λ on each branch."""
-    from certify.plots import spectrum_figures
+    from certify.run import spectrum_figures
     rs, rr1 = unique_root(P0_text), r1_of(r1)
     T = table(spectrum, "λ", lam, 0, 1)
     three = all((len(c.branches) == 3) == (c.hi <= rs) for c in T.cells)
@@ -414,7 +412,7 @@ def keeps_sign_at(T, branch, point) -> bool:
              printed=dict(amd=AMD_PRINTED, r1=R1_PRINTED, P1_text=P1_PRINTED, at_r1="middle", at_r2="upper"))
 def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
     """The sign table of a-d over ]0,1[ (Figure 3.3)."""
-    from certify.plots import sign_chart
+    from certify.run import sign_chart
     rr1, rr2 = r1_of(r1), unique_root(P1_text)
     T = table(spectrum, "a-d", parse(amd), 0, 1)
     k1, k2 = {v: k for k, v in BRANCH.items()}.get(at_r1, -1), {v: k for k, v in BRANCH.items()}.get(at_r2, -1)
@@ -434,7 +432,7 @@ def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
 def sign_of_b(cp, spectrum, b, quartic, r1):
     """Elimination both ways, the quartic's real roots counted both ways, and the
     sign table of b (Figure 3.4)."""
-    from certify.plots import sign_chart
+    from certify.run import sign_chart
     rr1 = r1_of(r1)
     Q4 = to_fmpz_poly(parse(quartic))
     T = table(spectrum, "b", parse(b), 0, 1)

@@ -25,14 +25,11 @@ from dataclasses import dataclass
 
 import flint
 
-from certify import simulate as sim
-from certify.algebraic import Algebraic
-from certify.balls import GUARD, precision
-from certify.branches import Condition, ball_value
-from certify.dynamics import candidate, fixed_point_ball
-from certify.model import check_word
-from certify.poly import from_flint, lam, parse, show, to_fmpq
-from certify.runner import Check, certificate, conclude
+from certify.algebra import (Algebraic, Condition, GUARD, ball_value, from_flint, lam, parse, precision,
+    show, to_fmpq)
+from certify.dynamics import simulate as sim
+from certify.dynamics import candidate, check_word, fixed_point_ball
+from certify.run import Check, certificate, conclude
 from proofs.ababcb import A_PRINTED, B_PRINTED, C_PRINTED, D_PRINTED, U_PRINTED, V_PRINTED
 
 Q = flint.fmpq

@@ -38,14 +38,11 @@ from __future__ import annotations
 import flint
 import sympy as sp
 
-from certify import simulate as sim
-from certify.algebraic import Algebraic
-from certify.branches import simplest_between
-from certify.dynamics import K, candidate, run_word
-from certify.feasibility import BRANCH_NAMES, Analysis, Requirement, fmt, prefix_requirements
-from certify.model import INDEX, collision_matrix
-from certify.poly import lam, show
-from certify.runner import Check, certificate, conclude
+from certify.algebra import Algebraic, lam, show, simplest_between
+from certify.dynamics import simulate as sim
+from certify.dynamics import INDEX, K, candidate, collision_matrix, run_word
+from certify.patterns import Analysis, BRANCH_NAMES, Requirement, fmt, prefix_requirements
+from certify.run import Check, certificate, conclude
 
 Q = flint.fmpq
 

@@ -22,14 +22,11 @@ import re
 import flint
 import sympy as sp
 
-from certify.algebraic import Algebraic
-from certify.branches import Condition
-from certify.elimination import eliminate, show_factored_int
-from certify.poly import RING, lam, parse, resultant_lambda, show, to_fmpz_poly
-from certify.runner import Check, certificate, conclude
+from certify.algebra import (Algebraic, Condition, Lf, RING, eliminate, lam, parse, resultant_lambda, show,
+    show_factored_int, to_fmpz_poly, to_ring)
 from certify.dynamics import K, candidate
-from certify.feasibility import BRANCH_NAMES, Analysis, Requirement, fmt, prefix_requirements, vanishes_on_branch
-from certify.poly import Lf, to_ring
+from certify.patterns import Analysis, BRANCH_NAMES, Requirement, fmt, prefix_requirements, vanishes_on_branch
+from certify.run import Check, certificate, conclude
 
 Q = flint.fmpq
 

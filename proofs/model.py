@@ -10,11 +10,11 @@ import random
 import flint
 import sympy as sp
 
-from certify import simulate as sim
+from certify.algebra import parse, r, show, to_fmpq
+from certify.dynamics import simulate as sim
+from certify.dynamics import INDEX, LETTERS, collision_matrix
+from certify.run import Check, certificate, conclude
 
-from certify.model import INDEX, LETTERS, collision_matrix
-from certify.poly import parse, r, show, to_fmpq
-from certify.runner import Check, certificate, conclude
 
 A_PRINTED = "[[-r, 0, 0], [(1+r)/2, 1, 0], [0, 0, 1]]"
 B_PRINTED = "[[1, (1+r)/2, 0], [0, -r, 0], [0, (1+r)/2, 1]]"

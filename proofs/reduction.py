@@ -21,13 +21,12 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from certify import reduction as R
-from certify import simulate as sim
-from certify import trig as T
-from certify.balls import precision
-from certify.model import INDEX, LETTERS
-from certify.poly import r, show
-from certify.runner import Check, certificate, conclude, quantity
+from certify.algebra import trig as T
+from certify.algebra import precision, r, show
+from certify.dynamics import reduction as R
+from certify.dynamics import simulate as sim
+from certify.dynamics import INDEX, LETTERS
+from certify.run import Check, certificate, conclude, quantity
 from proofs import reduction_identities as I
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 

@@ -12,12 +12,14 @@ Line numbers in the checks are those of the paper's file.
 """
 import sympy as sp
 
-from certify import trig as T
-from certify.model import INDEX, LETTERS, collision_matrix
-from certify.poly import lam
-from certify.runner import Check, certificate, conclude
-from certify.trig import cθ, cφ, sθ, sφ
+from certify.algebra import trig as T
+from certify.algebra import lam
+from certify.dynamics import INDEX, LETTERS, collision_matrix
+from certify.run import Check, certificate, conclude
+
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
+
+cθ, cφ, sθ, sφ = T.cθ, T.cφ, T.sθ, T.sφ  # cos θ, cos φ, sin θ, sin φ
 
 SECTION2 = {"A": matrix(A_PRINTED), "B": matrix(B_PRINTED), "C": matrix(C_PRINTED)}
 UNIT = {"ex": T.E_X, "ey": T.E_Y, "ez": T.E_Z}

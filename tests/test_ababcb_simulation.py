@@ -2,9 +2,9 @@
 import flint
 import pytest
 
-from certify.runner import CERTIFICATES, FAIL, PASS, load_all, run_certificate
+from certify.run.runner import CERTIFICATES, FAIL, PASS, load_all, run_certificate
 from proofs import ababcb_simulation as T
-from certify.balls import precision
+from certify.algebra.balls import precision
 
 load_all()
 

@@ -3,10 +3,10 @@ import flint
 import pytest
 import sympy as sp
 
-from certify.poly import parse
-from certify.runner import CERTIFICATES, FAIL, PASS, load_all, run_certificate
-from certify.dynamics import candidate
-from certify.feasibility import Analysis, prefix_requirements
+from certify.algebra.poly import parse
+from certify.run.runner import CERTIFICATES, FAIL, PASS, load_all, run_certificate
+from certify.dynamics.words import candidate
+from certify.patterns.feasibility import Analysis, prefix_requirements
 from proofs import abcab as T
 
 load_all()
@@ -31,7 +31,7 @@ def test_t27_evidence_names_the_region(outcome):
 def test_t27_region_ends_exactly_at_3_minus_2_sqrt2():
     """Where abcab's candidate realises a, b: upper and middle branch, x₊, r in ]0, 3-2√2[
     (c vanishes at 3-2√2 and changes sign)."""
-    from certify.algebraic import Algebraic
+    from certify.algebra.algebraic import Algebraic
     c = candidate("abcab")
     feas, _ = prefix_requirements("abcab", 2, c.q0, c.steps, c.q0_other)
     an = Analysis(c)

@@ -24,8 +24,8 @@ import sympy as sp
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from certify.algebraic import Algebraic, sign_at
-from certify.sturm import count_roots, flint_real_roots, isolate, refine, sturm_sequence
+from certify.algebra.algebraic import Algebraic, sign_at
+from certify.algebra.sturm import count_roots, flint_real_roots, isolate, refine, sturm_sequence
 
 Q = flint.fmpq
 X = sp.Symbol("x")

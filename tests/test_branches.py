@@ -21,11 +21,11 @@ import sympy as sp
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from certify import numberfield as nf
-from certify.algebraic import Algebraic
-from certify.branches import Condition, FixedPoint, Spectrum
-from certify.elimination import Elimination, eliminate
-from certify.poly import lam, r, x
+from certify.algebra import numberfield as nf
+from certify.algebra.algebraic import Algebraic
+from certify.algebra.branches import Condition, FixedPoint, Spectrum
+from certify.algebra.elimination import Elimination, eliminate
+from certify.algebra.poly import lam, r, x
 
 Q = flint.fmpq
 HALF = sp.Rational(1, 2)

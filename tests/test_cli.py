@@ -16,8 +16,16 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import pytest
 
-from certify import cli, figures, progress, report, runner
-from certify.runner import OBSERVED, Certificate, Check, Outcome, conclude
+from certify import cli
+
+from certify.run import figures
+
+from certify.run import progress
+
+from certify.run import report
+
+from certify.run import runner
+from certify.run.runner import OBSERVED, Certificate, Check, Outcome, conclude
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -4,10 +4,10 @@ import flint
 import pytest
 import sympy as sp
 
-from certify.branches import simplest_between
-from certify.dynamics import candidate, check_position_map
-from certify.feasibility import mod_cp, prefix_requirements
-from certify.poly import parse
+from certify.algebra.branches import simplest_between
+from certify.dynamics.words import candidate, check_position_map
+from certify.patterns.feasibility import mod_cp, prefix_requirements
+from certify.algebra.poly import parse
 
 Q = flint.fmpq
 

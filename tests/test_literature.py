@@ -1,7 +1,7 @@
 """T26 (l. 323-325): 5-2√6 is also the (upper stability) threshold of (ab)^3(cb)^3."""
 import pytest
 
-from certify.runner import CERTIFICATES, FAIL, PASS, load_all, run_certificate
+from certify.run.runner import CERTIFICATES, FAIL, PASS, load_all, run_certificate
 from proofs import literature as T
 
 load_all()

@@ -12,11 +12,13 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from certify import cli, particles
-from certify import simulate as sim
-from certify.model import INDEX, collide, collide_particles
-from certify.particles import History, simulate
-from certify.runner import UsageError
+from certify import cli
+
+from certify.dynamics import particles
+from certify.dynamics import simulate as sim
+from certify.dynamics.model import INDEX, collide, collide_particles
+from certify.dynamics.particles import History, simulate
+from certify.errors import UsageError
 
 Q = flint.fmpq
 ROOT = Path(__file__).resolve().parent.parent

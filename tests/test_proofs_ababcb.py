@@ -2,7 +2,7 @@
 is altered (a coefficient, a digit, an inequality direction, a sign, a branch)."""
 import pytest
 
-from certify.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
+from certify.run.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
 
 load_all()
 CTX = Context()          # shared quantities computed once for the whole module

@@ -7,11 +7,11 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings, strategies as st
 
-from certify import reduction as R
-from certify import simulate as sim
-from certify.balls import precision
-from certify.model import INDEX, LETTERS, collision_matrix
-from certify.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
+from certify.dynamics import reduction as R
+from certify.dynamics import simulate as sim
+from certify.algebra.balls import precision
+from certify.dynamics.model import INDEX, LETTERS, collision_matrix
+from certify.run.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
 from proofs import reduction as P
 
 load_all()

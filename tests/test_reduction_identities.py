@@ -3,10 +3,10 @@ certificates of proofs/reduction_identities.py, each with a mutation that must t
 import pytest
 import sympy as sp
 
-from certify import trig as T
-from certify.poly import lam, r
-from certify.runner import CERTIFICATES, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
-from certify.trig import cθ, cφ, sθ, sφ
+from certify.algebra import trig as T
+from certify.algebra.poly import lam, r
+from certify.run.runner import CERTIFICATES, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
+from certify.algebra.trig import cθ, cφ, sθ, sφ
 
 load_all()
 OURS = {c.id for c in CERTIFICATES.values() if c.module == "proofs.reduction_identities"}

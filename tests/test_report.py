@@ -7,8 +7,8 @@ import re
 
 import pytest
 
-from certify import report
-from certify.runner import ERRATUM, FAIL, OBSERVED, PASS, Certificate, Check, Outcome, conclude
+from certify.run import report
+from certify.run.runner import ERRATUM, FAIL, OBSERVED, PASS, Certificate, Check, Outcome, conclude
 
 
 def cert(cid, statement="a statement", line="l. 1"):

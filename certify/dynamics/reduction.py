@@ -33,7 +33,8 @@ from functools import lru_cache
 
 import flint
 
-from .balls import precision
+from certify import caches
+from certify.algebra.balls import precision
 from .model import INDEX, LETTERS, collide
 from .simulate import Undecided, exact, sign
 
@@ -86,6 +87,9 @@ def cofactor(letter: str, r: flint.fmpq) -> tuple:
         for z in col:
             den = den.lcm(z.q)
     return tuple(tuple((cols[m][k] * den).p for m in range(3)) for k in range(3))
+
+
+caches.register(cofactor.cache_clear)
 
 
 def cofactor_apply(letter: str, r, n) -> tuple:

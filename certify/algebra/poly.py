@@ -18,12 +18,16 @@ from sympy.polys.fields import FracElement, field
 from sympy.polys.orderings import lex
 from sympy.polys.rings import PolyElement
 
+from certify import caches
+
 r, lam, x, u, v, s = sp.symbols("r λ x u v s")
 
 # Q(λ, r, x, u, v, s) as sparse rational functions (SymPy's polys), λ first in lex
 # order, so that division by a cp monic in λ is the remainder in λ over Q(r).
 FIELD, Lf, Rf, Xf, Uf, Vf, Sf = field("λ,r,x,u,v,s", sp.QQ, lex)
 RING = FIELD.ring
+caches.register(sp.core.cache.clear_cache)  # SymPy's own memo of expressions
+
 NAMES = {"r": r, "λ": lam, "lam": lam, "lambda": lam, "la": lam, "x": x, "u": u, "v": v}
 
 

@@ -30,9 +30,9 @@ from typing import Callable, Sequence
 
 import flint
 
-from .balls import precision
+from certify.algebra.balls import precision
 from .model import INDEX, LETTERS, collide
-from .poly import to_fmpq
+from certify.algebra.poly import to_fmpq
 
 
 class Undecided(ArithmeticError):

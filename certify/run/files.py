@@ -13,7 +13,7 @@ import tempfile
 from contextlib import contextmanager, suppress
 from pathlib import Path
 
-from certify.runner import UsageError
+from certify.errors import UsageError
 
 # The process umask, read once: mkstemp creates files readable by the owner
 # only, and a report should get the same permissions as any other new file.

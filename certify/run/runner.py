@@ -18,12 +18,11 @@ import traceback
 from dataclasses import dataclass, field
 from typing import Callable
 
+from certify import caches
+from certify.errors import UsageError
+
 PASS, ERRATUM, FAIL, OBSERVED = "PASS", "ERRATUM", "FAIL", "OBSERVED"
 STATUSES = (PASS, ERRATUM, FAIL, OBSERVED)
-
-
-class UsageError(Exception):
-    """A user mistake (unknown id, bad option, unwritable output): exit code 2."""
 
 
 @dataclass
@@ -111,11 +110,17 @@ def quantity(name: str, needs=()):
     return wrap
 
 
+PROOFS = "proofs"  # the package of certificates, above every layer: loaded by name, as a plug-in
+
+
 def load_all() -> dict[str, Certificate]:
-    """Import every module of ``proofs`` so that their certificates register."""
-    import proofs
-    for mod in pkgutil.iter_modules(proofs.__path__):
-        importlib.import_module(f"proofs.{mod.name}")
+    """Import every module of the ``proofs`` package so that their certificates register.
+
+    ``proofs`` sits on top of the layers (it imports the engine's faces), so the runner
+    names it rather than importing it: the layering contract stays one-way."""
+    package = importlib.import_module(PROOFS)
+    for mod in pkgutil.iter_modules(package.__path__):
+        importlib.import_module(f"{PROOFS}.{mod.name}")
     return CERTIFICATES
 
 
@@ -195,17 +200,9 @@ def run_certificate(cert: Certificate, ctx: Context | None = None,
 
 
 def reset_caches() -> None:
-    """Forget what the engine memoises across runs (the candidates of words with their
-    branches and sign tables, the conditions, the cofactor matrices, SymPy's cache): the next run is cold."""
-    import sympy.core.cache
-
-    from .branches import Condition
-    from .dynamics import candidate
-    from .reduction import cofactor
-    candidate.cache_clear()
-    cofactor.cache_clear()
-    Condition._cache.clear()
-    sympy.core.cache.clear_cache()
+    """Forget what the engine memoises across runs (every cache registered with
+    :func:`certify.caches.register`): the next run is cold."""
+    caches.reset()
 
 
 def run(ids=None, progress=None) -> tuple[list[tuple[Certificate, Outcome]], dict]:

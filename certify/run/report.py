@@ -21,8 +21,8 @@ from itertools import zip_longest
 from pathlib import Path
 from urllib.parse import quote
 
-from certify.files import write_atomic
-from certify.runner import ERRATUM, FAIL, OBSERVED, PASS, STATUSES
+from certify.run.files import write_atomic
+from certify.run.runner import ERRATUM, FAIL, OBSERVED, PASS, STATUSES
 
 PAPER = ("T. Dolmaire and E. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
          "particles: asymmetric collision sequences and spherical billiard reduction*, "

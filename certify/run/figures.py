@@ -3,7 +3,7 @@
 A certificate draws a matplotlib figure and hands it to :func:`save_figure`,
 then lists the returned name in its outcome::
 
-    from certify.figures import save_figure
+    from certify.run.figures import save_figure
 
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(rs, signs)
@@ -28,7 +28,7 @@ import matplotlib
 
 matplotlib.use("Agg")  # no screen needed, and the same pixels everywhere
 
-from certify.files import atomic_path  # noqa: E402
+from certify.run.files import atomic_path  # noqa: E402
 
 DPI = 110
 

@@ -18,10 +18,11 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
-from .balls import GUARD, precision
-from .branches import Condition, Spectrum, ball_value
+from certify import caches
+from certify.algebra.balls import GUARD, precision
+from certify.algebra.branches import Condition, Spectrum, ball_value
 from .model import INDEX, characteristic_polynomial, check_word, collide, collision_matrix, word_matrix
-from .poly import FIELD, Lf, RING, Rf, to_field, to_ring
+from certify.algebra.poly import FIELD, Lf, RING, Rf, to_field, to_ring
 
 K = FIELD
 
@@ -159,3 +160,7 @@ def candidate(word: str) -> Candidate:
     check_position_map(steps, abcd, cp)
     q0_other = [eigenvector(Mk, rows) for rows in ((0, 2), (1, 2))]
     return Candidate(word, M, cp, Spectrum(cp), q0, q0_other, abcd, steps)
+
+
+
+caches.register(candidate.cache_clear)

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 import flint
 import sympy as sp
 
+from certify import caches
 from . import numberfield as nf
 from .algebraic import Algebraic, to_fmpq
 from .balls import GUARD, decide, precision
@@ -120,6 +121,9 @@ class Condition:
         if self.delta is not None:
             out += [self.delta, self.c]
         return [p for p in out if not p.is_ground]
+
+
+caches.register(Condition._cache.clear)
 
 
 def _eval_terms(terms, Rp, Lp) -> flint.arb:

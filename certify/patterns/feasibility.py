@@ -18,11 +18,11 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from .algebraic import Algebraic
-from .branches import Condition, simplest_between
-from .dynamics import K, Candidate, run_word
-from .model import INDEX
-from .poly import RING, lam, to_field, to_ring
+from certify.algebra.algebraic import Algebraic
+from certify.algebra.branches import Condition, simplest_between
+from certify.dynamics.words import K, Candidate, run_word
+from certify.dynamics.model import INDEX
+from certify.algebra.poly import RING, lam, to_field, to_ring
 
 Q = flint.fmpq
 BRANCH_NAMES = ("upper", "middle", "lower")

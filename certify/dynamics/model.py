@@ -13,8 +13,8 @@ import re
 
 import sympy as sp
 
-from .poly import lam, r
-from .runner import UsageError
+from certify.algebra.poly import lam, r
+from certify.errors import UsageError
 
 LETTERS = "abc"
 INDEX = {"a": 0, "b": 1, "c": 2}          # the component p_i that vanishes at the collision

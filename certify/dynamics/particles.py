@@ -35,8 +35,8 @@ import flint
 
 from . import simulate as sim
 from .model import collide_particles
-from .poly import to_fmpq
-from .runner import UsageError
+from certify.algebra.poly import to_fmpq
+from certify.errors import UsageError
 
 Q = flint.fmpq
 NUMBER = re.compile(r"[+-]?(\d+(/\d+)?|\d+\.\d*|\.\d+)")

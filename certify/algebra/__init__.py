@@ -1,0 +1,36 @@
+"""Layer 1, exact algebra: polynomials over Q, Sturm sequences, real algebraic numbers,
+ball arithmetic, eliminations, identities in cos/sin, and certified signs on the
+eigenvalue branches of a matrix over Q(r).  It imports nothing of certify above the
+ground floor (:mod:`certify.errors`, :mod:`certify.caches`).
+
+- :mod:`.poly`: the paper's notation in (``parse``), python-flint out; Q[r, λ].
+- :mod:`.sturm`: our Sturm sequences, root counts and isolation over Q (checked
+  against python-flint's root isolation).
+- :mod:`.algebraic`: a real algebraic number as (minimal polynomial, isolating interval).
+- :mod:`.numberfield`: arithmetic in Q(α)[λ] for exact zero tests.
+- :mod:`.elimination`: elimination twice, by a Gröbner basis (SymPy) and a resultant (flint).
+- :mod:`.balls`: working precision of arb balls, and "double until decided".
+- :mod:`.trig`: identities in cos, sin of θ, φ, by two routes.
+- :mod:`.branches`: signs of conditions on the eigenvalue branches over r-intervals.
+"""
+from . import numberfield, trig
+from .algebraic import Algebraic, sign_at, sign_intervals
+from .balls import GUARD, decide, precision
+from .branches import Condition, FixedPoint, SignTable, Spectrum, ball_value, simplest_between
+from .elimination import Elimination, eliminate, show_factored_int
+from .poly import (FIELD, RING, Lf, Rf, discriminant_lambda, expr, from_flint, irreducible_factors, lam, parse,
+                   primitive, r, resultant_lambda, show, squarefree_part, to_field, to_fmpq, to_fmpq_poly,
+                   to_fmpz_poly, to_ring, u, v, x)
+from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_sequence
+
+__all__ = [
+    "numberfield", "trig",
+    "Algebraic", "sign_at", "sign_intervals",
+    "GUARD", "decide", "precision",
+    "Condition", "FixedPoint", "SignTable", "Spectrum", "ball_value", "simplest_between",
+    "Elimination", "eliminate", "show_factored_int",
+    "FIELD", "RING", "Lf", "Rf", "discriminant_lambda", "expr", "from_flint", "irreducible_factors", "lam",
+    "parse", "primitive", "r", "resultant_lambda", "show", "squarefree_part", "to_field", "to_fmpq",
+    "to_fmpq_poly", "to_fmpz_poly", "to_ring", "u", "v", "x",
+    "count_roots", "flint_real_roots", "isolate", "refine", "sturm_sequence",
+]

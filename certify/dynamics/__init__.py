@@ -1,0 +1,25 @@
+"""Layer 2, the models: the collision law and collision words (Section 2), the candidate
+of a word, the exact and ball simulators of the four particles, and the spherical
+billiard reduction (Section 4).  It imports only :mod:`certify.algebra` and the ground floor.
+
+- :mod:`.model`: the law, the matrices A, B, C, words and their matrices M_w, cp(M_w).
+- :mod:`.words`: the candidate of a word a…b: M_w, its branches, q(0), the position map.
+- :mod:`.simulate`: relative dynamics, exact (fmpq) and in balls (arb).
+- :mod:`.particles`: the four particles in absolute coordinates (``certify particles``).
+- :mod:`.reduction`: the reduction map, projective, vectorial and trigonometric.
+"""
+from . import particles, reduction, simulate
+from .model import (INDEX, LETTERS, A, B, C, characteristic_polynomial, check_word, collide, collide_particles,
+                    collision_matrix, word_matrix)
+from .simulate import MultipleCollision, Undecided
+from .words import (K, Candidate, candidate, check_position_map, eigenvector, fixed_point_ball, position_map,
+                    reduce_mod, run_word, velocities)
+
+__all__ = [
+    "particles", "reduction", "simulate",
+    "INDEX", "LETTERS", "A", "B", "C", "characteristic_polynomial", "check_word", "collide",
+    "collide_particles", "collision_matrix", "word_matrix",
+    "MultipleCollision", "Undecided",
+    "K", "Candidate", "candidate", "check_position_map", "eigenvector", "fixed_point_ball", "position_map",
+    "reduce_mod", "run_word", "velocities",
+]

@@ -1,0 +1,23 @@
+"""Layer 4, running and reporting: certificates and shared quantities (the runner), the
+report (REPORT.md, report.json), figures, plots of certified sign tables, atomic files
+and progress on a terminal.  It imports every layer below it.
+
+- :mod:`.runner`: ``@certificate``, ``@quantity``, ``conclude``, the run (serial or on
+  every core).
+- :mod:`.report`: outcomes in, Markdown and JSON out, and the staleness check.
+- :mod:`.figures`, :mod:`.plots`: saving figures reproducibly; the certified charts.
+- :mod:`.files`, :mod:`.progress`: atomic writes; progress bars on a terminal only.
+"""
+from . import figures, files, plots, progress, report, runner
+from .figures import save_figure
+from .plots import sign_chart, spectrum_figures
+from .runner import (CERTIFICATES, ERRATUM, FAIL, OBSERVED, PASS, STATUSES, Certificate, Check, Context, Outcome,
+                     altered, certificate, conclude, load_all, quantity, reset_caches, run, run_certificate, select)
+
+__all__ = [
+    "figures", "files", "plots", "progress", "report", "runner",
+    "save_figure", "sign_chart", "spectrum_figures",
+    "CERTIFICATES", "ERRATUM", "FAIL", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
+    "Outcome", "altered", "certificate", "conclude", "load_all", "quantity", "reset_caches", "run",
+    "run_certificate", "select",
+]
