@@ -3,12 +3,12 @@
     python benchmarks/bench.py [--repeat N]
     python -m certify bench [--repeat N]
 
-Each repetition calls :func:`certify.runner.run` over every certificate with a
+Each repetition calls :func:`certify.run.runner.run` over every certificate with a
 fresh context, so the shared quantities (M, cp(M), the branches, ...) are
 computed again each time.  No figure and no report is written.  The proofs
 modules (and SymPy, python-flint) are imported once before the clock starts.
 The engine's caches are emptied before each repetition
-(:func:`certify.runner.reset_caches`), so every repetition is a cold run.
+(:func:`certify.run.runner.reset_caches`), so every repetition is a cold run.
 
 Printed: the median and minimum total, the five heaviest certificates (median
 seconds, and the part spent computing shared quantities they were the first

@@ -10,7 +10,7 @@
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
-                                collisions and their times (certify.particles)
+                                collisions and their times (certify.dynamics.particles)
 
 Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
 1 when one FAILs (or, with ``all --check``, when the committed REPORT.md is

@@ -67,7 +67,7 @@ P1_T5_PRINTED = ("λ*(r^2 - 1)^2*(r^2 - 10*r + 1)/(-64*λ^2 + 4*(-r^5 + 9*r^4 - 
 @quantity("candidate")
 def ababcb_candidate():
     """M = BCBABA, cp(M), the branches, q(0) = (-1, u, v) from rows 1, 2 of M q = λ q,
-    the run a, b, a, b, c, b from p(0) = (1, 0, x), and f (certify.dynamics)."""
+    the run a, b, a, b, c, b from p(0) = (1, 0, x), and f (certify.dynamics.words)."""
     return candidate(WORD)
 
 
@@ -742,7 +742,7 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_
                           velocities=VELOCITIES_PRINTED, p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, r1=R1_PRINTED))
 def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     """Two routes.  (1) The exact region analysis of the computed candidate
-    (certify.feasibility): every inequality needed to realise ababcb — all the gaps,
+    (certify.patterns.feasibility): every inequality needed to realise ababcb — all the gaps,
     p_1(t_6) > 0 included, which the paper does not list — imposed on every branch
     and both fixed points over ]0,1[, critical values included.  (2) The printed
     formulas: x₊ > 0, u > 0, the five velocities < 0 and the two distances > 0 on the

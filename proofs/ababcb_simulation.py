@@ -9,7 +9,7 @@ self-similar datum of Theorem 3.1 is built from the printed formulas:
 * p(0) = (1, 0, x), x = x₊ = (a - d + √((a-d)² + 4bc))/(2c), a, b, c, d as printed
   (l. 291-300).
 
-The particles are then moved by ``certify.simulate`` in ball arithmetic: every
+The particles are then moved by ``certify.dynamics.simulate`` in ball arithmetic: every
 collision choice is proven (the smallest collision time strictly below the others),
 the precision is raised when a choice cannot be proven.  We check that the orbit
 repeats the word for the requested number of periods with q(t_6k) = λ^k q(0) and

@@ -27,11 +27,11 @@ conditions one at a time and keeps, per branch and fixed point, the exact set of
 where all hold (open intervals with algebraic ends, and points).  At a critical
 value the signs are decided by balls, or, where a quantity vanishes or has a pole,
 by the engine's exact zero test in Q(r_c)[λ]; where c = 0 the map f is affine and
-its fixed point b/(d - a) is used.  The dynamics itself (``certify.simulate``,
+its fixed point b/(d - a) is used.  The dynamics itself (``certify.dynamics.simulate``,
 balls) is run from the candidate at one rational r per piece as a cross-check.
 
 The candidate is built by :func:`certify.dynamics.candidate`, the regions by
-:class:`certify.feasibility.Analysis` (shared with ``proofs/literature.py``).
+:class:`certify.patterns.feasibility.Analysis` (shared with ``proofs/literature.py``).
 """
 from __future__ import annotations
 
@@ -116,7 +116,7 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
             run, prec = sim.run_certified(lambda pr: cand.balls(r0, R.branch, sigma, pr), m + 1)
             dynamic.append((R, r0, run.word))
     want = word[:m] + next
-    ev.append("the particle dynamics itself (certify.simulate, every collision proven in balls) from the candidate "
+    ev.append("the particle dynamics itself (certify.dynamics.simulate, every collision proven in balls) from the candidate "
               "at one rational r per piece: " + "; ".join(f"{BRANCH_NAMES[R.branch]} {R.fixed_point} r = {r0}: "
                                                           f"{w}" for R, r0, w in dynamic))
     checks += [

@@ -1,8 +1,8 @@
 """Section 4 on the dynamics (l. 839-1051): the spherical reduction against the
 particle system, Proposition 4.2, Corollary 4.3 and Remark 4.2.
 
-The particle system is :mod:`certify.simulate` in exact rationals (fmpq); the
-reduction map is :mod:`certify.reduction` in its three representations: projective
+The particle system is :mod:`certify.dynamics.simulate` in exact rationals (fmpq); the
+reduction map is :mod:`certify.dynamics.reduction` in its three representations: projective
 (exact normals in Z^3), vectorial (the printed trilinear formula, exact) and
 trigonometric (the printed six cases, certified balls).  The identities of the
 printed proofs are certified in ``proofs/reduction_identities.py``.
@@ -159,7 +159,7 @@ PRINTED_S7 = {**{f"p0_{c}": I.CONTACT_P0[c] for c in LETTERS}, **{f"q0_{c}": I.C
 
 
 def engine_is_printed(printed: dict) -> list[Check]:
-    """The engine's six cases (certify.reduction.P0, Q0, CASES) are the printed ones:
+    """The engine's six cases (certify.dynamics.reduction.P0, Q0, CASES) are the printed ones:
     the same p(0), q(0), next pair and p(t1), as polynomials in cos, sin of θ, φ."""
     args = (T.cθ, T.sθ, T.cφ, T.sφ)
     checks = []
@@ -226,7 +226,7 @@ def vectorial_map_agrees_with_dynamics(section4_data, orientation, to_b, to_c):
     formula gives ũ(k+1), which must be a positive multiple of p(k+1) ∧ q(k+1), the
     normal of the physical plane with the printed orientation.  The printed formulas
     are for the contact a; the other contacts use the relabelled formula
-    (:func:`certify.reduction.vectorial_step`, "in a similar manner", l. 987)."""
+    (:func:`certify.dynamics.reduction.vectorial_step`, "in a similar manner", l. 987)."""
     t = {c: [k for k in range(3) if e[k]][0] for c, e in I.orientation_axes(orientation).items()}
     formulas = {"b": R.formula(to_b), "c": R.formula(to_c)}
     tally = {"a→b": [0, 0], "a→c": [0, 0], "relabelled": [0, 0]}

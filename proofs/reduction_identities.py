@@ -1,7 +1,7 @@
 """Section 4 (l. 518-1035): the trigonometric identities of the spherical reduction.
 
 Every printed vector, time and chain of equalities is transcribed below as text, as it
-stands in the paper, and checked by :mod:`certify.trig` (each identity by a Gröbner
+stands in the paper, and checked by :mod:`certify.algebra.trig` (each identity by a Gröbner
 normal form modulo cos²+sin²−1 and by the Weierstrass substitution; signs by
 inspection of the factors under θ ∈ ]0, π/2[, sin φ > 0, 0 < r < 1 and the sign of
 cos φ).  Chains are written one member per line, each further line starting with
@@ -234,7 +234,7 @@ def matrices_are(letter: str, seen: list, lines: str) -> Check:
     K = collision_matrix(letter)
     diffs = [(m - K).applyfunc(sp.expand) for m in seen]
     return Check(f"l. {lines}: every matrix printed inline ({len(seen)}) is {letter.upper()} "
-                 "(certify.model.collision_matrix)", bool(seen) and all(d.is_zero_matrix for d in diffs),
+                 "(certify.dynamics.model.collision_matrix)", bool(seen) and all(d.is_zero_matrix for d in diffs),
                  [f"printed: `{T.show(sp.Matrix(m).tolist())}`" for m in seen[:1]])
 
 

@@ -1,5 +1,5 @@
-"""Property tests for the exact-algebra core: Sturm sequences (certify.sturm) and
-real algebraic numbers (certify.algebraic).
+"""Property tests for the exact-algebra core: Sturm sequences (certify.algebra.sturm) and
+real algebraic numbers (certify.algebra.algebraic).
 
 Every property is checked against an independent computation:
 
@@ -305,7 +305,7 @@ def test_isolate(data):
 @settings(max_examples=25, **SETTINGS)
 @given(polys(max_degree=10))
 def test_flint_real_roots_route(pr):
-    """The second route in certify.sturm agrees with the Sturm isolation."""
+    """The second route in certify.algebra.sturm agrees with the Sturm isolation."""
     p, _ = pr
     ivs = isolate(p)
     balls = flint_real_roots(p)

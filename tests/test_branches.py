@@ -1,5 +1,5 @@
-"""Certified sign tables on eigenvalue branches (certify.branches), exact arithmetic
-in Q(α)[λ] (certify.numberfield) and the two elimination routes (certify.elimination).
+"""Certified sign tables on eigenvalue branches (certify.algebra.branches), exact arithmetic
+in Q(α)[λ] (certify.algebra.numberfield) and the two elimination routes (certify.algebra.elimination).
 
 Expected values come from outside the code under test:
 

@@ -1,5 +1,5 @@
-"""The candidate of a collision word (certify.dynamics) and its requirements
-(certify.feasibility), against the paper's printed ababcb."""
+"""The candidate of a collision word (certify.dynamics.words) and its requirements
+(certify.patterns.feasibility), against the paper's printed ababcb."""
 import flint
 import pytest
 import sympy as sp

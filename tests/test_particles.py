@@ -1,4 +1,4 @@
-"""certify.particles: four particles in absolute coordinates, exactly; the particles command."""
+"""certify.dynamics.particles: four particles in absolute coordinates, exactly; the particles command."""
 import doctest
 import os
 import subprocess

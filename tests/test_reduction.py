@@ -1,4 +1,4 @@
-"""Section 4 on the dynamics: the reduction map (certify.reduction) and the
+"""Section 4 on the dynamics: the reduction map (certify.dynamics.reduction) and the
 certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/reduction.py)."""
 import random
 

@@ -1,4 +1,4 @@
-"""Section 4 identities: the engine certify.trig (both routes, signs, parsing) and the
+"""Section 4 identities: the engine certify.algebra.trig (both routes, signs, parsing) and the
 certificates of proofs/reduction_identities.py, each with a mutation that must turn FAIL."""
 import pytest
 import sympy as sp

@@ -1,4 +1,4 @@
-"""certify.simulate: the four-particle dynamics, exact (fmpq) and in balls (arb)."""
+"""certify.dynamics.simulate: the four-particle dynamics, exact (fmpq) and in balls (arb)."""
 import doctest
 
 import flint

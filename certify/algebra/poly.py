@@ -33,7 +33,7 @@ NAMES = {"r": r, "λ": lam, "lam": lam, "lambda": lam, "la": lam, "x": x, "u": u
 
 def parse(text: str, names: dict | None = None) -> sp.Expr:
     """A formula transcribed from the paper, as a SymPy expression (exact); ``names``
-    adds local names (functions, vectors) to the paper's (see :mod:`certify.trig`)."""
+    adds local names (functions, vectors) to the paper's (see :mod:`certify.algebra.trig`)."""
     text = text.replace("λ", "lam").replace("^", "**").replace("−", "-")
     return sp.sympify(text, locals={**NAMES, **names} if names else NAMES, rational=True)
 

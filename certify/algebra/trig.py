@@ -2,7 +2,7 @@
 
 A printed formula is transcribed as text close to the paper
 (``"sin(φ)*cos(θ) - (1+r)/2*cos(φ)*sin(θ)"``, ``tan(θ)`` allowed) and parsed by
-:func:`certify.poly.parse` with sin θ → sθ, cos θ → cθ, sin φ → sφ, cos φ → cφ:
+:func:`certify.algebra.poly.parse` with sin θ → sθ, cos θ → cθ, sin φ → sφ, cos φ → cφ:
 a rational function of cθ, sθ, cφ, sφ, r, λ (λ: the radial component of q, l. 611-614)
 and whatever other symbol the text names.  Vectors are 3×1 matrices, written
 ``(a, b, c)`` or ``V(a, b, c)`` inside formulas, with ``cross``, ``dot`` and

@@ -45,7 +45,7 @@ def collide_particles(letter: str, v, rr=r) -> tuple:
     In any ring holding r and v.  It is written independently of :func:`collide` (the
     printed A, B, C), not derived from it: that the differences of this law are A, B, C
     (l. 208-232) is a check (tests/test_particles.py), and the two simulators built on
-    them (certify.particles, certify.simulate) cross-check each other."""
+    them (certify.dynamics.particles, certify.dynamics.simulate) cross-check each other."""
     if letter not in INDEX:
         raise ValueError(f"unknown collision {letter!r}")
     i = INDEX[letter]

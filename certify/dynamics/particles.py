@@ -4,11 +4,11 @@ The state is x = (x1, x2, x3, x4), the positions (x1 <= x2 <= x3 <= x4), and
 v = (v1, v2, v3, v4), the velocities; r in ]0, 1[ is the restitution coefficient,
 the masses are equal.  Between collisions x moves as x + t v (l. 155-156); at a
 collision of the pair i, i+1 (a: 1-2, b: 2-3, c: 3-4) the velocities follow the law
-of l. 158-163 (:func:`certify.model.collide_particles`).
+of l. 158-163 (:func:`certify.dynamics.model.collide_particles`).
 
 Which pair collides next, and whether collisions tie, is decided by the relative
 simulator on p = (x2 - x1, x3 - x2, x4 - x3), q = (v2 - v1, v3 - v2, v4 - v3)
-(:func:`certify.simulate.next_collision`), one decision logic for both; the state
+(:func:`certify.dynamics.simulate.next_collision`), one decision logic for both; the state
 itself is moved here in absolute coordinates, with the absolute law, so that the
 two simulators are independent computations of the same orbit (tests compare them).
 A simultaneous a and c is one event "ac", both laws applied (they commute, l. 240);
@@ -136,7 +136,7 @@ class History:
 
     @property
     def word(self) -> str:
-        """The collision word, a simultaneous a and c written [ac] as in certify.simulate."""
+        """The collision word, a simultaneous a and c written [ac] as in certify.dynamics.simulate."""
         return "".join(c.letters if len(c.letters) == 1 else f"[{c.letters}]"
                        for c in self.collisions)
 
@@ -157,10 +157,10 @@ def simulate(x, v, r, collisions: int,
     (four exact rationals each, x ordered), restitution coefficient r in ]0, 1[.
 
     Exact: every comparison is decided in fmpq, no rounding anywhere.  The next
-    collision is decided by :func:`certify.simulate.next_collision` on the differences
+    collision is decided by :func:`certify.dynamics.simulate.next_collision` on the differences
     of x and v; x is then moved freely and v changed by the absolute law, for each
     letter of the event.  Invalid data raise UsageError.  ``progress(k, n, label)``,
-    e.g. :func:`certify.progress.show`, is told about every n/200-th collision and
+    e.g. :func:`certify.run.progress.show`, is told about every n/200-th collision and
     called with k = n at the end."""
     x, v, r, n = check_positions(x), check_four(v, "v"), check_r(r), check_count(collisions)
     out = History(x, v, r)

@@ -5,7 +5,7 @@ point) with the strict sign it must have for the candidate to realise a prefix o
 its word (:func:`prefix_requirements`).  :class:`Analysis` imposes requirements one
 at a time and keeps, per real branch and fixed point x₊/x₋, the exact set of r
 where all hold: open intervals with algebraic ends, and points.  Signs come from the
-certified sign tables of :mod:`certify.branches`; at a critical value they are
+certified sign tables of :mod:`certify.algebra.branches`; at a critical value they are
 decided by balls, or, where a quantity vanishes or has a pole, by the exact zero
 test in Q(r_c)[λ]; where c = 0 the map f is affine and its fixed point b/(d - a) is
 used.  Conditions are reduced modulo cp (monic in λ), which keeps their values on

@@ -1,7 +1,7 @@
 """A one-line progress indicator for a terminal, silent everywhere else.
 
 :func:`show` has the signature of the ``progress`` callback of
-:func:`certify.runner.run`: it is called as ``show(k, n, id)`` before the
+:func:`certify.run.runner.run`: it is called as ``show(k, n, id)`` before the
 ``k``-th certificate (counting from 0) and as ``show(n, n, "")`` at the end.
 On a terminal it writes ``[k+1/n] ID`` on stderr, overwriting the previous
 line with a carriage return; when stderr is a file or a pipe (CI, tests) it

@@ -1,0 +1,84 @@
+"""The layering of certify/: each layer imports only the layers below it.
+
+The contract is `[tool.importlinter]` in pyproject.toml (layers: proofs → cli → run →
+patterns → dynamics → algebra → errors | caches).  These tests run import-linter on
+the tree as it is (kept) and on a copy with one upward import added (broken), and
+check that proofs/ imports only the layers' public faces.
+"""
+import ast
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+LAYERS = ("algebra", "dynamics", "patterns", "run")
+
+
+def lint(tree: Path) -> subprocess.CompletedProcess:
+    """Run import-linter on the package tree at ``tree`` (its pyproject.toml)."""
+    pytest.importorskip("importlinter")
+    code = "import sys; from importlinter.cli import lint_imports_command; sys.exit(lint_imports_command())"
+    env = {"PYTHONPATH": str(tree), "PATH": "/usr/bin:/bin"}
+    return subprocess.run([sys.executable, "-c", code, "--no-cache"], cwd=tree, env=env,
+                          capture_output=True, text=True)
+
+
+def copy_tree(dst: Path) -> Path:
+    for name in ("certify", "proofs"):
+        shutil.copytree(ROOT / name, dst / name, ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copy(ROOT / "pyproject.toml", dst / "pyproject.toml")
+    return dst
+
+
+def test_the_layering_contract_is_kept():
+    result = lint(ROOT)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "1 kept, 0 broken" in result.stdout
+
+
+@pytest.mark.parametrize("module, upward", [
+    ("certify/algebra/poly.py", "from certify.dynamics import model"),
+    ("certify/dynamics/model.py", "from certify.run import runner"),
+    ("certify/run/report.py", "import proofs.model"),
+    ("certify/errors.py", "from certify.algebra import poly"),
+])
+def test_an_upward_import_breaks_the_contract(tmp_path, module, upward):
+    tree = copy_tree(tmp_path)
+    path = tree / module
+    path.write_text(path.read_text() + f"\n{upward}  # an upward import\n")
+    result = lint(tree)
+    assert result.returncode != 0
+    assert "BROKEN" in result.stdout and "0 kept, 1 broken" in result.stdout
+
+
+def certify_imports(path: Path):
+    """Every module of certify that ``path`` imports, with its line number."""
+    tree = ast.parse(path.read_text(), filename=str(path))
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            if node.module.split(".")[0] == "certify":
+                yield node.module, node.lineno
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.name.split(".")[0] == "certify":
+                    yield alias.name, node.lineno
+
+
+def test_proofs_import_only_the_faces_of_the_layers():
+    seen = []
+    for path in sorted((ROOT / "proofs").glob("*.py")):
+        for module, line in certify_imports(path):
+            seen.append(module)
+            assert module in {f"certify.{layer}" for layer in LAYERS}, \
+                f"{path.name}:{line} imports {module}, not a layer's face"
+    assert {f"certify.{layer}" for layer in LAYERS} <= set(seen)
+
+
+def test_every_layer_is_a_folder_with_a_face():
+    for layer in LAYERS:
+        face = ROOT / "certify" / layer / "__init__.py"
+        assert face.is_file()
+        assert "__all__" in face.read_text()
