@@ -1,10 +1,12 @@
 """The command line: ``python -m certify COMMAND`` (or the ``certify`` script).
 
-    all [--check] [--out DIR]   run every certificate, write DIR/REPORT.md,
+    all [--check] [--out DIR] [--jobs N]
+                                run every certificate, write DIR/REPORT.md,
                                 DIR/report.json, DIR/timings.json, DIR/figures/
-    run ID [ID ...] [--out DIR] run some certificates, print their verdicts
+    run ID [ID ...] [--out DIR] [--jobs N]
+                                run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N] [--reduction [--long]]
+    bench [--repeat N] [--jobs N] [--reduction [--long]]
                                 time the whole run (benchmarks/bench.py), or the
                                 exact simulator and reduction map (bench_reduction.py)
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
@@ -21,6 +23,7 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
+import json
 import os
 import re
 import shutil
@@ -31,7 +34,7 @@ from pathlib import Path
 
 from certify.dynamics import particles
 from certify.errors import UsageError
-from certify.run import FAIL, figures, progress, report, runner
+from certify.run import ERRATUM, FAIL, figures, progress, report, runner
 from certify.run.files import ensure_writable, read_text_or_none
 
 DEFAULT_OUT = Path("reports")
@@ -49,13 +52,25 @@ def prepare_output(out: Path) -> Path:
     return out
 
 
-def execute(ids, out: Path | None):
-    """Run the certificates ``ids`` (all when None), figures going to ``out/figures``.
+def estimates(out: Path | None) -> dict[str, float]:
+    """Seconds per certificate in the last run's timings (DIR/timings.json, else
+    reports/timings.json), to start the heaviest work first; {} when there are none."""
+    for path in ([out / "timings.json"] if out is not None else []) + [DEFAULT_OUT / "timings.json"]:
+        text = read_text_or_none(path)
+        if text:
+            try:
+                return {k: float(v["seconds"]) for k, v in json.loads(text)["certificates"].items()}
+            except (ValueError, KeyError, TypeError, AttributeError):
+                continue
+    return {}
 
-    Returns the runner's ``(results, timings)``."""
+
+def execute(ids, out: Path | None, jobs: int):
+    """Run the certificates ``ids`` (all when None) on ``jobs`` processes, figures
+    going to ``out/figures``.  Returns the runner's ``(results, timings)``."""
     saving = figures.output_dir(out / "figures") if out is not None else nullcontext()
     with saving:
-        return runner.run(ids, progress=progress.show)
+        return runner.run(ids, progress=progress.Bar("certificate"), jobs=jobs, estimates=estimates(out))
 
 
 def failing(results) -> list[str]:
@@ -82,11 +97,21 @@ def warn_missing_figures(results, out: Path) -> None:
 
 
 def finish(results) -> int:
-    """Print the summary line (stdout) and the failing ids (stderr); the exit code."""
+    """Print the summary line and the errata ids (stdout), the failing ids (stderr);
+    return the exit code."""
     print(report.summary_line(results))
+    errata = [cert.id for cert, outcome in results if outcome.status == ERRATUM]
+    if errata:
+        print("errata (the paper is wrong, a correction is certified): " + ", ".join(errata))
     if failing(results):
         say("FAIL: " + ", ".join(failing(results)))
     return exit_code(results)
+
+
+def wrote(out: Path, results) -> None:
+    """Say where the report went: ``wrote reports/REPORT.md, report.json, figures/ (N files)``."""
+    n = len({name for _, outcome in results for name in outcome.figures})
+    print(f"wrote {out / 'REPORT.md'}, report.json, figures/ ({n} file{'s' if n != 1 else ''})")
 
 
 # --------------------------------------------------------------------------
@@ -96,11 +121,12 @@ def cmd_all(args) -> int:
     """Run everything, write the report; with --check, also fail on a stale report."""
     out = prepare_output(args.out)
     committed = read_text_or_none(out / "REPORT.md")
-    results, timings = execute(None, out)
+    results, timings = execute(None, out, args.jobs)
     markdown = report.write_report(results, timings, out)
     figures.prune(out / "figures", keep={name for _, o in results for name in o.figures})
     warn_missing_figures(results, out)
     code = finish(results)
+    wrote(out, results)
     if args.check:
         stale = report.changed_parts(committed, markdown)
         if stale == ["missing"]:
@@ -116,32 +142,56 @@ def _clip(text: str, width: int | None) -> str:
     return text if width is None or len(text) <= width else text[: max(width - 1, 0)] + "…"
 
 
+def _under(results) -> dict[str, list[str]]:
+    """The lines to print under each certificate: the failing checks of a FAIL (with
+    their first evidence line); for an ERRATUM each false printed check (✗), its
+    certified correction (✓) and what changed."""
+    out = {}
+    for cert, outcome in results:
+        lines = []
+        if outcome.status == FAIL:
+            for check in outcome.printed + outcome.corrected:
+                if not runner.holds(check):
+                    first = str(check.evidence[0]).strip().split("\n")[0] if check.evidence else ""
+                    lines.append("✗ " + " ".join(check.statement.split()) + (f": {first}" if first else ""))
+        elif outcome.status == ERRATUM:
+            for printed, fixes in report.erratum_pairs(outcome):
+                lines.append("✗ as printed: " + " ".join(printed.statement.split()))
+                for fix in fixes:
+                    lines.append("✓ corrected:  " + " ".join(fix.statement.split()))
+                    change = report.changes(" ".join(printed.statement.split()), " ".join(fix.statement.split()))
+                    if change:
+                        lines.append("  changed:    " + change.replace("`", ""))
+        out[cert.id] = lines
+    return out
+
+
 def print_results(results) -> None:
-    """A compact table: id, status, statement; failing checks under a FAIL."""
+    """A compact table: id, status, statement; what failed under a FAIL; the false
+    printed statement and its correction under an ERRATUM."""
     width = shutil.get_terminal_size().columns if sys.stdout.isatty() else None
     w = max((len(cert.id) for cert, _ in results), default=2)
+    under = _under(results)
     for cert, outcome in results:
         head = f"{cert.id:<{w}}  {outcome.status:<8}  "
         print(head + _clip(" ".join(cert.statement.split()), width and width - len(head)))
-        if outcome.status != FAIL:
-            continue
-        for check in outcome.printed + outcome.corrected:
-            if not report.check_holds(check):
-                first = str(check.evidence[0]).strip().split("\n")[0] if check.evidence else ""
-                line = " ".join(check.statement.split()) + (f": {first}" if first else "")
-                print(" " * len(head) + _clip("✗ " + line, width and width - len(head)))
+        for line in under[cert.id]:
+            print(" " * len(head) + _clip(line, width and width - len(head)))
 
 
 def cmd_run(args) -> int:
     """Run the named certificates; write a report only when --out is given."""
     runner.select(args.ids)  # an unknown id is a usage error before anything is created
     out = prepare_output(args.out) if args.out is not None else None
-    results, timings = execute(args.ids, out)
+    results, timings = execute(args.ids, out, args.jobs)
     print_results(results)
     if out is not None:
         report.write_report(results, timings, out)
         warn_missing_figures(results, out)
-    return finish(results)
+    code = finish(results)
+    if out is not None:
+        wrote(out, results)
+    return code
 
 
 def cmd_list(args) -> int:
@@ -170,14 +220,14 @@ def cmd_bench(args) -> int:
     simulator and reduction map against bit growth (benchmarks/bench_reduction.py)."""
     if args.reduction:
         return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
-    return load_bench().main(["--repeat", str(args.repeat)])
+    return load_bench().main(["--repeat", str(args.repeat)] + (["--jobs", str(args.jobs)] if args.jobs else []))
 
 
 def cmd_particles(args) -> int:
     """Simulate the four particles exactly; one line per collision, then why it stopped."""
     if args.digits > MAX_DIGITS:
         raise UsageError(f"--digits is at most {MAX_DIGITS} (--exact prints the full fractions)")
-    history = particles.simulate(args.x, args.v, args.r, args.collisions, progress=progress.show)
+    history = particles.simulate(args.x, args.v, args.r, args.collisions, progress=progress.Bar("collision"))
     for line in particles.report_lines(history, digits=args.digits, full=args.exact):
         print(line)
     return 0
@@ -209,6 +259,12 @@ def positive_int(text: str) -> int:
     return value
 
 
+def add_jobs(p) -> None:
+    """The --jobs option of the commands that run certificates."""
+    p.add_argument("--jobs", type=positive_int, default=runner.default_jobs(), metavar="N",
+                   help="worker processes (default: all cores, here %(default)s; 1: one after another)")
+
+
 def build_parser() -> Parser:
     """The parser of ``certify COMMAND [options]``."""
     parser = Parser(prog="certify", description="Check every claim of arXiv:2411.10324 "
@@ -222,6 +278,7 @@ def build_parser() -> Parser:
                    help="exit 1 also when the existing DIR/REPORT.md was stale")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR",
                    help="output directory (default: reports)")
+    add_jobs(p)
     p.set_defaults(func=cmd_all)
 
     p = commands.add_parser("run", help="run some certificates and print their verdicts")
@@ -229,6 +286,7 @@ def build_parser() -> Parser:
                    help="claim ids such as T5; T10 also selects T10.1, T10.2, ...")
     p.add_argument("--out", type=Path, default=None, metavar="DIR",
                    help="also write a report of these certificates into DIR")
+    add_jobs(p)
     p.set_defaults(func=cmd_run)
 
     p = commands.add_parser("list", help="list the certificates")
@@ -240,6 +298,8 @@ def build_parser() -> Parser:
     p.add_argument("--reduction", action="store_true",
                    help="time the exact simulator and reduction map instead (benchmarks/bench_reduction.py)")
     p.add_argument("--long", action="store_true", help="with --reduction: also 10^4 collisions, 10^5 steps")
+    p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
+                   help="time only the run on N processes (default: both --jobs 1 and all cores)")
     p.set_defaults(func=cmd_bench)
 
     p = commands.add_parser("particles", help="simulate four particles exactly",

@@ -38,8 +38,8 @@ def passing():
 
 
 def erratum():
-    return conclude([Check("as printed", False, ["off by a sign"])],
-                    corrected=[Check("with the sign corrected", True)])
+    wrong = Check("x > 0 as printed", False, ["off by a sign"])
+    return conclude([wrong], corrected=[Check("x < 0 with the sign corrected", True, corrects=wrong)])
 
 
 def observed():
@@ -86,7 +86,9 @@ def test_all_writes_report_json_timings_and_figures(fake, tmp_path, capsys):
         assert (out / name).is_file(), name
     assert "![X3: seen](figures/seen.png)" in (out / "REPORT.md").read_text(encoding="utf-8")
     std = capsys.readouterr()
-    assert lines(std.out)[-1] == "3 certificates: 1 PASS, 1 ERRATUM, 0 FAIL, 1 OBSERVED"
+    assert lines(std.out)[-3:] == ["3 certificates: 1 PASS, 1 ERRATUM, 0 FAIL, 1 OBSERVED",
+                                   "errata (the paper is wrong, a correction is certified): X2",
+                                   f"wrote {out / 'REPORT.md'}, report.json, figures/ (1 file)"]
     assert std.err == ""                        # stderr is not a terminal: no progress
 
 
@@ -116,7 +118,7 @@ def test_a_fail_gives_exit_code_1(fake, tmp_path, capsys):
     fake("X4", broken)
     assert cli.main(["all", "--out", str(tmp_path)]) == 1
     std = capsys.readouterr()
-    assert "1 FAIL" in lines(std.out)[-1]
+    assert "1 FAIL" in lines(std.out)[-3]
     assert lines(std.err) == ["certify: FAIL: X4"]
 
 
@@ -136,10 +138,14 @@ def test_run_prints_verdicts_and_writes_nothing(fake, tmp_path, monkeypatch, cap
     assert cli.main(["run", "X2", "X4", "X3"]) == 1
     out = lines(capsys.readouterr().out)
     assert out[0].split()[:2] == ["X2", "ERRATUM"] and out[0].endswith("claim X2 |x|")
-    assert out[1].split()[:2] == ["X3", "OBSERVED"]
-    assert out[2].split()[:2] == ["X4", "FAIL"]
-    assert "✗ the certificate ran to completion: `ZeroDivisionError: division by zero`" in out[3]
-    assert out[-1] == "3 certificates: 0 PASS, 1 ERRATUM, 1 FAIL, 1 OBSERVED"
+    assert out[1].split() == ["✗", "as", "printed:", "x", ">", "0", "as", "printed"]
+    assert out[2].split() == ["✓", "corrected:", "x", "<", "0", "with", "the", "sign", "corrected"]
+    assert out[3].split() == ["changed:", ">", "→", "<;", "as", "printed", "→", "with", "the", "sign", "corrected"]
+    assert out[4].split()[:2] == ["X3", "OBSERVED"]
+    assert out[5].split()[:2] == ["X4", "FAIL"]
+    assert "✗ the certificate ran to completion: `ZeroDivisionError: division by zero`" in out[6]
+    assert out[-2] == "3 certificates: 0 PASS, 1 ERRATUM, 1 FAIL, 1 OBSERVED"
+    assert out[-1] == "errata (the paper is wrong, a correction is certified): X2"
     assert list(tmp_path.iterdir()) == []       # no report, no figure
 
 
@@ -162,10 +168,11 @@ def test_list(fake, capsys):
                                                   ["X3", "l.", "3"]]
 
 
-def test_bench(fake, capsys):
-    assert cli.main(["bench", "--repeat", "2"]) == 0
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_bench(fake, capsys, jobs):
+    assert cli.main(["bench", "--repeat", "2", "--jobs", jobs]) == 0
     out = capsys.readouterr().out
-    assert "2 runs of 3 certificates" in out and "heaviest certificates" in out
+    assert f"run(jobs={jobs}): 2 runs of 3 certificates" in out and "heaviest certificates" in out
 
 
 # --------------------------------------------------------------------------
@@ -203,11 +210,14 @@ class Terminal(io.StringIO):
 def test_progress_on_a_terminal_only():
     tty, pipe = Terminal(), io.StringIO()
     for stream in (tty, pipe):
-        progress.show(0, 2, "T1", stream)
-        progress.show(1, 2, "T2", stream)
-        progress.show(2, 2, "", stream)
+        bar = progress.Bar("certificate", stream)
+        bar(0, 2, "")
+        bar(1, 2, "T1")
+        bar(2, 2, "T2")
     assert pipe.getvalue() == ""
-    assert tty.getvalue() == "\r\x1b[K[1/2] T1\r\x1b[K[2/2] T2\r\x1b[K"
+    shown = tty.getvalue()
+    assert "1/2" in shown and "T1" in shown and "2/2" in shown and "certificate" in shown
+    assert progress._OPEN == []                   # the bar closed itself at 2/2
 
 
 # --------------------------------------------------------------------------

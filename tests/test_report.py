@@ -21,15 +21,17 @@ def cert(cid, statement="a statement", line="l. 1"):
 CODE = "```\nP0 = 1 + r\n    | indented |\n```"
 
 
+WRONG = Check("Δ_cp = disc/1811939328", False, ["ratio is `-1/4`", CODE])
+
+
 def sample_results():
     """One certificate per status, with evidence, a note and a figure."""
     return [
         (cert("M1", "AC = CA"), conclude([Check("AC = CA", True, ["`AC - CA = 0`"])],
                                          evidence=[CODE])),
         (cert("T4", "|q| > 1 on the upper branch", "l. 340-349"),
-         conclude([Check("Δ_cp = disc/1811939328", False, ["ratio is `-1/4`", CODE]),
-                   Check("degree 10", True)],
-                  corrected=[Check("Δ_cp = -disc/(4·1811939328)", True, ["exact"])],
+         conclude([WRONG, Check("degree 10", True)],
+                  corrected=[Check("Δ_cp = -disc/(4·1811939328)", True, ["exact"], corrects=WRONG)],
                   note="The paper's normalisation differs by -4.")),
         (cert("T5", "P0 has one root in ]0,1[", "l. 350"),
          conclude([Check("one root", False, ["Sturm count 2"])])),
@@ -65,8 +67,8 @@ def test_summary_counts_every_status():
 def test_errata_table_shows_printed_next_to_corrected():
     text = report.render_markdown(sample_results())
     errata = text.split("## Errata", 1)[1].split("## All certificates", 1)[0]
-    assert "| As printed | Corrected (certified) |" in errata
-    assert "| ✗ Δ_cp = disc/1811939328 | ✓ Δ_cp = -disc/(4·1811939328) |" in errata
+    assert "| As printed (false) | Corrected (certified) | What changed |" in errata
+    assert "| ✗ Δ_cp = disc/1811939328 | ✓ Δ_cp = -disc/(4·1811939328) | + `-`; + `(4·`; + `)` |" in errata
     assert "degree 10" not in errata          # only the failing printed checks
     assert "T5" not in errata                 # a FAIL is not an erratum
 
@@ -89,8 +91,8 @@ def test_table_rows_escape_pipes():
 def test_section_keeps_evidence_and_code_blocks():
     text = report.render_markdown(sample_results())
     section = text.split('<a id="cert-t4"></a>', 1)[1].split("### ", 1)[0]
-    assert "T4 — |q| > 1 on the upper branch" in section.splitlines()[0]
-    assert "Paper: l. 340-349 · Status: **ERRATUM**" in section
+    assert "T4 — ERRATUM — as printed: |q| > 1 on the upper branch" in section.splitlines()[0]
+    assert "Paper: l. 340-349 of the source · Status: **ERRATUM**" in section
     assert "`proofs/fake.py` (`claim`)" in section
     assert "- ✗ Δ_cp = disc/1811939328\n  - ratio is `-1/4`" in section
     assert "  - ```\n    P0 = 1 + r\n        | indented |\n    ```" in section   # nested, intact
@@ -121,6 +123,8 @@ def test_json_content():
     assert t4["printed"][0] == {"statement": "Δ_cp = disc/1811939328", "holds": False,
                                 "evidence": ["ratio is `-1/4`", CODE]}
     assert t4["corrected"][0]["holds"] is True
+    assert t4["corrected"][0]["corrects"] == "Δ_cp = disc/1811939328"
+    assert t4["part"] == "Section 3: Theorem 3.1, the pattern ababcb"
     assert t4["note"] == "The paper's normalisation differs by -4."
     assert t4["proof"] == {"module": "proofs.fake", "function": "claim"}
 
@@ -171,3 +175,74 @@ def test_changed_parts_names_what_is_stale():
 
 def test_anchor():
     assert report.anchor("T10.1") == "cert-t10-1"
+
+
+# --------------------------------------------------------------------------
+# A report a reader can navigate (issues 8 and 11)
+
+def test_headings_carry_the_status_and_mark_a_printed_claim():
+    text = report.render_markdown(sample_results())
+    assert '### <a id="cert-m1"></a>M1 — PASS — AC = CA' in text
+    assert '### <a id="cert-t4"></a>T4 — ERRATUM — as printed: |q| > 1 on the upper branch' in text
+    assert '### <a id="cert-t5"></a>T5 — FAIL — as printed: P0 has one root in ]0,1[' in text
+    # a heading never shows a claim that is not certified without its status
+    for line in text.splitlines():
+        if line.startswith("### "):
+            assert any(f" — {s} — " in line for s in (PASS, ERRATUM, FAIL, OBSERVED)), line
+
+
+def test_contents_by_part_of_the_paper_with_stable_anchors():
+    text = report.render_markdown(sample_results())
+    contents = text.split("## Contents", 1)[1].split("## Summary", 1)[0]
+    assert "- [Section 2: the model](#part-section-2-the-model): [M1](#cert-m1) PASS" in contents
+    assert ("- [Section 3: Theorem 3.1, the pattern ababcb](#part-section-3-theorem-3-1-the-pattern-ababcb): "
+            "[T4](#cert-t4) ERRATUM, [T5](#cert-t5) FAIL") in contents
+    assert "- [Section 5: the numerical simulations](#part-section-5-the-numerical-simulations)" in contents
+    for part in ("section-2-the-model", "section-3-theorem-3-1-the-pattern-ababcb",
+                 "section-5-the-numerical-simulations"):
+        assert f'## <a id="part-{part}"></a>' in text
+    # every link of the report points at an anchor that exists
+    anchors = set(re.findall(r'<a id="([^"]+)"></a>', text)) | {"summary", "errata", "all-certificates"}
+    assert set(re.findall(r"\]\(#([^)]+)\)", text)) <= anchors
+    assert text.rstrip("\n").endswith(report.END)
+
+
+def test_the_report_says_which_source_its_line_numbers_refer_to():
+    text = report.render_markdown(sample_results())
+    head = text.split("## Contents", 1)[0]
+    assert "arXiv:2411.10324v1" in head and "https://arxiv.org/e-print/2411.10324v1" in head
+    assert "inelastic-collapse-four-particles.tex" in head
+
+
+def test_erratum_rows_show_what_changed_and_only_the_false_checks():
+    wrong = Check("t_c is smaller than t_b", False)
+    fine = Check("t_b solves p_2 = 0", True)
+    results = [(cert("S2", "t_c < t_b", "l. 628"),
+                conclude([fine, wrong], corrected=[Check("t_c is larger than t_b", True, corrects=wrong),
+                                                   Check("a supporting fact", True)]))]
+    errata = report.render_markdown(results).split("## Errata", 1)[1].split("## All certificates", 1)[0]
+    assert "| ✗ t_c is smaller than t_b | ✓ t_c is larger than t_b | `smaller` → `larger` |" in errata
+    assert "t_b solves" not in errata and "a supporting fact" not in errata
+
+
+def test_changes_names_the_differing_words_and_formulas():
+    assert report.changes("cos θ is positive", "cos φ is positive") == "`θ` → `φ`"
+    assert report.changes("`cross(cross(u0, ey), C*q0)`", "`cross(cross(u0, ez), C*q0)`") == "`ey` → `ez`"
+    assert report.changes("c > 0 for r > 1", "c > 0 for r > 1") == ""
+
+
+def test_consistency_checks_are_shown_as_such():
+    results = [(cert("T3"), conclude([Check("cp(0) = -det M", True, counts=False), Check("a real claim", True)]))]
+    text = report.render_markdown(results)
+    assert "✓ cp(0) = -det M *(consistency check of the engine, not evidence)*" in text
+    data = json.loads(report.render_json(results))
+    assert data["certificates"][0]["printed"][0]["consistency"] is True
+
+
+def test_changed_parts_charges_a_line_to_the_part_that_holds_it():
+    old = report.render_markdown(sample_results())
+    assert report.changed_parts(old + "junk\n", old) == ["outside any certificate"]
+    assert report.changed_parts(old, old + "junk\n") == ["outside any certificate"]
+    inside = old.replace("**Note.** The paper's", "junk\n\n**Note.** The paper's")
+    assert report.changed_parts(inside, old) == ["T4"]
+    assert report.changed_parts(old.replace("## Summary", "## Summary\njunk"), old) == ["summary"]

@@ -71,3 +71,20 @@ def ensure_writable(directory) -> Path:
         reason = exc.strerror or type(exc).__name__
         raise UsageError(f"cannot write to output directory {str(directory)!r}: {reason}") from None
     return directory
+
+
+def write_section(path, title: str, body: str) -> None:
+    """Replace (or add) the section ``## title`` of the Markdown file ``path`` by ``body``,
+    atomically; the other sections are kept.  Benchmarks share one file this way."""
+    path = Path(path)
+    text = read_text_or_none(path) or "# Benchmarks\n\nWritten by the benchmark commands; see README.\n"
+    head = f"## {title}\n"
+    start = text.find(head)
+    section = f"{head}\n{body.strip()}\n"
+    if start < 0:
+        text = text.rstrip("\n") + "\n\n" + section
+    else:
+        end = text.find("\n## ", start + len(head))
+        text = text[:start] + section + (text[end:] if end >= 0 else "")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_atomic(path, text)

@@ -1,18 +1,18 @@
-"""A one-line progress indicator for a terminal, silent everywhere else.
+"""Progress bars on a terminal (tqdm), silent everywhere else.
 
-:func:`show` has the signature of the ``progress`` callback of
-:func:`certify.run.runner.run`: it is called as ``show(k, n, id)`` before the
-``k``-th certificate (counting from 0) and as ``show(n, n, "")`` at the end.
-On a terminal it writes ``[k+1/n] ID`` on stderr, overwriting the previous
-line with a carriage return; when stderr is a file or a pipe (CI, tests) it
-writes nothing, so logs stay clean.
+A :class:`Bar` is a callback ``bar(k, n, label)``: ``k`` of ``n`` steps are done,
+the last one named ``label`` (a certificate id, "collisions", ...).  The runner and
+the particle simulator call it.  On a terminal it draws a tqdm bar on stderr and
+erases it when ``k == n``; when stderr is a file or a pipe (CI, tests, logs) it
+draws nothing at all.
 """
 from __future__ import annotations
 
-import shutil
 import sys
 
-_CLEAR = "\r\x1b[K"  # back to the start of the line, then erase it
+from tqdm import tqdm
+
+_OPEN: list["Bar"] = []
 
 
 def _is_terminal(stream) -> bool:
@@ -22,22 +22,36 @@ def _is_terminal(stream) -> bool:
         return False
 
 
-def show(k: int, n: int, cid: str, stream=None) -> None:
-    """Show ``[k+1/n] cid`` on a terminal; erase the line when ``k == n``."""
-    stream = stream if stream is not None else sys.stderr
-    if not _is_terminal(stream):
-        return
-    if k >= n:
-        stream.write(_CLEAR)
-    else:
-        width = shutil.get_terminal_size((80, 20)).columns
-        stream.write(_CLEAR + f"[{k + 1}/{n}] {cid}"[: max(width - 1, 1)])
-    stream.flush()
+class Bar:
+    """A progress bar for one piece of long work; see the module's docstring."""
+
+    def __init__(self, unit: str = "step", stream=None):
+        self.unit, self.stream = unit, stream if stream is not None else sys.stderr
+        self.bar: tqdm | None = None
+
+    def __call__(self, k: int, n: int, label: str = "") -> None:
+        if not _is_terminal(self.stream):
+            return
+        if self.bar is None:
+            self.bar = tqdm(total=n, file=self.stream, unit=self.unit, leave=False, dynamic_ncols=True)
+            _OPEN.append(self)
+        self.bar.n = k
+        if label:
+            self.bar.set_postfix_str(label, refresh=False)
+        self.bar.refresh()
+        if k >= n:
+            self.close()
+
+    def close(self) -> None:
+        """Erase the bar (at the end, or after an interruption)."""
+        if self.bar is not None:
+            self.bar.close()
+            self.bar = None
+        if self in _OPEN:
+            _OPEN.remove(self)
 
 
-def clear(stream=None) -> None:
-    """Erase a progress line left on the terminal (after an interruption)."""
-    stream = stream if stream is not None else sys.stderr
-    if _is_terminal(stream):
-        stream.write(_CLEAR)
-        stream.flush()
+def clear() -> None:
+    """Erase every bar left on the terminal (after an interruption or an error)."""
+    for bar in list(_OPEN):
+        bar.close()

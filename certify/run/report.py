@@ -15,18 +15,33 @@ of the report.
 """
 from __future__ import annotations
 
+import difflib
 import json
 import re
-from itertools import zip_longest
 from pathlib import Path
 from urllib.parse import quote
 
 from certify.run.files import write_atomic
-from certify.run.runner import ERRATUM, FAIL, OBSERVED, PASS, STATUSES
+from certify.run.runner import ERRATUM, FAIL, OBSERVED, PASS, STATUSES, corrected_statement, holds
 
 PAPER = ("T. Dolmaire and E. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
          "particles: asymmetric collision sequences and spherical billiard reduction*, "
          "arXiv:2411.10324")
+VERSION = "arXiv:2411.10324v1"
+SOURCE = (f"Line numbers (\"l. 428-434\") are lines of the paper's LaTeX source, version {VERSION}, "
+          "file `inelastic-collapse-four-particles.tex`: download the source from "
+          "<https://arxiv.org/e-print/2411.10324v1> (a gzipped archive) and open that file in any "
+          "editor that shows line numbers.")
+
+# The parts of the paper, by the first letter of a claim id (the order of ../shared/CLAIMS.md).
+PARTS = {
+    "L": "Facts from the literature",
+    "M": "Section 2: the model",
+    "T": "Section 3: Theorem 3.1, the pattern ababcb",
+    "S": "Section 4: the spherical billiard reduction",
+    "N": "Section 5: the numerical simulations",
+}
+END = "*End of the report.*"
 
 MEANING = {
     PASS: "the statement as printed is certified in exact arithmetic "
@@ -88,12 +103,17 @@ def _bullet(text, indent: int = 0) -> str:
     return "\n".join(lines)
 
 
-def check_holds(check) -> bool:
-    """The verdict of a check as a plain bool; anything undecidable is False."""
-    try:
-        return bool(check.holds)
-    except Exception:  # e.g. a SymPy relation that cannot be decided
-        return False
+check_holds = holds   # the verdict of a check as a plain bool (undecidable: False)
+
+
+def part_of(cid: str) -> str:
+    """The part of the paper a claim id belongs to (its first letter)."""
+    return PARTS.get(cid[:1], "Other claims")
+
+
+def part_anchor(part: str) -> str:
+    """The anchor of a part's heading (``Section 2: the model`` -> ``part-section-2-the-model``)."""
+    return "part-" + re.sub(r"[^a-z0-9]+", "-", part.lower()).strip("-")
 
 
 def anchor(cid: str) -> str:
@@ -141,7 +161,25 @@ def _head() -> str:
     meanings = "\n".join(f"- **{s}**: {MEANING[s]}" for s in STATUSES)
     return (f"# certify: the claims of arXiv:2411.10324, checked\n\n"
             f"Every claim of {PAPER} is checked as printed, with the paper's line "
-            f"numbers.  Each certificate ends in one of four statuses:\n\n{meanings}\n\n{READING}")
+            f"numbers.  {SOURCE}  Each certificate ends in one of four statuses:\n\n{meanings}\n\n{READING}")
+
+
+def _contents(results) -> str:
+    """The table of contents: the overview, then each part of the paper with its certificates."""
+    lines = ["## Contents", "", "- [Summary](#summary)", "- [Errata](#errata)",
+             "- [All certificates](#all-certificates)"]
+    for part, members in _by_part(results):
+        ids = ", ".join(f"{_link(cert.id)} {outcome.status}" for cert, outcome in members)
+        lines.append(f"- [{part}](#{part_anchor(part)}): {ids}")
+    return "\n".join(lines)
+
+
+def _by_part(results) -> list[tuple[str, list]]:
+    """The results grouped by part of the paper, in the order they come."""
+    groups: dict[str, list] = {}
+    for cert, outcome in results:
+        groups.setdefault(part_of(cert.id), []).append((cert, outcome))
+    return list(groups.items())
 
 
 def _summary(results) -> str:
@@ -155,15 +193,45 @@ def _summary(results) -> str:
     return "\n".join(lines)
 
 
+def _tokens(text: str) -> list[re.Match]:
+    """Words, numbers and single signs of ``text`` (a code span is read inside)."""
+    return list(re.finditer(r"\w+|[^\w\s`]", text))
+
+
+def changes(before: str, after: str) -> str:
+    """What differs from ``before`` to ``after``, word by word: ``smaller → larger``,
+    ``ey → ez``; ``""`` when the two read the same."""
+    a, b = _tokens(before), _tokens(after)
+    ops = difflib.SequenceMatcher(None, [m.group() for m in a], [m.group() for m in b], autojunk=False)
+    out = []
+    for tag, i1, i2, j1, j2 in ops.get_opcodes():
+        if tag == "equal":
+            continue
+        old = before[a[i1].start():a[i2 - 1].end()] if i2 > i1 else ""
+        new = after[b[j1].start():b[j2 - 1].end()] if j2 > j1 else ""
+        out.append(f"`{old}` → `{new}`" if old and new else f"+ `{new}`" if new else f"− `{old}`")
+    return "; ".join(out)
+
+
+def erratum_pairs(outcome) -> list[tuple]:
+    """Each failing printed check with the corrected checks that replace it."""
+    wrong = [c for c in outcome.printed if c.counts and not holds(c)]
+    return [(c, [k for k in outcome.corrected if corrected_statement(k) == str(c.statement)])
+            for c in wrong]
+
+
 def _erratum(cert, outcome) -> str:
-    """Printed statements that fail, next to the certified corrections."""
-    wrong = [c for c in outcome.printed if not check_holds(c)]
+    """Each false printed statement next to its certified correction, and what changed."""
     lines = [f"**{_link(cert.id)}** (paper: {_cell(cert.line)}): {_one_line(cert.statement)}", "",
-             "| As printed | Corrected (certified) |", "|---|---|"]
-    for printed, corrected in zip_longest(wrong, outcome.corrected):
-        left = f"{MARK[False]} {_cell(printed.statement)}" if printed else ""
-        right = f"{MARK[check_holds(corrected)]} {_cell(corrected.statement)}" if corrected else ""
-        lines.append(f"| {left} | {right} |")
+             "| As printed (false) | Corrected (certified) | What changed |", "|---|---|---|"]
+    for printed, fixes in erratum_pairs(outcome):
+        left = f"{MARK[False]} {_cell(printed.statement)}"
+        if not fixes:
+            lines.append(f"| {left} | (see [{cert.id}](#{anchor(cert.id)})) | |")
+        for k, fix in enumerate(fixes):
+            change = changes(_one_line(printed.statement), _one_line(fix.statement))
+            lines.append(f"| {left if k == 0 else ''} | {MARK[holds(fix)]} {_cell(fix.statement)} | "
+                         f"{_cell(change) or 'the same words: see the evidence'} |")
     return "\n".join(lines)
 
 
@@ -182,15 +250,17 @@ def _table(results) -> str:
 def _checks(title: str, checks) -> str:
     items = []
     for check in checks:
-        items.append(_bullet(f"{MARK[check_holds(check)]} {_one_line(check.statement)}"))
+        role = "" if check.counts else " *(consistency check of the engine, not evidence)*"
+        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(check.statement)}{role}"))
         items += [_bullet(e, indent=2) for e in check.evidence]
     return f"**{title}**\n\n" + "\n".join(items)
 
 
 def _section(cert, outcome) -> str:
     """Everything about one certificate: verdicts, note, evidence, figures."""
-    parts = [f'### <a id="{anchor(cert.id)}"></a>{cert.id} — {_one_line(cert.statement)}',
-             f"Paper: {_one_line(cert.line)} · Status: **{outcome.status}** · "
+    printed = "as printed: " if outcome.status != PASS else ""
+    parts = [f'### <a id="{anchor(cert.id)}"></a>{cert.id} — {outcome.status} — {printed}{_one_line(cert.statement)}',
+             f"Paper: {_one_line(cert.line)} of the source · Status: **{outcome.status}** · "
              f"Proof: {_source(cert)}"]
     if outcome.printed:
         parts.append(_checks("As printed", outcome.printed))
@@ -205,19 +275,26 @@ def _section(cert, outcome) -> str:
 
 
 def render_markdown(results) -> str:
-    """The text of REPORT.md: head, summary, errata, table, one section per certificate."""
-    sections = [_section(cert, outcome) for cert, outcome in results]
-    parts = [_head(), _summary(results), _errata(results), _table(results),
-             "## Certificates", *sections]
-    return "\n\n".join(parts) + "\n"
+    """The text of REPORT.md: head, contents, summary, errata, table, then the
+    certificates part by part, and a last line that closes the report."""
+    parts = [_head(), _contents(results), _summary(results), _errata(results), _table(results)]
+    for part, members in _by_part(results):
+        parts.append(f'## <a id="{part_anchor(part)}"></a>{part}')
+        parts += [_section(cert, outcome) for cert, outcome in members]
+    return "\n\n".join(parts + [END]) + "\n"
 
 
 # --------------------------------------------------------------------------
 # report.json and timings.json
 
 def _check_data(check) -> dict:
-    return {"statement": str(check.statement), "holds": check_holds(check),
+    data = {"statement": str(check.statement), "holds": holds(check),
             "evidence": [str(e) for e in check.evidence]}
+    if corrected_statement(check):
+        data["corrects"] = corrected_statement(check)
+    if not check.counts:
+        data["consistency"] = True
+    return data
 
 
 def certificate_data(cert, outcome) -> dict:
@@ -227,6 +304,7 @@ def certificate_data(cert, outcome) -> dict:
         "line": cert.line,
         "statement": cert.statement,
         "proof": {"module": cert.module, "function": getattr(cert.func, "__name__", "")},
+        "part": part_of(cert.id),
         "status": outcome.status,
         "printed": [_check_data(c) for c in outcome.printed],
         "corrected": [_check_data(c) for c in outcome.corrected],
@@ -268,32 +346,57 @@ def write_report(results, timings: dict, out_dir) -> str:
     return markdown
 
 
-_SECTION = re.compile(r'^### <a id="[^"]*"></a>(\S+) — ', re.M)
+_SECTION = re.compile(r'^### <a id="[^"]*"></a>(\S+) — ')
 
 
-def _split_sections(text: str) -> dict[str, str]:
-    """REPORT.md cut into its head (key "summary") and one piece per certificate id."""
-    pieces = re.split(r'(?m)^(?=### <a id=")', text)
-    parts = {"summary": pieces[0].strip()}
-    for piece in pieces[1:]:
-        match = _SECTION.match(piece)
-        parts[match.group(1) if match else piece.split("\n", 1)[0]] = piece.strip()
-    return parts
+def _owners(lines: list[str]) -> list[str]:
+    """For each line of a report, the part it belongs to: ``summary`` (everything
+    before the first certificate), a certificate id, or ``outside`` (the closing line
+    and anything after it)."""
+    owner, out = "summary", []
+    for line in lines:
+        match = _SECTION.match(line)
+        if match:
+            owner = match.group(1)
+        if line == END:
+            owner = "outside"
+        out.append(owner)
+    return out
 
 
 def changed_parts(old: str | None, new: str) -> list[str]:
     """What differs between a committed REPORT.md and a regenerated one.
 
     Returns ``[]`` when they are identical, ``["missing"]`` when there was no
-    committed report, else the changed parts: ``summary`` (head, summary,
-    errata, table) and certificate ids, marked ``(new)`` or ``(removed)``.
-    """
+    committed report, else the changed parts in order: ``summary`` (head, contents,
+    summary, errata, table), certificate ids (marked ``(new)`` or ``(removed)``), and
+    ``outside any certificate`` for lines that belong to none (after the closing line,
+    or a part heading).  Lines are compared with difflib, so a line added or removed
+    anywhere is charged to the part that holds it, not to the last certificate."""
     if old is None:
         return ["missing"]
     if old == new:
         return []
-    before, after = _split_sections(old), _split_sections(new)
-    changed = [k for k in after if k in before and before[k] != after[k]]
-    changed += [f"{k} (new)" for k in after if k not in before]
-    changed += [f"{k} (removed)" for k in before if k not in after]
+    a, b = old.split("\n"), new.split("\n")
+    own_a, own_b = _owners(a), _owners(b)
+    ids_a = {m.group(1) for line in a if (m := _SECTION.match(line))}
+    ids_b = {m.group(1) for line in b if (m := _SECTION.match(line))}
+    changed: list[str] = []
+
+    def note(part: str) -> None:
+        if part == "outside":
+            part = "outside any certificate"
+        elif part in ids_b and part not in ids_a:
+            part = f"{part} (new)"
+        elif part in ids_a and part not in ids_b:
+            part = f"{part} (removed)"
+        if part not in changed:
+            changed.append(part)
+
+    for tag, i1, i2, j1, j2 in difflib.SequenceMatcher(None, a, b, autojunk=False).get_opcodes():
+        if tag != "equal":
+            for i in range(i1, i2):
+                note(own_a[i])
+            for j in range(j1, j2):
+                note(own_b[j])
     return changed or ["whitespace"]

@@ -12,7 +12,10 @@ from __future__ import annotations
 
 import importlib
 import inspect
+import multiprocessing
+import os
 import pkgutil
+import signal
 import time
 import traceback
 from dataclasses import dataclass, field
@@ -27,11 +30,19 @@ STATUSES = (PASS, ERRATUM, FAIL, OBSERVED)
 
 @dataclass
 class Check:
-    """One statement with its verdict and the evidence a referee can re-check."""
+    """One statement with its verdict and the evidence a referee can re-check.
+
+    ``corrects``: on a corrected check, the printed check (or its statement) that it
+    replaces; the Errata show the two side by side.  ``counts``: False for a
+    consistency check, one that holds by construction of the engine (the word it
+    applied is the word it was given, cp(0) = -det M for every matrix): it must hold,
+    or the certificate FAILs, but it is not evidence for the printed claim."""
 
     statement: str
     holds: bool
     evidence: list[str] = field(default_factory=list)
+    corrects: "Check | str | None" = None
+    counts: bool = True
 
 
 @dataclass
@@ -46,15 +57,39 @@ class Outcome:
     note: str = ""
 
 
+def holds(check: Check) -> bool:
+    """The verdict of a check as a plain bool; anything undecidable is False."""
+    try:
+        return bool(check.holds)
+    except Exception:  # e.g. a SymPy relation that cannot be decided
+        return False
+
+
+def corrected_statement(check: Check) -> str:
+    """The statement of the printed check that ``check`` corrects ("" for none)."""
+    target = check.corrects
+    return "" if target is None else str(target.statement if isinstance(target, Check) else target)
+
+
 def conclude(printed: list[Check], corrected: list[Check] | None = None,
              evidence: list[str] | None = None, figures: list[str] | None = None,
              note: str = "") -> Outcome:
-    """PASS when every printed check holds; ERRATUM when one fails but every
-    corrected check holds (and there is one); FAIL otherwise."""
+    """The verdict, resting only on the checks that could fail (``counts``):
+
+    - PASS when every printed check holds (and one of them counts);
+    - ERRATUM when a printed check that counts fails, every corrected check holds,
+      and each failing printed check has its correction (a corrected check whose
+      ``corrects`` names it);
+    - FAIL otherwise, and whenever a consistency check fails."""
     corrected = corrected or []
-    if all(c.holds for c in printed):
+    evidence_checks = [c for c in printed if c.counts]
+    consistent = all(holds(c) for c in printed + corrected if not c.counts)
+    wrong = [c for c in evidence_checks if not holds(c)]
+    fixed = {corrected_statement(c) for c in corrected}
+    if consistent and evidence_checks and not wrong:
         status = PASS
-    elif corrected and all(c.holds for c in corrected):
+    elif (consistent and wrong and corrected and all(holds(c) for c in corrected)
+          and (not fixed - {""} or all(str(c.statement) in fixed for c in wrong))):
         status = ERRATUM
     else:
         status = FAIL
@@ -205,22 +240,144 @@ def reset_caches() -> None:
     caches.reset()
 
 
-def run(ids=None, progress=None) -> tuple[list[tuple[Certificate, Outcome]], dict]:
-    """Run the selected certificates; return the outcomes and the timings."""
-    certs = select(ids)
-    ctx = Context()
-    results, timings = [], {}
-    for k, cert in enumerate(certs):
-        if progress:
-            progress(k, len(certs), cert.id)
-        before = dict(ctx.seconds)
+def plain(outcome: Outcome) -> Outcome:
+    """The outcome as the report reads it: statements and evidence as text, verdicts as
+    bools.  That is all a report needs, and it crosses process boundaries (pickle)."""
+    def check(c: Check) -> Check:
+        return Check(str(c.statement), holds(c), [str(e) for e in c.evidence],
+                     corrected_statement(c) or None, c.counts)
+    return Outcome(outcome.status, [check(c) for c in outcome.printed],
+                   [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
+                   [str(f) for f in outcome.figures], str(outcome.note))
+
+
+def units(certs: list[Certificate]) -> list[list[Certificate]]:
+    """The certificates cut into units that share nothing: two certificates are in one
+    unit when they need a common shared quantity (directly, or through the quantities
+    those need).  A unit runs in one process, so each quantity is computed once per run."""
+    def closure(names):
+        seen, todo = set(), list(names)
+        while todo:
+            n = todo.pop()
+            if n not in seen:
+                seen.add(n)
+                todo += QUANTITIES[n].needs if n in QUANTITIES else ()
+        return seen
+    groups: list[tuple[set, list[Certificate]]] = []
+    for cert in certs:
+        names = closure(cert.needs)
+        joined = [g for g in groups if names and g[0] & names]
+        merged = (names.union(*(g[0] for g in joined)), [c for g in joined for c in g[1]] + [cert])
+        groups = [g for g in groups if all(g is not j for j in joined)] + [merged]
+    return [sorted(g[1], key=lambda c: claim_key(c.id)) for g in groups]
+
+
+def run_unit(certs: list[Certificate], report=None) -> tuple[list, dict]:
+    """Run ``certs`` in order with one context; ``report(cert)`` after each.
+    Returns ``[(cert, outcome, seconds, of_which_shared)]`` and the quantities' seconds."""
+    ctx, done = Context(), []
+    for cert in certs:
+        before = set(ctx.seconds)
         t = time.perf_counter()
-        outcome = run_certificate(cert, ctx)
+        outcome = plain(run_certificate(cert, ctx))
         total = time.perf_counter() - t
         shared = sum(v for n, v in ctx.seconds.items() if n not in before)
-        timings[cert.id] = {"seconds": round(total, 4), "of_which_shared": round(shared, 4)}
-        results.append((cert, outcome))
+        done.append((cert, outcome, total, shared))
+        if report:
+            report(cert)
+    return done, dict(ctx.seconds)
+
+
+_PLAN: list[list[Certificate]] = []   # the units of a parallel run, inherited by the forked workers
+_DONE = None                          # the queue on which a worker says "certificate done"
+
+
+def _worker_start(queue) -> None:
+    """In a worker: Ctrl-C is the parent's to handle (it terminates the workers)."""
+    global _DONE
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _DONE = queue
+
+
+def _worker_run(k: int):
+    """In a worker: run unit ``k`` of the plan; ids instead of certificates go back."""
+    try:
+        done, seconds = run_unit(_PLAN[k], report=lambda cert: _DONE.put(cert.id))
+    except KeyboardInterrupt:  # raised by a certificate itself
+        return None
+    return [(cert.id, outcome, total, shared) for cert, outcome, total, shared in done], seconds
+
+
+def default_jobs() -> int:
+    """The cores this process may use."""
+    try:
+        return max(len(os.sched_getaffinity(0)), 1)
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
+def _parallel(plan: list[list[Certificate]], jobs: int, progress) -> tuple[list, dict]:
+    """Run the units of ``plan`` on ``jobs`` forked processes, heaviest first."""
+    global _PLAN
+    context = multiprocessing.get_context("fork")
+    queue = context.SimpleQueue()
+    by_id = {c.id: c for unit in plan for c in unit}
+    _PLAN = plan
+    finished, seconds, count = [], {}, 0
+    pool = context.Pool(min(jobs, len(plan)), initializer=_worker_start, initargs=(queue,))
+    try:
+        pending = [pool.apply_async(_worker_run, (k,)) for k in range(len(plan))]
+        while pending:
+            while not queue.empty():
+                count, cid = count + 1, queue.get()
+                if progress:
+                    progress(count, len(by_id), cid)
+            still = []
+            for job in pending:
+                if not job.ready():
+                    still.append(job)
+                    continue
+                result = job.get()
+                if result is None:
+                    raise KeyboardInterrupt
+                finished += [(by_id[i], o, t, s) for i, o, t, s in result[0]]
+                seconds.update(result[1])
+            pending = still
+            if pending:
+                time.sleep(0.02)
+        pool.close()
+    finally:
+        pool.terminate()
+        _PLAN = []
+    return finished, seconds
+
+
+def run(ids=None, progress=None, jobs: int = 1,
+        estimates: dict[str, float] | None = None) -> tuple[list[tuple[Certificate, Outcome]], dict]:
+    """Run the selected certificates on ``jobs`` processes; return the outcomes (in claim
+    order, whatever the order they finished in) and the timings.
+
+    With ``jobs = 1`` they run one after another in claim order, in this process.
+    With ``jobs > 1`` the units (:func:`units`) run in forked worker processes, the
+    heaviest first by ``estimates`` (seconds per certificate id, e.g. the last run's
+    timings; by size without them).  The outcomes are the same as with ``jobs = 1``:
+    every certificate and quantity is deterministic, only the order of work changes.
+    ``progress(k, n, id)`` is told when the k-th certificate is done."""
+    certs = select(ids)
+    plan = units(certs)
+    cost = (lambda c: estimates.get(c.id, 0.0)) if estimates else (lambda c: 1.0)
+    plan.sort(key=lambda unit: (-sum(cost(c) for c in unit), claim_key(unit[0].id)))
     if progress:
-        progress(len(certs), len(certs), "")
-    return results, {"certificates": timings,
-                     "shared": {n: round(v, 4) for n, v in ctx.seconds.items()}}
+        progress(0, len(certs), "")
+    parallel = jobs > 1 and len(plan) > 1 and "fork" in multiprocessing.get_all_start_methods()
+    if parallel:
+        finished, seconds = _parallel(plan, jobs, progress)
+    else:
+        done = iter(range(1, len(certs) + 1))
+        report = (lambda cert: progress(next(done), len(certs), cert.id)) if progress else None
+        finished, seconds = run_unit(certs, report)
+    finished.sort(key=lambda item: claim_key(item[0].id))
+    timings = {cert.id: {"seconds": round(total, 4), "of_which_shared": round(shared, 4)}
+               for cert, _, total, shared in finished}
+    return [(cert, outcome) for cert, outcome, _, _ in finished], \
+        {"certificates": timings, "shared": {n: round(v, 4) for n, v in seconds.items()}}
