@@ -1,0 +1,46 @@
+"""Every certificate names a claim of ../shared/CLAIMS.md and a range of lines that a
+reader finds in the paper's source (arXiv:2411.10324v1, the LaTeX file)."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from certify.run import runner
+
+ROOT = Path(__file__).resolve().parent.parent
+PAPER = ROOT.parent / "shared" / "paper" / "inelastic-collapse-four-particles.tex"
+CLAIMS = ROOT.parent / "shared" / "CLAIMS.md"
+LINES = re.compile(r"l\. (\d+)(?:-(\d+))?((?:, \d+(?:-\d+)?)*)")
+
+
+def ranges(line: str) -> list[tuple[int, int]]:
+    """``l. 617-630, 686-690`` as [(617, 630), (686, 690)]."""
+    assert LINES.fullmatch(line), f"not a line range: {line!r}"
+    out = []
+    for part in line[3:].split(", "):
+        lo, _, hi = part.partition("-")
+        out.append((int(lo), int(hi or lo)))
+    return out
+
+
+def test_every_paper_line_is_a_range():
+    for cert in runner.select():
+        for lo, hi in ranges(cert.line):
+            assert 1 <= lo <= hi, (cert.id, cert.line)
+
+
+@pytest.mark.skipif(not PAPER.is_file(), reason="the paper's source is not beside this checkout")
+def test_every_range_lies_in_the_source():
+    n = len(PAPER.read_text(encoding="utf-8").splitlines())
+    for cert in runner.select():
+        for lo, hi in ranges(cert.line):
+            assert hi <= n, (cert.id, cert.line, n)
+
+
+@pytest.mark.skipif(not CLAIMS.is_file(), reason="CLAIMS.md is not beside this checkout")
+def test_every_certificate_names_a_listed_claim():
+    ids = set(re.findall(r"^\| ([LMTSN]\d+) \|", CLAIMS.read_text(encoding="utf-8"), re.M))
+    for cert in runner.select():
+        assert cert.id.split(".")[0] in ids, cert.id
