@@ -112,6 +112,16 @@ def growth(data: list[Datum]) -> list[str]:
 
 
 # ---------------------------------------------------------------- S6
+def multiple(rows, M: sp.Matrix):
+    """k > 0 with rows = k·M (an integer matrix and a rational one), or None."""
+    N = sp.Matrix([[int(z) for z in row] for row in rows])
+    ratios = {a / b for a, b in zip(N, M) if b != 0}
+    if len(ratios) != 1 or any(a != 0 for a, b in zip(N, M) if b == 0):
+        return None
+    k = ratios.pop()
+    return k if k > 0 else None
+
+
 @certificate("S6", "l. 839-868",
              "Theorem 4.1: two trajectories with the same contact and Span(p(0),q(0)) = Span(p'(0),q'(0)) have "
              "the same plane Span(p(k),q(k)) at every collision k (and so the same collision types).",
@@ -120,23 +130,29 @@ def spherical_reduction_theorem(section4_data, A, B, C):
     """Proof: K_j fixes the plane {x_j = 0} pointwise, so with p' = p + t q,
     Span(p', K_j q) = K_j Span(p', q) = K_j Span(p, q): the new plane is K_j P whatever
     the radial part of q, and its normal is cof(K_j) n (cof(K) (a ∧ b) = Ka ∧ Kb).
-    Then on the dynamics: exact runs of two data per plane, compared collision by
-    collision with each other and with the projective map."""
-    checks, r0 = [], sp.Rational(1, 3)
+    The engine's cof(K_j) (:func:`certify.reduction.cofactor_columns` at a symbolic r)
+    is the printed matrix's, as matrices over Q(r); the integer matrices the map steps
+    with are positive multiples of it at every r of the runs.  Then on the dynamics:
+    exact runs of two data per plane, compared collision by collision with each other
+    and with the projective map."""
+    checks, rates = [], sorted({d.r for d in section4_data} | {Q(1, 3)})
     for letter, text in zip(LETTERS, (A, B, C)):
         K, j = matrix(text), INDEX[letter]
         fixed = all((K * sp.eye(3).col(m) - sp.eye(3).col(m)).applyfunc(sp.expand) == sp.zeros(3, 1)
                     for m in range(3) if m != j)
         cof = K.adjugate().T                     # cof(K)(a ∧ b) = Ka ∧ Kb for every K
-        engine = sp.Matrix([[int(z) for z in row] for row in R.cofactor(letter, Q(1, 3))])
-        at_r0 = cof.subs(r, r0)
-        ratio = {e / c for e, c in zip(engine, at_r0) if c != 0}
-        moves = len(ratio) == 1 and ratio.pop() > 0 and all(e == 0 for e, c in zip(engine, at_r0) if c == 0)
+        engine = sp.Matrix.hstack(*(sp.Matrix(col) for col in R.cofactor_columns(letter, r)))
+        same = all(sp.cancel(e) == 0 for e in engine - cof)                 # as matrices over Q(r)
+        scaled = [multiple(R.cofactor(letter, r0), cof.subs(r, sp.Rational(int(r0.p), int(r0.q)))) for r0 in rates]
         checks.append(Check(f"{letter.upper()} fixes {{x_{j + 1} = 0}} pointwise, so the plane after a collision "
                             f"{letter} is {letter.upper()}·P, with normal cof({letter.upper()}) n; the projective map "
-                            f"moves normals by this cof({letter.upper()}) (a positive multiple, at r = 1/3)",
-                            fixed and moves,
-                            [f"cof({letter.upper()}) = det·{letter.upper()}^(-T) = `{show(cof.applyfunc(sp.factor).tolist())}`"]))
+                            f"moves normals by this cof({letter.upper()}): the engine's cof({letter.upper()}) equals "
+                            "it as a matrix over Q(r), and the integer matrix it steps with at each r of the runs is a "
+                            "positive multiple of it there", fixed and same and all(k is not None for k in scaled),
+                            [f"cof({letter.upper()}) = det·{letter.upper()}^(-T) = `{show(cof.applyfunc(sp.factor).tolist())}`",
+                             f"engine − printed over Q(r): {'0' if same else show((engine - cof).applyfunc(sp.factor).tolist())}; "
+                             f"integer multiples at {len(rates)} values of r: "
+                             f"{sum(k is not None for k in scaled)} positive"]))
     compared = same = 0
     for d in section4_data:
         (run1, run2), k = d.runs, d.realised

@@ -10,6 +10,7 @@ from hypothesis import given, settings, strategies as st
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.algebra.balls import precision
+from certify.algebra.poly import r
 from certify.dynamics.model import INDEX, LETTERS, collision_matrix
 from certify.run.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
 from proofs import reduction as P
@@ -23,11 +24,15 @@ def outcome(id, **overrides):
     return run_certificate(CERTIFICATES[id], CTX, overrides or None)
 
 
+# A with (1+3r)/3 for (1+r)/2: both are 2/3 at r = 1/3 (where S6 compared them before), and A
+# still fixes {x = 0}: only the comparison over Q(r) sees it
+AGREES_AT_ONE_THIRD = altered("S6", "A", "[(1+r)/2, 1, 0]", "[(1+3*r)/3, 1, 0]")
 EXPECTED = {"S6": PASS, "S7.2": PASS, "S8.2": ERRATUM, "S9.2": PASS, "S10": ERRATUM, "S11": PASS}
 MUTATIONS = {
     "S6": [altered("S6", "B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]"),      # B no longer fixes {y = 0}
            altered("S6", "C", "[0, 0, -r]", "[0, 1, -r]"),
-           altered("S6", "A", "[[-r, 0, 0]", "[[r, 0, 0]")],                   # a column that A does not fix
+           altered("S6", "A", "[[-r, 0, 0]", "[[r, 0, 0]"),                    # a column that A does not fix
+           AGREES_AT_ONE_THIRD],                       # the same matrix at r = 1/3, another one over Q(r)
     "S7.2": [altered("S7.2", "a_pos", "2-3", "3-4"), altered("S7.2", "c_neg", "sin(θ)*sin(φ)", "cos(θ)*sin(φ)"),
              altered("S7.2", "q0_b", "-sin(θ)*cos(φ)", "sin(θ)*cos(φ)")],
     "S8.2": [altered("S8.2", "to_b", "ey", "ez"), altered("S8.2", "orientation", "a: y", "a: z"),
@@ -92,6 +97,29 @@ def test_one_step_of_the_map_is_the_next_collision(seed, letter, m):
             continue
         L, _t, p1, q1 = nxt
         assert R.step(P0, r) == R.plane(L, p1, q1)
+
+
+def test_s6_mutation_is_invisible_at_one_third():
+    """The mutated A equals the printed one at r = 1/3 and fixes {x = 0} like it."""
+    from proofs.model import A_PRINTED, matrix
+    K, K2 = matrix(A_PRINTED), matrix(AGREES_AT_ONE_THIRD["A"])
+    third = sp.Rational(1, 3)
+    assert K.subs(r, third) == K2.subs(r, third) and K != K2
+    assert K2[:, 1:] == K[:, 1:] == sp.Matrix([[0, 0], [1, 0], [0, 1]])
+    assert outcome("S6", **AGREES_AT_ONE_THIRD).printed[0].holds is False
+
+
+def test_cofactor_over_q_of_r():
+    """The engine's cof(K), built in SymPy at a symbolic r, is det(K) K^(-T) over Q(r); the
+    integer matrix the map steps with at a rational r is a positive multiple of it."""
+    for L in LETTERS:
+        K = collision_matrix(L)
+        engine = sp.Matrix.hstack(*(sp.Matrix(c) for c in R.cofactor_columns(L, r)))
+        assert all(sp.cancel(e) == 0 for e in engine - K.det() * K.inv().T)
+        for r0 in (Q(1, 3), Q(2, 7), Q(97, 100)):
+            k = P.multiple(R.cofactor(L, r0), engine.subs(r, sp.Rational(int(r0.p), int(r0.q))))
+            assert k is not None and k > 0
+    assert P.multiple(((1, 2, 3),) * 3, sp.Matrix([[-1, -2, -3]] * 3)) is None      # negative multiple
 
 
 def test_cofactor_moves_the_normal():
