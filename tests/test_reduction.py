@@ -14,6 +14,7 @@ from certify.algebra.poly import r
 from certify.dynamics.model import INDEX, LETTERS, collision_matrix
 from certify.run.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
 from proofs import reduction as P
+from proofs import reduction_identities as I
 
 load_all()
 CTX = Context()
@@ -86,17 +87,49 @@ def random_state(rng, letter):
 @given(st.integers(0, 10 ** 6), st.sampled_from(LETTERS), st.integers(2, 99))
 def test_one_step_of_the_map_is_the_next_collision(seed, letter, m):
     """From any state right after a collision, if the particles collide again, the
-    projective step gives that collision's contact and plane, for every radial part."""
+    projective step gives that collision's contact and plane, for every radial part.
+    Every path asserts: at a corner (cos φ = 0) the map refuses to step; when no pair
+    approaches the map still steps (Remark 4.2: the reduction goes on); a simultaneous
+    pair of collisions happens only at a corner (Remark 4.2's proof, S11)."""
     rng, r = random.Random(seed), Q(1, m)
     p, q = random_state(rng, letter)
     for lam in (Q(0), Q(-1), Q(-7, 2)):
         qq = tuple(z + lam * x for z, x in zip(q, p))
-        nxt = sim.step(p, qq, r)
         P0 = R.plane(letter, p, qq)
-        if nxt is None or len(nxt[0]) > 1 or R.sign(P0.n[INDEX[letter]]) == 0:
+        if R.sign(P0.n[INDEX[letter]]) == 0:
+            assert_corner(P0, p, qq, r)
             continue
+        nxt = sim.step(p, qq, r)
+        if nxt is None:
+            assert all(z >= 0 for z in qq) and R.step(P0, r).letter != letter
+            continue
+        assert len(nxt[0]) == 1, "a simultaneous collision off a corner"
         L, _t, p1, q1 = nxt
         assert R.step(P0, r) == R.plane(L, p1, q1)
+
+
+def assert_corner(P0, p, q, r):
+    """At a corner (cos φ = n_i = 0) the map refuses to step, and the particles never have
+    a single binary collision next: the two other gaps close together or not at all."""
+    with pytest.raises(R.Corner):
+        R.step(P0, r)
+    try:
+        nxt = sim.step(p, q, r)
+    except sim.MultipleCollision:
+        return
+    assert nxt is None or len(nxt[0]) > 1
+
+
+def test_corners():
+    """Contact a, p = (0, 1, 1): q = (1, ∓1, ∓1) spans a plane with n_1 = 0."""
+    p = (Q(0), Q(1), Q(1))
+    for s in (1, -1):
+        q = (Q(1), Q(s), Q(s))
+        P0 = R.plane("a", p, q)
+        assert P0.n[0] == 0
+        assert_corner(P0, p, q, Q(1, 3))
+    with pytest.raises(sim.MultipleCollision):             # b and c close together: particles 2, 3, 4 meet
+        sim.step(p, (Q(1), Q(-1), Q(-1)), Q(1, 3))
 
 
 def test_s6_mutation_is_invisible_at_one_third():
@@ -159,14 +192,23 @@ def test_word_of_matches_the_orbit():
 
 
 def test_printed_trilinear_formula_is_the_relabelled_one_for_contact_a():
+    """For the contact a the relabelled formula is the printed one of l. 976 when the next
+    collision is b, and the printed one of l. 980 with u(0) ∧ e_z (S8's erratum) when it is
+    c; u_1 = cos φ = 0 is a corner.  Every path asserts, and both collisions occur."""
     rng = random.Random(5)
-    for _ in range(20):
+    seen = {"b": 0, "c": 0, "corner": 0}
+    for _ in range(40):
         u = tuple(Q(rng.randint(-9, 9)) for _ in range(3))
         if u[0] == 0:
+            with pytest.raises(R.Corner):
+                R.vectorial_step("a", u, Q(1, 3))
+            seen["corner"] += 1
             continue
         j, ut = R.vectorial_step("a", u, Q(1, 3))
-        if j == "b":
-            assert R.formula("cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))")(u, Q(1, 3)) == ut
+        printed = {"b": I.TRILINEAR_B, "c": I.TRILINEAR_C_CORRECTED}[j]
+        assert R.formula(printed)(u, Q(1, 3)) == ut
+        seen[j] += 1
+    assert seen["b"] > 0 and seen["c"] > 0 and seen["corner"] > 0
 
 
 def test_trigonometric_step_on_an_exact_state():
