@@ -14,7 +14,6 @@ gaps positive, q with q_i > 0 (the pair separates), and a second datum
 """
 from __future__ import annotations
 
-import itertools
 import random
 from dataclasses import dataclass
 
@@ -27,6 +26,7 @@ from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS
 from certify.run import Check, certificate, conclude, quantity
+from proofs import reduction_cones as RC
 from proofs import reduction_identities as I
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
@@ -315,6 +315,30 @@ def occurrences(words, pattern: str) -> int:
     return sum(sum(w.startswith(pattern, k) for k in range(len(w))) for w in words)
 
 
+# ---------------------------------------------------------------- the proofs on cones (S9.2, S10, S11)
+SECTION2 = {L: I.SECTION2[L.upper()] for L in LETTERS}
+
+
+@quantity("reduction_cones")
+def reduction_cones() -> dict:
+    """The step lemma of the reduction on the six cones of states (contact, sign of cos φ),
+    with the collision matrices of Section 2 (proofs/reduction_cones.py)."""
+    return RC.steps(SECTION2)
+
+
+def lemma_check(s: RC.Step) -> Check:
+    """The step lemma on one cone as one check; its parts as evidence (✓/✗)."""
+    nxt = (f"the next collision is {s.following}; the next state lies in a cone of {s.following}, with "
+           f"cos φ' {RC.SIGN[s.cos_next]}") if s.following else "no next collision proven"
+    ev = [f"{'✓' if c.holds else '✗'} {c.statement}" for c in s.checks]
+    ev += [e for c in s.checks if not c.holds for e in c.evidence]
+    return Check(f"step lemma on the cone {s.label} (every state there, exact): {nxt}", s.holds, ev)
+
+
+def supporting(text: str) -> str:
+    return f"Supporting evidence, not proof: {text}"
+
+
 # ---------------------------------------------------------------- S9.2
 PRINTED_S9 = dict(aca="c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ a", cac="c_k = c, c_{k+1} = a ⇒ c_{k+2} ≠ c")
 
@@ -327,25 +351,42 @@ def implication(text: str) -> tuple[str, str]:
 
 
 @certificate("S9.2", "l. 997-1035",
-             "Proposition 4.2 on long orbits: no aca and no cac in 10^5 collisions of exact orbits of the reduction "
-             "map, nor in the exact particle runs.",
-             needs=["reduction_scan", "section4_data"], printed=PRINTED_S9)
-def no_aca_cac_on_long_orbits(reduction_scan, section4_data, aca, cac):
-    """Count the excluded patterns in the words of the exact orbits (each letter
-    decided by an exact sign)."""
+             "Proposition 4.2 for every orbit of the reduction map, in its projective form: after a then c (c then a), "
+             "on the whole cone of such states the next normal n' = cof(C) n (cof(A) n) has signs that exclude a (c) "
+             "as the next collision.  Supported by no aca, no cac in 10^5 collisions of exact orbits and in the exact "
+             "particle runs.",
+             needs=["reduction_cones", "reduction_scan", "section4_data"], printed=PRINTED_S9)
+def no_aca_cac_for_every_orbit(reduction_cones, reduction_scan, section4_data, aca, cac):
+    """A proof independent of S9.1's (which is in θ, φ): the states right after a
+    collision x whose next collision is y form one cone (contact x, sign of n_x); on it
+    the step lemma gives the next normal n' ∝ p' ∧ K_y w = ρ cof(K_y) n, and the collision
+    after y is the gap m ≠ y with n'_y n'_m > 0.  So z cannot follow when n'_y n'_z < 0 is
+    proven from the factors on the whole cone.  The counts on the exact orbits are
+    supporting evidence."""
     scan = [o.word for o in reduction_scan]
     physical = [run.word for d in section4_data for run in d.runs]
-    checks = []
+    checks, evidence = [], []
     for text in (aca, cac):
         pair, excluded = implication(text)
+        x, y = (pair + "??")[:2]
+        cases = [c for c in reduction_cones.values() if c.contact == x and c.following == y]
         pattern = pair + excluded
-        n_scan, n_phys = occurrences(scan, pattern), occurrences(physical, pattern)
-        checks.append(Check(f"{text}: no {pattern}", n_scan == 0 and n_phys == 0,
-                            [f"{pattern} occurs {n_scan} times in {sum(map(len, scan))} collisions of "
-                             f"{len(scan)} exact reduction orbits, {n_phys} times in "
-                             f"{sum(map(len, physical))} collisions of {len(physical)} exact particle runs; "
-                             f"{pair} occurs {occurrences(scan, pair)} times in the orbits"]))
-    return conclude(checks)
+        if len(cases) != 1:
+            checks.append(Check(f"{text}: no state of contact {x} has the next collision {y}", False))
+            continue
+        c = cases[0]
+        res = c.excludes(excluded)
+        checks.append(Check(f"{text}: every state with c_k = {x}, c_(k+1) = {y} lies in the cone {c.label}; there "
+                            f"the next normal n' has n'_{INDEX[y] + 1} n'_{INDEX[excluded] + 1} < 0, so the collision "
+                            f"after {y} is not {excluded} (for every orbit)", c.holds and res.holds,
+                            [f"n' ∝ p' ∧ {y.upper()} w = `{T.show(c.normal)}`"] + res.evidence
+                            + ([] if c.holds else lemma_check(c).evidence)))
+        evidence.append(supporting(
+            f"{pattern} occurs {occurrences(scan, pattern)} times in {sum(map(len, scan))} collisions of {len(scan)} "
+            f"exact reduction orbits and {occurrences(physical, pattern)} times in {sum(map(len, physical))} "
+            f"collisions of {len(physical)} exact particle runs (which realise prefixes of the reduction's words, "
+            f"S11); {pair} occurs {occurrences(scan, pair)} times in the orbits."))
+    return conclude(checks, evidence=evidence)
 
 
 # ---------------------------------------------------------------- S10
@@ -355,13 +396,6 @@ PRINTED_S10 = dict(window="c_k = b ⇒ c_{k+2} = b or c_{k+3} = b", blocks="ab, 
 def offsets(text: str) -> set[int]:
     """"c_k = b ⇒ c_{k+2} = b or c_{k+3} = b" as {2, 3}."""
     return {int(part.split("k+")[1].split("}")[0]) for part in text.split("⇒")[1].split(" or ")}
-
-
-def admissible(n: int) -> list[str]:
-    """Every word of length n with no letter twice in a row and no aca, cac: the
-    words the reduction allows by Proposition 4.2 and l. 881-929."""
-    words = ("".join(w) for w in itertools.product(LETTERS, repeat=n))
-    return [w for w in words if all(x != y for x, y in zip(w, w[1:])) and "aca" not in w and "cac" not in w]
 
 
 def window_holds(words, ks: set[int]) -> tuple[int, int]:
@@ -390,87 +424,95 @@ def parses(word: str, blocks: list[str]) -> bool:
 @certificate("S10", "l. 1037-1051",
              "Corollary 4.3: b occurs infinitely often, and c_k = b implies c_{k+2} = b or c_{k+3} = b; every "
              "pattern c_1 c_2 … is a concatenation of the blocks ab, cb, acb, cab.",
-             needs=["reduction_scan"], printed=PRINTED_S10)
-def b_recurs(reduction_scan, window, blocks):
-    """From Proposition 4.2 by exhausting the admissible words of length 4 that start
-    with b; then on the scan's 10^5 exact collisions.  The block decomposition fails
-    for orbits whose first collision is b (no block starts with b): the corrected
-    statement drops that leading b."""
+             needs=["reduction_cones", "reduction_scan"], printed=PRINTED_S10)
+def b_recurs(reduction_cones, reduction_scan, window, blocks):
+    """For every orbit: every window of an orbit's word is admissible, that is its pairs
+    are proven steps (the step lemma on the six cones: the next contact is another one)
+    and its triples are not excluded by the sign of the next normal (Proposition 4.2 as
+    in S9.2: no aca, no cac).  The statements follow by exhausting the admissible
+    windows.  The block decomposition fails for every orbit whose first collision is b
+    (no block starts with b), as for every state of a cone whose next contact is b; it
+    holds once that leading b is removed, by induction along the word.  The scan's 10^5
+    exact collisions are supporting evidence."""
     ks, blks = offsets(window), [B.strip() for B in blocks.split(",")]
-    starts_b = [w for w in admissible(4) if w[0] == "b"]
+    cones = reduction_cones.values()
+    lemma = all(c.holds for c in cones)
+    allowed = RC.transitions(reduction_cones)
+    rules = "; ".join(f"{x}{y} → {'/'.join(sorted(z))}" for (x, y), z in sorted(allowed.items()))
+    starts_b = [w for w in RC.admissible(max(ks) + 1, allowed) if w[0] == "b"]
     seen, good = window_holds(starts_b, ks)
+    three = RC.admissible(3, allowed)
     scan = [o.word for o in reduction_scan]
     s_seen, s_good = window_holds(scan, ks)
-    printed = [Check(f"{window}: every admissible word b??? (no repeated letter, no aca, cac) has b at the "
-                     "stated places", seen == good > 0, [f"{good} of {seen}: {', '.join(starts_b)}"]),
-               Check(f"{window} on the scan (so b occurs infinitely often)", s_seen == s_good > 0,
-                     [f"{s_good} of {s_seen} collisions b"])]
-    whole = [w for w in scan if parses(w, blks)]
+    printed = [Check(f"{window}: every admissible window b… of length {max(ks) + 1} has b at the stated places (for "
+                     "every orbit)", lemma and seen == good > 0,
+                     [f"allowed after each proven step: {rules}", f"{good} of {seen}: {', '.join(starts_b)}"]),
+               Check("b occurs infinitely often: every admissible window of length 3 contains b, and every orbit off "
+                     "the corners has infinitely many collisions (the step lemma on the six cones, S11)",
+                     lemma and all("b" in w for w in three), [f"{len(three)} windows: {', '.join(three)}"])]
+    width = max(len(B) for B in blks)
+    uncovered = [w for w in RC.admissible(width, allowed) if w[0] != "b" and not any(w.startswith(B) for B in blks)]
+    induction = lemma and not uncovered and all(B.endswith("b") and "b" not in B[:-1] for B in blks)
+    first_b = [c for c in cones if c.holds and c.following == "b"]
+    witness = []
+    for c in first_b:
+        P = R.canonical(c.contact, RC.representative(c))
+        witness.append(f"every state of the cone {c.label} (e.g. n = {P.n}, whose first collision is "
+                       f"{R.next_letter(P)} by the engine) has c_1 = b")
+    induction_ev = [f"admissible windows of length {width} not starting with b and not starting with a block: "
+                    f"{', '.join(uncovered) or 'none'}; every block ends with its only b, and no letter follows itself"]
     leading_b = [w for w in scan if w.startswith("b")]
-    printed.append(Check(f"every pattern is a concatenation of {', '.join(blks)}", len(whole) == len(scan),
-                         [f"{len(whole)} of {len(scan)} orbit words parse; {len(leading_b)} start with b, e.g. "
-                          f"`{(leading_b or [''])[0][:24]}…`"]))
-    minus_b = [w[1:] if w.startswith("b") else w for w in scan]
-    short = admissible(6)
+    printed.append(Check(f"every pattern is a concatenation of {', '.join(blks)}", induction and not first_b,
+                         witness + induction_ev))
     corrected = printed[:2] + [
-        Check(f"c_1 c_2 …, without its first letter when that is b, is a concatenation of {', '.join(blks)}: "
-              "on every admissible word of length 6 and on the scan",
-              all(parses(w[1:] if w[0] == "b" else w, blks) for w in short) and
-              all(parses(w, blks) for w in minus_b), [f"{len(short)} admissible words of length 6"])]
-    return conclude(printed, corrected)
+        Check(f"c_1 c_2 …, without its first letter when that is b, is a concatenation of {', '.join(blks)}: each "
+              "admissible window that does not start with b starts with a block, which ends with b, so the next "
+              "letter is not b again (induction along the word)", induction, induction_ev)]
+    evidence = [supporting(f"{window} at {s_good} of {s_seen} collisions b of the scan ({len(scan)} exact orbits, "
+                           f"{sum(map(len, scan))} collisions); {sum(parses(w, blks) for w in scan)} of {len(scan)} "
+                           f"orbit words parse as printed, {len(leading_b)} start with b, e.g. "
+                           f"`{(leading_b or [''])[0][:24]}…`, and all parse without that b: "
+                           f"{all(parses(w[1:] if w.startswith('b') else w, blks) for w in scan)}.")]
+    return conclude(printed, corrected, evidence=evidence)
 
 
 # ---------------------------------------------------------------- S11
-PRINTED_S11 = dict(reduction="infinitely many collisions", realised="a prefix")
-
-
-def next_state_lemma() -> list[str]:
-    """Exact identities behind "the reduction never stops": for a normal n and contact
-    i, with p = ±(n ∧ e_i) > 0 and w = |n|² e_i − n_i n: w ⊥ n, w ⊥ p, w_i = n_j² + n_k²,
-    w_m = −n_i n_m (m ≠ i).  Returns the failures (empty when all hold)."""
-    n = sp.Matrix(sp.symbols("n1:4"))
-    bad = []
-    for L in LETTERS:
-        i = INDEX[L]
-        e = sp.eye(3).col(i)
-        p = n.cross(e)
-        w = (n.dot(n)) * e - n[i] * n
-        others = [m for m in range(3) if m != i]
-        for name, val in (("w·n", w.dot(n)), ("w·p", w.dot(p)),
-                          ("w_i − Σ n_m²", w[i] - sum(n[m] ** 2 for m in others)),
-                          *((f"w_{m + 1} + n_i n_{m + 1}", w[m] + n[i] * n[m]) for m in others)):
-            if sp.expand(val) != 0:
-                bad.append(f"contact {L}: {name} = {val}")
-    return bad
+PRINTED_S11 = dict(reduction="infinitely many collisions", realised="a prefix", A=A_PRINTED, B=B_PRINTED, C=C_PRINTED)
 
 
 @certificate("S11", "l. 869-875",
              "Remark 4.2: every orbit of the reduction off the corners has infinitely many collisions; the "
              "collisions realised by the particle system are a prefix of it.",
-             needs=["reduction_scan", "section4_data"], printed=PRINTED_S11)
-def reduction_never_stops(reduction_scan, section4_data, reduction, realised):
-    """Proof: with w the tangential velocity (identities below), exactly one gap j ≠ i
-    closes (w_j = −n_i n_j < 0, the other w_k > 0, since p > 0 forces n_j n_k < 0), at
-    the time t = p_j/(n_i n_j) > 0; then p'_i = t w_i > 0, p'_k = p_k + t w_k > 0, and
-    q'_j = −r w_j > 0 (M3): the new state lies in the open face with sin φ' > 0, so
-    the map is defined again unless cos φ' = 0, a corner.  On the dynamics: every
-    exact particle run's word is a prefix of the reduction's word."""
-    bad = next_state_lemma()
-    checks = [Check("the tangential velocity w = |n|² e_i − n_i n: w ⊥ n, w ⊥ p, w_i = n_j² + n_k² > 0, "
-                    "w_m = −n_i n_m: exactly one other gap closes and the next state lies in the open face",
-                    not bad, bad or ["all identities hold for the three contacts"])]
-    lengths = [len(o.word) for o in reduction_scan]
-    unbroken = all(k == SCAN_LENGTH for k in lengths)
-    checks.append(Check(f"{len(lengths)} exact orbits from random planes have {reduction}: "
-                        f"{'no' if unbroken else 'a'} corner in {sum(lengths)} collisions",
-                        unbroken if reduction.startswith("infinitely") else not unbroken,
-                        [f"shortest orbit: {min(lengths)} of {SCAN_LENGTH} collisions"]))
+             needs=["reduction_cones", "reduction_scan", "section4_data"], printed=PRINTED_S11)
+def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduction, realised, A, B, C):
+    """Proof, for every orbit (proofs/reduction_cones.py): a state off the corners lies in
+    one of six cones (contact i, sign of n_i = |n| cos φ); on each, with the printed A, B,
+    C, exactly one other gap j closes (w_j = −n_i n_j < 0 < w_k), at a time t > 0, at a
+    point p' of the open face j, the pair j separates (−r w_j > 0), and the next normal
+    p' ∧ K_j w = ρ cof(K_j) n (ρ > 0) lies in a cone of j unless n'_j = 0, a corner.  So
+    the map is defined again at every step: infinitely many collisions.  The particles,
+    whatever the radial part of their velocity, collide next at j or never, and then span
+    the reduction's next plane: their collisions are a prefix.  The scan and the exact
+    runs are supporting evidence."""
+    K = {L: matrix(text) for L, text in zip(LETTERS, (A, B, C))}
+    cones = reduction_cones if all(K[L] == SECTION2[L] for L in LETTERS) else RC.steps(K)
+    checks = [lemma_check(c) for c in cones.values()]
+    closed = all(c.holds for c in cones.values())
+    checks.append(Check(f"every orbit of the reduction off the corners has {reduction}: the six cones hold every "
+                        "state off the corners, and each step maps a cone into a cone of the next contact, or onto a "
+                        "corner (n'_j = 0)", closed and reduction.startswith("infinitely")))
+    motion = [RC.physical(c, K) if c.holds else Check(f"{c.label}: the step lemma", False) for c in cones.values()]
+    checks += motion
+    prefix = closed and all(m.holds for m in motion)
     runs = [(run, d) for d in section4_data for run in d.runs]
-    prefix = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)
     separated = sum(run.stop == "free" for run, d in runs)
-    holds = {"a prefix": prefix == len(runs), "the whole": prefix == len(runs) and separated == 0}[realised]
-    checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence", holds,
-                        [f"{prefix} of {len(runs)} exact runs realise a prefix of the reduction's word "
-                         f"({N_REDUCTION} collisions); {separated} of them end because the particles separate, "
-                         "while the reduction goes on"]))
-    return conclude(checks)
+    checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence (for every datum, by "
+                        "induction on the collisions)", {"a prefix": prefix, "the whole": False}[realised],
+                        [f"{separated} exact runs end because the particles separate while the reduction goes on"]))
+    lengths = [len(o.word) for o in reduction_scan]
+    realise = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)
+    evidence = [supporting(f"{len(lengths)} exact orbits from random planes meet no corner in {sum(lengths)} "
+                           f"collisions (shortest {min(lengths)} of {SCAN_LENGTH}); {realise} of {len(runs)} exact "
+                           f"particle runs realise a prefix of the reduction's word ({N_REDUCTION} collisions), "
+                           f"{separated} of them end because the particles separate.")]
+    return conclude(checks, evidence=evidence)

@@ -1,5 +1,6 @@
 """Section 4 on the dynamics: the reduction map (certify.reduction) and the
 certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/reduction.py)."""
+import itertools
 import random
 
 import flint
@@ -14,6 +15,7 @@ from certify.algebra.poly import r
 from certify.dynamics.model import INDEX, LETTERS, collision_matrix
 from certify.run.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
 from proofs import reduction as P
+from proofs import reduction_cones as RC
 from proofs import reduction_identities as I
 
 load_all()
@@ -38,9 +40,14 @@ MUTATIONS = {
              altered("S7.2", "q0_b", "-sin(θ)*cos(φ)", "sin(θ)*cos(φ)")],
     "S8.2": [altered("S8.2", "to_b", "ey", "ez"), altered("S8.2", "orientation", "a: y", "a: z"),
              altered("S8.2", "to_b", "cross(ex, u0)", "cross(u0, ex)")],
-    "S9.2": [altered("S9.2", "aca", "c_{k+1} = c", "c_{k+1} = b")],
+    "S9.2": [altered("S9.2", "aca", "c_{k+1} = c", "c_{k+1} = b"),        # after ab both a and c may come
+             altered("S9.2", "aca", "≠ a", "≠ b"),                           # after ac the next is b
+             altered("S9.2", "cac", "c_k = c", "c_k = b")],                  # after ba both b and c may come
     "S10": [altered("S10", "window", " or c_{k+3} = b", ""), altered("S10", "blocks", ", cab", "")],
-    "S11": [{"realised": "the whole"}, {"reduction": "finitely many collisions"}],
+    "S11": [{"realised": "the whole"}, {"reduction": "finitely many collisions"},
+            altered("S11", "C", "[0, 0, -r]", "[0, 0, r]"),                  # the pair c would not separate
+            altered("S11", "B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]"),      # B p' ≠ p': another plane
+            altered("S11", "A", "[(1+r)/2, 1, 0]", "[(1+r)/2, 2, 0]")],       # A moves {x = 0}
 }
 
 
@@ -223,7 +230,15 @@ def test_trigonometric_step_on_an_exact_state():
 
 
 def test_admissible_words_and_blocks():
-    assert all("aca" not in w and "cac" not in w for w in P.admissible(5)) and len(P.admissible(3)) == 10
+    """The windows the proofs allow are the words with no letter twice in a row and no aca, cac."""
+    allowed = RC.transitions(CTX.get("reduction_cones"))
+    assert allowed == {("a", "b"): {"a", "c"}, ("a", "c"): {"b"}, ("b", "a"): {"b", "c"}, ("b", "c"): {"a", "b"},
+                       ("c", "a"): {"b"}, ("c", "b"): {"a", "c"}}
+    for n in range(1, 7):
+        by_hand = ["".join(w) for w in itertools.product(LETTERS, repeat=n)
+                   if all(x != y for x, y in zip(w, w[1:])) and "aca" not in "".join(w) and "cac" not in "".join(w)]
+        assert sorted(RC.admissible(n, allowed)) == sorted(by_hand)
+    assert len(RC.admissible(3, allowed)) == 10
     assert P.parses("abcbacbca", ["ab", "cb", "acb", "cab"])       # ab cb acb + "ca" cut short
     assert not P.parses("babcb", ["ab", "cb", "acb", "cab"])
     assert P.offsets(P.PRINTED_S10["window"]) == {2, 3}
@@ -248,3 +263,36 @@ def test_conversions_round_trip():
 def test_altered_refuses_a_text_that_is_not_printed():
     with pytest.raises(ValueError):
         altered("S10", "blocks", "bca", "abc")
+
+
+def test_verdicts_rest_on_the_proofs_not_on_the_samples():
+    """S9.2, S10 and S11 keep their verdicts when the scan is replaced by a word that
+    contradicts them (aca, a corner after 6 collisions) and the particle runs by none:
+    the scan and the runs are supporting evidence; the proofs on the cones decide."""
+    ctx = Context()
+    ctx.values["reduction_scan"] = [P.ScanOrbit(Q(1, 2), R.canonical("a", [1, 1, -1]), "acacab", 1)]
+    ctx.values["section4_data"] = []
+    for id in ("S9.2", "S10", "S11"):
+        out = run_certificate(CERTIFICATES[id], ctx)
+        assert out.status == EXPECTED[id], (id, [c.statement for c in out.printed if not c.holds])
+        assert any(e.startswith("Supporting evidence, not proof") for e in out.evidence)
+
+
+def test_s10_erratum_is_the_leading_b():
+    """The block decomposition fails because every state of a cone whose next contact is b
+    starts its word with b (an exact witness by the engine), and holds without that b."""
+    out = outcome("S10")
+    failing = [c for c in out.printed if not c.holds]
+    assert len(failing) == 1 and "concatenation" in failing[0].statement
+    assert sum("has c_1 = b" in e for e in failing[0].evidence) == 2
+    assert all(c.holds for c in out.corrected) and "first letter when that is b" in out.corrected[-1].statement
+
+
+def test_a_wrong_proof_fails_whatever_the_samples():
+    """With the step lemmas replaced by ones computed from a wrong C, S9.2 and S10 FAIL."""
+    ctx = Context()
+    wrong = {L: collision_matrix(L) for L in LETTERS}
+    wrong["c"] = wrong["c"].subs(-r, r)
+    ctx.values["reduction_cones"] = RC.steps(wrong)
+    for id in ("S9.2", "S10"):
+        assert run_certificate(CERTIFICATES[id], ctx).status == FAIL
