@@ -7,6 +7,12 @@ reduction map is :mod:`certify.reduction` in its three representations: projecti
 trigonometric (the printed six cases, certified balls).  The identities of the
 printed proofs are certified in ``proofs/reduction_identities.py``.
 
+Every claim here is about every trajectory, and every verdict rests on a proof for
+every state: the step lemma of the map and the particle lemma on the six cones of
+states (``proofs/reduction_cones.py``), identities and signs in symbolic n, r (and θ,
+φ for the six printed cases).  The exact runs and the scan of 10^5 collisions are
+reported as supporting evidence, never as a check.
+
 Random data are drawn from a fixed seed, so the report is reproducible.  A datum is
 a state right after a collision: the contact letter i, p with p_i = 0 and the other
 gaps positive, q with q_i > 0 (the pair separates), and a second datum
@@ -111,6 +117,37 @@ def growth(data: list[Datum]) -> list[str]:
     return [f"Growth of the exact numbers along one run (r = {d.r}):", "\n".join(rows)]
 
 
+# ---------------------------------------------------------------- the proofs on cones (S6-S11)
+SECTION2 = {L: I.SECTION2[L.upper()] for L in LETTERS}
+
+
+@quantity("reduction_cones")
+def reduction_cones() -> dict:
+    """The step lemma of the reduction on the six cones of states (contact, sign of cos φ),
+    with the collision matrices of Section 2 (proofs/reduction_cones.py)."""
+    return RC.steps(SECTION2)
+
+
+def printed_cones(cones: dict, A: str, B: str, C: str) -> dict:
+    """The step lemmas with the printed matrices A, B, C: the shared ones when these are
+    the matrices of Section 2, else computed afresh (a mutated print)."""
+    K = {L: matrix(text) for L, text in zip(LETTERS, (A, B, C))}
+    return cones if all(K[L] == SECTION2[L] for L in LETTERS) else RC.steps(K)
+
+
+def lemma_check(s: RC.Step) -> Check:
+    """The step lemma on one cone as one check; its parts as evidence (✓/✗)."""
+    nxt = (f"the next collision is {s.following}; the next state lies in a cone of {s.following}, with "
+           f"cos φ' {RC.SIGN[s.cos_next]}") if s.following else "no next collision proven"
+    ev = [f"{'✓' if c.holds else '✗'} {c.statement}" for c in s.checks]
+    ev += [e for c in s.checks if not c.holds for e in c.evidence]
+    return Check(f"step lemma on the cone {s.label} (every state there, exact): {nxt}", s.holds, ev)
+
+
+def supporting(text: str) -> str:
+    return f"Supporting evidence, not proof: {text}"
+
+
 # ---------------------------------------------------------------- S6
 def multiple(rows, M: sp.Matrix):
     """k > 0 with rows = k·M (an integer matrix and a rational one), or None."""
@@ -125,16 +162,20 @@ def multiple(rows, M: sp.Matrix):
 @certificate("S6", "l. 839-868",
              "Theorem 4.1: two trajectories with the same contact and Span(p(0),q(0)) = Span(p'(0),q'(0)) have "
              "the same plane Span(p(k),q(k)) at every collision k (and so the same collision types).",
-             needs=["section4_data"], printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
-def spherical_reduction_theorem(section4_data, A, B, C):
+             needs=["section4_data", "reduction_cones"], printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
+def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
     """Proof: K_j fixes the plane {x_j = 0} pointwise, so with p' = p + t q,
     Span(p', K_j q) = K_j Span(p', q) = K_j Span(p, q): the new plane is K_j P whatever
     the radial part of q, and its normal is cof(K_j) n (cof(K) (a ∧ b) = Ka ∧ Kb).
     The engine's cof(K_j) (:func:`certify.reduction.cofactor_columns` at a symbolic r)
     is the printed matrix's, as matrices over Q(r); the integer matrices the map steps
-    with are positive multiples of it at every r of the runs.  Then on the dynamics:
-    exact runs of two data per plane, compared collision by collision with each other
-    and with the projective map."""
+    with are positive multiples of it at every r of the runs.  Which collision comes
+    next depends on the plane only: on the six cones of states (proofs/reduction_cones.py)
+    the particles, whatever the radial part of their velocity, collide next at the map's
+    j or never.  By induction, two trajectories on one plane have the same collisions
+    while both last, and the same planes.  The exact runs of two data per plane, compared
+    collision by collision with each other and with the projective map, are supporting
+    evidence."""
     checks, rates = [], sorted({d.r for d in section4_data} | {Q(1, 3)})
     for letter, text in zip(LETTERS, (A, B, C)):
         K, j = matrix(text), INDEX[letter]
@@ -153,6 +194,14 @@ def spherical_reduction_theorem(section4_data, A, B, C):
                              f"engine − printed over Q(r): {'0' if same else show((engine - cof).applyfunc(sp.factor).tolist())}; "
                              f"integer multiples at {len(rates)} values of r: "
                              f"{sum(k is not None for k in scaled)} positive"]))
+    cones = printed_cones(reduction_cones, A, B, C)
+    checks.append(Check("the next collision depends on the contact and the plane only: on each of the six cones of "
+                        "states, whatever the radial part of the velocity, the particles collide next at the map's "
+                        "contact j or never, and then span the plane with normal cof(K_j) n (the step and particle "
+                        "lemmas with the printed A, B, C); by induction, two trajectories on one plane have the same "
+                        "collision types while both last", RC.dynamics_is_proven(cones),
+                        [f"{'✓' if c.motion.holds else '✗'} {c.label}: next {c.following}"
+                         for c in cones.values()]))
     compared = same = 0
     for d in section4_data:
         (run1, run2), k = d.runs, d.realised
@@ -160,12 +209,11 @@ def spherical_reduction_theorem(section4_data, A, B, C):
             compared += 1
             same += P1 == P2 == P
     reached = sum(d.realised >= N_COLLISIONS for d in section4_data)
-    checks.append(Check(f"on {len(section4_data)} random rational data (two per plane, exact runs of up to "
-                        f"{N_COLLISIONS} collisions): same collision type and same plane at every collision, "
-                        "equal to the projective map's", compared > 0 and same == compared,
-                        [f"{compared} collisions compared, {same} agree; {reached} data kept colliding for "
-                         f"{N_COLLISIONS} collisions on both runs, the others separated earlier"]))
-    return conclude(checks, evidence=growth(section4_data))
+    evidence = [supporting(f"on {len(section4_data)} random rational data (two per plane, exact runs of up to "
+                           f"{N_COLLISIONS} collisions) the two runs have the same collision type and the same plane "
+                           f"as the projective map at {same} of {compared} collisions compared; {reached} data kept "
+                           f"colliding for {N_COLLISIONS} collisions on both runs, the others separated earlier.")]
+    return conclude(checks, evidence=evidence + growth(section4_data))
 
 
 # ---------------------------------------------------------------- S7.2
@@ -204,17 +252,51 @@ def trig_agrees(P: R.Plane, P1: R.Plane, r, prec: int = 128) -> bool:
                                          ((T.ct, X.ct), (T.st, X.st), (T.cp, X.cp), (T.sp, X.sp)))
 
 
+def case_is_the_map(key: str, spec: str, p0, q0) -> Check:
+    """One printed case (contact i, sign of cos φ) for every θ ∈ ]0,π/2[ and φ in its range:
+    the printed step of S7.1 (next pair = the gap the ray closes, p(t1) its hit point in
+    the open face, q(t1) ⊥ p(t1) with q_j(t1) > 0), and it is the projective map's step:
+    with u = p(0) ∧ q(0), u_i u_j > 0 (the map's rule for the next contact j) and
+    p(t1) ∧ K q(0), the normal of Span(p(t1), q(t1)), is a positive multiple of cof(K) u.
+    The same contact and plane give the same θ', φ' (p(t1) is the position in the open
+    face, q(t1) the unit tangent with q_j > 0)."""
+    contact, s = I.CASE_KEYS[key]
+    label = f"contact {contact}, {I.RANGE[s]}"
+    steps = I.six_case(key, spec, p0, q0, I.Q_T1)
+    pair, letter, V_text, _radicand = (x.strip() for x in spec.split("|"))
+    j = I.PAIR.get(pair)
+    if j is None or letter not in I.SECTION2 or not all(c.holds for c in steps):
+        return Check(f"{label}: the printed step (as in S7.1)", False,
+                     [f"{'✓' if c.holds else '✗'} {c.statement}" for c in steps])
+    H, K, i = T.hypotheses(s), I.SECTION2[letter], INDEX[contact]
+    u0 = p0.cross(q0)
+    rule = T.has_sign(u0[i] * u0[INDEX[j]], 1, H)
+    plane = T.positively_proportional(I.vec(V_text).cross(K * q0), K.adjugate().T * u0, H)
+    return Check(f"{label}: the printed step (S7.1) is the projective map's step for every θ, φ in the case: the "
+                 f"next contact {j} (u_{i + 1} u_{INDEX[j] + 1} > 0, u = p(0) ∧ q(0)) and the plane, p(t1) ∧ "
+                 f"{letter}q(0) being a positive multiple of cof({letter}) u", rule.holds and plane.holds,
+                 [f"✓ {c.statement}" for c in steps] + [f"u = `{T.show(u0)}`"] + rule.evidence + plane.evidence)
+
+
 @certificate("S7.2", "l. 877-929",
              "The trigonometric reduction (the six printed cases) reproduces the next collision of the particle "
              "system: same contact, same θ and φ, at every collision.",
-             needs=["section4_data"], printed=PRINTED_S7)
-def trigonometric_map_agrees_with_dynamics(section4_data, **printed):
-    """At each collision k of the exact runs: θ, φ of the exact state as certified balls
-    (128 bits), one step of the six printed cases, compared with θ, φ of the exact
-    state k+1.  The sign of cos φ that picks the case is proven by the balls."""
+             needs=["section4_data", "reduction_cones"], printed=PRINTED_S7)
+def trigonometric_map_agrees_with_dynamics(section4_data, reduction_cones, **printed):
+    """For every collision: each printed case is, for every θ, φ in its range, the step of
+    the projective map (:func:`case_is_the_map`), and the particles follow the projective
+    map (the step and particle lemmas on the six cones, proofs/reduction_cones.py).  The
+    engine's trigonometric map is the printed one.  Supporting evidence: at each collision
+    of the exact runs, one step of the six cases from θ, φ of the exact state as certified
+    balls (128 bits) against θ, φ of the exact state k+1."""
     checks = engine_is_printed(printed)
+    frames = {c: (T.vector(printed[f"p0_{c}"]), T.vector(printed[f"q0_{c}"])) for c in LETTERS}
+    checks += [case_is_the_map(key, printed[key], *frames[c]) for key, (c, _s) in I.CASE_KEYS.items()]
+    checks.append(Check("the particles follow the projective map: on each of the six cones of states they collide "
+                        "next at its contact, or never, and then span its plane (step and particle lemmas, S11)",
+                        RC.dynamics_is_proven(reduction_cones)))
     compared = agree = undecided = 0
-    if all(c.holds for c in checks):
+    if all(c.holds for c in checks[:3]):
         for d in section4_data:
             for P, P1 in zip(d.planes[0], d.planes[0][1:]):
                 compared += 1
@@ -222,10 +304,9 @@ def trigonometric_map_agrees_with_dynamics(section4_data, **printed):
                     agree += trig_agrees(P, P1, d.r)
                 except sim.Undecided:
                     undecided += 1
-    checks.append(Check("at every collision of the exact runs the six cases give the next contact and (θ, φ)",
-                        compared > 0 and agree == compared,
-                        [f"{compared} collisions of {len(section4_data)} runs: {agree} agree, {undecided} undecided"]))
-    return conclude(checks)
+    evidence = [supporting(f"at {compared} collisions of {len(section4_data)} exact runs the six cases give the next "
+                           f"contact and (θ, φ) (balls overlapping): {agree} agree, {undecided} undecided.")]
+    return conclude(checks, evidence=evidence)
 
 
 # ---------------------------------------------------------------- S8.2
@@ -233,16 +314,74 @@ def trigonometric_map_agrees_with_dynamics(section4_data, **printed):
 PRINTED_S8 = dict(orientation=I.ORIENTATION, to_b=I.TRILINEAR_B, to_c=I.TRILINEAR_C)
 
 
+def trilinear_on_cone(text: str | None, st: RC.Step) -> T.Result:
+    """The formula ``text`` (the relabelled one when None) at u = n is a positive multiple
+    of the next normal n' = p' ∧ K_j w of the cone's step, for every state of the cone."""
+    u = tuple(RC.N)
+    ut = R.formula(text)(u, r) if text else R.trilinear(st.contact, st.following, u, r)
+    return T.positively_proportional(sp.Matrix(ut), st.normal, st.H)
+
+
+def not_normal_at(text: str, st: RC.Step) -> tuple[bool, str]:
+    """An exact state of the cone (integer normal, r = 1/3) where the formula is not
+    parallel to the next normal: a counterexample."""
+    n = RC.representative(st)
+    at = {**dict(zip(RC.N, n)), r: sp.Rational(1, 3)}
+    ut = sp.Matrix(R.formula(text)(n, sp.Rational(1, 3)))
+    n1 = st.normal.xreplace(at)
+    wedge = ut.cross(n1)
+    return (not wedge.is_zero_matrix, f"at n = {n} (a state of the cone {st.label}), r = 1/3: ũ(1) = "
+                                      f"{T.show(ut)}, the next normal {T.show(n1)}, their cross product {T.show(wedge)}")
+
+
 @certificate("S8.2", "l. 931-987",
              "The vectorial reduction reproduces the next collision of the particle system: u(0) = p(0) ∧ q(0), "
              "the printed trilinear formulas give u(1) ∝ p(1) ∧ q(1), with e_t · u(k) ≥ 0.",
-             needs=["section4_data"], printed=PRINTED_S8)
-def vectorial_map_agrees_with_dynamics(section4_data, orientation, to_b, to_c):
-    """At each collision k of the exact runs, u(k) = p(k) ∧ q(k) (exact); the trilinear
-    formula gives ũ(k+1), which must be a positive multiple of p(k+1) ∧ q(k+1), the
-    normal of the physical plane with the printed orientation.  The printed formulas
-    are for the contact a; the other contacts use the relabelled formula
-    (:func:`certify.reduction.vectorial_step`, "in a similar manner", l. 987)."""
+             needs=["section4_data", "reduction_cones"], printed=PRINTED_S8)
+def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientation, to_b, to_c):
+    """For every state, on the six cones of states (proofs/reduction_cones.py): right
+    after a collision, p ∧ q = α p ∧ w = αρ n (α, ρ > 0), so the orientation holds when
+    n_t > 0 on every cone; the trilinear formula at u = n is a positive multiple of the
+    next normal n' = p' ∧ K_j w, which is p(1) ∧ q(1) up to a positive factor whatever
+    the radial part (the particle lemma).  The printed formulas are for the contact a;
+    the other contacts use the relabelled formula (:func:`certify.reduction.trilinear`,
+    "in a similar manner", l. 987).  A printed formula that fails is refuted at an exact
+    state of its cone.  The exact runs are supporting evidence."""
+    axes = {c: [k for k in range(3) if e[k]][0] for c, e in I.orientation_axes(orientation).items()}
+    cones = reduction_cones
+    lemmas = RC.dynamics_is_proven(cones)
+    orient = [T.has_sign(RC.N[axes[c]], 1, st.H) for (c, _s), st in cones.items()]
+    a_b, a_c = cones[("a", 1)], cones[("a", -1)]
+    on_b, on_c = trilinear_on_cone(to_b, a_b), trilinear_on_cone(to_c, a_c)
+    relabelled = [trilinear_on_cone(None, st) for st in cones.values()]
+    premise = "; with the step and particle lemmas on the six cones (S11)"
+    printed = [Check(f"u(k) = p(k) ∧ q(k) = αρ n satisfies the orientation e_t · u(k) > 0 (t = {orientation}) on every "
+                     "cone of states", lemmas and all(orient), [e for o in orient for e in o.evidence[:1]]),
+               Check(f"contact a, next b: `{to_b}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
+                     lemmas and a_b.following == "b" and on_b.holds, on_b.evidence),
+               Check(f"contact a, next c: `{to_c}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
+                     lemmas and a_c.following == "c" and on_c.holds,
+                     on_c.evidence + ([] if on_c.holds else [not_normal_at(to_c, a_c)[1]])),
+               Check(f"every contact: the relabelled formula [u ∧ e_j] ∧ [K_j(u ∧ [e_i ∧ u])] ∝ p(1) ∧ q(1), "
+                     f"positively, for every state{premise}", lemmas and all(relabelled),
+                     [e for x in relabelled for e in x.evidence[:1]])]
+    corrected = []
+    if not printed[2].holds and "ey" in to_c:
+        fixed = to_c.replace("ey", "ez", 1)
+        on_fixed = trilinear_on_cone(fixed, a_c)
+        refuted, witness = not_normal_at(to_c, a_c)
+        corrected = [printed[0], printed[1],
+                     Check(f"contact a, next c, with p(1) ∝ u(0) ∧ e_z (as in l. 962): `{fixed}` ∝ p(1) ∧ q(1), "
+                           f"positively, for every state{premise}; the printed one is refuted at an exact state",
+                           lemmas and a_c.following == "c" and on_fixed.holds and refuted,
+                           on_fixed.evidence + [witness]), printed[3]]
+    evidence = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
+    return conclude(printed, corrected, evidence=evidence)
+
+
+def tally_runs(section4_data, orientation, to_b, to_c) -> str:
+    """At each collision k of the exact runs: ũ(k+1) from u(k) = p(k) ∧ q(k) against
+    p(k+1) ∧ q(k+1), and the orientation of u(k)."""
     t = {c: [k for k in range(3) if e[k]][0] for c, e in I.orientation_axes(orientation).items()}
     formulas = {"b": R.formula(to_b), "c": R.formula(to_c)}
     tally = {"a→b": [0, 0], "a→c": [0, 0], "relabelled": [0, 0]}
@@ -256,30 +395,9 @@ def vectorial_map_agrees_with_dynamics(section4_data, orientation, to_b, to_c):
             ut = formulas[L1](u, d.r) if L == "a" else R.vectorial_step(L, u, d.r)[1]
             tally[key][0] += 1
             tally[key][1] += R.cross(ut, u1) == (0, 0, 0) and R.dot(ut, u1) > 0
-    ok = {k: v[0] > 0 and v[0] == v[1] for k, v in tally.items()}
-    evidence = [f"{k}: {v[1]} of {v[0]} collisions" for k, v in tally.items()]
-    printed = [Check("u(k) = p(k) ∧ q(k) satisfies the orientation e_t · u(k) > 0 (t = y, z, x for a, b, c)",
-                     oriented[0] > 0 and oriented[0] == oriented[1], [f"{oriented[1]} of {oriented[0]} states"]),
-               Check(f"contact a, next b: `{to_b}` ∝ p(1) ∧ q(1), positively", ok["a→b"], evidence[:1]),
-               Check(f"contact a, next c: `{to_c}` ∝ p(1) ∧ q(1), positively", ok["a→c"], evidence[1:2]),
-               Check("contacts b and c: the relabelled formula [u ∧ e_j] ∧ [K_j(u ∧ [e_i ∧ u])] ∝ p(1) ∧ q(1)",
-                     ok["relabelled"], evidence[2:])]
-    corrected = []
-    if not ok["a→c"] and "ey" in to_c:
-        fixed = R.formula(to_c.replace("ey", "ez", 1))
-        n = good = 0
-        for d in section4_data:
-            contacts = [d.letter] + d.runs[0].events
-            for L, L1, u, u1 in zip(contacts, contacts[1:], d.normals, d.normals[1:]):
-                if L == "a" and L1 == "c":
-                    ut = fixed(u, d.r)
-                    n += 1
-                    good += R.cross(ut, u1) == (0, 0, 0) and R.dot(ut, u1) > 0
-        corrected = [printed[0], printed[1],
-                     Check("contact a, next c, with p(1) ∝ u(0) ∧ e_z (as in l. 962): "
-                           f"`{to_c.replace('ey', 'ez', 1)}` ∝ p(1) ∧ q(1), positively",
-                           n > 0 and good == n, [f"{good} of {n} collisions"]), printed[3]]
-    return conclude(printed, corrected)
+    return (f"on the exact runs, the orientation holds at {oriented[1]} of {oriented[0]} states, and the printed or "
+            "relabelled formula gives a positive multiple of p(k+1) ∧ q(k+1) at " +
+            ", ".join(f"{v[1]} of {v[0]} collisions {k}" for k, v in tally.items()) + ".")
 
 
 # ---------------------------------------------------------------- the scan (S9.2, S10, S11)
@@ -313,30 +431,6 @@ def reduction_scan() -> list[ScanOrbit]:
 def occurrences(words, pattern: str) -> int:
     """Occurrences of ``pattern`` as consecutive collisions (overlaps counted)."""
     return sum(sum(w.startswith(pattern, k) for k in range(len(w))) for w in words)
-
-
-# ---------------------------------------------------------------- the proofs on cones (S9.2, S10, S11)
-SECTION2 = {L: I.SECTION2[L.upper()] for L in LETTERS}
-
-
-@quantity("reduction_cones")
-def reduction_cones() -> dict:
-    """The step lemma of the reduction on the six cones of states (contact, sign of cos φ),
-    with the collision matrices of Section 2 (proofs/reduction_cones.py)."""
-    return RC.steps(SECTION2)
-
-
-def lemma_check(s: RC.Step) -> Check:
-    """The step lemma on one cone as one check; its parts as evidence (✓/✗)."""
-    nxt = (f"the next collision is {s.following}; the next state lies in a cone of {s.following}, with "
-           f"cos φ' {RC.SIGN[s.cos_next]}") if s.following else "no next collision proven"
-    ev = [f"{'✓' if c.holds else '✗'} {c.statement}" for c in s.checks]
-    ev += [e for c in s.checks if not c.holds for e in c.evidence]
-    return Check(f"step lemma on the cone {s.label} (every state there, exact): {nxt}", s.holds, ev)
-
-
-def supporting(text: str) -> str:
-    return f"Supporting evidence, not proof: {text}"
 
 
 # ---------------------------------------------------------------- S9.2
@@ -494,16 +588,14 @@ def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduct
     whatever the radial part of their velocity, collide next at j or never, and then span
     the reduction's next plane: their collisions are a prefix.  The scan and the exact
     runs are supporting evidence."""
-    K = {L: matrix(text) for L, text in zip(LETTERS, (A, B, C))}
-    cones = reduction_cones if all(K[L] == SECTION2[L] for L in LETTERS) else RC.steps(K)
+    cones = printed_cones(reduction_cones, A, B, C)
     checks = [lemma_check(c) for c in cones.values()]
-    closed = all(c.holds for c in cones.values())
+    closed = RC.map_is_proven(cones)
     checks.append(Check(f"every orbit of the reduction off the corners has {reduction}: the six cones hold every "
                         "state off the corners, and each step maps a cone into a cone of the next contact, or onto a "
                         "corner (n'_j = 0)", closed and reduction.startswith("infinitely")))
-    motion = [RC.physical(c, K) if c.holds else Check(f"{c.label}: the step lemma", False) for c in cones.values()]
-    checks += motion
-    prefix = closed and all(m.holds for m in motion)
+    checks += [c.motion for c in cones.values()]
+    prefix = RC.dynamics_is_proven(cones)
     runs = [(run, d) for d in section4_data for run in d.runs]
     separated = sum(run.stop == "free" for run, d in runs)
     checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence (for every datum, by "

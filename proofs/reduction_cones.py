@@ -126,6 +126,7 @@ class Step:
     p1: sp.Matrix | None = None
     normal: sp.Matrix | None = None
     cos_next: int | None = None
+    motion: Check | None = None          # :func:`physical`, once the step is proven
 
     @property
     def label(self) -> str:
@@ -238,8 +239,21 @@ def physical(s: Step, K: dict) -> Check:
 
 
 def steps(K: dict) -> dict[tuple[str, int], Step]:
-    """The step lemma on the six cones."""
-    return {(c, s): step(c, s, K) for c in LETTERS for s in (1, -1)}
+    """The step lemma on the six cones, each with the particles' motion (:func:`physical`)."""
+    out = {(c, s): step(c, s, K) for c in LETTERS for s in (1, -1)}
+    for st in out.values():
+        st.motion = physical(st, K) if st.holds else Check(f"{st.label}: the step lemma fails", False)
+    return out
+
+
+def map_is_proven(cones: dict) -> bool:
+    """Every step lemma holds: the map is defined on every state off the corners."""
+    return all(st.holds for st in cones.values())
+
+
+def dynamics_is_proven(cones: dict) -> bool:
+    """Every step lemma and every particle lemma holds: the particles follow the map."""
+    return map_is_proven(cones) and all(st.motion.holds for st in cones.values())
 
 
 def transitions(cones: dict[tuple[str, int], Step]) -> dict[tuple[str, str], set[str]]:

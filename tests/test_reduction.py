@@ -294,5 +294,27 @@ def test_a_wrong_proof_fails_whatever_the_samples():
     wrong = {L: collision_matrix(L) for L in LETTERS}
     wrong["c"] = wrong["c"].subs(-r, r)
     ctx.values["reduction_cones"] = RC.steps(wrong)
-    for id in ("S9.2", "S10"):
-        assert run_certificate(CERTIFICATES[id], ctx).status == FAIL
+    ctx.values["section4_data"] = []
+    ctx.values["reduction_scan"] = CTX.get("reduction_scan")
+    for id in ("S6", "S7.2", "S8.2", "S9.2", "S10", "S11"):
+        out = run_certificate(CERTIFICATES[id], ctx)
+        assert out.status == FAIL, id
+        if id in ("S6", "S7.2"):                  # the lemmas are the only failing checks
+            assert [c.statement for c in out.printed if not c.holds] == [
+                c.statement for c in out.printed if "six cones" in c.statement]
+
+
+def test_s7_case_check_fails_on_an_altered_case():
+    """The printed case a, cos φ > 0 with the pair 3-4: its proof (S7.1's step, and the
+    projective map's step) fails, and the other five cases still hold."""
+    out = outcome("S7.2", **MUTATIONS["S7.2"][0])
+    cases = [c for c in out.printed if "the printed step (S7.1) is the projective map's step" in c.statement
+             or c.statement.endswith("the printed step (as in S7.1)")]
+    assert len(cases) == 6 and [c.holds for c in cases] == [False, True, True, True, True, True]
+
+
+def test_s8_corrected_c_formula_is_proven_and_the_printed_one_refuted():
+    out = outcome("S8.2")
+    fixed = [c for c in out.corrected if "u(0) ∧ e_z" in c.statement]
+    assert len(fixed) == 1 and fixed[0].holds and any("their cross product" in e for e in fixed[0].evidence)
+    assert any(e.startswith("Supporting evidence, not proof") and "0 of 261 collisions a→c" in e for e in out.evidence)

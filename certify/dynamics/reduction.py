@@ -254,9 +254,16 @@ def vectorial_step(letter: str, u, r) -> tuple[str, tuple]:
     succ = LETTERS[(i + 1) % 3]
     other = LETTERS[(i + 2) % 3]
     j = succ if s > 0 else other
+    return j, trilinear(letter, j, u, r)
+
+
+def trilinear(letter: str, j: str, u, r) -> tuple:
+    """ũ(1) = [u ∧ e_j] ∧ [K_j (u ∧ [e_i ∧ u])] for the contact ``letter`` = i and the
+    next collision j, in any ring (rationals, SymPy symbols)."""
+    i = INDEX[letter]
     p1 = cross(u, E[INDEX[j]])
     q0 = cross(u, cross(E[i], u))
-    return j, cross(p1, collide(j, q0, r))
+    return cross(p1, collide(j, q0, r))
 
 
 # --- the trigonometric representation (l. 881-929) ----------------------------
