@@ -546,7 +546,7 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
                      lemma and all("b" in w for w in three), [f"{len(three)} windows: {', '.join(three)}"])]
     width = max(len(B) for B in blks)
     uncovered = [w for w in RC.admissible(width, allowed) if w[0] != "b" and not any(w.startswith(B) for B in blks)]
-    induction = lemma and not uncovered and all(B.endswith("b") and "b" not in B[:-1] for B in blks)
+    induction = lemma and not uncovered and all(B.endswith("b") for B in blks)
     first_b = [c for c in cones if c.holds and c.following == "b"]
     witness = []
     for c in first_b:
@@ -554,7 +554,7 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
         witness.append(f"every state of the cone {c.label} (e.g. n = {P.n}, whose first collision is "
                        f"{R.next_letter(P)} by the engine) has c_1 = b")
     induction_ev = [f"admissible windows of length {width} not starting with b and not starting with a block: "
-                    f"{', '.join(uncovered) or 'none'}; every block ends with its only b, and no letter follows itself"]
+                    f"{', '.join(uncovered) or 'none'}; every block ends with b, and no letter follows itself"]
     leading_b = [w for w in scan if w.startswith("b")]
     printed.append(Check(f"every pattern is a concatenation of {', '.join(blks)}", induction and not first_b,
                          witness + induction_ev))
