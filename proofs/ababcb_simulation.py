@@ -16,8 +16,9 @@ repeats the word for the requested number of periods with q(t_6k) = λ^k q(0) an
 p(t_6k) = μ^k p(0) (μ = p_1(t_6)), and that a perturbation of 10^-30 (an exact
 rational added to x or to q) leaves the pattern after finitely many periods.
 Ball enclosures cannot prove the identities q(t_6) = λ q(0) exactly (T9, T10 do so
-algebraically); here they are checked as "the enclosures overlap and are tight",
-which a wrong formula fails by many orders of magnitude.
+algebraically); here they are checked as "the enclosures overlap and are tight"
+(relative radius below 2^-TIGHT_BITS, decided exactly on the rational midpoints and
+radii, not on floats), which a wrong formula fails by many orders of magnitude.
 """
 from __future__ import annotations
 
@@ -26,7 +27,7 @@ from dataclasses import dataclass
 import flint
 
 from certify.algebra import (Algebraic, Condition, GUARD, ball_value, from_flint, lam, parse, precision,
-    show, to_fmpq)
+    show, tight, to_fmpq)
 from certify.dynamics import simulate as sim
 from certify.dynamics import candidate, check_word, fixed_point_ball
 from certify.run import Check, certificate, conclude
@@ -37,6 +38,7 @@ Q = flint.fmpq
 PRINTED = dict(U=U_PRINTED, V=V_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, word="ababcb",
                r="1/20", periods=20, perturbation="1/10^30")
 MAX_PERIODS = 200                      # how long a perturbed orbit is followed at most
+TIGHT_BITS = 40                        # "tight": relative radius < 2^-40 (decided exactly)
 
 
 # ---------------------------------------------------------------- exact formulas in balls
@@ -82,7 +84,7 @@ class Datum:
 
 
 def rel_radius(z) -> float:
-    """rad/|mid| of a ball, for evidence only."""
+    """rad/|mid| of a ball, a float for printing only: every decision uses :func:`tight`."""
     m = abs(float(z.mid()))
     return float(z.rad()) / m if m else float(z.rad())
 
@@ -90,7 +92,8 @@ def rel_radius(z) -> float:
 # ---------------------------------------------------------------- the checks
 def self_similar_run(datum: Datum, word: str, periods: int, prec: int = 512, maxprec: int = 1 << 13):
     """Follow the exact datum for ``periods`` periods; raise the precision until every
-    collision is proven and the final enclosures are tight (relative radius < 2^-40)."""
+    collision is proven and the final enclosures are tight (relative radius < 2^-40,
+    decided exactly)."""
     n = len(word) * periods
     while prec <= maxprec:
         run = sim.run(*datum.balls(prec), n, prec)
@@ -98,14 +101,15 @@ def self_similar_run(datum: Datum, word: str, periods: int, prec: int = 512, max
             return run, prec
         if run.stop == "n":
             last = run.states[-1]
-            if all(rel_radius(z) < 2.0 ** -40 for z in last.q + (last.p[0], last.p[2])):
+            if all(tight(z, TIGHT_BITS) for z in last.q + (last.p[0], last.p[2])):
                 return run, prec
         prec *= 2
     raise sim.Undecided(f"self-similar run not decided at {maxprec} bits")
 
 
 def scaling_checks(run: sim.Run, datum: Datum, word: str, periods: int, prec: int) -> tuple[bool, bool, list[str]]:
-    """q(t_nk) ∋ λ^k q(0) and p(t_nk) ∋ μ^k p(0) (overlapping tight balls), k = 1..periods."""
+    """q(t_nk) ∋ λ^k q(0) and p(t_nk) ∋ μ^k p(0) (overlapping balls, each of relative radius
+    < 2^-TIGHT_BITS, decided exactly), k = 1..periods."""
     n = len(word)
     if len(run.states) <= n * periods:
         return False, False, [f"the orbit stops after {len(run.events)} collisions ({run.stop})"]
@@ -118,10 +122,10 @@ def scaling_checks(run: sim.Run, datum: Datum, word: str, periods: int, prec: in
             s = run.states[n * k]
             for i in range(3):
                 pred_q = L ** k * s0.q[i]
-                q_ok &= s.q[i].overlaps(pred_q)
+                q_ok &= s.q[i].overlaps(pred_q) and tight(s.q[i], TIGHT_BITS)
                 worst_q = max(worst_q, rel_radius(s.q[i]))
                 pred_p = mu ** k * s0.p[i]
-                p_ok &= s.p[i].overlaps(pred_p) if i != 1 else s.p[1].is_zero()
+                p_ok &= (s.p[i].overlaps(pred_p) and tight(s.p[i], TIGHT_BITS)) if i != 1 else s.p[1].is_zero()
                 if i != 1:
                     worst_p = max(worst_p, rel_radius(s.p[i]))
     ev = [f"μ = p_1(t_{n}) ∈ {mu.str(12, radius=False)} (λ ∈ {L.str(12, radius=False)})",
@@ -178,8 +182,9 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
         checks += [
             Check(f"{name} branch: the printed datum repeats {word} for {periods} periods (every collision proven)",
                   ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else []),
-            Check(f"{name} branch: q(t_{len(word)}k) = λ^k q(0), k = 1..{periods} (tight enclosures overlap)", q_ok),
-            Check(f"{name} branch: p(t_{len(word)}k) = μ^k p(0), k = 1..{periods}", p_ok),
+            Check(f"{name} branch: q(t_{len(word)}k) = λ^k q(0), k = 1..{periods} (the enclosures overlap and have "
+                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok),
+            Check(f"{name} branch: p(t_{len(word)}k) = μ^k p(0), k = 1..{periods} (the same)", p_ok),
         ]
     # instability: upper branch through the positions, lower branch through the velocities
     cases = [("upper", "x + ε", eps, (Q(0), Q(0), Q(0)), MAX_PERIODS),

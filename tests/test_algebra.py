@@ -608,3 +608,69 @@ def test_flint_route_undecided_at_root_endpoint():
     with pytest.raises(ValueError):
         flint_real_roots(fz([-1, 1]) * fz([-2, 0, 1]), 1, 2)
     assert len(flint_real_roots(fz([-1, 1]) * fz([-2, 0, 1]), Q(1, 2), 2)) == 2
+
+
+# --- ordering certified balls exactly (no float decides) -----------------------------
+
+EPS = Q(1, 10 ** 25)          # two roots that agree to 24 digits: equal as floats
+
+
+def test_ordered_balls_that_agree_to_20_digits():
+    """Balls around 1/3 and 1/3 + 10^-25 given in the wrong order: their floats tie, so a
+    float key keeps the wrong order; the exact ends order them, and overlap is refused."""
+    from certify.algebra.balls import ends, ordered
+    with precision(200):
+        lo, hi = flint.arb(Q(1, 3)), flint.arb(Q(1, 3) + EPS)
+        assert float(lo.mid()) == float(hi.mid())
+        assert sorted([hi, lo], key=lambda z: float(z.mid()))[0] is hi       # what a float key did
+        assert ordered([hi, lo]) == [lo, hi] and ordered([lo, hi], reverse=True) == [hi, lo]
+        a, b = ends(lo)
+        assert a <= Q(1, 3) <= b and b < ends(hi)[0]
+    with precision(64):                      # at 64 bits the two balls overlap: undecided
+        assert ordered([flint.arb(Q(1, 3) + EPS), flint.arb(Q(1, 3))]) is None
+
+
+def test_tight_is_decided_exactly():
+    """rad < 2^-40 |mid| on the exact rationals: with mid = 1 + 2^-60, rad = 2^-40 the
+    float of mid is 1.0 and a float test says "not tight"; exactly it is tight."""
+    from certify.algebra.balls import tight
+    with precision(128):
+        z = flint.arb((2 ** 60 + 1, -60), (1, -40))                           # exact mid and rad
+        assert z.rad().fmpq() == Q(1, 2 ** 40) and z.mid().fmpq() == Q(1) + Q(1, 2 ** 60)
+        assert float(z.rad()) / float(z.mid()) == 2.0 ** -40                # the float test: not < 2^-40
+        assert tight(z, 40) and not tight(z, 41)
+        assert not tight(flint.arb((1, 0), (1, -40)), 40)                    # equality is not tight
+        assert tight(flint.arb((0, 0), (1, -41)), 40) and not tight(flint.arb((0, 0), (1, -40)), 40)
+
+
+def test_flint_real_roots_ordered_when_they_agree_to_20_digits():
+    """Three roots within 10^-25 of 1/3: increasing, each ball holding its root."""
+    roots = [Q(1, 3) - EPS, Q(1, 3), Q(1, 3) + EPS]
+    p = flint.fmpq_poly([1])
+    for z in reversed(roots):
+        p *= flint.fmpq_poly([-z, 1])
+    balls = flint_real_roots(p)
+    assert len(balls) == 3 and len({float(b.mid()) for b in balls}) == 1
+    from certify.algebra.balls import ends
+    assert all(ends(b)[0] <= z <= ends(b)[1] for b, z in zip(balls, roots))
+
+
+def test_numberfield_names_close_branches_in_order():
+    """Over K = Q(√2): f = (λ - 1/3)(λ - 1/3 - 10^-25)(λ - 1/3 - √2·10^-30) has three real
+    roots equal as floats; real_roots gives them largest first, as the branches are named."""
+    from certify.algebra import numberfield as nf
+    from certify.algebra.poly import lam, r
+    alpha = Algebraic.surd(0, 1, 2)
+    m = nf.modulus(alpha)
+    third, eps = sp.Rational(1, 3), sp.Rational(1, 10 ** 25)
+    f = nf.kpoly(sp.expand((lam - third) * (lam - third - eps) * (lam - third - r * eps / 10 ** 5)), m)
+    prec, balls = 64, None
+    while balls is None and prec <= 4096:
+        balls = nf.real_roots(f, alpha, prec)
+        prec *= 2
+    assert balls is not None and len(balls) == 3 and len({float(b.mid()) for b in balls}) == 1
+    with precision(400):
+        s2 = flint.arb(2).sqrt()
+        values = [flint.arb(Q(1, 3) + EPS), flint.arb(Q(1, 3)) + s2 * flint.arb(EPS / 10 ** 5), flint.arb(Q(1, 3))]
+        assert all(b.overlaps(v) for b, v in zip(balls, values))          # upper, middle, lower
+        assert all(b > c for b, c in zip(balls, balls[1:]))

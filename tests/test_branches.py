@@ -596,14 +596,15 @@ def test_random_fixed_point_sign_tables(ac, bc, cc, dc, p1, p0, q):
             S.sign_table(cond, 0, 1)
         return
     if fixed_eq == 0:
-        # q is a fixed point for every r, λ: x₊ = q (no certificate possible) or x₋ = q
-        try:
-            T = S.sign_table(cond, 0, 1)
-        except ArithmeticError:
-            return
-    else:
-        T = S.sign_table(cond, 0, 1)
+        check_q_always_fixed(cp, A, B, C, D, q, S, cond)
+        return
+    T = S.sign_table(cond, 0, 1)
     assert_same_numbers(T.critical, expected_critical(cp, nonconstant, 0, 1))
+    check_fixed_point_table(cp, T, A, B, C, D, q)
+
+
+def fixed_point_value(A, B, C, D, q):
+    """x₊ - q in mpmath as a function of (r, λ), None where x₊ is not real."""
     fa, fb, fc, fd = (sp.lambdify((r, lam), e, "mpmath") for e in (A, B, C, D))
     qq = mpmath.mpf(sp.Rational(q).p) / sp.Rational(q).q
 
@@ -613,7 +614,13 @@ def test_random_fixed_point_sign_tables(ac, bc, cc, dc, p1, p0, q):
         if disc < 0:
             return None
         return (av - dv + mpmath.sqrt(disc)) / (2 * cv) - qq
+    return value
 
+
+def check_fixed_point_table(cp, T, A, B, C, D, q):
+    """The table of x₊ - q against mpmath, in the cells and at the critical values."""
+    fa, fb, fc, fd = (sp.lambdify((r, lam), e, "mpmath") for e in (A, B, C, D))
+    value = fixed_point_value(A, B, C, D, q)
     check_table(cp, T, value, 0, 1)
     for rc, pt in zip(T.critical, T.points):       # strict signs at the critical values
         if pt is None:
@@ -631,3 +638,43 @@ def test_random_fixed_point_sign_tables(ac, bc, cc, dc, p1, p0, q):
                 assert pt[k] is None
             elif abs(v) > mpmath.mpf(10) ** -18:
                 assert pt[k] == mp_sign(v)
+
+
+def check_q_always_fixed(cp, A, B, C, D, q, S, cond):
+    """q solves cx² + (d - a)x - b = 0 for every r, λ, so (a - d - 2cq)² = Δ: q = x₊ where
+    h = 2cq - a + d > 0 and q = x₋ where h < 0.  Where h > 0 on a branch, x₊ - q vanishes
+    on a whole cell and no sign can be certified: the table must be refused, and mpmath
+    sees x₊ = q at the sample of such a cell.  Where h < 0 on every branch the table must
+    come, and agree with mpmath.  Both paths assert."""
+    h = sp.expand(2 * C * q - A + D)
+    H = S.sign_table(Condition.of(f"2cq - a + d ({h})", h), 0, 1)
+    where = [(cell, k) for cell in H.cells for k, sg in enumerate(cell.signs) if sg == 1]
+    if where:
+        with pytest.raises(ArithmeticError):
+            S.sign_table(cond, 0, 1)
+        value = fixed_point_value(A, B, C, D, q)
+        cell, k = where[0]
+        t = mpq(cell.sample)
+        v = value(t, mp_roots(cp, t)[k])
+        assert v is not None and abs(v) < mpmath.mpf(10) ** -40          # x₊ = q there
+    else:
+        T = S.sign_table(cond, 0, 1)
+        check_fixed_point_table(cp, T, A, B, C, D, q)
+
+
+def test_q_fixed_for_every_r_lambda():
+    """Both paths of :func:`check_q_always_fixed`.  cp = λ² - r (λ = ±√r):
+    x² - λx = 0 (a = λ, b = 0, c = 1, d = 0) has the roots 0 and λ, so x₊ = 0 = q on the
+    lower branch: refused; x² - (1 + r)x = 0 has x₊ = 1 + r ≠ 0 = q: a table, x₊ - q > 0."""
+    cp = lam ** 2 - r
+    S = Spectrum(cp)
+    for A, sign in ((lam, None), (1 + r, 1)):
+        fp = FixedPoint(A, sp.Integer(0), sp.Integer(1), sp.Integer(0))
+        cond = Condition.of(f"x - 0 for a = {A}", x, fp)
+        check_q_always_fixed(cp, A, sp.Integer(0), sp.Integer(1), sp.Integer(0), 0, S, cond)
+        if sign is None:
+            with pytest.raises(ArithmeticError):
+                S.sign_table(cond, 0, 1)
+        else:
+            T = S.sign_table(cond, 0, 1)
+            assert all(set(c.signs) == {sign} for c in T.cells)

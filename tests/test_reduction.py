@@ -1,5 +1,6 @@
 """Section 4 on the dynamics: the reduction map (certify.dynamics.reduction) and the
 certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/reduction.py)."""
+import itertools
 import random
 
 import flint
@@ -10,9 +11,12 @@ from hypothesis import given, settings, strategies as st
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.algebra.balls import precision
+from certify.algebra.poly import r
 from certify.dynamics.model import INDEX, LETTERS, collision_matrix
 from certify.run.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
 from proofs import reduction as P
+from proofs import reduction_cones as RC
+from proofs import reduction_identities as I
 
 load_all()
 CTX = Context()
@@ -23,18 +27,27 @@ def outcome(id, **overrides):
     return run_certificate(CERTIFICATES[id], CTX, overrides or None)
 
 
+# A with (1+3r)/3 for (1+r)/2: both are 2/3 at r = 1/3 (where S6 compared them before), and A
+# still fixes {x = 0}: only the comparison over Q(r) sees it
+AGREES_AT_ONE_THIRD = altered("S6", "A", "[(1+r)/2, 1, 0]", "[(1+3*r)/3, 1, 0]")
 EXPECTED = {"S6": PASS, "S7.2": PASS, "S8.2": ERRATUM, "S9.2": PASS, "S10": ERRATUM, "S11": PASS}
 MUTATIONS = {
     "S6": [altered("S6", "B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]"),      # B no longer fixes {y = 0}
            altered("S6", "C", "[0, 0, -r]", "[0, 1, -r]"),
-           altered("S6", "A", "[[-r, 0, 0]", "[[r, 0, 0]")],                   # a column that A does not fix
+           altered("S6", "A", "[[-r, 0, 0]", "[[r, 0, 0]"),                    # a column that A does not fix
+           AGREES_AT_ONE_THIRD],                       # the same matrix at r = 1/3, another one over Q(r)
     "S7.2": [altered("S7.2", "a_pos", "2-3", "3-4"), altered("S7.2", "c_neg", "sin(θ)*sin(φ)", "cos(θ)*sin(φ)"),
              altered("S7.2", "q0_b", "-sin(θ)*cos(φ)", "sin(θ)*cos(φ)")],
     "S8.2": [altered("S8.2", "to_b", "ey", "ez"), altered("S8.2", "orientation", "a: y", "a: z"),
              altered("S8.2", "to_b", "cross(ex, u0)", "cross(u0, ex)")],
-    "S9.2": [altered("S9.2", "aca", "c_{k+1} = c", "c_{k+1} = b")],
+    "S9.2": [altered("S9.2", "aca", "c_{k+1} = c", "c_{k+1} = b"),        # after ab both a and c may come
+             altered("S9.2", "aca", "≠ a", "≠ b"),                           # after ac the next is b
+             altered("S9.2", "cac", "c_k = c", "c_k = b")],                  # after ba both b and c may come
     "S10": [altered("S10", "window", " or c_{k+3} = b", ""), altered("S10", "blocks", ", cab", "")],
-    "S11": [{"realised": "the whole"}, {"reduction": "finitely many collisions"}],
+    "S11": [{"realised": "the whole"}, {"reduction": "finitely many collisions"},
+            altered("S11", "C", "[0, 0, -r]", "[0, 0, r]"),                  # the pair c would not separate
+            altered("S11", "B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]"),      # B p' ≠ p': another plane
+            altered("S11", "A", "[(1+r)/2, 1, 0]", "[(1+r)/2, 2, 0]")],       # A moves {x = 0}
 }
 
 
@@ -81,17 +94,72 @@ def random_state(rng, letter):
 @given(st.integers(0, 10 ** 6), st.sampled_from(LETTERS), st.integers(2, 99))
 def test_one_step_of_the_map_is_the_next_collision(seed, letter, m):
     """From any state right after a collision, if the particles collide again, the
-    projective step gives that collision's contact and plane, for every radial part."""
+    projective step gives that collision's contact and plane, for every radial part.
+    Every path asserts: at a corner (cos φ = 0) the map refuses to step; when no pair
+    approaches the map still steps (Remark 4.2: the reduction goes on); a simultaneous
+    pair of collisions happens only at a corner (Remark 4.2's proof, S11)."""
     rng, r = random.Random(seed), Q(1, m)
     p, q = random_state(rng, letter)
     for lam in (Q(0), Q(-1), Q(-7, 2)):
         qq = tuple(z + lam * x for z, x in zip(q, p))
-        nxt = sim.step(p, qq, r)
         P0 = R.plane(letter, p, qq)
-        if nxt is None or len(nxt[0]) > 1 or R.sign(P0.n[INDEX[letter]]) == 0:
+        if R.sign(P0.n[INDEX[letter]]) == 0:
+            assert_corner(P0, p, qq, r)
             continue
+        nxt = sim.step(p, qq, r)
+        if nxt is None:
+            assert all(z >= 0 for z in qq) and R.step(P0, r).letter != letter
+            continue
+        assert len(nxt[0]) == 1, "a simultaneous collision off a corner"
         L, _t, p1, q1 = nxt
         assert R.step(P0, r) == R.plane(L, p1, q1)
+
+
+def assert_corner(P0, p, q, r):
+    """At a corner (cos φ = n_i = 0) the map refuses to step, and the particles never have
+    a single binary collision next: the two other gaps close together or not at all."""
+    with pytest.raises(R.Corner):
+        R.step(P0, r)
+    try:
+        nxt = sim.step(p, q, r)
+    except sim.MultipleCollision:
+        return
+    assert nxt is None or len(nxt[0]) > 1
+
+
+def test_corners():
+    """Contact a, p = (0, 1, 1): q = (1, ∓1, ∓1) spans a plane with n_1 = 0."""
+    p = (Q(0), Q(1), Q(1))
+    for s in (1, -1):
+        q = (Q(1), Q(s), Q(s))
+        P0 = R.plane("a", p, q)
+        assert P0.n[0] == 0
+        assert_corner(P0, p, q, Q(1, 3))
+    with pytest.raises(sim.MultipleCollision):             # b and c close together: particles 2, 3, 4 meet
+        sim.step(p, (Q(1), Q(-1), Q(-1)), Q(1, 3))
+
+
+def test_s6_mutation_is_invisible_at_one_third():
+    """The mutated A equals the printed one at r = 1/3 and fixes {x = 0} like it."""
+    from proofs.model import A_PRINTED, matrix
+    K, K2 = matrix(A_PRINTED), matrix(AGREES_AT_ONE_THIRD["A"])
+    third = sp.Rational(1, 3)
+    assert K.subs(r, third) == K2.subs(r, third) and K != K2
+    assert K2[:, 1:] == K[:, 1:] == sp.Matrix([[0, 0], [1, 0], [0, 1]])
+    assert outcome("S6", **AGREES_AT_ONE_THIRD).printed[0].holds is False
+
+
+def test_cofactor_over_q_of_r():
+    """The engine's cof(K), built in SymPy at a symbolic r, is det(K) K^(-T) over Q(r); the
+    integer matrix the map steps with at a rational r is a positive multiple of it."""
+    for L in LETTERS:
+        K = collision_matrix(L)
+        engine = sp.Matrix.hstack(*(sp.Matrix(c) for c in R.cofactor_columns(L, r)))
+        assert all(sp.cancel(e) == 0 for e in engine - K.det() * K.inv().T)
+        for r0 in (Q(1, 3), Q(2, 7), Q(97, 100)):
+            k = P.multiple(R.cofactor(L, r0), engine.subs(r, sp.Rational(int(r0.p), int(r0.q))))
+            assert k is not None and k > 0
+    assert P.multiple(((1, 2, 3),) * 3, sp.Matrix([[-1, -2, -3]] * 3)) is None      # negative multiple
 
 
 def test_cofactor_moves_the_normal():
@@ -131,14 +199,23 @@ def test_word_of_matches_the_orbit():
 
 
 def test_printed_trilinear_formula_is_the_relabelled_one_for_contact_a():
+    """For the contact a the relabelled formula is the printed one of l. 976 when the next
+    collision is b, and the printed one of l. 980 with u(0) ∧ e_z (S8's erratum) when it is
+    c; u_1 = cos φ = 0 is a corner.  Every path asserts, and both collisions occur."""
     rng = random.Random(5)
-    for _ in range(20):
+    seen = {"b": 0, "c": 0, "corner": 0}
+    for _ in range(40):
         u = tuple(Q(rng.randint(-9, 9)) for _ in range(3))
         if u[0] == 0:
+            with pytest.raises(R.Corner):
+                R.vectorial_step("a", u, Q(1, 3))
+            seen["corner"] += 1
             continue
         j, ut = R.vectorial_step("a", u, Q(1, 3))
-        if j == "b":
-            assert R.formula("cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))")(u, Q(1, 3)) == ut
+        printed = {"b": I.TRILINEAR_B, "c": I.TRILINEAR_C_CORRECTED}[j]
+        assert R.formula(printed)(u, Q(1, 3)) == ut
+        seen[j] += 1
+    assert seen["b"] > 0 and seen["c"] > 0 and seen["corner"] > 0
 
 
 def test_trigonometric_step_on_an_exact_state():
@@ -153,7 +230,15 @@ def test_trigonometric_step_on_an_exact_state():
 
 
 def test_admissible_words_and_blocks():
-    assert all("aca" not in w and "cac" not in w for w in P.admissible(5)) and len(P.admissible(3)) == 10
+    """The windows the proofs allow are the words with no letter twice in a row and no aca, cac."""
+    allowed = RC.transitions(CTX.get("reduction_cones"))
+    assert allowed == {("a", "b"): {"a", "c"}, ("a", "c"): {"b"}, ("b", "a"): {"b", "c"}, ("b", "c"): {"a", "b"},
+                       ("c", "a"): {"b"}, ("c", "b"): {"a", "c"}}
+    for n in range(1, 7):
+        by_hand = ["".join(w) for w in itertools.product(LETTERS, repeat=n)
+                   if all(x != y for x, y in zip(w, w[1:])) and "aca" not in "".join(w) and "cac" not in "".join(w)]
+        assert sorted(RC.admissible(n, allowed)) == sorted(by_hand)
+    assert len(RC.admissible(3, allowed)) == 10
     assert P.parses("abcbacbca", ["ab", "cb", "acb", "cab"])       # ab cb acb + "ca" cut short
     assert not P.parses("babcb", ["ab", "cb", "acb", "cab"])
     assert P.offsets(P.PRINTED_S10["window"]) == {2, 3}
@@ -178,3 +263,58 @@ def test_conversions_round_trip():
 def test_altered_refuses_a_text_that_is_not_printed():
     with pytest.raises(ValueError):
         altered("S10", "blocks", "bca", "abc")
+
+
+def test_verdicts_rest_on_the_proofs_not_on_the_samples():
+    """S9.2, S10 and S11 keep their verdicts when the scan is replaced by a word that
+    contradicts them (aca, a corner after 6 collisions) and the particle runs by none:
+    the scan and the runs are supporting evidence; the proofs on the cones decide."""
+    ctx = Context()
+    ctx.values["reduction_scan"] = [P.ScanOrbit(Q(1, 2), R.canonical("a", [1, 1, -1]), "acacab", 1)]
+    ctx.values["section4_data"] = []
+    for id in ("S9.2", "S10", "S11"):
+        out = run_certificate(CERTIFICATES[id], ctx)
+        assert out.status == EXPECTED[id], (id, [c.statement for c in out.printed if not c.holds])
+        assert any(e.startswith("Supporting evidence, not proof") for e in out.evidence)
+
+
+def test_s10_erratum_is_the_leading_b():
+    """The block decomposition fails because every state of a cone whose next contact is b
+    starts its word with b (an exact witness by the engine), and holds without that b."""
+    out = outcome("S10")
+    failing = [c for c in out.printed if not c.holds]
+    assert len(failing) == 1 and "concatenation" in failing[0].statement
+    assert sum("has c_1 = b" in e for e in failing[0].evidence) == 2
+    assert all(c.holds for c in out.corrected) and "first letter when that is b" in out.corrected[-1].statement
+
+
+def test_a_wrong_proof_fails_whatever_the_samples():
+    """With the step lemmas replaced by ones computed from a wrong C, S9.2 and S10 FAIL."""
+    ctx = Context()
+    wrong = {L: collision_matrix(L) for L in LETTERS}
+    wrong["c"] = wrong["c"].subs(-r, r)
+    ctx.values["reduction_cones"] = RC.steps(wrong)
+    ctx.values["section4_data"] = []
+    ctx.values["reduction_scan"] = CTX.get("reduction_scan")
+    for id in ("S6", "S7.2", "S8.2", "S9.2", "S10", "S11"):
+        out = run_certificate(CERTIFICATES[id], ctx)
+        assert out.status == FAIL, id
+        if id in ("S6", "S7.2"):                  # the lemmas are the only failing checks
+            assert [c.statement for c in out.printed if not c.holds] == [
+                c.statement for c in out.printed if "six cones" in c.statement]
+
+
+def test_s7_case_check_fails_on_an_altered_case():
+    """The printed case a, cos φ > 0 with the pair 3-4: its proof (S7.1's step, and the
+    projective map's step) fails, and the other five cases still hold."""
+    out = outcome("S7.2", **MUTATIONS["S7.2"][0])
+    cases = [c for c in out.printed if "the printed step (S7.1) is the projective map's step" in c.statement
+             or c.statement.endswith("the printed step (as in S7.1)")]
+    assert len(cases) == 6 and [c.holds for c in cases] == [False, True, True, True, True, True]
+
+
+def test_s8_corrected_c_formula_is_proven_and_the_printed_one_refuted():
+    out = outcome("S8.2")
+    fixed = [c for c in out.corrected if "u(0) ∧ e_z" in c.statement]
+    assert len(fixed) == 1 and fixed[0].holds and any("their cross product" in e for e in fixed[0].evidence)
+    assert any(e.startswith("Supporting evidence, not proof") and "0 of 261 collisions a→c" in e for e in out.evidence)

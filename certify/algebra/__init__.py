@@ -15,7 +15,7 @@ ground floor (:mod:`certify.errors`, :mod:`certify.caches`).
 """
 from . import numberfield, trig
 from .algebraic import Algebraic, sign_at, sign_intervals
-from .balls import GUARD, decide, precision
+from .balls import GUARD, decide, ends, ordered, precision, tight
 from .branches import Condition, FixedPoint, SignTable, Spectrum, ball_value, simplest_between
 from .elimination import Elimination, eliminate, show_factored_int
 from .poly import (FIELD, RING, Lf, Rf, discriminant_lambda, expr, from_flint, irreducible_factors, lam, parse,
@@ -26,7 +26,7 @@ from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_sequenc
 __all__ = [
     "numberfield", "trig",
     "Algebraic", "sign_at", "sign_intervals",
-    "GUARD", "decide", "precision",
+    "GUARD", "decide", "ends", "ordered", "precision", "tight",
     "Condition", "FixedPoint", "SignTable", "Spectrum", "ball_value", "simplest_between",
     "Elimination", "eliminate", "show_factored_int",
     "FIELD", "RING", "Lf", "Rf", "discriminant_lambda", "expr", "from_flint", "irreducible_factors", "lam",

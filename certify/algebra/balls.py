@@ -3,7 +3,9 @@ raising it.
 
 Every ball computation in certify runs inside :func:`precision`; a question that
 balls may fail to answer (a sign, a comparison) is asked by :func:`decide` at
-doubling precisions until the answer is proven or the limit is reached.
+doubling precisions until the answer is proven or the limit is reached.  Balls are
+ordered and measured through their exact rational ends (:func:`ends`), never
+through a float: two roots that agree to 20 digits are still ordered correctly.
 """
 from __future__ import annotations
 
@@ -39,3 +41,28 @@ def decide(attempt: Callable[[int], object], prec: int = 128, maxprec: int = 102
             return answer
         prec *= 2
     return answer
+
+
+def ends(z: flint.arb) -> tuple[flint.fmpq, flint.fmpq]:
+    """The exact rational ends (mid - rad, mid + rad) of a finite ball."""
+    m, d = z.mid().fmpq(), z.rad().fmpq()
+    return m - d, m + d
+
+
+def ordered(balls, reverse: bool = False) -> list | None:
+    """The balls in increasing order (decreasing with ``reverse``), decided by exact
+    comparison of their rational ends; None when two of them overlap: their order is
+    then undecided, and the caller refines them (raises the precision)."""
+    keyed = sorted(((ends(z), z) for z in balls), key=lambda e: e[0][0])
+    if any(not a[1] < b[0] for (a, _), (b, _) in zip(keyed, keyed[1:])):
+        return None
+    out = [z for _, z in keyed]
+    return out[::-1] if reverse else out
+
+
+def tight(z: flint.arb, bits: int) -> bool:
+    """rad(z) < 2^-bits |mid(z)| (rad(z) < 2^-bits when mid(z) = 0), decided exactly on
+    the rational midpoint and radius."""
+    m, d = z.mid().fmpq(), z.rad().fmpq()
+    bound = abs(m) if m != 0 else flint.fmpq(1)
+    return d * 2 ** bits < bound

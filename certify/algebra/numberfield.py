@@ -11,7 +11,7 @@ import flint
 import sympy as sp
 
 from .algebraic import Algebraic
-from .balls import GUARD, precision
+from .balls import GUARD, ordered, precision
 from .poly import expr, lam, r
 
 Q = flint.fmpq
@@ -98,8 +98,10 @@ def evaluate(f, R: flint.arb, z: flint.arb) -> flint.arb:
 
 
 def real_roots(f, alpha: Algebraic, prec: int):
-    """Certified balls around the real roots of a squarefree f ∈ K[λ], largest first;
-    None when python-flint cannot isolate them at this precision.  A root ball is
+    """Certified balls around the real roots of a squarefree f ∈ K[λ], largest first
+    (the order decided on the exact rational ends of the balls, so that the upper,
+    middle and lower branches are named right however close they are); None when
+    python-flint cannot isolate or order them at this precision.  A root ball is
     real when it meets its own conjugate and no other root ball does."""
     try:
         with precision(prec + GUARD):
@@ -111,14 +113,16 @@ def real_roots(f, alpha: Algebraic, prec: int):
                 roots = poly.roots(tol=flint.arb(2) ** -(prec // 2))
             except ValueError:
                 roots = poly.roots()
+            reals = []
+            for i, z in enumerate(roots):
+                if z.imag > 0 or z.imag < 0:
+                    continue
+                # at the working precision: conjugate() rounds to it (at the default 53 bits
+                # the conjugates of roots closer than 1e-16 would all overlap)
+                conj = z.conjugate()
+                if any(j != i and w.overlaps(conj) for j, w in enumerate(roots)) or not z.overlaps(conj):
+                    return None
+                reals.append(z.real)
     except ValueError:
         return None
-    reals = []
-    for i, z in enumerate(roots):
-        if z.imag > 0 or z.imag < 0:
-            continue
-        conj = z.conjugate()
-        if any(j != i and w.overlaps(conj) for j, w in enumerate(roots)) or not z.overlaps(conj):
-            return None
-        reals.append(z.real)
-    return sorted(reals, key=lambda z: float(z.mid()), reverse=True)
+    return ordered(reals, reverse=True)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import flint
 
+from .balls import ordered
 from .poly import to_fmpq
 
 Q = flint.fmpq
@@ -118,7 +119,8 @@ def refine(p, lo, hi, width) -> tuple[flint.fmpq, flint.fmpq]:
 def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
     """Second route: python-flint's certified complex root isolation, keeping the
     roots it proves real (imaginary part exactly zero) inside ]a, b[ (the ball
-    must lie strictly inside, else ValueError: undecided)."""
+    must lie strictly inside, else ValueError: undecided), increasing: ordered by
+    the exact rational ends of the balls (ValueError when two balls overlap)."""
     from .poly import primitive, squarefree_part
     P = squarefree_part(primitive(flint.fmpq_poly(p)))
     out = []
@@ -133,4 +135,7 @@ def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
             out.append(x)
         elif not outside:
             raise ValueError(f"root {x} not separated from the interval ends")
-    return sorted(out, key=lambda z: float(z.mid()))
+    out = ordered(out)
+    if out is None:
+        raise ValueError("two real root balls overlap: their order is undecided")
+    return out

@@ -75,13 +75,21 @@ def primitive(n) -> tuple:
     return n if g == 1 else tuple(z // g for z in n)
 
 
+def cofactor_columns(letter: str, r, unit=E) -> list[tuple]:
+    """The columns of cof(K) = det(K) K^{-T} for K = A, B, C, in any ring holding r
+    (SymPy symbols, rationals): since e_1 = e_2 ∧ e_3 (cyclically), cof(K) e_m =
+    K e_{m+1} ∧ K e_{m+2}.  ``unit``: e_1, e_2, e_3 in that ring."""
+    Ke = [collide(letter, e, r) for e in unit]
+    return [cross(Ke[(m + 1) % 3], Ke[(m + 2) % 3]) for m in range(3)]
+
+
 @lru_cache(maxsize=None)
 def cofactor(letter: str, r: flint.fmpq) -> tuple:
-    """The rows of cof(K) = det(K) K^{-T} for K = A, B, C at r, times the positive
-    integer that clears its denominators (a positive multiple keeps the plane and
-    its orientation).  Since e_1 = e_2 ∧ e_3 (cyclically), cof(K) e_m = K e_{m+1} ∧ K e_{m+2}."""
-    Ke = [collide(letter, tuple(flint.fmpq(z) for z in e), flint.fmpq(r)) for e in E]
-    cols = [cross(Ke[(m + 1) % 3], Ke[(m + 2) % 3]) for m in range(3)]
+    """The rows of cof(K) (:func:`cofactor_columns`) at a rational r, times the positive
+    integer that clears its denominators (a positive multiple keeps the plane and its
+    orientation)."""
+    unit = tuple(tuple(flint.fmpq(z) for z in e) for e in E)
+    cols = cofactor_columns(letter, flint.fmpq(r), unit)
     den = flint.fmpz(1)
     for col in cols:
         for z in col:
@@ -246,9 +254,16 @@ def vectorial_step(letter: str, u, r) -> tuple[str, tuple]:
     succ = LETTERS[(i + 1) % 3]
     other = LETTERS[(i + 2) % 3]
     j = succ if s > 0 else other
+    return j, trilinear(letter, j, u, r)
+
+
+def trilinear(letter: str, j: str, u, r) -> tuple:
+    """ũ(1) = [u ∧ e_j] ∧ [K_j (u ∧ [e_i ∧ u])] for the contact ``letter`` = i and the
+    next collision j, in any ring (rationals, SymPy symbols)."""
+    i = INDEX[letter]
     p1 = cross(u, E[INDEX[j]])
     q0 = cross(u, cross(E[i], u))
-    return j, cross(p1, collide(j, q0, r))
+    return cross(p1, collide(j, q0, r))
 
 
 # --- the trigonometric representation (l. 881-929) ----------------------------
