@@ -60,7 +60,13 @@ def is_ball(z) -> bool:
 
 def sign(z) -> int:
     """The sign of an exact rational, or of a ball when the ball proves it
-    (an exact zero ball is 0); Undecided otherwise."""
+    (an exact zero ball is 0); Undecided otherwise.
+
+    An fmpq is canonical (denominator > 0): its sign is its numerator's, read
+    without the subtraction python-flint's ``z < 0`` makes."""
+    if type(z) is flint.fmpq:
+        n = z.p
+        return (n > 0) - (n < 0)
     if not is_ball(z):
         return (z > 0) - (z < 0)
     if z > 0:
@@ -78,7 +84,12 @@ def zero_like(z):
 
 
 def less(s, t) -> bool:
-    """s < t, proven (balls) or exact; Undecided when balls overlap."""
+    """s < t, proven (balls) or exact; Undecided when balls overlap.
+
+    Two fmpq are compared by cross-multiplying their integers (denominators > 0):
+    python-flint's ``s < t`` forms the canonical difference s - t, with its gcd."""
+    if type(s) is flint.fmpq and type(t) is flint.fmpq:
+        return s.p * t.q < t.p * s.q
     if not (is_ball(s) or is_ball(t)):
         return s < t
     if s < t:
