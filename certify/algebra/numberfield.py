@@ -11,10 +11,11 @@ from __future__ import annotations
 
 import flint
 import sympy as sp
+from sympy.polys.rings import PolyElement
 
 from .algebraic import Algebraic
 from .balls import GUARD, precision
-from .poly import expr, lam, r
+from .poly import expr, lam, r, ring_terms
 
 Q = flint.fmpq
 K = flint.fmpq_poly
@@ -33,12 +34,17 @@ def reduce(c, m: flint.fmpq_poly) -> flint.fmpq_poly:
 
 
 def kpoly(e, m: flint.fmpq_poly) -> list[flint.fmpq_poly]:
-    """A polynomial in λ over Q[r] as an element of K[λ] (coefficients highest first)."""
-    terms = sp.Poly(expr(e), lam, r).terms()
-    degree = max(i for (i, _j), _c in terms)
+    """A polynomial in λ over Q[r] as an element of K[λ] (coefficients highest first):
+    a SymPy expression, a text, or an element of Q[λ, r, x, u, v, s] (``poly.RING``)
+    free of x, u, v, s, read term by term without going through an expression."""
+    if isinstance(e, PolyElement):
+        terms = [(i, j, c) for c, j, i in ring_terms(e)]
+    else:
+        terms = [(i, j, Q(int(sp.numer(c)), int(sp.denom(c)))) for (i, j), c in sp.Poly(expr(e), lam, r).terms()]
+    degree = max((i for i, _j, _c in terms), default=0)
     coeffs = [dict() for _ in range(degree + 1)]
-    for (i, j), c in terms:
-        coeffs[degree - i][j] = Q(int(sp.numer(c)), int(sp.denom(c)))
+    for i, j, c in terms:
+        coeffs[degree - i][j] = c
     return _strip([reduce(_from_dict(d), m) for d in coeffs])
 
 
