@@ -35,6 +35,7 @@ import flint
 
 from certify import caches
 from certify.algebra.balls import precision
+from certify.algebra.poly import to_fmpq
 from .model import INDEX, LETTERS, collide
 from .simulate import Undecided, exact, sign
 
@@ -66,7 +67,8 @@ def scale(c, v) -> tuple:
 def integral(n) -> tuple:
     """den·n, den > 0 the lcm of the denominators of the rational vector n: the numerator
     of n as a canonical fmpq_poly (its content is coprime to its positive denominator)."""
-    m = flint.fmpq_poly(list(exact(n))).numer()
+    exact_types = (flint.fmpq, flint.fmpz, int)       # taken by fmpq_poly as they are
+    m = flint.fmpq_poly([z if isinstance(z, exact_types) else to_fmpq(z) for z in n]).numer()
     return (m[0], m[1], m[2])
 
 
