@@ -242,12 +242,21 @@ def engine_is_printed(printed: dict) -> list[Check]:
     return checks
 
 
-def trig_agrees(P: R.Plane, P1: R.Plane, r, prec: int = 128) -> bool:
+def trig_agrees(P: R.Plane, P1: R.Plane, r, prec: int = 128, last: list | None = None) -> bool:
     """The trigonometric step from (θ, φ) of the physical state P gives the contact of
     the next physical state P1 and balls of cos, sin of θ, φ overlapping P1's.  (θ, φ
-    are functions of the contact and the plane: p ∝ n ∧ e_i, q̂ ∝ |n|² e_i − n_i n.)"""
+    are functions of the contact and the plane: p ∝ n ∧ e_i, q̂ ∝ |n|² e_i − n_i n.)
+    ``last``: [state, its angles at ``prec``] from the previous call along the orbit,
+    where P1 was this call's P (each state ends one step and starts the next), or
+    [None, None]; updated here."""
+    last = [None, None] if last is None else last
+
+    def angles(Q: R.Plane) -> R.Angles:
+        if last[0] is not Q:
+            last[1], last[0] = R.angles(Q), Q
+        return last[1]
     with precision(prec):
-        T, X = R.trig_step(R.angles(P), r), R.angles(P1)
+        T, X = R.trig_step(angles(P), r), angles(P1)
     return T.letter == P1.letter and all(a.overlaps(b) for a, b in
                                          ((T.ct, X.ct), (T.st, X.st), (T.cp, X.cp), (T.sp, X.sp)))
 
@@ -298,10 +307,11 @@ def trigonometric_map_agrees_with_dynamics(section4_data, reduction_cones, **pri
     compared = agree = undecided = 0
     if all(c.holds for c in checks[:3]):
         for d in section4_data:
+            last = [None, None]
             for P, P1 in zip(d.planes[0], d.planes[0][1:]):
                 compared += 1
                 try:
-                    agree += trig_agrees(P, P1, d.r)
+                    agree += trig_agrees(P, P1, d.r, last=last)
                 except sim.Undecided:
                     undecided += 1
     evidence = [supporting(f"at {compared} collisions of {len(section4_data)} exact runs the six cases give the next "

@@ -46,6 +46,26 @@ def test_next_collision_exact():
     assert sim.next_collision(sim.exact([1, 1, 1]), sim.exact([1, 2, 3])) is None
 
 
+small = st.integers(-3, 3).map(Q) | st.fractions(min_value=-3, max_value=3, max_denominator=4).map(
+    lambda f: Q(f.numerator, f.denominator))
+
+
+@settings(max_examples=300)
+@given(st.tuples(small.map(abs), small.map(abs), small.map(abs)), st.tuples(small, small, small))
+def test_exact_first_collisions_is_the_generic_one(p, q):
+    """The fmpq path (times compared by cross-multiplied integers, one division) gives
+    the letters and time of collision_times + first_collisions, ties included (small
+    entries make ties and non-approaching pairs frequent), and the same signs and order
+    as python-flint's own comparisons."""
+    times = sim.collision_times(p, q)
+    want = sim.first_collisions(times) if times else None
+    assert sim.first_collisions_exact(p, q) == want
+    for z in p + q:
+        assert sim.sign(z) == (z > 0) - (z < 0)
+    for s, t in zip(p + q, q + p):
+        assert sim.less(s, t) == (s < t)
+
+
 def test_simultaneous_a_and_c_exact():
     """a and c at exactly the same time: one event "ac" (A and C commute, l. 240)."""
     p, q = sim.exact([1, 1, 2]), sim.exact([-1, 1, -2])

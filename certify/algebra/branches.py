@@ -332,7 +332,7 @@ class Spectrum:
 
     def _branches_at(self, rc, maxprec):
         m = nf.modulus(rc)
-        sqf, g = nf.squarefree(nf.kpoly(self.cp, m), m)
+        sqf, g = nf.squarefree(nf.kpoly(self.ring_cp, m), m)
         if len(g) > 2:
             return None                  # a root of multiplicity > 2: not handled
         prec = 128
@@ -366,10 +366,10 @@ class Spectrum:
         the numerator vanishes there exactly (and the denominator does not); with
         Δ = 0 exactly, g evaluated with √Δ = 0; '?' otherwise."""
         if cond.delta is None:
-            if self.vanishes_at(cond.N[0].as_expr(), rc, k) and not self.vanishes_at(cond.D[0].as_expr(), rc, k):
+            if self.vanishes_at(cond.N[0], rc, k) and not self.vanishes_at(cond.D[0], rc, k):
                 return 0
             return "?"
-        if not self.vanishes_at(cond.delta.as_expr(), rc, k):
+        if not self.vanishes_at(cond.delta, rc, k):
             if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball) and \
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
@@ -382,9 +382,9 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided."""
         P0, P1 = P
-        if not self.vanishes_at((P0 ** 2 - P1 ** 2 * delta).as_expr(), rc, k):
+        if not self.vanishes_at(P0 ** 2 - P1 ** 2 * delta, rc, k):
             return False
-        if not P1 or self.vanishes_at(P1.as_expr(), rc, k):
+        if not P1 or self.vanishes_at(P1, rc, k):
             return True
         t0, t1 = ring_terms(P0), ring_terms(P1)
         n = max((max(i, j) for _c, i, j in t0 + t1), default=0)
@@ -398,14 +398,15 @@ class Spectrum:
         return decide(opposite, 128, maxprec, undecided=lambda v: v is None)
 
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
-        """Exact test that the polynomial h(r, λ) vanishes on branch ``branch`` at r = rc:
+        """Exact test that the polynomial h(r, λ) (an expression or an element of
+        ``poly.RING``) vanishes on branch ``branch`` at r = rc:
         G = gcd(cp(λ; rc), h(rc, λ)) is computed in Q(rc)[λ]; h vanishes there iff
         the branch's eigenvalue is a root of G, decided by disjoint certified balls."""
         m = nf.modulus(rc)
         hk = nf.kpoly(h, m)
         if not hk:
             return True
-        G = nf.gcd(nf.kpoly(self.cp, m), hk, m)
+        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
         if len(G) == 1:
             return False
         G, _ = nf.squarefree(G, m)

@@ -3,89 +3,114 @@
 At a critical value r = α two eigenvalue branches may collide; cp(λ; α) is then
 made squarefree exactly — Euclid's algorithm in K[λ], K = Q[r]/(m), m the minimal
 polynomial of α — before its roots are enclosed by certified balls (python-flint's
-acb root isolation).  Elements of K are SymPy polynomials in r reduced modulo m.
+acb root isolation).  Elements of K are python-flint ``fmpq_poly`` in r reduced
+modulo m (inverses by the extended Euclid algorithm, ``xgcd``); an element of K[λ]
+is the list of its coefficients, highest first.
 """
 from __future__ import annotations
 
 import flint
 import sympy as sp
+from sympy.polys.rings import PolyElement
 
 from .algebraic import Algebraic
 from .balls import GUARD, ordered, precision
-from .poly import expr, lam, r
+from .poly import expr, lam, r, ring_terms
 
 Q = flint.fmpq
+K = flint.fmpq_poly
 
 
-def modulus(alpha: Algebraic) -> sp.Poly:
-    """The minimal polynomial of α (r - α for a rational α) as a SymPy Poly in r."""
+def modulus(alpha: Algebraic) -> flint.fmpq_poly:
+    """The minimal polynomial of α (r - α for a rational α) as an fmpq_poly in r."""
     if alpha.is_rational:
-        return sp.Poly(r - sp.Rational(int(alpha.lo.p), int(alpha.lo.q)), r)
-    m = alpha.minimal_polynomial()
-    return sp.Poly(sum(sp.Integer(int(c)) * r ** k for k, c in enumerate(m.coeffs())), r)
+        return K([-alpha.lo, 1])
+    return K(alpha.minimal_polynomial())
 
 
-def reduce(c, m: sp.Poly) -> sp.Poly:
+def reduce(c, m: flint.fmpq_poly) -> flint.fmpq_poly:
     """An element of K in normal form."""
-    return sp.Poly(c, r).rem(m)
+    return K(c) % m
 
 
-def kpoly(e, m: sp.Poly) -> list[sp.Poly]:
-    """A polynomial in λ over Q[r] as an element of K[λ] (coefficients highest first)."""
-    return _strip([reduce(c, m) for c in sp.Poly(expr(e), lam).all_coeffs()])
+def kpoly(e, m: flint.fmpq_poly) -> list[flint.fmpq_poly]:
+    """A polynomial in λ over Q[r] as an element of K[λ] (coefficients highest first):
+    a SymPy expression, a text, or an element of Q[λ, r, x, u, v, s] (``poly.RING``)
+    free of x, u, v, s, read term by term without going through an expression."""
+    if isinstance(e, PolyElement):
+        terms = [(i, j, c) for c, j, i in ring_terms(e)]
+    else:
+        terms = [(i, j, Q(int(sp.numer(c)), int(sp.denom(c)))) for (i, j), c in sp.Poly(expr(e), lam, r).terms()]
+    degree = max((i for i, _j, _c in terms), default=0)
+    coeffs = [dict() for _ in range(degree + 1)]
+    for i, j, c in terms:
+        coeffs[degree - i][j] = c
+    return _strip([reduce(_from_dict(d), m) for d in coeffs])
+
+
+def _from_dict(d: dict) -> flint.fmpq_poly:
+    """The polynomial Σ d[j] r^j."""
+    out = [Q(0)] * (max(d, default=0) + 1)
+    for j, c in d.items():
+        out[j] = c
+    return K(out)
 
 
 def _strip(p):
-    while p and p[0].is_zero:
+    while p and p[0].is_zero():
         p = p[1:]
     return p
 
 
 def _monic(p, m):
-    inv = sp.Poly(sp.invert(p[0].as_expr(), m.as_expr(), r), r)
-    return [reduce((c * inv).as_expr(), m) for c in p]
+    g, inv, _ = p[0].xgcd(m)          # g = inv·p[0] + _·m, g monic
+    if g != 1:
+        raise ZeroDivisionError(f"{p[0]} is not invertible modulo {m}")
+    return [reduce(c * inv, m) for c in p]
 
 
-def gcd(f, g, m) -> list[sp.Poly]:
+def gcd(f, g, m) -> list[flint.fmpq_poly]:
     """The monic gcd in K[λ] (m irreducible, so K is a field)."""
     f, g = _strip(f), _strip(g)
     while g:
         g = _monic(g, m)
         while len(f) >= len(g):
             q = f[0]
-            shifted = g + [sp.Poly(0, r)] * (len(f) - len(g))
-            f = _strip([reduce((a - q * b).as_expr(), m) for a, b in zip(f, shifted)])
+            shifted = g + [K(0)] * (len(f) - len(g))
+            f = _strip([reduce(a - q * b, m) for a, b in zip(f, shifted)])
         f, g = g, f
     return _monic(f, m) if f else f
 
 
-def divide(f, g, m) -> list[sp.Poly]:
+def divide(f, g, m) -> list[flint.fmpq_poly]:
     """The exact quotient f / g in K[λ], g monic."""
     f, out = list(f), []
     while len(f) >= len(g):
         q = f[0]
         out.append(q)
-        shifted = g + [sp.Poly(0, r)] * (len(f) - len(g))
-        f = [reduce((a - q * b).as_expr(), m) for a, b in zip(f, shifted)][1:]
+        shifted = g + [K(0)] * (len(f) - len(g))
+        f = [reduce(a - q * b, m) for a, b in zip(f, shifted)][1:]
     return out
 
 
-def derivative(f, m) -> list[sp.Poly]:
+def derivative(f, m) -> list[flint.fmpq_poly]:
     n = len(f) - 1
-    return _strip([reduce((c * (n - i)).as_expr(), m) for i, c in enumerate(f[:-1])])
+    return _strip([reduce(c * (n - i), m) for i, c in enumerate(f[:-1])])
 
 
-def squarefree(f, m) -> tuple[list[sp.Poly], list[sp.Poly]]:
+def squarefree(f, m) -> tuple[list[flint.fmpq_poly], list[flint.fmpq_poly]]:
     """(f / gcd(f, f'), gcd(f, f')) in K[λ]."""
     g = gcd(f, derivative(f, m), m)
     return (divide(f, g, m) if len(g) > 1 else f), g
 
 
-def arb_of(c: sp.Poly, R: flint.arb) -> flint.arb:
-    """An element of K evaluated at a ball around α."""
+def arb_of(c: flint.fmpq_poly, R: flint.arb) -> flint.arb:
+    """An element of K evaluated at a ball around α (its terms from the highest)."""
     val = flint.arb(0)
-    for (k,), co in c.terms():
-        val += flint.arb(Q(int(sp.numer(co)), int(sp.denom(co)))) * R ** k
+    coeffs = c.coeffs()
+    for k in range(len(coeffs) - 1, -1, -1):
+        if coeffs[k] != 0:
+            val += flint.arb(coeffs[k]) * R ** k
     return val
 
 

@@ -68,9 +68,8 @@ def primitive(p) -> flint.fmpz_poly:
     if isinstance(p, flint.fmpz_poly):
         q = p
     else:
-        p = flint.fmpq_poly(p)
-        den = _lcm([c.q for c in p.coeffs()])
-        q = flint.fmpz_poly([int(c * den) for c in p.coeffs()])
+        # the numerator of the canonical fmpq_poly: p times the lcm of its denominators
+        q = flint.fmpq_poly(p).numer()
     if q.is_zero():
         return q
     g = q.content()
@@ -83,8 +82,7 @@ def primitive(p) -> flint.fmpz_poly:
 def _lcm(values):
     out = flint.fmpz(1)
     for v_ in values:
-        v_ = flint.fmpz(v_)
-        out = out * v_ // out.gcd(v_)
+        out = out.lcm(v_)
     return out
 
 

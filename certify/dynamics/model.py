@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import re
 
+import flint
 import sympy as sp
 
-from certify.algebra.poly import lam, r
+from certify.algebra.poly import from_flint, lam, r
 from certify.errors import UsageError
 
 LETTERS = "abc"
@@ -75,7 +76,17 @@ def check_word(word: str) -> str:
 
 
 def word_matrix(word: str, rr=r) -> sp.Matrix:
-    """M_w = K_{c_n} ... K_{c_1}: the velocities after one period are M_w q(0)."""
+    """M_w = K_{c_n} ... K_{c_1}: the velocities after one period are M_w q(0), its
+    entries factored.  With rr the symbol r the product is formed on python-flint
+    polynomials in r (:func:`collide` works in any ring), not on SymPy expressions
+    expanded after every letter."""
+    if rr is r:
+        R = flint.fmpq_poly([0, 1])
+        M = [[flint.fmpq_poly([int(i == j)]) for j in range(3)] for i in range(3)]
+        for letter in word:
+            columns = [collide(letter, (M[0][j], M[1][j], M[2][j]), R) for j in range(3)]
+            M = [[columns[j][i] for j in range(3)] for i in range(3)]
+        return sp.Matrix(3, 3, lambda i, j: sp.factor(from_flint(M[i][j], r)))
     M = sp.eye(3)
     for letter in word:
         M = (collision_matrix(letter, rr) * M).applyfunc(sp.expand)
@@ -83,5 +94,6 @@ def word_matrix(word: str, rr=r) -> sp.Matrix:
 
 
 def characteristic_polynomial(M: sp.Matrix) -> sp.Expr:
-    """cp(M) = det(λI - M), expanded in λ and r."""
-    return sp.expand((lam * sp.eye(3) - M).det())
+    """cp(M) = det(λI - M), expanded in λ and r (SymPy's charpoly, on polynomials
+    rather than on the expressions of det)."""
+    return sp.expand(M.charpoly(lam).as_expr())

@@ -35,6 +35,7 @@ import flint
 
 from certify import caches
 from certify.algebra.balls import precision
+from certify.algebra.poly import to_fmpq
 from .model import INDEX, LETTERS, collide
 from .simulate import Undecided, exact, sign
 
@@ -63,12 +64,18 @@ def scale(c, v) -> tuple:
     return tuple(c * z for z in v)
 
 
+def integral(n) -> tuple:
+    """den·n, den > 0 the lcm of the denominators of the rational vector n: the numerator
+    of n as a canonical fmpq_poly (its content is coprime to its positive denominator)."""
+    exact_types = (flint.fmpq, flint.fmpz, int)       # taken by fmpq_poly as they are
+    m = flint.fmpq_poly([z if isinstance(z, exact_types) else to_fmpq(z) for z in n]).numer()
+    return (m[0], m[1], m[2])
+
+
 def primitive(n) -> tuple:
     """The primitive integer vector positively proportional to the rational n ≠ 0."""
     if not all(isinstance(z, flint.fmpz) for z in n):
-        n = exact(n)
-        den = n[0].q.lcm(n[1].q).lcm(n[2].q)
-        n = tuple(z.p * (den // z.q) for z in n)
+        n = integral(n)
     g = n[0].gcd(n[1]).gcd(n[2])
     if g == 0:
         raise ValueError("the zero vector spans no plane")
@@ -100,9 +107,21 @@ def cofactor(letter: str, r: flint.fmpq) -> tuple:
 caches.register(cofactor.cache_clear)
 
 
+def cofactors(r) -> dict[str, tuple]:
+    """{letter: cofactor(letter, r)} for the three collisions, looked up once for an
+    orbit at a fixed r (a lookup hashes the fmpq r, which python-flint does slowly)."""
+    r = flint.fmpq(r)
+    return {L: cofactor(L, r) for L in LETTERS}
+
+
+def apply(rows: tuple, n) -> tuple:
+    """The matrix with these rows times n."""
+    return tuple(row[0] * n[0] + row[1] * n[1] + row[2] * n[2] for row in rows)
+
+
 def cofactor_apply(letter: str, r, n) -> tuple:
     """A positive multiple of cof(K) n: the normal of K P when n is the normal of P."""
-    return tuple(row[0] * n[0] + row[1] * n[1] + row[2] * n[2] for row in cofactor(letter, flint.fmpq(r)))
+    return apply(cofactor(letter, flint.fmpq(r)), n)
 
 
 # --- the projective, exact representation --------------------------------------
@@ -133,7 +152,7 @@ def canonical(letter: str, n) -> Plane:
 def normal(p, q) -> tuple:
     """The primitive integer vector positively proportional to p ∧ q (p, q rational):
     p and q are first scaled to integer vectors by positive factors."""
-    return primitive(cross(primitive(p), primitive(q)))
+    return primitive(cross(integral(p), integral(q)))
 
 
 def plane(letter: str, p, q) -> Plane:
@@ -170,26 +189,43 @@ def next_letter(P: Plane) -> str:
     """The next contact: the j ≠ i where w_j < 0, i.e. n_i n_j > 0.  With the
     orientation e_t · n > 0 this is the cyclic successor (a→b→c→a) iff cos φ > 0,
     and cos φ = n_i / |n| (l. 881-929)."""
-    position(P)                              # the state must lie inside its face
     i, n = INDEX[P.letter], P.n
+    if all(type(z) is flint.fmpz for z in n):
+        return _next_letter_exact(P.letter, i, n)
+    position(P)                              # the state must lie inside its face
     closing = [L for L in LETTERS if L != P.letter and sign(n[i] * n[INDEX[L]]) > 0]
     if len(closing) != 1:
         raise Corner(f"cos φ = 0 at {P}: the orbit heads for a corner")
     return closing[0]
 
 
-def step(P: Plane, r) -> Plane:
-    """(c_k, P(k)) ↦ (c_{k+1}, P(k+1)) with P(k+1) = K_j P(k): normal cof(K_j) n."""
+def _next_letter_exact(letter: str, i: int, n: tuple) -> str:
+    """:func:`next_letter` for an integer normal, from the signs s of its entries (each
+    read once): with j, k = i+1, i+2 (mod 3), n ∧ e_i has the entries s_k at j and −s_j
+    at k, so p lies inside the face iff s_k = −s_j ≠ 0 (:func:`position`); then
+    n_i n_j > 0 for exactly one of j, k when s_i ≠ 0, and for none when s_i = 0."""
+    s = [(z > 0) - (z < 0) for z in n]
+    j, k = (i + 1) % 3, (i + 2) % 3
+    if s[j] == 0 or s[k] != -s[j]:
+        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
+    if s[i] == 0:
+        raise Corner(f"cos φ = 0 at {Plane(letter, n)}: the orbit heads for a corner")
+    return LETTERS[j] if s[i] == s[j] else LETTERS[k]
+
+
+def step(P: Plane, r, rows: dict | None = None) -> Plane:
+    """(c_k, P(k)) ↦ (c_{k+1}, P(k+1)) with P(k+1) = K_j P(k): normal cof(K_j) n.
+    ``rows``: :func:`cofactors` of r, when the caller has them."""
     j = next_letter(P)
-    return canonical(j, cofactor_apply(j, r, P.n))
+    return canonical(j, apply((rows or cofactors(r))[j], P.n))
 
 
 def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
     """P and its first n images (fewer if a corner is met and stop_at_corner)."""
-    out = [P]
+    out, rows = [P], cofactors(r)
     for _ in range(n):
         try:
-            out.append(step(out[-1], r))
+            out.append(step(out[-1], r, rows))
         except Corner:
             if not stop_at_corner:
                 raise
@@ -201,11 +237,11 @@ def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:
     """The next n collision letters from P, and the final Plane, without keeping the
     orbit: the normal is made primitive only every ``reduce_every`` steps (its gcd
     is small, and the sign tests do not need it).  Stops early at a corner."""
-    letters = []
+    letters, rows = [], cofactors(r)
     try:
         for k in range(n):
             j = next_letter(P)
-            m = cofactor_apply(j, r, P.n)
+            m = apply(rows[j], P.n)
             if m[ORIENTATION[j]] < 0:
                 m = tuple(-z for z in m)
             P = canonical(j, m) if k % reduce_every == 0 else Plane(j, m)
@@ -317,7 +353,8 @@ def angles_of(letter: str, p, q) -> Angles:
     the unit tangential part of q gives sin φ = q̂_i and cos φ = q̂ · e_θ.  The
     tangential part |p|² q − (q · p) p is formed before rounding (exactly, when p and q
     are exact: near a collapse q is almost radial and rounding first would cancel)."""
-    w = tuple(dot(p, p) * qk - dot(q, p) * pk for qk, pk in zip(q, p))
+    pp, qp = dot(p, p), dot(q, p)
+    w = tuple(pp * qk - qp * pk for qk, pk in zip(q, p))
     p, w = (tuple(flint.arb(z) for z in v) for v in (p, w))
     ph, wh = scale(1 / norm(p), p), scale(1 / norm(w), w)
     ct, st = {"a": (ph[1], ph[2]), "b": (ph[2], ph[0]), "c": (ph[0], ph[1])}[letter]

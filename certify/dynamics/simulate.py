@@ -60,7 +60,13 @@ def is_ball(z) -> bool:
 
 def sign(z) -> int:
     """The sign of an exact rational, or of a ball when the ball proves it
-    (an exact zero ball is 0); Undecided otherwise."""
+    (an exact zero ball is 0); Undecided otherwise.
+
+    An fmpq is canonical (denominator > 0): its sign is its numerator's, read
+    without the subtraction python-flint's ``z < 0`` makes."""
+    if type(z) is flint.fmpq:
+        n = z.p
+        return (n > 0) - (n < 0)
     if not is_ball(z):
         return (z > 0) - (z < 0)
     if z > 0:
@@ -78,7 +84,12 @@ def zero_like(z):
 
 
 def less(s, t) -> bool:
-    """s < t, proven (balls) or exact; Undecided when balls overlap."""
+    """s < t, proven (balls) or exact; Undecided when balls overlap.
+
+    Two fmpq are compared by cross-multiplying their integers (denominators > 0):
+    python-flint's ``s < t`` forms the canonical difference s - t, with its gcd."""
+    if type(s) is flint.fmpq and type(t) is flint.fmpq:
+        return s.p * t.q < t.p * s.q
     if not (is_ball(s) or is_ball(t)):
         return s < t
     if s < t:
@@ -108,6 +119,26 @@ def first_collisions(times: dict[str, object]) -> tuple[str, object]:
     return "".join(L for L in LETTERS if L in times and times[L] == tmin), tmin
 
 
+def first_collisions_exact(p: Sequence, q: Sequence) -> tuple[str, flint.fmpq] | None:
+    """:func:`collision_times` then :func:`first_collisions` for fmpq p and q, None when
+    no pair approaches.  With p_i = P_i/D_i and q_i = Q_i/E_i (denominators > 0), the
+    time of an approaching pair is p_i/(-q_i) = (P_i E_i)/(-Q_i D_i), both integers of
+    that fraction with -Q_i D_i > 0: times are compared by cross-multiplying them, and
+    only the first time is formed as an fmpq (not one division per approaching pair)."""
+    times = []
+    for L, i in INDEX.items():
+        num = q[i].p
+        if num < 0:
+            times.append((L, p[i].p * q[i].q, -num * p[i].q))
+    if not times:
+        return None
+    _, n, d = times[0]
+    for _L, n1, d1 in times[1:]:
+        if n1 * d < n * d1:
+            n, d = n1, d1
+    return "".join(L for L, n1, d1 in times if n1 * d == n * d1), flint.fmpq(n, d)
+
+
 def touches(p: Sequence, q: Sequence, t, i: int) -> bool:
     """Is the gap p_i of a pair that does not approach (q_i >= 0) zero at the time
     t >= 0?  p_i + t q_i = 0 exactly when p_i = 0 and t q_i = 0 (signs certified)."""
@@ -130,10 +161,16 @@ def next_collision(p: Sequence, q: Sequence) -> tuple[str, object] | None:
     (a and c simultaneous, exact mode only); None when no pair approaches.
     Raises Undecided (balls) or MultipleCollision (three or four particles meet:
     b tied with a or c, or a collision next to particles in contact)."""
-    times = collision_times(p, q)
-    if not times:
-        return None
-    letters, t = first_collisions(times)
+    if all(type(z) is flint.fmpq for z in (*p, *q)):
+        first = first_collisions_exact(p, q)
+        if first is None:
+            return None
+        letters, t = first
+    else:
+        times = collision_times(p, q)
+        if not times:
+            return None
+        letters, t = first_collisions(times)
     particles = meeting(p, q, t, letters)
     if particles:
         raise MultipleCollision(particles, t)

@@ -43,8 +43,9 @@ class Requirement:
 
 
 def mod_cp(e, cp):
-    """A polynomial in r, λ reduced modulo cp (monic in λ): the same values on every
-    branch, λ-degree below deg cp."""
+    """A polynomial in r, λ reduced modulo cp (monic in λ; an expression or, cheaper,
+    an element of the engine's ring): the same values on every branch, λ-degree below
+    deg cp."""
     return to_ring(e).rem(to_ring(cp))
 
 
@@ -86,11 +87,12 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
     return Condition(req.name, (N0.rem(C), N1.rem(C)), (D0.rem(C), zero), delta, c)
 
 
-def vanishes_on_branch(spec: Spectrum, g: sp.Expr, rc: Algebraic, branch: int) -> bool:
-    """Exact: the polynomial g(r, λ) vanishes at r = rc on the real branch ``branch``
-    (the engine's gcd test in Q(rc)[λ]); False when it cannot be proven."""
+def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:
+    """Exact: the polynomial g(r, λ) (an expression or an element of the engine's ring)
+    vanishes at r = rc on the real branch ``branch`` (the engine's gcd test in
+    Q(rc)[λ]); False when it cannot be proven."""
     try:
-        return spec.vanishes_at(g.as_expr() if hasattr(g, "as_expr") else g, rc, branch)
+        return spec.vanishes_at(g, rc, branch)
     except ArithmeticError:
         return False
 
@@ -205,7 +207,7 @@ class Analysis:
 
     def __init__(self, cand: Candidate, lo=0, hi=1):
         self.cand, self.spec, self.lo, self.hi = cand, cand.spectrum, lo, hi
-        self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd, cand.cp)}
+        self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd, self.spec.ring_cp)}
         self.tables = {}
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
@@ -230,7 +232,7 @@ class Analysis:
             return None
         key = (req.name, fname if req.has_x else "", repr(hull))
         if key not in self.tables:
-            self.tables[key] = self.spec.sign_table(condition(req, self.spec.cp,
+            self.tables[key] = self.spec.sign_table(condition(req, self.spec.ring_cp,
                                                                self.fps[fname] if req.has_x else None), *hull)
         return self.tables[key]
 
@@ -297,7 +299,7 @@ class Analysis:
             # g = N/D without √Δ: N = 0 (g = 0) or D = 0 (g undefined: a collision time or
             # the normalisation q_1(0) = -1 breaks down) both defeat a strict inequality;
             # N = D = 0 stays undecided.
-            cond = condition(req, self.spec.cp, x_value=p.x_value) if req.has_x else condition(req, self.spec.cp)
+            cond = condition(req, self.spec.ring_cp, x_value=p.x_value) if req.has_x else condition(req, self.spec.ring_cp)
             zero_n = vanishes_on_branch(self.spec, cond.N[0], rc, k)
             zero_d = vanishes_on_branch(self.spec, cond.D[0], rc, k)
             if zero_n != zero_d:
@@ -305,7 +307,7 @@ class Analysis:
             # 0/0: another representation of the same function, with a denominator not vanishing there
             for G in req.other:
                 alt = Requirement(req.name, G, req.sign)
-                cond = condition(alt, self.spec.cp, x_value=p.x_value) if alt.has_x else condition(alt, self.spec.cp)
+                cond = condition(alt, self.spec.ring_cp, x_value=p.x_value) if alt.has_x else condition(alt, self.spec.ring_cp)
                 if vanishes_on_branch(self.spec, cond.D[0], rc, k):
                     continue
                 if vanishes_on_branch(self.spec, cond.N[0], rc, k):
@@ -318,7 +320,7 @@ class Analysis:
         return p, "undecided", req.name
 
     def _sign_with_x(self, req, rc, k, xv):
-        sg = self.spec.sign_at_point(condition(req, self.spec.cp, x_value=xv), rc)
+        sg = self.spec.sign_at_point(condition(req, self.spec.ring_cp, x_value=xv), rc)
         return "?" if sg is None else (sg[k] if k < len(sg) else "missing")
 def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=()) -> tuple[list[Requirement], list]:
     """The candidate of ``word`` realises its first m collisions, strictly, iff
