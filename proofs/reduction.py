@@ -22,7 +22,7 @@ import flint
 import sympy as sp
 
 from certify.algebra import trig as T
-from certify.algebra import precision, r, show
+from certify.algebra import precision, r, show, statements
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS
@@ -439,20 +439,22 @@ def reduction_never_stops(reduction_scan, section4_data, reduction, realised):
     q'_j = −r w_j > 0 (M3): the new state lies in the open face with sin φ' > 0, so
     the map is defined again unless cos φ' = 0, a corner.  On the dynamics: every
     exact particle run's word is a prefix of the reduction's word."""
+    claim, extent = statements.count(reduction), statements.extent(realised)     # read whole; unread text fails
     bad = next_state_lemma()
     checks = [Check("the tangential velocity w = |n|² e_i − n_i n: w ⊥ n, w ⊥ p, w_i = n_j² + n_k² > 0, "
                     "w_m = −n_i n_m: exactly one other gap closes and the next state lies in the open face",
                     not bad, bad or ["all identities hold for the three contacts"])]
     lengths = [len(o.word) for o in reduction_scan]
     unbroken = all(k == SCAN_LENGTH for k in lengths)
+    # infinitely many: no orbit stops at a corner; finitely many: every orbit does
+    reached = unbroken if claim.infinite else all(k < SCAN_LENGTH for k in lengths)
     checks.append(Check(f"{len(lengths)} exact orbits from random planes have {reduction}: "
-                        f"{'no' if unbroken else 'a'} corner in {sum(lengths)} collisions",
-                        unbroken if reduction.startswith("infinitely") else not unbroken,
+                        f"{'no' if unbroken else 'a'} corner in {sum(lengths)} collisions", reached,
                         [f"shortest orbit: {min(lengths)} of {SCAN_LENGTH} collisions"]))
     runs = [(run, d) for d in section4_data for run in d.runs]
     prefix = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)
     separated = sum(run.stop == "free" for run, d in runs)
-    holds = {"a prefix": prefix == len(runs), "the whole": prefix == len(runs) and separated == 0}[realised]
+    holds = prefix == len(runs) and (extent == "prefix" or separated == 0)
     checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence", holds,
                         [f"{prefix} of {len(runs)} exact runs realise a prefix of the reduction's word "
                          f"({N_REDUCTION} collisions); {separated} of them end because the particles separate, "

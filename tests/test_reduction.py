@@ -53,6 +53,39 @@ def test_every_certificate_of_this_part_is_mutated():
     assert ours == set(MUTATIONS) == set(EXPECTED)
 
 
+def shows(o, text):
+    """The altered text is in a failing printed check (its statement, or its evidence when
+    the text could not be read and the certificate stopped)."""
+    return any(not c.holds and (text in c.statement or any(text in e for e in c.evidence)) for c in o.printed)
+
+
+# the wording of S11's printed phrases, altered so that they are false: FAIL, and the
+# altered text in a failing printed check
+WORDING = [("S11", "reduction", "infinitely", "finitely"), ("S11", "realised", "a prefix", "the whole")]
+
+
+@pytest.mark.parametrize("id,name,old,new", WORDING)
+def test_altered_wording_fails_and_shows_the_text(id, name, old, new):
+    over = altered(id, name, old, new)
+    o = outcome(id, **over)
+    assert o.status == FAIL
+    assert shows(o, over[name]), [(c.statement, c.holds) for c in o.printed]
+
+
+@pytest.mark.parametrize("overrides", [{"reduction": "infinitely many orbits"}, {"reduction": "many collisions"},
+                                       {"realised": "a part"}])
+def test_s11_unread_wording_fails_with_the_reason(overrides):
+    o = outcome("S11", **overrides)
+    (text,) = overrides.values()
+    assert o.status == FAIL
+    assert any(text in e and "cannot read" in e for c in o.printed if not c.holds for e in c.evidence)
+
+
+def test_s11_reads_its_phrases_whole():
+    """'the beginning' says what 'a prefix' says (the paper's words, l. 873)."""
+    assert outcome("S11", realised="the beginning").status == PASS
+
+
 def test_s8_erratum_is_the_c_formula():
     out = outcome("S8.2")
     failing = [c.statement for c in out.printed if not c.holds]
