@@ -304,10 +304,17 @@ PRINTED_S9 = dict(aca="c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ a", cac="c_k = c, c_
 
 
 def implication(text: str) -> tuple[str, str]:
-    """"c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ a" as (the pair "ac", the excluded letter "a")."""
-    given, excluded = text.split("⇒")
-    pair = "".join(part.split("=")[1].strip() for part in given.split(","))
-    return pair, excluded.split("≠")[1].strip()
+    """"c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ a" as (the pair "ac", the excluded letter "a"),
+    read whole (statements.word_rule): a rule of another shape (other offsets, = for ≠,
+    more premises) is not what this certificate counts, and is a StatementError."""
+    rule = statements.word_rule(text)
+    premises, conclusions = rule.premises, rule.conclusions
+    if [(o, eq) for o, _, eq in premises] != [(0, True), (1, True)] or \
+            [(o, eq) for o, _, eq in conclusions] != [(2, False)]:
+        raise statements.StatementError(f"cannot evaluate {text!r}: S9.2 counts the rules c_k = x, c_{{k+1}} = y "
+                                        "⇒ c_{k+2} ≠ z")
+    (_, x, _), (_, y, _) = premises
+    return x + y, conclusions[0][1]
 
 
 @certificate("S9.2", "l. 997-1035",
@@ -337,8 +344,13 @@ PRINTED_S10 = dict(window="c_k = b ⇒ c_{k+2} = b or c_{k+3} = b", blocks="ab, 
 
 
 def offsets(text: str) -> set[int]:
-    """"c_k = b ⇒ c_{k+2} = b or c_{k+3} = b" as {2, 3}."""
-    return {int(part.split("k+")[1].split("}")[0]) for part in text.split("⇒")[1].split(" or ")}
+    """"c_k = b ⇒ c_{k+2} = b or c_{k+3} = b" as {2, 3}, read whole (statements.word_rule):
+    a rule of another shape (another letter, ≠, more premises) is not what this
+    certificate evaluates, and is a StatementError."""
+    rule = statements.word_rule(text)
+    if rule.premises != ((0, "b", True),) or any(c[1:] != ("b", True) or c[0] == 0 for c in rule.conclusions):
+        raise statements.StatementError(f"cannot evaluate {text!r}: S10 evaluates rules c_k = b ⇒ c_{{k+m}} = b or …")
+    return {c[0] for c in rule.conclusions}
 
 
 def admissible(n: int) -> list[str]:

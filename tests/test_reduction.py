@@ -61,7 +61,11 @@ def shows(o, text):
 
 # the wording of S11's printed phrases, altered so that they are false: FAIL, and the
 # altered text in a failing printed check
-WORDING = [("S11", "reduction", "infinitely", "finitely"), ("S11", "realised", "a prefix", "the whole")]
+WORDING = [("S11", "reduction", "infinitely", "finitely"), ("S11", "realised", "a prefix", "the whole"),
+           ("S9.2", "aca", "c_{k+2}", "c_{k+3}"),           # false (acba… occurs); the index was not read
+           ("S9.2", "cac", "≠", "="),
+           ("S10", "window", "c_{k+3} = b", "c_{k+3} = a"),   # false; the letters were not read
+           ("S10", "window", "c_k = b", "c_k = a")]
 
 
 @pytest.mark.parametrize("id,name,old,new", WORDING)
@@ -79,6 +83,10 @@ def test_s11_unread_wording_fails_with_the_reason(overrides):
     (text,) = overrides.values()
     assert o.status == FAIL
     assert any(text in e and "cannot read" in e for c in o.printed if not c.holds for e in c.evidence)
+
+
+def test_every_certificate_reading_a_condition_has_a_wording_test():
+    assert {id for id, *_ in WORDING} == {"S9.2", "S10", "S11"}
 
 
 def test_s11_reads_its_phrases_whole():
