@@ -321,7 +321,9 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
               "one at (7-2√10)/3)", three and T.critical[0] == rs, ["number of real eigenvalues and sign of λ per cell:\n\n"
                                                                      + T.markdown()]),
         Check("the upper branch exists on all of ]0,1[", all(len(c.branches) >= 1 for c in T.cells)
-              and all(p is not None and len(p) >= 1 for p in T.points)),
+              and all(p is not None and len(p) >= 1 for p in T.points),
+              ["true of every real cubic (odd degree): the check is that the table isolates it in every cell and at "
+               "every critical value"]),
         Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
                                                                              f"r* is {rs.describe()}"]),
         Check(f"all three eigenvalues: {positive}", all_three,
@@ -770,28 +772,31 @@ def mobius_lemmas() -> list[str]:
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED,
                           upper="|q|>1", lower="|q|<1", stable_when="|q|<1"))
 def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_when):
-    """q = (cx₊+d)/(cx₋+d) = (a+d+√Δ)/(a+d-√Δ): sign(|q| - 1) = sign(a+d), and
-    f'(x₊) = 1/q, so x₊ is stable iff |q| > 1 (:func:`mobius_lemmas`).  The sign of a+d
-    per branch is certified; each printed condition on |q| is read and evaluated on it,
+    """q = (cx₊+d)/(cx₋+d) = (a+d+√Δ)/(a+d-√Δ): where Δ > 0, sign(|q| - 1) = sign(a+d),
+    and f'(x₊) = 1/q, so x₊ is stable iff |q| > 1 (:func:`mobius_lemmas`).  The signs of Δ
+    and a+d per branch are certified; each printed condition on |q| is read and evaluated on them,
     the printed criterion for every sign of |q| - 1.  The corrected statement is the
     printed one with the stated corrections (the three relations reversed)."""
     rr1 = r1_of(r1)
-    A, D = parse(a), parse(d)
-    apd = table(spectrum, "a+d", A + D, 0, rr1)
+    fp = fixed_point(a, b, c, d)
+    apd = table(spectrum, "a+d", fp.a + fp.d, 0, rr1)
+    real = table(spectrum, "Δ", fp.delta, 0, 1)          # q real and √Δ > 0 where Δ > 0 (shared with T17)
     lam_gap = spectrum.sign_table(Condition.of("λ", lam), 0, rr1)
     excess = sp.Abs(Q_MOBIUS) - 1                 # its sign is that of a+d
     lemmas = mobius_lemmas()
     names = {"q": Q_MOBIUS}
 
     def on_branch(text, k) -> bool:
-        return statements.relation(text, names).holds_on(excess, apd.signs(k))
+        return real.holds(k, 1, 0, rr1) and statements.relation(text, names).holds_on(excess, apd.signs(k))
 
     def criterion(text) -> bool:                 # stable iff sign(|q| - 1) = +1
         rel = statements.relation(text, names)
         return all(rel.holds({excess: s}) == (s == 1) for s in (-1, 0, 1))
     certified = {k: sorted({{1: "|q| > 1", -1: "|q| < 1", 0: "|q| = 1"}.get(sg, str(sg)) for sg in apd.signs(k)})
                  for k in (UPPER, LOWER)}
-    ev = ["a+d on the branches:\n\n" + apd.markdown()]
+    ev = ["a+d on the branches:\n\n" + apd.markdown(),
+          f"Δ = (a-d)² + 4bc > 0 on the upper branch: {real.holds(UPPER, 1, 0, rr1)}, on the lower branch: "
+          f"{real.holds(LOWER, 1, 0, rr1)} (r < 5-2√6), so q is real and √Δ > 0"]
     printed = [
         Check(f"upper branch, r < 5-2√6: {upper}", on_branch(upper, UPPER), [f"certified: {certified[UPPER]}"] + ev),
         Check(f"lower branch, r < 5-2√6: {lower}", on_branch(lower, LOWER), [f"certified: {certified[LOWER]}"]),
