@@ -45,6 +45,7 @@ T_C_AB = "sin(θ)/(-cos(θ)*cos(φ) - λ*sin(θ))\n= 1/(-cos(φ)/tan(θ) - λ)" 
 T_C_MINUS_T_B = "(cos(φ)*tan(θ) + cos(φ)/tan(θ))/((-cos(φ)/tan(θ) - λ)*(tan(θ)*cos(φ) - λ))"  # l. 625
 ORDER = "t_c is smaller than t_b"      # l. 628: "t_c is positive but then smaller than t_b"
 ORDER_CORRECTION = ("smaller", "larger")
+T_C, T_B = sp.symbols("t_c t_b")       # what the printed order is about
 T_C_BC = "cos(θ)/(sin(θ)*cos(φ) - λ*cos(θ))\n= 1/(tan(θ)*cos(φ) - λ)"             # l. 787
 T_A_BC = "sin(θ)/(-cos(θ)*cos(φ) - λ*sin(θ))\n= 1/(-cos(φ)/tan(θ) - λ)"           # l. 787
 SMALLEST_BC = "cos(φ) > 0"             # l. 789: "t_c is always the smallest positive ... iff cos φ > 0"
@@ -394,14 +395,13 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
                    "both positive ⇒ t_c < t_a; cos φ < 0: both positive ⇒ t_a < t_c, which happens; cos φ = 0: "
                    "t_c = t_a)", proofs + [T.Result(read == first, [f"the printed condition for cos φ > 0, < 0, = 0: "
                                                                      f"{[read[s] for s in first]}"])])]
-    dt = sp.Symbol("t_c") - sp.Symbol("t_b")
-    known = {dt: 1} if R["order+"].holds else {}                     # certified: t_c - t_b > 0
+    known = {T_C - T_B: 1} if R["order+"].holds else {}              # certified: t_c - t_b > 0
 
     def order_check(label, text):
         if text is None:
             return Check(f"l. 628 corrected: the stated correction {' → '.join(ORDER_CORRECTION)} applies to the "
                          f"printed `{order}`", False)
-        holds = bool(known) and statements.relation(text, {"t_c": sp.Symbol("t_c"), "t_b": sp.Symbol("t_b")}).holds(known)
+        holds = bool(known) and statements.relation(text, {"t_c": T_C, "t_b": T_B}).holds(known)
         return Check(f"{label}: cos φ > 0, t_b > 0, t_c > 0 ⇒ {text}", holds and ok_pt, R["order+"].evidence + (
             [] if holds else [f"false whenever its hypotheses hold, and they do hold: {pt_ev}"]))
     as_printed = order_check("l. 628", order)
