@@ -504,10 +504,9 @@ def sign_of_c(c, below, above):
                half(below),
                half(above, [f"sign of c/λ on ]{_end(a)}, {_end(b_)}[: {'+' if sg > 0 else '−'}" for a, b_, sg in ivs])]
     fixed = statements.corrected(above, *T16_CORRECTION)
-    corrected = [printed[0], printed[1],
-                 half(fixed) if fixed else Check(f"the stated correction {' → '.join(T16_CORRECTION)} applies to "
-                                                 f"the printed `{above}`", False)]
-    return conclude(printed, corrected)
+    correction = half(fixed) if fixed else Check(f"the stated correction {' → '.join(T16_CORRECTION)} applies to "
+                                                 f"the printed `{above}`", False)
+    return conclude(printed, [correction, printed[0], printed[1]])     # the correction first, next to the wrong half
 
 
 # ---------------------------------------------------------------- T17-T19: fixed points of f
@@ -806,13 +805,13 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_
              for k, text in (("upper", upper), ("lower", lower), ("stable_when", stable_when))}
     not_applied = [Check(f"the stated correction {' → '.join(T24_CORRECTIONS[k])} applies to the printed `{text}`", False)
                    for k, text in (("upper", upper), ("lower", lower), ("stable_when", stable_when)) if fixed[k] is None]
-    corrected = not_applied or [
-        Check(f"the fixed point x₊ is stable iff {fixed['stable_when']}", criterion(fixed["stable_when"]), lemmas),
+    corrected = not_applied or [                 # in the order of the printed checks, for the errata table
         Check(f"upper branch, r < 5-2√6: {fixed['upper']} (a+d < 0), so |f'(x₊)| > 1: x₊ is repelling (unstable)",
               on_branch(fixed["upper"], UPPER) and apd.holds(UPPER, -1)),
         Check(f"lower branch, r < 5-2√6: {fixed['lower']} (a+d > 0), so |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: "
               "λ is not dominant (unstable in the velocities)", on_branch(fixed["lower"], LOWER) and apd.holds(LOWER, 1)
               and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)),
+        Check(f"the fixed point x₊ is stable iff {fixed['stable_when']}", criterion(fixed["stable_when"]), lemmas),
     ]
     return conclude(printed, corrected, note="The theorem's conclusion (instability on both branches) stands; "
                     "the printed values of |q| and the printed stability criterion are both reversed.")
