@@ -9,8 +9,8 @@ import flint
 import sympy as sp
 
 from certify.algebra import (Algebraic, Condition, FixedPoint, Spectrum, count_roots, discriminant_lambda,
-    eliminate, flint_real_roots, lam, parse, primitive, r, show, show_factored_int, sign_intervals, to_field,
-    to_fmpq_poly, to_fmpz_poly, u, v, x)
+    eliminate, flint_real_roots, lam, parse, primitive, r, show, show_factored_int, sign_intervals, statements,
+    to_field, to_fmpq_poly, to_fmpz_poly, u, v, x)
 from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characteristic_polynomial, reduce_mod,
     velocities, word_matrix)
 from certify.patterns import Analysis, fmt, prefix_requirements
@@ -61,6 +61,11 @@ P1_T5_PRINTED = ("λ*(r^2 - 1)^2*(r^2 - 10*r + 1)/(-64*λ^2 + 4*(-r^5 + 9*r^4 - 
                  " - 66*r^6 + 652*r^5 - 594*r^4 + 24*r^3 - 253*r^2 + 114*r - 9)*λ + (-64*r^9 + 512*r^8"
                  " + 128*r^7 + 512*r^6 - 64*r^5))/(1024*λ^2 + (64*r^5 - 576*r^4 + 384*r^3 - 384*r^2"
                  " + 576*r - 64)*λ - 1024*r^5)")
+
+
+# the quantities the printed conditions are about (statements.relation reads them by these names)
+DET, DELTA, C_SIGN, Q_VELOCITY, DOUBLE = sp.symbols("det_M Δ_cp c q λ₀")
+Q_MOBIUS = sp.Symbol("q", real=True)          # the paper's q = (cx₊+d)/(cx₋+d) (l. 496), real where Δ > 0
 
 
 # ---------------------------------------------------------------- shared quantities
@@ -162,19 +167,25 @@ def characteristic_polynomial_of_M(cp, cp_text):
 
 
 @certificate("T3", "l. 340", "det M = r^6 > 0, hence a positive real eigenvalue for every r in ]0,1[.",
-             needs=["M", "cp", "spectrum"], printed=dict(det_text="r^6"))
-def determinant_and_positive_eigenvalue(M, cp, spectrum, det_text):
-    """det M as printed; cp(0) = -det M < 0 and cp(λ) → +∞, so a root λ > 0;
-    certified also on the branch table: the largest eigenvalue is > 0 on ]0,1[."""
+             needs=["M", "spectrum"], printed=dict(det_text="r^6", det_sign="positive"))
+def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
+    """det M as printed, and its printed sign ("the determinant of M is r^6, which is
+    positive") read and checked on the exact sign intervals of det M over ]0,1[; the
+    positive eigenvalue certified on the branch table: the largest eigenvalue is > 0
+    on ]0,1[.  The paper's argument, cp(0) = -det M < 0 and cp(λ) → +∞, rests on
+    cp(0) = -det M, which holds for every 3×3 matrix: evidence, not a check."""
     det = sp.factor(M.det())
     T = table(spectrum, "λ", lam, 0, 1)
+    sign = statements.statement(det_sign, {"det M": DET}, subject="det M")
+    signs = sign.range.signs(sign_intervals(to_fmpq_poly(det), 0, 1))
     return conclude([
-        Check("det M = r^6", sp.expand(det - parse(det_text)) == 0, [f"det M = `{show(det)}`"]),
-        Check("cp(0; r) = -det M", sp.expand(cp.subs(lam, 0) + M.det()) == 0),
-        Check("det M > 0 on ]0,1[", all(sg > 0 for _a, _b, sg in sign_intervals(to_fmpz_poly(parse(det_text)), 0, 1))),
+        Check(f"det M = {det_text}", sp.expand(det - parse(det_text)) == 0, [f"det M = `{show(det)}`"]),
+        Check(f"det M is {det_sign} on ]0,1[", sign.relation.holds_on(DET, signs),
+              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"]),
         Check("the largest real eigenvalue is positive on all of ]0,1[", T.holds(UPPER, 1),
               ["sign of λ per branch:\n\n" + T.markdown()]),
-    ])
+    ], evidence=["the paper's argument (l. 340): cp(0) = det(-M) = -det M < 0 and cp(λ) → +∞ as λ → +∞, so cp has a "
+                 "root λ > 0; cp(0) = -det M holds for every 3×3 matrix, so it is no check"])
 
 
 def cardano(cp):
@@ -188,22 +199,26 @@ def cardano(cp):
 
 @certificate("T4", "l. 340-349", "Δ_cp = -(1/1811939328)(r-1)^4(r+1)^6(3r^2-14r+3)^2 P0(r), and three real "
              "roots iff Δ_cp < 0.", needs=["cp"], printed=dict(delta_text=DELTA_PRINTED, P0_text=P0_PRINTED,
-                                                             three_real_when="<"))
+                                                             three_real_when="Δ_cp < 0"))
 def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     """The printed Δ_cp is -Disc_λ(cp)/108 = (q/2)² + (p/3)³ (Cardano's form for the
     depressed cubic), not the discriminant itself; with that normalisation, three
-    distinct real eigenvalues iff Δ_cp < 0 (Disc > 0)."""
+    distinct real eigenvalues iff Δ_cp < 0 (Disc > 0).  The printed condition is read
+    and its truth, for each sign of Δ_cp, compared with that of Disc > 0."""
     delta = parse(delta_text.replace("P0", f"({P0_text})"))
     disc = sp.discriminant(cp, lam)
     ratio = sp.cancel(disc / delta) if delta != 0 else None
     card = cardano(cp)
-    sign_ok = {"<": ratio is not None and ratio.is_negative, ">": ratio is not None and ratio.is_positive}
+    constant = ratio is not None and ratio.is_number and ratio != 0
+    condition = statements.relation(three_real_when, {"Δ_cp": DELTA})
+    three_real = {s: constant and int(sp.sign(ratio)) * s > 0 for s in (-1, 0, 1)}   # Disc = ratio·Δ_cp > 0
     return conclude([
-        Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", ratio is not None and ratio.is_number and ratio != 0,
-              [f"Disc_λ(cp) / Δ_cp = {ratio}"]),
+        Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"]),
         Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0),
-        Check(f"three distinct real roots iff Δ_cp {three_real_when} 0 (Disc > 0 iff three distinct real roots)",
-              sign_ok.get(three_real_when, False)),
+        Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
+              constant and condition.truth(DELTA) == three_real,
+              [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
+               f"{[three_real[s] for s in (-1, 0, 1)]}, the printed condition {[condition.holds({DELTA: s}) for s in (-1, 0, 1)]}"]),
         Check("flint's Disc_λ(cp) has the same factors", same_up_to_constant(
             discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))),
     ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "
@@ -238,21 +253,25 @@ def _end(a: Algebraic) -> str:
 
 @certificate("T6", "l. 350", "Δ_cp < 0 for r < r*, Δ_cp ≥ 0 for r > r*, with equality only at (7-2√10)/3.",
              printed=dict(delta_text=DELTA_PRINTED, P0_text=P0_PRINTED, r0=(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
-                          below="<", above=">="))
+                          below="Δ_cp < 0 for r < r*", above="Δ_cp ≥ 0 for r > r*"))
 def sign_of_delta(delta_text, P0_text, r0, below, above):
-    """Exact sign intervals of the printed Δ_cp (a polynomial in r) on ]0,1[."""
+    """Exact sign intervals of the printed Δ_cp (a polynomial in r) on ]0,1[; each
+    printed condition read (a relation on Δ_cp, a range of r) and evaluated on the
+    signs Δ_cp takes over that range, its roots there included."""
     delta_expr = parse(delta_text.replace("P0", f"({P0_text})"))
     delta = flint.fmpq_poly(to_fmpq_poly(delta_expr))
     ivs = sign_intervals(delta, 0, 1)
     rs, rz = unique_root(P0_text), Algebraic.surd(*r0)
-    want = {"<": {-1}, ">": {1}, ">=": {1, 0}, "<=": {-1, 0}}
-    below_signs = {sg for a, b, sg in ivs if b <= rs}
-    above_signs = {sg for a, b, sg in ivs if a >= rs} | {0 for a, b, sg in ivs[:-1] if a >= rs}
     zeros = [b for a, b, sg in ivs[:-1]]
     evidence = [f"sign on ]{_end(a)}, {_end(b)}[: {'+' if sg > 0 else '−'}" for a, b, sg in ivs]
-    return conclude([
-        Check(f"Δ_cp {below} 0 on ]0, r*[", below_signs <= want.get(below, set()) and below_signs != set(), evidence),
-        Check(f"Δ_cp {above} 0 on ]r*, 1[", above_signs <= want.get(above, set())),
+    checks = []
+    for text in (below, above):
+        st = statements.statement(text, {"Δ_cp": DELTA, "r*": rs})
+        signs = st.range.signs(ivs)
+        checks.append(Check(text, st.relation.holds_on(DELTA, signs),
+                            [f"signs of Δ_cp for {st.range}: {sign_word(signs)}"] + evidence))
+        evidence = []
+    return conclude(checks + [
         Check("in ]0,1[, Δ_cp vanishes only at r* and (7-2√10)/3", len(zeros) == 2 and zeros[0] == rs and zeros[1] == rz,
               [f"zeros: {', '.join(z.describe() for z in zeros)}"]),
     ])
@@ -261,8 +280,8 @@ def sign_of_delta(delta_text, P0_text, r0, below, above):
 @certificate("T7", "l. 349", "3r^2-14r+3 has the root (7-2√10)/3 ≈ 0.22515 in ]0,1[, and the repeated "
              "eigenvalue there is negative.", needs=["spectrum"],
              printed=dict(quadratic="3*r^2 - 14*r + 3", r0=(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
-                          digits="0.22515", repeated_sign=-1))
-def repeated_eigenvalue(spectrum, quadratic, r0, digits, repeated_sign):
+                          digits="0.22515", repeated="negative"))
+def repeated_eigenvalue(spectrum, quadratic, r0, digits, repeated):
     """At r0 the gcd of cp and ∂cp/∂λ, computed exactly in Q(r0)[λ], is linear: its
     root is the double eigenvalue, whose sign is certified by ball arithmetic."""
     roots, nf = root_in_unit_interval(quadratic)
@@ -273,24 +292,28 @@ def repeated_eigenvalue(spectrum, quadratic, r0, digits, repeated_sign):
         checks.append(digits_check("(7-2√10)/3", roots[0], digits))
         signs = spectrum.sign_at_point(Condition.of("λ", lam), roots[0])
         double = signs is not None and len(signs) == 3 and signs[1] == signs[2]
-        checks.append(Check("there is a double eigenvalue at r0 with the printed sign",
-                            double and signs[1] == repeated_sign,
+        sign = statements.relation(repeated, {"λ₀": DOUBLE}, subject="λ₀")
+        checks.append(Check(f"there is a double eigenvalue λ₀ at r0, and it is {repeated}",
+                            double and sign.holds_on(DOUBLE, {signs[1]}),
                             [f"signs of the eigenvalues at r0, largest first (the double one listed twice): {signs}"]))
     return conclude(checks)
 
 
 @certificate("T8", "l. 336, 350, 491", "Three real eigenvalues exactly below r*; the upper branch exists on all of "
              "]0,1[; the two others are smaller in absolute value; all three are positive up to 5-2√6.",
-             needs=["spectrum"], printed=dict(P0_text=P0_PRINTED, r1=R1_PRINTED, positive_up_to="r1"))
-def branches_of_the_spectrum(spectrum, P0_text, r1, positive_up_to):
+             needs=["spectrum"], printed=dict(P0_text=P0_PRINTED, r1=R1_PRINTED, positive="λ > 0 for 0 < r < 5-2√6"))
+def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
     """Number of real eigenvalues per cell (Sturm at one sample per cell, constant
-    between the zeros of Disc_λ(cp)); the sign of λ on each branch."""
+    between the zeros of Disc_λ(cp)); the sign of λ on each branch, against the
+    printed condition (l. 491: "all eigenvalues up to r = 5-2√6 are positive") read
+    whole, its range included."""
     from certify.run import spectrum_figures
     rs, rr1 = unique_root(P0_text), r1_of(r1)
     T = table(spectrum, "λ", lam, 0, 1)
     three = all((len(c.branches) == 3) == (c.hi <= rs) for c in T.cells)
-    bound = rr1 if positive_up_to == "r1" else rs
-    positive = all(T.holds(k, 1, 0, bound) for k in range(3))
+    st = statements.statement(positive, {"λ": lam})
+    signs = [T.signs(k, st.range.lo, st.range.hi) for k in range(3)]
+    all_three = all(st.relation.holds_on(lam, sg) for sg in signs)
     pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
     figs = spectrum_figures(spectrum, T, marks={"r*": rs, "5-2√6": rr1, "(7-2√10)/3": unique_root("3*r^2 - 14*r + 3")})
     return conclude([
@@ -298,10 +321,13 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive_up_to):
               "one at (7-2√10)/3)", three and T.critical[0] == rs, ["number of real eigenvalues and sign of λ per cell:\n\n"
                                                                      + T.markdown()]),
         Check("the upper branch exists on all of ]0,1[", all(len(c.branches) >= 1 for c in T.cells)
-              and all(p is not None and len(p) >= 1 for p in T.points)),
+              and all(p is not None and len(p) >= 1 for p in T.points),
+              ["true of every real cubic (odd degree): the check is that the table isolates it in every cell and at "
+               "every critical value"]),
         Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
                                                                              f"r* is {rs.describe()}"]),
-        Check("all three eigenvalues are positive on ]0, 5-2√6[", positive),
+        Check(f"all three eigenvalues: {positive}", all_three,
+              [f"{BRANCH[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)]),
         Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
               "(all positive there, ordered)", pos_rstar),
     ], figures=figs)
@@ -328,7 +354,9 @@ def eigenvector_components(M, U, V):
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED))
 def position_map_of_ababcb(candidate, a, b, c, d):
     """The computed (a, b, c, d) and the printed ones are proportional modulo cp:
-    every 2×2 minor of the two quadruples reduces to zero."""
+    every 2×2 minor of the two quadruples reduces to zero.  That the collisions are
+    a, b, a, b, c, b and p_2(t6) = 0 holds by construction (the engine applies the
+    word, and t6 is the time when p_2 vanishes): evidence, not checks."""
     steps, abcd, cp = candidate.steps, candidate.abcd, candidate.cp
     P = [to_field(parse(e)) for e in (a, b, c, d)]
     comp = [to_field(e) for e in abcd]
@@ -337,14 +365,14 @@ def position_map_of_ababcb(candidate, a, b, c, d):
               for i in range(4) for j in range(i + 1, 4)}
     word = "".join(s.letter for s in steps)
     return conclude([
-        Check("the collisions applied are a, b, a, b, c, b", word == WORD),
-        Check("p_2(t6) = 0 and p_1(t6) ≠ 0", steps[-1].position(1) == 0 and steps[-1].position(0) != 0),
+        Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", steps[-1].position(0) != 0),
         Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
                f"printed c / computed c = {sp.cancel(P[2].as_expr() / comp[2].as_expr())}"] +
               [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()]),
-    ])
+    ], evidence=[f"by construction: the engine applies the collisions {', '.join(word)} (q(t_k) = K q(t_(k-1))) and "
+                 "defines t6 by p_2(t6) = 0, so p(t6) = (p_1(t6), 0, p_3(t6)) = p_1(t6)(1, 0, f(x))"])
 
 
 # ---------------------------------------------------------------- T11-T16: a-d, b, c
@@ -415,7 +443,7 @@ def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
     from certify.run import sign_chart
     rr1, rr2 = r1_of(r1), unique_root(P1_text)
     T = table(spectrum, "a-d", parse(amd), 0, 1)
-    k1, k2 = {v: k for k, v in BRANCH.items()}.get(at_r1, -1), {v: k for k, v in BRANCH.items()}.get(at_r2, -1)
+    k1, k2 = statements.branch(at_r1), statements.branch(at_r2)
     fig = sign_chart(spectrum, T, "sign_a_minus_d.png", "certified sign of a − d on the branches of M",
                      marks={"5-2√6": rr1, "r2": rr2})
     return conclude([
@@ -448,28 +476,37 @@ def sign_of_b(cp, spectrum, b, quartic, r1):
                                                 "on the lower branch b keeps its sign there.")
 
 
+T16_CORRECTION = ("c > 0", "c < 0")          # in the second half, l. 433
+
+
 @certificate("T16", "l. 428-434", "Sign of c equals the sign of r^2-10r+1 on λ>0: c>0 for r<5-2√6 and c>0 for "
              "r>5-2√6, as printed in both halves of the sentence.",
-             printed=dict(c=C_PRINTED, r1=R1_PRINTED, below="+", above="+"))
-def sign_of_c(c, r1, below, above):
-    """c/λ is a polynomial in r: its exact sign intervals on ]0,1[."""
+             printed=dict(c=C_PRINTED, below="c > 0 for r < 5-2√6", above="c > 0 for r > 5-2√6"))
+def sign_of_c(c, below, above):
+    """c/λ is a polynomial in r: its exact sign intervals on ]0,1[, and sign c = sign c/λ
+    as λ > 0 (l. 432).  Each half of the printed sentence is read (a relation on c, a
+    range of r) and evaluated on the signs c takes over its range.  The corrected
+    statement is the printed one with the stated correction c > 0 → c < 0 in its second
+    half, the first half as printed."""
     cr = sp.cancel(parse(c) / lam)
     quad = parse("r^2 - 10*r + 1")
-    rr1 = r1_of(r1)
     ratio = sp.cancel(cr / quad)
     ivs = sign_intervals(to_fmpq_poly(sp.expand(cr)), 0, 1)
-    s_below = {sg for a, b_, sg in ivs if b_ <= rr1}
-    s_above = {sg for a, b_, sg in ivs if a >= rr1}
-    want = {"+": {1}, "-": {-1}}
     ratio_pos = not ratio.has(lam) and all(sg > 0 for _a, _b, sg in sign_intervals(to_fmpq_poly(sp.expand(ratio)), 0, 1))
+
+    def half(text, evidence=()):
+        st = statements.statement(text, {"c": C_SIGN})
+        signs = st.range.signs(ivs)
+        return Check(text, st.relation.holds_on(C_SIGN, signs), [f"signs of c for {st.range}: {sign_word(signs)}",
+                                                                 *evidence])
     printed = [Check("c/λ = (r^2-10r+1)·(positive on ]0,1[), so sign c = sign(r^2-10r+1) when λ > 0", ratio_pos,
                      [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"]),
-               Check(f"c {'>' if below == '+' else '<'} 0 for r < 5-2√6", s_below == want.get(below)),
-               Check(f"c {'>' if above == '+' else '<'} 0 for r > 5-2√6", s_above == want.get(above),
-                     [f"sign of c/λ on ]{_end(a)}, {_end(b_)}[: {'+' if sg > 0 else '−'}" for a, b_, sg in ivs])]
-    corrected = [printed[0], printed[1] if below == "+" else Check("c > 0 for r < 5-2√6", s_below == {1}),
-                 Check("c < 0 for 5-2√6 < r < 1", s_above == {-1})]
-    return conclude(printed, corrected)
+               half(below),
+               half(above, [f"sign of c/λ on ]{_end(a)}, {_end(b_)}[: {'+' if sg > 0 else '−'}" for a, b_, sg in ivs])]
+    fixed = statements.corrected(above, *T16_CORRECTION)
+    correction = half(fixed) if fixed else Check(f"the stated correction {' → '.join(T16_CORRECTION)} applies to "
+                                                 f"the printed `{above}`", False)
+    return conclude(printed, [correction, printed[0], printed[1]])     # the correction first, next to the wrong half
 
 
 # ---------------------------------------------------------------- T17-T19: fixed points of f
@@ -596,8 +633,9 @@ def lower_branch_fixed_points(spectrum, a, b, c, d, r1):
 # ---------------------------------------------------------------- T20-T22: feasibility
 @certificate("T20", "l. 446-448", "u = 0 forces (r^2-10r+1)(r^5-15r^4+66r^3-86r^2-35r+5) = 0; the quintic has exactly "
              "one root in ]0,1[, ≈ 0.11376; u > 0 on the upper and lower branches for r < 5-2√6.",
-             needs=["cp", "spectrum"], printed=dict(U=U_PRINTED, quintic=P3_PRINTED, digits="0.11376", r1=R1_PRINTED))
-def sign_of_u(cp, spectrum, U, quintic, digits, r1):
+             needs=["cp", "spectrum"], printed=dict(U=U_PRINTED, quintic=P3_PRINTED, digits="0.11376", r1=R1_PRINTED,
+                                                    position="larger than 5-2√6"))
+def sign_of_u(cp, spectrum, U, quintic, digits, r1, position):
     """u = 0 iff its numerator 16λ - (r^4 - 8r^3 - 2r^2 - 8r + 1) vanishes (r > 0):
     eliminate λ both ways; then the sign table of u."""
     rr1 = r1_of(r1)
@@ -613,7 +651,9 @@ def sign_of_u(cp, spectrum, U, quintic, digits, r1):
               Check("both routes agree", E.agree),
               count_check("the quintic", roots, nf, 1)]
     if roots:
-        checks += [digits_check("its root", roots[0], digits), Check("it lies above 5-2√6", roots[0] > rr1)]
+        checks += [digits_check("its root", roots[0], digits),
+                   Check(f"it is {position}", statements.relation(position, {"ρ": roots[0]}, subject="ρ").compare(),
+                         [f"its root is {roots[0].describe()}"])]
     checks.append(Check("u > 0 on the upper and lower branches for r < 5-2√6",
                         T.holds(UPPER, 1, 0, rr1) and T.holds(LOWER, 1, 0, rr1), ["sign table of u:\n\n" + T.markdown()]))
     return conclude(checks)
@@ -621,22 +661,25 @@ def sign_of_u(cp, spectrum, U, quintic, digits, r1):
 
 @certificate("T21", "l. 449-458", "The five printed velocity expressions q2(t1), q1(t2), q2(t3), q3(t4), q2(t5) "
              "equal the dynamics and are < 0 on the upper and lower branches for r < 5-2√6.", needs=["spectrum"],
-             printed=dict(velocities=VELOCITIES_PRINTED, U=U_PRINTED, V=V_PRINTED, r1=R1_PRINTED, direction="<"))
-def velocity_inequalities(spectrum, velocities, U, V, r1, direction):
+             printed=dict(velocities=VELOCITIES_PRINTED, U=U_PRINTED, V=V_PRINTED,
+                          inequality="q < 0 for 0 < r < 5-2√6"))
+def velocity_inequalities(spectrum, velocities, U, V, inequality):
     """Each expression against the velocities A q(0), BA q(0), ... for q(0) = (-1, u, v)
-    with u, v free (an identity), then its sign table with the printed u, v."""
-    rr1 = r1_of(r1)
+    with u, v free (an identity), then its sign table with the printed u, v, against
+    the printed inequality (q standing for each velocity) read with its range."""
+    st = statements.statement(inequality, {"q": Q_VELOCITY})
+    lo, hi = st.range.lo, st.range.hi
     qs = velocities_of(WORD)
-    want = {"<": -1, ">": 1}.get(direction)
     checks = []
     for name, (k, i, text) in velocities.items():
         same = sp.expand(qs[k][i] - parse(text)) == 0
         T = table(spectrum, name, parse(text).subs(printed_uv(U, V)), 0, 1)
-        ok = T.holds(UPPER, want, 0, rr1) and T.holds(LOWER, want, 0, rr1)
-        checks.append(Check(f"{name} = {text} is the dynamics and is {direction} 0 on the upper and lower branches "
-                            "for r < 5-2√6", same and ok,
-                            [f"{name}: identity {'holds' if same else 'FAILS'}; upper: "
-                             f"{sign_word(T.signs(UPPER, 0, rr1))}, lower: {sign_word(T.signs(LOWER, 0, rr1))}"]))
+        up, low = T.signs(UPPER, lo, hi), T.signs(LOWER, lo, hi)
+        ok = st.relation.holds_on(Q_VELOCITY, up) and st.relation.holds_on(Q_VELOCITY, low)
+        checks.append(Check(f"{name} = {text} is the dynamics, and {inequality} with q = {name} on the upper and "
+                            "lower branches", same and ok,
+                            [f"{name}: identity {'holds' if same else 'FAILS'}; for {st.range}, upper: "
+                             f"{sign_word(up)}, lower: {sign_word(low)}"]))
     return conclude(checks)
 
 
@@ -679,9 +722,8 @@ def distance_inequalities(candidate, p3t4, p1t5, a, b, c, d, U, V, r1):
 @certificate("T23", "l. 492-506", "a+d = 0 with cp(M) = 0 forces r^6(r-1)^6(r+1)^3(r^2-10r+1)P2(r)P3(r) = 0; P2 root "
              "≈ 0.12879, P3 root ≈ 0.11376, both above 5-2√6.", needs=["cp"],
              printed=dict(a=A_PRINTED, d=D_PRINTED, P2_text=P2_PRINTED, P3_text=P3_PRINTED, d2="0.12879",
-                          d3="0.11376", r1=R1_PRINTED, degree=30))
-def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, r1, degree):
-    rr1 = r1_of(r1)
+                          d3="0.11376", degree=30, position="above 5-2√6"))
+def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, degree, position):
     product = f"r^6*(r-1)^6*(r+1)^3*(r^2-10*r+1)*({P2_text})*({P3_text})"
     checks = eliminant_check("a+d", parse(a) + parse(d), cp, product)
     checks.append(Check(f"the polynomial has degree {degree}", to_fmpz_poly(parse(product)).degree() == degree))
@@ -690,8 +732,38 @@ def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, r1, degree):
         checks.append(count_check(name, roots, nf, 1))
         if roots:
             checks += [digits_check(f"the root of {name}", roots[0], digits),
-                       Check(f"the root of {name} lies above 5-2√6", roots[0] > rr1)]
+                       Check(f"the root of {name} lies {position}",
+                             statements.relation(position, {"ρ": roots[0]}, subject="ρ").compare())]
     return conclude(checks)
+
+
+T24_CORRECTIONS = {"upper": ("|q|>1", "|q|<1"), "lower": ("|q|<1", "|q|>1"), "stable_when": ("|q|<1", "|q|>1")}
+
+
+def mobius_lemmas() -> list[str]:
+    """The identities behind the paper's q, for every Möbius map (ax + b)/(cx + d) with
+    real fixed points x± = (a - d ± s)/(2c), s = √Δ > 0, Δ = (a-d)² + 4bc:
+    cx± + d = (a + d ± s)/2, (cx₊+d)(cx₋+d) = ad - bc, so f'(x₊) = (ad-bc)/(cx₊+d)² = 1/q;
+    and |q|² - 1 = 4(a+d)s/(a+d-s)², so sign(|q| - 1) = sign(a + d).  They hold
+    identically, whatever a, b, c, d: evidence for reading the sign of |q| - 1 and the
+    stability criterion, not checks (an identity that failed would be an error)."""
+    A, B, C, D = sp.symbols("a b c d")
+    s = sp.Symbol("s", positive=True)
+    delta = (A - D) ** 2 + 4 * B * C
+    xp, xm = (A - D + s) / (2 * C), (A - D - s) / (2 * C)
+    q = (C * xp + D) / (C * xm + D)
+
+    def zero(e):                                  # the numerator vanishes modulo s² - Δ
+        return sp.rem(sp.expand(sp.numer(sp.together(e))), s ** 2 - delta, s) == 0
+    identities = {"cx₊ + d = (a + d + s)/2": C * xp + D - (A + D + s) / 2,
+                  "(cx₊+d)(cx₋+d) = ad - bc": sp.expand((C * xp + D) * (C * xm + D)) - (A * D - B * C),
+                  "f'(x₊) = (ad-bc)/(cx₊+d)² = 1/q": (A * D - B * C) / (C * xp + D) ** 2 * q - 1,
+                  "|q|² - 1 = 4(a+d)s/(a+d-s)²": q ** 2 - 1 - 4 * (A + D) * s / (A + D - s) ** 2}
+    failed = [k for k, e in identities.items() if not zero(e)]
+    if failed:
+        raise ArithmeticError(f"Möbius identities failed: {failed}")
+    return [f"identities for every Möbius map, s = √Δ > 0: {'; '.join(identities)}; so sign(|q| - 1) = sign(a + d) "
+            "and |f'(x₊)| - 1 = (1 - |q|)/|q|: x₊ is stable (|f'(x₊)| < 1) iff |q| > 1"]
 
 
 @certificate("T24", "l. 488-509", "Upper branch: |q| > 1 (fixed point of f repelling) below 5-2√6; lower branch: "
@@ -699,37 +771,47 @@ def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, r1, degree):
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED,
                           upper="|q|>1", lower="|q|<1", stable_when="|q|<1"))
 def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_when):
-    """q = (cx₊+d)/(cx₋+d) = (a+d+√Δ)/(a+d-√Δ), so |q| > 1 iff a+d > 0 (√Δ > 0).
-    Since (cx₊+d)(cx₋+d) = ad - bc, f'(x₊) = (ad-bc)/(cx₊+d)² = 1/q: x₊ is repelling
-    iff |q| < 1.  Both facts certified: the identity exactly, the sign of a+d per branch."""
+    """q = (cx₊+d)/(cx₋+d) = (a+d+√Δ)/(a+d-√Δ): where Δ > 0, sign(|q| - 1) = sign(a+d),
+    and f'(x₊) = 1/q, so x₊ is stable iff |q| > 1 (:func:`mobius_lemmas`).  The signs of Δ
+    and a+d per branch are certified; each printed condition on |q| is read and evaluated on them,
+    the printed criterion for every sign of |q| - 1.  The corrected statement is the
+    printed one with the stated corrections (the three relations reversed)."""
     rr1 = r1_of(r1)
-    A, B, C, D = (parse(e) for e in (a, b, c, d))
     fp = fixed_point(a, b, c, d)
-    apd = table(spectrum, "a+d", A + D, 0, rr1)
+    apd = table(spectrum, "a+d", fp.a + fp.d, 0, rr1)
+    real = table(spectrum, "Δ", fp.delta, 0, 1)          # q real and √Δ > 0 where Δ > 0 (shared with T17)
     lam_gap = spectrum.sign_table(Condition.of("λ", lam), 0, rr1)
-    s = sp.Symbol("s_")
-    xp, xm = (A - D + s) / (2 * C), (A - D - s) / (2 * C)
-    product = sp.expand(sp.cancel((C * xp + D) * (C * xm + D)).subs(s ** 2, fp.delta) - (A * D - B * C))
-    q_of = {1: "|q|>1", -1: "|q|<1"}
-    up = {q_of.get(sg, "?") for sg in apd.signs(UPPER)}
-    lo = {q_of.get(sg, "?") for sg in apd.signs(LOWER)}
-    # f'(x₊) = 1/q when the identity holds: x₊ is stable iff |f'(x₊)| < 1 iff |q| > 1
-    criterion = "|q|>1" if product == 0 else "undetermined"
-    ev = ["a+d on the branches:\n\n" + apd.markdown()]
+    excess = sp.Abs(Q_MOBIUS) - 1                 # its sign is that of a+d
+    lemmas = mobius_lemmas()
+    names = {"q": Q_MOBIUS}
+
+    def on_branch(text, k) -> bool:
+        return real.holds(k, 1, 0, rr1) and statements.relation(text, names).holds_on(excess, apd.signs(k))
+
+    def criterion(text) -> bool:                 # stable iff sign(|q| - 1) = +1
+        rel = statements.relation(text, names)
+        return all(rel.holds({excess: s}) == (s == 1) for s in (-1, 0, 1))
+    certified = {k: sorted({{1: "|q| > 1", -1: "|q| < 1", 0: "|q| = 1"}.get(sg, str(sg)) for sg in apd.signs(k)})
+                 for k in (UPPER, LOWER)}
+    ev = ["a+d on the branches:\n\n" + apd.markdown(),
+          f"Δ = (a-d)² + 4bc > 0 on the upper branch: {real.holds(UPPER, 1, 0, rr1)}, on the lower branch: "
+          f"{real.holds(LOWER, 1, 0, rr1)} (r < 5-2√6), so q is real and √Δ > 0"]
     printed = [
-        Check(f"upper branch, r < 5-2√6: {upper}", up == {upper}, [f"certified: {sorted(up)}"] + ev),
-        Check(f"lower branch, r < 5-2√6: {lower}", lo == {lower}, [f"certified: {sorted(lo)}"]),
-        Check(f"the fixed point x₊ is stable iff {stable_when}", stable_when == criterion,
-              ["(cx₊+d)(cx₋+d) = ad - bc holds identically" if product == 0 else "identity (cx₊+d)(cx₋+d) = ad-bc FAILS",
-               "hence f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) = 1/q"]),
+        Check(f"upper branch, r < 5-2√6: {upper}", on_branch(upper, UPPER), [f"certified: {certified[UPPER]}"] + ev),
+        Check(f"lower branch, r < 5-2√6: {lower}", on_branch(lower, LOWER), [f"certified: {certified[LOWER]}"]),
+        Check(f"the fixed point x₊ is stable iff {stable_when}", criterion(stable_when), lemmas),
     ]
-    corrected = [
-        Check("(cx₊+d)(cx₋+d) = ad - bc, so f'(x₊) = 1/q and x₊ is stable iff |q| > 1", product == 0),
-        Check("upper branch, r < 5-2√6: a+d < 0, so |q| < 1 and |f'(x₊)| > 1: x₊ is repelling (unstable)",
-              apd.holds(UPPER, -1) and product == 0),
-        Check("lower branch, r < 5-2√6: a+d > 0, so |q| > 1 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: "
-              "λ is not dominant (unstable in the velocities)", apd.holds(LOWER, 1) and product == 0
+    fixed = {k: statements.corrected(text, *T24_CORRECTIONS[k])
+             for k, text in (("upper", upper), ("lower", lower), ("stable_when", stable_when))}
+    not_applied = [Check(f"the stated correction {' → '.join(T24_CORRECTIONS[k])} applies to the printed `{text}`", False)
+                   for k, text in (("upper", upper), ("lower", lower), ("stable_when", stable_when)) if fixed[k] is None]
+    corrected = not_applied or [                 # in the order of the printed checks, for the errata table
+        Check(f"upper branch, r < 5-2√6: {fixed['upper']} (a+d < 0), so |f'(x₊)| > 1: x₊ is repelling (unstable)",
+              on_branch(fixed["upper"], UPPER) and apd.holds(UPPER, -1)),
+        Check(f"lower branch, r < 5-2√6: {fixed['lower']} (a+d > 0), so |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: "
+              "λ is not dominant (unstable in the velocities)", on_branch(fixed["lower"], LOWER) and apd.holds(LOWER, 1)
               and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)),
+        Check(f"the fixed point x₊ is stable iff {fixed['stable_when']}", criterion(fixed["stable_when"]), lemmas),
     ]
     return conclude(printed, corrected, note="The theorem's conclusion (instability on both branches) stands; "
                     "the printed values of |q| and the printed stability criterion are both reversed.")

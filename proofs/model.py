@@ -10,7 +10,7 @@ import random
 import flint
 import sympy as sp
 
-from certify.algebra import parse, r, show, to_fmpq
+from certify.algebra import parse, r, show, statements, to_fmpq
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.run import Check, certificate, conclude
@@ -64,29 +64,43 @@ def collision_law_gives_A_B_C(A, B, C):
     return conclude(checks)
 
 
-@certificate("M2", "l. 240", "AC = CA.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, pair="AC"))
-def a_and_c_commute(A, B, C, pair):
-    """The printed A and C commute (simultaneous a and c collisions are well defined)."""
+@certificate("M2", "l. 240", "AC = CA.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, equality="AC = CA"))
+def a_and_c_commute(A, B, C, equality):
+    """The printed equation between products of the printed A, B, C (AC = CA: simultaneous
+    a and c collisions are well defined), read whole and checked identically in r."""
     K = {"A": matrix(A), "B": matrix(B), "C": matrix(C)}
-    X, Y = K[pair[0]], K[pair[1]]
-    comm = (X * Y - Y * X).applyfunc(sp.expand)
-    return conclude([Check(f"{pair} - {pair[::-1]} = 0 identically in r", comm == sp.zeros(3, 3),
-                           [f"{pair} - {pair[::-1]} = `{show(comm.tolist())}`"])])
+    eq = statements.product_equation(equality)
+    X, Y = (sp.prod((K[letter] for letter in word), start=sp.eye(3)) for word in (eq.lhs, eq.rhs))
+    diff = (X - Y).applyfunc(sp.expand)
+    return conclude([Check(f"{equality} identically in r", (diff == sp.zeros(3, 3)) == eq.equal,
+                           [f"{eq.lhs} - {eq.rhs} = `{show(diff.tolist())}`"])])
+
+
+Q_I = sp.Symbol("q_i")
 
 
 @certificate("M3", "l. 176-182", "A collision turns an approaching pair (q_i < 0) into a separating one "
-             "(q_i > 0): particles never cross.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
-def collisions_separate(A, B, C):
-    """Row i of K_i is -r e_i, so q_i' = -r q_i > 0 when q_i < 0 and 0 < r < 1.
+             "(q_i > 0): particles never cross.",
+             printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, approaching="q_i < 0", separating="q_i > 0"))
+def collisions_separate(A, B, C, approaching, separating):
+    """Row i of K_i is -r e_i, so q_i' = -r q_i: with 0 < r < 1, sign q_i' = -sign q_i,
+    and the printed conditions are read and checked: every sign of q_i allowed by the
+    first (approaching, before) gives after the collision a sign allowed by the second.
     Between collisions p is affine in t and a gap closes only at a collision, after
     which it reopens: every gap p_i stays >= 0, so the order of the particles holds."""
+    before, after = (statements.relation(t, {"q_i": Q_I}) for t in (approaching, separating))
+    allowed = [s for s in (-1, 0, 1) if before.holds({Q_I: s})]
+    turns = bool(allowed) and all(after.holds({Q_I: -s}) for s in allowed)
     checks = []
     for letter, text in zip(LETTERS, (A, B, C)):
         K, i = matrix(text), INDEX[letter]
         row = K.row(i).applyfunc(sp.expand)
         expected = sp.Matrix([[-r if k == i else 0 for k in range(3)]])
-        checks.append(Check(f"after {letter}: q_{i + 1}' = -r q_{i + 1}, positive when q_{i + 1} < 0",
-                            row == expected, [f"row {i + 1} of {letter.upper()}: `{show(row.tolist())}`"]))
+        checks.append(Check(f"after {letter}: q_{i + 1}' = -r q_{i + 1}, so {approaching} before the collision gives "
+                            f"{separating} after it (0 < r < 1)", row == expected and turns,
+                            [f"row {i + 1} of {letter.upper()}: `{show(row.tolist())}`",
+                             f"signs of q_i allowed before: {allowed}; after (-sign): "
+                             f"{[after.holds({Q_I: -s}) for s in allowed]}"]))
     return conclude(checks)
 
 

@@ -27,7 +27,7 @@ import flint
 import sympy as sp
 
 from certify.algebra import trig as T
-from certify.algebra import precision, r, show
+from certify.algebra import precision, r, show, statements
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS
@@ -448,10 +448,17 @@ PRINTED_S9 = dict(aca="c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ a", cac="c_k = c, c_
 
 
 def implication(text: str) -> tuple[str, str]:
-    """"c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ a" as (the pair "ac", the excluded letter "a")."""
-    given, excluded = text.split("⇒")
-    pair = "".join(part.split("=")[1].strip() for part in given.split(","))
-    return pair, excluded.split("≠")[1].strip()
+    """"c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ a" as (the pair "ac", the excluded letter "a"),
+    read whole (statements.word_rule): a rule of another shape (other offsets, = for ≠,
+    more premises) is not what this certificate counts, and is a StatementError."""
+    rule = statements.word_rule(text)
+    premises, conclusions = rule.premises, rule.conclusions
+    if [(o, eq) for o, _, eq in premises] != [(0, True), (1, True)] or \
+            [(o, eq) for o, _, eq in conclusions] != [(2, False)]:
+        raise statements.StatementError(f"cannot evaluate {text!r}: S9.2 counts the rules c_k = x, c_{{k+1}} = y "
+                                        "⇒ c_{k+2} ≠ z")
+    (_, x, _), (_, y, _) = premises
+    return x + y, conclusions[0][1]
 
 
 @certificate("S9.2", "l. 997-1035",
@@ -498,8 +505,13 @@ PRINTED_S10 = dict(window="c_k = b ⇒ c_{k+2} = b or c_{k+3} = b", blocks="ab, 
 
 
 def offsets(text: str) -> set[int]:
-    """"c_k = b ⇒ c_{k+2} = b or c_{k+3} = b" as {2, 3}."""
-    return {int(part.split("k+")[1].split("}")[0]) for part in text.split("⇒")[1].split(" or ")}
+    """"c_k = b ⇒ c_{k+2} = b or c_{k+3} = b" as {2, 3}, read whole (statements.word_rule):
+    a rule of another shape (another letter, ≠, more premises) is not what this
+    certificate evaluates, and is a StatementError."""
+    rule = statements.word_rule(text)
+    if rule.premises != ((0, "b", True),) or any(c[1:] != ("b", True) or c[0] == 0 for c in rule.conclusions):
+        raise statements.StatementError(f"cannot evaluate {text!r}: S10 evaluates rules c_k = b ⇒ c_{{k+m}} = b or …")
+    return {c[0] for c in rule.conclusions}
 
 
 def window_holds(words, ks: set[int]) -> tuple[int, int]:
@@ -598,18 +610,19 @@ def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduct
     whatever the radial part of their velocity, collide next at j or never, and then span
     the reduction's next plane: their collisions are a prefix.  The scan and the exact
     runs are supporting evidence."""
+    claim, extent = statements.count(reduction), statements.extent(realised)     # read whole; unread text fails
     cones = printed_cones(reduction_cones, A, B, C)
     checks = [lemma_check(c) for c in cones.values()]
     closed = RC.map_is_proven(cones)
     checks.append(Check(f"every orbit of the reduction off the corners has {reduction}: the six cones hold every "
                         "state off the corners, and each step maps a cone into a cone of the next contact, or onto a "
-                        "corner (n'_j = 0)", closed and reduction.startswith("infinitely")))
+                        "corner (n'_j = 0)", closed and claim.infinite))
     checks += [c.motion for c in cones.values()]
     prefix = RC.dynamics_is_proven(cones)
     runs = [(run, d) for d in section4_data for run in d.runs]
     separated = sum(run.stop == "free" for run, d in runs)
     checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence (for every datum, by "
-                        "induction on the collisions)", {"a prefix": prefix, "the whole": False}[realised],
+                        "induction on the collisions)", prefix and (extent == "prefix" or separated == 0),
                         [f"{separated} exact runs end because the particles separate while the reduction goes on"]))
     lengths = [len(o.word) for o in reduction_scan]
     realise = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)

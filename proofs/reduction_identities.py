@@ -13,7 +13,7 @@ Line numbers in the checks are those of the paper's file.
 import sympy as sp
 
 from certify.algebra import trig as T
-from certify.algebra import lam
+from certify.algebra import lam, statements
 from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.run import Check, certificate, conclude
 
@@ -43,7 +43,9 @@ Q_B = "(cos(φ)*cos(θ) + λ*sin(θ), sin(φ), -cos(φ)*sin(θ) + λ*cos(θ))"  
 T_B_AB = "cos(θ)/(sin(θ)*cos(φ) - λ*cos(θ))\n= 1/(tan(θ)*cos(φ) - λ)"             # l. 620
 T_C_AB = "sin(θ)/(-cos(θ)*cos(φ) - λ*sin(θ))\n= 1/(-cos(φ)/tan(θ) - λ)"           # l. 620
 T_C_MINUS_T_B = "(cos(φ)*tan(θ) + cos(φ)/tan(θ))/((-cos(φ)/tan(θ) - λ)*(tan(θ)*cos(φ) - λ))"  # l. 625
-ORDER = "smaller"                      # l. 628: "t_c is positive but then smaller than t_b"
+ORDER = "t_c is smaller than t_b"      # l. 628: "t_c is positive but then smaller than t_b"
+ORDER_CORRECTION = ("smaller", "larger")
+T_C, T_B = sp.symbols("t_c t_b")       # what the printed order is about
 T_C_BC = "cos(θ)/(sin(θ)*cos(φ) - λ*cos(θ))\n= 1/(tan(θ)*cos(φ) - λ)"             # l. 787
 T_A_BC = "sin(θ)/(-cos(θ)*cos(φ) - λ*sin(θ))\n= 1/(-cos(φ)/tan(θ) - λ)"           # l. 787
 SMALLEST_BC = "cos(φ) > 0"             # l. 789: "t_c is always the smallest positive ... iff cos φ > 0"
@@ -184,6 +186,7 @@ V(sin(φ), -sin(θ)*cos(φ) + (1+r)/2*cos(θ)*cos(φ), -r*cos(θ)*cos(φ))
     -sin(θ)*cos(φ) + (1+r)/2*cos(θ)*cos(φ) + (1+r)*cos(θ)^2*sin(θ)*cos(φ) - (1+r)/2*cos(θ)^3*cos(φ),
     -r*cos(θ)*cos(φ) + (1+r)*cos(θ)*sin(θ)^2*cos(φ) - (1+r)/2*cos(θ)^2*sin(θ)*cos(φ))"""  # l. 1024-1031
 FORM_C = "(-sin(θ)*cos(φ), cos(θ)*cos(φ), sin(φ))"                             # l. 1033 (θ', φ')
+COS_NEXT, SIN_NEXT = sp.symbols("cos_φ' sin_φ'")                              # what the conclusion is about
 READ_COMPONENT = 1                                                              # l. 1033: the first component
 CONCLUSION = "cos(φ') < 0"                                                      # l. 1033
 
@@ -357,11 +360,14 @@ def combined(statement: str, parts: list[T.Result]) -> Check:
                           p0_b=P0_B, q_b=Q_B, t_c_bc=T_C_BC, t_a_bc=T_A_BC, smallest_bc=SMALLEST_BC))
 def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t_c_bc, t_a_bc, smallest_bc):
     """The printed times solve the collision equations; each implication of l. 628-629 is an
-    exact identity between the target and a witness whose factors have known signs."""
+    exact identity between the target and a witness whose factors have known signs.  The
+    printed order of t_c and t_b (l. 628) is read and evaluated on the certified sign of
+    t_c - t_b; the printed condition of l. 789 is read and its truth, for each sign of
+    cos φ, compared with whether t_c is the smallest collision time.  The corrected
+    statement is the printed one with the stated correction smaller → larger."""
     pa, qa, pb, qb = vec(p0_a), vec(q_a), vec(p0_b), vec(q_b)
     TB, TC, TCB, TAB = (T.chain(x) for x in (t_b, t_c, t_c_bc, t_a_bc))
     R = race(TB[0], TC[0], "b", "c")
-    printed_order = order_claim(TB[0], TC[0], "b", "c", 1, {"smaller": -1, "larger": 1}[order])
     ok_pt, pt_ev = witness_point(TB[0], TC[0], 1)
     b_first = [R["i<0 ⇒ λ"], R["λ ⇒ λ2"], R["⇒ j<0"], R["order+"]]
     c_first = [R["j<0 ⇒ λ2"], R["λ2 ⇒ λ"], R["⇒ i<0"], R["order−"]]
@@ -378,19 +384,28 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
                            "(t_b < 0 ⇒ t_c < 0; t_b > 0 ⇒ t_c < 0 or t_c > t_b)", b_first),
                   combined("l. 629: when cos φ < 0 it is c (t_c < 0 ⇒ t_b < 0; both positive ⇒ t_c < t_b)", c_first)]
     RB = race(TCB[0], TAB[0], "c", "a")
-    sign_bc = 1 if ">" in smallest_bc else -1
     ok2, ev2 = witness_point(TCB[0], TAB[0], -1)
+    tie = T.is_zero((TCB[0] - TAB[0]).subs(cφ, 0))                  # cos φ = 0: t_c = t_a
+    first = {1: True, -1: False, 0: False}                           # t_c strictly the smallest, by the sign of cos φ
+    proofs = [RB[k] for k in ("i<0 ⇒ λ", "λ ⇒ λ2", "⇒ j<0", "order+", "order−")] + [T.Result(ok2, [ev2]), tie]
+    condition = statements.relation(smallest_bc, {"cos(φ)": cφ, "sin(φ)": sφ})
+    read = {s: condition.holds({cφ: s, sφ: 1}) for s in first}
     bc = [solves("t_c", TCB, pb, qb, 2, "787"), solves("t_a", TAB, pb, qb, 0, "787"),
           combined(f"l. 789: t_c is the smallest positive collision time iff {smallest_bc} (cos φ > 0: t_c < 0 ⇒ t_a < 0, "
-                   "both positive ⇒ t_c < t_a; cos φ < 0: both positive ⇒ t_a < t_c, which happens)",
-                   [RB[k] for k in ("i<0 ⇒ λ", "λ ⇒ λ2", "⇒ j<0", "order+", "order−")]
-                   + [T.Result(ok2 and sign_bc == 1, [ev2])])]
-    word = {-1: "smaller", 1: "larger"}
-    as_printed = Check(f"l. 628: cos φ > 0, t_b > 0, t_c > 0 ⇒ t_c is {order} than t_b",
-                       printed_order.holds and ok_pt, printed_order.evidence + ([] if printed_order.holds else
-                       [f"false whenever its hypotheses hold, and they do hold: {pt_ev}"]))
-    corrected_order = Check(f"l. 628 corrected: cos φ > 0, t_b > 0, t_c > 0 ⇒ t_c is {word[1]} than t_b",
-                            R["order+"].holds, R["order+"].evidence)
+                   "both positive ⇒ t_c < t_a; cos φ < 0: both positive ⇒ t_a < t_c, which happens; cos φ = 0: "
+                   "t_c = t_a)", proofs + [T.Result(read == first, [f"the printed condition for cos φ > 0, < 0, = 0: "
+                                                                     f"{[read[s] for s in first]}"])])]
+    known = {T_C - T_B: 1} if R["order+"].holds else {}              # certified: t_c - t_b > 0
+
+    def order_check(label, text):
+        if text is None:
+            return Check(f"l. 628 corrected: the stated correction {' → '.join(ORDER_CORRECTION)} applies to the "
+                         f"printed `{order}`", False)
+        holds = bool(known) and statements.relation(text, {"t_c": T_C, "t_b": T_B}).holds(known)
+        return Check(f"{label}: cos φ > 0, t_b > 0, t_c > 0 ⇒ {text}", holds and ok_pt, R["order+"].evidence + (
+            [] if holds else [f"false whenever its hypotheses hold, and they do hold: {pt_ev}"]))
+    as_printed = order_check("l. 628", order)
+    corrected_order = order_check("l. 628 corrected", statements.corrected(order, *ORDER_CORRECTION))
     return concluded(common + [as_printed] + conclusion + bc, common + [corrected_order] + conclusion + bc,
                     note="With 'smaller', c would come first and the conclusion 'the first collision is b' would not "
                          "follow; with 'larger' the case analysis proves it.")
@@ -673,7 +688,9 @@ def next_angle_sign(contact: str, letter: str, cos_phi: int, axis_index: int, fo
                           C_times_qk=C_TIMES_QK, projection=PROJECTION_CHAIN, form_c=FORM_C,
                           read_component=READ_COMPONENT, conclusion=CONCLUSION))
 def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read_component, conclusion):
-    """The printed algebra as printed; whether its vector is q(k+1); the corrected argument."""
+    """The printed algebra as printed; whether its vector is q(k+1); the corrected argument.
+    The printed conclusion (cos φ' < 0) is read and evaluated on the certified signs of
+    cos φ' (< 0, by the sign of (p(k+1) ∧ C q(k))_z) and sin φ' (> 0, φ' ∈ ]0,π[)."""
     pk, qk, Pn = vec(p_k), vec(q_k), vec(p_next)
     neg = T.hypotheses(-1)
     C = SECTION2["C"]
@@ -705,8 +722,9 @@ def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read
     then_b = [Check(f"after a contact {c} with cos φ' {'<' if s < 0 else '>'} 0 the next collision is b",
                     next_gap(c, vec(CONTACT_P0[c]), vec(CONTACT_Q0[c]), T.hypotheses(s))[0] == INDEX["b"])
               for c, s in (("c", -1), ("a", 1))]
-    want = -1 if "<" in conclusion else 1
-    concl = Check(f"l. 1033-1034: {conclusion}, so c_(k+2) = b (no aca)", aca[1].holds and want == -1 and then_b[0].holds,
+    # certified: cos φ' < 0 (aca[1]) and sin φ' > 0 (φ' ∈ ]0,π[ by definition); the printed conclusion read on them
+    read = statements.relation(conclusion, {"cos(φ')": COS_NEXT, "sin(φ')": SIN_NEXT}).holds({COS_NEXT: -1, SIN_NEXT: 1})
+    concl = Check(f"l. 1033-1034: {conclusion}, so c_(k+2) = b (no aca)", aca[1].holds and read and then_b[0].holds,
                   aca[1].evidence)
     corrected = algebra + [
         combined("corrected: q(k+1) ∝ Cq(k) - (Cq(k)·p(k+1))p(k+1)/|p(k+1)|², the projection on p(k+1)^⊥: orthogonal "

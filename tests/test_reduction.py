@@ -66,6 +66,37 @@ def test_every_certificate_of_this_part_is_mutated():
     assert ours == set(MUTATIONS) == set(EXPECTED)
 
 
+# the wording of S11's printed phrases, altered so that they are false: FAIL, and the
+# altered text in a failing printed check
+WORDING = [("S11", "reduction", "infinitely", "finitely"), ("S11", "realised", "a prefix", "the whole"),
+           ("S9.2", "aca", "c_{k+2}", "c_{k+3}"),           # false (acba… occurs); the index was not read
+           ("S9.2", "cac", "≠", "="),
+           ("S10", "window", "c_{k+3} = b", "c_{k+3} = a"),   # false; the letters were not read
+           ("S10", "window", "c_k = b", "c_k = a")]
+
+
+@pytest.mark.parametrize("id,name,old,new", WORDING)
+def test_altered_wording_fails_and_shows_the_text(wording_fails, id, name, old, new):
+    wording_fails(outcome, id, name, old, new)
+
+
+@pytest.mark.parametrize("id,name,text", [("S11", "reduction", "infinitely many orbits"),
+                                          ("S11", "reduction", "many collisions"), ("S11", "realised", "a part"),
+                                          ("S9.2", "aca", "c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ d"),
+                                          ("S10", "window", "c_k = b ⇒ c_{k+2} = b and c_{k+3} = b")])
+def test_unread_wording_fails_with_the_reason(unread_fails, id, name, text):
+    unread_fails(outcome, id, name, text)
+
+
+def test_every_certificate_reading_a_condition_has_a_wording_test():
+    assert {id for id, *_ in WORDING} == {"S9.2", "S10", "S11"}
+
+
+def test_s11_reads_its_phrases_whole():
+    """'the beginning' says what 'a prefix' says (the paper's words, l. 873)."""
+    assert outcome("S11", realised="the beginning").status == PASS
+
+
 def test_s8_erratum_is_the_c_formula():
     out = outcome("S8.2")
     failing = [c.statement for c in out.printed if not c.holds]

@@ -130,10 +130,42 @@ def test_more_alterations_fail(id, overrides):
 
 
 def test_s2_erratum_is_the_word_smaller():
-    assert outcome("S2", order="larger").status == PASS
+    assert outcome("S2", **altered("S2", "order", "smaller", "larger")).status == PASS
     wrong = [c for c in outcome("S2").printed if not c.holds]
     assert len(wrong) == 1 and "smaller" in wrong[0].statement
     assert any("t_c is larger than t_b" in c.statement and c.holds for c in outcome("S2").corrected)
+
+
+# the wording of every printed condition of this part: altered so that it is false, it must
+# FAIL and show the altered text in a failing printed check (ERRATUM today or not)
+WORDING = [
+    ("S2", "smallest_bc", "cos(φ)", "sin(φ)"),            # sin φ > 0 always: t_c would always come first
+    ("S2", "smallest_bc", ">", "<"),
+    ("S2", "smallest_bc", ">", "≥"),                      # cos φ = 0: t_c = t_a, not the smallest
+    ("S2", "order", "smaller than", "less than"),         # still false, and the stated correction no longer applies
+    ("S2", "order", "t_c is", "t_b is"),                  # "t_b is smaller than t_b"
+    ("S9.1", "conclusion", "cos(φ')", "sin(φ')"),         # sin φ' > 0 by definition
+    ("S9.1", "conclusion", "<", ">"),
+    ("S9.1", "conclusion", "<", "≥"),
+]
+
+
+@pytest.mark.parametrize("id,name,old,new", WORDING)
+def test_altered_wording_fails_and_shows_the_text(wording_fails, id, name, old, new):
+    wording_fails(outcome, id, name, old, new)
+
+
+@pytest.mark.parametrize("id,name,text", [
+    ("S2", "smallest_bc", "cos φ > 0"),                   # not the printed notation cos(φ)
+    ("S2", "order", "smaller"),                           # a phrase without its subject
+    ("S9.1", "conclusion", "cos(φ'') < 0"),               # an unknown name
+])
+def test_unread_wording_fails_with_the_reason(unread_fails, id, name, text):
+    unread_fails(outcome, id, name, text)
+
+
+def test_every_certificate_reading_a_condition_has_a_wording_test():
+    assert {id for id, *_ in WORDING} == {"S2", "S9.1"}
 
 
 def test_s4_erratum_is_cos_theta_for_cos_phi_in_l_734():
