@@ -506,7 +506,8 @@ def sign_of_c(c, below, above):
     fixed = statements.corrected(above, *T16_CORRECTION)
     correction = half(fixed) if fixed else Check(f"the stated correction {' → '.join(T16_CORRECTION)} applies to "
                                                  f"the printed `{above}`", False)
-    return conclude(printed, [correction, printed[0], printed[1]])     # the correction first, next to the wrong half
+    correction.corrects = printed[2]
+    return conclude(printed, [correction, printed[0], printed[1]])
 
 
 # ---------------------------------------------------------------- T17-T19: fixed points of f
@@ -574,8 +575,10 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
               ["Δ on the branches:\n\n" + D.markdown()] +
               [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros]),
     ]
-    corrected = printed[:4] + [Check("Δ < 0 on the upper branch for r2 ≤ r < 1 except at r0 = (7-2√10)/3, where Δ = 0",
-                                     cells_negative and len(zeros) == 1 and zeros[0] == Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10))]
+    corrected = printed[:4] + [Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1, except at the one point "
+                                     "r0 = (7-2√10)/3, where it vanishes",
+                                     cells_negative and len(zeros) == 1 and zeros[0] == Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
+                                     corrects=printed[4])]
     for z in zeros:
         x0 = sp.cancel((fp.a - fp.d) / (2 * fp.c))
         sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), z)
@@ -805,13 +808,16 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_
              for k, text in (("upper", upper), ("lower", lower), ("stable_when", stable_when))}
     not_applied = [Check(f"the stated correction {' → '.join(T24_CORRECTIONS[k])} applies to the printed `{text}`", False)
                    for k, text in (("upper", upper), ("lower", lower), ("stable_when", stable_when)) if fixed[k] is None]
-    corrected = not_applied or [                 # in the order of the printed checks, for the errata table
-        Check(f"upper branch, r < 5-2√6: {fixed['upper']} (a+d < 0), so |f'(x₊)| > 1: x₊ is repelling (unstable)",
+    corrected = not_applied or [
+        Check(f"upper branch, r < 5-2√6: {fixed['upper']}", on_branch(fixed["upper"], UPPER), corrects=printed[0]),
+        Check(f"lower branch, r < 5-2√6: {fixed['lower']}", on_branch(fixed["lower"], LOWER), corrects=printed[1]),
+        Check(f"the fixed point x₊ is stable iff {fixed['stable_when']}", criterion(fixed["stable_when"]), lemmas,
+              corrects=printed[2]),
+        Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)",
               on_branch(fixed["upper"], UPPER) and apd.holds(UPPER, -1)),
-        Check(f"lower branch, r < 5-2√6: {fixed['lower']} (a+d > 0), so |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: "
-              "λ is not dominant (unstable in the velocities)", on_branch(fixed["lower"], LOWER) and apd.holds(LOWER, 1)
+        Check("and on the lower branch a+d > 0 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: λ is not dominant "
+              "(unstable in the velocities)", on_branch(fixed["lower"], LOWER) and apd.holds(LOWER, 1)
               and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)),
-        Check(f"the fixed point x₊ is stable iff {fixed['stable_when']}", criterion(fixed["stable_when"]), lemmas),
     ]
     return conclude(printed, corrected, note="The theorem's conclusion (instability on both branches) stands; "
                     "the printed values of |q| and the printed stability criterion are both reversed.")

@@ -60,7 +60,7 @@ def collision_law_gives_A_B_C(A, B, C):
         checks.append(Check(f"the law for a collision of type {letter} gives the printed {letter.upper()}",
                             diff == sp.zeros(3, 3), [f"derived: `{show(K.tolist())}`"]))
     engine = all((law_matrix(k) - collision_matrix(k)).applyfunc(sp.simplify) == sp.zeros(3, 3) for k in LETTERS)
-    checks.append(Check("the engine's collision matrices are the ones the law gives", engine))
+    checks.append(Check("the engine's collision matrices are the ones the law gives", engine, counts=False))
     return conclude(checks)
 
 

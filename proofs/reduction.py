@@ -384,7 +384,7 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
                      Check(f"contact a, next c, with p(1) ∝ u(0) ∧ e_z (as in l. 962): `{fixed}` ∝ p(1) ∧ q(1), "
                            f"positively, for every state{premise}; the printed one is refuted at an exact state",
                            lemmas and a_c.following == "c" and on_fixed.holds and refuted,
-                           on_fixed.evidence + [witness]), printed[3]]
+                           on_fixed.evidence + [witness], corrects=printed[2]), printed[3]]
     evidence = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
     return conclude(printed, corrected, evidence=evidence)
 
@@ -583,7 +583,7 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
     corrected = printed[:2] + [
         Check(f"c_1 c_2 …, without its first letter when that is b, is a concatenation of {', '.join(blks)}: each "
               "admissible window that does not start with b starts with a block, which ends with b, so the next "
-              "letter is not b again (induction along the word)", induction, induction_ev)]
+              "letter is not b again (induction along the word)", induction, induction_ev, corrects=printed[2])]
     evidence = [supporting(f"{window} at {s_good} of {s_seen} collisions b of the scan ({len(scan)} exact orbits, "
                            f"{sum(map(len, scan))} collisions); {sum(parses(w, blks) for w in scan)} of {len(scan)} "
                            f"orbit words parse as printed, {len(leading_b)} start with b, e.g. "

@@ -113,8 +113,9 @@ dot(C*er, (cos(φ)*cos(θ))*cross(p1, C*q0))
 = -r*cos(φ)*sin(φ)*(cos(θ)^2 + sin(θ)^2)*sin(θ) + r*cos(φ)*sin(φ)*sin(θ)
 = 0""",                                                                         # l. 752-761
 )
-# The one correction of case ac: l. 734 prints cos θ where l. 735 and l. 722-726 have cos φ.
-AC_CORRECTED = {("cross_chain", 0): "cross(V(-sin(φ)*sin(θ), cos(φ), 0), C*q0)"}
+# The one correction of case ac, stated: l. 734 prints cos θ where l. 735 and l. 722-726 have cos φ
+# (member 1 of the cross-product chain, old text → new text).
+AC_CORRECTION = {("cross_chain", 0): ("cos(θ), 0)", "cos(φ), 0)")}
 
 # ---------------------------------------------------------------- as printed: case bc (l. 765-843)
 BC = dict(
@@ -171,7 +172,8 @@ U0_WEDGE = {"ey": "(cos(θ)*sin(φ), 0, cos(φ))",                              
             "p0": "(sin(φ), -sin(θ)*cos(φ), cos(θ)*cos(φ))"}                    # l. 971
 TRILINEAR_B = "cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))"                # l. 976
 TRILINEAR_C = "cross(cross(u0, ey), C*cross(u0, cross(ex, u0)))"                # l. 980
-TRILINEAR_C_CORRECTED = "cross(cross(u0, ez), C*cross(u0, cross(ex, u0)))"
+TRILINEAR_C_CORRECTION = ("(u0, ey)", "(u0, ez)")     # stated: for a collision c, p(1) ∝ u(0) ∧ e_z (l. 962)
+TRILINEAR_C_CORRECTED = statements.corrected(TRILINEAR_C, *TRILINEAR_C_CORRECTION)
 
 # ---------------------------------------------------------------- as printed: Proposition 4.2 (l. 1005-1034)
 P_NEXT_AC = "(sin(θ)*sin(φ), -cos(φ), 0)"                                       # l. 1012
@@ -210,12 +212,16 @@ def links(name: str, members: list, lines: str) -> list[Check]:
 
 
 def concluded(printed: list[Check], corrected: list[Check] | None = None, note: str = ""):
-    """:func:`conclude`, with the corrected checks that differ from a holding printed one
-    listed first (so that the errata table pairs each failing check with its correction)."""
-    ok = {c.statement for c in printed if c.holds}
+    """:func:`conclude`, where the corrected computation is the printed one with the stated
+    corrections applied, check for check: each failing printed check is corrected by the
+    check in the same place (unless a correction already names it)."""
     corrected = corrected or []
-    order = [c for c in corrected if c.statement not in ok] + [c for c in corrected if c.statement in ok]
-    return conclude(printed, order, note=note)
+    named = {id(c.corrects) for c in corrected if c.corrects is not None}
+    if len(corrected) == len(printed):
+        for wrong, fix in zip(printed, corrected):
+            if not wrong.holds and id(wrong) not in named and fix.corrects is None and fix is not wrong:
+                fix.corrects = wrong
+    return conclude(printed, corrected, note=note)
 
 
 def result_check(statement: str, res: T.Result) -> Check:
@@ -469,14 +475,28 @@ def reduction_conclusion(chains: dict, p0_text: str, q_text: str, letter: str) -
 
 
 def certify_case(chains, p0, q, letter, lines, corrections=None, note=""):
-    """Printed checks; corrected checks = the same with the stated corrections applied."""
+    """Printed checks; corrected checks = the same with the stated corrections (old text →
+    new text in one member of a chain) applied.  A check that reads the same words in
+    both names the member it was computed with, so that the errata show the change; a
+    stated correction whose old text is not in the printed member fails."""
     printed = reduction_case(chains, p0, q, letter, lines) + reduction_conclusion(chains, p0, q, letter)
-    corrected = []
-    if corrections:
-        fixed = dict(chains)
-        for (name, index), member in corrections.items():
-            fixed[name] = with_member(fixed[name], index, member)
-        corrected = reduction_case(fixed, p0, q, letter, lines) + reduction_conclusion(fixed, p0, q, letter)
+    if not corrections:
+        return concluded(printed, note=note)
+    fixed, changed = dict(chains), []
+    for (name, index), (old, new) in corrections.items():
+        member = T.members(chains[name])[index]
+        new_member = statements.corrected(member, old, new)
+        if new_member is None:
+            return conclude(printed, [Check(f"the stated correction `{old}` → `{new}` applies to member {index + 1} "
+                                            f"of the printed chain, `{member}`", False)], note=note)
+        fixed[name] = with_member(fixed[name], index, new_member)
+        changed.append((index, member, new_member))
+    corrected = reduction_case(fixed, p0, q, letter, lines) + reduction_conclusion(fixed, p0, q, letter)
+    for wrong, fix in zip(printed, corrected):
+        if not wrong.holds and wrong.statement == fix.statement:
+            for index, member, new_member in changed:
+                wrong.statement += f", with member {index + 1} as printed, `{member}`"
+                fix.statement += f", with member {index + 1} corrected, `{new_member}`"
     return concluded(printed, corrected, note=note)
 
 
@@ -494,7 +514,7 @@ def case_ab(p0, q, **chains):
 def case_ac(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations; l. 734 (left) corrected."""
     return certify_case(chains, p0, q, "c", dict(t="708-712", p="716-726", x="734-744", e="748", d="752-761"),
-                        AC_CORRECTED, note="l. 734 prints (-sinφ sinθ, cosθ, 0) ∧ (C q(0)) where p(1) ∝ "
+                        AC_CORRECTION, note="l. 734 prints (-sinφ sinθ, cosθ, 0) ∧ (C q(0)) where p(1) ∝ "
                         "(-sinφ sinθ, cosφ, 0) (l. 722-726, and l. 735): a misprint; the rest of the "
                         "computation uses cos φ and the conclusion (C e_r)·[p(1) ∧ q(1)] = 0 holds.")
 
@@ -636,7 +656,10 @@ def vectorial_version(p0, q0, u0, ey_dot_u0, orientation, u0_wedge_ey, u0_wedge_
         trilinear(trilinear_b, "B", u0, p1b, q0, pos, axes["b"], "1/2"),
     ]
     printed_c = trilinear(trilinear_c, "C", u0, p1c, q0, neg, axes["c"], "2")
-    corrected_c = trilinear(TRILINEAR_C_CORRECTED, "C", u0, p1c, q0, neg, axes["c"], "2")
+    fixed_c = statements.corrected(trilinear_c, *TRILINEAR_C_CORRECTION)
+    corrected_c = (trilinear(fixed_c, "C", u0, p1c, q0, neg, axes["c"], "2") if fixed_c else
+                   Check(f"the stated correction `{TRILINEAR_C_CORRECTION[0]}` → `{TRILINEAR_C_CORRECTION[1]}` "
+                         f"applies to the printed `{trilinear_c}`", False))
     return concluded(checks + [printed_c], checks + [corrected_c],
                     note="Contacts: the paper writes k = 1, 2, 3 for the contacts a, b, c in the orientation convention "
                          "(l. 949), where k also indexes the collisions.  For a collision c, p(1) ∝ u(0) ∧ e_z "
@@ -726,9 +749,11 @@ def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read
     read = statements.relation(conclusion, {"cos(φ')": COS_NEXT, "sin(φ')": SIN_NEXT}).holds({COS_NEXT: -1, SIN_NEXT: 1})
     concl = Check(f"l. 1033-1034: {conclusion}, so c_(k+2) = b (no aca)", aca[1].holds and read and then_b[0].holds,
                   aca[1].evidence)
+    projection = combined("corrected: q(k+1) ∝ Cq(k) - (Cq(k)·p(k+1))p(k+1)/|p(k+1)|², the projection on p(k+1)^⊥: "
+                          "orthogonal to p(k+1), in P(k+1)", [T.is_zero(w_true.dot(Pn)), T.is_zero(w_true.dot(n))])
+    projection.corrects = vector_claim
     corrected = algebra + [
-        combined("corrected: q(k+1) ∝ Cq(k) - (Cq(k)·p(k+1))p(k+1)/|p(k+1)|², the projection on p(k+1)^⊥: orthogonal "
-                 "to p(k+1), in P(k+1)", [T.is_zero(w_true.dot(Pn)), T.is_zero(w_true.dot(n))]),
+        projection,
         frame_lemma("c", CONTACT_P0["c"], CONTACT_Q0["c"]),
         *aca, then_b[0], concl,
         result_check("its first component is > 0 as well (the printed reading of the sign gives the right answer for "

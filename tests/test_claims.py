@@ -44,3 +44,20 @@ def test_every_certificate_names_a_listed_claim():
     ids = set(re.findall(r"^\| ([LMTSN]\d+) \|", CLAIMS.read_text(encoding="utf-8"), re.M))
     for cert in runner.select():
         assert cert.id.split(".")[0] in ids, cert.id
+
+
+def test_every_erratum_row_shows_what_was_printed_and_what_is_true():
+    """In the real run, each false printed check of an ERRATUM has a certified correction
+    that reads differently (the errata show the change without diffing)."""
+    from certify.run import report
+    errata = [c.id for c in runner.select() if c.id in {"T16", "T17", "T24", "S2", "S4", "S8.1", "S9.1"}]
+    results, _ = runner.run(errata, jobs=2)
+    for cert, outcome in results:
+        assert outcome.status == runner.ERRATUM, cert.id
+        pairs = report.erratum_pairs(outcome)
+        assert pairs, cert.id
+        for wrong, fixes in pairs:
+            assert fixes, (cert.id, wrong.statement)
+            for fix in fixes:
+                assert runner.holds(fix) and fix.statement != wrong.statement, (cert.id, fix.statement)
+                assert report.changes(wrong.statement, fix.statement), (cert.id, fix.statement)

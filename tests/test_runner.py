@@ -95,3 +95,16 @@ def test_outcomes_cross_processes_as_plain_data(registry):
             return True
     outcome = runner.plain(conclude([Check("x", Relation(), [1])]))
     assert outcome.printed[0].holds is True and outcome.printed[0].evidence == ["1"]
+
+
+def test_an_unread_printed_text_is_a_fail_that_says_so():
+    from certify.algebra import statements
+
+    def claim(text):
+        statements.relation(text, {})
+        return conclude([Check("read", True)])
+    cert = Certificate("X9", "l. 1", "x", claim, (), {"text": "c is rather big"}, "tests.test_runner")
+    outcome = runner.run_certificate(cert)
+    assert outcome.status == FAIL
+    assert outcome.printed[0].statement == "the printed text was read"
+    assert "c is rather big" in outcome.printed[0].evidence[0]

@@ -198,9 +198,13 @@ def _tokens(text: str) -> list[re.Match]:
     return list(re.finditer(r"\w+|[^\w\s`]", text))
 
 
+MAX_CHANGES = 3   # more changes than this: the correction is a restatement, not an edit
+
+
 def changes(before: str, after: str) -> str:
     """What differs from ``before`` to ``after``, word by word: ``smaller → larger``,
-    ``ey → ez``; ``""`` when the two read the same."""
+    ``ey → ez``; ``""`` when the two read the same; "restated" when more than
+    :data:`MAX_CHANGES` places differ."""
     a, b = _tokens(before), _tokens(after)
     ops = difflib.SequenceMatcher(None, [m.group() for m in a], [m.group() for m in b], autojunk=False)
     out = []
@@ -210,7 +214,7 @@ def changes(before: str, after: str) -> str:
         old = before[a[i1].start():a[i2 - 1].end()] if i2 > i1 else ""
         new = after[b[j1].start():b[j2 - 1].end()] if j2 > j1 else ""
         out.append(f"`{old}` → `{new}`" if old and new else f"+ `{new}`" if new else f"− `{old}`")
-    return "; ".join(out)
+    return "; ".join(out) if len(out) <= MAX_CHANGES else "restated (compare the two columns)"
 
 
 def erratum_pairs(outcome) -> list[tuple]:

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 from certify import caches
+from certify.algebra.statements import StatementError
 from certify.errors import UsageError
 
 PASS, ERRATUM, FAIL, OBSERVED = "PASS", "ERRATUM", "FAIL", "OBSERVED"
@@ -88,8 +89,8 @@ def conclude(printed: list[Check], corrected: list[Check] | None = None,
     fixed = {corrected_statement(c) for c in corrected}
     if consistent and evidence_checks and not wrong:
         status = PASS
-    elif (consistent and wrong and corrected and all(holds(c) for c in corrected)
-          and (not fixed - {""} or all(str(c.statement) in fixed for c in wrong))):
+    elif (consistent and wrong and all(holds(c) for c in corrected)
+          and all(str(c.statement) in fixed for c in wrong)):
         status = ERRATUM
     else:
         status = FAIL
@@ -228,6 +229,8 @@ def run_certificate(cert: Certificate, ctx: Context | None = None,
     try:
         args = {n: ctx.get(n) for n in cert.needs}
         outcome = cert.func(**args, **printed)
+    except StatementError as exc:  # a printed text the grammar does not read: never a guess
+        outcome = Outcome(FAIL, [Check("the printed text was read", False, [f"`{exc}`"])])
     except Exception as exc:  # a check that could not be completed is a FAIL
         tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
         outcome = Outcome(FAIL, [Check("the certificate ran to completion", False, [f"`{tb}`"])])
