@@ -674,3 +674,16 @@ def test_numberfield_names_close_branches_in_order():
         values = [flint.arb(Q(1, 3) + EPS), flint.arb(Q(1, 3)) + s2 * flint.arb(EPS / 10 ** 5), flint.arb(Q(1, 3))]
         assert all(b.overlaps(v) for b, v in zip(balls, values))          # upper, middle, lower
         assert all(b > c for b, c in zip(balls, balls[1:]))
+
+
+@pytest.mark.parametrize("refined", [0, 13, 20, 47])
+def test_describe_depends_on_the_number_only(refined):
+    """The report prints an algebraic number the same way however far its isolating
+    interval was refined before (a run on several processes refines in another order)."""
+    def numbers():
+        return [Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10), Algebraic.surd(5, -2, 6),
+                Algebraic.surd(3, -2, 2)]
+    for a, b in zip(numbers(), numbers()):
+        if refined:
+            a.refine(flint.fmpq(1, 10 ** refined))
+        assert a.describe() == b.describe()

@@ -176,15 +176,25 @@ class Algebraic:
         if self.is_rational:
             return f"{self.lo}"
         self.minimal_polynomial()
-        self.refine(Q(1, 10 ** 12))
-        ends = f"{self.lo}, {self.hi}"
+        ends = None
         for k in range(12, 40, 4):            # a short isolating interval with decimal ends
             s = 10 ** k
-            L, H = (self.lo * s).floor(), (self.hi * s).ceil()
-            if self.p(Q(L, s)) != 0 and self.p(Q(H, s)) != 0 and count_roots(self.p, Q(L, s), Q(H, s)) == 1:
-                ends = f"{_dec(int(L), k)}, {_dec(int(H), k)}"
+            L = self.floor_scaled(s)          # ]L/s, (L+1)/s[: a function of the number alone
+            lo, hi = Q(L, s), Q(L + 1, s)
+            if self.p(lo) != 0 and self.p(hi) != 0 and count_roots(self.p, lo, hi) == 1:
+                ends = f"{_dec(L, k)}, {_dec(L + 1, k)}"
                 break
+        if ends is None:
+            self.refine(Q(1, 10 ** 12))
+            ends = f"{self.lo}, {self.hi}"
         return f"the root of {show(self.p)} in ]{ends}[ ≈ {self.digits(12)}"
+
+    def floor_scaled(self, s: int) -> int:
+        """⌊s·α⌋, exact: the isolating interval narrowed below 1/s, then one exact comparison.
+        It depends on the number only, not on how far the interval was refined before."""
+        self.refine(Q(1, s))
+        L = int((self.lo * s).floor())
+        return L + 1 if self.compare_rational(Q(L + 1, s)) >= 0 else L
 
     def __repr__(self):
         return f"Algebraic({self.describe()})"
