@@ -330,11 +330,13 @@ def _parallel(plan: list[list[Certificate]], jobs: int, progress) -> tuple[list,
     pool = context.Pool(min(jobs, len(plan)), initializer=_worker_start, initargs=(queue,))
     try:
         pending = [pool.apply_async(_worker_run, (k,)) for k in range(len(plan))]
-        while pending:
-            while not queue.empty():
+        while True:
+            while not queue.empty():     # a worker's put is written before its unit's result
                 count, cid = count + 1, queue.get()
                 if progress:
                     progress(count, len(by_id), cid)
+            if not pending:
+                break
             still = []
             for job in pending:
                 if not job.ready():
@@ -346,8 +348,7 @@ def _parallel(plan: list[list[Certificate]], jobs: int, progress) -> tuple[list,
                 finished += [(by_id[i], o, t, s) for i, o, t, s in result[0]]
                 seconds.update(result[1])
             pending = still
-            if pending:
-                time.sleep(0.02)
+            time.sleep(0.02 if pending else 0)
         pool.close()
     finally:
         pool.terminate()
