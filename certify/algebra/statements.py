@@ -43,13 +43,9 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from certify.errors import StatementError  # raised here, caught by the runner: the ground floor's
 from .algebraic import Algebraic
 from .poly import r as R_SYMBOL
-
-
-class StatementError(ValueError):
-    """A printed text that the grammar does not read, or a relation that cannot be
-    evaluated on the certified facts given: the certificate FAILs with this reason."""
 
 
 OPS = ("<=", ">=", "!=", "<", ">", "=")

@@ -22,8 +22,7 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 from certify import caches
-from certify.algebra.statements import StatementError
-from certify.errors import UsageError
+from certify.errors import StatementError, UsageError
 
 PASS, ERRATUM, FAIL, OBSERVED = "PASS", "ERRATUM", "FAIL", "OBSERVED"
 STATUSES = (PASS, ERRATUM, FAIL, OBSERVED)
