@@ -108,3 +108,13 @@ def test_an_unread_printed_text_is_a_fail_that_says_so():
     assert outcome.status == FAIL
     assert outcome.printed[0].statement == "the printed text was read"
     assert "c is rather big" in outcome.printed[0].evidence[0]
+
+
+def test_a_dead_worker_is_an_error_not_a_hang(registry):
+    import os
+
+    def dies():
+        os._exit(3)                 # as a crash in C code would
+    registry["T9"] = Certificate("T9", "l. 1", "x", dies, (), {}, "tests.test_runner")
+    with pytest.raises(runner.WorkerDied, match="--jobs 1"):
+        runner.run(jobs=2)

@@ -18,6 +18,8 @@ import pkgutil
 import signal
 import time
 import traceback
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -318,17 +320,24 @@ def default_jobs() -> int:
         return os.cpu_count() or 1
 
 
+class WorkerDied(RuntimeError):
+    """A worker process ended without returning its unit (killed, or a crash in C code)."""
+
+
 def _parallel(plan: list[list[Certificate]], jobs: int, progress) -> tuple[list, dict]:
-    """Run the units of ``plan`` on ``jobs`` forked processes, heaviest first."""
+    """Run the units of ``plan`` on ``jobs`` forked processes, heaviest first.  A worker
+    that dies raises :class:`WorkerDied` (never a silent hang); on Ctrl-C the workers
+    are terminated."""
     global _PLAN
     context = multiprocessing.get_context("fork")
     queue = context.SimpleQueue()
     by_id = {c.id: c for unit in plan for c in unit}
     _PLAN = plan
     finished, seconds, count = [], {}, 0
-    pool = context.Pool(min(jobs, len(plan)), initializer=_worker_start, initargs=(queue,))
+    pool = ProcessPoolExecutor(min(jobs, len(plan)), mp_context=context, initializer=_worker_start,
+                               initargs=(queue,))
     try:
-        pending = [pool.apply_async(_worker_run, (k,)) for k in range(len(plan))]
+        pending = {pool.submit(_worker_run, k) for k in range(len(plan))}
         while True:
             while not queue.empty():     # a worker's put is written before its unit's result
                 count, cid = count + 1, queue.get()
@@ -336,21 +345,23 @@ def _parallel(plan: list[list[Certificate]], jobs: int, progress) -> tuple[list,
                     progress(count, len(by_id), cid)
             if not pending:
                 break
-            still = []
-            for job in pending:
-                if not job.ready():
-                    still.append(job)
-                    continue
-                result = job.get()
+            done, pending = wait(pending, timeout=0.05, return_when=FIRST_COMPLETED)
+            for job in done:
+                try:
+                    result = job.result()
+                except BrokenProcessPool:
+                    raise WorkerDied("a worker process died before it returned its certificates "
+                                     "(run again with --jobs 1 to see which)") from None
                 if result is None:
                     raise KeyboardInterrupt
                 finished += [(by_id[i], o, t, s) for i, o, t, s in result[0]]
                 seconds.update(result[1])
-            pending = still
-            time.sleep(0.02 if pending else 0)
-        pool.close()
+    except BaseException:
+        for child in multiprocessing.active_children():   # the workers: stop them now
+            child.terminate()
+        raise
     finally:
-        pool.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)
         _PLAN = []
     return finished, seconds
 
