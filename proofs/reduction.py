@@ -376,8 +376,8 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
                      f"positively, for every state{premise}", lemmas and all(relabelled),
                      [e for x in relabelled for e in x.evidence[:1]])]
     corrected = []
-    if not printed[2].holds and "ey" in to_c:
-        fixed = to_c.replace("ey", "ez", 1)
+    fixed = statements.corrected(to_c, *I.TRILINEAR_C_CORRECTION)     # the correction stated once, for S8.1 too
+    if not printed[2].holds and fixed:
         on_fixed = trilinear_on_cone(fixed, a_c)
         refuted, witness = not_normal_at(to_c, a_c)
         corrected = [printed[0], printed[1],

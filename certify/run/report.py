@@ -103,9 +103,6 @@ def _bullet(text, indent: int = 0) -> str:
     return "\n".join(lines)
 
 
-check_holds = holds   # the verdict of a check as a plain bool (undecidable: False)
-
-
 def part_of(cid: str) -> str:
     """The part of the paper a claim id belongs to (its first letter)."""
     return PARTS.get(cid[:1], "Other claims")
