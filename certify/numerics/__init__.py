@@ -1,0 +1,16 @@
+"""Layer 3 (beside :mod:`certify.patterns`): numerical iteration of the spherical
+billiard reduction (Section 5 of the paper), from collision to collision, in float64
+(numba), mpmath or certified balls.  It imports only :mod:`certify.dynamics`,
+:mod:`certify.algebra` and the ground floor.
+
+- :mod:`.rules`: the one definition of the map's step and of the break rules.
+- :mod:`.kernel`: the float64 engine, a numba transcription of the rules.
+- :mod:`.engines`: one orbit on any engine (float64, mp, ball).
+- :mod:`.orbits`: :func:`simulate` over r and initial data, :class:`Orbits`.
+"""
+from .engines import ENGINES, OrbitResult, run_orbit
+from .orbits import Orbits, paper_grid, simulate
+from .rules import BREAKS, COMPLETED, CORNER, NONFINITE, SHORT_STEP, UNDECIDED
+
+__all__ = ["simulate", "Orbits", "paper_grid", "BREAKS", "ENGINES", "OrbitResult", "run_orbit",
+           "COMPLETED", "UNDECIDED", "SHORT_STEP", "CORNER", "NONFINITE"]

@@ -1,0 +1,150 @@
+"""Sweeps of orbits over r: :func:`simulate` and its result :class:`Orbits`.
+
+The initial data (θ0, φ0) are taken right after a b-collision (the contact b, the
+pair 2-3 in contact, as the paper represents b-collisions only, l. 1058):
+p(0) = (sin θ0, 0, cos θ0), q(0) = (cos θ0 cos φ0, sin φ0, −sin θ0 cos φ0) (l. 894),
+so that the normal is u = p(0) ∧ q(0) = (−cos θ0 sin φ0, cos φ0, sin θ0 sin φ0).
+
+The paper does not print its grid of 8 initial configurations ("a regular grid, with
+2 values of θ0 and 4 values of φ0", captions of Figures 5.1-5.4).  :func:`paper_grid`
+is the interior regular grid θ0 ∈ {π/6, π/3} (θ ∈ ]0, π/2[ cut in 3), φ0 ∈ {π/5,
+2π/5, 3π/5, 4π/5} (φ ∈ ]0, π[ cut in 5), θ0 outer, φ0 inner; none of them is a
+corner (cos φ0 ≠ 0, sin θ0 cos θ0 ≠ 0).
+"""
+from __future__ import annotations
+
+import math
+from concurrent.futures import Executor
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from . import engines, kernel, rules
+
+KEYS = ("r", "theta0", "phi0", "phi", "breaks", "collisions")
+
+
+def paper_grid() -> tuple[np.ndarray, np.ndarray]:
+    """(θ0, φ0), 8 each: 2 values of θ0 times 4 of φ0 (module docstring)."""
+    thetas = [math.pi * k / 6 for k in (1, 2)]
+    phis = [math.pi * k / 5 for k in (1, 2, 3, 4)]
+    theta0 = np.array([t for t in thetas for _ in phis])
+    phi0 = np.array([p for _ in thetas for p in phis])
+    return theta0, phi0
+
+
+@dataclass
+class Orbits:
+    """The result of :func:`simulate`: r (n_r,), theta0 and phi0 (n_orbits,), phi
+    (n_r, n_orbits, keep) the φ of the last b-collisions in order, NaN-padded at the
+    front, breaks (n_r, n_orbits) the break codes (:data:`rules.BREAKS`, 0 completed),
+    collisions (n_r, n_orbits) the collisions done (for ``ball``: proven)."""
+
+    r: np.ndarray
+    theta0: np.ndarray
+    phi0: np.ndarray
+    phi: np.ndarray
+    breaks: np.ndarray
+    collisions: np.ndarray
+    engine: str = "float64"
+
+    def save(self, path) -> None:
+        """Write the six arrays to an .npz file (``numpy.savez``; the path as given)."""
+        np.savez(path, **{k: getattr(self, k) for k in KEYS})
+
+    @classmethod
+    def load(cls, path) -> "Orbits":
+        with np.load(path) as data:
+            return cls(*(data[k] for k in KEYS))
+
+    def summary(self) -> str:
+        """A few lines: sizes, breaks by name, the range of φ."""
+        n_r, n_o = self.breaks.shape
+        lines = [f"{self.engine}: {n_r} value(s) of r × {n_o} orbit(s), "
+                 f"{int(self.collisions.max(initial=0))} collisions at most, {self.phi.shape[-1]} kept"]
+        for code, name in rules.BREAKS.items():
+            count = int((self.breaks == code).sum())
+            if count:
+                lines.append(f"  {count:>7} {name} (break {code})")
+        finite = self.phi[np.isfinite(self.phi)]
+        if finite.size:
+            lines.append(f"  φ in [{finite.min():.6f}, {finite.max():.6f}], {finite.size} kept angles")
+        return "\n".join(lines)
+
+
+def _check(r, theta0, phi0, collisions, keep, engine):
+    r = np.atleast_1d(np.asarray(r, dtype=float))
+    theta0 = np.atleast_1d(np.asarray(theta0, dtype=float))
+    phi0 = np.atleast_1d(np.asarray(phi0, dtype=float))
+    if r.ndim != 1 or theta0.shape != phi0.shape or theta0.ndim != 1:
+        raise ValueError("r, theta0, phi0 must be 1-d arrays, theta0 and phi0 of one length")
+    if not np.all((r > 0) & (r < 1)):
+        raise ValueError("r must lie in ]0, 1[")
+    if collisions < 0 or keep < 0:
+        raise ValueError("collisions and keep must be non-negative")
+    if engine not in engines.ENGINES:
+        raise ValueError(f"unknown engine {engine!r}: use one of {', '.join(engines.ENGINES)}")
+    return r, theta0, phi0
+
+
+def _float64(r, theta0, phi0, collisions, keep, progress):
+    n_r, n_o = len(r), len(theta0)
+    normals = np.array([rules.initial_normal(t, p) for t, p in zip(theta0, phi0)], dtype=float).reshape(n_o, 3)
+    letters = np.full(n_o, rules.INDEX[rules.START], dtype=np.int64)
+    phi = np.empty((n_r, n_o, keep))
+    breaks = np.zeros((n_r, n_o), dtype=np.int8)
+    counts = np.zeros((n_r, n_o), dtype=np.int64)
+    # batches, for the progress bar; each batch is one parallel call
+    per = max(1, min(n_r, (1 << 22) // max(1, n_o * max(collisions, 1))))
+    for lo in range(0, n_r, per):
+        hi = min(n_r, lo + per)
+        mats = [rules.float_rows(x) for x in r[lo:hi]]
+        rows = np.array(mats).reshape(hi - lo, 3, 3, 3)
+        absrows = np.array([rules.row_abs(m) for m in mats]).reshape(hi - lo, 3, 3)
+        kernel.sweep(letters, normals, rows, absrows, rules.TOL64, collisions, keep, phi[lo:hi], breaks[lo:hi],
+                     counts[lo:hi])
+        if progress is not None:
+            progress(hi, n_r, f"r = {r[hi - 1]:.6g}")
+    return phi, breaks, counts
+
+
+def _tasks(engine, r, theta0, phi0, collisions, keep, dps, executor, progress):
+    n_r, n_o = len(r), len(theta0)
+    phi = np.full((n_r, n_o, keep), np.nan)
+    breaks = np.zeros((n_r, n_o), dtype=np.int8)
+    counts = np.zeros((n_r, n_o), dtype=np.int64)
+    jobs = [(a, b) for a in range(n_r) for b in range(n_o)]
+    if executor is None:
+        results = (engines.task(engine, float(r[a]), float(theta0[b]), float(phi0[b]), collisions, keep, dps)
+                   for a, b in jobs)
+        done = zip(jobs, results)
+    else:
+        futures = {executor.submit(engines.task, engine, float(r[a]), float(theta0[b]), float(phi0[b]),
+                                   collisions, keep, dps): (a, b) for a, b in jobs}
+        from concurrent.futures import as_completed
+        done = ((futures[f], f.result()) for f in as_completed(futures))
+    for k, ((a, b), (ph, code, count)) in enumerate(done, 1):
+        phi[a, b], breaks[a, b], counts[a, b] = ph, code, count
+        if progress is not None:
+            progress(k, len(jobs), f"r = {r[a]:.6g}")
+    return phi, breaks, counts
+
+
+def simulate(r, theta0, phi0, collisions: int = 10_000, keep: int = 500, engine: str = "float64",
+             dps: int | None = None, executor: Executor | None = None,
+             progress: Callable[[int, int, str], None] | None = None) -> Orbits:
+    """Iterate the reduction map from every (θ0, φ0) at contact b, for every r, up to
+    ``collisions`` collisions or a break; keep the φ of the last ``keep`` b-collisions.
+
+    ``engine``: "float64" (numba, parallel over orbits; ``executor`` unused), "mp"
+    (mpmath at ``dps`` digits, default 30) or "ball" (certified arb, precision raised
+    up to ``dps`` digits, default 3000).  ``executor``: a concurrent.futures Executor
+    for the mp and ball orbits (None: in this process).  ``progress(k, n, label)``:
+    called as the work advances."""
+    r, theta0, phi0 = _check(r, theta0, phi0, collisions, keep, engine)
+    if engine == "float64":
+        phi, breaks, counts = _float64(r, theta0, phi0, collisions, keep, progress)
+    else:
+        phi, breaks, counts = _tasks(engine, r, theta0, phi0, collisions, keep, dps, executor, progress)
+    return Orbits(r, theta0, phi0, phi, breaks, counts, engine)

@@ -1,0 +1,177 @@
+"""The one definition of the numerical reduction map and of its break rules.
+
+Every engine (float64, mp, ball) iterates the projective form of the reduction map of
+:mod:`certify.dynamics.reduction`: the state right after a collision is the contact
+i (0, 1, 2 for a, b, c) and a normal vector n of the plane P, oriented so that
+n_j > 0 with j = i + 1 (mod 3) (``reduction.ORIENTATION``); the position lies inside
+the face iff also n_k < 0, k = i + 2; the next contact is j when n_i > 0 (cos φ > 0)
+and k when n_i < 0 (``reduction.next_letter``: n_i n_j > 0); the new normal is
+cof(K) n with the rows ``reduction.cofactor(letter, r)``, re-oriented.  The float64
+kernel (:mod:`.kernel`) is a compiled transcription of :func:`classify` and
+:func:`advance`, checked against them and against ``reduction.step``.
+
+Break rules (:data:`BREAKS`).  A sign is used only when it is decided by a safe
+margin: |x| > bound, where for the floating engines the bound of an entry of
+n' = cof(K) n is ``TOL · Σ_c |cof(K)_{mc}| · max|n|`` with TOL = SAFETY · 2^-precision
+(the rounding of that product, with a margin), and ``TOL · max|n|`` for the initial
+normal (the rounding of its conversion from θ0, φ0).  A ball decides a sign when it
+excludes 0.  In order:
+
+1. ``UNDECIDED``: the sign of n_i, i.e. of cos φ = n_i/|n|, is not decided: the next
+   contact is not determined (the paper's |cos φ| below the precision, l. 1066-1068;
+   for a ball also an exact 0, the orbit heading for a corner).
+2. ``SHORT_STEP``: an in-face entry n_j or n_k is not decided: the position is within
+   the rounding of a vertex of the triangle (θ near 0 or π/2), two gaps vanish at
+   once to working precision, the time between two collisions is below the
+   precision (the paper's first break, l. 1065).
+3. ``CORNER``: the normal is zero or an in-face entry has the wrong sign, decided:
+   the datum is not a state inside the face (e.g. θ0 outside ]0, π/2[).
+4. ``NONFINITE``: an entry is inf or nan (a nan datum).
+
+0 is a completed orbit.  The engines never continue past a break.
+"""
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import flint
+
+from certify.dynamics import reduction
+from certify.dynamics.model import INDEX, LETTERS
+
+COMPLETED, UNDECIDED, SHORT_STEP, CORNER, NONFINITE = 0, 1, 2, 3, 4
+BREAKS = {
+    COMPLETED: "completed",
+    UNDECIDED: "undecided contact: |cos φ| below the rounding bound",
+    SHORT_STEP: "time step below precision: the position within rounding of a vertex",
+    CORNER: "corner: zero normal, or the state outside the face",
+    NONFINITE: "non-finite number",
+}
+SAFETY = 64                         # the margin over one rounding of a step
+START = "b"                         # the contact of the initial data (paper: b-collisions)
+
+
+def tol(bits: int) -> float | Fraction:
+    """TOL = SAFETY · 2^-bits, the relative margin at ``bits`` of mantissa."""
+    return SAFETY * Fraction(1, 2 ** bits)
+
+
+TOL64 = float(tol(53))              # 2^-47 ≈ 7.1e-15
+
+
+def exact_r(r) -> flint.fmpq:
+    """r as an exact rational (a float is read exactly, its binary value)."""
+    if isinstance(r, flint.fmpq):
+        return r
+    if isinstance(r, float):
+        num, den = Fraction(r).as_integer_ratio()
+        return flint.fmpq(num, den)
+    return flint.fmpq(r) if not isinstance(r, str) else flint.fmpq(*Fraction(r).as_integer_ratio())
+
+
+def integer_rows(r) -> list[tuple]:
+    """The three cofactor matrices cof(A), cof(B), cof(C) at r, as integer rows
+    (``reduction.cofactor``), in the order a, b, c."""
+    q = exact_r(r)
+    return [reduction.cofactor(L, q) for L in LETTERS]
+
+
+def float_rows(r) -> list[list[list[float]]]:
+    """:func:`integer_rows` converted to float, each matrix scaled by a power of 2 so
+    that its largest entry lies in [1, 2) (a positive multiple keeps the plane)."""
+    out = []
+    for rows in integer_rows(r):
+        shift = max(abs(int(z)) for row in rows for z in row).bit_length() - 1
+        out.append([[_scaled(int(z), shift) for z in row] for row in rows])
+    return out
+
+
+def _scaled(z: int, shift: int) -> float:
+    """z · 2^-shift correctly rounded (z may exceed the float range)."""
+    return float(Fraction(z, 1 << shift)) if shift >= 0 else float(z * (1 << -shift))
+
+
+def row_abs(rows) -> list[list]:
+    """Σ_c |K_{mc}| for each matrix K and row m: the rounding bound's factor."""
+    return [[sum(abs(z) for z in row) for row in K] for K in rows]
+
+
+# --- the shared step --------------------------------------------------------
+
+def margin_sign(x, bound) -> int:
+    """+1 / -1 when |x| > bound, else 0 (not decided)."""
+    if x > bound:
+        return 1
+    if x < -bound:
+        return -1
+    return 0
+
+
+def ball_sign(x, bound=None) -> int:
+    """+1 / -1 when the ball excludes 0, else 0 (not decided; also an exact 0)."""
+    if x > 0:
+        return 1
+    if x < 0:
+        return -1
+    return 0
+
+
+def classify(i: int, n, bounds, sign=margin_sign, finite=math.isfinite) -> tuple[int, int]:
+    """(break code, next contact index): the break rules of the module docstring at the
+    state (i, n) whose entries carry the rounding ``bounds``; (0, j) when the next
+    contact j is decided."""
+    if not all(finite(z) for z in n):
+        return NONFINITE, -1
+    if all(z == 0 for z in n):
+        return CORNER, -1
+    j, k = (i + 1) % 3, (i + 2) % 3
+    sj, sk = sign(n[j], bounds[j]), sign(n[k], bounds[k])
+    if sj < 0 or sk > 0:
+        return CORNER, -1
+    if sj == 0 or sk == 0:
+        return SHORT_STEP, -1
+    si = sign(n[i], bounds[i])
+    if si == 0:
+        return UNDECIDED, -1
+    return COMPLETED, (j if si > 0 else k)
+
+
+def advance(j: int, n, rows) -> tuple:
+    """The normal after the collision j: cof(K_j) n, oriented so that its entry
+    j + 1 (mod 3) is not negative (``reduction.canonical``, unnormalised)."""
+    K = rows[j]
+    m = tuple(K[a][0] * n[0] + K[a][1] * n[1] + K[a][2] * n[2] for a in range(3))
+    t = (j + 1) % 3
+    return tuple(-z for z in m) if m[t] < 0 else m
+
+
+def step_bounds(j: int, n, absrows, tolerance) -> tuple:
+    """The rounding bounds of the entries of :func:`advance` (j, n)."""
+    top = max(abs(z) for z in n)
+    return tuple(tolerance * s * top for s in absrows[j])
+
+
+# --- the angles ---------------------------------------------------------------
+
+def initial_normal(theta, phi, letter: str = START, cos=math.cos, sin=math.sin) -> tuple:
+    """The normal u = p(0) ∧ q(0) of the state (letter, θ, φ) of Section 4's
+    trigonometric version (``reduction.Angles``: p(0) = P0[letter](cos θ, sin θ),
+    q(0) = Q0[letter](..., cos φ, sin φ)); at b: (−cos θ sin φ, cos φ, sin θ sin φ)."""
+    return reduction.Angles(letter, cos(theta), sin(theta), cos(phi), sin(phi)).u()
+
+
+def phi_of(i: int, n) -> float:
+    """φ ∈ [0, π] of the state (i, n), float: cos φ = n_i/|n| and sin φ =
+    |(n_j, n_k)|/|n| ≥ 0 (``reduction.angles``: n = (cos φ, sin θ sin φ, −cos θ sin φ)
+    relabelled for the contact)."""
+    return math.atan2(math.hypot(n[(i + 1) % 3], n[(i + 2) % 3]), n[i])
+
+
+def theta_of(i: int, n) -> float:
+    """θ ∈ [0, π/2] of the state (i, n): sin θ sin φ = n_j, cos θ sin φ = −n_k."""
+    return math.atan2(n[(i + 1) % 3], -n[(i + 2) % 3])
+
+
+def letter_index(letter: str) -> int:
+    return INDEX[letter]
