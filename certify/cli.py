@@ -6,13 +6,22 @@
     run ID [ID ...] [--out DIR] [--jobs N]
                                 run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N] [--jobs N] [--reduction [--long]]
+    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics]
                                 time the whole run (benchmarks/bench.py), or the
-                                exact simulator and reduction map (bench_reduction.py)
+                                exact simulator and reduction map (bench_reduction.py),
+                                or the numerical engines (bench_numerics.py)
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
                                 collisions and their times (certify.dynamics.particles)
+    simulate (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N]
+             [--keep N] [--engine float64|mp|ball] [--dps D] [--out FILE.npz]
+             [--jobs N] [--scheduler ADDRESS]
+                                iterate the reduction map numerically (Section 5,
+                                certify.numerics); the φ of the last b-collisions
+    stress [--out FILE] [--quick]
+                                near-singular, long and random orbits on every
+                                engine against the certified one: reports/STRESS.md
 
 Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
 1 when one FAILs (or, with ``all --check``, when the committed REPORT.md is
@@ -30,6 +39,7 @@ import shutil
 import sys
 import traceback
 from contextlib import nullcontext
+from fractions import Fraction
 from pathlib import Path
 
 from certify.dynamics import particles
@@ -218,6 +228,8 @@ def load_bench(name: str = "bench"):
 def cmd_bench(args) -> int:
     """Time the whole run (benchmarks/bench.py), or with --reduction the exact
     simulator and reduction map against bit growth (benchmarks/bench_reduction.py)."""
+    if args.numerics:
+        return load_bench("bench_numerics").main(["--quick"] * args.quick)
     if args.reduction:
         return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
     return load_bench().main(["--repeat", str(args.repeat)] + (["--jobs", str(args.jobs)] if args.jobs else []))
@@ -231,6 +243,124 @@ def cmd_particles(args) -> int:
     for line in particles.report_lines(history, digits=args.digits, full=args.exact):
         print(line)
     return 0
+
+
+# --------------------------------------------------------------------------
+# Numerics (Section 5): simulate, stress
+
+DEFAULT_STRESS = DEFAULT_OUT / "STRESS.md"
+
+
+def number(text: str) -> float:
+    """A real number: decimal or fraction ("0.15", "3/20")."""
+    try:
+        return float(Fraction(text))
+    except (ValueError, ZeroDivisionError):
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+
+
+def count(text: str) -> int:
+    """A non-negative integer: 10000, 1e4 or 10^4."""
+    try:
+        if "^" in text:
+            base, exp = text.split("^")
+            value = int(base) ** int(exp)
+        else:
+            f = float(text)
+            value = int(f) if f == int(f) else -1
+    except (ValueError, OverflowError):
+        value = -1
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"expected a non-negative integer, got {text!r}")
+    return value
+
+
+def r_values(args):
+    """The r of ``--r`` or ``--r-range LO HI COUNT`` (COUNT values, ends included)."""
+    import numpy as np
+    if args.r_range is not None:
+        lo, hi, n = args.r_range
+        if n != int(n) or n < 1:
+            raise UsageError(f"--r-range COUNT must be a positive integer, not {n:g}")
+        r = np.linspace(lo, hi, int(n))
+    else:
+        r = np.array(args.r, dtype=float)
+    bad = [x for x in r if not 0 < x < 1]
+    if bad:
+        raise UsageError(f"r must lie in ]0,1[, got {bad[0]:g}")
+    return r
+
+
+def cmd_simulate(args) -> int:
+    """Iterate the reduction map from the paper's grid of initial data for every r."""
+    from certify import numerics
+    from certify.run import executors
+    from certify.run.files import atomic_path
+    r = r_values(args)
+    theta0, phi0 = numerics.grid(args.orbits)
+    if args.out is not None:
+        ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
+        if args.out.is_dir():
+            raise UsageError(f"--out {str(args.out)!r} is a directory, not a file")
+    if args.dps is not None and args.engine == "float64":
+        raise UsageError("--dps is for the mp and ball engines")
+    with executors.executor(args.jobs, args.scheduler) if args.engine != "float64" else nullcontext() as ex:
+        orbits = numerics.simulate(r, theta0, phi0, collisions=args.collisions, keep=args.keep,
+                                   engine=args.engine, dps=args.dps, executor=ex, progress=progress.Bar("r"))
+    if args.out is not None:
+        with atomic_path(args.out) as tmp, open(tmp, "wb") as handle:
+            orbits.save(handle)
+        print(f"wrote {args.out}")
+    print(orbits.summary())
+    return 0
+
+
+def cmd_stress(args) -> int:
+    """Near-singular, long and random orbits on every engine: reports/STRESS.md."""
+    from certify.numerics import stress
+    from certify.run.files import write_atomic
+    ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
+    text, silent = stress.report(quick=args.quick, progress=progress.Bar("case"))
+    write_atomic(args.out, text)
+    print(f"wrote {args.out}: {silent} silent wrong collision(s)")
+    return 1 if silent else 0
+
+
+def add_numerics(commands) -> None:
+    """The parsers of ``simulate`` and ``stress``."""
+    from certify.numerics.engines import ENGINES
+    p = commands.add_parser("simulate", help="iterate the reduction map numerically (Section 5)",
+                            description="The spherical billiard reduction iterated from collision to "
+                            "collision from the paper's grid of initial data (θ0, φ0) at a b-contact; "
+                            "keeps the φ of the last b-collisions.  Breaks: 1 undecided contact "
+                            "(|cos φ| below the rounding bound), 2 time step below precision, "
+                            "3 corner, 4 non-finite.")
+    which = p.add_mutually_exclusive_group(required=True)
+    which.add_argument("--r", nargs="+", type=number, metavar="R", help="restitution coefficients in ]0,1[")
+    which.add_argument("--r-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
+                       help="COUNT values from LO to HI, ends included (paper Figure 5.1: 0.072 0.999 3709)")
+    p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
+                   help="initial data per r: the first N of the paper's grid, 2 θ0 × 4 φ0 (default: 8)")
+    p.add_argument("--collisions", type=count, default=10_000, metavar="N", help="collisions per orbit (default: 10^4)")
+    p.add_argument("--keep", type=count, default=500, metavar="N",
+                   help="keep the φ of the last N b-collisions (default: 500)")
+    p.add_argument("--engine", choices=ENGINES, default="float64",
+                   help="float64 (numba, parallel), mp (mpmath at --dps), ball (certified arb, precision up to --dps)")
+    p.add_argument("--dps", type=positive_int, default=None, metavar="D",
+                   help="decimal digits: of mp (default 30), the cap of ball (default 3000)")
+    p.add_argument("--out", type=Path, default=None, metavar="FILE.npz",
+                   help="write r, theta0, phi0, phi, breaks, collisions (npz); else print a summary")
+    p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
+                   help="processes for the mp and ball engines (default: all cores)")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run the mp and ball orbits on this Dask scheduler instead")
+    p.set_defaults(func=cmd_simulate)
+
+    p = commands.add_parser("stress", help="stress the numerical engines against the certified one")
+    p.add_argument("--out", type=Path, default=DEFAULT_STRESS, metavar="FILE",
+                   help="the report (default: reports/STRESS.md)")
+    p.add_argument("--quick", action="store_true", help="smaller cases (a smoke test)")
+    p.set_defaults(func=cmd_stress)
 
 
 # --------------------------------------------------------------------------
@@ -300,6 +430,9 @@ def build_parser() -> Parser:
     p.add_argument("--long", action="store_true", help="with --reduction: also 10^4 collisions, 10^5 steps")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
                    help="time only the run on N processes (default: both --jobs 1 and all cores)")
+    p.add_argument("--numerics", action="store_true",
+                   help="time the numerical engines against error instead (benchmarks/bench_numerics.py)")
+    p.add_argument("--quick", action="store_true", help="with --numerics: smaller sizes (no BENCH.md)")
     p.set_defaults(func=cmd_bench)
 
     p = commands.add_parser("particles", help="simulate four particles exactly",
@@ -318,6 +451,7 @@ def build_parser() -> Parser:
     p.add_argument("--exact", action="store_true",
                    help="print every time as a full fraction, however long")
     p.set_defaults(func=cmd_particles)
+    add_numerics(commands)
     return parser
 
 

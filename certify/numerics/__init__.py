@@ -9,8 +9,8 @@ billiard reduction (Section 5 of the paper), from collision to collision, in flo
 - :mod:`.orbits`: :func:`simulate` over r and initial data, :class:`Orbits`.
 """
 from .engines import ENGINES, OrbitResult, run_orbit
-from .orbits import Orbits, paper_grid, simulate
+from .orbits import Orbits, grid, paper_grid, simulate
 from .rules import BREAKS, COMPLETED, CORNER, NONFINITE, SHORT_STEP, UNDECIDED
 
-__all__ = ["simulate", "Orbits", "paper_grid", "BREAKS", "ENGINES", "OrbitResult", "run_orbit",
+__all__ = ["simulate", "Orbits", "paper_grid", "grid", "BREAKS", "ENGINES", "OrbitResult", "run_orbit",
            "COMPLETED", "UNDECIDED", "SHORT_STEP", "CORNER", "NONFINITE"]

@@ -34,6 +34,20 @@ def paper_grid() -> tuple[np.ndarray, np.ndarray]:
     return theta0, phi0
 
 
+def grid(count: int) -> tuple[np.ndarray, np.ndarray]:
+    """``count`` initial data: the first ``count`` of :func:`paper_grid` when at most 8,
+    else 2 values of θ0 (π/6, π/3) times m = ⌈count/2⌉ of φ0 (π k/(m+1)), the first
+    ``count`` (θ0 outer)."""
+    if count <= 8:
+        theta0, phi0 = paper_grid()
+        return theta0[:count], phi0[:count]
+    m = -(-count // 2)
+    phis = [math.pi * k / (m + 1) for k in range(1, m + 1)]
+    theta0 = np.array([math.pi * t / 6 for t in (1, 2) for _ in phis])[:count]
+    phi0 = np.array([p for _ in (1, 2) for p in phis])[:count]
+    return theta0, phi0
+
+
 @dataclass
 class Orbits:
     """The result of :func:`simulate`: r (n_r,), theta0 and phi0 (n_orbits,), phi

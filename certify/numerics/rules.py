@@ -89,7 +89,9 @@ def float_rows(r) -> list[list[list[float]]]:
 
 def _scaled(z: int, shift: int) -> float:
     """z · 2^-shift correctly rounded (z may exceed the float range)."""
-    return float(Fraction(z, 1 << shift)) if shift >= 0 else float(z * (1 << -shift))
+    if shift < 900:                  # float(z) is correctly rounded, the power of 2 exact
+        return math.ldexp(float(z), -shift)
+    return float(Fraction(z, 1 << shift))
 
 
 def row_abs(rows) -> list[list]:

@@ -1,0 +1,86 @@
+/* The float64 reduction map as a plain C loop: the yardstick of bench_numerics.py.
+ *
+ * The same step as certify/numerics/kernel.py (rules.classify, rules.advance, the
+ * rounding bounds and the power-of-2 rescaling), one orbit, no storage.  Reads from
+ * stdin (as printed by bench_numerics.py, floats in hex "%a" form):
+ *     collisions repeat tol i0 n0[3] rows[27] absrows[9]
+ * rows[j*9 + m*3 + c] = cof(K_j)[m][c] as floats, absrows[j*3 + m] its row sums of |.|.
+ * Prints: code done checksum seconds_per_run (best of `repeat` runs).
+ *
+ *     cc -O2 -o loop benchmarks/loop.c -lm
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+static double now(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static const double BIG = 0x1p256, SMALL = 0x1p-256;
+
+static int run(long collisions, double tol, int i0, const double *n0, const double *rows,
+               const double *absrows, long *done, long *check) {
+    double n[3] = {n0[0], n0[1], n0[2]}, b[3];
+    double top = fmax(fabs(n[0]), fmax(fabs(n[1]), fabs(n[2])));
+    b[0] = b[1] = b[2] = tol * top;
+    int i = i0;
+    long h = 0;
+    for (long c = 0; c < collisions; c++) {
+        int j = (i + 1) % 3, k = (i + 2) % 3, nx;
+        if (!isfinite(n[0]) || !isfinite(n[1]) || !isfinite(n[2])) { *done = c; *check = h; return 4; }
+        if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) { *done = c; *check = h; return 3; }
+        if (n[j] < -b[j] || n[k] > b[k]) { *done = c; *check = h; return 3; }
+        if (n[j] <= b[j] || n[k] >= -b[k]) { *done = c; *check = h; return 2; }
+        if (n[i] > b[i]) nx = j;
+        else if (n[i] < -b[i]) nx = k;
+        else { *done = c; *check = h; return 1; }
+        const double *R = rows + 9 * nx;
+        top = fmax(fabs(n[0]), fmax(fabs(n[1]), fabs(n[2])));
+        double m0 = R[0] * n[0] + R[1] * n[1] + R[2] * n[2];
+        double m1 = R[3] * n[0] + R[4] * n[1] + R[5] * n[2];
+        double m2 = R[6] * n[0] + R[7] * n[1] + R[8] * n[2];
+        int t = (nx + 1) % 3;
+        double mt = t == 0 ? m0 : (t == 1 ? m1 : m2);
+        if (mt < 0.0) { m0 = -m0; m1 = -m1; m2 = -m2; }
+        double s = tol * top;
+        b[0] = s * absrows[3 * nx]; b[1] = s * absrows[3 * nx + 1]; b[2] = s * absrows[3 * nx + 2];
+        double nt = fmax(fabs(m0), fmax(fabs(m1), fabs(m2)));
+        if (nt > BIG || (nt < SMALL && nt > 0.0)) {
+            int e;
+            frexp(nt, &e);
+            double f = ldexp(1.0, -e);
+            m0 *= f; m1 *= f; m2 *= f; b[0] *= f; b[1] *= f; b[2] *= f;
+        }
+        n[0] = m0; n[1] = m1; n[2] = m2;
+        i = nx;
+        h = (h * 3 + nx) % 1000000007L;
+    }
+    *done = collisions;
+    *check = h;
+    return 0;
+}
+
+int main(void) {
+    long collisions, repeat;
+    double tol, n0[3], rows[27], absrows[9];
+    int i0;
+    if (scanf("%ld %ld %lf %d", &collisions, &repeat, &tol, &i0) != 4) return 2;
+    for (int a = 0; a < 3; a++) if (scanf("%lf", &n0[a]) != 1) return 2;
+    for (int a = 0; a < 27; a++) if (scanf("%lf", &rows[a]) != 1) return 2;
+    for (int a = 0; a < 9; a++) if (scanf("%lf", &absrows[a]) != 1) return 2;
+    long done = 0, check = 0;
+    int code = 0;
+    double best = 1e300;
+    for (long k = 0; k < repeat; k++) {
+        double t0 = now();
+        code = run(collisions, tol, i0, n0, rows, absrows, &done, &check);
+        double dt = now() - t0;
+        if (dt < best) best = dt;
+    }
+    printf("%d %ld %ld %.9g\n", code, done, check, best);
+    return 0;
+}
