@@ -347,7 +347,7 @@ def add_numerics(commands) -> None:
     p.add_argument("--engine", choices=ENGINES, default="float64",
                    help="float64 (numba, parallel), mp (mpmath at --dps), ball (certified arb, precision up to --dps)")
     p.add_argument("--dps", type=positive_int, default=None, metavar="D",
-                   help="decimal digits: of mp (default 30), the cap of ball (default 3000)")
+                   help="decimal digits: of mp (default 30), the cap of ball (default 5000)")
     p.add_argument("--out", type=Path, default=None, metavar="FILE.npz",
                    help="write r, theta0, phi0, phi, breaks, collisions (npz); else print a summary")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",

@@ -28,7 +28,7 @@ from . import kernel, rules
 ENGINES = ("float64", "mp", "ball")
 MP_DPS = 30                    # default digits of the mp engine
 BALL_START = 64                # first precision (bits) of the ball engine
-BALL_CAP_DPS = 3000            # default cap of the ball engine, decimal digits
+BALL_CAP_DPS = 5000          # default cap of the ball engine, decimal digits (~16600 bits)
 BITS_PER_DIGIT = math.log2(10)
 
 

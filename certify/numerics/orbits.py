@@ -153,7 +153,7 @@ def simulate(r, theta0, phi0, collisions: int = 10_000, keep: int = 500, engine:
 
     ``engine``: "float64" (numba, parallel over orbits; ``executor`` unused), "mp"
     (mpmath at ``dps`` digits, default 30) or "ball" (certified arb, precision raised
-    up to ``dps`` digits, default 3000).  ``executor``: a concurrent.futures Executor
+    up to ``dps`` digits, default 5000).  ``executor``: a concurrent.futures Executor
     for the mp and ball orbits (None: in this process).  ``progress(k, n, label)``:
     called as the work advances."""
     r, theta0, phi0 = _check(r, theta0, phi0, collisions, keep, engine)
