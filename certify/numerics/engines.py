@@ -38,7 +38,7 @@ class OrbitResult:
     collisions: int
     phi: np.ndarray                         # (keep,), NaN-padded at the front
     word: str = ""                          # the collision letters, when asked
-    checkpoints: dict = field(default_factory=dict)   # collision -> (letter index, normal as floats)
+    checkpoints: dict = field(default_factory=dict)   # collision -> (letter index, normal in the engine's numbers)
     bits: int = 53                          # the precision that gave this result
 
 
@@ -70,8 +70,7 @@ def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(
     return OrbitResult(int(code), int(done), phi)
 
 
-def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, checkpoints, sign, finite, phi,
-             to_float):
+def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, checkpoints, sign, finite, phi):
     """The generic loop of the mp and ball engines (rules.classify / rules.advance)."""
     ring, letters, cps = [], [], {}
     want = set(checkpoints)
@@ -91,7 +90,7 @@ def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, che
         if word:
             letters.append(rules.LETTERS[j])
         if done in want:
-            cps[done] = (j, tuple(to_float(z) for z in n))
+            cps[done] = (j, n)
     return code, done, ring, "".join(letters), cps
 
 
@@ -118,7 +117,7 @@ def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkp
         return float(ctx.atan2(ctx.hypot(v[2], v[0]), v[1]))
 
     code, done, ring, w, cps = _iterate(rules.INDEX[letter], n, bounds, rows, absrows, tolerance, collisions, keep,
-                                        word, checkpoints, rules.margin_sign, finite, phi, float)
+                                        word, checkpoints, rules.margin_sign, finite, phi)
     return OrbitResult(code, done, _ring_to_phi(ring, keep), w, cps, bits=ctx.prec)
 
 
@@ -133,11 +132,8 @@ def _ball_attempt(r, theta0, phi0, collisions, keep, word, checkpoints, letter, 
         def phi(v):
             return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
 
-        def to_float(z):
-            return float(z.mid())
-
         return _iterate(rules.INDEX[letter], n, (0, 0, 0), rows, None, None, collisions, keep, word, checkpoints,
-                        rules.ball_sign, flint.arb.is_finite, phi, to_float)
+                        rules.ball_sign, flint.arb.is_finite, phi)
 
 
 def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkpoints=(), letter=rules.START,
@@ -170,3 +166,16 @@ def task(engine, r, theta0, phi0, collisions, keep, dps):
     """A picklable unit of work for an executor: (phi, code, collisions) of one orbit."""
     res = run_orbit(engine, r, theta0, phi0, collisions, keep, dps)
     return res.phi, res.code, res.collisions
+
+
+def certified(r, theta0, phi0, collisions, checkpoints=(), dps=None, start_bits=BALL_START):
+    """The certified orbit as plain, picklable data (for a worker process): (break,
+    certified horizon, bits, word, {collision: (letter index, [(p, q)] the exact
+    midpoints of the normal's balls)})."""
+    res = ball_orbit(r, theta0, phi0, collisions, word=True, checkpoints=checkpoints, dps=dps, start_bits=start_bits)
+    cps = {}
+    with precision(res.bits):                  # mid() rounds to the working precision
+        for k, (j, n) in res.checkpoints.items():
+            mids = [z.mid().fmpq() for z in n]
+            cps[k] = (j, [(int(q.p), int(q.q)) for q in mids])
+    return res.code, res.collisions, res.bits, res.word, cps

@@ -1,0 +1,297 @@
+"""Run time against error of the numerical engines (certify.numerics), and the
+float64 kernel against a plain C loop of the same map.
+
+    python benchmarks/bench_numerics.py [--quick]
+    python -m certify bench --numerics [--quick]
+
+Measured in one run:
+
+* the float64 kernel, one core: map steps per second on a stable-window orbit
+  (r = 0.15, the (ab)^2(cb)^2 window) and a chaotic one (r = 0.5), against
+  ``benchmarks/loop.c`` compiled with ``cc -O2`` (same matrices, same checks, same
+  word: the checksums must agree); the ratio;
+* Figure 5.1 at the paper's resolution (3709 r × 8 orbits × 10^4 collisions) with
+  ``simulate`` on every core (numba threads), and on one;
+* for every engine and precision (float64; mp at 16, 30, 60, 120 digits; ball): the
+  time per collision and the error after 10^2, 10^3, 10^4 collisions against the
+  certified ball orbit (the sine of the angle between the normals; "word" when the
+  collision word already departed);
+* the horizon of trust: the collisions until the float64 (and mp 16) word departs
+  from the certified ball word, for the 8 orbits of the paper's grid at both r.
+
+Without --quick the tables go to reports/BENCH.md (section "numerics") and the plot
+to reports/figures/bench_numerics.png.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from concurrent.futures import ProcessPoolExecutor
+from datetime import date
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+if str(ROOT) not in sys.path:  # run as a script from a source checkout
+    sys.path.insert(0, str(ROOT))
+
+import flint  # noqa: E402
+import mpmath  # noqa: E402
+import numba  # noqa: E402
+import numpy as np  # noqa: E402
+
+from certify.numerics import engines, kernel, paper_grid, rules, simulate  # noqa: E402
+from certify.run import files  # noqa: E402
+
+BENCH = ROOT / "reports" / "BENCH.md"
+PLOT = ROOT / "reports" / "figures" / "bench_numerics.png"
+ORBITS = {"stable": 0.15, "chaotic": 0.5}
+MP_DPS = (16, 30, 60, 120)
+THETA, PHI = paper_grid()
+
+
+# --- speed ---------------------------------------------------------------------
+
+def kernel_input(r, orbit=0):
+    rows = np.array(rules.float_rows(r))
+    absrows = np.array(rules.row_abs(rows.tolist()))
+    n0 = np.array(rules.initial_normal(THETA[orbit], PHI[orbit]))
+    return rows, absrows, n0
+
+
+def float64_rate(r, steps, repeat=3):
+    """(steps per second, checksum) of the numba kernel, one core, best of ``repeat``."""
+    rows, absrows, n0 = kernel_input(r)
+    kernel.count_steps(1, n0, rows, absrows, rules.TOL64, 10)
+    best, out = float("inf"), None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        out = kernel.count_steps(1, n0, rows, absrows, rules.TOL64, steps)
+        best = min(best, time.perf_counter() - start)
+    return out[1] / best, out
+
+
+def c_rate(r, steps, repeat=3):
+    """(steps per second, (code, done, checksum)) of benchmarks/loop.c, or None without a compiler."""
+    cc = shutil.which("cc") or shutil.which("gcc")
+    if cc is None:
+        return None
+    rows, absrows, n0 = kernel_input(r)
+    with tempfile.TemporaryDirectory() as tmp:
+        exe = Path(tmp) / "loop"
+        subprocess.run([cc, "-O2", "-o", str(exe), str(ROOT / "benchmarks" / "loop.c"), "-lm"], check=True)
+        numbers = [rules.TOL64.hex(), "1"] + [float(x).hex() for x in [*n0, *rows.ravel(), *absrows.ravel()]]
+        text = f"{steps} {repeat} " + " ".join(numbers)
+        out = subprocess.run([str(exe)], input=text, capture_output=True, text=True, check=True).stdout.split()
+    code, done, check, seconds = int(out[0]), int(out[1]), int(out[2]), float(out[3])
+    return done / seconds, (code, done, check)
+
+
+def paper_sweep(threads, n_r=3709, collisions=10_000):
+    """Seconds of simulate() over n_r values of r in [0.072, 0.999] × the 8 grid orbits."""
+    numba.set_num_threads(threads)
+    r = np.linspace(0.072, 0.999, n_r)
+    simulate(r[:2], THETA, PHI, collisions=10, keep=5)
+    start = time.perf_counter()
+    out = simulate(r, THETA, PHI, collisions=collisions, keep=500)
+    seconds = time.perf_counter() - start
+    numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    return seconds, out
+
+
+# --- error -------------------------------------------------------------------
+
+def as_arb(z):
+    """An engine's number as an arb: a float or an mpf exactly, an fmpq at the working
+    precision, a ball by its midpoint."""
+    if isinstance(z, flint.arb):
+        return z.mid()
+    if isinstance(z, float):
+        return flint.arb(float(z))
+    if isinstance(z, flint.fmpq):
+        return flint.arb(z)
+    sign, man, exp, _ = z._mpf_
+    return (-1) ** sign * flint.arb(int(man)) * flint.arb(2) ** int(exp)
+
+
+def distance(n, m) -> float:
+    """sin of the angle between two normals (projective distance), at 4096 bits."""
+    old = flint.ctx.prec
+    flint.ctx.prec = 4096
+    try:
+        a, b = [as_arb(z) for z in n], [as_arb(z) for z in m]
+        c = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+        num = sum(z * z for z in c).sqrt()
+        den = (sum(z * z for z in a) * sum(z * z for z in b)).sqrt()
+        return float((num / den).mid())
+    finally:
+        flint.ctx.prec = old
+
+
+def departure(word, ref_word) -> int:
+    """The first collision (1-based) where ``word`` departs from ``ref_word``, or
+    -1 when it does not within both."""
+    for k, (x, y) in enumerate(zip(word, ref_word)):
+        if x != y:
+            return k + 1
+    return -1
+
+
+def errors(engine, dps, r, collisions, marks, ref):
+    """(seconds per collision, {mark: error or 'word'}) of one engine on orbit 0."""
+    code, done, bits, ref_word, ref_cps = ref
+    start = time.perf_counter()
+    res = engines.run_orbit(engine, r, THETA[0], PHI[0], collisions, dps=dps, word=True, checkpoints=marks)
+    seconds = (time.perf_counter() - start) / max(res.collisions, 1)
+    out = {}
+    for k in marks:
+        if k not in res.checkpoints or k not in ref_cps:
+            out[k] = "break"
+        elif departure(res.word[:k], ref_word[:k]) != -1:
+            out[k] = "word"
+        else:
+            ref_n = [flint.fmpq(p, q) for p, q in ref_cps[k][1]]
+            out[k] = distance(res.checkpoints[k][1], ref_n)
+    return seconds, out, res
+
+
+def fmt(e) -> str:
+    return e if isinstance(e, str) else ("0" if e == 0 else f"{e:.1e}")
+
+
+# --- main --------------------------------------------------------------------
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="bench --numerics", description=__doc__.split("\n")[0])
+    parser.add_argument("--quick", action="store_true", help="small sizes, nothing written")
+    args = parser.parse_args(argv)
+    quick = args.quick
+    steps = 10**6 if quick else 2 * 10**7
+    collisions = 1000 if quick else 10_000
+    marks = tuple(k for k in (100, 1000, 10_000) if k <= collisions)
+    lines = []
+
+    def say(text=""):
+        print(text, flush=True)
+        lines.append(text)
+
+    # 1. the kernel against C
+    speed = []
+    for name, r in ORBITS.items():
+        f_rate, f_out = float64_rate(r, steps)
+        c = c_rate(r, steps)
+        same = c is not None and tuple(c[1]) == tuple(int(x) for x in f_out)
+        speed.append((name, r, f_rate, c[0] if c else None, same))
+    # 2. the paper's sweep
+    cores = numba.config.NUMBA_NUM_THREADS
+    n_r = 371 if quick else 3709
+    t_all, sweep = paper_sweep(cores, n_r)
+    t_one, _ = paper_sweep(1, n_r) if not quick else (None, None)
+    # 3. references, horizons
+    grid = range(2 if quick else 8)
+    jobs = [(r, o) for r in ORBITS.values() for o in grid]
+    with ProcessPoolExecutor(cores) as pool:
+        futures = {job: pool.submit(engines.certified, job[0], THETA[job[1]], PHI[job[1]], collisions, marks,
+                                          12000, max(256, 2 * collisions)) for job in jobs}
+        refs = {job: f.result() for job, f in futures.items()}
+    horizon = {}
+    for (r, o), ref in refs.items():
+        for engine, dps in (("float64", None), ("mp", 16)):
+            res = engines.run_orbit(engine, r, THETA[o], PHI[o], collisions, dps=dps, word=True)
+            dep = departure(res.word, ref[3])
+            horizon[(r, o, engine)] = (dep, res.code, res.collisions, ref[1], ref[2])
+    # 4. run time against error, orbit 0 of the grid
+    table = []
+    setups = [("float64", None)] + [("mp", d) for d in MP_DPS] + [("ball", None)]
+    for engine, dps in setups:
+        row = [engine if dps is None else f"{engine} {dps} digits"]
+        for r in ORBITS.values():
+            ref = refs[(r, 0)]
+            if engine == "float64":
+                rate, _ = float64_rate(r, steps // 10, repeat=1)
+                _, errs, res = errors(engine, dps, r, collisions, marks, ref)
+                sec = 1 / rate
+            else:
+                sec, errs, res = errors(engine, dps, r, collisions, marks, ref)
+            if engine == "ball":
+                row[0] += f" {res.bits} bits at r={r}"
+            row += [sec * 1e6] + [errs[k] for k in marks]
+        table.append(row)
+
+    say(f"float64 kernel against benchmarks/loop.c (cc -O2), one core, {steps:.0e} steps:")
+    for name, r, f, c, same in speed:
+        ratio = f"{f / c:.2f}" if c else "no C compiler"
+        say(f"  {name} r = {r}: float64 {f / 1e6:.1f} M steps/s, C {c / 1e6 if c else float('nan'):.1f} M steps/s, "
+            f"ratio {ratio}, same word: {same}")
+    total = int(sweep.collisions.sum())
+    say(f"Figure 5.1 sweep ({n_r} r × 8 orbits × {collisions} collisions = {total:.3g} collisions): "
+        f"{t_all:.2f} s on {cores} threads" + (f", {t_one:.2f} s on one" if t_one else "")
+        + f"; breaks: {dict(zip(*np.unique(sweep.breaks, return_counts=True)))}")
+    head = "| engine | " + " | ".join(f"µs/coll. r={r} | " + " | ".join(f"err {k}" for k in marks)
+                                       for r in ORBITS.values()) + " |"
+    say("")
+    say(head)
+    say("|" + "---|" * (1 + len(ORBITS) * (1 + len(marks))))
+    for row in table:
+        cells = [row[0]] + [f"{x:.3g}" if isinstance(x, float) and i % (1 + len(marks)) == 0 else fmt(x)
+                            for i, x in enumerate(row[1:])]
+        say("| " + " | ".join(cells) + " |")
+    say("")
+    say("Horizon of trust (first collision where the word departs from the certified ball word; "
+        f"'>N' none within the N certified):")
+    for r in ORBITS.values():
+        for engine in ("float64", "mp"):
+            cells = []
+            for o in grid:
+                dep, code, done, ref_done, bits = horizon[(r, o, engine)]
+                cells.append(str(dep) if dep > 0 else f">{min(done, ref_done)}")
+            say(f"  r = {r}, {engine}{' 16 digits' if engine == 'mp' else ''}: " + ", ".join(cells))
+    bits = {r: max(horizon[(r, o, 'float64')][4] for o in grid) for r in ORBITS.values()}
+    say(f"  the certified reference (ball, started at {max(256, 2 * collisions)} bits) used: "
+        + ", ".join(f"r = {r}: {b} bits" for r, b in bits.items()))
+    if not quick:
+        plot(table, marks)
+        machine = (f"{date.today().isoformat()}, {os.cpu_count()} cores, {platform.machine()}, Python "
+                   f"{platform.python_version()}, numba {numba.__version__}, mpmath {mpmath.__version__} "
+                   f"(backend {mpmath.libmp.BACKEND}), python-flint {flint.__version__}")
+        body = (f"Measured by `python -m certify bench --numerics` on {machine}.  Errors: the sine of the angle "
+                "between the engine's normal and the certified ball normal after k collisions of the orbit "
+                f"(θ0, φ0) = ({THETA[0]:.4f}, {PHI[0]:.4f}) from b; 'word': the collision word had already "
+                "departed.  Plot: reports/figures/bench_numerics.png.\n\n```\n" + "\n".join(
+                    line for line in lines if not line.startswith("|")) + "\n```\n\n" + "\n".join(
+                    line for line in lines if line.startswith("|")))
+        files.write_section(BENCH, "numerics", body)
+        print(f"\nwrote {BENCH.relative_to(ROOT)} (section 'numerics') and {PLOT.relative_to(ROOT)}")
+    return 0
+
+
+def plot(table, marks):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(ORBITS), figsize=(10, 4), sharey=True)
+    width = 1 + len(marks)
+    for a, (ax, (name, r)) in enumerate(zip(axes, ORBITS.items())):
+        for row in table:
+            sec = row[1 + a * width]
+            err = row[1 + a * width + len(marks)]
+            if isinstance(err, float):
+                ax.loglog(sec, max(err, 1e-300), "o")
+                ax.annotate(row[0].split(" (")[0], (sec, max(err, 1e-300)), fontsize=7)
+        ax.set_title(f"{name} orbit, r = {r}: error after {marks[-1]} collisions")
+        ax.set_xlabel("µs per collision")
+    axes[0].set_ylabel("sin(angle to the certified normal)")
+    fig.tight_layout()
+    PLOT.parent.mkdir(parents=True, exist_ok=True)
+    with files.atomic_path(PLOT) as tmp:
+        fig.savefig(tmp, format="png", dpi=100)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
