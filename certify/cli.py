@@ -14,6 +14,9 @@
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
                                 collisions and their times (certify.dynamics.particles)
+    figures [--resolution preview|paper] [--only FIG ...] [--n4 NMAX] [--out DIR]
+                                Figures 5.1-5.8 into DIR/figures; paper: also
+                                DIR/numerics-paper.json; --n4: DIR/numerics-n4.json
     simulate (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N]
              [--keep N] [--engine float64|mp|ball] [--dps D] [--out FILE.npz]
              [--jobs N] [--scheduler ADDRESS]
@@ -452,7 +455,67 @@ def build_parser() -> Parser:
                    help="print every time as a full fraction, however long")
     p.set_defaults(func=cmd_particles)
     add_numerics(commands)
+    add_figures(commands)
     return parser
+
+
+# --------------------------------------------------------------------------
+# Figures 5.1-5.8 (certify.numerics.figures, drawn by certify.run.plots)
+
+FIGURE_DPI = {"preview": None, "paper": 150}
+
+
+def cmd_figures(args) -> int:
+    """Figures 5.1-5.8 at ``--resolution`` into DIR/figures (``fig5.2-paper.png``); at the
+    paper's resolution also DIR/numerics-paper.json, the findings N2-N7 quote; with
+    ``--n4 NMAX`` the windows of (ab)^n(cb)^n up to n = NMAX (mp), DIR/numerics-n4.json."""
+    import json
+    from certify.numerics import figures as numfig
+    from certify.run import plots
+    from certify.run.files import write_atomic
+    unknown = [f for f in args.only or () if f not in numfig.SPECS]
+    if unknown:
+        raise UsageError(f"unknown figure {unknown[0]!r} (one of {', '.join(numfig.SPECS)})")
+    out = prepare_output(args.out)
+    if args.n4 is not None:
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+        with ProcessPoolExecutor(args.jobs, mp_context=multiprocessing.get_context("fork")) as pool:  # one n per job
+            found = numfig.n4_search(args.n4, progress=progress.Bar("n"), executor=pool if args.jobs > 1 else None)
+        write_atomic(out / "numerics-n4.json", json.dumps(found, indent=1) + "\n")
+        print(f"N4: largest n with 2n accumulation points (mp): {found['largest_n_mp']}; "
+              f"float64: {found['largest_n_float64']}; {found['seconds']} s; wrote {out / 'numerics-n4.json'}")
+        if not args.only and args.resolution is None:
+            return 0
+    resolution = args.resolution or "preview"
+    datas, names = {}, []
+    with figures.output_dir(out / "figures"):
+        for fig in args.only or numfig.SPECS:
+            datas[fig] = numfig.compute(fig, resolution, progress=progress.Bar(f"figure {fig}"))
+            names.append(plots.section5_figure(datas[fig], dpi=FIGURE_DPI[resolution]))
+            print(f"figure {fig}: {len(datas[fig].r)} values of r, {int((datas[fig].breaks != 0).sum())} breaks, "
+                  f"{datas[fig].seconds:.1f} s -> {out / 'figures' / names[-1]}")
+    if resolution == "paper" and not args.only:
+        write_atomic(out / "numerics-paper.json", json.dumps(numfig.findings(datas), indent=1) + "\n")
+        print(f"wrote {out / 'numerics-paper.json'}")
+    return 0
+
+
+def add_figures(commands) -> None:
+    """The parser of ``certify figures``."""
+    p = commands.add_parser("figures", help="draw Figures 5.1-5.8 (Section 5)",
+                            description="Figures 5.1-5.8 of Section 5: the last kept b-angles φ of the paper's 8 "
+                            "orbits against r (float64), breaks as red dots at (r, π/2), the CDKK thresholds as red "
+                            "lines.  preview: the cheap version `certify all` draws; paper: the captions' grids, "
+                            "10^4 collisions, 500 kept (about a minute on two cores).")
+    p.add_argument("--resolution", choices=("preview", "paper"), default=None,
+                   help="preview (default) or the paper's parameters")
+    p.add_argument("--only", nargs="+", metavar="FIG", help="only these figures, e.g. 5.2 5.3a")
+    p.add_argument("--n4", type=positive_int, default=None, metavar="NMAX",
+                   help="find the windows of (ab)^n(cb)^n up to n = NMAX with the mp engine (minutes)")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    add_jobs(p)
+    p.set_defaults(func=cmd_figures)
 
 
 def describe(exc: BaseException) -> str:

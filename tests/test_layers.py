@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-LAYERS = ("algebra", "dynamics", "patterns", "run")
+LAYERS = ("algebra", "dynamics", "patterns", "numerics", "run")
 
 
 def lint(tree: Path) -> subprocess.CompletedProcess:

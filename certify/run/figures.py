@@ -22,6 +22,7 @@ metadata (which would carry the matplotlib version).
 from __future__ import annotations
 
 from contextlib import contextmanager
+from fnmatch import fnmatch
 from pathlib import Path
 
 import matplotlib
@@ -71,11 +72,11 @@ def figure_name(name: str) -> str:
     return name if name.endswith(".png") else name + ".png"
 
 
-def save_figure(fig, name: str) -> str:
+def save_figure(fig, name: str, dpi: int | None = None) -> str:
     """Write ``fig`` as ``NAME.png`` into the output directory, close it, return the name.
 
     The write is atomic (temporary file, then :func:`os.replace`).  With no
-    output directory set, nothing is written.
+    output directory set, nothing is written.  ``dpi``: default :data:`DPI`.
     """
     import matplotlib.pyplot as plt
 
@@ -83,14 +84,19 @@ def save_figure(fig, name: str) -> str:
     try:
         if _output_dir is not None:
             with atomic_path(_output_dir / name) as tmp:
-                fig.savefig(tmp, format="png", dpi=DPI, metadata={"Software": None})
+                fig.savefig(tmp, format="png", dpi=dpi or DPI, metadata={"Software": None})
     finally:
         plt.close(fig)
     return name
 
 
-def prune(directory, keep) -> list[str]:
-    """Delete the PNG files in ``directory`` whose names are not in ``keep``.
+KEPT = ("*-paper.png",)   # written by `certify figures --resolution paper` (minutes), never by a run
+
+
+def prune(directory, keep, kept=KEPT) -> list[str]:
+    """Delete the PNG files in ``directory`` whose names are not in ``keep`` and match
+    none of the patterns ``kept`` (the paper-resolution figures of Section 5, which
+    ``certify figures --resolution paper`` writes and the report only links to).
 
     Used after a complete run so that ``reports/figures`` holds exactly the
     figures the report shows.  Returns the deleted names.
@@ -100,7 +106,7 @@ def prune(directory, keep) -> list[str]:
         return []
     removed = []
     for path in sorted(directory.glob("*.png")):
-        if path.name not in keep:
+        if path.name not in keep and not any(fnmatch(path.name, pattern) for pattern in kept):
             path.unlink()
             removed.append(path.name)
     return removed

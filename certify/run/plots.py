@@ -97,3 +97,68 @@ def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=No
     ax.set_title(title, fontsize=9)
     ax.legend(loc="best", fontsize=7, markerscale=6)
     return figures.save_figure(fig, name)
+
+
+# --------------------------------------------------------------------------
+# Section 5: clouds of (r, φ) points (certify.numerics.figures)
+
+def omega_figure(data, name: str, lines: dict | None = None, boxes=(), title: str = "",
+                 size=(9.0, 5.0), dpi: int | None = None) -> str:
+    """A figure of Section 5: the kept angles φ of every orbit against r, drawn as the
+    pixels they hit (black), each break as a red dot at (r, π/2), the thresholds
+    ``lines`` ({label: r}) as red vertical lines, ``boxes`` ((r_lo, r_hi), ...) as red
+    rectangles.  ``dpi``: the resolution of the saved PNG (default: figures.DPI)."""
+    if not figures.enabled():
+        return figures.figure_name(name)
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+    lo, hi = float(data.spec.lo), float(data.spec.hi)
+    dpi = dpi or figures.DPI
+    fig, ax = plt.subplots(figsize=size)
+    width = max(int(size[0] * dpi * 0.8), 10)
+    height = max(int(size[1] * dpi * 0.8), 10)
+    r = np.broadcast_to(data.r[:, None, None], data.phi.shape)
+    ok = np.isfinite(data.phi)
+    span = (hi - lo) or 1.0
+    hits, _, _ = np.histogram2d(data.phi[ok], r[ok], bins=(height, width),
+                                range=((0.0, np.pi), (lo - span / (2 * width), hi + span / (2 * width))))
+    ax.imshow(hits > 0, origin="lower", aspect="auto", cmap="Greys", interpolation="nearest",
+              extent=(lo - span / (2 * width), hi + span / (2 * width), 0.0, np.pi), vmin=0, vmax=1)
+    broken = data.break_r()
+    if broken.size:
+        ax.plot(broken, np.full(broken.size, np.pi / 2), ".", color="red", ms=2.5, label=f"breaks ({broken.size})")
+    for label, value in (lines or {}).items():
+        if lo <= value <= hi:
+            ax.axvline(value, color="red", lw=0.8)
+            ax.annotate(label, (value, 1.0), xycoords=("data", "axes fraction"), fontsize=6, rotation=90,
+                        va="top", ha="right", color="red")
+    for b_lo, b_hi in boxes:
+        ax.add_patch(Rectangle((b_lo, 0.02), b_hi - b_lo, np.pi - 0.04, fill=False, edgecolor="red", lw=1.0))
+    ax.set_xlim(lo - span / (2 * width), hi + span / (2 * width))
+    ax.set_ylim(0, np.pi)
+    ax.set_xlabel("r")
+    ax.set_ylabel("φ")
+    ax.set_title(title, fontsize=8)
+    if broken.size:
+        ax.legend(loc="upper right", fontsize=7)
+    fig.tight_layout()
+    return figures.save_figure(fig, name, dpi=dpi)
+
+
+def section5_name(fig: str, resolution: str) -> str:
+    """The file of Figure ``fig`` at ``resolution``: ``fig5.2-preview.png``, ``fig5.2-paper.png``
+    (the paper-resolution files are kept by ``certify all``: figures.KEPT)."""
+    return f"fig{fig}-{resolution}.png"
+
+
+def section5_figure(data, dpi: int | None = None) -> str:
+    """Figure ``data.spec.id`` of Section 5 drawn from a run of certify.numerics.figures,
+    with the paper's red lines (CDKK thresholds L4, r_exist L3) and red rectangles."""
+    from certify.numerics import figures as numfig
+    spec = data.spec
+    orbits = data.phi.shape[1]
+    title = (f"Figure {spec.id} ({spec.label}, {data.resolution}): {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
+             f"{orbits} orbit{'s' if orbits != 1 else ''}, last {data.keep} b-collisions of {data.collisions}, "
+             f"{data.engine}")
+    return omega_figure(data, section5_name(spec.id, data.resolution), lines=numfig.red_lines(), boxes=spec.boxes,
+                        title=title, dpi=dpi)

@@ -98,6 +98,25 @@ def conclude(printed: list[Check], corrected: list[Check] | None = None,
     return Outcome(status, printed, corrected, evidence or [], figures or [], note)
 
 
+AGREES = "The observation agrees with the printed statement."
+DISAGREES = "The observation does not agree with the printed statement"
+
+
+def observe(printed: list[Check], evidence: list[str] | None = None, figures: list[str] | None = None,
+            note: str = "") -> Outcome:
+    """The verdict of a numerical observation (Section 5): OBSERVED, never PASS, with a
+    note that says whether what was seen agrees with the printed statement (every
+    printed check that counts holds) or not (naming the checks that do not hold).
+    FAIL only when a consistency check fails (the engine itself is in doubt) or there
+    is nothing to compare."""
+    evidence_checks = [c for c in printed if c.counts]
+    consistent = all(holds(c) for c in printed if not c.counts)
+    wrong = [" ".join(str(c.statement).split()) for c in evidence_checks if not holds(c)]
+    head = AGREES if not wrong else DISAGREES + ": " + "; ".join(wrong) + "."
+    status = OBSERVED if consistent and evidence_checks else FAIL
+    return Outcome(status, printed, [], evidence or [], figures or [], (head + " " + note).strip())
+
+
 @dataclass
 class Certificate:
     id: str

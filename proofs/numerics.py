@@ -1,0 +1,385 @@
+"""Section 5, the numerical simulations (l. 1053-1210): N1-N7, observed, never proven.
+
+Each certificate reads the numbers and words printed in the paper (``printed=``),
+runs the float64 engine (certify.numerics) at the *preview* resolution of the figures
+(a regular sub-grid of the paper's r values, 2000 collisions, the last 200 b-angles)
+plus a few probes with the paper's lengths (10^4 collisions, 500 kept), and says
+whether what it sees agrees with the print (:func:`certify.run.observe`: status
+OBSERVED with "agrees" / "does not agree").  The figures at the paper's resolution
+are drawn by ``python -m certify figures --resolution paper``, which also writes
+``reports/numerics-paper.json``; ``--n4 NMAX`` writes ``reports/numerics-n4.json``.
+The certificates quote those committed findings in their notes.
+
+Floats decide nothing here: an accumulation-point count is a count of clusters of
+kept angles (gap 10^-3 rad, each narrower than 10^-6 rad), an observation with its
+tolerances stated (certify.numerics.figures).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from certify.numerics import BREAKS, figures as F, paper_grid
+from certify.run import Check, certificate, observe, quantity, section5_figure
+
+PAPER_FINDINGS = "numerics-paper.json"
+N4_FINDINGS = "numerics-n4.json"
+
+
+def number(text) -> float:
+    """A printed number: ``10^4``, ``5\\times 10^2``, ``2.5e-4``, ``0.072``."""
+    t = str(text).replace("\\times", "*").replace("×", "*").replace("^", "**").replace(" ", "")
+    if not all(ch in "0123456789.*e-+" for ch in t):
+        raise ValueError(f"cannot read the printed number {text!r}")
+    return float(eval(t, {"__builtins__": {}}, {}))  # digits and * ** only (checked above)
+
+
+@quantity("section5_preview")
+def section5_preview():
+    """The preview runs of Figures 5.1-5.8 (float64), one run per figure (magnifications reuse 5.2)."""
+    return {fig: F.compute(fig, "preview") for fig in F.SPECS}
+
+
+def paper_note(key: str, render) -> str:
+    """The committed paper-resolution finding ``key``, rendered, or a pointer to the command."""
+    found = F.load_findings(PAPER_FINDINGS)
+    if not found or key not in found:
+        return ("Paper resolution: not computed in this checkout (run `python -m certify figures "
+                "--resolution paper`).")
+    return "Paper resolution (`certify figures --resolution paper`, committed in reports/numerics-paper.json): " \
+        + render(found[key])
+
+
+def figure_links(*figs: str) -> str:
+    """Links to the committed paper-resolution PNGs."""
+    return " Figures at the paper's resolution: " + ", ".join(
+        f"[{f}](figures/fig{f}-paper.png)" for f in figs) + "."
+
+
+# --------------------------------------------------------------------------
+# N1: the setup
+
+PRINTED_N1 = dict(
+    collisions="10^4", kept="5\\times 10^2", theta_values="2", phi_values="4",
+    velocity=("cos(theta)*cos(phi)", "sin(phi)", "-sin(theta)*cos(phi)"),
+    breaks=("the difference between two collision times becomes smaller than the computer precision",
+            "|cos(phi)| is smaller than the computer precision"),
+)
+
+
+@certificate("N1", "l. 1060-1069",
+             "Setup: trajectories computed to the 10^4-th collision, the last 5×10^2 b-collisions kept, "
+             "8 orbits per r (2 θ0 × 4 φ0), φ from q(b_n) = (cos θ cos φ, sin φ, −sin θ cos φ); break rules "
+             "when a time step or |cos φ| is below the precision.", printed=PRINTED_N1)
+def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
+    """The figures' parameters are the printed ones; the engine's φ is the printed φ; its
+    break rules are the printed two (and two more that the print does not need)."""
+    theta0, phi0 = paper_grid()
+    checks = [
+        Check(f"the figures at the paper's resolution run to the {collisions}-th collision",
+              F.PAPER["collisions"] == number(collisions), [f"certify.numerics.figures.PAPER = {F.PAPER}"]),
+        Check(f"they keep the last {kept} b-collisions", F.PAPER["keep"] == number(kept)),
+        Check(f"the orbits of a figure are a regular grid of {theta_values} values of θ0 × {phi_values} of φ0",
+              len(set(np.round(theta0, 12))) == number(theta_values) and len(set(np.round(phi0, 12))) == number(phi_values)
+              and len(theta0) == number(theta_values) * number(phi_values),
+              [f"θ0 = {sorted(set(np.round(theta0, 6)))}, φ0 = {sorted(set(np.round(phi0, 6)))} (paper_grid; the "
+               "paper does not print its grid)"]),
+    ]
+    # the φ the engine keeps is the φ of the printed velocity q(b_n)
+    env = {"cos": math.cos, "sin": math.sin}
+    worst, samples = 0.0, [(0.3, 0.4), (1.1, 2.5), (0.7, 1.6), (1.4, 0.05), (0.2, 3.0)]
+    for theta, phi in samples:
+        p = (math.sin(theta), 0.0, math.cos(theta))            # p(b_n) at contact b (l. 894)
+        q = tuple(eval(e, {"__builtins__": {}}, {**env, "theta": theta, "phi": phi}) for e in velocity)
+        worst = max(worst, abs(F.phi_at_b(p, q) - phi))
+    checks.append(Check(f"the angle the engine keeps is the φ of q(b_n) = ({', '.join(velocity)})", worst < 1e-12,
+                        [f"largest |φ_engine − φ| over {len(samples)} states: {worst:.1e}"]))
+    names = list(BREAKS.values())
+    rules = {"time": any("time step" in b for b in names), "cos": any("cos φ" in b for b in names)}
+    printed_rules = [("time" if "collision times" in b else "cos" if "cos" in b else None) for b in breaks]
+    checks.append(Check("the engine breaks on each printed rule: " + "; ".join(breaks),
+                        all(k is not None and rules[k] for k in printed_rules),
+                        ["the engine's break codes: " + "; ".join(f"{c}: {b}" for c, b in BREAKS.items())]))
+    return observe(checks, note="The paper does not print its 8 initial data; ours are θ0 ∈ {π/6, π/3}, "
+                                "φ0 ∈ {π/5, 2π/5, 3π/5, 4π/5} at contact b.")
+
+
+# --------------------------------------------------------------------------
+# N2: Figure 5.1
+
+PRINTED_N2 = dict(lo="0.072", hi="0.999", step="2.5\\times 10^{-4}", count="3709",
+                  windows_below="0.17", chaos_until="0.9", discrete_near="1", breaks_near="0.072")
+
+
+@certificate("N2", "l. 1071-1094",
+             "Figure 5.1, 0.072 ≤ r ≤ 0.999, Δr = 2.5e-4 (3709 values): windows of stability for r ≤ 0.17, "
+             "apparent chaos up to r ≈ 0.9, discrete ω-limit sets near r = 1, breaks accumulating near r ≈ 0.072.",
+             needs=("section5_preview",), printed=PRINTED_N2)
+def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until, discrete_near, breaks_near):
+    """The preview of Figure 5.1 and a probe near r = 0.072 with the paper's lengths."""
+    lo_, hi_, step_, count_ = number(lo), number(hi), number(step.replace("{", "").replace("}", "")), number(count)
+    below, until, near1, near_b = (number(x) for x in (windows_below, chaos_until, discrete_near, breaks_near))
+    d = section5_preview["5.1"]
+    spec = F.SPECS["5.1"]
+    points_below = F.fraction(d, lo_, below, lambda w: w.discrete)
+    points_above = F.fraction(d, below + 0.01, until, lambda w: w.discrete)
+    spread = F.fraction(d, below + 0.01, until, lambda w: w.kind == "spread")
+    top = F.fraction(d, near1 - 0.01, near1, lambda w: w.visually_discrete)
+    edge = F.probe(np.linspace(0.072, 0.0745, 11))
+    breaks = np.concatenate([d.break_r(), edge.break_r()])
+    checks = [
+        Check(f"the printed grid is consistent: {lo} + k·{step}, k < {count}, ends at {hi}",
+              abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and spec.count == count_ and spec.lo == lo_ and spec.hi == hi_,
+              [f"{lo} + ({count} − 1)·{step_:g} = {lo_ + (count_ - 1) * step_:.6f}"]),
+        Check(f"windows of stability for r ≤ {windows_below}: the 8 orbits converge to finitely many points on a "
+              f"good part (≥ 30 %) of the r values there, and on few (< 10 %) of those in [{below + 0.01:g}, {until:g}]",
+              points_below[0] >= 0.3 and points_above[0] < 0.1,
+              [f"finitely many points: {points_below[0]:.0%} of {points_below[1]} r in [{lo}, {windows_below}], "
+               f"{points_above[0]:.0%} of {points_above[1]} r in [{below + 0.01:g}, {chaos_until}]"]),
+        Check(f"apparent chaos up to r ≈ {chaos_until}: the orbits spread (more than {F.MAX_PIECES} clusters) for "
+              f"most (≥ 70 %) r in [{below + 0.01:g}, {until:g}]", spread[0] >= 0.7,
+              [f"spread at {spread[0]:.0%} of {spread[1]} values of r"]),
+        Check(f"discrete ω-limit sets near r = {discrete_near}: in [{near1 - 0.01:g}, {near1:g}] every orbit's points "
+              f"lie in at most {F.MAX_PIECES} clusters narrower than a pixel (π/1000)", top[1] > 0 and top[0] == 1.0,
+              [f"{top[0]:.0%} of {top[1]} values of r"]),
+        Check(f"breaks accumulate near r ≈ {breaks_near}: the engine breaks, and only within 0.005 of it",
+              breaks.size > 0 and bool(np.all(np.abs(breaks - near_b) <= 0.005)),
+              [f"{breaks.size} breaks (preview and a probe of 11 r in [0.072, 0.0745], 10^4 collisions), at r in "
+               f"[{breaks.min():.5f}, {breaks.max():.5f}]" if breaks.size else "no break"]),
+    ]
+    note = paper_note("5.1", lambda s: f"{s['r'][2]} values of r, {s['breaks']['count']} breaks at r in "
+                      f"[{s['breaks']['r_min']}, {s['breaks']['r_max']}]; ω-kinds per r: {s['kinds']}.") \
+        + figure_links("5.1")
+    return observe(checks, figures=[section5_figure(d)], note=note)
+
+
+# --------------------------------------------------------------------------
+# N3: Figure 5.2, accumulation points per window
+
+PRINTED_N3 = dict(lo="0.075", hi="0.192", step="2.5\\times 10^{-5}", count="4681",
+                  points=("4", "6", "8", "10"), windows=("(ab)^2(cb)^2", "(ab)^3(cb)^3", "third", "fourth"))
+
+
+@certificate("N3", "l. 1096-1128",
+             "Figure 5.2, 0.075 ≤ r ≤ 0.192, Δr = 2.5e-5 (4681 values): the orbits accumulate around 4 points in "
+             "the (ab)^2(cb)^2 window, 6 in the (ab)^3(cb)^3 window, 8 and 10 in the next two.",
+             needs=("section5_preview",), printed=PRINTED_N3)
+def figure_5_2(section5_preview, lo, hi, step, count, points, windows):
+    """Clusters of the kept φ of the 8 orbits, counted at each r of each window (from the
+    next threshold of L4, or the lower end of L5, to the window's upper threshold)."""
+    lo_, hi_, step_, count_ = number(lo), number(hi), number(step.replace("{", "").replace("}", "")), number(count)
+    d = section5_preview["5.2"]
+    probes = F.probe(F.n3_window_probes())
+    stats = F.n3_stats(d, probes)
+    checks = [Check(f"the printed grid is consistent: {lo} + k·{step}, k < {count}, ends at {hi}",
+                    abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and F.SPECS["5.2"].count == count_)]
+    for n, want, name in zip((2, 3, 4, 5), points, windows):
+        s = stats[str(n)]
+        checks.append(Check(f"{want} accumulation points in the {name} window (n = {n}, r in "
+                            f"[{s['window'][0]:.5f}, {s['window'][1]:.5f}])",
+                            s["count"] == int(number(want)),
+                            [f"most frequent count {s['count']} at {s['shown_by']} of {s['of']} values of r; all counts "
+                             f"(count: values of r; none = not finitely many points): {s['counts']}"]))
+    note = paper_note("n3", lambda s: "; ".join(
+        f"n = {n}: {v['count']} points at {v['shown_by']} of {v['of']} values of r" for n, v in s.items()) + ".") \
+        + figure_links("5.2", "5.3a")
+    return observe(checks, figures=[section5_figure(d), section5_figure(section5_preview["5.3a"])], note=note)
+
+
+# --------------------------------------------------------------------------
+# N4: below r ≈ 0.078, (ab)^n(cb)^n for n ≥ 6
+
+PRINTED_N4 = dict(r_below="0.078", n_from="6", accumulate_above="7-4\\sqrt{3}")
+
+
+@certificate("N4", "l. 1128-1130",
+             "For r below 0.078 the program cannot detect (ab)^n(cb)^n for n ≥ 6 (the dominant eigenvector of "
+             "J(BA)^n has a component below the computer precision); the windows should exist for every n ≥ 2, "
+             "accumulating above 7-4√3.", printed=PRINTED_N4)
+def below_0078(r_below, n_from, accumulate_above):
+    """Our float64 engine at r just below r_max(n) for n = n_from..n_from+4 (8 orbits, 10^4
+    collisions); the smallest component of the dominant eigenvector of M_w (mpmath); the
+    committed mp search of ``certify figures --n4``."""
+    n0 = int(number(n_from))
+    committed = F.load_findings(N4_FINDINGS)
+    ev, checks = [], []
+    th = {n: F.R_MAX[n] for n in F.R_MAX}
+    if committed:
+        th.update({int(n): v["mp"]["r_max"] for n, v in committed["windows"].items()})
+    missing = [n for n in range(n0, n0 + 6) if n not in th]
+    for n in missing:
+        th[n] = float(F.upper_threshold(n, 20))
+    rs = [th[n] - 0.05 * (th[n] - th[n + 1]) for n in range(n0, n0 + 5)]
+    d = F.probe(rs)
+    seen = {n: F.accumulation_points(d, int(np.argmin(np.abs(d.r - r)))) for n, r in zip(range(n0, n0 + 5), rs)}
+    followed = [n for n in seen if seen[n] == 2 * n]
+    checks.append(Check(f"a float64 program cannot follow (ab)^n(cb)^n for n ≥ {n_from} below r = {r_below}",
+                        not followed,
+                        [f"our float64 engine (margin rule, rescaled normals), at r = r_max(n) − 5 % of the gap to "
+                         f"r_max(n+1): " + ", ".join(f"n = {n}: {seen[n]} points" for n in seen)]))
+    r6 = th[n0] - 0.05 * (th[n0] - th[n0 + 1])
+    small = F.min_component(n0, r6)
+    checks.append(Check(f"at n = {n_from} the dominant eigenvector has a component below the float64 precision "
+                        f"(2^-52 ≈ 2.2e-16, relative to its largest)", small < 2.0 ** -52,
+                        [f"min |e_i| / max |e_i| = {small:.2e} at r = {r6:.10f} (mpmath, {F.digits_for(n0)} digits; M_w with "
+                         f"w = (ab)^{n0}(cb)^{n0}, whose dominant eigenvector is that of J(BA)^n up to the order "
+                         "of the product)"]))
+    if committed:
+        ns = [int(n) for n in committed["ns"]]
+        found = [n for n in ns if committed["windows"][str(n)]["mp"]["found"]]
+        rmax = [committed["windows"][str(n)]["mp"]["r_max"] for n in ns]
+        below = [committed["windows"][str(n)].get("min_component") for n in ns]
+        rcrit = 7 - 4 * math.sqrt(3)
+        checks.append(Check(f"the windows exist beyond n = {n_from}: with enough digits (mp engine) the orbits "
+                            "converge to 2n points and follow (ab)^n(cb)^n for every n tried",
+                            found == ns, [f"n tried: {ns}; found: {found}; largest n: {committed['largest_n_mp']}"]))
+        checks.append(Check(f"they accumulate above {accumulate_above}: r_max(n) decreases to 7-4√3 ≈ {rcrit:.6f}, "
+                            "staying above it", all(a > b > rcrit for a, b in zip(rmax, rmax[1:])),
+                            [", ".join(f"r_max({n}) = {r:.10f}" for n, r in zip(ns, rmax))]))
+        f64 = committed.get("largest_n_float64")
+        ev.append(f"committed search (`certify figures --n4 {max(ns)}`, {committed['seconds']} s): mp engine at "
+                  f"40 + 1.5n digits, 2 orbits, max(10^4, 400n) collisions, r = r_max(n) − f (r_max(n) − r_max(n+1)) "
+                  f"for f = 0.05, 0.2; float64 at the same r: largest n {f64}. Smallest relative component of the "
+                  "dominant eigenvector: " + ", ".join(f"n = {n}: {c:.1e}" for n, c in zip(ns, below) if c))
+    else:
+        checks.append(Check("the windows exist beyond n = 6 (mp search)", False,
+                            ["no committed search: run `python -m certify figures --n4 NMAX`"]))
+    note = ("The thresholds r_max(n) for n > 6 are computed numerically (mpmath: the root of q_2(0) = 0 for the "
+            "dominant eigenvector of M_w, CLAIMS L6; for n = 2..6 they reproduce the printed values of L4). "
+            "The printed n ≥ 6 is a property of the paper's program: ours, in float64 with the same precision, "
+            "follows the pattern further, and fails where the printed mechanism says it must, when the smallest "
+            "component of the eigenvector falls below 2^-52 (n = 13).")
+    return observe(checks, evidence=ev, note=note)
+
+
+# --------------------------------------------------------------------------
+# N5: the transitory region
+
+PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="10^{-6}", count="5001")
+
+
+@certificate("N5", "l. 1148-1160",
+             "Transitory region 0.172 ≤ r ≤ 0.176: the orbits accumulate on finitely many points for r fixed; "
+             "Figure 5.4 at Δr = 1e-6 (5001 values, 0.171 ≤ r ≤ 0.176).", needs=("section5_preview",),
+             printed=PRINTED_N5)
+def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count):
+    """The kind of ω-limit of the 8 orbits at 21 values of r in the printed region and 9 just
+    above it (10^4 collisions, 500 kept); the figures are the previews of 5.3b and 5.4."""
+    lo_, hi_, flo, fhi = (number(x) for x in (lo, hi, fig_lo, fig_hi))
+    step_, count_ = number(step.replace("{", "").replace("}", "")), number(count)
+    d = section5_preview["5.4"]
+    inside = F.probe(np.linspace(lo_, hi_, 21))
+    above = F.probe(np.linspace(hi_ + 0.002, hi_ + 0.006, 9))
+    finite = F.fraction(inside, lo_, hi_, lambda w: w.few_points)
+    outside = F.fraction(above, hi_ + 0.002, hi_ + 0.006, lambda w: w.few_points)
+    counts = sorted({w.clusters for w in F.per_r(inside) if w.few_points})
+    checks = [
+        Check(f"the printed grid is consistent: {fig_lo} + k·{step}, k < {count}, ends at {fig_hi}",
+              abs(flo + (count_ - 1) * step_ - fhi) < 1e-9 and F.SPECS["5.4"].count == count_),
+        Check(f"for most r in [{lo}, {hi}] (≥ 50 %) the orbits accumulate on finitely many points (at most "
+              f"{F.FEW} clusters, each narrower than a pixel, π/1000)",
+              finite[0] >= 0.5, [f"{finite[0]:.0%} of {finite[1]} values of r; the numbers of points seen: {counts}"]),
+        Check(f"the region is transitory: just above it ([{hi_ + 0.002:g}, {hi_ + 0.006:g}]) this is rare (< 20 %)",
+              outside[0] < 0.2, [f"{outside[0]:.0%} of {outside[1]} values of r"]),
+    ]
+    note = paper_note("n5", lambda s: f"finitely many points at {s['finite']:.0%} of {s['of']} values of r in "
+                      f"[0.172, 0.176]; the numbers of points seen: {s['counts']}.") + figure_links("5.3b", "5.4")
+    return observe(checks, figures=[section5_figure(section5_preview["5.3b"]), section5_figure(d)], note=note)
+
+
+# --------------------------------------------------------------------------
+# N6: thin stripes
+
+PRINTED_N6 = dict(stripes=("0.1845", "0.1896"), special="0.184525", lo="0.1845", hi="0.1846", step="10^{-7}",
+                  count="1001")
+
+
+@certificate("N6", "l. 1162-1208",
+             "Thin stripes near r ≈ 0.1845 and r ≈ 0.1896; at r ≈ 0.184525 all orbits have discrete ω-limit sets; "
+             "Figures 5.5-5.8 at Δr = 1e-7 (1001 values, 0.1845 ≤ r ≤ 0.1846).", needs=("section5_preview",),
+             printed=PRINTED_N6)
+def stripes(section5_preview, stripes, special, lo, hi, step, count):
+    """Probes at Δr = 2.5e-5 (the step of Figure 5.2) around each printed stripe: the coverage of
+    [0, π] by the 8 orbits drops there; a probe at Δr = 1e-7 around the printed special value:
+    the r where the widest cluster of any orbit is narrowest, and whether every orbit is discrete."""
+    lo_, hi_, step_, count_, r_star = (number(x.replace("{", "").replace("}", ""))
+                                       for x in (lo, hi, step, count, special))
+    checks = [Check(f"the printed grid is consistent: {lo} + k·{step}, k < {count}, ends at {hi}",
+                    abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and F.SPECS["5.6"].count == count_)]
+    for s in stripes:
+        c = number(s)
+        scan = F.stripe_scan(F.probe(c + 2.5e-5 * np.arange(-8, 9)))
+        others = [row[1] for row in scan]
+        best = scan[0]
+        checks.append(Check(f"a thin stripe near r ≈ {s}: within 2·10^-4 of it the coverage of [0, π] by the orbits "
+                            "has a sharp minimum (below half the median), within 10^-4 of the printed value",
+                            abs(best[0] - c) <= 1e-4 and best[1] < 0.5 * float(np.median(others)),
+                            [f"lowest coverage {best[1]:.3f} ({best[2]}) at r = {best[0]:.6f}; median "
+                             f"{np.median(others):.3f} over 17 values of r at Δr = 2.5e-5"]))
+    fine = F.probe(r_star + 1e-7 * np.arange(-20, 21))
+    widest = F.widest_orbit(fine)
+    k = int(np.argmin(widest))
+    ends = float(min(widest[0], widest[-1]))
+    checks.append(Check(f"at r ≈ {special} all orbits have discrete ω-limit sets: the r where the widest cluster "
+                        f"of the 8 orbits is narrowest lies within 2·10^-6 of {special}, and there every orbit's "
+                        "points lie in clusters narrower than a pixel (π/1000), unlike 2·10^-6 away",
+                        abs(fine.r[k] - r_star) <= 2e-6 and widest[k] < F.PIXEL < ends,
+                        [f"narrowest at r = {fine.r[k]:.7f}: widest cluster {widest[k]:.1e} rad, clusters per orbit "
+                         f"{[F.omega(fine.phi[k, m]).clusters for m in range(fine.phi.shape[1])]}; at r ± 2e-6: "
+                         f"{widest[0]:.1e}, {widest[-1]:.1e} rad (41 values of r at Δr = 1e-7, 10^4 collisions)"]))
+    figs = [section5_figure(section5_preview[f]) for f in ("5.5", "5.6", "5.7", "5.8")]
+    note = paper_note("n6", lambda s: f"lowest coverages in Figure 5.5 at r = {s['stripes']}; in Figure 5.6 the "
+                      f"widest cluster is narrowest at r = {s['special_r']:.7f} ({s['special_width']:.1e} rad).") \
+        + figure_links("5.5", "5.6", "5.7", "5.8")
+    return observe(checks, figures=figs, note=note)
+
+
+# --------------------------------------------------------------------------
+# N7: quasi-periodicity
+
+PRINTED_N7 = dict(grows_below="1", not_discrete_at="0.92")
+
+
+@certificate("N7", "l. 1088-1094, 1200-1208",
+             "The ω-limit sets look like finite unions of intervals, growing as r decreases from 1 and not "
+             "discrete at r ≈ 0.92; each orbit may cover only part of [0, π] while the union is dense "
+             "(quasi-periodicity).", needs=("section5_preview",), printed=PRINTED_N7)
+def quasi_periodic(section5_preview, grows_below, not_discrete_at):
+    """Cluster counts and widths of each orbit's kept φ (gap 10^-3): near r = 1, in the region
+    of apparent chaos, and in the thin stripe."""
+    top, r92 = number(grows_below), number(not_discrete_at)
+    rs = [top - 0.001, top - 0.01, top - 0.03, top - 0.05, r92]
+    d = F.probe(rs)
+    widths = {float(r): float(np.median(F.orbit_widths(d, k))) for k, r in enumerate(d.r)}
+    order = sorted(widths, reverse=True)
+    grows = all(widths[a] < widths[b] for a, b in zip(order, order[1:]))
+    k92 = int(np.argmin(np.abs(d.r - r92)))
+    at92 = F.per_orbit(d, k92)
+    chaos = F.probe(np.linspace(0.2, 0.9, 8))
+    single = [np.mean([F.omega(chaos.phi[k, m]).coverage for m in range(chaos.phi.shape[1])]) for k in range(len(chaos.r))]
+    union = [F.coverage(chaos.phi[k]) for k in range(len(chaos.r))]
+    stripe = section5_preview["5.6"]
+    coarse = F.PIECE_GAP
+    pieces = [F.omega(x.phi[k, m], gap=coarse).clusters for x in (stripe, chaos)
+              for k in range(len(x.r)) for m in range(x.phi.shape[1]) if x.breaks[k, m] == 0]
+    checks = [
+        Check(f"the ω-limit sets grow as r decreases from {grows_below}: the median width of the orbits' widest "
+              "cluster increases", grows, [", ".join(f"r = {r:g}: {widths[r]:.1e} rad" for r in order)]),
+        Check(f"they are not discrete at r ≈ {not_discrete_at}: some orbit has a cluster wider than a pixel (π/1000)",
+              any(w.width > F.PIXEL for w in at92),
+              [f"clusters per orbit {[w.clusters for w in at92]}, widest {max(w.width for w in at92):.1e} rad"]),
+        Check("in the region of apparent chaos each orbit covers only part of what the 8 orbits cover together",
+              all(s < 0.8 * u for s, u in zip(single, union)),
+              [", ".join(f"r = {r:.2f}: one orbit {s:.2f}, union {u:.2f}" for r, s, u in zip(chaos.r, single, union))
+               + f" (fractions of {F.BINS} bins of [0, π])"]),
+        Check(f"each orbit's ω-limit looks like a finite union of intervals: its kept points form at most "
+              f"{F.MAX_INTERVALS} intervals at a resolution of {coarse} rad (in the thin stripe and in the region "
+              "of apparent chaos)", bool(pieces) and max(pieces) <= F.MAX_INTERVALS,
+              [f"intervals per orbit over {len(pieces)} orbits (preview of Figure 5.6 and the 8 values of r above): "
+               + ", ".join(f"{c}: {pieces.count(c)}" for c in sorted(set(pieces)))]),
+    ]
+    note = ("Evidence, not a proof of quasi-periodicity: counts and widths of clusters of kept angles (no rotation "
+            "numbers). " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 5.6: "
+                                        f"{s['stripe_intervals']}; in Figure 5.1 for 0.2 ≤ r ≤ 0.9: {s['chaos_intervals']}."))
+    return observe(checks, note=note)

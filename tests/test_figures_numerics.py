@@ -1,0 +1,154 @@
+"""Section 5: the observables of certify.numerics.figures on synthetic data, the
+`certify figures` command, and the certificates N1-N7 (OBSERVED; an altered print is
+reported as a disagreement)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from certify.cli import main
+from certify.numerics import figures as F
+from certify.run import figures, runner
+from certify.run.runner import OBSERVED
+
+
+# --- observables on synthetic data ------------------------------------------------------
+
+def synthetic(phi, breaks=None, r=None):
+    phi = np.asarray(phi, float)
+    r = np.linspace(0.1, 0.2, phi.shape[0]) if r is None else np.asarray(r, float)
+    breaks = np.zeros(phi.shape[:2], dtype=np.int8) if breaks is None else np.asarray(breaks)
+    return F.FigureData(F.SPECS["5.2"], "preview", r, phi, breaks, 100, phi.shape[2], "float64")
+
+
+def test_clusters_cut_at_gaps_and_skip_nans():
+    v = [0.5, 0.5 + 1e-9, np.nan, 2.0, 2.0005, 3.0]
+    assert [(round(lo, 4), round(hi, 4), n) for lo, hi, n in F.clusters(v, gap=1e-3)] == \
+        [(0.5, 0.5, 2), (2.0, 2.0005, 2), (3.0, 3.0, 1)]
+    assert F.clusters([np.nan]) == []
+
+
+def test_omega_tells_points_pieces_and_spread():
+    rng = np.random.default_rng(0)
+    cycle = np.tile([0.1, 0.4, 2.7, 3.0], 50) + rng.normal(0, 1e-9, 200)
+    w = F.omega(cycle)
+    assert w.kind == "points" and w.clusters == 4 and w.discrete
+    two = np.r_[np.linspace(0.5, 0.6, 400), np.linspace(1.5, 1.55, 400)]
+    assert F.omega(two).kind == "pieces" and F.omega(two).clusters == 2 and not F.omega(two).discrete
+    spread = rng.uniform(0, math.pi, 500)
+    assert F.omega(spread).kind == "spread" and F.omega(spread).coverage > 0.3
+    assert F.omega([np.nan] * 5).kind == "none"
+
+
+def test_accumulation_points_and_window_counts():
+    phi = np.full((3, 2, 8), np.nan)
+    phi[0] = [0.1, 0.4, 2.7, 3.0] * 2                   # 4 points
+    phi[1, 0] = np.linspace(0.1, 3.0, 8)                # 8 points, one orbit broken
+    phi[2] = np.linspace(0.1, 3.0, 16).reshape(2, 8)    # 16 points
+    breaks = np.array([[0, 0], [0, 2], [2, 2]])
+    d = synthetic(phi, breaks, r=[0.11, 0.12, 0.13])
+    assert [F.accumulation_points(d, k) for k in range(3)] == [4, 8, None]
+    assert F.window_counts(d, 0.105, 0.125) == {4: 1, 8: 1}
+    assert F.dominant_count({None: 5, 4: 3, 6: 1}) == (4, 3, 9)
+    assert F.dominant_count({None: 2}) == (None, 0, 2)
+    assert list(d.break_r()) == [0.12, 0.13, 0.13]
+
+
+def test_rotation_of_a_periodic_word():
+    assert F.is_rotation("bcba" * 3 + "b", "abcb")
+    assert not F.is_rotation("abab" * 3, "abcb")
+
+
+def test_the_printed_thresholds_are_the_roots_of_q2():
+    for n in (2, 6):
+        assert abs(float(F.upper_threshold(n, 20)) - F.R_MAX[n]) < 1e-12
+
+
+# --- the figures command ----------------------------------------------------------------
+
+def test_figures_command_preview_only(tmp_path, capsys):
+    assert main(["figures", "--only", "5.7", "--out", str(tmp_path), "--jobs", "1"]) == 0
+    assert (tmp_path / "figures" / "fig5.7-preview.png").is_file()
+    assert not (tmp_path / "figures" / "fig5.2-preview.png").exists()
+    assert "figure 5.7" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("argv", [["figures", "--only", "9.9"], ["figures", "--resolution", "huge"],
+                                  ["figures", "--n4", "0"], ["figures", "--bogus"]])
+def test_figures_command_bad_options_exit_2(tmp_path, argv):
+    assert main(argv + ["--out", str(tmp_path)]) == 2
+
+
+def test_prune_keeps_the_paper_figures(tmp_path):
+    for name in ("fig5.2-paper.png", "fig5.2-preview.png", "old.png"):
+        (tmp_path / name).write_bytes(b"png")
+    assert figures.prune(tmp_path, keep={"fig5.2-preview.png"}) == ["old.png"]
+    assert (tmp_path / "fig5.2-paper.png").is_file()
+
+
+def test_section5_figure_draws_breaks(tmp_path):
+    from certify.run import section5_figure
+    phi = np.full((2, 2, 4), 1.0)
+    d = synthetic(phi, breaks=np.array([[0, 2], [0, 0]]), r=[0.1, 0.2])
+    with figures.output_dir(tmp_path):
+        name = section5_figure(d)
+    assert name == "fig5.2-preview.png" and (tmp_path / name).stat().st_size > 1000
+
+
+# --- the certificates -------------------------------------------------------------------
+
+def run(cid, **overrides):
+    cert = runner.select([cid])[0]
+    return runner.run_certificate(cert, overrides=overrides or None)
+
+
+def agrees(outcome) -> bool:
+    return outcome.status == OBSERVED and outcome.note.startswith(runner.AGREES)
+
+
+def disagrees(outcome) -> bool:
+    return outcome.status == OBSERVED and outcome.note.startswith(runner.DISAGREES)
+
+
+@pytest.mark.parametrize("cid, name, old, new", [
+    ("N1", "collisions", "10^4", "10^3"),
+    ("N2", "breaks_near", "0.072", "0.1"),
+    ("N3", "points", None, ("5", "6", "8", "10")),
+    ("N5", "lo", "0.172", "0.181"),
+    ("N6", "special", "0.184525", "0.18455"),
+    ("N7", "not_discrete_at", "0.92", "0.999"),
+])
+def test_an_altered_print_is_a_disagreement(cid, name, old, new):
+    assert agrees(run(cid)), run(cid).note
+    if name == "lo":
+        mutated = run(cid, lo="0.181", hi="0.185")
+    else:
+        mutated = run(cid, **{name: new if old is None else runner.CERTIFICATES[cid].printed[name].replace(old, new)})
+    assert disagrees(mutated), mutated.note
+    assert any(not runner.holds(c) for c in mutated.printed)
+
+
+def test_n1_reads_the_printed_velocity():
+    v = list(runner.CERTIFICATES["N1"].printed["velocity"])
+    v[1] = "cos(phi)"
+    assert disagrees(run("N1", velocity=tuple(v)))
+
+
+def test_n4_reads_the_printed_n():
+    """As printed (n ≥ 6) our float64 engine still follows the pattern; from n = 13 on it
+    does not, and the eigenvector's smallest component is below 2^-52 there."""
+    printed = run("N4")
+    assert printed.status == OBSERVED
+    assert not runner.holds(printed.printed[0]) and not runner.holds(printed.printed[1])
+    later = run("N4", n_from="13")
+    assert runner.holds(later.printed[0]) and runner.holds(later.printed[1])
+
+
+def test_observe_fails_only_on_a_consistency_check():
+    from certify.run import Check, observe
+    assert observe([Check("seen", True)]).status == OBSERVED
+    assert observe([Check("seen", False)]).note.startswith(runner.DISAGREES)
+    assert observe([Check("seen", True), Check("engine", False, counts=False)]).status == runner.FAIL
+    assert observe([]).status == runner.FAIL
