@@ -25,6 +25,7 @@ to reports/figures/bench_numerics.png.
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import platform
 import shutil
@@ -126,9 +127,10 @@ def distance(n, m) -> float:
     try:
         a, b = [as_arb(z) for z in n], [as_arb(z) for z in m]
         c = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-        num = sum(z * z for z in c).sqrt()
-        den = (sum(z * z for z in a) * sum(z * z for z in b)).sqrt()
-        return float((num / den).mid())
+        num2 = sum(z * z for z in c)                 # may straddle 0 when below the precision
+        den2 = sum(z * z for z in a) * sum(z * z for z in b)
+        ratio = num2.upper() / den2.lower()          # an upper bound of sin²
+        return math.sqrt(max(float(ratio), 0.0))
     finally:
         flint.ctx.prec = old
 
@@ -161,7 +163,7 @@ def errors(engine, dps, r, collisions, marks, ref):
 
 
 def fmt(e) -> str:
-    return e if isinstance(e, str) else ("0" if e == 0 else f"{e:.1e}")
+    return e if isinstance(e, str) else ("< 1e-300" if e == 0 else f"{e:.1e}")
 
 
 # --- main --------------------------------------------------------------------
