@@ -329,7 +329,8 @@ def stripes(section5_preview, stripes, special, lo, hi, step, count):
                          f"{[F.omega(fine.phi[k, m]).clusters for m in range(fine.phi.shape[1])]}; at r ± 2e-6: "
                          f"{widest[0]:.1e}, {widest[-1]:.1e} rad (41 values of r at Δr = 1e-7, 10^4 collisions)"]))
     figs = [section5_figure(section5_preview[f]) for f in ("5.5", "5.6", "5.7", "5.8")]
-    note = paper_note("n6", lambda s: f"lowest coverages in Figure 5.5 at r = {s['stripes']}; in Figure 5.6 the "
+    note = paper_note("n6", lambda s: f"the four lowest coverages of [0, π] in Figure 5.5 at r = {s['stripes']} "
+                      f"({s['coverages']}); in Figure 5.6 the "
                       f"widest cluster is narrowest at r = {s['special_r']:.7f} ({s['special_width']:.1e} rad).") \
         + figure_links("5.5", "5.6", "5.7", "5.8")
     return observe(checks, figures=figs, note=note)
