@@ -39,15 +39,16 @@ static int run(long collisions, double tol, int i0, const double *n0, const doub
         else if (n[i] < -b[i]) nx = k;
         else { *done = c; *check = h; return 1; }
         const double *R = rows + 9 * nx;
-        top = fmax(fabs(n[0]), fmax(fabs(n[1]), fabs(n[2])));
+        double a0 = fabs(n[0]), a1 = fabs(n[1]), a2 = fabs(n[2]);
         double m0 = R[0] * n[0] + R[1] * n[1] + R[2] * n[2];
         double m1 = R[3] * n[0] + R[4] * n[1] + R[5] * n[2];
         double m2 = R[6] * n[0] + R[7] * n[1] + R[8] * n[2];
         int t = (nx + 1) % 3;
         double mt = t == 0 ? m0 : (t == 1 ? m1 : m2);
         if (mt < 0.0) { m0 = -m0; m1 = -m1; m2 = -m2; }
-        double s = tol * top;
-        b[0] = s * absrows[3 * nx]; b[1] = s * absrows[3 * nx + 1]; b[2] = s * absrows[3 * nx + 2];
+        b[0] = tol * (fabs(R[0]) * a0 + fabs(R[1]) * a1 + fabs(R[2]) * a2);
+        b[1] = tol * (fabs(R[3]) * a0 + fabs(R[4]) * a1 + fabs(R[5]) * a2);
+        b[2] = tol * (fabs(R[6]) * a0 + fabs(R[7]) * a1 + fabs(R[8]) * a2);
         double nt = fmax(fabs(m0), fmax(fabs(m1), fabs(m2)));
         if (nt > BIG || (nt < SMALL && nt > 0.0)) {
             int e;

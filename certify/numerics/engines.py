@@ -101,7 +101,7 @@ def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkp
     ctx.dps = dps
     mpf = ctx.mpf
     rows = [[[mpf(int(z)) for z in row] for row in K] for K in rules.integer_rows(r)]
-    absrows = rules.row_abs(rows)
+    absrows = rules.abs_rows(rows)
     if normal is not None:
         n = tuple(mpf(z) for z in normal)
     else:

@@ -3,7 +3,8 @@
 
 The matrices are ``rules.float_rows(r)`` (``reduction.cofactor`` converted to float),
 passed as an array ``rows[r_index, letter, row, column]``; ``absrows[r_index, letter,
-row]`` their absolute row sums (the rounding bound's factor).  The normal is rescaled
+row]`` their absolute row sums (unused since the bound is componentwise, kept in the
+signature).  The normal is rescaled
 by a power of 2 when its largest entry leaves [2^-256, 2^256] (exact in floats, and
 the bounds are rescaled with it).  Only the normals of the last ``keep``
 b-collisions are kept (a ring buffer); φ is computed from them at the end.
@@ -44,7 +45,6 @@ def _classify(i, n, bnd):
 @njit(cache=True, inline="always")
 def _advance(j, n, bnd, rows, absrows, tol):
     """rules.advance and rules.step_bounds in place, then the power-of-2 rescaling."""
-    top = max(abs(n[0]), max(abs(n[1]), abs(n[2])))
     m0 = rows[j, 0, 0] * n[0] + rows[j, 0, 1] * n[1] + rows[j, 0, 2] * n[2]
     m1 = rows[j, 1, 0] * n[0] + rows[j, 1, 1] * n[1] + rows[j, 1, 2] * n[2]
     m2 = rows[j, 2, 0] * n[0] + rows[j, 2, 1] * n[1] + rows[j, 2, 2] * n[2]
@@ -52,10 +52,10 @@ def _advance(j, n, bnd, rows, absrows, tol):
     mt = m0 if t == 0 else (m1 if t == 1 else m2)
     if mt < 0.0:
         m0, m1, m2 = -m0, -m1, -m2
-    s = tol * top
-    b0 = s * absrows[j, 0]
-    b1 = s * absrows[j, 1]
-    b2 = s * absrows[j, 2]
+    a0, a1, a2 = abs(n[0]), abs(n[1]), abs(n[2])
+    b0 = tol * (abs(rows[j, 0, 0]) * a0 + abs(rows[j, 0, 1]) * a1 + abs(rows[j, 0, 2]) * a2)
+    b1 = tol * (abs(rows[j, 1, 0]) * a0 + abs(rows[j, 1, 1]) * a1 + abs(rows[j, 1, 2]) * a2)
+    b2 = tol * (abs(rows[j, 2, 0]) * a0 + abs(rows[j, 2, 1]) * a1 + abs(rows[j, 2, 2]) * a2)
     new_top = max(abs(m0), max(abs(m1), abs(m2)))
     if new_top > BIG or (new_top < SMALL and new_top > 0.0):
         e = math.frexp(new_top)[1]

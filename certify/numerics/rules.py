@@ -12,8 +12,8 @@ kernel (:mod:`.kernel`) is a compiled transcription of :func:`classify` and
 
 Break rules (:data:`BREAKS`).  A sign is used only when it is decided by a safe
 margin: |x| > bound, where for the floating engines the bound of an entry of
-n' = cof(K) n is ``TOL · Σ_c |cof(K)_{mc}| · max|n|`` with TOL = SAFETY · 2^-precision
-(the rounding of that product, with a margin), and ``TOL · max|n|`` for the initial
+n' = cof(K) n is ``TOL · Σ_c |cof(K)_{mc}| |n_c|`` with TOL = SAFETY · 2^-precision
+(the rounding of that product, componentwise, with a margin), and ``TOL · max|n|`` for the initial
 normal (the rounding of its conversion from θ0, φ0).  A ball decides a sign when it
 excludes 0.  In order:
 
@@ -95,8 +95,13 @@ def _scaled(z: int, shift: int) -> float:
 
 
 def row_abs(rows) -> list[list]:
-    """Σ_c |K_{mc}| for each matrix K and row m: the rounding bound's factor."""
+    """Σ_c |K_{mc}| for each matrix K and row m (the float kernel's signature)."""
     return [[sum(abs(z) for z in row) for row in K] for K in rows]
+
+
+def abs_rows(rows) -> list:
+    """|K| entrywise for each matrix K: the rounding bound's factor."""
+    return [[[abs(z) for z in row] for row in K] for K in rows]
 
 
 # --- the shared step --------------------------------------------------------
@@ -149,9 +154,11 @@ def advance(j: int, n, rows) -> tuple:
 
 
 def step_bounds(j: int, n, absrows, tolerance) -> tuple:
-    """The rounding bounds of the entries of :func:`advance` (j, n)."""
-    top = max(abs(z) for z in n)
-    return tuple(tolerance * s * top for s in absrows[j])
+    """The rounding bounds of the entries of :func:`advance` (j, n): TOL · (|K| |n|)_m,
+    K = cof(K_j) (``absrows``: the matrices of absolute values)."""
+    K = absrows[j]
+    a = [abs(z) for z in n]
+    return tuple(tolerance * (K[m][0] * a[0] + K[m][1] * a[1] + K[m][2] * a[2]) for m in range(3))
 
 
 # --- the angles ---------------------------------------------------------------
