@@ -90,7 +90,8 @@ def save_figure(fig, name: str, dpi: int | None = None) -> str:
     return name
 
 
-KEPT = ("*-paper.png",)   # written by `certify figures --resolution paper` (minutes), never by a run
+KEPT = ("*-paper.png", "bench_*.png", "census-*.png")   # written by `certify figures --resolution paper`,
+# `certify bench`, `certify census` (minutes), never by a run of the certificates
 
 
 def prune(directory, keep, kept=KEPT) -> list[str]:
