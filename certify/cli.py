@@ -9,6 +9,11 @@
     bench [--repeat N] [--jobs N] [--reduction [--long]]
                                 time the whole run (benchmarks/bench.py), or the
                                 exact simulator and reduction map (bench_reduction.py)
+    census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
+           [--state FILE] [--resume]
+                                every periodic pattern of blocks up to length L,
+                                its feasible and stable r-sets: DIR/CENSUS.md,
+                                DIR/census.json, DIR/census-windows.png
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
@@ -223,6 +228,27 @@ def cmd_bench(args) -> int:
     return load_bench().main(["--repeat", str(args.repeat)] + (["--jobs", str(args.jobs)] if args.jobs else []))
 
 
+def cmd_census(args) -> int:
+    """The census of periodic patterns (certify/run/census.py): records stream to the
+    state file, --resume skips the words already there."""
+    from certify.run import census, executors
+    out = ensure_writable(args.out)
+    state = args.state if args.state is not None else out / "census-state.jsonl"
+    ensure_writable(state.parent)
+    with executors.executor(args.jobs, args.scheduler) as ex:
+        records = census.run(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
+    doc = census.write_outputs(records, args.max_length, out)
+    if args.json:
+        print(census.to_json(doc), end="")
+    else:
+        s = doc["census"]
+        print(f"{s['words']} words up to length {s['max_length']}: {len(s['feasible'])} with feasible data, "
+              f"{len(s['stable'])} stable, {len(s['undecided'])} with undecided points, {len(s['errors'])} errors; "
+              f"with abcab: {s['abcab']['words']}, feasible {len(s['abcab']['feasible'])}")
+        print(f"wrote {out / 'CENSUS.md'}, census.json, {census.FIGURE}; state {state}")
+    return 0
+
+
 def cmd_particles(args) -> int:
     """Simulate the four particles exactly; one line per collision, then why it stopped."""
     if args.digits > MAX_DIGITS:
@@ -301,6 +327,18 @@ def build_parser() -> Parser:
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
                    help="time only the run on N processes (default: both --jobs 1 and all cores)")
     p.set_defaults(func=cmd_bench)
+
+    p = commands.add_parser("census", help="analyse every periodic pattern of blocks up to a length")
+    p.add_argument("--max-length", type=positive_int, required=True, metavar="L", help="longest period, in collisions")
+    p.add_argument("--json", action="store_true", help="also print the census as JSON on stdout")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    p.add_argument("--state", type=Path, default=None, metavar="FILE",
+                   help="JSON lines, one per word analysed (default: DIR/census-state.jsonl)")
+    p.add_argument("--resume", action="store_true", help="do not analyse again the words already in the state file")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
+    add_jobs(p)
+    p.set_defaults(func=cmd_census)
 
     p = commands.add_parser("particles", help="simulate four particles exactly",
                             description="Four particles on a line, equal masses, restitution "
