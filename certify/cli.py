@@ -6,7 +6,7 @@
     run ID [ID ...] [--out DIR] [--jobs N]
                                 run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N] [--jobs N] [--reduction [--long]]
+    bench [--repeat N] [--jobs N] [--reduction [--long]] [--patterns]
                                 time the whole run (benchmarks/bench.py), or the
                                 exact simulator and reduction map (bench_reduction.py)
     census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
@@ -14,6 +14,10 @@
                                 every periodic pattern of blocks up to length L,
                                 its feasible and stable r-sets: DIR/CENSUS.md,
                                 DIR/census.json, DIR/census-windows.png
+    pattern WORD [--json] [--r-range LO HI]
+                                the exact analysis of one periodic word (ababcb,
+                                (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
+                                exist, are feasible, are stable (certify.patterns.pattern)
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
@@ -225,13 +229,17 @@ def cmd_bench(args) -> int:
     simulator and reduction map against bit growth (benchmarks/bench_reduction.py)."""
     if args.reduction:
         return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
+    if args.patterns:
+        return load_bench("bench_patterns").main(["--repeat", str(args.repeat)])
     return load_bench().main(["--repeat", str(args.repeat)] + (["--jobs", str(args.jobs)] if args.jobs else []))
 
 
 def cmd_census(args) -> int:
     """The census of periodic patterns (certify/run/census.py): records stream to the
     state file, --resume skips the words already there."""
+    import signal
     from certify.run import census, executors
+    signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     out = ensure_writable(args.out)
     state = args.state if args.state is not None else out / "census-state.jsonl"
     ensure_writable(state.parent)
@@ -246,6 +254,18 @@ def cmd_census(args) -> int:
               f"{len(s['stable'])} stable, {len(s['undecided'])} with undecided points, {len(s['errors'])} errors; "
               f"with abcab: {s['abcab']['words']}, feasible {len(s['abcab']['feasible'])}")
         print(f"wrote {out / 'CENSUS.md'}, census.json, {census.FIGURE}; state {state}")
+    return 0
+
+
+def cmd_pattern(args) -> int:
+    """The exact analysis of one periodic word: Markdown on stdout, or JSON with --json
+    (schema certify/patterns/pattern.schema.json).  A bad word is a UsageError (exit 2),
+    raised before any work; nothing is written to a file."""
+    from certify.patterns import analyse, check_range, read
+    lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
+    read(args.word)                       # validate first: one line, exit 2
+    result = analyse(args.word, lo, hi)
+    print(result.json_text() if args.json else result.markdown())
     return 0
 
 
@@ -324,6 +344,8 @@ def build_parser() -> Parser:
     p.add_argument("--reduction", action="store_true",
                    help="time the exact simulator and reduction map instead (benchmarks/bench_reduction.py)")
     p.add_argument("--long", action="store_true", help="with --reduction: also 10^4 collisions, 10^5 steps")
+    p.add_argument("--patterns", action="store_true",
+                   help="time `pattern (ab)^n(cb)^n` instead (benchmarks/bench_patterns.py)")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
                    help="time only the run on N processes (default: both --jobs 1 and all cores)")
     p.set_defaults(func=cmd_bench)
@@ -339,6 +361,17 @@ def build_parser() -> Parser:
                    help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
     add_jobs(p)
     p.set_defaults(func=cmd_census)
+
+    p = commands.add_parser("pattern", help="analyse one periodic collision word exactly",
+                            description="Where in r the self-similar data of a periodic word exist, are "
+                            "feasible and are stable, with algebraic end points.  WORD: ababcb, (ab)^3(cb)^3, "
+                            "[ac]b (a and c at once, the symmetric system), ab (three particles); any rotation "
+                            "or the mirror a<->c.")
+    p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n; [ac]")
+    p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/pattern.schema.json)")
+    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
+                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
+    p.set_defaults(func=cmd_pattern)
 
     p = commands.add_parser("particles", help="simulate four particles exactly",
                             description="Four particles on a line, equal masses, restitution "
