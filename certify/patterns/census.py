@@ -100,7 +100,10 @@ def contains_abcab(word: str) -> bool:
 
 def analyse_word(word: str, lo=0, hi=1) -> dict:
     """The census record of one word (a normal form): its analysis as JSON, or the
-    error that stopped it (one line).  Never raises for a word's sake."""
+    error that stopped it (one line), and the seconds it took (:data:`SECONDS`, which
+    :func:`certify.run.census.run` keeps out of the census).  Never raises for a word's sake."""
+    import time
+    start = time.perf_counter()
     record = {"word": word, "compact": compact(word), "length": len(word), "blocks": blocks_of(word),
               "contains_abcab": contains_abcab(word)}
     try:
@@ -112,7 +115,11 @@ def analyse_word(word: str, lo=0, hi=1) -> dict:
         line = traceback.format_exception_only(type(exc), exc)[-1].strip()
         record.update(outcome="error", feasible=None, stable=None, undecided=None, verdict="error",
                       result=None, error=" ".join(line.split()))
+    record[SECONDS] = round(time.perf_counter() - start, 3)
     return record
+
+
+SECONDS = "seconds"          # the time of a record's analysis: kept in the state file, not in the census
 
 
 def r_sets(record: dict, stage: str) -> list[tuple[str, str]]:

@@ -36,6 +36,7 @@ def load_state(path) -> dict[str, dict]:
     for line in text.splitlines():
         try:
             rec = json.loads(line)
+            rec.pop(census.SECONDS, None)
             records[rec["word"]] = rec
             kept.append(line)
         except (ValueError, KeyError, TypeError):
@@ -66,6 +67,17 @@ def run(max_length: int, executor, state=None, resume: bool = False, progress=No
     if progress:
         progress(len(done), n, "")
     sink = state.open("a", encoding="utf-8") if state is not None else None
+
+    def collect(future, word) -> None:
+        record = future.result()
+        if sink is not None:
+            sink.write(dumps(record) + "\n")
+            sink.flush()
+        record.pop(census.SECONDS, None)
+        done[word] = record
+        if progress:
+            progress(len(done), n, word)
+
     try:
         pending, words_of, queue = set(), {}, iter(todo)
         while True:
@@ -74,20 +86,18 @@ def run(max_length: int, executor, state=None, resume: bool = False, progress=No
                 if word is None:
                     break
                 future = executor.submit(job, word)
-                words_of[future] = word
-                pending.add(future)
+                if future.done():                 # a serial executor: written before the next job
+                    collect(future, word)
+                else:
+                    words_of[future] = word
+                    pending.add(future)
             if not pending:
-                break
+                if word is None:
+                    break
+                continue
             finished, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in sorted(finished, key=lambda f: words_of[f]):
-                word = words_of.pop(future)
-                record = future.result()
-                done[word] = record
-                if sink is not None:
-                    sink.write(dumps(record) + "\n")
-                    sink.flush()
-                if progress:
-                    progress(len(done), n, word)
+                collect(future, words_of.pop(future))
     finally:
         if sink is not None:
             sink.close()
