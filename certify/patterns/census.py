@@ -27,6 +27,7 @@ contains a word with abcab iff its mirror contains cbacb).
 from __future__ import annotations
 
 import traceback
+from fractions import Fraction
 
 from .pattern import analyse
 from .periodic import MIRROR, compact, normal_form
@@ -138,6 +139,50 @@ def windows(record: dict, stage: str = "stable") -> list[tuple[float, float]]:
                   for p in s["pieces"] if p["kind"] == "interval")
 
 
+SILVER = ("r^2 - 6r + 1", Fraction("0.171572875253809"), Fraction("0.171572875253810"))   # 3-2√2 (L2)
+
+
+def is_ab_n_cb_n(word: str) -> bool:
+    """The word is (ab)^n(cb)^n for some n ≥ 1, or ab (three particles)."""
+    n = word.count("a")
+    return word == "ab" or (n >= 1 and word == "ab" * n + "cb" * n)
+
+
+def compare_end(end: dict, bound=SILVER) -> int | None:
+    """The sign of (an end point of a pattern's r-set) - bound, from the certified data:
+    equal when the minimal polynomials agree and the isolating intervals meet, else by
+    disjoint certified intervals; None when neither decides."""
+    lo, hi = (Fraction(x) for x in end["interval"])
+    poly, blo, bhi = bound
+    if end["minimal_polynomial"] == poly and lo <= bhi and blo <= hi:
+        return 0
+    if lo > bhi:
+        return 1
+    if hi < blo:
+        return -1
+    return None
+
+
+def stable_findings(records) -> dict:
+    """Stable words other than (ab)^n(cb)^n, and stable windows reaching above 3-2√2."""
+    others, above, undecided = [], [], []
+    for r in order(records):
+        if not r["stable"]:
+            continue
+        if not is_ab_n_cb_n(r["word"]):
+            others.append(r["word"])
+        for s in r["result"]["stable"]:
+            for p in s["pieces"]:
+                end = p["hi"] if p["kind"] == "interval" else p["at"]
+                sign = compare_end(end)
+                if sign is None:
+                    undecided.append(r["word"])
+                elif sign > 0:
+                    above.append(r["word"])
+    return {"other_than_ab_n_cb_n": others, "above_3-2√2": sorted(set(above)),
+            "undecided_against_3-2√2": sorted(set(undecided))}
+
+
 def order(records) -> list[dict]:
     """Records in census order: by length, then word (the same order as :func:`words`)."""
     return sorted(records, key=lambda rec: (rec["length"], rec["word"]))
@@ -156,6 +201,7 @@ def summary(records, max_length: int) -> dict:
         "stable": names(lambda r: r["stable"]),
         "undecided": names(lambda r: r["undecided"]),
         "errors": names(lambda r: r["outcome"] == "error"),
+        "stable_findings": stable_findings(recs),
         "abcab": {"words": len(abcab),
                   "feasible": [r["word"] for r in abcab if r["feasible"]],
                   "undecided_or_error": [r["word"] for r in abcab if r["outcome"] == "error" or r["undecided"]]},

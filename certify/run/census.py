@@ -154,10 +154,29 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         + (f"; undecided or error: {', '.join(s['abcab']['undecided_or_error'])}"
            if s['abcab']['undecided_or_error'] else ""),
         "",
+        "## Findings",
+        "",
+    ]
+    f = s["stable_findings"]
+    stable = [r for r in census.order(recs) if r["stable"]]
+    lines += [
+        "- stable patterns: " + ("; ".join(f"`{r['compact']}` on {_sets(r, 'stable')}" for r in stable) or "none"),
+        "- stable patterns other than (ab)^n(cb)^n (and the three-particle ab): "
+        + (", ".join(f"`{w}`" for w in f["other_than_ab_n_cb_n"]) or f"none up to length {L}"),
+        "- stable windows reaching above 3-2√2 ≈ 0.171573 (compared on certified isolating intervals and minimal "
+        "polynomials): " + (", ".join(f"`{w}`" for w in f["above_3-2√2"]) or f"none up to length {L}")
+        + (f"; not decided: {', '.join(f['undecided_against_3-2√2'])}" if f["undecided_against_3-2√2"] else ""),
+        f"- T28 (l. 515, 'patterns containing abcab do not seem to have feasible self-similar data'): "
+        + (f"refuted: {', '.join(f'`{w}`' for w in s['abcab']['feasible'])} contain abcab (cyclically, or its "
+           "mirror cbacb) and have feasible self-similar data (certificate T28 re-checks the shortest and runs "
+           "the exact dynamics from their data)" if s["abcab"]["feasible"]
+           else f"no counterexample up to length {L}"),
+        "",
     ]
     if figure:
         lines += [f"![every stable window on one r-axis]({figure})", ""]
-    lines += ["| word | length | blocks | abcab | verdict | feasible r-sets | stable r-sets | note |",
+    lines += ["## Every word", "", "Words with stable data first, then feasible, undecided, in error, the rest.", "",
+              "| word | length | blocks | abcab | verdict | feasible r-sets | stable r-sets | note |",
               "|---|---:|---|:-:|---|---|---|---|"]
     for r in sorted(recs, key=rank):
         note = r["error"] if r["outcome"] == "error" else ("undecided points" if r["undecided"] else "")
