@@ -95,7 +95,8 @@ def run(max_length: int, executor, state=None, resume: bool = False, progress=No
                 if word is None:
                     break
                 continue
-            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+            # a timeout, so that Ctrl-C and SIGTERM are handled while the jobs run
+            finished, pending = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
             for future in sorted(finished, key=lambda f: words_of[f]):
                 collect(future, words_of.pop(future))
     finally:
