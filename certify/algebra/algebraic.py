@@ -242,7 +242,15 @@ def _root_ball(p, lo, hi, prec: int):
             return None                      # a ball across an end: undecided here
     if len(hits) != 1 or hits[0][1] > Q(1, 2 ** prec):
         return None
-    return hits[0][0]
+    z, d = hits[0]
+    m = z.mid().fmpq()
+    a, b = m - d, m + d
+    pa, pb = p(a), p(b)                     # exact: the ball's ends bracket a sign change of p
+    if pa == 0 or pb == 0 or (pa > 0) == (pb > 0):
+        return None
+    # radius about 2^-prec, as asked (a tighter ball is as true, but callers size by it)
+    with precision(prec + GUARD + 16):
+        return flint.arb(z.mid(), max(z.rad(), flint.arb(2) ** -(prec + 2)))
 
 
 def _dec(n: int, k: int) -> str:
