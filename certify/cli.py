@@ -6,10 +6,20 @@
     run ID [ID ...] [--out DIR] [--jobs N]
                                 run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics]
+    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics] [--patterns]
                                 time the whole run (benchmarks/bench.py), or the
                                 exact simulator and reduction map (bench_reduction.py),
-                                or the numerical engines (bench_numerics.py)
+                                the numerical engines (bench_numerics.py), or
+                                pattern and census (bench_patterns.py, bench_census.py)
+    census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
+           [--state FILE] [--resume]
+                                every periodic pattern of blocks up to length L,
+                                its feasible and stable r-sets: DIR/CENSUS.md,
+                                DIR/census.json, DIR/census-windows.png
+    pattern WORD [--json] [--r-range LO HI]
+                                the exact analysis of one periodic word (ababcb,
+                                (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
+                                exist, are feasible, are stable (certify.patterns.pattern)
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
@@ -235,7 +245,44 @@ def cmd_bench(args) -> int:
         return load_bench("bench_numerics").main(["--quick"] * args.quick)
     if args.reduction:
         return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
+    if args.patterns:
+        return load_bench("bench_patterns").main(["--repeat", str(args.repeat)])
     return load_bench().main(["--repeat", str(args.repeat)] + (["--jobs", str(args.jobs)] if args.jobs else []))
+
+
+def cmd_census(args) -> int:
+    """The census of periodic patterns (certify/run/census.py): records stream to the
+    state file, --resume skips the words already there."""
+    import signal
+    from certify.run import census, executors
+    signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
+    out = ensure_writable(args.out)
+    state = args.state if args.state is not None else out / "census-state.jsonl"
+    ensure_writable(state.parent)
+    with executors.executor(args.jobs, args.scheduler) as ex:
+        records = census.run(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
+    doc = census.write_outputs(records, args.max_length, out)
+    if args.json:
+        print(census.to_json(doc), end="")
+    else:
+        s = doc["census"]
+        print(f"{s['words']} words up to length {s['max_length']}: {len(s['feasible'])} with feasible data, "
+              f"{len(s['stable'])} stable, {len(s['undecided'])} with undecided points, {len(s['errors'])} errors; "
+              f"with abcab: {s['abcab']['words']}, feasible {len(s['abcab']['feasible'])}")
+        print(f"wrote {out / 'CENSUS.md'}, census.json, {census.FIGURE}; state {state}")
+    return 0
+
+
+def cmd_pattern(args) -> int:
+    """The exact analysis of one periodic word: Markdown on stdout, or JSON with --json
+    (schema certify/patterns/pattern.schema.json).  A bad word is a UsageError (exit 2),
+    raised before any work; nothing is written to a file."""
+    from certify.patterns import analyse, check_range, read
+    lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
+    read(args.word)                       # validate first: one line, exit 2
+    result = analyse(args.word, lo, hi)
+    print(result.json_text() if args.json else result.markdown())
+    return 0
 
 
 def cmd_particles(args) -> int:
@@ -431,12 +478,37 @@ def build_parser() -> Parser:
     p.add_argument("--reduction", action="store_true",
                    help="time the exact simulator and reduction map instead (benchmarks/bench_reduction.py)")
     p.add_argument("--long", action="store_true", help="with --reduction: also 10^4 collisions, 10^5 steps")
+    p.add_argument("--patterns", action="store_true",
+                   help="time `pattern (ab)^n(cb)^n` instead (benchmarks/bench_patterns.py)")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
                    help="time only the run on N processes (default: both --jobs 1 and all cores)")
     p.add_argument("--numerics", action="store_true",
                    help="time the numerical engines against error instead (benchmarks/bench_numerics.py)")
     p.add_argument("--quick", action="store_true", help="with --numerics: smaller sizes (no BENCH.md)")
     p.set_defaults(func=cmd_bench)
+
+    p = commands.add_parser("census", help="analyse every periodic pattern of blocks up to a length")
+    p.add_argument("--max-length", type=positive_int, required=True, metavar="L", help="longest period, in collisions")
+    p.add_argument("--json", action="store_true", help="also print the census as JSON on stdout")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    p.add_argument("--state", type=Path, default=None, metavar="FILE",
+                   help="JSON lines, one per word analysed (default: DIR/census-state.jsonl)")
+    p.add_argument("--resume", action="store_true", help="do not analyse again the words already in the state file")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
+    add_jobs(p)
+    p.set_defaults(func=cmd_census)
+
+    p = commands.add_parser("pattern", help="analyse one periodic collision word exactly",
+                            description="Where in r the self-similar data of a periodic word exist, are "
+                            "feasible and are stable, with algebraic end points.  WORD: ababcb, (ab)^3(cb)^3, "
+                            "[ac]b (a and c at once, the symmetric system), ab (three particles); any rotation "
+                            "or the mirror a<->c.")
+    p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n; [ac]")
+    p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/pattern.schema.json)")
+    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
+                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
+    p.set_defaults(func=cmd_pattern)
 
     p = commands.add_parser("particles", help="simulate four particles exactly",
                             description="Four particles on a line, equal masses, restitution "

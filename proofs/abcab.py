@@ -41,7 +41,7 @@ import sympy as sp
 from certify.algebra import Algebraic, lam, show, simplest_between
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, K, candidate, collision_matrix, run_word
-from certify.patterns import Analysis, BRANCH_NAMES, Requirement, fmt, prefix_requirements
+from certify.patterns import Analysis, BRANCH_NAMES, Requirement, analyse, fmt, prefix_requirements
 from certify.run import Check, certificate, conclude
 
 Q = flint.fmpq
@@ -129,6 +129,16 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
               [f"fails on {BRANCH_NAMES[R.branch]} {R.fixed_point} {p}: {why}" for R, p, why in bad]),
         Check("and the candidate does realise them somewhere (the remark is not vacuous)", bool(feasible)),
     ]
+    # the same conclusion from `certify pattern abcab` (the whole period, every branch, x±)
+    res = analyse(word)
+    dg = res.diagnosis or {}
+    checks.append(Check(f"`certify pattern {word}`: no feasible datum; the first collision that goes wrong is "
+                        f"collision {m + 1} ({other}), and {next} comes instead, strictly before, wherever the "
+                        f"first {m} are realised",
+                        not res.feasible and dg.get("collision") == m + 1 and dg.get("expected") == other
+                        and [i["letter"] for i in dg.get("instead", [])] == [next] and dg.get("complete") is True
+                        and not res.undecided,
+                        [res.verdict, dg.get("text", "no diagnosis")]))
     where = "; ".join(f"{BRANCH_NAMES[R.branch]} branch with {R.fixed_point} on {R.describe()}" for R in feasible)
     return conclude(checks, evidence=ev,
                     note=f"The printed reason is checked wherever it applies: the candidate realises "

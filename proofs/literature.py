@@ -18,14 +18,17 @@ exist just above.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 import flint
 import sympy as sp
 
-from certify.algebra import (Algebraic, Condition, Lf, RING, eliminate, lam, parse, resultant_lambda, show,
-    show_factored_int, to_fmpz_poly, to_ring)
+from certify.algebra import (Algebraic, Condition, Lf, RING, eliminate, lam, parse, radical, resultant_lambda, show,
+    show_factored_int, to_field, to_fmpz_poly, to_ring)
 from certify.dynamics import K, candidate
-from certify.patterns import Analysis, BRANCH_NAMES, Requirement, fmt, prefix_requirements, vanishes_on_branch
+from certify.patterns import (Analysis, BRANCH_NAMES, Requirement, analyse, fmt, prefix_requirements,
+                              vanishes_on_branch)
+from certify.patterns import parse as parse_word
 from certify.run import Check, certificate, conclude
 
 Q = flint.fmpq
@@ -40,27 +43,14 @@ def divides_q(p, q) -> bool:
 
 
 def expand_pattern(pattern: str) -> str:
-    """"(ab)^3(cb)^3" -> "abababcbcbcb"."""
-    out = ""
-    for group, letters, power in re.findall(r"(\((\w+)\)\^(\d+)|\w)", pattern.replace(" ", "")):
-        out += letters * int(power) if letters else group
-    if not re.fullmatch(r"[abc]+", out):
-        raise ValueError(f"cannot read the pattern {pattern!r}")
-    return out
-
-
-def stability_conditions(cand, fp) -> list[Condition]:
-    """|f'(x)| < 1 at the fixed point x = (a - d + σ√Δ)/(2c), f'(x) = (ad - bc)/(cx + d)²:
-    with cx + d = (a + d + σ√Δ)/2, the two conditions (cx + d)² ∓ (ad - bc) > 0 read
-    ((a+d)² + Δ)/4 ∓ (ad - bc) + σ(a + d)√Δ/2 > 0 (multiplied by 4 below)."""
-    a, b, c, d = (to_ring(e) for e in cand.abcd)
-    C = to_ring(cand.cp)
-    out = []
-    for sg, name in ((-1, "(cx+d)² - (ad-bc)"), (1, "(cx+d)² + (ad-bc)")):
-        N0 = ((a + d) ** 2 + fp.delta + 4 * sg * (a * d - b * c)).rem(C)
-        N1 = (2 * fp.sigma * (a + d)).rem(C)
-        out.append(Condition(name, (N0, N1), (RING.one, RING.zero), fp.delta, fp.c))
-    return out
+    """"(ab)^3(cb)^3" -> "abababcbcbcb" (:func:`certify.patterns.parse`; ValueError on a bad word)."""
+    try:
+        word = parse_word(pattern)
+    except Exception as exc:          # the engine's UsageError: one line
+        raise ValueError(f"cannot read the pattern {pattern!r}: {exc}") from None
+    if "s" in word:
+        raise ValueError(f"cannot read the pattern {pattern!r} as a four-particle word")
+    return word
 
 
 @certificate("T26", "l. 323-325",
@@ -138,17 +128,15 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
               "numerator vanishes there (exact test in Q(r1)[λ]) and its denominator does not (sign proven by balls)",
               u_zero and den_sign in (1, -1), [f"sign of the denominator of u at r1 on the dominant branch: {den_sign}"]),
     ]
-    # stability just below: dominant eigenvalue (velocities) and |f'(x)| < 1 (positions)
-    stable = bool(below)
-    for R, p in below:
-        fp = an.fps[R.fixed_point]
-        for cond in stability_conditions(cand, fp):
-            T = cand.spectrum.sign_table(cond, p.lo, p.hi)
-            ok = T.holds(0, 1)
-            stable &= ok
-            ev.append(f"{cond.name} at {R.fixed_point} on {p} (|f'(x)| < 1 iff both > 0):\n\n{T.markdown()}")
-    checks.append(Check("just below 5-2√6 the candidate is stable: dominant eigenvalue and |f'(x)| < 1 on the "
-                        "whole interval ]s, 5-2√6[", stable))
+    # stability just below: `certify pattern` on the same window (λ dominant, |f'(x)| < 1)
+    res = analyse(pattern, lo, hi)
+    stable_upper = [p for R in res.regions["stable"] if R.branch == 0 for p in R.pieces]
+    stable = bool(below) and any(not p.is_point and p.hi == r1 and any(p.lo == q.lo for _, q in below)
+                                 for p in stable_upper)
+    ev.append(f"`certify pattern {pattern} --r-range {lo} {hi}`: stable on " + "; ".join(
+        f"{s['branch']} {s['fixed_point']}: {s['set']}" for s in res.stable) + f" ({'; '.join(res.conditions['stable'])})")
+    checks.append(Check("just below 5-2√6 the candidate is stable: dominant eigenvalue (|μ| < λ for the other "
+                        "eigenvalues) and |f'(x)| < 1 on the whole interval ]s, 5-2√6[ (certify pattern)", stable))
     others = [f"{BRANCH_NAMES[R.branch]} {R.fixed_point}: {R.describe()}" for R in an.regions
               if R.branch > 0 and R.pieces]
     if others:
@@ -158,3 +146,259 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
                     note="Reading: the paper's 'critical threshold' of (ab)^3(cb)^3 is CDKK's upper stability "
                          "threshold (CLAIMS L4, L5): the end of the r-interval where the self-similar candidate on "
                          f"the dominant branch exists and is stable. Window ]{lo}, {hi}[ chosen by us.")
+
+
+# ---------------------------------------------------------------- L1-L6: the literature, through `certify pattern`
+# Every certificate below reads the printed numbers as text (radicals by certify.algebra.radical,
+# decimals by Algebraic.in_rounding_interval) and compares them with the exact regions of
+# certify.patterns.analyse: the same analysis as `python -m certify pattern WORD`.
+
+N_MAX = 6                      # (ab)^n(cb)^n analysed for n = 2..N_MAX (about a minute in all)
+
+
+@lru_cache(maxsize=None)
+def pattern(word: str):
+    """`certify pattern word` over ]0, 1[ (memoised for the certificates of one process)."""
+    return analyse(word)
+
+
+def _pieces(res, stage: str, branch: int | None = None) -> list:
+    return [(R, p) for R in res.regions[stage] if branch is None or R.branch == branch for p in R.pieces]
+
+
+def _top(pieces):
+    return max((p.lo if p.is_point else p.hi) for _, p in pieces) if pieces else None
+
+
+def _sets(res, stage: str) -> str:
+    return "; ".join(f"{s['branch']} {s['fixed_point']}: {s['set']}" for s in getattr(res, stage)) or "∅"
+
+
+def _printed_value(text: str):
+    """"3-2√2 ≃ 0.17157" -> (the radical, "0.17157")."""
+    value, _, digits = (t.strip() for t in text.replace("≈", "≃").partition("≃"))
+    return radical(value), digits
+
+
+def _digits_check(name: str, a, digits: str) -> Check:
+    return Check(f"{name} ≈ {digits} (the printed digits)", bool(digits) and a.in_rounding_interval(digits),
+                 [f"{name} = {a.describe()}"])
+
+
+def _threshold_certificate(word, threshold, digits, what):
+    """No self-similar datum above the threshold, stable self-similar data on all of
+    ]0, threshold[ (an open set of initial data: positive measure)."""
+    res = pattern(word)
+    thr = radical(threshold)
+    exists = _pieces(res, "exists")
+    checks = [_digits_check(threshold, thr, digits),
+              Check(f"for r > {threshold} no self-similar datum of {word} exists on any branch "
+                    f"(λ > 0 real, u > 0{', x > 0' if res.system == 'four' else ''})",
+                    bool(exists) and _top(exists) <= thr, [f"exists: {_sets(res, 'exists')}"]),
+              Check(f"for every r in ]0, {threshold}[ the self-similar datum of {word} (upper branch) is feasible "
+                    f"and stable ({what})",
+                    any(lo == 0 and hi == thr for _, _, lo, hi in res.intervals("stable", 0)),
+                    [f"stable: {_sets(res, 'stable')}", f"conditions: {'; '.join(res.conditions['stable'])}"]),
+              Check("every point of ]0, 1[ decided", not res.undecided, res.undecided)]
+    ev = [f"`certify pattern {word}`: {res.verdict}", f"M = {res.matrix}", f"cp = `{res.cp}`",
+          f"disc = `{res.discriminant}`", f"feasible: {_sets(res, 'feasible')}"]
+    return checks, ev
+
+
+PRINTED_L1 = dict(word="ab", threshold="7-4√3", digits="0.07180")
+
+
+@certificate("L1", "l. 130, 1130",
+             "Three particles: no collapse (no self-similar datum of ab) for r > 7-4√3; below, stable collapse.",
+             printed=PRINTED_L1)
+def three_particles(word, threshold, digits):
+    """`certify pattern ab` (three particles, 2x2 matrices): the self-similar data exist
+    exactly for r ≤ 7-4√3 and are stable on ]0, 7-4√3[."""
+    checks, ev = _threshold_certificate(word, threshold, digits, "λ dominant: an open set of initial data")
+    return conclude(checks, evidence=ev,
+                    note="Three particles collapse only through the pattern ab repeated (CDKK, McNamara-Young); "
+                         "what is certified is that pattern's self-similar datum: none for r > 7-4√3, a stable "
+                         "one for every r < 7-4√3 (at r = 7-4√3 itself the eigenvalue is double: a datum exists, "
+                         "not stable).")
+
+
+PRINTED_L2 = dict(word="[ac]b", threshold="3-2√2", digits="0.17157")
+
+
+@certificate("L2", "l. 132",
+             "The symmetric four-particle system ([ac]b) cannot collapse for r > 3-2√2.",
+             printed=PRINTED_L2)
+def symmetric_system(word, threshold, digits):
+    """`certify pattern [ac]b` (p_1 = p_3, the [ac] collision applies A and C at once,
+    reduced to two gaps): no self-similar datum for r > 3-2√2, stable below."""
+    checks, ev = _threshold_certificate(word, threshold, digits, "in the symmetric system")
+    return conclude(checks, evidence=ev,
+                    note="The symmetric system's only pattern is [ac]b repeated; its self-similar datum exists "
+                         "exactly for r ≤ 3-2√2.")
+
+
+PRINTED_L3 = dict(word="abcb", P="17r^6-138r^5+831r^4-3148r^3+831r^2-138r+17", r_exist="0.19166",
+                  stability="unstable")
+
+
+@certificate("L3", "l. 132, 1101",
+             "abcb has collapsing (feasible self-similar) initial data for r < r_exist ≈ 0.19166, r_exist the only "
+             "real root in [0,1] of P; the pattern is unstable.",
+             printed=PRINTED_L3)
+def abcb_exists(word, P, r_exist, stability):
+    """`certify pattern abcb`: the union over branches and fixed points of the feasible
+    sets is ]0, r_exist] minus the points the engine leaves undecided; nothing stable."""
+    res = pattern(word)
+    poly = to_fmpz_poly(parse(re.sub(r"(\d)\s*r", r"\1*r", P)))     # "17r^6": implicit products
+    roots = Algebraic.roots(poly, 0, 1)
+    at_ends = [e for e in (0, 1) if poly(e) == 0]
+    re_ = roots[0] if len(roots) == 1 else None
+    feas = _pieces(res, "feasible")
+    checks = [Check(f"P = {P} has exactly one root in [0,1]", len(roots) == 1 and not at_ends,
+                    [f"roots in ]0,1[: {[a.describe() for a in roots]}"])]
+    if re_ is None:
+        return conclude(checks)
+    checks.append(_digits_check("r_exist", re_, r_exist))
+    # the feasible set covers ]0, r_exist[ up to the undecided points
+    cuts = sorted({p.lo for _, p in feas if not p.is_point} | {p.hi for _, p in feas if not p.is_point})
+    ends = [Algebraic.rational(0)] + [c for c in cuts if 0 < c < re_] + [re_]
+    gaps = []
+    for a, b in zip(ends, ends[1:]):
+        if not any(not p.is_point and p.lo <= a and b <= p.hi for _, p in feas):
+            gaps.append(f"]{fmt(a)}, {fmt(b)}[")
+    inner = [c for c in ends[1:-1]]
+    uncovered_points = [c for c in inner if not any((p.is_point and p.lo == c) or (not p.is_point and p.lo < c < p.hi)
+                                                    for _, p in feas)]
+    undecided = [u for R in res.regions["feasible"] for u in R.undecided]
+    explained = all(any(c == rc for rc, _ in undecided) for c in uncovered_points)
+    checks += [
+        Check(f"for every r in ]0, r_exist[ (r_exist = the root of P) the candidate of {word} is feasible on some "
+              f"branch and fixed point, except at the point(s) "
+              f"{', '.join(fmt(c) for c in uncovered_points) or 'none'} where the engine is undecided "
+              "(a double eigenvalue: u is 0/0 in every row of the eigen-equation)",
+              not gaps and explained, [f"feasible: {_sets(res, 'feasible')}", f"gaps: {gaps or 'none'}",
+                                       f"undecided: {res.undecided}"]),
+        Check(f"for r > r_exist no feasible candidate of {word}", bool(feas) and _top(feas) == re_,
+              [f"sup of the feasible set: {fmt(_top(feas)) if feas else '∅'}"]),
+        Check(f"{word} is {stability}: no stable self-similar datum for any r in ]0,1[",
+              stability == "unstable" and not res.stable and bool(res.feasible),
+              [f"stable: {_sets(res, 'stable')}; conditions {'; '.join(res.conditions['stable'])}"]),
+    ]
+    return conclude(checks, evidence=[f"`certify pattern {word}`: {res.verdict}", f"cp = `{res.cp}`",
+                                      f"disc = `{res.discriminant}`", f"exists: {_sets(res, 'exists')}"],
+                    note="r_exist is where the feasible branches end (a root of the discriminant: two eigenvalues "
+                         "meet). At 3-2√2 the two upper eigenvalues cross (the factor (r²-6r+1)² of the "
+                         "discriminant): there the eigenvector is not determined by the eigen-equation's rows and "
+                         "the engine leaves the point undecided; it is named in the check.")
+
+
+def ab_cb(n: int) -> str:
+    return f"(ab)^{n}(cb)^{n}"
+
+
+def stable_window(n: int):
+    """The stable set of (ab)^n(cb)^n on the upper branch: (lo, hi) when it is one open
+    interval (for one fixed point), else None."""
+    res = pattern(ab_cb(n))
+    ivs = res.intervals("stable")
+    if len(ivs) == 1 and not res.points("stable") and ivs[0][0] == 0:
+        return ivs[0][2], ivs[0][3]
+    return None
+
+
+PRINTED_L4 = {f"n{n}": t for n, t in ((2, "3-2√2 ≃ 0.17157"), (3, "5-2√6 ≃ 0.10102"),
+                                       (4, "3 + 2√2 - 2√(4 + 3√2) ≃ 0.08643"),
+                                       (5, "4 + √5 - 2√(5 + 2√5) ≃ 0.08070"),
+                                       (6, "3 + 2√3 - 2√(5 + 3√3) ≃ 0.07782"))}
+
+
+@certificate("L4", "l. 1114-1120",
+             "Upper stability thresholds of (ab)^n(cb)^n, n = 2..6, are the printed radicals.",
+             printed=PRINTED_L4)
+def upper_thresholds(**printed):
+    """For each n the stable set of `certify pattern (ab)^n(cb)^n` is one interval of
+    the upper branch; its upper end is proven equal to the printed radical (minimal
+    polynomial and isolating interval), and the digits are its rounding."""
+    checks, ev = [], []
+    for key in sorted(printed, key=lambda k: int(k[1:])):
+        n = int(key[1:])
+        value, digits = _printed_value(printed[key])
+        w = stable_window(n)
+        checks.append(Check(f"n = {n}: the upper stability threshold of {ab_cb(n)} is {printed[key]}",
+                            w is not None and w[1] == value and value.in_rounding_interval(digits),
+                            [f"stable: {_sets(pattern(ab_cb(n)), 'stable')}",
+                             f"printed: {value.describe()}"] + ([f"computed: {w[1].describe()}"] if w else [])))
+        ev.append(f"{ab_cb(n)}: {pattern(ab_cb(n)).verdict}")
+    return conclude(checks, evidence=ev)
+
+
+PRINTED_L5 = dict(n2="[0.12754, 0.17157]", n3="[0.09452, 0.10102]", limit="7-4√3",
+                  order="disjoint, accumulating on 7-4√3 from above")
+
+
+@certificate("L5", "l. 1124-1126, 1216",
+             "Stability windows of (ab)^2(cb)^2 ≈ [0.12754, 0.17157] and (ab)^3(cb)^3 ≈ [0.09452, 0.10102]; the "
+             "windows are disjoint and accumulate on 7-4√3 from above.",
+             printed=PRINTED_L5)
+def windows(n2, n3, limit, order):
+    """The stable sets of (ab)^n(cb)^n (upper branch) for n = 2..N_MAX: each one open
+    interval, ends rounding to the printed digits for n = 2, 3; pairwise disjoint,
+    decreasing in n, all above 7-4√3."""
+    checks = []
+    for n, text in ((2, n2), (3, n3)):
+        lo_d, hi_d = (t.strip() for t in text.strip("[] ").split(","))
+        w = stable_window(n)
+        checks.append(Check(f"the stability window of {ab_cb(n)} is ≈ {text}",
+                            w is not None and w[0].in_rounding_interval(lo_d) and w[1].in_rounding_interval(hi_d),
+                            [f"stable: {_sets(pattern(ab_cb(n)), 'stable')}"]
+                            + ([f"lower end: {w[0].describe()}", f"upper end: {w[1].describe()}"] if w else [])))
+    ws = {n: stable_window(n) for n in range(2, N_MAX + 1)}
+    lim = radical(limit)
+    ok = all(w is not None for w in ws.values())
+    decreasing = ok and all(ws[n + 1][1] <= ws[n][0] for n in range(2, N_MAX))
+    strictly = ok and all(ws[n + 1][1] < ws[n][0] for n in range(2, N_MAX))
+    above = ok and all(w[0] > lim for w in ws.values())
+    rows = [f"n = {n}: ]{w[0].digits(10)}, {w[1].digits(10)}[" if w else f"n = {n}: not one interval"
+            for n, w in ws.items()]
+    checks.append(Check(f"the windows of n = 2..{N_MAX} are {order.split(',')[0]} (each below the previous, with "
+                        f"a gap) and decreasing in n", "disjoint" in order and strictly, rows))
+    checks.append(Check(f"every window n = 2..{N_MAX} lies above {limit} (= {lim.digits(10)}), the distances "
+                        f"decreasing", "above" in order and above and decreasing, rows))
+    return conclude(checks, note=f"The accumulation itself is a statement about all n: certified are the windows "
+                                 f"n = 2..{N_MAX}, decreasing towards {limit} from above; the limit is the "
+                                 "paper's (and CDKK's) belief, not proven here.")
+
+
+PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant")
+
+
+@certificate("L6", "l. 1216",
+             "Conjecture (CDKK §7): the upper threshold of (ab)^n(cb)^n is where q_2(0) = 0 for the dominant "
+             "eigenvector (tested for n = 2..6).",
+             printed=PRINTED_L6)
+def q2_vanishes_at_threshold(criterion, branch):
+    """For each n = 2..N_MAX: at the upper end r_n of the stability window, the numerator
+    of u = q_2(0) vanishes on the dominant (upper) branch (exact test in Q(r_n)[λ]) and
+    its denominator does not."""
+    if criterion.replace(" ", "") != "q_2(0)=0" or branch not in ("dominant", "upper"):
+        return conclude([Check(f"the criterion read: {criterion} on the {branch} branch", False,
+                               ["only `q_2(0) = 0` on the dominant branch is implemented"])])
+    rows, results = [], {}
+    for n in range(2, N_MAX + 1):
+        w = stable_window(n)
+        cand = candidate(expand_pattern(ab_cb(n)))
+        u = to_field(cand.q0[1].as_expr())
+        if w is None:
+            results[n] = False
+            rows.append(f"n = {n}: no single stability window")
+            continue
+        zero = vanishes_on_branch(cand.spectrum, u.numer, w[1], 0)
+        pole = vanishes_on_branch(cand.spectrum, u.denom, w[1], 0)
+        results[n] = zero and not pole
+        rows.append(f"n = {n}: r_n = {w[1].digits(10)}; numerator of q_2(0) = 0 there: {zero}; "
+                    f"denominator = 0: {pole}")
+    holds_for = [n for n, ok in results.items() if ok]
+    return conclude([Check(f"q_2(0) = 0 on the dominant branch at the upper threshold, for n = 2..{N_MAX}",
+                           len(holds_for) == len(results), rows)],
+                    note=f"Tested, not assumed: it holds for n = {', '.join(map(str, holds_for)) or 'none'}; "
+                         "for larger n it is not tested here (see `certify pattern`).")

@@ -12,6 +12,7 @@ ground floor (:mod:`certify.errors`, :mod:`certify.caches`).
 - :mod:`.balls`: working precision of arb balls, and "double until decided".
 - :mod:`.trig`: identities in cos, sin of θ, φ, by two routes.
 - :mod:`.branches`: signs of conditions on the eigenvalue branches over r-intervals.
+- :mod:`.radicals`: printed nested radicals ("3+2√2-2√(4+3√2)") read into Algebraic numbers.
 - :mod:`.statements`: the paper's printed conditions read whole (relations, ranges of r,
   the paper's phrases), evaluated on certified signs and numbers; unread text is an error.
 """
@@ -23,11 +24,12 @@ from .elimination import Elimination, eliminate, show_factored_int
 from .poly import (FIELD, RING, Lf, Rf, discriminant_lambda, expr, from_flint, irreducible_factors, lam, parse,
                    primitive, r, resultant_lambda, show, squarefree_part, to_field, to_fmpq, to_fmpq_poly,
                    to_fmpz_poly, to_ring, u, v, x)
+from .radicals import radical
 from .statements import StatementError
 from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_sequence
 
 __all__ = [
-    "numberfield", "statements", "trig", "StatementError",
+    "numberfield", "statements", "trig", "StatementError", "radical",
     "Algebraic", "sign_at", "sign_intervals",
     "GUARD", "decide", "ends", "ordered", "precision", "tight",
     "Condition", "FixedPoint", "SignTable", "Spectrum", "ball_value", "simplest_between",

@@ -15,6 +15,7 @@ from functools import total_ordering
 import flint
 import sympy as sp
 
+from certify import caches
 from .balls import GUARD, decide, precision
 from .poly import primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, isolate, refine
@@ -87,7 +88,13 @@ class Algebraic:
         return self
 
     def arb(self, prec: int = 64) -> flint.arb:
-        """A ball containing the number, radius about 2^-prec."""
+        """A ball containing the number, radius about 2^-prec: from python-flint's
+        certified root isolation of p (the one real root ball inside the isolating
+        interval), or else by bisecting the interval."""
+        if not self.is_rational and self.hi - self.lo > Q(1, 2 ** prec) and self.p.degree() > 2:
+            ball = _root_ball(self.p, self.lo, self.hi, prec)
+            if ball is not None:
+                return ball
         self.refine(Q(1, 2 ** prec))
         mid = (self.lo + self.hi) / 2
         rad = (self.hi - self.lo) / 2
@@ -172,7 +179,14 @@ class Algebraic:
             self.compare_rational(Q(hi.numerator, hi.denominator)) <= 0
 
     def describe(self) -> str:
-        """'root of p in ]lo, hi[ ≈ digits' for the report."""
+        """'root of p in ]lo, hi[ ≈ digits' for the report (a function of the number
+        alone, computed once)."""
+        text = getattr(self, "_described", None)
+        if text is None:
+            text = self._described = self._describe()
+        return text
+
+    def _describe(self) -> str:
         if self.is_rational:
             return f"{self.lo}"
         self.minimal_polynomial()
@@ -198,6 +212,45 @@ class Algebraic:
 
     def __repr__(self):
         return f"Algebraic({self.describe()})"
+
+
+_ROOTS: dict = {}
+caches.register(_ROOTS.clear)
+
+
+def _root_ball(p, lo, hi, prec: int):
+    """The real root of p in ]lo, hi[ as a ball of radius ≤ 2^-prec, from python-flint's
+    certified complex root isolation at working precision ~prec (memoised per p and
+    precision); None when that does not single out one real ball inside ]lo, hi[."""
+    key = (tuple(p.coeffs()), prec)
+    roots = _ROOTS.get(key)
+    if roots is None:
+        if len(_ROOTS) > 2048:
+            _ROOTS.clear()
+        with precision(prec + GUARD + 16):
+            try:
+                roots = [c.real for c, _m in flint.fmpz_poly(p).complex_roots() if c.imag.is_zero()]
+            except (ValueError, ArithmeticError):
+                roots = []
+        _ROOTS[key] = roots
+    hits = []
+    for z in roots:
+        m, d = z.mid().fmpq(), z.rad().fmpq()
+        if lo < m - d and m + d < hi:
+            hits.append((z, d))
+        elif not (m + d < lo or m - d > hi):
+            return None                      # a ball across an end: undecided here
+    if len(hits) != 1 or hits[0][1] > Q(1, 2 ** prec):
+        return None
+    z, d = hits[0]
+    m = z.mid().fmpq()
+    a, b = m - d, m + d
+    pa, pb = p(a), p(b)                     # exact: the ball's ends bracket a sign change of p
+    if pa == 0 or pb == 0 or (pa > 0) == (pb > 0):
+        return None
+    # radius about 2^-prec, as asked (a tighter ball is as true, but callers size by it)
+    with precision(prec + GUARD + 16):
+        return flint.arb(z.mid(), max(z.rad(), flint.arb(2) ** -(prec + 2)))
 
 
 def _dec(n: int, k: int) -> str:

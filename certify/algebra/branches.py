@@ -430,10 +430,11 @@ class Spectrum:
 def _root_ball(sqf, rc, k):
     """prec -> a ball around the k-th largest real root of a squarefree K[λ] polynomial."""
     def ball(prec):
-        reals = nf.real_roots(sqf, rc, prec)
-        if reals is None:
-            raise ValueError("roots lost at higher precision")
-        return reals[k]
+        for p in (prec, 2 * prec, 4 * prec):        # a tighter ball is as good (the isolation may
+            reals = nf.real_roots(sqf, rc, p)       # fail at one precision and succeed at the next)
+            if reals is not None:
+                return reals[k]
+        raise ValueError("roots lost at higher precision")
     return ball
 
 

@@ -8,15 +8,31 @@ from __future__ import annotations
 
 import flint
 
-from .balls import ordered
+from certify import caches
+from .balls import ordered, precision
 from .poly import to_fmpq
 
 Q = flint.fmpq
+_SEQUENCES: dict = {}            # the coefficients of p -> its Sturm sequence (memoised)
+_BALL_POLYS: dict = {}           # id of a sequence member -> (member, its arb_poly)
+caches.register(_SEQUENCES.clear)
+caches.register(_BALL_POLYS.clear)
 
 
 def sturm_sequence(p) -> list[flint.fmpq_poly]:
-    """The Sturm sequence p0 = p/gcd(p,p'), p1 = p0', p_{k+1} = -rem(p_{k-1}, p_k)."""
+    """The Sturm sequence p0 = p/gcd(p,p'), p1 = p0', p_{k+1} = -rem(p_{k-1}, p_k);
+    memoised per polynomial (the same polynomials recur in every comparison)."""
     p = flint.fmpq_poly(p)
+    key = tuple(p.coeffs())
+    seq = _SEQUENCES.get(key)
+    if seq is None:
+        seq = _SEQUENCES[key] = _sturm_sequence(p)
+        if len(_SEQUENCES) > 20000:
+            _SEQUENCES.clear()
+    return seq
+
+
+def _sturm_sequence(p) -> list[flint.fmpq_poly]:
     g = p.gcd(p.derivative())
     p0 = p // g if g.degree() > 0 else p
     seq = [p0, p0.derivative()]
@@ -32,17 +48,35 @@ def _sign(a) -> int:
     return (a > 0) - (a < 0)
 
 
+def sign_at(p: flint.fmpq_poly, a: flint.fmpq) -> int:
+    """The sign of p(a), exact: a ball evaluation when it excludes 0 (cheap for the
+    long rationals of bisection), else the exact rational value."""
+    if p.degree() > 8:
+        entry = _BALL_POLYS.get(id(p))
+        if entry is None or entry[0] is not p:
+            if len(_BALL_POLYS) > 4096:
+                _BALL_POLYS.clear()
+            entry = _BALL_POLYS[id(p)] = (p, flint.arb_poly(p))
+        with precision(128):
+            v = entry[1](flint.arb(a))
+        if v > 0:
+            return 1
+        if v < 0:
+            return -1
+    return _sign(p(a))
+
+
 def sign_changes(seq, a) -> int:
     """Number of sign changes of the Sturm sequence at the rational a (zeros skipped)."""
     a = to_fmpq(a)
-    signs = [s for s in (_sign(p(a)) for p in seq) if s != 0]
+    signs = [s for s in (sign_at(p, a) for p in seq) if s != 0]
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
 
 def _sign_changes_at_infinity(seq, sign: int) -> int:
     signs = []
     for p in seq:
-        lc = _sign(p.coeffs()[-1]) if p.degree() >= 0 else 0
+        lc = _sign(p[p.degree()]) if p.degree() >= 0 else 0
         signs.append(lc * (sign ** p.degree()) if p.degree() >= 0 else 0)
     signs = [s for s in signs if s]
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
@@ -103,10 +137,10 @@ def refine(p, lo, hi, width) -> tuple[flint.fmpq, flint.fmpq]:
     lo, hi, width = to_fmpq(lo), to_fmpq(hi), to_fmpq(width)
     if lo == hi:
         return lo, hi
-    slo = _sign(p(lo))
+    slo = sign_at(p, lo)
     while hi - lo > width:
         mid = (lo + hi) / 2
-        sm = _sign(p(mid))
+        sm = sign_at(p, mid)
         if sm == 0:
             return mid, mid
         if sm == slo:

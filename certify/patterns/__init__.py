@@ -4,9 +4,18 @@ It imports the models and the exact algebra below it.
 
 - :mod:`.feasibility`: the requirements of a word (gaps, approaches, first collisions)
   and their certified regions of r on each eigenvalue branch.
+- :mod:`.periodic`: periods as written (powers, [ac]), validation, normal forms.
+- :mod:`.pattern`: ``certify pattern WORD``: exists / feasible / stable regions of a
+  word, its verdict, Markdown and JSON (pattern.schema.json).
 """
-from .feasibility import (BRANCH_NAMES, Analysis, Requirement, fmt, mod_cp, prefix_requirements,
+from .feasibility import (BRANCH_NAMES, NO_X, Analysis, Requirement, fmt, mod_cp, prefix_requirements,
                           vanishes_on_branch)
+from .periodic import compact, normal_form, parse, primitive_root, read, show as show_word, system_of, validate
+from .pattern import (SCHEMA_PATH, PatternResult, analyse, check_range, dominance_requirements, end_data,
+                      stability_conditions)
 
-__all__ = ["BRANCH_NAMES", "Analysis", "Requirement", "fmt", "mod_cp", "prefix_requirements",
-           "vanishes_on_branch"]
+__all__ = ["BRANCH_NAMES", "NO_X", "Analysis", "Requirement", "fmt", "mod_cp", "prefix_requirements",
+           "vanishes_on_branch",
+           "compact", "normal_form", "parse", "primitive_root", "read", "show_word", "system_of", "validate",
+           "SCHEMA_PATH", "PatternResult", "analyse", "check_range", "dominance_requirements", "end_data",
+           "stability_conditions"]

@@ -20,12 +20,13 @@ import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import Condition, simplest_between
-from certify.dynamics.words import K, Candidate, run_word
-from certify.dynamics.model import INDEX
+from certify.dynamics.words import K, Candidate
+from certify.dynamics.systems import FOUR, System, run_in
 from certify.algebra.poly import RING, lam, to_field, to_ring
 
 Q = flint.fmpq
 BRANCH_NAMES = ("upper", "middle", "lower")
+NO_X = "—"                   # the label of the only "fixed point" of a two-gap system (no x)
 
 
 @dataclass
@@ -207,7 +208,9 @@ class Analysis:
 
     def __init__(self, cand: Candidate, lo=0, hi=1):
         self.cand, self.spec, self.lo, self.hi = cand, cand.spectrum, lo, hi
-        self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd, self.spec.ring_cp)}
+        # a two-gap system has no position variable: one pseudo fixed point "—", no condition uses x
+        self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd, self.spec.ring_cp)} \
+            if cand.abcd is not None else {NO_X: None}
         self.tables = {}
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
@@ -289,7 +292,7 @@ class Analysis:
         if ok is not None:
             return p, "holds" if ok else "fails", "" if ok else \
                 f"{req.name} {'= 0' if sg == 0 else 'is not real' if sg is None else 'has the wrong sign'}"
-        a, b, c, d = self.cand.abcd
+        a, b, c, d = self.cand.abcd if self.cand.abcd is not None else (None,) * 4
         if req.has_x and p.x_value is None and vanishes_on_branch(self.spec, c, rc, k):
             xv = sp.cancel(b / (d - a))
             if _meets(self._sign_with_x(Requirement("x", (K.zero, K.one), 1), rc, k, xv), 1):
@@ -322,10 +325,12 @@ class Analysis:
     def _sign_with_x(self, req, rc, k, xv):
         sg = self.spec.sign_at_point(condition(req, self.spec.ring_cp, x_value=xv), rc)
         return "?" if sg is None else (sg[k] if k < len(sg) else "missing")
-def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=()) -> tuple[list[Requirement], list]:
+def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: System = FOUR,
+                        previous: str | None = None) -> tuple[list[Requirement], list]:
     """The candidate of ``word`` realises its first m collisions, strictly, iff
 
-    * u = q_2(0) > 0 (p_2(0) = 0 right after the last b of the previous period), x > 0;
+    * u = q_2(0) > 0 (p_2(0) = 0 right after the last b of the previous period), x > 0
+      (four particles; a two-gap system has p(0) = (1, 0) and no x);
     * at each collision k the pair i_k approaches: q_{i_k}(t_{k-1}) < 0;
     * the gap i_k is open just before: p_{i_k}(t_{k-1}) > 0, so that τ_k > 0, except
       when it is automatic: k = 1 (p_1(0) = 1), or the pair collided at k - 2
@@ -334,17 +339,24 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=()) -> tuple
     * every gap that does not collide at m is open at t_m (same exception for the gap
       that collided at m - 1).
 
+    ``previous`` is the collision before t = 0 (default: the last letter of ``word``,
+    the end of the previous period), ``system`` the law (four particles by default).
+
     Why this is enough: each collision of type b adds (1+r)/2 q_2 < 0 to q_1 and q_3,
-    a collision a or c adds (1+r)/2 q_1 < 0 or (1+r)/2 q_3 < 0 to q_2, so every gap
-    p_j(t) is concave between two consecutive collisions of its own pair (the slopes
-    only decrease; all τ_k > 0 by the above).  A concave function positive at both
-    ends of an interval (or zero at the left end with a positive slope there) is
-    positive inside, so the gap is open at every intermediate collision and no other
-    pair collides in between (the paper's argument of l. 478-480, for every gap)."""
-    steps = steps[:m] if steps is not None and len(steps) >= m else run_word(word[:m], q0)
-    reqs = [Requirement("u = q_2(0)", (q0[1], K.zero), 1, tuple((q[1], K.zero) for q in q0_other)),
-            Requirement("x", (K.zero, K.one), 1)]
-    letters = [INDEX[word[-1]]] + [INDEX[c] for c in word[:m]]        # letters[k] = i_k, i_0 = last b
+    a collision a or c adds (1+r)/2 q_1 < 0 or (1+r)/2 q_3 < 0 to q_2 (and [ac] adds
+    (1+r) q_1 < 0 to q_2 in the symmetric system), so every gap p_j(t) is concave
+    between two consecutive collisions of its own pair (the slopes only decrease; all
+    τ_k > 0 by the above).  A concave function positive at both ends of an interval
+    (or zero at the left end with a positive slope there) is positive inside, so the
+    gap is open at every intermediate collision and no other pair collides in between
+    (the paper's argument of l. 478-480, for every gap); a gap strictly open at each
+    collision also excludes a triple collision."""
+    steps = steps[:m] if steps is not None and len(steps) >= m else run_in(system, word[:m], q0)
+    reqs = [Requirement("u = q_2(0)", (q0[1], K.zero), 1, tuple((q[1], K.zero) for q in q0_other))]
+    if system.gaps == 3:
+        reqs.append(Requirement("x", (K.zero, K.one), 1))
+    index = system.index
+    letters = [index[previous or word[-1]]] + [index[c] for c in word[:m]]   # letters[k] = i_k
     for k in range(1, m + 1):
         i = letters[k]
         before = q0 if k == 1 else steps[k - 2].q
@@ -353,7 +365,7 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=()) -> tuple
         automatic = k == 1 or letters[k - 2] == i
         if not automatic:
             reqs.append(Requirement(f"p_{i + 1}(t_{k - 1})", steps[k - 2].p[i], 1))
-    for j in range(3):
+    for j in range(system.gaps):
         if j != letters[m] and j != letters[m - 1]:
             reqs.append(Requirement(f"p_{j + 1}(t_{m})", steps[m - 1].p[j], 1))
     return reqs, steps

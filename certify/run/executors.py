@@ -55,11 +55,11 @@ def _worker_start() -> None:
 
 
 @contextmanager
-def executor(jobs: int | None = None, scheduler: str | None = None, timeout: float = CONNECT_TIMEOUT):
+def executor(jobs: int | None = None, scheduler: str | None = None, timeout: float | None = None):
     """Yield the executor for ``jobs`` local processes or the Dask ``scheduler``
     (see the module's docstring); shut it down (pending jobs cancelled) on exit."""
     if scheduler:
-        with _dask(scheduler, timeout) as ex:
+        with _dask(scheduler, CONNECT_TIMEOUT if timeout is None else timeout) as ex:
             yield ex
         return
     jobs = default_jobs() if jobs is None else jobs

@@ -1,0 +1,88 @@
+"""The cost of ``certify pattern (ab)^n(cb)^n`` against n.
+
+    python benchmarks/bench_patterns.py [--repeat N] [--n 2 3 ... 12] [--budget SECONDS]
+    python -m certify bench --patterns [--repeat N]
+
+For each n, :func:`certify.patterns.analyse` on (ab)^n(cb)^n over ]0, 1[, ``--repeat``
+times, each cold (the engine's caches emptied first, :func:`certify.run.runner.reset_caches`);
+printed: the median and minimum seconds, the length of the word and the verdict.  An n
+whose first run takes longer than ``--budget`` seconds (default 600) stops the series:
+the larger n are reported as not measured.  The table goes to stdout and to the section
+"certify pattern" of reports/BENCH.md (:func:`certify.run.files.write_section`).
+
+:func:`bench_pattern_words` is the function other benchmark scripts (the census's) call.
+"""
+from __future__ import annotations
+
+import argparse
+import platform
+import statistics
+import sys
+import time
+from datetime import date
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+if str(ROOT) not in sys.path:  # run as a script from a source checkout
+    sys.path.insert(0, str(ROOT))
+
+from certify.patterns import analyse  # noqa: E402
+from certify.run import files, runner  # noqa: E402
+
+BENCH = ROOT / "reports" / "BENCH.md"
+NS = tuple(range(2, 13))
+
+
+def bench_pattern_words(ns=NS, repeat: int = 3, budget: float = 600.0, words=None) -> list[dict]:
+    """Time ``analyse(word)`` cold, ``repeat`` times per word ((ab)^n(cb)^n for n in ``ns``,
+    or the given ``words``); one dict per word: word, length, median, min, verdict (or
+    ``skipped``: the reason)."""
+    words = list(words) if words is not None else [f"(ab)^{n}(cb)^{n}" for n in ns]
+    rows, over = [], None
+    for word in words:
+        if over is not None:
+            rows.append({"word": word, "skipped": f"not measured: a shorter word took {over:.0f} s > {budget:.0f} s"})
+            continue
+        times, verdict = [], ""
+        for k in range(repeat):
+            runner.reset_caches()
+            start = time.perf_counter()
+            res = analyse(word)
+            times.append(time.perf_counter() - start)
+            verdict = res.verdict
+            if k == 0 and times[0] > budget:
+                over = times[0]
+                break
+        rows.append({"word": word, "length": len(res.normal), "median": statistics.median(times),
+                     "min": min(times), "runs": len(times), "verdict": verdict})
+    return rows
+
+
+def table(rows) -> str:
+    out = ["| word | length | median (s) | min (s) | runs | verdict |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        if "skipped" in r:
+            out.append(f"| {r['word']} | | | | | {r['skipped']} |")
+        else:
+            out.append(f"| {r['word']} | {r['length']} | {r['median']:.1f} | {r['min']:.1f} | {r['runs']} | "
+                       f"{r['verdict']} |")
+    return "\n".join(out)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--n", type=int, nargs="+", default=list(NS))
+    ap.add_argument("--budget", type=float, default=600.0)
+    args = ap.parse_args(argv)
+    rows = bench_pattern_words(args.n, args.repeat, args.budget)
+    body = (f"`certify pattern (ab)^n(cb)^n` over ]0, 1[, cold (caches emptied), median of {args.repeat} "
+            f"({date.today()}, {platform.processor() or platform.machine()}, Python {platform.python_version()}; "
+            f"benchmarks/bench_patterns.py):\n\n" + table(rows))
+    print(body)
+    files.write_section(BENCH, "certify pattern", body)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

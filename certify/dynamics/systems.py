@@ -1,0 +1,124 @@
+"""The three systems of collision words, with one law each, and their candidates.
+
+* ``four``: four particles, gaps p_1, p_2, p_3; letters a, b, c (:func:`.model.collide`).
+* ``three``: three particles, gaps p_1, p_2; a on gap 1, b on gap 2, the same law
+  (h = (1 + r)/2): a: (q_1, q_2) -> (-r q_1, q_2 + h q_1); b: (q_1 + h q_2, -r q_2).
+  A word over c and b is its mirror image (renamed to a and b by the caller).
+* ``symmetric``: four particles with p_1 = p_3 and q_1 = q_3 (the symmetric system of
+  the paper's l. 132), reduced to the gaps (p_1, p_2).  The simultaneous collision
+  [ac] (letter ``s``) applies A and C at once (AC = CA): q_1 -> -r q_1, q_3 -> -r q_3,
+  q_2 -> q_2 + h q_1 + h q_3 = q_2 + 2h q_1; b keeps the symmetry:
+  (q_1, q_2) -> (q_1 + h q_2, -r q_2).
+
+For a two-gap system the candidate of a word (first-gap letter ... b) is q(0) = (-1, u),
+an eigenvector of the 2x2 M_w for an eigenvalue λ, and p(0) = (1, 0): after the last b
+the state is fixed up to scale by p_2 = 0, so there is no position variable x and no
+position map (``abcd`` is None).  For four particles the candidate is
+:func:`.words.candidate` (q(0) = (-1, u, v), p(0) = (1, 0, x), x a fixed point of f).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import flint
+import sympy as sp
+
+from certify import caches
+from certify.algebra.branches import Spectrum
+from certify.algebra.poly import Lf, Rf, from_flint, lam, r, to_field
+from .model import INDEX, collide
+from .words import K, Candidate, Step, candidate
+
+
+@dataclass(frozen=True)
+class System:
+    """A collision law on ``gaps`` gaps: the gap that closes at each letter and the
+    map of the relative velocities."""
+
+    name: str
+    gaps: int
+    index: dict               # letter -> the gap (0-based) that closes
+
+    def collide(self, letter: str, q, rr=r) -> tuple:
+        """The velocities after a collision ``letter`` (any ring holding r and q)."""
+        if self.name == "four":
+            return collide(letter, q, rr)
+        h = (1 + rr) / 2
+        q1, q2 = q
+        if letter in ("a", "s"):
+            k = h if letter == "a" else 2 * h
+            return (-rr * q1, q2 + k * q1)
+        if letter == "b":
+            return (q1 + h * q2, -rr * q2)
+        raise ValueError(f"unknown collision {letter!r} in the {self.name} system")
+
+
+FOUR = System("four", 3, dict(INDEX))
+THREE = System("three", 2, {"a": 0, "b": 1})
+SYMMETRIC = System("symmetric", 2, {"s": 0, "b": 1})
+BY_NAME = {S.name: S for S in (FOUR, THREE, SYMMETRIC)}
+
+
+def system_matrix(system: System, word: str) -> sp.Matrix:
+    """M_w = K_{c_n} ... K_{c_1} of the system, entries factored (python-flint in r)."""
+    n = system.gaps
+    R = flint.fmpq_poly([0, 1])
+    M = [[flint.fmpq_poly([int(i == j)]) for j in range(n)] for i in range(n)]
+    for letter in word:
+        columns = [system.collide(letter, tuple(M[i][j] for i in range(n)), R) for j in range(n)]
+        M = [[columns[j][i] for j in range(n)] for i in range(n)]
+    return sp.Matrix(n, n, lambda i, j: sp.factor(from_flint(M[i][j], r)))
+
+
+def run_in(system: System, word: str, q0: tuple) -> list[Step]:
+    """The collisions of ``word`` from p(0) = (1, 0[, x]), q(0) = q0, times defined by
+    p_i(t_k) = 0 (as :func:`.words.run_word`, in any system)."""
+    n = system.gaps
+    p = [(K.one, K.zero), (K.zero, K.zero)] + ([(K.zero, K.one)] if n == 3 else [])
+    q = tuple(q0)
+    out = []
+    for letter in word:
+        i = system.index[letter]
+        if q[i] == K.zero:
+            raise ZeroDivisionError(f"q_{i + 1} vanishes identically before {letter}")
+        t = (-p[i][0] / q[i], -p[i][1] / q[i])
+        p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
+        p[i] = (K.zero, K.zero)
+        q = system.collide(letter, q, Rf)
+        out.append(Step(letter, p, q))
+    return out
+
+
+def eigenvector2(M) -> list[tuple]:
+    """q = (-1, u) from row 1 of (M - λI) q = 0, and from row 2 (the other choice,
+    for points where the first degenerates)."""
+    (m11, m12), (m21, m22) = M
+    return [(-K.one, (m11 - Lf) / m12 if m12 != K.zero else None),
+            (-K.one, m21 / (m22 - Lf))]
+
+
+@lru_cache(maxsize=None)
+def candidate_in(system_name: str, word: str) -> Candidate:
+    """The candidate of a word first-gap-letter ... b in the system ``system_name``."""
+    system = BY_NAME[system_name]
+    if system is FOUR:
+        return candidate(word)
+    if set(word) - set(system.index):
+        raise ValueError(f"{word!r} is not a word of the {system.name} system")
+    if word[-1] != "b" or system.index[word[0]] != 0:
+        raise ValueError(f"the normalisation q(0) = (-1, u), p(0) = (1, 0) needs a word starting on gap 1 "
+                         f"and ending with b, not {word!r}")
+    M = system_matrix(system, word)
+    cp = sp.expand(M.charpoly(lam).as_expr())
+    Mk = [[to_field(e) for e in row] for row in M.tolist()]
+    first, second = eigenvector2(Mk)
+    q0 = first if first[1] is not None else second
+    steps = run_in(system, word, q0)
+    if steps[-1].p[1] != (K.zero, K.zero):
+        raise ArithmeticError("p_2 does not vanish after the last b")
+    others = [second] if first[1] is not None else []
+    return Candidate(word, M, cp, Spectrum(cp), q0, others, None, steps)
+
+
+caches.register(candidate_in.cache_clear)

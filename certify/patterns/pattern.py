@@ -1,0 +1,429 @@
+"""``certify pattern WORD``: the exact analysis of one periodic collision word.
+
+For the normal form of the word (:mod:`.periodic`) in its system (four particles,
+three particles, or the symmetric system [ac]b, :mod:`certify.dynamics.systems`) we
+build the self-similar candidate (M_w, cp(M_w), q(0) an eigenvector, for four particles
+p(0) = (1, 0, x) with x a fixed point x± of the position map f) and certify, per real
+eigenvalue branch and fixed point, three nested subsets of ]lo, hi[ ⊆ ]0, 1[:
+
+1. *exists*: self-similar data exist: λ > 0 (the velocities come back as a positive
+   multiple), the eigenvector has the right signs (q(0) = (-1, u, …) with u = q_2(0) > 0:
+   pair 1 approaches, pair 2 separates right after the b that ends the period), and,
+   for four particles, x real and x > 0 (a positive fixed point of f);
+2. *feasible*: moreover every collision of the period is the true next collision
+   (:func:`.feasibility.prefix_requirements` with m = the length of the word: the pair
+   approaches, its gap is open, every other gap stays open, hence no other pair touches
+   first and there is no triple collision);
+3. *stable*: moreover λ is strictly dominant, |μ| < λ for every other eigenvalue μ,
+   real or complex (:func:`dominance_requirements`), and, for four particles, the
+   fixed point attracts, |f'(x)| < 1 (:func:`stability_conditions`).
+
+Every condition is a sign of a function of (r, λ[, x]) on a branch, certified over whole
+r-intervals by :class:`.feasibility.Analysis` (critical values from resultants and
+discriminants, one exact sample per cell, signs by balls, exact zero tests at critical
+values).  Every end point is an algebraic number (minimal polynomial, isolating interval,
+digits).  When nothing is feasible, the first collision that goes wrong is named, with
+the collision that happens instead (:func:`diagnose`).  Nothing about a particular word
+is written here: the paper's numbers are in the certificates and tests only.
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import flint
+import sympy as sp
+
+from certify.algebra.algebraic import Algebraic
+from certify.algebra.poly import Lf, RING, lam, show, to_field, to_ring
+from certify.algebra.branches import Condition
+from certify.dynamics.systems import BY_NAME, candidate_in, run_in
+from certify.dynamics.words import K
+from certify.errors import UsageError
+from .feasibility import BRANCH_NAMES, NO_X, Analysis, Region, Requirement, prefix_requirements
+from .periodic import compact, read, show as show_word
+
+Q = flint.fmpq
+SCHEMA_PATH = Path(__file__).with_name("pattern.schema.json")
+SCHEMA_VERSION = 1
+
+
+# ------------------------------------------------------------------ stability
+def dominance_requirements(cp) -> list[Requirement]:
+    """λ (a real branch, λ > 0 imposed separately) strictly dominant: |μ| < λ for
+    every other root μ of cp, real or complex.
+
+    Let n = deg cp ∈ {2, 3} and Q(Λ) = cp(Λ)/(Λ - λ), monic of degree n - 1 with real
+    coefficients (λ is real), whose roots are the other eigenvalues.  Scaling Λ = λz,
+    the roots of Q lie in the open disc |Λ| < λ iff those of Q(λz)/λ^(n-1) lie in the
+    open unit disc; for a real monic z + q0 (n = 2) this is |q0| < 1, for a real monic
+    z² + p z + q (n = 3) it is the Schur-Cohn-Jury criterion |q| < 1 and |p| < 1 + q.
+    In terms of cp, with Q(λ) = cp'(λ) (differentiate cp = (Λ - λ)Q at Λ = λ) and
+    Q(-λ) = cp(-λ)/(-2λ):
+
+    * n = 2: Q(Λ) = Λ - μ, |μ| < λ iff Q(λ) > 0 and Q(-λ) < 0, i.e. cp'(λ) > 0 and
+      cp(-λ) > 0;
+    * n = 3: Q(λ) = λ² + pλ + q > 0 and Q(-λ) = λ² - pλ + q > 0 (i.e. |p|λ < λ² + q)
+      and q < λ² (with q > -λ² implied by the two); q = μν = det M/λ, so with λ > 0:
+      cp'(λ) > 0, -cp(-λ) > 0 and λ³ - det M > 0 (det M = -cp(0)).
+
+    All strict, so a double eigenvalue λ = μ (Q(λ) = 0) is not dominant.  These are
+    polynomials in (r, λ), certified on the branch like any other condition."""
+    P = sp.Poly(sp.expand(cp), lam)
+    n = P.degree()
+    d = sp.expand(P.diff(lam).as_expr())
+    minus = sp.expand(P.as_expr().subs(lam, -lam))
+    if n == 2:
+        out = [("cp'(λ)", d), ("cp(-λ)", minus)]
+    elif n == 3:
+        det = -P.eval(0)
+        out = [("cp'(λ)", d), ("-cp(-λ)", -minus), ("λ³ - det M", sp.expand(lam ** 3 - det))]
+    else:
+        raise ValueError(f"dominance is implemented for 2x2 and 3x3 matrices, not degree {n}")
+    return [Requirement(f"dominance: {name}", (to_field(e), K.zero), 1) for name, e in out]
+
+
+def stability_conditions(abcd) -> list[Requirement]:
+    """|f'(x)| < 1 at a fixed point x of f(x) = (ax + b)/(cx + d): f'(x) = (ad - bc)/(cx + d)²,
+    so the two conditions (cx + d)² - (ad - bc) > 0 and (cx + d)² + (ad - bc) > 0.
+    At a fixed point c x² = (a - d) x + b, hence (cx + d)² = c(a + d) x + bc + d²,
+    affine in x: the conditions are requirements G₀ + x G₁ > 0 like the others.
+    A common factor of a, b, c, d (of either sign) leaves f' unchanged."""
+    a, b, c, d = (to_field(e) for e in abcd)
+    out = []
+    for sg, name in ((-1, "(cx+d)² - (ad-bc)"), (1, "(cx+d)² + (ad-bc)")):
+        out.append(Requirement(f"attracting: {name}", (b * c + d * d + sg * (a * d - b * c), c * (a + d)), 1))
+    return out
+
+
+# ------------------------------------------------------------------ results
+def end_data(a: Algebraic) -> dict:
+    """An end point: exact value (rational) or minimal polynomial, an isolating interval
+    with decimal ends, and 12 certified significant digits."""
+    if a.is_rational:
+        return {"exact": str(a.lo), "minimal_polynomial": show(_poly(a)),
+                "interval": [str(a.lo), str(a.lo)], "digits": a.digits(12)}
+    text = a.describe()            # "the root of P in ]lo, hi[ ≈ digits"
+    inner = text[text.index("]") + 1:text.index("[")]
+    lo, hi = (t.strip() for t in inner.split(","))
+    return {"exact": None, "minimal_polynomial": show(_poly(a)), "interval": [lo, hi], "digits": a.digits(12)}
+
+
+def _poly(a: Algebraic):
+    c = [int(x) for x in a.minimal_polynomial().coeffs()]
+    rr = sp.Symbol("r")
+    return sp.Add(*[ci * rr ** i for i, ci in enumerate(c)])
+
+
+def _short(a: Algebraic) -> str:
+    return str(a.lo) if a.is_rational else "≈" + a.digits(10)
+
+
+def merged(R: Region) -> tuple[list, list]:
+    """The pieces of a region as maximal open intervals [lo, hi] (]a, b[ ∪ {b} ∪ ]b, c[
+    is ]a, c[) and the remaining isolated points (Pieces)."""
+    intervals = sorted((p for p in R.pieces if not p.is_point), key=lambda p: p.lo)
+    points = [p for p in R.pieces if p.is_point]
+    out = []
+    for p in intervals:
+        if out and out[-1][1] == p.lo:
+            joint = [q for q in points if q.lo == p.lo and not q.note]
+            if joint:
+                points.remove(joint[0])
+                out[-1][1] = p.hi
+                continue
+        out.append([p.lo, p.hi])
+    return out, points
+
+
+def region_set(R: Region) -> dict:
+    """The pieces of a region as JSON: merged intervals ]lo, hi[ and isolated points."""
+    spans, points = merged(R)
+    pieces = [{"kind": "interval", "lo": end_data(a), "hi": end_data(b)} for a, b in spans]
+    pieces += [{"kind": "point", "at": end_data(q.lo), "note": q.note} for q in sorted(points, key=lambda q: q.lo)]
+    text = " ∪ ".join([f"]{_short(a)}, {_short(b)}[" for a, b in spans]
+                      + ["{" + _short(q.lo) + "}" + (f" ({q.note})" if q.note else "") for q in points]) or "∅"
+    return {"branch": BRANCH_NAMES[R.branch] if R.branch < len(BRANCH_NAMES) else f"λ{R.branch}",
+            "fixed_point": R.fixed_point, "set": text, "pieces": pieces}
+
+
+def _copy(regions) -> list[Region]:
+    return [Region(R.branch, R.fixed_point, list(R.pieces), list(R.undecided), list(R.dropped)) for R in regions]
+
+
+@dataclass
+class PatternResult:
+    """The analysis of one word; ``to_json()`` follows pattern.schema.json."""
+
+    input: str
+    normal: str                       # internal letters (s for [ac])
+    system: str
+    explanation: str
+    interval: tuple
+    matrix: list
+    cp: str
+    discriminant: str
+    exists: list                      # [{branch, fixed_point, set, pieces}], non-empty sets only
+    feasible: list
+    stable: list
+    undecided: list                   # [str]
+    conditions: dict                  # stage -> [condition text]
+    datum: dict                       # formulas of u, v, x
+    diagnosis: dict | None
+    verdict: str
+    seconds: float = 0.0
+    regions: dict = field(default_factory=dict, repr=False)   # stage -> [Region] (for certificates)
+
+    def intervals(self, stage: str, branch: int | None = None) -> list:
+        """(branch, fixed point, lo, hi) for each maximal open interval of the stage's set."""
+        return [(R.branch, R.fixed_point, lo, hi) for R in self.regions[stage]
+                if branch is None or R.branch == branch for lo, hi in merged(R)[0]]
+
+    def points(self, stage: str, branch: int | None = None) -> list:
+        """(branch, fixed point, r) for each isolated point of the stage's set."""
+        return [(R.branch, R.fixed_point, q.lo) for R in self.regions[stage]
+                if branch is None or R.branch == branch for q in merged(R)[1]]
+
+    @property
+    def written(self) -> str:
+        return show_word(self.normal)
+
+    def to_json(self) -> dict:
+        return {"schema": "certify-pattern", "version": SCHEMA_VERSION, "input": self.input,
+                "normal_form": self.written, "compact": compact(self.normal), "system": self.system,
+                "explanation": self.explanation,
+                "r_range": [str(self.interval[0]), str(self.interval[1])],
+                "matrix": self.matrix, "characteristic_polynomial": self.cp, "discriminant": self.discriminant,
+                "conditions": self.conditions, "exists": self.exists, "feasible": self.feasible,
+                "stable": self.stable, "undecided": self.undecided, "datum": self.datum,
+                "diagnosis": self.diagnosis, "verdict": self.verdict}
+
+    def json_text(self) -> str:
+        return json.dumps(self.to_json(), ensure_ascii=False, indent=2, sort_keys=True)
+
+    def markdown(self) -> str:
+        lo, hi = self.interval
+        out = [f"# Pattern {self.written}", "",
+               f"- input: `{self.input}`; normal form analysed: `{self.written}` (= `{compact(self.normal)}`), "
+               f"{self.system} system", f"- same orbit: {self.explanation}", f"- r in ]{lo}, {hi}[", "",
+               "## Period matrix", "", "M = `[" + ", ".join("[" + ", ".join(row) + "]" for row in self.matrix) + "]`", "", f"cp(M) = `{self.cp}`", "",
+               f"disc_λ cp(M) = `{self.discriminant}`", ""]
+        for stage, title in (("exists", "Self-similar data exist"), ("feasible", "Feasible (every collision is the "
+                                                                                 "true next one)"),
+                             ("stable", "Stable (λ dominant, fixed point attracting)")):
+            out += [f"## {title}", "", "Conditions: " + "; ".join(self.conditions[stage]), ""]
+            sets = getattr(self, stage)
+            if not sets:
+                out += ["∅ on every branch.", ""]
+            for s in sets:
+                fp = "" if s["fixed_point"] == NO_X else f", {s['fixed_point']}"
+                out.append(f"- {s['branch']} branch{fp}: {s['set']}")
+            ends = {}
+            for s in sets:
+                for p in s["pieces"]:
+                    for e in ([p["lo"], p["hi"]] if p["kind"] == "interval" else [p["at"]]):
+                        if e["exact"] is None:
+                            ends[e["digits"]] = e
+            if ends:
+                out += ["", "End points:"]
+                out += [f"  - {k}: the root of `{e['minimal_polynomial']}` in ]{e['interval'][0]}, "
+                        f"{e['interval'][1]}[" for k, e in sorted(ends.items())]
+            out.append("")
+        if self.undecided:
+            out += ["## Undecided", ""] + [f"- {u}" for u in self.undecided] + [""]
+        out += ["## The datum", ""] + [f"- {k} = `{v}`" for k, v in self.datum.items()] + [""]
+        if self.diagnosis:
+            out += ["## First collision that goes wrong", "", self.diagnosis["text"], ""]
+        out += ["## Verdict", "", self.verdict, ""]
+        return "\n".join(out)
+
+
+# ------------------------------------------------------------------ the analysis
+def _rational(value, what: str) -> flint.fmpq:
+    try:
+        from fractions import Fraction
+        f = Fraction(str(value))
+    except (ValueError, ZeroDivisionError):
+        raise UsageError(f"--r-range: {what} {value!r} is not a rational number") from None
+    return Q(f.numerator, f.denominator)
+
+
+def check_range(lo, hi) -> tuple:
+    lo, hi = _rational(lo, "LO"), _rational(hi, "HI")
+    if not (0 <= lo < hi <= 1):
+        raise UsageError(f"--r-range: need 0 ≤ LO < HI ≤ 1, not {lo}, {hi}")
+    return lo, hi
+
+
+def _cap(text: str, n: int = 4000) -> str:
+    return text if len(text) <= n else text[:n] + f" … ({len(text)} characters)"
+
+
+def _nonempty(regions) -> list[dict]:
+    return [region_set(R) for R in regions if R.pieces]
+
+
+def analyse(word: str, lo=0, hi=1) -> PatternResult:
+    """The exact analysis of a written period (any rotation / mirror) over ]lo, hi[."""
+    import time
+    start = time.perf_counter()
+    lo, hi = check_range(lo, hi)
+    normal, system_name, why = read(word)
+    system = BY_NAME[system_name]
+    cand = candidate_in(system_name, normal)
+    cp = cand.cp
+    an = Analysis(cand, lo, hi)
+    n = len(normal)
+    reqs, steps = prefix_requirements(normal, n, cand.q0, cand.steps, cand.q0_other, system=system)
+    lam_req = Requirement("λ", (K(Lf), K.zero), 1)
+    first = [lam_req] + [q for q in reqs if q.name in ("u = q_2(0)", "x")]
+    conditions = {"exists": [_cond(q) for q in first] + (["x real"] if system.gaps == 3 else [])}
+    for q in first:
+        an.impose(q)
+    regions = {"exists": _copy(an.regions)}
+    # feasibility, collision by collision: the first one that empties every region is named
+    seen = {q.name for q in first}
+    groups = []
+    for m in range(1, n + 1):
+        rm, _ = prefix_requirements(normal, m, cand.q0, cand.steps, cand.q0_other, system=system)
+        new = [q for q in rm if q.name not in seen]
+        seen |= {q.name for q in new}
+        groups.append(new)
+    conditions["feasible"] = [_cond(q) for g in groups for q in g]
+    diagnosis, before = None, _copy(an.regions)
+    for m, group in enumerate(groups, 1):
+        for q in group:
+            an.impose(q)
+        if any(R.pieces for R in before) and not any(R.pieces for R in an.regions) and diagnosis is None:
+            diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
+        before = _copy(an.regions)
+    regions["feasible"] = _copy(an.regions)
+    stab = dominance_requirements(cp) + (stability_conditions(cand.abcd) if cand.abcd is not None else [])
+    conditions["stable"] = [_cond(q) for q in stab]
+    for q in stab:
+        an.impose(q)
+    regions["stable"] = _copy(an.regions)
+    undecided = sorted({f"{BRANCH_NAMES[R.branch]} {R.fixed_point} at {_short(rc)}: {why_}"
+                        for R in an.regions for rc, why_ in R.undecided})
+    M = [[show(e) for e in row] for row in cand.M.tolist()]
+    disc = sp.factor(sp.discriminant(sp.Poly(cp, lam)).as_expr())
+    res = PatternResult(word, normal, system_name, why, (lo, hi), M, show(sp.collect(cp, lam)), show(disc),
+                        _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
+                        undecided, conditions, datum(cand), diagnosis, "", 0.0, regions)
+    res.verdict = verdict(res)
+    res.seconds = time.perf_counter() - start
+    return res
+
+
+def _cond(q: Requirement) -> str:
+    return f"{q.name} {'>' if q.sign > 0 else '<'} 0"
+
+
+def datum(cand) -> dict:
+    """The formulas of the datum: u, v (q(0) = (-1, u, v)) and x± (four particles)."""
+    def fmt(e):
+        e = e.as_expr() if hasattr(e, "as_expr") else e
+        num, den = sp.fraction(sp.cancel(e))
+        return _cap(f"({show(sp.factor(num) if len(str(num)) < 3000 else num)}) / "
+                    f"({show(sp.factor(den) if len(str(den)) < 3000 else den)})")
+    out = {"q(0)": "(-1, u" + (", v)" if len(cand.q0) == 3 else ")"), "u": fmt(cand.q0[1])}
+    if len(cand.q0) == 3:
+        out["v"] = fmt(cand.q0[2])
+        a, b, c, d = cand.abcd
+        out["p(0)"] = "(1, 0, x), x = x± = (a - d ± √((a-d)² + 4bc))/(2c), f(x) = (ax + b)/(cx + d)"
+        for k, e in zip("abcd", (a, b, c, d)):
+            out[k] = _cap(show(e))
+    else:
+        out["p(0)"] = "(1, 0)"
+    return out
+
+
+def verdict(res: PatternResult) -> str:
+    w = res.written
+    where = f"for r in ]{res.interval[0]}, {res.interval[1]}["
+    if res.stable:
+        s = "; ".join(f"{s['branch']}{'' if s['fixed_point'] == NO_X else ' ' + s['fixed_point']}: {s['set']}"
+                      for s in res.stable)
+        v = f"{w}: stable self-similar collapse {where} on {s}"
+    elif res.feasible:
+        v = f"{w}: feasible self-similar data, never stable {where}"
+    elif res.exists:
+        v = f"{w}: self-similar candidates exist but none is feasible {where}"
+        if res.diagnosis:
+            v += f" ({res.diagnosis['summary']})"
+    else:
+        v = f"{w}: no self-similar candidate (λ > 0, u > 0{', x > 0' if res.system == 'four' else ''}) {where}"
+    if res.undecided:
+        v += f"; {len(res.undecided)} point(s) undecided"
+    return v
+
+
+def diagnose(system, cand, word: str, m: int, regions, lo, hi) -> dict:
+    """Where the candidate realises the first m - 1 collisions (``regions``) but never the
+    m-th: which collision happens instead.  For each other letter j (not the gap that just
+    closed), the region where j comes next, strictly before every other collision
+    (the requirements of the prefix word[:m-1] + j, with the same previous collision)."""
+    expected = word[m - 1]
+    after = word[m - 2] if m > 1 else word[-1]
+    found = []
+    for j in sorted(set(system.index) - {after}):
+        if j == expected:
+            continue
+        alt = word[:m - 1] + j
+        steps = run_in(system, alt, cand.q0)
+        reqs, _ = prefix_requirements(alt, m, cand.q0, steps, cand.q0_other, system=system, previous=word[-1])
+        an = Analysis(cand, lo, hi)
+        an.regions = _copy(regions)
+        for q in reqs:
+            an.impose(q)
+        live = _nonempty(an.regions)
+        if live:
+            found.append((j, live, an.regions))
+    prefix = show_word(word[:m - 1]) or "(nothing)"
+    covered = all(_same(R, [S for _, _, rs in found for S in rs]) for R in regions if R.pieces)
+    if found:
+        parts = []
+        for j, live, _ in found:
+            where = "; ".join(f"{s['branch']}{'' if s['fixed_point'] == NO_X else ' ' + s['fixed_point']}: {s['set']}"
+                              for s in live)
+            parts.append(f"{show_word(j)} comes next, strictly before {show_word(expected)} and any other collision, "
+                         f"on {where}")
+        summary = (f"after {prefix} comes {' or '.join(show_word(j) for j, _, _ in found)}, "
+                   f"strictly before {show_word(expected)}")
+    else:
+        parts, summary = [], f"after {prefix}, {show_word(expected)} is never the true next collision"
+    text = (f"The candidate realises {prefix} (collisions 1..{m - 1}) but never collision {m} "
+            f"({show_word(expected)}). " + " ".join(parts)
+            + ("" if covered else " Elsewhere on the region of the prefix no single next collision is certified "
+                                  "(a tie, no approaching pair, or an undecided point)."))
+    return {"collision": m, "expected": show_word(expected), "prefix": show_word(word[:m - 1]),
+            "instead": [{"letter": show_word(j), "where": live} for j, live, _ in found],
+            "complete": covered, "summary": summary, "text": text}
+
+
+def _same(R: Region, others) -> bool:
+    """Whether the pieces of R are covered by the union of the matching regions' pieces."""
+    theirs = [p for S in others if S.branch == R.branch and S.fixed_point == R.fixed_point for p in S.pieces]
+    points = [q.lo for q in theirs if q.is_point]
+    intervals = sorted((q for q in theirs if not q.is_point), key=lambda q: q.lo)
+
+    def covered_point(a):
+        return any(a == b for b in points) or any(q.lo < a < q.hi for q in intervals)
+    for p in R.pieces:
+        if p.is_point:
+            if not covered_point(p.lo):
+                return False
+            continue
+        pos, first = p.lo, True
+        for q in intervals:
+            if q.hi <= pos or q.lo >= p.hi:
+                continue
+            if q.lo > pos or (q.lo == pos and not first and not covered_point(pos)):
+                return False
+            pos, first = q.hi, False
+            if pos >= p.hi:
+                break
+        if pos < p.hi:
+            return False
+    return True
