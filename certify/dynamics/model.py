@@ -81,16 +81,22 @@ def word_matrix(word: str, rr=r) -> sp.Matrix:
     polynomials in r (:func:`collide` works in any ring), not on SymPy expressions
     expanded after every letter."""
     if rr is r:
-        R = flint.fmpq_poly([0, 1])
-        M = [[flint.fmpq_poly([int(i == j)]) for j in range(3)] for i in range(3)]
-        for letter in word:
-            columns = [collide(letter, (M[0][j], M[1][j], M[2][j]), R) for j in range(3)]
-            M = [[columns[j][i] for j in range(3)] for i in range(3)]
+        M = word_matrix_flint(word)
         return sp.Matrix(3, 3, lambda i, j: sp.factor(from_flint(M[i][j], r)))
     M = sp.eye(3)
     for letter in word:
         M = (collision_matrix(letter, rr) * M).applyfunc(sp.expand)
     return M.applyfunc(sp.factor)
+
+
+def word_matrix_flint(word: str) -> list[list[flint.fmpq_poly]]:
+    """M_w = K_{c_n} ... K_{c_1} as rows of python-flint polynomials in r."""
+    R = flint.fmpq_poly([0, 1])
+    M = [[flint.fmpq_poly([int(i == j)]) for j in range(3)] for i in range(3)]
+    for letter in word:
+        columns = [collide(letter, (M[0][j], M[1][j], M[2][j]), R) for j in range(3)]
+        M = [[columns[j][i] for j in range(3)] for i in range(3)]
+    return M
 
 
 def characteristic_polynomial(M: sp.Matrix) -> sp.Expr:
