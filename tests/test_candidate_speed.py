@@ -1,15 +1,27 @@
 """The candidate of a word on python-flint (certify.algebra.poly.Frac) equals, field by
 field, the candidate computed in SymPy's rational function field K (the reference
 below is the former implementation, kept verbatim in substance)."""
+import flint
 import pytest
 import sympy as sp
 
-from certify.algebra.poly import FIELD, RING, Lf, Rf, lam, to_field, to_ring
+from certify.algebra.poly import FIELD, RING, Lf, Rf, from_flint, lam, r, to_field, to_ring
 from certify.dynamics.model import INDEX, characteristic_polynomial, collide, word_matrix
 from certify.dynamics.systems import BY_NAME, candidate_in, eigenvector2, run_in, system_matrix
 from certify.dynamics.words import check_position_map, eigenvector, position_map, run_word
 
 K = FIELD
+
+
+def ref_word_matrix(system, word):
+    """M_w with SymPy's factor (the former word_matrix/system_matrix)."""
+    n = system.gaps
+    R = flint.fmpq_poly([0, 1])
+    M = [[flint.fmpq_poly([int(i == j)]) for j in range(n)] for i in range(n)]
+    for letter in word:
+        columns = [system.collide(letter, tuple(M[i][j] for i in range(n)), R) for j in range(n)]
+        M = [[columns[j][i] for j in range(n)] for i in range(n)]
+    return sp.Matrix(n, n, lambda i, j: sp.factor(from_flint(M[i][j], r)))
 
 
 def ref_eigenvector(M, rows=(0, 1)):
@@ -47,15 +59,15 @@ def ref_position_map(last_p, cp):
 def ref_candidate(system_name, word):
     system = BY_NAME[system_name]
     if system_name == "four":
-        M = word_matrix(word)
-        cp = characteristic_polynomial(M)
+        M = ref_word_matrix(system, word)
+        cp = sp.expand(M.charpoly(lam).as_expr())
         Mk = [[to_field(e) for e in row] for row in M.tolist()]
         q0 = ref_eigenvector(Mk)
         run = ref_run(system, word, q0)
         abcd = ref_position_map(run[-1][1], cp)
         others = [ref_eigenvector(Mk, rows) for rows in ((0, 2), (1, 2))]
         return M, cp, q0, others, abcd, run
-    M = system_matrix(system, word)
+    M = ref_word_matrix(system, word)
     cp = sp.expand(M.charpoly(lam).as_expr())
     (m11, m12), (m21, m22) = [[to_field(e) for e in row] for row in M.tolist()]
     first = (-K.one, (m11 - Lf) / m12 if m12 != K.zero else None)
@@ -88,6 +100,11 @@ def test_candidate_equals_the_sympy_field_computation(system, word):
     new = candidate_in.__wrapped__(system, word)
     M, cp, q0, others, abcd, run = ref
     assert new.M == M and new.cp == cp
+    assert [sp.srepr(e) for e in new.M] == [sp.srepr(e) for e in M] and sp.srepr(new.cp) == sp.srepr(cp)
+    if system == "four":
+        assert word_matrix(word) == M and characteristic_polynomial(M) == cp
+    else:
+        assert system_matrix(BY_NAME[system], word) == M
     assert len(new.q0) == len(q0) and all(same(a, b) for a, b in zip(new.q0, q0))
     assert len(new.q0_other) == len(others)
     for qa, qb in zip(new.q0_other, others):
@@ -119,3 +136,17 @@ def test_position_map_rejects_a_wrong_map():
     a, b, cc, d = c.abcd
     with pytest.raises(ArithmeticError):
         check_position_map(c.steps, (2 * a, b, 2 * cc, d), c.cp)
+
+
+def test_factor_and_charpoly_on_flint_are_sympys():
+    """factor_flint/charpoly_flint give the very expressions of sp.factor and
+    sp.expand(charpoly) (constants, signs, rational contents, repeated factors)."""
+    from certify.algebra.poly import to_fmpq_poly
+    from certify.dynamics.model import charpoly_flint, factor_flint, word_matrix_flint
+    for e in [0, sp.Rational(3, 2), -r, 1 - r, (1 - r)**2 * (3 + r) / 4, -(r**2 + 1) * (r - 2) / 6, 2 * r, r**3]:
+        p = to_fmpq_poly(e)
+        assert sp.srepr(factor_flint(p)) == sp.srepr(sp.factor(from_flint(p, r)))
+    for w in ("ababcb", "abcbacbab", "abacbcabacbcbcab"):
+        Mq = word_matrix_flint(w)
+        M = sp.Matrix(3, 3, lambda i, j: sp.factor(from_flint(Mq[i][j], r)))
+        assert sp.srepr(charpoly_flint(Mq)) == sp.srepr(sp.expand(M.charpoly(lam).as_expr()))

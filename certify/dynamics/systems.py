@@ -27,7 +27,7 @@ import sympy as sp
 from certify import caches
 from certify.algebra.branches import Spectrum
 from certify.algebra.poly import LR_LAMBDA, Frac, flint_poly_to_frac, frac_to_field, from_flint, lam, r
-from .model import INDEX, collide
+from .model import INDEX, charpoly_flint, collide, factor_flint
 from .words import K, Candidate, Step, candidate, run_lr, steps_of
 
 
@@ -74,7 +74,7 @@ def system_matrix_flint(system: System, word: str) -> list[list[flint.fmpq_poly]
 def system_matrix(system: System, word: str) -> sp.Matrix:
     """M_w = K_{c_n} ... K_{c_1} of the system, entries factored (python-flint in r)."""
     M = system_matrix_flint(system, word)
-    return sp.Matrix(system.gaps, system.gaps, lambda i, j: sp.factor(from_flint(M[i][j], r)))
+    return sp.Matrix(system.gaps, system.gaps, lambda i, j: factor_flint(M[i][j]))
 
 
 def run_in(system: System, word: str, q0: tuple) -> list[Step]:
@@ -106,9 +106,10 @@ def candidate_in(system_name: str, word: str) -> Candidate:
     if word[-1] != "b" or system.index[word[0]] != 0:
         raise ValueError(f"the normalisation q(0) = (-1, u), p(0) = (1, 0) needs a word starting on gap 1 "
                          f"and ending with b, not {word!r}")
-    M = system_matrix(system, word)
-    cp = sp.expand(M.charpoly(lam).as_expr())
-    Mf = [[flint_poly_to_frac(e) for e in row] for row in system_matrix_flint(system, word)]
+    Mq = system_matrix_flint(system, word)
+    M = sp.Matrix(system.gaps, system.gaps, lambda i, j: factor_flint(Mq[i][j]))     # = system_matrix
+    cp = charpoly_flint(Mq)                                   # = sp.expand(M.charpoly(λ).as_expr())
+    Mf = [[flint_poly_to_frac(e) for e in row] for row in Mq]
     first, second = eigenvector2(Mf)
     q0 = first if first[1] is not None else second
     run = run_lr(word, q0, system.index, system.collide, system.gaps)

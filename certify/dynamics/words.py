@@ -23,8 +23,8 @@ import sympy as sp
 from certify import caches
 from certify.algebra.balls import GUARD, precision
 from certify.algebra.branches import Condition, Spectrum, ball_value
-from .model import (INDEX, characteristic_polynomial, check_word, collide, collision_matrix, word_matrix,
-                    word_matrix_flint)
+from .model import (INDEX, characteristic_polynomial, charpoly_flint, check_word, collide, collision_matrix,
+                    factor_flint, word_matrix, word_matrix_flint)
 from certify.algebra.poly import (FIELD, LR_LAMBDA, LR_R, LRCTX, LRQCTX, Frac, field_to_frac, flint_poly_to_frac,
                                   frac_to_field, lr_to_ring, to_field, to_ring)
 
@@ -215,9 +215,10 @@ def candidate(word: str) -> Candidate:
     check_word(word)
     if word[0] != "a" or word[-1] != "b":
         raise ValueError(f"the normalisation q(0) = (-1, u, v), p(0) = (1, 0, x) needs a word a...b, not {word!r}")
-    M = word_matrix(word)
-    cp = characteristic_polynomial(M)
-    Mf = [[flint_poly_to_frac(e) for e in row] for row in word_matrix_flint(word)]
+    Mq = word_matrix_flint(word)
+    M = sp.Matrix(3, 3, lambda i, j: factor_flint(Mq[i][j]))          # = word_matrix(word)
+    cp = charpoly_flint(Mq)                                           # = characteristic_polynomial(M)
+    Mf = [[flint_poly_to_frac(e) for e in row] for row in Mq]
     q0 = eigenvector_lr(Mf)
     run = run_lr(word, q0)
     last = run[-1][1]
