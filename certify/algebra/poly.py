@@ -8,6 +8,7 @@ python-flint's ``fmpz_poly``/``fmpq_poly`` and ``fmpz_mpoly``.
 """
 from __future__ import annotations
 
+import math
 from functools import reduce
 
 from fractions import Fraction
@@ -207,3 +208,164 @@ def ring_terms(p: PolyElement) -> list[tuple[flint.fmpq, int, int]]:
             raise ValueError("polynomial still depends on x, u, v or s")
         out.append((flint.fmpq(int(c.numerator), int(c.denominator)), er, el))
     return out
+
+
+# --- Q(λ, r) on fmpz_mpoly: the fast field of the symbolic runs --------------------
+#
+# An element of K = Q(λ, r) as a pair (num, den) of fmpz_mpoly in (λ, r), lex, λ first
+# (SymPy's FIELD order restricted to λ, r), always in the canonical form of SymPy's
+# FracElement: num and den coprime over Z (contents included), den's leading
+# coefficient positive.  So the conversion back to FIELD is exact and needs no gcd:
+# ``to_field(Frac)`` gives the very numerator and denominator SymPy's cancel gives.
+
+LRCTX = flint.fmpz_mpoly_ctx.get(("lam", "r"), "lex")
+LRQCTX = flint.fmpq_mpoly_ctx.get(("lam", "r"), "lex")
+_LR_ONE = LRCTX.from_dict({(0, 0): 1})
+_LR_ZERO = LRCTX.from_dict({})
+
+
+class Frac:
+    """num/den ∈ Q(λ, r), fmpz_mpoly in (λ, r), canonical (see above)."""
+
+    __slots__ = ("num", "den")
+
+    def __init__(self, num, den=None, reduced: bool = False):
+        if den is None:
+            den = _LR_ONE
+            reduced = True
+        if not reduced:
+            if num.is_zero():
+                num, den = _LR_ZERO, _LR_ONE
+            else:
+                g = num.gcd(den)
+                if not g.is_one():
+                    num, den = num / g, den / g
+                if den.leading_coefficient() < 0:
+                    num, den = -num, -den
+        self.num, self.den = num, den
+
+    @staticmethod
+    def of(a) -> "Frac":
+        if isinstance(a, Frac):
+            return a
+        if isinstance(a, (int, flint.fmpz)):
+            return Frac(LRCTX.from_dict({(0, 0): a}) if a else _LR_ZERO)
+        if isinstance(a, (Fraction, flint.fmpq)):
+            a = flint.fmpq(a.numerator, a.denominator) if isinstance(a, Fraction) else a
+            if a == 0:
+                return Frac(_LR_ZERO)
+            return Frac(LRCTX.from_dict({(0, 0): a.p}), LRCTX.from_dict({(0, 0): a.q}), True)
+        return field_to_frac(to_field(a))
+
+    def is_zero(self) -> bool:
+        return self.num.is_zero()
+
+    def __eq__(self, g):
+        g = Frac.of(g)
+        return self.num == g.num and self.den == g.den
+
+    __hash__ = None
+
+    def __neg__(self):
+        return Frac(-self.num, self.den, True)
+
+    def __add__(self, g):
+        g = Frac.of(g)
+        if self.num.is_zero():
+            return g
+        if g.num.is_zero():
+            return self
+        if self.den == g.den:
+            return Frac(self.num + g.num, self.den)
+        return Frac(self.num * g.den + g.num * self.den, self.den * g.den)
+
+    __radd__ = __add__
+
+    def __sub__(self, g):
+        return self + (-Frac.of(g))
+
+    def __rsub__(self, g):
+        return Frac.of(g) + (-self)
+
+    def __mul__(self, g):
+        g = Frac.of(g)
+        if self.num.is_zero() or g.num.is_zero():
+            return Frac(_LR_ZERO)
+        # cross cancellation keeps the products small
+        g1, g2 = self.num.gcd(g.den), g.num.gcd(self.den)
+        n1, d2 = (self.num / g1, g.den / g1) if not g1.is_one() else (self.num, g.den)
+        n2, d1 = (g.num / g2, self.den / g2) if not g2.is_one() else (g.num, self.den)
+        num, den = n1 * n2, d1 * d2
+        if den.leading_coefficient() < 0:
+            num, den = -num, -den
+        return Frac(num, den, True)
+
+    __rmul__ = __mul__
+
+    def inverse(self):
+        if self.num.is_zero():
+            raise ZeroDivisionError("division by zero in Q(λ, r)")
+        num, den = self.den, self.num
+        if den.leading_coefficient() < 0:
+            num, den = -num, -den
+        return Frac(num, den, True)
+
+    def __truediv__(self, g):
+        return self * Frac.of(g).inverse()
+
+    def __rtruediv__(self, g):
+        return Frac.of(g) * self.inverse()
+
+
+def _lr_from_ring(p: PolyElement):
+    """(integer fmpz_mpoly in (λ, r), integer scale) with p = poly/scale; p only in λ, r."""
+    den = 1
+    for c in p.values():
+        q = int(c.denominator)
+        if q != 1:
+            den = den * q // math.gcd(den, q)
+    terms = {}
+    for (el, er, ex, eu, ev, es), c in p.terms():
+        if ex or eu or ev or es:
+            raise ValueError("polynomial depends on x, u, v or s, not only on λ, r")
+        terms[(el, er)] = int(c.numerator) * (den // int(c.denominator))
+    return LRCTX.from_dict(terms), den
+
+
+def field_to_frac(f) -> Frac:
+    """An element of FIELD in λ, r only as :class:`Frac` (canonical)."""
+    f = to_field(f)
+    n, a = _lr_from_ring(f.numer)
+    d, b = _lr_from_ring(f.denom)
+    return Frac(n * b, d * a)
+
+
+def lr_to_ring(p, scale=1) -> PolyElement:
+    """An fmpz_mpoly/fmpq_mpoly in (λ, r), divided by ``scale``, as an element of RING."""
+    dom = RING.domain
+    if scale == 1:
+        d = {(el, er, 0, 0, 0, 0): dom(c) for (el, er), c in p.to_dict().items()}
+    else:
+        s = flint.fmpq(scale)
+        d = {(el, er, 0, 0, 0, 0): dom(flint.fmpq(c) / s) for (el, er), c in p.to_dict().items()}
+    return RING.zero.new(d)
+
+
+def frac_to_field(F: Frac) -> FracElement:
+    """A canonical :class:`Frac` as the equal FracElement of FIELD, without a gcd."""
+    return FIELD.raw_new(lr_to_ring(F.num), lr_to_ring(F.den))
+
+
+def flint_poly_to_frac(p) -> Frac:
+    """An fmpz_poly/fmpq_poly in r as :class:`Frac`."""
+    if isinstance(p, flint.fmpq_poly):
+        den = p.denom()
+        num = p.numer()
+    else:
+        den, num = flint.fmpz(1), p
+    terms = {(0, k): int(c) for k, c in enumerate(num.coeffs()) if c}
+    return Frac(LRCTX.from_dict(terms), LRCTX.from_dict({(0, 0): int(den)}))
+
+
+LR_LAMBDA = Frac(LRCTX.gen(0))
+LR_R = Frac(LRCTX.gen(1))

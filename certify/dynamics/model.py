@@ -14,7 +14,9 @@ import re
 import flint
 import sympy as sp
 
-from certify.algebra.poly import from_flint, lam, r
+from sympy.core.mul import _keep_coeff
+
+from certify.algebra.poly import from_flint, lam, primitive, r
 from certify.errors import UsageError
 
 LETTERS = "abc"
@@ -81,16 +83,61 @@ def word_matrix(word: str, rr=r) -> sp.Matrix:
     polynomials in r (:func:`collide` works in any ring), not on SymPy expressions
     expanded after every letter."""
     if rr is r:
-        R = flint.fmpq_poly([0, 1])
-        M = [[flint.fmpq_poly([int(i == j)]) for j in range(3)] for i in range(3)]
-        for letter in word:
-            columns = [collide(letter, (M[0][j], M[1][j], M[2][j]), R) for j in range(3)]
-            M = [[columns[j][i] for j in range(3)] for i in range(3)]
-        return sp.Matrix(3, 3, lambda i, j: sp.factor(from_flint(M[i][j], r)))
+        M = word_matrix_flint(word)
+        return sp.Matrix(3, 3, lambda i, j: factor_flint(M[i][j]))
     M = sp.eye(3)
     for letter in word:
         M = (collision_matrix(letter, rr) * M).applyfunc(sp.expand)
     return M.applyfunc(sp.factor)
+
+
+def word_matrix_flint(word: str) -> list[list[flint.fmpq_poly]]:
+    """M_w = K_{c_n} ... K_{c_1} as rows of python-flint polynomials in r."""
+    R = flint.fmpq_poly([0, 1])
+    M = [[flint.fmpq_poly([int(i == j)]) for j in range(3)] for i in range(3)]
+    for letter in word:
+        columns = [collide(letter, (M[0][j], M[1][j], M[2][j]), R) for j in range(3)]
+        M = [[columns[j][i] for j in range(3)] for i in range(3)]
+    return M
+
+
+def factor_flint(p) -> sp.Expr:
+    """sp.factor(from_flint(p, r)) (the same expression: the rational coefficient kept in
+    front of the product of the primitive irreducible factors with positive leading
+    coefficient), by python-flint's factorisation of a polynomial in r."""
+    p = flint.fmpq_poly(p)
+    if p.degree() <= 0:
+        return sp.factor(from_flint(p, r))
+    _, factors = p.numer().factor()
+    coeff = flint.fmpq(p.coeffs()[-1])
+    prod = []
+    for f, m in factors:
+        f = primitive(f)
+        coeff /= f.coeffs()[-1] ** m
+        prod.append(from_flint(f, r) ** int(m))
+    return _keep_coeff(sp.Rational(int(coeff.p), int(coeff.q)), sp.Mul(*prod))
+
+
+def charpoly_flint(M) -> sp.Expr:
+    """det(λI - M) for a 2x2 or 3x3 matrix of python-flint polynomials in r, as the
+    expanded SymPy expression (equal to ``sp.expand(Matrix.charpoly(λ).as_expr())``)."""
+    n = len(M)
+    one = flint.fmpq_poly([1])
+    if n == 2:
+        coeffs = [one, -(M[0][0] + M[1][1]), M[0][0] * M[1][1] - M[0][1] * M[1][0]]
+    elif n == 3:
+        (a, b, c), (d, e, f), (g, h, i) = M
+        det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+        minors = (a * e - b * d) + (a * i - c * g) + (e * i - f * h)
+        coeffs = [one, -(a + e + i), minors, -det]
+    else:
+        raise ValueError("a 2x2 or 3x3 matrix")
+    terms = []
+    for k, c in enumerate(coeffs):
+        for j, cj in enumerate(flint.fmpq_poly(c).coeffs()):
+            if cj:
+                terms.append(sp.Rational(int(cj.p), int(cj.q)) * r**j * lam**(n - k))
+    return sp.Add(*terms)
 
 
 def characteristic_polynomial(M: sp.Matrix) -> sp.Expr:

@@ -26,9 +26,9 @@ import sympy as sp
 
 from certify import caches
 from certify.algebra.branches import Spectrum
-from certify.algebra.poly import Lf, Rf, from_flint, lam, r, to_field
-from .model import INDEX, collide
-from .words import K, Candidate, Step, candidate
+from certify.algebra.poly import LR_LAMBDA, Frac, flint_poly_to_frac, frac_to_field, from_flint, lam, r
+from .model import INDEX, charpoly_flint, collide, factor_flint
+from .words import K, Candidate, Step, candidate, run_lr, steps_of
 
 
 @dataclass(frozen=True)
@@ -60,42 +60,39 @@ SYMMETRIC = System("symmetric", 2, {"s": 0, "b": 1})
 BY_NAME = {S.name: S for S in (FOUR, THREE, SYMMETRIC)}
 
 
-def system_matrix(system: System, word: str) -> sp.Matrix:
-    """M_w = K_{c_n} ... K_{c_1} of the system, entries factored (python-flint in r)."""
+def system_matrix_flint(system: System, word: str) -> list[list[flint.fmpq_poly]]:
+    """M_w = K_{c_n} ... K_{c_1} of the system as rows of python-flint polynomials in r."""
     n = system.gaps
     R = flint.fmpq_poly([0, 1])
     M = [[flint.fmpq_poly([int(i == j)]) for j in range(n)] for i in range(n)]
     for letter in word:
         columns = [system.collide(letter, tuple(M[i][j] for i in range(n)), R) for j in range(n)]
         M = [[columns[j][i] for j in range(n)] for i in range(n)]
-    return sp.Matrix(n, n, lambda i, j: sp.factor(from_flint(M[i][j], r)))
+    return M
+
+
+def system_matrix(system: System, word: str) -> sp.Matrix:
+    """M_w = K_{c_n} ... K_{c_1} of the system, entries factored (python-flint in r)."""
+    M = system_matrix_flint(system, word)
+    return sp.Matrix(system.gaps, system.gaps, lambda i, j: factor_flint(M[i][j]))
 
 
 def run_in(system: System, word: str, q0: tuple) -> list[Step]:
     """The collisions of ``word`` from p(0) = (1, 0[, x]), q(0) = q0, times defined by
     p_i(t_k) = 0 (as :func:`.words.run_word`, in any system)."""
-    n = system.gaps
-    p = [(K.one, K.zero), (K.zero, K.zero)] + ([(K.zero, K.one)] if n == 3 else [])
-    q = tuple(q0)
-    out = []
-    for letter in word:
-        i = system.index[letter]
-        if q[i] == K.zero:
-            raise ZeroDivisionError(f"q_{i + 1} vanishes identically before {letter}")
-        t = (-p[i][0] / q[i], -p[i][1] / q[i])
-        p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
-        p[i] = (K.zero, K.zero)
-        q = system.collide(letter, q, Rf)
-        out.append(Step(letter, p, q))
-    return out
+    return steps_of(run_lr(word, q0, system.index, system.collide, system.gaps))
 
 
 def eigenvector2(M) -> list[tuple]:
     """q = (-1, u) from row 1 of (M - λI) q = 0, and from row 2 (the other choice,
-    for points where the first degenerates)."""
+    for points where the first degenerates); entries :class:`Frac` (then so is q) or of K."""
+    if not isinstance(M[0][0], Frac):
+        from certify.algebra.poly import field_to_frac
+        out = eigenvector2([[field_to_frac(e) for e in row] for row in M])
+        return [tuple(frac_to_field(e) if e is not None else None for e in q) for q in out]
     (m11, m12), (m21, m22) = M
-    return [(-K.one, (m11 - Lf) / m12 if m12 != K.zero else None),
-            (-K.one, m21 / (m22 - Lf))]
+    return [(Frac.of(-1), (m11 - LR_LAMBDA) / m12 if not m12.is_zero() else None),
+            (Frac.of(-1), m21 / (m22 - LR_LAMBDA))]
 
 
 @lru_cache(maxsize=None)
@@ -109,16 +106,18 @@ def candidate_in(system_name: str, word: str) -> Candidate:
     if word[-1] != "b" or system.index[word[0]] != 0:
         raise ValueError(f"the normalisation q(0) = (-1, u), p(0) = (1, 0) needs a word starting on gap 1 "
                          f"and ending with b, not {word!r}")
-    M = system_matrix(system, word)
-    cp = sp.expand(M.charpoly(lam).as_expr())
-    Mk = [[to_field(e) for e in row] for row in M.tolist()]
-    first, second = eigenvector2(Mk)
+    Mq = system_matrix_flint(system, word)
+    M = sp.Matrix(system.gaps, system.gaps, lambda i, j: factor_flint(Mq[i][j]))     # = system_matrix
+    cp = charpoly_flint(Mq)                                   # = sp.expand(M.charpoly(λ).as_expr())
+    Mf = [[flint_poly_to_frac(e) for e in row] for row in Mq]
+    first, second = eigenvector2(Mf)
     q0 = first if first[1] is not None else second
-    steps = run_in(system, word, q0)
-    if steps[-1].p[1] != (K.zero, K.zero):
+    run = run_lr(word, q0, system.index, system.collide, system.gaps)
+    last = run[-1][1]
+    if not (last[1][0].is_zero() and last[1][1].is_zero()):
         raise ArithmeticError("p_2 does not vanish after the last b")
-    others = [second] if first[1] is not None else []
-    return Candidate(word, M, cp, Spectrum(cp), q0, others, None, steps)
+    others = [tuple(frac_to_field(e) for e in second)] if first[1] is not None else []
+    return Candidate(word, M, cp, Spectrum(cp), tuple(frac_to_field(e) for e in q0), others, None, steps_of(run))
 
 
 caches.register(candidate_in.cache_clear)

@@ -7,8 +7,10 @@ eigen-equation over K = Q(λ, r); p(0) = (1, 0, x).  The collision times are
 *defined* as if the word were realised (t_k = t_{k-1} - p_i/q_i for the letter's
 component i, l. 460-463), so p(t_k) = P₀ + x P₁ stays affine in x and q(t_k) is in
 K; the position map is f(x) = p_3(t_n)/p_1(t_n) = (ax + b)/(cx + d).  Everything is
-exact (SymPy's sparse rational functions); identities are checked modulo cp(λ; r),
-which keeps the values on every eigenvalue branch.
+exact; identities are checked modulo cp(λ; r), which keeps the values on every
+eigenvalue branch.  The arithmetic runs on python-flint's fmpz_mpoly in (λ, r)
+(:class:`certify.algebra.poly.Frac`, canonical like SymPy's fractions); the results
+are handed out as the equal elements of SymPy's field K (``FIELD``).
 """
 from __future__ import annotations
 
@@ -21,21 +23,29 @@ import sympy as sp
 from certify import caches
 from certify.algebra.balls import GUARD, precision
 from certify.algebra.branches import Condition, Spectrum, ball_value
-from .model import INDEX, characteristic_polynomial, check_word, collide, collision_matrix, word_matrix
-from certify.algebra.poly import FIELD, Lf, RING, Rf, to_field, to_ring
+from .model import (INDEX, characteristic_polynomial, charpoly_flint, check_word, collide, collision_matrix,
+                    factor_flint, word_matrix, word_matrix_flint)
+from certify.algebra.poly import (FIELD, LR_LAMBDA, LR_R, LRCTX, LRQCTX, Frac, field_to_frac, flint_poly_to_frac,
+                                  frac_to_field, lr_to_ring, to_field, to_ring)
 
 K = FIELD
+
+
+def eigenvector_lr(M, rows=(0, 1)) -> tuple:
+    """:func:`eigenvector` on a matrix of :class:`Frac`, q as :class:`Frac`."""
+    A = [[M[i][j] - LR_LAMBDA if i == j else M[i][j] for j in range(3)] for i in range(3)]
+    (a11, a12), (a21, a22) = [(A[i][1], A[i][2]) for i in rows]
+    b1, b2 = (A[i][0] for i in rows)
+    det = a11 * a22 - a12 * a21
+    return (Frac.of(-1), (b1 * a22 - a12 * b2) / det, (a11 * b2 - b1 * a21) / det)
 
 
 def eigenvector(M, rows=(0, 1)) -> tuple:
     """q = (-1, u, v) solving two rows of (M - λI) q = 0 by Cramer's rule over K; the
     paper uses rows 1 and 2 (l. 366).  The three choices of rows agree on the
     branches wherever their determinants do not vanish."""
-    A = [[M[i][j] - (Lf if i == j else K.zero) for j in range(3)] for i in range(3)]
-    (a11, a12), (a21, a22) = [(A[i][1], A[i][2]) for i in rows]
-    b1, b2 = (A[i][0] for i in rows)
-    det = a11 * a22 - a12 * a21
-    return (-K.one, (b1 * a22 - a12 * b2) / det, (a11 * b2 - b1 * a21) / det)
+    Mf = [[field_to_frac(e) for e in row] for row in M]
+    return tuple(frac_to_field(e) for e in eigenvector_lr(Mf, rows))
 
 
 @dataclass
@@ -52,23 +62,38 @@ class Step:
         return P0 + P1 * FIELD.gens[2]
 
 
+def run_lr(word: str, q0: tuple, index=INDEX, law=collide, gaps: int = 3) -> list[tuple]:
+    """The run of :func:`run_word` on :class:`Frac`: [(letter, p, q)] with p a list of
+    pairs (P0, P1) and q a tuple, on 2 or 3 gaps (p(0) = (1, 0) or (1, 0, x)); q0 of
+    :class:`Frac` or of K."""
+    q = tuple(e if isinstance(e, Frac) else field_to_frac(e) for e in q0)
+    zero, one = Frac.of(0), Frac.of(1)
+    p = [(one, zero), (zero, zero)] + ([(zero, one)] if gaps == 3 else [])
+    out = []
+    for letter in word:
+        i = index[letter]
+        if q[i].is_zero():
+            raise ZeroDivisionError(f"q_{i + 1} vanishes identically before {letter}")
+        w = -q[i].inverse()
+        t = (p[i][0] * w, p[i][1] * w)
+        p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
+        p[i] = (zero, zero)
+        q = law(letter, q, LR_R)
+        out.append((letter, p, q))
+    return out
+
+
+def steps_of(run: list[tuple]) -> list[Step]:
+    """The steps of :func:`run_lr` as :class:`Step` over K (equal elements, no gcd)."""
+    conv = frac_to_field
+    return [Step(letter, [(conv(P0), conv(P1)) for P0, P1 in p], tuple(conv(e) for e in q)) for letter, p, q in run]
+
+
 def run_word(word: str, q0: tuple) -> list[Step]:
     """From p(0) = (1, 0, x), q(0) = q0, apply the collisions of ``word`` with times
     *defined* by p_i(t_k) = 0 (l. 460-463).  Nothing is reduced modulo cp here:
     that would spoil K's cancellations; conditions are reduced at the end."""
-    p = [(K.one, K.zero), (K.zero, K.zero), (K.zero, K.one)]
-    q = tuple(q0)
-    out = []
-    for letter in word:
-        i = INDEX[letter]
-        if q[i] == K.zero:
-            raise ZeroDivisionError(f"q_{i + 1} vanishes identically before {letter}")
-        t = (-p[i][0] / q[i], -p[i][1] / q[i])
-        p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
-        p[i] = (K.zero, K.zero)
-        q = collide(letter, q, Rf)
-        out.append(Step(letter, p, q))
-    return out
+    return steps_of(run_lr(word, q0))
 
 
 def reduce_mod(e, cp):
@@ -78,16 +103,57 @@ def reduce_mod(e, cp):
     return to_field(e).numer.rem(to_ring(cp))
 
 
+def _lrq(p):
+    """A polynomial of RING in λ, r only as fmpq_mpoly."""
+    terms = {}
+    for (el, er, *rest), c in p.terms():
+        if any(rest):
+            raise ValueError("polynomial depends on x, u, v or s")
+        terms[(el, er)] = flint.fmpq(c)
+    return LRQCTX.from_dict(terms)
+
+
+def _lrq_to_frac(p) -> Frac:
+    """An fmpq_mpoly in (λ, r) as :class:`Frac`."""
+    d = p.to_dict()
+    den = flint.fmpz(1)
+    for c in d.values():
+        den = den.lcm(c.q)
+    return Frac(LRCTX.from_dict({m: c.p * (den // c.q) for m, c in d.items()}), LRCTX.from_dict({(0, 0): den}))
+
+
+def position_map_lr(last_p: list, C) -> tuple:
+    """:func:`position_map` from the final p of :func:`run_lr` and cp as fmpq_mpoly:
+    (a, b, c, d) as fmpq_mpoly, the same polynomials as SymPy's (monic lcm of the
+    denominators, remainder modulo cp monic in λ)."""
+    (d0, c0), (b0, a0) = last_p[0], last_p[2]
+    L = None
+    for e in (a0, b0, c0, d0):
+        L = e.den if L is None else (L * e.den) / L.gcd(e.den)
+    lc = flint.fmpq(L.leading_coefficient())
+    out = []
+    for e in (a0, b0, c0, d0):
+        val = LRQCTX.from_dict({m: flint.fmpq(c) / lc for m, c in (e.num * (L / e.den)).to_dict().items()})
+        out.append(divmod(val, C)[1])
+    return tuple(out)
+
+
 def position_map(steps: list[Step], cp) -> tuple:
     """(a, b, c, d), polynomials in r, λ reduced modulo cp, with p_3(t_n) ∝ ax + b and
     p_1(t_n) ∝ cx + d over a common denominator: f(x) = (ax + b)/(cx + d).  The common
     factor may be negative, which swaps x₊ and x₋ (both are always considered)."""
-    (d0, c0), (b0, a0) = steps[-1].p[0], steps[-1].p[2]
-    den = RING.one
-    for e in (a0, b0, c0, d0):
-        den = den.lcm(e.denom)
-    C = to_ring(cp)
-    return tuple((e.numer * den.quo(e.denom)).rem(C).as_expr() for e in (a0, b0, c0, d0))
+    last = [tuple(field_to_frac(e) for e in pair) for pair in steps[-1].p]
+    return tuple(lr_to_ring(e).as_expr() for e in position_map_lr(last, _lrq(to_ring(cp))))
+
+
+def check_position_map_lr(last_p: list, abcd: tuple, C) -> None:
+    """:func:`check_position_map` on Frac/fmpq_mpoly data."""
+    (d1, c1), (b1, a1) = last_p[0], last_p[2]
+    a, b, c, d = (_lrq_to_frac(e) for e in abcd)
+    for e in (a * c1 - c * a1, a * d1 + b * c1 - c * b1 - d * a1, b * d1 - d * b1):
+        num = LRQCTX.from_dict({m: flint.fmpq(k) for m, k in e.num.to_dict().items()})
+        if not divmod(num, C)[1].is_zero():
+            raise ArithmeticError("the position map (a, b, c, d) does not reproduce p_3/p_1")
 
 
 def check_position_map(steps, abcd, cp):
@@ -149,17 +215,22 @@ def candidate(word: str) -> Candidate:
     check_word(word)
     if word[0] != "a" or word[-1] != "b":
         raise ValueError(f"the normalisation q(0) = (-1, u, v), p(0) = (1, 0, x) needs a word a...b, not {word!r}")
-    M = word_matrix(word)
-    cp = characteristic_polynomial(M)
-    Mk = [[to_field(e) for e in row] for row in M.tolist()]
-    q0 = eigenvector(Mk)
-    steps = run_word(word, q0)
-    if steps[-1].p[1] != (K.zero, K.zero):
+    Mq = word_matrix_flint(word)
+    M = sp.Matrix(3, 3, lambda i, j: factor_flint(Mq[i][j]))          # = word_matrix(word)
+    cp = charpoly_flint(Mq)                                           # = characteristic_polynomial(M)
+    Mf = [[flint_poly_to_frac(e) for e in row] for row in Mq]
+    q0 = eigenvector_lr(Mf)
+    run = run_lr(word, q0)
+    last = run[-1][1]
+    if not (last[1][0].is_zero() and last[1][1].is_zero()):
         raise ArithmeticError("p_2 does not vanish after the last b")
-    abcd = position_map(steps, cp)
-    check_position_map(steps, abcd, cp)
-    q0_other = [eigenvector(Mk, rows) for rows in ((0, 2), (1, 2))]
-    return Candidate(word, M, cp, Spectrum(cp), q0, q0_other, abcd, steps)
+    C = _lrq(to_ring(cp))
+    abcd_lr = position_map_lr(last, C)
+    check_position_map_lr(last, abcd_lr, C)
+    abcd = tuple(lr_to_ring(e).as_expr() for e in abcd_lr)
+    q0_other = [tuple(frac_to_field(e) for e in eigenvector_lr(Mf, rows)) for rows in ((0, 2), (1, 2))]
+    q0 = tuple(frac_to_field(e) for e in q0)
+    return Candidate(word, M, cp, Spectrum(cp), q0, q0_other, abcd, steps_of(run))
 
 
 
