@@ -79,19 +79,31 @@ class Algebraic:
         return self.p
 
     def key(self) -> tuple:
-        """A hashable key that is a function of the number alone (cheap, unlike
-        :meth:`describe`): the minimal polynomial and the number of its real roots
-        below the number (exact Sturm count at the left end of the isolating
-        interval, which holds no other root); computed once."""
+        """A hashable key of the number, cheap (unlike :meth:`describe`): its polynomial p
+        and its index among the real roots of p, increasing.  Equal keys mean equal
+        numbers; a number given by two polynomials has two keys (a cache miss, no
+        error).  The index is the position of the number's root ball among python-flint's
+        real root balls of p (all real roots, in increasing order, each checked by an
+        exact sign change, as many as Sturm counts); else an exact Sturm count below the
+        left end of the isolating interval.  Computed once."""
         k = getattr(self, "_key", None)
         if k is None:
             if self.is_rational:
                 k = ("Q", str(self.lo))
             else:
-                p = self.minimal_polynomial()
-                k = (str(p), count_roots(p, None, self.lo))
+                k = (str(self.p), self._index())
             self._key = k
         return k
+
+    def _index(self) -> int:
+        for prec in (64, 256):
+            balls = _enclosures(self.p, prec)
+            if len(balls) == count_roots(self.p) and \
+                    all(b < a for (_a0, b), (a, _b1) in zip(balls, balls[1:])):
+                hits = [i for i, (a, b) in enumerate(balls) if self.lo < a and b < self.hi]
+                if len(hits) == 1:
+                    return hits[0]
+        return count_roots(self.p, None, self.lo)
 
     def enclosure(self, prec: int = 64):
         """Exact rational ends ]a, b[ ⊂ ]lo, hi[ of an interval holding the number,

@@ -73,7 +73,22 @@ def sign_changes(seq, a) -> int:
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
 
+_AT_INFINITY: dict = {}          # id of a sequence -> (sequence, {±1: sign changes})
+caches.register(_AT_INFINITY.clear)
+
+
 def _sign_changes_at_infinity(seq, sign: int) -> int:
+    entry = _AT_INFINITY.get(id(seq))
+    if entry is None or entry[0] is not seq:
+        if len(_AT_INFINITY) > 20000:
+            _AT_INFINITY.clear()
+        entry = _AT_INFINITY[id(seq)] = (seq, {})
+    if sign not in entry[1]:
+        entry[1][sign] = _changes_at_infinity(seq, sign)
+    return entry[1][sign]
+
+
+def _changes_at_infinity(seq, sign: int) -> int:
     signs = []
     for p in seq:
         lc = _sign(p[p.degree()]) if p.degree() >= 0 else 0
