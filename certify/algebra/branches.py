@@ -29,7 +29,9 @@ from certify import caches
 from . import numberfield as nf
 from .algebraic import Algebraic, to_fmpq
 from .balls import GUARD, decide, precision
-from .poly import (RING, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
+from math import gcd as _gcd
+
+from .poly import (RING, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
                    resultant_lambda, ring_terms, squarefree_part, to_field, to_fmpq_poly, to_ring, x)
 from .sturm import count_roots, flint_real_roots, isolate
 
@@ -50,6 +52,31 @@ class FixedPoint:
     @property
     def delta(self) -> sp.Expr:
         return sp.expand((self.a - self.d) ** 2 + 4 * self.b * self.c)
+
+
+def _integer_mpoly(p) -> tuple:
+    """(A, d): p = A/d with A an integer polynomial (python-flint, in r, λ, s), d > 0."""
+    d = 1
+    for c in p.values():
+        d = d * int(c.denominator) // _gcd(d, int(c.denominator))
+    return ring_to_mpoly(p), d
+
+
+def norm(P0, P1, delta):
+    """A positive rational multiple of P₀² - P₁²Δ (polynomials of the engine's ring in
+    r, λ), computed by python-flint: the same zeros, which is all a norm is used for."""
+    A0, d0 = _integer_mpoly(P0)
+    A1, d1 = _integer_mpoly(P1)
+    AD, dD = _integer_mpoly(delta)
+    M = A0 * A0 * (d1 * d1 * dD) - A1 * A1 * AD * (d0 * d0)     # d0² d1² dD (P0² - P1²Δ)
+    content = M.content() if not M.is_zero() else 1
+    one = [0] * len(RING.gens)
+    terms = {}
+    for (er, el, es), c in M.to_dict().items():
+        e = list(one)
+        e[0], e[1], e[-1] = el, er, es
+        terms[tuple(e)] = RING.domain(int(c) // int(content))
+    return RING.from_dict(terms) if terms else RING.zero
 
 
 def _substitute_x(g, fp: FixedPoint):
@@ -121,7 +148,7 @@ class Condition:
         """The norms with what they come from: "N", "D", "delta", "c"."""
         out = []
         for label, (P0, P1) in (("N", self.N), ("D", self.D)):
-            out.append((label, P0 ** 2 - P1 ** 2 * self.delta if P1 else P0))
+            out.append((label, norm(P0, P1, self.delta) if P1 else P0))
         if self.delta is not None:
             out += [("delta", self.delta), ("c", self.c)]
         return [(label, p) for label, p in out if not p.is_ground]
@@ -445,7 +472,7 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided."""
         P0, P1 = P
-        if not self.vanishes_at(P0 ** 2 - P1 ** 2 * delta, rc, k):
+        if not self.vanishes_at(norm(P0, P1, delta), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True

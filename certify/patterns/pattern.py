@@ -297,7 +297,9 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
     conditions["feasible"] = [_cond(q) for g in groups for q in g]
     diagnosis, before = None, _copy(an.regions)
     for m, group in enumerate(groups, 1):
-        for q in group:
+        # the same set whatever the order: those without x first (cheap, no √Δ), so
+        # that the regions shrink before the tables with x (norms of twice the degree)
+        for q in sorted(group, key=lambda q: q.has_x):
             an.impose(q)
         if any(R.pieces for R in before) and not any(R.pieces for R in an.regions) and diagnosis is None:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
@@ -383,7 +385,7 @@ def diagnose(system, cand, word: str, m: int, regions, lo, hi) -> dict:
         reqs, _ = prefix_requirements(alt, m, cand.q0, steps, cand.q0_other, system=system, previous=word[-1])
         an = Analysis(cand, lo, hi)
         an.regions = _copy(regions)
-        for q in reqs:
+        for q in sorted(reqs, key=lambda q: q.has_x):          # without x first (as in analyse)
             an.impose(q)
         live = _nonempty(an.regions)
         if live:
