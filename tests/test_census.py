@@ -64,7 +64,7 @@ def test_blocks_and_containment():
 
 
 def test_an_analysis_error_is_a_record_not_an_exception(monkeypatch):
-    def boom(word, lo, hi):
+    def boom(word, lo, hi, **options):
         raise ArithmeticError("a factor vanishes\n on a whole branch")
     monkeypatch.setattr(census, "analyse", boom)
     rec = census.analyse_word("abcb")

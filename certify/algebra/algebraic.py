@@ -64,7 +64,7 @@ class Algebraic:
 
     def minimal_polynomial(self) -> flint.fmpz_poly:
         """The irreducible factor of p vanishing at the number (p is replaced by it)."""
-        if self.p.degree() > 1:
+        if self.p.degree() > 1 and not getattr(self, "_minimal", False):
             _, factors = self.p.factor()
             for f, _m in factors:
                 f = primitive(f)
@@ -75,8 +75,46 @@ class Algebraic:
                 elif count_roots(f, self.lo, self.hi) - (f(self.hi) == 0) == 1:
                     self.p = f
                     break
+            self._minimal = True
         return self.p
 
+    def key(self) -> tuple:
+        """A hashable key of the number, cheap (unlike :meth:`describe`): its polynomial p
+        and its index among the real roots of p, increasing.  Equal keys mean equal
+        numbers; a number given by two polynomials has two keys (a cache miss, no
+        error).  The index is the position of the number's root ball among python-flint's
+        real root balls of p (all real roots, in increasing order, each checked by an
+        exact sign change, as many as Sturm counts); else an exact Sturm count below the
+        left end of the isolating interval.  Computed once."""
+        k = getattr(self, "_key", None)
+        if k is None:
+            if self.is_rational:
+                k = ("Q", str(self.lo))
+            else:
+                k = (str(self.p), self._index())
+            self._key = k
+        return k
+
+    def _index(self) -> int:
+        for prec in (64, 256):
+            balls = _enclosures(self.p, prec)
+            if len(balls) == count_roots(self.p) and \
+                    all(b < a for (_a0, b), (a, _b1) in zip(balls, balls[1:])):
+                hits = [i for i, (a, b) in enumerate(balls) if self.lo < a and b < self.hi]
+                if len(hits) == 1:
+                    return hits[0]
+        return count_roots(self.p, None, self.lo)
+
+    def enclosure(self, prec: int = 64):
+        """Exact rational ends ]a, b[ ⊂ ]lo, hi[ of an interval holding the number,
+        from python-flint's certified root balls of p (a sign change of p at a and b
+        is checked exactly, so ]a, b[ holds a root of p inside the isolating interval:
+        the number); None when no such ball is found at this precision.  Memoised."""
+        cache = self.__dict__.setdefault("_enclosures", {})
+        if prec not in cache:
+            cache[prec] = next(((a, b) for a, b in _enclosures(self.p, prec)
+                                if self.lo < a and b < self.hi), None)
+        return cache[prec]
     @property
     def is_rational(self) -> bool:
         return self.lo == self.hi
@@ -91,15 +129,20 @@ class Algebraic:
         """A ball containing the number, radius about 2^-prec: from python-flint's
         certified root isolation of p (the one real root ball inside the isolating
         interval), or else by bisecting the interval."""
+        balls = self.__dict__.setdefault("_balls", {})       # a ball stays true: memoised per prec
+        if prec in balls:
+            return balls[prec]
         if not self.is_rational and self.hi - self.lo > Q(1, 2 ** prec) and self.p.degree() > 2:
             ball = _root_ball(self.p, self.lo, self.hi, prec)
             if ball is not None:
+                balls[prec] = ball
                 return ball
         self.refine(Q(1, 2 ** prec))
         mid = (self.lo + self.hi) / 2
         rad = (self.hi - self.lo) / 2
         with precision(max(flint.ctx.prec, prec + GUARD)):
-            return flint.arb(mid, flint.arb(rad).upper())
+            balls[prec] = flint.arb(mid, flint.arb(rad).upper())
+        return balls[prec]
 
     def digits(self, n: int = 10) -> str:
         """The number rounded to n significant digits, from a certified enclosure:
@@ -142,7 +185,25 @@ class Algebraic:
             return self.compare_rational(other.lo)
         if self.is_rational:
             return -other.compare_rational(self.lo)
+        if self.hi <= other.lo:
+            return -1
+        if other.hi <= self.lo:
+            return 1
         g = self.p.gcd(other.p)
+        # certified balls first (python-flint root isolation, ends checked exactly)
+        for prec in (64, 256):
+            A, B = self.enclosure(prec), other.enclosure(prec)
+            if A is None or B is None:
+                break
+            if A[1] <= B[0]:
+                return -1
+            if B[1] <= A[0]:
+                return 1
+            if g.degree() > 0:
+                lo, hi = max(self.lo, other.lo), min(self.hi, other.hi)
+                if lo < hi and any(lo < a and b < hi for a, b in _enclosures(g, prec)):
+                    # a root of the common factor inside both isolating intervals: both numbers
+                    return 0
         for _ in range(10_000):
             if self.hi <= other.lo:
                 return -1
@@ -251,6 +312,35 @@ def _root_ball(p, lo, hi, prec: int):
     # radius about 2^-prec, as asked (a tighter ball is as true, but callers size by it)
     with precision(prec + GUARD + 16):
         return flint.arb(z.mid(), max(z.rad(), flint.arb(2) ** -(prec + 2)))
+
+
+_ENCLOSURES: dict = {}
+caches.register(_ENCLOSURES.clear)
+
+
+def _enclosures(p, prec: int) -> list:
+    """Intervals ]a, b[ (exact rational ends of python-flint's real root balls of the
+    squarefree p, at working precision ~prec) at whose ends p has opposite non-zero
+    signs (checked exactly): each holds a root of p.  Memoised."""
+    key = (tuple(p.coeffs()), prec)
+    out = _ENCLOSURES.get(key)
+    if out is None:
+        if len(_ENCLOSURES) > 4096:
+            _ENCLOSURES.clear()
+        out = []
+        with precision(prec + GUARD):
+            try:
+                roots = [c.real for c, _m in flint.fmpz_poly(p).complex_roots() if c.imag.is_zero()]
+            except (ValueError, ArithmeticError):
+                roots = []
+        for z in roots:
+            m, d = z.mid().fmpq(), z.rad().fmpq()
+            a, b = m - d, m + d
+            pa, pb = p(a), p(b)
+            if pa != 0 and pb != 0 and (pa > 0) != (pb > 0):
+                out.append((a, b))
+        _ENCLOSURES[key] = out
+    return out
 
 
 def _dec(n: int, k: int) -> str:

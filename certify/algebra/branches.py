@@ -29,7 +29,9 @@ from certify import caches
 from . import numberfield as nf
 from .algebraic import Algebraic, to_fmpq
 from .balls import GUARD, decide, precision
-from .poly import (RING, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
+from math import gcd as _gcd
+
+from .poly import (RING, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
                    resultant_lambda, ring_terms, squarefree_part, to_field, to_fmpq_poly, to_ring, x)
 from .sturm import count_roots, flint_real_roots, isolate
 
@@ -50,6 +52,31 @@ class FixedPoint:
     @property
     def delta(self) -> sp.Expr:
         return sp.expand((self.a - self.d) ** 2 + 4 * self.b * self.c)
+
+
+def _integer_mpoly(p) -> tuple:
+    """(A, d): p = A/d with A an integer polynomial (python-flint, in r, λ, s), d > 0."""
+    d = 1
+    for c in p.values():
+        d = d * int(c.denominator) // _gcd(d, int(c.denominator))
+    return ring_to_mpoly(p), d
+
+
+def norm(P0, P1, delta):
+    """A positive rational multiple of P₀² - P₁²Δ (polynomials of the engine's ring in
+    r, λ), computed by python-flint: the same zeros, which is all a norm is used for."""
+    A0, d0 = _integer_mpoly(P0)
+    A1, d1 = _integer_mpoly(P1)
+    AD, dD = _integer_mpoly(delta)
+    M = A0 * A0 * (d1 * d1 * dD) - A1 * A1 * AD * (d0 * d0)     # d0² d1² dD (P0² - P1²Δ)
+    content = M.content() if not M.is_zero() else 1
+    one = [0] * len(RING.gens)
+    terms = {}
+    for (er, el, es), c in M.to_dict().items():
+        e = list(one)
+        e[0], e[1], e[-1] = el, er, es
+        terms[tuple(e)] = RING.domain(int(c) // int(content))
+    return RING.from_dict(terms) if terms else RING.zero
 
 
 def _substitute_x(g, fp: FixedPoint):
@@ -115,12 +142,16 @@ class Condition:
 
     def norms(self) -> list:
         """Polynomials in r, λ whose zeros contain every zero and pole of g."""
+        return [p for _label, p in self.labelled_norms()]
+
+    def labelled_norms(self) -> list:
+        """The norms with what they come from: "N", "D", "delta", "c"."""
         out = []
-        for P0, P1 in (self.N, self.D):
-            out.append(P0 ** 2 - P1 ** 2 * self.delta if P1 else P0)
+        for label, (P0, P1) in (("N", self.N), ("D", self.D)):
+            out.append((label, norm(P0, P1, self.delta) if P1 else P0))
         if self.delta is not None:
-            out += [self.delta, self.c]
-        return [p for p in out if not p.is_ground]
+            out += [("delta", self.delta), ("c", self.c)]
+        return [(label, p) for label, p in out if not p.is_ground]
 
 
 caches.register(Condition._cache.clear)
@@ -230,7 +261,7 @@ class SignTable:
         head = "| r | sample | real λ | " + " | ".join(names[k] if k < len(names) else f"λ{k}" for k in range(width)) + " |"
         rows = [head, "|" + "---|" * (3 + width)]
         for k, cell in enumerate(self.cells):
-            signs = [SIGN[sg] for sg in cell.signs] + [""] * (width - len(cell.signs))
+            signs = [SIGN.get(sg, "?") for sg in cell.signs] + [""] * (width - len(cell.signs))
             rows.append(f"| ]{_short(cell.lo)}, {_short(cell.hi)}[ | {cell.sample} | {len(cell.branches)} | "
                         + " | ".join(signs) + " |")
             if k < len(self.critical):
@@ -284,15 +315,34 @@ class Spectrum:
             self._resultants[g] = primitive(resultant_lambda(g, self.ring_cp))
         return self._resultants[g]
 
+    def _resultant_off_common_factor(self, e, cond: Condition, label: str) -> flint.fmpz_poly:
+        """Res_λ(e, cp) ≡ 0: e and cp share a factor G in Q(r)[λ] (cp is reducible), so e
+        vanishes identically on the branches that are roots of G.  The zeros of e on the
+        other branches are the roots of Res_λ(e, cp/G) (not ≡ 0: cp is squarefree, so
+        gcd(e, cp/G) = 1); where a root of G meets a root of cp/G, disc cp vanishes, so on
+        each cell a branch is a root of G throughout or nowhere.  The condition is marked
+        degenerate, and its cells are signed exactly there (:meth:`_cell_sign`)."""
+        G = e.gcd(self.ring_cp)
+        if G.degree(RING.gens[0]) <= 0:
+            raise ArithmeticError(f"{cond.name}: a factor vanishes on a whole branch")
+        H, rem = self.ring_cp.div(G)
+        if rem != 0:
+            raise ArithmeticError(f"{cond.name}: cp is not divisible by its gcd with a condition")
+        R = primitive(resultant_lambda(H, e))
+        if R.is_zero():
+            raise ArithmeticError(f"{cond.name}: a factor vanishes on a whole branch")
+        cond.degenerate = [d for d in getattr(cond, "degenerate", []) if d[0] != label] + [(label, e)]
+        return R
+
     def critical_values(self, cond: Condition | None, lo, hi) -> list[Algebraic]:
         """The critical values in ]lo, hi[, increasing: the polynomials are factored
         over Q (python-flint) and each irreducible factor's real roots isolated by
         Sturm sequences, their number checked against python-flint's isolation."""
         polys = [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])
-        for e in (cond.norms() if cond is not None else []):
+        for label, e in (cond.labelled_norms() if cond is not None else []):
             R = self.resultant(e)
             if R.is_zero():
-                raise ArithmeticError(f"{cond.name}: a factor vanishes on a whole branch")
+                R = self._resultant_off_common_factor(e, cond, label)
             polys.append(R)
         lo, hi = _alg(lo), _alg(hi)
         roots = []
@@ -305,7 +355,7 @@ class Spectrum:
     def sign_table(self, cond: Condition, lo, hi) -> SignTable:
         """Certified signs of ``cond`` on every branch over ]lo, hi[ (memoised per
         condition and interval, so certificates sharing a condition share the work)."""
-        key = (id(cond), repr(lo), repr(hi))
+        key = (id(cond), _alg(lo).key(), _alg(hi).key())
         if key not in self._tables or self._tables[key][0] is not cond:   # ids of dead objects are reused
             self._tables[key] = (cond, self._sign_table(cond, lo, hi))
         return self._tables[key][1]
@@ -317,15 +367,55 @@ class Spectrum:
         for a, b in zip(ends, ends[1:]):
             t = simple_rational_between(a, b)
             lams = self.real_eigenvalues(t)
-            cells.append(Cell(a, b, t, lams, [evaluate_sign(cond, t, L) for L in lams]))
+            cells.append(Cell(a, b, t, lams, [self._cell_sign(cond, t, L) for L in lams]))
         points = [self.sign_at_point(cond, rc) for rc in crit]
         return SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, points)
+
+    def _cell_sign(self, cond: Condition, t, L: Algebraic):
+        """The sign of g at the sample t of a cell on the branch L: the sign over the
+        cell.  For a degenerate condition (:meth:`_resultant_off_common_factor`: a norm
+        vanishing identically on the branches that are roots of a factor G of cp), the
+        zeros of g on those branches are not among the critical values, so there:
+
+        * without √Δ the degenerate norm is N₀ or D₀ itself: N₀ ≡ 0 (g ≡ 0) or D₀ ≡ 0
+          (a pole on the whole branch) gives 0, which defeats a strict inequality (as at a
+          point, :meth:`feasibility.Analysis._point`); both give '?';
+        * with √Δ, only the numerator's norm N₀² - N₁²Δ ≡ 0: one of N₀ ± N₁√Δ is ≡ 0 on the
+          cell (real-analytic); where Δ > 0 and N₀, N₁ have opposite signs at the sample, it
+          is ours (the other, -2N₁√Δ there, is not ≡ 0): g ≡ 0, sign 0; Δ < 0: x is not real
+          on the cell (Δ's zeros are critical), None; else '?'.
+
+        A branch is a root of G at the sample iff the degenerate norm vanishes there
+        (elsewhere its zeros are critical values): decided exactly in Q[λ]."""
+        degenerate = getattr(cond, "degenerate", None)
+        if not degenerate:
+            return evaluate_sign(cond, t, L)
+        on = {label for label, e in degenerate if _sign_at_algebraic(_at_r(e, t), L) == 0}
+        if not on:
+            return evaluate_sign(cond, t, L)
+        if cond.delta is None:
+            return 0 if on in ({"N"}, {"D"}) else "?"
+        if on != {"N"}:
+            return "?"
+        terms = [cond.terms[k] for k in ("delta", "N0", "N1")]
+        n = max((max(i, j) for ts in terms for _c, i, j in ts), default=0)
+
+        def attempt(p):
+            Rp, Lp = _powers(flint.arb(Q(t)), n), _powers(L.arb(p), n)
+            dv, v0, v1 = (_eval_terms(ts, Rp, Lp) for ts in terms)
+            if dv < 0:
+                return None
+            if dv > 0 and (v0 > 0 or v0 < 0) and (v1 > 0 or v1 < 0):
+                return 0 if (v0 > 0) != (v1 > 0) else "?"
+            return "undecided"
+        out = decide(attempt, 128, 1024, undecided=lambda v: v == "undecided")
+        return "?" if out == "undecided" else out
 
     def branches_at(self, rc: Algebraic, maxprec: int = 1024):
         """The real eigenvalues at the algebraic r = rc, largest first, each repeated
         by its multiplicity (1, or 2 for the root of a linear gcd(cp, cp')), as
         functions prec -> certified ball; None when they cannot be isolated."""
-        key = repr(rc)
+        key = rc.key()
         if key not in self._branches:
             self._branches[key] = self._branches_at(rc, maxprec)
         return self._branches[key]
@@ -382,7 +472,7 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided."""
         P0, P1 = P
-        if not self.vanishes_at(P0 ** 2 - P1 ** 2 * delta, rc, k):
+        if not self.vanishes_at(norm(P0, P1, delta), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -436,6 +526,21 @@ def _root_ball(sqf, rc, k):
                 return reals[k]
         raise ValueError("roots lost at higher precision")
     return ball
+
+
+def _at_r(P, t) -> flint.fmpq_poly:
+    """P(t, λ) ∈ Q[λ] for P in the engine's ring (r, λ only) and a rational t."""
+    t = to_fmpq(t)
+    coeffs: dict = {}
+    for c, i, j in ring_terms(P):
+        coeffs[j] = coeffs.get(j, Q(0)) + c * t ** i
+    n = max(coeffs, default=0)
+    return flint.fmpq_poly([coeffs.get(j, Q(0)) for j in range(n + 1)])
+
+
+def _sign_at_algebraic(P, L: Algebraic) -> int:
+    from .algebraic import sign_at
+    return sign_at(P, L)
 
 
 def _alg(a) -> Algebraic:

@@ -70,16 +70,26 @@ def _monic(p, m):
 
 
 def gcd(f, g, m) -> list[flint.fmpq_poly]:
-    """The monic gcd in K[λ] (m irreducible, so K is a field)."""
+    """The monic gcd in K[λ] (m irreducible, so K is a field).  Euclid by
+    pseudo-remainders (f <- lc(g) f - lc(f) λ^k g: no inverse in K, which costs an
+    extended gcd in Q[r] each), each remainder scaled by a rational to keep its
+    numbers small; one inverse at the end, none when the gcd is a constant (1)."""
     f, g = _strip(f), _strip(g)
     while g:
-        g = _monic(g, m)
+        a = g[0]
         while len(f) >= len(g):
             q = f[0]
             shifted = g + [K(0)] * (len(f) - len(g))
-            f = _strip([reduce(a - q * b, m) for a, b in zip(f, shifted)])
+            f = _strip([reduce(a * x - q * b, m) for x, b in zip(f, shifted)])
+            if f:
+                lead = f[0][f[0].degree()]
+                f = [c / lead for c in f]
         f, g = g, f
-    return _monic(f, m) if f else f
+    if not f:
+        return f
+    if len(f) == 1:
+        return [K(1)]
+    return _monic(f, m)
 
 
 def divide(f, g, m) -> list[flint.fmpq_poly]:

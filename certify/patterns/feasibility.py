@@ -181,6 +181,11 @@ def sign_at(T, rc: Algebraic, branch: int):
     raise ArithmeticError(f"{rc} outside the table of {T.condition}")
 
 
+def _key(a):
+    """A cache key of an end (a rational or an Algebraic), a function of its value."""
+    return a.key() if isinstance(a, Algebraic) else ("Q", str(a))
+
+
 def _hull(regions, lo0, hi0):
     """An interval ]L, H[ (rational or algebraic ends) containing every piece: an
     open end of a piece is used as it is, a point at an end is enclosed by a
@@ -233,7 +238,7 @@ class Analysis:
         hull = _hull(regions, self.lo, self.hi)
         if hull is None:
             return None
-        key = (req.name, fname if req.has_x else "", repr(hull))
+        key = (req.name, fname if req.has_x else "", tuple(_key(e) for e in hull))
         if key not in self.tables:
             self.tables[key] = self.spec.sign_table(condition(req, self.spec.ring_cp,
                                                                self.fps[fname] if req.has_x else None), *hull)
@@ -280,7 +285,9 @@ class Analysis:
             ends = [p.lo] + cuts + [p.hi]
             for a, b in zip(ends, ends[1:]):
                 ok = _meets(sign_in_cell(T, R.branch, a, b), req.sign)
-                yield Piece(a, b), "holds" if ok else "fails", ""
+                # '?' on a whole cell: a degenerate condition (Spectrum._cell_sign)
+                yield Piece(a, b), "holds" if ok else "fails" if ok is not None else "undecided", \
+                    "" if ok is not None else f"{req.name}: undecided on a whole branch (a norm ≡ 0 there)"
             for c in cuts:
                 yield self._point(R, Piece(c), req, T)
 

@@ -264,8 +264,12 @@ def _nonempty(regions) -> list[dict]:
     return [region_set(R) for R in regions if R.pieces]
 
 
-def analyse(word: str, lo=0, hi=1) -> PatternResult:
-    """The exact analysis of a written period (any rotation / mirror) over ]lo, hi[."""
+def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
+    """The exact analysis of a written period (any rotation / mirror) over ]lo, hi[.
+
+    ``formulas=False`` (the census) skips what only the report prints: the period
+    matrix, the factored discriminant and the datum's formulas (left empty); the
+    certified sets, the undecided points, the diagnosis and the verdict are the same."""
     import time
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
@@ -293,7 +297,9 @@ def analyse(word: str, lo=0, hi=1) -> PatternResult:
     conditions["feasible"] = [_cond(q) for g in groups for q in g]
     diagnosis, before = None, _copy(an.regions)
     for m, group in enumerate(groups, 1):
-        for q in group:
+        # the same set whatever the order: those without x first (cheap, no √Δ), so
+        # that the regions shrink before the tables with x (norms of twice the degree)
+        for q in sorted(group, key=lambda q: q.has_x):
             an.impose(q)
         if any(R.pieces for R in before) and not any(R.pieces for R in an.regions) and diagnosis is None:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
@@ -306,11 +312,15 @@ def analyse(word: str, lo=0, hi=1) -> PatternResult:
     regions["stable"] = _copy(an.regions)
     undecided = sorted({f"{BRANCH_NAMES[R.branch]} {R.fixed_point} at {_short(rc)}: {why_}"
                         for R in an.regions for rc, why_ in R.undecided})
-    M = [[show(e) for e in row] for row in cand.M.tolist()]
-    disc = sp.factor(sp.discriminant(sp.Poly(cp, lam)).as_expr())
-    res = PatternResult(word, normal, system_name, why, (lo, hi), M, show(sp.collect(cp, lam)), show(disc),
+    if formulas:
+        M = [[show(e) for e in row] for row in cand.M.tolist()]
+        disc = show(sp.factor(sp.discriminant(sp.Poly(cp, lam)).as_expr()))
+        formulas_of_datum = datum(cand)
+    else:
+        M, disc, formulas_of_datum = [], "", {}
+    res = PatternResult(word, normal, system_name, why, (lo, hi), M, show(sp.collect(cp, lam)), disc,
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
-                        undecided, conditions, datum(cand), diagnosis, "", 0.0, regions)
+                        undecided, conditions, formulas_of_datum, diagnosis, "", 0.0, regions)
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res
@@ -375,7 +385,7 @@ def diagnose(system, cand, word: str, m: int, regions, lo, hi) -> dict:
         reqs, _ = prefix_requirements(alt, m, cand.q0, steps, cand.q0_other, system=system, previous=word[-1])
         an = Analysis(cand, lo, hi)
         an.regions = _copy(regions)
-        for q in reqs:
+        for q in sorted(reqs, key=lambda q: q.has_x):          # without x first (as in analyse)
             an.impose(q)
         live = _nonempty(an.regions)
         if live:
