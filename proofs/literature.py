@@ -29,7 +29,7 @@ from certify.dynamics import K, candidate
 from certify.patterns import (Analysis, BRANCH_NAMES, Requirement, analyse, fmt, prefix_requirements,
                               vanishes_on_branch)
 from certify.patterns import parse as parse_word
-from certify.run import Check, certificate, conclude
+from certify.run import Check, certificate, conclude, quantity
 
 Q = flint.fmpq
 
@@ -296,10 +296,17 @@ def ab_cb(n: int) -> str:
     return f"(ab)^{n}(cb)^{n}"
 
 
-def stable_window(n: int):
+@quantity("ab_cb_patterns")
+def ab_cb_patterns():
+    """`certify pattern (ab)^n(cb)^n` over ]0, 1[ for n = 2..N_MAX: the heavy part of L4-L6,
+    computed once per run (the three certificates form one unit of the runner)."""
+    return {n: pattern(ab_cb(n)) for n in range(2, N_MAX + 1)}
+
+
+def stable_window(patterns: dict, n: int):
     """The stable set of (ab)^n(cb)^n on the upper branch: (lo, hi) when it is one open
     interval (for one fixed point), else None."""
-    res = pattern(ab_cb(n))
+    res = patterns[n]
     ivs = res.intervals("stable")
     if len(ivs) == 1 and not res.points("stable") and ivs[0][0] == 0:
         return ivs[0][2], ivs[0][3]
@@ -314,8 +321,8 @@ PRINTED_L4 = {f"n{n}": t for n, t in ((2, "3-2√2 ≃ 0.17157"), (3, "5-2√6 �
 
 @certificate("L4", "l. 1114-1120",
              "Upper stability thresholds of (ab)^n(cb)^n, n = 2..6, are the printed radicals.",
-             printed=PRINTED_L4)
-def upper_thresholds(**printed):
+             needs=["ab_cb_patterns"], printed=PRINTED_L4)
+def upper_thresholds(ab_cb_patterns, **printed):
     """For each n the stable set of `certify pattern (ab)^n(cb)^n` is one interval of
     the upper branch; its upper end is proven equal to the printed radical (minimal
     polynomial and isolating interval), and the digits are its rounding."""
@@ -323,12 +330,14 @@ def upper_thresholds(**printed):
     for key in sorted(printed, key=lambda k: int(k[1:])):
         n = int(key[1:])
         value, digits = _printed_value(printed[key])
-        w = stable_window(n)
+        w = stable_window(ab_cb_patterns, n) if n in ab_cb_patterns else None
         checks.append(Check(f"n = {n}: the upper stability threshold of {ab_cb(n)} is {printed[key]}",
                             w is not None and w[1] == value and value.in_rounding_interval(digits),
-                            [f"stable: {_sets(pattern(ab_cb(n)), 'stable')}",
+                            [f"stable: {_sets(ab_cb_patterns[n], 'stable')}" if n in ab_cb_patterns
+                             else f"n = {n} is beyond the analysed n ≤ {N_MAX}",
                              f"printed: {value.describe()}"] + ([f"computed: {w[1].describe()}"] if w else [])))
-        ev.append(f"{ab_cb(n)}: {pattern(ab_cb(n)).verdict}")
+        if n in ab_cb_patterns:
+            ev.append(f"{ab_cb(n)}: {ab_cb_patterns[n].verdict}")
     return conclude(checks, evidence=ev)
 
 
@@ -339,20 +348,20 @@ PRINTED_L5 = dict(n2="[0.12754, 0.17157]", n3="[0.09452, 0.10102]", limit="7-4�
 @certificate("L5", "l. 1124-1126, 1216",
              "Stability windows of (ab)^2(cb)^2 ≈ [0.12754, 0.17157] and (ab)^3(cb)^3 ≈ [0.09452, 0.10102]; the "
              "windows are disjoint and accumulate on 7-4√3 from above.",
-             printed=PRINTED_L5)
-def windows(n2, n3, limit, order):
+             needs=["ab_cb_patterns"], printed=PRINTED_L5)
+def windows(ab_cb_patterns, n2, n3, limit, order):
     """The stable sets of (ab)^n(cb)^n (upper branch) for n = 2..N_MAX: each one open
     interval, ends rounding to the printed digits for n = 2, 3; pairwise disjoint,
     decreasing in n, all above 7-4√3."""
     checks = []
     for n, text in ((2, n2), (3, n3)):
         lo_d, hi_d = (t.strip() for t in text.strip("[] ").split(","))
-        w = stable_window(n)
+        w = stable_window(ab_cb_patterns, n)
         checks.append(Check(f"the stability window of {ab_cb(n)} is ≈ {text}",
                             w is not None and w[0].in_rounding_interval(lo_d) and w[1].in_rounding_interval(hi_d),
-                            [f"stable: {_sets(pattern(ab_cb(n)), 'stable')}"]
+                            [f"stable: {_sets(ab_cb_patterns[n], 'stable')}"]
                             + ([f"lower end: {w[0].describe()}", f"upper end: {w[1].describe()}"] if w else [])))
-    ws = {n: stable_window(n) for n in range(2, N_MAX + 1)}
+    ws = {n: stable_window(ab_cb_patterns, n) for n in range(2, N_MAX + 1)}
     lim = radical(limit)
     ok = all(w is not None for w in ws.values())
     decreasing = ok and all(ws[n + 1][1] <= ws[n][0] for n in range(2, N_MAX))
@@ -375,8 +384,8 @@ PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant")
 @certificate("L6", "l. 1216",
              "Conjecture (CDKK §7): the upper threshold of (ab)^n(cb)^n is where q_2(0) = 0 for the dominant "
              "eigenvector (tested for n = 2..6).",
-             printed=PRINTED_L6)
-def q2_vanishes_at_threshold(criterion, branch):
+             needs=["ab_cb_patterns"], printed=PRINTED_L6)
+def q2_vanishes_at_threshold(ab_cb_patterns, criterion, branch):
     """For each n = 2..N_MAX: at the upper end r_n of the stability window, the numerator
     of u = q_2(0) vanishes on the dominant (upper) branch (exact test in Q(r_n)[λ]) and
     its denominator does not."""
@@ -385,7 +394,7 @@ def q2_vanishes_at_threshold(criterion, branch):
                                ["only `q_2(0) = 0` on the dominant branch is implemented"])])
     rows, results = [], {}
     for n in range(2, N_MAX + 1):
-        w = stable_window(n)
+        w = stable_window(ab_cb_patterns, n)
         cand = candidate(expand_pattern(ab_cb(n)))
         u = to_field(cand.q0[1].as_expr())
         if w is None:

@@ -1,15 +1,16 @@
 """L1-L6 through `certify pattern`: each passes, and each turns FAIL when its printed
-text is altered (mutation tests).  L4-L6 analyse (ab)^n(cb)^n for n = 2..6 (about a
-minute or two, shared by the tests of one process): marked slow."""
+text is altered (mutation tests).  L4-L6 share one quantity, `certify pattern (ab)^n(cb)^n`
+for n = 2..6, computed once for this module (one Context)."""
 import pytest
 
-from certify.run.runner import CERTIFICATES, FAIL, PASS, altered, load_all, run_certificate
+from certify.run.runner import CERTIFICATES, FAIL, PASS, Context, altered, load_all, run_certificate
 
 load_all()
+SHARED = Context()          # the quantities (ab_cb_patterns) computed once for all tests here
 
 
 def run(id, **overrides):
-    return run_certificate(CERTIFICATES[id], overrides=overrides or None)
+    return run_certificate(CERTIFICATES[id], SHARED, overrides=overrides or None)
 
 
 @pytest.mark.parametrize("id", ["L1", "L2", "L3"])
@@ -37,14 +38,12 @@ def test_unread_radical_fails():
     assert o.status == FAIL
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize("id", ["L4", "L5", "L6"])
-def test_slow_passes(id):
+def test_windows_pass(id):
     o = run(id)
     assert o.status == PASS, [(c.statement, c.evidence) for c in o.printed if not c.holds]
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize("id, name, old, new", [
     ("L4", "n4", "4 + 3√2", "4 + 3√3"),
     ("L4", "n6", "0.07782", "0.07783"),
@@ -55,5 +54,5 @@ def test_slow_passes(id):
     ("L5", "limit", "7-4√3", "3-2√2"),
     ("L6", "criterion", "q_2(0)", "q_3(0)"),
 ])
-def test_slow_mutations_fail(id, name, old, new):
+def test_window_mutations_fail(id, name, old, new):
     assert run(id, **altered(id, name, old, new)).status == FAIL
