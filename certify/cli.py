@@ -245,8 +245,10 @@ def cmd_bench(args) -> int:
         return load_bench("bench_numerics").main(["--quick"] * args.quick)
     if args.reduction:
         return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
-    if args.patterns:
-        return load_bench("bench_patterns").main(["--repeat", str(args.repeat)])
+    if args.patterns:      # pattern (ab)^n(cb)^n for n = 2..12, then the census for L = 8..16
+        jobs = ["--jobs", str(args.jobs)] if args.jobs else []
+        return load_bench("bench_patterns").main(["--repeat", str(args.repeat)]) or \
+            load_bench("bench_census").main(jobs)
     return load_bench().main(["--repeat", str(args.repeat)] + (["--jobs", str(args.jobs)] if args.jobs else []))
 
 
@@ -479,7 +481,8 @@ def build_parser() -> Parser:
                    help="time the exact simulator and reduction map instead (benchmarks/bench_reduction.py)")
     p.add_argument("--long", action="store_true", help="with --reduction: also 10^4 collisions, 10^5 steps")
     p.add_argument("--patterns", action="store_true",
-                   help="time `pattern (ab)^n(cb)^n` instead (benchmarks/bench_patterns.py)")
+                   help="time `pattern (ab)^n(cb)^n` for n = 2..12 and the census for L = 8..16 instead "
+                        "(benchmarks/bench_patterns.py, bench_census.py; about an hour)")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
                    help="time only the run on N processes (default: both --jobs 1 and all cores)")
     p.add_argument("--numerics", action="store_true",

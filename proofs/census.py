@@ -20,7 +20,7 @@ and the exact dynamics from each datum at a rational r repeating the word, in ba
 A word whose analysis errs or leaves a point undecided is not checked: FAIL, the word
 named, unless a counterexample refutes the remark anyway.
 
-The census up to 16 collisions (``certify census``) found counterexamples from 10
+The census (``certify census``, reports/CENSUS.md) found counterexamples from 10
 collisions on; :data:`FOUND` names the shortest ones, which are analysed here too
 (a census to 10 would take minutes inside ``certify all``): abacbacbcb (its mirror
 cbcabcabab contains abcab) and abacbcabcab = ab acb cab cab (contains abcab as written).  ``python -m certify census --max-length L`` runs the same
