@@ -129,20 +129,26 @@ class Region:
     undecided: list
     dropped: list                  # (point, reason) settled exactly as failing
 
-    def describe(self) -> str:
-        """The pieces, with ]a, b[ ∪ {b} ∪ ]b, c[ shown as ]a, c[."""
+    def merged(self) -> tuple[list, list]:
+        """The pieces as maximal open intervals [lo, hi] (]a, b[ ∪ {b} ∪ ]b, c[ is ]a, c[)
+        and the remaining isolated points (Pieces)."""
         intervals = sorted((p for p in self.pieces if not p.is_point), key=lambda p: p.lo)
         points = [p for p in self.pieces if p.is_point]
-        merged = []
+        out = []
         for p in intervals:
-            if merged and merged[-1][1] == p.lo:
+            if out and out[-1][1] == p.lo:
                 joint = [q for q in points if q.lo == p.lo and not q.note]
                 if joint:
                     points.remove(joint[0])
-                    merged[-1][1] = p.hi
+                    out[-1][1] = p.hi
                     continue
-            merged.append([p.lo, p.hi])
-        parts = [str(Piece(a, b)) for a, b in merged] + [str(q) for q in points]
+            out.append([p.lo, p.hi])
+        return out, points
+
+    def describe(self) -> str:
+        """The pieces, with ]a, b[ ∪ {b} ∪ ]b, c[ shown as ]a, c[."""
+        spans, points = self.merged()
+        parts = [str(Piece(a, b)) for a, b in spans] + [str(q) for q in points]
         return " ∪ ".join(parts) or "∅"
 
 

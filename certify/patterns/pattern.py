@@ -120,26 +120,9 @@ def _short(a: Algebraic) -> str:
     return str(a.lo) if a.is_rational else "≈" + a.digits(10)
 
 
-def merged(R: Region) -> tuple[list, list]:
-    """The pieces of a region as maximal open intervals [lo, hi] (]a, b[ ∪ {b} ∪ ]b, c[
-    is ]a, c[) and the remaining isolated points (Pieces)."""
-    intervals = sorted((p for p in R.pieces if not p.is_point), key=lambda p: p.lo)
-    points = [p for p in R.pieces if p.is_point]
-    out = []
-    for p in intervals:
-        if out and out[-1][1] == p.lo:
-            joint = [q for q in points if q.lo == p.lo and not q.note]
-            if joint:
-                points.remove(joint[0])
-                out[-1][1] = p.hi
-                continue
-        out.append([p.lo, p.hi])
-    return out, points
-
-
 def region_set(R: Region) -> dict:
     """The pieces of a region as JSON: merged intervals ]lo, hi[ and isolated points."""
-    spans, points = merged(R)
+    spans, points = R.merged()
     pieces = [{"kind": "interval", "lo": end_data(a), "hi": end_data(b)} for a, b in spans]
     pieces += [{"kind": "point", "at": end_data(q.lo), "note": q.note} for q in sorted(points, key=lambda q: q.lo)]
     text = " ∪ ".join([f"]{_short(a)}, {_short(b)}[" for a, b in spans]
@@ -178,12 +161,12 @@ class PatternResult:
     def intervals(self, stage: str, branch: int | None = None) -> list:
         """(branch, fixed point, lo, hi) for each maximal open interval of the stage's set."""
         return [(R.branch, R.fixed_point, lo, hi) for R in self.regions[stage]
-                if branch is None or R.branch == branch for lo, hi in merged(R)[0]]
+                if branch is None or R.branch == branch for lo, hi in R.merged()[0]]
 
     def points(self, stage: str, branch: int | None = None) -> list:
         """(branch, fixed point, r) for each isolated point of the stage's set."""
         return [(R.branch, R.fixed_point, q.lo) for R in self.regions[stage]
-                if branch is None or R.branch == branch for q in merged(R)[1]]
+                if branch is None or R.branch == branch for q in R.merged()[1]]
 
     @property
     def written(self) -> str:

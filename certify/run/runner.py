@@ -25,6 +25,7 @@ from typing import Callable
 
 from certify import caches
 from certify.errors import StatementError, UsageError
+from .executors import default_jobs  # noqa: F401  (runner.default_jobs, used by the CLI and benchmarks)
 
 PASS, ERRATUM, FAIL, OBSERVED = "PASS", "ERRATUM", "FAIL", "OBSERVED"
 STATUSES = (PASS, ERRATUM, FAIL, OBSERVED)
@@ -329,14 +330,6 @@ def _worker_run(k: int):
     except KeyboardInterrupt:  # raised by a certificate itself
         return None
     return [(cert.id, outcome, total, shared) for cert, outcome, total, shared in done], seconds
-
-
-def default_jobs() -> int:
-    """The cores this process may use."""
-    try:
-        return max(len(os.sched_getaffinity(0)), 1)
-    except AttributeError:  # not on Linux
-        return os.cpu_count() or 1
 
 
 class WorkerDied(RuntimeError):
