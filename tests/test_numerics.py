@@ -220,6 +220,21 @@ def test_simulate_on_an_executor(engine):
     assert np.array_equal(a.breaks, b.breaks) and np.allclose(a.phi, b.phi, atol=1e-9)
 
 
+def test_an_mp_sweep_on_a_dask_cluster_equals_the_serial_one():
+    """The sweep's Executor can be a Dask cluster (`--scheduler`): the same arrays, to the bit."""
+    distributed = pytest.importorskip("distributed")
+    from certify.run.executors import executor
+    serial = numerics.simulate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine="mp", dps=20)
+    with distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=2,
+                                  dashboard_address=None) as cluster:
+        with executor(scheduler=cluster.scheduler_address) as ex:
+            on_cluster = numerics.simulate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine="mp",
+                                           dps=20, executor=ex)
+    assert np.array_equal(on_cluster.breaks, serial.breaks)
+    assert np.array_equal(on_cluster.collisions, serial.collisions)
+    assert np.array_equal(on_cluster.phi, serial.phi, equal_nan=True)
+
+
 @pytest.mark.parametrize("kwargs", [dict(r=[1.2]), dict(r=[0.0]), dict(collisions=-1), dict(engine="quad")])
 def test_simulate_rejects_bad_arguments(kwargs):
     args = dict(r=[0.5], theta0=THETA[:1], phi0=PHI[:1], collisions=10, keep=5) | kwargs
