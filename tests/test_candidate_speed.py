@@ -7,20 +7,17 @@ import sympy as sp
 
 from certify.algebra.poly import FIELD, RING, Lf, Rf, from_flint, lam, r, to_field, to_ring
 from certify.dynamics.model import INDEX, characteristic_polynomial, collide, word_matrix
-from certify.dynamics.systems import BY_NAME, candidate_in, eigenvector2, run_in, system_matrix
+from certify.dynamics.systems import BY_NAME, candidate_in, eigenvector2, run_in, system_matrix, system_matrix_flint
 from certify.dynamics.words import check_position_map, eigenvector, position_map, run_word
 
 K = FIELD
 
 
 def ref_word_matrix(system, word):
-    """M_w with SymPy's factor (the former word_matrix/system_matrix)."""
+    """M_w with SymPy's factor (the former word_matrix/system_matrix): the product is the
+    engine's, what is compared is factor_flint against sp.factor."""
     n = system.gaps
-    R = flint.fmpq_poly([0, 1])
-    M = [[flint.fmpq_poly([int(i == j)]) for j in range(n)] for i in range(n)]
-    for letter in word:
-        columns = [system.collide(letter, tuple(M[i][j] for i in range(n)), R) for j in range(n)]
-        M = [[columns[j][i] for j in range(n)] for i in range(n)]
+    M = system_matrix_flint(system, word)
     return sp.Matrix(n, n, lambda i, j: sp.factor(from_flint(M[i][j], r)))
 
 

@@ -91,13 +91,14 @@ def word_matrix(word: str, rr=r) -> sp.Matrix:
     return M.applyfunc(sp.factor)
 
 
-def word_matrix_flint(word: str) -> list[list[flint.fmpq_poly]]:
-    """M_w = K_{c_n} ... K_{c_1} as rows of python-flint polynomials in r."""
+def word_matrix_flint(word: str, law=collide, gaps: int = 3) -> list[list[flint.fmpq_poly]]:
+    """M_w = K_{c_n} ... K_{c_1} as rows of python-flint polynomials in r, for the collision
+    ``law`` on ``gaps`` gaps (the four particles by default; the systems of two gaps pass theirs)."""
     R = flint.fmpq_poly([0, 1])
-    M = [[flint.fmpq_poly([int(i == j)]) for j in range(3)] for i in range(3)]
+    M = [[flint.fmpq_poly([int(i == j)]) for j in range(gaps)] for i in range(gaps)]
     for letter in word:
-        columns = [collide(letter, (M[0][j], M[1][j], M[2][j]), R) for j in range(3)]
-        M = [[columns[j][i] for j in range(3)] for i in range(3)]
+        columns = [law(letter, tuple(M[i][j] for i in range(gaps)), R) for j in range(gaps)]
+        M = [[columns[j][i] for j in range(gaps)] for i in range(gaps)]
     return M
 
 

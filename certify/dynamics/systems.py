@@ -27,7 +27,7 @@ import sympy as sp
 from certify import caches
 from certify.algebra.branches import Spectrum
 from certify.algebra.poly import LR_LAMBDA, Frac, flint_poly_to_frac, frac_to_field, from_flint, lam, r
-from .model import INDEX, charpoly_flint, collide, factor_flint
+from .model import INDEX, charpoly_flint, collide, factor_flint, word_matrix_flint
 from .words import K, Candidate, Step, candidate, run_lr, steps_of
 
 
@@ -62,13 +62,7 @@ BY_NAME = {S.name: S for S in (FOUR, THREE, SYMMETRIC)}
 
 def system_matrix_flint(system: System, word: str) -> list[list[flint.fmpq_poly]]:
     """M_w = K_{c_n} ... K_{c_1} of the system as rows of python-flint polynomials in r."""
-    n = system.gaps
-    R = flint.fmpq_poly([0, 1])
-    M = [[flint.fmpq_poly([int(i == j)]) for j in range(n)] for i in range(n)]
-    for letter in word:
-        columns = [system.collide(letter, tuple(M[i][j] for i in range(n)), R) for j in range(n)]
-        M = [[columns[j][i] for j in range(n)] for i in range(n)]
-    return M
+    return word_matrix_flint(word, system.collide, system.gaps)
 
 
 def system_matrix(system: System, word: str) -> sp.Matrix:
