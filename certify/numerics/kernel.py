@@ -82,14 +82,21 @@ def _phi(i, n0, n1, n2):
 
 
 @njit(cache=True)
-def _orbit(i0, n_init, rows, absrows, tol, collisions, keep, out_phi):
-    """One orbit: (break code, collisions done); the φ of the last ``keep``
-    b-collisions into out_phi, oldest first, NaN-padded at the front."""
-    n = n_init.copy()
+def _initial_bound(n, tol):
+    """The rounding bound of the initial normal, componentwise: tol · max |n_i|."""
     bnd = np.empty(3)
     top = max(abs(n[0]), max(abs(n[1]), abs(n[2])))
     for a in range(3):
         bnd[a] = tol * top
+    return bnd
+
+
+@njit(cache=True)
+def _orbit(i0, n_init, rows, absrows, tol, collisions, keep, out_phi):
+    """One orbit: (break code, collisions done); the φ of the last ``keep``
+    b-collisions into out_phi, oldest first, NaN-padded at the front."""
+    n = n_init.copy()
+    bnd = _initial_bound(n, tol)
     ring = np.empty((max(keep, 1), 3))
     pos = 0
     stored = 0
@@ -140,10 +147,7 @@ def trace(i0, n_init, rows, absrows, tol, collisions, letters, normals):
     """One orbit with every state recorded (tests, benchmarks): letters[k] and
     normals[k] after the collision k + 1.  Returns (code, collisions done)."""
     n = n_init.copy()
-    bnd = np.empty(3)
-    top = max(abs(n[0]), max(abs(n[1]), abs(n[2])))
-    for a in range(3):
-        bnd[a] = tol * top
+    bnd = _initial_bound(n, tol)
     i = i0
     for c in range(collisions):
         code, j = _classify(i, n, bnd)
@@ -162,10 +166,7 @@ def trace(i0, n_init, rows, absrows, tol, collisions, letters, normals):
 def count_steps(i0, n_init, rows, absrows, tol, collisions):
     """The bare loop (benchmarks): (code, collisions done, a checksum of the word)."""
     n = n_init.copy()
-    bnd = np.empty(3)
-    top = max(abs(n[0]), max(abs(n[1]), abs(n[2])))
-    for a in range(3):
-        bnd[a] = tol * top
+    bnd = _initial_bound(n, tol)
     i = i0
     h = 0
     for c in range(collisions):
