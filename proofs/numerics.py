@@ -208,7 +208,7 @@ def below_0078(r_below, n_from, accumulate_above):
     n0 = int(number(n_from))
     committed = F.load_findings(N4_FINDINGS)
     ev, checks = [], []
-    th = {n: F.R_MAX[n] for n in F.R_MAX}
+    th = {n: F.r_max(n) for n in F.N_LINES}
     if committed:
         th.update({int(n): v["mp"]["r_max"] for n, v in committed["windows"].items()})
     missing = [n for n in range(n0, n0 + 6) if n not in th]

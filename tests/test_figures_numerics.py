@@ -62,8 +62,13 @@ def test_rotation_of_a_periodic_word():
 
 
 def test_the_printed_thresholds_are_the_roots_of_q2():
-    for n in (2, 6):
-        assert abs(float(F.upper_threshold(n, 20)) - F.R_MAX[n]) < 1e-12
+    """The computed thresholds drawn in the figures are L4's printed radicals (typed here only)."""
+    printed = {2: 3 - 2 * math.sqrt(2), 3: 5 - 2 * math.sqrt(6),
+               4: 3 + 2 * math.sqrt(2) - 2 * math.sqrt(4 + 3 * math.sqrt(2)),
+               5: 4 + math.sqrt(5) - 2 * math.sqrt(5 + 2 * math.sqrt(5)),
+               6: 3 + 2 * math.sqrt(3) - 2 * math.sqrt(5 + 3 * math.sqrt(3))}
+    for n, value in printed.items():
+        assert abs(F.r_max(n) - value) < 1e-12
 
 
 # --- the figures command ----------------------------------------------------------------

@@ -28,6 +28,7 @@ What is read off a cloud (floats, an observation, never a proof):
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 import time
 from dataclasses import dataclass, field
 
@@ -45,13 +46,16 @@ MAX_INTERVALS = 20    # at most this many intervals at PIECE_GAP: "a finite unio
 # --- thresholds (CLAIMS L1, L3, L4), as floats for drawing and for choosing r -----------------
 
 R_CRIT = 7 - 4 * math.sqrt(3)                              # three-particle collapse (L1)
-R_MAX = {                                                   # upper thresholds of (ab)^n(cb)^n (L4)
-    2: 3 - 2 * math.sqrt(2),
-    3: 5 - 2 * math.sqrt(6),
-    4: 3 + 2 * math.sqrt(2) - 2 * math.sqrt(4 + 3 * math.sqrt(2)),
-    5: 4 + math.sqrt(5) - 2 * math.sqrt(5 + 2 * math.sqrt(5)),
-    6: 3 + 2 * math.sqrt(3) - 2 * math.sqrt(5 + 3 * math.sqrt(3)),
-}
+N_LINES = (2, 3, 4, 5, 6)                                   # the thresholds drawn, as in L4
+
+
+@lru_cache(maxsize=None)
+def r_max(n: int) -> float:
+    """The upper threshold of (ab)^n(cb)^n as a float, computed (:func:`upper_threshold`,
+    20 digits), not typed in: for n = 2..6 it is the printed radical of L4 (a test)."""
+    return float(upper_threshold(n, 20))
+
+
 P_EXIST = (17, -138, 831, -3148, 831, -138, 17)             # l. 1101
 
 
@@ -63,7 +67,7 @@ def r_exist() -> float:
 
 def red_lines() -> dict[str, float]:
     """The vertical red lines: the CDKK thresholds (L4) and r_exist (L3)."""
-    lines = {f"(ab)^{n}(cb)^{n}": v for n, v in R_MAX.items()}
+    lines = {f"(ab)^{n}(cb)^{n}": r_max(n) for n in N_LINES}
     lines["r_exist"] = r_exist()
     return lines
 
@@ -310,11 +314,11 @@ def dominant_count(counts: dict) -> tuple[int | None, int, int]:
     return best, finite[best], total
 
 
-def windows_of(spec_lo: float = R_CRIT) -> dict[int, tuple[float, float]]:
+def windows_of() -> dict[int, tuple[float, float]]:
     """The r-ranges in which N3 counts the points of (ab)^n(cb)^n: from the next upper
     threshold to this one (L4), the two lower ends of L5 where they are printed."""
     lower = {2: 0.12754, 3: 0.09452}
-    return {n: (lower.get(n, R_MAX.get(n + 1, spec_lo)), R_MAX[n]) for n in (2, 3, 4, 5)}
+    return {n: (lower.get(n, r_max(n + 1)), r_max(n)) for n in (2, 3, 4, 5)}
 
 
 def summary(data: FigureData) -> dict:
