@@ -15,6 +15,7 @@ the larger n are reported as not measured.  The table goes to stdout and to the 
 from __future__ import annotations
 
 import argparse
+import math
 import platform
 import statistics
 import sys
@@ -69,6 +70,24 @@ def table(rows) -> str:
     return "\n".join(out)
 
 
+def growth_law(rows) -> str:
+    """The power law t ≈ C·L^k fitted by least squares to log(median) against log(length)
+    over the measured words, with the ratio of consecutive medians: the growth this run
+    measures (a fit, not a bound)."""
+    pts = [(math.log(r["length"]), math.log(r["median"])) for r in rows if "skipped" not in r and r["median"] > 0]
+    if len(pts) < 2:
+        return "growth: fewer than two words measured"
+    mx = sum(x for x, _ in pts) / len(pts)
+    my = sum(y for _, y in pts) / len(pts)
+    k = sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts)
+    c = math.exp(my - k * mx)
+    measured = [r for r in rows if "skipped" not in r]
+    ratios = ", ".join(f"{b['median'] / a['median']:.2f}" for a, b in zip(measured, measured[1:]))
+    return (f"growth: median ≈ {c:.3g}·L^{k:.2f} seconds for a word of L collisions (least squares on "
+            f"log-log over L = {measured[0]['length']}..{measured[-1]['length']}); ratios of consecutive "
+            f"medians: {ratios}")
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=3)
@@ -78,7 +97,7 @@ def main(argv=None) -> int:
     rows = bench_pattern_words(args.n, args.repeat, args.budget)
     body = (f"`certify pattern (ab)^n(cb)^n` over ]0, 1[, cold (caches emptied), median of {args.repeat} "
             f"({date.today()}, {platform.processor() or platform.machine()}, Python {platform.python_version()}; "
-            f"benchmarks/bench_patterns.py):\n\n" + table(rows))
+            f"benchmarks/bench_patterns.py):\n\n" + table(rows) + "\n\n" + growth_law(rows))
     print(body)
     files.write_section(BENCH, "certify pattern", body)
     return 0

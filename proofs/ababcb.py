@@ -9,7 +9,7 @@ import flint
 import sympy as sp
 
 from certify.algebra import (Algebraic, Condition, FixedPoint, Spectrum, count_roots, discriminant_lambda,
-    eliminate, flint_real_roots, lam, parse, primitive, r, show, show_factored_int, sign_intervals, statements,
+    eliminate, flint_real_roots, sturm_count, lam, parse, primitive, r, show, show_factored_int, sign_intervals, statements,
     to_field, to_fmpq_poly, to_fmpz_poly, u, v, x)
 from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characteristic_polynomial, reduce_mod,
     velocities, word_matrix)
@@ -101,9 +101,10 @@ def r1_of(printed) -> Algebraic:
 
 
 def root_in_unit_interval(poly_text: str):
-    """The roots of a printed polynomial in ]0,1[ by Sturm, and the count by python-flint."""
+    """The roots of a printed polynomial in ]0,1[ (isolated), and their number counted by
+    both routes: Sturm's theorem alone and python-flint's root isolation."""
     P = to_fmpz_poly(parse(poly_text))
-    return Algebraic.roots(P, 0, 1), len(flint_real_roots(P, 0, 1))
+    return Algebraic.roots(P, 0, 1), (sturm_count(P, 0, 1) - (P(1) == 0), len(flint_real_roots(P, 0, 1)))
 
 
 def fixed_point(a, b, c, d) -> FixedPoint:
@@ -138,11 +139,13 @@ def digits_check(name, root: Algebraic, printed: str) -> Check:
                  [f"{name} is {root.describe()}"])
 
 
-def count_check(name, roots, flint_count, expected) -> Check:
-    """The printed number of roots in ]0,1[, counted by both routes."""
+def count_check(name, roots, counts, expected) -> Check:
+    """The printed number of roots in ]0,1[, counted by both routes (``counts``: the Sturm
+    count and python-flint's), and as many isolated."""
+    sturm, flint_count = counts
     return Check(f"{name} has exactly {expected} root(s) in ]0,1[ (Sturm and python-flint)",
-                 len(roots) == expected and flint_count == expected,
-                 [f"Sturm count {len(roots)}, python-flint count {flint_count}"])
+                 sturm == expected and flint_count == expected and len(roots) == expected,
+                 [f"Sturm count {sturm}, python-flint count {flint_count}"])
 
 
 # ---------------------------------------------------------------- T1-T4: M and its spectrum
@@ -406,9 +409,10 @@ def roots_of_P1(P1_text, real, inside, digits):
     P = to_fmpz_poly(parse(P1_text))
     all_roots = Algebraic.roots(P)
     roots, nf = root_in_unit_interval(P1_text)
-    n_flint = len(flint_real_roots(P))
+    n_flint, n_sturm = len(flint_real_roots(P)), sturm_count(P)
     checks = [Check(f"P1 has exactly {real} real roots (Sturm and python-flint)",
-                    len(all_roots) == real and n_flint == real, [f"Sturm {len(all_roots)}, python-flint {n_flint}; "
+                    n_sturm == real and n_flint == real and len(all_roots) == real,
+                    [f"Sturm {n_sturm}, python-flint {n_flint}; "
                                                                   + "; ".join(a.describe() for a in all_roots)]),
               count_check("P1", roots, nf, inside),
               Check("the others are ≤ 0 and ≥ 1", len(all_roots) == 3 and all_roots[0] <= 0 and all_roots[2] >= 1)]
@@ -468,7 +472,7 @@ def sign_of_b(cp, spectrum, b, quartic, r1):
     checks = eliminant_check("b", parse(b), cp, f"r^6*(r-1)^4*(r+1)^4*(r^2-10*r+1)*({quartic})")
     checks += [
         Check("the quartic has no real root (Sturm and python-flint)",
-              len(Algebraic.roots(Q4)) == 0 and len(flint_real_roots(Q4)) == 0),
+              sturm_count(Q4) == 0 and len(flint_real_roots(Q4)) == 0),
         Check("b changes sign at 5-2√6 on one of the two lower branches (the middle one) and not on the upper one",
               changes_at(T, MIDDLE, rr1) and keeps_sign_at(T, UPPER, rr1), ["sign table of b:\n\n" + T.markdown()]),
     ]

@@ -687,3 +687,57 @@ def test_describe_depends_on_the_number_only(refined):
         if refined:
             a.refine(flint.fmpq(1, 10 ** refined))
         assert a.describe() == b.describe()
+
+
+# --------------------------------------------------------------- two routes to real roots
+from certify.algebra.sturm import checked_real_root_count, sturm_count  # noqa: E402
+
+_root = st.fractions(min_value=-3, max_value=3, max_denominator=50)
+
+
+@settings(max_examples=60, deadline=None, database=None)
+@given(st.lists(st.tuples(_root, st.integers(1, 3)), min_size=0, max_size=5),
+       st.integers(0, 2), st.integers(1, 40), _root, _root)
+def test_the_sturm_count_and_python_flint_count_the_known_roots(roots, quadratics, gap, a, b):
+    """p = Π (r - ρ_i)^{m_i} · (r - ρ_0 - 10^-gap) · Π (r² + k): distinct real roots known
+    exactly (multiple factors, two roots 10^-gap apart, factors without real roots).
+    The pure Sturm count over the line and in ]a, b], python-flint's count, and the
+    checked count all give them."""
+    p = flint.fmpq_poly([1])
+    distinct = set()
+    for rho, m in roots:
+        p *= flint.fmpq_poly([-flint.fmpq(rho.numerator, rho.denominator), 1]) ** m
+        distinct.add(Fraction(rho))
+    if roots:
+        close = Fraction(roots[0][0]) + Fraction(1, 10 ** gap)
+        p *= flint.fmpq_poly([-flint.fmpq(close.numerator, close.denominator), 1])
+        distinct.add(close)
+    for k in range(1, quadratics + 1):
+        p *= flint.fmpq_poly([k, 0, 1])
+    assert sturm_count(p) == len(flint_real_roots(p)) == checked_real_root_count(p) == len(distinct)
+    lo, hi = min(a, b), max(a, b)
+    inside = sum(1 for rho in distinct if lo < rho <= hi)
+    assert sturm_count(p, flint.fmpq(lo.numerator, lo.denominator), flint.fmpq(hi.numerator, hi.denominator)) == inside
+
+
+def test_the_sturm_count_calls_no_root_finder(monkeypatch):
+    """The first route is Sturm's theorem alone: it still counts with python-flint's root
+    isolation made unavailable (and the checked count then fails loudly)."""
+    import certify.algebra.sturm as sturm
+    p = flint.fmpq_poly([-2, 0, 1]) * flint.fmpq_poly([-3, 1])            # (r² - 2)(r - 3)
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("root finder called")
+    monkeypatch.setattr(flint.fmpz_poly, "complex_roots", refuse, raising=False)
+    monkeypatch.setattr(flint.fmpq_poly, "complex_roots", refuse, raising=False)
+    monkeypatch.setattr(sturm, "_BALLS", {})
+    assert sturm.sturm_count(p) == 3 and sturm.sturm_count(p, 0, 2) == 1
+
+
+def test_a_disagreement_of_the_two_routes_is_an_error(monkeypatch):
+    import certify.algebra.sturm as sturm
+    p = flint.fmpq_poly([-5, 0, 1])
+    monkeypatch.setattr(sturm, "flint_real_roots", lambda q: [flint.arb(1)])
+    monkeypatch.setattr(sturm, "_CHECKED", {})
+    with pytest.raises(ArithmeticError, match="disagree"):
+        sturm.checked_real_root_count(p)

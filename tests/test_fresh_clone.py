@@ -3,7 +3,8 @@
 version control), and the serial run writes the same report as the run on every core.
 
 These tests clone the committed HEAD (not the working tree) and run the real
-certificates twice: they take about a minute on two cores.
+certificates twice: they are marked slow (``python -m pytest -m slow
+tests/test_fresh_clone.py``), and ``.ci/run`` runs them after the default suite.
 """
 from __future__ import annotations
 
@@ -17,8 +18,9 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 
-pytestmark = pytest.mark.skipif(shutil.which("git") is None or not (ROOT / ".git").exists(),
-                                reason="needs git and a git checkout")
+pytestmark = [pytest.mark.slow,
+              pytest.mark.skipif(shutil.which("git") is None or not (ROOT / ".git").exists(),
+                                 reason="needs git and a git checkout")]
 
 
 def certify(clone: Path, *args: str) -> subprocess.CompletedProcess:

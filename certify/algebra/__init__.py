@@ -4,8 +4,8 @@ eigenvalue branches of a matrix over Q(r).  It imports nothing of certify above 
 ground floor (:mod:`certify.errors`, :mod:`certify.caches`).
 
 - :mod:`.poly`: the paper's notation in (``parse``), python-flint out; Q[r, λ].
-- :mod:`.sturm`: our Sturm sequences, root counts and isolation over Q (checked
-  against python-flint's root isolation).
+- :mod:`.sturm`: two routes to real roots, kept apart: Sturm counts over Q (exact
+  sign changes only) and python-flint's root isolation, compared; fast isolation.
 - :mod:`.algebraic`: a real algebraic number as (minimal polynomial, isolating interval).
 - :mod:`.numberfield`: arithmetic in Q(α)[λ] for exact zero tests.
 - :mod:`.elimination`: elimination twice, by a Gröbner basis (SymPy) and a resultant (flint).
@@ -26,7 +26,7 @@ from .poly import (FIELD, RING, Lf, Rf, discriminant_lambda, expr, from_flint, i
                    to_fmpz_poly, to_ring, u, v, x)
 from .radicals import radical
 from .statements import StatementError
-from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_sequence
+from .sturm import checked_real_root_count, count_roots, flint_real_roots, isolate, refine, sturm_count, sturm_sequence
 
 __all__ = [
     "numberfield", "statements", "trig", "StatementError", "radical",
@@ -37,5 +37,6 @@ __all__ = [
     "FIELD", "RING", "Lf", "Rf", "discriminant_lambda", "expr", "from_flint", "irreducible_factors", "lam",
     "parse", "primitive", "r", "resultant_lambda", "show", "squarefree_part", "to_field", "to_fmpq",
     "to_fmpq_poly", "to_fmpz_poly", "to_ring", "u", "v", "x",
-    "count_roots", "flint_real_roots", "isolate", "refine", "sturm_sequence",
+    "checked_real_root_count", "count_roots", "flint_real_roots", "isolate", "refine", "sturm_count",
+    "sturm_sequence",
 ]

@@ -8,6 +8,7 @@ printed from certified enclosures only.
 """
 from __future__ import annotations
 
+import copy
 import itertools
 from fractions import Fraction
 from functools import total_ordering
@@ -21,6 +22,8 @@ from .poly import primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, isolate, refine
 
 Q = flint.fmpq
+_ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
+caches.register(_ISOLATED.clear)
 
 
 def _sign(a) -> int:
@@ -49,9 +52,17 @@ class Algebraic:
 
     @classmethod
     def roots(cls, p, a=None, b=None) -> list["Algebraic"]:
-        """The distinct real roots of p in ]a, b[, increasing (Sturm isolation)."""
+        """The distinct real roots of p in ]a, b[, increasing (Sturm isolation).  The
+        isolating intervals are memoised per (p, a, b); each call returns new numbers
+        (a number refines its interval in place)."""
         p = primitive(flint.fmpq_poly(p)) if not isinstance(p, flint.fmpz_poly) else p
-        return [cls(p, lo, hi) for lo, hi in isolate(p, a, b)]
+        key = (tuple(p.coeffs()), None if a is None else str(a), None if b is None else str(b))
+        made = _ISOLATED.get(key)
+        if made is None:
+            made = _ISOLATED[key] = [cls(p, lo, hi) for lo, hi in isolate(p, a, b)]
+            if len(_ISOLATED) > 20000:
+                _ISOLATED.clear()
+        return [copy.copy(x) for x in made]
 
     @classmethod
     def surd(cls, a, b, n) -> "Algebraic":

@@ -20,7 +20,9 @@ exact zero is proven by a gcd in Q(r)[λ] (:meth:`Spectrum.vanishes_at`).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from collections.abc import Sequence
+from dataclasses import dataclass
+from functools import cached_property
 
 import flint
 import sympy as sp
@@ -31,9 +33,9 @@ from .algebraic import Algebraic, to_fmpq
 from .balls import GUARD, decide, precision
 from math import gcd as _gcd
 
-from .poly import (RING, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
+from .poly import (RING, mpoly_to_ring, mpoly_to_univariate, ring_to_lrq, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
                    resultant_lambda, ring_terms, squarefree_part, to_field, to_fmpq_poly, to_ring, x)
-from .sturm import count_roots, flint_real_roots, isolate
+from .sturm import checked_real_root_count, isolate
 
 Q = flint.fmpq
 SIGN = {1: "+", -1: "−", 0: "0", None: "·"}
@@ -62,21 +64,20 @@ def _integer_mpoly(p) -> tuple:
     return ring_to_mpoly(p), d
 
 
-def norm(P0, P1, delta):
-    """A positive rational multiple of P₀² - P₁²Δ (polynomials of the engine's ring in
-    r, λ), computed by python-flint: the same zeros, which is all a norm is used for."""
+def norm_mpoly(P0, P1, delta) -> flint.fmpz_mpoly:
+    """A positive integer multiple of P₀² - P₁²Δ (polynomials of the engine's ring in
+    r, λ) as a primitive ``fmpz_mpoly`` in (r, λ, s), by python-flint: the same zeros,
+    which is all a norm is used for."""
     A0, d0 = _integer_mpoly(P0)
     A1, d1 = _integer_mpoly(P1)
     AD, dD = _integer_mpoly(delta)
     M = A0 * A0 * (d1 * d1 * dD) - A1 * A1 * AD * (d0 * d0)     # d0² d1² dD (P0² - P1²Δ)
-    content = M.content() if not M.is_zero() else 1
-    one = [0] * len(RING.gens)
-    terms = {}
-    for (er, el, es), c in M.to_dict().items():
-        e = list(one)
-        e[0], e[1], e[-1] = el, er, es
-        terms[tuple(e)] = RING.domain(int(c) // int(content))
-    return RING.from_dict(terms) if terms else RING.zero
+    return M if M.is_zero() else M / M.content()
+
+
+def norm(P0, P1, delta):
+    """:func:`norm_mpoly` as an element of the engine's ring."""
+    return mpoly_to_ring(norm_mpoly(P0, P1, delta))
 
 
 def _substitute_x(g, fp: FixedPoint):
@@ -145,13 +146,16 @@ class Condition:
         return [p for _label, p in self.labelled_norms()]
 
     def labelled_norms(self) -> list:
-        """The norms with what they come from: "N", "D", "delta", "c"."""
-        out = []
-        for label, (P0, P1) in (("N", self.N), ("D", self.D)):
-            out.append((label, norm(P0, P1, self.delta) if P1 else P0))
-        if self.delta is not None:
-            out += [("delta", self.delta), ("c", self.c)]
-        return [(label, p) for label, p in out if not p.is_ground]
+        """The norms with what they come from: "N", "D", "delta", "c", as primitive
+        integer ``fmpz_mpoly`` in (r, λ, s) (positive multiples: the same zeros); memoised."""
+        if getattr(self, "_norms", None) is None:
+            out = []
+            for label, (P0, P1) in (("N", self.N), ("D", self.D)):
+                out.append((label, norm_mpoly(P0, P1, self.delta) if P1 else ring_to_mpoly(P0)))
+            if self.delta is not None:
+                out += [("delta", ring_to_mpoly(self.delta)), ("c", ring_to_mpoly(self.c))]
+            self._norms = [(label, p) for label, p in out if not p.is_constant()]
+        return self._norms
 
 
 caches.register(Condition._cache.clear)
@@ -211,28 +215,62 @@ def evaluate_sign(cond: Condition, r0, L: Algebraic, prec: int = 64, maxprec: in
     return sg
 
 
-@dataclass
+class Lazy(Sequence):
+    """A list of known length whose entries are computed on first access and kept:
+    a sign table computes only the signs its reader asks for (the same values as an
+    eager table, entry by entry)."""
+
+    def __init__(self, n: int, entry):
+        self._n, self._entry, self._done = n, entry, {}
+
+    def __len__(self) -> int:
+        return self._n
+
+    def __getitem__(self, k):
+        if isinstance(k, slice):
+            return [self[i] for i in range(*k.indices(self._n))]
+        if k < 0:
+            k += self._n
+        if not 0 <= k < self._n:
+            raise IndexError(k)
+        if k not in self._done:
+            self._done[k] = self._entry(k)
+        return self._done[k]
+
+    def __eq__(self, other) -> bool:
+        return list(self) == list(other)
+
+    def __repr__(self) -> str:
+        return repr(list(self))
+
+
 class Cell:
-    """An open r-interval between consecutive critical values, with its sample."""
+    """An open r-interval between consecutive critical values, with its sample; the real
+    λ at the sample (largest first) and the sign of g on each branch (None: x not real)
+    are computed when first read."""
 
-    lo: Algebraic
-    hi: Algebraic
-    sample: flint.fmpq
-    branches: list[Algebraic]          # real λ at the sample, largest first
-    signs: list[int | None]            # sign of g on each branch (None: x not real)
+    def __init__(self, lo: Algebraic, hi: Algebraic, sample: flint.fmpq, branches_at, sign_at):
+        self.lo, self.hi, self.sample = lo, hi, sample
+        self._branches_at, self._sign_at = branches_at, sign_at
+
+    @cached_property
+    def branches(self) -> list[Algebraic]:
+        return self._branches_at(self.sample)
+
+    @cached_property
+    def signs(self) -> Lazy:
+        lams = self.branches
+        return Lazy(len(lams), lambda k: self._sign_at(self.sample, lams[k]))
 
 
-@dataclass
 class SignTable:
     """The certified sign of a condition on each branch, cell by cell, and at each
     critical value (a list of signs, '?' where undecided; None where the branches
-    could not be isolated)."""
+    could not be isolated).  Signs are computed when first read (:class:`Lazy`)."""
 
-    condition: str
-    interval: tuple
-    critical: list[Algebraic]
-    cells: list[Cell]
-    points: list = field(default_factory=list)
+    def __init__(self, condition: str, interval: tuple, critical: list, cells: list, point_at=None):
+        self.condition, self.interval, self.critical, self.cells = condition, interval, critical, cells
+        self.points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
 
     def signs(self, branch: int, lo=None, hi=None, include_points=True) -> set:
         """Signs taken by g on branch ``branch`` (0 = largest real eigenvalue) over
@@ -246,8 +284,9 @@ class SignTable:
                 continue
             out.add(cell.signs[branch] if branch < len(cell.signs) else "missing")
         if include_points:
-            for rc, pt in zip(self.critical, self.points):
+            for k, rc in enumerate(self.critical):
                 if lo < rc < hi:
+                    pt = self.points[k]
                     out.add("?" if pt is None else pt[branch] if branch < len(pt) else "missing")
         return out
 
@@ -289,6 +328,9 @@ class Spectrum:
             raise ValueError("cp has a repeated factor in λ (its discriminant is identically 0)")
         self.lc = primitive(to_fmpq_poly(self.P.LC(), r))
         self.ring_cp = to_ring(self.cp)
+        self.mpoly_cp = ring_to_mpoly(self.ring_cp)
+        self.lrq_cp = ring_to_lrq(self.ring_cp)
+        self._cp_coeffs = _lambda_coefficients(self.mpoly_cp) if self.lc.degree() <= 0 else None
         self._resultants = {}
         self._tables = {}
         self._branches = {}
@@ -310,10 +352,17 @@ class Spectrum:
         return self._eigenvalues[key]
 
     def resultant(self, g) -> flint.fmpz_poly:
-        """Res_λ(g, cp) ∈ Z[r] (python-flint), cached."""
-        if g not in self._resultants:
-            self._resultants[g] = primitive(resultant_lambda(g, self.ring_cp))
-        return self._resultants[g]
+        """Res_λ(g, cp) ∈ Z[r] (python-flint), primitive; g an integer ``fmpz_mpoly`` in
+        (r, λ, s) or an element of the engine's ring; cached by g's text."""
+        G = g if isinstance(g, flint.fmpz_mpoly) else ring_to_mpoly(g)
+        key = str(G)
+        if key not in self._resultants:
+            if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
+                R = _norm_modulo(_lambda_coefficients(G), self._cp_coeffs)
+            else:
+                R = mpoly_to_univariate(G.resultant(self.mpoly_cp, "lam"))
+            self._resultants[key] = primitive(R)
+        return self._resultants[key]
 
     def _resultant_off_common_factor(self, e, cond: Condition, label: str) -> flint.fmpz_poly:
         """Res_λ(e, cp) ≡ 0: e and cp share a factor G in Q(r)[λ] (cp is reducible), so e
@@ -342,13 +391,12 @@ class Spectrum:
         for label, e in (cond.labelled_norms() if cond is not None else []):
             R = self.resultant(e)
             if R.is_zero():
-                R = self._resultant_off_common_factor(e, cond, label)
+                R = self._resultant_off_common_factor(mpoly_to_ring(e), cond, label)
             polys.append(R)
         lo, hi = _alg(lo), _alg(hi)
         roots = []
         for f in {str(f): f for p in polys for f, _m in irreducible_factors(p)}.values():
-            if count_roots(f) != len(flint_real_roots(f)):
-                raise ArithmeticError(f"Sturm and python-flint disagree on the real roots of {f}")
+            checked_real_root_count(f)          # Sturm and python-flint agree (memoised per factor)
             roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if lo < a < hi]
         return sorted(roots)
 
@@ -363,13 +411,9 @@ class Spectrum:
     def _sign_table(self, cond: Condition, lo, hi) -> SignTable:
         crit = self.critical_values(cond, lo, hi)
         ends = [_alg(lo)] + crit + [_alg(hi)]
-        cells = []
-        for a, b in zip(ends, ends[1:]):
-            t = simple_rational_between(a, b)
-            lams = self.real_eigenvalues(t)
-            cells.append(Cell(a, b, t, lams, [self._cell_sign(cond, t, L) for L in lams]))
-        points = [self.sign_at_point(cond, rc) for rc in crit]
-        return SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, points)
+        cells = [Cell(a, b, simple_rational_between(a, b), self.real_eigenvalues,
+                      lambda t, L: self._cell_sign(cond, t, L)) for a, b in zip(ends, ends[1:])]
+        return SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, lambda rc: self.sign_at_point(cond, rc))
 
     def _cell_sign(self, cond: Condition, t, L: Algebraic):
         """The sign of g at the sample t of a cell on the branch L: the sign over the
@@ -437,7 +481,8 @@ class Spectrum:
                         prec *= 2
                         continue
                     mult[hits[0]] = 2
-                return [_root_ball(sqf, rc, k) for k in range(len(reals)) for _ in range(mult[k])]
+                isolated = {prec: reals}
+                return [_root_ball(sqf, rc, k, isolated) for k in range(len(reals)) for _ in range(mult[k])]
             prec *= 2
         return None
 
@@ -517,13 +562,64 @@ class Spectrum:
         raise ArithmeticError("zero test undecided")
 
 
-def _root_ball(sqf, rc, k):
-    """prec -> a ball around the k-th largest real root of a squarefree K[λ] polynomial."""
+def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
+    """G ∈ Z[r][λ] (an fmpz_mpoly in (r, λ, s) free of s) as its coefficients in λ,
+    lowest first, each an fmpz_poly in r."""
+    coeffs: dict = {}
+    for (er, el, _es), c in G.to_dict().items():
+        coeffs.setdefault(el, {})[er] = int(c)
+    n = max(coeffs, default=0)
+    return [flint.fmpz_poly([coeffs.get(j, {}).get(i, 0) for i in range(max(coeffs.get(j, {0: 0}), default=0) + 1)])
+            for j in range(n + 1)]
+
+
+def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:
+    """Res_λ(cp, g) for cp monic in λ up to a constant factor (cp's leading coefficient a
+    non-zero integer c): the determinant of multiplication by g on Q[r][λ]/(cp) in the
+    basis 1, λ, ..., λ^{n-1}, which is Π g(λ_i) over the roots λ_i of cp, times c^{-m}
+    for some m (a non-zero rational multiple of the resultant: the same zeros in r).
+    Univariate python-flint arithmetic, no Sylvester matrix."""
+    n = len(cp) - 1
+    lead = cp[n]
+
+    def reduce(h):
+        h = list(h) + [flint.fmpz_poly(0)] * max(0, n - len(h))
+        for k in range(len(h) - 1, n - 1, -1):          # lead·h ≡ ..., keeping integer coefficients
+            t = h[k]
+            if t.is_zero():
+                continue
+            h = [hi * lead for hi in h]
+            for i in range(n):
+                h[k - n + i] -= t * cp[i]
+            h[k] = flint.fmpz_poly(0)
+        return h[:n]
+
+    cols = [reduce(g)]
+    for _ in range(n - 1):
+        cols.append(reduce([flint.fmpz_poly(0)] + cols[-1]))
+    A = [[cols[j][i] for j in range(n)] for i in range(n)]
+    if n == 1:
+        return A[0][0]
+    if n == 2:
+        return A[0][0] * A[1][1] - A[0][1] * A[1][0]
+    if n == 3:
+        (a, b, c), (d, e, f), (p, q, t) = A
+        return a * (e * t - f * q) - b * (d * t - f * p) + c * (d * q - e * p)
+    raise ValueError("multiplication determinant implemented for degree ≤ 3")
+
+
+def _root_ball(sqf, rc, k, isolated=None):
+    """prec -> a ball around the k-th largest real root of a squarefree K[λ] polynomial;
+    ``isolated`` (prec -> the real roots or None) is shared by the roots of one polynomial,
+    so that each precision isolates them once."""
+    isolated = {} if isolated is None else isolated
+
     def ball(prec):
         for p in (prec, 2 * prec, 4 * prec):        # a tighter ball is as good (the isolation may
-            reals = nf.real_roots(sqf, rc, p)       # fail at one precision and succeed at the next)
-            if reals is not None:
-                return reals[k]
+            if p not in isolated:                   # fail at one precision and succeed at the next)
+                isolated[p] = nf.real_roots(sqf, rc, p)
+            if isolated[p] is not None:
+                return isolated[p][k]
         raise ValueError("roots lost at higher precision")
     return ball
 

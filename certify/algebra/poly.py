@@ -106,11 +106,22 @@ def squarefree_part(p: flint.fmpz_poly) -> flint.fmpz_poly:
     return primitive(reduce(lambda a, b: a * b, (f for f, _ in factors), flint.fmpz_poly([1])))
 
 
+_FACTORS: dict = {}              # coefficients of p -> its irreducible factors
+caches.register(_FACTORS.clear)
+
+
 def irreducible_factors(p: flint.fmpz_poly) -> list[tuple[flint.fmpz_poly, int]]:
-    """The irreducible factors of ``p`` over Q with multiplicities, primitive, sorted."""
-    _, factors = p.factor()
-    out = [(primitive(f), m) for f, m in factors if f.degree() > 0]
-    return sorted(out, key=lambda fm: (fm[0].degree(), [int(c) for c in fm[0].coeffs()]))
+    """The irreducible factors of ``p`` over Q with multiplicities, primitive, sorted
+    (memoised: the same discriminant and resultants recur in every sign table)."""
+    key = tuple(int(c) for c in p.coeffs()) if isinstance(p, flint.fmpz_poly) else str(p)
+    out = _FACTORS.get(key)
+    if out is None:
+        _, factors = p.factor()
+        out = [(primitive(f), m) for f, m in factors if f.degree() > 0]
+        out = _FACTORS[key] = sorted(out, key=lambda fm: (fm[0].degree(), [int(c) for c in fm[0].coeffs()]))
+        if len(_FACTORS) > 20000:
+            _FACTORS.clear()
+    return list(out)
 
 
 def show(e) -> str:
@@ -174,6 +185,8 @@ def to_field(e) -> FracElement:
 
 def to_ring(e) -> PolyElement:
     """A polynomial of Q[λ, r, x, u, v, s]; ValueError for a proper fraction."""
+    if isinstance(e, PolyElement) and e.ring is RING:
+        return e
     f = to_field(e)
     if f.denom != 1:
         if f.denom.is_ground:
@@ -198,6 +211,13 @@ def ring_to_mpoly(p: PolyElement) -> flint.fmpz_mpoly:
             raise ValueError("polynomial still depends on x, u or v")
         terms[(er, el, es)] = int(c * int(den))
     return MCTX.from_dict(terms)
+
+
+def mpoly_to_ring(p: flint.fmpz_mpoly) -> PolyElement:
+    """An ``fmpz_mpoly`` in (r, λ, s) as an element of RING (the inverse of
+    :func:`ring_to_mpoly` up to its positive factor)."""
+    dom = RING.domain
+    return RING.zero.new({(el, er, 0, 0, 0, es): dom(int(c)) for (er, el, es), c in p.to_dict().items()})
 
 
 def ring_terms(p: PolyElement) -> list[tuple[flint.fmpq, int, int]]:
@@ -330,6 +350,17 @@ def _lr_from_ring(p: PolyElement):
             raise ValueError("polynomial depends on x, u, v or s, not only on λ, r")
         terms[(el, er)] = int(c.numerator) * (den // int(c.denominator))
     return LRCTX.from_dict(terms), den
+
+
+def ring_to_lrq(p: PolyElement) -> flint.fmpq_mpoly:
+    """A polynomial of RING in λ, r only as fmpq_mpoly in (λ, r) (lex, λ first: the
+    remainder of ``divmod`` by a polynomial monic in λ is the remainder in λ over Q[r])."""
+    terms = {}
+    for (el, er, *rest), c in p.terms():
+        if any(rest):
+            raise ValueError("polynomial depends on x, u, v or s")
+        terms[(el, er)] = flint.fmpq(c)
+    return LRQCTX.from_dict(terms)
 
 
 def field_to_frac(f) -> Frac:

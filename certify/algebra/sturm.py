@@ -1,8 +1,24 @@
 """Sturm sequences over Q: exact real-root counting and isolation.
 
-Our own implementation, independent of python-flint's root finder, which serves
-as the second route (:func:`flint_real_roots`).  Counts are of *distinct* real
+Two routes to the real roots of a polynomial over Q, kept apart:
+
+* :func:`sturm_count`, the first route: Sturm's theorem alone, the sign changes of
+  our Sturm sequence at rational points (or ±∞), every sign an exact rational
+  evaluation.  It never calls python-flint's root finder.
+* :func:`flint_real_roots`, the second route: python-flint's certified complex root
+  isolation, keeping the roots it proves real.
+
+:func:`checked_real_root_count` compares the two over the whole line (a disagreement
+is an ArithmeticError: a FAIL, not a warning).  For speed, :func:`count_roots` and
+:func:`isolate` use python-flint's root balls as *enclosures*, each checked by an
+exact sign change and their number by the Sturm count over the line; where that
+check fails they fall back to Sturm sign changes.  Counts are of *distinct* real
 roots; a polynomial with multiple roots is first divided by gcd(p, p').
+
+>>> import flint
+>>> p = flint.fmpq_poly([-2, 0, 1])                 # r² - 2
+>>> sturm_count(p), sturm_count(p, 0, 2), len(flint_real_roots(p))
+(2, 1, 2)
 """
 from __future__ import annotations
 
@@ -151,9 +167,10 @@ def _compare_root(p0, enclosure, x) -> int:
 
 
 def count_roots(p, a=None, b=None, seq=None) -> int:
-    """Number of distinct real roots of p in ]a, b] (a = -∞, b = +∞ when None): by the
-    certified root enclosures of :func:`_root_enclosures` when they are available (the
-    same number, fewer evaluations), else by the sign changes of the Sturm sequence."""
+    """Number of distinct real roots of p in ]a, b] (a = -∞, b = +∞ when None), fast: by
+    the certified root enclosures of :func:`_root_enclosures` when they are available
+    (the same number, fewer evaluations), else by the sign changes of the Sturm
+    sequence.  What isolation uses; the count reported as "Sturm" is :func:`sturm_count`."""
     seq = seq or sturm_sequence(p)
     if a is not None or b is not None:
         encl = _root_enclosures(seq) if seq[0].degree() > 2 else None
@@ -165,6 +182,39 @@ def count_roots(p, a=None, b=None, seq=None) -> int:
     va = _sign_changes_at_infinity(seq, -1) if a is None else sign_changes(seq, a)
     vb = _sign_changes_at_infinity(seq, 1) if b is None else sign_changes(seq, b)
     return va - vb
+
+
+def sturm_count(p, a=None, b=None) -> int:
+    """The number of distinct real roots of p in ]a, b] (a = -∞, b = +∞ when None) by
+    Sturm's theorem alone: V(a) - V(b), the sign changes of the Sturm sequence, each
+    sign an exact rational evaluation (no ball, no root finder).  The first route."""
+    seq = sturm_sequence(p)
+
+    def changes(t):
+        signs = [s for s in (_sign(q(t)) for q in seq) if s != 0]
+        return sum(1 for s, u in zip(signs, signs[1:]) if s != u)
+    va = _sign_changes_at_infinity(seq, -1) if a is None else changes(to_fmpq(a))
+    vb = _sign_changes_at_infinity(seq, 1) if b is None else changes(to_fmpq(b))
+    return va - vb
+
+
+_CHECKED: dict = {}              # coefficients of p -> its number of distinct real roots
+caches.register(_CHECKED.clear)
+
+
+def checked_real_root_count(p) -> int:
+    """The number of distinct real roots of p, counted by both routes: the Sturm count
+    over the line (:func:`sturm_count`) and python-flint's isolation
+    (:func:`flint_real_roots`); ArithmeticError when they disagree.  Memoised."""
+    key = tuple(flint.fmpq_poly(p).coeffs())
+    if key not in _CHECKED:
+        n, m = sturm_count(p), len(flint_real_roots(p))
+        if n != m:
+            raise ArithmeticError(f"Sturm ({n}) and python-flint ({m}) disagree on the real roots of {p}")
+        if len(_CHECKED) > 20000:
+            _CHECKED.clear()
+        _CHECKED[key] = n
+    return _CHECKED[key]
 
 
 def cauchy_bound(p) -> flint.fmpq:

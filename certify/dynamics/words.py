@@ -26,7 +26,7 @@ from certify.algebra.branches import Condition, Spectrum, ball_value
 from .model import (INDEX, characteristic_polynomial, charpoly_flint, check_word, collide, collision_matrix,
                     factor_flint, word_matrix, word_matrix_flint)
 from certify.algebra.poly import (FIELD, LR_LAMBDA, LR_R, LRCTX, LRQCTX, Frac, field_to_frac, flint_poly_to_frac,
-                                  frac_to_field, lr_to_ring, to_field, to_ring)
+                                  frac_to_field, lr_to_ring, ring_to_lrq, to_field, to_ring)
 
 K = FIELD
 
@@ -103,16 +103,6 @@ def reduce_mod(e, cp):
     return to_field(e).numer.rem(to_ring(cp))
 
 
-def _lrq(p):
-    """A polynomial of RING in λ, r only as fmpq_mpoly."""
-    terms = {}
-    for (el, er, *rest), c in p.terms():
-        if any(rest):
-            raise ValueError("polynomial depends on x, u, v or s")
-        terms[(el, er)] = flint.fmpq(c)
-    return LRQCTX.from_dict(terms)
-
-
 def _lrq_to_frac(p) -> Frac:
     """An fmpq_mpoly in (λ, r) as :class:`Frac`."""
     d = p.to_dict()
@@ -143,7 +133,7 @@ def position_map(steps: list[Step], cp) -> tuple:
     p_1(t_n) ∝ cx + d over a common denominator: f(x) = (ax + b)/(cx + d).  The common
     factor may be negative, which swaps x₊ and x₋ (both are always considered)."""
     last = [tuple(field_to_frac(e) for e in pair) for pair in steps[-1].p]
-    return tuple(lr_to_ring(e).as_expr() for e in position_map_lr(last, _lrq(to_ring(cp))))
+    return tuple(lr_to_ring(e).as_expr() for e in position_map_lr(last, ring_to_lrq(to_ring(cp))))
 
 
 def check_position_map_lr(last_p: list, abcd: tuple, C) -> None:
@@ -188,6 +178,7 @@ class Candidate:
     q0_other: list
     abcd: tuple
     steps: list
+    abcd_ring: tuple | None = None     # a, b, c, d as elements of the engine's ring (the same polynomials)
 
     def balls(self, r0, branch: int, sigma: int, prec: int):
         """(p(0), q(0), r) at a rational r0 on a real branch, x = x₊ (sigma = 1) or
@@ -224,13 +215,14 @@ def candidate(word: str) -> Candidate:
     last = run[-1][1]
     if not (last[1][0].is_zero() and last[1][1].is_zero()):
         raise ArithmeticError("p_2 does not vanish after the last b")
-    C = _lrq(to_ring(cp))
+    C = ring_to_lrq(to_ring(cp))
     abcd_lr = position_map_lr(last, C)
     check_position_map_lr(last, abcd_lr, C)
-    abcd = tuple(lr_to_ring(e).as_expr() for e in abcd_lr)
+    abcd_ring = tuple(lr_to_ring(e) for e in abcd_lr)
+    abcd = tuple(e.as_expr() for e in abcd_ring)
     q0_other = [tuple(frac_to_field(e) for e in eigenvector_lr(Mf, rows)) for rows in ((0, 2), (1, 2))]
     q0 = tuple(frac_to_field(e) for e in q0)
-    return Candidate(word, M, cp, Spectrum(cp), q0, q0_other, abcd, steps_of(run))
+    return Candidate(word, M, cp, Spectrum(cp), q0, q0_other, abcd, steps_of(run), abcd_ring)
 
 
 

@@ -22,7 +22,7 @@ from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import Condition, simplest_between
 from certify.dynamics.words import K, Candidate
 from certify.dynamics.systems import FOUR, System, run_in
-from certify.algebra.poly import RING, lam, to_field, to_ring
+from certify.algebra.poly import RING, field_to_frac, frac_to_field, lam, lr_to_ring, ring_to_lrq, to_field, to_ring
 
 Q = flint.fmpq
 BRANCH_NAMES = ("upper", "middle", "lower")
@@ -72,20 +72,25 @@ def fixed_point_data(abcd, cp) -> list[FixedPointData]:
 def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=None) -> Condition:
     """The engine's Condition for g = G0 + x G1, numerator and denominator reduced
     modulo cp, x the fixed point ``fp`` (x = (A + σ√Δ)/(2c), A = a - d) or the
-    rational function ``x_value``."""
-    C = to_ring(cp)
+    rational function ``x_value``.  The products and remainders run on python-flint
+    (fmpq_mpoly in λ, r): the same polynomials as in SymPy's ring."""
+    C = cp if isinstance(cp, flint.fmpq_mpoly) else ring_to_lrq(to_ring(cp))
     G0, G1 = req.G
-    n0, d0, n1, d1 = G0.numer, G0.denom, G1.numer, G1.denom
-    zero = RING.zero
+    n0, d0, n1, d1 = (ring_to_lrq(e) for e in (G0.numer, G0.denom, G1.numer, G1.denom))
+    zero = n0 - n0
+    delta = c = None
     if not req.has_x:
-        N0, N1, D0, delta, c = n0, zero, d0, None, None
+        N0, N1, D0 = n0, zero, d0
     elif x_value is not None:                               # x = X0/X1
         X = to_field(x_value)
-        N0, N1, D0, delta, c = n0 * d1 * X.denom + n1 * d0 * X.numer, zero, d0 * d1 * X.denom, None, None
+        xn, xd = ring_to_lrq(X.numer), ring_to_lrq(X.denom)
+        N0, N1, D0 = n0 * d1 * xd + n1 * d0 * xn, zero, d0 * d1 * xd
     else:                                                   # g = (n0 d1 + x n1 d0)/(d0 d1)
-        A, c, delta = fp.amd, fp.c, fp.delta
-        N0, N1, D0 = 2 * c * n0 * d1 + A * n1 * d0, fp.sigma * n1 * d0, 2 * c * d0 * d1
-    return Condition(req.name, (N0.rem(C), N1.rem(C)), (D0.rem(C), zero), delta, c)
+        A, cc = ring_to_lrq(fp.amd), ring_to_lrq(fp.c)
+        N0, N1, D0 = 2 * cc * n0 * d1 + A * n1 * d0, fp.sigma * n1 * d0, 2 * cc * d0 * d1
+        delta, c = fp.delta, fp.c
+    N0, N1, D0 = (lr_to_ring(divmod(e, C)[1]) for e in (N0, N1, D0))
+    return Condition(req.name, (N0, N1), (D0, RING.zero), delta, c)
 
 
 def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:
@@ -176,8 +181,9 @@ def sign_in_cell(T, branch: int, lo, hi):
 def sign_at(T, rc: Algebraic, branch: int):
     """The sign of table T at rc on ``branch``: its point value when rc is one of
     T's critical values, else the sign of the cell holding rc."""
-    for c, pt in zip(T.critical, T.points):
+    for k, c in enumerate(T.critical):
         if c == rc:
+            pt = T.points[k]
             if pt is None:
                 return "?"
             return pt[branch] if branch < len(pt) else "missing"
@@ -220,7 +226,7 @@ class Analysis:
     def __init__(self, cand: Candidate, lo=0, hi=1):
         self.cand, self.spec, self.lo, self.hi = cand, cand.spectrum, lo, hi
         # a two-gap system has no position variable: one pseudo fixed point "—", no condition uses x
-        self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd, self.spec.ring_cp)} \
+        self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd_ring or cand.abcd, self.spec.ring_cp)} \
             if cand.abcd is not None else {NO_X: None}
         self.tables = {}
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
@@ -246,7 +252,7 @@ class Analysis:
             return None
         key = (req.name, fname if req.has_x else "", tuple(_key(e) for e in hull))
         if key not in self.tables:
-            self.tables[key] = self.spec.sign_table(condition(req, self.spec.ring_cp,
+            self.tables[key] = self.spec.sign_table(condition(req, self.spec.lrq_cp,
                                                                self.fps[fname] if req.has_x else None), *hull)
         return self.tables[key]
 
@@ -305,9 +311,9 @@ class Analysis:
         if ok is not None:
             return p, "holds" if ok else "fails", "" if ok else \
                 f"{req.name} {'= 0' if sg == 0 else 'is not real' if sg is None else 'has the wrong sign'}"
-        a, b, c, d = self.cand.abcd if self.cand.abcd is not None else (None,) * 4
+        a, b, c, d = (self.cand.abcd_ring or self.cand.abcd) if self.cand.abcd is not None else (None,) * 4
         if req.has_x and p.x_value is None and vanishes_on_branch(self.spec, c, rc, k):
-            xv = sp.cancel(b / (d - a))
+            xv = frac_to_field(field_to_frac(b) / field_to_frac(d - a))    # b/(d-a) in lowest terms
             if _meets(self._sign_with_x(Requirement("x", (K.zero, K.one), 1), rc, k, xv), 1):
                 return self._point(R, Piece(rc, None, xv, "c = 0: f affine, fixed point b/(d-a)"), req, T)
             return p, "fails", "c = 0 there (exact): f is affine, its fixed point b/(d-a) is not positive"
@@ -315,7 +321,7 @@ class Analysis:
             # g = N/D without √Δ: N = 0 (g = 0) or D = 0 (g undefined: a collision time or
             # the normalisation q_1(0) = -1 breaks down) both defeat a strict inequality;
             # N = D = 0 stays undecided.
-            cond = condition(req, self.spec.ring_cp, x_value=p.x_value) if req.has_x else condition(req, self.spec.ring_cp)
+            cond = condition(req, self.spec.lrq_cp, x_value=p.x_value) if req.has_x else condition(req, self.spec.lrq_cp)
             zero_n = vanishes_on_branch(self.spec, cond.N[0], rc, k)
             zero_d = vanishes_on_branch(self.spec, cond.D[0], rc, k)
             if zero_n != zero_d:
@@ -323,7 +329,7 @@ class Analysis:
             # 0/0: another representation of the same function, with a denominator not vanishing there
             for G in req.other:
                 alt = Requirement(req.name, G, req.sign)
-                cond = condition(alt, self.spec.ring_cp, x_value=p.x_value) if alt.has_x else condition(alt, self.spec.ring_cp)
+                cond = condition(alt, self.spec.lrq_cp, x_value=p.x_value) if alt.has_x else condition(alt, self.spec.lrq_cp)
                 if vanishes_on_branch(self.spec, cond.D[0], rc, k):
                     continue
                 if vanishes_on_branch(self.spec, cond.N[0], rc, k):
@@ -336,7 +342,7 @@ class Analysis:
         return p, "undecided", req.name
 
     def _sign_with_x(self, req, rc, k, xv):
-        sg = self.spec.sign_at_point(condition(req, self.spec.ring_cp, x_value=xv), rc)
+        sg = self.spec.sign_at_point(condition(req, self.spec.lrq_cp, x_value=xv), rc)
         return "?" if sg is None else (sg[k] if k < len(sg) else "missing")
 def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: System = FOUR,
                         previous: str | None = None) -> tuple[list[Requirement], list]:
@@ -385,7 +391,8 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: 
 
 
 def _positive_constant(e) -> bool:
-    v = e.as_expr()
-    return v.is_number and v > 0
+    """e ∈ K is a positive rational constant (read from its numerator and denominator)."""
+    f = to_field(e)
+    return f.numer.is_ground and f.denom.is_ground and bool(f.numer.LC * f.denom.LC > 0)
 
 

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 import flint
@@ -144,19 +145,36 @@ class PatternResult:
     system: str
     explanation: str
     interval: tuple
-    matrix: list
     cp: str
-    discriminant: str
     exists: list                      # [{branch, fixed_point, set, pieces}], non-empty sets only
     feasible: list
     stable: list
     undecided: list                   # [str]
     conditions: dict                  # stage -> [condition text]
-    datum: dict                       # formulas of u, v, x
     diagnosis: dict | None
     verdict: str
     seconds: float = 0.0
     regions: dict = field(default_factory=dict, repr=False)   # stage -> [Region] (for certificates)
+    formulas: object = field(default=None, repr=False)      # () -> (matrix, discriminant, datum), or None
+
+    @cached_property
+    def _printed(self) -> tuple:
+        """What only a reader needs, computed when first read: the period matrix, the
+        factored discriminant and the datum's formulas (empty without ``formulas``)."""
+        return self.formulas() if self.formulas is not None else ([], "", {})
+
+    @property
+    def matrix(self) -> list:
+        return self._printed[0]
+
+    @property
+    def discriminant(self) -> str:
+        return self._printed[1]
+
+    @property
+    def datum(self) -> dict:
+        """The formulas of u, v, x."""
+        return self._printed[2]
 
     def intervals(self, stage: str, branch: int | None = None) -> list:
         """(branch, fixed point, lo, hi) for each maximal open interval of the stage's set."""
@@ -252,7 +270,8 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
 
     ``formulas=False`` (the census) skips what only the report prints: the period
     matrix, the factored discriminant and the datum's formulas (left empty); the
-    certified sets, the undecided points, the diagnosis and the verdict are the same."""
+    certified sets, the undecided points, the diagnosis and the verdict are the same.
+    With ``formulas`` they are computed when first read."""
     import time
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
@@ -288,22 +307,19 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
         before = _copy(an.regions)
     regions["feasible"] = _copy(an.regions)
-    stab = dominance_requirements(cp) + (stability_conditions(cand.abcd) if cand.abcd is not None else [])
+    stab = dominance_requirements(cp) + (stability_conditions(cand.abcd_ring or cand.abcd) if cand.abcd is not None else [])
     conditions["stable"] = [_cond(q) for q in stab]
     for q in stab:
         an.impose(q)
     regions["stable"] = _copy(an.regions)
     undecided = sorted({f"{BRANCH_NAMES[R.branch]} {R.fixed_point} at {_short(rc)}: {why_}"
                         for R in an.regions for rc, why_ in R.undecided})
-    if formulas:
+    def printed():
         M = [[show(e) for e in row] for row in cand.M.tolist()]
-        disc = show(sp.factor(sp.discriminant(sp.Poly(cp, lam)).as_expr()))
-        formulas_of_datum = datum(cand)
-    else:
-        M, disc, formulas_of_datum = [], "", {}
-    res = PatternResult(word, normal, system_name, why, (lo, hi), M, show(sp.collect(cp, lam)), disc,
+        return M, show(sp.factor(sp.discriminant(sp.Poly(cp, lam)).as_expr())), datum(cand)
+    res = PatternResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cp, lam)),
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
-                        undecided, conditions, formulas_of_datum, diagnosis, "", 0.0, regions)
+                        undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None)
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res

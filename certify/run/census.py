@@ -195,9 +195,8 @@ def window_figure(doc: dict, path, marks: dict | None = None) -> Path | None:
     """One row per word with stable data, its stable windows drawn as bars on the r-axis
     (floats of certified ends: a drawing only); written atomically to ``path`` (PNG).
     Returns the path, or None when no word has stable data."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from .figures import pyplot
+    plt = pyplot()
     from .figures import DPI
     from .files import atomic_path
 

@@ -25,15 +25,21 @@ from contextlib import contextmanager
 from fnmatch import fnmatch
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")  # no screen needed, and the same pixels everywhere
-
-from certify.run.files import atomic_path  # noqa: E402
+from certify.run.files import atomic_path
 
 DPI = 110
 
 _output_dir: Path | None = None
+
+
+def pyplot():
+    """matplotlib.pyplot on the Agg backend (no screen needed, and the same pixels
+    everywhere), imported when a figure is first drawn: commands that draw nothing
+    do not pay for importing matplotlib."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
 
 
 def set_output_dir(path) -> None:
@@ -78,8 +84,7 @@ def save_figure(fig, name: str, dpi: int | None = None) -> str:
     The write is atomic (temporary file, then :func:`os.replace`).  With no
     output directory set, nothing is written.  ``dpi``: default :data:`DPI`.
     """
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     name = figure_name(name)
     try:
         if _output_dir is not None:

@@ -42,7 +42,7 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
     where the table proves k+1 real eigenvalues."""
     if not figures.enabled():
         return ["spectrum.png", "spectrum_zoom.png"]
-    import matplotlib.pyplot as plt
+    plt = figures.pyplot()
     names = []
     for name, (r_lo, r_hi), ylim in (("spectrum.png", (1e-4, 0.9999), None),
                                      ("spectrum_zoom.png", (1e-4, 0.13), (0, 0.05))):
@@ -72,7 +72,7 @@ def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=No
     """Figures 3.3-3.4: each branch coloured by the certified sign of a condition."""
     if not figures.enabled():
         return name
-    import matplotlib.pyplot as plt
+    plt = figures.pyplot()
     rs = np.linspace(xlim[0], xlim[1], 1500)
     curves = branch_curves(spectrum, rs)
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
@@ -110,7 +110,7 @@ def omega_figure(data, name: str, lines: dict | None = None, boxes=(), title: st
     rectangles.  ``dpi``: the resolution of the saved PNG (default: figures.DPI)."""
     if not figures.enabled():
         return figures.figure_name(name)
-    import matplotlib.pyplot as plt
+    plt = figures.pyplot()
     from matplotlib.patches import Rectangle
     lo, hi = float(data.spec.lo), float(data.spec.hi)
     dpi = dpi or figures.DPI
