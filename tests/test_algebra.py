@@ -741,3 +741,13 @@ def test_a_disagreement_of_the_two_routes_is_an_error(monkeypatch):
     monkeypatch.setattr(sturm, "_CHECKED", {})
     with pytest.raises(ArithmeticError, match="disagree"):
         sturm.checked_real_root_count(p)
+
+
+@settings(max_examples=200, deadline=None, database=None)
+@given(st.lists(st.sampled_from([0, 0, 1, -1, 2, -7, 13, -100, 10 ** 20 + 1]), min_size=1, max_size=9))
+def test_show_writes_an_integer_polynomial_as_sympy_prints_it(coeffs):
+    """The direct printer of integer polynomials gives SymPy's text, in the paper's notation."""
+    from certify.algebra.poly import from_flint, show
+    p = flint.fmpz_poly(coeffs)
+    printed = sp.sstr(sp.sympify(from_flint(p)), order="lex").replace("**", "^").replace("*", "")
+    assert show(p) == show(flint.fmpq_poly(p)) == printed

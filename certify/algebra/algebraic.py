@@ -18,7 +18,7 @@ import sympy as sp
 
 from certify import caches
 from .balls import GUARD, decide, precision
-from .poly import primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
+from .poly import poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, isolate, refine
 
 Q = flint.fmpq
@@ -56,7 +56,7 @@ class Algebraic:
         isolating intervals are memoised per (p, a, b); each call returns new numbers
         (a number refines its interval in place)."""
         p = primitive(flint.fmpq_poly(p)) if not isinstance(p, flint.fmpz_poly) else p
-        key = (tuple(p.coeffs()), None if a is None else str(a), None if b is None else str(b))
+        key = (poly_key(p), None if a is None else str(a), None if b is None else str(b))
         made = _ISOLATED.get(key)
         if made is None:
             made = _ISOLATED[key] = [cls(p, lo, hi) for lo, hi in isolate(p, a, b)]
@@ -144,7 +144,10 @@ class Algebraic:
         if prec in balls:
             return balls[prec]
         if not self.is_rational and self.hi - self.lo > Q(1, 2 ** prec) and self.p.degree() > 2:
-            ball = _root_ball(self.p, self.lo, self.hi, prec)
+            coarser = [q for q in balls if q < prec]
+            ball = _newton_ball(self.p, balls[max(coarser)], prec) if coarser else None
+            if ball is None:
+                ball = _root_ball(self.p, self.lo, self.hi, prec)
             if ball is not None:
                 balls[prec] = ball
                 return ball
@@ -294,7 +297,7 @@ def _root_ball(p, lo, hi, prec: int):
     """The real root of p in ]lo, hi[ as a ball of radius ≤ 2^-prec, from python-flint's
     certified complex root isolation at working precision ~prec (memoised per p and
     precision); None when that does not single out one real ball inside ]lo, hi[."""
-    key = (tuple(p.coeffs()), prec)
+    key = (poly_key(p), prec)
     roots = _ROOTS.get(key)
     if roots is None:
         if len(_ROOTS) > 2048:
@@ -325,6 +328,39 @@ def _root_ball(p, lo, hi, prec: int):
         return flint.arb(z.mid(), max(z.rad(), flint.arb(2) ** -(prec + 2)))
 
 
+def _newton_ball(p, z: flint.arb, prec: int):
+    """The root of p in the ball z (z holds exactly one root, a simple one) narrowed to a
+    radius about 2^-prec by the interval Newton operator N(X) = m - p(m)/p'(X), X ∩ N(X)
+    (the root stays in it by the mean value theorem while p' ≠ 0 on X): a few
+    evaluations instead of a new isolation of all the roots of p.  None when p' may
+    vanish on X or the iteration stalls (the caller isolates afresh); the result is
+    checked by an exact sign change of p at its rational ends."""
+    with precision(prec + GUARD + 16):
+        P, D = flint.arb_poly(p), flint.arb_poly(p.derivative())
+        X, target = z, flint.arb(2) ** -(prec + 2)
+        for _ in range(64):
+            if X.rad() <= target:
+                break
+            d = D(X)
+            if d.contains(0):
+                return None
+            m = flint.arb(X.mid())
+            N = m - P(m) / d
+            if not N.overlaps(X):
+                return None
+            Y = X.intersection(N)                  # python-flint's rigorous enclosure of X ∩ N
+            if Y.rad() > X.rad() / 2 and N.rad() > 2 * target:
+                return None
+            X = Y
+        if X.rad() > target * 4:
+            return None
+        a, b = X.mid().fmpq() - X.rad().fmpq(), X.mid().fmpq() + X.rad().fmpq()
+        pa, pb = p(a), p(b)
+        if pa == 0 or pb == 0 or (pa > 0) == (pb > 0):
+            return None
+        return flint.arb(X.mid(), max(X.rad(), flint.arb(2) ** -(prec + 2)))
+
+
 _ENCLOSURES: dict = {}
 caches.register(_ENCLOSURES.clear)
 
@@ -333,7 +369,7 @@ def _enclosures(p, prec: int) -> list:
     """Intervals ]a, b[ (exact rational ends of python-flint's real root balls of the
     squarefree p, at working precision ~prec) at whose ends p has opposite non-zero
     signs (checked exactly): each holds a root of p.  Memoised."""
-    key = (tuple(p.coeffs()), prec)
+    key = (poly_key(p), prec)
     out = _ENCLOSURES.get(key)
     if out is None:
         if len(_ENCLOSURES) > 4096:

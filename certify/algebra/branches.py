@@ -318,29 +318,50 @@ def _short(a) -> str:
 class Spectrum:
     """The real eigenvalue branches of cp(λ; r), cp ∈ Q[r][λ]."""
 
-    def __init__(self, cp):
-        self.cp = sp.expand(expr(cp))
-        self.P = sp.Poly(self.cp, lam)
-        self.degree = self.P.degree()
-        self.disc = primitive(discriminant_lambda(self.cp))
+    def __init__(self, cp, ring_cp=None):
+        """``cp`` an expression (or text) in r, λ; ``ring_cp`` the same polynomial as an
+        element of the engine's ring, when the caller has it (no conversion then)."""
+        self._given = cp
+        self.ring_cp = ring_cp if ring_cp is not None else to_ring(sp.expand(expr(cp)))
+        self.mpoly_cp = ring_to_mpoly(self.ring_cp)
+        self.lrq_cp = ring_to_lrq(self.ring_cp)
+        self.degree = self.ring_cp.degree(RING.gens[0])
+        self.disc = primitive(mpoly_to_univariate(self.mpoly_cp.discriminant("lam")))
         if self.disc.is_zero():
             # the branches of a squarefree part could change number where no discriminant vanishes
             raise ValueError("cp has a repeated factor in λ (its discriminant is identically 0)")
-        self.lc = primitive(to_fmpq_poly(self.P.LC(), r))
-        self.ring_cp = to_ring(self.cp)
-        self.mpoly_cp = ring_to_mpoly(self.ring_cp)
-        self.lrq_cp = ring_to_lrq(self.ring_cp)
-        self._cp_coeffs = _lambda_coefficients(self.mpoly_cp) if self.lc.degree() <= 0 else None
+        lead = _lambda_coefficients(self.mpoly_cp)
+        self.lc = primitive(lead[-1])
+        self._cp_coeffs = lead if self.lc.degree() <= 0 else None
         self._resultants = {}
         self._tables = {}
         self._branches = {}
         self._eigenvalues = {}
+        self._common = {}                  # (id of h, key of rc) -> (h, common roots of cp and h there)
+
+    @cached_property
+    def cp(self) -> sp.Expr:
+        """cp as an expanded SymPy expression (for readers)."""
+        return sp.expand(expr(self._given))
+
+    @cached_property
+    def P(self) -> sp.Poly:
+        """cp as a SymPy Poly in λ (for readers)."""
+        return sp.Poly(self.cp, lam)
+
+    @cached_property
+    def _coefficients(self) -> list[flint.fmpq_poly]:
+        """The coefficients of cp in λ, lowest first, as fmpq_poly in r."""
+        out: dict = {}
+        for c, i, j in ring_terms(self.ring_cp):
+            out.setdefault(j, {})[i] = c
+        return [flint.fmpq_poly([out.get(j, {}).get(i, 0) for i in range(max(out.get(j, {0: 0})) + 1)])
+                for j in range(self.degree + 1)]
 
     def at(self, r0) -> flint.fmpq_poly:
         """cp(λ; r0) ∈ Q[λ] for a rational r0."""
-        r0 = sp.Rational(int(to_fmpq(r0).p), int(to_fmpq(r0).q))
-        return flint.fmpq_poly([to_fmpq(sp.Poly(c, r).eval(r0) if c.has(r) else c)
-                                for c in self.P.all_coeffs()[::-1]])
+        t = to_fmpq(r0)
+        return flint.fmpq_poly([c(t) for c in self._coefficients])
 
     def real_eigenvalues(self, r0) -> list[Algebraic]:
         """The real roots λ of cp(λ; r0), largest first, as algebraic numbers (Sturm);
@@ -492,9 +513,14 @@ class Spectrum:
         roots = self.branches_at(rc)
         if roots is None:
             return None
-        out = decide(lambda p: [_sign_ball(cond, rc.arb(p), L(p)) for L in roots], 128, maxprec,
+        quick = min(256, maxprec)
+        out = decide(lambda p: [_sign_ball(cond, rc.arb(p), L(p)) for L in roots], 128, quick,
                      undecided=lambda signs: "?" in signs)
-        return [self._exact_sign(cond, rc, k, roots[k]) if sg == "?" else sg for k, sg in enumerate(out)]
+        # where balls of 256 bits do not decide, the exact zero test first (a critical value is
+        # often a zero of g: no precision decides it), then balls up to maxprec for the rest
+        out = [self._exact_sign(cond, rc, k, roots[k]) if sg == "?" else sg for k, sg in enumerate(out)]
+        return [decide(lambda p, k=k: _sign_ball(cond, rc.arb(p), roots[k](p)), 2 * quick, maxprec)
+                if sg == "?" else sg for k, sg in enumerate(out)]
 
     def _exact_sign(self, cond: Condition, rc: Algebraic, k: int, ball, maxprec: int = 1024):
         """The sign of g on branch k at rc where balls alone do not decide it: 0 when
@@ -532,25 +558,40 @@ class Spectrum:
             return None
         return decide(opposite, 128, maxprec, undecided=lambda v: v is None)
 
+    def _common_roots(self, h, rc: Algebraic):
+        """The common roots of cp(rc, λ) and h(rc, λ): True when h(rc, λ) ≡ 0, False when
+        there is none (the gcd in Q(rc)[λ] is 1), else prec -> certified balls around them
+        (a linear gcd G₀λ + G₁ gives the one root -G₁/G₀ without making G monic)."""
+        m = nf.modulus(rc)
+        hk = nf.kpoly(h, m)
+        if not hk:
+            return True
+        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m, monic=False)
+        if len(G) == 1:
+            return False
+        if len(G) == 2:
+            return _linear_root(G, rc)
+        G, _ = nf.squarefree(nf.gcd(nf.kpoly(self.ring_cp, m), hk, m), m)
+        return lambda prec: nf.real_roots(G, rc, prec)
+
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) (an expression or an element of
         ``poly.RING``) vanishes on branch ``branch`` at r = rc:
         G = gcd(cp(λ; rc), h(rc, λ)) is computed in Q(rc)[λ]; h vanishes there iff
         the branch's eigenvalue is a root of G, decided by disjoint certified balls."""
-        m = nf.modulus(rc)
-        hk = nf.kpoly(h, m)
-        if not hk:
-            return True
-        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
-        if len(G) == 1:
-            return False
-        G, _ = nf.squarefree(G, m)
+        key = (id(h), rc.key())
+        entry = self._common.get(key)
+        if entry is None or entry[0] is not h:
+            entry = self._common[key] = (h, self._common_roots(h, rc))
+        G = entry[1]
+        if G is True or G is False:
+            return G
         branches = self.branches_at(rc)
         if branches is None or branch >= len(branches):
             raise ArithmeticError("branch not isolated at this point")
         prec = 128
         while prec <= maxprec:
-            zeros = nf.real_roots(G, rc, prec)
+            zeros = G(prec)
             balls = [b(prec) for b in branches]
             if zeros is not None:
                 mine = balls[branch]
@@ -560,6 +601,23 @@ class Spectrum:
                     return bool(hit)
             prec *= 2
         raise ArithmeticError("zero test undecided")
+
+
+def _linear_root(G, rc):
+    """prec -> a ball around the root -G₁/G₀ of G₀λ + G₁ ∈ K[λ] (G₀ ≠ 0 in K), or None when
+    the ball of G₀ holds 0 at that precision.  The coefficients of a gcd by pseudo-remainders
+    are long rationals: they are evaluated with as many more bits as they have, so that
+    the cancellation in their evaluation at rc costs no precision of the root."""
+    extra = max((max(c.numer().height_bits() if hasattr(c.numer(), "height_bits") else
+                     max((abs(int(a)).bit_length() for a in c.numer().coeffs()), default=0),
+                     int(c.denom()).bit_length()) for c in G), default=0)
+
+    def zeros(prec):
+        with precision(prec + extra + GUARD):
+            R = rc.arb(prec + extra)
+            g0, g1 = nf.arb_of(G[0], R), nf.arb_of(G[1], R)
+            return None if g0.contains(0) else [-g1 / g0]
+    return zeros
 
 
 def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:

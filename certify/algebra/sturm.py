@@ -26,7 +26,7 @@ import flint
 
 from certify import caches
 from .balls import ordered, precision
-from .poly import to_fmpq
+from .poly import poly_key, to_fmpq
 
 Q = flint.fmpq
 _SEQUENCES: dict = {}            # the coefficients of p -> its Sturm sequence (memoised)
@@ -39,7 +39,7 @@ def sturm_sequence(p) -> list[flint.fmpq_poly]:
     """The Sturm sequence p0 = p/gcd(p,p'), p1 = p0', p_{k+1} = -rem(p_{k-1}, p_k);
     memoised per polynomial (the same polynomials recur in every comparison)."""
     p = flint.fmpq_poly(p)
-    key = tuple(p.coeffs())
+    key = poly_key(p)
     seq = _SEQUENCES.get(key)
     if seq is None:
         seq = _SEQUENCES[key] = _sturm_sequence(p)
@@ -124,7 +124,7 @@ def _root_enclosures(seq):
     the whole line: then each holds exactly one root and every root is in one.
     [(a, b, sign p0(a))], or None when that check fails.  Memoised."""
     p0 = seq[0]
-    key = tuple(p0.coeffs())
+    key = poly_key(p0)
     if key in _BALLS:
         return _BALLS[key]
     if len(_BALLS) > 20000:
@@ -206,7 +206,7 @@ def checked_real_root_count(p) -> int:
     """The number of distinct real roots of p, counted by both routes: the Sturm count
     over the line (:func:`sturm_count`) and python-flint's isolation
     (:func:`flint_real_roots`); ArithmeticError when they disagree.  Memoised."""
-    key = tuple(flint.fmpq_poly(p).coeffs())
+    key = poly_key(p)
     if key not in _CHECKED:
         n, m = sturm_count(p), len(flint_real_roots(p))
         if n != m:

@@ -16,7 +16,7 @@ import sympy as sp
 
 from sympy.core.mul import _keep_coeff
 
-from certify.algebra.poly import from_flint, lam, primitive, r
+from certify.algebra.poly import RING, from_flint, lam, primitive, r
 from certify.errors import UsageError
 
 LETTERS = "abc"
@@ -122,6 +122,29 @@ def factor_flint(p) -> sp.Expr:
 def charpoly_flint(M) -> sp.Expr:
     """det(λI - M) for a 2x2 or 3x3 matrix of python-flint polynomials in r, as the
     expanded SymPy expression (equal to ``sp.expand(Matrix.charpoly(λ).as_expr())``)."""
+    coeffs = charpoly_coefficients(M)
+    n = len(coeffs) - 1
+    terms = []
+    for k, c in enumerate(coeffs):
+        for j, cj in enumerate(flint.fmpq_poly(c).coeffs()):
+            if cj:
+                terms.append(sp.Rational(int(cj.p), int(cj.q)) * r**j * lam**(n - k))
+    return sp.Add(*terms)
+
+
+def charpoly_ring(M):
+    """det(λI - M) as an element of the engine's ring Q[λ, r, ...] (the same polynomial as
+    :func:`charpoly_flint`, built from python-flint without a SymPy expression)."""
+    coeffs = charpoly_coefficients(M)
+    n, zeros = len(coeffs) - 1, (0,) * (len(RING.gens) - 2)
+    terms = {(n - k, j) + zeros: RING.domain(cj) for k, c in enumerate(coeffs)
+             for j, cj in enumerate(flint.fmpq_poly(c).coeffs()) if cj}
+    return RING.from_dict(terms)
+
+
+def charpoly_coefficients(M) -> list:
+    """The coefficients of det(λI - M), highest power of λ first, as python-flint
+    polynomials in r (M a 2x2 or 3x3 matrix of them)."""
     n = len(M)
     one = flint.fmpq_poly([1])
     if n == 2:
@@ -133,12 +156,7 @@ def charpoly_flint(M) -> sp.Expr:
         coeffs = [one, -(a + e + i), minors, -det]
     else:
         raise ValueError("a 2x2 or 3x3 matrix")
-    terms = []
-    for k, c in enumerate(coeffs):
-        for j, cj in enumerate(flint.fmpq_poly(c).coeffs()):
-            if cj:
-                terms.append(sp.Rational(int(cj.p), int(cj.q)) * r**j * lam**(n - k))
-    return sp.Add(*terms)
+    return coeffs
 
 
 def characteristic_polynomial(M: sp.Matrix) -> sp.Expr:

@@ -27,7 +27,7 @@ import sympy as sp
 from certify import caches
 from certify.algebra.branches import Spectrum
 from certify.algebra.poly import LR_LAMBDA, Frac, flint_poly_to_frac, frac_to_field, from_flint, lam, r
-from .model import INDEX, charpoly_flint, collide, factor_flint, word_matrix_flint
+from .model import INDEX, charpoly_flint, charpoly_ring, collide, factor_flint, word_matrix_flint
 from .words import K, Candidate, Step, candidate, run_lr, steps_of
 
 
@@ -101,7 +101,6 @@ def candidate_in(system_name: str, word: str) -> Candidate:
         raise ValueError(f"the normalisation q(0) = (-1, u), p(0) = (1, 0) needs a word starting on gap 1 "
                          f"and ending with b, not {word!r}")
     Mq = system_matrix_flint(system, word)
-    M = sp.Matrix(system.gaps, system.gaps, lambda i, j: factor_flint(Mq[i][j]))     # = system_matrix
     cp = charpoly_flint(Mq)                                   # = sp.expand(M.charpoly(λ).as_expr())
     Mf = [[flint_poly_to_frac(e) for e in row] for row in Mq]
     first, second = eigenvector2(Mf)
@@ -111,7 +110,8 @@ def candidate_in(system_name: str, word: str) -> Candidate:
     if not (last[1][0].is_zero() and last[1][1].is_zero()):
         raise ArithmeticError("p_2 does not vanish after the last b")
     others = [tuple(frac_to_field(e) for e in second)] if first[1] is not None else []
-    return Candidate(word, M, cp, Spectrum(cp), tuple(frac_to_field(e) for e in q0), others, None, steps_of(run))
+    return Candidate(word, Mq, cp, Spectrum(cp, charpoly_ring(Mq)), tuple(frac_to_field(e) for e in q0), others, None,
+                     steps_of(run))
 
 
 caches.register(candidate_in.cache_clear)

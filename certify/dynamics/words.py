@@ -15,7 +15,7 @@ are handed out as the equal elements of SymPy's field K (``FIELD``).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import flint
 import sympy as sp
@@ -24,7 +24,7 @@ from certify import caches
 from certify.algebra.balls import GUARD, precision
 from certify.algebra.branches import Condition, Spectrum, ball_value
 from .model import (INDEX, characteristic_polynomial, charpoly_flint, check_word, collide, collision_matrix,
-                    factor_flint, word_matrix, word_matrix_flint)
+                    charpoly_ring, factor_flint, word_matrix, word_matrix_flint)
 from certify.algebra.poly import (FIELD, LR_LAMBDA, LR_R, LRCTX, LRQCTX, Frac, field_to_frac, flint_poly_to_frac,
                                   frac_to_field, lr_to_ring, ring_to_lrq, to_field, to_ring)
 
@@ -171,7 +171,7 @@ class Candidate:
     where those degenerate), the symbolic run and the position map."""
 
     word: str
-    M: sp.Matrix
+    Mq: list                           # M_w as python-flint polynomials in r
     cp: sp.Expr
     spectrum: Spectrum
     q0: tuple
@@ -179,6 +179,12 @@ class Candidate:
     abcd: tuple
     steps: list
     abcd_ring: tuple | None = None     # a, b, c, d as elements of the engine's ring (the same polynomials)
+
+    @cached_property
+    def M(self) -> sp.Matrix:
+        """M_w with its entries factored, as SymPy expressions (for readers; = word_matrix)."""
+        n = len(self.Mq)
+        return sp.Matrix(n, n, lambda i, j: factor_flint(self.Mq[i][j]))
 
     def balls(self, r0, branch: int, sigma: int, prec: int):
         """(p(0), q(0), r) at a rational r0 on a real branch, x = x₊ (sigma = 1) or
@@ -207,22 +213,22 @@ def candidate(word: str) -> Candidate:
     if word[0] != "a" or word[-1] != "b":
         raise ValueError(f"the normalisation q(0) = (-1, u, v), p(0) = (1, 0, x) needs a word a...b, not {word!r}")
     Mq = word_matrix_flint(word)
-    M = sp.Matrix(3, 3, lambda i, j: factor_flint(Mq[i][j]))          # = word_matrix(word)
     cp = charpoly_flint(Mq)                                           # = characteristic_polynomial(M)
+    ring_cp = charpoly_ring(Mq)                                       # the same, in the engine's ring
     Mf = [[flint_poly_to_frac(e) for e in row] for row in Mq]
     q0 = eigenvector_lr(Mf)
     run = run_lr(word, q0)
     last = run[-1][1]
     if not (last[1][0].is_zero() and last[1][1].is_zero()):
         raise ArithmeticError("p_2 does not vanish after the last b")
-    C = ring_to_lrq(to_ring(cp))
+    C = ring_to_lrq(ring_cp)
     abcd_lr = position_map_lr(last, C)
     check_position_map_lr(last, abcd_lr, C)
     abcd_ring = tuple(lr_to_ring(e) for e in abcd_lr)
     abcd = tuple(e.as_expr() for e in abcd_ring)
     q0_other = [tuple(frac_to_field(e) for e in eigenvector_lr(Mf, rows)) for rows in ((0, 2), (1, 2))]
     q0 = tuple(frac_to_field(e) for e in q0)
-    return Candidate(word, M, cp, Spectrum(cp), q0, q0_other, abcd, steps_of(run), abcd_ring)
+    return Candidate(word, Mq, cp, Spectrum(cp, ring_cp), q0, q0_other, abcd, steps_of(run), abcd_ring)
 
 
 

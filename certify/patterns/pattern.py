@@ -103,12 +103,12 @@ def end_data(a: Algebraic) -> dict:
     """An end point: exact value (rational) or minimal polynomial, an isolating interval
     with decimal ends, and 12 certified significant digits."""
     if a.is_rational:
-        return {"exact": str(a.lo), "minimal_polynomial": show(_poly(a)),
+        return {"exact": str(a.lo), "minimal_polynomial": show(a.minimal_polynomial()),
                 "interval": [str(a.lo), str(a.lo)], "digits": a.digits(12)}
     text = a.describe()            # "the root of P in ]lo, hi[ ≈ digits"
     inner = text[text.index("]") + 1:text.index("[")]
     lo, hi = (t.strip() for t in inner.split(","))
-    return {"exact": None, "minimal_polynomial": show(_poly(a)), "interval": [lo, hi], "digits": a.digits(12)}
+    return {"exact": None, "minimal_polynomial": show(a.minimal_polynomial()), "interval": [lo, hi], "digits": a.digits(12)}
 
 
 def _poly(a: Algebraic):
