@@ -194,3 +194,18 @@ def test_cli_smoke(tmp_path):
                         capture_output=True, text=True, timeout=300)
     assert md.returncode == 0 and md.stdout.startswith("# Pattern ab")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_engine_certifies_what_the_committed_digests_record():
+    """`certify pattern WORD --json` for every census word up to 7 collisions hashes to the
+    digest the engine of commit cb9d573 wrote (reports/pattern-json-digests.txt, all words
+    up to 12: `python benchmarks/same_results.py check`): a faster engine, the same sets."""
+    import hashlib
+    from pathlib import Path
+    from certify.patterns import census
+    path = Path(__file__).resolve().parent.parent / "reports" / "pattern-json-digests.txt"
+    recorded = dict(line.split() for line in path.read_text(encoding="utf-8").splitlines() if not line.startswith("#"))
+    words = census.words(7)
+    assert words and all(w in recorded for w in words)
+    for w in words:
+        assert hashlib.sha256(analyse(w).json_text().encode("utf-8")).hexdigest() == recorded[w], w

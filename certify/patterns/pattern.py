@@ -71,15 +71,16 @@ def dominance_requirements(cp) -> list[Requirement]:
 
     All strict, so a double eigenvalue λ = μ (Q(λ) = 0) is not dominant.  These are
     polynomials in (r, λ), certified on the branch like any other condition."""
-    P = sp.Poly(sp.expand(cp), lam)
-    n = P.degree()
-    d = sp.expand(P.diff(lam).as_expr())
-    minus = sp.expand(P.as_expr().subs(lam, -lam))
+    C = to_ring(cp)                                   # in the engine's ring: no SymPy expression
+    L = RING.gens[0]
+    n = C.degree(L)
+    d = C.diff(L)
+    minus = RING.from_dict({(e[0],) + e[1:]: (-c if e[0] % 2 else c) for e, c in C.terms()})   # cp(-λ)
     if n == 2:
         out = [("cp'(λ)", d), ("cp(-λ)", minus)]
     elif n == 3:
-        det = -P.eval(0)
-        out = [("cp'(λ)", d), ("-cp(-λ)", -minus), ("λ³ - det M", sp.expand(lam ** 3 - det))]
+        det = -C.coeff_wrt(L, 0)
+        out = [("cp'(λ)", d), ("-cp(-λ)", -minus), ("λ³ - det M", L ** 3 - det)]
     else:
         raise ValueError(f"dominance is implemented for 2x2 and 3x3 matrices, not degree {n}")
     return [Requirement(f"dominance: {name}", (to_field(e), K.zero), 1) for name, e in out]
@@ -307,7 +308,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
         before = _copy(an.regions)
     regions["feasible"] = _copy(an.regions)
-    stab = dominance_requirements(cp) + (stability_conditions(cand.abcd_ring or cand.abcd) if cand.abcd is not None else [])
+    stab = dominance_requirements(cand.spectrum.ring_cp) + (stability_conditions(cand.abcd_ring or cand.abcd) if cand.abcd is not None else [])
     conditions["stable"] = [_cond(q) for q in stab]
     for q in stab:
         an.impose(q)
