@@ -38,7 +38,7 @@ import flint
 from certify.algebra import simplest_between
 from certify.dynamics import candidate, simulate
 from certify.patterns import BRANCH_NAMES, census
-from certify.run import Check, certificate, conclude
+from certify.run import REFUTED_REMARK, Check, certificate, conclude
 
 PRINTED_T28 = dict(pattern="abcab")
 LENGTH = 7             # our bound: a census of seconds inside `certify all`; `certify census` goes further
@@ -143,7 +143,8 @@ def abcab_census(pattern):
             + "; ".join(f"{r['word']} = {' '.join(r['blocks'])} on {_sets(r, 'feasible')}" for r in feasible)
             + f" (certified), the exact dynamics from each datum repeating the word for {PERIODS} periods",
             all(ok for ok, _ in replays), [text for _, text in replays], corrects=printed))
-    return conclude(checks + [printed], corrected, evidence=ev,
+    return conclude(checks + [printed], corrected, evidence=ev, kind=REFUTED_REMARK,
+                    misprint="l. 515, Remark 3.3: patterns containing abcab 'do not seem to have feasible initial data'",
                     note=f"An empirical remark, tested on every pattern of at most {LENGTH} collisions containing "
                          f"{pattern} and on the shortest counterexamples of the census (reports/CENSUS.md: "
                          "`python -m certify census --max-length L`).")

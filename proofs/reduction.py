@@ -31,7 +31,7 @@ from certify.algebra import precision, r, show, statements
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS
-from certify.run import Check, certificate, conclude, quantity
+from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude, quantity
 from proofs import reduction_cones as RC
 from proofs import reduction_identities as I
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
@@ -386,7 +386,7 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
                            lemmas and a_c.following == "c" and on_fixed.holds and refuted,
                            on_fixed.evidence + [witness], corrects=printed[2]), printed[3]]
     evidence = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
-    return conclude(printed, corrected, evidence=evidence)
+    return conclude(printed, corrected, evidence=evidence, kind=MISPRINT, misprint=I.E_Y_FOR_E_Z)
 
 
 def tally_runs(section4_data, orientation, to_b, to_c) -> str:
@@ -589,7 +589,9 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
                            f"orbit words parse as printed, {len(leading_b)} start with b, e.g. "
                            f"`{(leading_b or [''])[0][:24]}…`, and all parse without that b: "
                            f"{all(parses(w[1:] if w.startswith('b') else w, blks) for w in scan)}.")]
-    return conclude(printed, corrected, evidence=evidence)
+    return conclude(printed, corrected, evidence=evidence, kind=FALSE_STATEMENT,
+                    misprint="l. 1049-1051, Remark 4.6: 'every pattern is a concatenation of ab, cb, acb, cab' is "
+                             "false for a pattern that starts with b (Corollary 4.5 holds)")
 
 
 # ---------------------------------------------------------------- S11

@@ -15,9 +15,12 @@ import sympy as sp
 from certify.algebra import trig as T
 from certify.algebra import lam, statements
 from certify.dynamics import INDEX, LETTERS, collision_matrix
-from certify.run import Check, certificate, conclude
+from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude
 
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
+
+# One misprint, false in S8.1 (the formula) and S8.2 (the reduction it gives): counted once.
+E_Y_FOR_E_Z = "l. 980: e_y printed for e_z in the trilinear formula for ũ(1) after a contact a and a collision c"
 
 cθ, cφ, sθ, sφ = T.cθ, T.cφ, T.sθ, T.sφ  # cos θ, cos φ, sin θ, sin φ
 
@@ -211,7 +214,8 @@ def links(name: str, members: list, lines: str) -> list[Check]:
             for k in range(len(members) - 1)]
 
 
-def concluded(printed: list[Check], corrected: list[Check] | None = None, note: str = ""):
+def concluded(printed: list[Check], corrected: list[Check] | None = None, note: str = "", kind: str = "",
+              misprint: str = ""):
     """:func:`conclude`, where the corrected computation is the printed one with the stated
     corrections applied, check for check: each failing printed check is corrected by the
     check in the same place (unless a correction already names it)."""
@@ -221,7 +225,7 @@ def concluded(printed: list[Check], corrected: list[Check] | None = None, note: 
         for wrong, fix in zip(printed, corrected):
             if not wrong.holds and id(wrong) not in named and fix.corrects is None and fix is not wrong:
                 fix.corrects = wrong
-    return conclude(printed, corrected, note=note)
+    return conclude(printed, corrected, note=note, kind=kind, misprint=misprint)
 
 
 def result_check(statement: str, res: T.Result) -> Check:
@@ -413,6 +417,7 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
     as_printed = order_check("l. 628", order)
     corrected_order = order_check("l. 628 corrected", statements.corrected(order, *ORDER_CORRECTION))
     return concluded(common + [as_printed] + conclusion + bc, common + [corrected_order] + conclusion + bc,
+                     kind=MISPRINT, misprint="l. 628: 'smaller' printed for 'larger' (t_c and t_b when cos φ > 0)",
                     note="With 'smaller', c would come first and the conclusion 'the first collision is b' would not "
                          "follow; with 'larger' the case analysis proves it.")
 
@@ -474,7 +479,7 @@ def reduction_conclusion(chains: dict, p0_text: str, q_text: str, letter: str) -
                          "(p_λ(1) times the denominator of t_λ)", T.parallel(pl.cross(K * q), p1.cross(K * q0)))]
 
 
-def certify_case(chains, p0, q, letter, lines, corrections=None, note=""):
+def certify_case(chains, p0, q, letter, lines, corrections=None, note="", misprint=""):
     """Printed checks; corrected checks = the same with the stated corrections (old text →
     new text in one member of a chain) applied.  A check that reads the same words in
     both names the member it was computed with, so that the errata show the change; a
@@ -497,7 +502,7 @@ def certify_case(chains, p0, q, letter, lines, corrections=None, note=""):
             for index, member, new_member in changed:
                 wrong.statement += f", with member {index + 1} as printed, `{member}`"
                 fix.statement += f", with member {index + 1} corrected, `{new_member}`"
-    return concluded(printed, corrected, note=note)
+    return concluded(printed, corrected, note=note, kind=MISPRINT, misprint=misprint)
 
 
 @certificate("S3", "l. 632-684", "Case ab: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(sinφ cosθ, 0, cosφ) "
@@ -514,7 +519,8 @@ def case_ab(p0, q, **chains):
 def case_ac(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations; l. 734 (left) corrected."""
     return certify_case(chains, p0, q, "c", dict(t="708-712", p="716-726", x="734-744", e="748", d="752-761"),
-                        AC_CORRECTION, note="l. 734 prints (-sinφ sinθ, cosθ, 0) ∧ (C q(0)) where p(1) ∝ "
+                        AC_CORRECTION, misprint="l. 734: cos θ printed for cos φ in p(1)",
+                        note="l. 734 prints (-sinφ sinθ, cosθ, 0) ∧ (C q(0)) where p(1) ∝ "
                         "(-sinφ sinθ, cosφ, 0) (l. 722-726, and l. 735): a misprint; the rest of the "
                         "computation uses cos φ and the conclusion (C e_r)·[p(1) ∧ q(1)] = 0 holds.")
 
@@ -660,7 +666,7 @@ def vectorial_version(p0, q0, u0, ey_dot_u0, orientation, u0_wedge_ey, u0_wedge_
     corrected_c = (trilinear(fixed_c, "C", u0, p1c, q0, neg, axes["c"], "2") if fixed_c else
                    Check(f"the stated correction `{TRILINEAR_C_CORRECTION[0]}` → `{TRILINEAR_C_CORRECTION[1]}` "
                          f"applies to the printed `{trilinear_c}`", False))
-    return concluded(checks + [printed_c], checks + [corrected_c],
+    return concluded(checks + [printed_c], checks + [corrected_c], kind=MISPRINT, misprint=E_Y_FOR_E_Z,
                     note="Contacts: the paper writes k = 1, 2, 3 for the contacts a, b, c in the orientation convention "
                          "(l. 949), where k also indexes the collisions.  For a collision c, p(1) ∝ u(0) ∧ e_z "
                          "(l. 962), so the factor [u(0) ∧ e_y] of l. 980 must be [u(0) ∧ e_z].")
@@ -761,7 +767,9 @@ def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read
         frame_lemma("a", CONTACT_P0["a"], CONTACT_Q0["a"]),
         *cac, then_b[1],
         Check("no cac: after c then a, cos φ' > 0 and the next collision is b", all(cac) and then_b[1].holds)]
-    return concluded(algebra + [vector_claim, concl], corrected,
+    return concluded(algebra + [vector_claim, concl], corrected, kind=FALSE_STATEMENT,
+                     misprint="l. 1014-1016: q(k+1) projected on p(k)^⊥, not p(k+1)^⊥ (a step of the proof of "
+                              "Proposition 4.4; the proposition holds)",
                     note="The printed proof projects C q(k) on p(k)^⊥ instead of p(k+1)^⊥; the proposition holds, "
                          "by the sign of (p(k+1) ∧ C q(k))_z read on any representative of the velocity.  The cac case "
                          "is done directly (the paper: 'by symmetry').")
