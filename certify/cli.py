@@ -57,7 +57,7 @@ from pathlib import Path
 
 from certify.dynamics import particles
 from certify.errors import UsageError
-from certify.run import ERRATUM, FAIL, figures, progress, report, runner
+from certify.run import ERRATUM, FAIL, OBSERVED, figures, progress, report, runner
 from certify.run.files import ensure_writable, read_text_or_none
 
 DEFAULT_OUT = Path("reports")
@@ -120,12 +120,19 @@ def warn_missing_figures(results, out: Path) -> None:
 
 
 def finish(results) -> int:
-    """Print the summary line and the errata ids (stdout), the failing ids (stderr);
-    return the exit code."""
+    """Print the summary line, the errata by distinct error of the paper and the
+    observations that disagree with it, each with its one-line reason (stdout); the
+    failing ids (stderr); return the exit code."""
     print(report.summary_line(results))
-    errata = [cert.id for cert, outcome in results if outcome.status == ERRATUM]
-    if errata:
-        print("errata (the paper is wrong, a correction is certified): " + ", ".join(errata))
+    if report.errata_line(results):
+        print("errata (the paper is wrong, a correction is certified): " + report.errata_line(results))
+        for key, kind, members in report.misprints(results):
+            print(f"  {', '.join(cert.id for cert, _ in members)}: {kind}: {' '.join(key.split())}")
+    against = report.disagreements(results)
+    if against:
+        print("disagree with the paper (numerical observations):")
+        for cert, outcome in against:
+            print(f"  {cert.id}: {' '.join(outcome.reason.split())}")
     if failing(results):
         say("FAIL: " + ", ".join(failing(results)))
     return exit_code(results)
@@ -177,7 +184,10 @@ def _under(results) -> dict[str, list[str]]:
                 if not runner.holds(check):
                     first = str(check.evidence[0]).strip().split("\n")[0] if check.evidence else ""
                     lines.append("✗ " + " ".join(check.statement.split()) + (f": {first}" if first else ""))
+        elif outcome.status == OBSERVED and outcome.agrees is False:
+            lines.append("≠ does not agree with the paper: " + " ".join(outcome.reason.split()))
         elif outcome.status == ERRATUM:
+            lines.append(f"{outcome.kind}: " + " ".join(outcome.misprint.split()))
             for printed, fixes in report.erratum_pairs(outcome):
                 lines.append("✗ as printed: " + " ".join(printed.statement.split()))
                 for fix in fixes:
@@ -195,8 +205,9 @@ def print_results(results) -> None:
     width = shutil.get_terminal_size().columns if sys.stdout.isatty() else None
     w = max((len(cert.id) for cert, _ in results), default=2)
     under = _under(results)
+    sw = max((len(report.status_label(outcome)) for _, outcome in results), default=8)
     for cert, outcome in results:
-        head = f"{cert.id:<{w}}  {outcome.status:<8}  "
+        head = f"{cert.id:<{w}}  {report.status_label(outcome):<{sw}}  "
         print(head + _clip(" ".join(cert.statement.split()), width and width - len(head)))
         for line in under[cert.id]:
             print(" " * len(head) + _clip(line, width and width - len(head)))
