@@ -25,7 +25,8 @@
                                 simulate the four particles exactly, print the
                                 collisions and their times (certify.dynamics.particles)
     figures [--resolution preview|paper] [--only FIG ...] [--n4 NMAX] [--out DIR]
-                                Figures 5.1-5.8 into DIR/figures; paper: also
+                                Figures 6-11 of the paper (our ids 5.1-5.8) into
+                                DIR/figures; paper: also
                                 DIR/numerics-paper.json; --n4: DIR/numerics-n4.json
     simulate (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N]
              [--keep N] [--engine float64|mp|ball] [--dps D] [--out FILE.npz]
@@ -401,7 +402,7 @@ def add_numerics(commands) -> None:
     which = p.add_mutually_exclusive_group(required=True)
     which.add_argument("--r", nargs="+", type=number, metavar="R", help="restitution coefficients in ]0,1[")
     which.add_argument("--r-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
-                       help="COUNT values from LO to HI, ends included (paper Figure 5.1: 0.072 0.999 3709)")
+                       help="COUNT values from LO to HI, ends included (paper Figure 6: 0.072 0.999 3709)")
     p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
                    help="initial data per r: the first N of the paper's grid, 2 θ0 × 4 φ0 (default: 8)")
     p.add_argument("--collisions", type=count, default=10_000, metavar="N", help="collisions per orbit (default: 10^4)")
@@ -589,8 +590,9 @@ def cmd_figures(args) -> int:
 
 def add_figures(commands) -> None:
     """The parser of ``certify figures``."""
-    p = commands.add_parser("figures", help="draw Figures 5.1-5.8 (Section 5)",
-                            description="Figures 5.1-5.8 of Section 5: the last kept b-angles φ of the paper's 8 "
+    p = commands.add_parser("figures", help="draw Figures 6-11 of the paper, Section 5 (ids 5.1-5.8)",
+                            description="Figures 6-11 of the paper (Section 5; our ids 5.1-5.8: 5.1 = Figure 6, 5.2 = 7, 5.3a/b = 8a/b, "
+                            "5.4 = 9, 5.5 = 10, 5.6-5.8 = 11a-c): the last kept b-angles φ of the paper's 8 "
                             "orbits against r (float64), breaks as red dots at (r, π/2), the CDKK thresholds as red "
                             "lines.  preview: the cheap version `certify all` draws; paper: the captions' grids, "
                             "10^4 collisions, 500 kept (about a minute on two cores).")

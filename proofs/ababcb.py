@@ -442,7 +442,7 @@ def keeps_sign_at(T, branch, point) -> bool:
              "r2 on the upper branch.", needs=["spectrum"],
              printed=dict(amd=AMD_PRINTED, r1=R1_PRINTED, P1_text=P1_PRINTED, at_r1="middle", at_r2="upper"))
 def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
-    """The sign table of a-d over ]0,1[ (Figure 3.3)."""
+    """The sign table of a-d over ]0,1[ (Figure 3, fig: sign changes a-d)."""
     from certify.run import sign_chart
     rr1, rr2 = r1_of(r1), unique_root(P1_text)
     T = table(spectrum, "a-d", parse(amd), 0, 1)
@@ -462,7 +462,7 @@ def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
              needs=["cp", "spectrum"], printed=dict(b=B_PRINTED, quartic=QUARTIC_B_PRINTED, r1=R1_PRINTED))
 def sign_of_b(cp, spectrum, b, quartic, r1):
     """Elimination both ways, the quartic's real roots counted both ways, and the
-    sign table of b (Figure 3.4)."""
+    sign table of b (Figure 4, fig: sign change b)."""
     from certify.run import sign_chart
     rr1 = r1_of(r1)
     Q4 = to_fmpz_poly(parse(quartic))
@@ -640,7 +640,7 @@ def lower_branch_fixed_points(spectrum, a, b, c, d, r1):
 
 
 # ---------------------------------------------------------------- T20-T22: feasibility
-@certificate("T20", "l. 446-448", "u = 0 forces (r^2-10r+1)(r^5-15r^4+66r^3-86r^2-35r+5) = 0; the quintic has exactly "
+@certificate("T20", "l. 446-450", "u = 0 forces (r^2-10r+1)(r^5-15r^4+66r^3-86r^2-35r+5) = 0; the quintic has exactly "
              "one root in ]0,1[, ≈ 0.11376; u > 0 on the upper and lower branches for r < 5-2√6.",
              needs=["cp", "spectrum"], printed=dict(U=U_PRINTED, quintic=P3_PRINTED, digits="0.11376", r1=R1_PRINTED,
                                                     position="larger than 5-2√6"))

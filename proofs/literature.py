@@ -1,6 +1,6 @@
 """Facts from the literature used by the paper, certified with the same engine.
 
-T26 (remark after Theorem 3.1, l. 323-325): "The critical threshold of r, namely
+T26 (Remark 3.2, l. 323-325): "The critical threshold of r, namely
 r_crit,ababcb = 5-2√6, happens to be also the critical threshold for a different
 periodic pattern, namely (ab)^3(cb)^3 (see [CDKK, Table 1])."
 
@@ -208,7 +208,7 @@ def _threshold_certificate(word, threshold, digits, what):
 PRINTED_L1 = dict(word="ab", threshold="7-4√3", digits="0.07180")
 
 
-@certificate("L1", "l. 130, 1130",
+@certificate("L1", "l. 131, 1103, 1129",
              "Three particles: no collapse (no self-similar datum of ab) for r > 7-4√3; below, stable collapse.",
              printed=PRINTED_L1)
 def three_particles(word, threshold, digits):
@@ -345,7 +345,7 @@ PRINTED_L5 = dict(n2="[0.12754, 0.17157]", n3="[0.09452, 0.10102]", limit="7-4�
                   order="disjoint, accumulating on 7-4√3 from above")
 
 
-@certificate("L5", "l. 1124-1126, 1216",
+@certificate("L5", "l. 1123-1125, 1215",
              "Stability windows of (ab)^2(cb)^2 ≈ [0.12754, 0.17157] and (ab)^3(cb)^3 ≈ [0.09452, 0.10102]; the "
              "windows are disjoint and accumulate on 7-4√3 from above.",
              needs=["ab_cb_patterns"], printed=PRINTED_L5)
@@ -381,7 +381,7 @@ def windows(ab_cb_patterns, n2, n3, limit, order):
 PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant")
 
 
-@certificate("L6", "l. 1216",
+@certificate("L6", "l. 1215",
              "Conjecture (CDKK §7): the upper threshold of (ab)^n(cb)^n is where q_2(0) = 0 for the dominant "
              "eigenvector (tested for n = 2..6).",
              needs=["ab_cb_patterns"], printed=PRINTED_L6)

@@ -54,7 +54,7 @@ def paper_note(key: str, render) -> str:
 def figure_links(*figs: str) -> str:
     """Links to the committed paper-resolution PNGs."""
     return " Figures at the paper's resolution: " + ", ".join(
-        f"[{f}](figures/fig{f}-paper.png)" for f in figs) + "."
+        f"[{F.cite(f)}](figures/fig{f}-paper.png)" for f in figs) + "."
 
 
 # --------------------------------------------------------------------------
@@ -106,7 +106,7 @@ def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
 
 
 # --------------------------------------------------------------------------
-# N2: Figure 5.1
+# N2: Figure 6 (fig:Simul_1), our id 5.1
 
 PRINTED_N2 = dict(lo="0.072", hi="0.999", step="2.5\\times 10^{-4}", count="3709",
                   windows_below="0.17", chaos_until="0.9", discrete_near="1", segment_at="(0.08,\\pi/2)",
@@ -116,7 +116,7 @@ SEGMENT = 0.005  # "a short horizontal segment ... around (0.08, π/2)" (l. 1089
 
 
 @certificate("N2", "l. 1071-1094",
-             "Figure 5.1, 0.072 ≤ r ≤ 0.999, Δr = 2.5e-4 (3709 values): windows of stability for r ≤ 0.17, "
+             "Figure 6 (fig:Simul_1), 0.072 ≤ r ≤ 0.999, Δr = 2.5e-4 (3709 values): windows of stability for r ≤ 0.17, "
              "apparent chaos up to r ≈ 0.9, discrete ω-limit sets near r = 1, a short segment of breaks around "
              "(0.08, π/2), the breaks accumulated close to r ≃ 0.072.",
              needs=("section5_preview",), printed=PRINTED_N2)
@@ -183,14 +183,14 @@ def breaks_text(b: dict) -> str:
 
 
 # --------------------------------------------------------------------------
-# N3: Figure 5.2, accumulation points per window
+# N3: Figure 7 (fig:Simul_2), our id 5.2, accumulation points per window
 
 PRINTED_N3 = dict(lo="0.075", hi="0.192", step="2.5\\times 10^{-5}", count="4681",
                   points=("4", "6", "8", "10"), windows=("(ab)^2(cb)^2", "(ab)^3(cb)^3", "third", "fourth"))
 
 
 @certificate("N3", "l. 1096-1128",
-             "Figure 5.2, 0.075 ≤ r ≤ 0.192, Δr = 2.5e-5 (4681 values): the orbits accumulate around 4 points in "
+             "Figure 7 (fig:Simul_2), 0.075 ≤ r ≤ 0.192, Δr = 2.5e-5 (4681 values): the orbits accumulate around 4 points in "
              "the (ab)^2(cb)^2 window, 6 in the (ab)^3(cb)^3 window, 8 and 10 in the next two.",
              needs=("section5_preview",), printed=PRINTED_N3)
 def figure_5_2(section5_preview, lo, hi, step, count, points, windows):
@@ -299,7 +299,7 @@ PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="
 
 @certificate("N5", "l. 1148-1160",
              "Transitory region 0.172 ≤ r ≤ 0.176: the orbits accumulate on finitely many points for r fixed; "
-             "Figure 5.4 at Δr = 1e-6 (5001 values, 0.171 ≤ r ≤ 0.176).", needs=("section5_preview",),
+             "Figure 9 (fig:Simul_3) at Δr = 1e-6 (5001 values, 0.171 ≤ r ≤ 0.176).", needs=("section5_preview",),
              printed=PRINTED_N5)
 def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count):
     """The kind of ω-limit of the 8 orbits at 21 values of r in the printed region and 9 just
@@ -335,10 +335,10 @@ PRINTED_N6 = dict(stripes=("0.1845", "0.1896"), special="0.184525", lo="0.1845",
 
 @certificate("N6", "l. 1162-1208",
              "Thin stripes near r ≈ 0.1845 and r ≈ 0.1896; at r ≈ 0.184525 all orbits have discrete ω-limit sets; "
-             "Figures 5.5-5.8 at Δr = 1e-7 (1001 values, 0.1845 ≤ r ≤ 0.1846).", needs=("section5_preview",),
+             "Figure 10 (fig:Simul_2_zoom_3); Figures 11a-11c (fig:Simul_4, fig:Simul_5, fig:Simul_6) at Δr = 1e-7 (1001 values, 0.1845 ≤ r ≤ 0.1846).", needs=("section5_preview",),
              printed=PRINTED_N6)
 def stripes(section5_preview, stripes, special, lo, hi, step, count):
-    """Probes at Δr = 2.5e-5 (the step of Figure 5.2) around each printed stripe: the coverage of
+    """Probes at Δr = 2.5e-5 (the step of Figure 7) around each printed stripe: the coverage of
     [0, π] by the 8 orbits drops there; a probe at Δr = 1e-7 around the printed special value:
     the r where the widest cluster of any orbit is narrowest, and whether every orbit is discrete."""
     lo_, hi_, step_, count_, r_star = (number(x.replace("{", "").replace("}", ""))
@@ -367,8 +367,8 @@ def stripes(section5_preview, stripes, special, lo, hi, step, count):
                          f"{[F.omega(fine.phi[k, m]).clusters for m in range(fine.phi.shape[1])]}; at r ± 2e-6: "
                          f"{widest[0]:.1e}, {widest[-1]:.1e} rad (41 values of r at Δr = 1e-7, 10^4 collisions)"]))
     figs = [section5_figure(section5_preview[f]) for f in ("5.5", "5.6", "5.7", "5.8")]
-    note = paper_note("n6", lambda s: f"the four lowest coverages of [0, π] in Figure 5.5 at r = {s['stripes']} "
-                      f"({s['coverages']}); in Figure 5.6 the "
+    note = paper_note("n6", lambda s: f"the four lowest coverages of [0, π] in Figure 10 at r = {s['stripes']} "
+                      f"({s['coverages']}); in Figure 11a the "
                       f"widest cluster is narrowest at r = {s['special_r']:.7f} ({s['special_width']:.1e} rad).") \
         + figure_links("5.5", "5.6", "5.7", "5.8")
     return observe(checks, figures=figs, note=note)
@@ -415,10 +415,10 @@ def quasi_periodic(section5_preview, grows_below, not_discrete_at):
         Check(f"each orbit's ω-limit looks like a finite union of intervals: its kept points form at most "
               f"{F.MAX_INTERVALS} intervals at a resolution of {coarse} rad (in the thin stripe and in the region "
               "of apparent chaos)", bool(pieces) and max(pieces) <= F.MAX_INTERVALS,
-              [f"intervals per orbit over {len(pieces)} orbits (preview of Figure 5.6 and the 8 values of r above): "
+              [f"intervals per orbit over {len(pieces)} orbits (preview of Figure 11a and the 8 values of r above): "
                + ", ".join(f"{c}: {pieces.count(c)}" for c in sorted(set(pieces)))]),
     ]
     note = ("Evidence, not a proof of quasi-periodicity: counts and widths of clusters of kept angles (no rotation "
-            "numbers). " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 5.6: "
-                                        f"{s['stripe_intervals']}; in Figure 5.1 for 0.2 ≤ r ≤ 0.9: {s['chaos_intervals']}."))
+            "numbers). " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 11a: "
+                                        f"{s['stripe_intervals']}; in Figure 6 for 0.2 ≤ r ≤ 0.9: {s['chaos_intervals']}."))
     return observe(checks, note=note)

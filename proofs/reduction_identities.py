@@ -178,7 +178,7 @@ TRILINEAR_C = "cross(cross(u0, ey), C*cross(u0, cross(ex, u0)))"                
 TRILINEAR_C_CORRECTION = ("(u0, ey)", "(u0, ez)")     # stated: for a collision c, p(1) ∝ u(0) ∧ e_z (l. 962)
 TRILINEAR_C_CORRECTED = statements.corrected(TRILINEAR_C, *TRILINEAR_C_CORRECTION)
 
-# ---------------------------------------------------------------- as printed: Proposition 4.2 (l. 1005-1034)
+# ---------------------------------------------------------------- as printed: Proposition 4.4 (l. 1005-1034)
 P_NEXT_AC = "(sin(θ)*sin(φ), -cos(φ), 0)"                                       # l. 1012
 Q_NEXT_AC = "Cq - dot(Cq, pk)*pk"                                               # l. 1016
 C_TIMES_QK = """
@@ -711,7 +711,7 @@ def next_angle_sign(contact: str, letter: str, cos_phi: int, axis_index: int, fo
 
 
 @certificate("S9.1", "l. 997-1035",
-             "Proposition 4.2: no aca and no cac, by the printed argument: after a then c, q(k+1) ∝ Cq(k) - "
+             "Proposition 4.4: no aca and no cac, by the printed argument: after a then c, q(k+1) ∝ Cq(k) - "
              "(Cq(k)·p(k))p(k) as printed, whose first component sin φ > 0 gives cos φ' < 0, so the next collision is b.",
              printed=dict(p_k=CONTACT_P0["a"], q_k=CONTACT_Q0["a"], p_next=P_NEXT_AC, q_next=Q_NEXT_AC,
                           C_times_qk=C_TIMES_QK, projection=PROJECTION_CHAIN, form_c=FORM_C,

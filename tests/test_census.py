@@ -239,3 +239,26 @@ def test_t28_mutation_another_pattern_is_not_passed():
 
 def test_t28_mutation_an_unreadable_pattern_fails():
     assert run_certificate(CERTIFICATES["T28"], overrides={"pattern": "abxab"}).status == FAIL
+
+
+def test_t28_quotes_the_remark_word_for_word_and_is_a_refuted_remark(t28):
+    from tests.paper import plain_line
+    assert T28.QUOTE_T28 in plain_line(515)
+    assert T28.QUOTE_T28 in CERTIFICATES["T28"].statement
+    assert t28.kind == "refuted remark" and "Remark 3.3" in t28.misprint
+
+
+def test_t28_counts_the_counterexamples_under_each_reading():
+    """abacbacbcb contains abcab only in its mirror; ababcb (Theorem 3.1) contains it only
+    as letters in order, not consecutive: under that reading the theorem's own pattern
+    would refute the remark."""
+    counts = {name.split(" ")[0]: (a, b) for name, a, b in T28.reading_counts(["abacbacbcb"], "abcab")}
+    assert counts == {"consecutive": (1, 1), "letters": (1, 2)}
+    theorem = {name.split(" ")[0]: (a, b) for name, a, b in T28.reading_counts(["ababcb"], "abcab")}
+    assert theorem == {"consecutive": (0, 0), "letters": (1, 1)}
+    assert T28.orientations("abcb") == ["abcb"] and T28.orientations("abacb") == ["abacb", "cbcab"]
+
+
+def test_t28_shows_the_readings_table(t28):
+    table = [e for e in t28.printed[-1].evidence + [x for c in t28.printed for x in c.evidence] if "Reading of" in e]
+    assert table and "| consecutive letters of the periodic word (cyclically) |" in table[0]

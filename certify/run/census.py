@@ -139,7 +139,7 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         "Written by `python -m certify census --max-length "
         f"{L}` (certify/patterns/census.py, certify/run/census.py); do not edit by hand.",
         "",
-        "Every primitive period made of the blocks ab, cb, acb, cab (Corollary 4.3, l. 1037-1051, with the "
+        "Every primitive period made of the blocks ab, cb, acb, cab (Corollary 4.5, l. 1037-1051, with the "
         "correction certified in S10), of at most "
         f"{L} collisions, one per class of rotations and the mirror a<->c (the pattern module's normal form). "
         "For each, the r-sets in ]0, 1[ where its self-similar candidate realises it (feasible, per eigenvalue "

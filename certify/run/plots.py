@@ -37,7 +37,7 @@ def _cell_indices(table, rs: np.ndarray) -> list[int | None]:
 
 
 def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
-    """Figures 3.1-3.2: the real spectrum of M on ]0,1[ and its zoom 0<r<0.13, 0<λ<0.05.
+    """Figures 1-2 of the paper (fig:spectrum, fig:spectrum zoom): the real spectrum of M on ]0,1[ and its zoom 0<r<0.13, 0<λ<0.05.
     Branches are taken from the certified table: a point is drawn on branch k only
     where the table proves k+1 real eigenvalues."""
     if not figures.enabled():
@@ -69,7 +69,7 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
 
 
 def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=None, marks=None) -> str:
-    """Figures 3.3-3.4: each branch coloured by the certified sign of a condition."""
+    """Figures 3-4 of the paper (fig: sign changes a-d, fig: sign change b): each branch coloured by the certified sign of a condition."""
     if not figures.enabled():
         return name
     import matplotlib.pyplot as plt
@@ -157,7 +157,7 @@ def section5_figure(data, dpi: int | None = None) -> str:
     from certify.numerics import figures as numfig
     spec = data.spec
     orbits = data.phi.shape[1]
-    title = (f"Figure {spec.id} ({spec.label}, {data.resolution}): {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
+    title = (f"{numfig.cite(spec.id)}, {data.resolution}: {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
              f"{orbits} orbit{'s' if orbits != 1 else ''}, last {data.keep} b-collisions of {data.collisions}, "
              f"{data.engine}")
     return omega_figure(data, section5_name(spec.id, data.resolution), lines=numfig.red_lines(), boxes=spec.boxes,
