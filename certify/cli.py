@@ -6,13 +6,13 @@
     run ID [ID ...] [--out DIR] [--jobs N]
                                 run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics] [--patterns]
+    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics [--quick]] [--patterns]
                                 time the whole run (benchmarks/bench.py), or the
                                 exact simulator and reduction map (bench_reduction.py),
                                 the numerical engines (bench_numerics.py), or
                                 pattern and census (bench_patterns.py, bench_census.py)
     census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
-           [--state FILE] [--resume]
+           [--state FILE] [--resume] [--force]
                                 every periodic pattern of blocks up to length L,
                                 its feasible and stable r-sets: DIR/CENSUS.md,
                                 DIR/census.json, DIR/census-windows.png
@@ -271,6 +271,10 @@ def cmd_census(args) -> int:
     from certify.run import census, executors
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     out = ensure_writable(args.out)
+    longer = census.written_length(out)
+    if longer is not None and longer > args.max_length and not args.force:
+        raise UsageError(f"{out / 'census.json'} holds a census up to length {longer}; one up to {args.max_length} "
+                         "would replace it: write it elsewhere with --out DIR, or pass --force")
     state = args.state if args.state is not None else out / "census-state.jsonl"
     ensure_writable(state.parent)
     with executors.executor(args.jobs, args.scheduler) as ex:
@@ -346,6 +350,8 @@ def r_values(args):
         lo, hi, n = args.r_range
         if n != int(n) or n < 1:
             raise UsageError(f"--r-range COUNT must be a positive integer, not {n:g}")
+        if lo > hi or (lo == hi and n > 1):
+            raise UsageError(f"--r-range LO HI COUNT needs LO < HI (or LO = HI with COUNT 1), got LO = {lo:g}, HI = {hi:g}")
         r = np.linspace(lo, hi, int(n))
     else:
         r = np.array(args.r, dtype=float)
@@ -509,6 +515,8 @@ def build_parser() -> Parser:
     p.add_argument("--state", type=Path, default=None, metavar="FILE",
                    help="JSON lines, one per word analysed (default: DIR/census-state.jsonl)")
     p.add_argument("--resume", action="store_true", help="do not analyse again the words already in the state file")
+    p.add_argument("--force", action="store_true",
+                   help="replace a census of longer periods already in DIR (refused without it)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
     add_jobs(p)

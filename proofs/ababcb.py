@@ -367,13 +367,17 @@ def position_map_of_ababcb(candidate, a, b, c, d):
     minors = {f"{names[i]}{names[j]}": reduce_mod(P[i] * comp[j] - P[j] * comp[i], cp)
               for i in range(4) for j in range(i + 1, 4)}
     word = "".join(s.letter for s in steps)
+    factor = sp.cancel(P[2].as_expr() / comp[2].as_expr())
     return conclude([
         Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", steps[-1].position(0) != 0),
         Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
-               f"printed c / computed c = {sp.cancel(P[2].as_expr() / comp[2].as_expr())}"] +
+               f"printed c / computed c = {factor}"] +
               [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()]),
+        Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
+              "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
+              bool(factor.is_Rational) and factor < 0),
     ], evidence=[f"by construction: the engine applies the collisions {', '.join(word)} (q(t_k) = K q(t_(k-1))) and "
                  "defines t6 by p_2(t6) = 0, so p(t6) = (p_1(t6), 0, p_3(t6)) = p_1(t6)(1, 0, f(x))"])
 

@@ -262,3 +262,15 @@ def test_t28_counts_the_counterexamples_under_each_reading():
 def test_t28_shows_the_readings_table(t28):
     table = [e for e in t28.printed[-1].evidence + [x for c in t28.printed for x in c.evidence] if "Reading of" in e]
     assert table and "| consecutive letters of the periodic word (cyclically) |" in table[0]
+
+
+def test_a_shorter_census_does_not_silently_replace_a_longer_one(tmp_path, capsys):
+    assert cli.main(["census", "--max-length", "4", "--out", str(tmp_path), "--jobs", "1"]) == 0
+    before = (tmp_path / "census.json").read_bytes()
+    capsys.readouterr()
+    assert cli.main(["census", "--max-length", "3", "--out", str(tmp_path), "--jobs", "1"]) == 2
+    err = capsys.readouterr().err
+    assert "holds a census up to length 4" in err and err.count("\n") == 1
+    assert (tmp_path / "census.json").read_bytes() == before
+    assert cli.main(["census", "--max-length", "3", "--out", str(tmp_path), "--jobs", "1", "--force"]) == 0
+    assert json.loads((tmp_path / "census.json").read_text())["census"]["max_length"] == 3

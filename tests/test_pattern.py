@@ -194,3 +194,21 @@ def test_cli_smoke(tmp_path):
                         capture_output=True, text=True, timeout=300)
     assert md.returncode == 0 and md.stdout.startswith("# Pattern ab")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_ababcb_names_the_fixed_points_both_ways_and_t10_certifies_the_factor():
+    from certify.patterns.pattern import PAPER_NORMALISATION
+    from certify.run.runner import CERTIFICATES, load_all, run_certificate
+    load_all()
+    t10 = run_certificate(CERTIFICATES["T10"])
+    factor = next(c for c in t10.printed if c.statement.startswith("the factor printed/computed"))
+    assert factor.holds and "-1024" in factor.statement
+    assert "divided by −1024" in PAPER_NORMALISATION["ababcb"]
+    text = analyse("ababcb").markdown()
+    assert "lower branch, x₋ (the paper's x₊)" in text and "this x₋ is the paper's x₊" in text
+    assert "(the paper's" not in analyse("abcb").markdown()
+
+
+def test_a_candidate_that_misses_the_first_collision_says_so_plainly():
+    text = analyse("acb").markdown()
+    assert "(nothing)" not in text and "1..0" not in text and "never realises the first collision" in text

@@ -241,6 +241,15 @@ def marks() -> dict:
     return {"7-4√3": 7 - 4 * 3 ** 0.5, "5-2√6": 5 - 2 * 6 ** 0.5, "3-2√2": 3 - 2 * 2 ** 0.5}
 
 
+def written_length(out) -> int | None:
+    """The longest period of the census already in OUT/census.json, or None."""
+    import json
+    try:
+        return int(json.loads((Path(out) / "census.json").read_text(encoding="utf-8"))["census"]["max_length"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
 def write_outputs(records, max_length: int, out) -> dict:
     """OUT/CENSUS.md, OUT/census.json and OUT/census-windows.png; returns the document."""
     out = Path(out)
