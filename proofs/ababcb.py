@@ -221,7 +221,8 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
               [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
-               f"{[three_real[s] for s in (-1, 0, 1)]}, the printed condition {[condition.holds({DELTA: s}) for s in (-1, 0, 1)]}"]),
+               + ", ".join("yes" if three_real[s] else "no" for s in (-1, 0, 1)) + "; the printed condition "
+               + ", ".join("yes" if condition.holds({DELTA: s}) else "no" for s in (-1, 0, 1))]),
         Check("flint's Disc_λ(cp) has the same factors", same_up_to_constant(
             discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))),
     ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "

@@ -83,7 +83,8 @@ def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
         Check(f"the orbits of a figure are a regular grid of {theta_values} values of θ0 × {phi_values} of φ0",
               len(set(np.round(theta0, 12))) == number(theta_values) and len(set(np.round(phi0, 12))) == number(phi_values)
               and len(theta0) == number(theta_values) * number(phi_values),
-              [f"θ0 = {sorted(set(np.round(theta0, 6)))}, φ0 = {sorted(set(np.round(phi0, 6)))} (paper_grid; the "
+              [f"θ0 = {', '.join(f'{t:.6f}' for t in sorted(set(np.round(theta0, 6))))}, φ0 = "
+               f"{', '.join(f'{t:.6f}' for t in sorted(set(np.round(phi0, 6))))} (paper_grid; the "
                "paper does not print its grid)"]),
     ]
     # the φ the engine keeps is the φ of the printed velocity q(b_n)

@@ -404,7 +404,7 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
           combined(f"l. 789: t_c is the smallest positive collision time iff {smallest_bc} (cos φ > 0: t_c < 0 ⇒ t_a < 0, "
                    "both positive ⇒ t_c < t_a; cos φ < 0: both positive ⇒ t_a < t_c, which happens; cos φ = 0: "
                    "t_c = t_a)", proofs + [T.Result(read == first, [f"the printed condition for cos φ > 0, < 0, = 0: "
-                                                                     f"{[read[s] for s in first]}"])])]
+                                                                     + ", ".join("yes" if read[s] else "no" for s in first)])])]
     known = {T_C - T_B: 1} if R["order+"].holds else {}              # certified: t_c - t_b > 0
 
     def order_check(label, text):
@@ -616,7 +616,7 @@ def not_normal(u, p, H: T.Signs, tφ: str) -> list[str]:
     d = u.dot(p)
     pt = T.point("1/2", tφ, r="1/3")
     return T.is_zero(d).evidence + [f"at cos θ = {pt[cθ]}, cos φ = {pt[cφ]}, r = 1/3: ũ(1)·p(1) = {T.at(d, pt)}"
-                                    f" (hypotheses hold there: {T.satisfied(H, pt)})"]
+                                    f" (hypotheses hold there: {'yes' if T.satisfied(H, pt) else 'no'})"]
 
 
 def trilinear(text: str, letter: str, u0, p1, q0, H: T.Signs, axis, tφ: str) -> Check:

@@ -74,3 +74,10 @@ def test_the_committed_report_says_each_erratum_kind_and_each_disagreement_reaso
             assert c["reason"] and "\n" not in c["reason"], c["id"]
     errors = data["errors_of_the_paper"]
     assert sum(len(e["certificates"]) for e in errors) == data["summary"][runner.ERRATUM]
+
+
+def test_the_committed_report_shows_no_python_values():
+    """Evidence is written for a reader: no reprs of lists of booleans, numpy scalars or None."""
+    text = (ROOT / "reports" / "REPORT.md").read_text(encoding="utf-8")
+    for leak in ("np.float64", "[True", "[False", ": True", ": False", "None", "['"):
+        assert leak not in text, leak
