@@ -10,11 +10,11 @@ import re
 import flint
 import sympy as sp
 
-from certify.algebra import (Algebraic, Condition, FixedPoint, Spectrum, count_roots, discriminant_lambda,
+from certify.algebra import (Algebraic, Condition, FixedPoint, discriminant_lambda,
     eliminate, flint_real_roots, lam, parse, primitive, r, show, show_factored_int, sign_intervals, statements,
     to_field, to_fmpq_poly, to_fmpz_poly, u, v, x)
 from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characteristic_polynomial, reduce_mod,
-    velocities, word_matrix)
+    velocities)
 from certify.patterns import Analysis, fmt, prefix_requirements
 from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude, quantity
 

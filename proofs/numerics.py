@@ -245,8 +245,8 @@ def below_0078(r_below, n_from, accumulate_above):
     followed = [n for n in seen if seen[n] == 2 * n]
     checks.append(Check(f"a float64 program cannot follow (ab)^n(cb)^n for n ≥ {n_from} below r = {r_below}",
                         not followed,
-                        [f"our float64 engine (margin rule, rescaled normals), at r = r_max(n) − 5 % of the gap to "
-                         f"r_max(n+1): " + ", ".join(f"n = {n}: {seen[n]} points" for n in seen)]))
+                        ["our float64 engine (margin rule, rescaled normals), at r = r_max(n) − 5 % of the gap to "
+                         "r_max(n+1): " + ", ".join(f"n = {n}: {seen[n]} points" for n in seen)]))
     r6 = th[n0] - 0.05 * (th[n0] - th[n0 + 1])
     small = F.min_component(n0, r6)
     checks.append(Check(f"at n = {n_from} the dominant eigenvector has a component below the float64 precision "

@@ -403,7 +403,7 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
     bc = [solves("t_c", TCB, pb, qb, 2, "787"), solves("t_a", TAB, pb, qb, 0, "787"),
           combined(f"l. 789: t_c is the smallest positive collision time iff {smallest_bc} (cos φ > 0: t_c < 0 ⇒ t_a < 0, "
                    "both positive ⇒ t_c < t_a; cos φ < 0: both positive ⇒ t_a < t_c, which happens; cos φ = 0: "
-                   "t_c = t_a)", proofs + [T.Result(read == first, [f"the printed condition for cos φ > 0, < 0, = 0: "
+                   "t_c = t_a)", proofs + [T.Result(read == first, ["the printed condition for cos φ > 0, < 0, = 0: "
                                                                      + ", ".join("yes" if read[s] else "no" for s in first)])])]
     known = {T_C - T_B: 1} if R["order+"].holds else {}              # certified: t_c - t_b > 0
 

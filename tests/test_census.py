@@ -9,7 +9,7 @@ from certify import cli
 from certify.patterns import census
 from certify.run import census as run_census
 from certify.run.executors import Serial, executor
-from certify.run.runner import CERTIFICATES, ERRATUM, FAIL, PASS, load_all, run_certificate
+from certify.run.runner import CERTIFICATES, ERRATUM, FAIL, load_all, run_certificate
 from proofs import census as T28
 
 load_all()

@@ -10,7 +10,7 @@ import numpy as np
 import sympy as sp
 
 from . import figures
-from certify.algebra.poly import lam, r
+from certify.algebra.poly import r
 
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:purple")
 BRANCH_NAMES = ("upper", "middle", "lower")

@@ -13,7 +13,6 @@ from __future__ import annotations
 import importlib
 import inspect
 import multiprocessing
-import os
 import pkgutil
 import signal
 import time
