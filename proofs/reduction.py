@@ -587,8 +587,9 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
     evidence = [supporting(f"{window} at {s_good} of {s_seen} collisions b of the scan ({len(scan)} exact orbits, "
                            f"{sum(map(len, scan))} collisions); {sum(parses(w, blks) for w in scan)} of {len(scan)} "
                            f"orbit words parse as printed, {len(leading_b)} start with b, e.g. "
-                           f"`{(leading_b or [''])[0][:24]}…`, and all parse without that b: "
-                           f"{all(parses(w[1:] if w.startswith('b') else w, blks) for w in scan)}.")]
+                           f"`{(leading_b or [''])[0][:24]}…`; without that b, "
+                           + ("all parse." if all(parses(w[1:] if w.startswith('b') else w, blks) for w in scan)
+                              else "some still do not parse."))]
     return conclude(printed, corrected, evidence=evidence, kind=FALSE_STATEMENT,
                     misprint="l. 1049-1051, Remark 4.6: 'every pattern is a concatenation of ab, cb, acb, cab' is "
                              "false for a pattern that starts with b (Corollary 4.5 holds)")
