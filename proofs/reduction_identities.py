@@ -505,7 +505,7 @@ def certify_case(chains, p0, q, letter, lines, corrections=None, note="", mispri
     return concluded(printed, corrected, note=note, kind=MISPRINT, misprint=misprint)
 
 
-@certificate("S3", "l. 632-684", "Case ab: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(sinφ cosθ, 0, cosφ) "
+@certificate("S3", "l. 630-703", "Case ab: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(sinφ cosθ, 0, cosφ) "
              "for every λ; the printed B q(0), cross product, B e_r and (B e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
              printed=dict(p0=P0_A, q=Q_A, **AB))
 def case_ab(p0, q, **chains):
@@ -513,7 +513,7 @@ def case_ab(p0, q, **chains):
     return certify_case(chains, p0, q, "b", dict(t="641-645", p="649-656", x="676-682", e="686", d="690-701"))
 
 
-@certificate("S4", "l. 686-738", "Case ac: the printed t_λ; p_λ(1) = (1/(cosφ cosθ + λ sinθ))(-sinφ sinθ, cosφ, 0) "
+@certificate("S4", "l. 705-763", "Case ac: the printed t_λ; p_λ(1) = (1/(cosφ cosθ + λ sinθ))(-sinφ sinθ, cosφ, 0) "
              "for every λ; the printed C q(0), cross product, C e_r and (C e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
              printed=dict(p0=P0_A, q=Q_A, **AC))
 def case_ac(p0, q, **chains):
@@ -525,7 +525,7 @@ def case_ac(p0, q, **chains):
                         "computation uses cos φ and the conclusion (C e_r)·[p(1) ∧ q(1)] = 0 holds.")
 
 
-@certificate("S5", "l. 739-834", "Case bc: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(cosφ, sinφ cosθ, 0) "
+@certificate("S5", "l. 765-845", "Case bc: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(cosφ, sinφ cosθ, 0) "
              "for every λ; the printed C q(0), cross product, C e_r and (C e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
              printed=dict(p0=P0_B, q=Q_B, **BC))
 def case_bc(p0, q, **chains):

@@ -28,8 +28,8 @@ ROOT = Path(__file__).resolve().parent.parent
     ("abca", "adjacent"),                                       # ... cyclically (a ... a)
     ("a", "adjacent"),
     ("[ac]ab", "symmetric system"),                             # [ac] mixed with a single a
-    ("acab", "Proposition 4.2"),                                # aca
-    ("acbc", "Proposition 4.2"),                                # c|ac: cac cyclically
+    ("acab", "Proposition 4.4"),                                # aca
+    ("acbc", "Proposition 4.4"),                                # c|ac: cac cyclically
     ("abab", "proper power of 'ab'"),                           # a proper power, root named
     ("(abcb)^2", "proper power of 'abcb'"),
     ("(ab)^0cb", "power"),
