@@ -6,13 +6,13 @@
     run ID [ID ...] [--out DIR] [--jobs N]
                                 run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics] [--patterns]
+    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics [--quick]] [--patterns]
                                 time the whole run (benchmarks/bench.py), or the
                                 exact simulator and reduction map (bench_reduction.py),
                                 the numerical engines (bench_numerics.py), or
                                 pattern and census (bench_patterns.py, bench_census.py)
     census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
-           [--state FILE] [--resume]
+           [--state FILE] [--resume] [--force]
                                 every periodic pattern of blocks up to length L,
                                 its feasible and stable r-sets: DIR/CENSUS.md,
                                 DIR/census.json, DIR/census-windows.png
@@ -25,7 +25,8 @@
                                 simulate the four particles exactly, print the
                                 collisions and their times (certify.dynamics.particles)
     figures [--resolution preview|paper] [--only FIG ...] [--n4 NMAX] [--out DIR]
-                                Figures 5.1-5.8 into DIR/figures; paper: also
+                                Figures 6-11 of the paper (our ids 5.1-5.8) into
+                                DIR/figures; paper: also
                                 DIR/numerics-paper.json; --n4: DIR/numerics-n4.json
     simulate (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N]
              [--keep N] [--engine float64|mp|ball] [--dps D] [--out FILE.npz]
@@ -57,7 +58,7 @@ from pathlib import Path
 
 from certify.dynamics import particles
 from certify.errors import UsageError
-from certify.run import ERRATUM, FAIL, figures, progress, report, runner
+from certify.run import ERRATUM, FAIL, OBSERVED, figures, progress, report, runner
 from certify.run.files import ensure_writable, read_text_or_none
 
 DEFAULT_OUT = Path("reports")
@@ -120,12 +121,19 @@ def warn_missing_figures(results, out: Path) -> None:
 
 
 def finish(results) -> int:
-    """Print the summary line and the errata ids (stdout), the failing ids (stderr);
-    return the exit code."""
+    """Print the summary line, the errata by distinct error of the paper and the
+    observations that disagree with it, each with its one-line reason (stdout); the
+    failing ids (stderr); return the exit code."""
     print(report.summary_line(results))
-    errata = [cert.id for cert, outcome in results if outcome.status == ERRATUM]
-    if errata:
-        print("errata (the paper is wrong, a correction is certified): " + ", ".join(errata))
+    if report.errata_line(results):
+        print("errata (the paper is wrong, a correction is certified): " + report.errata_line(results))
+        for key, kind, members in report.misprints(results):
+            print(f"  {', '.join(cert.id for cert, _ in members)}: {kind}: {' '.join(key.split())}")
+    against = report.disagreements(results)
+    if against:
+        print("disagree with the paper (numerical observations):")
+        for cert, outcome in against:
+            print(f"  {cert.id}: {' '.join(outcome.reason.split())}")
     if failing(results):
         say("FAIL: " + ", ".join(failing(results)))
     return exit_code(results)
@@ -177,7 +185,10 @@ def _under(results) -> dict[str, list[str]]:
                 if not runner.holds(check):
                     first = str(check.evidence[0]).strip().split("\n")[0] if check.evidence else ""
                     lines.append("✗ " + " ".join(check.statement.split()) + (f": {first}" if first else ""))
+        elif outcome.status == OBSERVED and outcome.agrees is False:
+            lines.append("≠ does not agree with the paper: " + " ".join(outcome.reason.split()))
         elif outcome.status == ERRATUM:
+            lines.append(f"{outcome.kind}: " + " ".join(outcome.misprint.split()))
             for printed, fixes in report.erratum_pairs(outcome):
                 lines.append("✗ as printed: " + " ".join(printed.statement.split()))
                 for fix in fixes:
@@ -195,8 +206,9 @@ def print_results(results) -> None:
     width = shutil.get_terminal_size().columns if sys.stdout.isatty() else None
     w = max((len(cert.id) for cert, _ in results), default=2)
     under = _under(results)
+    sw = max((len(report.status_label(outcome)) for _, outcome in results), default=8)
     for cert, outcome in results:
-        head = f"{cert.id:<{w}}  {outcome.status:<8}  "
+        head = f"{cert.id:<{w}}  {report.status_label(outcome):<{sw}}  "
         print(head + _clip(" ".join(cert.statement.split()), width and width - len(head)))
         for line in under[cert.id]:
             print(" " * len(head) + _clip(line, width and width - len(head)))
@@ -259,6 +271,10 @@ def cmd_census(args) -> int:
     from certify.run import census, executors
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     out = ensure_writable(args.out)
+    longer = census.written_length(out)
+    if longer is not None and longer > args.max_length and not args.force:
+        raise UsageError(f"{out / 'census.json'} holds a census up to length {longer}; one up to {args.max_length} "
+                         "would replace it: write it elsewhere with --out DIR, or pass --force")
     state = args.state if args.state is not None else out / "census-state.jsonl"
     ensure_writable(state.parent)
     with executors.executor(args.jobs, args.scheduler) as ex:
@@ -334,6 +350,8 @@ def r_values(args):
         lo, hi, n = args.r_range
         if n != int(n) or n < 1:
             raise UsageError(f"--r-range COUNT must be a positive integer, not {n:g}")
+        if lo > hi or (lo == hi and n > 1):
+            raise UsageError(f"--r-range LO HI COUNT needs LO < HI (or LO = HI with COUNT 1), got LO = {lo:g}, HI = {hi:g}")
         r = np.linspace(lo, hi, int(n))
     else:
         r = np.array(args.r, dtype=float)
@@ -390,7 +408,7 @@ def add_numerics(commands) -> None:
     which = p.add_mutually_exclusive_group(required=True)
     which.add_argument("--r", nargs="+", type=number, metavar="R", help="restitution coefficients in ]0,1[")
     which.add_argument("--r-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
-                       help="COUNT values from LO to HI, ends included (paper Figure 5.1: 0.072 0.999 3709)")
+                       help="COUNT values from LO to HI, ends included (paper Figure 6: 0.072 0.999 3709)")
     p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
                    help="initial data per r: the first N of the paper's grid, 2 θ0 × 4 φ0 (default: 8)")
     p.add_argument("--collisions", type=count, default=10_000, metavar="N", help="collisions per orbit (default: 10^4)")
@@ -497,6 +515,8 @@ def build_parser() -> Parser:
     p.add_argument("--state", type=Path, default=None, metavar="FILE",
                    help="JSON lines, one per word analysed (default: DIR/census-state.jsonl)")
     p.add_argument("--resume", action="store_true", help="do not analyse again the words already in the state file")
+    p.add_argument("--force", action="store_true",
+                   help="replace a census of longer periods already in DIR (refused without it)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
     add_jobs(p)
@@ -578,8 +598,9 @@ def cmd_figures(args) -> int:
 
 def add_figures(commands) -> None:
     """The parser of ``certify figures``."""
-    p = commands.add_parser("figures", help="draw Figures 5.1-5.8 (Section 5)",
-                            description="Figures 5.1-5.8 of Section 5: the last kept b-angles φ of the paper's 8 "
+    p = commands.add_parser("figures", help="draw Figures 6-11 of the paper, Section 5 (ids 5.1-5.8)",
+                            description="Figures 6-11 of the paper (Section 5; our ids 5.1-5.8: 5.1 = Figure 6, 5.2 = 7, 5.3a/b = 8a/b, "
+                            "5.4 = 9, 5.5 = 10, 5.6-5.8 = 11a-c): the last kept b-angles φ of the paper's 8 "
                             "orbits against r (float64), breaks as red dots at (r, π/2), the CDKK thresholds as red "
                             "lines.  preview: the cheap version `certify all` draws; paper: the captions' grids, "
                             "10^4 collisions, 500 kept (about a minute on two cores).")

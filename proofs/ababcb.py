@@ -5,16 +5,18 @@ line, then computes.  Printed formulas are transcribed below as text, exactly as
 they stand in the paper (only the stray parenthesis of l. 259 is dropped).
 Branches: 0 = upper (largest real eigenvalue), 1 = middle, 2 = lower.
 """
+import re
+
 import flint
 import sympy as sp
 
-from certify.algebra import (Algebraic, Condition, FixedPoint, Spectrum, count_roots, discriminant_lambda,
+from certify.algebra import (Algebraic, Condition, FixedPoint, discriminant_lambda,
     eliminate, flint_real_roots, sturm_count, lam, parse, primitive, r, show, show_factored_int, sign_intervals, statements,
     to_field, to_fmpq_poly, to_fmpz_poly, u, v, x)
 from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characteristic_polynomial, reduce_mod,
-    velocities, word_matrix)
+    velocities)
 from certify.patterns import Analysis, fmt, prefix_requirements
-from certify.run import Check, certificate, conclude, quantity
+from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude, quantity
 
 UPPER, MIDDLE, LOWER = 0, 1, 2
 BRANCH = {UPPER: "upper", MIDDLE: "middle", LOWER: "lower"}
@@ -65,6 +67,7 @@ P1_T5_PRINTED = ("λ*(r^2 - 1)^2*(r^2 - 10*r + 1)/(-64*λ^2 + 4*(-r^5 + 9*r^4 - 
 
 # the quantities the printed conditions are about (statements.relation reads them by these names)
 DET, DELTA, C_SIGN, Q_VELOCITY, DOUBLE = sp.symbols("det_M Δ_cp c q λ₀")
+MARK = {True: "✓", False: "✗"}
 Q_MOBIUS = sp.Symbol("q", real=True)          # the paper's q = (cx₊+d)/(cx₋+d) (l. 496), real where Δ > 0
 
 
@@ -221,7 +224,8 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
               [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
-               f"{[three_real[s] for s in (-1, 0, 1)]}, the printed condition {[condition.holds({DELTA: s}) for s in (-1, 0, 1)]}"]),
+               + ", ".join("yes" if three_real[s] else "no" for s in (-1, 0, 1)) + "; the printed condition "
+               + ", ".join("yes" if condition.holds({DELTA: s}) else "no" for s in (-1, 0, 1))]),
         Check("flint's Disc_λ(cp) has the same factors", same_up_to_constant(
             discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))),
     ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "
@@ -367,13 +371,17 @@ def position_map_of_ababcb(candidate, a, b, c, d):
     minors = {f"{names[i]}{names[j]}": reduce_mod(P[i] * comp[j] - P[j] * comp[i], cp)
               for i in range(4) for j in range(i + 1, 4)}
     word = "".join(s.letter for s in steps)
+    factor = sp.cancel(P[2].as_expr() / comp[2].as_expr())
     return conclude([
         Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", steps[-1].position(0) != 0),
         Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
-               f"printed c / computed c = {sp.cancel(P[2].as_expr() / comp[2].as_expr())}"] +
+               f"printed c / computed c = {factor}"] +
               [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()]),
+        Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
+              "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
+              bool(factor.is_Rational) and factor < 0),
     ], evidence=[f"by construction: the engine applies the collisions {', '.join(word)} (q(t_k) = K q(t_(k-1))) and "
                  "defines t6 by p_2(t6) = 0, so p(t6) = (p_1(t6), 0, p_3(t6)) = p_1(t6)(1, 0, f(x))"])
 
@@ -443,7 +451,7 @@ def keeps_sign_at(T, branch, point) -> bool:
              "r2 on the upper branch.", needs=["spectrum"],
              printed=dict(amd=AMD_PRINTED, r1=R1_PRINTED, P1_text=P1_PRINTED, at_r1="middle", at_r2="upper"))
 def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
-    """The sign table of a-d over ]0,1[ (Figure 3.3)."""
+    """The sign table of a-d over ]0,1[ (Figure 3, fig: sign changes a-d)."""
     from certify.run import sign_chart
     rr1, rr2 = r1_of(r1), unique_root(P1_text)
     T = table(spectrum, "a-d", parse(amd), 0, 1)
@@ -463,7 +471,7 @@ def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
              needs=["cp", "spectrum"], printed=dict(b=B_PRINTED, quartic=QUARTIC_B_PRINTED, r1=R1_PRINTED))
 def sign_of_b(cp, spectrum, b, quartic, r1):
     """Elimination both ways, the quartic's real roots counted both ways, and the
-    sign table of b (Figure 3.4)."""
+    sign table of b (Figure 4, fig: sign change b)."""
     from certify.run import sign_chart
     rr1 = r1_of(r1)
     Q4 = to_fmpz_poly(parse(quartic))
@@ -511,7 +519,8 @@ def sign_of_c(c, below, above):
     correction = half(fixed) if fixed else Check(f"the stated correction {' → '.join(T16_CORRECTION)} applies to "
                                                  f"the printed `{above}`", False)
     correction.corrects = printed[2]
-    return conclude(printed, [correction, printed[0], printed[1]])
+    return conclude(printed, [correction, printed[0], printed[1]], kind=MISPRINT,
+                    misprint="l. 433: c > 0 printed for c < 0 (r > 5-2√6)")
 
 
 # ---------------------------------------------------------------- T17-T19: fixed points of f
@@ -594,7 +603,9 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
                                bool(sx and tc and sv) and sx[UPPER] == 1 and sv[UPPER] == -1 and tc[UPPER] == -1,
                                [f"signs at that r on the upper branch: x {sx and sx[UPPER]}, v {sv and sv[UPPER]}, "
                                 f"t_c - t_a {tc and tc[UPPER]}"]))
-    return conclude(printed, corrected, note="The printed 'until r = 1' misses one point: at r = (7-2√10)/3 the upper "
+    return conclude(printed, corrected, kind=FALSE_STATEMENT,
+                    misprint="l. 437: Δ < 0 'until r = 1' misses the zero of Δ at (7-2√10)/3",
+                    note="The printed 'until r = 1' misses one point: at r = (7-2√10)/3 the upper "
                     "branch has Δ = 0 and a positive double fixed point; it does not give a self-similar datum.")
 
 
@@ -638,7 +649,7 @@ def lower_branch_fixed_points(spectrum, a, b, c, d, r1):
 
 
 # ---------------------------------------------------------------- T20-T22: feasibility
-@certificate("T20", "l. 446-448", "u = 0 forces (r^2-10r+1)(r^5-15r^4+66r^3-86r^2-35r+5) = 0; the quintic has exactly "
+@certificate("T20", "l. 446-450", "u = 0 forces (r^2-10r+1)(r^5-15r^4+66r^3-86r^2-35r+5) = 0; the quintic has exactly "
              "one root in ]0,1[, ≈ 0.11376; u > 0 on the upper and lower branches for r < 5-2√6.",
              needs=["cp", "spectrum"], printed=dict(U=U_PRINTED, quintic=P3_PRINTED, digits="0.11376", r1=R1_PRINTED,
                                                     position="larger than 5-2√6"))
@@ -744,87 +755,109 @@ def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, degree, position):
     return conclude(checks)
 
 
-T24_CORRECTIONS = {"upper": ("|q|>1", "|q|<1"), "lower": ("|q|<1", "|q|>1"), "stable_when": ("|q|<1", "|q|>1")}
+T24_CORRECTION = ("(c x₊ + d)/(c x₋ + d)", "(c x₋ + d)/(c x₊ + d)")   # l. 493: the fraction inverted
 
 
-def mobius_lemmas() -> list[str]:
-    """The identities behind the paper's q, for every Möbius map (ax + b)/(cx + d) with
-    real fixed points x± = (a - d ± s)/(2c), s = √Δ > 0, Δ = (a-d)² + 4bc:
-    cx± + d = (a + d ± s)/2, (cx₊+d)(cx₋+d) = ad - bc, so f'(x₊) = (ad-bc)/(cx₊+d)² = 1/q;
-    and |q|² - 1 = 4(a+d)s/(a+d-s)², so sign(|q| - 1) = sign(a + d).  They hold
-    identically, whatever a, b, c, d: evidence for reading the sign of |q| - 1 and the
-    stability criterion, not checks (an identity that failed would be an error)."""
-    A, B, C, D = sp.symbols("a b c d")
+def mobius_symbols():
+    """a, c, d, s = √Δ > 0 and the fixed points x± = (a - d ± s)/(2c) of any Möbius map
+    (ax + b)/(cx + d), with b eliminated by Δ = (a-d)² + 4bc = s²."""
+    A, C, D = sp.symbols("a c d")
     s = sp.Symbol("s", positive=True)
-    delta = (A - D) ** 2 + 4 * B * C
-    xp, xm = (A - D + s) / (2 * C), (A - D - s) / (2 * C)
-    q = (C * xp + D) / (C * xm + D)
+    B = (s ** 2 - (A - D) ** 2) / (4 * C)
+    return A, B, C, D, s, (A - D + s) / (2 * C), (A - D - s) / (2 * C)
 
-    def zero(e):                                  # the numerator vanishes modulo s² - Δ
-        return sp.rem(sp.expand(sp.numer(sp.together(e))), s ** 2 - delta, s) == 0
-    identities = {"cx₊ + d = (a + d + s)/2": C * xp + D - (A + D + s) / 2,
-                  "(cx₊+d)(cx₋+d) = ad - bc": sp.expand((C * xp + D) * (C * xm + D)) - (A * D - B * C),
-                  "f'(x₊) = (ad-bc)/(cx₊+d)² = 1/q": (A * D - B * C) / (C * xp + D) ** 2 * q - 1,
-                  "|q|² - 1 = 4(a+d)s/(a+d-s)²": q ** 2 - 1 - 4 * (A + D) * s / (A + D - s) ** 2}
-    failed = [k for k, e in identities.items() if not zero(e)]
-    if failed:
-        raise ArithmeticError(f"Möbius identities failed: {failed}")
-    return [f"identities for every Möbius map, s = √Δ > 0: {'; '.join(identities)}; so sign(|q| - 1) = sign(a + d) "
-            "and |f'(x₊)| - 1 = (1 - |q|)/|q|: x₊ is stable (|f'(x₊)| < 1) iff |q| > 1"]
+
+def read_q(text: str) -> sp.Expr:
+    """The printed q, ``(c x₊ + d)/(c x₋ + d)``, as a function of a, c, d, s."""
+    A, B, C, D, s, xp, xm = mobius_symbols()
+    t = text.replace("x₊", " xp ").replace("x₋", " xm ")
+    if not re.fullmatch(r"[\sacdxpm+\-*/()0-9]*", t):
+        raise statements.StatementError(f"cannot read q = {text!r}: only a, c, d, x₊, x₋ and + - * / ( )")
+    t = re.sub(r"(?<=[\w)])\s+(?=[\w(])", "*", t.strip())
+    return sp.sympify(t, locals={"a": A, "c": C, "d": D, "xp": xp, "xm": xm})
+
+
+def modulus_sign_factor(e: sp.Expr) -> int | None:
+    """k with sign(|e| - 1) = k·sign(a + d) for every Möbius map with real fixed points
+    (s > 0), when e = P/Q and P² - Q² = (a+d)·s·(a nonzero constant k·κ); None otherwise.
+    As |e| > 1 iff P² > Q², this reads the sign of |e| - 1 off the sign of a + d."""
+    A, B, C, D, s, xp, xm = mobius_symbols()
+    num, den = sp.fraction(sp.cancel(sp.together(e)))
+    ratio = sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+    return int(sp.sign(ratio)) if ratio.is_number and ratio != 0 else None
+
+
+def f_prime_at_fixed_point() -> sp.Expr:
+    """f'(x₊) = (ad - bc)/(cx₊ + d)² for f(x) = (ax + b)/(cx + d)."""
+    A, B, C, D, s, xp, xm = mobius_symbols()
+    return (A * D - B * C) / (C * xp + D) ** 2
 
 
 @certificate("T24", "l. 488-509", "Upper branch: |q| > 1 (fixed point of f repelling) below 5-2√6; lower branch: "
-             "|q| < 1 but λ not dominant.", needs=["spectrum"],
+             "|q| < 1 but λ not dominant; q = (cx₊+d)/(cx₋+d) as displayed at l. 493.", needs=["spectrum"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED,
-                          upper="|q|>1", lower="|q|<1", stable_when="|q|<1"))
-def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, upper, lower, stable_when):
-    """q = (cx₊+d)/(cx₋+d) = (a+d+√Δ)/(a+d-√Δ): where Δ > 0, sign(|q| - 1) = sign(a+d),
-    and f'(x₊) = 1/q, so x₊ is stable iff |q| > 1 (:func:`mobius_lemmas`).  The signs of Δ
-    and a+d per branch are certified; each printed condition on |q| is read and evaluated on them,
-    the printed criterion for every sign of |q| - 1.  The corrected statement is the
-    printed one with the stated corrections (the three relations reversed)."""
+                          q="(c x₊ + d)/(c x₋ + d)", upper="|q|>1", lower="|q|<1", stable_when="|q|<1"))
+def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stable_when):
+    """For every Möbius map with real fixed points, |f'(x₊)| - 1 has the sign of -(a+d)
+    (:func:`modulus_sign_factor`), and the printed q = (cx₊+d)/(cx₋+d) is 1/f'(x₊): its
+    |q| - 1 has the sign of a+d.  The signs of Δ and a+d per branch are certified.  The
+    sentences of l. 495-505 (x₊ stable iff |q| < 1; |q| > 1 on the upper branch, |q| < 1 on
+    the lower) are read and evaluated with q as displayed at l. 493, then with the one
+    stated correction: q = (cx₋+d)/(cx₊+d) = f'(x₊), the displayed fraction inverted."""
     rr1 = r1_of(r1)
     fp = fixed_point(a, b, c, d)
     apd = table(spectrum, "a+d", fp.a + fp.d, 0, rr1)
     real = table(spectrum, "Δ", fp.delta, 0, 1)          # q real and √Δ > 0 where Δ > 0 (shared with T17)
     lam_gap = spectrum.sign_table(Condition.of("λ", lam), 0, rr1)
-    excess = sp.Abs(Q_MOBIUS) - 1                 # its sign is that of a+d
-    lemmas = mobius_lemmas()
+    k_f = modulus_sign_factor(f_prime_at_fixed_point())   # -1: |f'(x₊)| > 1 iff a+d < 0
     names = {"q": Q_MOBIUS}
+    excess = sp.Abs(Q_MOBIUS) - 1
 
-    def on_branch(text, k) -> bool:
-        return real.holds(k, 1, 0, rr1) and statements.relation(text, names).holds_on(excess, apd.signs(k))
+    def sentences(q_text) -> tuple[bool, list[str]]:
+        """The three sentences of l. 495-505 with q = ``q_text``: each verdict, and all."""
+        k = modulus_sign_factor(read_q(q_text))
+        if k is None:
+            return False, [f"|q| - 1 for q = {q_text} has no sign fixed by that of a+d: not evaluated"]
 
-    def criterion(text) -> bool:                 # stable iff sign(|q| - 1) = +1
-        rel = statements.relation(text, names)
-        return all(rel.holds({excess: s}) == (s == 1) for s in (-1, 0, 1))
-    certified = {k: sorted({{1: "|q| > 1", -1: "|q| < 1", 0: "|q| = 1"}.get(sg, str(sg)) for sg in apd.signs(k)})
-                 for k in (UPPER, LOWER)}
-    ev = ["a+d on the branches:\n\n" + apd.markdown(),
-          f"Δ = (a-d)² + 4bc > 0 on the upper branch: {real.holds(UPPER, 1, 0, rr1)}, on the lower branch: "
-          f"{real.holds(LOWER, 1, 0, rr1)} (r < 5-2√6), so q is real and √Δ > 0"]
-    printed = [
-        Check(f"upper branch, r < 5-2√6: {upper}", on_branch(upper, UPPER), [f"certified: {certified[UPPER]}"] + ev),
-        Check(f"lower branch, r < 5-2√6: {lower}", on_branch(lower, LOWER), [f"certified: {certified[LOWER]}"]),
-        Check(f"the fixed point x₊ is stable iff {stable_when}", criterion(stable_when), lemmas),
-    ]
-    fixed = {k: statements.corrected(text, *T24_CORRECTIONS[k])
-             for k, text in (("upper", upper), ("lower", lower), ("stable_when", stable_when))}
-    not_applied = [Check(f"the stated correction {' → '.join(T24_CORRECTIONS[k])} applies to the printed `{text}`", False)
-                   for k, text in (("upper", upper), ("lower", lower), ("stable_when", stable_when)) if fixed[k] is None]
-    corrected = not_applied or [
-        Check(f"upper branch, r < 5-2√6: {fixed['upper']}", on_branch(fixed["upper"], UPPER), corrects=printed[0]),
-        Check(f"lower branch, r < 5-2√6: {fixed['lower']}", on_branch(fixed["lower"], LOWER), corrects=printed[1]),
-        Check(f"the fixed point x₊ is stable iff {fixed['stable_when']}", criterion(fixed["stable_when"]), lemmas,
-              corrects=printed[2]),
+        def on_branch(text, branch):
+            return real.holds(branch, 1, 0, rr1) and statements.relation(text, names).holds_on(
+                excess, {k * sg for sg in apd.signs(branch)})
+        rel = statements.relation(stable_when, names)
+        verdicts = {f"x₊ stable (|f'(x₊)| < 1) iff {stable_when}":
+                    all(rel.holds({excess: k * sg}) == (k_f * sg == -1) for sg in (-1, 0, 1)),
+                    f"upper branch, r < 5-2√6: {upper}": on_branch(upper, UPPER),
+                    f"lower branch, r < 5-2√6: {lower}": on_branch(lower, LOWER)}
+        return all(verdicts.values()), [f"with q = {q_text}, sign(|q| - 1) = {'+' if k > 0 else '−'}sign(a+d): "
+                                        + "; ".join(f"{t}: {MARK[v]}" for t, v in verdicts.items())]
+    sentence_text = f"x₊ stable iff {stable_when} (l. 495); {upper} on the upper branch and {lower} on the lower, r < 5-2√6 (l. 505)"
+    ok, ev = sentences(q)
+    a_d = ["a+d on the branches:\n\n" + apd.markdown(),
+           f"Δ = (a-d)² + 4bc > 0 on the upper branch: {MARK[real.holds(UPPER, 1, 0, rr1)]}, on the lower branch: "
+           f"{MARK[real.holds(LOWER, 1, 0, rr1)]} (r < 5-2√6), so q is real and √Δ > 0",
+           f"for every Möbius map, f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) and |f'(x₊)| - 1 has the sign of "
+           f"{'a+d' if k_f == 1 else '-(a+d)'}"]
+    printed = [Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d)]
+    if ok:
+        return conclude(printed)
+    if T24_CORRECTION[0] not in q:
+        return conclude(printed + [Check(f"the stated correction {' → '.join(T24_CORRECTION)} applies to the "
+                                         f"printed q = {q}", False)])
+    q_fixed = q.replace(*T24_CORRECTION)
+    ok_fixed, ev_fixed = sentences(q_fixed)
+    is_fprime = sp.cancel(read_q(q_fixed) - f_prime_at_fixed_point()) == 0
+    corrected = [
+        Check(f"l. 493: q = {q_fixed}; with it, {sentence_text}", ok_fixed and is_fprime,
+              ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"], corrects=printed[0]),
         Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)",
-              on_branch(fixed["upper"], UPPER) and apd.holds(UPPER, -1)),
+              k_f == -1 and apd.holds(UPPER, -1)),
         Check("and on the lower branch a+d > 0 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: λ is not dominant "
-              "(unstable in the velocities)", on_branch(fixed["lower"], LOWER) and apd.holds(LOWER, 1)
+              "(unstable in the velocities)", k_f == -1 and apd.holds(LOWER, 1)
               and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)),
     ]
-    return conclude(printed, corrected, note="The theorem's conclusion (instability on both branches) stands; "
-                    "the printed values of |q| and the printed stability criterion are both reversed.")
+    return conclude(printed, corrected, kind=MISPRINT, misprint="l. 493: q displayed as 1/f'(x₊), the fraction inverted",
+                    note="One misprint: the q displayed at l. 493, (cx₊+d)/(cx₋+d), is 1/f'(x₊). With q = f'(x₊) = "
+                    "(cx₋+d)/(cx₊+d), every sentence of l. 495-505 holds as printed, and the theorem's conclusion "
+                    "(instability on both branches) stands.")
 
 
 # ---------------------------------------------------------------- T25: the theorem as a whole

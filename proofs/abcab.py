@@ -1,4 +1,4 @@
-"""Remark after Theorem 3.1 (l. 513-515): the pattern abcab has no self-similar datum.
+"""Remark 3.3 (l. 513-515): the pattern abcab has no self-similar datum.
 
 As printed: "for the initial data that are the obvious candidates - that is, the
 eigenvector of the corresponding matrix BACBA for the velocities and a fixed point

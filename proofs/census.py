@@ -2,7 +2,7 @@
 data" — an empirical remark, tested on a census.
 
 Which patterns.  A periodic pattern is a cyclic sequence of the blocks ab, cb, acb,
-cab (Corollary 4.3, l. 1037-1051, with the correction certified in S10); a class of
+cab (Corollary 4.5, l. 1037-1051, with the correction certified in S10); a class of
 rotations and of the mirror a<->c is one set of orbits.  *Containing abcab* is read in
 the bi-infinite periodic word, for some member of the class: the word contains abcab
 or its mirror cbacb (so (cab)^∞ = …cabcab… and its mirror (acb)^∞ count).
@@ -38,7 +38,7 @@ import flint
 from certify.algebra import simplest_between
 from certify.dynamics import candidate, simulate
 from certify.patterns import BRANCH_NAMES, census
-from certify.run import Check, certificate, conclude
+from certify.run import REFUTED_REMARK, Check, certificate, conclude
 
 PRINTED_T28 = dict(pattern="abcab")
 LENGTH = 7             # our bound: a census of seconds inside `certify all`; `certify census` goes further
@@ -90,9 +90,81 @@ def replay(rec: dict) -> tuple[bool, str]:
                                           f"from the datum gives {got} ({prec} bits)")
 
 
+QUOTE_T28 = ("for other patterns that we have tested, any pattern that contains this sequence of collisions "
+             "(abcab) as a subsequence does not seem to have feasible initial data")
+
+
+def mirrored(word: str) -> str:
+    return word.translate(str.maketrans("ac", "ca"))
+
+
+def block_rotations(word: str) -> list[str]:
+    """The period written from each block boundary (the census's words are block-aligned)."""
+    bl = census.blocks_of(word)
+    return ["".join(bl[k:] + bl[:k]) for k in range(len(bl))]
+
+
+def scattered(word: str, pattern: str) -> bool:
+    """``pattern``'s letters occur in ``word`` in order, not necessarily next to each other."""
+    it = iter(word)
+    return all(letter in it for letter in pattern)
+
+
+# How "contains ... as a subsequence" (l. 515) can be read, on one orientation of a period:
+READINGS = {
+    "consecutive letters of the periodic word (cyclically)": lambda w, p: census.contains(w, p),
+    "consecutive letters of one period written from a block boundary (no wrap-around)":
+        lambda w, p: any(p in v for v in block_rotations(w)),
+    "letters in order, not necessarily consecutive, in one period written from a block boundary":
+        lambda w, p: any(scattered(v, p) for v in block_rotations(w)),
+}
+
+
+def orientations(word: str) -> list[str]:
+    """The word and its mirror a<->c, once when the mirror is a rotation of the word."""
+    m = mirrored(word)
+    return [word] if any(m == word[k:] + word[:k] for k in range(len(word))) else [word, m]
+
+
+def reading_counts(words: list[str], pattern: str) -> list[tuple[str, int, int]]:
+    """For each reading: how many of ``words`` (classes of rotations and mirror) contain
+    ``pattern`` with the mirror (some orientation does), and how many oriented patterns
+    do without it (the word and its mirror counted apart)."""
+    out = []
+    for name, reads in READINGS.items():
+        with_mirror = sum(any(reads(v, pattern) for v in orientations(w)) for w in words)
+        without = sum(reads(v, pattern) for w in words for v in orientations(w))
+        out.append((name, with_mirror, without))
+    return out
+
+
+def committed_census() -> dict | None:
+    """reports/census.json of the source checkout (``certify census``), or None."""
+    import json
+    from pathlib import Path
+    try:
+        return json.loads((Path(__file__).resolve().parents[1] / "reports" / "census.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+
+
+def readings_evidence(pattern: str) -> str:
+    """The counterexamples of the committed census under each reading of l. 515."""
+    doc = committed_census()
+    if not doc:
+        return "No committed census (reports/census.json): run `python -m certify census --max-length 16`."
+    feasible = doc["census"]["feasible"]
+    rows = [f"| {name} | {a} | {b} |" for name, a, b in reading_counts(feasible, pattern)]
+    return ("How \"contains ... as a subsequence\" is read, and the counterexamples under each reading among the "
+            f"{len(feasible)} classes with feasible self-similar data of the committed census (periods of at most "
+            f"{doc['census']['max_length']} collisions, reports/CENSUS.md):\n\n"
+            f"| Reading of \"contains {pattern}\" | classes, with the mirror {mirrored(pattern)} | oriented patterns, "
+            "without the mirror |\n|---|---:|---:|\n" + "\n".join(rows))
+
+
 @certificate("T28", "l. 515",
-             "Patterns containing abcab do not seem to have feasible self-similar data (an empirical remark, "
-             "tested on a census of the periodic patterns of blocks ab, cb, acb, cab).",
+             f"Remark 3.3: \"{QUOTE_T28}\" (a hedged remark, tested on a census of the periodic patterns of blocks "
+             "ab, cb, acb, cab).",
              printed=PRINTED_T28)
 def abcab_census(pattern):
     """Every class of periodic block patterns of at most LENGTH collisions that contains
@@ -128,6 +200,7 @@ def abcab_census(pattern):
             if r["undecided"]:
                 line += "; undecided: " + "; ".join(r["result"]["undecided"])
         ev.append(line)
+    ev.append(readings_evidence(pattern))
     named = f"{len(scope)} of at most {LENGTH} collisions" + (f" and {', '.join(extra)}" if extra else "")
     printed = Check(f"no periodic block pattern containing {pattern} (cyclically, or its mirror {mirror}) has "
                     f"feasible self-similar data: checked on the {named}, each decided and infeasible on every "
@@ -143,7 +216,8 @@ def abcab_census(pattern):
             + "; ".join(f"{r['word']} = {' '.join(r['blocks'])} on {_sets(r, 'feasible')}" for r in feasible)
             + f" (certified), the exact dynamics from each datum repeating the word for {PERIODS} periods",
             all(ok for ok, _ in replays), [text for _, text in replays], corrects=printed))
-    return conclude(checks + [printed], corrected, evidence=ev,
+    return conclude(checks + [printed], corrected, evidence=ev, kind=REFUTED_REMARK,
+                    misprint="l. 515, Remark 3.3: patterns containing abcab 'do not seem to have feasible initial data'",
                     note=f"An empirical remark, tested on every pattern of at most {LENGTH} collisions containing "
                          f"{pattern} and on the shortest counterexamples of the census (reports/CENSUS.md: "
                          "`python -m certify census --max-length L`).")

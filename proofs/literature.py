@@ -1,6 +1,6 @@
 """Facts from the literature used by the paper, certified with the same engine.
 
-T26 (remark after Theorem 3.1, l. 323-325): "The critical threshold of r, namely
+T26 (Remark 3.2, l. 323-325): "The critical threshold of r, namely
 r_crit,ababcb = 5-2√6, happens to be also the critical threshold for a different
 periodic pattern, namely (ab)^3(cb)^3 (see [CDKK, Table 1])."
 
@@ -200,7 +200,7 @@ def _threshold_certificate(word, threshold, digits, what):
                     any(lo == 0 and hi == thr for _, _, lo, hi in res.intervals("stable", 0)),
                     [f"stable: {_sets(res, 'stable')}", f"conditions: {'; '.join(res.conditions['stable'])}"]),
               Check("every point of ]0, 1[ decided", not res.undecided, res.undecided)]
-    ev = [f"`certify pattern {word}`: {res.verdict}", f"M = {res.matrix}", f"cp = `{res.cp}`",
+    ev = [f"`certify pattern {word}`: {res.verdict}", "M = `[" + ", ".join("[" + ", ".join(row) + "]" for row in res.matrix) + "]`", f"cp = `{res.cp}`",
           f"disc = `{res.discriminant}`", f"feasible: {_sets(res, 'feasible')}"]
     return checks, ev
 
@@ -208,7 +208,7 @@ def _threshold_certificate(word, threshold, digits, what):
 PRINTED_L1 = dict(word="ab", threshold="7-4√3", digits="0.07180")
 
 
-@certificate("L1", "l. 130, 1130",
+@certificate("L1", "l. 131, 1103, 1129",
              "Three particles: no collapse (no self-similar datum of ab) for r > 7-4√3; below, stable collapse.",
              printed=PRINTED_L1)
 def three_particles(word, threshold, digits):
@@ -255,7 +255,7 @@ def abcb_exists(word, P, r_exist, stability):
     re_ = roots[0] if len(roots) == 1 else None
     feas = _pieces(res, "feasible")
     checks = [Check(f"P = {P} has exactly one root in [0,1]", len(roots) == 1 and not at_ends,
-                    [f"roots in ]0,1[: {[a.describe() for a in roots]}"])]
+                    ["roots in ]0,1[: " + ("; ".join(a.describe() for a in roots) or "none")])]
     if re_ is None:
         return conclude(checks)
     checks.append(_digits_check("r_exist", re_, r_exist))
@@ -277,7 +277,7 @@ def abcb_exists(word, P, r_exist, stability):
               f"{', '.join(fmt(c) for c in uncovered_points) or 'none'} where the engine is undecided "
               "(a double eigenvalue: u is 0/0 in every row of the eigen-equation)",
               not gaps and explained, [f"feasible: {_sets(res, 'feasible')}", f"gaps: {gaps or 'none'}",
-                                       f"undecided: {res.undecided}"]),
+                                       "undecided: " + ("; ".join(res.undecided) or "none")]),
         Check(f"for r > r_exist no feasible candidate of {word}", bool(feas) and _top(feas) == re_,
               [f"sup of the feasible set: {fmt(_top(feas)) if feas else '∅'}"]),
         Check(f"{word} is {stability}: no stable self-similar datum for any r in ]0,1[",
@@ -345,7 +345,7 @@ PRINTED_L5 = dict(n2="[0.12754, 0.17157]", n3="[0.09452, 0.10102]", limit="7-4�
                   order="disjoint, accumulating on 7-4√3 from above")
 
 
-@certificate("L5", "l. 1124-1126, 1216",
+@certificate("L5", "l. 1123-1125, 1215",
              "Stability windows of (ab)^2(cb)^2 ≈ [0.12754, 0.17157] and (ab)^3(cb)^3 ≈ [0.09452, 0.10102]; the "
              "windows are disjoint and accumulate on 7-4√3 from above.",
              needs=["ab_cb_patterns"], printed=PRINTED_L5)
@@ -381,7 +381,7 @@ def windows(ab_cb_patterns, n2, n3, limit, order):
 PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant")
 
 
-@certificate("L6", "l. 1216",
+@certificate("L6", "l. 1215",
              "Conjecture (CDKK §7): the upper threshold of (ab)^n(cb)^n is where q_2(0) = 0 for the dominant "
              "eigenvector (tested for n = 2..6).",
              needs=["ab_cb_patterns"], printed=PRINTED_L6)
@@ -404,8 +404,8 @@ def q2_vanishes_at_threshold(ab_cb_patterns, criterion, branch):
         zero = vanishes_on_branch(cand.spectrum, u.numer, w[1], 0)
         pole = vanishes_on_branch(cand.spectrum, u.denom, w[1], 0)
         results[n] = zero and not pole
-        rows.append(f"n = {n}: r_n = {w[1].digits(10)}; numerator of q_2(0) = 0 there: {zero}; "
-                    f"denominator = 0: {pole}")
+        rows.append(f"n = {n}: r_n = {w[1].digits(10)}; numerator of q_2(0) = 0 there: {'yes' if zero else 'no'}; "
+                    f"denominator = 0: {'yes' if pole else 'no'}")
     holds_for = [n for n, ok in results.items() if ok]
     return conclude([Check(f"q_2(0) = 0 on the dominant branch at the upper threshold, for n = 2..{N_MAX}",
                            len(holds_for) == len(results), rows)],

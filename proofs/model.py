@@ -99,8 +99,9 @@ def collisions_separate(A, B, C, approaching, separating):
         checks.append(Check(f"after {letter}: q_{i + 1}' = -r q_{i + 1}, so {approaching} before the collision gives "
                             f"{separating} after it (0 < r < 1)", row == expected and turns,
                             [f"row {i + 1} of {letter.upper()}: `{show(row.tolist())}`",
-                             f"signs of q_i allowed before: {allowed}; after (-sign): "
-                             f"{[after.holds({Q_I: -s}) for s in allowed]}"]))
+                             f"signs of q_i allowed before: {', '.join('+' if s > 0 else '−' for s in allowed)}; "
+                             "the sign after (−sign) separating: "
+                             + ", ".join("yes" if after.holds({Q_I: -s}) else "no" for s in allowed)]))
     return conclude(checks)
 
 

@@ -54,7 +54,7 @@ def paper_note(key: str, render) -> str:
 def figure_links(*figs: str) -> str:
     """Links to the committed paper-resolution PNGs."""
     return " Figures at the paper's resolution: " + ", ".join(
-        f"[{f}](figures/fig{f}-paper.png)" for f in figs) + "."
+        f"[{F.cite(f)}](figures/fig{f}-paper.png)" for f in figs) + "."
 
 
 # --------------------------------------------------------------------------
@@ -83,7 +83,8 @@ def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
         Check(f"the orbits of a figure are a regular grid of {theta_values} values of θ0 × {phi_values} of φ0",
               len(set(np.round(theta0, 12))) == number(theta_values) and len(set(np.round(phi0, 12))) == number(phi_values)
               and len(theta0) == number(theta_values) * number(phi_values),
-              [f"θ0 = {sorted(set(np.round(theta0, 6)))}, φ0 = {sorted(set(np.round(phi0, 6)))} (paper_grid; the "
+              [f"θ0 = {', '.join(f'{t:.6f}' for t in sorted(set(np.round(theta0, 6))))}, φ0 = "
+               f"{', '.join(f'{t:.6f}' for t in sorted(set(np.round(phi0, 6))))} (paper_grid; the "
                "paper does not print its grid)"]),
     ]
     # the φ the engine keeps is the φ of the printed velocity q(b_n)
@@ -106,29 +107,40 @@ def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
 
 
 # --------------------------------------------------------------------------
-# N2: Figure 5.1
+# N2: Figure 6 (fig:Simul_1), our id 5.1
 
 PRINTED_N2 = dict(lo="0.072", hi="0.999", step="2.5\\times 10^{-4}", count="3709",
-                  windows_below="0.17", chaos_until="0.9", discrete_near="1", breaks_near="0.072")
+                  windows_below="0.17", chaos_until="0.9", discrete_near="1", segment_at="(0.08,\\pi/2)",
+                  breaks_near="0.072")
+NEAR = 0.001     # "close to the region r ≃ 0.072" (l. 1090): within 10^-3 of it, either side
+SEGMENT = 0.005  # "a short horizontal segment ... around (0.08, π/2)" (l. 1089): breaks within 0.005 of 0.08
 
 
 @certificate("N2", "l. 1071-1094",
-             "Figure 5.1, 0.072 ≤ r ≤ 0.999, Δr = 2.5e-4 (3709 values): windows of stability for r ≤ 0.17, "
-             "apparent chaos up to r ≈ 0.9, discrete ω-limit sets near r = 1, breaks accumulating near r ≈ 0.072.",
+             "Figure 6 (fig:Simul_1), 0.072 ≤ r ≤ 0.999, Δr = 2.5e-4 (3709 values): windows of stability for r ≤ 0.17, "
+             "apparent chaos up to r ≈ 0.9, discrete ω-limit sets near r = 1, a short segment of breaks around "
+             "(0.08, π/2), the breaks accumulated close to r ≃ 0.072.",
              needs=("section5_preview",), printed=PRINTED_N2)
-def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until, discrete_near, breaks_near):
-    """The preview of Figure 5.1 and a probe near r = 0.072 with the paper's lengths."""
+def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until, discrete_near, segment_at,
+               breaks_near):
+    """The preview of Figure 5.1, probes with the paper's lengths around the printed segment
+    of breaks (l. 1089) and near r = 0.072 on both sides of the figure's lower end (l. 1090)."""
     lo_, hi_, step_, count_ = number(lo), number(hi), number(step.replace("{", "").replace("}", "")), number(count)
     below, until, near1, near_b = (number(x) for x in (windows_below, chaos_until, discrete_near, breaks_near))
+    seg = number(segment_at.strip("()").split(",")[0])
+    segment_at = segment_at.replace("\\pi", "π").replace(",", ", ")
     d = section5_preview["5.1"]
     spec = F.SPECS["5.1"]
     points_below = F.fraction(d, lo_, below, lambda w: w.discrete)
     points_above = F.fraction(d, below + 0.01, until, lambda w: w.discrete)
     spread = F.fraction(d, below + 0.01, until, lambda w: w.kind == "spread")
     top = F.fraction(d, near1 - 0.01, near1, lambda w: w.visually_discrete)
-    edge = F.probe(np.linspace(0.072, 0.0745, 11))
-    breaks = np.concatenate([d.break_r(), edge.break_r()])
-    outside = F.probe(np.linspace(0.0716, 0.0719, 7)).break_r()     # just below the figure's range
+    edge = F.probe(np.linspace(lo_, lo_ + 0.0025, 11))
+    around = F.probe(np.linspace(seg - SEGMENT, seg + SEGMENT, 11))
+    breaks = np.concatenate([d.break_r(), edge.break_r(), around.break_r()])     # in the figure's range
+    outside = F.probe(np.linspace(near_b - 0.0004, near_b - 0.0001, 7)).break_r()   # just below it
+    on_segment = breaks[np.abs(breaks - seg) <= SEGMENT]
+    seen = np.concatenate([breaks, outside])
     checks = [
         Check(f"the printed grid is consistent: {lo} + k·{step}, k < {count}, ends at {hi}",
               abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and spec.count == count_ and spec.lo == lo_ and spec.hi == hi_,
@@ -144,29 +156,42 @@ def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until
         Check(f"discrete ω-limit sets near r = {discrete_near}: in [{near1 - 0.01:g}, {near1:g}] every orbit's points "
               f"lie in at most {F.MAX_PIECES} clusters narrower than a pixel (π/1000)", top[1] > 0 and top[0] == 1.0,
               [f"{top[0]:.0%} of {top[1]} values of r"]),
-        Check(f"breaks accumulate near r ≈ {breaks_near}: the engine breaks, and only within 0.005 of it",
-              breaks.size > 0 and bool(np.all(np.abs(breaks - near_b) <= 0.005)),
-              [f"{breaks.size} breaks (preview and a probe of 11 r in [0.072, 0.0745], 10^4 collisions), at r in "
-               f"[{breaks.min():.5f}, {breaks.max():.5f}]" if breaks.size else "no break",
-               f"just below the figure's range, 7 values of r in [0.0716, 0.0719] (7 − 4√3 ≈ 0.071797): "
-               f"{outside.size} breaks of 56 orbits, at r ≤ {outside.max():.5f}" if outside.size else
-               "no break in [0.0716, 0.0719] either"]),
+        Check(f"l. 1089: a short segment of breaks around {segment_at}: the engine breaks at some r of the "
+              f"figure's range within {SEGMENT} of {seg:g}", on_segment.size > 0,
+              [f"{breaks.size} breaks in the figure's range (its preview; probes of 11 r in [{lo}, {lo_ + 0.0025:g}] "
+               f"and 11 r in [{seg - SEGMENT:g}, {seg + SEGMENT:g}], 10^4 collisions)"
+               + (f", at r in [{breaks.min():.5f}, {breaks.max():.5f}]" if breaks.size else "")]),
+        Check(f"l. 1090: the breaks accumulate close to r ≃ {breaks_near}: the engine breaks, in the figure's range "
+              f"or just below it, and every break lies within {NEAR} of {breaks_near}",
+              seen.size > 0 and bool(np.all(np.abs(seen - near_b) <= NEAR)),
+              [f"just below the figure's range, 7 values of r in [{near_b - 0.0004:g}, {near_b - 0.0001:g}] "
+               f"(7 − 4√3 ≈ 0.071797): {outside.size} breaks of 56 orbits"
+               + (f", at r ≤ {outside.max():.5f}" if outside.size else "")]),
     ]
-    note = paper_note("5.1", lambda s: f"{s['r'][2]} values of r, {s['breaks']['count']} breaks at r in "
-                      f"[{s['breaks']['r_min']}, {s['breaks']['r_max']}]; ω-kinds per r: {s['kinds']}.") \
-        + figure_links("5.1")
-    return observe(checks, figures=[section5_figure(d)], note=note)
+    reason = (f"no break in the figure's range {lo} ≤ r ≤ {hi} (the paper's segment of breaks around {segment_at}, "
+              "l. 1089, is not there); " + (f"the engine breaks only just below it, at r ≤ {outside.max():.4f} "
+                                            f"(7 − 4√3 ≈ 0.07180), which is close to r ≃ {breaks_near} as l. 1090 says"
+                                            if outside.size else f"nor just below {lo}")
+              if not breaks.size else "")
+    note = paper_note("5.1", lambda s: f"{s['r'][2]} values of r, {breaks_text(s['breaks'])}; ω-limits per "
+                      "r: " + ", ".join(f"{v} {k}" for k, v in s["kinds"].items()) + ".") + figure_links("5.1")
+    return observe(checks, figures=[section5_figure(d)], note=note, reason=reason)
+
+
+def breaks_text(b: dict) -> str:
+    """``N breaks at r in [lo, hi]``, or ``no break``."""
+    return f"{b['count']} breaks at r in [{b['r_min']}, {b['r_max']}]" if b.get("count") else "no break"
 
 
 # --------------------------------------------------------------------------
-# N3: Figure 5.2, accumulation points per window
+# N3: Figure 7 (fig:Simul_2), our id 5.2, accumulation points per window
 
 PRINTED_N3 = dict(lo="0.075", hi="0.192", step="2.5\\times 10^{-5}", count="4681",
                   points=("4", "6", "8", "10"), windows=("(ab)^2(cb)^2", "(ab)^3(cb)^3", "third", "fourth"))
 
 
 @certificate("N3", "l. 1096-1128",
-             "Figure 5.2, 0.075 ≤ r ≤ 0.192, Δr = 2.5e-5 (4681 values): the orbits accumulate around 4 points in "
+             "Figure 7 (fig:Simul_2), 0.075 ≤ r ≤ 0.192, Δr = 2.5e-5 (4681 values): the orbits accumulate around 4 points in "
              "the (ab)^2(cb)^2 window, 6 in the (ab)^3(cb)^3 window, 8 and 10 in the next two.",
              needs=("section5_preview",), printed=PRINTED_N3)
 def figure_5_2(section5_preview, lo, hi, step, count, points, windows):
@@ -197,7 +222,7 @@ def figure_5_2(section5_preview, lo, hi, step, count, points, windows):
 PRINTED_N4 = dict(r_below="0.078", n_from="6", accumulate_above="7-4\\sqrt{3}")
 
 
-@certificate("N4", "l. 1128-1130",
+@certificate("N4", "l. 1127-1128",
              "For r below 0.078 the program cannot detect (ab)^n(cb)^n for n ≥ 6 (the dominant eigenvector of "
              "J(BA)^n has a component below the computer precision); the windows should exist for every n ≥ 2, "
              "accumulating above 7-4√3.", printed=PRINTED_N4)
@@ -220,8 +245,8 @@ def below_0078(r_below, n_from, accumulate_above):
     followed = [n for n in seen if seen[n] == 2 * n]
     checks.append(Check(f"a float64 program cannot follow (ab)^n(cb)^n for n ≥ {n_from} below r = {r_below}",
                         not followed,
-                        [f"our float64 engine (margin rule, rescaled normals), at r = r_max(n) − 5 % of the gap to "
-                         f"r_max(n+1): " + ", ".join(f"n = {n}: {seen[n]} points" for n in seen)]))
+                        ["our float64 engine (margin rule, rescaled normals), at r = r_max(n) − 5 % of the gap to "
+                         "r_max(n+1): " + ", ".join(f"n = {n}: {seen[n]} points" for n in seen)]))
     r6 = th[n0] - 0.05 * (th[n0] - th[n0 + 1])
     small = F.min_component(n0, r6)
     checks.append(Check(f"at n = {n_from} the dominant eigenvector has a component below the float64 precision "
@@ -258,7 +283,13 @@ def below_0078(r_below, n_from, accumulate_above):
             "rescaled by powers of 2 and every sign is taken with a componentwise margin, so a small component "
             "keeps its relative accuracy. What limits a float program is the exponent range and the slow "
             "convergence of the orbit, not the 53-bit mantissa alone.")
-    return observe(checks, evidence=ev, note=note)
+    first_below = next((n for n, c in zip(ns, below) if c and c < 2.0 ** -52), None) if committed else None
+    reason = (f"our float64 engine follows (ab)^n(cb)^n below r = {r_below} for n = {', '.join(map(str, followed))}"
+              + (f" (up to n = {f64} in the committed search)" if f64 else "")
+              + f"; and at n = {n_from} the smallest component of the eigenvector is {small:.1e}, far above 2^-52"
+              + (f" (it first drops below at n = {first_below})" if first_below else "")
+              + ": the printed cause does not hold")
+    return observe(checks, evidence=ev, note=note, reason=reason if followed and small >= 2.0 ** -52 else "")
 
 
 # --------------------------------------------------------------------------
@@ -269,7 +300,7 @@ PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="
 
 @certificate("N5", "l. 1148-1160",
              "Transitory region 0.172 ≤ r ≤ 0.176: the orbits accumulate on finitely many points for r fixed; "
-             "Figure 5.4 at Δr = 1e-6 (5001 values, 0.171 ≤ r ≤ 0.176).", needs=("section5_preview",),
+             "Figure 9 (fig:Simul_3) at Δr = 1e-6 (5001 values, 0.171 ≤ r ≤ 0.176).", needs=("section5_preview",),
              printed=PRINTED_N5)
 def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count):
     """The kind of ω-limit of the 8 orbits at 21 values of r in the printed region and 9 just
@@ -305,10 +336,10 @@ PRINTED_N6 = dict(stripes=("0.1845", "0.1896"), special="0.184525", lo="0.1845",
 
 @certificate("N6", "l. 1162-1208",
              "Thin stripes near r ≈ 0.1845 and r ≈ 0.1896; at r ≈ 0.184525 all orbits have discrete ω-limit sets; "
-             "Figures 5.5-5.8 at Δr = 1e-7 (1001 values, 0.1845 ≤ r ≤ 0.1846).", needs=("section5_preview",),
+             "Figure 10 (fig:Simul_2_zoom_3); Figures 11a-11c (fig:Simul_4, fig:Simul_5, fig:Simul_6) at Δr = 1e-7 (1001 values, 0.1845 ≤ r ≤ 0.1846).", needs=("section5_preview",),
              printed=PRINTED_N6)
 def stripes(section5_preview, stripes, special, lo, hi, step, count):
-    """Probes at Δr = 2.5e-5 (the step of Figure 5.2) around each printed stripe: the coverage of
+    """Probes at Δr = 2.5e-5 (the step of Figure 7) around each printed stripe: the coverage of
     [0, π] by the 8 orbits drops there; a probe at Δr = 1e-7 around the printed special value:
     the r where the widest cluster of any orbit is narrowest, and whether every orbit is discrete."""
     lo_, hi_, step_, count_, r_star = (number(x.replace("{", "").replace("}", ""))
@@ -337,8 +368,8 @@ def stripes(section5_preview, stripes, special, lo, hi, step, count):
                          f"{[F.omega(fine.phi[k, m]).clusters for m in range(fine.phi.shape[1])]}; at r ± 2e-6: "
                          f"{widest[0]:.1e}, {widest[-1]:.1e} rad (41 values of r at Δr = 1e-7, 10^4 collisions)"]))
     figs = [section5_figure(section5_preview[f]) for f in ("5.5", "5.6", "5.7", "5.8")]
-    note = paper_note("n6", lambda s: f"the four lowest coverages of [0, π] in Figure 5.5 at r = {s['stripes']} "
-                      f"({s['coverages']}); in Figure 5.6 the "
+    note = paper_note("n6", lambda s: f"the four lowest coverages of [0, π] in Figure 10 at r = {s['stripes']} "
+                      f"({s['coverages']}); in Figure 11a the "
                       f"widest cluster is narrowest at r = {s['special_r']:.7f} ({s['special_width']:.1e} rad).") \
         + figure_links("5.5", "5.6", "5.7", "5.8")
     return observe(checks, figures=figs, note=note)
@@ -385,10 +416,10 @@ def quasi_periodic(section5_preview, grows_below, not_discrete_at):
         Check(f"each orbit's ω-limit looks like a finite union of intervals: its kept points form at most "
               f"{F.MAX_INTERVALS} intervals at a resolution of {coarse} rad (in the thin stripe and in the region "
               "of apparent chaos)", bool(pieces) and max(pieces) <= F.MAX_INTERVALS,
-              [f"intervals per orbit over {len(pieces)} orbits (preview of Figure 5.6 and the 8 values of r above): "
+              [f"intervals per orbit over {len(pieces)} orbits (preview of Figure 11a and the 8 values of r above): "
                + ", ".join(f"{c}: {pieces.count(c)}" for c in sorted(set(pieces)))]),
     ]
     note = ("Evidence, not a proof of quasi-periodicity: counts and widths of clusters of kept angles (no rotation "
-            "numbers). " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 5.6: "
-                                        f"{s['stripe_intervals']}; in Figure 5.1 for 0.2 ≤ r ≤ 0.9: {s['chaos_intervals']}."))
+            "numbers). " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 11a: "
+                                        f"{s['stripe_intervals']}; in Figure 6 for 0.2 ≤ r ≤ 0.9: {s['chaos_intervals']}."))
     return observe(checks, note=note)

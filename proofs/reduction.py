@@ -1,5 +1,5 @@
 """Section 4 on the dynamics (l. 839-1051): the spherical reduction against the
-particle system, Proposition 4.2, Corollary 4.3 and Remark 4.2.
+particle system, Proposition 4.4, Corollary 4.5 and Remark 4.2.
 
 The particle system is :mod:`certify.dynamics.simulate` in exact rationals (fmpq); the
 reduction map is :mod:`certify.dynamics.reduction` in its three representations: projective
@@ -31,7 +31,7 @@ from certify.algebra import precision, r, show, statements
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS
-from certify.run import Check, certificate, conclude, quantity
+from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude, quantity
 from proofs import reduction_cones as RC
 from proofs import reduction_identities as I
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
@@ -41,7 +41,7 @@ SEED = 4_1_2024
 N_DATA = 300                 # random initial data (each with a second datum on its plane)
 N_COLLISIONS = 200           # collisions asked of the particle system
 N_REDUCTION = 250            # collisions of the reduction map per datum
-SCAN_ORBITS, SCAN_LENGTH = 100, 1000      # the scan of Proposition 4.2: 10^5 collisions
+SCAN_ORBITS, SCAN_LENGTH = 100, 1000      # the scan of Proposition 4.4: 10^5 collisions
 
 
 # ---------------------------------------------------------------- random data
@@ -386,7 +386,7 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
                            lemmas and a_c.following == "c" and on_fixed.holds and refuted,
                            on_fixed.evidence + [witness], corrects=printed[2]), printed[3]]
     evidence = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
-    return conclude(printed, corrected, evidence=evidence)
+    return conclude(printed, corrected, evidence=evidence, kind=MISPRINT, misprint=I.E_Y_FOR_E_Z)
 
 
 def tally_runs(section4_data, orientation, to_b, to_c) -> str:
@@ -462,7 +462,7 @@ def implication(text: str) -> tuple[str, str]:
 
 
 @certificate("S9.2", "l. 997-1035",
-             "Proposition 4.2 for every orbit of the reduction map, in its projective form: after a then c (c then a), "
+             "Proposition 4.4 for every orbit of the reduction map, in its projective form: after a then c (c then a), "
              "on the whole cone of such states the next normal n' = cof(C) n (cof(A) n) has signs that exclude a (c) "
              "as the next collision.  Supported by no aca, no cac in 10^5 collisions of exact orbits and in the exact "
              "particle runs.",
@@ -538,13 +538,13 @@ def parses(word: str, blocks: list[str]) -> bool:
 
 
 @certificate("S10", "l. 1037-1051",
-             "Corollary 4.3: b occurs infinitely often, and c_k = b implies c_{k+2} = b or c_{k+3} = b; every "
+             "Corollary 4.5: b occurs infinitely often, and c_k = b implies c_{k+2} = b or c_{k+3} = b; Remark 4.6: every "
              "pattern c_1 c_2 … is a concatenation of the blocks ab, cb, acb, cab.",
              needs=["reduction_cones", "reduction_scan"], printed=PRINTED_S10)
 def b_recurs(reduction_cones, reduction_scan, window, blocks):
     """For every orbit: every window of an orbit's word is admissible, that is its pairs
     are proven steps (the step lemma on the six cones: the next contact is another one)
-    and its triples are not excluded by the sign of the next normal (Proposition 4.2 as
+    and its triples are not excluded by the sign of the next normal (Proposition 4.4 as
     in S9.2: no aca, no cac).  The statements follow by exhausting the admissible
     windows.  The block decomposition fails for every orbit whose first collision is b
     (no block starts with b), as for every state of a cone whose next contact is b; it
@@ -587,9 +587,12 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
     evidence = [supporting(f"{window} at {s_good} of {s_seen} collisions b of the scan ({len(scan)} exact orbits, "
                            f"{sum(map(len, scan))} collisions); {sum(parses(w, blks) for w in scan)} of {len(scan)} "
                            f"orbit words parse as printed, {len(leading_b)} start with b, e.g. "
-                           f"`{(leading_b or [''])[0][:24]}…`, and all parse without that b: "
-                           f"{all(parses(w[1:] if w.startswith('b') else w, blks) for w in scan)}.")]
-    return conclude(printed, corrected, evidence=evidence)
+                           f"`{(leading_b or [''])[0][:24]}…`; without that b, "
+                           + ("all parse." if all(parses(w[1:] if w.startswith('b') else w, blks) for w in scan)
+                              else "some still do not parse."))]
+    return conclude(printed, corrected, evidence=evidence, kind=FALSE_STATEMENT,
+                    misprint="l. 1049-1051, Remark 4.6: 'every pattern is a concatenation of ab, cb, acb, cab' is "
+                             "false for a pattern that starts with b (Corollary 4.5 holds)")
 
 
 # ---------------------------------------------------------------- S11

@@ -1,7 +1,7 @@
 """Section 4: one step of the reduction map on a whole cone of states, in exact symbolic
 arithmetic.  These are the proofs, for every orbit and not on samples, behind Remark 4.2
 (S11: infinitely many collisions off the corners; the particles realise a prefix),
-Proposition 4.2 (S9.2: no aca, no cac) and Corollary 4.3 (S10).
+Proposition 4.4 (S9.2: no aca, no cac) and Corollary 4.5 (S10).
 
 A state of the projective map (``certify.dynamics.reduction``) is a contact i and a normal n of
 the plane P, any non-zero real vector up to a positive factor, oriented by n_t > 0

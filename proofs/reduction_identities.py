@@ -15,9 +15,12 @@ import sympy as sp
 from certify.algebra import trig as T
 from certify.algebra import lam, statements
 from certify.dynamics import INDEX, LETTERS, collision_matrix
-from certify.run import Check, certificate, conclude
+from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude
 
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
+
+# One misprint, false in S8.1 (the formula) and S8.2 (the reduction it gives): counted once.
+E_Y_FOR_E_Z = "l. 980: e_y printed for e_z in the trilinear formula for ũ(1) after a contact a and a collision c"
 
 cθ, cφ, sθ, sφ = T.cθ, T.cφ, T.sθ, T.sφ  # cos θ, cos φ, sin θ, sin φ
 
@@ -175,7 +178,7 @@ TRILINEAR_C = "cross(cross(u0, ey), C*cross(u0, cross(ex, u0)))"                
 TRILINEAR_C_CORRECTION = ("(u0, ey)", "(u0, ez)")     # stated: for a collision c, p(1) ∝ u(0) ∧ e_z (l. 962)
 TRILINEAR_C_CORRECTED = statements.corrected(TRILINEAR_C, *TRILINEAR_C_CORRECTION)
 
-# ---------------------------------------------------------------- as printed: Proposition 4.2 (l. 1005-1034)
+# ---------------------------------------------------------------- as printed: Proposition 4.4 (l. 1005-1034)
 P_NEXT_AC = "(sin(θ)*sin(φ), -cos(φ), 0)"                                       # l. 1012
 Q_NEXT_AC = "Cq - dot(Cq, pk)*pk"                                               # l. 1016
 C_TIMES_QK = """
@@ -211,7 +214,8 @@ def links(name: str, members: list, lines: str) -> list[Check]:
             for k in range(len(members) - 1)]
 
 
-def concluded(printed: list[Check], corrected: list[Check] | None = None, note: str = ""):
+def concluded(printed: list[Check], corrected: list[Check] | None = None, note: str = "", kind: str = "",
+              misprint: str = ""):
     """:func:`conclude`, where the corrected computation is the printed one with the stated
     corrections applied, check for check: each failing printed check is corrected by the
     check in the same place (unless a correction already names it)."""
@@ -221,7 +225,7 @@ def concluded(printed: list[Check], corrected: list[Check] | None = None, note: 
         for wrong, fix in zip(printed, corrected):
             if not wrong.holds and id(wrong) not in named and fix.corrects is None and fix is not wrong:
                 fix.corrects = wrong
-    return conclude(printed, corrected, note=note)
+    return conclude(printed, corrected, note=note, kind=kind, misprint=misprint)
 
 
 def result_check(statement: str, res: T.Result) -> Check:
@@ -399,8 +403,8 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
     bc = [solves("t_c", TCB, pb, qb, 2, "787"), solves("t_a", TAB, pb, qb, 0, "787"),
           combined(f"l. 789: t_c is the smallest positive collision time iff {smallest_bc} (cos φ > 0: t_c < 0 ⇒ t_a < 0, "
                    "both positive ⇒ t_c < t_a; cos φ < 0: both positive ⇒ t_a < t_c, which happens; cos φ = 0: "
-                   "t_c = t_a)", proofs + [T.Result(read == first, [f"the printed condition for cos φ > 0, < 0, = 0: "
-                                                                     f"{[read[s] for s in first]}"])])]
+                   "t_c = t_a)", proofs + [T.Result(read == first, ["the printed condition for cos φ > 0, < 0, = 0: "
+                                                                     + ", ".join("yes" if read[s] else "no" for s in first)])])]
     known = {T_C - T_B: 1} if R["order+"].holds else {}              # certified: t_c - t_b > 0
 
     def order_check(label, text):
@@ -413,6 +417,7 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
     as_printed = order_check("l. 628", order)
     corrected_order = order_check("l. 628 corrected", statements.corrected(order, *ORDER_CORRECTION))
     return concluded(common + [as_printed] + conclusion + bc, common + [corrected_order] + conclusion + bc,
+                     kind=MISPRINT, misprint="l. 628: 'smaller' printed for 'larger' (t_c and t_b when cos φ > 0)",
                     note="With 'smaller', c would come first and the conclusion 'the first collision is b' would not "
                          "follow; with 'larger' the case analysis proves it.")
 
@@ -474,7 +479,7 @@ def reduction_conclusion(chains: dict, p0_text: str, q_text: str, letter: str) -
                          "(p_λ(1) times the denominator of t_λ)", T.parallel(pl.cross(K * q), p1.cross(K * q0)))]
 
 
-def certify_case(chains, p0, q, letter, lines, corrections=None, note=""):
+def certify_case(chains, p0, q, letter, lines, corrections=None, note="", misprint=""):
     """Printed checks; corrected checks = the same with the stated corrections (old text →
     new text in one member of a chain) applied.  A check that reads the same words in
     both names the member it was computed with, so that the errata show the change; a
@@ -497,10 +502,10 @@ def certify_case(chains, p0, q, letter, lines, corrections=None, note=""):
             for index, member, new_member in changed:
                 wrong.statement += f", with member {index + 1} as printed, `{member}`"
                 fix.statement += f", with member {index + 1} corrected, `{new_member}`"
-    return concluded(printed, corrected, note=note)
+    return concluded(printed, corrected, note=note, kind=MISPRINT, misprint=misprint)
 
 
-@certificate("S3", "l. 632-684", "Case ab: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(sinφ cosθ, 0, cosφ) "
+@certificate("S3", "l. 630-703", "Case ab: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(sinφ cosθ, 0, cosφ) "
              "for every λ; the printed B q(0), cross product, B e_r and (B e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
              printed=dict(p0=P0_A, q=Q_A, **AB))
 def case_ab(p0, q, **chains):
@@ -508,18 +513,19 @@ def case_ab(p0, q, **chains):
     return certify_case(chains, p0, q, "b", dict(t="641-645", p="649-656", x="676-682", e="686", d="690-701"))
 
 
-@certificate("S4", "l. 686-738", "Case ac: the printed t_λ; p_λ(1) = (1/(cosφ cosθ + λ sinθ))(-sinφ sinθ, cosφ, 0) "
+@certificate("S4", "l. 705-763", "Case ac: the printed t_λ; p_λ(1) = (1/(cosφ cosθ + λ sinθ))(-sinφ sinθ, cosφ, 0) "
              "for every λ; the printed C q(0), cross product, C e_r and (C e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
              printed=dict(p0=P0_A, q=Q_A, **AC))
 def case_ac(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations; l. 734 (left) corrected."""
     return certify_case(chains, p0, q, "c", dict(t="708-712", p="716-726", x="734-744", e="748", d="752-761"),
-                        AC_CORRECTION, note="l. 734 prints (-sinφ sinθ, cosθ, 0) ∧ (C q(0)) where p(1) ∝ "
+                        AC_CORRECTION, misprint="l. 734: cos θ printed for cos φ in p(1)",
+                        note="l. 734 prints (-sinφ sinθ, cosθ, 0) ∧ (C q(0)) where p(1) ∝ "
                         "(-sinφ sinθ, cosφ, 0) (l. 722-726, and l. 735): a misprint; the rest of the "
                         "computation uses cos φ and the conclusion (C e_r)·[p(1) ∧ q(1)] = 0 holds.")
 
 
-@certificate("S5", "l. 739-834", "Case bc: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(cosφ, sinφ cosθ, 0) "
+@certificate("S5", "l. 765-845", "Case bc: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(cosφ, sinφ cosθ, 0) "
              "for every λ; the printed C q(0), cross product, C e_r and (C e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
              printed=dict(p0=P0_B, q=Q_B, **BC))
 def case_bc(p0, q, **chains):
@@ -610,7 +616,7 @@ def not_normal(u, p, H: T.Signs, tφ: str) -> list[str]:
     d = u.dot(p)
     pt = T.point("1/2", tφ, r="1/3")
     return T.is_zero(d).evidence + [f"at cos θ = {pt[cθ]}, cos φ = {pt[cφ]}, r = 1/3: ũ(1)·p(1) = {T.at(d, pt)}"
-                                    f" (hypotheses hold there: {T.satisfied(H, pt)})"]
+                                    f" (hypotheses hold there: {'yes' if T.satisfied(H, pt) else 'no'})"]
 
 
 def trilinear(text: str, letter: str, u0, p1, q0, H: T.Signs, axis, tφ: str) -> Check:
@@ -660,7 +666,7 @@ def vectorial_version(p0, q0, u0, ey_dot_u0, orientation, u0_wedge_ey, u0_wedge_
     corrected_c = (trilinear(fixed_c, "C", u0, p1c, q0, neg, axes["c"], "2") if fixed_c else
                    Check(f"the stated correction `{TRILINEAR_C_CORRECTION[0]}` → `{TRILINEAR_C_CORRECTION[1]}` "
                          f"applies to the printed `{trilinear_c}`", False))
-    return concluded(checks + [printed_c], checks + [corrected_c],
+    return concluded(checks + [printed_c], checks + [corrected_c], kind=MISPRINT, misprint=E_Y_FOR_E_Z,
                     note="Contacts: the paper writes k = 1, 2, 3 for the contacts a, b, c in the orientation convention "
                          "(l. 949), where k also indexes the collisions.  For a collision c, p(1) ∝ u(0) ∧ e_z "
                          "(l. 962), so the factor [u(0) ∧ e_y] of l. 980 must be [u(0) ∧ e_z].")
@@ -705,7 +711,7 @@ def next_angle_sign(contact: str, letter: str, cos_phi: int, axis_index: int, fo
 
 
 @certificate("S9.1", "l. 997-1035",
-             "Proposition 4.2: no aca and no cac, by the printed argument: after a then c, q(k+1) ∝ Cq(k) - "
+             "Proposition 4.4: no aca and no cac, by the printed argument: after a then c, q(k+1) ∝ Cq(k) - "
              "(Cq(k)·p(k))p(k) as printed, whose first component sin φ > 0 gives cos φ' < 0, so the next collision is b.",
              printed=dict(p_k=CONTACT_P0["a"], q_k=CONTACT_Q0["a"], p_next=P_NEXT_AC, q_next=Q_NEXT_AC,
                           C_times_qk=C_TIMES_QK, projection=PROJECTION_CHAIN, form_c=FORM_C,
@@ -761,7 +767,9 @@ def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read
         frame_lemma("a", CONTACT_P0["a"], CONTACT_Q0["a"]),
         *cac, then_b[1],
         Check("no cac: after c then a, cos φ' > 0 and the next collision is b", all(cac) and then_b[1].holds)]
-    return concluded(algebra + [vector_claim, concl], corrected,
+    return concluded(algebra + [vector_claim, concl], corrected, kind=FALSE_STATEMENT,
+                     misprint="l. 1014-1016: q(k+1) projected on p(k)^⊥, not p(k+1)^⊥ (a step of the proof of "
+                              "Proposition 4.4; the proposition holds)",
                     note="The printed proof projects C q(k) on p(k)^⊥ instead of p(k+1)^⊥; the proposition holds, "
                          "by the sign of (p(k+1) ∧ C q(k))_z read on any representative of the velocity.  The cac case "
                          "is done directly (the paper: 'by symmetry').")

@@ -9,7 +9,7 @@ from certify import cli
 from certify.patterns import census
 from certify.run import census as run_census
 from certify.run.executors import Serial, executor
-from certify.run.runner import CERTIFICATES, ERRATUM, FAIL, PASS, load_all, run_certificate
+from certify.run.runner import CERTIFICATES, ERRATUM, FAIL, load_all, run_certificate
 from proofs import census as T28
 
 load_all()
@@ -239,3 +239,38 @@ def test_t28_mutation_another_pattern_is_not_passed():
 
 def test_t28_mutation_an_unreadable_pattern_fails():
     assert run_certificate(CERTIFICATES["T28"], overrides={"pattern": "abxab"}).status == FAIL
+
+
+def test_t28_quotes_the_remark_word_for_word_and_is_a_refuted_remark(t28):
+    from tests.paper import plain_line
+    assert T28.QUOTE_T28 in plain_line(515)
+    assert T28.QUOTE_T28 in CERTIFICATES["T28"].statement
+    assert t28.kind == "refuted remark" and "Remark 3.3" in t28.misprint
+
+
+def test_t28_counts_the_counterexamples_under_each_reading():
+    """abacbacbcb contains abcab only in its mirror; ababcb (Theorem 3.1) contains it only
+    as letters in order, not consecutive: under that reading the theorem's own pattern
+    would refute the remark."""
+    counts = {name.split(" ")[0]: (a, b) for name, a, b in T28.reading_counts(["abacbacbcb"], "abcab")}
+    assert counts == {"consecutive": (1, 1), "letters": (1, 2)}
+    theorem = {name.split(" ")[0]: (a, b) for name, a, b in T28.reading_counts(["ababcb"], "abcab")}
+    assert theorem == {"consecutive": (0, 0), "letters": (1, 1)}
+    assert T28.orientations("abcb") == ["abcb"] and T28.orientations("abacb") == ["abacb", "cbcab"]
+
+
+def test_t28_shows_the_readings_table(t28):
+    table = [e for e in t28.evidence if "Reading of" in e]
+    assert table and "| consecutive letters of the periodic word (cyclically) |" in table[0]
+
+
+def test_a_shorter_census_does_not_silently_replace_a_longer_one(tmp_path, capsys):
+    assert cli.main(["census", "--max-length", "4", "--out", str(tmp_path), "--jobs", "1"]) == 0
+    before = (tmp_path / "census.json").read_bytes()
+    capsys.readouterr()
+    assert cli.main(["census", "--max-length", "3", "--out", str(tmp_path), "--jobs", "1"]) == 2
+    err = capsys.readouterr().err
+    assert "holds a census up to length 4" in err and err.count("\n") == 1
+    assert (tmp_path / "census.json").read_bytes() == before
+    assert cli.main(["census", "--max-length", "3", "--out", str(tmp_path), "--jobs", "1", "--force"]) == 0
+    assert json.loads((tmp_path / "census.json").read_text())["census"]["max_length"] == 3

@@ -54,6 +54,7 @@ def test_every_erratum_row_shows_what_was_printed_and_what_is_true():
     results, _ = runner.run(errata, jobs=2)
     for cert, outcome in results:
         assert outcome.status == runner.ERRATUM, cert.id
+        assert outcome.kind in runner.ERRATUM_KINDS and outcome.misprint, cert.id
         pairs = report.erratum_pairs(outcome)
         assert pairs, cert.id
         for wrong, fixes in pairs:
@@ -61,3 +62,22 @@ def test_every_erratum_row_shows_what_was_printed_and_what_is_true():
             for fix in fixes:
                 assert runner.holds(fix) and fix.statement != wrong.statement, (cert.id, fix.statement)
                 assert report.changes(wrong.statement, fix.statement), (cert.id, fix.statement)
+
+
+def test_the_committed_report_says_each_erratum_kind_and_each_disagreement_reason():
+    import json
+    data = json.loads((ROOT / "reports" / "report.json").read_text(encoding="utf-8"))
+    for c in data["certificates"]:
+        if c["status"] == runner.ERRATUM:
+            assert c["erratum"]["kind"] in runner.ERRATUM_KINDS and c["erratum"]["misprint"], c["id"]
+        if c["status"] == runner.OBSERVED and c["agrees"] is False:
+            assert c["reason"] and "\n" not in c["reason"], c["id"]
+    errors = data["errors_of_the_paper"]
+    assert sum(len(e["certificates"]) for e in errors) == data["summary"][runner.ERRATUM]
+
+
+def test_the_committed_report_shows_no_python_values():
+    """Evidence is written for a reader: no reprs of lists of booleans, numpy scalars or None."""
+    text = (ROOT / "reports" / "REPORT.md").read_text(encoding="utf-8")
+    for leak in ("np.float64", "[True", "[False", ": True", ": False", "None", "['"):
+        assert leak not in text, leak

@@ -39,7 +39,12 @@ def passing():
 
 def erratum():
     wrong = Check("x > 0 as printed", False, ["off by a sign"])
-    return conclude([wrong], corrected=[Check("x < 0 with the sign corrected", True, corrects=wrong)])
+    return conclude([wrong], corrected=[Check("x < 0 with the sign corrected", True, corrects=wrong)],
+                    kind="misprint", misprint="l. 2: > printed for <")
+
+
+def disagreeing():
+    return runner.observe([Check("seen as printed", False)], reason="not seen: the engine shows otherwise")
 
 
 def observed():
@@ -86,8 +91,10 @@ def test_all_writes_report_json_timings_and_figures(fake, tmp_path, capsys):
         assert (out / name).is_file(), name
     assert "![X3: seen](figures/seen.png)" in (out / "REPORT.md").read_text(encoding="utf-8")
     std = capsys.readouterr()
-    assert lines(std.out)[-3:] == ["3 certificates: 1 PASS, 1 ERRATUM, 0 FAIL, 1 OBSERVED",
-                                   "errata (the paper is wrong, a correction is certified): X2",
+    assert lines(std.out)[-4:] == ["3 certificates: 1 PASS, 1 ERRATUM, 0 FAIL, 1 OBSERVED",
+                                   "errata (the paper is wrong, a correction is certified): 1 distinct error of "
+                                   "the paper, in 1 certificate: 1 misprint (in 1 certificate)",
+                                   "  X2: misprint: l. 2: > printed for <",
                                    f"wrote {out / 'REPORT.md'}, report.json, figures/ (1 file)"]
     assert std.err == ""                        # stderr is not a terminal: no progress
 
@@ -114,11 +121,34 @@ def test_all_check_fails_on_missing_then_stale_report(fake, tmp_path, capsys):
     assert (out / "REPORT.md").read_text(encoding="utf-8") == fresh     # rewritten anyway
 
 
+def test_a_disagreement_is_said_up_front_with_its_reason(fake, tmp_path, capsys):
+    """An observation that does not agree with the paper: OBSERVED, disagrees, with its
+    one-line reason, under its line, in the last lines of `all`, and in the report's
+    summary, contents, table and heading."""
+    fake("X5", disagreeing)
+    assert cli.main(["run", "X5"]) == 0
+    out = lines(capsys.readouterr().out)
+    assert out[0].split()[:3] == ["X5", "OBSERVED,", "disagrees"]
+    assert out[1].strip() == "≠ does not agree with the paper: not seen: the engine shows otherwise"
+    assert out[-2:] == ["disagree with the paper (numerical observations):",
+                        "  X5: not seen: the engine shows otherwise"]
+    assert out[-3].endswith("1 OBSERVED (1 of them disagrees with the paper)")
+    assert cli.main(["all", "--out", str(tmp_path)]) == 0
+    assert "  X5: not seen: the engine shows otherwise" in lines(capsys.readouterr().out)
+    text = (tmp_path / "REPORT.md").read_text(encoding="utf-8")
+    summary = text.split("## All certificates")[0]
+    assert "| of which disagree with the paper | 1 |" in summary
+    assert "[X5](#cert-x5) OBSERVED, disagrees" in summary
+    assert "- OBSERVED, disagrees: [X5](#cert-x5) (l. 4): not seen: the engine shows otherwise" in summary
+    assert "| OBSERVED, disagrees |" in text.split("## All certificates")[1]
+    assert "**Does not agree with the paper:** not seen: the engine shows otherwise" in text
+
+
 def test_a_fail_gives_exit_code_1(fake, tmp_path, capsys):
     fake("X4", broken)
     assert cli.main(["all", "--out", str(tmp_path)]) == 1
     std = capsys.readouterr()
-    assert "1 FAIL" in lines(std.out)[-3]
+    assert "1 FAIL" in lines(std.out)[-4]
     assert lines(std.err) == ["certify: FAIL: X4"]
 
 
@@ -138,14 +168,17 @@ def test_run_prints_verdicts_and_writes_nothing(fake, tmp_path, monkeypatch, cap
     assert cli.main(["run", "X2", "X4", "X3"]) == 1
     out = lines(capsys.readouterr().out)
     assert out[0].split()[:2] == ["X2", "ERRATUM"] and out[0].endswith("claim X2 |x|")
-    assert out[1].split() == ["✗", "as", "printed:", "x", ">", "0", "as", "printed"]
-    assert out[2].split() == ["✓", "corrected:", "x", "<", "0", "with", "the", "sign", "corrected"]
-    assert out[3].split() == ["changed:", ">", "→", "<;", "as", "printed", "→", "with", "the", "sign", "corrected"]
-    assert out[4].split()[:2] == ["X3", "OBSERVED"]
-    assert out[5].split()[:2] == ["X4", "FAIL"]
-    assert "✗ the certificate ran to completion: `ZeroDivisionError: division by zero`" in out[6]
-    assert out[-2] == "3 certificates: 0 PASS, 1 ERRATUM, 1 FAIL, 1 OBSERVED"
-    assert out[-1] == "errata (the paper is wrong, a correction is certified): X2"
+    assert out[1].split() == ["misprint:", "l.", "2:", ">", "printed", "for", "<"]
+    assert out[2].split() == ["✗", "as", "printed:", "x", ">", "0", "as", "printed"]
+    assert out[3].split() == ["✓", "corrected:", "x", "<", "0", "with", "the", "sign", "corrected"]
+    assert out[4].split() == ["changed:", ">", "→", "<;", "as", "printed", "→", "with", "the", "sign", "corrected"]
+    assert out[5].split()[:2] == ["X3", "OBSERVED"]
+    assert out[6].split()[:2] == ["X4", "FAIL"]
+    assert "✗ the certificate ran to completion: `ZeroDivisionError: division by zero`" in out[7]
+    assert out[-3] == "3 certificates: 0 PASS, 1 ERRATUM, 1 FAIL, 1 OBSERVED"
+    assert out[-2] == ("errata (the paper is wrong, a correction is certified): 1 distinct error of the paper, "
+                       "in 1 certificate: 1 misprint (in 1 certificate)")
+    assert out[-1] == "  X2: misprint: l. 2: > printed for <"
     assert list(tmp_path.iterdir()) == []       # no report, no figure
 
 

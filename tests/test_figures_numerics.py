@@ -112,7 +112,13 @@ def test_N2_the_breaks_of_the_paper_do_not_occur_and_a_window_moved_is_seen():
     outcome = run("N2")
     assert outcome.status == OBSERVED and outcome.note.startswith(runner.DISAGREES)
     failing = [c.statement for c in outcome.printed if not runner.holds(c)]
-    assert len(failing) == 1 and failing[0].startswith("breaks accumulate"), failing
+    assert len(failing) == 1 and failing[0].startswith("l. 1089: a short segment of breaks"), failing
+    assert outcome.agrees is False and "no break in the figure's range" in outcome.reason
+    assert "None" not in outcome.note and "{" not in outcome.note
+    near = [c for c in outcome.printed if c.statement.startswith("l. 1090")]
+    assert near and runner.holds(near[0])            # the breaks just below 0.072 are close to it
+    moved = run("N2", breaks_near="0.09")
+    assert not runner.holds([c for c in moved.printed if c.statement.startswith("l. 1090")][0])
     mutated = run("N2", windows_below="0.9")
     failing = [c.statement for c in mutated.printed if not runner.holds(c)]
     assert any(s.startswith("windows of stability for r ≤ 0.9") for s in failing), failing
@@ -161,6 +167,7 @@ def test_n4_reads_the_printed_n():
     printed = run("N4")
     assert printed.status == OBSERVED
     assert not runner.holds(printed.printed[0]) and not runner.holds(printed.printed[1])
+    assert printed.agrees is False and "the printed cause does not hold" in printed.reason
     beyond = F.load_findings("numerics-n4.json")["largest_n_float64"] + 1
     later = run("N4", n_from=str(beyond))
     assert runner.holds(later.printed[0]) and runner.holds(later.printed[1])
@@ -172,3 +179,22 @@ def test_observe_fails_only_on_a_consistency_check():
     assert observe([Check("seen", False)]).note.startswith(runner.DISAGREES)
     assert observe([Check("seen", True), Check("engine", False, counts=False)]).status == runner.FAIL
     assert observe([]).status == runner.FAIL
+
+
+def test_threshold_labels_neither_overprint_nor_leave_the_figure():
+    """Figure 7's lines r_max(4..6) lie within 0.01 of one another and r_exist at its right
+    edge: each label gets a row where it overlaps none, inside [0, 1] of the axes."""
+    from certify.run.plots import LABEL_FONT_INCH, label_rows
+    lines = F.red_lines()
+    spec = F.SPECS["5.2"]
+    rows = label_rows({k: v for k, v in lines.items() if spec.lo <= v <= spec.hi}, spec.lo, spec.hi, 7.6)
+    boxes = {}
+    for label, (x, row, ha) in rows.items():
+        w = (len(label) + 1) * LABEL_FONT_INCH / 7.6
+        left = {"center": x - w / 2, "left": x, "right": x - w}[ha]
+        assert 0 <= left and left + w <= 1, label
+        boxes.setdefault(row, []).append((left, left + w))
+    for spans in boxes.values():
+        spans.sort()
+        assert all(a[1] <= b[0] for a, b in zip(spans, spans[1:]))
+    assert len(boxes) > 1 and "r_exist" in rows

@@ -250,7 +250,7 @@ def cli(*args):
 @pytest.mark.parametrize("args", [
     ["--r", "1.5"], ["--r", "0"], ["--r-range", "0.1", "1.0", "5"], ["--r", "0.5", "--collisions", "-3"],
     ["--r", "0.5", "--keep", "x"], ["--r", "0.5", "--engine", "quad"], ["--r", "0.5", "--out", "/dev/null/x.npz"],
-    ["--r-range", "0.1", "0.2", "2.5"], [], ["--r", "0.5", "--dps", "30"],
+    ["--r-range", "0.1", "0.2", "2.5"], [], ["--r", "0.5", "--dps", "30"], ["--r-range", "0.2", "0.1", "5"],
 ])
 def test_cli_usage_errors(args, capsys):
     from certify.cli import main

@@ -28,8 +28,8 @@ ROOT = Path(__file__).resolve().parent.parent
     ("abca", "adjacent"),                                       # ... cyclically (a ... a)
     ("a", "adjacent"),
     ("[ac]ab", "symmetric system"),                             # [ac] mixed with a single a
-    ("acab", "Proposition 4.2"),                                # aca
-    ("acbc", "Proposition 4.2"),                                # c|ac: cac cyclically
+    ("acab", "Proposition 4.4"),                                # aca
+    ("acbc", "Proposition 4.4"),                                # c|ac: cac cyclically
     ("abab", "proper power of 'ab'"),                           # a proper power, root named
     ("(abcb)^2", "proper power of 'abcb'"),
     ("(ab)^0cb", "power"),
@@ -209,3 +209,21 @@ def test_the_engine_certifies_what_the_committed_digests_record():
     assert words and all(w in recorded for w in words)
     for w in words:
         assert hashlib.sha256(analyse(w).json_text().encode("utf-8")).hexdigest() == recorded[w], w
+
+
+def test_ababcb_names_the_fixed_points_both_ways_and_t10_certifies_the_factor():
+    from certify.patterns.pattern import PAPER_NORMALISATION
+    from certify.run.runner import CERTIFICATES, load_all, run_certificate
+    load_all()
+    t10 = run_certificate(CERTIFICATES["T10"])
+    factor = next(c for c in t10.printed if c.statement.startswith("the factor printed/computed"))
+    assert factor.holds and "-1024" in factor.statement
+    assert "divided by −1024" in PAPER_NORMALISATION["ababcb"]
+    text = analyse("ababcb").markdown()
+    assert "lower branch, x₋ (the paper's x₊)" in text and "this x₋ is the paper's x₊" in text
+    assert "(the paper's" not in analyse("abcb").markdown()
+
+
+def test_a_candidate_that_misses_the_first_collision_says_so_plainly():
+    text = analyse("acb").markdown()
+    assert "(nothing)" not in text and "1..0" not in text and "never realises the first collision" in text

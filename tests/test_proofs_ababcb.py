@@ -96,9 +96,10 @@ WORDING = [
     ("T21", "inequality", "5-2√6", "1"),
     ("T21", "inequality", "q < 0", "q ≥ 0"),
     ("T23", "position", "above", "below"),
-    ("T24", "upper", "|q|>1", "|q|≥1"),
-    ("T24", "lower", "|q|<1", "|q|≤1"),
+    ("T24", "upper", "|q|>1", "|q|<1"),                  # (|q|≥1 holds with q = f'(x₊): not an alteration that must fail)
+    ("T24", "lower", "|q|<1", "|q|>1"),
     ("T24", "stable_when", "|q|<1", "|q|≤1"),
+    ("T24", "q", "(c x₊ + d)/(c x₋ + d)", "(c x₊ + d)/(c x₋ - d)"),
 ]
 
 
@@ -131,14 +132,23 @@ def test_every_certificate_reading_a_condition_has_a_wording_test():
     assert {id for id, *_ in WORDING} == readers
 
 
-def test_t24_with_the_stated_corrections_passes():
-    """The three relations reversed (the erratum) make the printed statement true; one of
-    them reversed alone keeps it false, and then the stated corrections no longer apply."""
-    fixed = {"upper": "|q|<1", "lower": "|q|>1", "stable_when": "|q|>1"}
-    assert outcome("T24", **fixed).status == PASS
-    for name, text in fixed.items():
+def test_t24_with_the_one_stated_correction_passes():
+    """One misprint: q displayed at l. 493 inverted.  With q = (cx₋+d)/(cx₊+d) = f'(x₊)
+    every sentence of l. 495-505 holds as printed.  Keeping the displayed q instead takes
+    three corrections (every relation reversed); one of them alone keeps it false, and
+    then the one stated correction of q no longer makes it true."""
+    assert outcome("T24", **altered("T24", "q", "(c x₊ + d)/(c x₋ + d)", "(c x₋ + d)/(c x₊ + d)")).status == PASS
+    reversed_ = {"upper": "|q|<1", "lower": "|q|>1", "stable_when": "|q|>1"}
+    assert outcome("T24", **reversed_).status == PASS
+    for name, text in reversed_.items():
         o = outcome("T24", **{name: text})
-        assert o.status == FAIL and any(c.holds and text in c.statement for c in o.printed)
+        assert o.status == FAIL and not o.printed[0].holds
+
+
+def test_t24_erratum_is_one_misprint():
+    o = outcome("T24")
+    assert o.status == ERRATUM and o.kind == "misprint" and "l. 493" in o.misprint
+    assert len([c for c in o.printed if not c.holds]) == 1
 
 
 def test_t16_with_the_stated_correction_passes():

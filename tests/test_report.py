@@ -246,3 +246,34 @@ def test_changed_parts_charges_a_line_to_the_part_that_holds_it():
     inside = old.replace("**Note.** The paper's", "junk\n\n**Note.** The paper's")
     assert report.changed_parts(inside, old) == ["T4"]
     assert report.changed_parts(old.replace("## Summary", "## Summary\njunk"), old) == ["summary"]
+
+
+def _erratum(statement, misprint, kind="misprint", evidence=("a sign table",)):
+    wrong = Check(f"{statement} as printed", False, list(evidence))
+    return conclude([wrong, Check("shared", True, ["the same sign table"])],
+                    corrected=[Check(f"{statement} corrected", True, list(evidence), corrects=wrong),
+                               Check("shared", True, ["the same sign table"])], kind=kind, misprint=misprint)
+
+
+def test_errata_count_distinct_errors_of_the_paper_and_their_kinds():
+    """Two certificates false by one misprint count it once; kinds are told apart."""
+    results = [(cert("S8.1"), _erratum("e_y", "l. 980: e_y for e_z")),
+               (cert("S8.2"), _erratum("e_y again", "l. 980: e_y for e_z")),
+               (cert("S10"), _erratum("every pattern", "Remark 4.6", kind=runner.FALSE_STATEMENT)),
+               (cert("T28"), _erratum("does not seem", "Remark 3.3", kind=runner.REFUTED_REMARK))]
+    line = report.errata_line(results)
+    assert line == ("3 distinct errors of the paper, in 4 certificates: 1 misprint (in 2 certificates), "
+                    "1 false statement (in 1 certificate), 1 refuted remark (in 1 certificate)")
+    text = report.render_markdown(results)
+    assert text.count("#### 1. l. 980: e_y for e_z") == 1
+    assert "*Misprint*, in [S8.1](#cert-s8-1), [S8.2](#cert-s8-2)." in text
+    assert "- ERRATUM, refuted remark: Remark 3.3 ([T28](#cert-t28))" in text
+    data = json.loads(report.render_json(results))
+    assert [e["certificates"] for e in data["errors_of_the_paper"]] == [["S8.1", "S8.2"], ["S10"], ["T28"]]
+    assert report.misprints(results)[0][1] == "misprint"
+
+
+def test_evidence_shown_under_as_printed_is_not_repeated_under_corrected():
+    text = report.render_markdown([(cert("T17"), _erratum("Δ < 0", "l. 437"))])
+    section = text.split('<a id="cert-t17"></a>')[1]
+    assert section.count("the same sign table") == 1 and "✓ shared (as above)" in section

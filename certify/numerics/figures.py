@@ -115,6 +115,18 @@ SPECS = {s.id: s for s in (
     Spec("5.8", "fig:Simul_6", 0.1845, 0.1846, 1001, "l. 1193-1198", orbits="random:6", preview=21),
 )}
 
+# The number the compiled paper prints for each figure: figures are numbered through the paper
+# (Figures 1-5 are in Sections 3 and 4), a subfigure is a letter of the figure whose caption
+# follows it.  Derived from the LaTeX counters; tests/test_numbering.py re-derives it.
+PAPER_NUMBER = {"5.1": "6", "5.2": "7", "5.3a": "8a", "5.3b": "8b", "5.4": "9", "5.5": "10",
+                "5.6": "11a", "5.7": "11b", "5.8": "11c"}
+
+
+def cite(fig: str) -> str:
+    """``Figure 6 (fig:Simul_1)``: the compiled number with the LaTeX label beside."""
+    return f"Figure {PAPER_NUMBER[fig]} ({SPECS[fig].label})"
+
+
 PAPER = dict(collisions=10_000, keep=500)      # l. 1062-1063: 10^4 collisions, the last 500 b-collisions
 PREVIEW = dict(collisions=2_000, keep=200)     # what `certify all` draws: seconds, not minutes
 RESOLUTIONS = ("preview", "paper")

@@ -1,7 +1,7 @@
 """A census of periodic collision patterns: every primitive period made of the blocks
 ab, cb, acb, cab up to a length, analysed for feasible and stable self-similar data.
 
-Which words.  By Corollary 4.3 (l. 1037-1051), read with the correction certified
+Which words.  By Corollary 4.5 (l. 1037-1051), read with the correction certified
 in S10 (the pattern *without its first letter when that is b* is a concatenation of
 the blocks ab, cb, acb, cab), a periodic pattern is a cyclic sequence of those
 blocks.  Every block ends with its only b, so a cyclic word cuts into blocks in one
@@ -32,7 +32,7 @@ from fractions import Fraction
 from .pattern import analyse
 from .periodic import MIRROR, compact, normal_form
 
-BLOCKS = ("ab", "acb", "cab", "cb")          # Corollary 4.3 (l. 1050), in the order a < b < c
+BLOCKS = ("ab", "acb", "cab", "cb")          # Corollary 4.5 (l. 1050), in the order a < b < c
 ABCAB = "abcab"                               # T27, T28 (l. 513-515)
 KEPT = ("normal_form", "system", "characteristic_polynomial", "exists", "feasible", "stable", "undecided",
         "diagnosis", "verdict")                # of the pattern's JSON: the r-sets and why (no formulas)

@@ -204,6 +204,13 @@ class PatternResult:
     def json_text(self) -> str:
         return json.dumps(self.to_json(), ensure_ascii=False, indent=2, sort_keys=True)
 
+    def fixed_point_name(self, name: str) -> str:
+        """``x₋ (the paper's x₊)`` where the paper prints (a, b, c, d) for this word times a
+        negative constant (:data:`PAPER_NORMALISATION`), else ``name``."""
+        if self.normal not in PAPER_NORMALISATION or name not in SWAP:
+            return name
+        return f"{name} (the paper's {SWAP[name]})"
+
     def markdown(self) -> str:
         lo, hi = self.interval
         out = [f"# Pattern {self.written}", "",
@@ -219,7 +226,7 @@ class PatternResult:
             if not sets:
                 out += ["∅ on every branch.", ""]
             for s in sets:
-                fp = "" if s["fixed_point"] == NO_X else f", {s['fixed_point']}"
+                fp = "" if s["fixed_point"] == NO_X else f", {self.fixed_point_name(s['fixed_point'])}"
                 out.append(f"- {s['branch']} branch{fp}: {s['set']}")
             ends = {}
             for s in sets:
@@ -235,10 +242,21 @@ class PatternResult:
         if self.undecided:
             out += ["## Undecided", ""] + [f"- {u}" for u in self.undecided] + [""]
         out += ["## The datum", ""] + [f"- {k} = `{v}`" for k, v in self.datum.items()] + [""]
+        if self.normal in PAPER_NORMALISATION:
+            out += [PAPER_NORMALISATION[self.normal], ""]
         if self.diagnosis:
             out += ["## First collision that goes wrong", "", self.diagnosis["text"], ""]
         out += ["## Verdict", "", self.verdict, ""]
         return "\n".join(out)
+
+
+# Words whose a, b, c, d the paper prints, in another normalisation.  x± = (a - d ± √Δ)/(2c)
+# swap under a common negative factor, so the names are shown both ways.
+SWAP = {"x₊": "x₋", "x₋": "x₊"}
+PAPER_NORMALISATION = {
+    "ababcb": "Names: a, b, c, d above are the paper's (Theorem 3.1, l. 373-379) divided by −1024 (certificate T10), "
+              "a negative factor, which swaps x₊ and x₋: this x₋ is the paper's x₊, the fixed point of the theorem.",
+}
 
 
 # ------------------------------------------------------------------ the analysis
@@ -390,7 +408,7 @@ def diagnose(system, cand, word: str, m: int, regions, lo, hi) -> dict:
         live = _nonempty(an.regions)
         if live:
             found.append((j, live, an.regions))
-    prefix = show_word(word[:m - 1]) or "(nothing)"
+    prefix = show_word(word[:m - 1])
     covered = all(_same(R, [S for _, _, rs in found for S in rs]) for R in regions if R.pieces)
     if found:
         parts = []
@@ -399,14 +417,16 @@ def diagnose(system, cand, word: str, m: int, regions, lo, hi) -> dict:
                               for s in live)
             parts.append(f"{show_word(j)} comes next, strictly before {show_word(expected)} and any other collision, "
                          f"on {where}")
-        summary = (f"after {prefix} comes {' or '.join(show_word(j) for j, _, _ in found)}, "
+        summary = (f"{f'after {prefix} ' if prefix else 'first '}comes {' or '.join(show_word(j) for j, _, _ in found)}, "
                    f"strictly before {show_word(expected)}")
     else:
-        parts, summary = [], f"after {prefix}, {show_word(expected)} is never the true next collision"
-    text = (f"The candidate realises {prefix} (collisions 1..{m - 1}) but never collision {m} "
-            f"({show_word(expected)}). " + " ".join(parts)
-            + ("" if covered else " Elsewhere on the region of the prefix no single next collision is certified "
-                                  "(a tie, no approaching pair, or an undecided point)."))
+        parts = []
+        summary = f"{f'after {prefix}, ' if prefix else ''}{show_word(expected)} is never the true next collision"
+    realised = (f"realises {prefix} (collisions 1..{m - 1}) but never collision {m}" if m > 1
+                else "never realises the first collision")
+    tail = "" if covered else ("Elsewhere on the region of the prefix no single next collision is certified "
+                               "(a tie, no approaching pair, or an undecided point).")
+    text = " ".join(x for x in [f"The candidate {realised} ({show_word(expected)}).", *parts, tail] if x)
     return {"collision": m, "expected": show_word(expected), "prefix": show_word(word[:m - 1]),
             "instead": [{"letter": show_word(j), "where": live} for j, live, _ in found],
             "complete": covered, "summary": summary, "text": text}

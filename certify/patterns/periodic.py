@@ -17,7 +17,7 @@ Which system a word belongs to (:func:`system_of`):
 Validation (:func:`validate`) raises :class:`~certify.errors.UsageError` with one line:
 an empty word, other letters, two equal letters adjacent (cyclically: the word is a
 period), [ac] mixed with single a or c collisions, aca or cac (cyclically: impossible
-by Proposition 4.2 of the paper, l. 997), a proper power of a shorter word (the root is
+by Proposition 4.4 of the paper, l. 997), a proper power of a shorter word (the root is
 named).
 
 Normal form (:func:`normal_form`): a period is a cyclic word, and the mirror a<->c
@@ -152,7 +152,7 @@ def validate(word: str, written: str | None = None) -> str:
     for bad in ("aca", "cac"):
         if bad in _cyclic(word, 3):
             raise UsageError(f"invalid pattern word {name}: it contains {bad} (cyclically), impossible by "
-                             "Proposition 4.2 of the paper (l. 997)")
+                             "Proposition 4.4 of the paper (l. 997)")
     root, k = primitive_root(word)
     if k > 1:
         raise UsageError(f"invalid pattern word {name}: it is a proper power of {show(root)!r} "

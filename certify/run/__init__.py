@@ -11,13 +11,13 @@ and progress on a terminal.  It imports every layer below it.
 from . import figures, files, plots, progress, report, runner
 from .figures import save_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
-from .runner import (CERTIFICATES, ERRATUM, FAIL, OBSERVED, PASS, STATUSES, Certificate, Check, Context, Outcome,
-                     altered, certificate, conclude, load_all, observe, quantity, reset_caches, run, run_certificate, select)
+from .runner import (CERTIFICATES, ERRATUM, ERRATUM_KINDS, FAIL, FALSE_STATEMENT, MISPRINT, OBSERVED, PASS,
+                     REFUTED_REMARK, STATUSES, Certificate, Check, Context, Outcome, altered, certificate, conclude, load_all, observe, quantity, reset_caches, run, run_certificate, select)
 
 __all__ = [
     "figures", "files", "plots", "progress", "report", "runner",
     "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
-    "CERTIFICATES", "ERRATUM", "FAIL", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
+    "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
     "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run",
     "run_certificate", "select",
 ]

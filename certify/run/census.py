@@ -139,7 +139,7 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         "Written by `python -m certify census --max-length "
         f"{L}` (certify/patterns/census.py, certify/run/census.py); do not edit by hand.",
         "",
-        "Every primitive period made of the blocks ab, cb, acb, cab (Corollary 4.3, l. 1037-1051, with the "
+        "Every primitive period made of the blocks ab, cb, acb, cab (Corollary 4.5, l. 1037-1051, with the "
         "correction certified in S10), of at most "
         f"{L} collisions, one per class of rotations and the mirror a<->c (the pattern module's normal form). "
         "For each, the r-sets in ]0, 1[ where its self-similar candidate realises it (feasible, per eigenvalue "
@@ -167,7 +167,7 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         "- stable windows reaching above 3-2√2 ≈ 0.171573 (compared on certified isolating intervals and minimal "
         "polynomials): " + (", ".join(f"`{w}`" for w in f["above_3-2√2"]) or f"none up to length {L}")
         + (f"; not decided: {', '.join(f['undecided_against_3-2√2'])}" if f["undecided_against_3-2√2"] else ""),
-        f"- T28 (l. 515, 'patterns containing abcab do not seem to have feasible self-similar data'): "
+        "- T28 (l. 515, 'patterns containing abcab do not seem to have feasible self-similar data'): "
         + (f"refuted: {', '.join(f'`{w}`' for w in s['abcab']['feasible'])} contain abcab (cyclically, or its "
            "mirror cbacb) and have feasible self-similar data (certificate T28 re-checks the shortest and runs "
            "the exact dynamics from their data)" if s["abcab"]["feasible"]
@@ -238,6 +238,15 @@ FIGURE = "census-windows.png"        # next to CENSUS.md, not in figures/ (which
 def marks() -> dict:
     """The thresholds drawn on the figure: 7-4√3 (L1), 5-2√6 (T26), 3-2√2 (L2)."""
     return {"7-4√3": 7 - 4 * 3 ** 0.5, "5-2√6": 5 - 2 * 6 ** 0.5, "3-2√2": 3 - 2 * 2 ** 0.5}
+
+
+def written_length(out) -> int | None:
+    """The longest period of the census already in OUT/census.json, or None."""
+    import json
+    try:
+        return int(json.loads((Path(out) / "census.json").read_text(encoding="utf-8"))["census"]["max_length"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
 
 
 def write_outputs(records, max_length: int, out) -> dict:

@@ -10,7 +10,7 @@ import numpy as np
 import sympy as sp
 
 from . import figures
-from certify.algebra.poly import lam, r
+from certify.algebra.poly import r
 
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:purple")
 BRANCH_NAMES = ("upper", "middle", "lower")
@@ -37,7 +37,7 @@ def _cell_indices(table, rs: np.ndarray) -> list[int | None]:
 
 
 def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
-    """Figures 3.1-3.2: the real spectrum of M on ]0,1[ and its zoom 0<r<0.13, 0<λ<0.05.
+    """Figures 1-2 of the paper (fig:spectrum, fig:spectrum zoom): the real spectrum of M on ]0,1[ and its zoom 0<r<0.13, 0<λ<0.05.
     Branches are taken from the certified table: a point is drawn on branch k only
     where the table proves k+1 real eigenvalues."""
     if not figures.enabled():
@@ -69,7 +69,7 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
 
 
 def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=None, marks=None) -> str:
-    """Figures 3.3-3.4: each branch coloured by the certified sign of a condition."""
+    """Figures 3-4 of the paper (fig: sign changes a-d, fig: sign change b): each branch coloured by the certified sign of a condition."""
     if not figures.enabled():
         return name
     plt = figures.pyplot()
@@ -102,6 +102,30 @@ def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=No
 # --------------------------------------------------------------------------
 # Section 5: clouds of (r, φ) points (certify.numerics.figures)
 
+LABEL_FONT_INCH = 6 * 0.6 / 72          # the width of one character of a 6 pt label, in inches
+
+
+def label_rows(lines: dict, xlo: float, xhi: float, axes_inches: float) -> dict:
+    """Where to write each threshold label above the axes so that none overprints another
+    or is cut at an edge: ``{label: (x as axes fraction, row, ha)}``, row 0 first, a label
+    going to the first row where it does not overlap one already placed."""
+    placed: dict[int, list[tuple[float, float]]] = {}
+    out = {}
+    for label, value in sorted(lines.items(), key=lambda kv: kv[1]):
+        x = (value - xlo) / (xhi - xlo)
+        w = (len(label) + 1) * LABEL_FONT_INCH / axes_inches
+        left, ha = (x - w / 2, "center")
+        if left < 0:
+            left, ha = x, "left"
+        elif left + w > 1:
+            left, ha = x - w, "right"
+        row = next(k for k in range(len(lines) + 1)
+                   if all(left + w <= a or b <= left for a, b in placed.get(k, [])))
+        placed.setdefault(row, []).append((left, left + w))
+        out[label] = (x, row, ha)
+    return out
+
+
 def omega_figure(data, name: str, lines: dict | None = None, boxes=(), title: str = "",
                  size=(9.0, 5.0), dpi: int | None = None) -> str:
     """A figure of Section 5: the kept angles φ of every orbit against r, drawn as the
@@ -127,18 +151,21 @@ def omega_figure(data, name: str, lines: dict | None = None, boxes=(), title: st
     broken = data.break_r()
     if broken.size:
         ax.plot(broken, np.full(broken.size, np.pi / 2), ".", color="red", ms=2.5, label=f"breaks ({broken.size})")
-    for label, value in (lines or {}).items():
-        if lo <= value <= hi:
-            ax.axvline(value, color="red", lw=0.8)
-            ax.annotate(label, (value, 1.0), xycoords=("data", "axes fraction"), fontsize=6, rotation=90,
-                        va="top", ha="right", color="red")
+    xlo, xhi = lo - span / (2 * width), hi + span / (2 * width)
+    shown = {label: value for label, value in (lines or {}).items() if lo <= value <= hi}
+    for value in shown.values():
+        ax.axvline(value, color="red", lw=0.8)
+    rows = label_rows(shown, xlo, xhi, size[0] * 0.85)
+    for label, (x, row, ha) in rows.items():
+        ax.annotate(label, (x, 1.0 + 0.012 + 0.04 * row), xycoords="axes fraction", fontsize=6, va="bottom", ha=ha,
+                    color="red", annotation_clip=False)
     for b_lo, b_hi in boxes:
         ax.add_patch(Rectangle((b_lo, 0.02), b_hi - b_lo, np.pi - 0.04, fill=False, edgecolor="red", lw=1.0))
     ax.set_xlim(lo - span / (2 * width), hi + span / (2 * width))
     ax.set_ylim(0, np.pi)
     ax.set_xlabel("r")
     ax.set_ylabel("φ")
-    ax.set_title(title, fontsize=8)
+    ax.set_title(title, fontsize=8, pad=6 + 9 * (1 + max((row for _, row, _ in rows.values()), default=-1)))
     if broken.size:
         ax.legend(loc="upper right", fontsize=7)
     fig.tight_layout()
@@ -157,7 +184,7 @@ def section5_figure(data, dpi: int | None = None) -> str:
     from certify.numerics import figures as numfig
     spec = data.spec
     orbits = data.phi.shape[1]
-    title = (f"Figure {spec.id} ({spec.label}, {data.resolution}): {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
+    title = (f"{numfig.cite(spec.id)}, {data.resolution}: {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
              f"{orbits} orbit{'s' if orbits != 1 else ''}, last {data.keep} b-collisions of {data.collisions}, "
              f"{data.engine}")
     return omega_figure(data, section5_name(spec.id, data.resolution), lines=numfig.red_lines(), boxes=spec.boxes,

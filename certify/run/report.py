@@ -22,7 +22,8 @@ from pathlib import Path
 from urllib.parse import quote
 
 from certify.run.files import write_atomic
-from certify.run.runner import ERRATUM, FAIL, OBSERVED, PASS, STATUSES, corrected_statement, holds
+from certify.run.runner import (ERRATUM, ERRATUM_KINDS, FAIL, OBSERVED, PASS, STATUSES, corrected_statement,
+                                holds)
 
 PAPER = ("T. Dolmaire and E. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
          "particles: asymmetric collision sequences and spherical billiard reduction*, "
@@ -76,6 +77,12 @@ READING = (
 def _one_line(text) -> str:
     """``text`` with every run of whitespace (newlines included) made one space."""
     return " ".join(str(text).split())
+
+
+def _first_line(text, width: int = 80) -> str:
+    """The first line of ``text``, cut at ``width`` characters."""
+    line = str(text).strip().split("\n")[0]
+    return line if len(line) <= width else line[: width - 1] + "…"
 
 
 def _cell(text) -> str:
@@ -145,10 +152,56 @@ def counts(results) -> dict[str, int]:
 
 
 def summary_line(results) -> str:
-    """``N certificates: a PASS, b ERRATUM, c FAIL, d OBSERVED``."""
+    """``N certificates: a PASS, b ERRATUM, c FAIL, d OBSERVED (e of them disagree with the paper)``."""
     n = counts(results)
     parts = ", ".join(f"{n[s]} {s}" for s in STATUSES)
-    return f"{len(results)} certificate{'s' if len(results) != 1 else ''}: {parts}"
+    against = len(disagreements(results))
+    tail = f" ({against} of them disagree{'s' if against == 1 else ''} with the paper)" if against else ""
+    return f"{len(results)} certificate{'s' if len(results) != 1 else ''}: {parts}{tail}"
+
+
+DISAGREES = "disagrees"
+
+
+def disagreements(results) -> list:
+    """The observations that do not agree with the paper, as ``(cert, outcome)``."""
+    return [(cert, o) for cert, o in results if o.status == OBSERVED and o.agrees is False]
+
+
+def status_label(outcome) -> str:
+    """The status as a reader should first see it: ``OBSERVED, disagrees`` for an
+    observation that does not agree with the paper, else the bare status."""
+    return f"{outcome.status}, {DISAGREES}" if outcome.status == OBSERVED and outcome.agrees is False else outcome.status
+
+
+def misprints(results) -> list[tuple[str, str, list]]:
+    """The distinct errors of the paper behind the errata, in the order met:
+    ``(misprint, kind, [(cert, outcome), ...])``; certificates sharing one misprint
+    are grouped under it."""
+    groups: dict[str, tuple[str, list]] = {}
+    for cert, outcome in results:
+        if outcome.status == ERRATUM:
+            key = outcome.misprint or f"(not stated: {cert.id})"
+            groups.setdefault(key, (outcome.kind or "(kind not stated)", []))[1].append((cert, outcome))
+    return [(key, kind, members) for key, (kind, members) in groups.items()]
+
+
+def errata_line(results) -> str:
+    """``D distinct errors of the paper, in E certificates: m misprints (in k certificates), ...``;
+    ``""`` when there are none."""
+    groups = misprints(results)
+    if not groups:
+        return ""
+    parts = []
+    for kind in ERRATUM_KINDS + ("(kind not stated)",):
+        mine = [g for g in groups if g[1] == kind]
+        if mine:
+            certs = sum(len(g[2]) for g in mine)
+            parts.append(f"{len(mine)} {kind}{'s' if len(mine) != 1 else ''} (in {certs} certificate"
+                         f"{'s' if certs != 1 else ''})")
+    n = sum(len(g[2]) for g in groups)
+    return (f"{len(groups)} distinct error{'s' if len(groups) != 1 else ''} of the paper, in {n} certificate"
+            f"{'s' if n != 1 else ''}: " + ", ".join(parts))
 
 
 # --------------------------------------------------------------------------
@@ -163,10 +216,11 @@ def _head() -> str:
 
 def _contents(results) -> str:
     """The table of contents: the overview, then each part of the paper with its certificates."""
-    lines = ["## Contents", "", "- [Summary](#summary)", "- [Errata](#errata)",
+    lines = ["## Contents", "", "- [Summary](#summary)", "- [Where the tool disagrees with the paper](#disagreements)",
+             "- [Errata](#errata)",
              "- [All certificates](#all-certificates)"]
     for part, members in _by_part(results):
-        ids = ", ".join(f"{_link(cert.id)} {outcome.status}" for cert, outcome in members)
+        ids = ", ".join(f"{_link(cert.id)} {status_label(outcome)}" for cert, outcome in members)
         lines.append(f"- [{part}](#{part_anchor(part)}): {ids}")
     return "\n".join(lines)
 
@@ -181,12 +235,31 @@ def _by_part(results) -> list[tuple[str, list]]:
 
 def _summary(results) -> str:
     n = counts(results)
+    against = disagreements(results)
     rows = [f"| {s} | {n[s]} |" for s in n]
+    if against:
+        rows.insert(STATUSES.index(OBSERVED) + 1, f"| of which disagree with the paper | {len(against)} |")
     lines = ["## Summary", "", "| Status | Certificates |", "|---|---:|", *rows,
              f"| **Total** | **{len(results)}** |"]
     failing = [cert.id for cert, outcome in results if outcome.status == FAIL]
     if failing:
         lines += ["", "Failing: " + ", ".join(_link(c) for c in failing) + "."]
+    if errata_line(results):
+        lines += ["", errata_line(results) + "; see [Errata](#errata)."]
+    return "\n".join(lines)
+
+
+def _disagreements(results) -> str:
+    """Every place the tool disagrees with the paper, one line each with its reason:
+    the errata by distinct error, then the observations that do not agree."""
+    lines = ['## <a id="disagreements"></a>Where the tool disagrees with the paper', ""]
+    for key, kind, members in misprints(results):
+        ids = ", ".join(_link(cert.id) for cert, _ in members)
+        lines.append(f"- ERRATUM, {kind}: {_one_line(key)} ({ids})")
+    for cert, outcome in disagreements(results):
+        lines.append(f"- OBSERVED, {DISAGREES}: {_link(cert.id)} ({_cell(cert.line)}): {_one_line(outcome.reason)}")
+    if len(lines) == 2:
+        lines.append("Nowhere: every certificate is PASS, or OBSERVED and agreeing with the paper.")
     return "\n".join(lines)
 
 
@@ -222,51 +295,88 @@ def erratum_pairs(outcome) -> list[tuple]:
 
 
 def _erratum(cert, outcome) -> str:
-    """Each false printed statement next to its certified correction, and what changed."""
+    """Each false printed statement next to its certified correction, and what changed;
+    further checks made false by the same change are named below the table, not repeated."""
     lines = [f"**{_link(cert.id)}** (paper: {_cell(cert.line)}): {_one_line(cert.statement)}", "",
              "| As printed (false) | Corrected (certified) | What changed |", "|---|---|---|"]
+    seen, again = set(), []
     for printed, fixes in erratum_pairs(outcome):
         left = f"{MARK[False]} {_cell(printed.statement)}"
         if not fixes:
             lines.append(f"| {left} | (see [{cert.id}](#{anchor(cert.id)})) | |")
         for k, fix in enumerate(fixes):
             change = changes(_one_line(printed.statement), _one_line(fix.statement))
+            core = re.sub(r"`(as printed|corrected)` → `(as printed|corrected)`(; )?", "", change)
+            if core and core in seen and holds(fix):
+                again.append(_one_line(printed.statement))
+                continue
+            seen.add(core)
             lines.append(f"| {left if k == 0 else ''} | {MARK[holds(fix)]} {_cell(fix.statement)} | "
                          f"{_cell(change) or 'the same words: see the evidence'} |")
+    if again:
+        lines += ["", f"The same change also corrects {len(again)} more check{'s' if len(again) != 1 else ''} "
+                      f"of {cert.id}: " + "; ".join(again) + "."]
     return "\n".join(lines)
 
 
 def _errata(results) -> str:
-    errata = [_erratum(cert, outcome) for cert, outcome in results if outcome.status == ERRATUM]
-    return "\n\n".join(["## Errata", *(errata or ["None: no certificate has status ERRATUM."])])
+    """The errata grouped by the one error of the paper each comes from."""
+    groups = misprints(results)
+    if not groups:
+        return "## Errata\n\nNone: no certificate has status ERRATUM."
+    parts = ["## Errata", errata_line(results) + ".  Kinds: a *misprint* is one symbol or word typed for "
+             "another, the argument standing; a *false statement* is false as a statement; a *refuted remark* is "
+             "a hedged remark (\"does not seem\") refuted by counterexamples."]
+    for k, (key, kind, members) in enumerate(groups, 1):
+        ids = ", ".join(_link(cert.id) for cert, _ in members)
+        parts.append(f"#### {k}. {_one_line(key)}\n\n*{kind.capitalize()}*, in {ids}.")
+        parts += [_erratum(cert, outcome) for cert, outcome in members]
+    return "\n\n".join(parts)
 
 
 def _table(results) -> str:
-    rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {outcome.status} |"
+    rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {status_label(outcome)} |"
             for cert, outcome in results]
     return "\n".join(["## All certificates", "", "| Id | Paper | Statement | Status |",
                       "|---|---|---|---|", *rows])
 
 
-def _checks(title: str, checks) -> str:
+SAME = "(as above)"
+
+
+def _checks(title: str, checks, shown: set | None = None) -> str:
+    """The checks with their evidence; an evidence fragment already in ``shown`` (the
+    same sign table under "As printed" and "Corrected") is not repeated."""
+    shown = set() if shown is None else shown
     items = []
     for check in checks:
         role = "" if check.counts else " *(consistency check of the engine, not evidence)*"
-        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(check.statement)}{role}"))
-        items += [_bullet(e, indent=2) for e in check.evidence]
+        evidence = [str(e) for e in check.evidence]
+        repeated = bool(evidence) and all(e in shown for e in evidence)
+        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(check.statement)}{role}"
+                             + (f" {SAME}" if repeated else "")))
+        if not repeated:
+            items += [_bullet(e if e not in shown else f"{_first_line(e)} {SAME}", indent=2) for e in evidence]
+        shown.update(evidence)
     return f"**{title}**\n\n" + "\n".join(items)
 
 
 def _section(cert, outcome) -> str:
     """Everything about one certificate: verdicts, note, evidence, figures."""
     printed = "as printed: " if outcome.status != PASS else ""
-    parts = [f'### <a id="{anchor(cert.id)}"></a>{cert.id} — {outcome.status} — {printed}{_one_line(cert.statement)}',
-             f"Paper: {_one_line(cert.line)} of the source · Status: **{outcome.status}** · "
+    label = status_label(outcome)
+    parts = [f'### <a id="{anchor(cert.id)}"></a>{cert.id} — {label} — {printed}{_one_line(cert.statement)}',
+             f"Paper: {_one_line(cert.line)} of the source · Status: **{label}** · "
              f"Proof: {_source(cert)}"]
+    if outcome.status == OBSERVED and outcome.agrees is False:
+        parts.append(f"**Does not agree with the paper:** {_one_line(outcome.reason)}")
+    if outcome.status == ERRATUM:
+        parts.append(f"**Erratum ({outcome.kind}):** {_one_line(outcome.misprint)}")
+    shown: set = set()
     if outcome.printed:
-        parts.append(_checks("As printed", outcome.printed))
+        parts.append(_checks("As printed", outcome.printed, shown))
     if outcome.corrected:
-        parts.append(_checks("Corrected (certified)", outcome.corrected))
+        parts.append(_checks("Corrected (certified)", outcome.corrected, shown))
     if str(outcome.note).strip():
         parts.append("**Note.** " + _fragment(outcome.note))
     if outcome.evidence:
@@ -278,7 +388,8 @@ def _section(cert, outcome) -> str:
 def render_markdown(results) -> str:
     """The text of REPORT.md: head, contents, summary, errata, table, then the
     certificates part by part, and a last line that closes the report."""
-    parts = [_head(), _contents(results), _summary(results), _errata(results), _table(results)]
+    parts = [_head(), _contents(results), _summary(results), _disagreements(results), _errata(results),
+             _table(results)]
     for part, members in _by_part(results):
         parts.append(f'## <a id="{part_anchor(part)}"></a>{part}')
         parts += [_section(cert, outcome) for cert, outcome in members]
@@ -307,6 +418,8 @@ def certificate_data(cert, outcome) -> dict:
         "proof": {"module": cert.module, "function": getattr(cert.func, "__name__", "")},
         "part": part_of(cert.id),
         "status": outcome.status,
+        **({"erratum": {"kind": outcome.kind, "misprint": outcome.misprint}} if outcome.status == ERRATUM else {}),
+        **({"agrees": outcome.agrees, "reason": outcome.reason} if outcome.status == OBSERVED else {}),
         "printed": [_check_data(c) for c in outcome.printed],
         "corrected": [_check_data(c) for c in outcome.corrected],
         "note": str(outcome.note),
@@ -318,6 +431,9 @@ def certificate_data(cert, outcome) -> dict:
 def render_json(results) -> str:
     """The text of report.json (deterministic, like REPORT.md)."""
     data = {"paper": PAPER, "statuses": MEANING, "summary": counts(results),
+            "disagree": [cert.id for cert, _ in disagreements(results)],
+            "errors_of_the_paper": [{"misprint": key, "kind": kind, "certificates": [c.id for c, _ in members]}
+                                    for key, kind, members in misprints(results)],
             "certificates": [certificate_data(c, o) for c, o in results]}
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 

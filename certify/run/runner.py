@@ -13,7 +13,6 @@ from __future__ import annotations
 import importlib
 import inspect
 import multiprocessing
-import os
 import pkgutil
 import signal
 import time
@@ -48,9 +47,22 @@ class Check:
     counts: bool = True
 
 
+# The kinds of erratum, the first column a referee reads in the Errata.
+MISPRINT = "misprint"                  # one symbol or word typed for another; the argument stands
+FALSE_STATEMENT = "false statement"    # the sentence is false as a statement, not by a slip of the pen
+REFUTED_REMARK = "refuted remark"      # a hedged remark ("does not seem"), refuted by counterexamples
+ERRATUM_KINDS = (MISPRINT, FALSE_STATEMENT, REFUTED_REMARK)
+
+
 @dataclass
 class Outcome:
-    """The verdict of one certificate."""
+    """The verdict of one certificate.
+
+    On an ERRATUM, ``kind`` is one of :data:`ERRATUM_KINDS` and ``misprint`` names the
+    one slip in the paper that the certificate's false checks come from (several
+    certificates may share it: the report counts distinct misprints).  On an
+    observation, ``agrees`` says whether what was seen agrees with the paper and
+    ``reason`` says why not, in one line."""
 
     status: str
     printed: list[Check]
@@ -58,6 +70,10 @@ class Outcome:
     evidence: list[str] = field(default_factory=list)
     figures: list[str] = field(default_factory=list)
     note: str = ""
+    kind: str = ""
+    misprint: str = ""
+    agrees: bool | None = None
+    reason: str = ""
 
 
 def holds(check: Check) -> bool:
@@ -76,14 +92,22 @@ def corrected_statement(check: Check) -> str:
 
 def conclude(printed: list[Check], corrected: list[Check] | None = None,
              evidence: list[str] | None = None, figures: list[str] | None = None,
-             note: str = "") -> Outcome:
+             note: str = "", kind: str = "", misprint: str = "") -> Outcome:
     """The verdict, resting only on the checks that could fail (``counts``):
 
     - PASS when every printed check holds (and one of them counts);
     - ERRATUM when a printed check that counts fails, every corrected check holds,
       and each failing printed check has its correction (a corrected check whose
       ``corrects`` names it);
-    - FAIL otherwise, and whenever a consistency check fails."""
+    - FAIL otherwise, and whenever a consistency check fails.
+
+    ``kind`` (an ERRATUM's kind, :data:`ERRATUM_KINDS`) and ``misprint`` (the one slip,
+    in a few words with its line, shared by every certificate it makes false) are kept
+    on an ERRATUM only; a certificate that can end in ERRATUM gives both (the report
+    shows "(kind not stated)" otherwise, and tests/test_claims.py checks the committed
+    report for it)."""
+    if kind and kind not in ERRATUM_KINDS:
+        raise ValueError(f"unknown kind of erratum {kind!r}")
     corrected = corrected or []
     evidence_checks = [c for c in printed if c.counts]
     consistent = all(holds(c) for c in printed + corrected if not c.counts)
@@ -96,7 +120,9 @@ def conclude(printed: list[Check], corrected: list[Check] | None = None,
         status = ERRATUM
     else:
         status = FAIL
-    return Outcome(status, printed, corrected, evidence or [], figures or [], note)
+    erratum = status == ERRATUM
+    return Outcome(status, printed, corrected, evidence or [], figures or [], note,
+                   kind if erratum else "", misprint if erratum else "")
 
 
 AGREES = "The observation agrees with the printed statement."
@@ -104,18 +130,21 @@ DISAGREES = "The observation does not agree with the printed statement"
 
 
 def observe(printed: list[Check], evidence: list[str] | None = None, figures: list[str] | None = None,
-            note: str = "") -> Outcome:
-    """The verdict of a numerical observation (Section 5): OBSERVED, never PASS, with a
-    note that says whether what was seen agrees with the printed statement (every
-    printed check that counts holds) or not (naming the checks that do not hold).
-    FAIL only when a consistency check fails (the engine itself is in doubt) or there
-    is nothing to compare."""
+            note: str = "", reason: str = "") -> Outcome:
+    """The verdict of a numerical observation (Section 5): OBSERVED, never PASS, with
+    ``agrees`` saying whether what was seen agrees with the printed statement (every
+    printed check that counts holds) or not.  When it does not, ``reason`` is the one
+    line a reader sees first (the certificate's ``reason``, else the checks that do not
+    hold), and the note names the checks.  FAIL only when a consistency check fails
+    (the engine itself is in doubt) or there is nothing to compare."""
     evidence_checks = [c for c in printed if c.counts]
     consistent = all(holds(c) for c in printed if not c.counts)
     wrong = [" ".join(str(c.statement).split()) for c in evidence_checks if not holds(c)]
     head = AGREES if not wrong else DISAGREES + ": " + "; ".join(wrong) + "."
     status = OBSERVED if consistent and evidence_checks else FAIL
-    return Outcome(status, printed, [], evidence or [], figures or [], (head + " " + note).strip())
+    why = "" if not wrong else " ".join(str(reason).split()) or "; ".join(wrong)
+    return Outcome(status, printed, [], evidence or [], figures or [], (head + " " + note).strip(),
+                   agrees=not wrong, reason=why)
 
 
 @dataclass
@@ -272,7 +301,8 @@ def plain(outcome: Outcome) -> Outcome:
                      corrected_statement(c) or None, c.counts)
     return Outcome(outcome.status, [check(c) for c in outcome.printed],
                    [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
-                   [str(f) for f in outcome.figures], str(outcome.note))
+                   [str(f) for f in outcome.figures], str(outcome.note), str(outcome.kind),
+                   str(outcome.misprint), outcome.agrees, str(outcome.reason))
 
 
 def units(certs: list[Certificate]) -> list[list[Certificate]]:
