@@ -7,9 +7,10 @@
 of ``certify pattern WORD --json`` (the whole JSON: certified sets, end points,
 conditions, datum, diagnosis, verdict) in ``reports/pattern-json-digests.txt``
 (``--out``); ``check`` recomputes them with the engine of this checkout and lists the
-words whose JSON differs (exit 1), or says that all agree.  The committed digests were
-written by the engine of commit cb9d573, before the fast exact core: ``check`` shows
-that the faster engine certifies the very same sets.  The census records are compared
+words whose JSON differs (exit 1), or says that all agree.  The JSON behind the committed
+digests equals, word for word, that of the engine of commit cb9d573 (before the fast
+exact core) but for the reworded diagnosis of five words whose first collision fails:
+``check`` shows that the faster engine certifies the very same sets.  The census records are compared
 the same way by ``tests/test_census.py`` (against the committed ``reports/census.json``).
 """
 from __future__ import annotations

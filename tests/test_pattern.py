@@ -198,8 +198,9 @@ def test_cli_smoke(tmp_path):
 
 def test_the_engine_certifies_what_the_committed_digests_record():
     """`certify pattern WORD --json` for every census word up to 7 collisions hashes to the
-    digest the engine of commit cb9d573 wrote (reports/pattern-json-digests.txt, all words
-    up to 12: `python benchmarks/same_results.py check`): a faster engine, the same sets."""
+    committed digest (reports/pattern-json-digests.txt, all words up to 12: `python
+    benchmarks/same_results.py check`; their JSON equals that of the engine of commit
+    cb9d573, before the fast exact core, but for a reworded diagnosis): the same sets."""
     import hashlib
     from pathlib import Path
     from certify.patterns import census
