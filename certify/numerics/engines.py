@@ -3,15 +3,24 @@
 * ``float64``: the numba kernel (:mod:`.kernel`), parallel over orbits; here only a
   one-orbit wrapper (:func:`float64_orbit`).
 * ``mp``: mpmath at ``dps`` decimal digits (gmpy2 backend when installed,
-  ``mpmath.libmp.BACKEND``), with the same margin rule at TOL = SAFETY · 2^-prec.
-* ``ball``: python-flint arb.  A sign is used only when the ball proves it; when a
-  choice is undecided the orbit is recomputed from its datum at twice the precision,
+  ``mpmath.libmp.BACKEND``), with the same margin rule at TOL = SAFETY · 2^-prec and
+  the same accumulated bound (:func:`.rules.carry_bound`) at its precision.
+* ``ball``: python-flint arb, without wrapping.  The state after k collisions is
+  P_k n0 with P_k = ±cof(K_{j_k}) ⋯ cof(K_{j_1}) the product of the integer cofactor
+  matrices, kept *exactly* (fmpz), and n0 the ball of the initial normal; only the
+  product is evaluated in balls, at each step, from P_k truncated to the working
+  precision (a rigorous radius for the truncation).  The radius of the normal is
+  therefore |P_k| rad(n0) + O(2^-prec |P_k| |n0|): the bits lost along the orbit are
+  log2(|P_k||n0| / |P_k n0|), the true condition of the product, not the wrapping of
+  a ball pushed through k matrices (1-1.6 bits per collision).  When a choice is
+  undecided only n0 is recomputed at twice the precision (P_k does not depend on it),
   up to a cap; the result is the certified horizon (the collisions proven) and, at
   the cap, the break that stopped it.  The datum is the float (θ0, φ0) read exactly.
 
 All three run :func:`.rules.classify` and :func:`.rules.advance` (the kernel is their
-transcription).  An :class:`OrbitResult` holds the break, the count, the φ of the
-last ``keep`` b-collisions, optionally the word and the normals at checkpoints.
+transcription).  An :class:`OrbitResult` holds the break, the count, the collisions
+certified, the φ of the last ``keep`` b-collisions, optionally the word and the
+normals at checkpoints.
 """
 from __future__ import annotations
 
@@ -40,6 +49,11 @@ class OrbitResult:
     word: str = ""                          # the collision letters, when asked
     checkpoints: dict = field(default_factory=dict)   # collision -> (letter index, normal in the engine's numbers)
     bits: int = 53                          # the precision that gave this result
+    certified: int = -1                     # the collisions certified (the certified horizon)
+
+    def __post_init__(self):
+        if self.certified < 0:
+            self.certified = self.collisions
 
 
 def _ring_to_phi(ring: list, keep: int) -> np.ndarray:
@@ -51,36 +65,48 @@ def _ring_to_phi(ring: list, keep: int) -> np.ndarray:
 
 
 def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(), letter=rules.START,
-                  normal=None) -> OrbitResult:
-    """One orbit on the float64 kernel (``trace`` when the word or checkpoints are asked)."""
+                  normal=None, strict=False) -> OrbitResult:
+    """One orbit on the float64 kernel (``trace`` when the word or checkpoints are
+    asked); ``strict``: stop at the certified horizon (break 5)."""
     rows = np.array(rules.float_rows(r))
-    absrows = np.array(rules.row_abs(rules.float_rows(r)))
     n0 = np.array(normal if normal is not None else rules.initial_normal(theta0, phi0, letter), dtype=float)
     i0 = rules.INDEX[letter]
+    constants = (rules.TOL64, rules.G64, rules.K64, rules.TINY64)
     if word or checkpoints:
         letters = np.zeros(collisions, dtype=np.int8)
         normals = np.zeros((collisions, 3))
-        code, done = kernel.trace(i0, n0, rows, absrows, rules.TOL64, collisions, letters, normals)
+        errs = np.zeros((collisions, 3))
+        code, done, cert = kernel.trace(i0, n0, rows, *constants, collisions, strict, letters, normals, errs)
         b = [rules.phi_of(1, normals[c]) for c in range(done) if letters[c] == 1]
         cps = {c: (int(letters[c - 1]), tuple(normals[c - 1])) for c in checkpoints if 0 < c <= done}
-        return OrbitResult(code, done, _ring_to_phi(b, keep),
-                           "".join(rules.LETTERS[x] for x in letters[:done]) if word else "", cps)
+        return OrbitResult(int(code), int(done), _ring_to_phi(b, keep),
+                           "".join(rules.LETTERS[x] for x in letters[:done]) if word else "", cps,
+                           certified=int(cert))
     phi = np.empty(keep)
-    code, done = kernel._orbit(i0, n0, rows, absrows, rules.TOL64, collisions, keep, phi)
-    return OrbitResult(int(code), int(done), phi)
+    code, done, cert = kernel._orbit(i0, n0, rows, *constants, collisions, keep, strict, phi)
+    return OrbitResult(int(code), int(done), phi, certified=int(cert))
 
 
-def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, checkpoints, sign, finite, phi):
-    """The generic loop of the mp and ball engines (rules.classify / rules.advance)."""
+def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, checkpoints, sign, finite, phi,
+             carry=None, err=None, strict=False):
+    """The loop of the mp engine (rules.classify / rules.advance; ``carry(j, n, err)``
+    the accumulated bound, rules.carry_bound).  Returns (code, done, certified, ring of
+    b-angles, word, checkpoints)."""
     ring, letters, cps = [], [], {}
     want = set(checkpoints)
-    code, done = 0, 0
+    code, done, certified = 0, 0, -1
     for c in range(collisions):
         code, j = rules.classify(i, n, bounds, sign, finite)
+        if code == 0 and certified < 0 and err is not None and not rules.certifies(i, n, err, j, sign, finite):
+            certified = c
+            if strict:
+                code = rules.HORIZON
         if code:
             break
         if tolerance is not None:
             bounds = rules.step_bounds(j, n, absrows, tolerance)
+        if err is not None:
+            err = carry(j, n, err)
         n = rules.advance(j, n, rows)
         i, done = j, c + 1
         if j == 1:
@@ -91,22 +117,27 @@ def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, che
             letters.append(rules.LETTERS[j])
         if done in want:
             cps[done] = (j, n)
-    return code, done, ring, "".join(letters), cps
+    return code, done, (done if certified < 0 else certified), ring, "".join(letters), cps
 
 
 def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkpoints=(),
-             letter=rules.START, normal=None) -> OrbitResult:
-    """One orbit in mpmath at ``dps`` digits."""
+             letter=rules.START, normal=None, strict=False) -> OrbitResult:
+    """One orbit in mpmath at ``dps`` digits; ``strict``: stop at the certified horizon."""
     ctx = mpmath.mp.clone()
     ctx.dps = dps
     mpf = ctx.mpf
+
+    def exact(q):                          # an exact rational as an mpf: numerator / denominator, rounded
+        return mpf(q.numerator) / q.denominator
+
     rows = [[[mpf(int(z)) for z in row] for row in K] for K in rules.integer_rows(r)]
     absrows = rules.abs_rows(rows)
     if normal is not None:
         n = tuple(mpf(z) for z in normal)
     else:
         n = rules.initial_normal(mpf(theta0), mpf(phi0), letter, ctx.cos, ctx.sin)
-    tolerance = mpf(rules.tol(ctx.prec).numerator) / rules.tol(ctx.prec).denominator
+    tolerance = exact(rules.tol(ctx.prec))
+    g, K = exact(rules.gamma_bound(ctx.prec)), exact(rules.inflation(ctx.prec))   # both exact at prec bits
     top = max(abs(z) for z in n)
     bounds = (tolerance * top,) * 3
 
@@ -116,39 +147,104 @@ def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkp
     def phi(v):
         return float(ctx.atan2(ctx.hypot(v[2], v[0]), v[1]))
 
-    code, done, ring, w, cps = _iterate(rules.INDEX[letter], n, bounds, rows, absrows, tolerance, collisions, keep,
-                                        word, checkpoints, rules.margin_sign, finite, phi)
-    return OrbitResult(code, done, _ring_to_phi(ring, keep), w, cps, bits=ctx.prec)
+    def carry(j, v, err):
+        return rules.carry_bound(j, v, err, absrows, g, K)
+
+    code, done, cert, ring, w, cps = _iterate(rules.INDEX[letter], n, bounds, rows, absrows, tolerance, collisions,
+                                              keep, word, checkpoints, rules.margin_sign, finite, phi, carry, bounds,
+                                              strict)
+    return OrbitResult(code, done, _ring_to_phi(ring, keep), w, cps, bits=ctx.prec, certified=cert)
 
 
-def _ball_attempt(r, theta0, phi0, collisions, keep, word, checkpoints, letter, normal, prec):
-    with precision(prec):
-        rows = [[[flint.arb(int(z)) for z in row] for row in K] for K in rules.integer_rows(r)]
-        if normal is not None:
-            n = tuple(flint.arb(rules.exact_r(z)) if not isinstance(z, flint.arb) else z for z in normal)
-        else:
-            n = rules.initial_normal(flint.arb(theta0), flint.arb(phi0), letter, flint.arb.cos, flint.arb.sin)
+class _Product:
+    """P_k, the exact product of the integer cofactor matrices along the orbit (an
+    fmpz_mat), and its evaluation P_k n0 in balls."""
 
-        def phi(v):
-            return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
+    def __init__(self, r):
+        self.mats = [flint.fmpz_mat([[int(z) for z in row] for row in K]) for K in rules.integer_rows(r)]
+        self.P = flint.fmpz_mat([[1, 0, 0], [0, 1, 0], [0, 0, 1]])
 
-        return _iterate(rules.INDEX[letter], n, (0, 0, 0), rows, None, None, collisions, keep, word, checkpoints,
-                        rules.ball_sign, flint.arb.is_finite, phi)
+    def times(self, j):
+        return self.mats[j] * self.P
+
+    @staticmethod
+    def evaluate(P, n0, prec):
+        """A ball vector containing P n0 / 2^s for some s ≥ 0: P truncated to prec + 32
+        bits, Q = ⌊P / 2^s⌋ entrywise, P n0 / 2^s ∈ Q n0 + [−1, 1] Σ|n0_c|."""
+        entries = P.entries()
+        top = max(abs(z).bit_length() for z in entries)
+        s = max(0, top - prec - 32)
+        if s:
+            entries = [z >> s for z in entries]
+            slack = (abs(n0[0]) + abs(n0[1]) + abs(n0[2])) * flint.arb(0, 1)
+        v = []
+        for m in range(3):
+            z = flint.arb(entries[3 * m]) * n0[0] + flint.arb(entries[3 * m + 1]) * n0[1] \
+                + flint.arb(entries[3 * m + 2]) * n0[2]
+            v.append(z + slack if s else z)
+        return tuple(v)
+
+
+def _initial_ball(theta0, phi0, letter, normal):
+    if normal is not None:
+        return tuple(flint.arb(rules.exact_r(z)) if not isinstance(z, flint.arb) else z for z in normal)
+    return rules.initial_normal(flint.arb(theta0), flint.arb(phi0), letter, flint.arb.cos, flint.arb.sin)
 
 
 def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkpoints=(), letter=rules.START,
-               normal=None, start_bits=BALL_START) -> OrbitResult:
-    """One certified orbit: every collision choice proven by arb balls; precision
-    doubled from ``start_bits`` on an undecided choice, up to ``dps`` digits (default
-    :data:`BALL_CAP_DPS`).  ``collisions`` of the result is the certified horizon."""
+               normal=None, start_bits=BALL_START, strict=False) -> OrbitResult:
+    """One certified orbit: every collision choice proven by arb balls, the normal
+    evaluated as P_k n0 from the exact product P_k (module docstring); the precision
+    of n0 doubled from ``start_bits`` when a choice is undecided, up to ``dps`` digits
+    (default :data:`BALL_CAP_DPS`).  ``collisions`` of the result is the certified
+    horizon (``strict`` changes nothing: every collision is certified)."""
     cap = int((dps or BALL_CAP_DPS) * BITS_PER_DIGIT) + 1
     prec = min(start_bits, cap)
-    while True:
-        code, done, ring, w, cps = _ball_attempt(r, theta0, phi0, collisions, keep, word, checkpoints, letter,
-                                                 normal, prec)
-        if code not in (rules.UNDECIDED, rules.SHORT_STEP) or prec >= cap:
-            return OrbitResult(code, done, _ring_to_phi(ring, keep), w, cps, bits=prec)
-        prec = min(2 * prec, cap)
+    prod = _Product(r)
+    i = rules.INDEX[letter]
+    ring, letters, cps = [], [], {}
+    want = set(checkpoints)
+    code, done = 0, 0
+
+    def phi(v):
+        return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
+
+    with precision(prec):
+        n0 = _initial_ball(theta0, phi0, letter, normal)
+        n = prod.evaluate(prod.P, n0, prec)
+    while done < collisions:
+        with precision(prec):
+            code, j = rules.classify(i, n, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
+            if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
+                prec = min(2 * prec, cap)
+                with precision(prec):
+                    n0 = _initial_ball(theta0, phi0, letter, normal)
+                    n = prod.evaluate(prod.P, n0, prec)
+                continue
+            if code:
+                break
+            P = prod.times(j)
+            m = prod.evaluate(P, n0, prec)
+            t = (j + 1) % 3
+            while not (m[t] > 0 or m[t] < 0) and prec < cap:    # the orientation undecided: more precision
+                prec = min(2 * prec, cap)
+                with precision(prec):
+                    n0 = _initial_ball(theta0, phi0, letter, normal)
+                    m = prod.evaluate(P, n0, prec)
+            if m[t] < 0:
+                P, m = -P, tuple(-z for z in m)
+            prod.P, n = P, m
+        i, done = j, done + 1
+        if j == 1:
+            with precision(prec):
+                ring.append(phi(n))
+            if len(ring) > 2 * keep + 64:
+                del ring[:len(ring) - keep]
+        if word:
+            letters.append(rules.LETTERS[j])
+        if done in want:
+            cps[done] = (j, n)
+    return OrbitResult(code, done, _ring_to_phi(ring, keep), "".join(letters), cps, bits=prec)
 
 
 def run_orbit(engine: str, r, theta0, phi0, collisions, keep=0, dps=None, **kw) -> OrbitResult:
@@ -162,10 +258,11 @@ def run_orbit(engine: str, r, theta0, phi0, collisions, keep=0, dps=None, **kw) 
     raise ValueError(f"unknown engine {engine!r}")
 
 
-def task(engine, r, theta0, phi0, collisions, keep, dps):
-    """A picklable unit of work for an executor: (phi, code, collisions) of one orbit."""
-    res = run_orbit(engine, r, theta0, phi0, collisions, keep, dps)
-    return res.phi, res.code, res.collisions
+def task(engine, r, theta0, phi0, collisions, keep, dps, strict=False, word=False):
+    """A picklable unit of work for an executor: (phi, code, collisions, certified,
+    word) of one orbit."""
+    res = run_orbit(engine, r, theta0, phi0, collisions, keep, dps, strict=strict, word=word)
+    return res.phi, res.code, res.collisions, res.certified, res.word
 
 
 def certified(r, theta0, phi0, collisions, checkpoints=(), dps=None, start_bits=BALL_START):

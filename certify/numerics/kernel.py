@@ -1,13 +1,22 @@
-"""The float64 engine: a numba transcription of :func:`.rules.classify` and
-:func:`.rules.advance`, parallel over (r, orbit) pairs with ``prange``.
+"""The float64 engine: a numba transcription of :func:`.rules.classify`,
+:func:`.rules.advance`, :func:`.rules.step_bounds` and :func:`.rules.carry_bound`,
+parallel over (r, orbit) pairs with ``prange``.
 
 The matrices are ``rules.float_rows(r)`` (``reduction.cofactor`` converted to float),
-passed as an array ``rows[r_index, letter, row, column]``; ``absrows[r_index, letter,
-row]`` their absolute row sums (unused since the bound is componentwise, kept in the
-signature).  The normal is rescaled
-by a power of 2 when its largest entry leaves [2^-256, 2^256] (exact in floats, and
-the bounds are rescaled with it).  Only the normals of the last ``keep``
-b-collisions are kept (a ring buffer); φ is computed from them at the end.
+passed as an array ``rows[r_index, letter, row, column]``.  Two bounds travel with
+the normal n, componentwise:
+
+* ``bnd``, the rounding of the last step alone (``TOL · |Ĉ||n|``): the margin rule
+  that decides the breaks 1-4 (a shadowing orbit goes on while it holds);
+* ``err``, the rigorous bound of the accumulated error (:func:`.rules.carry_bound`,
+  whose docstring proves it): while it decides every contact the collisions are
+  certified; the first one it does not decide is the orbit's certified horizon.
+  With ``strict`` the orbit stops there with break 5 (``rules.HORIZON``).
+
+The normal is rescaled by a power of 2 when its largest entry leaves
+[2^-256, 2^256] (exact in floats but for underflowing entries; both bounds are
+rescaled with it, ``err`` as in step (v) of the proof).  Only the normals of the last
+``keep`` b-collisions are kept (a ring buffer); φ is computed from them at the end.
 """
 from __future__ import annotations
 
@@ -19,6 +28,7 @@ from numba import njit, prange
 BIG = 2.0 ** 256
 SMALL = 2.0 ** -256
 B = 1                                 # the index of the contact b
+HORIZON = 5                           # rules.HORIZON
 
 
 @njit(cache=True, inline="always")
@@ -43,8 +53,22 @@ def _classify(i, n, bnd):
 
 
 @njit(cache=True, inline="always")
-def _advance(j, n, bnd, rows, absrows, tol):
-    """rules.advance and rules.step_bounds in place, then the power-of-2 rescaling."""
+def _certifies(i, n, err, j):
+    """rules.certifies: the accumulated bound decides the contact j.  A nan or inf
+    bound decides nothing (the comparisons fail)."""
+    a = (i + 1) % 3
+    b = (i + 2) % 3
+    if not (n[a] > err[a] and n[b] < -err[b]):
+        return False
+    if j == a:
+        return n[i] > err[i]
+    return n[i] < -err[i]
+
+
+@njit(cache=True, inline="always")
+def _advance(j, n, bnd, err, rows, tol, g, K, tiny):
+    """rules.advance, rules.step_bounds and rules.carry_bound in place, then the
+    power-of-2 rescaling (both bounds with it)."""
     m0 = rows[j, 0, 0] * n[0] + rows[j, 0, 1] * n[1] + rows[j, 0, 2] * n[2]
     m1 = rows[j, 1, 0] * n[0] + rows[j, 1, 1] * n[1] + rows[j, 1, 2] * n[2]
     m2 = rows[j, 2, 0] * n[0] + rows[j, 2, 1] * n[1] + rows[j, 2, 2] * n[2]
@@ -53,9 +77,18 @@ def _advance(j, n, bnd, rows, absrows, tol):
     if mt < 0.0:
         m0, m1, m2 = -m0, -m1, -m2
     a0, a1, a2 = abs(n[0]), abs(n[1]), abs(n[2])
-    b0 = tol * (abs(rows[j, 0, 0]) * a0 + abs(rows[j, 0, 1]) * a1 + abs(rows[j, 0, 2]) * a2)
-    b1 = tol * (abs(rows[j, 1, 0]) * a0 + abs(rows[j, 1, 1]) * a1 + abs(rows[j, 1, 2]) * a2)
-    b2 = tol * (abs(rows[j, 2, 0]) * a0 + abs(rows[j, 2, 1]) * a1 + abs(rows[j, 2, 2]) * a2)
+    c00, c01, c02 = abs(rows[j, 0, 0]), abs(rows[j, 0, 1]), abs(rows[j, 0, 2])
+    c10, c11, c12 = abs(rows[j, 1, 0]), abs(rows[j, 1, 1]), abs(rows[j, 1, 2])
+    c20, c21, c22 = abs(rows[j, 2, 0]), abs(rows[j, 2, 1]), abs(rows[j, 2, 2])
+    b0 = tol * (c00 * a0 + c01 * a1 + c02 * a2)
+    b1 = tol * (c10 * a0 + c11 * a1 + c12 * a2)
+    b2 = tol * (c20 * a0 + c21 * a1 + c22 * a2)
+    t0 = err[0] + g * a0                    # rules.carry_bound, in its order
+    t1 = err[1] + g * a1
+    t2 = err[2] + g * a2
+    e0 = (c00 * t0 + c01 * t1 + c02 * t2) * K + tiny
+    e1 = (c10 * t0 + c11 * t1 + c12 * t2) * K + tiny
+    e2 = (c20 * t0 + c21 * t1 + c22 * t2) * K + tiny
     new_top = max(abs(m0), max(abs(m1), abs(m2)))
     if new_top > BIG or (new_top < SMALL and new_top > 0.0):
         e = math.frexp(new_top)[1]
@@ -66,12 +99,18 @@ def _advance(j, n, bnd, rows, absrows, tol):
         b0 *= f
         b1 *= f
         b2 *= f
+        e0 = e0 * f + tiny
+        e1 = e1 * f + tiny
+        e2 = e2 * f + tiny
     n[0] = m0
     n[1] = m1
     n[2] = m2
     bnd[0] = b0
     bnd[1] = b1
     bnd[2] = b2
+    err[0] = e0
+    err[1] = e1
+    err[2] = e2
 
 
 @njit(cache=True)
@@ -91,23 +130,37 @@ def _initial_bound(n, tol):
     return bnd
 
 
+@njit(cache=True, inline="always")
+def _decide(i, n, bnd, err, certified, done, strict):
+    """One classification: (code, next contact, certified horizon so far; -1 while
+    every collision is certified)."""
+    code, j = _classify(i, n, bnd)
+    if code == 0 and certified < 0 and not _certifies(i, n, err, j):
+        certified = done
+        if strict:
+            code = HORIZON
+    return code, j, certified
+
+
 @njit(cache=True)
-def _orbit(i0, n_init, rows, absrows, tol, collisions, keep, out_phi):
-    """One orbit: (break code, collisions done); the φ of the last ``keep``
-    b-collisions into out_phi, oldest first, NaN-padded at the front."""
+def _orbit(i0, n_init, rows, tol, g, K, tiny, collisions, keep, strict, out_phi):
+    """One orbit: (break code, collisions done, collisions certified); the φ of the
+    last ``keep`` b-collisions into out_phi, oldest first, NaN-padded at the front."""
     n = n_init.copy()
     bnd = _initial_bound(n, tol)
+    err = bnd.copy()
     ring = np.empty((max(keep, 1), 3))
     pos = 0
     stored = 0
     i = i0
     code = 0
     done = 0
+    certified = -1
     for _ in range(collisions):
-        code, j = _classify(i, n, bnd)
+        code, j, certified = _decide(i, n, bnd, err, certified, done, strict)
         if code != 0:
             break
-        _advance(j, n, bnd, rows, absrows, tol)
+        _advance(j, n, bnd, err, rows, tol, g, K, tiny)
         i = j
         done += 1
         if j == B and keep > 0:
@@ -125,55 +178,64 @@ def _orbit(i0, n_init, rows, absrows, tol, collisions, keep, out_phi):
     for a in range(have):
         q = (start + a) % keep
         out_phi[keep - have + a] = _phi(B, ring[q, 0], ring[q, 1], ring[q, 2])
-    return code, done
+    return code, done, (done if certified < 0 else certified)
 
 
 @njit(cache=True, parallel=True)
-def sweep(letters0, normals0, rows, absrows, tol, collisions, keep, phi, breaks, counts):
+def sweep(letters0, normals0, rows, tol, g, K, tiny, collisions, keep, strict, phi, breaks, counts, certified):
     """Every (r, orbit) pair, in parallel: rows (n_r, 3, 3, 3), normals0 (n_o, 3),
-    letters0 (n_o,); fills phi (n_r, n_o, keep), breaks and counts (n_r, n_o)."""
+    letters0 (n_o,); fills phi (n_r, n_o, keep), breaks, counts and certified
+    (n_r, n_o)."""
     n_r = rows.shape[0]
     n_o = normals0.shape[0]
     for idx in prange(n_r * n_o):
         a = idx // n_o
         b = idx % n_o
-        code, done = _orbit(letters0[b], normals0[b], rows[a], absrows[a], tol, collisions, keep, phi[a, b])
+        code, done, cert = _orbit(letters0[b], normals0[b], rows[a], tol, g, K, tiny, collisions, keep, strict,
+                                  phi[a, b])
         breaks[a, b] = code
         counts[a, b] = done
+        certified[a, b] = cert
 
 
 @njit(cache=True)
-def trace(i0, n_init, rows, absrows, tol, collisions, letters, normals):
-    """One orbit with every state recorded (tests, benchmarks): letters[k] and
-    normals[k] after the collision k + 1.  Returns (code, collisions done)."""
+def trace(i0, n_init, rows, tol, g, K, tiny, collisions, strict, letters, normals, errors):
+    """One orbit with every state recorded (tests, benchmarks): letters[k], normals[k]
+    and the accumulated bound errors[k] after the collision k + 1.  Returns (code,
+    collisions done, collisions certified)."""
     n = n_init.copy()
     bnd = _initial_bound(n, tol)
+    err = bnd.copy()
     i = i0
+    certified = -1
     for c in range(collisions):
-        code, j = _classify(i, n, bnd)
+        code, j, certified = _decide(i, n, bnd, err, certified, c, strict)
         if code != 0:
-            return code, c
-        _advance(j, n, bnd, rows, absrows, tol)
+            return code, c, (c if certified < 0 else certified)
+        _advance(j, n, bnd, err, rows, tol, g, K, tiny)
         i = j
         letters[c] = j
-        normals[c, 0] = n[0]
-        normals[c, 1] = n[1]
-        normals[c, 2] = n[2]
-    return 0, collisions
+        for a in range(3):
+            normals[c, a] = n[a]
+            errors[c, a] = err[a]
+    return 0, collisions, (collisions if certified < 0 else certified)
 
 
 @njit(cache=True)
-def count_steps(i0, n_init, rows, absrows, tol, collisions):
-    """The bare loop (benchmarks): (code, collisions done, a checksum of the word)."""
+def count_steps(i0, n_init, rows, tol, g, K, tiny, collisions):
+    """The bare loop (benchmarks): (code, collisions done, collisions certified, a
+    checksum of the word)."""
     n = n_init.copy()
     bnd = _initial_bound(n, tol)
+    err = bnd.copy()
     i = i0
     h = 0
+    certified = -1
     for c in range(collisions):
-        code, j = _classify(i, n, bnd)
+        code, j, certified = _decide(i, n, bnd, err, certified, c, False)
         if code != 0:
-            return code, c, h
-        _advance(j, n, bnd, rows, absrows, tol)
+            return code, c, (c if certified < 0 else certified), h
+        _advance(j, n, bnd, err, rows, tol, g, K, tiny)
         i = j
         h = (h * 3 + j) % 1000000007
-    return 0, collisions, h
+    return 0, collisions, (collisions if certified < 0 else certified), h
