@@ -39,6 +39,7 @@ MP_DPS = 30                    # default digits of the mp engine
 BALL_START = 64                # first precision (bits) of the ball engine
 BALL_CAP_DPS = 5000          # default cap of the ball engine, decimal digits (~16600 bits)
 BITS_PER_DIGIT = math.log2(10)
+SEGMENT = 512                  # collisions per exact product of the ball engine (_Product)
 
 
 @dataclass
@@ -157,15 +158,40 @@ def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkp
 
 
 class _Product:
-    """P_k, the exact product of the integer cofactor matrices along the orbit (an
-    fmpz_mat), and its evaluation P_k n0 in balls."""
+    """The orbit as exact products of the integer cofactor matrices (fmpz_mat): the
+    finished segments ``done`` (each the product of :data:`SEGMENT` collisions) and
+    ``P``, the product since the last one; ``base`` the ball of the normal at the
+    start of ``P``: the datum n0 pushed through the segments, one evaluation per
+    segment (a re-centring in the manner of Lohner's method: the wrapping of one ball
+    evaluation happens once a segment, not once a collision, and the integers stay
+    below SEGMENT times the size of a cofactor)."""
 
-    def __init__(self, r):
+    def __init__(self, r, n0):
         self.mats = [flint.fmpz_mat([[int(z) for z in row] for row in K]) for K in rules.integer_rows(r)]
         self.P = flint.fmpz_mat([[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+        self.done = []
+        self.steps = 0
+        self.base = n0
 
     def times(self, j):
         return self.mats[j] * self.P
+
+    def push(self, P, n):
+        """P becomes the current product, n = its evaluation; a new segment every SEGMENT."""
+        self.P = P
+        self.steps += 1
+        if self.steps == SEGMENT:
+            self.done.append(P)
+            self.P = flint.fmpz_mat([[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+            self.steps = 0
+            self.base = n
+
+    def rebase(self, n0, prec):
+        """The datum at a new precision pushed through the finished segments."""
+        for S in self.done:
+            n0 = self.evaluate(S, n0, prec)
+        self.base = n0
+        return self.evaluate(self.P, n0, prec)
 
     @staticmethod
     def evaluate(P, n0, prec):
@@ -194,13 +220,16 @@ def _initial_ball(theta0, phi0, letter, normal):
 def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkpoints=(), letter=rules.START,
                normal=None, start_bits=BALL_START, strict=False) -> OrbitResult:
     """One certified orbit: every collision choice proven by arb balls, the normal
-    evaluated as P_k n0 from the exact product P_k (module docstring); the precision
-    of n0 doubled from ``start_bits`` when a choice is undecided, up to ``dps`` digits
-    (default :data:`BALL_CAP_DPS`).  ``collisions`` of the result is the certified
-    horizon (``strict`` changes nothing: every collision is certified)."""
+    evaluated from exact products of cofactor matrices (module docstring,
+    :class:`_Product`); the precision of the datum doubled from ``start_bits`` when a
+    choice is undecided, up to ``dps`` digits (default :data:`BALL_CAP_DPS`).
+    ``collisions`` of the result is the certified horizon (``strict`` changes
+    nothing: every collision is certified)."""
     cap = int((dps or BALL_CAP_DPS) * BITS_PER_DIGIT) + 1
     prec = min(start_bits, cap)
-    prod = _Product(r)
+    with precision(prec):
+        prod = _Product(r, _initial_ball(theta0, phi0, letter, normal))
+        n = prod.evaluate(prod.P, prod.base, prec)
     i = rules.INDEX[letter]
     ring, letters, cps = [], [], {}
     want = set(checkpoints)
@@ -209,31 +238,32 @@ def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkp
     def phi(v):
         return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
 
-    with precision(prec):
-        n0 = _initial_ball(theta0, phi0, letter, normal)
-        n = prod.evaluate(prod.P, n0, prec)
+    def more(P):
+        """Double the precision: the datum again, through the segments, then P."""
+        nonlocal prec
+        prec = min(2 * prec, cap)
+        with precision(prec):
+            prod.rebase(_initial_ball(theta0, phi0, letter, normal), prec)
+            return prod.evaluate(P, prod.base, prec)
+
     while done < collisions:
         with precision(prec):
             code, j = rules.classify(i, n, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
-            if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
-                prec = min(2 * prec, cap)
-                with precision(prec):
-                    n0 = _initial_ball(theta0, phi0, letter, normal)
-                    n = prod.evaluate(prod.P, n0, prec)
-                continue
-            if code:
-                break
-            P = prod.times(j)
-            m = prod.evaluate(P, n0, prec)
-            t = (j + 1) % 3
-            while not (m[t] > 0 or m[t] < 0) and prec < cap:    # the orientation undecided: more precision
-                prec = min(2 * prec, cap)
-                with precision(prec):
-                    n0 = _initial_ball(theta0, phi0, letter, normal)
-                    m = prod.evaluate(P, n0, prec)
-            if m[t] < 0:
-                P, m = -P, tuple(-z for z in m)
-            prod.P, n = P, m
+        if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
+            n = more(prod.P)
+            continue
+        if code:
+            break
+        P = prod.times(j)
+        with precision(prec):
+            m = prod.evaluate(P, prod.base, prec)
+        t = (j + 1) % 3
+        while not (m[t] > 0 or m[t] < 0) and prec < cap:     # the orientation undecided
+            m = more(P)
+        if m[t] < 0:
+            P, m = -P, tuple(-z for z in m)
+        prod.push(P, m)
+        n = m
         i, done = j, done + 1
         if j == 1:
             with precision(prec):

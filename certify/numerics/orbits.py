@@ -97,7 +97,7 @@ class Orbits:
                 lines.append(f"  {count:>7} {name} (break {code})")
         lines.append(f"  certified: {int(self.certified.sum())} of {int(self.collisions.sum())} collisions "
                      f"({self.certified_fraction():.2%}); certified horizon per orbit from "
-                     f"{int(self.certified.min(initial=0))} to {int(self.certified.max(initial=0))}")
+                     f"{int(self.certified.min()) if self.certified.size else 0} to {int(self.certified.max(initial=0))}")
         finite = self.phi[np.isfinite(self.phi)]
         if finite.size:
             lines.append(f"  φ in [{finite.min():.6f}, {finite.max():.6f}], {finite.size} kept angles")
