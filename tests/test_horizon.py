@@ -163,10 +163,13 @@ def test_ball_engine_keeps_its_precision():
 
 
 def test_ball_engine_raises_the_precision_when_a_choice_is_undecided():
-    """cos φ0 = 2^-300 exactly (a rational normal): 64 bits cannot decide the first contact."""
+    """cos φ0 = 2^-300 exactly (a rational normal): the first images mix 1 and 2^-300,
+    64 bits cannot decide them; the engine raises its precision and gives the exact word."""
     eps = flint.fmpq(1, 2 ** 300)
-    res = engines.ball_orbit(0.5, 0, 0, 50, normal=(-1, eps, 1), word=True)
-    assert res.code == 0 and res.collisions == 50 and res.bits >= 512
+    res = engines.ball_orbit(flint.fmpq(1, 2), 0, 0, 50, normal=(-1, eps, 1), word=True)
+    word, _ = reduction.word_of(reduction.canonical("b", (-(2 ** 300), 1, 2 ** 300)), flint.fmpq(1, 2), 50)
+    assert res.code == 0 and res.collisions == 50 and res.bits > engines.BALL_START
+    assert res.word == word
 
 
 # --- simulate and the CLI -------------------------------------------------------------

@@ -8,8 +8,8 @@
 * ``ball``: python-flint arb, without wrapping.  The state after k collisions is
   P_k n0 with P_k = ±cof(K_{j_k}) ⋯ cof(K_{j_1}) the product of the integer cofactor
   matrices, kept *exactly* (fmpz), and n0 the ball of the initial normal; only the
-  product is evaluated in balls, at each step, from P_k truncated to the working
-  precision (a rigorous radius for the truncation).  The radius of the normal is
+  product is evaluated in balls, at each step, from P_k rounded to the working
+  precision by arb (with a rigorous radius).  The radius of the normal is
   therefore |P_k| rad(n0) + O(2^-prec |P_k| |n0|): the bits lost along the orbit are
   log2(|P_k||n0| / |P_k n0|), the true condition of the product, not the wrapping of
   a ball pushed through k matrices (1-1.6 bits per collision).  When a choice is
@@ -88,13 +88,31 @@ def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(
     return OrbitResult(int(code), int(done), phi, certified=int(cert))
 
 
+class _Record:
+    """What an engine keeps of an orbit: the φ of the last b-collisions (a ring), the
+    word when asked, the normals at the checkpoints."""
+
+    def __init__(self, keep, word, checkpoints, phi):
+        self.keep, self.word, self.want, self.phi = keep, word, set(checkpoints), phi
+        self.ring, self.letters, self.cps = [], [], {}
+
+    def add(self, j, n, done):
+        if j == 1:
+            self.ring.append(self.phi(n))
+            if len(self.ring) > 2 * self.keep + 64:
+                del self.ring[:len(self.ring) - self.keep]
+        if self.word:
+            self.letters.append(rules.LETTERS[j])
+        if done in self.want:
+            self.cps[done] = (j, n)
+
+
 def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, checkpoints, sign, finite, phi,
              carry=None, err=None, strict=False):
     """The loop of the mp engine (rules.classify / rules.advance; ``carry(j, n, err)``
     the accumulated bound, rules.carry_bound).  Returns (code, done, certified, ring of
     b-angles, word, checkpoints)."""
-    ring, letters, cps = [], [], {}
-    want = set(checkpoints)
+    rec = _Record(keep, word, checkpoints, phi)
     code, done, certified = 0, 0, -1
     for c in range(collisions):
         code, j = rules.classify(i, n, bounds, sign, finite)
@@ -110,15 +128,8 @@ def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, che
             err = carry(j, n, err)
         n = rules.advance(j, n, rows)
         i, done = j, c + 1
-        if j == 1:
-            ring.append(phi(n))
-            if len(ring) > 2 * keep + 64:
-                del ring[:len(ring) - keep]
-        if word:
-            letters.append(rules.LETTERS[j])
-        if done in want:
-            cps[done] = (j, n)
-    return code, done, (done if certified < 0 else certified), ring, "".join(letters), cps
+        rec.add(j, n, done)
+    return code, done, (done if certified < 0 else certified), rec.ring, "".join(rec.letters), rec.cps
 
 
 def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkpoints=(),
@@ -195,20 +206,11 @@ class _Product:
 
     @staticmethod
     def evaluate(P, n0, prec):
-        """A ball vector containing P n0 / 2^s for some s ≥ 0: P truncated to prec + 32
-        bits, Q = ⌊P / 2^s⌋ entrywise, P n0 / 2^s ∈ Q n0 + [−1, 1] Σ|n0_c|."""
-        entries = P.entries()
-        top = max(abs(z).bit_length() for z in entries)
-        s = max(0, top - prec - 32)
-        if s:
-            entries = [z >> s for z in entries]
-            slack = (abs(n0[0]) + abs(n0[1]) + abs(n0[2])) * flint.arb(0, 1)
-        v = []
-        for m in range(3):
-            z = flint.arb(entries[3 * m]) * n0[0] + flint.arb(entries[3 * m + 1]) * n0[1] \
-                + flint.arb(entries[3 * m + 2]) * n0[2]
-            v.append(z + slack if s else z)
-        return tuple(v)
+        """A ball vector containing P n0: P rounded to arb at the working precision
+        (``prec``, the caller's context; arb_mat rounds each integer with a rigorous
+        radius) times the column of balls n0, in one arb_mat product."""
+        v = flint.arb_mat(P) * flint.arb_mat([[n0[0]], [n0[1]], [n0[2]]])
+        return (v[0, 0], v[1, 0], v[2, 0])
 
 
 def _initial_ball(theta0, phi0, letter, normal):
@@ -231,12 +233,13 @@ def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkp
         prod = _Product(r, _initial_ball(theta0, phi0, letter, normal))
         n = prod.evaluate(prod.P, prod.base, prec)
     i = rules.INDEX[letter]
-    ring, letters, cps = [], [], {}
-    want = set(checkpoints)
     code, done = 0, 0
 
     def phi(v):
-        return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
+        with precision(prec):
+            return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
+
+    rec = _Record(keep, word, checkpoints, phi)
 
     def more(P):
         """Double the precision: the datum again, through the segments, then P."""
@@ -265,16 +268,8 @@ def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkp
         prod.push(P, m)
         n = m
         i, done = j, done + 1
-        if j == 1:
-            with precision(prec):
-                ring.append(phi(n))
-            if len(ring) > 2 * keep + 64:
-                del ring[:len(ring) - keep]
-        if word:
-            letters.append(rules.LETTERS[j])
-        if done in want:
-            cps[done] = (j, n)
-    return OrbitResult(code, done, _ring_to_phi(ring, keep), "".join(letters), cps, bits=prec)
+        rec.add(j, n, done)
+    return OrbitResult(code, done, _ring_to_phi(rec.ring, keep), "".join(rec.letters), rec.cps, bits=prec)
 
 
 def run_orbit(engine: str, r, theta0, phi0, collisions, keep=0, dps=None, **kw) -> OrbitResult:
