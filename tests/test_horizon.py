@@ -231,3 +231,46 @@ def test_cli_usage_errors_of_the_new_options(args, capsys):
     assert main(["simulate", *args]) == 2
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and err.startswith("certify: error:"), err
+
+
+# --- stress ---------------------------------------------------------------------------
+
+def _columns(line):
+    return len(line.replace("\\|", "")) - len(line.replace("\\|", "").replace("|", ""))
+
+
+def test_stress_report_tables_keep_their_columns(monkeypatch):
+    """Every row of every table of STRESS.md has its header's number of cells (a '|'
+    inside a cell, as in '|cos φ0|', is escaped), and the quick run has no silent wrong
+    collision."""
+    from certify.numerics import stress
+    monkeypatch.setattr(stress, "RANDOM_QUICK", dict(count=6, collisions=200, seed=3))
+    text, wrong = stress.report(quick=True)
+    assert wrong == 0 and "**Silent wrong collisions: 0.**" in text
+    header = None
+    rows = 0
+    for line in text.splitlines():
+        if not line.startswith("|"):
+            header = None
+            continue
+        if header is None:
+            header = _columns(line)
+        assert _columns(line) == header, line
+        rows += 1
+    assert rows > 50 and "\\|cos φ0\\|" in text
+    assert stress.cell("|cos φ0|") == "\\|cos φ0\\|"
+
+
+def test_stress_counts_a_departure_at_a_certified_collision_as_silent_wrong():
+    """silent(): a departure within the certified prefix is wrong, after it is not."""
+    from certify.numerics import stress
+    data = [(0.1, 0.5, 1.0), (0.1, 0.6, 1.0)]
+    ball = (0, 2000, 64)
+    fine = {"ball": ball, ("float64", None): (0, 2000, 40, 120), ("mp", 30): (0, 2000, 90, 0)}
+    bad = {"ball": ball, ("float64", None): (0, 2000, 40, 30), ("mp", 30): (0, 2000, 90, 90)}
+    _, wrong = stress.random_section([fine, fine], data, 2000)
+    assert wrong == 0
+    table, wrong = stress.random_section([fine, bad], data, 2000)
+    assert wrong == 2 and any(line.endswith("| 1 |") for line in table)
+    assert stress.verdict(bad[("float64", None)], ball).startswith("**WRONG at 30**")
+    assert "departs at 120" in stress.verdict(fine[("float64", None)], ball)
