@@ -116,8 +116,8 @@ def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, che
     code, done, certified = 0, 0, -1
     for c in range(collisions):
         code, j = rules.classify(i, n, bounds, sign, finite)
-        if code == 0 and certified < 0 and err is not None and not rules.certifies(i, n, err, j, sign, finite):
-            certified = c
+        if code == 0 and err is not None and not rules.certifies(i, n, err, j, sign, finite):
+            certified, err = c, None            # the horizon: no need to carry the bound further
             if strict:
                 code = rules.HORIZON
         if code:
