@@ -6,7 +6,9 @@ float64 kernel against a plain C loop of the same map.
 
 Measured in one run:
 
-* the float64 kernel, one core: map steps per second on a stable-window orbit
+* the float64 kernel, one core: map steps per CPU second (both sides measure their
+  process's CPU time, best of 3: a per-core rate that a loaded machine does not
+  distort as much as wall time) on a stable-window orbit
   (r = 0.15, the (ab)^2(cb)^2 window), a chaotic one (r = 0.5) and one between the
   windows (r = 0.1), against ``benchmarks/loop.c`` compiled with ``cc -O2`` (same
   matrices, same checks, the same accumulated error bound, same word and certified
@@ -79,9 +81,9 @@ def float64_rate(r, steps, repeat=3):
     kernel.count_steps(1, n0, rows, *CONSTANTS, 10)
     best, out = float("inf"), None
     for _ in range(repeat):
-        start = time.perf_counter()
+        start = time.process_time()          # CPU time, as loop.c measures: per core, robust to load
         out = kernel.count_steps(1, n0, rows, *CONSTANTS, steps)
-        best = min(best, time.perf_counter() - start)
+        best = min(best, time.process_time() - start)
     return out[1] / best, out
 
 

@@ -32,15 +32,20 @@ HORIZON = 5                           # rules.HORIZON
 
 
 @njit(cache=True, inline="always")
+def _next(i):
+    """(i + 1) mod 3 without a division (i in 0, 1, 2)."""
+    return 0 if i == 2 else i + 1
+
+
+@njit(cache=True, inline="always")
 def _classify(i, n, bnd):
     """rules.classify with margin_sign: (code, next contact)."""
-    for a in range(3):
-        if not math.isfinite(n[a]):
-            return 4, -1
+    if not (math.isfinite(n[0]) and math.isfinite(n[1]) and math.isfinite(n[2])):
+        return 4, -1
     if n[0] == 0.0 and n[1] == 0.0 and n[2] == 0.0:
         return 3, -1
-    j = (i + 1) % 3
-    k = (i + 2) % 3
+    j = _next(i)
+    k = _next(j)
     if n[j] < -bnd[j] or n[k] > bnd[k]:
         return 3, -1
     if n[j] <= bnd[j] or n[k] >= -bnd[k]:
@@ -56,8 +61,8 @@ def _classify(i, n, bnd):
 def _certifies(i, n, err, j):
     """rules.certifies: the accumulated bound decides the contact j.  A nan or inf
     bound decides nothing (the comparisons fail)."""
-    a = (i + 1) % 3
-    b = (i + 2) % 3
+    a = _next(i)
+    b = _next(a)
     if not (n[a] > err[a] and n[b] < -err[b]):
         return False
     if j == a:
@@ -66,13 +71,14 @@ def _certifies(i, n, err, j):
 
 
 @njit(cache=True, inline="always")
-def _advance(j, n, bnd, err, rows, tol, g, K, tiny):
-    """rules.advance, rules.step_bounds and rules.carry_bound in place, then the
-    power-of-2 rescaling (both bounds with it)."""
+def _advance(j, n, err, rows, tol, g, K, tiny):
+    """rules.advance, rules.step_bounds and rules.carry_bound, then the power-of-2
+    rescaling (both bounds with it): the new (n, bnd, err), as tuples (registers, not
+    arrays: no aliasing to fear)."""
     m0 = rows[j, 0, 0] * n[0] + rows[j, 0, 1] * n[1] + rows[j, 0, 2] * n[2]
     m1 = rows[j, 1, 0] * n[0] + rows[j, 1, 1] * n[1] + rows[j, 1, 2] * n[2]
     m2 = rows[j, 2, 0] * n[0] + rows[j, 2, 1] * n[1] + rows[j, 2, 2] * n[2]
-    t = (j + 1) % 3
+    t = _next(j)
     mt = m0 if t == 0 else (m1 if t == 1 else m2)
     if mt < 0.0:
         m0, m1, m2 = -m0, -m1, -m2
@@ -102,15 +108,7 @@ def _advance(j, n, bnd, err, rows, tol, g, K, tiny):
         e0 = e0 * f + tiny
         e1 = e1 * f + tiny
         e2 = e2 * f + tiny
-    n[0] = m0
-    n[1] = m1
-    n[2] = m2
-    bnd[0] = b0
-    bnd[1] = b1
-    bnd[2] = b2
-    err[0] = e0
-    err[1] = e1
-    err[2] = e2
+    return (m0, m1, m2), (b0, b1, b2), (e0, e1, e2)
 
 
 @njit(cache=True)
@@ -120,14 +118,13 @@ def _phi(i, n0, n1, n2):
     return math.atan2(math.hypot(v[(i + 1) % 3], v[(i + 2) % 3]), v[i])
 
 
-@njit(cache=True)
-def _initial_bound(n, tol):
-    """The rounding bound of the initial normal, componentwise: tol · max |n_i|."""
-    bnd = np.empty(3)
-    top = max(abs(n[0]), max(abs(n[1]), abs(n[2])))
-    for a in range(3):
-        bnd[a] = tol * top
-    return bnd
+@njit(cache=True, inline="always")
+def _start(n_init, tol):
+    """The initial normal and its rounding bound, componentwise: tol · max |n_i|
+    (the same for both bounds)."""
+    n = (n_init[0], n_init[1], n_init[2])
+    top = tol * max(abs(n[0]), max(abs(n[1]), abs(n[2])))
+    return n, (top, top, top)
 
 
 @njit(cache=True, inline="always")
@@ -146,9 +143,8 @@ def _decide(i, n, bnd, err, certified, done, strict):
 def _orbit(i0, n_init, rows, tol, g, K, tiny, collisions, keep, strict, out_phi):
     """One orbit: (break code, collisions done, collisions certified); the φ of the
     last ``keep`` b-collisions into out_phi, oldest first, NaN-padded at the front."""
-    n = n_init.copy()
-    bnd = _initial_bound(n, tol)
-    err = bnd.copy()
+    n, bnd = _start(n_init, tol)
+    err = bnd
     ring = np.empty((max(keep, 1), 3))
     pos = 0
     stored = 0
@@ -160,7 +156,7 @@ def _orbit(i0, n_init, rows, tol, g, K, tiny, collisions, keep, strict, out_phi)
         code, j, certified = _decide(i, n, bnd, err, certified, done, strict)
         if code != 0:
             break
-        _advance(j, n, bnd, err, rows, tol, g, K, tiny)
+        n, bnd, err = _advance(j, n, err, rows, tol, g, K, tiny)
         i = j
         done += 1
         if j == B and keep > 0:
@@ -203,16 +199,15 @@ def trace(i0, n_init, rows, tol, g, K, tiny, collisions, strict, letters, normal
     """One orbit with every state recorded (tests, benchmarks): letters[k], normals[k]
     and the accumulated bound errors[k] after the collision k + 1.  Returns (code,
     collisions done, collisions certified)."""
-    n = n_init.copy()
-    bnd = _initial_bound(n, tol)
-    err = bnd.copy()
+    n, bnd = _start(n_init, tol)
+    err = bnd
     i = i0
     certified = -1
     for c in range(collisions):
         code, j, certified = _decide(i, n, bnd, err, certified, c, strict)
         if code != 0:
             return code, c, (c if certified < 0 else certified)
-        _advance(j, n, bnd, err, rows, tol, g, K, tiny)
+        n, bnd, err = _advance(j, n, err, rows, tol, g, K, tiny)
         i = j
         letters[c] = j
         for a in range(3):
@@ -224,10 +219,9 @@ def trace(i0, n_init, rows, tol, g, K, tiny, collisions, strict, letters, normal
 @njit(cache=True)
 def count_steps(i0, n_init, rows, tol, g, K, tiny, collisions):
     """The bare loop (benchmarks): (code, collisions done, collisions certified, a
-    checksum of the word)."""
-    n = n_init.copy()
-    bnd = _initial_bound(n, tol)
-    err = bnd.copy()
+    checksum of the word: the letters in base 3, mod 2^48, as benchmarks/loop.c)."""
+    n, bnd = _start(n_init, tol)
+    err = bnd
     i = i0
     h = 0
     certified = -1
@@ -235,7 +229,7 @@ def count_steps(i0, n_init, rows, tol, g, K, tiny, collisions):
         code, j, certified = _decide(i, n, bnd, err, certified, c, False)
         if code != 0:
             return code, c, (c if certified < 0 else certified), h
-        _advance(j, n, bnd, err, rows, tol, g, K, tiny)
+        n, bnd, err = _advance(j, n, err, rows, tol, g, K, tiny)
         i = j
-        h = (h * 3 + j) % 1000000007
+        h = (h * 3 + j) & 0xFFFFFFFFFFFF    # the word in base 3, mod 2^48
     return 0, collisions, (collisions if certified < 0 else certified), h
