@@ -274,3 +274,18 @@ def test_stress_counts_a_departure_at_a_certified_collision_as_silent_wrong():
     assert wrong == 2 and any(line.endswith("| 1 |") for line in table)
     assert stress.verdict(bad[("float64", None)], ball).startswith("**WRONG at 30**")
     assert "departs at 120" in stress.verdict(fine[("float64", None)], ball)
+
+
+def test_cli_stress_runs_its_random_orbits_on_jobs(tmp_path, monkeypatch, capsys):
+    """`stress --quick --jobs 2 --out FILE`: the random orbits on two processes, the
+    report written, exit 0; `--jobs 0` is a usage error."""
+    from certify.cli import main
+    from certify.numerics import stress
+    monkeypatch.setattr(stress, "RANDOM_QUICK", dict(count=4, collisions=100, seed=5))
+    monkeypatch.setattr(stress, "cases", lambda quick: [stress.Case("θ0 near 0", 0.5, 0.0, 1.0, 50)])
+    out = tmp_path / "S.md"
+    assert main(["stress", "--quick", "--jobs", "2", "--out", str(out)]) == 0
+    text = out.read_text()
+    assert "## 4 random orbits, 100 collisions each" in text and "**Silent wrong collisions: 0.**" in text
+    assert "0 silent wrong collision(s)" in capsys.readouterr().out
+    assert main(["stress", "--jobs", "0", "--out", str(out)]) == 2
