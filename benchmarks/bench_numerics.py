@@ -69,7 +69,7 @@ THETA, PHI = paper_grid()
 # --- speed ---------------------------------------------------------------------
 
 def kernel_input(r, orbit=0):
-    rows = np.array(rules.float_rows(r))
+    rows = np.array(rules.float_rows(r)).reshape(27)      # the kernel's flat layout, as loop.c's
     n0 = np.array(rules.initial_normal(THETA[orbit], PHI[orbit]))
     return rows, n0
 

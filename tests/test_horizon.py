@@ -41,8 +41,8 @@ def traced(r, n0, collisions, strict=False, tol=rules.TOL64):
     roundings along the orbit feed the bound)."""
     rows = np.array(rules.float_rows(r))
     letters, normals, errs = np.zeros(collisions, np.int8), np.zeros((collisions, 3)), np.zeros((collisions, 3))
-    code, done, cert = kernel.trace(1, np.array(n0, dtype=float), rows, tol, *CONSTANTS[1:], collisions, strict,
-                                    letters, normals, errs)
+    code, done, cert = kernel.trace(1, np.array(n0, dtype=float), rows.reshape(27), tol, *CONSTANTS[1:], collisions,
+                                    strict, letters, normals, errs)
     return code, done, cert, letters, normals, errs, rows
 
 

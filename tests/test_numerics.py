@@ -90,8 +90,8 @@ def test_float64_kernel_steps_exactly_like_reduction_step():
     rows = np.array(rules.float_rows(R_DYADIC))
     assert all(float(Fraction(x)) == x for x in rows.ravel())
     letters, normals, errs = np.zeros(400, np.int8), np.zeros((400, 3)), np.zeros((400, 3))
-    code, done, _ = kernel.trace(1, np.array(planes[0].n, dtype=float), rows, *CONSTANTS, 400, False, letters,
-                                 normals, errs)
+    code, done, _ = kernel.trace(1, np.array(planes[0].n, dtype=float), rows.reshape(27), *CONSTANTS, 400, False,
+                                 letters, normals, errs)
     assert code == 0 and done == 400
     exact_steps, irows, n = 0, rules.integer_rows(R_DYADIC), planes[0].n
     for k, P in enumerate(planes[1:]):

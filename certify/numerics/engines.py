@@ -69,7 +69,7 @@ def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(
                   normal=None, strict=False) -> OrbitResult:
     """One orbit on the float64 kernel (``trace`` when the word or checkpoints are
     asked); ``strict``: stop at the certified horizon (break 5)."""
-    rows = np.array(rules.float_rows(r))
+    rows = np.array(rules.float_rows(r)).reshape(27)           # the kernel's flat layout
     n0 = np.array(normal if normal is not None else rules.initial_normal(theta0, phi0, letter), dtype=float)
     i0 = rules.INDEX[letter]
     constants = (rules.TOL64, rules.G64, rules.K64, rules.TINY64)

@@ -3,7 +3,8 @@
 parallel over (r, orbit) pairs with ``prange``.
 
 The matrices are ``rules.float_rows(r)`` (``reduction.cofactor`` converted to float),
-passed as an array ``rows[r_index, letter, row, column]``.  Two bounds travel with
+passed flat, as ``benchmarks/loop.c`` takes them: ``rows[r_index, 9 letter + 3 row +
+column]`` (a contiguous 1-d row per r: constant offsets, as in C).  Two bounds travel with
 the normal n, componentwise:
 
 * ``bnd``, the rounding of the last step alone (``TOL · |Ĉ||n|``): the margin rule
@@ -75,17 +76,18 @@ def _advance(j, n, err, rows, tol, g, K, tiny):
     """rules.advance, rules.step_bounds and rules.carry_bound, then the power-of-2
     rescaling (both bounds with it): the new (n, bnd, err), as tuples (registers, not
     arrays: no aliasing to fear)."""
-    m0 = rows[j, 0, 0] * n[0] + rows[j, 0, 1] * n[1] + rows[j, 0, 2] * n[2]
-    m1 = rows[j, 1, 0] * n[0] + rows[j, 1, 1] * n[1] + rows[j, 1, 2] * n[2]
-    m2 = rows[j, 2, 0] * n[0] + rows[j, 2, 1] * n[1] + rows[j, 2, 2] * n[2]
+    R = 9 * j
+    m0 = rows[R + 0] * n[0] + rows[R + 1] * n[1] + rows[R + 2] * n[2]
+    m1 = rows[R + 3] * n[0] + rows[R + 4] * n[1] + rows[R + 5] * n[2]
+    m2 = rows[R + 6] * n[0] + rows[R + 7] * n[1] + rows[R + 8] * n[2]
     t = _next(j)
     mt = m0 if t == 0 else (m1 if t == 1 else m2)
     if mt < 0.0:
         m0, m1, m2 = -m0, -m1, -m2
     a0, a1, a2 = abs(n[0]), abs(n[1]), abs(n[2])
-    c00, c01, c02 = abs(rows[j, 0, 0]), abs(rows[j, 0, 1]), abs(rows[j, 0, 2])
-    c10, c11, c12 = abs(rows[j, 1, 0]), abs(rows[j, 1, 1]), abs(rows[j, 1, 2])
-    c20, c21, c22 = abs(rows[j, 2, 0]), abs(rows[j, 2, 1]), abs(rows[j, 2, 2])
+    c00, c01, c02 = abs(rows[R + 0]), abs(rows[R + 1]), abs(rows[R + 2])
+    c10, c11, c12 = abs(rows[R + 3]), abs(rows[R + 4]), abs(rows[R + 5])
+    c20, c21, c22 = abs(rows[R + 6]), abs(rows[R + 7]), abs(rows[R + 8])
     b0 = tol * (c00 * a0 + c01 * a1 + c02 * a2)
     b1 = tol * (c10 * a0 + c11 * a1 + c12 * a2)
     b2 = tol * (c20 * a0 + c21 * a1 + c22 * a2)
@@ -179,7 +181,7 @@ def _orbit(i0, n_init, rows, tol, g, K, tiny, collisions, keep, strict, out_phi)
 
 @njit(cache=True, parallel=True)
 def sweep(letters0, normals0, rows, tol, g, K, tiny, collisions, keep, strict, phi, breaks, counts, certified):
-    """Every (r, orbit) pair, in parallel: rows (n_r, 3, 3, 3), normals0 (n_o, 3),
+    """Every (r, orbit) pair, in parallel: rows (n_r, 27), normals0 (n_o, 3),
     letters0 (n_o,); fills phi (n_r, n_o, keep), breaks, counts and certified
     (n_r, n_o)."""
     n_r = rows.shape[0]

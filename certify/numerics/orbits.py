@@ -131,7 +131,7 @@ def _float64(r, theta0, phi0, collisions, keep, strict, progress):
     per = max(1, min(n_r, (1 << 22) // max(1, n_o * max(collisions, 1))))
     for lo in range(0, n_r, per):
         hi = min(n_r, lo + per)
-        rows = np.array([rules.float_rows(x) for x in r[lo:hi]]).reshape(hi - lo, 3, 3, 3)
+        rows = np.array([rules.float_rows(x) for x in r[lo:hi]]).reshape(hi - lo, 27)     # the kernel's layout
         kernel.sweep(letters, normals, rows, rules.TOL64, rules.G64, rules.K64, rules.TINY64, collisions, keep,
                      strict, phi[lo:hi], breaks[lo:hi], counts[lo:hi], certified[lo:hi])
         if progress is not None:
