@@ -162,8 +162,8 @@ def section5_figure(data, dpi: int | None = None) -> str:
              f"{data.engine}")
     fraction = data.certified_fraction()
     if fraction is not None:
-        title += (f"; certified: {fraction:.2%} of the collisions (horizon ≤ {int(data.certified.max())}: "
+        title += (f"\ncertified: {fraction:.2%} of the collisions (horizon ≤ {int(data.certified.max())}: "
                   "the points are shadowing orbits)" if data.certified.max() < data.collisions - data.keep
-                  else f"; certified: {fraction:.2%} of the collisions")
+                  else f"\ncertified: {fraction:.2%} of the collisions")
     return omega_figure(data, section5_name(spec.id, data.resolution), lines=numfig.red_lines(), boxes=spec.boxes,
                         title=title, dpi=dpi)
