@@ -6,18 +6,26 @@ float64 kernel against a plain C loop of the same map.
 
 Measured in one run:
 
-* the float64 kernel, one core: map steps per second on a stable-window orbit
-  (r = 0.15, the (ab)^2(cb)^2 window) and a chaotic one (r = 0.5), against
-  ``benchmarks/loop.c`` compiled with ``cc -O2`` (same matrices, same checks, same
-  word: the checksums must agree); the ratio;
+* the float64 kernel, one core: map steps per CPU second (both sides measure their
+  process's CPU time, best of 3: a per-core rate that a loaded machine does not
+  distort as much as wall time) on a stable-window orbit
+  (r = 0.15, the (ab)^2(cb)^2 window), a chaotic one (r = 0.5) and one between the
+  windows (r = 0.1), against ``benchmarks/loop.c`` compiled with ``cc -O2`` (same
+  matrices, same checks, the same accumulated error bound, same word and certified
+  horizon: the checksums must agree); the ratio;
 * Figure 5.1 at the paper's resolution (3709 r × 8 orbits × 10^4 collisions) with
   ``simulate`` on every core (numba threads), and on one;
 * for every engine and precision (float64; mp at 16, 30, 60, 120 digits; ball): the
   time per collision and the error after 10^2, 10^3, 10^4 collisions against the
   certified ball orbit (the sine of the angle between the normals; "word" when the
   collision word already departed);
-* the horizon of trust: the collisions until the float64 (and mp 16) word departs
-  from the certified ball word, for the 8 orbits of the paper's grid at both r.
+* the horizon of trust, per regime, for the 8 orbits of the paper's grid: as
+  certified (the accumulated error bound of float64, mp 16 and mp 30 digits) and as
+  measured (the first collision where the word departs from the certified ball word);
+* the ball engine (benchmarks/bench_ball.py): bits lost and µs per collision at a
+  fixed precision, and the certified horizon reached in 10 s, for this checkout and
+  for the engine before the exact products (``BEFORE``, a ``git archive`` of that
+  commit measured by the same script in a subprocess).
 
 Without --quick the tables go to reports/BENCH.md (section "numerics") and the plot
 to reports/figures/bench_numerics.png.
@@ -51,7 +59,9 @@ from certify.run import files  # noqa: E402
 
 BENCH = ROOT / "reports" / "BENCH.md"
 PLOT = ROOT / "reports" / "figures" / "bench_numerics.png"
-ORBITS = {"stable": 0.15, "chaotic": 0.5}
+ORBITS = {"stable": 0.15, "chaotic": 0.5, "between the windows": 0.1}
+BEFORE = "cb9d573"             # the last commit whose ball engine wrapped (one ball through every matrix)
+CONSTANTS = (rules.TOL64, rules.G64, rules.K64, rules.TINY64)
 MP_DPS = (16, 30, 60, 120)
 THETA, PHI = paper_grid()
 
@@ -59,38 +69,61 @@ THETA, PHI = paper_grid()
 # --- speed ---------------------------------------------------------------------
 
 def kernel_input(r, orbit=0):
-    rows = np.array(rules.float_rows(r))
-    absrows = np.array(rules.row_abs(rows.tolist()))
+    rows = np.array(rules.float_rows(r)).reshape(27)      # the kernel's flat layout, as loop.c's
     n0 = np.array(rules.initial_normal(THETA[orbit], PHI[orbit]))
-    return rows, absrows, n0
+    return rows, n0
 
 
 def float64_rate(r, steps, repeat=3):
-    """(steps per second, checksum) of the numba kernel, one core, best of ``repeat``."""
-    rows, absrows, n0 = kernel_input(r)
-    kernel.count_steps(1, n0, rows, absrows, rules.TOL64, 10)
+    """(steps per second, (code, done, certified, checksum)) of the numba kernel, one
+    core, best of ``repeat``."""
+    rows, n0 = kernel_input(r)
+    kernel.count_steps(1, n0, rows, *CONSTANTS, 10)
     best, out = float("inf"), None
     for _ in range(repeat):
-        start = time.perf_counter()
-        out = kernel.count_steps(1, n0, rows, absrows, rules.TOL64, steps)
-        best = min(best, time.perf_counter() - start)
+        start = time.process_time()          # CPU time, as loop.c measures: per core, robust to load
+        out = kernel.count_steps(1, n0, rows, *CONSTANTS, steps)
+        best = min(best, time.process_time() - start)
     return out[1] / best, out
 
 
 def c_rate(r, steps, repeat=3):
-    """(steps per second, (code, done, checksum)) of benchmarks/loop.c, or None without a compiler."""
+    """(steps per second, (code, done, certified, checksum)) of benchmarks/loop.c, or
+    None without a compiler."""
     cc = shutil.which("cc") or shutil.which("gcc")
     if cc is None:
         return None
-    rows, absrows, n0 = kernel_input(r)
+    rows, n0 = kernel_input(r)
     with tempfile.TemporaryDirectory() as tmp:
         exe = Path(tmp) / "loop"
         subprocess.run([cc, "-O2", "-o", str(exe), str(ROOT / "benchmarks" / "loop.c"), "-lm"], check=True)
-        numbers = [rules.TOL64.hex(), "1"] + [float(x).hex() for x in [*n0, *rows.ravel(), *absrows.ravel()]]
+        numbers = [float(x).hex() for x in CONSTANTS] + ["1"] + [float(x).hex() for x in [*n0, *rows.ravel()]]
         text = f"{steps} {repeat} " + " ".join(numbers)
         out = subprocess.run([str(exe)], input=text, capture_output=True, text=True, check=True).stdout.split()
-    code, done, check, seconds = int(out[0]), int(out[1]), int(out[2]), float(out[3])
-    return done / seconds, (code, done, check)
+    code, done, cert, check, seconds = int(out[0]), int(out[1]), int(out[2]), int(out[3]), float(out[4])
+    return done / seconds, (code, done, cert, check)
+
+
+def ball_tables(quick):
+    """The rows of bench_ball.table() for this checkout, and for BEFORE (None when git
+    or the commit is missing)."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("bench_ball", ROOT / "benchmarks" / "bench_ball.py")
+    bench_ball = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench_ball)
+    kw = dict(prec=512, marks=(100, 300), seconds=1.0) if quick else {}
+    now = bench_ball.table(**kw)
+    before = None
+    with tempfile.TemporaryDirectory() as tmp:
+        archive = subprocess.run(["git", "-C", str(ROOT), "archive", BEFORE], capture_output=True)
+        if archive.returncode == 0:
+            subprocess.run(["tar", "-x", "-C", tmp], input=archive.stdout, check=True)
+            code = ("import sys; sys.path.insert(0, sys.argv[1]); import runpy; "
+                    "m = runpy.run_path(sys.argv[2]); print('\\n'.join(m['table'](**eval(sys.argv[3]))))")
+            res = subprocess.run([sys.executable, "-c", code, tmp, str(ROOT / "benchmarks" / "bench_ball.py"), repr(kw)],
+                                 capture_output=True, text=True, env={**os.environ, "PYTHONPATH": tmp})
+            before = res.stdout.strip().splitlines() if res.returncode == 0 else [f"(failed: {res.stderr[-300:]})"]
+    return now, before
 
 
 def paper_sweep(threads, n_r=3709, collisions=10_000):
@@ -194,24 +227,26 @@ def main(argv=None) -> int:
     n_r = 371 if quick else 3709
     t_all, sweep = paper_sweep(cores, n_r)
     t_one, _ = paper_sweep(1, n_r) if not quick else (None, None)
-    # 3. references, horizons
+    # 3. references, horizons: certified (the bound) and measured (against the ball word)
     grid = range(2 if quick else 8)
     jobs = [(r, o) for r in ORBITS.values() for o in grid]
     with ProcessPoolExecutor(cores) as pool:
         futures = {job: pool.submit(engines.certified, job[0], THETA[job[1]], PHI[job[1]], collisions, marks,
-                                          12000, max(256, 2 * collisions)) for job in jobs}
+                                    None, 1024) for job in jobs}
         refs = {job: f.result() for job, f in futures.items()}
     horizon = {}
+    setups_h = (("float64", None), ("mp", 16), ("mp", 30))
     for (r, o), ref in refs.items():
-        for engine, dps in (("float64", None), ("mp", 16)):
+        for engine, dps in setups_h:
             res = engines.run_orbit(engine, r, THETA[o], PHI[o], collisions, dps=dps, word=True)
             dep = departure(res.word, ref[3])
-            horizon[(r, o, engine)] = (dep, res.code, res.collisions, ref[1], ref[2])
+            horizon[(r, o, engine, dps)] = (dep, res.certified, min(res.collisions, ref[1]))
     # 4. run time against error, orbit 0 of the grid
     table = []
     setups = [("float64", None)] + [("mp", d) for d in MP_DPS] + [("ball", None)]
     for engine, dps in setups:
         row = [engine if dps is None else f"{engine} {dps} digits"]
+        bits = []
         for r in ORBITS.values():
             ref = refs[(r, 0)]
             if engine == "float64":
@@ -220,20 +255,44 @@ def main(argv=None) -> int:
                 sec = 1 / rate
             else:
                 sec, errs, res = errors(engine, dps, r, collisions, marks, ref)
-            if engine == "ball":
-                row[0] += f" {res.bits} bits at r={r}"
+            bits.append(str(res.bits))
             row += [sec * 1e6] + [errs[k] for k in marks]
+        if engine == "ball":
+            row[0] += " (" + "/".join(bits) + " bits)"
         table.append(row)
+    # 5. the ball engine, now and before
+    ball_now, ball_before = ball_tables(quick)
 
-    say(f"float64 kernel against benchmarks/loop.c (cc -O2), one core, {steps:.0e} steps:")
+    say(f"float64 kernel (with the accumulated error bound) against benchmarks/loop.c (cc -O2, the same bound), "
+        f"one core, {steps:.0e} steps:")
+    ratios = []
     for name, r, f, c, same in speed:
         ratio = f"{f / c:.2f}" if c else "no C compiler"
+        if c:
+            ratios.append(f / c)
         say(f"  {name} r = {r}: float64 {f / 1e6:.1f} M steps/s, C {c / 1e6 if c else float('nan'):.1f} M steps/s, "
-            f"ratio {ratio}, same word: {same}")
+            f"ratio {ratio}, same word and certified horizon: {same}")
+    if ratios:
+        say(f"  median ratio float64 / C: {float(np.median(ratios)):.2f}")
     total = int(sweep.collisions.sum())
     say(f"Figure 5.1 sweep ({n_r} r × 8 orbits × {collisions} collisions = {total:.3g} collisions): "
         f"{t_all:.2f} s on {cores} threads" + (f", {t_one:.2f} s on one" if t_one else "")
-        + f"; breaks: {dict(zip(*np.unique(sweep.breaks, return_counts=True)))}")
+        + f"; breaks: {dict((int(k), int(v)) for k, v in zip(*np.unique(sweep.breaks, return_counts=True)))}; "
+        f"certified: {sweep.certified_fraction():.2%} of the collisions")
+    say("")
+    say("Horizon of trust over the orbits of the paper's grid (min / median / max): certified = the collisions the "
+        "accumulated error bound proves; measured = the first collision where the word departs from the certified "
+        f"ball word ('>N': none within the N compared):")
+    for name, r in ORBITS.items():
+        for engine, dps in setups_h:
+            cert = sorted(horizon[(r, o, engine, dps)][1] for o in grid)
+            deps = [horizon[(r, o, engine, dps)] for o in grid]
+            meas = sorted(d if d > 0 else float("inf") for d, _, _ in deps)
+            shown = [str(x) if x != float("inf") else f">{min(n for _, _, n in deps)}" for x in
+                     (meas[0], meas[len(meas) // 2], meas[-1])]
+            label = engine if dps is None else f"{engine} {dps} digits"
+            say(f"  {name} r = {r}, {label}: certified {cert[0]} / {cert[len(cert) // 2]} / {cert[-1]}; "
+                f"measured {' / '.join(shown)}")
     head = "| engine | " + " | ".join(f"µs/coll. r={r} | " + " | ".join(f"err {k}" for k in marks)
                                        for r in ORBITS.values()) + " |"
     say("")
@@ -244,39 +303,53 @@ def main(argv=None) -> int:
                             for i, x in enumerate(row[1:])]
         say("| " + " | ".join(cells) + " |")
     say("")
-    say("Horizon of trust (first collision where the word departs from the certified ball word; "
-        f"'>N' none within the N certified):")
-    for r in ORBITS.values():
-        for engine in ("float64", "mp"):
-            cells = []
-            for o in grid:
-                dep, code, done, ref_done, bits = horizon[(r, o, engine)]
-                cells.append(str(dep) if dep > 0 else f">{min(done, ref_done)}")
-            say(f"  r = {r}, {engine}{' 16 digits' if engine == 'mp' else ''}: " + ", ".join(cells))
-    bits = {r: max(horizon[(r, o, 'float64')][4] for o in grid) for r in ORBITS.values()}
-    say(f"  the certified reference (ball, started at {max(256, 2 * collisions)} bits) used: "
-        + ", ".join(f"r = {r}: {b} bits" for r, b in bits.items()))
+    say("Ball engine, now (exact products of the cofactor matrices, re-centred every "
+        f"{engines.SEGMENT} collisions), the paper's first orbit:")
+    say("")
+    for line in ball_now:
+        say(line)
+    say("")
+    say(f"Ball engine before ({BEFORE}: one ball pushed through every matrix), the same script:")
+    say("")
+    for line in ball_before or ["(not measured: no git checkout)"]:
+        say(line)
     if not quick:
         plot(table, marks)
         machine = (f"{date.today().isoformat()}, {os.cpu_count()} cores, {platform.machine()}, Python "
                    f"{platform.python_version()}, numba {numba.__version__}, mpmath {mpmath.__version__} "
                    f"(backend {mpmath.libmp.BACKEND}), python-flint {flint.__version__}")
-        body = (f"Measured by `python -m certify bench --numerics` on {machine}.  Errors: the sine of the angle "
-                "between the engine's normal and the certified ball normal after k collisions of the orbit "
+        body = (f"Measured by `python -m certify bench --numerics` on {machine}, in one run.  Errors: the sine of "
+                "the angle between the engine's normal and the certified ball normal after k collisions of the orbit "
                 f"(θ0, φ0) = ({THETA[0]:.4f}, {PHI[0]:.4f}) from b; 'word': the collision word had already "
-                "departed.  Plot: reports/figures/bench_numerics.png.\n\n```\n" + "\n".join(
-                    line for line in lines if not line.startswith("|")) + "\n```\n\n" + "\n".join(
-                    line for line in lines if line.startswith("|")))
+                "departed.  Plot: reports/figures/bench_numerics.png.\n\n" + markdown(lines))
         files.write_section(BENCH, "numerics", body)
         print(f"\nwrote {BENCH.relative_to(ROOT)} (section 'numerics') and {PLOT.relative_to(ROOT)}")
     return 0
+
+
+def markdown(lines) -> str:
+    """The printed lines as Markdown: tables as tables, the rest in code blocks."""
+    out, text = [], []
+    for line in lines + [""]:
+        if line.startswith("|"):
+            if text and any(t.strip() for t in text):
+                out.append("```\n" + "\n".join(text).strip("\n") + "\n```")
+            text = []
+            out.append(line)
+        else:
+            if out and out[-1].startswith("|"):
+                out.append("")
+            text.append(line)
+    if text and any(t.strip() for t in text):
+        out.append("```\n" + "\n".join(text).strip("\n") + "\n```")
+    return "\n".join(out) + "\n"
 
 
 def plot(table, marks):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(ORBITS), figsize=(10, 4), sharey=True)
+    fig, axes = plt.subplots(1, len(ORBITS), figsize=(5 * len(ORBITS), 4), sharey=True)
     width = 1 + len(marks)
     for a, (ax, (name, r)) in enumerate(zip(axes, ORBITS.items())):
         for row in table:

@@ -28,13 +28,14 @@
                                 Figures 6-11 of the paper (our ids 5.1-5.8) into
                                 DIR/figures; paper: also
                                 DIR/numerics-paper.json; --n4: DIR/numerics-n4.json
-    simulate (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N]
-             [--keep N] [--engine float64|mp|ball] [--dps D] [--out FILE.npz]
-             [--jobs N] [--scheduler ADDRESS]
+    simulate (--r R [R ...] | --r-range LO HI COUNT)
+             [--orbits N | --theta0 T [T ...] --phi0 P [P ...]] [--collisions N]
+             [--keep N] [--engine float64|mp|ball] [--dps D] [--strict] [--words]
+             [--out FILE.npz] [--jobs N] [--scheduler ADDRESS]
                                 iterate the reduction map numerically (Section 5,
                                 certify.numerics); the φ of the last b-collisions
-    stress [--out FILE] [--quick]
-                                near-singular, long and random orbits on every
+    stress [--out FILE] [--quick] [--jobs N]
+                                near-singular, long and 1000 random orbits on every
                                 engine against the certified one: reports/STRESS.md
 
 Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
@@ -361,22 +362,47 @@ def r_values(args):
     return r
 
 
+def initial_data(args):
+    """(θ0, φ0): paired from ``--theta0`` and ``--phi0`` (θ0 in [0, π/2], φ0 in [0, π]),
+    else the first ``--orbits`` of the paper's grid."""
+    import math
+    from certify import numerics
+    import numpy as np
+    if args.theta0 is None and args.phi0 is None:
+        return numerics.grid(args.orbits if args.orbits is not None else 8)
+    if args.theta0 is None or args.phi0 is None:
+        raise UsageError("--theta0 and --phi0 go together (one φ0 per θ0)")
+    if args.orbits is not None:
+        raise UsageError("--orbits chooses from the paper's grid: not with --theta0/--phi0")
+    if len(args.theta0) != len(args.phi0):
+        raise UsageError(f"--theta0 has {len(args.theta0)} value(s), --phi0 {len(args.phi0)}: they are paired")
+    for name, values, top, text in (("theta0", args.theta0, math.pi / 2, "π/2"), ("phi0", args.phi0, math.pi, "π")):
+        bad = [x for x in values if not 0 <= x <= top]
+        if bad:
+            raise UsageError(f"--{name} must lie in [0, {text}], got {bad[0]:g}")
+    return np.array(args.theta0, dtype=float), np.array(args.phi0, dtype=float)
+
+
 def cmd_simulate(args) -> int:
-    """Iterate the reduction map from the paper's grid of initial data for every r."""
+    """Iterate the reduction map from the paper's grid of initial data (or the given
+    ones) for every r."""
     from certify import numerics
     from certify.run import executors
     from certify.run.files import atomic_path
     r = r_values(args)
-    theta0, phi0 = numerics.grid(args.orbits)
+    theta0, phi0 = initial_data(args)
     if args.out is not None:
         ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
         if args.out.is_dir():
             raise UsageError(f"--out {str(args.out)!r} is a directory, not a file")
     if args.dps is not None and args.engine == "float64":
         raise UsageError("--dps is for the mp and ball engines")
+    if args.words and args.out is None:
+        raise UsageError("--words stores the words in --out FILE.npz: give --out")
     with executors.executor(args.jobs, args.scheduler) if args.engine != "float64" else nullcontext() as ex:
         orbits = numerics.simulate(r, theta0, phi0, collisions=args.collisions, keep=args.keep,
-                                   engine=args.engine, dps=args.dps, executor=ex, progress=progress.Bar("r"))
+                                   engine=args.engine, dps=args.dps, executor=ex, progress=progress.Bar("r"),
+                                   strict=args.strict, words=args.words)
     if args.out is not None:
         with atomic_path(args.out) as tmp, open(tmp, "wb") as handle:
             orbits.save(handle)
@@ -388,9 +414,11 @@ def cmd_simulate(args) -> int:
 def cmd_stress(args) -> int:
     """Near-singular, long and random orbits on every engine: reports/STRESS.md."""
     from certify.numerics import stress
+    from certify.run import executors
     from certify.run.files import write_atomic
     ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
-    text, silent = stress.report(quick=args.quick, progress=progress.Bar("case"))
+    with executors.executor(args.jobs) as ex:
+        text, silent = stress.report(quick=args.quick, progress=progress.Bar("orbit"), executor=ex)
     write_atomic(args.out, text)
     print(f"wrote {args.out}: {silent} silent wrong collision(s)")
     return 1 if silent else 0
@@ -404,13 +432,23 @@ def add_numerics(commands) -> None:
                             "collision from the paper's grid of initial data (θ0, φ0) at a b-contact; "
                             "keeps the φ of the last b-collisions.  Breaks: 1 undecided contact "
                             "(|cos φ| below the rounding bound), 2 time step below precision, "
-                            "3 corner, 4 non-finite.")
+                            "3 corner, 4 non-finite, 5 certified horizon (--strict).  Every orbit reports "
+                            "the collisions it certifies (float64, mp: an accumulated rigorous error bound; "
+                            "ball: all).")
     which = p.add_mutually_exclusive_group(required=True)
     which.add_argument("--r", nargs="+", type=number, metavar="R", help="restitution coefficients in ]0,1[")
     which.add_argument("--r-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
                        help="COUNT values from LO to HI, ends included (paper Figure 6: 0.072 0.999 3709)")
-    p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
+    p.add_argument("--orbits", type=positive_int, default=None, metavar="N",
                    help="initial data per r: the first N of the paper's grid, 2 θ0 × 4 φ0 (default: 8)")
+    p.add_argument("--theta0", nargs="+", type=number, metavar="T",
+                   help="initial θ0 in [0, π/2], paired with --phi0 (instead of the grid)")
+    p.add_argument("--phi0", nargs="+", type=number, metavar="P", help="initial φ0 in [0, π], one per --theta0")
+    p.add_argument("--strict", action="store_true",
+                   help="stop each orbit at its certified horizon (break 5); without it float64 and mp orbits "
+                        "go on past it and --out's `certified` says how far they are proven")
+    p.add_argument("--words", action="store_true",
+                   help="also store each orbit's collision word in --out (an array `word` of strings)")
     p.add_argument("--collisions", type=count, default=10_000, metavar="N", help="collisions per orbit (default: 10^4)")
     p.add_argument("--keep", type=count, default=500, metavar="N",
                    help="keep the φ of the last N b-collisions (default: 500)")
@@ -419,17 +457,23 @@ def add_numerics(commands) -> None:
     p.add_argument("--dps", type=positive_int, default=None, metavar="D",
                    help="decimal digits: of mp (default 30), the cap of ball (default 5000)")
     p.add_argument("--out", type=Path, default=None, metavar="FILE.npz",
-                   help="write r, theta0, phi0, phi, breaks, collisions (npz); else print a summary")
+                   help="write r, theta0, phi0, phi, breaks, collisions, certified [, word] (npz); "
+                        "a summary is printed in any case")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
                    help="processes for the mp and ball engines (default: all cores)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run the mp and ball orbits on this Dask scheduler instead")
     p.set_defaults(func=cmd_simulate)
 
-    p = commands.add_parser("stress", help="stress the numerical engines against the certified one")
+    p = commands.add_parser("stress", help="stress the numerical engines against the certified one",
+                            description="Near-singular data, 1000 seeded random orbits of 2000 collisions over "
+                            "the whole r range and long orbits, on float64 and mp against the certified ball "
+                            "engine: certified horizons, departures, silent wrong collisions (exit 1 if any).")
     p.add_argument("--out", type=Path, default=DEFAULT_STRESS, metavar="FILE",
                    help="the report (default: reports/STRESS.md)")
-    p.add_argument("--quick", action="store_true", help="smaller cases (a smoke test)")
+    p.add_argument("--quick", action="store_true", help="smaller cases (a smoke test): 40 random orbits of 300")
+    p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
+                   help="processes for the random orbits (default: all cores)")
     p.set_defaults(func=cmd_stress)
 
 

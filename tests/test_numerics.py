@@ -64,6 +64,7 @@ def test_float_angles_agree_with_reduction_angles(letter, n):
 # --- one map --------------------------------------------------------------------
 
 R_DYADIC = flint.fmpq(3, 8)                 # r, the cofactors and small normals exact in floats
+CONSTANTS = (rules.TOL64, rules.G64, rules.K64, rules.TINY64)
 
 
 def exact_orbit(letter, n, steps):
@@ -88,9 +89,9 @@ def test_float64_kernel_steps_exactly_like_reduction_step():
     planes = exact_orbit("b", (-3, 5, 4), 400)
     rows = np.array(rules.float_rows(R_DYADIC))
     assert all(float(Fraction(x)) == x for x in rows.ravel())
-    absrows = np.array(rules.row_abs(rows.tolist()))
-    letters, normals = np.zeros(400, np.int8), np.zeros((400, 3))
-    code, done = kernel.trace(1, np.array(planes[0].n, dtype=float), rows, absrows, rules.TOL64, 400, letters, normals)
+    letters, normals, errs = np.zeros(400, np.int8), np.zeros((400, 3)), np.zeros((400, 3))
+    code, done, _ = kernel.trace(1, np.array(planes[0].n, dtype=float), rows.reshape(27), *CONSTANTS, 400, False,
+                                 letters, normals, errs)
     assert code == 0 and done == 400
     exact_steps, irows, n = 0, rules.integer_rows(R_DYADIC), planes[0].n
     for k, P in enumerate(planes[1:]):
@@ -135,8 +136,9 @@ def test_ring_buffer_keeps_the_last_b_angles_in_order():
 # --- the break codes ----------------------------------------------------------------
 
 def test_break_names():
-    assert set(numerics.BREAKS) == {0, 1, 2, 3, 4}
-    assert (numerics.UNDECIDED, numerics.SHORT_STEP, numerics.CORNER, numerics.NONFINITE) == (1, 2, 3, 4)
+    assert set(numerics.BREAKS) == {0, 1, 2, 3, 4, 5}
+    assert (numerics.UNDECIDED, numerics.SHORT_STEP, numerics.CORNER, numerics.NONFINITE, numerics.HORIZON) == \
+        (1, 2, 3, 4, 5)
 
 
 @pytest.mark.parametrize("engine", ENGINES)
@@ -203,7 +205,7 @@ def test_npz_schema(tmp_path):
     path = tmp_path / "o.npz"
     out.save(path)
     data = np.load(path)
-    assert sorted(data.files) == sorted(["r", "theta0", "phi0", "phi", "breaks", "collisions"])
+    assert sorted(data.files) == sorted(["r", "theta0", "phi0", "phi", "breaks", "collisions", "certified"])
     assert data["r"].shape == (2,) and data["theta0"].shape == data["phi0"].shape == (3,)
     assert data["phi"].shape == (2, 3, 20) and data["breaks"].shape == data["collisions"].shape == (2, 3)
     assert data["collisions"].tolist() == [[200] * 3] * 2

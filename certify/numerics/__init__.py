@@ -13,7 +13,7 @@ billiard reduction (Section 5 of the paper), from collision to collision, in flo
 from . import figures, stress
 from .engines import ENGINES, OrbitResult, run_orbit
 from .orbits import Orbits, grid, paper_grid, simulate
-from .rules import BREAKS, COMPLETED, CORNER, NONFINITE, SHORT_STEP, UNDECIDED
+from .rules import BREAKS, COMPLETED, CORNER, HORIZON, NONFINITE, SHORT_STEP, UNDECIDED
 
 __all__ = ["figures", "stress", "simulate", "Orbits", "paper_grid", "grid", "BREAKS", "ENGINES", "OrbitResult", "run_orbit",
-           "COMPLETED", "UNDECIDED", "SHORT_STEP", "CORNER", "NONFINITE"]
+           "COMPLETED", "UNDECIDED", "SHORT_STEP", "CORNER", "NONFINITE", "HORIZON"]

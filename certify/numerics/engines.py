@@ -3,15 +3,24 @@
 * ``float64``: the numba kernel (:mod:`.kernel`), parallel over orbits; here only a
   one-orbit wrapper (:func:`float64_orbit`).
 * ``mp``: mpmath at ``dps`` decimal digits (gmpy2 backend when installed,
-  ``mpmath.libmp.BACKEND``), with the same margin rule at TOL = SAFETY · 2^-prec.
-* ``ball``: python-flint arb.  A sign is used only when the ball proves it; when a
-  choice is undecided the orbit is recomputed from its datum at twice the precision,
+  ``mpmath.libmp.BACKEND``), with the same margin rule at TOL = SAFETY · 2^-prec and
+  the same accumulated bound (:func:`.rules.carry_bound`) at its precision.
+* ``ball``: python-flint arb, without wrapping.  The state after k collisions is
+  P_k n0 with P_k = ±cof(K_{j_k}) ⋯ cof(K_{j_1}) the product of the integer cofactor
+  matrices, kept *exactly* (fmpz), and n0 the ball of the initial normal; only the
+  product is evaluated in balls, at each step, from P_k rounded to the working
+  precision by arb (with a rigorous radius).  The radius of the normal is
+  therefore |P_k| rad(n0) + O(2^-prec |P_k| |n0|): the bits lost along the orbit are
+  log2(|P_k||n0| / |P_k n0|), the true condition of the product, not the wrapping of
+  a ball pushed through k matrices (1-1.6 bits per collision).  When a choice is
+  undecided only n0 is recomputed at twice the precision (P_k does not depend on it),
   up to a cap; the result is the certified horizon (the collisions proven) and, at
   the cap, the break that stopped it.  The datum is the float (θ0, φ0) read exactly.
 
 All three run :func:`.rules.classify` and :func:`.rules.advance` (the kernel is their
-transcription).  An :class:`OrbitResult` holds the break, the count, the φ of the
-last ``keep`` b-collisions, optionally the word and the normals at checkpoints.
+transcription).  An :class:`OrbitResult` holds the break, the count, the collisions
+certified, the φ of the last ``keep`` b-collisions, optionally the word and the
+normals at checkpoints.
 """
 from __future__ import annotations
 
@@ -30,6 +39,7 @@ MP_DPS = 30                    # default digits of the mp engine
 BALL_START = 64                # first precision (bits) of the ball engine
 BALL_CAP_DPS = 5000          # default cap of the ball engine, decimal digits (~16600 bits)
 BITS_PER_DIGIT = math.log2(10)
+SEGMENT = 512                  # collisions per exact product of the ball engine (_Product)
 
 
 @dataclass
@@ -40,6 +50,11 @@ class OrbitResult:
     word: str = ""                          # the collision letters, when asked
     checkpoints: dict = field(default_factory=dict)   # collision -> (letter index, normal in the engine's numbers)
     bits: int = 53                          # the precision that gave this result
+    certified: int = -1                     # the collisions certified (the certified horizon)
+
+    def __post_init__(self):
+        if self.certified < 0:
+            self.certified = self.collisions
 
 
 def _ring_to_phi(ring: list, keep: int) -> np.ndarray:
@@ -51,62 +66,90 @@ def _ring_to_phi(ring: list, keep: int) -> np.ndarray:
 
 
 def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(), letter=rules.START,
-                  normal=None) -> OrbitResult:
-    """One orbit on the float64 kernel (``trace`` when the word or checkpoints are asked)."""
-    rows = np.array(rules.float_rows(r))
-    absrows = np.array(rules.row_abs(rules.float_rows(r)))
+                  normal=None, strict=False) -> OrbitResult:
+    """One orbit on the float64 kernel (``trace`` when the word or checkpoints are
+    asked); ``strict``: stop at the certified horizon (break 5)."""
+    rows = np.array(rules.float_rows(r)).reshape(27)           # the kernel's flat layout
     n0 = np.array(normal if normal is not None else rules.initial_normal(theta0, phi0, letter), dtype=float)
     i0 = rules.INDEX[letter]
+    constants = (rules.TOL64, rules.G64, rules.K64, rules.TINY64)
     if word or checkpoints:
         letters = np.zeros(collisions, dtype=np.int8)
         normals = np.zeros((collisions, 3))
-        code, done = kernel.trace(i0, n0, rows, absrows, rules.TOL64, collisions, letters, normals)
+        errs = np.zeros((collisions, 3))
+        code, done, cert = kernel.trace(i0, n0, rows, *constants, collisions, strict, letters, normals, errs)
         b = [rules.phi_of(1, normals[c]) for c in range(done) if letters[c] == 1]
         cps = {c: (int(letters[c - 1]), tuple(normals[c - 1])) for c in checkpoints if 0 < c <= done}
-        return OrbitResult(code, done, _ring_to_phi(b, keep),
-                           "".join(rules.LETTERS[x] for x in letters[:done]) if word else "", cps)
+        return OrbitResult(int(code), int(done), _ring_to_phi(b, keep),
+                           "".join(rules.LETTERS[x] for x in letters[:done]) if word else "", cps,
+                           certified=int(cert))
     phi = np.empty(keep)
-    code, done = kernel._orbit(i0, n0, rows, absrows, rules.TOL64, collisions, keep, phi)
-    return OrbitResult(int(code), int(done), phi)
+    code, done, cert = kernel._orbit(i0, n0, rows, *constants, collisions, keep, strict, phi)
+    return OrbitResult(int(code), int(done), phi, certified=int(cert))
 
 
-def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, checkpoints, sign, finite, phi):
-    """The generic loop of the mp and ball engines (rules.classify / rules.advance)."""
-    ring, letters, cps = [], [], {}
-    want = set(checkpoints)
-    code, done = 0, 0
+class _Record:
+    """What an engine keeps of an orbit: the φ of the last b-collisions (a ring), the
+    word when asked, the normals at the checkpoints."""
+
+    def __init__(self, keep, word, checkpoints, phi):
+        self.keep, self.word, self.want, self.phi = keep, word, set(checkpoints), phi
+        self.ring, self.letters, self.cps = [], [], {}
+
+    def add(self, j, n, done):
+        if j == 1:
+            self.ring.append(self.phi(n))
+            if len(self.ring) > 2 * self.keep + 64:
+                del self.ring[:len(self.ring) - self.keep]
+        if self.word:
+            self.letters.append(rules.LETTERS[j])
+        if done in self.want:
+            self.cps[done] = (j, n)
+
+
+def _iterate(i, n, bounds, rows, absrows, tolerance, collisions, keep, word, checkpoints, sign, finite, phi,
+             carry=None, err=None, strict=False):
+    """The loop of the mp engine (rules.classify / rules.advance; ``carry(j, n, err)``
+    the accumulated bound, rules.carry_bound).  Returns (code, done, certified, ring of
+    b-angles, word, checkpoints)."""
+    rec = _Record(keep, word, checkpoints, phi)
+    code, done, certified = 0, 0, -1
     for c in range(collisions):
         code, j = rules.classify(i, n, bounds, sign, finite)
+        if code == 0 and err is not None and not rules.certifies(i, n, err, j, sign, finite):
+            certified, err = c, None            # the horizon: no need to carry the bound further
+            if strict:
+                code = rules.HORIZON
         if code:
             break
         if tolerance is not None:
             bounds = rules.step_bounds(j, n, absrows, tolerance)
+        if err is not None:
+            err = carry(j, n, err)
         n = rules.advance(j, n, rows)
         i, done = j, c + 1
-        if j == 1:
-            ring.append(phi(n))
-            if len(ring) > 2 * keep + 64:
-                del ring[:len(ring) - keep]
-        if word:
-            letters.append(rules.LETTERS[j])
-        if done in want:
-            cps[done] = (j, n)
-    return code, done, ring, "".join(letters), cps
+        rec.add(j, n, done)
+    return code, done, (done if certified < 0 else certified), rec.ring, "".join(rec.letters), rec.cps
 
 
 def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkpoints=(),
-             letter=rules.START, normal=None) -> OrbitResult:
-    """One orbit in mpmath at ``dps`` digits."""
+             letter=rules.START, normal=None, strict=False) -> OrbitResult:
+    """One orbit in mpmath at ``dps`` digits; ``strict``: stop at the certified horizon."""
     ctx = mpmath.mp.clone()
     ctx.dps = dps
     mpf = ctx.mpf
+
+    def exact(q):                          # an exact rational as an mpf: numerator / denominator, rounded
+        return mpf(q.numerator) / q.denominator
+
     rows = [[[mpf(int(z)) for z in row] for row in K] for K in rules.integer_rows(r)]
     absrows = rules.abs_rows(rows)
     if normal is not None:
         n = tuple(mpf(z) for z in normal)
     else:
         n = rules.initial_normal(mpf(theta0), mpf(phi0), letter, ctx.cos, ctx.sin)
-    tolerance = mpf(rules.tol(ctx.prec).numerator) / rules.tol(ctx.prec).denominator
+    tolerance = exact(rules.tol(ctx.prec))
+    g, K = exact(rules.gamma_bound(ctx.prec)), exact(rules.inflation(ctx.prec))   # both exact at prec bits
     top = max(abs(z) for z in n)
     bounds = (tolerance * top,) * 3
 
@@ -116,39 +159,117 @@ def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkp
     def phi(v):
         return float(ctx.atan2(ctx.hypot(v[2], v[0]), v[1]))
 
-    code, done, ring, w, cps = _iterate(rules.INDEX[letter], n, bounds, rows, absrows, tolerance, collisions, keep,
-                                        word, checkpoints, rules.margin_sign, finite, phi)
-    return OrbitResult(code, done, _ring_to_phi(ring, keep), w, cps, bits=ctx.prec)
+    def carry(j, v, err):
+        return rules.carry_bound(j, v, err, absrows, g, K)
+
+    code, done, cert, ring, w, cps = _iterate(rules.INDEX[letter], n, bounds, rows, absrows, tolerance, collisions,
+                                              keep, word, checkpoints, rules.margin_sign, finite, phi, carry, bounds,
+                                              strict)
+    return OrbitResult(code, done, _ring_to_phi(ring, keep), w, cps, bits=ctx.prec, certified=cert)
 
 
-def _ball_attempt(r, theta0, phi0, collisions, keep, word, checkpoints, letter, normal, prec):
-    with precision(prec):
-        rows = [[[flint.arb(int(z)) for z in row] for row in K] for K in rules.integer_rows(r)]
-        if normal is not None:
-            n = tuple(flint.arb(rules.exact_r(z)) if not isinstance(z, flint.arb) else z for z in normal)
-        else:
-            n = rules.initial_normal(flint.arb(theta0), flint.arb(phi0), letter, flint.arb.cos, flint.arb.sin)
+class _Product:
+    """The orbit as exact products of the integer cofactor matrices (fmpz_mat): the
+    finished segments ``done`` (each the product of :data:`SEGMENT` collisions) and
+    ``P``, the product since the last one; ``base`` the ball of the normal at the
+    start of ``P``: the datum n0 pushed through the segments, one evaluation per
+    segment (a re-centring in the manner of Lohner's method: the wrapping of one ball
+    evaluation happens once a segment, not once a collision, and the integers stay
+    below SEGMENT times the size of a cofactor)."""
 
-        def phi(v):
-            return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
+    def __init__(self, r, n0):
+        self.mats = [flint.fmpz_mat([[int(z) for z in row] for row in K]) for K in rules.integer_rows(r)]
+        self.P = flint.fmpz_mat([[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+        self.done = []
+        self.steps = 0
+        self.base = n0
 
-        return _iterate(rules.INDEX[letter], n, (0, 0, 0), rows, None, None, collisions, keep, word, checkpoints,
-                        rules.ball_sign, flint.arb.is_finite, phi)
+    def times(self, j):
+        return self.mats[j] * self.P
+
+    def push(self, P, n):
+        """P becomes the current product, n = its evaluation; a new segment every SEGMENT."""
+        self.P = P
+        self.steps += 1
+        if self.steps == SEGMENT:
+            self.done.append(P)
+            self.P = flint.fmpz_mat([[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+            self.steps = 0
+            self.base = n
+
+    def rebase(self, n0, prec):
+        """The datum at a new precision pushed through the finished segments."""
+        for S in self.done:
+            n0 = self.evaluate(S, n0, prec)
+        self.base = n0
+        return self.evaluate(self.P, n0, prec)
+
+    @staticmethod
+    def evaluate(P, n0, prec):
+        """A ball vector containing P n0: P rounded to arb at the working precision
+        (``prec``, the caller's context; arb_mat rounds each integer with a rigorous
+        radius) times the column of balls n0, in one arb_mat product."""
+        v = flint.arb_mat(P) * flint.arb_mat([[n0[0]], [n0[1]], [n0[2]]])
+        return (v[0, 0], v[1, 0], v[2, 0])
+
+
+def _initial_ball(theta0, phi0, letter, normal):
+    if normal is not None:
+        return tuple(flint.arb(rules.exact_r(z)) if not isinstance(z, flint.arb) else z for z in normal)
+    return rules.initial_normal(flint.arb(theta0), flint.arb(phi0), letter, flint.arb.cos, flint.arb.sin)
 
 
 def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkpoints=(), letter=rules.START,
-               normal=None, start_bits=BALL_START) -> OrbitResult:
-    """One certified orbit: every collision choice proven by arb balls; precision
-    doubled from ``start_bits`` on an undecided choice, up to ``dps`` digits (default
-    :data:`BALL_CAP_DPS`).  ``collisions`` of the result is the certified horizon."""
+               normal=None, start_bits=BALL_START, strict=False) -> OrbitResult:
+    """One certified orbit: every collision choice proven by arb balls, the normal
+    evaluated from exact products of cofactor matrices (module docstring,
+    :class:`_Product`); the precision of the datum doubled from ``start_bits`` when a
+    choice is undecided, up to ``dps`` digits (default :data:`BALL_CAP_DPS`).
+    ``collisions`` of the result is the certified horizon (``strict`` changes
+    nothing: every collision is certified)."""
     cap = int((dps or BALL_CAP_DPS) * BITS_PER_DIGIT) + 1
     prec = min(start_bits, cap)
-    while True:
-        code, done, ring, w, cps = _ball_attempt(r, theta0, phi0, collisions, keep, word, checkpoints, letter,
-                                                 normal, prec)
-        if code not in (rules.UNDECIDED, rules.SHORT_STEP) or prec >= cap:
-            return OrbitResult(code, done, _ring_to_phi(ring, keep), w, cps, bits=prec)
+    with precision(prec):
+        prod = _Product(r, _initial_ball(theta0, phi0, letter, normal))
+        n = prod.evaluate(prod.P, prod.base, prec)
+    i = rules.INDEX[letter]
+    code, done = 0, 0
+
+    def phi(v):
+        with precision(prec):
+            return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
+
+    rec = _Record(keep, word, checkpoints, phi)
+
+    def more(P):
+        """Double the precision: the datum again, through the segments, then P."""
+        nonlocal prec
         prec = min(2 * prec, cap)
+        with precision(prec):
+            prod.rebase(_initial_ball(theta0, phi0, letter, normal), prec)
+            return prod.evaluate(P, prod.base, prec)
+
+    while done < collisions:
+        with precision(prec):
+            code, j = rules.classify(i, n, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
+        if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
+            n = more(prod.P)
+            continue
+        if code:
+            break
+        P = prod.times(j)
+        with precision(prec):
+            m = prod.evaluate(P, prod.base, prec)
+        t = (j + 1) % 3
+        while not (m[t] > 0 or m[t] < 0) and prec < cap:     # the orientation undecided
+            m = more(P)
+        if m[t] < 0:
+            P, m = -P, tuple(-z for z in m)
+        prod.push(P, m)
+        n = m
+        i, done = j, done + 1
+        rec.add(j, n, done)
+    return OrbitResult(code, done, _ring_to_phi(rec.ring, keep), "".join(rec.letters), rec.cps, bits=prec)
 
 
 def run_orbit(engine: str, r, theta0, phi0, collisions, keep=0, dps=None, **kw) -> OrbitResult:
@@ -162,10 +283,11 @@ def run_orbit(engine: str, r, theta0, phi0, collisions, keep=0, dps=None, **kw) 
     raise ValueError(f"unknown engine {engine!r}")
 
 
-def task(engine, r, theta0, phi0, collisions, keep, dps):
-    """A picklable unit of work for an executor: (phi, code, collisions) of one orbit."""
-    res = run_orbit(engine, r, theta0, phi0, collisions, keep, dps)
-    return res.phi, res.code, res.collisions
+def task(engine, r, theta0, phi0, collisions, keep, dps, strict=False, word=False):
+    """A picklable unit of work for an executor: (phi, code, collisions, certified,
+    word) of one orbit."""
+    res = run_orbit(engine, r, theta0, phi0, collisions, keep, dps, strict=strict, word=word)
+    return res.phi, res.code, res.collisions, res.certified, res.word
 
 
 def certified(r, theta0, phi0, collisions, checkpoints=(), dps=None, start_bits=BALL_START):

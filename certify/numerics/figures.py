@@ -155,7 +155,9 @@ def initial_data(orbits: str):
 @dataclass
 class FigureData:
     """The points of one figure: ``phi[k, m, :]`` the kept b-angles of orbit m at r[k]
-    (NaN-padded at the front), ``breaks[k, m]`` its break code (0: completed)."""
+    (NaN-padded at the front), ``breaks[k, m]`` its break code (0: completed),
+    ``certified[k, m]`` its certified horizon (the collisions proven; the kept angles
+    come after it when it is below collisions − kept: a shadowing orbit)."""
 
     spec: Spec
     resolution: str
@@ -167,13 +169,21 @@ class FigureData:
     engine: str
     seconds: float = 0.0
     extra: dict = field(default_factory=dict)
+    certified: np.ndarray | None = None
+
+    def certified_fraction(self) -> float | None:
+        """The fraction of the collisions done that are certified (None when unknown)."""
+        if self.certified is None or not self.certified.size:
+            return None
+        return float(self.certified.sum()) / max(1, int(self.collisions) * self.certified.size)
 
     def restrict(self, spec: Spec) -> "FigureData":
         """The magnification ``spec`` of this run: the r values inside [spec.lo, spec.hi]."""
         eps = 1e-12
         sel = (self.r >= spec.lo - eps) & (self.r <= spec.hi + eps)
         return FigureData(spec, self.resolution, self.r[sel], self.phi[sel], self.breaks[sel],
-                          self.collisions, self.keep, self.engine, self.seconds)
+                          self.collisions, self.keep, self.engine, self.seconds,
+                          certified=None if self.certified is None else self.certified[sel])
 
     def where(self, lo: float, hi: float) -> np.ndarray:
         """The indices k with lo ≤ r[k] ≤ hi."""
@@ -217,9 +227,10 @@ def compute(fig: str, resolution: str = "preview", engine: str = "float64", exec
             kwargs["progress"] = progress
         orbits = numerics.simulate(rs, theta0, phi0, **kwargs)
         _MEMO[key] = (np.asarray(orbits.r, float), np.asarray(orbits.phi, float), np.asarray(orbits.breaks),
-                      time.perf_counter() - t)
-    rr, phi, breaks, seconds = _MEMO[key]
-    return FigureData(spec, resolution, rr, phi, breaks, lengths["collisions"], lengths["keep"], engine, seconds)
+                      time.perf_counter() - t, np.asarray(orbits.certified))
+    rr, phi, breaks, seconds, certified = _MEMO[key]
+    return FigureData(spec, resolution, rr, phi, breaks, lengths["collisions"], lengths["keep"], engine, seconds,
+                      certified=certified)
 
 
 def forget() -> None:
@@ -347,6 +358,9 @@ def summary(data: FigureData) -> dict:
                    "r_max": float(breaks.max()) if breaks.size else None,
                    "below_0.08": int((breaks < 0.08).sum())},
         "kinds": {kind: sum(1 for w in kinds if w.kind == kind) for kind in ("points", "pieces", "spread", "none")},
+        "certified": None if data.certified is None or not data.certified.size else {
+            "fraction": round(data.certified_fraction(), 6),
+            "horizon": [int(data.certified.min()), int(np.median(data.certified)), int(data.certified.max())]},
     }
 
 
@@ -481,7 +495,8 @@ def _probe_orbits(spec, rs, collisions, keep, engine):
     from certify import numerics
     theta0, phi0 = initial_data(spec.orbits)
     o = numerics.simulate(np.sort(np.asarray(rs, float)), theta0, phi0, collisions=collisions, keep=keep, engine=engine)
-    return FigureData(spec, "probe", np.asarray(o.r), np.asarray(o.phi), np.asarray(o.breaks), collisions, keep, engine)
+    return FigureData(spec, "probe", np.asarray(o.r), np.asarray(o.phi), np.asarray(o.breaks), collisions, keep, engine,
+                      certified=np.asarray(o.certified))
 
 
 def fraction(data: FigureData, lo: float, hi: float, test) -> tuple[float, int]:

@@ -22,7 +22,7 @@ import numpy as np
 
 from . import engines, kernel, rules
 
-KEYS = ("r", "theta0", "phi0", "phi", "breaks", "collisions")
+KEYS = ("r", "theta0", "phi0", "phi", "breaks", "collisions", "certified")
 
 
 def paper_grid() -> tuple[np.ndarray, np.ndarray]:
@@ -53,7 +53,10 @@ class Orbits:
     """The result of :func:`simulate`: r (n_r,), theta0 and phi0 (n_orbits,), phi
     (n_r, n_orbits, keep) the φ of the last b-collisions in order, NaN-padded at the
     front, breaks (n_r, n_orbits) the break codes (:data:`rules.BREAKS`, 0 completed),
-    collisions (n_r, n_orbits) the collisions done (for ``ball``: proven)."""
+    collisions (n_r, n_orbits) the collisions done, certified (n_r, n_orbits) the
+    collisions proven (the certified horizon: the accumulated error bound of float64
+    and mp, every collision of ball); word (n_r, n_orbits) the collision words, when
+    asked (else None)."""
 
     r: np.ndarray
     theta0: np.ndarray
@@ -61,19 +64,30 @@ class Orbits:
     phi: np.ndarray
     breaks: np.ndarray
     collisions: np.ndarray
+    certified: np.ndarray
+    word: np.ndarray | None = None
     engine: str = "float64"
 
     def save(self, path) -> None:
-        """Write the six arrays to an .npz file (``numpy.savez``; the path as given)."""
-        np.savez(path, **{k: getattr(self, k) for k in KEYS})
+        """Write the arrays to an .npz file (``numpy.savez``; the path as given):
+        :data:`KEYS`, and ``word`` (strings) when the words were asked."""
+        arrays = {k: getattr(self, k) for k in KEYS}
+        if self.word is not None:
+            arrays["word"] = self.word
+        np.savez(path, **arrays)
 
     @classmethod
     def load(cls, path) -> "Orbits":
         with np.load(path) as data:
-            return cls(*(data[k] for k in KEYS))
+            return cls(*(data[k] for k in KEYS), word=data["word"] if "word" in data.files else None)
+
+    def certified_fraction(self) -> float:
+        """The fraction of the collisions done that are certified (1 when none done)."""
+        done = int(self.collisions.sum())
+        return float(self.certified.sum()) / done if done else 1.0
 
     def summary(self) -> str:
-        """A few lines: sizes, breaks by name, the range of φ."""
+        """A few lines: sizes, breaks by name, the certified collisions, the range of φ."""
         n_r, n_o = self.breaks.shape
         lines = [f"{self.engine}: {n_r} value(s) of r × {n_o} orbit(s), "
                  f"{int(self.collisions.max(initial=0))} collisions at most, {self.phi.shape[-1]} kept"]
@@ -81,6 +95,9 @@ class Orbits:
             count = int((self.breaks == code).sum())
             if count:
                 lines.append(f"  {count:>7} {name} (break {code})")
+        lines.append(f"  certified: {int(self.certified.sum())} of {int(self.collisions.sum())} collisions "
+                     f"({self.certified_fraction():.2%}); certified horizon per orbit from "
+                     f"{int(self.certified.min()) if self.certified.size else 0} to {int(self.certified.max(initial=0))}")
         finite = self.phi[np.isfinite(self.phi)]
         if finite.size:
             lines.append(f"  φ in [{finite.min():.6f}, {finite.max():.6f}], {finite.size} kept angles")
@@ -102,52 +119,59 @@ def _check(r, theta0, phi0, collisions, keep, engine):
     return r, theta0, phi0
 
 
-def _float64(r, theta0, phi0, collisions, keep, progress):
+def _float64(r, theta0, phi0, collisions, keep, strict, progress):
     n_r, n_o = len(r), len(theta0)
     normals = np.array([rules.initial_normal(t, p) for t, p in zip(theta0, phi0)], dtype=float).reshape(n_o, 3)
     letters = np.full(n_o, rules.INDEX[rules.START], dtype=np.int64)
     phi = np.empty((n_r, n_o, keep))
     breaks = np.zeros((n_r, n_o), dtype=np.int8)
     counts = np.zeros((n_r, n_o), dtype=np.int64)
+    certified = np.zeros((n_r, n_o), dtype=np.int64)
     # batches, for the progress bar; each batch is one parallel call
     per = max(1, min(n_r, (1 << 22) // max(1, n_o * max(collisions, 1))))
     for lo in range(0, n_r, per):
         hi = min(n_r, lo + per)
-        mats = [rules.float_rows(x) for x in r[lo:hi]]
-        rows = np.array(mats).reshape(hi - lo, 3, 3, 3)
-        absrows = np.array([rules.row_abs(m) for m in mats]).reshape(hi - lo, 3, 3)
-        kernel.sweep(letters, normals, rows, absrows, rules.TOL64, collisions, keep, phi[lo:hi], breaks[lo:hi],
-                     counts[lo:hi])
+        rows = np.array([rules.float_rows(x) for x in r[lo:hi]]).reshape(hi - lo, 27)     # the kernel's layout
+        kernel.sweep(letters, normals, rows, rules.TOL64, rules.G64, rules.K64, rules.TINY64, collisions, keep,
+                     strict, phi[lo:hi], breaks[lo:hi], counts[lo:hi], certified[lo:hi])
         if progress is not None:
             progress(hi, n_r, f"r = {r[hi - 1]:.6g}")
-    return phi, breaks, counts
+    return phi, breaks, counts, certified
 
 
-def _tasks(engine, r, theta0, phi0, collisions, keep, dps, executor, progress):
+def _float64_words(r, theta0, phi0, collisions, strict):
+    """The collision words of the float64 orbits (one traced orbit at a time)."""
+    return [[engines.float64_orbit(float(x), float(t), float(p), collisions, word=True, strict=strict).word
+             for t, p in zip(theta0, phi0)] for x in r]
+
+
+def _tasks(engine, r, theta0, phi0, collisions, keep, dps, strict, words, executor, progress):
     n_r, n_o = len(r), len(theta0)
     phi = np.full((n_r, n_o, keep), np.nan)
     breaks = np.zeros((n_r, n_o), dtype=np.int8)
     counts = np.zeros((n_r, n_o), dtype=np.int64)
+    certified = np.zeros((n_r, n_o), dtype=np.int64)
+    word = [[""] * n_o for _ in range(n_r)]
     jobs = [(a, b) for a in range(n_r) for b in range(n_o)]
+    args = [(engine, float(r[a]), float(theta0[b]), float(phi0[b]), collisions, keep, dps, strict, words)
+            for a, b in jobs]
     if executor is None:
-        results = (engines.task(engine, float(r[a]), float(theta0[b]), float(phi0[b]), collisions, keep, dps)
-                   for a, b in jobs)
-        done = zip(jobs, results)
+        done = zip(jobs, (engines.task(*x) for x in args))
     else:
-        futures = {executor.submit(engines.task, engine, float(r[a]), float(theta0[b]), float(phi0[b]),
-                                   collisions, keep, dps): (a, b) for a, b in jobs}
+        futures = {executor.submit(engines.task, *x): job for job, x in zip(jobs, args)}
         from concurrent.futures import as_completed
         done = ((futures[f], f.result()) for f in as_completed(futures))
-    for k, ((a, b), (ph, code, count)) in enumerate(done, 1):
-        phi[a, b], breaks[a, b], counts[a, b] = ph, code, count
+    for k, ((a, b), (ph, code, count, cert, w)) in enumerate(done, 1):
+        phi[a, b], breaks[a, b], counts[a, b], certified[a, b], word[a][b] = ph, code, count, cert, w
         if progress is not None:
             progress(k, len(jobs), f"r = {r[a]:.6g}")
-    return phi, breaks, counts
+    return phi, breaks, counts, certified, word
 
 
 def simulate(r, theta0, phi0, collisions: int = 10_000, keep: int = 500, engine: str = "float64",
              dps: int | None = None, executor: Executor | None = None,
-             progress: Callable[[int, int, str], None] | None = None) -> Orbits:
+             progress: Callable[[int, int, str], None] | None = None, strict: bool = False,
+             words: bool = False) -> Orbits:
     """Iterate the reduction map from every (θ0, φ0) at contact b, for every r, up to
     ``collisions`` collisions or a break; keep the φ of the last ``keep`` b-collisions.
 
@@ -155,10 +179,21 @@ def simulate(r, theta0, phi0, collisions: int = 10_000, keep: int = 500, engine:
     (mpmath at ``dps`` digits, default 30) or "ball" (certified arb, precision raised
     up to ``dps`` digits, default 5000).  ``executor``: a concurrent.futures Executor
     for the mp and ball orbits (None: in this process).  ``progress(k, n, label)``:
-    called as the work advances."""
+    called as the work advances.  ``strict``: stop every orbit at its certified
+    horizon (break 5, ``rules.HORIZON``); without it the float64 and mp orbits go on
+    past it (shadowing orbits) and ``certified`` says how far they are proven.
+    ``words``: also return each orbit's collision word (``Orbits.word``)."""
     r, theta0, phi0 = _check(r, theta0, phi0, collisions, keep, engine)
+    word = None
     if engine == "float64":
-        phi, breaks, counts = _float64(r, theta0, phi0, collisions, keep, progress)
+        phi, breaks, counts, certified = _float64(r, theta0, phi0, collisions, keep, strict, progress)
+        if words:
+            word = _float64_words(r, theta0, phi0, collisions, strict)
     else:
-        phi, breaks, counts = _tasks(engine, r, theta0, phi0, collisions, keep, dps, executor, progress)
-    return Orbits(r, theta0, phi0, phi, breaks, counts, engine)
+        phi, breaks, counts, certified, word = _tasks(engine, r, theta0, phi0, collisions, keep, dps, strict, words,
+                                                      executor, progress)
+    if words:
+        word = np.array(word, dtype=str).reshape(len(r), len(theta0))
+    else:
+        word = None
+    return Orbits(r, theta0, phi0, phi, breaks, counts, certified, word, engine)

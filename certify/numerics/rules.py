@@ -27,8 +27,20 @@ excludes 0.  In order:
 3. ``CORNER``: the normal is zero or an in-face entry has the wrong sign, decided:
    the datum is not a state inside the face (e.g. θ0 outside ]0, π/2[).
 4. ``NONFINITE``: an entry is inf or nan (a nan datum).
+5. ``HORIZON`` (only with ``strict``): the contact is decided by the margin rule above
+   but not by the accumulated error bound (:func:`carry_bound`): the orbit has reached
+   its certified horizon.
 
 0 is a completed orbit.  The engines never continue past a break.
+
+The certified horizon.  The margin rule decides each step against the rounding of
+*that step*; along a chaotic orbit the rounding errors of the earlier steps grow, and
+a floating orbit can leave the true one while every step is decided (a shadowing
+orbit).  The floating engines therefore also carry a rigorous bound ``err`` of the
+accumulated error of the normal (:func:`carry_bound`): a collision is *certified*
+when :func:`classify` at the bounds ``err`` decides it (the same contact); the number
+of collisions before the first one that is not is the orbit's certified horizon,
+reported by every engine (the ball engine certifies every collision it does).
 """
 from __future__ import annotations
 
@@ -40,13 +52,14 @@ import flint
 from certify.dynamics import reduction
 from certify.dynamics.model import INDEX, LETTERS
 
-COMPLETED, UNDECIDED, SHORT_STEP, CORNER, NONFINITE = 0, 1, 2, 3, 4
+COMPLETED, UNDECIDED, SHORT_STEP, CORNER, NONFINITE, HORIZON = 0, 1, 2, 3, 4, 5
 BREAKS = {
     COMPLETED: "completed",
     UNDECIDED: "undecided contact: |cos φ| below the rounding bound",
     SHORT_STEP: "time step below precision: the position within rounding of a vertex",
     CORNER: "corner: zero normal, or the state outside the face",
     NONFINITE: "non-finite number",
+    HORIZON: "certified horizon: the accumulated error bound no longer decides the contact (strict)",
 }
 SAFETY = 64                         # the margin over one rounding of a step
 START = "b"                         # the contact of the initial data (paper: b-collisions)
@@ -58,50 +71,6 @@ def tol(bits: int) -> float | Fraction:
 
 
 TOL64 = float(tol(53))              # 2^-47 ≈ 7.1e-15
-
-
-def exact_r(r) -> flint.fmpq:
-    """r as an exact rational (a float is read exactly, its binary value)."""
-    if isinstance(r, flint.fmpq):
-        return r
-    if isinstance(r, float):
-        num, den = Fraction(r).as_integer_ratio()
-        return flint.fmpq(num, den)
-    return flint.fmpq(r) if not isinstance(r, str) else flint.fmpq(*Fraction(r).as_integer_ratio())
-
-
-def integer_rows(r) -> list[tuple]:
-    """The three cofactor matrices cof(A), cof(B), cof(C) at r, as integer rows
-    (``reduction.cofactor``), in the order a, b, c."""
-    q = exact_r(r)
-    return [reduction.cofactor(L, q) for L in LETTERS]
-
-
-def float_rows(r) -> list[list[list[float]]]:
-    """:func:`integer_rows` converted to float, each matrix scaled by a power of 2 so
-    that its largest entry lies in [1, 2) (a positive multiple keeps the plane)."""
-    out = []
-    for rows in integer_rows(r):
-        shift = max(abs(int(z)) for row in rows for z in row).bit_length() - 1
-        out.append([[_scaled(int(z), shift) for z in row] for row in rows])
-    return out
-
-
-def _scaled(z: int, shift: int) -> float:
-    """z · 2^-shift correctly rounded (z may exceed the float range)."""
-    if shift < 900:                  # float(z) is correctly rounded, the power of 2 exact
-        return math.ldexp(float(z), -shift)
-    return float(Fraction(z, 1 << shift))
-
-
-def row_abs(rows) -> list[list]:
-    """Σ_c |K_{mc}| for each matrix K and row m (the float kernel's signature)."""
-    return [[sum(abs(z) for z in row) for row in K] for K in rows]
-
-
-def abs_rows(rows) -> list:
-    """|K| entrywise for each matrix K: the rounding bound's factor."""
-    return [[[abs(z) for z in row] for row in K] for K in rows]
 
 
 # --- the shared step --------------------------------------------------------
@@ -159,6 +128,133 @@ def step_bounds(j: int, n, absrows, tolerance) -> tuple:
     K = absrows[j]
     a = [abs(z) for z in n]
     return tuple(tolerance * (K[m][0] * a[0] + K[m][1] * a[1] + K[m][2] * a[2]) for m in range(3))
+
+
+# --- the accumulated error bound (the certified horizon) ----------------------
+
+def gamma_bound(bits: int) -> Fraction:
+    """g = 4u (1 + 8u), u = 2^-bits: a representable number ≥ γ_4 = 4u/(1 − 4u)
+    (since 1/(1 − 4u) ≤ 1 + 8u for u ≤ 1/16); see :func:`carry_bound`."""
+    u = Fraction(1, 2 ** bits)
+    return 4 * u * (1 + 8 * u)
+
+
+def inflation(bits: int) -> Fraction:
+    """K = 1 + 32u, u = 2^-bits: the factor that makes the computed bound an upper
+    bound in spite of its own roundings (:func:`carry_bound`)."""
+    return 1 + 32 * Fraction(1, 2 ** bits)
+
+
+G64 = float(gamma_bound(53))        # exact: 2^-51 (1 + 2^-50)
+K64 = float(inflation(53))          # exact: 1 + 2^-48
+TINY64 = 2.0 ** -1000               # the absolute term that covers underflow (float64 only)
+
+
+def carry_bound(j: int, n, err, absrows, g, K, tiny=0):
+    """The bound of the accumulated error after the collision j, from the state's
+    computed normal ``n`` and its bound ``err``:
+
+        err'_m = fl( fl(S_m · K) + tiny ),   S_m = Σ_c |Ĉ_mc| (err_c + g |n_c|),
+
+    computed left to right in the engine's numbers, with Ĉ the engine's matrix
+    (``absrows[j]`` = |Ĉ|), ``g`` = :func:`gamma_bound`, ``K`` = :func:`inflation` at
+    the engine's precision, ``tiny`` = :data:`TINY64` in float64 (0 in mpmath, whose
+    exponents do not underflow).
+
+    Claim.  Let x be the exact normal (the exact orbit of the datum, with the same
+    orientations and power-of-2 rescalings as the engine) with |n − x| ≤ err
+    componentwise, C the exact matrix of which Ĉ is the rounding, n' = fl(Ĉ n) the
+    engine's next normal and x' = C x.  Then |n' − x'| ≤ err' componentwise.
+
+    Proof (u = 2^-p the unit roundoff, η = 2^-1074 the smallest subnormal of float64,
+    0 in mpmath).  (i) The entries of Ĉ are correctly rounded (``float_rows``;
+    ``mpf(int)``): |Ĉ − C| ≤ u|C|, so |C| ≤ |Ĉ|/(1 − u).  (ii) A dot product of
+    length 3 evaluated in floating point (Higham, *Accuracy and Stability of Numerical
+    Algorithms*, §3.1, with underflow: Thm 3.5 and §2.1) satisfies
+    |fl(Ĉ n) − Ĉ n| ≤ γ_3 |Ĉ||n| + 3η, γ_k = ku/(1 − ku).  (iii) Hence
+
+        |n' − x'| ≤ |fl(Ĉ n) − Ĉ n| + |Ĉ − C||n| + |C||n − x|
+                  ≤ (γ_3 + u/(1 − u)) |Ĉ||n| + |Ĉ| err/(1 − u) + 3η
+                  ≤ S/(1 − u) + 3η                      (γ_3 + u/(1 − u) ≤ γ_4 ≤ g).
+
+    (iv) The computed Ŝ_m takes five roundings on non-negative numbers, each
+    fl(a ∘ b) ≥ (a ∘ b)(1 − u) − η/2: Ŝ_m ≥ S_m (1 − u)^5 − 5η (|Ĉ| ≤ 2).  If
+    Ŝ_m ≥ 2^-1020, fl(Ŝ_m K) ≥ Ŝ_m (1 + 32u)(1 − u) ≥ Ŝ_m (1 + 31u − 32u²), which exceeds
+    (Ŝ_m + 5η)/(1 − u)^6 + 3η ≥ S_m/(1 − u) + 3η by at least 20u Ŝ_m (because 5u Ŝ_m ≥ 10η);
+    adding tiny ≥ 0 does not decrease a float (rounding is monotone).  If
+    Ŝ_m < 2^-1020 (float64 only) the bound needed is below 2^-1019 and
+    fl(· + 2^-1000) ≥ 2^-1000.  (v) The engine negates n' or multiplies it by a power
+    of 2, f: a negation is exact and is applied to x' too; f·n' is exact except for
+    entries that underflow (error ≤ η/2 each), and the kernel then sets
+    err'' = fl(fl(err' f) + tiny): when f ≥ 1 nothing underflows and fl(err' f) ≥ err' f
+    (exact, or inf); when f < 1 either err' f ≥ 2^-947, it is exact and the slack
+    20u Ŝ_m f ≥ η of (iv) covers the η/2, or fl(err' f + tiny) ≥ err' f − η/2 + tiny/2
+    ≥ err' f + η/2.  ∎
+
+    An inf or nan bound decides nothing (every comparison with it fails), so
+    overflow of the bound ends the certified horizon, never extends it.  The initial
+    bound is ``TOL · max|n|`` (:func:`tol`: 64u), which dominates the error of the
+    normal computed from (θ0, φ0): each entry is at most two products and one sum of
+    same-signed terms of cos and sin, each within one ulp (≤ 2u relative), an error
+    ≤ 8u |n_c| ≤ 8u max|n|.
+    """
+    K_ = absrows[j]
+    t = [err[c] + g * abs(n[c]) for c in range(3)]
+    out = []
+    for m in range(3):
+        s = K_[m][0] * t[0] + K_[m][1] * t[1] + K_[m][2] * t[2]
+        out.append(s * K + tiny)
+    return tuple(out)
+
+
+def certifies(i: int, n, err, j: int, sign=margin_sign, finite=math.isfinite) -> bool:
+    """True when :func:`classify` at the bounds ``err`` decides the contact j (the
+    collision is certified)."""
+    return classify(i, n, err, sign, finite) == (COMPLETED, j)
+
+
+def exact_r(r) -> flint.fmpq:
+    """r as an exact rational (a float is read exactly, its binary value)."""
+    if isinstance(r, flint.fmpq):
+        return r
+    if isinstance(r, float):
+        num, den = Fraction(r).as_integer_ratio()
+        return flint.fmpq(num, den)
+    return flint.fmpq(r) if not isinstance(r, str) else flint.fmpq(*Fraction(r).as_integer_ratio())
+
+
+def integer_rows(r) -> list[tuple]:
+    """The three cofactor matrices cof(A), cof(B), cof(C) at r, as integer rows
+    (``reduction.cofactor``), in the order a, b, c."""
+    q = exact_r(r)
+    return [reduction.cofactor(L, q) for L in LETTERS]
+
+
+def float_rows(r) -> list[list[list[float]]]:
+    """:func:`integer_rows` converted to float, each matrix scaled by a power of 2 so
+    that its largest entry lies in [1, 2) (a positive multiple keeps the plane)."""
+    out = []
+    for rows in integer_rows(r):
+        shift = max(abs(int(z)) for row in rows for z in row).bit_length() - 1
+        out.append([[_scaled(int(z), shift) for z in row] for row in rows])
+    return out
+
+
+def _scaled(z: int, shift: int) -> float:
+    """z · 2^-shift correctly rounded (z may exceed the float range)."""
+    if shift < 900:                  # float(z) is correctly rounded, the power of 2 exact
+        return math.ldexp(float(z), -shift)
+    return float(Fraction(z, 1 << shift))
+
+
+def row_abs(rows) -> list[list]:
+    """Σ_c |K_{mc}| for each matrix K and row m (the float kernel's signature)."""
+    return [[sum(abs(z) for z in row) for row in K] for K in rows]
+
+
+def abs_rows(rows) -> list:
+    """|K| entrywise for each matrix K: the rounding bound's factor."""
+    return [[[abs(z) for z in row] for row in K] for K in rows]
 
 
 # --- the angles ---------------------------------------------------------------

@@ -187,5 +187,10 @@ def section5_figure(data, dpi: int | None = None) -> str:
     title = (f"{numfig.cite(spec.id)}, {data.resolution}: {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
              f"{orbits} orbit{'s' if orbits != 1 else ''}, last {data.keep} b-collisions of {data.collisions}, "
              f"{data.engine}")
+    fraction = data.certified_fraction()
+    if fraction is not None:
+        title += (f"\ncertified: {fraction:.2%} of the collisions (horizon ≤ {int(data.certified.max())}: "
+                  "the points are shadowing orbits)" if data.certified.max() < data.collisions - data.keep
+                  else f"\ncertified: {fraction:.2%} of the collisions")
     return omega_figure(data, section5_name(spec.id, data.resolution), lines=numfig.red_lines(), boxes=spec.boxes,
                         title=title, dpi=dpi)

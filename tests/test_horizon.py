@@ -1,0 +1,291 @@
+"""The certified horizon of the floating engines and the ball engine without wrapping.
+
+* ``rules.carry_bound`` is an upper bound of the accumulated error of the float64
+  normal, checked against the exact orbit (rationals) collision by collision; the
+  kernel computes it bit for bit as the Python transcription does.
+* On random data between the windows (0.075 < r < 0.13), where float64 orbits leave
+  the certified word silently, every certified prefix (float64, mp) is the ball
+  engine's word, and the departures happen after the certified horizon; ``strict``
+  stops there with break 5.
+* The ball engine gives the exact word (rational data), and keeps its precision.
+* ``simulate`` and its CLI: ``certified``, ``--strict``, ``--words``,
+  ``--theta0``/``--phi0``, their usage errors.
+"""
+import math
+import random
+from fractions import Fraction
+
+import flint
+import numpy as np
+import pytest
+
+from certify import numerics
+from certify.dynamics import reduction
+from certify.numerics import engines, kernel, rules
+from certify.numerics.stress import departure
+
+CONSTANTS = (rules.TOL64, rules.G64, rules.K64, rules.TINY64)
+
+
+def exact_scaled_rows(r):
+    """The exact matrices of which rules.float_rows(r) are the roundings."""
+    out = []
+    for rows in rules.integer_rows(r):
+        shift = max(abs(int(z)) for row in rows for z in row).bit_length() - 1
+        out.append([[Fraction(int(z), 1 << shift) for z in row] for row in rows])
+    return out
+
+
+def traced(r, n0, collisions, strict=False, tol=rules.TOL64):
+    """kernel.trace; ``tol`` = 0 for an exact datum (no initial error: only the
+    roundings along the orbit feed the bound)."""
+    rows = np.array(rules.float_rows(r))
+    letters, normals, errs = np.zeros(collisions, np.int8), np.zeros((collisions, 3)), np.zeros((collisions, 3))
+    code, done, cert = kernel.trace(1, np.array(n0, dtype=float), rows.reshape(27), tol, *CONSTANTS[1:], collisions,
+                                    strict, letters, normals, errs)
+    return code, done, cert, letters, normals, errs, rows
+
+
+@pytest.mark.parametrize("r", [0.1, 0.5, 0.9])
+def test_the_accumulated_bound_bounds_the_error_of_the_float_normal(r):
+    """|n̂_k − x_k| ≤ err_k componentwise, x_k the exact orbit of the same datum with
+    the float64 engine's orientations and rescalings, for 80 collisions (beyond the
+    certified horizon too).  The datum is exact in floats, its initial bound 0: the
+    bound is fed only by the γ terms, and fails without them."""
+    n0 = (-3, 5, 4)
+    code, done, cert, letters, normals, errs, rows = traced(r, n0, 80, tol=0.0)
+    assert code == 0 and done == 80 and 0 < cert < 80
+    exact = exact_scaled_rows(r)
+    x = [Fraction(z) for z in n0]
+    prev = np.array(n0, dtype=float)
+    worst = 0.0
+    for k in range(done):
+        C = exact[letters[k]]
+        y = [sum(C[m][c] * x[c] for c in range(3)) for m in range(3)]
+        approx = rows[letters[k]] @ prev                      # sign and power of 2 of the engine's step
+        s = 1 if float(np.dot(approx, normals[k])) > 0 else -1
+        f = 2.0 ** round(math.log2(np.max(np.abs(normals[k])) / np.max(np.abs(approx))))
+        x = [s * Fraction(f) * z for z in y]
+        for m in range(3):
+            gap = abs(Fraction(normals[k, m]) - x[m])
+            assert gap <= Fraction(errs[k, m]), (k, m)
+            worst = max(worst, float(gap))
+        prev = normals[k]
+    assert worst > 0                                          # the orbit was rounded: the check is not empty
+
+
+def test_the_kernel_computes_the_bound_as_the_rules_do():
+    """kernel._advance carries rules.carry_bound exactly (same floats) when no rescaling happens."""
+    r = 0.11
+    n0 = rules.initial_normal(0.4, 1.3)
+    code, done, cert, letters, normals, errs, rows = traced(r, n0, 30)
+    absrows = np.abs(rows).tolist()
+    err = (rules.TOL64 * max(abs(z) for z in n0),) * 3
+    n = tuple(n0)
+    for k in range(done):
+        err = rules.carry_bound(int(letters[k]), n, err, absrows, rules.G64, rules.K64, rules.TINY64)
+        assert tuple(errs[k]) == err
+        n = tuple(normals[k])
+
+
+def chaotic_data(count, seed=19):
+    rng = random.Random(seed)
+    return [(rng.uniform(0.075, 0.13), rng.uniform(0, math.pi / 2), rng.uniform(0, math.pi)) for _ in range(count)]
+
+
+def test_float64_and_mp_certified_prefixes_are_the_certified_word_and_departures_come_after():
+    """The issue's silent wrong collisions: float64 leaves the ball word while going on;
+    its certified horizon is always before the departure, and the certified prefix is
+    the ball word.  The same for mp at 16 digits."""
+    departed = 0
+    for r, t, p in chaotic_data(12):
+        ball = engines.ball_orbit(r, t, p, 600, word=True)
+        assert ball.code == 0 and ball.collisions == ball.certified == 600
+        for engine, dps in (("float64", None), ("mp", 16)):
+            res = engines.run_orbit(engine, r, t, p, 600, dps=dps, word=True)
+            k = departure(res.word, ball.word)
+            assert res.word[:res.certified] == ball.word[:res.certified]
+            assert k == 0 or k > res.certified, (engine, r, t, p, k, res.certified)
+            departed += bool(k) and engine == "float64"
+    assert departed >= 3                     # the bound has something to catch
+
+
+@pytest.mark.parametrize("engine", ["float64", "mp"])
+def test_break_5_strict_stops_at_the_certified_horizon(engine):
+    r, t, p = chaotic_data(1)[0]
+    free = engines.run_orbit(engine, r, t, p, 600, dps=20, word=True)
+    strict = engines.run_orbit(engine, r, t, p, 600, dps=20, word=True, strict=True)
+    assert free.code == 0 and free.collisions == 600 and 0 < free.certified < 600
+    assert (strict.code, strict.collisions, strict.certified) == (numerics.HORIZON, free.certified, free.certified)
+    assert strict.word == free.word[:free.certified]
+
+
+def test_strict_does_not_stop_the_ball_engine():
+    res = engines.run_orbit("ball", 0.1, 0.5, 1.0, 300, strict=True)
+    assert (res.code, res.collisions, res.certified) == (0, 300, 300)
+
+
+def test_a_break_before_the_horizon_keeps_its_code():
+    """cos φ0 below the rounding: break 1 at collision 0, with or without strict."""
+    for strict in (False, True):
+        res = engines.float64_orbit(0.5, 0.6, math.pi / 2, 10, strict=strict)
+        assert (res.code, res.collisions, res.certified) == (numerics.UNDECIDED, 0, 0)
+
+
+def test_mp_horizon_grows_with_its_precision():
+    r, t, p = chaotic_data(1)[0]
+    h = [engines.mp_orbit(r, t, p, 2000, dps=d).certified for d in (16, 30, 60)]
+    assert h[0] < h[1] < h[2]
+
+
+# --- the ball engine ----------------------------------------------------------------
+
+@pytest.mark.parametrize("r", [flint.fmpq(1, 10), flint.fmpq(3, 20), flint.fmpq(1, 2)])
+def test_ball_engine_gives_the_exact_word(r):
+    start = reduction.canonical("b", (-3, 5, 4))
+    word, _ = reduction.word_of(start, r, 1200)
+    res = engines.ball_orbit(r, 0, 0, 1200, word=True, normal=(-3, 5, 4))
+    assert res.code == 0 and res.word == word                # 1200 > 512: across a re-centring
+
+
+def test_ball_engine_keeps_its_precision():
+    """2000 collisions of the paper's first orbit at r = 0.15 and 0.5 need no more than
+    the starting 64 bits (the engine with wrapping needed 2048), and the radius of the
+    normal after 1500 collisions at 256 bits is still below 2^-200 of its size."""
+    for r in (0.15, 0.5):
+        res = engines.ball_orbit(r, math.pi / 6, math.pi / 5, 2000)
+        assert res.code == 0 and res.collisions == 2000 and res.bits == engines.BALL_START
+        res = engines.ball_orbit(r, math.pi / 6, math.pi / 5, 1500, start_bits=256, dps=77, checkpoints=(1500,))
+        n = res.checkpoints[1500][1]
+        with flint.ctx.workprec(res.bits):
+            rel = max(z.rad() for z in n) / max(abs(z.mid()) for z in n)
+        assert rel < flint.arb(2) ** -200
+
+
+def test_ball_engine_raises_the_precision_when_a_choice_is_undecided():
+    """cos φ0 = 2^-300 exactly (a rational normal): the first images mix 1 and 2^-300,
+    64 bits cannot decide them; the engine raises its precision and gives the exact word."""
+    eps = flint.fmpq(1, 2 ** 300)
+    res = engines.ball_orbit(flint.fmpq(1, 2), 0, 0, 50, normal=(-1, eps, 1), word=True)
+    word, _ = reduction.word_of(reduction.canonical("b", (-(2 ** 300), 1, 2 ** 300)), flint.fmpq(1, 2), 50)
+    assert res.code == 0 and res.collisions == 50 and res.bits > engines.BALL_START
+    assert res.word == word
+
+
+# --- simulate and the CLI -------------------------------------------------------------
+
+def test_simulate_reports_certified_and_words():
+    data = chaotic_data(2)
+    r = [data[0][0]]
+    theta0, phi0 = [d[1] for d in data], [d[2] for d in data]
+    out = numerics.simulate(r, theta0, phi0, collisions=400, keep=5, words=True)
+    ball = numerics.simulate(r, theta0, phi0, collisions=400, keep=5, engine="ball", words=True)
+    assert out.word.shape == (1, 2) and all(len(w) == 400 for w in out.word.ravel())
+    assert np.array_equal(ball.certified, ball.collisions)
+    for b in range(2):
+        one = engines.float64_orbit(r[0], theta0[b], phi0[b], 400, word=True)
+        assert out.word[0, b] == one.word and out.certified[0, b] == one.certified < 400
+    strict = numerics.simulate(r, theta0, phi0, collisions=400, keep=5, strict=True)
+    assert (strict.breaks == numerics.HORIZON).all() and np.array_equal(strict.collisions, out.certified)
+    assert 0 < out.certified_fraction() < 1 and "certified:" in out.summary()
+
+
+def test_npz_keeps_the_words(tmp_path):
+    out = numerics.simulate([0.3], [0.5], [1.0], collisions=50, keep=5, words=True)
+    out.save(tmp_path / "w.npz")
+    back = numerics.Orbits.load(tmp_path / "w.npz")
+    assert back.word[0, 0] == out.word[0, 0] and len(back.word[0, 0]) == 50
+    assert np.array_equal(back.certified, out.certified)
+
+
+def test_cli_explicit_data_words_strict(tmp_path):
+    from certify.cli import main
+    path = tmp_path / "one.npz"
+    assert main(["simulate", "--r", "0.1", "--theta0", "0.5", "1.2", "--phi0", "1", "2.5", "--collisions", "300",
+                 "--words", "--out", str(path)]) == 0
+    data = np.load(path)
+    assert data["theta0"].tolist() == [0.5, 1.2] and data["phi0"].tolist() == [1.0, 2.5]
+    assert data["word"][0, 1] == engines.float64_orbit(0.1, 1.2, 2.5, 300, word=True).word
+    assert (data["certified"] < 300).all()
+    assert main(["simulate", "--r", "0.1", "--theta0", "0.5", "--phi0", "1", "--collisions", "300", "--strict",
+                 "--out", str(path)]) == 0
+    data = np.load(path)
+    assert data["breaks"].tolist() == [[numerics.HORIZON]] and data["collisions"].tolist() == data["certified"].tolist()
+    assert "word" not in data.files
+
+
+@pytest.mark.parametrize("args", [
+    ["--r", "0.5", "--theta0", "0.5", "1", "--phi0", "1"],          # lengths differ
+    ["--r", "0.5", "--theta0", "1.6", "--phi0", "1"],                 # θ0 > π/2
+    ["--r", "0.5", "--theta0", "-0.1", "--phi0", "1"],                # θ0 < 0
+    ["--r", "0.5", "--theta0", "1", "--phi0", "3.2"],                 # φ0 > π
+    ["--r", "0.5", "--theta0", "1"],                                  # θ0 without φ0
+    ["--r", "0.5", "--phi0", "1"],                                    # φ0 without θ0
+    ["--r", "0.5", "--orbits", "2", "--theta0", "1", "--phi0", "1"],  # the grid and explicit data
+    ["--r", "0.5", "--words"],                                        # words without --out
+    ["--r-range", "0.2", "0.1", "3"],                                 # reversed
+    ["--r", "0.5", "--theta0", "x", "--phi0", "1"],
+])
+def test_cli_usage_errors_of_the_new_options(args, capsys):
+    from certify.cli import main
+    assert main(["simulate", *args]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and err.startswith("certify: error:"), err
+
+
+# --- stress ---------------------------------------------------------------------------
+
+def _columns(line):
+    return len(line.replace("\\|", "")) - len(line.replace("\\|", "").replace("|", ""))
+
+
+def test_stress_report_tables_keep_their_columns(monkeypatch):
+    """Every row of every table of STRESS.md has its header's number of cells (a '|'
+    inside a cell, as in '|cos φ0|', is escaped), and the quick run has no silent wrong
+    collision."""
+    from certify.numerics import stress
+    monkeypatch.setattr(stress, "RANDOM_QUICK", dict(count=6, collisions=200, seed=3))
+    text, wrong = stress.report(quick=True)
+    assert wrong == 0 and "**Silent wrong collisions: 0.**" in text
+    header = None
+    rows = 0
+    for line in text.splitlines():
+        if not line.startswith("|"):
+            header = None
+            continue
+        if header is None:
+            header = _columns(line)
+        assert _columns(line) == header, line
+        rows += 1
+    assert rows > 50 and "\\|cos φ0\\|" in text
+    assert stress.cell("|cos φ0|") == "\\|cos φ0\\|"
+
+
+def test_stress_counts_a_departure_at_a_certified_collision_as_silent_wrong():
+    """silent(): a departure within the certified prefix is wrong, after it is not."""
+    from certify.numerics import stress
+    data = [(0.1, 0.5, 1.0), (0.1, 0.6, 1.0)]
+    ball = (0, 2000, 64)
+    fine = {"ball": ball, ("float64", None): (0, 2000, 40, 120), ("mp", 30): (0, 2000, 90, 0)}
+    bad = {"ball": ball, ("float64", None): (0, 2000, 40, 30), ("mp", 30): (0, 2000, 90, 90)}
+    _, wrong = stress.random_section([fine, fine], data, 2000)
+    assert wrong == 0
+    table, wrong = stress.random_section([fine, bad], data, 2000)
+    assert wrong == 2 and any(line.endswith("| 1 |") for line in table)
+    assert stress.verdict(bad[("float64", None)], ball).startswith("**WRONG at 30**")
+    assert "departs at 120" in stress.verdict(fine[("float64", None)], ball)
+
+
+def test_cli_stress_runs_its_random_orbits_on_jobs(tmp_path, monkeypatch, capsys):
+    """`stress --quick --jobs 2 --out FILE`: the random orbits on two processes, the
+    report written, exit 0; `--jobs 0` is a usage error."""
+    from certify.cli import main
+    from certify.numerics import stress
+    monkeypatch.setattr(stress, "RANDOM_QUICK", dict(count=4, collisions=100, seed=5))
+    monkeypatch.setattr(stress, "cases", lambda quick: [stress.Case("θ0 near 0", 0.5, 0.0, 1.0, 50)])
+    out = tmp_path / "S.md"
+    assert main(["stress", "--quick", "--jobs", "2", "--out", str(out)]) == 0
+    text = out.read_text()
+    assert "## 4 random orbits, 100 collisions each" in text and "**Silent wrong collisions: 0.**" in text
+    assert "0 silent wrong collision(s)" in capsys.readouterr().out
+    assert main(["stress", "--jobs", "0", "--out", str(out)]) == 2
