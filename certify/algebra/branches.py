@@ -518,9 +518,24 @@ class Spectrum:
                      undecided=lambda signs: "?" in signs)
         # where balls of 256 bits do not decide, the exact zero test first (a critical value is
         # often a zero of g: no precision decides it), then balls up to maxprec for the rest
-        out = [self._exact_sign(cond, rc, k, roots[k]) if sg == "?" else sg for k, sg in enumerate(out)]
-        return [decide(lambda p, k=k: _sign_ball(cond, rc.arb(p), roots[k](p)), 2 * quick, maxprec)
-                if sg == "?" else sg for k, sg in enumerate(out)]
+        return [self._undecided_sign(cond, rc, k, roots[k], 2 * quick, maxprec) if sg == "?" else sg
+                for k, sg in enumerate(out)]
+
+    def _undecided_sign(self, cond: Condition, rc: Algebraic, k: int, ball, prec: int, maxprec: int):
+        """The sign of g on branch k at rc where balls of < ``prec`` bits did not decide it: the
+        exact zero test (:meth:`_exact_sign`), then balls of ``prec`` to ``maxprec`` bits where
+        it finds no zero; where the exact test itself cannot conclude, the balls, and its
+        error only if they do not decide either (the order of the two routes changes no sign)."""
+        def balls():
+            return decide(lambda p: _sign_ball(cond, rc.arb(p), ball(p)), prec, maxprec)
+        try:
+            sg = self._exact_sign(cond, rc, k, ball)
+        except ArithmeticError:
+            sg = balls()
+            if sg == "?":
+                raise
+            return sg
+        return balls() if sg == "?" else sg
 
     def _exact_sign(self, cond: Condition, rc: Algebraic, k: int, ball, maxprec: int = 1024):
         """The sign of g on branch k at rc where balls alone do not decide it: 0 when
