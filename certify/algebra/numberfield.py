@@ -69,10 +69,8 @@ def _monic(p, m):
     return [reduce(c * inv, m) for c in p]
 
 
-def gcd(f, g, m, monic: bool = True) -> list[flint.fmpq_poly]:
-    """The gcd in K[λ] (m irreducible, so K is a field); monic, or with ``monic=False``
-    a non-zero K-multiple of it (the same roots, without the inverse of the leading
-    coefficient: an extended gcd in Q[r] of the degree of m).  Euclid by
+def gcd(f, g, m) -> list[flint.fmpq_poly]:
+    """The monic gcd in K[λ] (m irreducible, so K is a field).  Euclid by
     pseudo-remainders (f <- lc(g) f - lc(f) λ^k g: no inverse in K, which costs an
     extended gcd in Q[r] each), each remainder scaled by a rational to keep its
     numbers small; one inverse at the end, none when the gcd is a constant (1)."""
@@ -91,7 +89,7 @@ def gcd(f, g, m, monic: bool = True) -> list[flint.fmpq_poly]:
         return f
     if len(f) == 1:
         return [K(1)]
-    return _monic(f, m) if monic else f
+    return _monic(f, m)
 
 
 def divide(f, g, m) -> list[flint.fmpq_poly]:
