@@ -722,3 +722,40 @@ def test_a_condition_sharing_a_factor_with_cp_has_sign_zero_on_those_branches_on
     T = Spectrum(cp).sign_table(Condition.of("g", g), Q(0), Q(1))
     assert [list(c.signs) for c in T.cells] == [[1, 0, -1]]          # λ = 2, λ = r, λ = -3
     check_degenerate_table(cp, T, sp.lambdify((r, lam), g, "mpmath"))
+
+
+def test_the_resultant_by_multiplication_determinant_equals_python_flints():
+    """Spectrum.resultant with a monic cp (the determinant of multiplication by g on
+    Q[r][λ]/(cp), branches._norm_modulo) against python-flint's fmpz_mpoly resultant:
+    the same primitive polynomial in r, for cp of degree 1, 2, 3 and g of any degree."""
+    import random
+    from certify.algebra.branches import _lambda_coefficients, _norm_modulo
+    from certify.algebra.poly import MCTX, mpoly_to_univariate, primitive
+    rr, ll, _s = MCTX.gens()
+    rng = random.Random(7)
+
+    def poly(dl, dr):
+        return sum((rng.randint(-9, 9) * rr ** i * ll ** j for i in range(dr + 1) for j in range(dl + 1)),
+                   MCTX.from_dict({}))
+    for n in (1, 2, 3):
+        for _ in range(20):
+            cp = 7 * ll ** n + poly(n - 1, 4)
+            g = poly(rng.randint(0, 5), 5)
+            expected = primitive(mpoly_to_univariate(g.resultant(cp, "lam")))
+            assert primitive(_norm_modulo(_lambda_coefficients(g), _lambda_coefficients(cp))) == expected
+
+
+def test_a_ball_refined_by_interval_newton_holds_the_root_at_the_precision_asked():
+    """Algebraic.arb at a higher precision starts from the coarser ball (interval Newton):
+    the ball holds the root (it meets python-flint's fresh isolation, and p changes sign
+    across its rational ends) and its radius is at most 2^-prec."""
+    from certify.algebra.algebraic import _newton_ball, _root_ball
+    a = Algebraic.roots(flint.fmpz_poly([5, -50, 107, -188, 107, -50, 5]), 0, 1)[0]
+    coarse = a.arb(64)
+    for prec in (128, 512, 2048):
+        z = _newton_ball(a.p, coarse, prec)
+        assert z is not None and z.overlaps(_root_ball(a.p, a.lo, a.hi, prec))
+        assert z.rad() <= flint.arb(2) ** -prec
+        lo, hi = z.mid().fmpq() - z.rad().fmpq(), z.mid().fmpq() + z.rad().fmpq()
+        assert (a.p(lo) > 0) != (a.p(hi) > 0)
+    assert _newton_ball(a.p, flint.arb(0, 10), 128) is None       # p' vanishes on a ball that wide
