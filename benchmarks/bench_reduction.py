@@ -25,13 +25,11 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:  # run as a script from a source checkout
     sys.path.insert(0, str(ROOT))
 
-import flint  # noqa: E402
-
 from certify.dynamics import reduction as R  # noqa: E402
 from certify.dynamics import simulate as sim  # noqa: E402
 from certify.algebra.balls import precision  # noqa: E402
+from certify.algebra import Q  # noqa: E402
 
-Q = flint.fmpq
 R_PHYS = Q(1, 20)
 P0, Q0 = (Q(0), Q(3), Q(5)), (Q(2), Q(-7), Q(-9))        # collapses at r = 1/20
 R_MAP, PLANE = Q(37, 100), ("a", (3, 5, -4))

@@ -27,7 +27,7 @@ import flint
 import sympy as sp
 
 from certify.algebra import trig as T
-from certify.algebra import precision, r, show, statements
+from certify.algebra import Q, precision, r, show, statements
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS
@@ -36,7 +36,6 @@ from proofs import reduction_cones as RC
 from proofs import reduction_identities as I
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
-Q = flint.fmpq
 SEED = 4_1_2024
 N_DATA = 300                 # random initial data (each with a second datum on its plane)
 N_COLLISIONS = 200           # collisions asked of the particle system

@@ -18,10 +18,9 @@ import sympy as sp
 
 from certify import caches
 from .balls import GUARD, decide, precision
-from .poly import poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
+from .poly import Q, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, isolate, refine
 
-Q = flint.fmpq
 _ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
 caches.register(_ISOLATED.clear)
 

@@ -29,16 +29,18 @@ import sympy as sp
 
 from certify import caches
 from . import numberfield as nf
-from .algebraic import Algebraic, to_fmpq
+from .algebraic import Algebraic, sign_at, to_fmpq
 from .balls import GUARD, decide, precision
 from math import gcd as _gcd
 
-from .poly import (RING, mpoly_to_ring, mpoly_to_univariate, ring_to_lrq, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
+from .poly import (Q, RING, mpoly_to_ring, mpoly_to_univariate, ring_to_lrq, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
                    resultant_lambda, ring_terms, squarefree_part, to_field, to_fmpq_poly, to_ring, x)
 from .sturm import checked_real_root_count, isolate
 
-Q = flint.fmpq
 SIGN = {1: "+", -1: "−", 0: "0", None: "·"}
+BRANCH_NAMES = ("upper", "middle", "lower")   # the real eigenvalue branches, largest first: index 0, 1, 2
+UPPER, MIDDLE, LOWER = range(3)
+X_PLUS, X_MINUS = "x₊", "x₋"                 # the fixed points (a - d ± √Δ)/(2c) of f, sigma = 1 and -1
 
 
 @dataclass(frozen=True)
@@ -249,9 +251,9 @@ class Cell:
     λ at the sample (largest first) and the sign of g on each branch (None: x not real)
     are computed when first read."""
 
-    def __init__(self, lo: Algebraic, hi: Algebraic, sample: flint.fmpq, branches_at, sign_at):
+    def __init__(self, lo: Algebraic, hi: Algebraic, sample: flint.fmpq, branches_at, sign_of):
         self.lo, self.hi, self.sample = lo, hi, sample
-        self._branches_at, self._sign_at = branches_at, sign_at
+        self._branches_at, self._sign_of = branches_at, sign_of
 
     @cached_property
     def branches(self) -> list[Algebraic]:
@@ -260,7 +262,7 @@ class Cell:
     @cached_property
     def signs(self) -> Lazy:
         lams = self.branches
-        return Lazy(len(lams), lambda k: self._sign_at(self.sample, lams[k]))
+        return Lazy(len(lams), lambda k: self._sign_of(self.sample, lams[k]))
 
 
 class SignTable:
@@ -294,7 +296,7 @@ class SignTable:
         """g has the sign ``sign`` at every point of branch ``branch`` over ]lo, hi[."""
         return self.signs(branch, lo, hi) == {sign}
 
-    def markdown(self, names=("upper", "middle", "lower")) -> str:
+    def markdown(self, names=BRANCH_NAMES) -> str:
         """The sign table: one row per cell and per critical value."""
         width = max([len(c.signs) for c in self.cells] + [1])
         head = "| r | sample | real λ | " + " | ".join(names[k] if k < len(names) else f"λ{k}" for k in range(width)) + " |"
@@ -455,7 +457,7 @@ class Spectrum:
         degenerate = getattr(cond, "degenerate", None)
         if not degenerate:
             return evaluate_sign(cond, t, L)
-        on = {label for label, e in degenerate if _sign_at_algebraic(_at_r(e, t), L) == 0}
+        on = {label for label, e in degenerate if sign_at(_at_r(e, t), L) == 0}
         if not on:
             return evaluate_sign(cond, t, L)
         if cond.delta is None:
@@ -688,10 +690,6 @@ def _at_r(P, t) -> flint.fmpq_poly:
     n = max(coeffs, default=0)
     return flint.fmpq_poly([coeffs.get(j, Q(0)) for j in range(n + 1)])
 
-
-def _sign_at_algebraic(P, L: Algebraic) -> int:
-    from .algebraic import sign_at
-    return sign_at(P, L)
 
 
 def _alg(a) -> Algebraic:

@@ -35,10 +35,9 @@ import flint
 
 from . import simulate as sim
 from .model import collide_particles
-from certify.algebra.poly import to_fmpq
+from certify.algebra.poly import Q, to_fmpq
 from certify.errors import UsageError
 
-Q = flint.fmpq
 NUMBER = re.compile(r"[+-]?(\d+(/\d+)?|\d+\.\d*|\.\d+)")
 PROGRESS_STEPS = 200          # at most this many progress reports per run
 

@@ -10,10 +10,10 @@ import numpy as np
 import sympy as sp
 
 from . import figures
+from certify.algebra.branches import BRANCH_NAMES
 from certify.algebra.poly import r
 
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:purple")
-BRANCH_NAMES = ("upper", "middle", "lower")
 
 
 def branch_curves(spectrum, rs: np.ndarray) -> np.ndarray:
