@@ -50,7 +50,7 @@ def median_time(f, repeat: int):
 
 
 def physical(n: int, repeat: int) -> None:
-    seconds, run = median_time(lambda: sim.run(P0, Q0, R_PHYS, n), repeat)
+    seconds, run = median_time(lambda: sim.follow(P0, Q0, R_PHYS, n), repeat)
     marks = [k for k in (10, 100, 1000, 10_000) if k < len(run.states)]
     growth = ", ".join(f"{k}: {max(bits(z) for z in run.states[k].p + run.states[k].q)}/{bits(run.states[k].t)}"
                        for k in marks)

@@ -59,7 +59,7 @@ from pathlib import Path
 
 from certify.dynamics import particles
 from certify.errors import UsageError
-from certify.run import ERRATUM, FAIL, OBSERVED, figures, progress, report, runner
+from certify.run import ERRATUM, FAIL, OBSERVED, progress, report, runner, saving
 from certify.run.files import ensure_writable, read_text_or_none
 
 DEFAULT_OUT = Path("reports")
@@ -93,9 +93,9 @@ def estimates(out: Path | None) -> dict[str, float]:
 def execute(ids, out: Path | None, jobs: int):
     """Run the certificates ``ids`` (all when None) on ``jobs`` processes, figures
     going to ``out/figures``.  Returns the runner's ``(results, timings)``."""
-    saving = figures.output_dir(out / "figures") if out is not None else nullcontext()
+    saving = saving.output_dir(out / "figures") if out is not None else nullcontext()
     with saving:
-        return runner.run(ids, progress=progress.Bar("certificate"), jobs=jobs, estimates=estimates(out))
+        return runner.run_selected(ids, progress=progress.Bar("certificate"), jobs=jobs, estimates=estimates(out))
 
 
 def failing(results) -> list[str]:
@@ -155,7 +155,7 @@ def cmd_all(args) -> int:
     committed = read_text_or_none(out / "REPORT.md")
     results, timings = execute(None, out, args.jobs)
     markdown = report.write_report(results, timings, out)
-    figures.prune(out / "figures", keep={name for _, o in results for name in o.figures})
+    saving.prune(out / "figures", keep={name for _, o in results for name in o.figures})
     warn_missing_figures(results, out)
     code = finish(results)
     wrote(out, results)
@@ -266,10 +266,10 @@ def cmd_bench(args) -> int:
 
 
 def cmd_census(args) -> int:
-    """The census of periodic patterns (certify/run/census.py): records stream to the
+    """The census of periodic patterns (certify/run/census_report.py): records stream to the
     state file, --resume skips the words already there."""
     import signal
-    from certify.run import census, executors
+    from certify.run import census_report as census, executors
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     out = ensure_writable(args.out)
     longer = census.written_length(out)
@@ -279,7 +279,7 @@ def cmd_census(args) -> int:
     state = args.state if args.state is not None else out / "census-state.jsonl"
     ensure_writable(state.parent)
     with executors.executor(args.jobs, args.scheduler) as ex:
-        records = census.run(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
+        records = census.run_census(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
     doc = census.write_outputs(records, args.max_length, out)
     if args.json:
         print(census.to_json(doc), end="")
@@ -308,7 +308,7 @@ def cmd_particles(args) -> int:
     """Simulate the four particles exactly; one line per collision, then why it stopped."""
     if args.digits > MAX_DIGITS:
         raise UsageError(f"--digits is at most {MAX_DIGITS} (--exact prints the full fractions)")
-    history = particles.simulate(args.x, args.v, args.r, args.collisions, progress=progress.Bar("collision"))
+    history = particles.evolve(args.x, args.v, args.r, args.collisions, progress=progress.Bar("collision"))
     for line in particles.report_lines(history, digits=args.digits, full=args.exact):
         print(line)
     return 0
@@ -400,7 +400,7 @@ def cmd_simulate(args) -> int:
     if args.words and args.out is None:
         raise UsageError("--words stores the words in --out FILE.npz: give --out")
     with executors.executor(args.jobs, args.scheduler) if args.engine != "float64" else nullcontext() as ex:
-        orbits = numerics.simulate(r, theta0, phi0, collisions=args.collisions, keep=args.keep,
+        orbits = numerics.iterate(r, theta0, phi0, collisions=args.collisions, keep=args.keep,
                                    engine=args.engine, dps=args.dps, executor=ex, progress=progress.Bar("r"),
                                    strict=args.strict, words=args.words)
     if args.out is not None:
@@ -628,7 +628,7 @@ def cmd_figures(args) -> int:
             return 0
     resolution = args.resolution or "preview"
     datas, names = {}, []
-    with figures.output_dir(out / "figures"):
+    with saving.output_dir(out / "figures"):
         for fig in args.only or numfig.SPECS:
             datas[fig] = numfig.compute(fig, resolution, progress=progress.Bar(f"figure {fig}"))
             names.append(plots.section5_figure(datas[fig], dpi=FIGURE_DPI[resolution]))

@@ -95,7 +95,7 @@ def self_similar_run(datum: Datum, word: str, periods: int, prec: int = 512, max
     decided exactly)."""
     n = len(word) * periods
     while prec <= maxprec:
-        run = sim.run(*datum.balls(prec), n, prec)
+        run = sim.follow(*datum.balls(prec), n, prec)
         if run.stop in ("free", "multiple"):            # decided: the orbit stops colliding
             return run, prec
         if run.stop == "n":

@@ -84,7 +84,7 @@ def datum(rng: random.Random) -> Datum:
     al, be, ga = rational(rng), rational(rng), rng.choice((1, -1)) * rational(rng) / 100
     p2 = tuple(al * z for z in p)
     q2 = tuple(be * qk + ga * pk for qk, pk in zip(q, p))
-    runs = (sim.run(p, q, r, N_COLLISIONS), sim.run(p2, q2, r, N_COLLISIONS))
+    runs = (sim.follow(p, q, r, N_COLLISIONS), sim.follow(p2, q2, r, N_COLLISIONS))
     contacts = [letter] + runs[0].events
     normals = [R.normal(s.p, s.q) for s in runs[0].states]
     planes = ([R.canonical(L, n) for L, n in zip(contacts, normals)],

@@ -10,7 +10,7 @@ import pytest
 
 from certify.cli import main
 from certify.numerics import figures as F
-from certify.run import figures, runner
+from certify.run import runner, saving as figures
 from certify.run.runner import OBSERVED
 
 

@@ -220,7 +220,7 @@ class Run:
         return "".join(e if len(e) == 1 else f"[{e}]" for e in self.events)
 
 
-def run(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
+def follow(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
         until: Callable[[Run], bool] | None = None) -> Run:
     """At most n collisions from (p0, q0); ball arithmetic at ``prec`` bits.
     A comparison that cannot be decided ends the run with stop="undecided" (the
@@ -262,7 +262,7 @@ def run_certified(datum: Callable[[int], tuple], n: int, prec: int = 128,
     while prec <= maxprec:
         with precision(prec):
             p0, q0, r = datum(prec)
-        result = run(p0, q0, r, n, prec, until)
+        result = follow(p0, q0, r, n, prec, until)
         if result.stop != "undecided":
             return result, prec
         prec *= 2

@@ -1,4 +1,4 @@
-"""The engines behind :func:`certify.numerics.simulate`, one orbit at a time.
+"""The engines behind :func:`certify.numerics.iterate`, one orbit at a time.
 
 * ``float64``: the numba kernel (:mod:`.kernel`), parallel over orbits; here only a
   one-orbit wrapper (:func:`float64_orbit`).

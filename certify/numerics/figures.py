@@ -2,7 +2,7 @@
 
 A figure of Section 5 is a cloud of points (r, φ_n): for each restitution coefficient r
 of a regular grid, the angles φ of the last kept b-collisions of a few orbits of the
-reduction map (:func:`certify.numerics.simulate`); an orbit that stops early (a break of
+reduction map (:func:`certify.numerics.iterate`); an orbit that stops early (a break of
 the engine, ``BREAKS``) is drawn as a red dot at (r, π/2), and the CDKK thresholds
 (CLAIMS L4, L3) as red vertical lines.  :data:`SPECS` holds the paper's parameters of
 every figure, as printed in its caption, and the cheap preview that ``certify all``
@@ -225,7 +225,7 @@ def compute(fig: str, resolution: str = "preview", engine: str = "float64", exec
             kwargs["executor"] = executor
         if progress is not None:
             kwargs["progress"] = progress
-        orbits = numerics.simulate(rs, theta0, phi0, **kwargs)
+        orbits = numerics.iterate(rs, theta0, phi0, **kwargs)
         _MEMO[key] = (np.asarray(orbits.r, float), np.asarray(orbits.phi, float), np.asarray(orbits.breaks),
                       time.perf_counter() - t, np.asarray(orbits.certified))
     rr, phi, breaks, seconds, certified = _MEMO[key]
@@ -494,7 +494,7 @@ def probe(rs, collisions: int = PAPER["collisions"], keep: int = PAPER["keep"], 
 def _probe_orbits(spec, rs, collisions, keep, engine):
     from certify import numerics
     theta0, phi0 = initial_data(spec.orbits)
-    o = numerics.simulate(np.sort(np.asarray(rs, float)), theta0, phi0, collisions=collisions, keep=keep, engine=engine)
+    o = numerics.iterate(np.sort(np.asarray(rs, float)), theta0, phi0, collisions=collisions, keep=keep, engine=engine)
     return FigureData(spec, "probe", np.asarray(o.r), np.asarray(o.phi), np.asarray(o.breaks), collisions, keep, engine,
                       certified=np.asarray(o.certified))
 
