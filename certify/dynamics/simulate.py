@@ -20,7 +20,7 @@ Two number systems behind one interface:
   raised, and the caller raises the precision (:func:`run_certified`).
 
 >>> from flint import fmpq
->>> run(exact([1, 0, 2]), exact([-1, "1/2", -1]), fmpq(1, 2), 3).word   # a at t=1, c at t=2
+>>> follow(exact([1, 0, 2]), exact([-1, "1/2", -1]), fmpq(1, 2), 3).word   # a at t=1, c at t=2
 'acb'
 """
 from __future__ import annotations

@@ -280,3 +280,12 @@ def theta_of(i: int, n) -> float:
 
 def letter_index(letter: str) -> int:
     return INDEX[letter]
+
+
+def phi_at_b(p, q) -> float:
+    """The φ the engines keep for the state (p, q) right after a b-collision: that of the
+    normal p ∧ q, oriented as the engines orient it (:func:`phi_of`)."""
+    n = reduction.cross(p, q)
+    if n[2] < 0:
+        n = tuple(-z for z in n)
+    return phi_of(1, n)

@@ -6,9 +6,11 @@ and progress on a terminal.  It imports every layer below it.
   every core).
 - :mod:`.report`: outcomes in, Markdown and JSON out, and the staleness check.
 - :mod:`.saving`, :mod:`.plots`: saving figures reproducibly; the certified charts.
-- :mod:`.files`, :mod:`.progress`: atomic writes; progress bars on a terminal only.
+- :mod:`.files`, :mod:`.progress`: atomic writes, the committed findings; progress bars on a
+  terminal only.
 """
 from . import files, plots, progress, report, runner, saving
+from .files import load_findings
 from .saving import save_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
 from .runner import (CERTIFICATES, ERRATUM, ERRATUM_KINDS, FAIL, FALSE_STATEMENT, MISPRINT, OBSERVED, PASS,
@@ -16,7 +18,7 @@ from .runner import (CERTIFICATES, ERRATUM, ERRATUM_KINDS, FAIL, FALSE_STATEMENT
 
 __all__ = [
     "files", "plots", "progress", "report", "runner", "saving",
-    "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
+    "load_findings", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
     "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
     "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run_selected",
     "run_certificate", "select",

@@ -181,10 +181,10 @@ def section5_name(fig: str, resolution: str) -> str:
 def section5_figure(data, dpi: int | None = None) -> str:
     """Figure ``data.spec.id`` of Section 5 drawn from a run of certify.numerics.figures,
     with the paper's red lines (CDKK thresholds L4, r_exist L3) and red rectangles."""
-    from certify.numerics import figures as numfig
+    from certify.numerics import cite, red_lines
     spec = data.spec
     orbits = data.phi.shape[1]
-    title = (f"{numfig.cite(spec.id)}, {data.resolution}: {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
+    title = (f"{cite(spec.id)}, {data.resolution}: {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
              f"{orbits} orbit{'s' if orbits != 1 else ''}, last {data.keep} b-collisions of {data.collisions}, "
              f"{data.engine}")
     fraction = data.certified_fraction()
@@ -192,5 +192,5 @@ def section5_figure(data, dpi: int | None = None) -> str:
         title += (f"\ncertified: {fraction:.2%} of the collisions (horizon ≤ {int(data.certified.max())}: "
                   "the points are shadowing orbits)" if data.certified.max() < data.collisions - data.keep
                   else f"\ncertified: {fraction:.2%} of the collisions")
-    return omega_figure(data, section5_name(spec.id, data.resolution), lines=numfig.red_lines(), boxes=spec.boxes,
+    return omega_figure(data, section5_name(spec.id, data.resolution), lines=red_lines(), boxes=spec.boxes,
                         title=title, dpi=dpi)
