@@ -33,10 +33,7 @@ import flint
 from certify.algebra.balls import precision
 from .model import INDEX, LETTERS, collide
 from certify.algebra.poly import to_fmpq
-
-
-class Undecided(ArithmeticError):
-    """A sign or a comparison of balls that the working precision cannot decide."""
+from certify.errors import Undecided
 
 
 class MultipleCollision(ArithmeticError):

@@ -19,8 +19,9 @@ import flint
 import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
-from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS, Condition, Spectrum, simplest_between
+from certify.algebra.branches import NO_BRANCH, X_MINUS, X_PLUS, Condition, Spectrum, simplest_between
 from certify.dynamics.words import Candidate
+from certify.errors import UNDECIDED
 from certify.dynamics.systems import FOUR, System, run_in
 from certify.algebra.poly import FIELD, Q, RING, field_to_frac, frac_to_field, lam, lr_to_ring, ring_to_lrq, to_field, to_ring
 
@@ -160,10 +161,12 @@ def fmt(a: Algebraic) -> str:
     return str(a.lo) if a.is_rational else "≈" + a.digits(6)
 
 
-def _meets(sg, want) -> bool | None:
-    if sg == "?":
-        return None
-    if sg in (None, "missing"):
+def _meets(sg, want):
+    """Whether the sign ``sg`` is the required ``want``: True, False, or UNDECIDED when
+    ``sg`` is (:mod:`certify.errors`); no branch or x not real: False."""
+    if sg == UNDECIDED:
+        return UNDECIDED
+    if sg in (None, NO_BRANCH):
         return False
     return sg == want
 
@@ -183,11 +186,11 @@ def table_sign_at(T, rc: Algebraic, branch: int):
         if c == rc:
             pt = T.points[k]
             if pt is None:
-                return "?"
-            return pt[branch] if branch < len(pt) else "missing"
+                return UNDECIDED
+            return pt[branch] if branch < len(pt) else NO_BRANCH
     for cell in T.cells:
         if cell.lo < rc < cell.hi:
-            return cell.signs[branch] if branch < len(cell.signs) else "missing"
+            return cell.signs[branch] if branch < len(cell.signs) else NO_BRANCH
     raise ArithmeticError(f"{rc} outside the table of {T.condition}")
 
 
@@ -296,8 +299,8 @@ class Analysis:
             for a, b in zip(ends, ends[1:]):
                 ok = _meets(sign_in_cell(T, R.branch, a, b), req.sign)
                 # '?' on a whole cell: a degenerate condition (Spectrum._cell_sign)
-                yield Piece(a, b), "holds" if ok else "fails" if ok is not None else "undecided", \
-                    "" if ok is not None else f"{req.name}: undecided on a whole branch (a norm ≡ 0 there)"
+                yield Piece(a, b), "undecided" if ok == UNDECIDED else "holds" if ok else "fails", \
+                    f"{req.name}: undecided on a whole branch (a norm ≡ 0 there)" if ok == UNDECIDED else ""
             for c in cuts:
                 yield self._point(R, Piece(c), req, T)
 
@@ -306,13 +309,13 @@ class Analysis:
         rc, k = p.lo, R.branch
         sg = self._sign_with_x(req, rc, k, p.x_value) if (p.x_value is not None and req.has_x) else table_sign_at(T, rc, k)
         ok = _meets(sg, req.sign)
-        if ok is not None:
+        if ok != UNDECIDED:
             return p, "holds" if ok else "fails", "" if ok else \
                 f"{req.name} {'= 0' if sg == 0 else 'is not real' if sg is None else 'has the wrong sign'}"
         a, b, c, d = (self.cand.abcd_ring or self.cand.abcd) if self.cand.abcd is not None else (None,) * 4
         if req.has_x and p.x_value is None and vanishes_on_branch(self.spec, c, rc, k):
             xv = frac_to_field(field_to_frac(b) / field_to_frac(d - a))    # b/(d-a) in lowest terms
-            if _meets(self._sign_with_x(Requirement("x", (FIELD.zero, FIELD.one), 1), rc, k, xv), 1):
+            if _meets(self._sign_with_x(Requirement("x", (FIELD.zero, FIELD.one), 1), rc, k, xv), 1) is True:
                 return self._point(R, Piece(rc, None, xv, "c = 0: f affine, fixed point b/(d-a)"), req, T)
             return p, "fails", "c = 0 there (exact): f is affine, its fixed point b/(d-a) is not positive"
         if not req.has_x or p.x_value is not None:
@@ -333,15 +336,15 @@ class Analysis:
                 if vanishes_on_branch(self.spec, cond.N[0], rc, k):
                     return p, "fails", f"{req.name} vanishes there (exact, other rows of the eigen-equation)"
                 sg = self.spec.sign_at_point(cond, rc)
-                ok = None if sg is None else _meets(sg[k] if k < len(sg) else "missing", req.sign)
-                if ok is not None:
+                ok = UNDECIDED if sg is None else _meets(sg[k] if k < len(sg) else NO_BRANCH, req.sign)
+                if ok != UNDECIDED:
                     return p, "holds" if ok else "fails", "" if ok else \
                         f"{req.name} has the wrong sign (other rows of the eigen-equation)"
         return p, "undecided", req.name
 
     def _sign_with_x(self, req, rc, k, xv):
         sg = self.spec.sign_at_point(condition(req, self.spec.lrq_cp, x_value=xv), rc)
-        return "?" if sg is None else (sg[k] if k < len(sg) else "missing")
+        return UNDECIDED if sg is None else (sg[k] if k < len(sg) else NO_BRANCH)
 def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: System = FOUR,
                         previous: str | None = None) -> tuple[list[Requirement], list]:
     """The candidate of ``word`` realises its first m collisions, strictly, iff

@@ -38,10 +38,10 @@ import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.poly import FIELD, Q, Lf, RING, lam, show, to_field, to_ring
-from certify.algebra.branches import X_MINUS, X_PLUS, Condition
+from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS, Condition
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
-from .feasibility import BRANCH_NAMES, NO_X, Analysis, Region, Requirement, prefix_requirements
+from .feasibility import NO_X, Analysis, Region, Requirement, prefix_requirements
 from .periodic import compact, read, show as show_word
 
 SCHEMA_PATH = Path(__file__).with_name("pattern.schema.json")
