@@ -10,7 +10,7 @@ import re
 import flint
 import sympy as sp
 
-from certify.algebra import (Algebraic, Condition, FixedPoint, discriminant_lambda,
+from certify.algebra import (BRANCH_NAMES, LOWER, MIDDLE, UPPER, Algebraic, Condition, FixedPoint, discriminant_lambda,
     eliminate, flint_real_roots, sturm_count, lam, parse, primitive, r, show, show_factored_int, sign_intervals, statements,
     to_field, to_fmpq_poly, to_fmpz_poly, u, v, x)
 from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characteristic_polynomial, reduce_mod,
@@ -18,8 +18,6 @@ from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characterist
 from certify.patterns import Analysis, fmt, prefix_requirements
 from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude, quantity
 
-UPPER, MIDDLE, LOWER = 0, 1, 2
-BRANCH = {UPPER: "upper", MIDDLE: "middle", LOWER: "lower"}
 WORD = "ababcb"
 
 # ---------------------------------------------------------------- as printed
@@ -334,7 +332,7 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
         Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
                                                                              f"r* is {rs.describe()}"]),
         Check(f"all three eigenvalues: {positive}", all_three,
-              [f"{BRANCH[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)]),
+              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)]),
         Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
               "(all positive there, ordered)", pos_rstar),
     ], figures=figs)
@@ -882,7 +880,7 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
     exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
                      and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
-    regions = [f"{BRANCH[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
+    regions = [f"{BRANCH_NAMES[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
                + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}" if R.dropped else "")
                for R in an.regions]
     fp, xp, _xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
@@ -898,7 +896,7 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
     return conclude([
         Check("every cell and critical value of ]0,1[ decided, on every branch, for both fixed points", not undecided,
-              [f"undecided: {BRANCH[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
+              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
         Check("the candidate realises ababcb, with every inequality strict, exactly for 0 < r < 5-2√6 on the upper "
               "branch and on the lower branch, and nowhere on the middle branch",
               exactly_below[UPPER] and exactly_below[LOWER] and not where[MIDDLE],

@@ -26,14 +26,13 @@ from dataclasses import dataclass
 
 import flint
 
-from certify.algebra import (Algebraic, Condition, GUARD, ball_value, from_flint, lam, parse, precision,
+from certify.algebra import (Q, Algebraic, Condition, GUARD, ball_value, from_flint, lam, parse, precision,
     show, tight, to_fmpq)
 from certify.dynamics import simulate as sim
 from certify.dynamics import candidate, check_word, fixed_point_ball
 from certify.run import Check, certificate, conclude
 from proofs.ababcb import A_PRINTED, B_PRINTED, C_PRINTED, D_PRINTED, U_PRINTED, V_PRINTED
 
-Q = flint.fmpq
 
 PRINTED = dict(U=U_PRINTED, V=V_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, word="ababcb",
                r="1/20", periods=20, perturbation="1/10^30")
@@ -96,7 +95,7 @@ def self_similar_run(datum: Datum, word: str, periods: int, prec: int = 512, max
     decided exactly)."""
     n = len(word) * periods
     while prec <= maxprec:
-        run = sim.run(*datum.balls(prec), n, prec)
+        run = sim.follow(*datum.balls(prec), n, prec)
         if run.stop in ("free", "multiple"):            # decided: the orbit stops colliding
             return run, prec
         if run.stop == "n":

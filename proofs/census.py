@@ -35,7 +35,7 @@ from fractions import Fraction
 
 import flint
 
-from certify.algebra import simplest_between
+from certify.algebra import X_PLUS, simplest_between
 from certify.dynamics import candidate, simulate
 from certify.patterns import BRANCH_NAMES, census
 from certify.run import REFUTED_REMARK, Check, certificate, conclude
@@ -83,7 +83,7 @@ def replay(rec: dict) -> tuple[bool, str]:
                           flint.fmpq(*(hi - margin).as_integer_ratio()))
     branch, fp = BRANCH_NAMES.index(s["branch"]), s["fixed_point"]
     cand = candidate(rec["word"])
-    run, prec = simulate.run_certified(lambda pr: cand.balls(r0, branch, 1 if fp == "x₊" else -1, pr),
+    run, prec = simulate.run_certified(lambda pr: cand.balls(r0, branch, 1 if fp == X_PLUS else -1, pr),
                                        PERIODS * len(rec["word"]))
     got = "".join(run.events)
     return got == rec["word"] * PERIODS, (f"{rec['word']}, {s['branch']} branch, {fp}, r = {r0}: the dynamics "

@@ -23,15 +23,14 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
-from certify.algebra import (Algebraic, Condition, Lf, RING, eliminate, lam, parse, radical, resultant_lambda, show,
+from certify.algebra import (FIELD, Q, Algebraic, Condition, Lf, RING, eliminate, lam, parse, radical, resultant_lambda, show,
     show_factored_int, to_field, to_fmpz_poly, to_ring)
-from certify.dynamics import K, candidate
+from certify.dynamics import candidate
 from certify.patterns import (Analysis, BRANCH_NAMES, Requirement, analyse, fmt, prefix_requirements,
                               vanishes_on_branch)
 from certify.patterns import parse as parse_word
 from certify.run import Check, certificate, conclude, quantity
 
-Q = flint.fmpq
 
 PRINTED_T26 = dict(pattern="(ab)^3(cb)^3", threshold=(5, -2, 6), quadratic="r^2 - 10*r + 1")
 WINDOW = (Q(1, 10), Q(1, 9))          # our choice of an r-interval around 5-2√6 ≈ 0.10102
@@ -96,7 +95,7 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
     checks.append(Check(f"on ]{lo}, {hi}[ the three eigenvalues are real and positive, so the largest is the "
                         f"dominant one (strictly)", three_positive, ["sign of λ per branch:\n\n" + base.markdown()]))
     reqs, steps = prefix_requirements(word, len(word), cand.q0, cand.steps, cand.q0_other)
-    reqs.append(Requirement("λ (q(t_12) = λ q(0) keeps the signs)", (K(Lf), K.zero), 1))
+    reqs.append(Requirement("λ (q(t_12) = λ q(0) keeps the signs)", (FIELD(Lf), FIELD.zero), 1))
     for req in reqs:
         an.impose(req)
     ev.append("the candidate realises w with every inequality strict iff " + ", ".join(

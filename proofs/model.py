@@ -140,7 +140,7 @@ def scaled_runs_agree(factor: sp.Expr, al: sp.Symbol, be: sp.Symbol, n_data: int
         q = tuple(flint.fmpq(rng.randint(-50, 20), rng.randint(1, 50)) for _ in range(3))
         a, b = (flint.fmpq(rng.randint(1, 30), rng.randint(1, 30)) for _ in range(2))
         f = to_fmpq(factor.subs({al: sp.Rational(int(a.p), int(a.q)), be: sp.Rational(int(b.p), int(b.q))}))
-        one, two = sim.run(p, q, rr, n), sim.run(tuple(a * z for z in p), tuple(b * z for z in q), rr, n)
+        one, two = sim.follow(p, q, rr, n), sim.follow(tuple(a * z for z in p), tuple(b * z for z in q), rr, n)
         total += 1
         agree += one.events == two.events and all(s2.t == f * s1.t for s1, s2 in zip(one.states, two.states))
     return Check(f"exact runs: (αp, βq) has the collisions of (p, q) at {factor} times its times",

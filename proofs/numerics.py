@@ -12,7 +12,7 @@ The certificates quote those committed findings in their notes.
 
 Floats decide nothing here: an accumulation-point count is a count of clusters of
 kept angles (gap 10^-3 rad, each narrower than 10^-6 rad), an observation with its
-tolerances stated (certify.numerics.figures).
+tolerances stated (certify.numerics.limits).
 """
 from __future__ import annotations
 
@@ -20,8 +20,9 @@ import math
 
 import numpy as np
 
-from certify.numerics import BREAKS, figures as F, paper_grid
-from certify.run import Check, certificate, observe, quantity, section5_figure
+import certify.numerics as F
+from certify.numerics import BREAKS, paper_grid
+from certify.run import Check, certificate, load_findings, observe, quantity, section5_figure
 
 PAPER_FINDINGS = "numerics-paper.json"
 N4_FINDINGS = "numerics-n4.json"
@@ -43,7 +44,7 @@ def section5_preview():
 
 def paper_note(key: str, render) -> str:
     """The committed paper-resolution finding ``key``, rendered, or a pointer to the command."""
-    found = F.load_findings(PAPER_FINDINGS)
+    found = load_findings(PAPER_FINDINGS)
     if not found or key not in found:
         return ("Paper resolution: not computed in this checkout (run `python -m certify figures "
                 "--resolution paper`).")
@@ -231,7 +232,7 @@ def below_0078(r_below, n_from, accumulate_above):
     collisions); the smallest component of the dominant eigenvector of M_w (mpmath); the
     committed mp search of ``certify figures --n4``."""
     n0 = int(number(n_from))
-    committed = F.load_findings(N4_FINDINGS)
+    committed = load_findings(N4_FINDINGS)
     ev, checks = [], []
     th = {n: F.r_max(n) for n in F.N_LINES}
     if committed:

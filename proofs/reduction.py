@@ -27,7 +27,7 @@ import flint
 import sympy as sp
 
 from certify.algebra import trig as T
-from certify.algebra import precision, r, show, statements
+from certify.algebra import Q, precision, r, show, statements
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS
@@ -36,7 +36,6 @@ from proofs import reduction_cones as RC
 from proofs import reduction_identities as I
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
-Q = flint.fmpq
 SEED = 4_1_2024
 N_DATA = 300                 # random initial data (each with a second datum on its plane)
 N_COLLISIONS = 200           # collisions asked of the particle system
@@ -85,7 +84,7 @@ def datum(rng: random.Random) -> Datum:
     al, be, ga = rational(rng), rational(rng), rng.choice((1, -1)) * rational(rng) / 100
     p2 = tuple(al * z for z in p)
     q2 = tuple(be * qk + ga * pk for qk, pk in zip(q, p))
-    runs = (sim.run(p, q, r, N_COLLISIONS), sim.run(p2, q2, r, N_COLLISIONS))
+    runs = (sim.follow(p, q, r, N_COLLISIONS), sim.follow(p2, q2, r, N_COLLISIONS))
     contacts = [letter] + runs[0].events
     normals = [R.normal(s.p, s.q) for s in runs[0].states]
     planes = ([R.canonical(L, n) for L, n in zip(contacts, normals)],

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from certify.cli import main
-from certify.numerics import figures as F
-from certify.run import figures, runner
+import certify.numerics as F
+from certify.run import load_findings, runner, saving as figures
 from certify.run.runner import OBSERVED
 
 
@@ -168,7 +168,7 @@ def test_n4_reads_the_printed_n():
     assert printed.status == OBSERVED
     assert not runner.holds(printed.printed[0]) and not runner.holds(printed.printed[1])
     assert printed.agrees is False and "the printed cause does not hold" in printed.reason
-    beyond = F.load_findings("numerics-n4.json")["largest_n_float64"] + 1
+    beyond = load_findings("numerics-n4.json")["largest_n_float64"] + 1
     later = run("N4", n_from=str(beyond))
     assert runner.holds(later.printed[0]) and runner.holds(later.printed[1])
 

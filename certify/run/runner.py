@@ -408,7 +408,7 @@ def _parallel(plan: list[list[Certificate]], jobs: int, progress) -> tuple[list,
     return finished, seconds
 
 
-def run(ids=None, progress=None, jobs: int = 1,
+def run_selected(ids=None, progress=None, jobs: int = 1,
         estimates: dict[str, float] | None = None) -> tuple[list[tuple[Certificate, Outcome]], dict]:
     """Run the selected certificates on ``jobs`` processes; return the outcomes (in claim
     order, whatever the order they finished in) and the timings.
