@@ -177,12 +177,6 @@ class Mutant:
             out.update({name: new} if old is None else altered(id, name, old, new))
         return out
 
-    @property
-    def text(self) -> tuple[str, str]:
-        """(name, the text it shows): what a wording or unread mutant must see quoted in a failing check."""
-        name, _, new = self.changes[0]
-        return name, new
-
 
 def replaced(name: str, old: str, new: str, why: str = "", kind: str = CONSTANT) -> Mutant:
     """The first ``old`` in the printed text ``name`` replaced by ``new``."""
