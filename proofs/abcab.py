@@ -41,7 +41,7 @@ from certify.algebra import FIELD, Q, Algebraic, lam, show, simplest_between
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, candidate, collision_matrix, run_word
 from certify.patterns import Analysis, BRANCH_NAMES, Requirement, analyse, fmt, prefix_requirements
-from certify.run import Check, certificate, conclude
+from certify.run import PASS, Check, certificate, conclude, overridden
 
 
 def matrix_of_name(name: str) -> sp.Matrix:
@@ -59,7 +59,12 @@ PRINTED_T27 = dict(word="abcab", matrix="BACBA", after="b", next="a", other="c")
 @certificate("T27", "l. 513-515",
              "abcab (matrix BACBA) has no self-similar datum: for the candidate (eigenvector of BACBA, a fixed "
              "point of f), the collision after the first b is a, not c, at a strictly earlier time.",
-             printed=PRINTED_T27)
+             printed=PRINTED_T27,
+             expect=PASS,
+             mutants=[overridden({"matrix": "BACAB"}, "a letter of the matrix name"),
+                      overridden({"matrix": "ABCAB"}, "a letter of the matrix name"),
+                      overridden({"next": "c", "other": "a"}, "the claimed collision order reversed"),
+                      overridden({"word": "acbab"}, "a different word: its matrix BABCA is not BACBA")])
 def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     """On every real branch, for every r in ]0,1[ and both fixed points x±: wherever
     the candidate realises its first collisions up to the first b, the next

@@ -14,12 +14,14 @@ from .files import load_findings
 from .saving import save_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
 from .runner import (CERTIFICATES, ERRATUM, ERRATUM_KINDS, FAIL, FALSE_STATEMENT, MISPRINT, OBSERVED, PASS,
-                     REFUTED_REMARK, STATUSES, Certificate, Check, Context, Outcome, altered, certificate, conclude, load_all, observe, quantity, reset_caches, run_selected, run_certificate, select)
+                     REFUTED_REMARK, STATUSES, Certificate, Check, Context, Mutant, Outcome, altered, certificate, conclude,
+                     load_all, observe, overridden, quantity, replaced, reset_caches, reworded, run_certificate, run_selected, select,
+                     unread)
 
 __all__ = [
     "files", "plots", "progress", "report", "runner", "saving",
     "load_findings", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
     "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
-    "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run_selected",
-    "run_certificate", "select",
+    "Mutant", "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run_selected",
+    "run_certificate", "select", "overridden", "replaced", "reworded", "unread",
 ]
