@@ -1,28 +1,38 @@
-"""One context for the whole test session: the mutation harness (tests/test_mutants.py) and
+"""One context for the whole test session: the mutation harness (tests/proofs/test_mutants.py) and
 the tests of each part run certificates with the same shared quantities (section4_data,
 ab_cb_patterns, spectrum, ...), each computed once per session, and the same run of each
 certificate as printed.  While a certificate runs as printed, the printed texts it reads
 with the statement grammar (certify.algebra.statements) are recorded: a certificate that
 reads a condition in words must have wording mutants."""
+from functools import cache
+
 from certify.algebra import statements
 from certify.run.runner import CERTIFICATES, Context, load_all, run_certificate
 
-load_all()
 CONTEXT = Context()
 READERS = ("relation", "statement", "range_of", "count", "extent", "branch", "product_equation", "word_rule")
 _PRINTED: dict = {}          # id -> (outcome as printed, the printed names read by the grammar)
+
+
+@cache
+def registry() -> dict:
+    """Every certificate of proofs/, registered once per session (the ``certificates``
+    fixture of tests/conftest.py; a module that parametrizes over them calls it at
+    collection)."""
+    return load_all()
 
 
 def outcome(id: str, **overrides):
     """Certificate ``id`` run in the session's context, its printed inputs replaced by ``overrides``."""
     if not overrides:
         return as_printed(id)
-    return run_certificate(CERTIFICATES[id], CONTEXT, overrides)
+    return run_certificate(registry()[id], CONTEXT, overrides)
 
 
 def as_printed(id: str):
     """The outcome of certificate ``id`` on the paper as printed, run once per session."""
     if id not in _PRINTED:
+        registry()
         _PRINTED[id] = _traced(id)
     return _PRINTED[id][0]
 

@@ -54,7 +54,18 @@ class Algebraic:
     def roots(cls, p, a=None, b=None) -> list["Algebraic"]:
         """The distinct real roots of p in ]a, b[, increasing (Sturm isolation).  The
         isolating intervals are memoised per (p, a, b); each call returns new numbers
-        (a number refines its interval in place)."""
+        (a number refines its interval in place).
+
+        The root of r² - 10r + 1 in ]0, 1[ is the paper's threshold 5 - 2√6:
+
+        >>> import flint
+        >>> [r1] = Algebraic.roots(flint.fmpq_poly([1, -10, 1]), 0, 1)
+        >>> r1 == Algebraic.surd(5, -2, 6), r1.digits(12)
+        (True, '0.101020514434')
+
+        A number is exact: (p, isolating interval), compared and signed exactly.  Its
+        digits are the correctly rounded decimal of the exact value; the interval
+        printed by ``repr`` is only as narrow as the last refinement."""
         p = primitive(flint.fmpq_poly(p)) if not isinstance(p, flint.fmpz_poly) else p
         key = (poly_key(p), None if a is None else str(a), None if b is None else str(b))
         made = _ISOLATED.get(key)
@@ -413,7 +424,18 @@ def _fmt(q: flint.fmpq, n: int) -> str:
 def sign_at(poly, alpha: Algebraic, prec: int = 64, maxprec: int = 4096) -> int:
     """The sign of a univariate rational polynomial at an algebraic number, exact:
     0 when the polynomial and the minimal factor share the root, otherwise decided
-    by ball evaluation at increasing precision."""
+    by ball evaluation at increasing precision.
+
+    >>> import flint
+    >>> r1 = Algebraic.surd(5, -2, 6)                               # 5 - 2√6 ≈ 0.10102
+    >>> sign_at(flint.fmpq_poly([1, -10, 1]), r1)                  # r² - 10r + 1 vanishes there
+    0
+    >>> sign_at(flint.fmpq_poly([flint.fmpq(-1, 10), 1]), r1)      # r - 1/10 > 0
+    1
+
+    A zero is proven by the common factor, never by a small ball.  A non-zero sign is
+    proven by a ball that excludes 0; ArithmeticError (Undecided) if ``maxprec`` bits
+    do not suffice, which only a polynomial with a root extremely close to α can cause."""
     P = flint.fmpq_poly(poly) if not isinstance(poly, flint.fmpq_poly) else poly
     if P.is_zero():
         return 0

@@ -186,7 +186,20 @@ def count_roots(p, a=None, b=None, seq=None) -> int:
 def sturm_count(p, a=None, b=None) -> int:
     """The number of distinct real roots of p in ]a, b] (a = -∞, b = +∞ when None) by
     Sturm's theorem alone: V(a) - V(b), the sign changes of the Sturm sequence, each
-    sign an exact rational evaluation (no ball, no root finder).  The first route."""
+    sign an exact rational evaluation (no ball, no root finder).  The first route.
+
+    x³ - 2x has the roots -√2, 0, √2; one of them in ]0, 2]:
+
+    >>> import flint
+    >>> p = flint.fmpq_poly([0, -2, 0, 1])
+    >>> sturm_count(p), sturm_count(p, 0, 2)
+    (3, 1)
+    >>> sturm_count(p * p)          # distinct roots: a double root counts once
+    3
+
+    What is guaranteed: the count is exact for any p over Q and rational ends (no
+    precision is involved).  What is not: the interval is half-open, so a root at b
+    is counted and a root at a is not."""
     seq = sturm_sequence(p)
 
     def changes(t):
@@ -204,7 +217,15 @@ caches.register(_CHECKED.clear)
 def checked_real_root_count(p) -> int:
     """The number of distinct real roots of p, counted by both routes: the Sturm count
     over the line (:func:`sturm_count`) and python-flint's isolation
-    (:func:`flint_real_roots`); ArithmeticError when they disagree.  Memoised."""
+    (:func:`flint_real_roots`); ArithmeticError when they disagree.  Memoised.
+
+    >>> import flint
+    >>> checked_real_root_count(flint.fmpq_poly([1, -10, 1]))       # r² - 10r + 1: 5 ± 2√6
+    2
+    >>> checked_real_root_count(flint.fmpq_poly([5, -40, 102, -40, 5]))   # T15's quartic
+    0
+
+    The two routes share nothing but p: a disagreement is an error, never a count."""
     key = poly_key(p)
     if key not in _CHECKED:
         n, m = sturm_count(p), len(flint_real_roots(p))

@@ -47,7 +47,7 @@ def collide_particles(letter: str, v, rr=r) -> tuple:
 
     In any ring holding r and v.  It is written independently of :func:`collide` (the
     printed A, B, C), not derived from it: that the differences of this law are A, B, C
-    (l. 208-232) is a check (tests/test_particles.py), and the two simulators built on
+    (l. 208-232) is a check (tests/dynamics/test_particles.py), and the two simulators built on
     them (certify.dynamics.particles, certify.dynamics.simulate) cross-check each other."""
     if letter not in INDEX:
         raise ValueError(f"unknown collision {letter!r}")
@@ -81,7 +81,15 @@ def word_matrix(word: str, rr=r) -> sp.Matrix:
     """M_w = K_{c_n} ... K_{c_1}: the velocities after one period are M_w q(0), its
     entries factored.  With rr the symbol r the product is formed on python-flint
     polynomials in r (:func:`collide` works in any ring), not on SymPy expressions
-    expanded after every letter."""
+    expanded after every letter.
+
+    >>> M = word_matrix("ab")                  # B A: the velocities after a, then b
+    >>> M[0, :]
+    Matrix([[(r - 1)**2/4, (r + 1)/2, 0]])
+    >>> word_matrix("ababcb").det()            # det M = r^6 (l. 340): each letter has det -r
+    r**6
+
+    Exact: polynomials over Q in r, no numerical value of r is involved."""
     if rr is r:
         M = word_matrix_flint(word)
         return sp.Matrix(3, 3, lambda i, j: factor_flint(M[i][j]))

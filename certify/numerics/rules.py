@@ -134,7 +134,15 @@ def step_bounds(j: int, n, absrows, tolerance) -> tuple:
 
 def gamma_bound(bits: int) -> Fraction:
     """g = 4u (1 + 8u), u = 2^-bits: a representable number ≥ γ_4 = 4u/(1 − 4u)
-    (since 1/(1 − 4u) ≤ 1 + 8u for u ≤ 1/16); see :func:`carry_bound`."""
+    (since 1/(1 − 4u) ≤ 1 + 8u for u ≤ 1/16); see :func:`carry_bound`.
+
+    >>> from fractions import Fraction
+    >>> u = Fraction(1, 2 ** 53)
+    >>> gamma_bound(53) >= 4 * u / (1 - 4 * u), float(gamma_bound(53)) == gamma_bound(53)
+    (True, True)
+
+    Exact rationals: the bound holds for any ``bits`` ≥ 4, and at 53 bits it is a float64
+    number, so the float engine uses it without a rounding of its own."""
     u = Fraction(1, 2 ** bits)
     return 4 * u * (1 + 8 * u)
 

@@ -162,7 +162,13 @@ def validate(word: str, written: str | None = None) -> str:
 
 def normal_form(word: str) -> tuple[str, str]:
     """(normal, explanation): the canonical representative of the orbit of ``word``
-    (internal, valid) under rotations and the mirror a<->c; see the module docstring."""
+    (internal, valid) under rotations and the mirror a<->c; see the module docstring.
+
+    >>> normal_form("bcbaba")[0], normal_form("cbab")[0]
+    ('ababcb', 'abcb')
+    >>> normal_form("cbab")[1].split(":")[0]
+    'cbab → abcb'
+    """
     system = validate(word)
     first = SIM if system == "symmetric" else "a"
     candidates = []

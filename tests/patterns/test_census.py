@@ -1,6 +1,6 @@
 """The census of periodic block patterns (certify census, T28): enumeration, records,
 executors (serial, local processes, an in-process Dask cluster), streaming and resume,
-the command line, and the certificate T28 (its mutants: tests/test_mutants.py)."""
+the command line, and the certificate T28 (its mutants: tests/proofs/test_mutants.py)."""
 import json
 
 import pytest

@@ -21,7 +21,7 @@ from certify.dynamics.particles import History, evolve
 from certify.errors import UsageError
 
 Q = flint.fmpq
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def fmpq_of(f: Fraction) -> flint.fmpq:

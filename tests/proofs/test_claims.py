@@ -9,7 +9,7 @@ import pytest
 
 from certify.run import runner
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 PAPER = ROOT.parent / "shared" / "paper" / "inelastic-collapse-four-particles.tex"
 CLAIMS = ROOT.parent / "shared" / "CLAIMS.md"
 LINES = re.compile(r"l\. (\d+)(?:-(\d+))?((?:, \d+(?:-\d+)?)*)")

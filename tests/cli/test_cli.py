@@ -27,7 +27,7 @@ from certify.run import report
 from certify.run import runner
 from certify.run.runner import OBSERVED, Certificate, Check, Outcome, conclude
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 # --------------------------------------------------------------------------

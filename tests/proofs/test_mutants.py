@@ -16,14 +16,14 @@ import pytest
 from certify.run.report import status_label
 from certify.run.runner import (CERTIFICATES, CONSTANT, FAIL, MUTANT_KINDS, OBSERVED, UNREAD, WORDING, claim_key,
                                 holds)
-from tests.shared import as_printed, outcome, read
+from tests.shared import as_printed, outcome, read, registry
 
-IDS = sorted(CERTIFICATES, key=claim_key)
+IDS = sorted(registry(), key=claim_key)          # collection needs the ids: the session's one registration
 MUTANTS = [(id, k) for id in IDS for k in range(len(CERTIFICATES[id].mutants))]
 # Certificates without a mutant, each with the reason; the list cannot grow silently.
 UNMUTATED = {"N4": "it reads only n_from (its r_below and accumulate_above are not read), and as printed both "
                    "checks on n_from already disagree: an altered n_from cannot disagree on one more "
-                   "(tests/test_figures_numerics.py::test_n4_reads_the_printed_n shows that it is read)"}
+                   "(tests/numerics/test_figures_numerics.py::test_n4_reads_the_printed_n shows that it is read)"}
 
 
 def failing(o) -> list:

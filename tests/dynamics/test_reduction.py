@@ -1,6 +1,6 @@
 """Section 4 on the dynamics: the reduction map (certify.dynamics.reduction) and the
 certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/reduction.py); their mutants and
-statuses as printed are in tests/test_mutants.py."""
+statuses as printed are in tests/proofs/test_mutants.py."""
 import itertools
 import random
 

@@ -1,6 +1,6 @@
 """Section 5: the observables of certify.numerics.figures on synthetic data, the
 `certify figures` command, and the certificates N1-N7 (OBSERVED; an altered print is
-reported as a disagreement: their mutants are in tests/test_mutants.py)."""
+reported as a disagreement: their mutants are in tests/proofs/test_mutants.py)."""
 from __future__ import annotations
 
 import math

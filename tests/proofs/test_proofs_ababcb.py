@@ -1,4 +1,4 @@
-"""Sections 2-3 beyond their mutants (tests/test_mutants.py): the errata and their stated
+"""Sections 2-3 beyond their mutants (tests/proofs/test_mutants.py): the errata and their stated
 corrections, and the checks that rest only on what could fail."""
 from certify.run.runner import ERRATUM, FAIL, PASS, altered
 from tests.shared import outcome

@@ -20,7 +20,7 @@ from certify import numerics
 from certify.dynamics import reduction
 from certify.numerics import engines, kernel, rules
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 ENGINES = ("float64", "mp", "ball")
 THETA, PHI = numerics.paper_grid()
 

@@ -15,7 +15,7 @@ from certify.errors import UsageError
 from certify.patterns import SCHEMA_PATH, analyse, normal_form, parse, primitive_root, read
 from certify.patterns.pattern import dominance_requirements
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 # ------------------------------------------------------------------ rejections: one per rule
@@ -204,7 +204,7 @@ def test_the_engine_certifies_what_the_committed_digests_record():
     import hashlib
     from pathlib import Path
     from certify.patterns import census
-    path = Path(__file__).resolve().parent.parent / "reports" / "pattern-json-digests.txt"
+    path = Path(__file__).resolve().parents[2] / "reports" / "pattern-json-digests.txt"
     recorded = dict(line.split() for line in path.read_text(encoding="utf-8").splitlines() if not line.startswith("#"))
     words = census.words(7)
     assert words and all(w in recorded for w in words)
@@ -212,11 +212,10 @@ def test_the_engine_certifies_what_the_committed_digests_record():
         assert hashlib.sha256(analyse(w).json_text().encode("utf-8")).hexdigest() == recorded[w], w
 
 
-def test_ababcb_names_the_fixed_points_both_ways_and_t10_certifies_the_factor():
+def test_ababcb_names_the_fixed_points_both_ways_and_t10_certifies_the_factor(certificates):
     from certify.patterns.pattern import PAPER_NORMALISATION
-    from certify.run.runner import CERTIFICATES, load_all, run_certificate
-    load_all()
-    t10 = run_certificate(CERTIFICATES["T10"])
+    from certify.run.runner import run_certificate
+    t10 = run_certificate(certificates["T10"])
     factor = next(c for c in t10.printed if c.statement.startswith("the factor printed/computed"))
     assert factor.holds and "-1024" in factor.statement
     assert "divided by −1024" in PAPER_NORMALISATION["ababcb"]

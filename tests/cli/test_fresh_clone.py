@@ -4,7 +4,7 @@ version control), and the serial run writes the same report as the run on every 
 
 These tests clone the committed HEAD (not the working tree) and run the real
 certificates twice: they are marked slow (``python -m pytest -m slow
-tests/test_fresh_clone.py``), and ``.ci/run`` runs them after the default suite.
+tests/cli/test_fresh_clone.py``), and ``.ci/run`` runs them after the default suite.
 """
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 pytestmark = [pytest.mark.slow,
               pytest.mark.skipif(shutil.which("git") is None or not (ROOT / ".git").exists(),

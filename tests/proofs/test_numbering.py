@@ -10,7 +10,7 @@ import pytest
 from certify.numerics import figures as F
 from certify.run import report, runner
 from tests.paper import PAPER, numbering, plain_lines
-from tests.test_claims import ranges
+from tests.proofs.test_claims import ranges
 
 pytestmark = pytest.mark.skipif(not PAPER.is_file(), reason="the paper's source is not beside this checkout")
 
