@@ -11,7 +11,7 @@ words whose JSON differs (exit 1), or says that all agree.  The JSON behind the 
 digests equals, word for word, that of the engine of commit cb9d573 (before the fast
 exact core) but for the reworded diagnosis of five words whose first collision fails:
 ``check`` shows that the faster engine certifies the very same sets.  The census records are compared
-the same way by ``tests/test_census.py`` (against the committed ``reports/census.json``).
+the same way by ``tests/patterns/test_census.py`` (against the committed ``reports/census.json``).
 """
 from __future__ import annotations
 

@@ -70,7 +70,7 @@ SPECS = {s.id: s for s in (
 
 # The number the compiled paper prints for each figure: figures are numbered through the paper
 # (Figures 1-5 are in Sections 3 and 4), a subfigure is a letter of the figure whose caption
-# follows it.  Derived from the LaTeX counters; tests/test_numbering.py re-derives it.
+# follows it.  Derived from the LaTeX counters; tests/proofs/test_numbering.py re-derives it.
 PAPER_NUMBER = {"5.1": "6", "5.2": "7", "5.3a": "8a", "5.3b": "8b", "5.4": "9", "5.5": "10",
                 "5.6": "11a", "5.7": "11b", "5.8": "11c"}
 

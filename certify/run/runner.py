@@ -104,7 +104,7 @@ def conclude(printed: list[Check], corrected: list[Check] | None = None,
     ``kind`` (an ERRATUM's kind, :data:`ERRATUM_KINDS`) and ``misprint`` (the one slip,
     in a few words with its line, shared by every certificate it makes false) are kept
     on an ERRATUM only; a certificate that can end in ERRATUM gives both (the report
-    shows "(kind not stated)" otherwise, and tests/test_claims.py checks the committed
+    shows "(kind not stated)" otherwise, and tests/proofs/test_claims.py checks the committed
     report for it)."""
     if kind and kind not in ERRATUM_KINDS:
         raise ValueError(f"unknown kind of erratum {kind!r}")
