@@ -82,3 +82,17 @@ def test_every_layer_is_a_folder_with_a_face():
         face = ROOT / "certify" / layer / "__init__.py"
         assert face.is_file()
         assert "__all__" in face.read_text()
+
+
+def test_no_module_name_appears_twice_under_certify():
+    """One name per job: a module's name says which module it is (only the packages'
+    ``__init__.py`` repeat)."""
+    seen: dict[str, list[str]] = {}
+    for path in sorted((ROOT / "certify").rglob("*.py")):
+        if path.name != "__init__.py":
+            seen.setdefault(path.stem, []).append(str(path.relative_to(ROOT)))
+    for path in sorted((ROOT / "certify").rglob("__init__.py")):
+        if path.parent != ROOT / "certify":
+            seen.setdefault(path.parent.name, []).append(str(path.parent.relative_to(ROOT)))
+    twice = {name: where for name, where in seen.items() if len(where) > 1}
+    assert not twice, twice
