@@ -31,6 +31,7 @@ from certify.patterns import (Analysis, BRANCH_NAMES, Requirement, analyse, cens
 from certify.run import ERRATUM, PASS, REFUTED_REMARK, Check, certificate, conclude, overridden
 from proofs.section1_literature import expand_pattern
 
+
 # ---------------------------------------------------------------- Remark 3.2 (l. 323-325): 5-2√6 is also the threshold of (ab)^3(cb)^3
 # T26 (Remark 3.2, l. 323-325): "The critical threshold of r, namely
 # r_crit,ababcb = 5-2√6, happens to be also the critical threshold for a different
