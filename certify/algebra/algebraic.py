@@ -19,8 +19,8 @@ import sympy as sp
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
 from .balls import GUARD, decide, precision
-from .poly import Q, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
-from .sturm import count_roots, isolate, refine
+from .poly import Q, parse, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
+from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_count
 
 _ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
 caches.register(_ISOLATED.clear)
@@ -168,6 +168,10 @@ class Algebraic:
         with precision(max(flint.ctx.prec, prec + GUARD)):
             balls[prec] = flint.arb(mid, flint.arb(rad).upper())
         return balls[prec]
+
+    def short(self, n: int = 8) -> str:
+        """The number in a line of evidence: itself when rational, else ``≈`` and n digits."""
+        return str(self.lo) if self.is_rational else "≈" + self.digits(n)
 
     def digits(self, n: int = 10) -> str:
         """The number rounded to n significant digits, from a certified enclosure:
@@ -471,3 +475,19 @@ def sign_intervals(poly, lo, hi) -> list[tuple[object, object, int]]:
             t = (a.hi + b.lo) / 2
         out.append((a, b, _sign(P(t))))
     return out
+
+
+def roots_in_unit_interval(poly_text: str) -> tuple[list[Algebraic], tuple[int, int]]:
+    """The roots in ]0,1[ of a printed polynomial in r (isolated), and their number counted
+    by both routes: Sturm's theorem alone and python-flint's root isolation."""
+    P = to_fmpz_poly(parse(poly_text))
+    return Algebraic.roots(P, 0, 1), (sturm_count(P, 0, 1) - (P(1) == 0), len(flint_real_roots(P, 0, 1)))
+
+
+def unique_root(poly_text: str) -> Algebraic:
+    """The only root in ]0,1[ of a printed polynomial in r (r*, r2, (7-2√10)/3, ...);
+    ArithmeticError when it has not exactly one there."""
+    roots = Algebraic.roots(to_fmpz_poly(parse(poly_text)), 0, 1)
+    if len(roots) != 1:
+        raise ArithmeticError(f"{poly_text} has {len(roots)} roots in ]0,1[, not one")
+    return roots[0]

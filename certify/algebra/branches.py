@@ -299,6 +299,26 @@ class SignTable:
         """g has the sign ``sign`` at every point of branch ``branch`` over ]lo, hi[."""
         return self.signs(branch, lo, hi) == {sign}
 
+    def _around(self, point):
+        """The cells on either side of the critical value ``point`` (None where there is none)."""
+        left = [c for c in self.cells if c.hi == point]
+        right = [c for c in self.cells if c.lo == point]
+        return (left[0], right[0]) if left and right else None
+
+    def changes_at(self, branch: int, point) -> bool:
+        """The sign on ``branch`` differs on the two cells adjacent to ``point``."""
+        cells = self._around(point)
+        if cells is None or any(branch >= len(c.signs) for c in cells):
+            return False
+        return cells[0].signs[branch] * cells[1].signs[branch] < 0
+
+    def keeps_sign_at(self, branch: int, point) -> bool:
+        """No sign change on ``branch`` across ``point`` (true where the branch ends there)."""
+        cells = self._around(point)
+        if cells is None or any(branch >= len(c.signs) for c in cells):
+            return True
+        return cells[0].signs[branch] == cells[1].signs[branch]
+
     def markdown(self, names=BRANCH_NAMES) -> str:
         """The sign table: one row per cell and per critical value."""
         width = max([len(c.signs) for c in self.cells] + [1])
@@ -317,7 +337,13 @@ class SignTable:
 
 
 def _short(a) -> str:
-    return str(a.lo) if a.is_rational else f"≈{a.digits(6)}"
+    return a.short(6)
+
+
+def sign_word(signs) -> str:
+    """A set of signs read off a sign table, in words (sorted): "> 0", "not real", ..."""
+    names = {1: "> 0", -1: "< 0", 0: "= 0", None: "not real", NO_BRANCH: "absent", UNDECIDED: "undecided"}
+    return ", ".join(sorted(names.get(s, str(s)) for s in signs))
 
 
 class Spectrum:
@@ -425,6 +451,11 @@ class Spectrum:
             checked_real_root_count(f)          # Sturm and python-flint agree (memoised per factor)
             roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if lo < a < hi]
         return sorted(roots)
+
+    def table(self, name: str, g, lo, hi, fixed_point: FixedPoint | None = None) -> SignTable:
+        """:meth:`sign_table` of the condition ``g`` (named ``name``; x the fixed point
+        ``fixed_point`` of f when given), the one way a proof asks for a sign table."""
+        return self.sign_table(Condition.of(name, g, fixed_point), lo, hi)
 
     def sign_table(self, cond: Condition, lo, hi) -> SignTable:
         """Certified signs of ``cond`` on every branch over ]lo, hi[ (memoised per

@@ -82,6 +82,16 @@ def primitive(p) -> flint.fmpz_poly:
     return q
 
 
+def divides(p, q) -> bool:
+    """p divides q in Q[r] (exact division over Q)."""
+    return (flint.fmpq_poly(q) % flint.fmpq_poly(p)).is_zero()
+
+
+def same_up_to_constant(p, q) -> bool:
+    """p = k q for a non-zero rational k (both univariate over Q, as flint polynomials)."""
+    return primitive(p) == primitive(q)
+
+
 def _lcm(values):
     out = flint.fmpz(1)
     for v_ in values:

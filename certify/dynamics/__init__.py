@@ -7,8 +7,10 @@ billiard reduction (Section 4).  It imports only :mod:`certify.algebra` and the 
 - :mod:`.simulate`: relative dynamics, exact (fmpq) and in balls (arb).
 - :mod:`.particles`: the four particles in absolute coordinates (``certify particles``).
 - :mod:`.reduction`: the reduction map, projective, vectorial and trigonometric.
+- :mod:`.cones`: the step lemma of the reduction on each of the six cones of states, exact
+  and symbolic (every orbit, not samples).
 """
-from . import particles, reduction, simulate
+from . import cones, particles, reduction, simulate
 from .model import (INDEX, LETTERS, A, B, C, characteristic_polynomial, check_word, collide, collide_particles,
                     collision_matrix, word_matrix)
 from .simulate import MultipleCollision, Undecided
@@ -16,7 +18,7 @@ from .words import (Candidate, candidate, check_position_map, eigenvector, fixed
                     reduce_mod, run_word, velocities)
 
 __all__ = [
-    "particles", "reduction", "simulate",
+    "cones", "particles", "reduction", "simulate",
     "INDEX", "LETTERS", "A", "B", "C", "characteristic_polynomial", "check_word", "collide",
     "collide_particles", "collision_matrix", "word_matrix",
     "MultipleCollision", "Undecided",

@@ -394,7 +394,7 @@ class _Matrix:
 
 
 def formula(text: str):
-    """A printed vector formula as transcribed in ``proofs/reduction_identities.py``,
+    """A printed vector formula as transcribed in ``proofs/section4_*.py``,
     e.g. "cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))" (l. 976), as a function
     (u, r) ↦ vector in the ring of u (exact on rationals).  The brackets of the print
     are kept: ∧ is not associative (l. 989)."""

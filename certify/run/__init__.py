@@ -5,11 +5,15 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.runner`: ``@certificate``, ``@quantity``, ``conclude``, the run (serial or on
   every core).
 - :mod:`.report`: outcomes in, Markdown and JSON out, and the staleness check.
+- :mod:`.checks`: checks several proofs make alike (printed digits, root counts, eliminants,
+  identities, corrections one for one).
 - :mod:`.saving`, :mod:`.plots`: saving figures reproducibly; the certified charts.
 - :mod:`.files`, :mod:`.progress`: atomic writes, the committed findings; progress bars on a
   terminal only.
 """
-from . import files, plots, progress, report, runner, saving
+from . import checks, files, plots, progress, report, runner, saving
+from .checks import (check_of, combined, concluded, count_check, digits_check, eliminant_check, identity,
+                     result_check)
 from .files import load_findings
 from .saving import save_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
@@ -19,7 +23,8 @@ from .runner import (CERTIFICATES, ERRATUM, ERRATUM_KINDS, FAIL, FALSE_STATEMENT
                      unread)
 
 __all__ = [
-    "files", "plots", "progress", "report", "runner", "saving",
+    "checks", "files", "plots", "progress", "report", "runner", "saving",
+    "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "load_findings", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
     "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
     "Mutant", "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run_selected",

@@ -130,7 +130,7 @@ def _link(cid: str) -> str:
 
 
 def _source(cert) -> str:
-    """Where the certificate is written: ``proofs/ababcb.py``, function name."""
+    """Where the certificate is written: ``proofs/section3_theorem.py``, function name."""
     path = cert.module.replace(".", "/") + ".py"
     name = getattr(cert.func, "__name__", "")
     return f"`{path}` (`{name}`)" if name else f"`{path}`"

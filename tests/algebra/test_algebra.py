@@ -751,3 +751,18 @@ def test_show_writes_an_integer_polynomial_as_sympy_prints_it(coeffs):
     p = flint.fmpz_poly(coeffs)
     printed = sp.sstr(sp.sympify(from_flint(p)), order="lex").replace("**", "^").replace("*", "")
     assert show(p) == show(flint.fmpq_poly(p)) == printed
+
+
+# ---------------------------------------------------------------- helpers moved here from the proofs
+def test_roots_in_unit_interval_unique_root_and_constant_multiples():
+    from certify.algebra import divides, roots_in_unit_interval, same_up_to_constant, unique_root
+    roots, counts = roots_in_unit_interval("r^2 - 10*r + 1")        # 5 ± 2√6: one in ]0,1[
+    assert counts == (1, 1) and len(roots) == 1 and roots[0] == Algebraic.surd(5, -2, 6)
+    assert unique_root("r^2 - 10*r + 1") == roots[0] and unique_root("r^2 - 10*r + 1").short() == "≈0.10102051"
+    assert Algebraic.rational(flint.fmpq(1, 2)).short() == "1/2" and unique_root("2*r - 1") == Algebraic.rational(flint.fmpq(1, 2))
+    with pytest.raises(ArithmeticError):
+        unique_root("(2*r - 1)*(3*r - 1)")
+    assert same_up_to_constant(flint.fmpq_poly([1, 2]), flint.fmpq_poly([-3, -6]))
+    assert not same_up_to_constant(flint.fmpq_poly([1, 2]), flint.fmpq_poly([1, 3]))
+    assert divides(flint.fmpq_poly([1, 2]), flint.fmpq_poly([1, 2]) * flint.fmpq_poly([5, 1, 7]))
+    assert not divides(flint.fmpq_poly([1, 2]), flint.fmpq_poly([1, 3]))

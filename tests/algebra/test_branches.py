@@ -759,3 +759,24 @@ def test_a_ball_refined_by_interval_newton_holds_the_root_at_the_precision_asked
         lo, hi = z.mid().fmpq() - z.rad().fmpq(), z.mid().fmpq() + z.rad().fmpq()
         assert (a.p(lo) > 0) != (a.p(hi) > 0)
     assert _newton_ball(a.p, flint.arb(0, 10), 128) is None       # p' vanishes on a ball that wide
+
+
+# ---------------------------------------------------------------- helpers moved here from the proofs
+def test_sign_table_changes_and_keeps_sign_at_a_critical_value():
+    """λ² = r: the branches ±√r; g = λ - 1/2 vanishes on the upper branch at r = 1/4 (√r = 1/2)
+    and keeps its sign (−) on the lower branch there."""
+    from certify.algebra import Algebraic, Spectrum, lam, r as r_
+    T = Spectrum(lam ** 2 - r_).table("λ-1/2", lam - sp.Rational(1, 2), 0, 1)
+    quarter = Algebraic.rational(flint.fmpq(1, 4))
+    assert quarter in T.critical
+    assert T.changes_at(0, quarter) and not T.keeps_sign_at(0, quarter)
+    assert T.keeps_sign_at(1, quarter) and not T.changes_at(1, quarter)
+    assert not T.changes_at(5, quarter) and T.keeps_sign_at(5, quarter)      # no such branch
+
+
+def test_sign_word_names_every_answer():
+    from certify.algebra import sign_word
+    from certify.algebra.branches import NO_BRANCH
+    from certify.errors import UNDECIDED
+    assert sign_word({1, -1}) == "< 0, > 0"
+    assert sign_word({0, None, NO_BRANCH, UNDECIDED}) == "= 0, absent, not real, undecided"

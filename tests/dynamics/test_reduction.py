@@ -1,5 +1,5 @@
 """Section 4 on the dynamics: the reduction map (certify.dynamics.reduction) and the
-certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/reduction.py); their mutants and
+certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/section4_*.py); their mutants and
 statuses as printed are in tests/proofs/test_mutants.py."""
 import itertools
 import random
@@ -15,9 +15,10 @@ from certify.algebra.balls import precision
 from certify.algebra.poly import r
 from certify.dynamics.model import INDEX, LETTERS, collision_matrix
 from certify.run.runner import CERTIFICATES, Context, FAIL, PASS, altered, run_certificate
-from proofs import reduction as P
-from proofs import reduction_cones as RC
-from proofs import reduction_identities as I
+from certify.dynamics import cones as RC
+from proofs import section4_1_reduction_theorem as S41
+from proofs import section4_2_final_expressions as S42
+from proofs import section4_3_impossible_sequences as S43
 from tests.shared import CONTEXT as CTX, outcome
 
 Q = flint.fmpq
@@ -48,7 +49,7 @@ def test_enough_long_runs():
     """The issue asks for hundreds of data and runs of 200 collisions while they last."""
     data = CTX.get("section4_data")
     assert len(data) >= 200
-    assert sum(d.realised >= P.N_COLLISIONS for d in data) >= 150
+    assert sum(d.realised >= S41.N_COLLISIONS for d in data) >= 150
     assert sum(len(o.word) for o in CTX.get("reduction_scan")) >= 10 ** 5
 
 
@@ -112,7 +113,7 @@ def test_corners():
 
 def test_s6_mutation_is_invisible_at_one_third():
     """The mutated A equals the printed one at r = 1/3 and fixes {x = 0} like it."""
-    from proofs.model import A_PRINTED, matrix
+    from proofs.section2_model import A_PRINTED, matrix
     K, K2 = matrix(A_PRINTED), matrix(AGREES_AT_ONE_THIRD["A"])
     third = sp.Rational(1, 3)
     assert K.subs(r, third) == K2.subs(r, third) and K != K2
@@ -128,9 +129,9 @@ def test_cofactor_over_q_of_r():
         engine = sp.Matrix.hstack(*(sp.Matrix(c) for c in R.cofactor_columns(L, r)))
         assert all(sp.cancel(e) == 0 for e in engine - K.det() * K.inv().T)
         for r0 in (Q(1, 3), Q(2, 7), Q(97, 100)):
-            k = P.multiple(R.cofactor(L, r0), engine.subs(r, sp.Rational(int(r0.p), int(r0.q))))
+            k = S41.multiple(R.cofactor(L, r0), engine.subs(r, sp.Rational(int(r0.p), int(r0.q))))
             assert k is not None and k > 0
-    assert P.multiple(((1, 2, 3),) * 3, sp.Matrix([[-1, -2, -3]] * 3)) is None      # negative multiple
+    assert S41.multiple(((1, 2, 3),) * 3, sp.Matrix([[-1, -2, -3]] * 3)) is None      # negative multiple
 
 
 def test_cofactor_moves_the_normal():
@@ -183,7 +184,7 @@ def test_printed_trilinear_formula_is_the_relabelled_one_for_contact_a():
             seen["corner"] += 1
             continue
         j, ut = R.vectorial_step("a", u, Q(1, 3))
-        printed = {"b": I.TRILINEAR_B, "c": I.TRILINEAR_C_CORRECTED}[j]
+        printed = {"b": S42.TRILINEAR_B, "c": S42.TRILINEAR_C_CORRECTED}[j]
         assert R.formula(printed)(u, Q(1, 3)) == ut
         seen[j] += 1
     assert seen["b"] > 0 and seen["c"] > 0 and seen["corner"] > 0
@@ -210,10 +211,10 @@ def test_admissible_words_and_blocks():
                    if all(x != y for x, y in zip(w, w[1:])) and "aca" not in "".join(w) and "cac" not in "".join(w)]
         assert sorted(RC.admissible(n, allowed)) == sorted(by_hand)
     assert len(RC.admissible(3, allowed)) == 10
-    assert P.parses("abcbacbca", ["ab", "cb", "acb", "cab"])       # ab cb acb + "ca" cut short
-    assert not P.parses("babcb", ["ab", "cb", "acb", "cab"])
-    assert P.offsets(P.PRINTED_S10["window"]) == {2, 3}
-    assert P.implication(P.PRINTED_S9["cac"]) == ("ca", "c")
+    assert S43.parses("abcbacbca", ["ab", "cb", "acb", "cab"])       # ab cb acb + "ca" cut short
+    assert not S43.parses("babcb", ["ab", "cb", "acb", "cab"])
+    assert S43.offsets(S43.PRINTED_S10["window"]) == {2, 3}
+    assert S43.implication(S43.PRINTED_S9["cac"]) == ("ca", "c")
 
 
 def test_conversions_round_trip():
@@ -241,7 +242,7 @@ def test_verdicts_rest_on_the_proofs_not_on_the_samples():
     contradicts them (aca, a corner after 6 collisions) and the particle runs by none:
     the scan and the runs are supporting evidence; the proofs on the cones decide."""
     ctx = Context()
-    ctx.values["reduction_scan"] = [P.ScanOrbit(Q(1, 2), R.canonical("a", [1, 1, -1]), "acacab", 1)]
+    ctx.values["reduction_scan"] = [S41.ScanOrbit(Q(1, 2), R.canonical("a", [1, 1, -1]), "acacab", 1)]
     ctx.values["section4_data"] = []
     for id in ("S9.2", "S10", "S11"):
         out = run_certificate(CERTIFICATES[id], ctx)

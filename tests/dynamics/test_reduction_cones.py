@@ -1,4 +1,4 @@
-"""The step lemma of the reduction on the six cones of states (proofs/reduction_cones.py):
+"""The step lemma of the reduction on the six cones of states (certify/dynamics/cones.py):
 the symbolic proof against the exact engine (certify.dynamics.reduction, certify.dynamics.simulate) at
 random rational points of each cone, and what breaks when a matrix is wrong."""
 import random
@@ -11,7 +11,7 @@ from certify.algebra.poly import r
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics.model import INDEX, LETTERS, collision_matrix
-from proofs import reduction_cones as RC
+from certify.dynamics import cones as RC
 
 Q = flint.fmpq
 SECTION2 = {L: collision_matrix(L) for L in LETTERS}

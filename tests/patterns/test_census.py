@@ -10,7 +10,7 @@ from certify.patterns import census
 from certify.run import census_report as run_census
 from certify.run.executors import Serial, executor
 from certify.run.runner import CERTIFICATES, ERRATUM, run_certificate
-from proofs import census as T28
+from proofs import section3_remarks as T28
 from tests.shared import as_printed
 
 

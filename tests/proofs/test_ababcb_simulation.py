@@ -2,7 +2,7 @@
 import flint
 import pytest
 
-from proofs import ababcb_simulation as T
+from proofs import section3_theorem as T
 from certify.algebra.balls import precision
 from tests.shared import as_printed
 

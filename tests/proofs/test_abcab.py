@@ -6,7 +6,7 @@ import sympy as sp
 from certify.algebra.poly import parse
 from certify.dynamics.words import candidate
 from certify.patterns.feasibility import Analysis, prefix_requirements
-from proofs import abcab as T
+from proofs import section3_remarks as T
 from tests.shared import as_printed
 
 Q = flint.fmpq

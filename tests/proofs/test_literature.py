@@ -1,7 +1,7 @@
 """T26 (l. 323-325): 5-2√6 is also the (upper stability) threshold of (ab)^3(cb)^3."""
 import pytest
 
-from proofs import literature as T
+from proofs import section1_literature as T
 from tests.shared import as_printed
 
 

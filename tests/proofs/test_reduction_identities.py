@@ -1,5 +1,5 @@
 """Section 4 identities: the engine certify.algebra.trig (both routes, signs, parsing) and the
-certificates of proofs/reduction_identities.py (their mutants: tests/proofs/test_mutants.py)."""
+certificates of proofs/section4_*.py (their mutants: tests/proofs/test_mutants.py)."""
 import pytest
 import sympy as sp
 

@@ -118,3 +118,17 @@ def test_a_dead_worker_is_an_error_not_a_hang(registry):
     registry["T9"] = Certificate("T9", "l. 1", "x", dies, (), {}, "tests.test_runner")
     with pytest.raises(runner.WorkerDied, match="--jobs 1"):
         runner.run_selected(jobs=2)
+
+
+# ---------------------------------------------------------------- checks several proofs make alike
+def test_digit_count_and_eliminant_checks_can_fail():
+    from certify.algebra import Algebraic, lam, parse
+    from certify.run import count_check, digits_check, eliminant_check
+    root = Algebraic.surd(5, -2, 6)                                   # 0.101020514...
+    assert digits_check("r1", root, "0.10102").holds and not digits_check("r1", root, "0.10103").holds
+    assert count_check("P", [root], (1, 1), 1).holds
+    assert not count_check("P", [root], (1, 2), 1).holds and not count_check("P", [root], (1, 1), 2).holds
+    cp = parse("λ^2 - r")                                             # λ = r eliminates to r^2 - r
+    good, agree = eliminant_check("λ - r", lam - parse("r"), cp, "r*(r - 1)")
+    assert good.holds and agree.holds
+    assert not eliminant_check("λ - r", lam - parse("r"), cp, "r*(r - 2)")[0].holds

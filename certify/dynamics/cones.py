@@ -1,7 +1,8 @@
 """Section 4: one step of the reduction map on a whole cone of states, in exact symbolic
-arithmetic.  These are the proofs, for every orbit and not on samples, behind Remark 4.2
+arithmetic.  These are the lemmas, for every orbit and not on samples, behind Remark 4.2
 (S11: infinitely many collisions off the corners; the particles realise a prefix),
-Proposition 4.4 (S9.2: no aca, no cac) and Corollary 4.5 (S10).
+Proposition 4.4 (S9.2: no aca, no cac) and Corollary 4.5 (S10), whose certificates are in
+proofs/section4_1_reduction_theorem.py and proofs/section4_3_impossible_sequences.py.
 
 A state of the projective map (``certify.dynamics.reduction``) is a contact i and a normal n of
 the plane P, any non-zero real vector up to a positive factor, oriented by n_t > 0
@@ -28,10 +29,9 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from certify.algebra import trig as T
-from certify.algebra import r
-from certify.dynamics import reduction as R
-from certify.dynamics import INDEX, LETTERS
-from certify.run import Check
+from certify.algebra.poly import r
+from . import reduction as R
+from .model import INDEX, LETTERS
 
 N = sp.Matrix(sp.symbols("n1:4", real=True))          # a normal of P(k): any real vector
 UNIT = [sp.eye(3).col(k) for k in range(3)]
@@ -39,21 +39,31 @@ TAU, U = sp.symbols("τ u", real=True)                   # a time > 0, and u = 1
 SIGN = {1: "> 0", -1: "< 0", None: "of either sign"}
 
 
+@dataclass
+class Lemma:
+    """One proven or refuted statement about a cone, with the evidence a referee can
+    re-check (the proofs read it as a check: :func:`certify.run.check_of`)."""
+
+    statement: str
+    holds: bool
+    evidence: list[str] = field(default_factory=list)
+
+
 def name(k: int) -> str:
     return f"n_{k + 1}"
 
 
-def combined(statement: str, parts: list[T.Result]) -> Check:
-    return Check(statement, all(parts), [e for p in parts for e in p.evidence])
+def combined(statement: str, parts: list[T.Result]) -> Lemma:
+    return Lemma(statement, all(parts), [e for p in parts for e in p.evidence])
 
 
-def labelled(statement: str, parts: list[tuple[str, T.Result]]) -> Check:
+def labelled(statement: str, parts: list[tuple[str, T.Result]]) -> Lemma:
     """A check made of named parts; each part's evidence under its name."""
     ev = []
     for what, res in parts:
         ev.append(f"{'✓' if res.holds else '✗'} {what}: " + (res.evidence[0] if res.evidence else ""))
         ev += res.evidence[1:]
-    return Check(statement, all(res.holds for _, res in parts), ev)
+    return Lemma(statement, all(res.holds for _, res in parts), ev)
 
 
 def base(contact: str) -> T.Signs:
@@ -73,7 +83,7 @@ class Cone:
     contact: str
     sigma: int | None
     eps: int | None
-    check: Check
+    check: Lemma
 
     def hypotheses(self, sign_i: int) -> T.Signs:
         H = base(self.contact).assume(N[third(self.contact)], self.sigma)
@@ -92,19 +102,19 @@ def cone(contact: str) -> Cone:
     found, ev = [], [f"n ∧ e_{i + 1} = `{T.show(ne)}`: its free components are ±{name(m)}, ±{name(t)} "
                      f"({'identity, both routes' if free.holds else 'FAILS'}), so {name(t)} ≠ 0 in the open face"]
     if not free.holds:
-        return Cone(contact, None, None, Check(f"contact {contact}: the cone", False, ev))
+        return Cone(contact, None, None, Lemma(f"contact {contact}: the cone", False, ev))
     for sg in (1, -1):
         H = base(contact).assume(N[m], sg)
         a, b = T.sign(ne[t], H)[0], T.sign(ne[m], H)[0]
         ev.append(f"{name(t)} > 0, {name(m)} {SIGN[sg]}: the free components of n ∧ e_{i + 1} = "
                   f"`{T.show(ne)}` are {SIGN[a]} and {SIGN[b]}")
         if a is None or b is None:
-            return Cone(contact, None, None, Check(f"contact {contact}: the cone", False, ev))
+            return Cone(contact, None, None, Lemma(f"contact {contact}: the cone", False, ev))
         if a == b:
             found.append((sg, a))
     ok = len(found) == 1
     sigma, eps = found[0] if ok else (None, None)
-    return Cone(contact, sigma, eps, Check(
+    return Cone(contact, sigma, eps, Lemma(
         f"contact {contact}: with {name(t)} > 0 the plane meets the open face {{p_{i + 1} = 0, other p_m > 0}} "
         f"exactly when {name(m)} {SIGN[sigma]}; then p = {'' if eps == 1 else '−'}(n ∧ e_{i + 1})", ok, ev))
 
@@ -118,7 +128,7 @@ class Step:
     contact: str
     sign: int
     H: T.Signs
-    checks: list[Check] = field(default_factory=list)
+    checks: list[Lemma] = field(default_factory=list)
     following: str | None = None
     p: sp.Matrix | None = None
     w: sp.Matrix | None = None
@@ -126,7 +136,7 @@ class Step:
     p1: sp.Matrix | None = None
     normal: sp.Matrix | None = None
     cos_next: int | None = None
-    motion: Check | None = None          # :func:`physical`, once the step is proven
+    motion: Lemma | None = None          # :func:`physical`, once the step is proven
 
     @property
     def label(self) -> str:
@@ -167,7 +177,7 @@ def step(contact: str, sign: int, K: dict) -> Step:
     closing = [k for k in others if signs[k][0] == -1]
     opening = [k for k in others if signs[k][0] == 1]
     one = len(closing) == 1 and len(opening) == 1
-    out.checks.append(Check(f"{lab}: exactly one other gap closes (w_j < 0 < w_k)", one,
+    out.checks.append(Lemma(f"{lab}: exactly one other gap closes (w_j < 0 < w_k)", one,
                             [f"w_{k + 1} = `{T.show(w[k])}`: " + "; ".join(signs[k][1]) for k in others]))
     if not one:
         return out
@@ -200,7 +210,7 @@ def step(contact: str, sign: int, K: dict) -> Step:
     return out
 
 
-def physical(s: Step, K: dict) -> Check:
+def physical(s: Step, K: dict) -> Lemma:
     """The particles from a state of the cone, with the velocity q = α w + λ p (α > 0 since
     q_i = α w_i > 0 right after the collision i; λ, the radial part, of any sign): at the
     time τ > 0 the gaps are x = u p + s w, u = 1 + τλ, s = τα > 0.  Gap i never closes;
@@ -242,7 +252,7 @@ def steps(K: dict) -> dict[tuple[str, int], Step]:
     """The step lemma on the six cones, each with the particles' motion (:func:`physical`)."""
     out = {(c, s): step(c, s, K) for c in LETTERS for s in (1, -1)}
     for st in out.values():
-        st.motion = physical(st, K) if st.holds else Check(f"{st.label}: the step lemma fails", False)
+        st.motion = physical(st, K) if st.holds else Lemma(f"{st.label}: the step lemma fails", False)
     return out
 
 

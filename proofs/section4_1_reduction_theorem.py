@@ -1,4 +1,11 @@
-"""Section 4 (l. 518-1035): the trigonometric identities of the spherical reduction.
+"""Section 4 up to 4.1 (l. 518-875): the spherical reduction and the spherical reduction theorem.
+
+S1  the tangent bases at the contacts a and b (l. 528-531, 744-752);
+S2  the first collision after a contact a (t_b, t_c, their order) and after b (l. 617-630, 686-690, 787-789);
+S3, S4, S5  the cases ab, ac, bc of the proof: t_λ, p_λ(1) and the reduction (l. 630-845);
+S6  Theorem 4.1: one plane, one sequence of collisions (l. 839-868);
+S11 Remark 4.2: every orbit off the corners has infinitely many collisions, and the
+    particles realise a prefix of it (l. 869-875).
 
 Every printed vector, time and chain of equalities is transcribed below as text, as it
 stands in the paper, and checked by :mod:`certify.algebra.trig` (each identity by a Gröbner
@@ -9,50 +16,113 @@ cos φ).  Chains are written one member per line, each further line starting wit
 vector, ``M([[...]])`` a printed matrix, ``A``, ``B``, ``C`` the matrices of Section 2
 (l. 209-232), ``er`` = e_r = p(0), ``q0`` = q_λ(0) at λ = 0, ``p1`` = p_λ(1) at λ = 0.
 Line numbers in the checks are those of the paper's file.
+
+The claims about every trajectory rest on a proof for every state: the step lemma of the
+map and the particle lemma on the six cones of states (:mod:`certify.dynamics.cones`).
+The particle system is :mod:`certify.dynamics.simulate` in exact rationals (fmpq); the
+reduction map is :mod:`certify.dynamics.reduction`.  The exact runs and the scan of 10^5
+collisions are reported as supporting evidence, never as a check.  Random data are drawn
+from a fixed seed, so the report is reproducible.  A datum is a state right after a
+collision: the contact letter i, p with p_i = 0 and the other gaps positive, q with
+q_i > 0 (the pair separates), and a second datum (α p, β q + γ p) spanning the same plane
+(α, β > 0, γ of any sign).
 """
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import flint
 import sympy as sp
 
 from certify.algebra import trig as T
-from certify.algebra import lam, statements
+from certify.algebra import Q, lam, r, show, statements
+from certify.dynamics import cones as RC
+from certify.dynamics import reduction as R
+from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS, collision_matrix
-from certify.run import (ERRATUM, FALSE_STATEMENT, MISPRINT, PASS, Check, certificate, conclude, overridden,
-                        replaced, reworded, unread)
+from certify.run import (ERRATUM, MISPRINT, PASS, Check, certificate, check_of, combined, concluded,
+                         conclude, identity, overridden, quantity, replaced, result_check, reworded, unread)
+from proofs.section2_model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
-from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
-# One misprint, false in S8.1 (the formula) and S8.2 (the reduction it gives): counted once.
-E_Y_FOR_E_Z = "l. 980: e_y printed for e_z in the trilinear formula for ũ(1) after a contact a and a collision c"
-
+# ================================================================ as printed (l. 518-845)
 cθ, cφ, sθ, sφ = T.cθ, T.cφ, T.sθ, T.sφ  # cos θ, cos φ, sin θ, sin φ
 
+
 SECTION2 = {"A": matrix(A_PRINTED), "B": matrix(B_PRINTED), "C": matrix(C_PRINTED)}
+
+
 UNIT = {"ex": T.E_X, "ey": T.E_Y, "ez": T.E_Z}
+
+
 PAIR = {"1-2": "a", "2-3": "b", "3-4": "c"}
+
 
 # ---------------------------------------------------------------- as printed: contacts a and b
 P0_A = "(0, cos(θ), sin(θ))"                                                   # l. 594-600
+
+
 E_X = "(1, 0, 0)"                                                               # l. 545, 605
+
+
 E_THETA_A = "(0, -sin(θ), cos(θ))"                                              # l. 545, 605
+
+
 LIMIT_0 = "[(1, 0, 0), (0, 1, 0), (0, 0, 1)]"                                   # l. 545
+
+
 LIMIT_PI2 = "[(1, 0, 0), (0, 0, 1), (0, -1, 0)]"                                # l. 545
+
+
 Q_A_SUM = "cos(φ)*eθ + sin(φ)*ex + λ*er"                                        # l. 614
+
+
 Q_A = "(sin(φ), -cos(φ)*sin(θ) + λ*cos(θ), cos(φ)*cos(θ) + λ*sin(θ))"           # l. 614, 634
+
+
 P0_B = "(sin(θ), 0, cos(θ))"                                                    # l. 768
+
+
 E_THETA_B = "(cos(θ), 0, -sin(θ))"                                              # l. 775
+
+
 E_Y = "(0, 1, 0)"                                                               # l. 775
+
+
 Q_B_SUM = "cos(φ)*eθ + sin(φ)*ey + λ*er"                                        # l. 779
+
+
 Q_B = "(cos(φ)*cos(θ) + λ*sin(θ), sin(φ), -cos(φ)*sin(θ) + λ*cos(θ))"           # l. 779-783
+
 
 # ---------------------------------------------------------------- as printed: the first collision times
 T_B_AB = "cos(θ)/(sin(θ)*cos(φ) - λ*cos(θ))\n= 1/(tan(θ)*cos(φ) - λ)"             # l. 620
+
+
 T_C_AB = "sin(θ)/(-cos(θ)*cos(φ) - λ*sin(θ))\n= 1/(-cos(φ)/tan(θ) - λ)"           # l. 620
+
+
 T_C_MINUS_T_B = "(cos(φ)*tan(θ) + cos(φ)/tan(θ))/((-cos(φ)/tan(θ) - λ)*(tan(θ)*cos(φ) - λ))"  # l. 625
+
+
 ORDER = "t_c is smaller than t_b"      # l. 628: "t_c is positive but then smaller than t_b"
+
+
 ORDER_CORRECTION = ("smaller", "larger")
+
+
 T_C, T_B = sp.symbols("t_c t_b")       # what the printed order is about
+
+
 T_C_BC = "cos(θ)/(sin(θ)*cos(φ) - λ*cos(θ))\n= 1/(tan(θ)*cos(φ) - λ)"             # l. 787
+
+
 T_A_BC = "sin(θ)/(-cos(θ)*cos(φ) - λ*sin(θ))\n= 1/(-cos(φ)/tan(θ) - λ)"           # l. 787
+
+
 SMALLEST_BC = "cos(φ) > 0"             # l. 789: "t_c is always the smallest positive ... iff cos φ > 0"
+
 
 # ---------------------------------------------------------------- as printed: case ab (l. 632-701)
 AB = dict(
@@ -88,6 +158,7 @@ dot(B*er, (cos(φ)*sin(θ))*cross(p1, B*q0))
 = 0""",                                                                         # l. 690-701
 )
 
+
 # ---------------------------------------------------------------- as printed: case ac (l. 705-761)
 AC = dict(
     condition="sin(θ) + t*(cos(φ)*cos(θ) + λ*sin(θ))",                          # l. 708
@@ -117,9 +188,12 @@ dot(C*er, (cos(φ)*cos(θ))*cross(p1, C*q0))
 = -r*cos(φ)*sin(φ)*(cos(θ)^2 + sin(θ)^2)*sin(θ) + r*cos(φ)*sin(φ)*sin(θ)
 = 0""",                                                                         # l. 752-761
 )
+
+
 # The one correction of case ac, stated: l. 734 prints cos θ where l. 735 and l. 722-726 have cos φ
 # (member 1 of the cross-product chain, old text → new text).
 AC_CORRECTION = {("cross_chain", 0): ("cos(θ), 0)", "cos(φ), 0)")}
+
 
 # ---------------------------------------------------------------- as printed: case bc (l. 765-843)
 BC = dict(
@@ -151,86 +225,17 @@ dot(C*er, (cos(φ)*sin(θ))*cross(p1, C*q0))
 = 0""",                                                                         # l. 834-843
 )
 
-# ---------------------------------------------------------------- as printed: the trigonometric version (l. 888-926)
-CONTACT_P0 = {"a": "(0, cos(θ), sin(θ))", "b": "(sin(θ), 0, cos(θ))", "c": "(cos(θ), sin(θ), 0)"}
-CONTACT_Q0 = {"a": "(sin(φ), -sin(θ)*cos(φ), cos(θ)*cos(φ))", "b": "(cos(θ)*cos(φ), sin(φ), -sin(θ)*cos(φ))",
-              "c": "(-sin(θ)*cos(φ), cos(θ)*cos(φ), sin(φ))"}
-# contact, sign of cos φ: "next pair | matrix | p(t1) before normalisation | radicand"
-SIX_CASES = {
-    "a, φ ∈ ]0,π/2[": "2-3 | B | (cos(θ)*sin(φ), 0, cos(φ)) | cos(θ)^2*sin(φ)^2 + cos(φ)^2",      # l. 891-893
-    "a, φ ∈ ]π/2,π[": "3-4 | C | (sin(θ)*sin(φ), -cos(φ), 0) | sin(θ)^2*sin(φ)^2 + cos(φ)^2",     # l. 896-898
-    "b, φ ∈ ]0,π/2[": "3-4 | C | (cos(φ), cos(θ)*sin(φ), 0) | cos(φ)^2 + cos(θ)^2*sin(φ)^2",      # l. 905-907
-    "b, φ ∈ ]π/2,π[": "1-2 | A | (0, sin(θ)*sin(φ), -cos(φ)) | sin(θ)^2*sin(φ)^2 + cos(φ)^2",     # l. 910-912
-    "c, φ ∈ ]0,π/2[": "1-2 | A | (0, cos(φ), cos(θ)*sin(φ)) | cos(φ)^2 + cos(θ)^2*sin(φ)^2",      # l. 919-921
-    "c, φ ∈ ]π/2,π[": "2-3 | B | (-cos(φ), 0, sin(θ)*sin(φ)) | cos(φ)^2 + sin(θ)^2*sin(φ)^2",     # l. 924-926
-}
-Q_T1 = "K*q0 - dot(K*q0, p)*p"      # l. 893, 898, ...: the numerator of q(t1), p = p(t1) normalised
 
-# ---------------------------------------------------------------- as printed: the vectorial version (l. 937-982)
-U0 = "(cos(φ), sin(θ)*sin(φ), -cos(θ)*sin(φ))"                                  # l. 947
-EY_DOT_U0 = "sin(θ)*sin(φ)"                                                     # l. 949
-ORIENTATION = "a: y, b: z, c: x"           # l. 949: t = y, z, x for contacts k = 1, 2, 3
-U0_WEDGE = {"ey": "(cos(θ)*sin(φ), 0, cos(φ))",                                 # l. 958
-            "ez": "(sin(θ)*sin(φ), -cos(φ), 0)",                                # l. 962
-            "ex": "(0, -cos(θ)*sin(φ), -sin(θ)*sin(φ))",                        # l. 967
-            "p0": "(sin(φ), -sin(θ)*cos(φ), cos(θ)*cos(φ))"}                    # l. 971
-TRILINEAR_B = "cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))"                # l. 976
-TRILINEAR_C = "cross(cross(u0, ey), C*cross(u0, cross(ex, u0)))"                # l. 980
-TRILINEAR_C_CORRECTION = ("(u0, ey)", "(u0, ez)")     # stated: for a collision c, p(1) ∝ u(0) ∧ e_z (l. 962)
-TRILINEAR_C_CORRECTED = statements.corrected(TRILINEAR_C, *TRILINEAR_C_CORRECTION)
-
-# ---------------------------------------------------------------- as printed: Proposition 4.4 (l. 1005-1034)
-P_NEXT_AC = "(sin(θ)*sin(φ), -cos(φ), 0)"                                       # l. 1012
-Q_NEXT_AC = "Cq - dot(Cq, pk)*pk"                                               # l. 1016
-C_TIMES_QK = """
-M([[1, 0, 0], [0, 1, (1+r)/2], [0, 0, -r]])*V(sin(φ), -sin(θ)*cos(φ), cos(θ)*cos(φ))
-= V(sin(φ), -sin(θ)*cos(φ) + (1+r)/2*cos(θ)*cos(φ), -r*cos(θ)*cos(φ))"""        # l. 1020
-PROJECTION_CHAIN = """
-V(sin(φ), -sin(θ)*cos(φ) + (1+r)/2*cos(θ)*cos(φ), -r*cos(θ)*cos(φ))
-  - (-cos(θ)*sin(θ)*cos(φ) + (1+r)/2*cos(θ)^2*cos(φ) - r*cos(θ)*sin(θ)*cos(φ))*V(0, cos(θ), sin(θ))
-= V(sin(φ),
-    -sin(θ)*cos(φ) + (1+r)/2*cos(θ)*cos(φ) + (1+r)*cos(θ)^2*sin(θ)*cos(φ) - (1+r)/2*cos(θ)^3*cos(φ),
-    -r*cos(θ)*cos(φ) + (1+r)*cos(θ)*sin(θ)^2*cos(φ) - (1+r)/2*cos(θ)^2*sin(θ)*cos(φ))"""  # l. 1024-1031
-FORM_C = "(-sin(θ)*cos(φ), cos(θ)*cos(φ), sin(φ))"                             # l. 1033 (θ', φ')
-COS_NEXT, SIN_NEXT = sp.symbols("cos_φ' sin_φ'")                              # what the conclusion is about
-READ_COMPONENT = 1                                                              # l. 1033: the first component
-CONCLUSION = "cos(φ') < 0"                                                      # l. 1033
-
-
-# ================================================================ helpers
+# ================================================================ helpers of the proofs of Section 4 (also used in section4_2, section4_3)
 def vec(text: str, **names) -> sp.Matrix:
     """A printed vector."""
     return T.vector(text, **names)
-
-
-def identity(statement: str, lhs, rhs) -> Check:
-    """The check lhs ≡ rhs, with the evidence of both routes."""
-    res = T.equal(lhs, rhs)
-    return Check(statement, res.holds, res.evidence)
 
 
 def links(name: str, members: list, lines: str) -> list[Check]:
     """One check per printed '=' of a chain."""
     return [identity(f"l. {lines}, {name}: member {k + 1} = member {k + 2}", members[k], members[k + 1])
             for k in range(len(members) - 1)]
-
-
-def concluded(printed: list[Check], corrected: list[Check] | None = None, note: str = "", kind: str = "",
-              misprint: str = ""):
-    """:func:`conclude`, where the corrected computation is the printed one with the stated
-    corrections applied, check for check: each failing printed check is corrected by the
-    check in the same place (unless a correction already names it)."""
-    corrected = corrected or []
-    named = {id(c.corrects) for c in corrected if c.corrects is not None}
-    if len(corrected) == len(printed):
-        for wrong, fix in zip(printed, corrected):
-            if not wrong.holds and id(wrong) not in named and fix.corrects is None and fix is not wrong:
-                fix.corrects = wrong
-    return conclude(printed, corrected, note=note, kind=kind, misprint=misprint)
-
-
-def result_check(statement: str, res: T.Result) -> Check:
-    return Check(statement, res.holds, res.evidence)
 
 
 def recording_matrices():
@@ -280,6 +285,7 @@ def hit_point(p0, q0, k: int):
     return p0 - p0[k] / q0[k] * q0
 
 
+# ================================================================ the setting and the proof of Theorem 4.1, cases ab, ac, bc (l. 518-845): S1-S5
 # ================================================================ S1
 @certificate("S1", "l. 528-531, 744-752",
              "The printed tangent-plane bases at p(0) for contacts a and b are orthonormal and orthogonal to p(0); "
@@ -315,6 +321,8 @@ def tangent_bases(p0_a, e_x, e_theta_a, limit_0, limit_pi2, q_a_sum, q_a, p0_b, 
 
 # ================================================================ S2
 t = sp.Symbol("t")
+
+
 TAN = sθ / cθ
 
 
@@ -360,10 +368,6 @@ def witness_point(ti, tj, cos_phi: int) -> tuple[bool, str]:
     vals = [T.at(ti, pt), T.at(tj, pt)]
     ok = all(v > 0 for v in vals) and (pt[cφ] > 0) == (cos_phi > 0)
     return ok, f"at cos θ = {pt[cθ]}, sin θ = {pt[sθ]}, cos φ = {pt[cφ]}, sin φ = {pt[sφ]}, λ = -2 the times are {vals[0]}, {vals[1]}"
-
-
-def combined(statement: str, parts: list[T.Result]) -> Check:
-    return Check(statement, all(parts), [e for p_ in parts for e in p_.evidence])
 
 
 @certificate("S2", "l. 617-630, 686-690",
@@ -553,257 +557,280 @@ def case_bc(p0, q, **chains):
     return certify_case(chains, p0, q, "c", dict(t="790-792", p="796-808", x="816-826", e="830", d="834-843"))
 
 
-# ================================================================ S7.1
-CASE_KEYS = {"a_pos": ("a", 1), "a_neg": ("a", -1), "b_pos": ("b", 1), "b_neg": ("b", -1),
-             "c_pos": ("c", 1), "c_neg": ("c", -1)}
-RANGE = {1: "φ ∈ ]0,π/2[", -1: "φ ∈ ]π/2,π[", None: "φ ∈ ]0,π["}
+# ================================================================ Theorem 4.1, the spherical billiard reduction (l. 569-868): S6, on the dynamics and on cones
+SEED = 4_1_2024
 
 
-def contact_frame(contact: str, p0, q0) -> Check:
-    """p(0), q(0) unit and orthogonal, q_i(0) = sin φ > 0 for the gap i in contact."""
-    i = INDEX[contact]
-    res = T.equal(sp.Matrix([p0.dot(p0), q0.dot(q0), p0.dot(q0), q0[i], p0[i]]), sp.Matrix([1, 1, 0, sφ, 0]))
-    return Check(f"contact {contact}: |p(0)| = |q(0)| = 1, p(0)·q(0) = 0, p_{i + 1}(0) = 0, q_{i + 1}(0) = sin φ > 0",
-                 res.holds, res.evidence)
+N_DATA = 300                 # random initial data (each with a second datum on its plane)
 
 
-def next_gap(contact: str, p0, q0, H: T.Signs) -> tuple[int | None, list[str]]:
-    """The one other gap k that closes on the ray p(0) + t q(0) (p_k(0) > 0, q_k(0) < 0)
-    while the third one opens (q_l(0) > 0), all signs read from the factors under H."""
-    others = [j for j in range(3) if j != INDEX[contact]]
-    sp_ = {j: T.sign(p0[j], H)[0] for j in others}
-    sq = {j: T.sign(q0[j], H)[0] for j in others}
-    ev = [f"gap {j + 1}: p = `{T.show(p0[j])}` {'> 0' if sp_[j] == 1 else '?'}, "
-          f"q = `{T.show(q0[j])}` {'> 0' if sq[j] == 1 else '< 0' if sq[j] == -1 else '?'}" for j in others]
-    closing = [j for j in others if sq[j] == -1 and sp_[j] == 1]
-    ok = len(closing) == 1 and all(sq[j] == 1 for j in others if j not in closing)
-    return (closing[0] if ok else None), ev
+N_COLLISIONS = 200           # collisions asked of the particle system
 
 
-def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
-    """One printed case of l. 886-929: the next collision, p(t1), its norm, q(t1)."""
-    contact, cos_phi = CASE_KEYS[key]
-    H, label = T.hypotheses(cos_phi), f"contact {contact}, {RANGE[cos_phi]}"
-    pair, letter, V_text, R_text = (x.strip() for x in spec.split("|"))
-    k, ev = next_gap(contact, p0, q0, H)
-    first = Check(f"{label}: the next collision is the printed {pair} with matrix {letter}: the only gap the ray "
-                  "p(0) + t q(0) closes", k is not None and PAIR.get(pair) == LETTERS[k] and letter == LETTERS[k].upper(), ev)
-    if k is None:
-        return [first]
-    V, R = vec(V_text), T.parse(R_text)
-    hit = hit_point(p0, q0, k)
-    inside = [T.has_sign(V[j], 1, H) for j in range(3) if j != k]
-    w = T.parse(q_t1, K=SECTION2[letter], q0=q0, p=V / sp.sqrt(R)).applyfunc(sp.expand)
-    if w.has(sp.sqrt):
-        raise ValueError("the normalisation of p(t1) did not cancel")
-    return [first,
-            result_check(f"{label}: the printed p(t1) ∝ `{V_text}` is a positive multiple of the point p(0) + t q(0) "
-                         f"where gap {k + 1} closes", T.positively_proportional(hit, V, H)),
-            combined(f"{label}: p(t1) lies on p_{k + 1} = 0 with its two other components > 0 (θ' ∈ ]0,π/2[)",
-                     [T.is_zero(V[k])] + inside),
-            combined(f"{label}: the printed radicand `{R_text}` is |p(t1)|², and it is > 0",
-                     [T.equal(R, V.dot(V)), T.has_sign(R, 1, H)]),
-            combined(f"{label}: q(t1) = {letter}q(0) - ({letter}q(0)·p(t1))p(t1), normalised, is orthogonal to p(t1) "
-                     f"and its component {k + 1} is > 0 (φ' ∈ ]0,π[)", [T.is_zero(w.dot(V)), T.has_sign(w[k], 1, H)])]
+N_REDUCTION = 250            # collisions of the reduction map per datum
 
 
-@certificate("S7.1", "l. 877-929",
-             "The six printed cases of the trigonometric version: for each contact and each range of φ, the printed next "
-             "collision is the one the ray p(0) + t q(0) reaches, the printed p(t1) is the hit point normalised by the "
-             "printed radicand, and the printed q(t1) is orthogonal to p(t1) with positive component along the new gap.",
-             printed=dict(p0_a=CONTACT_P0["a"], q0_a=CONTACT_Q0["a"], p0_b=CONTACT_P0["b"], q0_b=CONTACT_Q0["b"],
-                          p0_c=CONTACT_P0["c"], q0_c=CONTACT_Q0["c"], q_t1=Q_T1,
-                          **{key: SIX_CASES[f"{c}, {RANGE[s]}"] for key, (c, s) in CASE_KEYS.items()}),
+SCAN_ORBITS, SCAN_LENGTH = 100, 1000      # the scan of Proposition 4.4: 10^5 collisions
+
+
+# ---------------------------------------------------------------- random data
+def rational(rng: random.Random, lo: int = 1, hi: int = 99) -> flint.fmpq:
+    """A random fraction with numerator in [lo, hi] and denominator in [1, hi]."""
+    return Q(rng.randint(lo, hi), rng.randint(1, hi))
+
+
+def restitution(rng: random.Random) -> flint.fmpq:
+    """r in ]0,1[: mostly small (long collapsing runs), 15 % anywhere in ]0,1[."""
+    if rng.random() < 0.85:
+        return Q(1, rng.randint(4, 60))
+    return Q(rng.randint(1, 98), 99)
+
+
+@dataclass
+class Datum:
+    """Two physical runs from data spanning the same plane, and the reduction orbit."""
+
+    r: flint.fmpq
+    letter: str
+    runs: tuple          # (run from (p, q), run from (αp, βq + γp))
+    normals: list        # run 1: p ∧ q (primitive, orientation kept) at its start and after each collision
+    planes: tuple        # per run: the Plane of (p, q) at its start and after each collision
+    orbit: list          # Planes: the reduction from P(0)
+
+    @property
+    def realised(self) -> int:
+        return min(len(run.events) for run in self.runs)
+
+
+def datum(rng: random.Random) -> Datum:
+    """A state right after a collision, a second one on the same plane, their exact
+    runs (at most N_COLLISIONS collisions) and N_REDUCTION steps of the reduction."""
+    r, letter = restitution(rng), rng.choice(LETTERS)
+    i = INDEX[letter]
+    p = tuple(Q(0) if k == i else rational(rng) for k in range(3))
+    lam = -1 - rational(rng, 0, 40) / 10             # a radial part towards the origin
+    q = tuple((rational(rng) if k == i else rng.choice((1, -1)) * rational(rng)) + lam * p[k]
+              for k in range(3))
+    al, be, ga = rational(rng), rational(rng), rng.choice((1, -1)) * rational(rng) / 100
+    p2 = tuple(al * z for z in p)
+    q2 = tuple(be * qk + ga * pk for qk, pk in zip(q, p))
+    runs = (sim.follow(p, q, r, N_COLLISIONS), sim.follow(p2, q2, r, N_COLLISIONS))
+    contacts = [letter] + runs[0].events
+    normals = [R.normal(s.p, s.q) for s in runs[0].states]
+    planes = ([R.canonical(L, n) for L, n in zip(contacts, normals)],
+              [R.plane(letter, p2, q2)] + [R.plane(e, s.p, s.q) for e, s in zip(runs[1].events, runs[1].states[1:])])
+    return Datum(r, letter, runs, normals, planes, R.orbit(planes[0][0], r, N_REDUCTION))
+
+
+@quantity("section4_data")
+def section4_data() -> list[Datum]:
+    """N_DATA random data with their exact runs and reduction orbits (fixed seed)."""
+    rng = random.Random(SEED)
+    return [datum(rng) for _ in range(N_DATA)]
+
+
+def growth(data: list[Datum]) -> list[str]:
+    """Bit sizes along the first run that reaches N_COLLISIONS: the physical state
+    (p, q, t) and the normal of its plane."""
+    def bits(z):
+        return max(int(z.p).bit_length(), int(z.q).bit_length())
+    long_runs = [d for d in data if len(d.runs[0].events) >= N_COLLISIONS]
+    if not long_runs:
+        return []
+    d = long_runs[0]
+    rows = ["| collisions | bits of p, q (physical, exact) | bits of t | bits of the normal n (projective) |",
+            "|---:|---:|---:|---:|"]
+    for k in (1, 10, 50, 100, 200):
+        s = d.runs[0].states[k]
+        rows.append(f"| {k} | {max(bits(z) for z in s.p + s.q)} | {bits(s.t)} | {d.orbit[k].bits} |")
+    return [f"Growth of the exact numbers along one run (r = {d.r}):", "\n".join(rows)]
+
+
+# ---------------------------------------------------------------- the proofs on cones (S6-S11)
+SECTION2_K = {L: SECTION2[L.upper()] for L in LETTERS}
+
+
+@quantity("reduction_cones")
+def reduction_cones() -> dict:
+    """The step lemma of the reduction on the six cones of states (contact, sign of cos φ),
+    with the collision matrices of Section 2 (certify.dynamics.cones)."""
+    return RC.steps(SECTION2_K)
+
+
+def printed_cones(cones: dict, A: str, B: str, C: str) -> dict:
+    """The step lemmas with the printed matrices A, B, C: the shared ones when these are
+    the matrices of Section 2, else computed afresh (a mutated print)."""
+    K = {L: matrix(text) for L, text in zip(LETTERS, (A, B, C))}
+    return cones if all(K[L] == SECTION2_K[L] for L in LETTERS) else RC.steps(K)
+
+
+def lemma_check(s: RC.Step) -> Check:
+    """The step lemma on one cone as one check; its parts as evidence (✓/✗)."""
+    nxt = (f"the next collision is {s.following}; the next state lies in a cone of {s.following}, with "
+           f"cos φ' {RC.SIGN[s.cos_next]}") if s.following else "no next collision proven"
+    ev = [f"{'✓' if c.holds else '✗'} {c.statement}" for c in s.checks]
+    ev += [e for c in s.checks if not c.holds for e in c.evidence]
+    return Check(f"step lemma on the cone {s.label} (every state there, exact): {nxt}", s.holds, ev)
+
+
+def supporting(text: str) -> str:
+    return f"Supporting evidence, not proof: {text}"
+
+
+# ---------------------------------------------------------------- S6
+def multiple(rows, M: sp.Matrix):
+    """k > 0 with rows = k·M (an integer matrix and a rational one), or None."""
+    N = sp.Matrix([[int(z) for z in row] for row in rows])
+    ratios = {a / b for a, b in zip(N, M) if b != 0}
+    if len(ratios) != 1 or any(a != 0 for a, b in zip(N, M) if b == 0):
+        return None
+    k = ratios.pop()
+    return k if k > 0 else None
+
+
+@certificate("S6", "l. 839-868",
+             "Theorem 4.1: two trajectories with the same contact and Span(p(0),q(0)) = Span(p'(0),q'(0)) have "
+             "the same plane Span(p(k),q(k)) at every collision k (and so the same collision types).",
+             needs=["section4_data", "reduction_cones"], printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED),
              expect=PASS,
-             mutants=[replaced("c_neg", "(-cos(φ), 0", "(cos(φ), 0", "a sign of p(t1)"),
-                      replaced("a_pos", "2-3 | B", "3-4 | C", "another pair and matrix for a, cos φ > 0"),
-                      replaced("b_neg", "sin(θ)^2*sin(φ)^2", "sin(θ)^2*sin(φ)", "an exponent of the radicand")])
-def trigonometric_version(p0_a, q0_a, p0_b, q0_b, p0_c, q0_c, q_t1, **cases):
-    """Signs from the factors under θ ∈ ]0,π/2[, sin φ > 0, 0 < r < 1 and the sign of cos φ."""
-    frames = {"a": (vec(p0_a), vec(q0_a)), "b": (vec(p0_b), vec(q0_b)), "c": (vec(p0_c), vec(q0_c))}
-    checks = [contact_frame(c, *frames[c]) for c in LETTERS]
-    for key, spec in cases.items():
-        checks += six_case(key, spec, *frames[CASE_KEYS[key][0]], q_t1)
-    return conclude(checks, note="The normalisation of q(t1) divides by a positive norm and changes no sign; it is "
-                    "not expanded.  p(t1) is checked up to its normalisation, which is the printed square root.")
+             mutants=[replaced("B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]", "B no longer fixes {y = 0}"),
+                      replaced("C", "[0, 0, -r]", "[0, 1, -r]", "C moves {z = 0}"),
+                      replaced("A", "[[-r, 0, 0]", "[[r, 0, 0]", "a column that A does not fix"),
+                      replaced("A", "[(1+r)/2, 1, 0]", "[(1+3*r)/3, 1, 0]", "the same A at r = 1/3, another one over Q(r)")])
+def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
+    """Proof: K_j fixes the plane {x_j = 0} pointwise, so with p' = p + t q,
+    Span(p', K_j q) = K_j Span(p', q) = K_j Span(p, q): the new plane is K_j P whatever
+    the radial part of q, and its normal is cof(K_j) n (cof(K) (a ∧ b) = Ka ∧ Kb).
+    The engine's cof(K_j) (:func:`certify.dynamics.reduction.cofactor_columns` at a symbolic r)
+    is the printed matrix's, as matrices over Q(r); the integer matrices the map steps
+    with are positive multiples of it at every r of the runs.  Which collision comes
+    next depends on the plane only: on the six cones of states (certify.dynamics.cones)
+    the particles, whatever the radial part of their velocity, collide next at the map's
+    j or never.  By induction, two trajectories on one plane have the same collisions
+    while both last, and the same planes.  The exact runs of two data per plane, compared
+    collision by collision with each other and with the projective map, are supporting
+    evidence."""
+    checks, rates = [], sorted({d.r for d in section4_data} | {Q(1, 3)})
+    for letter, text in zip(LETTERS, (A, B, C)):
+        K, j = matrix(text), INDEX[letter]
+        fixed = all((K * sp.eye(3).col(m) - sp.eye(3).col(m)).applyfunc(sp.expand) == sp.zeros(3, 1)
+                    for m in range(3) if m != j)
+        cof = K.adjugate().T                     # cof(K)(a ∧ b) = Ka ∧ Kb for every K
+        engine = sp.Matrix.hstack(*(sp.Matrix(col) for col in R.cofactor_columns(letter, r)))
+        same = all(sp.cancel(e) == 0 for e in engine - cof)                 # as matrices over Q(r)
+        scaled = [multiple(R.cofactor(letter, r0), cof.subs(r, sp.Rational(int(r0.p), int(r0.q)))) for r0 in rates]
+        checks.append(Check(f"{letter.upper()} fixes {{x_{j + 1} = 0}} pointwise, so the plane after a collision "
+                            f"{letter} is {letter.upper()}·P, with normal cof({letter.upper()}) n; the projective map "
+                            f"moves normals by this cof({letter.upper()}): the engine's cof({letter.upper()}) equals "
+                            "it as a matrix over Q(r), and the integer matrix it steps with at each r of the runs is a "
+                            "positive multiple of it there", fixed and same and all(k is not None for k in scaled),
+                            [f"cof({letter.upper()}) = det·{letter.upper()}^(-T) = `{show(cof.applyfunc(sp.factor).tolist())}`",
+                             f"engine − printed over Q(r): {'0' if same else show((engine - cof).applyfunc(sp.factor).tolist())}; "
+                             f"integer multiples at {len(rates)} values of r: "
+                             f"{sum(k is not None for k in scaled)} positive"]))
+    cones = printed_cones(reduction_cones, A, B, C)
+    checks.append(Check("the next collision depends on the contact and the plane only: on each of the six cones of "
+                        "states, whatever the radial part of the velocity, the particles collide next at the map's "
+                        "contact j or never, and then span the plane with normal cof(K_j) n (the step and particle "
+                        "lemmas with the printed A, B, C); by induction, two trajectories on one plane have the same "
+                        "collision types while both last", RC.dynamics_is_proven(cones),
+                        [f"{'✓' if c.motion.holds else '✗'} {c.label}: next {c.following}"
+                         for c in cones.values()]))
+    compared = same = 0
+    for d in section4_data:
+        (run1, run2), k = d.runs, d.realised
+        for P1, P2, P in zip(d.planes[0][1:k + 1], d.planes[1][1:k + 1], d.orbit[1:k + 1]):
+            compared += 1
+            same += P1 == P2 == P
+    reached = sum(d.realised >= N_COLLISIONS for d in section4_data)
+    evidence = [supporting(f"on {len(section4_data)} random rational data (two per plane, exact runs of up to "
+                           f"{N_COLLISIONS} collisions) the two runs have the same collision type and the same plane "
+                           f"as the projective map at {same} of {compared} collisions compared; {reached} data kept "
+                           f"colliding for {N_COLLISIONS} collisions on both runs, the others separated earlier.")]
+    return conclude(checks, evidence=evidence + growth(section4_data))
 
 
-# ================================================================ S8.1
-def orientation_axes(text: str) -> dict:
-    """'a: y, b: z, c: x' as {contact: e_t}."""
-    pairs = dict(item.split(":") for item in text.replace(" ", "").split(","))
-    return {c: UNIT[f"e{pairs[c]}"] for c in pairs}
+# ================================================================ Remark 4.2 (l. 869-875): infinitely many collisions; the scan shared with Section 4.3
+# ---------------------------------------------------------------- the scan (S9.2, S10, S11)
+@dataclass
+class ScanOrbit:
+    r: flint.fmpq
+    start: R.Plane
+    word: str            # c_1 c_2 ... (SCAN_LENGTH letters unless a corner was met)
+    bits: int            # of the final normal
 
 
-def not_normal(u, p, H: T.Signs, tφ: str) -> list[str]:
-    """Evidence that u is not normal to p: u·p ≢ 0, with its value at a rational point of H."""
-    d = u.dot(p)
-    pt = T.point("1/2", tφ, r="1/3")
-    return T.is_zero(d).evidence + [f"at cos θ = {pt[cθ]}, cos φ = {pt[cφ]}, r = 1/3: ũ(1)·p(1) = {T.at(d, pt)}"
-                                    f" (hypotheses hold there: {'yes' if T.satisfied(H, pt) else 'no'})"]
+@quantity("reduction_scan")
+def reduction_scan() -> list[ScanOrbit]:
+    """SCAN_ORBITS exact orbits of the projective map, SCAN_LENGTH collisions each,
+    from random planes (integer normals in [-50, 50]^3 meeting the open face of a
+    random contact) at random r = k/100 (fixed seed)."""
+    rng = random.Random(SEED + 1)
+    out = []
+    while len(out) < SCAN_ORBITS:
+        r, L = Q(rng.randint(1, 99), 100), rng.choice(LETTERS)
+        try:
+            P = R.canonical(L, [rng.randint(-50, 50) for _ in range(3)])
+            R.next_letter(P)
+        except (R.Corner, ValueError):
+            continue
+        w, end = R.word_of(P, r, SCAN_LENGTH)
+        out.append(ScanOrbit(r, P, w, end.bits))
+    return out
 
 
-def trilinear(text: str, letter: str, u0, p1, q0, H: T.Signs, axis, tφ: str) -> Check:
-    """The printed ũ(1) is a positive multiple of p(1) ∧ K q(0) (the normal of P(1) oriented
-    as p ∧ q), and that normal has e_t·u > 0 for the new contact."""
-    K = SECTION2[letter]
-    u1 = T.parse(text, u0=u0, **UNIT, **SECTION2)
-    normal = p1.cross(K * q0)
-    prop = T.positively_proportional(u1, normal, H)
-    orient = T.has_sign(axis.dot(normal), 1, H)
-    ev = prop.evidence + orient.evidence + ([] if prop.holds else not_normal(u1, p1, H, tφ))
-    return Check(f"l. 976-980: ũ(1) = `{text}` is a positive multiple of p(1) ∧ {letter}q(0), "
-                 f"the normal of P(1) with e_t·u(1) > 0 ({RANGE[H.sign(cφ)]})", prop.holds and orient.holds, ev)
+def occurrences(words, pattern: str) -> int:
+    """Occurrences of ``pattern`` as consecutive collisions (overlaps counted)."""
+    return sum(sum(w.startswith(pattern, k) for k in range(len(w))) for w in words)
 
 
-@certificate("S8.1", "l. 931-987",
-             "The vectorial version: u(0) = p(0) ∧ q(0) as printed; the printed u(0) ∧ e_y, u(0) ∧ e_z, u(0) ∧ e_x, "
-             "u(0) ∧ p(0) = q(0); e_x ∧ u(0) ∝ p(0); the two trilinear formulas for ũ(1) with the convention e_t·u ≥ 0.",
-             printed=dict(p0=CONTACT_P0["a"], q0=CONTACT_Q0["a"], u0=U0, ey_dot_u0=EY_DOT_U0, orientation=ORIENTATION,
-                          u0_wedge_ey=U0_WEDGE["ey"], u0_wedge_ez=U0_WEDGE["ez"], u0_wedge_ex=U0_WEDGE["ex"],
-                          u0_wedge_p0=U0_WEDGE["p0"], trilinear_b=TRILINEAR_B, trilinear_c=TRILINEAR_C),
-             expect=ERRATUM,
-             mutants=[replaced("u0", "-cos(θ)*sin(φ)", "cos(θ)*sin(φ)", "a sign of u(0)"),
-                      overridden({"orientation": "a: y, b: x, c: z"}, "another orientation convention")])
-def vectorial_version(p0, q0, u0, ey_dot_u0, orientation, u0_wedge_ey, u0_wedge_ez, u0_wedge_ex, u0_wedge_p0,
-                      trilinear_b, trilinear_c):
-    """Cross products as identities; orientations as positive ratios; a wrong plane by a rational witness."""
-    p0, q0, u0 = vec(p0), vec(q0), vec(u0)
-    pos, neg, H = T.hypotheses(1), T.hypotheses(-1), T.hypotheses()
-    p1b, p1c = hit_point(p0, q0, 1), hit_point(p0, q0, 2)
-    Wy, Wz, Wx, Wp = (vec(x) for x in (u0_wedge_ey, u0_wedge_ez, u0_wedge_ex, u0_wedge_p0))
-    axes = orientation_axes(orientation)
-    ey_u = T.parse(ey_dot_u0)
-    checks = [
-        identity("l. 943-947: p(0) ∧ q(0) is the printed u(0)", p0.cross(q0), u0),
-        combined(f"l. 949: e_y·u(0) = `{ey_dot_u0}` ≥ 0, and e_t·u(0) ≥ 0 with the printed convention t = ({orientation})",
-                 [T.equal(T.E_Y.dot(u0), ey_u), T.has_sign(ey_u, 1, H), T.has_sign(axes["a"].dot(u0), 1, H)]),
-        combined("l. 958-960: u(0) ∧ e_y is the printed vector, a positive multiple of p(1) when the next collision is b",
-                 [T.equal(u0.cross(T.E_Y), Wy), T.positively_proportional(Wy, p1b, pos)]),
-        combined("l. 962-963: u(0) ∧ e_z is the printed vector, a positive multiple of p(1) when the next collision is c",
-                 [T.equal(u0.cross(T.E_Z), Wz), T.positively_proportional(Wz, p1c, neg)]),
-        combined("l. 967-969: u(0) ∧ e_x is the printed vector, of orientation opposite to p(0); e_x ∧ u(0) ∝ p(0) > 0",
-                 [T.equal(u0.cross(T.E_X), Wx), T.positively_proportional(-Wx, p0, H),
-                  T.positively_proportional(T.E_X.cross(u0), p0, H)]),
-        combined("l. 971: u(0) ∧ p(0) is the printed vector, which is q(0)", [T.equal(u0.cross(p0), Wp), T.equal(Wp, q0)]),
-        trilinear(trilinear_b, "B", u0, p1b, q0, pos, axes["b"], "1/2"),
-    ]
-    printed_c = trilinear(trilinear_c, "C", u0, p1c, q0, neg, axes["c"], "2")
-    fixed_c = statements.corrected(trilinear_c, *TRILINEAR_C_CORRECTION)
-    corrected_c = (trilinear(fixed_c, "C", u0, p1c, q0, neg, axes["c"], "2") if fixed_c else
-                   Check(f"the stated correction `{TRILINEAR_C_CORRECTION[0]}` → `{TRILINEAR_C_CORRECTION[1]}` "
-                         f"applies to the printed `{trilinear_c}`", False))
-    return concluded(checks + [printed_c], checks + [corrected_c], kind=MISPRINT, misprint=E_Y_FOR_E_Z,
-                    note="Contacts: the paper writes k = 1, 2, 3 for the contacts a, b, c in the orientation convention "
-                         "(l. 949), where k also indexes the collisions.  For a collision c, p(1) ∝ u(0) ∧ e_z "
-                         "(l. 962), so the factor [u(0) ∧ e_y] of l. 980 must be [u(0) ∧ e_z].")
+# ---------------------------------------------------------------- S11
+PRINTED_S11 = dict(reduction="infinitely many collisions", realised="a prefix", A=A_PRINTED, B=B_PRINTED, C=C_PRINTED)
 
 
-# ================================================================ S9.1
-FRAME_AXIS = {"a": T.E_X, "c": T.E_Z}          # e_θ = e_axis ∧ p for the printed frames of contacts a and c
-SIGN_C = "sin(φ)*cos(φ)*(cos(θ)^2 + (1+r)/2*sin(θ)*cos(θ))"     # (p(k+1) ∧ C q(k))_z, ours
-SIGN_A = "sin(φ)*cos(φ)*(sin(θ)^2 + (1+r)/2*sin(θ)*cos(θ))"     # (p(k+1) ∧ A q(k))_x, ours
-
-
-def frame_lemma(contact: str, p0_text: str, q0_text: str) -> Check:
-    """In the frame of ``contact``, q(0) = cos φ e_θ + sin φ e_axis with e_θ = e_axis ∧ p(0), and
-    every representative q' = q(0) + μ p(0) of the velocity in the plane has q'·e_θ = cos φ."""
-    mu = sp.Symbol("μ")
-    p0, q0, axis = vec(p0_text), vec(q0_text), FRAME_AXIS[contact]
-    e_theta = axis.cross(p0)
-    res = T.equal(sp.Matrix.vstack(q0, sp.Matrix([(q0 + mu * p0).dot(e_theta)])),
-                  sp.Matrix.vstack(cφ * e_theta + sφ * axis, sp.Matrix([cφ])))
-    return Check(f"contact {contact}: e_θ = e_{'x' if contact == 'a' else 'z'} ∧ p(0), q(0) = cos φ e_θ + sin φ "
-                 "e_axis, and (q(0) + μ p(0))·e_θ = cos φ for every μ: cos φ' is read on any representative",
-                 res.holds, res.evidence)
-
-
-def next_angle_sign(contact: str, letter: str, cos_phi: int, axis_index: int, formula: str) -> list[Check]:
-    """After ``contact`` then ``letter`` (cos φ of sign ``cos_phi``): with P the printed-form
-    hit point and K q(k) the velocity after the collision, sign(cos φ') = sign((P ∧ K q(k))_axis)
-    (as K q(k)·e_θ' = (P ∧ K q(k))_axis / |P|); the factored formula and its sign."""
-    H = T.hypotheses(cos_phi)
-    p0, q0 = vec(CONTACT_P0[contact]), vec(CONTACT_Q0[contact])
-    k, ev = next_gap(contact, p0, q0, H)
-    P = hit_point(p0, q0, k)
-    Kq = SECTION2[letter] * q0
-    axis = FRAME_AXIS[LETTERS[k]]
-    s = T.parse(formula)
-    triple = T.equal(Kq.dot(axis.cross(P)), P.cross(Kq)[axis_index])
-    value = T.positively_proportional(P.cross(Kq)[axis_index] * sp.ones(1, 1), s * sp.ones(1, 1), H)
-    sign = T.has_sign(s, cos_phi, H)
-    return [Check(f"{contact} then {LETTERS[k]} ({RANGE[cos_phi]}): the collision is {letter.lower()}", LETTERS[k] == letter.lower(), ev),
-            combined(f"K q(k)·(e_axis ∧ p(k+1)) = (p(k+1) ∧ K q(k))_axis, a positive multiple of `{formula}`, which is "
-                     f"{'>' if cos_phi > 0 else '<'} 0: cos φ' {'>' if cos_phi > 0 else '<'} 0", [triple, value, sign])]
-
-
-@certificate("S9.1", "l. 997-1035",
-             "Proposition 4.4: no aca and no cac, by the printed argument: after a then c, q(k+1) ∝ Cq(k) - "
-             "(Cq(k)·p(k))p(k) as printed, whose first component sin φ > 0 gives cos φ' < 0, so the next collision is b.",
-             printed=dict(p_k=CONTACT_P0["a"], q_k=CONTACT_Q0["a"], p_next=P_NEXT_AC, q_next=Q_NEXT_AC,
-                          C_times_qk=C_TIMES_QK, projection=PROJECTION_CHAIN, form_c=FORM_C,
-                          read_component=READ_COMPONENT, conclusion=CONCLUSION),
-             expect=ERRATUM,
-             mutants=[replaced("projection", "+ (1+r)*cos(θ)^2*sin(θ)", "+ (1-r)*cos(θ)^2*sin(θ)", "a sign in the projection"),
-                      overridden({"conclusion": "cos(φ') > 0"}, "the conclusion reversed"),
-                      reworded("conclusion", "cos(φ')", "sin(φ')", "sin φ' > 0 by definition"),
-                      reworded("conclusion", "<", ">"),
-                      reworded("conclusion", "<", "≥"),
-                      unread("conclusion", "cos(φ'') < 0", "an unknown name")])
-def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read_component, conclusion):
-    """The printed algebra as printed; whether its vector is q(k+1); the corrected argument.
-    The printed conclusion (cos φ' < 0) is read and evaluated on the certified signs of
-    cos φ' (< 0, by the sign of (p(k+1) ∧ C q(k))_z) and sin φ' (> 0, φ' ∈ ]0,π[)."""
-    pk, qk, Pn = vec(p_k), vec(q_k), vec(p_next)
-    neg = T.hypotheses(-1)
-    C = SECTION2["C"]
-    M, seen = recording_matrices()
-    CQ, PR = T.chain(C_times_qk, M=M), T.chain(projection)
-    w = T.parse(q_next, Cq=C * qk, pk=pk)
-    n = Pn.cross(C * qk)                                   # normal of P(k+1) = Span(p(k+1), C q(k))
-    j = int(read_component) - 1
-    algebra = [identity("l. 1020: C q(k) (C of Section 2) is member 1", C * qk, CQ[0])] + links("C q(k)", CQ, "1020") + [
-        matrices_are("c", seen, "1020"),
-        identity("l. 1016, 1024: the printed Cq(k) - (Cq(k)·p(k))p(k) is member 1 of l. 1024-1031", w, PR[0]),
-        *links("the projection", PR, "1024-1031"),
-        result_check("l. 1012: p(k+1) ∝ the printed (sinθ sinφ, -cosφ, 0), a positive multiple of the hit point",
-                     T.positively_proportional(hit_point(pk, qk, 2), Pn, neg)),
-        identity(f"l. 1033: component {j + 1} of the printed vector is sin φ, and component {j + 1} of the form "
-                 f"`{form_c}` of q(k+1) is -sinθ' cosφ' (frame of contact c)", sp.Matrix([w[j], vec(form_c)[j]]),
-                 sp.Matrix([sφ, -sθ * cφ]))]
-    in_plane = [T.is_zero(w.dot(Pn)), T.is_zero(w.dot(n))]
-    pt = T.point("1/2", "2", r="1/3")
-    vector_claim = Check("l. 1014-1016: q(k+1) is a positive multiple of the printed Cq(k) - (Cq(k)·p(k))p(k): it should "
-                         "be orthogonal to p(k+1) and lie in P(k+1)", all(in_plane),
-                         [f"·p(k+1): {'; '.join(in_plane[0].evidence)}", f"·(p(k+1) ∧ Cq(k)): {'; '.join(in_plane[1].evidence)}",
-                          f"at cos θ = {pt[cθ]}, cos φ = {pt[cφ]}, r = 1/3: ·p(k+1) = {T.at(w.dot(Pn), pt)}, "
-                          f"·(p(k+1) ∧ Cq(k)) = {T.at(w.dot(n), pt)}"])
-    w_true = C * qk - (C * qk).dot(Pn) / Pn.dot(Pn) * Pn
-    true_first = T.has_sign(w_true[0], 1, neg)
-    aca = next_angle_sign("a", "C", -1, 2, SIGN_C)
-    cac = next_angle_sign("c", "A", 1, 0, SIGN_A)
-    then_b = [Check(f"after a contact {c} with cos φ' {'<' if s < 0 else '>'} 0 the next collision is b",
-                    next_gap(c, vec(CONTACT_P0[c]), vec(CONTACT_Q0[c]), T.hypotheses(s))[0] == INDEX["b"])
-              for c, s in (("c", -1), ("a", 1))]
-    # certified: cos φ' < 0 (aca[1]) and sin φ' > 0 (φ' ∈ ]0,π[ by definition); the printed conclusion read on them
-    read = statements.relation(conclusion, {"cos(φ')": COS_NEXT, "sin(φ')": SIN_NEXT}).holds({COS_NEXT: -1, SIN_NEXT: 1})
-    concl = Check(f"l. 1033-1034: {conclusion}, so c_(k+2) = b (no aca)", aca[1].holds and read and then_b[0].holds,
-                  aca[1].evidence)
-    projection = combined("corrected: q(k+1) ∝ Cq(k) - (Cq(k)·p(k+1))p(k+1)/|p(k+1)|², the projection on p(k+1)^⊥: "
-                          "orthogonal to p(k+1), in P(k+1)", [T.is_zero(w_true.dot(Pn)), T.is_zero(w_true.dot(n))])
-    projection.corrects = vector_claim
-    corrected = algebra + [
-        projection,
-        frame_lemma("c", CONTACT_P0["c"], CONTACT_Q0["c"]),
-        *aca, then_b[0], concl,
-        result_check("its first component is > 0 as well (the printed reading of the sign gives the right answer for "
-                     "the right vector)", true_first),
-        frame_lemma("a", CONTACT_P0["a"], CONTACT_Q0["a"]),
-        *cac, then_b[1],
-        Check("no cac: after c then a, cos φ' > 0 and the next collision is b", all(cac) and then_b[1].holds)]
-    return concluded(algebra + [vector_claim, concl], corrected, kind=FALSE_STATEMENT,
-                     misprint="l. 1014-1016: q(k+1) projected on p(k)^⊥, not p(k+1)^⊥ (a step of the proof of "
-                              "Proposition 4.4; the proposition holds)",
-                    note="The printed proof projects C q(k) on p(k)^⊥ instead of p(k+1)^⊥; the proposition holds, "
-                         "by the sign of (p(k+1) ∧ C q(k))_z read on any representative of the velocity.  The cac case "
-                         "is done directly (the paper: 'by symmetry').")
+@certificate("S11", "l. 869-875",
+             "Remark 4.2: every orbit of the reduction off the corners has infinitely many collisions; the "
+             "collisions realised by the particle system are a prefix of it.",
+             needs=["reduction_cones", "reduction_scan", "section4_data"], printed=PRINTED_S11,
+             expect=PASS,
+             mutants=[overridden({"realised": "the whole"}, "the particles realise the whole orbit"),
+                      overridden({"reduction": "finitely many collisions"}, "finitely many collisions"),
+                      replaced("C", "[0, 0, -r]", "[0, 0, r]", "the pair c would not separate"),
+                      replaced("B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]", "B p' ≠ p': another plane"),
+                      replaced("A", "[(1+r)/2, 1, 0]", "[(1+r)/2, 2, 0]", "A moves {x = 0}"),
+                      reworded("reduction", "infinitely", "finitely"),
+                      reworded("realised", "a prefix", "the whole"),
+                      unread("reduction", "infinitely many orbits", "not a count of collisions"),
+                      unread("reduction", "many collisions", "no quantifier"),
+                      unread("realised", "a part", "not an extent")])
+def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduction, realised, A, B, C):
+    """Proof, for every orbit (certify.dynamics.cones): a state off the corners lies in
+    one of six cones (contact i, sign of n_i = |n| cos φ); on each, with the printed A, B,
+    C, exactly one other gap j closes (w_j = −n_i n_j < 0 < w_k), at a time t > 0, at a
+    point p' of the open face j, the pair j separates (−r w_j > 0), and the next normal
+    p' ∧ K_j w = ρ cof(K_j) n (ρ > 0) lies in a cone of j unless n'_j = 0, a corner.  So
+    the map is defined again at every step: infinitely many collisions.  The particles,
+    whatever the radial part of their velocity, collide next at j or never, and then span
+    the reduction's next plane: their collisions are a prefix.  The scan and the exact
+    runs are supporting evidence."""
+    claim, extent = statements.count(reduction), statements.extent(realised)     # read whole; unread text fails
+    cones = printed_cones(reduction_cones, A, B, C)
+    checks = [lemma_check(c) for c in cones.values()]
+    closed = RC.map_is_proven(cones)
+    checks.append(Check(f"every orbit of the reduction off the corners has {reduction}: the six cones hold every "
+                        "state off the corners, and each step maps a cone into a cone of the next contact, or onto a "
+                        "corner (n'_j = 0)", closed and claim.infinite))
+    checks += [check_of(c.motion) for c in cones.values()]
+    prefix = RC.dynamics_is_proven(cones)
+    runs = [(run, d) for d in section4_data for run in d.runs]
+    separated = sum(run.stop == "free" for run, d in runs)
+    checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence (for every datum, by "
+                        "induction on the collisions)", prefix and (extent == "prefix" or separated == 0),
+                        [f"{separated} exact runs end because the particles separate while the reduction goes on"]))
+    lengths = [len(o.word) for o in reduction_scan]
+    realise = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)
+    evidence = [supporting(f"{len(lengths)} exact orbits from random planes meet no corner in {sum(lengths)} "
+                           f"collisions (shortest {min(lengths)} of {SCAN_LENGTH}); {realise} of {len(runs)} exact "
+                           f"particle runs realise a prefix of the reduction's word ({N_REDUCTION} collisions), "
+                           f"{separated} of them end because the particles separate.")]
+    return conclude(checks, evidence=evidence)

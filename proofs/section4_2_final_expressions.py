@@ -1,0 +1,431 @@
+"""Section 4.2 (l. 877-987): the final expressions of the spherical reduction.
+
+4.2.1 the trigonometric version (l. 881-929): S7.1 the six printed cases, as identities;
+      S7.2 the printed cases are the projective map's step, and agree with the dynamics;
+4.2.2 the vectorial version (l. 931-987): S8.1 the printed vectors and the trilinear
+      formula, as identities; S8.2 the trilinear formula is the map, on every cone.
+
+The printed texts are read as in proofs/section4_1_reduction_theorem.py (its helpers
+and shared quantities are used here: the data, the cones of states).
+"""
+from __future__ import annotations
+
+
+import sympy as sp
+
+from certify.algebra import trig as T
+from certify.algebra import precision, r, statements
+from certify.dynamics import cones as RC
+from certify.dynamics import reduction as R
+from certify.dynamics import simulate as sim
+from certify.dynamics import INDEX, LETTERS
+from certify.run import (ERRATUM, MISPRINT, PASS, Check, certificate, combined, concluded,
+                         conclude, identity, overridden, replaced, result_check)
+from proofs.section4_1_reduction_theorem import (PAIR, SECTION2, UNIT, cθ, cφ, hit_point, supporting, sφ, vec)
+
+
+# ================================================================ as printed (l. 877-987)
+# One misprint, false in S8.1 (the formula) and S8.2 (the reduction it gives): counted once.
+E_Y_FOR_E_Z = "l. 980: e_y printed for e_z in the trilinear formula for ũ(1) after a contact a and a collision c"
+
+
+# ---------------------------------------------------------------- as printed: the trigonometric version (l. 888-926)
+CONTACT_P0 = {"a": "(0, cos(θ), sin(θ))", "b": "(sin(θ), 0, cos(θ))", "c": "(cos(θ), sin(θ), 0)"}
+
+
+CONTACT_Q0 = {"a": "(sin(φ), -sin(θ)*cos(φ), cos(θ)*cos(φ))", "b": "(cos(θ)*cos(φ), sin(φ), -sin(θ)*cos(φ))",
+              "c": "(-sin(θ)*cos(φ), cos(θ)*cos(φ), sin(φ))"}
+
+
+# contact, sign of cos φ: "next pair | matrix | p(t1) before normalisation | radicand"
+SIX_CASES = {
+    "a, φ ∈ ]0,π/2[": "2-3 | B | (cos(θ)*sin(φ), 0, cos(φ)) | cos(θ)^2*sin(φ)^2 + cos(φ)^2",      # l. 891-893
+    "a, φ ∈ ]π/2,π[": "3-4 | C | (sin(θ)*sin(φ), -cos(φ), 0) | sin(θ)^2*sin(φ)^2 + cos(φ)^2",     # l. 896-898
+    "b, φ ∈ ]0,π/2[": "3-4 | C | (cos(φ), cos(θ)*sin(φ), 0) | cos(φ)^2 + cos(θ)^2*sin(φ)^2",      # l. 905-907
+    "b, φ ∈ ]π/2,π[": "1-2 | A | (0, sin(θ)*sin(φ), -cos(φ)) | sin(θ)^2*sin(φ)^2 + cos(φ)^2",     # l. 910-912
+    "c, φ ∈ ]0,π/2[": "1-2 | A | (0, cos(φ), cos(θ)*sin(φ)) | cos(φ)^2 + cos(θ)^2*sin(φ)^2",      # l. 919-921
+    "c, φ ∈ ]π/2,π[": "2-3 | B | (-cos(φ), 0, sin(θ)*sin(φ)) | cos(φ)^2 + sin(θ)^2*sin(φ)^2",     # l. 924-926
+}
+
+
+Q_T1 = "K*q0 - dot(K*q0, p)*p"      # l. 893, 898, ...: the numerator of q(t1), p = p(t1) normalised
+
+
+# ---------------------------------------------------------------- as printed: the vectorial version (l. 937-982)
+U0 = "(cos(φ), sin(θ)*sin(φ), -cos(θ)*sin(φ))"                                  # l. 947
+
+
+EY_DOT_U0 = "sin(θ)*sin(φ)"                                                     # l. 949
+
+
+ORIENTATION = "a: y, b: z, c: x"           # l. 949: t = y, z, x for contacts k = 1, 2, 3
+
+
+U0_WEDGE = {"ey": "(cos(θ)*sin(φ), 0, cos(φ))",                                 # l. 958
+            "ez": "(sin(θ)*sin(φ), -cos(φ), 0)",                                # l. 962
+            "ex": "(0, -cos(θ)*sin(φ), -sin(θ)*sin(φ))",                        # l. 967
+            "p0": "(sin(φ), -sin(θ)*cos(φ), cos(θ)*cos(φ))"}                    # l. 971
+
+
+TRILINEAR_B = "cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))"                # l. 976
+
+
+TRILINEAR_C = "cross(cross(u0, ey), C*cross(u0, cross(ex, u0)))"                # l. 980
+
+
+TRILINEAR_C_CORRECTION = ("(u0, ey)", "(u0, ez)")     # stated: for a collision c, p(1) ∝ u(0) ∧ e_z (l. 962)
+
+
+TRILINEAR_C_CORRECTED = statements.corrected(TRILINEAR_C, *TRILINEAR_C_CORRECTION)
+
+
+# ================================================================ 4.2.1 Spherical reduction, trigonometric version (l. 881-929): S7.1, S7.2
+# ================================================================ S7.1
+CASE_KEYS = {"a_pos": ("a", 1), "a_neg": ("a", -1), "b_pos": ("b", 1), "b_neg": ("b", -1),
+             "c_pos": ("c", 1), "c_neg": ("c", -1)}
+
+
+RANGE = {1: "φ ∈ ]0,π/2[", -1: "φ ∈ ]π/2,π[", None: "φ ∈ ]0,π["}
+
+
+def contact_frame(contact: str, p0, q0) -> Check:
+    """p(0), q(0) unit and orthogonal, q_i(0) = sin φ > 0 for the gap i in contact."""
+    i = INDEX[contact]
+    res = T.equal(sp.Matrix([p0.dot(p0), q0.dot(q0), p0.dot(q0), q0[i], p0[i]]), sp.Matrix([1, 1, 0, sφ, 0]))
+    return Check(f"contact {contact}: |p(0)| = |q(0)| = 1, p(0)·q(0) = 0, p_{i + 1}(0) = 0, q_{i + 1}(0) = sin φ > 0",
+                 res.holds, res.evidence)
+
+
+def next_gap(contact: str, p0, q0, H: T.Signs) -> tuple[int | None, list[str]]:
+    """The one other gap k that closes on the ray p(0) + t q(0) (p_k(0) > 0, q_k(0) < 0)
+    while the third one opens (q_l(0) > 0), all signs read from the factors under H."""
+    others = [j for j in range(3) if j != INDEX[contact]]
+    sp_ = {j: T.sign(p0[j], H)[0] for j in others}
+    sq = {j: T.sign(q0[j], H)[0] for j in others}
+    ev = [f"gap {j + 1}: p = `{T.show(p0[j])}` {'> 0' if sp_[j] == 1 else '?'}, "
+          f"q = `{T.show(q0[j])}` {'> 0' if sq[j] == 1 else '< 0' if sq[j] == -1 else '?'}" for j in others]
+    closing = [j for j in others if sq[j] == -1 and sp_[j] == 1]
+    ok = len(closing) == 1 and all(sq[j] == 1 for j in others if j not in closing)
+    return (closing[0] if ok else None), ev
+
+
+def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
+    """One printed case of l. 886-929: the next collision, p(t1), its norm, q(t1)."""
+    contact, cos_phi = CASE_KEYS[key]
+    H, label = T.hypotheses(cos_phi), f"contact {contact}, {RANGE[cos_phi]}"
+    pair, letter, V_text, R_text = (x.strip() for x in spec.split("|"))
+    k, ev = next_gap(contact, p0, q0, H)
+    first = Check(f"{label}: the next collision is the printed {pair} with matrix {letter}: the only gap the ray "
+                  "p(0) + t q(0) closes", k is not None and PAIR.get(pair) == LETTERS[k] and letter == LETTERS[k].upper(), ev)
+    if k is None:
+        return [first]
+    V, R = vec(V_text), T.parse(R_text)
+    hit = hit_point(p0, q0, k)
+    inside = [T.has_sign(V[j], 1, H) for j in range(3) if j != k]
+    w = T.parse(q_t1, K=SECTION2[letter], q0=q0, p=V / sp.sqrt(R)).applyfunc(sp.expand)
+    if w.has(sp.sqrt):
+        raise ValueError("the normalisation of p(t1) did not cancel")
+    return [first,
+            result_check(f"{label}: the printed p(t1) ∝ `{V_text}` is a positive multiple of the point p(0) + t q(0) "
+                         f"where gap {k + 1} closes", T.positively_proportional(hit, V, H)),
+            combined(f"{label}: p(t1) lies on p_{k + 1} = 0 with its two other components > 0 (θ' ∈ ]0,π/2[)",
+                     [T.is_zero(V[k])] + inside),
+            combined(f"{label}: the printed radicand `{R_text}` is |p(t1)|², and it is > 0",
+                     [T.equal(R, V.dot(V)), T.has_sign(R, 1, H)]),
+            combined(f"{label}: q(t1) = {letter}q(0) - ({letter}q(0)·p(t1))p(t1), normalised, is orthogonal to p(t1) "
+                     f"and its component {k + 1} is > 0 (φ' ∈ ]0,π[)", [T.is_zero(w.dot(V)), T.has_sign(w[k], 1, H)])]
+
+
+@certificate("S7.1", "l. 877-929",
+             "The six printed cases of the trigonometric version: for each contact and each range of φ, the printed next "
+             "collision is the one the ray p(0) + t q(0) reaches, the printed p(t1) is the hit point normalised by the "
+             "printed radicand, and the printed q(t1) is orthogonal to p(t1) with positive component along the new gap.",
+             printed=dict(p0_a=CONTACT_P0["a"], q0_a=CONTACT_Q0["a"], p0_b=CONTACT_P0["b"], q0_b=CONTACT_Q0["b"],
+                          p0_c=CONTACT_P0["c"], q0_c=CONTACT_Q0["c"], q_t1=Q_T1,
+                          **{key: SIX_CASES[f"{c}, {RANGE[s]}"] for key, (c, s) in CASE_KEYS.items()}),
+             expect=PASS,
+             mutants=[replaced("c_neg", "(-cos(φ), 0", "(cos(φ), 0", "a sign of p(t1)"),
+                      replaced("a_pos", "2-3 | B", "3-4 | C", "another pair and matrix for a, cos φ > 0"),
+                      replaced("b_neg", "sin(θ)^2*sin(φ)^2", "sin(θ)^2*sin(φ)", "an exponent of the radicand")])
+def trigonometric_version(p0_a, q0_a, p0_b, q0_b, p0_c, q0_c, q_t1, **cases):
+    """Signs from the factors under θ ∈ ]0,π/2[, sin φ > 0, 0 < r < 1 and the sign of cos φ."""
+    frames = {"a": (vec(p0_a), vec(q0_a)), "b": (vec(p0_b), vec(q0_b)), "c": (vec(p0_c), vec(q0_c))}
+    checks = [contact_frame(c, *frames[c]) for c in LETTERS]
+    for key, spec in cases.items():
+        checks += six_case(key, spec, *frames[CASE_KEYS[key][0]], q_t1)
+    return conclude(checks, note="The normalisation of q(t1) divides by a positive norm and changes no sign; it is "
+                    "not expanded.  p(t1) is checked up to its normalisation, which is the printed square root.")
+
+
+# ---------------------------------------------------------------- S7.2
+# The six printed cases (l. 881-929), transcribed once above (S7.1).
+PRINTED_S7 = {**{f"p0_{c}": CONTACT_P0[c] for c in LETTERS}, **{f"q0_{c}": CONTACT_Q0[c] for c in LETTERS},
+              **{key: SIX_CASES[f"{c}, {RANGE[s]}"] for key, (c, s) in CASE_KEYS.items()}}
+
+
+def engine_is_printed(printed: dict) -> list[Check]:
+    """The engine's six cases (certify.dynamics.reduction.P0, Q0, CASES) are the printed ones:
+    the same p(0), q(0), next pair and p(t1), as polynomials in cos, sin of θ, φ."""
+    args = (T.cθ, T.sθ, T.cφ, T.sφ)
+    checks = []
+    for c in LETTERS:
+        ok = (T.vector(printed[f"p0_{c}"]) == sp.Matrix(R.P0[c](*args[:2])) and
+              (T.vector(printed[f"q0_{c}"]) - sp.Matrix(R.Q0[c](*args))).applyfunc(sp.expand) == sp.zeros(3, 1))
+        for key, (c2, s) in CASE_KEYS.items():
+            if c2 != c:
+                continue
+            pair, _K, vec, _radicand = (x.strip() for x in printed[key].split("|"))
+            j, p1 = R.CASES[(c, s)]
+            ok = ok and PAIR.get(pair) == j and \
+                (T.vector(vec) - sp.Matrix(p1(*args))).applyfunc(sp.expand) == sp.zeros(3, 1)
+        checks.append(Check(f"contact {c}: the map steps with the printed p(0), q(0), next pair and p(t1)", ok,
+                            [f"`{printed[k]}`" for k in (f"p0_{c}", f"q0_{c}", f"{c}_pos", f"{c}_neg")]))
+    return checks
+
+
+def trig_agrees(P: R.Plane, P1: R.Plane, r, prec: int = 128, last: list | None = None) -> bool:
+    """The trigonometric step from (θ, φ) of the physical state P gives the contact of
+    the next physical state P1 and balls of cos, sin of θ, φ overlapping P1's.  (θ, φ
+    are functions of the contact and the plane: p ∝ n ∧ e_i, q̂ ∝ |n|² e_i − n_i n.)
+    ``last``: [state, its angles at ``prec``] from the previous call along the orbit,
+    where P1 was this call's P (each state ends one step and starts the next), or
+    [None, None]; updated here."""
+    last = [None, None] if last is None else last
+
+    def angles(Q: R.Plane) -> R.Angles:
+        if last[0] is not Q:
+            last[1], last[0] = R.angles(Q), Q
+        return last[1]
+    with precision(prec):
+        T, X = R.trig_step(angles(P), r), angles(P1)
+    return T.letter == P1.letter and all(a.overlaps(b) for a, b in
+                                         ((T.ct, X.ct), (T.st, X.st), (T.cp, X.cp), (T.sp, X.sp)))
+
+
+def case_is_the_map(key: str, spec: str, p0, q0) -> Check:
+    """One printed case (contact i, sign of cos φ) for every θ ∈ ]0,π/2[ and φ in its range:
+    the printed step of S7.1 (next pair = the gap the ray closes, p(t1) its hit point in
+    the open face, q(t1) ⊥ p(t1) with q_j(t1) > 0), and it is the projective map's step:
+    with u = p(0) ∧ q(0), u_i u_j > 0 (the map's rule for the next contact j) and
+    p(t1) ∧ K q(0), the normal of Span(p(t1), q(t1)), is a positive multiple of cof(K) u.
+    The same contact and plane give the same θ', φ' (p(t1) is the position in the open
+    face, q(t1) the unit tangent with q_j > 0)."""
+    contact, s = CASE_KEYS[key]
+    label = f"contact {contact}, {RANGE[s]}"
+    steps = six_case(key, spec, p0, q0, Q_T1)
+    pair, letter, V_text, _radicand = (x.strip() for x in spec.split("|"))
+    j = PAIR.get(pair)
+    if j is None or letter not in SECTION2 or not all(c.holds for c in steps):
+        return Check(f"{label}: the printed step (as in S7.1)", False,
+                     [f"{'✓' if c.holds else '✗'} {c.statement}" for c in steps])
+    H, K, i = T.hypotheses(s), SECTION2[letter], INDEX[contact]
+    u0 = p0.cross(q0)
+    rule = T.has_sign(u0[i] * u0[INDEX[j]], 1, H)
+    plane = T.positively_proportional(vec(V_text).cross(K * q0), K.adjugate().T * u0, H)
+    return Check(f"{label}: the printed step (S7.1) is the projective map's step for every θ, φ in the case: the "
+                 f"next contact {j} (u_{i + 1} u_{INDEX[j] + 1} > 0, u = p(0) ∧ q(0)) and the plane, p(t1) ∧ "
+                 f"{letter}q(0) being a positive multiple of cof({letter}) u", rule.holds and plane.holds,
+                 [f"✓ {c.statement}" for c in steps] + [f"u = `{T.show(u0)}`"] + rule.evidence + plane.evidence)
+
+
+@certificate("S7.2", "l. 877-929",
+             "The trigonometric reduction (the six printed cases) reproduces the next collision of the particle "
+             "system: same contact, same θ and φ, at every collision.",
+             needs=["section4_data", "reduction_cones"], printed=PRINTED_S7,
+             expect=PASS,
+             mutants=[replaced("a_pos", "2-3", "3-4", "another pair for a, cos φ > 0"),
+                      replaced("c_neg", "sin(θ)*sin(φ)", "cos(θ)*sin(φ)", "a factor of the c, cos φ < 0 case"),
+                      replaced("q0_b", "-sin(θ)*cos(φ)", "sin(θ)*cos(φ)", "a sign of q(0) for contact b")])
+def trigonometric_map_agrees_with_dynamics(section4_data, reduction_cones, **printed):
+    """For every collision: each printed case is, for every θ, φ in its range, the step of
+    the projective map (:func:`case_is_the_map`), and the particles follow the projective
+    map (the step and particle lemmas on the six cones, certify.dynamics.cones).  The
+    engine's trigonometric map is the printed one.  Supporting evidence: at each collision
+    of the exact runs, one step of the six cases from θ, φ of the exact state as certified
+    balls (128 bits) against θ, φ of the exact state k+1."""
+    checks = engine_is_printed(printed)
+    frames = {c: (T.vector(printed[f"p0_{c}"]), T.vector(printed[f"q0_{c}"])) for c in LETTERS}
+    checks += [case_is_the_map(key, printed[key], *frames[c]) for key, (c, _s) in CASE_KEYS.items()]
+    checks.append(Check("the particles follow the projective map: on each of the six cones of states they collide "
+                        "next at its contact, or never, and then span its plane (step and particle lemmas, S11)",
+                        RC.dynamics_is_proven(reduction_cones)))
+    compared = agree = undecided = 0
+    if all(c.holds for c in checks[:3]):
+        for d in section4_data:
+            last = [None, None]
+            for P, P1 in zip(d.planes[0], d.planes[0][1:]):
+                compared += 1
+                try:
+                    agree += trig_agrees(P, P1, d.r, last=last)
+                except sim.Undecided:
+                    undecided += 1
+    evidence = [supporting(f"at {compared} collisions of {len(section4_data)} exact runs the six cases give the next "
+                           f"contact and (θ, φ) (balls overlapping): {agree} agree, {undecided} undecided.")]
+    return conclude(checks, evidence=evidence)
+
+
+# ================================================================ 4.2.2 Spherical reduction mapping, vectorial version (l. 931-987): S8.1, S8.2
+# ================================================================ S8.1
+def orientation_axes(text: str) -> dict:
+    """'a: y, b: z, c: x' as {contact: e_t}."""
+    pairs = dict(item.split(":") for item in text.replace(" ", "").split(","))
+    return {c: UNIT[f"e{pairs[c]}"] for c in pairs}
+
+
+def not_normal(u, p, H: T.Signs, tφ: str) -> list[str]:
+    """Evidence that u is not normal to p: u·p ≢ 0, with its value at a rational point of H."""
+    d = u.dot(p)
+    pt = T.point("1/2", tφ, r="1/3")
+    return T.is_zero(d).evidence + [f"at cos θ = {pt[cθ]}, cos φ = {pt[cφ]}, r = 1/3: ũ(1)·p(1) = {T.at(d, pt)}"
+                                    f" (hypotheses hold there: {'yes' if T.satisfied(H, pt) else 'no'})"]
+
+
+def trilinear(text: str, letter: str, u0, p1, q0, H: T.Signs, axis, tφ: str) -> Check:
+    """The printed ũ(1) is a positive multiple of p(1) ∧ K q(0) (the normal of P(1) oriented
+    as p ∧ q), and that normal has e_t·u > 0 for the new contact."""
+    K = SECTION2[letter]
+    u1 = T.parse(text, u0=u0, **UNIT, **SECTION2)
+    normal = p1.cross(K * q0)
+    prop = T.positively_proportional(u1, normal, H)
+    orient = T.has_sign(axis.dot(normal), 1, H)
+    ev = prop.evidence + orient.evidence + ([] if prop.holds else not_normal(u1, p1, H, tφ))
+    return Check(f"l. 976-980: ũ(1) = `{text}` is a positive multiple of p(1) ∧ {letter}q(0), "
+                 f"the normal of P(1) with e_t·u(1) > 0 ({RANGE[H.sign(cφ)]})", prop.holds and orient.holds, ev)
+
+
+@certificate("S8.1", "l. 931-987",
+             "The vectorial version: u(0) = p(0) ∧ q(0) as printed; the printed u(0) ∧ e_y, u(0) ∧ e_z, u(0) ∧ e_x, "
+             "u(0) ∧ p(0) = q(0); e_x ∧ u(0) ∝ p(0); the two trilinear formulas for ũ(1) with the convention e_t·u ≥ 0.",
+             printed=dict(p0=CONTACT_P0["a"], q0=CONTACT_Q0["a"], u0=U0, ey_dot_u0=EY_DOT_U0, orientation=ORIENTATION,
+                          u0_wedge_ey=U0_WEDGE["ey"], u0_wedge_ez=U0_WEDGE["ez"], u0_wedge_ex=U0_WEDGE["ex"],
+                          u0_wedge_p0=U0_WEDGE["p0"], trilinear_b=TRILINEAR_B, trilinear_c=TRILINEAR_C),
+             expect=ERRATUM,
+             mutants=[replaced("u0", "-cos(θ)*sin(φ)", "cos(θ)*sin(φ)", "a sign of u(0)"),
+                      overridden({"orientation": "a: y, b: x, c: z"}, "another orientation convention")])
+def vectorial_version(p0, q0, u0, ey_dot_u0, orientation, u0_wedge_ey, u0_wedge_ez, u0_wedge_ex, u0_wedge_p0,
+                      trilinear_b, trilinear_c):
+    """Cross products as identities; orientations as positive ratios; a wrong plane by a rational witness."""
+    p0, q0, u0 = vec(p0), vec(q0), vec(u0)
+    pos, neg, H = T.hypotheses(1), T.hypotheses(-1), T.hypotheses()
+    p1b, p1c = hit_point(p0, q0, 1), hit_point(p0, q0, 2)
+    Wy, Wz, Wx, Wp = (vec(x) for x in (u0_wedge_ey, u0_wedge_ez, u0_wedge_ex, u0_wedge_p0))
+    axes = orientation_axes(orientation)
+    ey_u = T.parse(ey_dot_u0)
+    checks = [
+        identity("l. 943-947: p(0) ∧ q(0) is the printed u(0)", p0.cross(q0), u0),
+        combined(f"l. 949: e_y·u(0) = `{ey_dot_u0}` ≥ 0, and e_t·u(0) ≥ 0 with the printed convention t = ({orientation})",
+                 [T.equal(T.E_Y.dot(u0), ey_u), T.has_sign(ey_u, 1, H), T.has_sign(axes["a"].dot(u0), 1, H)]),
+        combined("l. 958-960: u(0) ∧ e_y is the printed vector, a positive multiple of p(1) when the next collision is b",
+                 [T.equal(u0.cross(T.E_Y), Wy), T.positively_proportional(Wy, p1b, pos)]),
+        combined("l. 962-963: u(0) ∧ e_z is the printed vector, a positive multiple of p(1) when the next collision is c",
+                 [T.equal(u0.cross(T.E_Z), Wz), T.positively_proportional(Wz, p1c, neg)]),
+        combined("l. 967-969: u(0) ∧ e_x is the printed vector, of orientation opposite to p(0); e_x ∧ u(0) ∝ p(0) > 0",
+                 [T.equal(u0.cross(T.E_X), Wx), T.positively_proportional(-Wx, p0, H),
+                  T.positively_proportional(T.E_X.cross(u0), p0, H)]),
+        combined("l. 971: u(0) ∧ p(0) is the printed vector, which is q(0)", [T.equal(u0.cross(p0), Wp), T.equal(Wp, q0)]),
+        trilinear(trilinear_b, "B", u0, p1b, q0, pos, axes["b"], "1/2"),
+    ]
+    printed_c = trilinear(trilinear_c, "C", u0, p1c, q0, neg, axes["c"], "2")
+    fixed_c = statements.corrected(trilinear_c, *TRILINEAR_C_CORRECTION)
+    corrected_c = (trilinear(fixed_c, "C", u0, p1c, q0, neg, axes["c"], "2") if fixed_c else
+                   Check(f"the stated correction `{TRILINEAR_C_CORRECTION[0]}` → `{TRILINEAR_C_CORRECTION[1]}` "
+                         f"applies to the printed `{trilinear_c}`", False))
+    return concluded(checks + [printed_c], checks + [corrected_c], kind=MISPRINT, misprint=E_Y_FOR_E_Z,
+                    note="Contacts: the paper writes k = 1, 2, 3 for the contacts a, b, c in the orientation convention "
+                         "(l. 949), where k also indexes the collisions.  For a collision c, p(1) ∝ u(0) ∧ e_z "
+                         "(l. 962), so the factor [u(0) ∧ e_y] of l. 980 must be [u(0) ∧ e_z].")
+
+
+# ---------------------------------------------------------------- S8.2
+# transcribed once above (S8.1)
+PRINTED_S8 = dict(orientation=ORIENTATION, to_b=TRILINEAR_B, to_c=TRILINEAR_C)
+
+
+def trilinear_on_cone(text: str | None, st: RC.Step) -> T.Result:
+    """The formula ``text`` (the relabelled one when None) at u = n is a positive multiple
+    of the next normal n' = p' ∧ K_j w of the cone's step, for every state of the cone."""
+    u = tuple(RC.N)
+    ut = R.formula(text)(u, r) if text else R.trilinear(st.contact, st.following, u, r)
+    return T.positively_proportional(sp.Matrix(ut), st.normal, st.H)
+
+
+def not_normal_at(text: str, st: RC.Step) -> tuple[bool, str]:
+    """An exact state of the cone (integer normal, r = 1/3) where the formula is not
+    parallel to the next normal: a counterexample."""
+    n = RC.representative(st)
+    at = {**dict(zip(RC.N, n)), r: sp.Rational(1, 3)}
+    ut = sp.Matrix(R.formula(text)(n, sp.Rational(1, 3)))
+    n1 = st.normal.xreplace(at)
+    wedge = ut.cross(n1)
+    return (not wedge.is_zero_matrix, f"at n = {n} (a state of the cone {st.label}), r = 1/3: ũ(1) = "
+                                      f"{T.show(ut)}, the next normal {T.show(n1)}, their cross product {T.show(wedge)}")
+
+
+@certificate("S8.2", "l. 931-987",
+             "The vectorial reduction reproduces the next collision of the particle system: u(0) = p(0) ∧ q(0), "
+             "the printed trilinear formulas give u(1) ∝ p(1) ∧ q(1), with e_t · u(k) ≥ 0.",
+             needs=["section4_data", "reduction_cones"], printed=PRINTED_S8,
+             expect=ERRATUM,
+             mutants=[replaced("to_b", "ey", "ez", "another axis in the b formula"),
+                      replaced("orientation", "a: y", "a: z", "another orientation for a"),
+                      replaced("to_b", "cross(ex, u0)", "cross(u0, ex)", "the cross product reversed")])
+def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientation, to_b, to_c):
+    """For every state, on the six cones of states (certify.dynamics.cones): right
+    after a collision, p ∧ q = α p ∧ w = αρ n (α, ρ > 0), so the orientation holds when
+    n_t > 0 on every cone; the trilinear formula at u = n is a positive multiple of the
+    next normal n' = p' ∧ K_j w, which is p(1) ∧ q(1) up to a positive factor whatever
+    the radial part (the particle lemma).  The printed formulas are for the contact a;
+    the other contacts use the relabelled formula (:func:`certify.dynamics.reduction.trilinear`,
+    "in a similar manner", l. 987).  A printed formula that fails is refuted at an exact
+    state of its cone.  The exact runs are supporting evidence."""
+    axes = {c: [k for k in range(3) if e[k]][0] for c, e in orientation_axes(orientation).items()}
+    cones = reduction_cones
+    lemmas = RC.dynamics_is_proven(cones)
+    orient = [T.has_sign(RC.N[axes[c]], 1, st.H) for (c, _s), st in cones.items()]
+    a_b, a_c = cones[("a", 1)], cones[("a", -1)]
+    on_b, on_c = trilinear_on_cone(to_b, a_b), trilinear_on_cone(to_c, a_c)
+    relabelled = [trilinear_on_cone(None, st) for st in cones.values()]
+    premise = "; with the step and particle lemmas on the six cones (S11)"
+    printed = [Check(f"u(k) = p(k) ∧ q(k) = αρ n satisfies the orientation e_t · u(k) > 0 (t = {orientation}) on every "
+                     "cone of states", lemmas and all(orient), [e for o in orient for e in o.evidence[:1]]),
+               Check(f"contact a, next b: `{to_b}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
+                     lemmas and a_b.following == "b" and on_b.holds, on_b.evidence),
+               Check(f"contact a, next c: `{to_c}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
+                     lemmas and a_c.following == "c" and on_c.holds,
+                     on_c.evidence + ([] if on_c.holds else [not_normal_at(to_c, a_c)[1]])),
+               Check(f"every contact: the relabelled formula [u ∧ e_j] ∧ [K_j(u ∧ [e_i ∧ u])] ∝ p(1) ∧ q(1), "
+                     f"positively, for every state{premise}", lemmas and all(relabelled),
+                     [e for x in relabelled for e in x.evidence[:1]])]
+    corrected = []
+    fixed = statements.corrected(to_c, *TRILINEAR_C_CORRECTION)     # the correction stated once, for S8.1 too
+    if not printed[2].holds and fixed:
+        on_fixed = trilinear_on_cone(fixed, a_c)
+        refuted, witness = not_normal_at(to_c, a_c)
+        corrected = [printed[0], printed[1],
+                     Check(f"contact a, next c, with p(1) ∝ u(0) ∧ e_z (as in l. 962): `{fixed}` ∝ p(1) ∧ q(1), "
+                           f"positively, for every state{premise}; the printed one is refuted at an exact state",
+                           lemmas and a_c.following == "c" and on_fixed.holds and refuted,
+                           on_fixed.evidence + [witness], corrects=printed[2]), printed[3]]
+    evidence = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
+    return conclude(printed, corrected, evidence=evidence, kind=MISPRINT, misprint=E_Y_FOR_E_Z)
+
+
+def tally_runs(section4_data, orientation, to_b, to_c) -> str:
+    """At each collision k of the exact runs: ũ(k+1) from u(k) = p(k) ∧ q(k) against
+    p(k+1) ∧ q(k+1), and the orientation of u(k)."""
+    t = {c: [k for k in range(3) if e[k]][0] for c, e in orientation_axes(orientation).items()}
+    formulas = {"b": R.formula(to_b), "c": R.formula(to_c)}
+    tally = {"a→b": [0, 0], "a→c": [0, 0], "relabelled": [0, 0]}
+    oriented = [0, 0]
+    for d in section4_data:
+        contacts = [d.letter] + d.runs[0].events
+        for L, L1, u, u1 in zip(contacts, contacts[1:], d.normals, d.normals[1:]):
+            oriented[0] += 1
+            oriented[1] += u[t[L]] > 0
+            key = f"a→{L1}" if L == "a" else "relabelled"
+            ut = formulas[L1](u, d.r) if L == "a" else R.vectorial_step(L, u, d.r)[1]
+            tally[key][0] += 1
+            tally[key][1] += R.cross(ut, u1) == (0, 0, 0) and R.dot(ut, u1) > 0
+    return (f"on the exact runs, the orientation holds at {oriented[1]} of {oriented[0]} states, and the printed or "
+            "relabelled formula gives a positive multiple of p(k+1) ∧ q(k+1) at " +
+            ", ".join(f"{v[1]} of {v[0]} collisions {k}" for k, v in tally.items()) + ".")
