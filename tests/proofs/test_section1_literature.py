@@ -1,4 +1,5 @@
-"""T26 (l. 323-325): 5-2√6 is also the (upper stability) threshold of (ab)^3(cb)^3."""
+"""T26 (Remark 3.2, l. 323-325): 5-2√6 is also the (upper stability) threshold of (ab)^3(cb)^3, read with
+section1_literature.expand_pattern (which L6 uses too)."""
 import pytest
 
 from proofs import section1_literature as T
