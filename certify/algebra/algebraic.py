@@ -185,6 +185,7 @@ class Algebraic:
                 c = self.p.coeffs()
                 self.lo = self.hi = Q(-c[0], c[1])
             self.refine((self.hi - self.lo) / 2)
+        raise AssertionError("unreachable: itertools.count() does not end")
 
     def __float__(self) -> float:
         # relative, not absolute, accuracy (a width of 2^-60 is useless near 0)
@@ -251,7 +252,7 @@ class Algebraic:
     def __eq__(self, other):
         return self._cmp(other) == 0
 
-    def __lt__(self, other):
+    def __lt__(self, other) -> bool:
         return self._cmp(other) < 0
 
     def __hash__(self):
@@ -319,7 +320,7 @@ def _root_ball(p, lo, hi, prec: int):
             _ROOTS.clear()
         with precision(prec + GUARD + 16):
             try:
-                roots = [c.real for c, _m in flint.fmpz_poly(p).complex_roots() if c.imag.is_zero()]
+                roots = [c.real for c, _m in flint.fmpz_poly(p).complex_roots() if c.imag.is_zero()]  # type: ignore[misc, has-type]  # stub says list[acb]; it returns (acb, multiplicity) pairs
             except (ValueError, ArithmeticError):
                 roots = []
         _ROOTS[key] = roots
@@ -392,7 +393,7 @@ def _enclosures(p, prec: int) -> list:
         out = []
         with precision(prec + GUARD):
             try:
-                roots = [c.real for c, _m in flint.fmpz_poly(p).complex_roots() if c.imag.is_zero()]
+                roots = [c.real for c, _m in flint.fmpz_poly(p).complex_roots() if c.imag.is_zero()]  # type: ignore[misc, has-type]  # stub says list[acb]; it returns (acb, multiplicity) pairs
             except (ValueError, ArithmeticError):
                 roots = []
         for z in roots:
@@ -464,7 +465,7 @@ def sign_intervals(poly, lo, hi) -> list[tuple[object, object, int]]:
     P = flint.fmpq_poly(poly) if not isinstance(poly, flint.fmpq_poly) else poly
     roots = Algebraic.roots(primitive(P), lo, hi)
     ends = [Algebraic.rational(lo)] + roots + [Algebraic.rational(hi)]
-    out = []
+    out: list[tuple[object, object, int]] = []
     for a, b in zip(ends, ends[1:]):
         a.refine(Q(1, 2 ** 20))
         b.refine(Q(1, 2 ** 20))

@@ -10,13 +10,14 @@ through a float: two roots that agree to 20 digits are still ordered correctly.
 from __future__ import annotations
 
 from contextlib import contextmanager
-from typing import Callable
+from typing import Callable, TypeVar
 
 import flint
 
 from certify.errors import UNDECIDED
 
 GUARD = 30          # extra working bits over the precision of the inputs
+T = TypeVar("T")    # what an attempt of :func:`decide` answers
 
 
 @contextmanager
@@ -31,8 +32,8 @@ def precision(bits: int | None):
         flint.ctx.prec = old
 
 
-def decide(attempt: Callable[[int], object], prec: int = 128, maxprec: int = 1024,
-           undecided: Callable[[object], bool] = lambda v: v == UNDECIDED):
+def decide(attempt: Callable[[int], T], prec: int = 128, maxprec: int = 1024,
+           undecided: Callable[[T], bool] = lambda v: v == UNDECIDED):
     """``attempt(prec)`` at prec, 2·prec, ... ≤ maxprec, each under a working precision
     of prec + GUARD bits; the first answer that is not ``undecided``, else the last."""
     answer = None

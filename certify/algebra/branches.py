@@ -122,9 +122,11 @@ class Condition:
     """g = N/D with N = N₀ + N₁√Δ, D = D₀ + D₁√Δ, over Q[r, λ]; built once per (g, x)."""
 
     _cache: dict = {}
+    degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
 
     def __init__(self, name, N, D, delta, c):
         self.name, self.N, self.D, self.delta, self.c = name, N, D, delta, c
+        self.degenerate = []
         self.terms = {k: ring_terms(p) for k, p in
                       (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
 
@@ -224,6 +226,8 @@ class Lazy(Sequence):
     """A list of known length whose entries are computed on first access and kept:
     a sign table computes only the signs its reader asks for (the same values as an
     eager table, entry by entry)."""
+
+    _done: dict[int, object]
 
     def __init__(self, n: int, entry):
         self._n, self._entry, self._done = n, entry, {}
@@ -432,7 +436,7 @@ class Spectrum:
         R = primitive(resultant_lambda(H, e))
         if R.is_zero():
             raise ArithmeticError(f"{cond.name}: a factor vanishes on a whole branch")
-        cond.degenerate = [d for d in getattr(cond, "degenerate", []) if d[0] != label] + [(label, e)]
+        cond.degenerate = [d for d in cond.degenerate if d[0] != label] + [(label, e)]
         return R
 
     def critical_values(self, cond: Condition | None, lo, hi) -> list[Algebraic]:
@@ -443,6 +447,7 @@ class Spectrum:
         for label, e in (cond.labelled_norms() if cond is not None else []):
             R = self.resultant(e)
             if R.is_zero():
+                assert cond is not None  # e is one of cond's norms
                 R = self._resultant_off_common_factor(mpoly_to_ring(e), cond, label)
             polys.append(R)
         lo, hi = _alg(lo), _alg(hi)
@@ -488,7 +493,7 @@ class Spectrum:
 
         A branch is a root of G at the sample iff the degenerate norm vanishes there
         (elsewhere its zeros are critical values): decided exactly in Q[λ]."""
-        degenerate = getattr(cond, "degenerate", None)
+        degenerate = cond.degenerate
         if not degenerate:
             return evaluate_sign(cond, t, L)
         on = {label for label, e in degenerate if sign_at(_at_r(e, t), L) == 0}

@@ -40,7 +40,7 @@ def kpoly(e, m: flint.fmpq_poly) -> list[flint.fmpq_poly]:
     else:
         terms = [(i, j, Q(int(sp.numer(c)), int(sp.denom(c)))) for (i, j), c in sp.Poly(expr(e), lam, r).terms()]
     degree = max((i for i, _j, _c in terms), default=0)
-    coeffs = [dict() for _ in range(degree + 1)]
+    coeffs: list[dict[int, flint.fmpq]] = [dict() for _ in range(degree + 1)]
     for i, j, c in terms:
         coeffs[degree - i][j] = c
     return _strip([reduce(_from_dict(d), m) for d in coeffs])

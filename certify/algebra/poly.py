@@ -149,7 +149,7 @@ def irreducible_factors(p: flint.fmpz_poly) -> list[tuple[flint.fmpz_poly, int]]
 def _show_integer_poly(p: flint.fmpz_poly) -> str:
     """:func:`show` of an integer polynomial in r, written directly (the very text SymPy's
     printer gives, descending powers, without building an expression)."""
-    out = []
+    out: list[str] = []
     for k in range(p.degree(), -1, -1):
         c = int(p[k])
         if c == 0:
@@ -245,7 +245,7 @@ def ring_to_mpoly(p: PolyElement) -> flint.fmpz_mpoly:
     """A polynomial in λ, r, s as ``fmpz_mpoly`` in (r, λ, s), times a positive integer
     clearing the denominators (signs are kept)."""
     den = _lcm([int(c.denominator) for c in p.values()] or [1])
-    terms = {}
+    terms: dict[tuple[int, ...], int] = {}
     for (el, er, ex, eu, ev, es), c in p.terms():
         if ex or eu or ev:
             raise ValueError("polynomial still depends on x, u or v")
@@ -324,7 +324,7 @@ class Frac:
         g = Frac.of(g)
         return self.num == g.num and self.den == g.den
 
-    __hash__ = None
+    __hash__ = None  # type: ignore[assignment]  # unhashable on purpose; typeshed types object.__hash__ as a method
 
     def __neg__(self):
         return Frac(-self.num, self.den, True)
@@ -384,7 +384,7 @@ def _lr_from_ring(p: PolyElement):
         q = int(c.denominator)
         if q != 1:
             den = den * q // math.gcd(den, q)
-    terms = {}
+    terms: dict[tuple[int, ...], int] = {}
     for (el, er, ex, eu, ev, es), c in p.terms():
         if ex or eu or ev or es:
             raise ValueError("polynomial depends on x, u, v or s, not only on λ, r")
@@ -395,7 +395,7 @@ def _lr_from_ring(p: PolyElement):
 def ring_to_lrq(p: PolyElement) -> flint.fmpq_mpoly:
     """A polynomial of RING in λ, r only as fmpq_mpoly in (λ, r) (lex, λ first: the
     remainder of ``divmod`` by a polynomial monic in λ is the remainder in λ over Q[r])."""
-    terms = {}
+    terms: dict[tuple[int, ...], flint.fmpq] = {}
     for (el, er, *rest), c in p.terms():
         if any(rest):
             raise ValueError("polynomial depends on x, u, v or s")
@@ -434,7 +434,7 @@ def flint_poly_to_frac(p) -> Frac:
         num = p.numer()
     else:
         den, num = flint.fmpz(1), p
-    terms = {(0, k): int(c) for k, c in enumerate(num.coeffs()) if c}
+    terms: dict[tuple[int, ...], int] = {(0, k): int(c) for k, c in enumerate(num.coeffs()) if c}
     return Frac(LRCTX.from_dict(terms), LRCTX.from_dict({(0, 0): int(den)}))
 
 

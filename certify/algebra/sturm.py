@@ -88,7 +88,7 @@ def sign_changes(seq, a) -> int:
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
 
-_AT_INFINITY: dict = {}          # id of a sequence -> (sequence, {±1: sign changes})
+_AT_INFINITY: dict[int, tuple[object, dict[int, int]]] = {}  # id of a sequence -> (sequence, {±1: sign changes})
 caches.register(_AT_INFINITY.clear)
 
 
@@ -305,7 +305,8 @@ def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
     from .poly import primitive, squarefree_part
     P = squarefree_part(primitive(flint.fmpq_poly(p)))
     out = []
-    for c, _m in P.complex_roots():
+    roots: list[tuple[flint.acb, int]] = P.complex_roots()  # type: ignore[assignment]  # stub says list[acb]; it returns (acb, multiplicity) pairs
+    for c, _m in roots:
         if not c.imag.is_zero():
             continue
         x = c.real
@@ -316,7 +317,7 @@ def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
             out.append(x)
         elif not outside:
             raise ValueError(f"root {x} not separated from the interval ends")
-    out = ordered(out)
-    if out is None:
+    increasing = ordered(out)
+    if increasing is None:
         raise ValueError("two real root balls overlap: their order is undecided")
-    return out
+    return increasing

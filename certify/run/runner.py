@@ -295,7 +295,7 @@ def select(ids=None) -> list[Certificate]:
 class Context:
     """The shared quantities of one run, each computed once, on demand."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         self.values: dict[str, object] = {}
         self.seconds: dict[str, float] = {}
 
@@ -412,8 +412,10 @@ def _worker_start(queue) -> None:
 
 def _worker_run(k: int):
     """In a worker: run unit ``k`` of the plan; ids instead of certificates go back."""
+    queue = _DONE
+    assert queue is not None  # set by _worker_start, the initializer of every worker
     try:
-        done, seconds = run_unit(_PLAN[k], report=lambda cert: _DONE.put(cert.id))
+        done, seconds = run_unit(_PLAN[k], report=lambda cert: queue.put(cert.id))
     except KeyboardInterrupt:  # raised by a certificate itself
         return None
     return [(cert.id, outcome, total, shared) for cert, outcome, total, shared in done], seconds
