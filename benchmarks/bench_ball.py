@@ -71,7 +71,8 @@ def horizon_in(r, seconds=10.0, first=1000):
 
 
 def table(prec=2048, marks=(500, 1500), seconds=10.0) -> list[str]:
-    lines = [f"| regime | r | µs/coll. at {prec} bits | " + " | ".join(f"bits lost after {k} (per coll.)" for k in marks)
+    lines = [f"| regime | r | µs/coll. at {prec} bits | "
+             + " | ".join(f"bits lost after {k} (per coll.)" for k in marks)
              + f" | certified in {seconds:g} s (bits) |", "|---|---|---|" + "---|" * len(marks) + "---|"]
     for name, r in REGIMES.items():
         us, lost, done = bits_lost(r, prec, marks)

@@ -67,7 +67,8 @@ def bench_census(lengths=LENGTHS, jobs: int | None = None, state=None) -> list[s
     own = state is None
     tmp = tempfile.TemporaryDirectory() if own else None
     state = Path(tmp.name) / "state.jsonl" if own else Path(state)
-    rows = [f"Census on {jobs} local process(es), each bound resuming the previous one (state {'temporary' if own else state}).",
+    rows = [f"Census on {jobs} local process(es), each bound resuming the previous one "
+            f"(state {'temporary' if own else state}).",
             "", "| L | words | new words | step wall s | cumulative wall s |", "|---:|---:|---:|---:|---:|"]
     total, before = 0.0, 0
     try:

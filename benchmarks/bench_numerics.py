@@ -54,7 +54,7 @@ import mpmath  # noqa: E402
 import numba  # noqa: E402
 import numpy as np  # noqa: E402
 
-from certify.numerics import engines, kernel, iterate, paper_grid, rules  # noqa: E402
+from certify.numerics import engines, iterate, kernel, paper_grid, rules  # noqa: E402
 from certify.run import files  # noqa: E402
 
 BENCH = ROOT / "reports" / "BENCH.md"
@@ -120,7 +120,8 @@ def ball_tables(quick):
             subprocess.run(["tar", "-x", "-C", tmp], input=archive.stdout, check=True)
             code = ("import sys; sys.path.insert(0, sys.argv[1]); import runpy; "
                     "m = runpy.run_path(sys.argv[2]); print('\\n'.join(m['table'](**eval(sys.argv[3]))))")
-            res = subprocess.run([sys.executable, "-c", code, tmp, str(ROOT / "benchmarks" / "bench_ball.py"), repr(kw)],
+            script = str(ROOT / "benchmarks" / "bench_ball.py")
+            res = subprocess.run([sys.executable, "-c", code, tmp, script, repr(kw)],
                                  capture_output=True, text=True, env={**os.environ, "PYTHONPATH": tmp})
             before = res.stdout.strip().splitlines() if res.returncode == 0 else [f"(failed: {res.stderr[-300:]})"]
     return now, before
@@ -282,7 +283,7 @@ def main(argv=None) -> int:
     say("")
     say("Horizon of trust over the orbits of the paper's grid (min / median / max): certified = the collisions the "
         "accumulated error bound proves; measured = the first collision where the word departs from the certified "
-        f"ball word ('>N': none within the N compared):")
+        "ball word ('>N': none within the N compared):")
     for name, r in ORBITS.items():
         for engine, dps in setups_h:
             cert = sorted(horizon[(r, o, engine, dps)][1] for o in grid)

@@ -25,10 +25,10 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:  # run as a script from a source checkout
     sys.path.insert(0, str(ROOT))
 
+from certify.algebra import Q  # noqa: E402
+from certify.algebra.balls import precision  # noqa: E402
 from certify.dynamics import reduction as R  # noqa: E402
 from certify.dynamics import simulate as sim  # noqa: E402
-from certify.algebra.balls import precision  # noqa: E402
-from certify.algebra import Q  # noqa: E402
 
 R_PHYS = Q(1, 20)
 P0, Q0 = (Q(0), Q(3), Q(5)), (Q(2), Q(-7), Q(-9))        # collapses at r = 1/20
@@ -102,8 +102,8 @@ def main(argv=None) -> int:
     P = R.canonical(*PLANE)
     for k in (100, 200, 400, 1000):
         exact_bits = R.orbit(P, R_MAP, k)[-1].bits
-        proj = least_precision(k, lambda prec: R.ball_word(P, R_MAP, k, prec))
-        trig = least_precision(k, lambda prec: trig_word(k, prec)) if k <= 400 else None
+        proj = least_precision(k, lambda prec, k=k: R.ball_word(P, R_MAP, k, prec))
+        trig = least_precision(k, lambda prec, k=k: trig_word(k, prec)) if k <= 400 else None
         print(f"{k} collisions certified in balls: projective map at {proj} bits"
               + (f", trigonometric map at {trig} bits" if trig else "")
               + f"; the exact normal has {exact_bits} bits")

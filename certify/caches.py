@@ -8,7 +8,7 @@ needs to know no module above it.
 """
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 _CLEARS: list[Callable[[], None]] = []
 

@@ -15,7 +15,7 @@ Remark 3.2 (T26, the threshold 5-2√6 of (ab)^3(cb)^3) is in proofs/section3_re
 from __future__ import annotations
 
 import re
-from functools import lru_cache
+from functools import cache
 
 from certify.algebra import Algebraic, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
@@ -43,7 +43,7 @@ def expand_pattern(pattern: str) -> str:
 N_MAX = 6                      # (ab)^n(cb)^n analysed for n = 2..N_MAX (about a minute in all)
 
 
-@lru_cache(maxsize=None)
+@cache
 def pattern(word: str):
     """`certify pattern word` over ]0, 1[ (memoised for the certificates of one process)."""
     return analyse(word)

@@ -11,10 +11,9 @@ import flint
 import sympy as sp
 
 from certify.algebra import parse, r, show, statements, to_fmpq
-from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS, collision_matrix
+from certify.dynamics import simulate as sim
 from certify.run import PASS, Check, certificate, conclude, overridden, replaced, reworded, unread
-
 
 A_PRINTED = "[[-r, 0, 0], [(1+r)/2, 1, 0], [0, 0, 1]]"
 B_PRINTED = "[[1, (1+r)/2, 0], [0, -r, 0], [0, (1+r)/2, 1]]"
@@ -35,7 +34,6 @@ def law_matrix(letter: str) -> sp.Matrix:
     a, b = sp.symbols("a b")
     sol = sp.solve([a + b - (v[i] + v[i + 1]), a - b + r * (v[i] - v[i + 1])], [a, b])
     vp[i], vp[i + 1] = sol[a], sol[b]
-    q = sp.Matrix([v[k + 1] - v[k] for k in range(3)])
     qp = sp.Matrix([vp[k + 1] - vp[k] for k in range(3)])
     # express q' in the basis q: v is determined by q up to a common shift
     shift = sp.Symbol("w")

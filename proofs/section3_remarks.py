@@ -22,15 +22,39 @@ from itertools import product
 import flint
 import sympy as sp
 
-from certify.algebra import (FIELD, Q, X_PLUS, Algebraic, Condition, Lf, RING, divides, eliminate, lam, parse,
-    resultant_lambda, show, show_factored_int, simplest_between, to_fmpz_poly, to_ring)
-from certify.dynamics import simulate as sim
+from certify.algebra import (
+    FIELD,
+    RING,
+    X_PLUS,
+    Algebraic,
+    Condition,
+    Lf,
+    Q,
+    divides,
+    eliminate,
+    lam,
+    parse,
+    resultant_lambda,
+    show,
+    show_factored_int,
+    simplest_between,
+    to_fmpz_poly,
+    to_ring,
+)
 from certify.dynamics import INDEX, candidate, collision_matrix, run_word, simulate
-from certify.patterns import (Analysis, BRANCH_NAMES, Requirement, analyse, census, fmt, prefix_requirements,
-                              vanishes_on_branch)
+from certify.dynamics import simulate as sim
+from certify.patterns import (
+    BRANCH_NAMES,
+    Analysis,
+    Requirement,
+    analyse,
+    census,
+    fmt,
+    prefix_requirements,
+    vanishes_on_branch,
+)
 from certify.run import ERRATUM, PASS, REFUTED_REMARK, Check, certificate, conclude, overridden
 from proofs.section1_literature import expand_pattern
-
 
 # ---------------------------------------------------------------- Remark 3.2 (l. 323-325): 5-2√6 is also the threshold of (ab)^3(cb)^3
 # T26 (Remark 3.2, l. 323-325): "The critical threshold of r, namely
@@ -255,7 +279,7 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
             w = (p.hi.lo - p.lo.hi) / 8
             r0 = simplest_between(p.lo.hi + w, p.hi.lo - w)
             sigma = 1 if R.fixed_point == "x₊" else -1
-            run, prec = sim.run_certified(lambda pr: cand.balls(r0, R.branch, sigma, pr), m + 1)
+            run, prec = sim.run_certified(lambda pr, r0=r0, k=R.branch, sigma=sigma: cand.balls(r0, k, sigma, pr), m + 1)
             dynamic.append((R, r0, run.word))
     want = word[:m] + next
     ev.append("the particle dynamics itself (certify.dynamics.simulate, every collision proven in balls) from the candidate "

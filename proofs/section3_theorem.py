@@ -26,18 +26,68 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from certify.algebra import (BRANCH_NAMES, GUARD, LOWER, MIDDLE, UPPER, Q, Algebraic, Condition, FixedPoint, ball_value,
-    discriminant_lambda, eliminate, flint_real_roots, from_flint, lam, parse, precision, r, roots_in_unit_interval,
-    same_up_to_constant, show, sign_intervals, sign_word, statements, sturm_count, tight, to_field, to_fmpq,
-    to_fmpq_poly, to_fmpz_poly, u, unique_root, v, x)
+from certify.algebra import (
+    BRANCH_NAMES,
+    GUARD,
+    LOWER,
+    MIDDLE,
+    UPPER,
+    Algebraic,
+    Condition,
+    FixedPoint,
+    Q,
+    ball_value,
+    discriminant_lambda,
+    eliminate,
+    flint_real_roots,
+    from_flint,
+    lam,
+    parse,
+    precision,
+    r,
+    roots_in_unit_interval,
+    same_up_to_constant,
+    show,
+    sign_intervals,
+    sign_word,
+    statements,
+    sturm_count,
+    tight,
+    to_field,
+    to_fmpq,
+    to_fmpq_poly,
+    to_fmpz_poly,
+    u,
+    unique_root,
+    v,
+    x,
+)
+from certify.dynamics import A as A_
+from certify.dynamics import B as B_
+from certify.dynamics import C as C_
+from certify.dynamics import candidate, characteristic_polynomial, check_word, fixed_point_ball, reduce_mod, velocities
 from certify.dynamics import simulate as sim
-from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characteristic_polynomial, check_word,
-    fixed_point_ball, reduce_mod, velocities)
 from certify.patterns import Analysis, fmt, prefix_requirements
-from certify.run import (ERRATUM, FALSE_STATEMENT, MISPRINT, PASS, Check, certificate, conclude, count_check,
-                        digits_check, eliminant_check, overridden, quantity, replaced, reworded, unread)
+from certify.run import (
+    ERRATUM,
+    FALSE_STATEMENT,
+    MISPRINT,
+    PASS,
+    Check,
+    certificate,
+    conclude,
+    count_check,
+    digits_check,
+    eliminant_check,
+    overridden,
+    quantity,
+    replaced,
+    reworded,
+    unread,
+)
 
 WORD = "ababcb"
+ZERO = Q(0)                  # an exact 0 (fmpq is immutable: safe as a default argument)
 
 # ---------------------------------------------------------------- as printed
 M_PRINTED = """[[(r - 1)^3*(r^3 - 3*r^2 - 5*r - 9)/64, (r - 1)^2*(r^3 - r^2 + 7*r + 9)/32, (r + 1)^2/4],
@@ -992,7 +1042,7 @@ class Datum:
         f["x"] = fixed_point_ball(f["a"], f["b"], f["c"], f["d"])
         return f
 
-    def balls(self, prec: int, dx=Q(0), dq=(Q(0), Q(0), Q(0))):
+    def balls(self, prec: int, dx=ZERO, dq=(ZERO, ZERO, ZERO)):
         """(p(0), q(0), r) as balls at ``prec`` bits, x and q shifted by exact rationals."""
         with precision(prec + GUARD):
             R = flint.arb(self.r0)
@@ -1111,7 +1161,7 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                         f"v ∈ {q0[2].str(10, radius=False)}, x₊ ∈ {p0[2].str(10, radius=False)}; "
                         f"{len(run.events)} collisions proven at {prec} bits: "
                         f"{'(' + word + ')^' + str(periods) if ok_word else run.word}; " + "; ".join(ev)
-                        + "; multiplier f'(x₊) = (ad-bc)/(cx₊+d)² ∈ {0}, the paper's q (l. 496) ∈ {1} "
+                        + "; multiplier f'(x₊) = (ad-bc)/(cx₊+d)² ∈ {}, the paper's q (l. 496) ∈ {} "
                           "(f'(x₊) = 1/q)".format(*(z.str(8, radius=False) for z in datum.mobius(256))))
         checks += [
             Check(f"{name} branch: the printed datum repeats {word} for {periods} periods (every collision proven)",

@@ -35,16 +35,31 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from certify.algebra import trig as T
 from certify.algebra import Q, lam, r, show, statements
+from certify.algebra import trig as T
+from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
-from certify.dynamics import INDEX, LETTERS, collision_matrix
-from certify.run import (ERRATUM, MISPRINT, PASS, Check, certificate, check_of, combined, concluded,
-                         conclude, identity, overridden, quantity, replaced, result_check, reworded, unread)
+from certify.run import (
+    ERRATUM,
+    MISPRINT,
+    PASS,
+    Check,
+    certificate,
+    check_of,
+    combined,
+    conclude,
+    concluded,
+    identity,
+    overridden,
+    quantity,
+    replaced,
+    result_check,
+    reworded,
+    unread,
+)
 from proofs.section2_model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
-
 
 # ================================================================ as printed (l. 518-845)
 cθ, cφ, sθ, sφ = T.cθ, T.cφ, T.sθ, T.sφ  # cos θ, cos φ, sin θ, sin φ
@@ -263,7 +278,7 @@ def call_factors(text: str, fn: str, names: dict) -> list[list[tuple]]:
     for member in T.members(text):
         calls = []
 
-        def record(u, v):
+        def record(u, v, calls=calls):
             calls.append((u, v))
             return T.NAMES[fn](u, v)
         T.parse(member, **{**names, fn: record})
@@ -738,7 +753,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                          for c in cones.values()]))
     compared = same = 0
     for d in section4_data:
-        (run1, run2), k = d.runs, d.realised
+        k = d.realised
         for P1, P2, P in zip(d.planes[0][1:k + 1], d.planes[1][1:k + 1], d.orbit[1:k + 1]):
             compared += 1
             same += P1 == P2 == P

@@ -10,19 +10,29 @@ and shared quantities are used here: the data, the cones of states).
 """
 from __future__ import annotations
 
-
 import sympy as sp
 
-from certify.algebra import trig as T
 from certify.algebra import precision, r, statements
+from certify.algebra import trig as T
+from certify.dynamics import INDEX, LETTERS
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
-from certify.dynamics import INDEX, LETTERS
-from certify.run import (ERRATUM, MISPRINT, PASS, Check, certificate, combined, concluded,
-                         conclude, identity, overridden, replaced, result_check)
-from proofs.section4_1_reduction_theorem import (PAIR, SECTION2, UNIT, cθ, cφ, hit_point, supporting, sφ, vec)
-
+from certify.run import (
+    ERRATUM,
+    MISPRINT,
+    PASS,
+    Check,
+    certificate,
+    combined,
+    conclude,
+    concluded,
+    identity,
+    overridden,
+    replaced,
+    result_check,
+)
+from proofs.section4_1_reduction_theorem import PAIR, SECTION2, UNIT, cθ, cφ, hit_point, supporting, sφ, vec
 
 # ================================================================ as printed (l. 877-987)
 # One misprint, false in S8.1 (the formula) and S8.2 (the reduction it gives): counted once.

@@ -11,19 +11,45 @@ states are :mod:`certify.dynamics.cones`.
 """
 from __future__ import annotations
 
-
 import sympy as sp
 
-from certify.algebra import trig as T
 from certify.algebra import statements
+from certify.algebra import trig as T
+from certify.dynamics import INDEX, LETTERS
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
-from certify.dynamics import INDEX, LETTERS
-from certify.run import (ERRATUM, FALSE_STATEMENT, PASS, Check, certificate, combined, concluded,
-                         conclude, identity, overridden, replaced, result_check, reworded, unread)
+from certify.run import (
+    ERRATUM,
+    FALSE_STATEMENT,
+    PASS,
+    Check,
+    certificate,
+    combined,
+    conclude,
+    concluded,
+    identity,
+    overridden,
+    replaced,
+    result_check,
+    reworded,
+    unread,
+)
+from proofs.section4_1_reduction_theorem import (
+    SECTION2,
+    cθ,
+    cφ,
+    hit_point,
+    lemma_check,
+    links,
+    matrices_are,
+    occurrences,
+    recording_matrices,
+    supporting,
+    sθ,
+    sφ,
+    vec,
+)
 from proofs.section4_2_final_expressions import CONTACT_P0, CONTACT_Q0, RANGE, next_gap
-from proofs.section4_1_reduction_theorem import (SECTION2, cθ, cφ, hit_point, lemma_check, links, matrices_are, occurrences, recording_matrices, supporting, sθ, sφ, vec)
-
 
 # ================================================================ as printed (l. 997-1035)
 # ---------------------------------------------------------------- as printed: Proposition 4.4 (l. 1005-1034)

@@ -22,7 +22,17 @@ import numpy as np
 
 import certify.numerics as F
 from certify.numerics import BREAKS, paper_grid
-from certify.run import OBSERVED, Check, certificate, load_findings, observe, overridden, quantity, replaced, section5_figure
+from certify.run import (
+    OBSERVED,
+    Check,
+    certificate,
+    load_findings,
+    observe,
+    overridden,
+    quantity,
+    replaced,
+    section5_figure,
+)
 
 PAPER_FINDINGS = "numerics-paper.json"
 N4_FINDINGS = "numerics-n4.json"

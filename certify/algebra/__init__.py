@@ -19,12 +19,50 @@ ground floor (:mod:`certify.errors`, :mod:`certify.caches`).
 from . import numberfield, statements, trig
 from .algebraic import Algebraic, roots_in_unit_interval, sign_at, sign_intervals, unique_root
 from .balls import GUARD, decide, ends, ordered, precision, tight
-from .branches import (BRANCH_NAMES, LOWER, MIDDLE, UPPER, X_MINUS, X_PLUS, Condition, FixedPoint, SignTable, Spectrum, ball_value,
-                       sign_word, simplest_between)
+from .branches import (
+                       BRANCH_NAMES,
+                       LOWER,
+                       MIDDLE,
+                       UPPER,
+                       X_MINUS,
+                       X_PLUS,
+                       Condition,
+                       FixedPoint,
+                       SignTable,
+                       Spectrum,
+                       ball_value,
+                       sign_word,
+                       simplest_between,
+)
 from .elimination import Elimination, eliminate, show_factored_int
-from .poly import (FIELD, Q, RING, Lf, Rf, discriminant_lambda, divides, expr, from_flint, irreducible_factors, lam, parse,
-                   primitive, r, resultant_lambda, same_up_to_constant, show, squarefree_part, to_field, to_fmpq, to_fmpq_poly,
-                   to_fmpz_poly, to_ring, u, v, x)
+from .poly import (
+                       FIELD,
+                       RING,
+                       Lf,
+                       Q,
+                       Rf,
+                       discriminant_lambda,
+                       divides,
+                       expr,
+                       from_flint,
+                       irreducible_factors,
+                       lam,
+                       parse,
+                       primitive,
+                       r,
+                       resultant_lambda,
+                       same_up_to_constant,
+                       show,
+                       squarefree_part,
+                       to_field,
+                       to_fmpq,
+                       to_fmpq_poly,
+                       to_fmpz_poly,
+                       to_ring,
+                       u,
+                       v,
+                       x,
+)
 from .radicals import radical
 from .statements import StatementError
 from .sturm import checked_real_root_count, count_roots, flint_real_roots, isolate, refine, sturm_count, sturm_sequence
@@ -33,10 +71,13 @@ __all__ = [
     "numberfield", "statements", "trig", "StatementError", "radical",
     "Algebraic", "roots_in_unit_interval", "sign_at", "sign_intervals", "unique_root",
     "GUARD", "decide", "ends", "ordered", "precision", "tight",
-    "BRANCH_NAMES", "LOWER", "MIDDLE", "UPPER", "X_MINUS", "X_PLUS", "Condition", "FixedPoint", "SignTable", "Spectrum", "ball_value", "sign_word", "simplest_between",
+    "BRANCH_NAMES", "LOWER", "MIDDLE", "UPPER", "X_MINUS", "X_PLUS", "Condition", "FixedPoint", "SignTable",
+    "Spectrum", "ball_value", "sign_word", "simplest_between",
     "Elimination", "eliminate", "show_factored_int",
-    "FIELD", "Q", "RING", "Lf", "Rf", "discriminant_lambda", "divides", "expr", "from_flint", "irreducible_factors", "lam",
-    "parse", "primitive", "r", "resultant_lambda", "same_up_to_constant", "show", "squarefree_part", "to_field", "to_fmpq",
+    "FIELD", "Q", "RING", "Lf", "Rf", "discriminant_lambda", "divides", "expr", "from_flint", "irreducible_factors",
+    "lam",
+    "parse", "primitive", "r", "resultant_lambda", "same_up_to_constant", "show", "squarefree_part", "to_field",
+    "to_fmpq",
     "to_fmpq_poly", "to_fmpz_poly", "to_ring", "u", "v", "x",
     "checked_real_root_count", "count_roots", "flint_real_roots", "isolate", "refine", "sturm_count",
     "sturm_sequence",

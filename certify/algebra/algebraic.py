@@ -18,6 +18,7 @@ import sympy as sp
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
+
 from .balls import GUARD, decide, precision
 from .poly import Q, parse, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_count
@@ -46,12 +47,12 @@ class Algebraic:
             raise ValueError("interval does not isolate exactly one root")
 
     @classmethod
-    def rational(cls, a) -> "Algebraic":
+    def rational(cls, a) -> Algebraic:
         a = to_fmpq(a)
         return cls(flint.fmpq_poly([-a, 1]), a, a)
 
     @classmethod
-    def roots(cls, p, a=None, b=None) -> list["Algebraic"]:
+    def roots(cls, p, a=None, b=None) -> list[Algebraic]:
         """The distinct real roots of p in ]a, b[, increasing (Sturm isolation).  The
         isolating intervals are memoised per (p, a, b); each call returns new numbers
         (a number refines its interval in place).
@@ -76,7 +77,7 @@ class Algebraic:
         return [copy.copy(x) for x in made]
 
     @classmethod
-    def surd(cls, a, b, n) -> "Algebraic":
+    def surd(cls, a, b, n) -> Algebraic:
         """a + b·√n for rationals a, b and a positive integer n, not a square."""
         a, b = to_fmpq(a), to_fmpq(b)
         # (t - a)^2 - b^2 n = 0
@@ -141,7 +142,7 @@ class Algebraic:
     def is_rational(self) -> bool:
         return self.lo == self.hi
 
-    def refine(self, width) -> "Algebraic":
+    def refine(self, width) -> Algebraic:
         """Shrink the isolating interval below ``width`` (in place) and return self."""
         if not self.is_rational:
             self.lo, self.hi = refine(self.p, self.lo, self.hi, width)
@@ -208,7 +209,7 @@ class Algebraic:
                 return _sign(self.lo - q)
         return 1 if self.lo >= q else -1
 
-    def _cmp(self, other: "Algebraic") -> int:
+    def _cmp(self, other: Algebraic) -> int:
         if not isinstance(other, Algebraic):
             return self.compare_rational(other)
         if other.is_rational:

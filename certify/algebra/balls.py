@@ -9,8 +9,9 @@ through a float: two roots that agree to 20 digits are still ordered correctly.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from contextlib import contextmanager
-from typing import Callable, TypeVar
+from typing import TypeVar
 
 import flint
 

@@ -23,26 +23,45 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
+from math import gcd as _gcd
 
 import flint
 import sympy as sp
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
+
 from . import numberfield as nf
 from .algebraic import Algebraic, sign_at, to_fmpq
 from .balls import GUARD, decide, precision
-from math import gcd as _gcd
-
-from .poly import (Q, RING, mpoly_to_ring, mpoly_to_univariate, ring_to_lrq, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
-                   resultant_lambda, ring_terms, squarefree_part, to_field, to_fmpq_poly, to_ring, x)
+from .poly import (
+    RING,
+    Q,
+    Sf,
+    Xf,
+    coefficients_in,
+    expr,
+    irreducible_factors,
+    lam,
+    mpoly_to_ring,
+    mpoly_to_univariate,
+    primitive,
+    resultant_lambda,
+    ring_terms,
+    ring_to_lrq,
+    ring_to_mpoly,
+    to_field,
+    to_ring,
+    x,
+)
 from .sturm import checked_real_root_count, isolate
 
 SIGN = {1: "+", -1: "−", 0: "0", None: "·"}
 BRANCH_NAMES = ("upper", "middle", "lower")   # the real eigenvalue branches, largest first: index 0, 1, 2
 UPPER, MIDDLE, LOWER = range(3)
 X_PLUS, X_MINUS = "x₊", "x₋"                 # the fixed points (a - d ± √Δ)/(2c) of f, sigma = 1 and -1
-NO_BRANCH = "missing"     # the sign on a branch that does not exist at this r: an answer, not undecided (certify.errors)
+# the sign on a branch that does not exist at this r: an answer, not undecided (certify.errors)
+NO_BRANCH = "missing"
 _MORE_PRECISION = "more precision"     # an attempt of decide() that asks for more bits
 
 
@@ -131,7 +150,7 @@ class Condition:
                       (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
 
     @classmethod
-    def of(cls, name: str, g, fixed_point: FixedPoint | None = None) -> "Condition":
+    def of(cls, name: str, g, fixed_point: FixedPoint | None = None) -> Condition:
         g = expr(g)
         key = (g, fixed_point if (fixed_point is not None and g.has(x)) else None)
         if key not in cls._cache:
@@ -326,7 +345,8 @@ class SignTable:
     def markdown(self, names=BRANCH_NAMES) -> str:
         """The sign table: one row per cell and per critical value."""
         width = max([len(c.signs) for c in self.cells] + [1])
-        head = "| r | sample | real λ | " + " | ".join(names[k] if k < len(names) else f"λ{k}" for k in range(width)) + " |"
+        labels = (names[k] if k < len(names) else f"λ{k}" for k in range(width))
+        head = "| r | sample | real λ | " + " | ".join(labels) + " |"
         rows = [head, "|" + "---|" * (3 + width)]
         for k, cell in enumerate(self.cells):
             signs = [SIGN.get(sg, UNDECIDED) for sg in cell.signs] + [""] * (width - len(cell.signs))
@@ -334,7 +354,8 @@ class SignTable:
                         + " | ".join(signs) + " |")
             if k < len(self.critical):
                 pt = self.points[k]
-                signs = [UNDECIDED] * width if pt is None else [SIGN.get(sg, UNDECIDED) for sg in pt] + [""] * (width - len(pt))
+                signs = ([UNDECIDED] * width if pt is None
+                         else [SIGN.get(sg, UNDECIDED) for sg in pt] + [""] * (width - len(pt)))
                 rows.append(f"| {_short(self.critical[k])} | (critical) | {'' if pt is None else len(pt)} | "
                             + " | ".join(signs) + " |")
         return "\n".join(rows)

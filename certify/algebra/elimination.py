@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from .poly import expr, irreducible_factors, lam, r, resultant_lambda, show, to_fmpz_poly, primitive
+from .poly import expr, irreducible_factors, lam, primitive, r, resultant_lambda, show, to_fmpz_poly
 
 
 @dataclass

@@ -18,7 +18,6 @@ from .balls import GUARD, ordered, precision
 from .poly import Q, expr, lam, r, ring_terms
 
 
-
 def modulus(alpha: Algebraic) -> flint.fmpq_poly:
     """The minimal polynomial of α (r - α for a rational α) as an fmpq_poly in r."""
     if alpha.is_rational:

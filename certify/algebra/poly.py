@@ -9,9 +9,8 @@ python-flint's ``fmpz_poly``/``fmpq_poly`` and ``fmpz_mpoly``.
 from __future__ import annotations
 
 import math
-from functools import reduce
-
 from fractions import Fraction
+from functools import reduce
 
 import flint
 import sympy as sp
@@ -305,7 +304,7 @@ class Frac:
         self.num, self.den = num, den
 
     @staticmethod
-    def of(a) -> "Frac":
+    def of(a) -> Frac:
         if isinstance(a, Frac):
             return a
         if isinstance(a, (int, flint.fmpz)):

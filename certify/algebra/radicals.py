@@ -13,10 +13,10 @@ import flint
 import sympy as sp
 
 from certify.errors import StatementError
+
 from .algebraic import Algebraic
 from .balls import precision
 from .poly import Q, to_fmpz_poly
-
 
 
 def _ball(e: sp.Expr) -> flint.arb:

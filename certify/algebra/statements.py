@@ -44,9 +44,9 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from certify.errors import StatementError  # raised here, caught by the runner: the ground floor's
+
 from .algebraic import Algebraic
 from .poly import r as R_SYMBOL
-
 
 OPS = ("<=", ">=", "!=", "<", ">", "=")
 _OP_RE = re.compile(r"(<=|>=|!=|==|<|>|=)")
@@ -79,7 +79,7 @@ class Names:
     _pattern: re.Pattern | None = None
 
     @classmethod
-    def of(cls, names: dict | None) -> "Names":
+    def of(cls, names: dict | None) -> Names:
         out = cls(dict(names or {}))
         for k, (name, value) in enumerate(out.table.items()):
             key = f"__n{k}"

@@ -25,6 +25,7 @@ from __future__ import annotations
 import flint
 
 from certify import caches
+
 from .balls import ordered, precision
 from .poly import Q, poly_key, to_fmpq
 

@@ -29,12 +29,13 @@ root in ]0, 1[ (Sturm).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cache
 
 import flint
 import sympy as sp
 
-from .poly import lam, parse as parse_paper, r
+from .poly import lam, r
+from .poly import parse as parse_paper
 from .sturm import count_roots
 
 θ, φ = sp.symbols("θ φ")
@@ -123,7 +124,7 @@ def _gens(*exprs) -> tuple:
     return CIRCLE_SYMBOLS + tuple(sorted(others, key=str))
 
 
-@lru_cache(maxsize=None)
+@cache
 def groebner_basis(gens: tuple) -> sp.GroebnerBasis:
     """The reduced Gröbner basis (grevlex) of the circle ideal; it is the two circles
     themselves (their leading terms cθ², cφ² are coprime)."""
@@ -133,7 +134,7 @@ def groebner_basis(gens: tuple) -> sp.GroebnerBasis:
     return G
 
 
-@lru_cache(maxsize=None)
+@cache
 def _field(gens: tuple, order: str = "grevlex"):
     """Q(gens) as SymPy sparse rational functions, and the circles in its ring."""
     K = sp.field(gens, sp.QQ, order)[0]
@@ -293,7 +294,7 @@ class Signs:
     def sign(self, s):
         return dict(self.atoms).get(s)
 
-    def assume(self, symbol, sign: int, definition=None) -> "Signs":
+    def assume(self, symbol, sign: int, definition=None) -> Signs:
         """The hypotheses with ``symbol`` of sign ``sign`` (and its definition)."""
         atoms = tuple((a, s) for a, s in self.atoms if a != symbol) + ((symbol, sign),)
         defs = self.defs + (((symbol, definition),) if definition is not None else ())
@@ -414,14 +415,16 @@ def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
 def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
     """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
     component i where that quotient has a sign by inspection; then v − k w ≡ 0."""
-    candidates = [ratio] if ratio is not None else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0]
+    candidates = ([ratio] if ratio is not None
+                  else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0])
     for k in candidates:
         s, why = sign(k, H)
         if s == 1:
             same = equal(v, k * w)
             return Result(same.holds, [f"ratio k = `{show(sp.factor(k))}` > 0 under {H.describe()}: " + "; ".join(why),
                                        "v − k w ≡ 0: " + ("yes" if same else "no")] + same.evidence)
-    return Result(False, [f"no ratio with a proved positive sign among {', '.join(show(sp.factor(k)) for k in candidates)}"])
+    tried = ", ".join(show(sp.factor(k)) for k in candidates)
+    return Result(False, [f"no ratio with a proved positive sign among {tried}"])
 
 
 # ---------------------------------------------------------------- exact rational points

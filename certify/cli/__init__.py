@@ -49,7 +49,6 @@ stale); 2 for a usage error; 130 when interrupted.  Errors are reported in one
 line on stderr, never as a traceback (set ``CERTIFY_DEBUG=1`` to see one).
 """
 from __future__ import annotations
-from __future__ import annotations
 
 import os
 import sys
@@ -57,6 +56,7 @@ import traceback
 
 from certify.errors import UsageError
 from certify.run import progress
+
 from . import claims, exact, section5
 from .options import Parser, say
 

@@ -13,7 +13,9 @@ from pathlib import Path
 from certify.errors import UsageError
 from certify.run import ERRATUM, FAIL, OBSERVED, progress, report, runner, saving
 from certify.run.files import CHECKOUT, read_text_or_none
+
 from .options import DEFAULT_OUT, add_command, add_jobs, positive_int, prepare_output, say
+
 
 def estimates(out: Path | None) -> dict[str, float]:
     """Seconds per certificate in the last run's timings (DIR/timings.json, else

@@ -10,6 +10,7 @@ from certify.dynamics import particles
 from certify.errors import UsageError
 from certify.run import progress
 from certify.run.files import ensure_writable
+
 from .options import DEFAULT_OUT, add_command, add_jobs, positive_int
 
 MAX_DIGITS = 1000             # particles --digits
@@ -18,7 +19,9 @@ def cmd_census(args) -> int:
     """The census of periodic patterns (certify/run/census_report.py): records stream to the
     state file, --resume skips the words already there."""
     import signal
-    from certify.run import census_report as census, executors
+
+    from certify.run import census_report as census
+    from certify.run import executors
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     out = ensure_writable(args.out)
     longer = census.written_length(out)

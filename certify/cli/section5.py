@@ -11,6 +11,7 @@ from pathlib import Path
 from certify.errors import UsageError
 from certify.run import executors, progress, saving
 from certify.run.files import atomic_path, ensure_writable, write_atomic
+
 from .options import DEFAULT_OUT, add_command, add_jobs, count, number, positive_int, prepare_output
 
 DEFAULT_STRESS = DEFAULT_OUT / "STRESS.md"
@@ -23,7 +24,8 @@ def r_values(args):
         if n != int(n) or n < 1:
             raise UsageError(f"--r-range COUNT must be a positive integer, not {n:g}")
         if lo > hi or (lo == hi and n > 1):
-            raise UsageError(f"--r-range LO HI COUNT needs LO < HI (or LO = HI with COUNT 1), got LO = {lo:g}, HI = {hi:g}")
+            raise UsageError(f"--r-range LO HI COUNT needs LO < HI (or LO = HI with COUNT 1), "
+                             f"got LO = {lo:g}, HI = {hi:g}")
         r = np.linspace(lo, hi, int(n))
     else:
         r = np.array(args.r, dtype=float)
@@ -37,8 +39,10 @@ def initial_data(args):
     """(θ0, φ0): paired from ``--theta0`` and ``--phi0`` (θ0 in [0, π/2], φ0 in [0, π]),
     else the first ``--orbits`` of the paper's grid."""
     import math
-    from certify import numerics
+
     import numpy as np
+
+    from certify import numerics
     if args.theta0 is None and args.phi0 is None:
         return numerics.grid(args.orbits if args.orbits is not None else 8)
     if args.theta0 is None or args.phi0 is None:
@@ -176,7 +180,8 @@ def register(commands) -> None:
                    help="processes for the random orbits (default: all cores)")
 
     p = add_command(commands, "figures", cmd_figures, help="draw Figures 6-11 of the paper, Section 5 (ids 5.1-5.8)",
-                    description="Figures 6-11 of the paper (Section 5; our ids 5.1-5.8: 5.1 = Figure 6, 5.2 = 7, 5.3a/b = 8a/b, "
+                    description="Figures 6-11 of the paper (Section 5; our ids 5.1-5.8: 5.1 = Figure 6, 5.2 = 7, "
+                    "5.3a/b = 8a/b, "
                     "5.4 = 9, 5.5 = 10, 5.6-5.8 = 11a-c): the last kept b-angles φ of the paper's 8 "
                     "orbits against r (float64), breaks as red dots at (r, π/2), the CDKK thresholds as red "
                     "lines.  preview: the cheap version `certify all` draws; paper: the captions' grids, "

@@ -11,11 +11,31 @@ billiard reduction (Section 4).  It imports only :mod:`certify.algebra` and the 
   and symbolic (every orbit, not samples).
 """
 from . import cones, particles, reduction, simulate
-from .model import (INDEX, LETTERS, A, B, C, characteristic_polynomial, check_word, collide, collide_particles,
-                    collision_matrix, word_matrix)
+from .model import (
+                    INDEX,
+                    LETTERS,
+                    A,
+                    B,
+                    C,
+                    characteristic_polynomial,
+                    check_word,
+                    collide,
+                    collide_particles,
+                    collision_matrix,
+                    word_matrix,
+)
 from .simulate import MultipleCollision, Undecided
-from .words import (Candidate, candidate, check_position_map, eigenvector, fixed_point_ball, position_map,
-                    reduce_mod, run_word, velocities)
+from .words import (
+                    Candidate,
+                    candidate,
+                    check_position_map,
+                    eigenvector,
+                    fixed_point_ball,
+                    position_map,
+                    reduce_mod,
+                    run_word,
+                    velocities,
+)
 
 __all__ = [
     "cones", "particles", "reduction", "simulate",

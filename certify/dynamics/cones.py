@@ -30,6 +30,7 @@ import sympy as sp
 
 from certify.algebra import trig as T
 from certify.algebra.poly import r
+
 from . import reduction as R
 from .model import INDEX, LETTERS
 
@@ -198,7 +199,8 @@ def step(contact: str, sign: int, K: dict) -> Step:
         combined(f"{lab}: after it the velocity is {LETTERS[j].upper()} w, whose component {j + 1} "
                  f"(−r w_{j + 1}) is > 0: the pair {LETTERS[j]} separates (sin φ' > 0)", [T.has_sign(q1[j], 1, H)]),
         combined(f"{lab}: {LETTERS[j].upper()} p' = p' and p ∧ w = ρ n with ρ = `{T.show(rho)}` > 0, so the next "
-                 f"plane has the normal p' ∧ {LETTERS[j].upper()} w = ρ cof({LETTERS[j].upper()}) n: the projective map",
+                 f"plane has the normal p' ∧ {LETTERS[j].upper()} w = ρ cof({LETTERS[j].upper()}) n: "
+                 "the projective map",
                  [T.equal(Kj * p1, p1), T.equal(p.cross(w), rho * N), T.has_sign(rho, 1, H),
                   T.equal(u, rho * cof * N)]),
         Cj.check,

@@ -13,7 +13,6 @@ import re
 
 import flint
 import sympy as sp
-
 from sympy.core.mul import _keep_coeff
 
 from certify.algebra.poly import RING, from_flint, lam, primitive, r

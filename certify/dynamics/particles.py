@@ -27,16 +27,17 @@ from __future__ import annotations
 
 import decimal
 import re
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Callable, Iterator, Sequence
 
 import flint
 
-from . import simulate as sim
-from .model import collide_particles
 from certify.algebra.poly import Q, to_fmpq
 from certify.errors import UsageError
+
+from . import simulate as sim
+from .model import collide_particles
 
 NUMBER = re.compile(r"[+-]?(\d+(/\d+)?|\d+\.\d*|\.\d+)")
 PROGRESS_STEPS = 200          # at most this many progress reports per run

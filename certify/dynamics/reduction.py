@@ -29,15 +29,16 @@ contact is the j ≠ i with w_j < 0, i.e. n_i n_j > 0.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import flint
 
 from certify import caches
 from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
+
 from .model import INDEX, LETTERS, collide
-from .simulate import Undecided, exact, sign
+from .simulate import Undecided, sign
 
 ORIENTATION = {"a": 1, "b": 2, "c": 0}       # t with e_t · u(k) ≥ 0 (l. 950)
 E = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
@@ -90,7 +91,7 @@ def cofactor_columns(letter: str, r, unit=E) -> list[tuple]:
     return [cross(Ke[(m + 1) % 3], Ke[(m + 2) % 3]) for m in range(3)]
 
 
-@lru_cache(maxsize=None)
+@cache
 def cofactor(letter: str, r: flint.fmpq) -> tuple:
     """The rows of cof(K) (:func:`cofactor_columns`) at a rational r, times the positive
     integer that clears its denominators (a positive multiple keeps the plane and its

@@ -25,15 +25,16 @@ Two number systems behind one interface:
 """
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Callable, Sequence
 
 import flint
 
 from certify.algebra.balls import precision
-from .model import INDEX, LETTERS, collide
 from certify.algebra.poly import to_fmpq
 from certify.errors import Undecided
+
+from .model import INDEX, LETTERS, collide
 
 
 class MultipleCollision(ArithmeticError):

@@ -19,14 +19,15 @@ position map (``abcd`` is None).  For four particles the candidate is
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import flint
 import sympy as sp
 
 from certify import caches
 from certify.algebra.branches import Spectrum
-from certify.algebra.poly import LR_LAMBDA, Frac, flint_poly_to_frac, frac_to_field, from_flint, lam, r
+from certify.algebra.poly import LR_LAMBDA, Frac, flint_poly_to_frac, frac_to_field, r
+
 from .model import INDEX, charpoly_flint, charpoly_ring, collide, factor_flint, word_matrix_flint
 from .words import Candidate, Step, candidate, run_lr, steps_of
 
@@ -89,7 +90,7 @@ def eigenvector2(M) -> list[tuple]:
             (Frac.of(-1), m21 / (m22 - LR_LAMBDA))]
 
 
-@lru_cache(maxsize=None)
+@cache
 def candidate_in(system_name: str, word: str) -> Candidate:
     """The candidate of a word first-gap-letter ... b in the system ``system_name``."""
     system = BY_NAME[system_name]

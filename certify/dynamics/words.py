@@ -15,7 +15,7 @@ are handed out as the equal elements of SymPy's field ``FIELD``.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cached_property, lru_cache
+from functools import cache, cached_property
 
 import flint
 import sympy as sp
@@ -23,11 +23,32 @@ import sympy as sp
 from certify import caches
 from certify.algebra.balls import GUARD, precision
 from certify.algebra.branches import Condition, Spectrum, ball_value
-from .model import (INDEX, characteristic_polynomial, charpoly_flint, check_word, collide, collision_matrix,
-                    charpoly_ring, factor_flint, word_matrix, word_matrix_flint)
-from certify.algebra.poly import (FIELD, LR_LAMBDA, LR_R, LRCTX, LRQCTX, Frac, field_to_frac, flint_poly_to_frac,
-                                  frac_to_field, lr_to_ring, ring_to_lrq, to_field, to_ring)
+from certify.algebra.poly import (
+    FIELD,
+    LR_LAMBDA,
+    LR_R,
+    LRCTX,
+    LRQCTX,
+    Frac,
+    field_to_frac,
+    flint_poly_to_frac,
+    frac_to_field,
+    lr_to_ring,
+    ring_to_lrq,
+    to_field,
+    to_ring,
+)
 
+from .model import (
+    INDEX,
+    charpoly_flint,
+    charpoly_ring,
+    check_word,
+    collide,
+    collision_matrix,
+    factor_flint,
+    word_matrix_flint,
+)
 
 
 def eigenvector_lr(M, rows=(0, 1)) -> tuple:
@@ -205,7 +226,7 @@ def fixed_point_ball(a, b, c, d, sigma: int = 1) -> flint.arb:
     return (a - d + sigma * disc.sqrt()) / (2 * c)
 
 
-@lru_cache(maxsize=None)
+@cache
 def candidate(word: str) -> Candidate:
     """M_w, cp, the branches, q(0) and the position map of a word a ... b."""
     check_word(word)

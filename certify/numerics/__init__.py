@@ -15,12 +15,41 @@ billiard reduction (Section 5 of the paper), from collision to collision, in flo
 """
 from . import experiments, figures, limits, stress, thresholds
 from .engines import ENGINES, OrbitResult, run_orbit
-from .experiments import (N4_DEFAULT, findings, is_rotation, n3_stats, n3_window_probes, n4_search, n4_window,
-                          summary, windows_of)
+from .experiments import (
+                          N4_DEFAULT,
+                          findings,
+                          is_rotation,
+                          n3_stats,
+                          n3_window_probes,
+                          n4_search,
+                          n4_window,
+                          summary,
+                          windows_of,
+)
 from .figures import PAPER, PAPER_NUMBER, PREVIEW, RESOLUTIONS, SPECS, FigureData, Spec, cite, compute, forget, probe
-from .limits import (BINS, FEW, GAP, MAX_INTERVALS, MAX_PIECES, PIECE_GAP, PIXEL, POINT, Omega, accumulation_points,
-                     clusters, coverage, dominant_count, fraction, omega, orbit_widths, per_orbit, per_r, stripe_scan,
-                     widest_orbit, window_counts)
+from .limits import (
+                          BINS,
+                          FEW,
+                          GAP,
+                          MAX_INTERVALS,
+                          MAX_PIECES,
+                          PIECE_GAP,
+                          PIXEL,
+                          POINT,
+                          Omega,
+                          accumulation_points,
+                          clusters,
+                          coverage,
+                          dominant_count,
+                          fraction,
+                          omega,
+                          orbit_widths,
+                          per_orbit,
+                          per_r,
+                          stripe_scan,
+                          widest_orbit,
+                          window_counts,
+)
 from .orbits import Orbits, grid, iterate, paper_grid
 from .rules import BREAKS, COMPLETED, CORNER, HORIZON, NONFINITE, SHORT_STEP, UNDECIDED, phi_at_b
 from .thresholds import N_LINES, R_CRIT, digits_for, min_component, r_exist, r_max, red_lines, upper_threshold
@@ -30,7 +59,8 @@ __all__ = [
     "ENGINES", "OrbitResult", "run_orbit",
     "N4_DEFAULT", "findings", "is_rotation", "n3_stats", "n3_window_probes", "n4_search", "n4_window", "summary",
     "windows_of",
-    "PAPER", "PAPER_NUMBER", "PREVIEW", "RESOLUTIONS", "SPECS", "FigureData", "Spec", "cite", "compute", "forget", "probe",
+    "PAPER", "PAPER_NUMBER", "PREVIEW", "RESOLUTIONS", "SPECS", "FigureData", "Spec", "cite", "compute", "forget",
+    "probe",
     "BINS", "FEW", "GAP", "MAX_INTERVALS", "MAX_PIECES", "PIECE_GAP", "PIXEL", "POINT", "Omega", "accumulation_points",
     "clusters", "coverage", "dominant_count", "fraction", "omega", "orbit_widths", "per_orbit", "per_r", "stripe_scan",
     "widest_orbit", "window_counts",

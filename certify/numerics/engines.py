@@ -32,6 +32,7 @@ import mpmath
 import numpy as np
 
 from certify.algebra.balls import precision
+
 from . import kernel, rules
 
 ENGINES = ("float64", "mp", "ball")

@@ -11,10 +11,21 @@ import numpy as np
 
 from .engines import run_orbit
 from .figures import FigureData
-from .limits import GAP, PIECE_GAP, POINT, dominant_count, fraction, omega, per_r, stripe_scan, \
-    widest_orbit, window_counts
+from .limits import (
+    GAP,
+    PIECE_GAP,
+    POINT,
+    dominant_count,
+    fraction,
+    omega,
+    per_r,
+    stripe_scan,
+    widest_orbit,
+    window_counts,
+)
 from .orbits import paper_grid
 from .thresholds import digits_for, min_component, r_max, upper_threshold
+
 
 def windows_of() -> dict[int, tuple[float, float]]:
     """The r-ranges in which N3 counts the points of (ab)^n(cb)^n: from the next upper
@@ -114,7 +125,7 @@ def n4_search(nmax: int, ns=None, progress=None, executor=None) -> dict:
 def n3_window_probes(fractions=(0.05, 0.15, 0.3, 0.45)) -> list[float]:
     """r values inside each window of N3 (n = 2..5): r_max(n) − f (r_max(n) − lower end)."""
     out = []
-    for n, (lo, hi) in windows_of().items():
+    for lo, hi in windows_of().values():
         out += [hi - f * (hi - lo) for f in fractions]
     return out
 
@@ -149,7 +160,8 @@ def findings(datas: dict) -> dict:
         scan = stripe_scan(datas["5.5"])
         widest = widest_orbit(datas["5.6"])
         k = int(np.argmin(widest))
-        out["n6"] = {"stripes": [round(r, 6) for r, _, _ in scan[:4]], "coverages": [round(c, 3) for _, c, _ in scan[:4]],
+        out["n6"] = {"stripes": [round(r, 6) for r, _, _ in scan[:4]],
+                     "coverages": [round(c, 3) for _, c, _ in scan[:4]],
                      "special_r": float(datas["5.6"].r[k]), "special_width": float(widest[k])}
     if "5.6" in datas and "5.1" in datas:
         def intervals(d, ks):

@@ -27,6 +27,7 @@ import numpy as np
 
 from .orbits import iterate, paper_grid
 
+
 @dataclass(frozen=True)
 class Spec:
     """One figure of Section 5: its r-grid and orbits as printed, and its preview.
@@ -129,7 +130,7 @@ class FigureData:
             return None
         return float(self.certified.sum()) / max(1, int(self.collisions) * self.certified.size)
 
-    def restrict(self, spec: Spec) -> "FigureData":
+    def restrict(self, spec: Spec) -> FigureData:
         """The magnification ``spec`` of this run: the r values inside [spec.lo, spec.hi]."""
         eps = 1e-12
         sel = (self.r >= spec.lo - eps) & (self.r <= spec.hi + eps)

@@ -14,9 +14,9 @@ corner (cos φ0 ≠ 0, sin θ0 cos θ0 ≠ 0).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from concurrent.futures import Executor
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
@@ -77,7 +77,7 @@ class Orbits:
         np.savez(path, **arrays)
 
     @classmethod
-    def load(cls, path) -> "Orbits":
+    def load(cls, path) -> Orbits:
         with np.load(path) as data:
             return cls(*(data[k] for k in KEYS), word=data["word"] if "word" in data.files else None)
 
@@ -97,7 +97,8 @@ class Orbits:
                 lines.append(f"  {count:>7} {name} (break {code})")
         lines.append(f"  certified: {int(self.certified.sum())} of {int(self.collisions.sum())} collisions "
                      f"({self.certified_fraction():.2%}); certified horizon per orbit from "
-                     f"{int(self.certified.min()) if self.certified.size else 0} to {int(self.certified.max(initial=0))}")
+                     f"{int(self.certified.min()) if self.certified.size else 0} "
+                     f"to {int(self.certified.max(initial=0))}")
         finite = self.phi[np.isfinite(self.phi)]
         if finite.size:
             lines.append(f"  φ in [{finite.min():.6f}, {finite.max():.6f}], {finite.size} kept angles")

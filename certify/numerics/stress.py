@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import engines, rules
+from . import engines
 
 R_CRIT3 = 7 - 4 * math.sqrt(3)                 # the three-particle threshold, ≈ 0.0718
 THETA, PHI = math.pi / 6, math.pi / 5          # the first datum of the paper's grid
@@ -200,7 +200,8 @@ def report(quick: bool = False, progress=None, executor=None) -> tuple[str, int]
              "A cell: `= N` the ball word for N collisions, `break k at N` a named break after N collisions (1 "
              "undecided contact, 2 time step below precision, 3 corner, 4 non-finite), `certified C` the "
              "certified horizon, `departs at k` the first collision where the word leaves the ball word.", "",
-             "| group | r | θ0 | φ0 | ball (certified) | float64 | mp 30 | mp 16 |", "|---|---|---|---|---|---|---|---|"]
+             "| group | r | θ0 | φ0 | ball (certified) | float64 | mp 30 | mp 16 |",
+             "|---|---|---|---|---|---|---|---|"]
     n = spec["collisions"]
     start = time.perf_counter()
     # the random orbits go to the executor first; the near-singular cases run here meanwhile
@@ -232,7 +233,8 @@ def report(quick: bool = False, progress=None, executor=None) -> tuple[str, int]
         progress(total, total, "long orbits")
     lines += ["", f"## {len(data)} random orbits, {n} collisions each", "",
               f"Seeded (`random.Random({spec['seed']})`): r uniform in [0.001, 0.999], θ0 in [0, π/2], φ0 in [0, π]; "
-              f"each on the ball engine, float64 and mp 30 digits ({seconds:.0f} s wall for these and the near-singular "
+              f"each on the ball engine, float64 and mp 30 digits ({seconds:.0f} s wall for these and the "
+              "near-singular "
               "data, on the executor of the command).  "
               "Per regime of r: how many ball orbits completed and the bits they needed; per engine, the "
               "distribution of the certified horizons, how many orbits departed from the ball word and where, how "

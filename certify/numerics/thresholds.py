@@ -15,7 +15,7 @@ thresholds are the certificates' L1-L6).
 from __future__ import annotations
 
 import math
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 
@@ -23,7 +23,7 @@ R_CRIT = 7 - 4 * math.sqrt(3)                              # three-particle coll
 N_LINES = (2, 3, 4, 5, 6)                                   # the thresholds drawn, as in L4
 
 
-@lru_cache(maxsize=None)
+@cache
 def r_max(n: int) -> float:
     """The upper threshold of (ab)^n(cb)^n as a float, computed (:func:`upper_threshold`,
     20 digits), not typed in: for n = 2..6 it is the printed radical of L4 (a test)."""
@@ -49,6 +49,7 @@ def red_lines() -> dict[str, float]:
 def word_matrix_mp(word: str, r):
     """M_w = K_{c_n} ... K_{c_1} at an mpmath r (the printed A, B, C: ``model.collide``)."""
     import mpmath
+
     from certify.dynamics import collide
     M = mpmath.eye(3)
     for letter in word:

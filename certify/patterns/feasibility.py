@@ -20,10 +20,21 @@ import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import NO_BRANCH, X_MINUS, X_PLUS, Condition, Spectrum, simplest_between
+from certify.algebra.poly import (
+    FIELD,
+    RING,
+    Q,
+    field_to_frac,
+    frac_to_field,
+    lam,
+    lr_to_ring,
+    ring_to_lrq,
+    to_field,
+    to_ring,
+)
+from certify.dynamics.systems import FOUR, System, run_in
 from certify.dynamics.words import Candidate
 from certify.errors import UNDECIDED
-from certify.dynamics.systems import FOUR, System, run_in
-from certify.algebra.poly import FIELD, Q, RING, field_to_frac, frac_to_field, lam, lr_to_ring, ring_to_lrq, to_field, to_ring
 
 NO_X = "—"                   # the label of the only "fixed point" of a two-gap system (no x)
 
@@ -307,7 +318,8 @@ class Analysis:
     # -- a single point: balls first, exact zero tests where balls cannot decide
     def _point(self, R: Region, p: Piece, req: Requirement, T):
         rc, k = p.lo, R.branch
-        sg = self._sign_with_x(req, rc, k, p.x_value) if (p.x_value is not None and req.has_x) else table_sign_at(T, rc, k)
+        with_x = p.x_value is not None and req.has_x
+        sg = self._sign_with_x(req, rc, k, p.x_value) if with_x else table_sign_at(T, rc, k)
         ok = _meets(sg, req.sign)
         if ok != UNDECIDED:
             return p, "holds" if ok else "fails", "" if ok else \
@@ -322,7 +334,7 @@ class Analysis:
             # g = N/D without √Δ: N = 0 (g = 0) or D = 0 (g undefined: a collision time or
             # the normalisation q_1(0) = -1 breaks down) both defeat a strict inequality;
             # N = D = 0 stays undecided.
-            cond = condition(req, self.spec.lrq_cp, x_value=p.x_value) if req.has_x else condition(req, self.spec.lrq_cp)
+            cond = condition(req, self.spec.lrq_cp, x_value=p.x_value if req.has_x else None)
             zero_n = vanishes_on_branch(self.spec, cond.N[0], rc, k)
             zero_d = vanishes_on_branch(self.spec, cond.D[0], rc, k)
             if zero_n != zero_d:
@@ -330,7 +342,7 @@ class Analysis:
             # 0/0: another representation of the same function, with a denominator not vanishing there
             for G in req.other:
                 alt = Requirement(req.name, G, req.sign)
-                cond = condition(alt, self.spec.lrq_cp, x_value=p.x_value) if alt.has_x else condition(alt, self.spec.lrq_cp)
+                cond = condition(alt, self.spec.lrq_cp, x_value=p.x_value if alt.has_x else None)
                 if vanishes_on_branch(self.spec, cond.D[0], rc, k):
                     continue
                 if vanishes_on_branch(self.spec, cond.N[0], rc, k):

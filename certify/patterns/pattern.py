@@ -37,12 +37,14 @@ import flint
 import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
-from certify.algebra.poly import FIELD, Q, Lf, RING, lam, show, to_field, to_ring
-from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS, Condition
+from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS
+from certify.algebra.poly import FIELD, RING, Lf, Q, lam, show, to_field, to_ring
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
+
 from .feasibility import NO_X, Analysis, Region, Requirement, prefix_requirements
-from .periodic import compact, read, show as show_word
+from .periodic import compact, read
+from .periodic import show as show_word
 
 SCHEMA_PATH = Path(__file__).with_name("pattern.schema.json")
 SCHEMA_VERSION = 1
@@ -107,7 +109,8 @@ def end_data(a: Algebraic) -> dict:
     text = a.describe()            # "the root of P in ]lo, hi[ ≈ digits"
     inner = text[text.index("]") + 1:text.index("[")]
     lo, hi = (t.strip() for t in inner.split(","))
-    return {"exact": None, "minimal_polynomial": show(a.minimal_polynomial()), "interval": [lo, hi], "digits": a.digits(12)}
+    return {"exact": None, "minimal_polynomial": show(a.minimal_polynomial()), "interval": [lo, hi],
+            "digits": a.digits(12)}
 
 
 def _poly(a: Algebraic):
@@ -214,7 +217,9 @@ class PatternResult:
         out = [f"# Pattern {self.written}", "",
                f"- input: `{self.input}`; normal form analysed: `{self.written}` (= `{compact(self.normal)}`), "
                f"{self.system} system", f"- same orbit: {self.explanation}", f"- r in ]{lo}, {hi}[", "",
-               "## Period matrix", "", "M = `[" + ", ".join("[" + ", ".join(row) + "]" for row in self.matrix) + "]`", "", f"cp(M) = `{self.cp}`", "",
+               "## Period matrix", "",
+               "M = `[" + ", ".join("[" + ", ".join(row) + "]" for row in self.matrix) + "]`", "",
+               f"cp(M) = `{self.cp}`", "",
                f"disc_λ cp(M) = `{self.discriminant}`", ""]
         for stage, title in (("exists", "Self-similar data exist"), ("feasible", "Feasible (every collision is the "
                                                                                  "true next one)"),
@@ -324,7 +329,9 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
         before = _copy(an.regions)
     regions["feasible"] = _copy(an.regions)
-    stab = dominance_requirements(cand.spectrum.ring_cp) + (stability_conditions(cand.abcd_ring or cand.abcd) if cand.abcd is not None else [])
+    stab = dominance_requirements(cand.spectrum.ring_cp)
+    if cand.abcd is not None:
+        stab = stab + stability_conditions(cand.abcd_ring or cand.abcd)
     conditions["stable"] = [_cond(q) for q in stab]
     for q in stab:
         an.impose(q)
@@ -415,7 +422,8 @@ def diagnose(system, cand, word: str, m: int, regions, lo, hi) -> dict:
                               for s in live)
             parts.append(f"{show_word(j)} comes next, strictly before {show_word(expected)} and any other collision, "
                          f"on {where}")
-        summary = (f"{f'after {prefix} ' if prefix else 'first '}comes {' or '.join(show_word(j) for j, _, _ in found)}, "
+        nexts = " or ".join(show_word(j) for j, _, _ in found)
+        summary = (f"{f'after {prefix} ' if prefix else 'first '}comes {nexts}, "
                    f"strictly before {show_word(expected)}")
     else:
         parts = []

@@ -12,21 +12,50 @@ and progress on a terminal.  It imports every layer below it.
   terminal only.
 """
 from . import checks, files, plots, progress, report, runner, saving
-from .checks import (check_of, combined, concluded, count_check, digits_check, eliminant_check, identity,
-                     result_check)
+from .checks import check_of, combined, concluded, count_check, digits_check, eliminant_check, identity, result_check
 from .files import load_findings
-from .saving import save_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
-from .runner import (CERTIFICATES, ERRATUM, ERRATUM_KINDS, FAIL, FALSE_STATEMENT, MISPRINT, OBSERVED, PASS,
-                     REFUTED_REMARK, STATUSES, Certificate, Check, Context, Mutant, Outcome, altered, certificate, conclude,
-                     load_all, observe, overridden, quantity, replaced, reset_caches, reworded, run_certificate, run_selected, select,
-                     unread)
+from .runner import (
+                     CERTIFICATES,
+                     ERRATUM,
+                     ERRATUM_KINDS,
+                     FAIL,
+                     FALSE_STATEMENT,
+                     MISPRINT,
+                     OBSERVED,
+                     PASS,
+                     REFUTED_REMARK,
+                     STATUSES,
+                     Certificate,
+                     Check,
+                     Context,
+                     Mutant,
+                     Outcome,
+                     altered,
+                     certificate,
+                     conclude,
+                     load_all,
+                     observe,
+                     overridden,
+                     quantity,
+                     replaced,
+                     reset_caches,
+                     reworded,
+                     run_certificate,
+                     run_selected,
+                     select,
+                     unread,
+)
+from .saving import save_figure
 
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
-    "load_findings", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
-    "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
-    "Mutant", "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run_selected",
+    "load_findings", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart",
+    "spectrum_figures",
+    "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED",
+    "PASS", "STATUSES", "Certificate", "Check", "Context",
+    "Mutant", "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches",
+    "run_selected",
     "run_certificate", "select", "overridden", "replaced", "reworded", "unread",
 ]

@@ -16,6 +16,7 @@ from concurrent.futures import FIRST_COMPLETED, wait
 from pathlib import Path
 
 from certify.patterns import census
+
 from .files import read_text_or_none, write_atomic
 
 WINDOW = 64                  # jobs in flight at once (an interruption loses at most these)
@@ -148,7 +149,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         f"- words: {s['words']}",
         f"- with feasible self-similar data: {len(s['feasible'])}",
         f"- with stable self-similar data: {len(s['stable'])}",
-        f"- with undecided points: {len(s['undecided'])}" + (f" ({', '.join(s['undecided'])})" if s['undecided'] else ""),
+        f"- with undecided points: {len(s['undecided'])}"
+        + (f" ({', '.join(s['undecided'])})" if s['undecided'] else ""),
         f"- analysis error: {len(s['errors'])}" + (f" ({', '.join(s['errors'])})" if s['errors'] else ""),
         f"- containing abcab cyclically (or its mirror cbacb): {s['abcab']['words']}, of which with feasible data: "
         f"{len(s['abcab']['feasible'])}" + (f" ({', '.join(s['abcab']['feasible'])})" if s['abcab']['feasible'] else "")
@@ -197,8 +199,8 @@ def window_figure(doc: dict, path, marks: dict | None = None) -> Path | None:
     Returns the path, or None when no word has stable data."""
     from .saving import pyplot
     plt = pyplot()
-    from .saving import DPI
     from .files import atomic_path
+    from .saving import DPI
 
     rows = [(r["compact"], census.windows(r)) for r in doc["words"] if r["stable"]]
     rows = [(name, w) for name, w in rows if w]
@@ -206,7 +208,7 @@ def window_figure(doc: dict, path, marks: dict | None = None) -> Path | None:
         return None
     rows.sort(key=lambda row: (-max(hi for _, hi in row[1]), row[0]))
     fig, ax = plt.subplots(figsize=(7.2, 1.2 + 0.28 * len(rows)))
-    for k, (name, wins) in enumerate(rows):
+    for k, (_, wins) in enumerate(rows):
         for lo, hi in wins:
             ax.barh(k, hi - lo, left=lo, height=0.6, color="tab:blue")
     ax.set_yticks(range(len(rows)), [name for name, _ in rows], fontsize=7)

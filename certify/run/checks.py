@@ -6,8 +6,9 @@ the printed checks one for one.
 """
 from __future__ import annotations
 
-from certify.algebra import trig as T
 from certify.algebra import Algebraic, eliminate, parse, same_up_to_constant, show_factored_int, to_fmpz_poly
+from certify.algebra import trig as T
+
 from .runner import Check, conclude
 
 

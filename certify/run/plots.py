@@ -9,9 +9,10 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from . import saving
 from certify.algebra.branches import BRANCH_NAMES
 from certify.algebra.poly import r
+
+from . import saving
 
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:purple")
 
@@ -37,7 +38,8 @@ def _cell_indices(table, rs: np.ndarray) -> list[int | None]:
 
 
 def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
-    """Figures 1-2 of the paper (fig:spectrum, fig:spectrum zoom): the real spectrum of M on ]0,1[ and its zoom 0<r<0.13, 0<λ<0.05.
+    """Figures 1-2 of the paper (fig:spectrum, fig:spectrum zoom): the real spectrum of M on ]0,1[
+    and its zoom 0<r<0.13, 0<λ<0.05.
     Branches are taken from the certified table: a point is drawn on branch k only
     where the table proves k+1 real eigenvalues."""
     if not saving.enabled():
@@ -69,7 +71,8 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
 
 
 def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=None, marks=None) -> str:
-    """Figures 3-4 of the paper (fig: sign changes a-d, fig: sign change b): each branch coloured by the certified sign of a condition."""
+    """Figures 3-4 of the paper (fig: sign changes a-d, fig: sign change b): each branch coloured
+    by the certified sign of a condition."""
     if not saving.enabled():
         return name
     plt = saving.pyplot()

@@ -12,7 +12,7 @@ import sys
 
 from tqdm import tqdm
 
-_OPEN: list["Bar"] = []
+_OPEN: list[Bar] = []
 
 
 def _is_terminal(stream) -> bool:

@@ -22,8 +22,7 @@ from pathlib import Path
 from urllib.parse import quote
 
 from certify.run.files import write_atomic
-from certify.run.runner import (ERRATUM, ERRATUM_KINDS, FAIL, OBSERVED, PASS, STATUSES, corrected_statement,
-                                holds)
+from certify.run.runner import ERRATUM, ERRATUM_KINDS, FAIL, OBSERVED, PASS, STATUSES, corrected_statement, holds
 
 PAPER = ("T. Dolmaire and E. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
          "particles: asymmetric collision sequences and spherical billiard reduction*, "
@@ -171,7 +170,8 @@ def disagreements(results) -> list:
 def status_label(outcome) -> str:
     """The status as a reader should first see it: ``OBSERVED, disagrees`` for an
     observation that does not agree with the paper, else the bare status."""
-    return f"{outcome.status}, {DISAGREES}" if outcome.status == OBSERVED and outcome.agrees is False else outcome.status
+    disagrees = outcome.status == OBSERVED and outcome.agrees is False
+    return f"{outcome.status}, {DISAGREES}" if disagrees else outcome.status
 
 
 def misprints(results) -> list[tuple[str, str, list]]:

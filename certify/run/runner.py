@@ -17,13 +17,14 @@ import pkgutil
 import signal
 import time
 import traceback
+from collections.abc import Callable
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
-from typing import Callable
 
 from certify import caches
 from certify.errors import StatementError, UsageError
+
 from .executors import default_jobs  # noqa: F401  (runner.default_jobs, used by the CLI and benchmarks)
 
 PASS, ERRATUM, FAIL, OBSERVED = "PASS", "ERRATUM", "FAIL", "OBSERVED"
@@ -43,7 +44,7 @@ class Check:
     statement: str
     holds: bool
     evidence: list[str] = field(default_factory=list)
-    corrects: "Check | str | None" = None
+    corrects: Check | str | None = None
     counts: bool = True
 
 

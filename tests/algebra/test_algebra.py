@@ -138,7 +138,10 @@ def sgn(v) -> int:
     return int(bool(v > 0)) - int(bool(v < 0))
 
 
-def num_sign(a, b, tol=sp.Float("1e-90", 110)) -> int:
+TOL_90 = sp.Float("1e-90", 110)
+
+
+def num_sign(a, b, tol=TOL_90) -> int:
     d = a - b
     return 0 if abs(d) < tol else sgn(d)
 
@@ -287,7 +290,8 @@ def test_isolate(data):
     # refine: below the width, still isolating the same root
     S = sp_poly(p).sqf_part()
     sqf = flint.fmpq_poly([fq(Fraction(str(c))) for c in reversed(S.all_coeffs())])
-    w = data.draw(st.sampled_from([Fraction(1, 2 ** k) for k in (1, 7, 30, 70)] + [Fraction(1, 3), Fraction(1, 10 ** 9)]))
+    widths = [Fraction(1, 2 ** k) for k in (1, 7, 30, 70)] + [Fraction(1, 3), Fraction(1, 10 ** 9)]
+    w = data.draw(st.sampled_from(widths))
     for lo, hi in ivs:
         l2, h2 = refine(sqf, lo, hi, fq(w))
         assert lo <= l2 <= h2 <= hi and h2 - l2 <= fq(w)
@@ -759,7 +763,8 @@ def test_roots_in_unit_interval_unique_root_and_constant_multiples():
     roots, counts = roots_in_unit_interval("r^2 - 10*r + 1")        # 5 ± 2√6: one in ]0,1[
     assert counts == (1, 1) and len(roots) == 1 and roots[0] == Algebraic.surd(5, -2, 6)
     assert unique_root("r^2 - 10*r + 1") == roots[0] and unique_root("r^2 - 10*r + 1").short() == "≈0.10102051"
-    assert Algebraic.rational(flint.fmpq(1, 2)).short() == "1/2" and unique_root("2*r - 1") == Algebraic.rational(flint.fmpq(1, 2))
+    half = Algebraic.rational(flint.fmpq(1, 2))
+    assert half.short() == "1/2" and unique_root("2*r - 1") == half
     with pytest.raises(ArithmeticError):
         unique_root("(2*r - 1)*(3*r - 1)")
     assert same_up_to_constant(flint.fmpq_poly([1, 2]), flint.fmpq_poly([-3, -6]))

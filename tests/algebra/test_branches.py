@@ -215,7 +215,8 @@ def test_crossing_branches():
     assert T.points == [[1, 1]]                       # the double root 1/2, listed twice
     for cell in T.cells:
         t = cell.sample
-        assert [L == Algebraic.rational(v) for L, v in zip(cell.branches, (max(t, 1 - t), min(t, 1 - t)))] == [True, True]
+        expected = (max(t, 1 - t), min(t, 1 - t))
+        assert [L == Algebraic.rational(v) for L, v in zip(cell.branches, expected)] == [True, True]
     assert len(S.branches_at(Algebraic.rational(HALF))) == 2
     # λ - 1/2: branch 0 = max(r, 1-r) > 1/2, branch 1 = min(r, 1-r) < 1/2, both 1/2 at r = 1/2
     T = S.sign_table(Condition.of("λ - 1/2", lam - HALF), 0, 1)
@@ -729,6 +730,7 @@ def test_the_resultant_by_multiplication_determinant_equals_python_flints():
     Q[r][λ]/(cp), branches._norm_modulo) against python-flint's fmpz_mpoly resultant:
     the same primitive polynomial in r, for cp of degree 1, 2, 3 and g of any degree."""
     import random
+
     from certify.algebra.branches import _lambda_coefficients, _norm_modulo
     from certify.algebra.poly import MCTX, mpoly_to_univariate, primitive
     rr, ll, _s = MCTX.gens()
@@ -765,7 +767,8 @@ def test_a_ball_refined_by_interval_newton_holds_the_root_at_the_precision_asked
 def test_sign_table_changes_and_keeps_sign_at_a_critical_value():
     """λ² = r: the branches ±√r; g = λ - 1/2 vanishes on the upper branch at r = 1/4 (√r = 1/2)
     and keeps its sign (−) on the lower branch there."""
-    from certify.algebra import Algebraic, Spectrum, lam, r as r_
+    from certify.algebra import Algebraic, Spectrum, lam
+    from certify.algebra import r as r_
     T = Spectrum(lam ** 2 - r_).table("λ-1/2", lam - sp.Rational(1, 2), 0, 1)
     quarter = Algebraic.rational(flint.fmpq(1, 4))
     assert quarter in T.critical

@@ -4,7 +4,8 @@ import flint
 import pytest
 import sympy as sp
 
-from certify.algebra import Algebraic, lam, statements as S
+from certify.algebra import Algebraic, lam
+from certify.algebra import statements as S
 from certify.algebra.statements import StatementError
 from certify.algebra.trig import cφ, sφ
 

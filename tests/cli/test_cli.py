@@ -17,14 +17,8 @@ import matplotlib.pyplot as plt
 import pytest
 
 from certify import cli
-
+from certify.run import progress, report, runner
 from certify.run import saving as figures
-
-from certify.run import progress
-
-from certify.run import report
-
-from certify.run import runner
 from certify.run.runner import OBSERVED, Certificate, Check, Outcome, conclude
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -8,10 +8,10 @@ import pytest
 import sympy as sp
 
 from certify.algebra.poly import r
+from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics.model import INDEX, LETTERS, collision_matrix
-from certify.dynamics import cones as RC
 
 Q = flint.fmpq
 SECTION2 = {L: collision_matrix(L) for L in LETTERS}

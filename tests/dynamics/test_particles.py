@@ -13,7 +13,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from certify import cli
-
 from certify.dynamics import particles
 from certify.dynamics import simulate as sim
 from certify.dynamics.model import INDEX, collide, collide_particles

@@ -7,19 +7,21 @@ import random
 import flint
 import pytest
 import sympy as sp
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from certify.dynamics import reduction as R
-from certify.dynamics import simulate as sim
 from certify.algebra.balls import precision
 from certify.algebra.poly import r
-from certify.dynamics.model import INDEX, LETTERS, collision_matrix
-from certify.run.runner import CERTIFICATES, Context, FAIL, PASS, altered, run_certificate
 from certify.dynamics import cones as RC
+from certify.dynamics import reduction as R
+from certify.dynamics import simulate as sim
+from certify.dynamics.model import INDEX, LETTERS, collision_matrix
+from certify.run.runner import CERTIFICATES, FAIL, PASS, Context, altered, run_certificate
 from proofs import section4_1_reduction_theorem as S41
 from proofs import section4_2_final_expressions as S42
 from proofs import section4_3_impossible_sequences as S43
-from tests.shared import CONTEXT as CTX, outcome
+from tests.shared import CONTEXT as CTX
+from tests.shared import outcome
 
 Q = flint.fmpq
 
@@ -164,9 +166,9 @@ def test_corner_when_cos_phi_vanishes():
 
 def test_word_of_matches_the_orbit():
     P = R.canonical("c", [5, -3, 2])
-    for r in (Q(1, 10), Q(3, 4)):
-        w, end = R.word_of(P, r, 300, reduce_every=7)
-        orbit = R.orbit(P, r, 300)
+    for rr in (Q(1, 10), Q(3, 4)):
+        w, end = R.word_of(P, rr, 300, reduce_every=7)
+        orbit = R.orbit(P, rr, 300)
         assert w == R.word(orbit) and end == orbit[-1]
 
 

@@ -7,9 +7,9 @@ import sympy as sp
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
+from certify.algebra.balls import precision
 from certify.dynamics import simulate as sim
 from certify.dynamics.model import collision_matrix
-from certify.algebra.balls import precision
 
 Q = flint.fmpq
 rationals = st.fractions(min_value=-5, max_value=5, max_denominator=50).map(lambda f: Q(f.numerator, f.denominator))

@@ -8,12 +8,12 @@ import math
 import numpy as np
 import pytest
 
-from certify.cli import main
 import certify.numerics as F
-from certify.run import load_findings, runner, saving as figures
+from certify.cli import main
+from certify.run import load_findings, runner
+from certify.run import saving as figures
 from certify.run.runner import OBSERVED
 from tests.shared import outcome as run
-
 
 # --- observables on synthetic data ------------------------------------------------------
 

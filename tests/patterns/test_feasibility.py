@@ -5,9 +5,9 @@ import pytest
 import sympy as sp
 
 from certify.algebra.branches import simplest_between
+from certify.algebra.poly import parse
 from certify.dynamics.words import candidate, check_position_map
 from certify.patterns.feasibility import mod_cp, prefix_requirements
-from certify.algebra.poly import parse
 
 Q = flint.fmpq
 

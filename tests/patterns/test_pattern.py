@@ -141,6 +141,7 @@ def test_r_range_restricts():
 def test_dominance_is_the_jury_criterion():
     """At r = 1/2, λ = 1 for cp = (λ-1)(λ²+pλ+q): dominant iff |q| < 1 and |p| < 1 + q."""
     import sympy as sp
+
     from certify.algebra.poly import lam
     for p, q, dominant in ((0, sp.Rational(1, 2), True), (sp.Rational(-3, 2), sp.Rational(1, 2), False),
                            (0, sp.Rational(-3, 2), False), (sp.Rational(1, 5), sp.Rational(-1, 2), True)):
@@ -203,6 +204,7 @@ def test_the_engine_certifies_what_the_committed_digests_record():
     cb9d573, before the fast exact core, but for a reworded diagnosis): the same sets."""
     import hashlib
     from pathlib import Path
+
     from certify.patterns import census
     path = Path(__file__).resolve().parents[2] / "reports" / "pattern-json-digests.txt"
     recorded = dict(line.split() for line in path.read_text(encoding="utf-8").splitlines() if not line.startswith("#"))

@@ -35,7 +35,7 @@ def test_every_paper_line_is_a_range():
 def test_every_range_lies_in_the_source():
     n = len(PAPER.read_text(encoding="utf-8").splitlines())
     for cert in runner.select():
-        for lo, hi in ranges(cert.line):
+        for _lo, hi in ranges(cert.line):
             assert hi <= n, (cert.id, cert.line, n)
 
 

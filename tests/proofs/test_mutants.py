@@ -14,8 +14,7 @@ as the report labels it)."""
 import pytest
 
 from certify.run.report import status_label
-from certify.run.runner import (CERTIFICATES, CONSTANT, FAIL, MUTANT_KINDS, OBSERVED, UNREAD, WORDING, claim_key,
-                                holds)
+from certify.run.runner import CERTIFICATES, CONSTANT, FAIL, MUTANT_KINDS, OBSERVED, UNREAD, WORDING, claim_key, holds
 from tests.shared import as_printed, outcome, read, registry
 
 IDS = sorted(registry(), key=claim_key)          # collection needs the ids: the session's one registration

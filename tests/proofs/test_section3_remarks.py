@@ -3,7 +3,6 @@ import flint
 import pytest
 import sympy as sp
 
-from certify.algebra.poly import parse
 from certify.dynamics.words import candidate
 from certify.patterns.feasibility import Analysis, prefix_requirements
 from proofs import section3_remarks as T

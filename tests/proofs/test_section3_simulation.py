@@ -2,8 +2,8 @@
 import flint
 import pytest
 
-from proofs import section3_theorem as T
 from certify.algebra.balls import precision
+from proofs import section3_theorem as T
 from tests.shared import as_printed
 
 

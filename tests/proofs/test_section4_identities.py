@@ -5,8 +5,8 @@ import sympy as sp
 
 from certify.algebra import trig as T
 from certify.algebra.poly import lam, r
-from certify.run.runner import CERTIFICATES, FAIL, PASS, altered, run_certificate
 from certify.algebra.trig import cθ, cφ, sθ, sφ
+from certify.run.runner import CERTIFICATES, FAIL, PASS, altered, run_certificate
 from tests.shared import outcome
 
 

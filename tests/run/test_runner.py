@@ -7,7 +7,6 @@ import pytest
 from certify.run import report, runner
 from certify.run.runner import ERRATUM, FAIL, PASS, Certificate, Check, Quantity, conclude
 
-
 # --------------------------------------------------------------------------
 # conclude: the verdict rests on checks that could fail
 
