@@ -20,6 +20,10 @@
                                 the exact analysis of one periodic word (ababcb,
                                 (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
                                 exist, are feasible, are stable (certify.patterns.pattern)
+    orbit WORD [--json] [--r-range LO HI]
+                                the periodic orbits of the reduction with one word:
+                                where they exist, are feasible, attracting, saddles,
+                                repelling (certify.patterns.reduction_orbits)
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
@@ -304,6 +308,19 @@ def cmd_pattern(args) -> int:
     return 0
 
 
+def cmd_orbit(args) -> int:
+    """The periodic orbits of the reduction with one word: Markdown on stdout, or JSON
+    with --json (schema certify/patterns/orbit.schema.json).  A bad word is a UsageError
+    (exit 2), raised before any work."""
+    from certify.patterns import check_range, read
+    from certify.patterns.reduction_orbits import analyse as analyse_orbit
+    lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
+    read(args.word)                       # validate first: one line, exit 2
+    result = analyse_orbit(args.word, lo, hi)
+    print(result.json_text() if args.json else result.markdown())
+    return 0
+
+
 def cmd_particles(args) -> int:
     """Simulate the four particles exactly; one line per collision, then why it stopped."""
     if args.digits > MAX_DIGITS:
@@ -576,6 +593,17 @@ def build_parser() -> Parser:
     p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
                    help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
     p.set_defaults(func=cmd_pattern)
+
+    p = commands.add_parser("orbit", help="certify the periodic orbits of the reduction (Section 4) with one word",
+                            description="For each real eigenvalue of M_w: where in r the periodic orbit of the "
+                            "reduction with this word exists and is feasible, and whether it is attracting, a saddle "
+                            "or repelling (in-plane pair real or complex), with algebraic end points.  Same words as "
+                            "`pattern` (four particles: a, b and c).")
+    p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n")
+    p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/orbit.schema.json)")
+    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
+                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
+    p.set_defaults(func=cmd_orbit)
 
     p = commands.add_parser("particles", help="simulate four particles exactly",
                             description="Four particles on a line, equal masses, restitution "
