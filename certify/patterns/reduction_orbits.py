@@ -472,3 +472,20 @@ def _undecided(an: Analysis) -> set:
 
 def _short(a) -> str:
     return str(a.lo) if a.is_rational else "≈" + a.digits(10)
+
+
+# ------------------------------------------------------------------ n* at a rational r
+def normal_at(word: str, r, branch: int, bits: int = 256) -> tuple:
+    """A rational approximation of n* = (n_1, n_2, 1) at the rational r on the real
+    branch ``branch`` (0 = the largest real eigenvalue) of the normal form ``word``:
+    N(λ̃, r)/N_3(λ̃, r) with λ̃ a rational within 2^-bits of λ_x (an isolating interval
+    refined by bisection); for simulations and tests, not a certificate."""
+    cand = candidate_in("four", word)
+    r = flint.fmpq(r)
+    lams = cand.spectrum.real_eigenvalues(r)
+    L = lams[branch]
+    L.refine(flint.fmpq(1, 2 ** bits))
+    lt = L.lo if L.is_rational else (L.lo + L.hi) / 2
+    N = left_eigenvector(cand.Mq)
+    v = [e(lt, r) for e in N]
+    return (v[0] / v[2], v[1] / v[2], flint.fmpq(1))
