@@ -95,7 +95,7 @@ from pathlib import Path
 import flint
 import sympy as sp
 
-from certify.algebra.poly import LR_LAMBDA, LRCTX, LRQCTX, Frac, flint_poly_to_frac, frac_to_field, lam, show
+from certify.algebra.poly import LR_LAMBDA, LRCTX, LRQCTX, Frac, flint_poly_to_frac, frac_to_field, lam, lr_to_ring, show
 from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ORIENTATION, cofactor_columns
 from certify.dynamics.systems import candidate_in
@@ -236,8 +236,10 @@ def mu_requirement(cp_ring) -> Requirement:
 
 def pair_requirement(spectrum, sign: int) -> Requirement:
     """disc_λ cp < 0 (sign -1: the in-plane pair complex) or > 0 (real)."""
-    from certify.algebra.poly import from_flint, to_field
-    return Requirement("disc_λ cp", (to_field(from_flint(spectrum.disc)), K.zero), sign)
+    from certify.algebra.poly import RING, to_field
+    zeros = (0,) * (len(RING.gens) - 2)
+    disc = RING.from_dict({(0, k) + zeros: RING.domain(int(c)) for k, c in enumerate(spectrum.disc.coeffs()) if c})
+    return Requirement("disc_λ cp", (to_field(disc), K.zero), sign)
 
 
 # ------------------------------------------------------------------ results
@@ -443,19 +445,31 @@ def analyse(word: str, lo=0, hi=1) -> OrbitResult:
     pat = analyse_pattern(normal, lo, hi, formulas=False)
 
     def formulas():
-        out = {}
         N = left_eigenvector(cand.Mq)
-        for name, k in (("n_1", 0), ("n_2", 1)):
-            num, den = sp.fraction(sp.cancel(_ratio(divmod(N[k], C)[1], divmod(N[2], C)[1]).as_expr()))
-            out[name] = _cap(f"({show(sp.factor(num) if len(str(num)) < 3000 else num)}) / "
-                             f"({show(sp.factor(den) if len(str(den)) < 3000 else den)})")
-        out["n*"] = "(n_1, n_2, 1), λ modulo cp"
+        den = divmod(N[2], C)[1]
+        out = {name: _cap(_factored(divmod(N[k], C)[1], den)) for name, k in (("n_1", 0), ("n_2", 1))}
+        out["n*"] = "(n_1, n_2, 1), λ a root of cp (the formulas reduced modulo cp)"
         return out
     res = OrbitResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cand.cp, lam)), conditions, regions,
                       sorted(undecided), pat, formulas=formulas)
     res.verdict, res.physics = verdict(res), physics(res)
     res.seconds = time.perf_counter() - start
     return res
+
+
+def _factored(num, den) -> str:
+    """num/den (fmpq_mpoly in (λ, r)) in lowest terms, numerator and denominator factored
+    over Q (python-flint), in the paper's notation."""
+    (P, a), (Q_, b) = _lr(num), _lr(den)
+    F = Frac(P * int(b), Q_ * int(a))
+
+    def text(p):
+        c, factors = p.factor()
+        parts = [(show(lr_to_ring(f)), int(m)) for f, m in factors]
+        parts = [f"({t})" + (f"^{m}" if m > 1 else "") if len(parts) > 1 or c != 1 or m > 1 else t for t, m in parts]
+        head = "" if c == 1 and parts else "-" if c == -1 and parts else str(c)
+        return head + "".join(parts)
+    return f"({text(F.num)}) / ({text(F.den)})"
 
 
 def _fork(an: Analysis) -> Analysis:
