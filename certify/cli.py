@@ -24,6 +24,9 @@
                                 the periodic orbits of the reduction with one word:
                                 where they exist, are feasible, attracting, saddles,
                                 repelling (certify.patterns.reduction_orbits)
+    identify (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N] [--json]
+                                the periodic word each simulated orbit settles on,
+                                certified by orbit (certify.run.identify)
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
@@ -321,6 +324,22 @@ def cmd_orbit(args) -> int:
     return 0
 
 
+def cmd_identify(args) -> int:
+    """Simulate, read the periodic word each orbit settles on, certify it with `orbit`:
+    one line per orbit, or JSON with --json (certify.run.identify)."""
+    from certify.run import identify as ident
+    if (args.r is None) == (args.r_range is None):
+        raise UsageError("give --r R [R ...] or --r-range LO HI COUNT")
+    rs = ident.rationals(args.r) if args.r is not None else ident.r_grid(*args.r_range)
+    found = ident.identify(rs, orbits=args.orbits, collisions=args.collisions)
+    if args.json:
+        print(ident.json_text(found))
+    else:
+        for x in found:
+            print(x.line())
+    return 0
+
+
 def cmd_particles(args) -> int:
     """Simulate the four particles exactly; one line per collision, then why it stopped."""
     if args.digits > MAX_DIGITS:
@@ -604,6 +623,21 @@ def build_parser() -> Parser:
     p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
                    help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
     p.set_defaults(func=cmd_orbit)
+
+    p = commands.add_parser("identify", help="the periodic word each simulated orbit settles on, certified by `orbit`",
+                            description="Runs the float64 simulator (the paper's eight orbits by default), reads the "
+                            "shortest period of each orbit's last collisions, and certifies that word with `orbit`: "
+                            "its normal form and the attracting window that contains r, or why there is none.")
+    p.add_argument("--r", nargs="+", default=None, metavar="R", help="values of r (exact rationals: 0.3 is 3/10)")
+    p.add_argument("--r-range", nargs=3, default=None, metavar=("LO", "HI", "COUNT"),
+                   help="COUNT equally spaced r from LO to HI, ends included")
+    p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
+                   help="the first N initial data of the paper's grid (default: 8)")
+    p.add_argument("--collisions", type=positive_int, default=10_000, metavar="N",
+                   help="collisions simulated per orbit (default: 10000)")
+    p.add_argument("--json", action="store_true",
+                   help="print JSON: a list of orbits, each with r, theta0, phi0, word and window")
+    p.set_defaults(func=cmd_identify)
 
     p = commands.add_parser("particles", help="simulate four particles exactly",
                             description="Four particles on a line, equal masses, restitution "
