@@ -10,8 +10,8 @@ For each repetition the engine's caches are emptied first
 
 Measured, each a median of N runs in one sitting:
 
-* ``run(jobs=1)``: every certificate one after another, in this process;
-* ``run(jobs=J)``: the same on J worker processes (default: every core);
+* ``run_selected(jobs=1)``: every certificate one after another, in this process;
+* ``run_selected(jobs=J)``: the same on J worker processes (default: every core);
 * ``python -m certify all --out TMP``: the whole command (imports, certificates on
   every core, figures, report), wall time.
 
@@ -53,7 +53,7 @@ def time_runs(repeat: int, jobs: int) -> list[dict]:
     for _ in range(repeat):
         runner.reset_caches()
         start = time.perf_counter()
-        results, timings = runner.run(jobs=jobs)
+        results, timings = runner.run_selected(jobs=jobs)
         total = time.perf_counter() - start
         fails = [c.id for c, o in results if o.status == runner.FAIL]
         runs.append({"total": total, "timings": timings, "fails": fails})
@@ -122,8 +122,8 @@ def machine() -> str:
 
 def markdown(serial: dict, parallel: dict, jobs: int, command: list[float]) -> str:
     """The section of reports/BENCH.md for ``certify all``."""
-    rows = [("`runner.run(jobs=1)`, in-process", serial["median"], serial["min"]),
-            (f"`runner.run(jobs={jobs})`, in-process", parallel["median"], parallel["min"]),
+    rows = [("`runner.run_selected(jobs=1)`, in-process", serial["median"], serial["min"]),
+            (f"`runner.run_selected(jobs={jobs})`, in-process", parallel["median"], parallel["min"]),
             (f"`python -m certify all` (whole command, {jobs} processes)", statistics.median(command), min(command))]
     table = ["| run | median s | min s |", "|---|---:|---:|"]
     table += [f"| {name} | {med:.2f} | {low:.2f} |" for name, med, low in rows]

@@ -54,7 +54,7 @@ import mpmath  # noqa: E402
 import numba  # noqa: E402
 import numpy as np  # noqa: E402
 
-from certify.numerics import engines, kernel, paper_grid, rules, simulate  # noqa: E402
+from certify.numerics import engines, kernel, iterate, paper_grid, rules  # noqa: E402
 from certify.run import files  # noqa: E402
 
 BENCH = ROOT / "reports" / "BENCH.md"
@@ -127,12 +127,12 @@ def ball_tables(quick):
 
 
 def paper_sweep(threads, n_r=3709, collisions=10_000):
-    """Seconds of simulate() over n_r values of r in [0.072, 0.999] × the 8 grid orbits."""
+    """Seconds of iterate() over n_r values of r in [0.072, 0.999] × the 8 grid orbits."""
     numba.set_num_threads(threads)
     r = np.linspace(0.072, 0.999, n_r)
-    simulate(r[:2], THETA, PHI, collisions=10, keep=5)
+    iterate(r[:2], THETA, PHI, collisions=10, keep=5)
     start = time.perf_counter()
-    out = simulate(r, THETA, PHI, collisions=collisions, keep=500)
+    out = iterate(r, THETA, PHI, collisions=collisions, keep=500)
     seconds = time.perf_counter() - start
     numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
     return seconds, out

@@ -25,13 +25,11 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:  # run as a script from a source checkout
     sys.path.insert(0, str(ROOT))
 
-import flint  # noqa: E402
-
 from certify.dynamics import reduction as R  # noqa: E402
 from certify.dynamics import simulate as sim  # noqa: E402
 from certify.algebra.balls import precision  # noqa: E402
+from certify.algebra import Q  # noqa: E402
 
-Q = flint.fmpq
 R_PHYS = Q(1, 20)
 P0, Q0 = (Q(0), Q(3), Q(5)), (Q(2), Q(-7), Q(-9))        # collapses at r = 1/20
 R_MAP, PLANE = Q(37, 100), ("a", (3, 5, -4))
@@ -52,7 +50,7 @@ def median_time(f, repeat: int):
 
 
 def physical(n: int, repeat: int) -> None:
-    seconds, run = median_time(lambda: sim.run(P0, Q0, R_PHYS, n), repeat)
+    seconds, run = median_time(lambda: sim.follow(P0, Q0, R_PHYS, n), repeat)
     marks = [k for k in (10, 100, 1000, 10_000) if k < len(run.states)]
     growth = ", ".join(f"{k}: {max(bits(z) for z in run.states[k].p + run.states[k].q)}/{bits(run.states[k].t)}"
                        for k in marks)

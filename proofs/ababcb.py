@@ -10,16 +10,15 @@ import re
 import flint
 import sympy as sp
 
-from certify.algebra import (Algebraic, Condition, FixedPoint, discriminant_lambda,
+from certify.algebra import (BRANCH_NAMES, LOWER, MIDDLE, UPPER, Algebraic, Condition, FixedPoint, discriminant_lambda,
     eliminate, flint_real_roots, sturm_count, lam, parse, primitive, r, show, show_factored_int, sign_intervals, statements,
     to_field, to_fmpq_poly, to_fmpz_poly, u, v, x)
 from certify.dynamics import (A as A_, B as B_, C as C_, candidate, characteristic_polynomial, reduce_mod,
     velocities)
 from certify.patterns import Analysis, fmt, prefix_requirements
-from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude, quantity
+from certify.run import (ERRATUM, FALSE_STATEMENT, MISPRINT, PASS, Check, certificate, conclude, overridden,
+                        quantity, replaced, reworded, unread)
 
-UPPER, MIDDLE, LOWER = 0, 1, 2
-BRANCH = {UPPER: "upper", MIDDLE: "middle", LOWER: "lower"}
 WORD = "ababcb"
 
 # ---------------------------------------------------------------- as printed
@@ -153,7 +152,9 @@ def count_check(name, roots, counts, expected) -> Check:
 
 # ---------------------------------------------------------------- T1-T4: M and its spectrum
 @certificate("T1", "l. 257-263", "M = BCBABA equals the printed matrix, entry by entry.",
-             needs=["M"], printed=dict(M_text=M_PRINTED))
+             needs=["M"], printed=dict(M_text=M_PRINTED),
+             expect=PASS,
+             mutants=[replaced("M_text", "7*r + 9", "7*r + 8", "a coefficient of M")])
 def matrix_of_ababcb(M, M_text):
     """The product of the collision matrices in time order a, b, a, b, c, b."""
     printed = sp.Matrix(parse(M_text))
@@ -165,7 +166,9 @@ def matrix_of_ababcb(M, M_text):
 
 
 @certificate("T2", "l. 335-339", "cp(M) equals the printed characteristic polynomial.",
-             needs=["cp"], printed=dict(cp_text=CP_PRINTED))
+             needs=["cp"], printed=dict(cp_text=CP_PRINTED),
+             expect=PASS,
+             mutants=[replaced("cp_text", "74*r + 25", "74*r + 24", "a coefficient of cp")])
 def characteristic_polynomial_of_M(cp, cp_text):
     """det(λI - M) expanded, against the print."""
     diff = sp.expand(cp - parse(cp_text))
@@ -173,7 +176,11 @@ def characteristic_polynomial_of_M(cp, cp_text):
 
 
 @certificate("T3", "l. 340", "det M = r^6 > 0, hence a positive real eigenvalue for every r in ]0,1[.",
-             needs=["M", "spectrum"], printed=dict(det_text="r^6", det_sign="positive"))
+             needs=["M", "spectrum"], printed=dict(det_text="r^6", det_sign="positive"),
+             expect=PASS,
+             mutants=[overridden({"det_text": "-r^6"}, "the sign of det M"),
+                      reworded("det_sign", "positive", "negative"),
+                      reworded("det_sign", "positive", "zero")])
 def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
     """det M as printed, and its printed sign ("the determinant of M is r^6, which is
     positive") read and checked on the exact sign intervals of det M over ]0,1[; the
@@ -205,7 +212,11 @@ def cardano(cp):
 
 @certificate("T4", "l. 340-349", "Δ_cp = -(1/1811939328)(r-1)^4(r+1)^6(3r^2-14r+3)^2 P0(r), and three real "
              "roots iff Δ_cp < 0.", needs=["cp"], printed=dict(delta_text=DELTA_PRINTED, P0_text=P0_PRINTED,
-                                                             three_real_when="Δ_cp < 0"))
+                                                             three_real_when="Δ_cp < 0"),
+             expect=PASS,
+             mutants=[replaced("three_real_when", "<", ">", "the direction of the condition"),
+                      reworded("three_real_when", "<", "≤", "Δ_cp = 0 is a double root, not three"),
+                      unread("three_real_when", "Δ_cp << 0", "not a relation")])
 def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     """The printed Δ_cp is -Disc_λ(cp)/108 = (q/2)² + (p/3)³ (Cardano's form for the
     depressed cubic), not the discriminant itself; with that normalisation, three
@@ -234,7 +245,9 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
 
 # ---------------------------------------------------------------- T5-T8: r* and the branches
 @certificate("T5", "l. 350", "P0 has exactly one root r* in ]0,1[, r* ≈ 0.11384 (Sturm).",
-             needs=["cp"], printed=dict(P0_text=P0_PRINTED, count=1, digits="0.11384"))
+             needs=["cp"], printed=dict(P0_text=P0_PRINTED, count=1, digits="0.11384"),
+             expect=PASS,
+             mutants=[overridden({"digits": "0.11385"}, "a digit of r*")])
 def P0_has_one_root(cp, P0_text, count, digits):
     """Sturm count and python-flint count; the digits certified by an isolating interval."""
     roots, nf = root_in_unit_interval(P0_text)
@@ -260,7 +273,13 @@ def _end(a: Algebraic) -> str:
 
 @certificate("T6", "l. 350", "Δ_cp < 0 for r < r*, Δ_cp ≥ 0 for r > r*, with equality only at (7-2√10)/3.",
              printed=dict(delta_text=DELTA_PRINTED, P0_text=P0_PRINTED, r0=(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
-                          below="Δ_cp < 0 for r < r*", above="Δ_cp ≥ 0 for r > r*"))
+                          below="Δ_cp < 0 for r < r*", above="Δ_cp ≥ 0 for r > r*"),
+             expect=PASS,
+             mutants=[replaced("below", "Δ_cp <", "Δ_cp >", "the direction below r*"),
+                      reworded("below", "r < r*", "r > r*"),
+                      reworded("above", "≥", ">", "Δ_cp vanishes at (7-2√10)/3 > r*"),
+                      reworded("above", "Δ_cp ≥", "Δ_cp ≤"),
+                      unread("below", "Δ_cp < 0 for r ≤ r*", "a closed end is not read")])
 def sign_of_delta(delta_text, P0_text, r0, below, above):
     """Exact sign intervals of the printed Δ_cp (a polynomial in r) on ]0,1[; each
     printed condition read (a relation on Δ_cp, a range of r) and evaluated on the
@@ -287,7 +306,11 @@ def sign_of_delta(delta_text, P0_text, r0, below, above):
 @certificate("T7", "l. 349", "3r^2-14r+3 has the root (7-2√10)/3 ≈ 0.22515 in ]0,1[, and the repeated "
              "eigenvalue there is negative.", needs=["spectrum"],
              printed=dict(quadratic="3*r^2 - 14*r + 3", r0=(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
-                          digits="0.22515", repeated="negative"))
+                          digits="0.22515", repeated="negative"),
+             expect=PASS,
+             mutants=[overridden({"repeated": "positive"}, "the sign of the repeated eigenvalue"),
+                      reworded("repeated", "negative", "non-negative"),
+                      unread("repeated", "small", "not a sign word")])
 def repeated_eigenvalue(spectrum, quadratic, r0, digits, repeated):
     """At r0 the gcd of cp and ∂cp/∂λ, computed exactly in Q(r0)[λ], is linear: its
     root is the double eigenvalue, whose sign is certified by ball arithmetic."""
@@ -308,7 +331,12 @@ def repeated_eigenvalue(spectrum, quadratic, r0, digits, repeated):
 
 @certificate("T8", "l. 336, 350, 491", "Three real eigenvalues exactly below r*; the upper branch exists on all of "
              "]0,1[; the two others are smaller in absolute value; all three are positive up to 5-2√6.",
-             needs=["spectrum"], printed=dict(P0_text=P0_PRINTED, r1=R1_PRINTED, positive="λ > 0 for 0 < r < 5-2√6"))
+             needs=["spectrum"], printed=dict(P0_text=P0_PRINTED, r1=R1_PRINTED, positive="λ > 0 for 0 < r < 5-2√6"),
+             expect=PASS,
+             mutants=[replaced("P0_text", "41*r^10", "40*r^10", "a coefficient of P0"),
+                      reworded("positive", "λ > 0", "λ < 0"),
+                      reworded("positive", "5-2√6", "1", "the lower branches end at r*"),
+                      unread("positive", "μ > 0 for 0 < r < 5-2√6", "an unknown name")])
 def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
     """Number of real eigenvalues per cell (Sturm at one sample per cell, constant
     between the zeros of Disc_λ(cp)); the sign of λ on each branch, against the
@@ -334,7 +362,7 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
         Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
                                                                              f"r* is {rs.describe()}"]),
         Check(f"all three eigenvalues: {positive}", all_three,
-              [f"{BRANCH[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)]),
+              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)]),
         Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
               "(all positive there, ordered)", pos_rstar),
     ], figures=figs)
@@ -342,7 +370,9 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
 
 # ---------------------------------------------------------------- T9-T10: the datum and f
 @certificate("T9", "l. 302-307, 366", "u and v as printed solve the first two components of M q(0) = λ q(0).",
-             needs=["M"], printed=dict(U=U_PRINTED, V=V_PRINTED))
+             needs=["M"], printed=dict(U=U_PRINTED, V=V_PRINTED),
+             expect=PASS,
+             mutants=[replaced("U", "16*λ", "15*λ", "a coefficient of u")])
 def eigenvector_components(M, U, V):
     """Substitute q(0) = (-1, u, v) into rows 1 and 2 of M q - λ q: zero in Q(r, λ)."""
     q0 = sp.Matrix([-1, parse(U), parse(V)])
@@ -358,7 +388,9 @@ def eigenvector_components(M, U, V):
 
 @certificate("T10", "l. 310-317, 373-379", "After ababcb, p(t6) = p1(t6)(1, 0, f(x)) with f(x) = (ax+b)/(cx+d) "
              "and a, b, c, d as printed.", needs=["candidate"],
-             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED))
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED),
+             expect=PASS,
+             mutants=[replaced("d", "372*r^5", "373*r^5", "a coefficient of d")])
 def position_map_of_ababcb(candidate, a, b, c, d):
     """The computed (a, b, c, d) and the printed ones are proportional modulo cp:
     every 2×2 minor of the two quadruples reduces to zero.  That the collisions are
@@ -387,7 +419,9 @@ def position_map_of_ababcb(candidate, a, b, c, d):
 
 
 # ---------------------------------------------------------------- T11-T16: a-d, b, c
-@certificate("T11", "l. 388-392", "The printed expansion of a-d.", printed=dict(a=A_PRINTED, d=D_PRINTED, amd=AMD_PRINTED))
+@certificate("T11", "l. 388-392", "The printed expansion of a-d.", printed=dict(a=A_PRINTED, d=D_PRINTED, amd=AMD_PRINTED),
+             expect=PASS,
+             mutants=[replaced("amd", "1024*r^6", "1023*r^6", "a coefficient of a-d")])
 def expansion_of_a_minus_d(a, d, amd):
     """a - d from the printed a and d, expanded, against the printed expansion."""
     diff = sp.expand(parse(a) - parse(d) - parse(amd))
@@ -405,13 +439,17 @@ def eliminant_check(name, g, cp, printed_product) -> list[Check]:
 
 
 @certificate("T12", "l. 393-400", "Gröbner basis of {a-d, cp(M)}, lex λ>r, gives r^6(r-1)^4(r+1)^4(r^2-10r+1)P1(r).",
-             needs=["cp"], printed=dict(amd=AMD_PRINTED, P1_text=P1_PRINTED))
+             needs=["cp"], printed=dict(amd=AMD_PRINTED, P1_text=P1_PRINTED),
+             expect=PASS,
+             mutants=[replaced("P1_text", "35", "36", "a coefficient of P1")])
 def eliminant_of_a_minus_d(cp, amd, P1_text):
     return conclude(eliminant_check("a-d", parse(amd), cp, f"r^6*(r-1)^4*(r+1)^4*(r^2-10*r+1)*({P1_text})"))
 
 
 @certificate("T13", "l. 401", "P1 has exactly three real roots, exactly one in ]0,1[, r2 ≈ 0.13145.",
-             printed=dict(P1_text=P1_PRINTED, real=3, inside=1, digits="0.13145"))
+             printed=dict(P1_text=P1_PRINTED, real=3, inside=1, digits="0.13145"),
+             expect=PASS,
+             mutants=[overridden({"digits": "0.13146"}, "a digit of r2")])
 def roots_of_P1(P1_text, real, inside, digits):
     """Sturm counts over R, ]-∞,0] and [1,∞[, with python-flint's count beside them."""
     P = to_fmpz_poly(parse(P1_text))
@@ -449,7 +487,12 @@ def keeps_sign_at(T, branch, point) -> bool:
 
 @certificate("T14", "l. 402-403", "Sign of a-d on each branch: changes at r1 = 5-2√6 on the middle branch and at "
              "r2 on the upper branch.", needs=["spectrum"],
-             printed=dict(amd=AMD_PRINTED, r1=R1_PRINTED, P1_text=P1_PRINTED, at_r1="middle", at_r2="upper"))
+             printed=dict(amd=AMD_PRINTED, r1=R1_PRINTED, P1_text=P1_PRINTED, at_r1="middle", at_r2="upper"),
+             expect=PASS,
+             mutants=[overridden({"at_r1": "upper"}, "the branch where a-d changes sign at r1"),
+                      reworded("at_r1", "middle", "lower"),
+                      reworded("at_r2", "upper", "middle"),
+                      unread("at_r1", "central", "not a branch")])
 def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
     """The sign table of a-d over ]0,1[ (Figure 3, fig: sign changes a-d)."""
     from certify.run import sign_chart
@@ -468,7 +511,9 @@ def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
 
 @certificate("T15", "l. 418-427", "Gröbner basis of {b, cp(M)} gives r^6(r-1)^4(r+1)^4(r^2-10r+1)(5r^4-40r^3+102r^2"
              "-40r+5); the quartic has no real root; b changes sign at 5-2√6 on the lower branches.",
-             needs=["cp", "spectrum"], printed=dict(b=B_PRINTED, quartic=QUARTIC_B_PRINTED, r1=R1_PRINTED))
+             needs=["cp", "spectrum"], printed=dict(b=B_PRINTED, quartic=QUARTIC_B_PRINTED, r1=R1_PRINTED),
+             expect=PASS,
+             mutants=[replaced("quartic", "102*r^2", "20*r^2", "a quartic with real roots")])
 def sign_of_b(cp, spectrum, b, quartic, r1):
     """Elimination both ways, the quartic's real roots counted both ways, and the
     sign table of b (Figure 4, fig: sign change b)."""
@@ -493,7 +538,12 @@ T16_CORRECTION = ("c > 0", "c < 0")          # in the second half, l. 433
 
 @certificate("T16", "l. 428-434", "Sign of c equals the sign of r^2-10r+1 on λ>0: c>0 for r<5-2√6 and c>0 for "
              "r>5-2√6, as printed in both halves of the sentence.",
-             printed=dict(c=C_PRINTED, below="c > 0 for r < 5-2√6", above="c > 0 for r > 5-2√6"))
+             printed=dict(c=C_PRINTED, below="c > 0 for r < 5-2√6", above="c > 0 for r > 5-2√6"),
+             expect=ERRATUM,
+             mutants=[replaced("c", "(r^2 - 10*r + 1)", "(r^2 - 9*r + 1)", "a coefficient of c"),
+                      reworded("below", "c > 0", "c < 0"),
+                      reworded("above", "c > 0", "c ≥ 0", "the stated correction no longer applies"),
+                      unread("below", "c > 0 for r < 5-2√6 for r > 0", "two ranges")])
 def sign_of_c(c, below, above):
     """c/λ is a polynomial in r: its exact sign intervals on ]0,1[, and sign c = sign c/λ
     as λ > 0 (l. 432).  Each half of the printed sentence is read (a relation on c, a
@@ -564,7 +614,9 @@ def no_positive_fixed_point(spectrum, fp, xp, xm, branch, lo, hi, skip=()) -> tu
 @certificate("T17", "l. 435-437", "Step 2.4, upper branch: one positive fixed point x₊ up to 5-2√6; none between "
              "5-2√6 and r2; not real at r2 and beyond, (a-d)^2+4bc < 0 until r = 1.", needs=["spectrum"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, V=V_PRINTED,
-                          r1=R1_PRINTED, P1_text=P1_PRINTED))
+                          r1=R1_PRINTED, P1_text=P1_PRINTED),
+             expect=ERRATUM,
+             mutants=[replaced("c", "16*", "-16*", "the sign of c")])
 def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
     """a-d, b, c > 0 on the upper branch below r1, so x₊ > 0 > x₋; the sign tables of
     x₊, x₋ and Δ = (a-d)² + 4bc on the upper branch over ]0,1[, and exact zero tests
@@ -610,7 +662,9 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
 
 
 @certificate("T18", "l. 438", "Middle branch: no positive fixed point anywhere in ]0,1[.", needs=["spectrum"],
-             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, r1=R1_PRINTED, P0_text=P0_PRINTED))
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, r1=R1_PRINTED, P0_text=P0_PRINTED),
+             expect=PASS,
+             mutants=[replaced("c", "16*", "-16*", "the sign of c")])
 def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
     """The middle branch exists on ]0, r*]; x₊ and x₋ are negative or not real there
     except at r1, where a - d = b = c = 0 exactly on this branch: f is the identity."""
@@ -636,7 +690,9 @@ def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
 
 
 @certificate("T19", "l. 439-440", "Lower branch: exactly one positive fixed point x₊ up to 5-2√6.", needs=["spectrum"],
-             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED))
+             printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED),
+             expect=PASS,
+             mutants=[replaced("c", "16*", "-16*", "the sign of c")])
 def lower_branch_fixed_points(spectrum, a, b, c, d, r1):
     rr1 = r1_of(r1)
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
@@ -652,7 +708,10 @@ def lower_branch_fixed_points(spectrum, a, b, c, d, r1):
 @certificate("T20", "l. 446-450", "u = 0 forces (r^2-10r+1)(r^5-15r^4+66r^3-86r^2-35r+5) = 0; the quintic has exactly "
              "one root in ]0,1[, ≈ 0.11376; u > 0 on the upper and lower branches for r < 5-2√6.",
              needs=["cp", "spectrum"], printed=dict(U=U_PRINTED, quintic=P3_PRINTED, digits="0.11376", r1=R1_PRINTED,
-                                                    position="larger than 5-2√6"))
+                                                    position="larger than 5-2√6"),
+             expect=PASS,
+             mutants=[overridden({"digits": "0.11377"}, "a digit of the quintic's root"),
+                      reworded("position", "larger", "smaller")])
 def sign_of_u(cp, spectrum, U, quintic, digits, r1, position):
     """u = 0 iff its numerator 16λ - (r^4 - 8r^3 - 2r^2 - 8r + 1) vanishes (r > 0):
     eliminate λ both ways; then the sign table of u."""
@@ -680,7 +739,11 @@ def sign_of_u(cp, spectrum, U, quintic, digits, r1, position):
 @certificate("T21", "l. 449-458", "The five printed velocity expressions q2(t1), q1(t2), q2(t3), q3(t4), q2(t5) "
              "equal the dynamics and are < 0 on the upper and lower branches for r < 5-2√6.", needs=["spectrum"],
              printed=dict(velocities=VELOCITIES_PRINTED, U=U_PRINTED, V=V_PRINTED,
-                          inequality="q < 0 for 0 < r < 5-2√6"))
+                          inequality="q < 0 for 0 < r < 5-2√6"),
+             expect=PASS,
+             mutants=[replaced("inequality", "q <", "q >", "the sign of the velocities"),
+                      reworded("inequality", "5-2√6", "1"),
+                      reworded("inequality", "q < 0", "q ≥ 0")])
 def velocity_inequalities(spectrum, velocities, U, V, inequality):
     """Each expression against the velocities A q(0), BA q(0), ... for q(0) = (-1, u, v)
     with u, v free (an identity), then its sign table with the printed u, v, against
@@ -709,7 +772,9 @@ def velocities_of(word):
 @certificate("T22", "l. 460-486", "The printed p3(t4) and p1(t5) equal the dynamics and are > 0 there; p3(t_i) > 0 "
              "for i = 1..3 follows.", needs=["candidate"],
              printed=dict(p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED,
-                          d=D_PRINTED, U=U_PRINTED, V=V_PRINTED, r1=R1_PRINTED))
+                          d=D_PRINTED, U=U_PRINTED, V=V_PRINTED, r1=R1_PRINTED),
+             expect=PASS,
+             mutants=[replaced("p3t4", "x + ", "-x + ", "a sign in p3(t4)")])
 def distance_inequalities(candidate, p3t4, p1t5, a, b, c, d, U, V, r1):
     """Both distances against the dynamics (modulo cp), their sign tables with x = x₊,
     and the printed argument for p3(t1..t3): A leaves q3 unchanged and B adds
@@ -740,7 +805,10 @@ def distance_inequalities(candidate, p3t4, p1t5, a, b, c, d, U, V, r1):
 @certificate("T23", "l. 492-506", "a+d = 0 with cp(M) = 0 forces r^6(r-1)^6(r+1)^3(r^2-10r+1)P2(r)P3(r) = 0; P2 root "
              "≈ 0.12879, P3 root ≈ 0.11376, both above 5-2√6.", needs=["cp"],
              printed=dict(a=A_PRINTED, d=D_PRINTED, P2_text=P2_PRINTED, P3_text=P3_PRINTED, d2="0.12879",
-                          d3="0.11376", degree=30, position="above 5-2√6"))
+                          d3="0.11376", degree=30, position="above 5-2√6"),
+             expect=PASS,
+             mutants=[replaced("P2_text", "25*r^8", "24*r^8", "a coefficient of P2"),
+                      reworded("position", "above", "below")])
 def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, degree, position):
     product = f"r^6*(r-1)^6*(r+1)^3*(r^2-10*r+1)*({P2_text})*({P3_text})"
     checks = eliminant_check("a+d", parse(a) + parse(d), cp, product)
@@ -796,7 +864,14 @@ def f_prime_at_fixed_point() -> sp.Expr:
 @certificate("T24", "l. 488-509", "Upper branch: |q| > 1 (fixed point of f repelling) below 5-2√6; lower branch: "
              "|q| < 1 but λ not dominant; q = (cx₊+d)/(cx₋+d) as displayed at l. 493.", needs=["spectrum"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED,
-                          q="(c x₊ + d)/(c x₋ + d)", upper="|q|>1", lower="|q|<1", stable_when="|q|<1"))
+                          q="(c x₊ + d)/(c x₋ + d)", upper="|q|>1", lower="|q|<1", stable_when="|q|<1"),
+             expect=ERRATUM,
+             mutants=[replaced("a", "1024*r^6", "-1024*r^6", "a coefficient of a"),
+                      reworded("upper", "|q|>1", "|q|<1", "(|q|≥1 holds with q = f'(x₊): not an alteration that must fail)"),
+                      reworded("lower", "|q|<1", "|q|>1"),
+                      reworded("stable_when", "|q|<1", "|q|≤1"),
+                      reworded("q", "(c x₊ + d)/(c x₋ + d)", "(c x₊ + d)/(c x₋ - d)"),
+                      unread("upper", "|q| > 2", "not a multiple of |q| - 1: not evaluated")])
 def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stable_when):
     """For every Möbius map with real fixed points, |f'(x₊)| - 1 has the sign of -(a+d)
     (:func:`modulus_sign_factor`), and the printed q = (cx₊+d)/(cx₋+d) is 1/f'(x₊): its
@@ -864,7 +939,9 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
 @certificate("T25.1", "l. 276-321", "Theorem 3.1: self-similar data iff r < 5-2√6, given by the printed formulas, "
              "and unstable.", needs=["candidate"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, V=V_PRINTED,
-                          velocities=VELOCITIES_PRINTED, p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, r1=R1_PRINTED))
+                          velocities=VELOCITIES_PRINTED, p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, r1=R1_PRINTED),
+             expect=PASS,
+             mutants=[replaced("U", "16*λ", "-16*λ", "the sign of a coefficient of u")])
 def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     """Two routes.  (1) The exact region analysis of the computed candidate
     (certify.patterns.feasibility): every inequality needed to realise ababcb — all the gaps,
@@ -882,7 +959,7 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
     exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
                      and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
-    regions = [f"{BRANCH[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
+    regions = [f"{BRANCH_NAMES[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
                + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}" if R.dropped else "")
                for R in an.regions]
     fp, xp, _xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
@@ -898,7 +975,7 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
     return conclude([
         Check("every cell and critical value of ]0,1[ decided, on every branch, for both fixed points", not undecided,
-              [f"undecided: {BRANCH[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
+              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
         Check("the candidate realises ababcb, with every inequality strict, exactly for 0 < r < 5-2√6 on the upper "
               "branch and on the lower branch, and nowhere on the middle branch",
               exactly_below[UPPER] and exactly_below[LOWER] and not where[MIDDLE],

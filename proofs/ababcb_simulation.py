@@ -26,14 +26,13 @@ from dataclasses import dataclass
 
 import flint
 
-from certify.algebra import (Algebraic, Condition, GUARD, ball_value, from_flint, lam, parse, precision,
+from certify.algebra import (Q, Algebraic, Condition, GUARD, ball_value, from_flint, lam, parse, precision,
     show, tight, to_fmpq)
 from certify.dynamics import simulate as sim
 from certify.dynamics import candidate, check_word, fixed_point_ball
-from certify.run import Check, certificate, conclude
+from certify.run import PASS, Check, certificate, conclude, overridden, replaced
 from proofs.ababcb import A_PRINTED, B_PRINTED, C_PRINTED, D_PRINTED, U_PRINTED, V_PRINTED
 
-Q = flint.fmpq
 
 PRINTED = dict(U=U_PRINTED, V=V_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, word="ababcb",
                r="1/20", periods=20, perturbation="1/10^30")
@@ -96,7 +95,7 @@ def self_similar_run(datum: Datum, word: str, periods: int, prec: int = 512, max
     decided exactly)."""
     n = len(word) * periods
     while prec <= maxprec:
-        run = sim.run(*datum.balls(prec), n, prec)
+        run = sim.follow(*datum.balls(prec), n, prec)
         if run.stop in ("free", "multiple"):            # decided: the orbit stops colliding
             return run, prec
         if run.stop == "n":
@@ -160,7 +159,13 @@ def branch_data(word: str, r0: flint.fmpq, formulas: dict) -> dict[str, Datum]:
 @certificate("T25.2", "l. 276-285",
              "Theorem 3.1 on the dynamics: from the printed self-similar datum (r = 1/20, chosen by us), the particles "
              "repeat ababcb with q(t_6k) = λ^k q(0), p(t_6k) = μ^k p(0); a perturbation of 10^-30 leaves the pattern "
-             "(unstable) on the upper and on the lower branch.", printed=PRINTED)
+             "(unstable) on the upper and on the lower branch.", printed=PRINTED,
+             expect=PASS,
+             mutants=[replaced("U", "16*λ", "17*λ", "a coefficient of u"),
+                      replaced("V", "64*λ", "65*λ", "a coefficient of v"),
+                      replaced("a", "1024*r^6", "1025*r^6", "a coefficient of a"),
+                      overridden({"word": "abacbc"}, "another word (its matrix, its eigenvalues)"),
+                      overridden({"word": "abcbab"}, "another word (its matrix, its eigenvalues)")])
 def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
     """Certified ball simulation of the printed datum and of perturbed data."""
     r0, eps = to_fmpq(parse(r)), to_fmpq(parse(perturbation))

@@ -35,16 +35,13 @@ The candidate is built by :func:`certify.dynamics.candidate`, the regions by
 """
 from __future__ import annotations
 
-import flint
 import sympy as sp
 
-from certify.algebra import Algebraic, lam, show, simplest_between
+from certify.algebra import FIELD, Q, Algebraic, lam, show, simplest_between
 from certify.dynamics import simulate as sim
-from certify.dynamics import INDEX, K, candidate, collision_matrix, run_word
+from certify.dynamics import INDEX, candidate, collision_matrix, run_word
 from certify.patterns import Analysis, BRANCH_NAMES, Requirement, analyse, fmt, prefix_requirements
-from certify.run import Check, certificate, conclude
-
-Q = flint.fmpq
+from certify.run import PASS, Check, certificate, conclude, overridden
 
 
 def matrix_of_name(name: str) -> sp.Matrix:
@@ -62,7 +59,12 @@ PRINTED_T27 = dict(word="abcab", matrix="BACBA", after="b", next="a", other="c")
 @certificate("T27", "l. 513-515",
              "abcab (matrix BACBA) has no self-similar datum: for the candidate (eigenvector of BACBA, a fixed "
              "point of f), the collision after the first b is a, not c, at a strictly earlier time.",
-             printed=PRINTED_T27)
+             printed=PRINTED_T27,
+             expect=PASS,
+             mutants=[overridden({"matrix": "BACAB"}, "a letter of the matrix name"),
+                      overridden({"matrix": "ABCAB"}, "a letter of the matrix name"),
+                      overridden({"next": "c", "other": "a"}, "the claimed collision order reversed"),
+                      overridden({"word": "acbab"}, "a different word: its matrix BABCA is not BACBA")])
 def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     """On every real branch, for every r in ]0,1[ and both fixed points x±: wherever
     the candidate realises its first collisions up to the first b, the next
@@ -76,7 +78,7 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     feas, steps = prefix_requirements(word, m, cand.q0, cand.steps, cand.q0_other)
     i, o = INDEX[next], INDEX[other]
     tail = run_word(word[:m] + next, cand.q0)[-1]
-    claim = [Requirement(f"q_{i + 1}(t_{m})", (steps[-1].q[i], K.zero), -1),
+    claim = [Requirement(f"q_{i + 1}(t_{m})", (steps[-1].q[i], FIELD.zero), -1),
              Requirement(f"p_{o + 1}(t_{m + 1})", tail.p[o], 1)]
     an = Analysis(cand)
     for req in feas:
@@ -101,7 +103,7 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
         if key[0] in ("x", claim[0].name, claim[1].name):
             ev.append(f"sign of {key[0]} {key[1]} over ]{fmt(Algebraic.rational(T.interval[0]) if not isinstance(T.interval[0], Algebraic) else T.interval[0])}, "
                       f"{fmt(T.interval[1] if isinstance(T.interval[1], Algebraic) else Algebraic.rational(T.interval[1]))}[:\n\n{T.markdown()}")
-    q_other = Requirement(f"q_{o + 1}(t_{m})", (steps[-1].q[o], K.zero), -1)
+    q_other = Requirement(f"q_{o + 1}(t_{m})", (steps[-1].q[o], FIELD.zero), -1)
     ev.append(f"{q_other.name} < 0 ({other} approaching after {after}) on the same region: "
               + ("yes" if not an.violations(q_other) else "no (where it is ≥ 0, c does not come next at all)"))
     dynamic = []

@@ -35,10 +35,10 @@ from fractions import Fraction
 
 import flint
 
-from certify.algebra import simplest_between
+from certify.algebra import X_PLUS, simplest_between
 from certify.dynamics import candidate, simulate
 from certify.patterns import BRANCH_NAMES, census
-from certify.run import REFUTED_REMARK, Check, certificate, conclude
+from certify.run import ERRATUM, REFUTED_REMARK, Check, certificate, conclude, overridden
 
 PRINTED_T28 = dict(pattern="abcab")
 LENGTH = 7             # our bound: a census of seconds inside `certify all`; `certify census` goes further
@@ -83,7 +83,7 @@ def replay(rec: dict) -> tuple[bool, str]:
                           flint.fmpq(*(hi - margin).as_integer_ratio()))
     branch, fp = BRANCH_NAMES.index(s["branch"]), s["fixed_point"]
     cand = candidate(rec["word"])
-    run, prec = simulate.run_certified(lambda pr: cand.balls(r0, branch, 1 if fp == "x₊" else -1, pr),
+    run, prec = simulate.run_certified(lambda pr: cand.balls(r0, branch, 1 if fp == X_PLUS else -1, pr),
                                        PERIODS * len(rec["word"]))
     got = "".join(run.events)
     return got == rec["word"] * PERIODS, (f"{rec['word']}, {s['branch']} branch, {fp}, r = {r0}: the dynamics "
@@ -165,7 +165,9 @@ def readings_evidence(pattern: str) -> str:
 @certificate("T28", "l. 515",
              f"Remark 3.3: \"{QUOTE_T28}\" (a hedged remark, tested on a census of the periodic patterns of blocks "
              "ab, cb, acb, cab).",
-             printed=PRINTED_T28)
+             printed=PRINTED_T28,
+             expect=ERRATUM,
+             mutants=[overridden({"pattern": "abxab"}, "not a word of the letters a, b, c: not read")])
 def abcab_census(pattern):
     """Every class of periodic block patterns of at most LENGTH collisions that contains
     the printed pattern (cyclically, or its mirror) analysed exactly, and the census's

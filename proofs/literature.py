@@ -23,15 +23,14 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
-from certify.algebra import (Algebraic, Condition, Lf, RING, eliminate, lam, parse, radical, resultant_lambda, show,
+from certify.algebra import (FIELD, Q, Algebraic, Condition, Lf, RING, eliminate, lam, parse, radical, resultant_lambda, show,
     show_factored_int, to_field, to_fmpz_poly, to_ring)
-from certify.dynamics import K, candidate
+from certify.dynamics import candidate
 from certify.patterns import (Analysis, BRANCH_NAMES, Requirement, analyse, fmt, prefix_requirements,
                               vanishes_on_branch)
 from certify.patterns import parse as parse_word
-from certify.run import Check, certificate, conclude, quantity
+from certify.run import PASS, Check, certificate, conclude, overridden, quantity, replaced
 
-Q = flint.fmpq
 
 PRINTED_T26 = dict(pattern="(ab)^3(cb)^3", threshold=(5, -2, 6), quadratic="r^2 - 10*r + 1")
 WINDOW = (Q(1, 10), Q(1, 9))          # our choice of an r-interval around 5-2√6 ≈ 0.10102
@@ -55,7 +54,11 @@ def expand_pattern(pattern: str) -> str:
 
 @certificate("T26", "l. 323-325",
              "5-2√6 is also the critical (upper stability) threshold of (ab)^3(cb)^3 (CDKK Table 1).",
-             printed=PRINTED_T26)
+             printed=PRINTED_T26,
+             expect=PASS,
+             mutants=[overridden({"pattern": "(ab)^2(cb)^2"}, "another pattern (its threshold is 3-2√2)"),
+                      overridden({"threshold": (5, -2, 7)}, "a digit of the threshold"),
+                      overridden({"quadratic": "r^2 - 10*r + 2"}, "a coefficient of the quadratic")])
 def threshold_of_ab3cb3(pattern, threshold, quadratic):
     """Elimination (both routes) names the condition that changes at 5-2√6; sign
     tables over ]1/10, 5-2√6[ and ]5-2√6, 1/9[ certify that the candidate on the
@@ -96,7 +99,7 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
     checks.append(Check(f"on ]{lo}, {hi}[ the three eigenvalues are real and positive, so the largest is the "
                         f"dominant one (strictly)", three_positive, ["sign of λ per branch:\n\n" + base.markdown()]))
     reqs, steps = prefix_requirements(word, len(word), cand.q0, cand.steps, cand.q0_other)
-    reqs.append(Requirement("λ (q(t_12) = λ q(0) keeps the signs)", (K(Lf), K.zero), 1))
+    reqs.append(Requirement("λ (q(t_12) = λ q(0) keeps the signs)", (FIELD(Lf), FIELD.zero), 1))
     for req in reqs:
         an.impose(req)
     ev.append("the candidate realises w with every inequality strict iff " + ", ".join(
@@ -210,7 +213,12 @@ PRINTED_L1 = dict(word="ab", threshold="7-4√3", digits="0.07180")
 
 @certificate("L1", "l. 131, 1103, 1129",
              "Three particles: no collapse (no self-similar datum of ab) for r > 7-4√3; below, stable collapse.",
-             printed=PRINTED_L1)
+             printed=PRINTED_L1,
+             expect=PASS,
+             mutants=[replaced("threshold", "7-4√3", "7-4√2", "another radical"),
+                      replaced("digits", "0.07180", "0.07181", "a digit"),
+                      replaced("word", "ab", "[ac]b", "the symmetric four-particle word"),
+                      overridden({"threshold": "7-4√"}, "a radical without its argument")])
 def three_particles(word, threshold, digits):
     """`certify pattern ab` (three particles, 2x2 matrices): the self-similar data exist
     exactly for r ≤ 7-4√3 and are stable on ]0, 7-4√3[."""
@@ -227,7 +235,10 @@ PRINTED_L2 = dict(word="[ac]b", threshold="3-2√2", digits="0.17157")
 
 @certificate("L2", "l. 132",
              "The symmetric four-particle system ([ac]b) cannot collapse for r > 3-2√2.",
-             printed=PRINTED_L2)
+             printed=PRINTED_L2,
+             expect=PASS,
+             mutants=[replaced("threshold", "3-2√2", "3-2√3", "another radical"),
+                      replaced("digits", "0.17157", "0.17158", "a digit")])
 def symmetric_system(word, threshold, digits):
     """`certify pattern [ac]b` (p_1 = p_3, the [ac] collision applies A and C at once,
     reduced to two gaps): no self-similar datum for r > 3-2√2, stable below."""
@@ -244,7 +255,11 @@ PRINTED_L3 = dict(word="abcb", P="17r^6-138r^5+831r^4-3148r^3+831r^2-138r+17", r
 @certificate("L3", "l. 132, 1101",
              "abcb has collapsing (feasible self-similar) initial data for r < r_exist ≈ 0.19166, r_exist the only "
              "real root in [0,1] of P; the pattern is unstable.",
-             printed=PRINTED_L3)
+             printed=PRINTED_L3,
+             expect=PASS,
+             mutants=[replaced("P", "831r^4", "832r^4", "a coefficient of P"),
+                      replaced("r_exist", "0.19166", "0.19167", "a digit of r_exist"),
+                      replaced("stability", "unstable", "stable", "the stability")])
 def abcb_exists(word, P, r_exist, stability):
     """`certify pattern abcb`: the union over branches and fixed points of the feasible
     sets is ]0, r_exist] minus the points the engine leaves undecided; nothing stable."""
@@ -321,7 +336,11 @@ PRINTED_L4 = {f"n{n}": t for n, t in ((2, "3-2√2 ≃ 0.17157"), (3, "5-2√6 �
 
 @certificate("L4", "l. 1114-1120",
              "Upper stability thresholds of (ab)^n(cb)^n, n = 2..6, are the printed radicals.",
-             needs=["ab_cb_patterns"], printed=PRINTED_L4)
+             needs=["ab_cb_patterns"], printed=PRINTED_L4,
+             expect=PASS,
+             mutants=[replaced("n4", "4 + 3√2", "4 + 3√3", "a radicand of the n = 4 threshold"),
+                      replaced("n6", "0.07782", "0.07783", "a digit of the n = 6 threshold"),
+                      replaced("n2", "3-2√2", "5-2√6", "the n = 3 threshold for n = 2")])
 def upper_thresholds(ab_cb_patterns, **printed):
     """For each n the stable set of `certify pattern (ab)^n(cb)^n` is one interval of
     the upper branch; its upper end is proven equal to the printed radical (minimal
@@ -348,7 +367,12 @@ PRINTED_L5 = dict(n2="[0.12754, 0.17157]", n3="[0.09452, 0.10102]", limit="7-4�
 @certificate("L5", "l. 1123-1125, 1215",
              "Stability windows of (ab)^2(cb)^2 ≈ [0.12754, 0.17157] and (ab)^3(cb)^3 ≈ [0.09452, 0.10102]; the "
              "windows are disjoint and accumulate on 7-4√3 from above.",
-             needs=["ab_cb_patterns"], printed=PRINTED_L5)
+             needs=["ab_cb_patterns"], printed=PRINTED_L5,
+             expect=PASS,
+             mutants=[replaced("n2", "0.12754", "0.12755", "a digit of the n = 2 window"),
+                      replaced("n3", "0.10102", "0.10103", "a digit of the n = 3 window"),
+                      replaced("order", "disjoint", "overlapping", "the windows' order"),
+                      replaced("limit", "7-4√3", "3-2√2", "the limit of the windows")])
 def windows(ab_cb_patterns, n2, n3, limit, order):
     """The stable sets of (ab)^n(cb)^n (upper branch) for n = 2..N_MAX: each one open
     interval, ends rounding to the printed digits for n = 2, 3; pairwise disjoint,
@@ -384,7 +408,9 @@ PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant")
 @certificate("L6", "l. 1215",
              "Conjecture (CDKK §7): the upper threshold of (ab)^n(cb)^n is where q_2(0) = 0 for the dominant "
              "eigenvector (tested for n = 2..6).",
-             needs=["ab_cb_patterns"], printed=PRINTED_L6)
+             needs=["ab_cb_patterns"], printed=PRINTED_L6,
+             expect=PASS,
+             mutants=[replaced("criterion", "q_2(0)", "q_3(0)", "another component of the eigenvector")])
 def q2_vanishes_at_threshold(ab_cb_patterns, criterion, branch):
     """For each n = 2..N_MAX: at the upper end r_n of the stability window, the numerator
     of u = q_2(0) vanishes on the dominant (upper) branch (exact test in Q(r_n)[λ]) and

@@ -13,7 +13,7 @@ import sympy as sp
 from certify.algebra import parse, r, show, statements, to_fmpq
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS, collision_matrix
-from certify.run import Check, certificate, conclude
+from certify.run import PASS, Check, certificate, conclude, overridden, replaced, reworded, unread
 
 
 A_PRINTED = "[[-r, 0, 0], [(1+r)/2, 1, 0], [0, 0, 1]]"
@@ -50,7 +50,9 @@ def law_matrix(letter: str) -> sp.Matrix:
 
 
 @certificate("M1", "l. 209-232", "The collision law in relative coordinates gives exactly the matrices A, B, C.",
-             printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
+             printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED),
+             expect=PASS,
+             mutants=[replaced("B", "-r", "r", "the sign of B's restitution term")])
 def collision_law_gives_A_B_C(A, B, C):
     """Derive q' = K q from momentum conservation and restitution, compare with the print."""
     checks = []
@@ -64,7 +66,11 @@ def collision_law_gives_A_B_C(A, B, C):
     return conclude(checks)
 
 
-@certificate("M2", "l. 240", "AC = CA.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, equality="AC = CA"))
+@certificate("M2", "l. 240", "AC = CA.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, equality="AC = CA"),
+             expect=PASS,
+             mutants=[replaced("equality", "AC = CA", "AB = BA", "A and B do not commute"),
+                      reworded("equality", "=", "≠"),
+                      unread("equality", "AD = DA", "a matrix that is not printed")])
 def a_and_c_commute(A, B, C, equality):
     """The printed equation between products of the printed A, B, C (AC = CA: simultaneous
     a and c collisions are well defined), read whole and checked identically in r."""
@@ -81,7 +87,11 @@ Q_I = sp.Symbol("q_i")
 
 @certificate("M3", "l. 176-182", "A collision turns an approaching pair (q_i < 0) into a separating one "
              "(q_i > 0): particles never cross.",
-             printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, approaching="q_i < 0", separating="q_i > 0"))
+             printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, approaching="q_i < 0", separating="q_i > 0"),
+             expect=PASS,
+             mutants=[replaced("C", "-r", "-r/2", "another restitution in C"),
+                      reworded("separating", ">", "<"),
+                      reworded("approaching", "<", ">")])
 def collisions_separate(A, B, C, approaching, separating):
     """Row i of K_i is -r e_i, so q_i' = -r q_i: with 0 < r < 1, sign q_i' = -sign q_i,
     and the printed conditions are read and checked: every sign of q_i allowed by the
@@ -106,7 +116,9 @@ def collisions_separate(A, B, C, approaching, separating):
 
 
 @certificate("M4", "l. 521", "Scaling p or q by a positive factor keeps the collision order and the ratios "
-             "of collision times.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, time_factor="alpha/beta"))
+             "of collision times.", printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED, time_factor="alpha/beta"),
+             expect=PASS,
+             mutants=[overridden({"time_factor": "beta/alpha"}, "the time factor inverted")])
 def scaling_invariance(A, B, C, time_factor):
     """With p ↦ αp, q ↦ βq (α, β > 0): every candidate time -p_i/q_i is multiplied by α/β,
     so the next collision is the same; K(βq) = βK q, and p(t_k) scales by α; by
@@ -140,7 +152,7 @@ def scaled_runs_agree(factor: sp.Expr, al: sp.Symbol, be: sp.Symbol, n_data: int
         q = tuple(flint.fmpq(rng.randint(-50, 20), rng.randint(1, 50)) for _ in range(3))
         a, b = (flint.fmpq(rng.randint(1, 30), rng.randint(1, 30)) for _ in range(2))
         f = to_fmpq(factor.subs({al: sp.Rational(int(a.p), int(a.q)), be: sp.Rational(int(b.p), int(b.q))}))
-        one, two = sim.run(p, q, rr, n), sim.run(tuple(a * z for z in p), tuple(b * z for z in q), rr, n)
+        one, two = sim.follow(p, q, rr, n), sim.follow(tuple(a * z for z in p), tuple(b * z for z in q), rr, n)
         total += 1
         agree += one.events == two.events and all(s2.t == f * s1.t for s1, s2 in zip(one.states, two.states))
     return Check(f"exact runs: (αp, βq) has the collisions of (p, q) at {factor} times its times",

@@ -12,7 +12,7 @@ The certificates quote those committed findings in their notes.
 
 Floats decide nothing here: an accumulation-point count is a count of clusters of
 kept angles (gap 10^-3 rad, each narrower than 10^-6 rad), an observation with its
-tolerances stated (certify.numerics.figures).
+tolerances stated (certify.numerics.limits).
 """
 from __future__ import annotations
 
@@ -20,8 +20,9 @@ import math
 
 import numpy as np
 
-from certify.numerics import BREAKS, figures as F, paper_grid
-from certify.run import Check, certificate, observe, quantity, section5_figure
+import certify.numerics as F
+from certify.numerics import BREAKS, paper_grid
+from certify.run import OBSERVED, Check, certificate, load_findings, observe, overridden, quantity, replaced, section5_figure
 
 PAPER_FINDINGS = "numerics-paper.json"
 N4_FINDINGS = "numerics-n4.json"
@@ -43,7 +44,7 @@ def section5_preview():
 
 def paper_note(key: str, render) -> str:
     """The committed paper-resolution finding ``key``, rendered, or a pointer to the command."""
-    found = F.load_findings(PAPER_FINDINGS)
+    found = load_findings(PAPER_FINDINGS)
     if not found or key not in found:
         return ("Paper resolution: not computed in this checkout (run `python -m certify figures "
                 "--resolution paper`).")
@@ -71,7 +72,10 @@ PRINTED_N1 = dict(
 @certificate("N1", "l. 1060-1069",
              "Setup: trajectories computed to the 10^4-th collision, the last 5×10^2 b-collisions kept, "
              "8 orbits per r (2 θ0 × 4 φ0), φ from q(b_n) = (cos θ cos φ, sin φ, −sin θ cos φ); break rules "
-             "when a time step or |cos φ| is below the precision.", printed=PRINTED_N1)
+             "when a time step or |cos φ| is below the precision.", printed=PRINTED_N1,
+             expect=OBSERVED,
+             mutants=[replaced("collisions", "10^4", "10^3", "fewer collisions computed"),
+                      overridden({"velocity": ("cos(theta)*cos(phi)", "cos(phi)", "-sin(theta)*cos(phi)")}, "another component of q(b_n)")])
 def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
     """The figures' parameters are the printed ones; the engine's φ is the printed φ; its
     break rules are the printed two (and two more that the print does not need)."""
@@ -120,7 +124,9 @@ SEGMENT = 0.005  # "a short horizontal segment ... around (0.08, π/2)" (l. 1089
              "Figure 6 (fig:Simul_1), 0.072 ≤ r ≤ 0.999, Δr = 2.5e-4 (3709 values): windows of stability for r ≤ 0.17, "
              "apparent chaos up to r ≈ 0.9, discrete ω-limit sets near r = 1, a short segment of breaks around "
              "(0.08, π/2), the breaks accumulated close to r ≃ 0.072.",
-             needs=("section5_preview",), printed=PRINTED_N2)
+             needs=("section5_preview",), printed=PRINTED_N2,
+             expect="OBSERVED, disagrees",
+             mutants=[overridden({"windows_below": "0.9"}, "the edge of the windows moved from 0.17 to 0.9")])
 def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until, discrete_near, segment_at,
                breaks_near):
     """The preview of Figure 5.1, probes with the paper's lengths around the printed segment
@@ -193,7 +199,9 @@ PRINTED_N3 = dict(lo="0.075", hi="0.192", step="2.5\\times 10^{-5}", count="4681
 @certificate("N3", "l. 1096-1128",
              "Figure 7 (fig:Simul_2), 0.075 ≤ r ≤ 0.192, Δr = 2.5e-5 (4681 values): the orbits accumulate around 4 points in "
              "the (ab)^2(cb)^2 window, 6 in the (ab)^3(cb)^3 window, 8 and 10 in the next two.",
-             needs=("section5_preview",), printed=PRINTED_N3)
+             needs=("section5_preview",), printed=PRINTED_N3,
+             expect=OBSERVED,
+             mutants=[overridden({"points": ("5", "6", "8", "10")}, "another number of points in the first window")])
 def figure_5_2(section5_preview, lo, hi, step, count, points, windows):
     """Clusters of the kept φ of the 8 orbits, counted at each r of each window (from the
     next threshold of L4, or the lower end of L5, to the window's upper threshold)."""
@@ -225,13 +233,14 @@ PRINTED_N4 = dict(r_below="0.078", n_from="6", accumulate_above="7-4\\sqrt{3}")
 @certificate("N4", "l. 1127-1128",
              "For r below 0.078 the program cannot detect (ab)^n(cb)^n for n ≥ 6 (the dominant eigenvector of "
              "J(BA)^n has a component below the computer precision); the windows should exist for every n ≥ 2, "
-             "accumulating above 7-4√3.", printed=PRINTED_N4)
+             "accumulating above 7-4√3.", printed=PRINTED_N4,
+             expect="OBSERVED, disagrees")
 def below_0078(r_below, n_from, accumulate_above):
     """Our float64 engine at r just below r_max(n) for n = n_from..n_from+4 (8 orbits, 10^4
     collisions); the smallest component of the dominant eigenvector of M_w (mpmath); the
     committed mp search of ``certify figures --n4``."""
     n0 = int(number(n_from))
-    committed = F.load_findings(N4_FINDINGS)
+    committed = load_findings(N4_FINDINGS)
     ev, checks = [], []
     th = {n: F.r_max(n) for n in F.N_LINES}
     if committed:
@@ -301,7 +310,9 @@ PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="
 @certificate("N5", "l. 1148-1160",
              "Transitory region 0.172 ≤ r ≤ 0.176: the orbits accumulate on finitely many points for r fixed; "
              "Figure 9 (fig:Simul_3) at Δr = 1e-6 (5001 values, 0.171 ≤ r ≤ 0.176).", needs=("section5_preview",),
-             printed=PRINTED_N5)
+             printed=PRINTED_N5,
+             expect=OBSERVED,
+             mutants=[overridden({"lo": "0.181", "hi": "0.185"}, "the transitory region moved")])
 def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count):
     """The kind of ω-limit of the 8 orbits at 21 values of r in the printed region and 9 just
     above it (10^4 collisions, 500 kept); the figures are the previews of 5.3b and 5.4."""
@@ -337,7 +348,9 @@ PRINTED_N6 = dict(stripes=("0.1845", "0.1896"), special="0.184525", lo="0.1845",
 @certificate("N6", "l. 1162-1208",
              "Thin stripes near r ≈ 0.1845 and r ≈ 0.1896; at r ≈ 0.184525 all orbits have discrete ω-limit sets; "
              "Figure 10 (fig:Simul_2_zoom_3); Figures 11a-11c (fig:Simul_4, fig:Simul_5, fig:Simul_6) at Δr = 1e-7 (1001 values, 0.1845 ≤ r ≤ 0.1846).", needs=("section5_preview",),
-             printed=PRINTED_N6)
+             printed=PRINTED_N6,
+             expect=OBSERVED,
+             mutants=[replaced("special", "0.184525", "0.18455", "the special r moved")])
 def stripes(section5_preview, stripes, special, lo, hi, step, count):
     """Probes at Δr = 2.5e-5 (the step of Figure 7) around each printed stripe: the coverage of
     [0, π] by the 8 orbits drops there; a probe at Δr = 1e-7 around the printed special value:
@@ -384,7 +397,9 @@ PRINTED_N7 = dict(grows_below="1", not_discrete_at="0.92")
 @certificate("N7", "l. 1088-1094, 1200-1208",
              "The ω-limit sets look like finite unions of intervals, growing as r decreases from 1 and not "
              "discrete at r ≈ 0.92; each orbit may cover only part of [0, π] while the union is dense "
-             "(quasi-periodicity).", needs=("section5_preview",), printed=PRINTED_N7)
+             "(quasi-periodicity).", needs=("section5_preview",), printed=PRINTED_N7,
+             expect=OBSERVED,
+             mutants=[replaced("not_discrete_at", "0.92", "0.999", "where the ω-limit sets are not discrete")])
 def quasi_periodic(section5_preview, grows_below, not_discrete_at):
     """Cluster counts and widths of each orbit's kept φ (gap 10^-3): near r = 1, in the region
     of apparent chaos, and in the thin stripe."""

@@ -27,16 +27,16 @@ import flint
 import sympy as sp
 
 from certify.algebra import trig as T
-from certify.algebra import precision, r, show, statements
+from certify.algebra import Q, precision, r, show, statements
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
 from certify.dynamics import INDEX, LETTERS
-from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude, quantity
+from certify.run import (ERRATUM, FALSE_STATEMENT, MISPRINT, PASS, Check, certificate, conclude, overridden,
+                        quantity, replaced, reworded, unread)
 from proofs import reduction_cones as RC
 from proofs import reduction_identities as I
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
-Q = flint.fmpq
 SEED = 4_1_2024
 N_DATA = 300                 # random initial data (each with a second datum on its plane)
 N_COLLISIONS = 200           # collisions asked of the particle system
@@ -85,7 +85,7 @@ def datum(rng: random.Random) -> Datum:
     al, be, ga = rational(rng), rational(rng), rng.choice((1, -1)) * rational(rng) / 100
     p2 = tuple(al * z for z in p)
     q2 = tuple(be * qk + ga * pk for qk, pk in zip(q, p))
-    runs = (sim.run(p, q, r, N_COLLISIONS), sim.run(p2, q2, r, N_COLLISIONS))
+    runs = (sim.follow(p, q, r, N_COLLISIONS), sim.follow(p2, q2, r, N_COLLISIONS))
     contacts = [letter] + runs[0].events
     normals = [R.normal(s.p, s.q) for s in runs[0].states]
     planes = ([R.canonical(L, n) for L, n in zip(contacts, normals)],
@@ -162,7 +162,12 @@ def multiple(rows, M: sp.Matrix):
 @certificate("S6", "l. 839-868",
              "Theorem 4.1: two trajectories with the same contact and Span(p(0),q(0)) = Span(p'(0),q'(0)) have "
              "the same plane Span(p(k),q(k)) at every collision k (and so the same collision types).",
-             needs=["section4_data", "reduction_cones"], printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED))
+             needs=["section4_data", "reduction_cones"], printed=dict(A=A_PRINTED, B=B_PRINTED, C=C_PRINTED),
+             expect=PASS,
+             mutants=[replaced("B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]", "B no longer fixes {y = 0}"),
+                      replaced("C", "[0, 0, -r]", "[0, 1, -r]", "C moves {z = 0}"),
+                      replaced("A", "[[-r, 0, 0]", "[[r, 0, 0]", "a column that A does not fix"),
+                      replaced("A", "[(1+r)/2, 1, 0]", "[(1+3*r)/3, 1, 0]", "the same A at r = 1/3, another one over Q(r)")])
 def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
     """Proof: K_j fixes the plane {x_j = 0} pointwise, so with p' = p + t q,
     Span(p', K_j q) = K_j Span(p', q) = K_j Span(p, q): the new plane is K_j P whatever
@@ -290,7 +295,11 @@ def case_is_the_map(key: str, spec: str, p0, q0) -> Check:
 @certificate("S7.2", "l. 877-929",
              "The trigonometric reduction (the six printed cases) reproduces the next collision of the particle "
              "system: same contact, same θ and φ, at every collision.",
-             needs=["section4_data", "reduction_cones"], printed=PRINTED_S7)
+             needs=["section4_data", "reduction_cones"], printed=PRINTED_S7,
+             expect=PASS,
+             mutants=[replaced("a_pos", "2-3", "3-4", "another pair for a, cos φ > 0"),
+                      replaced("c_neg", "sin(θ)*sin(φ)", "cos(θ)*sin(φ)", "a factor of the c, cos φ < 0 case"),
+                      replaced("q0_b", "-sin(θ)*cos(φ)", "sin(θ)*cos(φ)", "a sign of q(0) for contact b")])
 def trigonometric_map_agrees_with_dynamics(section4_data, reduction_cones, **printed):
     """For every collision: each printed case is, for every θ, φ in its range, the step of
     the projective map (:func:`case_is_the_map`), and the particles follow the projective
@@ -347,7 +356,11 @@ def not_normal_at(text: str, st: RC.Step) -> tuple[bool, str]:
 @certificate("S8.2", "l. 931-987",
              "The vectorial reduction reproduces the next collision of the particle system: u(0) = p(0) ∧ q(0), "
              "the printed trilinear formulas give u(1) ∝ p(1) ∧ q(1), with e_t · u(k) ≥ 0.",
-             needs=["section4_data", "reduction_cones"], printed=PRINTED_S8)
+             needs=["section4_data", "reduction_cones"], printed=PRINTED_S8,
+             expect=ERRATUM,
+             mutants=[replaced("to_b", "ey", "ez", "another axis in the b formula"),
+                      replaced("orientation", "a: y", "a: z", "another orientation for a"),
+                      replaced("to_b", "cross(ex, u0)", "cross(u0, ex)", "the cross product reversed")])
 def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientation, to_b, to_c):
     """For every state, on the six cones of states (proofs/reduction_cones.py): right
     after a collision, p ∧ q = α p ∧ w = αρ n (α, ρ > 0), so the orientation holds when
@@ -466,7 +479,14 @@ def implication(text: str) -> tuple[str, str]:
              "on the whole cone of such states the next normal n' = cof(C) n (cof(A) n) has signs that exclude a (c) "
              "as the next collision.  Supported by no aca, no cac in 10^5 collisions of exact orbits and in the exact "
              "particle runs.",
-             needs=["reduction_cones", "reduction_scan", "section4_data"], printed=PRINTED_S9)
+             needs=["reduction_cones", "reduction_scan", "section4_data"], printed=PRINTED_S9,
+             expect=PASS,
+             mutants=[replaced("aca", "c_{k+1} = c", "c_{k+1} = b", "after ab both a and c may come"),
+                      replaced("aca", "≠ a", "≠ b", "after ac the next is b"),
+                      replaced("cac", "c_k = c", "c_k = b", "after ba both b and c may come"),
+                      reworded("aca", "c_{k+2}", "c_{k+3}", "false (acba… occurs); the index was not read"),
+                      reworded("cac", "≠", "="),
+                      unread("aca", "c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ d", "not a letter")])
 def no_aca_cac_for_every_orbit(reduction_cones, reduction_scan, section4_data, aca, cac):
     """A proof independent of S9.1's (which is in θ, φ): the states right after a
     collision x whose next collision is y form one cone (contact x, sign of n_x); on it
@@ -540,7 +560,13 @@ def parses(word: str, blocks: list[str]) -> bool:
 @certificate("S10", "l. 1037-1051",
              "Corollary 4.5: b occurs infinitely often, and c_k = b implies c_{k+2} = b or c_{k+3} = b; Remark 4.6: every "
              "pattern c_1 c_2 … is a concatenation of the blocks ab, cb, acb, cab.",
-             needs=["reduction_cones", "reduction_scan"], printed=PRINTED_S10)
+             needs=["reduction_cones", "reduction_scan"], printed=PRINTED_S10,
+             expect=ERRATUM,
+             mutants=[replaced("window", " or c_{k+3} = b", "", "the window shortened to c_{k+2}"),
+                      replaced("blocks", ", cab", "", "a block dropped"),
+                      reworded("window", "c_{k+3} = b", "c_{k+3} = a", "false; the letters were not read"),
+                      reworded("window", "c_k = b", "c_k = a"),
+                      unread("window", "c_k = b ⇒ c_{k+2} = b and c_{k+3} = b", "a conjunction in the conclusion")])
 def b_recurs(reduction_cones, reduction_scan, window, blocks):
     """For every orbit: every window of an orbit's word is admissible, that is its pairs
     are proven steps (the step lemma on the six cones: the next contact is another one)
@@ -602,7 +628,18 @@ PRINTED_S11 = dict(reduction="infinitely many collisions", realised="a prefix", 
 @certificate("S11", "l. 869-875",
              "Remark 4.2: every orbit of the reduction off the corners has infinitely many collisions; the "
              "collisions realised by the particle system are a prefix of it.",
-             needs=["reduction_cones", "reduction_scan", "section4_data"], printed=PRINTED_S11)
+             needs=["reduction_cones", "reduction_scan", "section4_data"], printed=PRINTED_S11,
+             expect=PASS,
+             mutants=[overridden({"realised": "the whole"}, "the particles realise the whole orbit"),
+                      overridden({"reduction": "finitely many collisions"}, "finitely many collisions"),
+                      replaced("C", "[0, 0, -r]", "[0, 0, r]", "the pair c would not separate"),
+                      replaced("B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]", "B p' ≠ p': another plane"),
+                      replaced("A", "[(1+r)/2, 1, 0]", "[(1+r)/2, 2, 0]", "A moves {x = 0}"),
+                      reworded("reduction", "infinitely", "finitely"),
+                      reworded("realised", "a prefix", "the whole"),
+                      unread("reduction", "infinitely many orbits", "not a count of collisions"),
+                      unread("reduction", "many collisions", "no quantifier"),
+                      unread("realised", "a part", "not an extent")])
 def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduction, realised, A, B, C):
     """Proof, for every orbit (proofs/reduction_cones.py): a state off the corners lies in
     one of six cones (contact i, sign of n_i = |n| cos φ); on each, with the printed A, B,

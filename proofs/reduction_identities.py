@@ -15,7 +15,8 @@ import sympy as sp
 from certify.algebra import trig as T
 from certify.algebra import lam, statements
 from certify.dynamics import INDEX, LETTERS, collision_matrix
-from certify.run import FALSE_STATEMENT, MISPRINT, Check, certificate, conclude
+from certify.run import (ERRATUM, FALSE_STATEMENT, MISPRINT, PASS, Check, certificate, conclude, overridden,
+                        replaced, reworded, unread)
 
 from proofs.model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
@@ -285,7 +286,9 @@ def hit_point(p0, q0, k: int):
              "{e_x, p(0), e_θ} is direct, also in the limit cases θ = 0, π/2; q(0) = cos φ e_θ + sin φ e_x + λ e_r "
              "is the printed coordinate vector (and its b analogue).",
              printed=dict(p0_a=P0_A, e_x=E_X, e_theta_a=E_THETA_A, limit_0=LIMIT_0, limit_pi2=LIMIT_PI2,
-                          q_a_sum=Q_A_SUM, q_a=Q_A, p0_b=P0_B, e_theta_b=E_THETA_B, e_y=E_Y, q_b_sum=Q_B_SUM, q_b=Q_B))
+                          q_a_sum=Q_A_SUM, q_a=Q_A, p0_b=P0_B, e_theta_b=E_THETA_B, e_y=E_Y, q_b_sum=Q_B_SUM, q_b=Q_B),
+             expect=PASS,
+             mutants=[replaced("e_theta_a", "-sin(θ)", "sin(θ)", "a sign of e_θ")])
 def tangent_bases(p0_a, e_x, e_theta_a, limit_0, limit_pi2, q_a_sum, q_a, p0_b, e_theta_b, e_y, q_b_sum, q_b):
     """Gram matrices and determinants as identities in θ; the limit bases by substitution."""
     pa, ex, eta = vec(p0_a), vec(e_x), vec(e_theta_a)
@@ -367,7 +370,17 @@ def combined(statement: str, parts: list[T.Result]) -> Check:
              "After a contact a, the next collision is b iff cos φ > 0 and c iff cos φ < 0: the printed t_b, t_c, "
              "t_c - t_b, the sign of t_c - t_b, and the case analysis in λ; the analogue t_c, t_a after a contact b.",
              printed=dict(p0_a=P0_A, q_a=Q_A, t_b=T_B_AB, t_c=T_C_AB, difference=T_C_MINUS_T_B, order=ORDER,
-                          p0_b=P0_B, q_b=Q_B, t_c_bc=T_C_BC, t_a_bc=T_A_BC, smallest_bc=SMALLEST_BC))
+                          p0_b=P0_B, q_b=Q_B, t_c_bc=T_C_BC, t_a_bc=T_A_BC, smallest_bc=SMALLEST_BC),
+             expect=ERRATUM,
+             mutants=[replaced("t_b", "- λ*cos(θ))", "+ λ*cos(θ))", "a sign of t_b"),
+                      overridden({"smallest_bc": "cos(φ) < 0"}, "the condition reversed"),
+                      reworded("smallest_bc", "cos(φ)", "sin(φ)", "sin φ > 0 always: t_c would always come first"),
+                      reworded("smallest_bc", ">", "<"),
+                      reworded("smallest_bc", ">", "≥", "cos φ = 0: t_c = t_a, not the smallest"),
+                      reworded("order", "smaller than", "less than", "still false, and the stated correction no longer applies"),
+                      reworded("order", "t_c is", "t_b is", "t_b is smaller than t_b"),
+                      unread("smallest_bc", "cos φ > 0", "not the printed notation cos(φ)"),
+                      unread("order", "smaller", "a phrase without its subject")])
 def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t_c_bc, t_a_bc, smallest_bc):
     """The printed times solve the collision equations; each implication of l. 628-629 is an
     exact identity between the target and a witness whose factors have known signs.  The
@@ -507,7 +520,10 @@ def certify_case(chains, p0, q, letter, lines, corrections=None, note="", mispri
 
 @certificate("S3", "l. 630-703", "Case ab: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(sinφ cosθ, 0, cosφ) "
              "for every λ; the printed B q(0), cross product, B e_r and (B e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
-             printed=dict(p0=P0_A, q=Q_A, **AB))
+             printed=dict(p0=P0_A, q=Q_A, **AB),
+             expect=PASS,
+             mutants=[replaced("cross_chain", "V(-r*cos(φ)^2*sin(θ)", "V(r*cos(φ)^2*sin(θ)", "a sign of the cross product"),
+                      replaced("t_lambda", "- λ*cos(θ)", "+ λ*cos(θ)", "a sign of t_λ")])
 def case_ab(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations."""
     return certify_case(chains, p0, q, "b", dict(t="641-645", p="649-656", x="676-682", e="686", d="690-701"))
@@ -515,7 +531,9 @@ def case_ab(p0, q, **chains):
 
 @certificate("S4", "l. 705-763", "Case ac: the printed t_λ; p_λ(1) = (1/(cosφ cosθ + λ sinθ))(-sinφ sinθ, cosφ, 0) "
              "for every λ; the printed C q(0), cross product, C e_r and (C e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
-             printed=dict(p0=P0_A, q=Q_A, **AC))
+             printed=dict(p0=P0_A, q=Q_A, **AC),
+             expect=ERRATUM,
+             mutants=[replaced("K_er_chain", "-r*sin(θ))", "-r*cos(θ))", "C e_r with cos θ for sin θ")])
 def case_ac(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations; l. 734 (left) corrected."""
     return certify_case(chains, p0, q, "c", dict(t="708-712", p="716-726", x="734-744", e="748", d="752-761"),
@@ -527,7 +545,9 @@ def case_ac(p0, q, **chains):
 
 @certificate("S5", "l. 765-845", "Case bc: the printed t_λ; p_λ(1) = (1/(cosφ sinθ - λ cosθ))(cosφ, sinφ cosθ, 0) "
              "for every λ; the printed C q(0), cross product, C e_r and (C e_r)·[p(1) ∧ q(1)] = 0, every '=' checked.",
-             printed=dict(p0=P0_B, q=Q_B, **BC))
+             printed=dict(p0=P0_B, q=Q_B, **BC),
+             expect=PASS,
+             mutants=[replaced("dot_chain", "(sin(θ)^2 + cos(θ)^2) - r", "(sin(θ)^2 + cos(θ)^2) + r", "a sign of the dot product")])
 def case_bc(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations."""
     return certify_case(chains, p0, q, "c", dict(t="790-792", p="796-808", x="816-826", e="830", d="834-843"))
@@ -593,7 +613,11 @@ def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
              "printed radicand, and the printed q(t1) is orthogonal to p(t1) with positive component along the new gap.",
              printed=dict(p0_a=CONTACT_P0["a"], q0_a=CONTACT_Q0["a"], p0_b=CONTACT_P0["b"], q0_b=CONTACT_Q0["b"],
                           p0_c=CONTACT_P0["c"], q0_c=CONTACT_Q0["c"], q_t1=Q_T1,
-                          **{key: SIX_CASES[f"{c}, {RANGE[s]}"] for key, (c, s) in CASE_KEYS.items()}))
+                          **{key: SIX_CASES[f"{c}, {RANGE[s]}"] for key, (c, s) in CASE_KEYS.items()}),
+             expect=PASS,
+             mutants=[replaced("c_neg", "(-cos(φ), 0", "(cos(φ), 0", "a sign of p(t1)"),
+                      replaced("a_pos", "2-3 | B", "3-4 | C", "another pair and matrix for a, cos φ > 0"),
+                      replaced("b_neg", "sin(θ)^2*sin(φ)^2", "sin(θ)^2*sin(φ)", "an exponent of the radicand")])
 def trigonometric_version(p0_a, q0_a, p0_b, q0_b, p0_c, q0_c, q_t1, **cases):
     """Signs from the factors under θ ∈ ]0,π/2[, sin φ > 0, 0 < r < 1 and the sign of cos φ."""
     frames = {"a": (vec(p0_a), vec(q0_a)), "b": (vec(p0_b), vec(q0_b)), "c": (vec(p0_c), vec(q0_c))}
@@ -637,7 +661,10 @@ def trilinear(text: str, letter: str, u0, p1, q0, H: T.Signs, axis, tφ: str) ->
              "u(0) ∧ p(0) = q(0); e_x ∧ u(0) ∝ p(0); the two trilinear formulas for ũ(1) with the convention e_t·u ≥ 0.",
              printed=dict(p0=CONTACT_P0["a"], q0=CONTACT_Q0["a"], u0=U0, ey_dot_u0=EY_DOT_U0, orientation=ORIENTATION,
                           u0_wedge_ey=U0_WEDGE["ey"], u0_wedge_ez=U0_WEDGE["ez"], u0_wedge_ex=U0_WEDGE["ex"],
-                          u0_wedge_p0=U0_WEDGE["p0"], trilinear_b=TRILINEAR_B, trilinear_c=TRILINEAR_C))
+                          u0_wedge_p0=U0_WEDGE["p0"], trilinear_b=TRILINEAR_B, trilinear_c=TRILINEAR_C),
+             expect=ERRATUM,
+             mutants=[replaced("u0", "-cos(θ)*sin(φ)", "cos(θ)*sin(φ)", "a sign of u(0)"),
+                      overridden({"orientation": "a: y, b: x, c: z"}, "another orientation convention")])
 def vectorial_version(p0, q0, u0, ey_dot_u0, orientation, u0_wedge_ey, u0_wedge_ez, u0_wedge_ex, u0_wedge_p0,
                       trilinear_b, trilinear_c):
     """Cross products as identities; orientations as positive ratios; a wrong plane by a rational witness."""
@@ -715,7 +742,14 @@ def next_angle_sign(contact: str, letter: str, cos_phi: int, axis_index: int, fo
              "(Cq(k)·p(k))p(k) as printed, whose first component sin φ > 0 gives cos φ' < 0, so the next collision is b.",
              printed=dict(p_k=CONTACT_P0["a"], q_k=CONTACT_Q0["a"], p_next=P_NEXT_AC, q_next=Q_NEXT_AC,
                           C_times_qk=C_TIMES_QK, projection=PROJECTION_CHAIN, form_c=FORM_C,
-                          read_component=READ_COMPONENT, conclusion=CONCLUSION))
+                          read_component=READ_COMPONENT, conclusion=CONCLUSION),
+             expect=ERRATUM,
+             mutants=[replaced("projection", "+ (1+r)*cos(θ)^2*sin(θ)", "+ (1-r)*cos(θ)^2*sin(θ)", "a sign in the projection"),
+                      overridden({"conclusion": "cos(φ') > 0"}, "the conclusion reversed"),
+                      reworded("conclusion", "cos(φ')", "sin(φ')", "sin φ' > 0 by definition"),
+                      reworded("conclusion", "<", ">"),
+                      reworded("conclusion", "<", "≥"),
+                      unread("conclusion", "cos(φ'') < 0", "an unknown name")])
 def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read_component, conclusion):
     """The printed algebra as printed; whether its vector is q(k+1); the corrected argument.
     The printed conclusion (cos φ' < 0) is read and evaluated on the certified signs of

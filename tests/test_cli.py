@@ -18,7 +18,7 @@ import pytest
 
 from certify import cli
 
-from certify.run import figures
+from certify.run import saving as figures
 
 from certify.run import progress
 

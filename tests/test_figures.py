@@ -4,7 +4,7 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import pytest
 
-from certify.run import figures
+from certify.run import saving as figures
 
 
 def draw():

@@ -1,6 +1,6 @@
 """Section 5: the observables of certify.numerics.figures on synthetic data, the
 `certify figures` command, and the certificates N1-N7 (OBSERVED; an altered print is
-reported as a disagreement)."""
+reported as a disagreement: their mutants are in tests/test_mutants.py)."""
 from __future__ import annotations
 
 import math
@@ -9,9 +9,10 @@ import numpy as np
 import pytest
 
 from certify.cli import main
-from certify.numerics import figures as F
-from certify.run import figures, runner
+import certify.numerics as F
+from certify.run import load_findings, runner, saving as figures
 from certify.run.runner import OBSERVED
+from tests.shared import outcome as run
 
 
 # --- observables on synthetic data ------------------------------------------------------
@@ -124,42 +125,6 @@ def test_N2_the_breaks_of_the_paper_do_not_occur_and_a_window_moved_is_seen():
     assert any(s.startswith("windows of stability for r ≤ 0.9") for s in failing), failing
 
 
-def run(cid, **overrides):
-    cert = runner.select([cid])[0]
-    return runner.run_certificate(cert, overrides=overrides or None)
-
-
-def agrees(outcome) -> bool:
-    return outcome.status == OBSERVED and outcome.note.startswith(runner.AGREES)
-
-
-def disagrees(outcome) -> bool:
-    return outcome.status == OBSERVED and outcome.note.startswith(runner.DISAGREES)
-
-
-@pytest.mark.parametrize("cid, name, old, new", [
-    ("N1", "collisions", "10^4", "10^3"),
-    ("N3", "points", None, ("5", "6", "8", "10")),
-    ("N5", "lo", "0.172", "0.181"),
-    ("N6", "special", "0.184525", "0.18455"),
-    ("N7", "not_discrete_at", "0.92", "0.999"),
-])
-def test_an_altered_print_is_a_disagreement(cid, name, old, new):
-    assert agrees(run(cid)), run(cid).note
-    if name == "lo":
-        mutated = run(cid, lo="0.181", hi="0.185")
-    else:
-        mutated = run(cid, **{name: new if old is None else runner.CERTIFICATES[cid].printed[name].replace(old, new)})
-    assert disagrees(mutated), mutated.note
-    assert any(not runner.holds(c) for c in mutated.printed)
-
-
-def test_n1_reads_the_printed_velocity():
-    v = list(runner.CERTIFICATES["N1"].printed["velocity"])
-    v[1] = "cos(phi)"
-    assert disagrees(run("N1", velocity=tuple(v)))
-
-
 def test_n4_reads_the_printed_n():
     """As printed (n ≥ 6) our float64 engine still follows the pattern; beyond the largest n
     that the committed search saw it follow, it does not, and the eigenvector's smallest
@@ -168,7 +133,7 @@ def test_n4_reads_the_printed_n():
     assert printed.status == OBSERVED
     assert not runner.holds(printed.printed[0]) and not runner.holds(printed.printed[1])
     assert printed.agrees is False and "the printed cause does not hold" in printed.reason
-    beyond = F.load_findings("numerics-n4.json")["largest_n_float64"] + 1
+    beyond = load_findings("numerics-n4.json")["largest_n_float64"] + 1
     later = run("N4", n_from=str(beyond))
     assert runner.holds(later.printed[0]) and runner.holds(later.printed[1])
 

@@ -178,20 +178,20 @@ def test_simulate_reports_certified_and_words():
     data = chaotic_data(2)
     r = [data[0][0]]
     theta0, phi0 = [d[1] for d in data], [d[2] for d in data]
-    out = numerics.simulate(r, theta0, phi0, collisions=400, keep=5, words=True)
-    ball = numerics.simulate(r, theta0, phi0, collisions=400, keep=5, engine="ball", words=True)
+    out = numerics.iterate(r, theta0, phi0, collisions=400, keep=5, words=True)
+    ball = numerics.iterate(r, theta0, phi0, collisions=400, keep=5, engine="ball", words=True)
     assert out.word.shape == (1, 2) and all(len(w) == 400 for w in out.word.ravel())
     assert np.array_equal(ball.certified, ball.collisions)
     for b in range(2):
         one = engines.float64_orbit(r[0], theta0[b], phi0[b], 400, word=True)
         assert out.word[0, b] == one.word and out.certified[0, b] == one.certified < 400
-    strict = numerics.simulate(r, theta0, phi0, collisions=400, keep=5, strict=True)
+    strict = numerics.iterate(r, theta0, phi0, collisions=400, keep=5, strict=True)
     assert (strict.breaks == numerics.HORIZON).all() and np.array_equal(strict.collisions, out.certified)
     assert 0 < out.certified_fraction() < 1 and "certified:" in out.summary()
 
 
 def test_npz_keeps_the_words(tmp_path):
-    out = numerics.simulate([0.3], [0.5], [1.0], collisions=50, keep=5, words=True)
+    out = numerics.iterate([0.3], [0.5], [1.0], collisions=50, keep=5, words=True)
     out.save(tmp_path / "w.npz")
     back = numerics.Orbits.load(tmp_path / "w.npz")
     assert back.word[0, 0] == out.word[0, 0] and len(back.word[0, 0]) == 50

@@ -192,7 +192,7 @@ def test_a_break_after_some_collisions_keeps_what_was_done():
 
 
 def test_simulate_reports_breaks_per_orbit():
-    out = numerics.simulate([0.5], [0.6, 0.6, 2.0, float("nan")], [1.0, math.pi / 2, 1.0, 1.0], collisions=50, keep=5)
+    out = numerics.iterate([0.5], [0.6, 0.6, 2.0, float("nan")], [1.0, math.pi / 2, 1.0, 1.0], collisions=50, keep=5)
     assert out.breaks.tolist() == [[0, 1, 3, 4]]
     assert out.collisions.tolist() == [[50, 0, 0, 0]]
     assert np.isnan(out.phi[0, 1:]).all()
@@ -201,7 +201,7 @@ def test_simulate_reports_breaks_per_orbit():
 # --- the interface ---------------------------------------------------------------
 
 def test_npz_schema(tmp_path):
-    out = numerics.simulate([0.15, 0.5], THETA[:3], PHI[:3], collisions=200, keep=20)
+    out = numerics.iterate([0.15, 0.5], THETA[:3], PHI[:3], collisions=200, keep=20)
     path = tmp_path / "o.npz"
     out.save(path)
     data = np.load(path)
@@ -217,8 +217,8 @@ def test_npz_schema(tmp_path):
 def test_simulate_on_an_executor(engine):
     from concurrent.futures import ThreadPoolExecutor
     with ThreadPoolExecutor(2) as ex:
-        a = numerics.simulate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine=engine, executor=ex)
-    b = numerics.simulate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine="float64")
+        a = numerics.iterate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine=engine, executor=ex)
+    b = numerics.iterate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine="float64")
     assert np.array_equal(a.breaks, b.breaks) and np.allclose(a.phi, b.phi, atol=1e-9)
 
 
@@ -226,11 +226,11 @@ def test_an_mp_sweep_on_a_dask_cluster_equals_the_serial_one():
     """The sweep's Executor can be a Dask cluster (`--scheduler`): the same arrays, to the bit."""
     distributed = pytest.importorskip("distributed")
     from certify.run.executors import executor
-    serial = numerics.simulate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine="mp", dps=20)
+    serial = numerics.iterate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine="mp", dps=20)
     with distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=2,
                                   dashboard_address=None) as cluster:
         with executor(scheduler=cluster.scheduler_address) as ex:
-            on_cluster = numerics.simulate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine="mp",
+            on_cluster = numerics.iterate([0.3, 0.6], THETA[:2], PHI[:2], collisions=100, keep=10, engine="mp",
                                            dps=20, executor=ex)
     assert np.array_equal(on_cluster.breaks, serial.breaks)
     assert np.array_equal(on_cluster.collisions, serial.collisions)
@@ -241,7 +241,7 @@ def test_an_mp_sweep_on_a_dask_cluster_equals_the_serial_one():
 def test_simulate_rejects_bad_arguments(kwargs):
     args = dict(r=[0.5], theta0=THETA[:1], phi0=PHI[:1], collisions=10, keep=5) | kwargs
     with pytest.raises(ValueError):
-        numerics.simulate(**args)
+        numerics.iterate(**args)
 
 
 def cli(*args):
@@ -280,6 +280,6 @@ def test_cli_summary(capsys):
 @pytest.mark.slow
 def test_paper_resolution_figure_5_1_in_float64():
     r = np.linspace(0.072, 0.999, 3709)
-    out = numerics.simulate(r, THETA, PHI)
+    out = numerics.iterate(r, THETA, PHI)
     assert out.phi.shape == (3709, 8, 500)
     assert (out.breaks == 0).mean() > 0.99

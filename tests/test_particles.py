@@ -17,7 +17,7 @@ from certify import cli
 from certify.dynamics import particles
 from certify.dynamics import simulate as sim
 from certify.dynamics.model import INDEX, collide, collide_particles
-from certify.dynamics.particles import History, simulate
+from certify.dynamics.particles import History, evolve
 from certify.errors import UsageError
 
 Q = flint.fmpq
@@ -104,7 +104,7 @@ def check_collision(before: tuple, c, r) -> None:
 @given(data, restitution)
 def test_orbit_properties(xv, r):
     x, v = xv
-    h = simulate(x, v, r, 30)
+    h = evolve(x, v, r, 30)
     state = (Q(0), tuple(x), tuple(v))
     for c in h.collisions:
         check_collision(state, c, r)
@@ -125,8 +125,8 @@ def test_agrees_with_the_relative_simulator(xv, r):
     the relative run moves p, q with the printed matrices, this one x, v with the law."""
     x, v = xv
     diff = particles.differences
-    h = simulate(x, v, r, 30)
-    run = sim.run(diff(x), diff(v), r, 30)
+    h = evolve(x, v, r, 30)
+    run = sim.follow(diff(x), diff(v), r, 30)
     assert run.events == [c.letters for c in h.collisions]
     assert {"n": "n", "free": "separate", "multiple": "triple"}[run.stop] == h.stop
     for s, c in zip(run.states[1:], h.collisions):
@@ -145,7 +145,7 @@ def test_a_then_c_then_b():
     x = (1, 1, 3, 4), v -> (1 - 3/4, 3/4, 0, -1) = (1/4, 3/4, 0, -1).  Gap c (1 left)
     closes at speed 1: c at t = 2, x = (5/4, 7/4, 3, 3), v -> (1/4, 3/4, -3/4, -1/4).
     Gap b = 3 - 7/4 = 5/4 closes at speed 3/2: b at t = 2 + 5/6 = 17/6."""
-    h = simulate([0, 1, 3, 5], [1, 0, 0, -1], "1/2", 3)
+    h = evolve([0, 1, 3, 5], [1, 0, 0, -1], "1/2", 3)
     assert h.word == "acb" and times(h) == ["1", "2", "17/6"]
     assert h.collisions[0].v == (Q(1, 4), Q(3, 4), Q(0), Q(-1))
     assert h.collisions[1].x == (Q(5, 4), Q(7, 4), Q(3), Q(3))
@@ -159,7 +159,7 @@ def test_simultaneous_a_and_c_then_separation():
     ac at t = 7/3 + 16/15 = 17/5, v -> (-7/32, 3/32, -3/32, 7/32).  Gap b = 4/5 at
     speed 3/16: b at t = 17/5 + 64/15 = 23/3, v -> (-7/32, -3/64, 3/64, 7/32), and now
     q = (11/64, 3/32, 11/64) > 0: the particles separate after 4 collisions."""
-    h = simulate([0, 1, 3, 4], [1, 0, 0, -1], "1/2", 10)
+    h = evolve([0, 1, 3, 4], [1, 0, 0, -1], "1/2", 10)
     assert h.word == "[ac]b[ac]b" and times(h) == ["1", "7/3", "17/5", "23/3"]
     assert h.collisions[0].letters == "ac" and h.collisions[0].x == (1, 1, 3, 3)
     assert h.collisions[3].v == (Q(-7, 32), Q(-3, 64), Q(3, 64), Q(7, 32))
@@ -169,7 +169,7 @@ def test_simultaneous_a_and_c_then_separation():
 def test_triple_collision():
     """x = (-1, 0, 1, 10), v = (1, 0, -1, 0): particles 1 and 3 reach particle 2 at
     x = 0 at t = 1 (a and b at the same time): a triple collision, nothing applied."""
-    h = simulate([-1, 0, 1, 10], [1, 0, -1, 0], "1/3", 5)
+    h = evolve([-1, 0, 1, 10], [1, 0, -1, 0], "1/3", 5)
     assert h.stop == "triple" and h.collisions == []
     assert h.triple.particles == (1, 2, 3) and h.triple.t == 1
     assert h.triple.x == (0, 0, 0, 10) and h.triple.v == (1, 0, -1, 0)
@@ -179,7 +179,7 @@ def test_triple_collision():
 def test_collision_next_to_particles_in_contact():
     """x = (0, 1, 1, 2), v = (1, 0, 0, -1): 2 and 3 rest in contact at x = 1 (no time
     for b, q2 = 0); 1 and 4 reach them at t = 1, a and c at once: all four meet."""
-    h = simulate([0, 1, 1, 2], [1, 0, 0, -1], "1/2", 5)
+    h = evolve([0, 1, 1, 2], [1, 0, 0, -1], "1/2", 5)
     assert h.stop == "triple" and h.triple.particles == (1, 2, 3, 4) and h.triple.t == 1
     with pytest.raises(sim.MultipleCollision, match="quadruple collision of particles 1, 2, 3, 4"):
         sim.next_collision(particles.differences(h.x), particles.differences(h.v))
@@ -188,7 +188,7 @@ def test_collision_next_to_particles_in_contact():
 def test_contact_that_opens_is_not_a_meeting():
     """x = (0, 1, 1, 5), v = (1, 0, 1, 1): 2 and 3 touch at t = 0 but separate (q2 = 1),
     so at the a collision (t = 1) particle 3 is at 2: a binary collision."""
-    h = simulate([0, 1, 1, 5], [1, 0, 1, 1], "1/2", 5)
+    h = evolve([0, 1, 1, 5], [1, 0, 1, 1], "1/2", 5)
     assert h.collisions[0].letters == "a" and h.collisions[0].t == 1
 
 
@@ -196,7 +196,7 @@ def test_collapse_at_small_r():
     """r = 1/20, the symmetric datum: ([ac]b)^500, 1000 exact collisions.  The
     collisions accumulate: the durations of the periods decrease, the times stay
     below 4 and the four particles end within 2^-1000 of each other."""
-    h = simulate([0, 1, 3, 4], [1, 0, 0, -1], "1/20", 1000)
+    h = evolve([0, 1, 3, 4], [1, 0, 0, -1], "1/20", 1000)
     assert h.stop == "n" and h.word == "[ac]b" * 500
     t = [Q(0)] + [c.t for c in h.collisions]
     periods = [t[k + 2] - t[k] for k in range(0, 1000, 2)]
@@ -208,7 +208,7 @@ def test_collapse_at_small_r():
 
 def test_progress_is_reported_and_cleared():
     calls = []
-    simulate([0, 1, 3, 4], [1, 0, 0, -1], "1/20", 400, progress=lambda *a: calls.append(a))
+    evolve([0, 1, 3, 4], [1, 0, 0, -1], "1/20", 400, progress=lambda *a: calls.append(a))
     assert calls[0] == (0, 400, "collisions") and calls[-1] == (400, 400, "")
     assert [k for k, _, _ in calls[:-1]] == list(range(0, 400, 2))      # every 400/200
 
@@ -240,7 +240,7 @@ def test_not_a_number(text):
 ])
 def test_invalid_data(x, v, r, n, message):
     with pytest.raises(UsageError, match=message.replace("[", r"\[").replace("]", r"\]")):
-        simulate(x, v, r, n)
+        evolve(x, v, r, n)
 
 
 def test_decimal_digits_are_correctly_rounded():

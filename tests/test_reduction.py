@@ -1,5 +1,6 @@
 """Section 4 on the dynamics: the reduction map (certify.dynamics.reduction) and the
-certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/reduction.py)."""
+certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/reduction.py); their mutants and
+statuses as printed are in tests/test_mutants.py."""
 import itertools
 import random
 
@@ -13,85 +14,24 @@ from certify.dynamics import simulate as sim
 from certify.algebra.balls import precision
 from certify.algebra.poly import r
 from certify.dynamics.model import INDEX, LETTERS, collision_matrix
-from certify.run.runner import CERTIFICATES, Context, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
+from certify.run.runner import CERTIFICATES, Context, FAIL, PASS, altered, run_certificate
 from proofs import reduction as P
 from proofs import reduction_cones as RC
 from proofs import reduction_identities as I
+from tests.shared import CONTEXT as CTX, outcome
 
-load_all()
-CTX = Context()
 Q = flint.fmpq
 
 
-def outcome(id, **overrides):
-    return run_certificate(CERTIFICATES[id], CTX, overrides or None)
+def declared(id, overrides) -> dict:
+    """``overrides``, checked to be one of the mutants declared for ``id``."""
+    assert overrides in [m.overrides(id) for m in CERTIFICATES[id].mutants]
+    return overrides
 
 
 # A with (1+3r)/3 for (1+r)/2: both are 2/3 at r = 1/3 (where S6 compared them before), and A
 # still fixes {x = 0}: only the comparison over Q(r) sees it
-AGREES_AT_ONE_THIRD = altered("S6", "A", "[(1+r)/2, 1, 0]", "[(1+3*r)/3, 1, 0]")
-EXPECTED = {"S6": PASS, "S7.2": PASS, "S8.2": ERRATUM, "S9.2": PASS, "S10": ERRATUM, "S11": PASS}
-MUTATIONS = {
-    "S6": [altered("S6", "B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]"),      # B no longer fixes {y = 0}
-           altered("S6", "C", "[0, 0, -r]", "[0, 1, -r]"),
-           altered("S6", "A", "[[-r, 0, 0]", "[[r, 0, 0]"),                    # a column that A does not fix
-           AGREES_AT_ONE_THIRD],                       # the same matrix at r = 1/3, another one over Q(r)
-    "S7.2": [altered("S7.2", "a_pos", "2-3", "3-4"), altered("S7.2", "c_neg", "sin(θ)*sin(φ)", "cos(θ)*sin(φ)"),
-             altered("S7.2", "q0_b", "-sin(θ)*cos(φ)", "sin(θ)*cos(φ)")],
-    "S8.2": [altered("S8.2", "to_b", "ey", "ez"), altered("S8.2", "orientation", "a: y", "a: z"),
-             altered("S8.2", "to_b", "cross(ex, u0)", "cross(u0, ex)")],
-    "S9.2": [altered("S9.2", "aca", "c_{k+1} = c", "c_{k+1} = b"),        # after ab both a and c may come
-             altered("S9.2", "aca", "≠ a", "≠ b"),                           # after ac the next is b
-             altered("S9.2", "cac", "c_k = c", "c_k = b")],                  # after ba both b and c may come
-    "S10": [altered("S10", "window", " or c_{k+3} = b", ""), altered("S10", "blocks", ", cab", "")],
-    "S11": [{"realised": "the whole"}, {"reduction": "finitely many collisions"},
-            altered("S11", "C", "[0, 0, -r]", "[0, 0, r]"),                  # the pair c would not separate
-            altered("S11", "B", "[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]"),      # B p' ≠ p': another plane
-            altered("S11", "A", "[(1+r)/2, 1, 0]", "[(1+r)/2, 2, 0]")],       # A moves {x = 0}
-}
-
-
-@pytest.mark.parametrize("id", sorted(EXPECTED))
-def test_certificate_as_printed(id):
-    assert outcome(id).status == EXPECTED[id]
-
-
-@pytest.mark.parametrize("id,k", [(id, k) for id, ms in MUTATIONS.items() for k in range(len(ms))])
-def test_altered_statement_fails(id, k):
-    assert outcome(id, **MUTATIONS[id][k]).status == FAIL
-
-
-def test_every_certificate_of_this_part_is_mutated():
-    ours = {c.id for c in CERTIFICATES.values() if c.module == "proofs.reduction"}
-    assert ours == set(MUTATIONS) == set(EXPECTED)
-
-
-# the wording of S11's printed phrases, altered so that they are false: FAIL, and the
-# altered text in a failing printed check
-WORDING = [("S11", "reduction", "infinitely", "finitely"), ("S11", "realised", "a prefix", "the whole"),
-           ("S9.2", "aca", "c_{k+2}", "c_{k+3}"),           # false (acba… occurs); the index was not read
-           ("S9.2", "cac", "≠", "="),
-           ("S10", "window", "c_{k+3} = b", "c_{k+3} = a"),   # false; the letters were not read
-           ("S10", "window", "c_k = b", "c_k = a")]
-
-
-@pytest.mark.parametrize("id,name,old,new", WORDING)
-def test_altered_wording_fails_and_shows_the_text(wording_fails, id, name, old, new):
-    wording_fails(outcome, id, name, old, new)
-
-
-@pytest.mark.parametrize("id,name,text", [("S11", "reduction", "infinitely many orbits"),
-                                          ("S11", "reduction", "many collisions"), ("S11", "realised", "a part"),
-                                          ("S9.2", "aca", "c_k = a, c_{k+1} = c ⇒ c_{k+2} ≠ d"),
-                                          ("S10", "window", "c_k = b ⇒ c_{k+2} = b and c_{k+3} = b")])
-def test_unread_wording_fails_with_the_reason(unread_fails, id, name, text):
-    unread_fails(outcome, id, name, text)
-
-
-def test_every_certificate_reading_a_condition_has_a_wording_test():
-    assert {id for id, *_ in WORDING} == {"S9.2", "S10", "S11"}
-
-
+AGREES_AT_ONE_THIRD = declared("S6", altered("S6", "A", "[(1+r)/2, 1, 0]", "[(1+3*r)/3, 1, 0]"))
 def test_s11_reads_its_phrases_whole():
     """'the beginning' says what 'a prefix' says (the paper's words, l. 873)."""
     assert outcome("S11", realised="the beginning").status == PASS
@@ -305,7 +245,7 @@ def test_verdicts_rest_on_the_proofs_not_on_the_samples():
     ctx.values["section4_data"] = []
     for id in ("S9.2", "S10", "S11"):
         out = run_certificate(CERTIFICATES[id], ctx)
-        assert out.status == EXPECTED[id], (id, [c.statement for c in out.printed if not c.holds])
+        assert out.status == CERTIFICATES[id].expect, (id, [c.statement for c in out.printed if not c.holds])
         assert any(e.startswith("Supporting evidence, not proof") for e in out.evidence)
 
 
@@ -338,7 +278,7 @@ def test_a_wrong_proof_fails_whatever_the_samples():
 def test_s7_case_check_fails_on_an_altered_case():
     """The printed case a, cos φ > 0 with the pair 3-4: its proof (S7.1's step, and the
     projective map's step) fails, and the other five cases still hold."""
-    out = outcome("S7.2", **MUTATIONS["S7.2"][0])
+    out = outcome("S7.2", **declared("S7.2", altered("S7.2", "a_pos", "2-3", "3-4")))
     cases = [c for c in out.printed if "the printed step (S7.1) is the projective map's step" in c.statement
              or c.statement.endswith("the printed step (as in S7.1)")]
     assert len(cases) == 6 and [c.holds for c in cases] == [False, True, True, True, True, True]

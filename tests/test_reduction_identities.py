@@ -1,25 +1,13 @@
 """Section 4 identities: the engine certify.algebra.trig (both routes, signs, parsing) and the
-certificates of proofs/reduction_identities.py, each with a mutation that must turn FAIL."""
+certificates of proofs/reduction_identities.py (their mutants: tests/test_mutants.py)."""
 import pytest
 import sympy as sp
 
 from certify.algebra import trig as T
 from certify.algebra.poly import lam, r
-from certify.run.runner import CERTIFICATES, ERRATUM, FAIL, PASS, altered, load_all, run_certificate
+from certify.run.runner import CERTIFICATES, FAIL, PASS, altered, run_certificate
 from certify.algebra.trig import cθ, cφ, sθ, sφ
-
-load_all()
-OURS = {c.id for c in CERTIFICATES.values() if c.module == "proofs.reduction_identities"}
-_RUNS = {}
-
-
-def outcome(id, **overrides):
-    """Run a certificate (the unaltered runs are cached for the module)."""
-    if not overrides:
-        if id not in _RUNS:
-            _RUNS[id] = run_certificate(CERTIFICATES[id])
-        return _RUNS[id]
-    return run_certificate(CERTIFICATES[id], overrides=overrides)
+from tests.shared import outcome
 
 
 # ---------------------------------------------------------------- the engine
@@ -88,84 +76,11 @@ def test_signs_by_inspection():
 
 
 # ---------------------------------------------------------------- the certificates
-EXPECTED = {"S1": PASS, "S2": ERRATUM, "S3": PASS, "S4": ERRATUM, "S5": PASS, "S7.1": PASS, "S8.1": ERRATUM,
-            "S9.1": ERRATUM}
-
-MUTATIONS = {
-    "S1": lambda: altered("S1", "e_theta_a", "-sin(θ)", "sin(θ)"),
-    "S2": lambda: altered("S2", "t_b", "- λ*cos(θ))", "+ λ*cos(θ))"),
-    "S3": lambda: altered("S3", "cross_chain", "V(-r*cos(φ)^2*sin(θ)", "V(r*cos(φ)^2*sin(θ)"),
-    "S4": lambda: altered("S4", "K_er_chain", "-r*sin(θ))", "-r*cos(θ))"),
-    "S5": lambda: altered("S5", "dot_chain", "(sin(θ)^2 + cos(θ)^2) - r", "(sin(θ)^2 + cos(θ)^2) + r"),
-    "S7.1": lambda: altered("S7.1", "c_neg", "(-cos(φ), 0", "(cos(φ), 0"),
-    "S8.1": lambda: altered("S8.1", "u0", "-cos(θ)*sin(φ)", "cos(θ)*sin(φ)"),
-    "S9.1": lambda: altered("S9.1", "projection", "+ (1+r)*cos(θ)^2*sin(θ)", "+ (1-r)*cos(θ)^2*sin(θ)"),
-}
-
-
-@pytest.mark.parametrize("id", sorted(EXPECTED))
-def test_certificate_as_printed(id):
-    assert outcome(id).status == EXPECTED[id]
-
-
-@pytest.mark.parametrize("id", sorted(MUTATIONS))
-def test_altered_statement_fails(id):
-    assert outcome(id, **MUTATIONS[id]()).status == FAIL
-
-
-def test_every_certificate_of_this_part_is_mutated():
-    assert OURS == set(MUTATIONS) == set(EXPECTED)
-
-
-@pytest.mark.parametrize("id, overrides", [
-    ("S2", {"smallest_bc": "cos(φ) < 0"}),
-    ("S3", altered("S3", "t_lambda", "- λ*cos(θ)", "+ λ*cos(θ)")),
-    ("S7.1", altered("S7.1", "a_pos", "2-3 | B", "3-4 | C")),
-    ("S7.1", altered("S7.1", "b_neg", "sin(θ)^2*sin(φ)^2", "sin(θ)^2*sin(φ)")),
-    ("S8.1", {"orientation": "a: y, b: x, c: z"}),
-    ("S9.1", {"conclusion": "cos(φ') > 0"}),
-])
-def test_more_alterations_fail(id, overrides):
-    assert outcome(id, **overrides).status == FAIL
-
-
 def test_s2_erratum_is_the_word_smaller():
     assert outcome("S2", **altered("S2", "order", "smaller", "larger")).status == PASS
     wrong = [c for c in outcome("S2").printed if not c.holds]
     assert len(wrong) == 1 and "smaller" in wrong[0].statement
     assert any("t_c is larger than t_b" in c.statement and c.holds for c in outcome("S2").corrected)
-
-
-# the wording of every printed condition of this part: altered so that it is false, it must
-# FAIL and show the altered text in a failing printed check (ERRATUM today or not)
-WORDING = [
-    ("S2", "smallest_bc", "cos(φ)", "sin(φ)"),            # sin φ > 0 always: t_c would always come first
-    ("S2", "smallest_bc", ">", "<"),
-    ("S2", "smallest_bc", ">", "≥"),                      # cos φ = 0: t_c = t_a, not the smallest
-    ("S2", "order", "smaller than", "less than"),         # still false, and the stated correction no longer applies
-    ("S2", "order", "t_c is", "t_b is"),                  # "t_b is smaller than t_b"
-    ("S9.1", "conclusion", "cos(φ')", "sin(φ')"),         # sin φ' > 0 by definition
-    ("S9.1", "conclusion", "<", ">"),
-    ("S9.1", "conclusion", "<", "≥"),
-]
-
-
-@pytest.mark.parametrize("id,name,old,new", WORDING)
-def test_altered_wording_fails_and_shows_the_text(wording_fails, id, name, old, new):
-    wording_fails(outcome, id, name, old, new)
-
-
-@pytest.mark.parametrize("id,name,text", [
-    ("S2", "smallest_bc", "cos φ > 0"),                   # not the printed notation cos(φ)
-    ("S2", "order", "smaller"),                           # a phrase without its subject
-    ("S9.1", "conclusion", "cos(φ'') < 0"),               # an unknown name
-])
-def test_unread_wording_fails_with_the_reason(unread_fails, id, name, text):
-    unread_fails(outcome, id, name, text)
-
-
-def test_every_certificate_reading_a_condition_has_a_wording_test():
-    assert {id for id, *_ in WORDING} == {"S2", "S9.1"}
 
 
 def test_s4_erratum_is_cos_theta_for_cos_phi_in_l_734():

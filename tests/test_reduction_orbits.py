@@ -9,6 +9,7 @@ import flint
 import pytest
 
 from certify import cli
+from certify.algebra import Q
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.balls import precision
 from certify.dynamics import reduction as R
@@ -20,7 +21,6 @@ from certify.patterns import analyse as analyse_pattern
 from certify.patterns import reduction_orbits as ro
 from certify.patterns.reduction_orbits import SCHEMA_PATH, analyse, normal_at
 
-Q = flint.fmpq
 COMPLEX = "abacbabcbcabcb"           # the attractor at r = 0.3 (period 14)
 
 

@@ -74,9 +74,9 @@ def test_units_join_certificates_that_share_a_quantity(registry):
 
 @pytest.mark.parametrize("jobs", [2, 3, 8])
 def test_parallel_run_equals_serial_run_and_computes_each_quantity_once(registry, jobs):
-    serial, _ = runner.run(jobs=1)
+    serial, _ = runner.run_selected(jobs=1)
     LOG.unlink()
-    parallel, timings = runner.run(jobs=jobs, estimates={"T2": 5.0})
+    parallel, timings = runner.run_selected(jobs=jobs, estimates={"T2": 5.0})
     assert [c.id for c, _ in parallel] == ["M1", "M2", "T1", "T2", "T3", "S1", "S2"]
     assert report.render_markdown(parallel) == report.render_markdown(serial)
     assert sorted(LOG.read_text().split()) == ["A", "B", "C"]       # once each, across the workers
@@ -85,7 +85,7 @@ def test_parallel_run_equals_serial_run_and_computes_each_quantity_once(registry
 
 def test_progress_counts_every_certificate(registry):
     seen = []
-    runner.run(jobs=2, progress=lambda k, n, cid: seen.append((k, n)))
+    runner.run_selected(jobs=2, progress=lambda k, n, cid: seen.append((k, n)))
     assert seen[0] == (0, 7) and sorted(k for k, _ in seen[1:]) == list(range(1, 8))
 
 
@@ -117,4 +117,4 @@ def test_a_dead_worker_is_an_error_not_a_hang(registry):
         os._exit(3)                 # as a crash in C code would
     registry["T9"] = Certificate("T9", "l. 1", "x", dies, (), {}, "tests.test_runner")
     with pytest.raises(runner.WorkerDied, match="--jobs 1"):
-        runner.run(jobs=2)
+        runner.run_selected(jobs=2)

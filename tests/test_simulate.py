@@ -72,7 +72,7 @@ def test_simultaneous_a_and_c_exact():
     assert sim.next_collision(p, q) == ("ac", Q(1))
     letters, t, p1, q1 = sim.step(p, q, Q(1, 2))
     assert letters == "ac" and p1[0] == 0 and p1[2] == 0
-    run = sim.run(p, q, Q(1, 2), 3)
+    run = sim.follow(p, q, Q(1, 2), 3)
     assert run.events[0] == "ac" and run.word.startswith("[ac]")
 
 
@@ -82,7 +82,7 @@ def test_b_tied_with_a_is_a_multiple_collision():
     with pytest.raises(sim.MultipleCollision, match="triple collision of particles 1, 2, 3") as exc:
         sim.next_collision(p, q)
     assert exc.value.particles == (1, 2, 3) and exc.value.t == 1
-    run = sim.run(p, q, Q(1, 2), 2)
+    run = sim.follow(p, q, Q(1, 2), 2)
     assert run.stop == "multiple" and run.reason == "triple collision of particles 1, 2, 3"
 
 
@@ -100,7 +100,7 @@ def test_balls_undecided_when_times_overlap():
     q = sim.balls(sim.exact([-1, 1, -2]))
     with pytest.raises(sim.Undecided):
         sim.next_collision(p, q)
-    assert sim.run(p, q, flint.arb(Q(1, 2)), 3).stop == "undecided"
+    assert sim.follow(p, q, flint.arb(Q(1, 2)), 3).stop == "undecided"
 
 
 def test_balls_undecided_sign():
@@ -123,7 +123,7 @@ def test_run_certified_raises_the_precision():
 @given(st.tuples(positive, positive, positive), st.tuples(rationals, rationals, rationals), restitution)
 def test_exact_run_keeps_gaps_nonnegative(p, q, r0):
     """Particles never cross (M3): every gap stays >= 0, the closed gap is exactly 0."""
-    run = sim.run(p, q, r0, 25)
+    run = sim.follow(p, q, r0, 25)
     assert len(run.states) == len(run.events) + 1 and run.stop in ("n", "free", "multiple")
     if run.stop == "free":                   # it ends because no pair approaches any more
         assert all(z >= 0 for z in run.states[-1].q)
@@ -137,8 +137,8 @@ def test_exact_run_keeps_gaps_nonnegative(p, q, r0):
 @given(st.tuples(positive, positive, positive), st.tuples(rationals, rationals, rationals), restitution)
 def test_balls_agree_with_exact(p, q, r0):
     """The ball run is a certified prefix of the exact run, with enclosing states."""
-    exact_run = sim.run(p, q, r0, 15)
-    ball_run = sim.run(sim.balls(p, 256), sim.balls(q, 256), flint.arb(r0), 15, prec=256)
+    exact_run = sim.follow(p, q, r0, 15)
+    ball_run = sim.follow(sim.balls(p, 256), sim.balls(q, 256), flint.arb(r0), 15, prec=256)
     n = len(ball_run.events)
     assert ball_run.events == exact_run.events[:n]
     if ball_run.stop == "n" or ball_run.stop == exact_run.stop:
@@ -151,9 +151,9 @@ def test_balls_agree_with_exact(p, q, r0):
 def test_scaling_keeps_the_word():
     """M4 on the simulator: scaling p or q by a positive factor keeps the collisions."""
     p, q, r0 = sim.exact([1, "1/3", 2]), sim.exact([-1, "1/2", "-3/4"]), Q(1, 4)
-    w = sim.run(p, q, r0, 12).word
-    assert sim.run(tuple(3 * z for z in p), q, r0, 12).word == w
-    assert sim.run(p, tuple(Q(2, 7) * z for z in q), r0, 12).word == w
+    w = sim.follow(p, q, r0, 12).word
+    assert sim.follow(tuple(3 * z for z in p), q, r0, 12).word == w
+    assert sim.follow(p, tuple(Q(2, 7) * z for z in q), r0, 12).word == w
 
 
 def test_precision_context_restores():

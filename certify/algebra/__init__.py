@@ -19,9 +19,10 @@ ground floor (:mod:`certify.errors`, :mod:`certify.caches`).
 from . import numberfield, statements, trig
 from .algebraic import Algebraic, sign_at, sign_intervals
 from .balls import GUARD, decide, ends, ordered, precision, tight
-from .branches import Condition, FixedPoint, SignTable, Spectrum, ball_value, simplest_between
+from .branches import (BRANCH_NAMES, LOWER, MIDDLE, UPPER, X_MINUS, X_PLUS, Condition, FixedPoint, SignTable, Spectrum, ball_value,
+                       simplest_between)
 from .elimination import Elimination, eliminate, show_factored_int
-from .poly import (FIELD, RING, Lf, Rf, discriminant_lambda, expr, from_flint, irreducible_factors, lam, parse,
+from .poly import (FIELD, Q, RING, Lf, Rf, discriminant_lambda, expr, from_flint, irreducible_factors, lam, parse,
                    primitive, r, resultant_lambda, show, squarefree_part, to_field, to_fmpq, to_fmpq_poly,
                    to_fmpz_poly, to_ring, u, v, x)
 from .radicals import radical
@@ -32,9 +33,9 @@ __all__ = [
     "numberfield", "statements", "trig", "StatementError", "radical",
     "Algebraic", "sign_at", "sign_intervals",
     "GUARD", "decide", "ends", "ordered", "precision", "tight",
-    "Condition", "FixedPoint", "SignTable", "Spectrum", "ball_value", "simplest_between",
+    "BRANCH_NAMES", "LOWER", "MIDDLE", "UPPER", "X_MINUS", "X_PLUS", "Condition", "FixedPoint", "SignTable", "Spectrum", "ball_value", "simplest_between",
     "Elimination", "eliminate", "show_factored_int",
-    "FIELD", "RING", "Lf", "Rf", "discriminant_lambda", "expr", "from_flint", "irreducible_factors", "lam",
+    "FIELD", "Q", "RING", "Lf", "Rf", "discriminant_lambda", "expr", "from_flint", "irreducible_factors", "lam",
     "parse", "primitive", "r", "resultant_lambda", "show", "squarefree_part", "to_field", "to_fmpq",
     "to_fmpq_poly", "to_fmpz_poly", "to_ring", "u", "v", "x",
     "checked_real_root_count", "count_roots", "flint_real_roots", "isolate", "refine", "sturm_count",

@@ -17,11 +17,11 @@ import flint
 import sympy as sp
 
 from certify import caches
+from certify.errors import UNDECIDED, Undecided
 from .balls import GUARD, decide, precision
-from .poly import poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
+from .poly import Q, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, isolate, refine
 
-Q = flint.fmpq
 _ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
 caches.register(_ISOLATED.clear)
 
@@ -231,7 +231,7 @@ class Algebraic:
                     return 0
             self.refine((self.hi - self.lo) / 2)
             other.refine((other.hi - other.lo) / 2)
-        raise ArithmeticError("comparison did not terminate")
+        raise Undecided("comparison did not terminate")
 
     def __eq__(self, other):
         return self._cmp(other) == 0
@@ -424,10 +424,10 @@ def sign_at(poly, alpha: Algebraic, prec: int = 64, maxprec: int = 4096) -> int:
         return 0
     def attempt(p):
         val = flint.arb_poly([flint.arb(c) for c in P.coeffs()])(alpha.arb(p))
-        return 1 if val > 0 else -1 if val < 0 else "?"
+        return 1 if val > 0 else -1 if val < 0 else UNDECIDED
     sign = decide(attempt, prec, maxprec)
-    if sign == "?":
-        raise ArithmeticError("sign undecided")
+    if sign == UNDECIDED:
+        raise Undecided("sign undecided")
     return sign
 
 

@@ -14,6 +14,8 @@ from typing import Callable
 
 import flint
 
+from certify.errors import UNDECIDED
+
 GUARD = 30          # extra working bits over the precision of the inputs
 
 
@@ -30,7 +32,7 @@ def precision(bits: int | None):
 
 
 def decide(attempt: Callable[[int], object], prec: int = 128, maxprec: int = 1024,
-           undecided: Callable[[object], bool] = lambda v: v == "?"):
+           undecided: Callable[[object], bool] = lambda v: v == UNDECIDED):
     """``attempt(prec)`` at prec, 2·prec, ... ≤ maxprec, each under a working precision
     of prec + GUARD bits; the first answer that is not ``undecided``, else the last."""
     answer = None

@@ -28,17 +28,22 @@ import flint
 import sympy as sp
 
 from certify import caches
+from certify.errors import UNDECIDED, Undecided
 from . import numberfield as nf
-from .algebraic import Algebraic, to_fmpq
+from .algebraic import Algebraic, sign_at, to_fmpq
 from .balls import GUARD, decide, precision
 from math import gcd as _gcd
 
-from .poly import (RING, mpoly_to_ring, mpoly_to_univariate, ring_to_lrq, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
+from .poly import (Q, RING, mpoly_to_ring, mpoly_to_univariate, ring_to_lrq, ring_to_mpoly, Sf, Xf, coefficients_in, discriminant_lambda, expr, irreducible_factors, lam, primitive, r,
                    resultant_lambda, ring_terms, squarefree_part, to_field, to_fmpq_poly, to_ring, x)
 from .sturm import checked_real_root_count, isolate
 
-Q = flint.fmpq
 SIGN = {1: "+", -1: "−", 0: "0", None: "·"}
+BRANCH_NAMES = ("upper", "middle", "lower")   # the real eigenvalue branches, largest first: index 0, 1, 2
+UPPER, MIDDLE, LOWER = range(3)
+X_PLUS, X_MINUS = "x₊", "x₋"                 # the fixed points (a - d ± √Δ)/(2c) of f, sigma = 1 and -1
+NO_BRANCH = "missing"     # the sign on a branch that does not exist at this r: an answer, not undecided (certify.errors)
+_MORE_PRECISION = "more precision"     # an attempt of decide() that asks for more bits
 
 
 @dataclass(frozen=True)
@@ -186,14 +191,14 @@ def _sign_ball(cond: Condition, R, L, delta_is_zero=False):
         if dv < 0:
             return None
         if not dv > 0:
-            return "?"
+            return UNDECIDED
         S = dv.sqrt()
     num = _eval_terms(cond.terms["N0"], Rp, Lp) + _eval_terms(cond.terms["N1"], Rp, Lp) * S
     den = _eval_terms(cond.terms["D0"], Rp, Lp) + _eval_terms(cond.terms["D1"], Rp, Lp) * S
     sn = 1 if num > 0 else -1 if num < 0 else None
     sd = 1 if den > 0 else -1 if den < 0 else None
     if sn is None or sd is None:
-        return "?"
+        return UNDECIDED
     return sn * sd
 
 
@@ -210,8 +215,8 @@ def evaluate_sign(cond: Condition, r0, L: Algebraic, prec: int = 64, maxprec: in
     """The sign of g at r = r0 (rational) on the branch λ = L, proven in ball
     arithmetic; None when x is not real there (Δ < 0)."""
     sg = decide(lambda p: _sign_ball(cond, flint.arb(Q(r0)), L.arb(p)), prec, maxprec)
-    if sg == "?":
-        raise ArithmeticError(f"sign of {cond.name} undecided at r = {r0}")
+    if sg == UNDECIDED:
+        raise Undecided(f"sign of {cond.name} undecided at r = {r0}")
     return sg
 
 
@@ -249,9 +254,9 @@ class Cell:
     λ at the sample (largest first) and the sign of g on each branch (None: x not real)
     are computed when first read."""
 
-    def __init__(self, lo: Algebraic, hi: Algebraic, sample: flint.fmpq, branches_at, sign_at):
+    def __init__(self, lo: Algebraic, hi: Algebraic, sample: flint.fmpq, branches_at, sign_of):
         self.lo, self.hi, self.sample = lo, hi, sample
-        self._branches_at, self._sign_at = branches_at, sign_at
+        self._branches_at, self._sign_of = branches_at, sign_of
 
     @cached_property
     def branches(self) -> list[Algebraic]:
@@ -260,12 +265,12 @@ class Cell:
     @cached_property
     def signs(self) -> Lazy:
         lams = self.branches
-        return Lazy(len(lams), lambda k: self._sign_at(self.sample, lams[k]))
+        return Lazy(len(lams), lambda k: self._sign_of(self.sample, lams[k]))
 
 
 class SignTable:
     """The certified sign of a condition on each branch, cell by cell, and at each
-    critical value (a list of signs, '?' where undecided; None where the branches
+    critical value (a list of signs, UNDECIDED where undecided; None where the branches
     could not be isolated).  Signs are computed when first read (:class:`Lazy`)."""
 
     def __init__(self, condition: str, interval: tuple, critical: list, cells: list, point_at=None):
@@ -275,37 +280,37 @@ class SignTable:
     def signs(self, branch: int, lo=None, hi=None, include_points=True) -> set:
         """Signs taken by g on branch ``branch`` (0 = largest real eigenvalue) over
         ]lo, hi[ (default: the whole interval), interior critical values included.
-        'missing' is in the set where the branch does not exist, '?' where undecided."""
+        NO_BRANCH is in the set where the branch does not exist, UNDECIDED where undecided."""
         lo = self.interval[0] if lo is None else lo
         hi = self.interval[1] if hi is None else hi
         out = set()
         for cell in self.cells:
             if cell.hi <= lo or cell.lo >= hi:
                 continue
-            out.add(cell.signs[branch] if branch < len(cell.signs) else "missing")
+            out.add(cell.signs[branch] if branch < len(cell.signs) else NO_BRANCH)
         if include_points:
             for k, rc in enumerate(self.critical):
                 if lo < rc < hi:
                     pt = self.points[k]
-                    out.add("?" if pt is None else pt[branch] if branch < len(pt) else "missing")
+                    out.add(UNDECIDED if pt is None else pt[branch] if branch < len(pt) else NO_BRANCH)
         return out
 
     def holds(self, branch: int, sign: int, lo=None, hi=None) -> bool:
         """g has the sign ``sign`` at every point of branch ``branch`` over ]lo, hi[."""
         return self.signs(branch, lo, hi) == {sign}
 
-    def markdown(self, names=("upper", "middle", "lower")) -> str:
+    def markdown(self, names=BRANCH_NAMES) -> str:
         """The sign table: one row per cell and per critical value."""
         width = max([len(c.signs) for c in self.cells] + [1])
         head = "| r | sample | real λ | " + " | ".join(names[k] if k < len(names) else f"λ{k}" for k in range(width)) + " |"
         rows = [head, "|" + "---|" * (3 + width)]
         for k, cell in enumerate(self.cells):
-            signs = [SIGN.get(sg, "?") for sg in cell.signs] + [""] * (width - len(cell.signs))
+            signs = [SIGN.get(sg, UNDECIDED) for sg in cell.signs] + [""] * (width - len(cell.signs))
             rows.append(f"| ]{_short(cell.lo)}, {_short(cell.hi)}[ | {cell.sample} | {len(cell.branches)} | "
                         + " | ".join(signs) + " |")
             if k < len(self.critical):
                 pt = self.points[k]
-                signs = ["?"] * width if pt is None else [SIGN.get(sg, "?") for sg in pt] + [""] * (width - len(pt))
+                signs = [UNDECIDED] * width if pt is None else [SIGN.get(sg, UNDECIDED) for sg in pt] + [""] * (width - len(pt))
                 rows.append(f"| {_short(self.critical[k])} | (critical) | {'' if pt is None else len(pt)} | "
                             + " | ".join(signs) + " |")
         return "\n".join(rows)
@@ -455,13 +460,13 @@ class Spectrum:
         degenerate = getattr(cond, "degenerate", None)
         if not degenerate:
             return evaluate_sign(cond, t, L)
-        on = {label for label, e in degenerate if _sign_at_algebraic(_at_r(e, t), L) == 0}
+        on = {label for label, e in degenerate if sign_at(_at_r(e, t), L) == 0}
         if not on:
             return evaluate_sign(cond, t, L)
         if cond.delta is None:
-            return 0 if on in ({"N"}, {"D"}) else "?"
+            return 0 if on in ({"N"}, {"D"}) else UNDECIDED
         if on != {"N"}:
-            return "?"
+            return UNDECIDED
         terms = [cond.terms[k] for k in ("delta", "N0", "N1")]
         n = max((max(i, j) for ts in terms for _c, i, j in ts), default=0)
 
@@ -471,10 +476,10 @@ class Spectrum:
             if dv < 0:
                 return None
             if dv > 0 and (v0 > 0 or v0 < 0) and (v1 > 0 or v1 < 0):
-                return 0 if (v0 > 0) != (v1 > 0) else "?"
-            return "undecided"
-        out = decide(attempt, 128, 1024, undecided=lambda v: v == "undecided")
-        return "?" if out == "undecided" else out
+                return 0 if (v0 > 0) != (v1 > 0) else UNDECIDED
+            return _MORE_PRECISION
+        out = decide(attempt, 128, 1024, undecided=lambda v: v == _MORE_PRECISION)
+        return UNDECIDED if out == _MORE_PRECISION else out
 
     def branches_at(self, rc: Algebraic, maxprec: int = 1024):
         """The real eigenvalues at the algebraic r = rc, largest first, each repeated
@@ -508,17 +513,17 @@ class Spectrum:
         return None
 
     def sign_at_point(self, cond: Condition, rc: Algebraic, maxprec: int = 1024):
-        """Signs of g on the branches at an algebraic r ('?' where undecided: g
+        """Signs of g on the branches at an algebraic r (UNDECIDED where undecided: g
         vanishing or a pole there), or None when the branches cannot be isolated."""
         roots = self.branches_at(rc)
         if roots is None:
             return None
         quick = min(256, maxprec)
         out = decide(lambda p: [_sign_ball(cond, rc.arb(p), L(p)) for L in roots], 128, quick,
-                     undecided=lambda signs: "?" in signs)
+                     undecided=lambda signs: UNDECIDED in signs)
         # where balls of 256 bits do not decide, the exact zero test first (a critical value is
         # often a zero of g: no precision decides it), then balls up to maxprec for the rest
-        return [self._undecided_sign(cond, rc, k, roots[k], 2 * quick, maxprec) if sg == "?" else sg
+        return [self._undecided_sign(cond, rc, k, roots[k], 2 * quick, maxprec) if sg == UNDECIDED else sg
                 for k, sg in enumerate(out)]
 
     def _undecided_sign(self, cond: Condition, rc: Algebraic, k: int, ball, prec: int, maxprec: int):
@@ -532,10 +537,10 @@ class Spectrum:
             sg = self._exact_sign(cond, rc, k, ball)
         except ArithmeticError:
             sg = balls()
-            if sg == "?":
+            if sg == UNDECIDED:
                 raise
             return sg
-        return balls() if sg == "?" else sg
+        return balls() if sg == UNDECIDED else sg
 
     def _exact_sign(self, cond: Condition, rc: Algebraic, k: int, ball, maxprec: int = 1024):
         """The sign of g on branch k at rc where balls alone do not decide it: 0 when
@@ -544,12 +549,12 @@ class Spectrum:
         if cond.delta is None:
             if self.vanishes_at(cond.N[0], rc, k) and not self.vanishes_at(cond.D[0], rc, k):
                 return 0
-            return "?"
+            return UNDECIDED
         if not self.vanishes_at(cond.delta, rc, k):
             if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball) and \
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
-            return "?"
+            return UNDECIDED
         return decide(lambda p: _sign_ball(cond, rc.arb(p), ball(p), delta_is_zero=True), 128, maxprec)
 
     def _root_with_sqrt(self, P, delta, rc, k, ball, maxprec: int = 1024):
@@ -602,7 +607,7 @@ class Spectrum:
             return G
         branches = self.branches_at(rc)
         if branches is None or branch >= len(branches):
-            raise ArithmeticError("branch not isolated at this point")
+            raise Undecided("branch not isolated at this point")
         prec = 128
         while prec <= maxprec:
             zeros = G(prec)
@@ -614,7 +619,7 @@ class Spectrum:
                 if all(not z.overlaps(o) for z in hit for o in others):
                     return bool(hit)
             prec *= 2
-        raise ArithmeticError("zero test undecided")
+        raise Undecided("zero test undecided")
 
 
 def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
@@ -688,10 +693,6 @@ def _at_r(P, t) -> flint.fmpq_poly:
     n = max(coeffs, default=0)
     return flint.fmpq_poly([coeffs.get(j, Q(0)) for j in range(n + 1)])
 
-
-def _sign_at_algebraic(P, L: Algebraic) -> int:
-    from .algebraic import sign_at
-    return sign_at(P, L)
 
 
 def _alg(a) -> Algebraic:

@@ -1,10 +1,10 @@
 """Exact arithmetic in Q(α)[λ] for a real algebraic α, and the real roots there.
 
 At a critical value r = α two eigenvalue branches may collide; cp(λ; α) is then
-made squarefree exactly — Euclid's algorithm in K[λ], K = Q[r]/(m), m the minimal
+made squarefree exactly — Euclid's algorithm in Q(α)[λ], Q(α) = Q[r]/(m), m the minimal
 polynomial of α — before its roots are enclosed by certified balls (python-flint's
-acb root isolation).  Elements of K are python-flint ``fmpq_poly`` in r reduced
-modulo m (inverses by the extended Euclid algorithm, ``xgcd``); an element of K[λ]
+acb root isolation).  Elements of Q(α) are python-flint ``fmpq_poly`` in r reduced
+modulo m (inverses by the extended Euclid algorithm, ``xgcd``); an element of Q(α)[λ]
 is the list of its coefficients, highest first.
 """
 from __future__ import annotations
@@ -15,26 +15,24 @@ from sympy.polys.rings import PolyElement
 
 from .algebraic import Algebraic
 from .balls import GUARD, ordered, precision
-from .poly import expr, lam, r, ring_terms
+from .poly import Q, expr, lam, r, ring_terms
 
-Q = flint.fmpq
-K = flint.fmpq_poly
 
 
 def modulus(alpha: Algebraic) -> flint.fmpq_poly:
     """The minimal polynomial of α (r - α for a rational α) as an fmpq_poly in r."""
     if alpha.is_rational:
-        return K([-alpha.lo, 1])
-    return K(alpha.minimal_polynomial())
+        return flint.fmpq_poly([-alpha.lo, 1])
+    return flint.fmpq_poly(alpha.minimal_polynomial())
 
 
 def reduce(c, m: flint.fmpq_poly) -> flint.fmpq_poly:
-    """An element of K in normal form."""
-    return K(c) % m
+    """An element of Q(α) in normal form."""
+    return flint.fmpq_poly(c) % m
 
 
 def kpoly(e, m: flint.fmpq_poly) -> list[flint.fmpq_poly]:
-    """A polynomial in λ over Q[r] as an element of K[λ] (coefficients highest first):
+    """A polynomial in λ over Q[r] as an element of Q(α)[λ] (coefficients highest first):
     a SymPy expression, a text, or an element of Q[λ, r, x, u, v, s] (``poly.RING``)
     free of x, u, v, s, read term by term without going through an expression."""
     if isinstance(e, PolyElement):
@@ -53,7 +51,7 @@ def _from_dict(d: dict) -> flint.fmpq_poly:
     out = [Q(0)] * (max(d, default=0) + 1)
     for j, c in d.items():
         out[j] = c
-    return K(out)
+    return flint.fmpq_poly(out)
 
 
 def _strip(p):
@@ -70,8 +68,8 @@ def _monic(p, m):
 
 
 def gcd(f, g, m) -> list[flint.fmpq_poly]:
-    """The monic gcd in K[λ] (m irreducible, so K is a field).  Euclid by
-    pseudo-remainders (f <- lc(g) f - lc(f) λ^k g: no inverse in K, which costs an
+    """The monic gcd in Q(α)[λ] (m irreducible, so Q(α) is a field).  Euclid by
+    pseudo-remainders (f <- lc(g) f - lc(f) λ^k g: no inverse in Q(α), which costs an
     extended gcd in Q[r] each), each remainder scaled by a rational to keep its
     numbers small; one inverse at the end, none when the gcd is a constant (1)."""
     f, g = _strip(f), _strip(g)
@@ -79,7 +77,7 @@ def gcd(f, g, m) -> list[flint.fmpq_poly]:
         a = g[0]
         while len(f) >= len(g):
             q = f[0]
-            shifted = g + [K(0)] * (len(f) - len(g))
+            shifted = g + [flint.fmpq_poly(0)] * (len(f) - len(g))
             f = _strip([reduce(a * x - q * b, m) for x, b in zip(f, shifted)])
             if f:
                 lead = f[0][f[0].degree()]
@@ -88,17 +86,17 @@ def gcd(f, g, m) -> list[flint.fmpq_poly]:
     if not f:
         return f
     if len(f) == 1:
-        return [K(1)]
+        return [flint.fmpq_poly(1)]
     return _monic(f, m)
 
 
 def divide(f, g, m) -> list[flint.fmpq_poly]:
-    """The exact quotient f / g in K[λ], g monic."""
+    """The exact quotient f / g in Q(α)[λ], g monic."""
     f, out = list(f), []
     while len(f) >= len(g):
         q = f[0]
         out.append(q)
-        shifted = g + [K(0)] * (len(f) - len(g))
+        shifted = g + [flint.fmpq_poly(0)] * (len(f) - len(g))
         f = [reduce(a - q * b, m) for a, b in zip(f, shifted)][1:]
     return out
 
@@ -109,13 +107,13 @@ def derivative(f, m) -> list[flint.fmpq_poly]:
 
 
 def squarefree(f, m) -> tuple[list[flint.fmpq_poly], list[flint.fmpq_poly]]:
-    """(f / gcd(f, f'), gcd(f, f')) in K[λ]."""
+    """(f / gcd(f, f'), gcd(f, f')) in Q(α)[λ]."""
     g = gcd(f, derivative(f, m), m)
     return (divide(f, g, m) if len(g) > 1 else f), g
 
 
 def arb_of(c: flint.fmpq_poly, R: flint.arb) -> flint.arb:
-    """An element of K evaluated at a ball around α (its terms from the highest)."""
+    """An element of Q(α) evaluated at a ball around α (its terms from the highest)."""
     val = flint.arb(0)
     coeffs = c.coeffs()
     for k in range(len(coeffs) - 1, -1, -1):
@@ -125,7 +123,7 @@ def arb_of(c: flint.fmpq_poly, R: flint.arb) -> flint.arb:
 
 
 def evaluate(f, R: flint.arb, z: flint.arb) -> flint.arb:
-    """f(z) for f in K[λ], at a ball R around α."""
+    """f(z) for f in Q(α)[λ], at a ball R around α."""
     val = flint.arb(0)
     for c in f:
         val = val * z + arb_of(c, R)
@@ -133,7 +131,7 @@ def evaluate(f, R: flint.arb, z: flint.arb) -> flint.arb:
 
 
 def real_roots(f, alpha: Algebraic, prec: int):
-    """Certified balls around the real roots of a squarefree f ∈ K[λ], largest first
+    """Certified balls around the real roots of a squarefree f ∈ Q(α)[λ], largest first
     (the order decided on the exact rational ends of the balls, so that the upper,
     middle and lower branches are named right however close they are); None when
     python-flint cannot isolate or order them at this precision.  A root ball is

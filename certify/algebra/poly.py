@@ -21,6 +21,8 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 
+Q = flint.fmpq                 # an exact rational: Q(3, 7), Q(1, 2) (the one name of python-flint's fmpq)
+
 r, lam, x, u, v, s = sp.symbols("r λ x u v s")
 
 # Q(λ, r, x, u, v, s) as sparse rational functions (SymPy's polys), λ first in lex

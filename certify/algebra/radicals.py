@@ -15,9 +15,8 @@ import sympy as sp
 from certify.errors import StatementError
 from .algebraic import Algebraic
 from .balls import precision
-from .poly import to_fmpz_poly
+from .poly import Q, to_fmpz_poly
 
-Q = flint.fmpq
 
 
 def _ball(e: sp.Expr) -> flint.arb:

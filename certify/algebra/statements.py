@@ -196,7 +196,7 @@ class Relation:
 
     def holds_on(self, quantity: sp.Expr, signs) -> bool:
         """Whether it holds at every sign in ``signs`` (a set from a sign table: a
-        non-sign entry such as 'missing', '?' or None makes it fail); False on an empty set."""
+        non-sign entry such as NO_BRANCH, UNDECIDED or None makes it fail); False on an empty set."""
         signs = set(signs)
         return bool(signs) and signs <= {-1, 0, 1} and all(self.holds({quantity: s}) for s in signs)
 

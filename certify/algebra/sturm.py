@@ -26,9 +26,8 @@ import flint
 
 from certify import caches
 from .balls import ordered, precision
-from .poly import poly_key, to_fmpq
+from .poly import Q, poly_key, to_fmpq
 
-Q = flint.fmpq
 _SEQUENCES: dict = {}            # the coefficients of p -> its Sturm sequence (memoised)
 _BALL_POLYS: dict = {}           # id of a sequence member -> (member, its arb_poly)
 caches.register(_SEQUENCES.clear)
@@ -64,7 +63,7 @@ def _sign(a) -> int:
     return (a > 0) - (a < 0)
 
 
-def sign_at(p: flint.fmpq_poly, a: flint.fmpq) -> int:
+def sign_at_rational(p: flint.fmpq_poly, a: flint.fmpq) -> int:
     """The sign of p(a), exact: a ball evaluation when it excludes 0 (cheap for the
     long rationals of bisection), else the exact rational value."""
     if p.degree() > 8:
@@ -85,7 +84,7 @@ def sign_at(p: flint.fmpq_poly, a: flint.fmpq) -> int:
 def sign_changes(seq, a) -> int:
     """Number of sign changes of the Sturm sequence at the rational a (zeros skipped)."""
     a = to_fmpq(a)
-    signs = [s for s in (sign_at(p, a) for p in seq) if s != 0]
+    signs = [s for s in (sign_at_rational(p, a) for p in seq) if s != 0]
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
 
@@ -160,7 +159,7 @@ def _compare_root(p0, enclosure, x) -> int:
         return -1
     if a >= x:
         return 1
-    sx = sign_at(p0, x)
+    sx = sign_at_rational(p0, x)
     if sx == 0:
         return 0
     return 1 if sx == sa else -1          # no sign change on ]a, x]: ρ lies above x
@@ -264,10 +263,10 @@ def refine(p, lo, hi, width) -> tuple[flint.fmpq, flint.fmpq]:
     lo, hi, width = to_fmpq(lo), to_fmpq(hi), to_fmpq(width)
     if lo == hi:
         return lo, hi
-    slo = sign_at(p, lo)
+    slo = sign_at_rational(p, lo)
     while hi - lo > width:
         mid = (lo + hi) / 2
-        sm = sign_at(p, mid)
+        sm = sign_at_rational(p, mid)
         if sm == 0:
             return mid, mid
         if sm == slo:

@@ -12,7 +12,7 @@ from . import particles, reduction, simulate
 from .model import (INDEX, LETTERS, A, B, C, characteristic_polynomial, check_word, collide, collide_particles,
                     collision_matrix, word_matrix)
 from .simulate import MultipleCollision, Undecided
-from .words import (K, Candidate, candidate, check_position_map, eigenvector, fixed_point_ball, position_map,
+from .words import (Candidate, candidate, check_position_map, eigenvector, fixed_point_ball, position_map,
                     reduce_mod, run_word, velocities)
 
 __all__ = [
@@ -20,6 +20,6 @@ __all__ = [
     "INDEX", "LETTERS", "A", "B", "C", "characteristic_polynomial", "check_word", "collide",
     "collide_particles", "collision_matrix", "word_matrix",
     "MultipleCollision", "Undecided",
-    "K", "Candidate", "candidate", "check_position_map", "eigenvector", "fixed_point_ball", "position_map",
+    "Candidate", "candidate", "check_position_map", "eigenvector", "fixed_point_ball", "position_map",
     "reduce_mod", "run_word", "velocities",
 ]

@@ -19,7 +19,7 @@ Both outer pairs close at speed 1 and meet at t = 1 ("ac"); with r = 1/2, h = 3/
 v becomes (1/4, 3/4, -3/4, -1/4), and the gap x3 - x2 = 2 closes at speed 3/2 after
 4/3, at t = 7/3:
 
->>> h = simulate([0, 1, 3, 4], [1, 0, 0, -1], "1/2", 2)
+>>> h = evolve([0, 1, 3, 4], [1, 0, 0, -1], "1/2", 2)
 >>> h.word, [str(c.t) for c in h.collisions], [str(z) for z in h.collisions[0].v]
 ('[ac]b', ['1', '7/3'], ['1/4', '3/4', '-3/4', '-1/4'])
 """
@@ -35,10 +35,9 @@ import flint
 
 from . import simulate as sim
 from .model import collide_particles
-from certify.algebra.poly import to_fmpq
+from certify.algebra.poly import Q, to_fmpq
 from certify.errors import UsageError
 
-Q = flint.fmpq
 NUMBER = re.compile(r"[+-]?(\d+(/\d+)?|\d+\.\d*|\.\d+)")
 PROGRESS_STEPS = 200          # at most this many progress reports per run
 
@@ -151,7 +150,7 @@ def advance(x: Sequence, v: Sequence, dt) -> tuple:
     return tuple(xi + dt * vi for xi, vi in zip(x, v))
 
 
-def simulate(x, v, r, collisions: int,
+def evolve(x, v, r, collisions: int,
              progress: Callable[[int, int, str], None] | None = None) -> History:
     """At most ``collisions`` collision events from the positions x and velocities v
     (four exact rationals each, x ordered), restitution coefficient r in ]0, 1[.

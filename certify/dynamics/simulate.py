@@ -20,7 +20,7 @@ Two number systems behind one interface:
   raised, and the caller raises the precision (:func:`run_certified`).
 
 >>> from flint import fmpq
->>> run(exact([1, 0, 2]), exact([-1, "1/2", -1]), fmpq(1, 2), 3).word   # a at t=1, c at t=2
+>>> follow(exact([1, 0, 2]), exact([-1, "1/2", -1]), fmpq(1, 2), 3).word   # a at t=1, c at t=2
 'acb'
 """
 from __future__ import annotations
@@ -33,10 +33,7 @@ import flint
 from certify.algebra.balls import precision
 from .model import INDEX, LETTERS, collide
 from certify.algebra.poly import to_fmpq
-
-
-class Undecided(ArithmeticError):
-    """A sign or a comparison of balls that the working precision cannot decide."""
+from certify.errors import Undecided
 
 
 class MultipleCollision(ArithmeticError):
@@ -220,7 +217,7 @@ class Run:
         return "".join(e if len(e) == 1 else f"[{e}]" for e in self.events)
 
 
-def run(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
+def follow(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
         until: Callable[[Run], bool] | None = None) -> Run:
     """At most n collisions from (p0, q0); ball arithmetic at ``prec`` bits.
     A comparison that cannot be decided ends the run with stop="undecided" (the
@@ -262,7 +259,7 @@ def run_certified(datum: Callable[[int], tuple], n: int, prec: int = 128,
     while prec <= maxprec:
         with precision(prec):
             p0, q0, r = datum(prec)
-        result = run(p0, q0, r, n, prec, until)
+        result = follow(p0, q0, r, n, prec, until)
         if result.stop != "undecided":
             return result, prec
         prec *= 2

@@ -28,7 +28,7 @@ from certify import caches
 from certify.algebra.branches import Spectrum
 from certify.algebra.poly import LR_LAMBDA, Frac, flint_poly_to_frac, frac_to_field, from_flint, lam, r
 from .model import INDEX, charpoly_flint, charpoly_ring, collide, factor_flint, word_matrix_flint
-from .words import K, Candidate, Step, candidate, run_lr, steps_of
+from .words import Candidate, Step, candidate, run_lr, steps_of
 
 
 @dataclass(frozen=True)
@@ -79,7 +79,7 @@ def run_in(system: System, word: str, q0: tuple) -> list[Step]:
 
 def eigenvector2(M) -> list[tuple]:
     """q = (-1, u) from row 1 of (M - λI) q = 0, and from row 2 (the other choice,
-    for points where the first degenerates); entries :class:`Frac` (then so is q) or of K."""
+    for points where the first degenerates); entries :class:`Frac` (then so is q) or of ``FIELD``."""
     if not isinstance(M[0][0], Frac):
         from certify.algebra.poly import field_to_frac
         out = eigenvector2([[field_to_frac(e) for e in row] for row in M])

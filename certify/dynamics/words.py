@@ -3,14 +3,14 @@
 For a word w = c_1 ... c_n starting with a and ending with b (the paper's
 normalisation, l. 270-280): q(0) = (-1, u, v) is an eigenvector of
 M_w = K_{c_n} ... K_{c_1} for an eigenvalue λ, found from two rows of the
-eigen-equation over K = Q(λ, r); p(0) = (1, 0, x).  The collision times are
+eigen-equation over the field Q(λ, r) (``FIELD``); p(0) = (1, 0, x).  The collision times are
 *defined* as if the word were realised (t_k = t_{k-1} - p_i/q_i for the letter's
 component i, l. 460-463), so p(t_k) = P₀ + x P₁ stays affine in x and q(t_k) is in
 K; the position map is f(x) = p_3(t_n)/p_1(t_n) = (ax + b)/(cx + d).  Everything is
 exact; identities are checked modulo cp(λ; r), which keeps the values on every
 eigenvalue branch.  The arithmetic runs on python-flint's fmpz_mpoly in (λ, r)
 (:class:`certify.algebra.poly.Frac`, canonical like SymPy's fractions); the results
-are handed out as the equal elements of SymPy's field K (``FIELD``).
+are handed out as the equal elements of SymPy's field ``FIELD``.
 """
 from __future__ import annotations
 
@@ -28,7 +28,6 @@ from .model import (INDEX, characteristic_polynomial, charpoly_flint, check_word
 from certify.algebra.poly import (FIELD, LR_LAMBDA, LR_R, LRCTX, LRQCTX, Frac, field_to_frac, flint_poly_to_frac,
                                   frac_to_field, lr_to_ring, ring_to_lrq, to_field, to_ring)
 
-K = FIELD
 
 
 def eigenvector_lr(M, rows=(0, 1)) -> tuple:
@@ -65,7 +64,7 @@ class Step:
 def run_lr(word: str, q0: tuple, index=INDEX, law=collide, gaps: int = 3) -> list[tuple]:
     """The run of :func:`run_word` on :class:`Frac`: [(letter, p, q)] with p a list of
     pairs (P0, P1) and q a tuple, on 2 or 3 gaps (p(0) = (1, 0) or (1, 0, x)); q0 of
-    :class:`Frac` or of K."""
+    :class:`Frac` or of ``FIELD``."""
     q = tuple(e if isinstance(e, Frac) else field_to_frac(e) for e in q0)
     zero, one = Frac.of(0), Frac.of(1)
     p = [(one, zero), (zero, zero)] + ([(zero, one)] if gaps == 3 else [])
@@ -92,7 +91,7 @@ def steps_of(run: list[tuple]) -> list[Step]:
 def run_word(word: str, q0: tuple) -> list[Step]:
     """From p(0) = (1, 0, x), q(0) = q0, apply the collisions of ``word`` with times
     *defined* by p_i(t_k) = 0 (l. 460-463).  Nothing is reduced modulo cp here:
-    that would spoil K's cancellations; conditions are reduced at the end."""
+    that would spoil FIELD's cancellations; conditions are reduced at the end."""
     return steps_of(run_lr(word, q0))
 
 

@@ -1,4 +1,4 @@
-"""The engines behind :func:`certify.numerics.simulate`, one orbit at a time.
+"""The engines behind :func:`certify.numerics.iterate`, one orbit at a time.
 
 * ``float64``: the numba kernel (:mod:`.kernel`), parallel over orbits; here only a
   one-orbit wrapper (:func:`float64_orbit`).
@@ -149,7 +149,7 @@ def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkp
     else:
         n = rules.initial_normal(mpf(theta0), mpf(phi0), letter, ctx.cos, ctx.sin)
     tolerance = exact(rules.tol(ctx.prec))
-    g, K = exact(rules.gamma_bound(ctx.prec)), exact(rules.inflation(ctx.prec))   # both exact at prec bits
+    g, kappa = exact(rules.gamma_bound(ctx.prec)), exact(rules.inflation(ctx.prec))   # both exact at prec bits
     top = max(abs(z) for z in n)
     bounds = (tolerance * top,) * 3
 
@@ -160,7 +160,7 @@ def mp_orbit(r, theta0, phi0, collisions, keep=0, dps=MP_DPS, word=False, checkp
         return float(ctx.atan2(ctx.hypot(v[2], v[0]), v[1]))
 
     def carry(j, v, err):
-        return rules.carry_bound(j, v, err, absrows, g, K)
+        return rules.carry_bound(j, v, err, absrows, g, kappa)
 
     code, done, cert, ring, w, cps = _iterate(rules.INDEX[letter], n, bounds, rows, absrows, tolerance, collisions,
                                               keep, word, checkpoints, rules.margin_sign, finite, phi, carry, bounds,

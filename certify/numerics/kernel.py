@@ -72,7 +72,7 @@ def _certifies(i, n, err, j):
 
 
 @njit(cache=True, inline="always")
-def _advance(j, n, err, rows, tol, g, K, tiny):
+def _advance(j, n, err, rows, tol, g, kappa, tiny):
     """rules.advance, rules.step_bounds and rules.carry_bound, then the power-of-2
     rescaling (both bounds with it): the new (n, bnd, err), as tuples (registers, not
     arrays: no aliasing to fear)."""
@@ -94,9 +94,9 @@ def _advance(j, n, err, rows, tol, g, K, tiny):
     t0 = err[0] + g * a0                    # rules.carry_bound, in its order
     t1 = err[1] + g * a1
     t2 = err[2] + g * a2
-    e0 = (c00 * t0 + c01 * t1 + c02 * t2) * K + tiny
-    e1 = (c10 * t0 + c11 * t1 + c12 * t2) * K + tiny
-    e2 = (c20 * t0 + c21 * t1 + c22 * t2) * K + tiny
+    e0 = (c00 * t0 + c01 * t1 + c02 * t2) * kappa + tiny
+    e1 = (c10 * t0 + c11 * t1 + c12 * t2) * kappa + tiny
+    e2 = (c20 * t0 + c21 * t1 + c22 * t2) * kappa + tiny
     new_top = max(abs(m0), max(abs(m1), abs(m2)))
     if new_top > BIG or (new_top < SMALL and new_top > 0.0):
         e = math.frexp(new_top)[1]
@@ -142,7 +142,7 @@ def _decide(i, n, bnd, err, certified, done, strict):
 
 
 @njit(cache=True)
-def _orbit(i0, n_init, rows, tol, g, K, tiny, collisions, keep, strict, out_phi):
+def _orbit(i0, n_init, rows, tol, g, kappa, tiny, collisions, keep, strict, out_phi):
     """One orbit: (break code, collisions done, collisions certified); the φ of the
     last ``keep`` b-collisions into out_phi, oldest first, NaN-padded at the front."""
     n, bnd = _start(n_init, tol)
@@ -158,7 +158,7 @@ def _orbit(i0, n_init, rows, tol, g, K, tiny, collisions, keep, strict, out_phi)
         code, j, certified = _decide(i, n, bnd, err, certified, done, strict)
         if code != 0:
             break
-        n, bnd, err = _advance(j, n, err, rows, tol, g, K, tiny)
+        n, bnd, err = _advance(j, n, err, rows, tol, g, kappa, tiny)
         i = j
         done += 1
         if j == B and keep > 0:
@@ -180,7 +180,7 @@ def _orbit(i0, n_init, rows, tol, g, K, tiny, collisions, keep, strict, out_phi)
 
 
 @njit(cache=True, parallel=True)
-def sweep(letters0, normals0, rows, tol, g, K, tiny, collisions, keep, strict, phi, breaks, counts, certified):
+def sweep(letters0, normals0, rows, tol, g, kappa, tiny, collisions, keep, strict, phi, breaks, counts, certified):
     """Every (r, orbit) pair, in parallel: rows (n_r, 27), normals0 (n_o, 3),
     letters0 (n_o,); fills phi (n_r, n_o, keep), breaks, counts and certified
     (n_r, n_o)."""
@@ -189,7 +189,7 @@ def sweep(letters0, normals0, rows, tol, g, K, tiny, collisions, keep, strict, p
     for idx in prange(n_r * n_o):
         a = idx // n_o
         b = idx % n_o
-        code, done, cert = _orbit(letters0[b], normals0[b], rows[a], tol, g, K, tiny, collisions, keep, strict,
+        code, done, cert = _orbit(letters0[b], normals0[b], rows[a], tol, g, kappa, tiny, collisions, keep, strict,
                                   phi[a, b])
         breaks[a, b] = code
         counts[a, b] = done
@@ -197,7 +197,7 @@ def sweep(letters0, normals0, rows, tol, g, K, tiny, collisions, keep, strict, p
 
 
 @njit(cache=True)
-def trace(i0, n_init, rows, tol, g, K, tiny, collisions, strict, letters, normals, errors):
+def trace(i0, n_init, rows, tol, g, kappa, tiny, collisions, strict, letters, normals, errors):
     """One orbit with every state recorded (tests, benchmarks): letters[k], normals[k]
     and the accumulated bound errors[k] after the collision k + 1.  Returns (code,
     collisions done, collisions certified)."""
@@ -209,7 +209,7 @@ def trace(i0, n_init, rows, tol, g, K, tiny, collisions, strict, letters, normal
         code, j, certified = _decide(i, n, bnd, err, certified, c, strict)
         if code != 0:
             return code, c, (c if certified < 0 else certified)
-        n, bnd, err = _advance(j, n, err, rows, tol, g, K, tiny)
+        n, bnd, err = _advance(j, n, err, rows, tol, g, kappa, tiny)
         i = j
         letters[c] = j
         for a in range(3):
@@ -219,7 +219,7 @@ def trace(i0, n_init, rows, tol, g, K, tiny, collisions, strict, letters, normal
 
 
 @njit(cache=True)
-def count_steps(i0, n_init, rows, tol, g, K, tiny, collisions):
+def count_steps(i0, n_init, rows, tol, g, kappa, tiny, collisions):
     """The bare loop (benchmarks): (code, collisions done, collisions certified, a
     checksum of the word: the letters in base 3, mod 2^48, as benchmarks/loop.c)."""
     n, bnd = _start(n_init, tol)
@@ -231,7 +231,7 @@ def count_steps(i0, n_init, rows, tol, g, K, tiny, collisions):
         code, j, certified = _decide(i, n, bnd, err, certified, c, False)
         if code != 0:
             return code, c, (c if certified < 0 else certified), h
-        n, bnd, err = _advance(j, n, err, rows, tol, g, K, tiny)
+        n, bnd, err = _advance(j, n, err, rows, tol, g, kappa, tiny)
         i = j
         h = (h * 3 + j) & 0xFFFFFFFFFFFF    # the word in base 3, mod 2^48
     return 0, collisions, (collisions if certified < 0 else certified), h

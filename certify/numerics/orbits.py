@@ -1,4 +1,4 @@
-"""Sweeps of orbits over r: :func:`simulate` and its result :class:`Orbits`.
+"""Sweeps of orbits over r: :func:`iterate` and its result :class:`Orbits`.
 
 The initial data (θ0, φ0) are taken right after a b-collision (the contact b, the
 pair 2-3 in contact, as the paper represents b-collisions only, l. 1058):
@@ -50,7 +50,7 @@ def grid(count: int) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass
 class Orbits:
-    """The result of :func:`simulate`: r (n_r,), theta0 and phi0 (n_orbits,), phi
+    """The result of :func:`iterate`: r (n_r,), theta0 and phi0 (n_orbits,), phi
     (n_r, n_orbits, keep) the φ of the last b-collisions in order, NaN-padded at the
     front, breaks (n_r, n_orbits) the break codes (:data:`rules.BREAKS`, 0 completed),
     collisions (n_r, n_orbits) the collisions done, certified (n_r, n_orbits) the
@@ -168,7 +168,7 @@ def _tasks(engine, r, theta0, phi0, collisions, keep, dps, strict, words, execut
     return phi, breaks, counts, certified, word
 
 
-def simulate(r, theta0, phi0, collisions: int = 10_000, keep: int = 500, engine: str = "float64",
+def iterate(r, theta0, phi0, collisions: int = 10_000, keep: int = 500, engine: str = "float64",
              dps: int | None = None, executor: Executor | None = None,
              progress: Callable[[int, int, str], None] | None = None, strict: bool = False,
              words: bool = False) -> Orbits:

@@ -140,7 +140,7 @@ def gamma_bound(bits: int) -> Fraction:
 
 
 def inflation(bits: int) -> Fraction:
-    """K = 1 + 32u, u = 2^-bits: the factor that makes the computed bound an upper
+    """κ = 1 + 32u, u = 2^-bits: the factor that makes the computed bound an upper
     bound in spite of its own roundings (:func:`carry_bound`)."""
     return 1 + 32 * Fraction(1, 2 ** bits)
 
@@ -150,14 +150,14 @@ K64 = float(inflation(53))          # exact: 1 + 2^-48
 TINY64 = 2.0 ** -1000               # the absolute term that covers underflow (float64 only)
 
 
-def carry_bound(j: int, n, err, absrows, g, K, tiny=0):
+def carry_bound(j: int, n, err, absrows, g, kappa, tiny=0):
     """The bound of the accumulated error after the collision j, from the state's
     computed normal ``n`` and its bound ``err``:
 
-        err'_m = fl( fl(S_m · K) + tiny ),   S_m = Σ_c |Ĉ_mc| (err_c + g |n_c|),
+        err'_m = fl( fl(S_m · κ) + tiny ),   S_m = Σ_c |Ĉ_mc| (err_c + g |n_c|),
 
     computed left to right in the engine's numbers, with Ĉ the engine's matrix
-    (``absrows[j]`` = |Ĉ|), ``g`` = :func:`gamma_bound`, ``K`` = :func:`inflation` at
+    (``absrows[j]`` = |Ĉ|), ``g`` = :func:`gamma_bound`, ``kappa`` = κ = :func:`inflation` at
     the engine's precision, ``tiny`` = :data:`TINY64` in float64 (0 in mpmath, whose
     exponents do not underflow).
 
@@ -179,7 +179,7 @@ def carry_bound(j: int, n, err, absrows, g, K, tiny=0):
 
     (iv) The computed Ŝ_m takes five roundings on non-negative numbers, each
     fl(a ∘ b) ≥ (a ∘ b)(1 − u) − η/2: Ŝ_m ≥ S_m (1 − u)^5 − 5η (|Ĉ| ≤ 2).  If
-    Ŝ_m ≥ 2^-1020, fl(Ŝ_m K) ≥ Ŝ_m (1 + 32u)(1 − u) ≥ Ŝ_m (1 + 31u − 32u²), which exceeds
+    Ŝ_m ≥ 2^-1020, fl(Ŝ_m κ) ≥ Ŝ_m (1 + 32u)(1 − u) ≥ Ŝ_m (1 + 31u − 32u²), which exceeds
     (Ŝ_m + 5η)/(1 − u)^6 + 3η ≥ S_m/(1 − u) + 3η by at least 20u Ŝ_m (because 5u Ŝ_m ≥ 10η);
     adding tiny ≥ 0 does not decrease a float (rounding is monotone).  If
     Ŝ_m < 2^-1020 (float64 only) the bound needed is below 2^-1019 and
@@ -203,7 +203,7 @@ def carry_bound(j: int, n, err, absrows, g, K, tiny=0):
     out = []
     for m in range(3):
         s = K_[m][0] * t[0] + K_[m][1] * t[1] + K_[m][2] * t[2]
-        out.append(s * K + tiny)
+        out.append(s * kappa + tiny)
     return tuple(out)
 
 
@@ -280,3 +280,12 @@ def theta_of(i: int, n) -> float:
 
 def letter_index(letter: str) -> int:
     return INDEX[letter]
+
+
+def phi_at_b(p, q) -> float:
+    """The φ the engines keep for the state (p, q) right after a b-collision: that of the
+    normal p ∧ q, oriented as the engines orient it (:func:`phi_of`)."""
+    n = reduction.cross(p, q)
+    if n[2] < 0:
+        n = tuple(-z for z in n)
+    return phi_of(1, n)

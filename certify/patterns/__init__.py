@@ -8,7 +8,8 @@ It imports the models and the exact algebra below it.
 - :mod:`.pattern`: ``certify pattern WORD``: exists / feasible / stable regions of a
   word, its verdict, Markdown and JSON (pattern.schema.json).
 """
-from .feasibility import (BRANCH_NAMES, NO_X, Analysis, Requirement, fmt, mod_cp, prefix_requirements,
+from certify.algebra.branches import BRANCH_NAMES
+from .feasibility import (NO_X, Analysis, Requirement, fmt, mod_cp, prefix_requirements,
                           vanishes_on_branch)
 from .periodic import compact, normal_form, parse, primitive_root, read, show as show_word, system_of, validate
 from .pattern import (SCHEMA_PATH, PatternResult, analyse, check_range, dominance_requirements, end_data,

@@ -102,7 +102,7 @@ def contains_abcab(word: str) -> bool:
 def analyse_word(word: str, lo=0, hi=1) -> dict:
     """The census record of one word (a normal form): its analysis as JSON, or the
     error that stopped it (one line), and the seconds it took (:data:`SECONDS`, which
-    :func:`certify.run.census.run` keeps out of the census).  Never raises for a word's sake."""
+    :func:`certify.run.census_report.run_census` keeps out of the census).  Never raises for a word's sake."""
     import time
     start = time.perf_counter()
     record = {"word": word, "compact": compact(word), "length": len(word), "blocks": blocks_of(word),

@@ -19,13 +19,12 @@ import flint
 import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
-from certify.algebra.branches import Condition, simplest_between
-from certify.dynamics.words import K, Candidate
+from certify.algebra.branches import NO_BRANCH, X_MINUS, X_PLUS, Condition, Spectrum, simplest_between
+from certify.dynamics.words import Candidate
+from certify.errors import UNDECIDED
 from certify.dynamics.systems import FOUR, System, run_in
-from certify.algebra.poly import RING, field_to_frac, frac_to_field, lam, lr_to_ring, ring_to_lrq, to_field, to_ring
+from certify.algebra.poly import FIELD, Q, RING, field_to_frac, frac_to_field, lam, lr_to_ring, ring_to_lrq, to_field, to_ring
 
-Q = flint.fmpq
-BRANCH_NAMES = ("upper", "middle", "lower")
 NO_X = "—"                   # the label of the only "fixed point" of a two-gap system (no x)
 
 
@@ -40,7 +39,7 @@ class Requirement:
 
     @property
     def has_x(self) -> bool:
-        return self.G[1] != K.zero
+        return self.G[1] != FIELD.zero
 
 
 def mod_cp(e, cp):
@@ -66,7 +65,7 @@ def fixed_point_data(abcd, cp) -> list[FixedPointData]:
     amd = mod_cp(a - d, cp)
     delta = mod_cp((a - d) ** 2 + 4 * b * c, cp)
     cc = mod_cp(c, cp)
-    return [FixedPointData("x₊", 1, amd, cc, delta), FixedPointData("x₋", -1, amd, cc, delta)]
+    return [FixedPointData(X_PLUS, 1, amd, cc, delta), FixedPointData(X_MINUS, -1, amd, cc, delta)]
 
 
 def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=None) -> Condition:
@@ -162,10 +161,12 @@ def fmt(a: Algebraic) -> str:
     return str(a.lo) if a.is_rational else "≈" + a.digits(6)
 
 
-def _meets(sg, want) -> bool | None:
-    if sg == "?":
-        return None
-    if sg in (None, "missing"):
+def _meets(sg, want):
+    """Whether the sign ``sg`` is the required ``want``: True, False, or UNDECIDED when
+    ``sg`` is (:mod:`certify.errors`); no branch or x not real: False."""
+    if sg == UNDECIDED:
+        return UNDECIDED
+    if sg in (None, NO_BRANCH):
         return False
     return sg == want
 
@@ -178,18 +179,18 @@ def sign_in_cell(T, branch: int, lo, hi):
     return next(iter(signs))
 
 
-def sign_at(T, rc: Algebraic, branch: int):
+def table_sign_at(T, rc: Algebraic, branch: int):
     """The sign of table T at rc on ``branch``: its point value when rc is one of
     T's critical values, else the sign of the cell holding rc."""
     for k, c in enumerate(T.critical):
         if c == rc:
             pt = T.points[k]
             if pt is None:
-                return "?"
-            return pt[branch] if branch < len(pt) else "missing"
+                return UNDECIDED
+            return pt[branch] if branch < len(pt) else NO_BRANCH
     for cell in T.cells:
         if cell.lo < rc < cell.hi:
-            return cell.signs[branch] if branch < len(cell.signs) else "missing"
+            return cell.signs[branch] if branch < len(cell.signs) else NO_BRANCH
     raise ArithmeticError(f"{rc} outside the table of {T.condition}")
 
 
@@ -298,23 +299,23 @@ class Analysis:
             for a, b in zip(ends, ends[1:]):
                 ok = _meets(sign_in_cell(T, R.branch, a, b), req.sign)
                 # '?' on a whole cell: a degenerate condition (Spectrum._cell_sign)
-                yield Piece(a, b), "holds" if ok else "fails" if ok is not None else "undecided", \
-                    "" if ok is not None else f"{req.name}: undecided on a whole branch (a norm ≡ 0 there)"
+                yield Piece(a, b), "undecided" if ok == UNDECIDED else "holds" if ok else "fails", \
+                    f"{req.name}: undecided on a whole branch (a norm ≡ 0 there)" if ok == UNDECIDED else ""
             for c in cuts:
                 yield self._point(R, Piece(c), req, T)
 
     # -- a single point: balls first, exact zero tests where balls cannot decide
     def _point(self, R: Region, p: Piece, req: Requirement, T):
         rc, k = p.lo, R.branch
-        sg = self._sign_with_x(req, rc, k, p.x_value) if (p.x_value is not None and req.has_x) else sign_at(T, rc, k)
+        sg = self._sign_with_x(req, rc, k, p.x_value) if (p.x_value is not None and req.has_x) else table_sign_at(T, rc, k)
         ok = _meets(sg, req.sign)
-        if ok is not None:
+        if ok != UNDECIDED:
             return p, "holds" if ok else "fails", "" if ok else \
                 f"{req.name} {'= 0' if sg == 0 else 'is not real' if sg is None else 'has the wrong sign'}"
         a, b, c, d = (self.cand.abcd_ring or self.cand.abcd) if self.cand.abcd is not None else (None,) * 4
         if req.has_x and p.x_value is None and vanishes_on_branch(self.spec, c, rc, k):
             xv = frac_to_field(field_to_frac(b) / field_to_frac(d - a))    # b/(d-a) in lowest terms
-            if _meets(self._sign_with_x(Requirement("x", (K.zero, K.one), 1), rc, k, xv), 1):
+            if _meets(self._sign_with_x(Requirement("x", (FIELD.zero, FIELD.one), 1), rc, k, xv), 1) is True:
                 return self._point(R, Piece(rc, None, xv, "c = 0: f affine, fixed point b/(d-a)"), req, T)
             return p, "fails", "c = 0 there (exact): f is affine, its fixed point b/(d-a) is not positive"
         if not req.has_x or p.x_value is not None:
@@ -335,15 +336,15 @@ class Analysis:
                 if vanishes_on_branch(self.spec, cond.N[0], rc, k):
                     return p, "fails", f"{req.name} vanishes there (exact, other rows of the eigen-equation)"
                 sg = self.spec.sign_at_point(cond, rc)
-                ok = None if sg is None else _meets(sg[k] if k < len(sg) else "missing", req.sign)
-                if ok is not None:
+                ok = UNDECIDED if sg is None else _meets(sg[k] if k < len(sg) else NO_BRANCH, req.sign)
+                if ok != UNDECIDED:
                     return p, "holds" if ok else "fails", "" if ok else \
                         f"{req.name} has the wrong sign (other rows of the eigen-equation)"
         return p, "undecided", req.name
 
     def _sign_with_x(self, req, rc, k, xv):
         sg = self.spec.sign_at_point(condition(req, self.spec.lrq_cp, x_value=xv), rc)
-        return "?" if sg is None else (sg[k] if k < len(sg) else "missing")
+        return UNDECIDED if sg is None else (sg[k] if k < len(sg) else NO_BRANCH)
 def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: System = FOUR,
                         previous: str | None = None) -> tuple[list[Requirement], list]:
     """The candidate of ``word`` realises its first m collisions, strictly, iff
@@ -371,16 +372,16 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: 
     (the paper's argument of l. 478-480, for every gap); a gap strictly open at each
     collision also excludes a triple collision."""
     steps = steps[:m] if steps is not None and len(steps) >= m else run_in(system, word[:m], q0)
-    reqs = [Requirement("u = q_2(0)", (q0[1], K.zero), 1, tuple((q[1], K.zero) for q in q0_other))]
+    reqs = [Requirement("u = q_2(0)", (q0[1], FIELD.zero), 1, tuple((q[1], FIELD.zero) for q in q0_other))]
     if system.gaps == 3:
-        reqs.append(Requirement("x", (K.zero, K.one), 1))
+        reqs.append(Requirement("x", (FIELD.zero, FIELD.one), 1))
     index = system.index
     letters = [index[previous or word[-1]]] + [index[c] for c in word[:m]]   # letters[k] = i_k
     for k in range(1, m + 1):
         i = letters[k]
         before = q0 if k == 1 else steps[k - 2].q
         if not _positive_constant(-before[i]):
-            reqs.append(Requirement(f"q_{i + 1}(t_{k - 1})", (before[i], K.zero), -1))
+            reqs.append(Requirement(f"q_{i + 1}(t_{k - 1})", (before[i], FIELD.zero), -1))
         automatic = k == 1 or letters[k - 2] == i
         if not automatic:
             reqs.append(Requirement(f"p_{i + 1}(t_{k - 1})", steps[k - 2].p[i], 1))
@@ -391,7 +392,7 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: 
 
 
 def _positive_constant(e) -> bool:
-    """e ∈ K is a positive rational constant (read from its numerator and denominator)."""
+    """e ∈ FIELD is a positive rational constant (read from its numerator and denominator)."""
     f = to_field(e)
     return f.numer.is_ground and f.denom.is_ground and bool(f.numer.LC * f.denom.LC > 0)
 

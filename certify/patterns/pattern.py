@@ -37,15 +37,13 @@ import flint
 import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
-from certify.algebra.poly import Lf, RING, lam, show, to_field, to_ring
-from certify.algebra.branches import Condition
+from certify.algebra.poly import FIELD, Q, Lf, RING, lam, show, to_field, to_ring
+from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS, Condition
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
-from certify.dynamics.words import K
 from certify.errors import UsageError
-from .feasibility import BRANCH_NAMES, NO_X, Analysis, Region, Requirement, prefix_requirements
+from .feasibility import NO_X, Analysis, Region, Requirement, prefix_requirements
 from .periodic import compact, read, show as show_word
 
-Q = flint.fmpq
 SCHEMA_PATH = Path(__file__).with_name("pattern.schema.json")
 SCHEMA_VERSION = 1
 
@@ -83,7 +81,7 @@ def dominance_requirements(cp) -> list[Requirement]:
         out = [("cp'(λ)", d), ("-cp(-λ)", -minus), ("λ³ - det M", L ** 3 - det)]
     else:
         raise ValueError(f"dominance is implemented for 2x2 and 3x3 matrices, not degree {n}")
-    return [Requirement(f"dominance: {name}", (to_field(e), K.zero), 1) for name, e in out]
+    return [Requirement(f"dominance: {name}", (to_field(e), FIELD.zero), 1) for name, e in out]
 
 
 def stability_conditions(abcd) -> list[Requirement]:
@@ -252,7 +250,7 @@ class PatternResult:
 
 # Words whose a, b, c, d the paper prints, in another normalisation.  x± = (a - d ± √Δ)/(2c)
 # swap under a common negative factor, so the names are shown both ways.
-SWAP = {"x₊": "x₋", "x₋": "x₊"}
+SWAP = {X_PLUS: X_MINUS, X_MINUS: X_PLUS}
 PAPER_NORMALISATION = {
     "ababcb": "Names: a, b, c, d above are the paper's (Theorem 3.1, l. 373-379) divided by −1024 (certificate T10), "
               "a negative factor, which swaps x₊ and x₋: this x₋ is the paper's x₊, the fixed point of the theorem.",
@@ -301,7 +299,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
     an = Analysis(cand, lo, hi)
     n = len(normal)
     reqs, steps = prefix_requirements(normal, n, cand.q0, cand.steps, cand.q0_other, system=system)
-    lam_req = Requirement("λ", (K(Lf), K.zero), 1)
+    lam_req = Requirement("λ", (FIELD(Lf), FIELD.zero), 1)
     first = [lam_req] + [q for q in reqs if q.name in ("u = q_2(0)", "x")]
     conditions = {"exists": [_cond(q) for q in first] + (["x real"] if system.gaps == 3 else [])}
     for q in first:

@@ -95,15 +95,29 @@ from pathlib import Path
 import flint
 import sympy as sp
 
-from certify.algebra.poly import LR_LAMBDA, LRCTX, LRQCTX, Frac, flint_poly_to_frac, frac_to_field, lam, lr_to_ring, show
+from certify.algebra.branches import BRANCH_NAMES
+from certify.algebra.poly import (
+    FIELD,
+    LR_LAMBDA,
+    LRCTX,
+    LRQCTX,
+    Frac,
+    flint_poly_to_frac,
+    frac_to_field,
+    lam,
+    lr_to_ring,
+    show,
+)
 from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ORIENTATION, cofactor_columns
 from certify.dynamics.systems import candidate_in
-from certify.dynamics.words import K
 from certify.errors import UsageError
-from .feasibility import BRANCH_NAMES, NO_X, Analysis, Requirement
-from .pattern import _cap, _cond, _copy, _nonempty, analyse as analyse_pattern, check_range, end_data
-from .periodic import compact, read, show as show_word
+
+from .feasibility import NO_X, Analysis, Requirement
+from .pattern import _cap, _cond, _copy, _nonempty, check_range, end_data
+from .pattern import analyse as analyse_pattern
+from .periodic import compact, read
+from .periodic import show as show_word
 
 SCHEMA_PATH = Path(__file__).with_name("orbit.schema.json")
 SCHEMA_VERSION = 1
@@ -163,7 +177,7 @@ def normals(word: str, N: tuple, C) -> list:
 
 
 def _ratio(num, den) -> object:
-    """num/den (fmpq_mpoly) as an element of K in lowest terms (python-flint's gcd)."""
+    """num/den (fmpq_mpoly) as an element of FIELD = Q(λ, r) in lowest terms (python-flint's gcd)."""
     (P, a), (Q_, b) = _lr(num), _lr(den)
     return frac_to_field(Frac(P * int(b), Q_ * int(a)))
 
@@ -179,7 +193,7 @@ def contact_requirements(word: str, Mq, C) -> tuple[list[Requirement], list[Requ
         raise ValueError("the normal form ends with b: n* is normalised by n_z = 1, the orientation at b")
 
     def req(name, k, comp, sign):
-        reps = [(_ratio(run[k][comp], run[0][2]), K.zero) for run in runs]
+        reps = [(_ratio(run[k][comp], run[0][2]), FIELD.zero) for run in runs]
         return Requirement(name, reps[0], sign, tuple(reps[1:]))
 
     i0 = INDEX[c0]
@@ -202,8 +216,8 @@ def implied_requirements(word: str, Mq, C) -> list[Requirement]:
     out = []
     for k in range(1, len(word)):
         i = INDEX[word[k - 1]]
-        out.append(Requirement(f"orientation n_{k}", (_ratio(run[k][(i + 1) % 3], run[0][2]), K.zero), 1))
-        out.append(Requirement(f"face n_{k}", (_ratio(run[k][(i + 2) % 3], run[0][2]), K.zero), -1))
+        out.append(Requirement(f"orientation n_{k}", (_ratio(run[k][(i + 1) % 3], run[0][2]), FIELD.zero), 1))
+        out.append(Requirement(f"face n_{k}", (_ratio(run[k][(i + 2) % 3], run[0][2]), FIELD.zero), -1))
     return out
 
 
@@ -219,7 +233,7 @@ def type_requirements(cp_ring) -> dict[str, list[Requirement]]:
     det = -C.coeff_wrt(L, 0)
 
     def R(name, e, sign=1):
-        return Requirement(name, (to_field(e), K.zero), sign)
+        return Requirement(name, (to_field(e), FIELD.zero), sign)
     common = [R("cp'(λ)", d), R("-λ cp(-λ)", -L * minus)]
     return {"attracting": common + [R("λ (det M - λ³)", L * (det - L ** 3))],
             "repelling": common + [R("λ (λ³ - det M)", L * (L ** 3 - det))],
@@ -231,7 +245,7 @@ def mu_requirement(cp_ring) -> Requirement:
     from certify.algebra.poly import RING, to_field
     L = RING.gens[0]
     det = -cp_ring.coeff_wrt(L, 0)
-    return Requirement("det M / λ", (to_field(det) / to_field(L), K.zero), 1)
+    return Requirement("det M / λ", (to_field(det) / to_field(L), FIELD.zero), 1)
 
 
 def pair_requirement(spectrum, sign: int) -> Requirement:
@@ -239,7 +253,7 @@ def pair_requirement(spectrum, sign: int) -> Requirement:
     from certify.algebra.poly import RING, to_field
     zeros = (0,) * (len(RING.gens) - 2)
     disc = RING.from_dict({(0, k) + zeros: RING.domain(int(c)) for k, c in enumerate(spectrum.disc.coeffs()) if c})
-    return Requirement("disc_λ cp", (to_field(disc), K.zero), sign)
+    return Requirement("disc_λ cp", (to_field(disc), FIELD.zero), sign)
 
 
 # ------------------------------------------------------------------ results

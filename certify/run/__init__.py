@@ -5,19 +5,23 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.runner`: ``@certificate``, ``@quantity``, ``conclude``, the run (serial or on
   every core).
 - :mod:`.report`: outcomes in, Markdown and JSON out, and the staleness check.
-- :mod:`.figures`, :mod:`.plots`: saving figures reproducibly; the certified charts.
-- :mod:`.files`, :mod:`.progress`: atomic writes; progress bars on a terminal only.
+- :mod:`.saving`, :mod:`.plots`: saving figures reproducibly; the certified charts.
+- :mod:`.files`, :mod:`.progress`: atomic writes, the committed findings; progress bars on a
+  terminal only.
 """
-from . import figures, files, plots, progress, report, runner
-from .figures import save_figure
+from . import files, plots, progress, report, runner, saving
+from .files import load_findings
+from .saving import save_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
 from .runner import (CERTIFICATES, ERRATUM, ERRATUM_KINDS, FAIL, FALSE_STATEMENT, MISPRINT, OBSERVED, PASS,
-                     REFUTED_REMARK, STATUSES, Certificate, Check, Context, Outcome, altered, certificate, conclude, load_all, observe, quantity, reset_caches, run, run_certificate, select)
+                     REFUTED_REMARK, STATUSES, Certificate, Check, Context, Mutant, Outcome, altered, certificate, conclude,
+                     load_all, observe, overridden, quantity, replaced, reset_caches, reworded, run_certificate, run_selected, select,
+                     unread)
 
 __all__ = [
-    "figures", "files", "plots", "progress", "report", "runner",
-    "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
+    "files", "plots", "progress", "report", "runner", "saving",
+    "load_findings", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
     "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
-    "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run",
-    "run_certificate", "select",
+    "Mutant", "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run_selected",
+    "run_certificate", "select", "overridden", "replaced", "reworded", "unread",
 ]

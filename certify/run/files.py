@@ -15,6 +15,9 @@ from pathlib import Path
 
 from certify.errors import UsageError
 
+CHECKOUT = Path(__file__).resolve().parents[2]   # the source checkout (benchmarks/, the committed reports/)
+REPORTS = CHECKOUT / "reports"
+
 # The process umask, read once: mkstemp creates files readable by the owner
 # only, and a report should get the same permissions as any other new file.
 _UMASK = os.umask(0)
@@ -53,6 +56,17 @@ def read_text_or_none(path) -> str | None:
     try:
         return Path(path).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError):
+        return None
+
+
+def load_findings(name: str, directory=REPORTS) -> dict | None:
+    """The committed findings ``directory/name`` (``numerics-paper.json``, ``numerics-n4.json``,
+    which ``certify figures`` writes), or None when they are absent or unreadable."""
+    import json
+    text = read_text_or_none(Path(directory) / name)
+    try:
+        return json.loads(text) if text is not None else None
+    except ValueError:
         return None
 
 

@@ -26,10 +26,10 @@ import flint
 import numpy as np
 
 from certify.algebra.algebraic import Algebraic
+from certify.algebra.branches import BRANCH_NAMES
 from certify.errors import UsageError
-from certify.numerics import grid, simulate
+from certify.numerics import grid, iterate
 from certify.patterns import compact, read, show_word
-from certify.patterns.feasibility import BRANCH_NAMES
 from certify.patterns.pattern import end_data
 from certify.patterns.reduction_orbits import OrbitResult, analyse
 
@@ -111,7 +111,7 @@ def identify(rs: list[Fraction], theta0=None, phi0=None, orbits: int = 8, collis
     """Simulate, read the periodic word of each orbit, certify it (module docstring)."""
     if theta0 is None:
         theta0, phi0 = grid(orbits)
-    sims = simulate(np.array([float(x) for x in rs]), theta0, phi0, collisions=collisions, keep=0, words=True)
+    sims = iterate(np.array([float(x) for x in rs]), theta0, phi0, collisions=collisions, keep=0, words=True)
     out = []
     for a, r in enumerate(rs):
         ra = Algebraic.rational(flint.fmpq(r.numerator, r.denominator))

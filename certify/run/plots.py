@@ -9,11 +9,11 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from . import figures
+from . import saving
+from certify.algebra.branches import BRANCH_NAMES
 from certify.algebra.poly import r
 
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:purple")
-BRANCH_NAMES = ("upper", "middle", "lower")
 
 
 def branch_curves(spectrum, rs: np.ndarray) -> np.ndarray:
@@ -40,9 +40,9 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
     """Figures 1-2 of the paper (fig:spectrum, fig:spectrum zoom): the real spectrum of M on ]0,1[ and its zoom 0<r<0.13, 0<λ<0.05.
     Branches are taken from the certified table: a point is drawn on branch k only
     where the table proves k+1 real eigenvalues."""
-    if not figures.enabled():
+    if not saving.enabled():
         return ["spectrum.png", "spectrum_zoom.png"]
-    plt = figures.pyplot()
+    plt = saving.pyplot()
     names = []
     for name, (r_lo, r_hi), ylim in (("spectrum.png", (1e-4, 0.9999), None),
                                      ("spectrum_zoom.png", (1e-4, 0.13), (0, 0.05))):
@@ -64,15 +64,15 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
         ax.set_xlabel("r")
         ax.set_ylabel("real eigenvalues λ of M")
         ax.legend(loc="best", fontsize=7, markerscale=6)
-        names.append(figures.save_figure(fig, name))
+        names.append(saving.save_figure(fig, name))
     return names
 
 
 def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=None, marks=None) -> str:
     """Figures 3-4 of the paper (fig: sign changes a-d, fig: sign change b): each branch coloured by the certified sign of a condition."""
-    if not figures.enabled():
+    if not saving.enabled():
         return name
-    plt = figures.pyplot()
+    plt = saving.pyplot()
     rs = np.linspace(xlim[0], xlim[1], 1500)
     curves = branch_curves(spectrum, rs)
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
@@ -96,7 +96,7 @@ def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=No
     ax.set_ylabel("λ")
     ax.set_title(title, fontsize=9)
     ax.legend(loc="best", fontsize=7, markerscale=6)
-    return figures.save_figure(fig, name)
+    return saving.save_figure(fig, name)
 
 
 # --------------------------------------------------------------------------
@@ -131,13 +131,13 @@ def omega_figure(data, name: str, lines: dict | None = None, boxes=(), title: st
     """A figure of Section 5: the kept angles φ of every orbit against r, drawn as the
     pixels they hit (black), each break as a red dot at (r, π/2), the thresholds
     ``lines`` ({label: r}) as red vertical lines, ``boxes`` ((r_lo, r_hi), ...) as red
-    rectangles.  ``dpi``: the resolution of the saved PNG (default: figures.DPI)."""
-    if not figures.enabled():
-        return figures.figure_name(name)
-    plt = figures.pyplot()
+    rectangles.  ``dpi``: the resolution of the saved PNG (default: saving.DPI)."""
+    if not saving.enabled():
+        return saving.figure_name(name)
+    plt = saving.pyplot()
     from matplotlib.patches import Rectangle
     lo, hi = float(data.spec.lo), float(data.spec.hi)
-    dpi = dpi or figures.DPI
+    dpi = dpi or saving.DPI
     fig, ax = plt.subplots(figsize=size)
     width = max(int(size[0] * dpi * 0.8), 10)
     height = max(int(size[1] * dpi * 0.8), 10)
@@ -169,22 +169,22 @@ def omega_figure(data, name: str, lines: dict | None = None, boxes=(), title: st
     if broken.size:
         ax.legend(loc="upper right", fontsize=7)
     fig.tight_layout()
-    return figures.save_figure(fig, name, dpi=dpi)
+    return saving.save_figure(fig, name, dpi=dpi)
 
 
 def section5_name(fig: str, resolution: str) -> str:
     """The file of Figure ``fig`` at ``resolution``: ``fig5.2-preview.png``, ``fig5.2-paper.png``
-    (the paper-resolution files are kept by ``certify all``: figures.KEPT)."""
+    (the paper-resolution files are kept by ``certify all``: saving.KEPT)."""
     return f"fig{fig}-{resolution}.png"
 
 
 def section5_figure(data, dpi: int | None = None) -> str:
     """Figure ``data.spec.id`` of Section 5 drawn from a run of certify.numerics.figures,
     with the paper's red lines (CDKK thresholds L4, r_exist L3) and red rectangles."""
-    from certify.numerics import figures as numfig
+    from certify.numerics import cite, red_lines
     spec = data.spec
     orbits = data.phi.shape[1]
-    title = (f"{numfig.cite(spec.id)}, {data.resolution}: {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
+    title = (f"{cite(spec.id)}, {data.resolution}: {spec.lo} ≤ r ≤ {spec.hi}, {len(data.r)} values of r, "
              f"{orbits} orbit{'s' if orbits != 1 else ''}, last {data.keep} b-collisions of {data.collisions}, "
              f"{data.engine}")
     fraction = data.certified_fraction()
@@ -192,5 +192,5 @@ def section5_figure(data, dpi: int | None = None) -> str:
         title += (f"\ncertified: {fraction:.2%} of the collisions (horizon ≤ {int(data.certified.max())}: "
                   "the points are shadowing orbits)" if data.certified.max() < data.collisions - data.keep
                   else f"\ncertified: {fraction:.2%} of the collisions")
-    return omega_figure(data, section5_name(spec.id, data.resolution), lines=numfig.red_lines(), boxes=spec.boxes,
+    return omega_figure(data, section5_name(spec.id, data.resolution), lines=red_lines(), boxes=spec.boxes,
                         title=title, dpi=dpi)

@@ -5,7 +5,7 @@ gives the same bytes (no dates, timings or machine names), so a committed
 report can be compared with a regenerated one (``python -m certify all
 --check``).  Timings go to ``timings.json`` only.
 
-``results`` is what :func:`certify.run.runner.run` returns first: a list of
+``results`` is what :func:`certify.run.runner.run_selected` returns first: a list of
 ``(Certificate, Outcome)`` pairs, in the order they are to be shown.
 
 Evidence strings and statements are Markdown fragments written by the

@@ -147,6 +147,58 @@ def observe(printed: list[Check], evidence: list[str] | None = None, figures: li
                    agrees=not wrong, reason=why)
 
 
+# The kinds of mutant: a constant (a coefficient, a digit, a letter, a sign) altered; the
+# wording of a printed condition altered so that it is false (the altered text must show in a
+# failing printed check); a wording the grammar does not read (it must be refused, quoted).
+CONSTANT, WORDING, UNREAD = "constant", "wording", "unread"
+MUTANT_KINDS = (CONSTANT, WORDING, UNREAD)
+
+
+@dataclass(frozen=True)
+class Mutant:
+    """One alteration of a certificate's printed inputs that must turn it FAIL (an
+    observation: disagree on one more check).  ``changes`` are ``(name, old, new)``:
+    the first ``old`` in the printed text ``name`` replaced by ``new`` (:func:`altered`),
+    or, with ``old`` None, the input ``name`` replaced whole by ``new``.  ``why``: what
+    the alteration makes false, in one line."""
+
+    kind: str
+    changes: tuple
+    why: str = ""
+
+    def __post_init__(self):
+        if self.kind not in MUTANT_KINDS or not self.changes:
+            raise ValueError(f"a mutant of kind {self.kind!r} with changes {self.changes!r}")
+
+    def overrides(self, id: str) -> dict:
+        """The printed inputs of certificate ``id`` this mutant replaces, for :func:`run_certificate`."""
+        out = {}
+        for name, old, new in self.changes:
+            out.update({name: new} if old is None else altered(id, name, old, new))
+        return out
+
+
+def replaced(name: str, old: str, new: str, why: str = "", kind: str = CONSTANT) -> Mutant:
+    """The first ``old`` in the printed text ``name`` replaced by ``new``."""
+    return Mutant(kind, ((name, old, new),), why)
+
+
+def overridden(values: dict, why: str = "") -> Mutant:
+    """Printed inputs replaced whole (a word, a tuple of digits, two ends together)."""
+    return Mutant(CONSTANT, tuple((name, None, v) for name, v in values.items()), why)
+
+
+def reworded(name: str, old: str, new: str, why: str = "") -> Mutant:
+    """A printed condition reworded so that it is false: FAIL, the altered text shown failing."""
+    return replaced(name, old, new, why, WORDING)
+
+
+def unread(name: str, text: str, why: str = "") -> Mutant:
+    """A printed condition replaced by a text the grammar does not read (or the certificate
+    cannot evaluate): FAIL, with that reason and the text quoted."""
+    return Mutant(UNREAD, ((name, None, text),), why)
+
+
 @dataclass
 class Certificate:
     id: str
@@ -156,6 +208,8 @@ class Certificate:
     needs: tuple[str, ...]
     printed: dict
     module: str
+    mutants: tuple[Mutant, ...] = ()
+    expect: str = ""
 
     @property
     def title(self) -> str:
@@ -174,16 +228,19 @@ CERTIFICATES: dict[str, Certificate] = {}
 QUANTITIES: dict[str, Quantity] = {}
 
 
-def certificate(id: str, line: str, statement: str, needs=(), printed=None):
+def certificate(id: str, line: str, statement: str, needs=(), printed=None, mutants=(), expect: str = ""):
     """Declare a certificate for claim ``id`` printed at ``line`` of the paper.
 
     ``printed`` maps names to the inputs as printed in the paper; the function
-    receives them as keyword arguments next to the shared quantities it needs."""
+    receives them as keyword arguments next to the shared quantities it needs.
+    ``mutants`` (:class:`Mutant`) alter those inputs and must each turn it FAIL;
+    ``expect`` is its status on the paper as printed, as the report labels it
+    (PASS, ERRATUM, OBSERVED, "OBSERVED, disagrees")."""
     def wrap(func):
         if id in CERTIFICATES:
             raise ValueError(f"certificate {id} declared twice")
         CERTIFICATES[id] = Certificate(id, line, statement, func, tuple(needs),
-                                       dict(printed or {}), func.__module__)
+                                       dict(printed or {}), func.__module__, tuple(mutants), expect)
         return func
     return wrap
 
@@ -408,7 +465,7 @@ def _parallel(plan: list[list[Certificate]], jobs: int, progress) -> tuple[list,
     return finished, seconds
 
 
-def run(ids=None, progress=None, jobs: int = 1,
+def run_selected(ids=None, progress=None, jobs: int = 1,
         estimates: dict[str, float] | None = None) -> tuple[list[tuple[Certificate, Outcome]], dict]:
     """Run the selected certificates on ``jobs`` processes; return the outcomes (in claim
     order, whatever the order they finished in) and the timings.

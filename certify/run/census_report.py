@@ -1,6 +1,6 @@
 """Running a census on an executor, streaming its records to disk; CENSUS.md and its figure.
 
-:func:`run` submits the words of :func:`certify.patterns.census.words` to any
+:func:`run_census` submits the words of :func:`certify.patterns.census.words` to any
 :class:`concurrent.futures.Executor` (:mod:`.executors`), a bounded number at a time,
 and appends each record to a JSON-lines *state* file as soon as it arrives.  With
 ``resume`` the words already in the state file are not analysed again (a record does
@@ -46,7 +46,7 @@ def load_state(path) -> dict[str, dict]:
     return records
 
 
-def run(max_length: int, executor, state=None, resume: bool = False, progress=None,
+def run_census(max_length: int, executor, state=None, resume: bool = False, progress=None,
         job=census.analyse_word, window: int = WINDOW) -> list[dict]:
     """The census records of every word up to ``max_length``, in census order.
 
@@ -137,7 +137,7 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         f"# Census of periodic patterns up to length {L}",
         "",
         "Written by `python -m certify census --max-length "
-        f"{L}` (certify/patterns/census.py, certify/run/census.py); do not edit by hand.",
+        f"{L}` (certify/patterns/census.py, certify/run/census_report.py); do not edit by hand.",
         "",
         "Every primitive period made of the blocks ab, cb, acb, cab (Corollary 4.5, l. 1037-1051, with the "
         "correction certified in S10), of at most "
@@ -195,9 +195,9 @@ def window_figure(doc: dict, path, marks: dict | None = None) -> Path | None:
     """One row per word with stable data, its stable windows drawn as bars on the r-axis
     (floats of certified ends: a drawing only); written atomically to ``path`` (PNG).
     Returns the path, or None when no word has stable data."""
-    from .figures import pyplot
+    from .saving import pyplot
     plt = pyplot()
-    from .figures import DPI
+    from .saving import DPI
     from .files import atomic_path
 
     rows = [(r["compact"], census.windows(r)) for r in doc["words"] if r["stable"]]

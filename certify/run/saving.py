@@ -3,7 +3,7 @@
 A certificate draws a matplotlib figure and hands it to :func:`save_figure`,
 then lists the returned name in its outcome::
 
-    from certify.run.figures import save_figure
+    from certify.run.saving import save_figure
 
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(rs, signs)

@@ -1,0 +1,124 @@
+"""The command line: ``python -m certify COMMAND`` (or the ``certify`` script).
+
+    all [--check] [--out DIR] [--jobs N]
+                                run every certificate, write DIR/REPORT.md,
+                                DIR/report.json, DIR/timings.json, DIR/figures/
+    run ID [ID ...] [--out DIR] [--jobs N]
+                                run some certificates, print their verdicts
+    list                        list the certificates: id, paper line, statement
+    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics [--quick]] [--patterns]
+                                time the whole run (benchmarks/bench.py), or the
+                                exact simulator and reduction map (bench_reduction.py),
+                                the numerical engines (bench_numerics.py), or
+                                pattern and census (bench_patterns.py, bench_census.py)
+    census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
+           [--state FILE] [--resume] [--force]
+                                every periodic pattern of blocks up to length L,
+                                its feasible and stable r-sets: DIR/CENSUS.md,
+                                DIR/census.json, DIR/census-windows.png
+    pattern WORD [--json] [--r-range LO HI]
+                                the exact analysis of one periodic word (ababcb,
+                                (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
+                                exist, are feasible, are stable (certify.patterns.pattern)
+    orbit WORD [--json] [--r-range LO HI]
+                                the periodic orbits of the reduction with one word:
+                                where they exist, are feasible, attracting, saddles,
+                                repelling (certify.patterns.reduction_orbits)
+    identify (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N] [--json]
+                                the periodic word each simulated orbit settles on,
+                                certified by orbit (certify.run.identify)
+    particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
+              [--digits D] [--exact]
+                                simulate the four particles exactly, print the
+                                collisions and their times (certify.dynamics.particles)
+    figures [--resolution preview|paper] [--only FIG ...] [--n4 NMAX] [--out DIR]
+                                Figures 6-11 of the paper (our ids 5.1-5.8) into
+                                DIR/figures; paper: also
+                                DIR/numerics-paper.json; --n4: DIR/numerics-n4.json
+    simulate (--r R [R ...] | --r-range LO HI COUNT)
+             [--orbits N | --theta0 T [T ...] --phi0 P [P ...]] [--collisions N]
+             [--keep N] [--engine float64|mp|ball] [--dps D] [--strict] [--words]
+             [--out FILE.npz] [--jobs N] [--scheduler ADDRESS]
+                                iterate the reduction map numerically (Section 5,
+                                certify.numerics); the φ of the last b-collisions
+    stress [--out FILE] [--quick] [--jobs N]
+                                near-singular, long and 1000 random orbits on every
+                                engine against the certified one: reports/STRESS.md
+
+The commands by topic: :mod:`.claims` (all, run, list, bench), :mod:`.exact` (census,
+pattern, particles), :mod:`.section5` (simulate, stress, figures); :mod:`.options` holds
+what they share and :func:`~certify.cli.options.add_command`, the one way a command is
+registered (each topic's ``register(commands)`` calls it for its commands).
+
+Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
+1 when one FAILs (or, with ``all --check``, when the committed REPORT.md is
+stale); 2 for a usage error; 130 when interrupted.  Errors are reported in one
+line on stderr, never as a traceback (set ``CERTIFY_DEBUG=1`` to see one).
+"""
+from __future__ import annotations
+
+import os
+import sys
+import traceback
+
+from certify.errors import UsageError
+from certify.run import progress
+
+from . import claims, exact, section5
+from .options import Parser, say
+
+TOPICS = (claims, exact, section5)      # in the order of ``certify --help``
+
+
+def build_parser() -> Parser:
+    """The parser of ``certify COMMAND [options]``: each topic registers its commands."""
+    parser = Parser(prog="certify", description="Check every claim of arXiv:2411.10324 "
+                    "in exact arithmetic and write the report.",
+                    epilog="exit codes: 0 all PASS/ERRATUM/OBSERVED, 1 a FAIL or a stale "
+                    "report, 2 usage error, 130 interrupted")
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for topic in TOPICS:
+        topic.register(commands)
+    return parser
+
+def describe(exc: BaseException) -> str:
+    """An unexpected exception in one line: type, message, and where it was raised."""
+    text = f"{type(exc).__name__}: {' '.join(str(exc).split())}"
+    frames = traceback.extract_tb(exc.__traceback__)
+    if frames:
+        where = frames[-1]
+        try:
+            name = os.path.relpath(where.filename)
+        except ValueError:
+            name = where.filename
+        text += f" (at {name}:{where.lineno})"
+    return text
+
+
+def main(argv=None) -> int:
+    """Run the command line ``argv`` (default: sys.argv[1:]); return the exit code."""
+    for stream in (sys.stdout, sys.stderr):  # never die on a character the terminal lacks
+        if hasattr(stream, "reconfigure"):
+            stream.reconfigure(errors="replace")
+    try:
+        args = build_parser().parse_args(argv)
+        return args.func(args)
+    except UsageError as exc:
+        progress.clear()
+        say(f"error: {exc}")
+        return 2
+    except KeyboardInterrupt:
+        progress.clear()
+        say("interrupted")
+        return 130
+    except SystemExit as exc:  # --help
+        return exc.code if isinstance(exc.code, int) else 0
+    except BrokenPipeError:  # e.g. `certify list | head`
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except Exception as exc:
+        if os.environ.get("CERTIFY_DEBUG"):
+            raise
+        progress.clear()
+        say(f"internal error: {describe(exc)}; set CERTIFY_DEBUG=1 for the traceback")
+        return 1

@@ -1,0 +1,132 @@
+"""The commands of the exact engine on words and particles: ``census`` (every periodic
+pattern up to a length), ``pattern WORD`` (one word), ``particles`` (four particles,
+exactly).
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+from certify.dynamics import particles
+from certify.errors import UsageError
+from certify.run import progress
+from certify.run.files import ensure_writable
+
+from .options import DEFAULT_OUT, add_command, add_jobs, positive_int
+
+MAX_DIGITS = 1000             # particles --digits
+
+def cmd_census(args) -> int:
+    """The census of periodic patterns (certify/run/census_report.py): records stream to the
+    state file, --resume skips the words already there."""
+    import signal
+
+    from certify.run import census_report as census
+    from certify.run import executors
+    signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
+    out = ensure_writable(args.out)
+    longer = census.written_length(out)
+    if longer is not None and longer > args.max_length and not args.force:
+        raise UsageError(f"{out / 'census.json'} holds a census up to length {longer}; one up to {args.max_length} "
+                         "would replace it: write it elsewhere with --out DIR, or pass --force")
+    state = args.state if args.state is not None else out / "census-state.jsonl"
+    ensure_writable(state.parent)
+    with executors.executor(args.jobs, args.scheduler) as ex:
+        records = census.run_census(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
+    doc = census.write_outputs(records, args.max_length, out)
+    if args.json:
+        print(census.to_json(doc), end="")
+    else:
+        s = doc["census"]
+        print(f"{s['words']} words up to length {s['max_length']}: {len(s['feasible'])} with feasible data, "
+              f"{len(s['stable'])} stable, {len(s['undecided'])} with undecided points, {len(s['errors'])} errors; "
+              f"with abcab: {s['abcab']['words']}, feasible {len(s['abcab']['feasible'])}")
+        print(f"wrote {out / 'CENSUS.md'}, census.json, {census.FIGURE}; state {state}")
+    return 0
+
+
+def cmd_pattern(args) -> int:
+    """The exact analysis of one periodic word: Markdown on stdout, or JSON with --json
+    (schema certify/patterns/pattern.schema.json).  A bad word is a UsageError (exit 2),
+    raised before any work; nothing is written to a file."""
+    from certify.patterns import analyse, check_range, read
+    lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
+    read(args.word)                       # validate first: one line, exit 2
+    result = analyse(args.word, lo, hi)
+    print(result.json_text() if args.json else result.markdown())
+    return 0
+
+
+def cmd_orbit(args) -> int:
+    """The periodic orbits of the reduction with one word: Markdown on stdout, or JSON
+    with --json (schema certify/patterns/orbit.schema.json).  A bad word is a UsageError
+    (exit 2), raised before any work."""
+    from certify.patterns import check_range, read
+    from certify.patterns.reduction_orbits import analyse as analyse_orbit
+    lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
+    read(args.word)                       # validate first: one line, exit 2
+    result = analyse_orbit(args.word, lo, hi)
+    print(result.json_text() if args.json else result.markdown())
+    return 0
+
+
+def cmd_particles(args) -> int:
+    """Simulate the four particles exactly; one line per collision, then why it stopped."""
+    if args.digits > MAX_DIGITS:
+        raise UsageError(f"--digits is at most {MAX_DIGITS} (--exact prints the full fractions)")
+    history = particles.evolve(args.x, args.v, args.r, args.collisions, progress=progress.Bar("collision"))
+    for line in particles.report_lines(history, digits=args.digits, full=args.exact):
+        print(line)
+    return 0
+
+
+def register(commands) -> None:
+    """The parsers of ``census``, ``pattern``, ``orbit`` and ``particles``."""
+    p = add_command(commands, "census", cmd_census, help="analyse every periodic pattern of blocks up to a length")
+    p.add_argument("--max-length", type=positive_int, required=True, metavar="L", help="longest period, in collisions")
+    p.add_argument("--json", action="store_true", help="also print the census as JSON on stdout")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    p.add_argument("--state", type=Path, default=None, metavar="FILE",
+                   help="JSON lines, one per word analysed (default: DIR/census-state.jsonl)")
+    p.add_argument("--resume", action="store_true", help="do not analyse again the words already in the state file")
+    p.add_argument("--force", action="store_true",
+                   help="replace a census of longer periods already in DIR (refused without it)")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
+    add_jobs(p)
+
+    p = add_command(commands, "pattern", cmd_pattern, help="analyse one periodic collision word exactly",
+                    description="Where in r the self-similar data of a periodic word exist, are "
+                    "feasible and are stable, with algebraic end points.  WORD: ababcb, (ab)^3(cb)^3, "
+                    "[ac]b (a and c at once, the symmetric system), ab (three particles); any rotation "
+                    "or the mirror a<->c.")
+    p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n; [ac]")
+    p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/pattern.schema.json)")
+    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
+                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
+
+    p = add_command(commands, "orbit", cmd_orbit,
+                    help="certify the periodic orbits of the reduction (Section 4) with one word",
+                    description="For each real eigenvalue of M_w: where in r the periodic orbit of the "
+                    "reduction with this word exists and is feasible, and whether it is attracting, a saddle "
+                    "or repelling (in-plane pair real or complex), with algebraic end points.  Same words as "
+                    "`pattern` (four particles: a, b and c).")
+    p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n")
+    p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/orbit.schema.json)")
+    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
+                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
+
+    p = add_command(commands, "particles", cmd_particles, help="simulate four particles exactly",
+                    description="Four particles on a line, equal masses, restitution "
+                    "coefficient r: the collisions (a: 1-2, b: 2-3, c: 3-4, ac: a and c "
+                    "at once) and their exact times.  Numbers: -2, 3/7, 0.25 (exact).")
+    p.add_argument("--x", nargs=4, required=True, metavar=("X1", "X2", "X3", "X4"),
+                   help="initial positions, x1 <= x2 <= x3 <= x4")
+    p.add_argument("--v", nargs=4, required=True, metavar=("V1", "V2", "V3", "V4"),
+                   help="initial velocities")
+    p.add_argument("--r", required=True, metavar="R", help="restitution coefficient in ]0,1[")
+    p.add_argument("--collisions", type=positive_int, default=100, metavar="N",
+                   help="stop after N collisions, ac counting as one (default: 100)")
+    p.add_argument("--digits", type=positive_int, default=20, metavar="D",
+                   help="significant digits of the decimal times, correctly rounded (default: 20)")
+    p.add_argument("--exact", action="store_true",
+                   help="print every time as a full fraction, however long")

@@ -1,0 +1,232 @@
+"""The commands of Section 5, numerical: ``simulate`` (the reduction map iterated),
+``stress`` (the engines against the certified one), ``figures`` (Figures 6-11 of the
+paper, our 5.1-5.8, and the findings N2-N7 quote).
+"""
+from __future__ import annotations
+
+import json
+from contextlib import nullcontext
+from pathlib import Path
+
+from certify.errors import UsageError
+from certify.run import executors, progress, saving
+from certify.run.files import atomic_path, ensure_writable, write_atomic
+
+from .options import (
+    DEFAULT_OUT,
+    add_command,
+    add_jobs,
+    count,
+    number,
+    positive_int,
+    prepare_output,
+)
+
+DEFAULT_STRESS = DEFAULT_OUT / "STRESS.md"
+
+def r_values(args):
+    """The r of ``--r`` or ``--r-range LO HI COUNT`` (COUNT values, ends included)."""
+    import numpy as np
+    if args.r_range is not None:
+        lo, hi, n = args.r_range
+        if n != int(n) or n < 1:
+            raise UsageError(f"--r-range COUNT must be a positive integer, not {n:g}")
+        if lo > hi or (lo == hi and n > 1):
+            raise UsageError(f"--r-range LO HI COUNT needs LO < HI (or LO = HI with COUNT 1), got LO = {lo:g}, HI = {hi:g}")
+        r = np.linspace(lo, hi, int(n))
+    else:
+        r = np.array(args.r, dtype=float)
+    bad = [x for x in r if not 0 < x < 1]
+    if bad:
+        raise UsageError(f"r must lie in ]0,1[, got {bad[0]:g}")
+    return r
+
+
+def initial_data(args):
+    """(θ0, φ0): paired from ``--theta0`` and ``--phi0`` (θ0 in [0, π/2], φ0 in [0, π]),
+    else the first ``--orbits`` of the paper's grid."""
+    import math
+
+    import numpy as np
+
+    from certify import numerics
+    if args.theta0 is None and args.phi0 is None:
+        return numerics.grid(args.orbits if args.orbits is not None else 8)
+    if args.theta0 is None or args.phi0 is None:
+        raise UsageError("--theta0 and --phi0 go together (one φ0 per θ0)")
+    if args.orbits is not None:
+        raise UsageError("--orbits chooses from the paper's grid: not with --theta0/--phi0")
+    if len(args.theta0) != len(args.phi0):
+        raise UsageError(f"--theta0 has {len(args.theta0)} value(s), --phi0 {len(args.phi0)}: they are paired")
+    for name, values, top, text in (("theta0", args.theta0, math.pi / 2, "π/2"), ("phi0", args.phi0, math.pi, "π")):
+        bad = [x for x in values if not 0 <= x <= top]
+        if bad:
+            raise UsageError(f"--{name} must lie in [0, {text}], got {bad[0]:g}")
+    return np.array(args.theta0, dtype=float), np.array(args.phi0, dtype=float)
+
+
+def cmd_simulate(args) -> int:
+    """Iterate the reduction map from the paper's grid of initial data (or the given
+    ones) for every r."""
+    from certify import numerics
+    r = r_values(args)
+    theta0, phi0 = initial_data(args)
+    if args.out is not None:
+        ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
+        if args.out.is_dir():
+            raise UsageError(f"--out {str(args.out)!r} is a directory, not a file")
+    if args.dps is not None and args.engine == "float64":
+        raise UsageError("--dps is for the mp and ball engines")
+    if args.words and args.out is None:
+        raise UsageError("--words stores the words in --out FILE.npz: give --out")
+    with executors.executor(args.jobs, args.scheduler) if args.engine != "float64" else nullcontext() as ex:
+        orbits = numerics.iterate(r, theta0, phi0, collisions=args.collisions, keep=args.keep,
+                                   engine=args.engine, dps=args.dps, executor=ex, progress=progress.Bar("r"),
+                                   strict=args.strict, words=args.words)
+    if args.out is not None:
+        with atomic_path(args.out) as tmp, open(tmp, "wb") as handle:
+            orbits.save(handle)
+        print(f"wrote {args.out}")
+    print(orbits.summary())
+    return 0
+
+
+def cmd_stress(args) -> int:
+    """Near-singular, long and random orbits on every engine: reports/STRESS.md."""
+    from certify.numerics import stress
+    ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
+    with executors.executor(args.jobs) as ex:
+        text, silent = stress.report(quick=args.quick, progress=progress.Bar("orbit"), executor=ex)
+    write_atomic(args.out, text)
+    print(f"wrote {args.out}: {silent} silent wrong collision(s)")
+    return 1 if silent else 0
+
+FIGURE_DPI = {"preview": None, "paper": 150}
+
+
+def cmd_figures(args) -> int:
+    """Figures 5.1-5.8 at ``--resolution`` into DIR/figures (``fig5.2-paper.png``); at the
+    paper's resolution also DIR/numerics-paper.json, the findings N2-N7 quote; with
+    ``--n4 NMAX`` the windows of (ab)^n(cb)^n up to n = NMAX (mp), DIR/numerics-n4.json."""
+    from certify import numerics
+    from certify.run import plots
+    unknown = [f for f in args.only or () if f not in numerics.SPECS]
+    if unknown:
+        raise UsageError(f"unknown figure {unknown[0]!r} (one of {', '.join(numerics.SPECS)})")
+    out = prepare_output(args.out)
+    if args.n4 is not None:
+        with executors.executor(args.jobs) as ex:                      # one n per job
+            found = numerics.n4_search(args.n4, progress=progress.Bar("n"), executor=ex if args.jobs > 1 else None)
+        write_atomic(out / "numerics-n4.json", json.dumps(found, indent=1) + "\n")
+        print(f"N4: largest n with 2n accumulation points (mp): {found['largest_n_mp']}; "
+              f"float64: {found['largest_n_float64']}; {found['seconds']} s; wrote {out / 'numerics-n4.json'}")
+        if not args.only and args.resolution is None:
+            return 0
+    resolution = args.resolution or "preview"
+    datas, names = {}, []
+    with saving.output_dir(out / "figures"):
+        for fig in args.only or numerics.SPECS:
+            datas[fig] = numerics.compute(fig, resolution, progress=progress.Bar(f"figure {fig}"))
+            names.append(plots.section5_figure(datas[fig], dpi=FIGURE_DPI[resolution]))
+            print(f"figure {fig}: {len(datas[fig].r)} values of r, {int((datas[fig].breaks != 0).sum())} breaks, "
+                  f"{datas[fig].seconds:.1f} s -> {out / 'figures' / names[-1]}")
+    if resolution == "paper" and not args.only:
+        write_atomic(out / "numerics-paper.json", json.dumps(numerics.findings(datas), indent=1) + "\n")
+        print(f"wrote {out / 'numerics-paper.json'}")
+    return 0
+
+
+def cmd_identify(args) -> int:
+    """Simulate, read the periodic word each orbit settles on, certify it with `orbit`:
+    one line per orbit, or JSON with --json (certify.run.identify)."""
+    from certify.run import identify as ident
+    if (args.r is None) == (args.r_range is None):
+        raise UsageError("give --r R [R ...] or --r-range LO HI COUNT")
+    rs = ident.rationals(args.r) if args.r is not None else ident.r_grid(*args.r_range)
+    found = ident.identify(rs, orbits=args.orbits, collisions=args.collisions)
+    if args.json:
+        print(ident.json_text(found))
+    else:
+        for x in found:
+            print(x.line())
+    return 0
+
+
+def register(commands) -> None:
+    """The parsers of ``simulate``, ``identify``, ``stress`` and ``figures``."""
+    from certify.numerics.engines import ENGINES
+    p = add_command(commands, "simulate", cmd_simulate, help="iterate the reduction map numerically (Section 5)",
+                    description="The spherical billiard reduction iterated from collision to "
+                    "collision from the paper's grid of initial data (θ0, φ0) at a b-contact; "
+                    "keeps the φ of the last b-collisions.  Breaks: 1 undecided contact "
+                    "(|cos φ| below the rounding bound), 2 time step below precision, "
+                    "3 corner, 4 non-finite, 5 certified horizon (--strict).  Every orbit reports "
+                    "the collisions it certifies (float64, mp: an accumulated rigorous error bound; "
+                    "ball: all).")
+    which = p.add_mutually_exclusive_group(required=True)
+    which.add_argument("--r", nargs="+", type=number, metavar="R", help="restitution coefficients in ]0,1[")
+    which.add_argument("--r-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
+                       help="COUNT values from LO to HI, ends included (paper Figure 6: 0.072 0.999 3709)")
+    p.add_argument("--orbits", type=positive_int, default=None, metavar="N",
+                   help="initial data per r: the first N of the paper's grid, 2 θ0 × 4 φ0 (default: 8)")
+    p.add_argument("--theta0", nargs="+", type=number, metavar="T",
+                   help="initial θ0 in [0, π/2], paired with --phi0 (instead of the grid)")
+    p.add_argument("--phi0", nargs="+", type=number, metavar="P", help="initial φ0 in [0, π], one per --theta0")
+    p.add_argument("--strict", action="store_true",
+                   help="stop each orbit at its certified horizon (break 5); without it float64 and mp orbits "
+                        "go on past it and --out's `certified` says how far they are proven")
+    p.add_argument("--words", action="store_true",
+                   help="also store each orbit's collision word in --out (an array `word` of strings)")
+    p.add_argument("--collisions", type=count, default=10_000, metavar="N", help="collisions per orbit (default: 10^4)")
+    p.add_argument("--keep", type=count, default=500, metavar="N",
+                   help="keep the φ of the last N b-collisions (default: 500)")
+    p.add_argument("--engine", choices=ENGINES, default="float64",
+                   help="float64 (numba, parallel), mp (mpmath at --dps), ball (certified arb, precision up to --dps)")
+    p.add_argument("--dps", type=positive_int, default=None, metavar="D",
+                   help="decimal digits: of mp (default 30), the cap of ball (default 5000)")
+    p.add_argument("--out", type=Path, default=None, metavar="FILE.npz",
+                   help="write r, theta0, phi0, phi, breaks, collisions, certified [, word] (npz); "
+                        "a summary is printed in any case")
+    p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
+                   help="processes for the mp and ball engines (default: all cores)")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run the mp and ball orbits on this Dask scheduler instead")
+
+    p = add_command(commands, "identify", cmd_identify,
+                    help="the periodic word each simulated orbit settles on, certified by `orbit`",
+                    description="Runs the float64 simulator (the paper's eight orbits by default), reads the "
+                    "shortest period of each orbit's last collisions, and certifies that word with `orbit`: "
+                    "its normal form and the attracting window that contains r, or why there is none.")
+    p.add_argument("--r", nargs="+", default=None, metavar="R", help="values of r (exact rationals: 0.3 is 3/10)")
+    p.add_argument("--r-range", nargs=3, default=None, metavar=("LO", "HI", "COUNT"),
+                   help="COUNT equally spaced r from LO to HI, ends included")
+    p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
+                   help="the first N initial data of the paper's grid (default: 8)")
+    p.add_argument("--collisions", type=positive_int, default=10_000, metavar="N",
+                   help="collisions simulated per orbit (default: 10000)")
+    p.add_argument("--json", action="store_true",
+                   help="print JSON: a list of orbits, each with r, theta0, phi0, word and window")
+
+    p = add_command(commands, "stress", cmd_stress, help="stress the numerical engines against the certified one",
+                    description="Near-singular data, 1000 seeded random orbits of 2000 collisions over "
+                    "the whole r range and long orbits, on float64 and mp against the certified ball "
+                    "engine: certified horizons, departures, silent wrong collisions (exit 1 if any).")
+    p.add_argument("--out", type=Path, default=DEFAULT_STRESS, metavar="FILE",
+                   help="the report (default: reports/STRESS.md)")
+    p.add_argument("--quick", action="store_true", help="smaller cases (a smoke test): 40 random orbits of 300")
+    p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
+                   help="processes for the random orbits (default: all cores)")
+
+    p = add_command(commands, "figures", cmd_figures, help="draw Figures 6-11 of the paper, Section 5 (ids 5.1-5.8)",
+                    description="Figures 6-11 of the paper (Section 5; our ids 5.1-5.8: 5.1 = Figure 6, 5.2 = 7, 5.3a/b = 8a/b, "
+                    "5.4 = 9, 5.5 = 10, 5.6-5.8 = 11a-c): the last kept b-angles φ of the paper's 8 "
+                    "orbits against r (float64), breaks as red dots at (r, π/2), the CDKK thresholds as red "
+                    "lines.  preview: the cheap version `certify all` draws; paper: the captions' grids, "
+                    "10^4 collisions, 500 kept (about a minute on two cores).")
+    p.add_argument("--resolution", choices=("preview", "paper"), default=None,
+                   help="preview (default) or the paper's parameters")
+    p.add_argument("--only", nargs="+", metavar="FIG", help="only these figures, e.g. 5.2 5.3a")
+    p.add_argument("--n4", type=positive_int, default=None, metavar="NMAX",
+                   help="find the windows of (ab)^n(cb)^n up to n = NMAX with the mp engine (minutes)")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    add_jobs(p)

@@ -1,0 +1,53 @@
+"""One context for the whole test session: the mutation harness (tests/test_mutants.py) and
+the tests of each part run certificates with the same shared quantities (section4_data,
+ab_cb_patterns, spectrum, ...), each computed once per session, and the same run of each
+certificate as printed.  While a certificate runs as printed, the printed texts it reads
+with the statement grammar (certify.algebra.statements) are recorded: a certificate that
+reads a condition in words must have wording mutants."""
+from certify.algebra import statements
+from certify.run.runner import CERTIFICATES, Context, load_all, run_certificate
+
+load_all()
+CONTEXT = Context()
+READERS = ("relation", "statement", "range_of", "count", "extent", "branch", "product_equation", "word_rule")
+_PRINTED: dict = {}          # id -> (outcome as printed, the printed names read by the grammar)
+
+
+def outcome(id: str, **overrides):
+    """Certificate ``id`` run in the session's context, its printed inputs replaced by ``overrides``."""
+    if not overrides:
+        return as_printed(id)
+    return run_certificate(CERTIFICATES[id], CONTEXT, overrides)
+
+
+def as_printed(id: str):
+    """The outcome of certificate ``id`` on the paper as printed, run once per session."""
+    if id not in _PRINTED:
+        _PRINTED[id] = _traced(id)
+    return _PRINTED[id][0]
+
+
+def read(id: str) -> set:
+    """The names of the printed inputs of ``id`` that the statement grammar read, as printed."""
+    as_printed(id)
+    return _PRINTED[id][1]
+
+
+def _traced(id: str):
+    """Run ``id`` as printed with the grammar's entry points recording the texts they are given."""
+    texts, saved = [], {name: getattr(statements, name) for name in READERS}
+
+    def recording(func):
+        def reader(text, *args, **kwargs):
+            texts.append(text)
+            return func(text, *args, **kwargs)
+        return reader
+    try:
+        for name, func in saved.items():
+            setattr(statements, name, recording(func))
+        out = run_certificate(CERTIFICATES[id], CONTEXT)
+    finally:
+        for name, func in saved.items():
+            setattr(statements, name, func)
+    printed = CERTIFICATES[id].printed
+    return out, {n for n, v in printed.items() if isinstance(v, str) and v in texts}
