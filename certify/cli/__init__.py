@@ -20,6 +20,13 @@
                                 the exact analysis of one periodic word (ababcb,
                                 (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
                                 exist, are feasible, are stable (certify.patterns.pattern)
+    orbit WORD [--json] [--r-range LO HI]
+                                the periodic orbits of the reduction with one word:
+                                where they exist, are feasible, attracting, saddles,
+                                repelling (certify.patterns.reduction_orbits)
+    identify (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N] [--json]
+                                the periodic word each simulated orbit settles on,
+                                certified by orbit (certify.run.identify)
     particles --x X1 X2 X3 X4 --v V1 V2 V3 V4 --r R [--collisions N]
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the

@@ -56,6 +56,19 @@ def cmd_pattern(args) -> int:
     return 0
 
 
+def cmd_orbit(args) -> int:
+    """The periodic orbits of the reduction with one word: Markdown on stdout, or JSON
+    with --json (schema certify/patterns/orbit.schema.json).  A bad word is a UsageError
+    (exit 2), raised before any work."""
+    from certify.patterns import check_range, read
+    from certify.patterns.reduction_orbits import analyse as analyse_orbit
+    lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
+    read(args.word)                       # validate first: one line, exit 2
+    result = analyse_orbit(args.word, lo, hi)
+    print(result.json_text() if args.json else result.markdown())
+    return 0
+
+
 def cmd_particles(args) -> int:
     """Simulate the four particles exactly; one line per collision, then why it stopped."""
     if args.digits > MAX_DIGITS:
@@ -67,7 +80,7 @@ def cmd_particles(args) -> int:
 
 
 def register(commands) -> None:
-    """The parsers of ``census``, ``pattern`` and ``particles``."""
+    """The parsers of ``census``, ``pattern``, ``orbit`` and ``particles``."""
     p = add_command(commands, "census", cmd_census, help="analyse every periodic pattern of blocks up to a length")
     p.add_argument("--max-length", type=positive_int, required=True, metavar="L", help="longest period, in collisions")
     p.add_argument("--json", action="store_true", help="also print the census as JSON on stdout")
@@ -88,6 +101,17 @@ def register(commands) -> None:
                     "or the mirror a<->c.")
     p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n; [ac]")
     p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/pattern.schema.json)")
+    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
+                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
+
+    p = add_command(commands, "orbit", cmd_orbit,
+                    help="certify the periodic orbits of the reduction (Section 4) with one word",
+                    description="For each real eigenvalue of M_w: where in r the periodic orbit of the "
+                    "reduction with this word exists and is feasible, and whether it is attracting, a saddle "
+                    "or repelling (in-plane pair real or complex), with algebraic end points.  Same words as "
+                    "`pattern` (four particles: a, b and c).")
+    p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n")
+    p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/orbit.schema.json)")
     p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
                    help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
 

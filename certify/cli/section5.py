@@ -129,8 +129,24 @@ def cmd_figures(args) -> int:
     return 0
 
 
+def cmd_identify(args) -> int:
+    """Simulate, read the periodic word each orbit settles on, certify it with `orbit`:
+    one line per orbit, or JSON with --json (certify.run.identify)."""
+    from certify.run import identify as ident
+    if (args.r is None) == (args.r_range is None):
+        raise UsageError("give --r R [R ...] or --r-range LO HI COUNT")
+    rs = ident.rationals(args.r) if args.r is not None else ident.r_grid(*args.r_range)
+    found = ident.identify(rs, orbits=args.orbits, collisions=args.collisions)
+    if args.json:
+        print(ident.json_text(found))
+    else:
+        for x in found:
+            print(x.line())
+    return 0
+
+
 def register(commands) -> None:
-    """The parsers of ``simulate``, ``stress`` and ``figures``."""
+    """The parsers of ``simulate``, ``identify``, ``stress`` and ``figures``."""
     from certify.numerics.engines import ENGINES
     p = add_command(commands, "simulate", cmd_simulate, help="iterate the reduction map numerically (Section 5)",
                     description="The spherical billiard reduction iterated from collision to "
@@ -168,6 +184,21 @@ def register(commands) -> None:
                    help="processes for the mp and ball engines (default: all cores)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run the mp and ball orbits on this Dask scheduler instead")
+
+    p = add_command(commands, "identify", cmd_identify,
+                    help="the periodic word each simulated orbit settles on, certified by `orbit`",
+                    description="Runs the float64 simulator (the paper's eight orbits by default), reads the "
+                    "shortest period of each orbit's last collisions, and certifies that word with `orbit`: "
+                    "its normal form and the attracting window that contains r, or why there is none.")
+    p.add_argument("--r", nargs="+", default=None, metavar="R", help="values of r (exact rationals: 0.3 is 3/10)")
+    p.add_argument("--r-range", nargs=3, default=None, metavar=("LO", "HI", "COUNT"),
+                   help="COUNT equally spaced r from LO to HI, ends included")
+    p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
+                   help="the first N initial data of the paper's grid (default: 8)")
+    p.add_argument("--collisions", type=positive_int, default=10_000, metavar="N",
+                   help="collisions simulated per orbit (default: 10000)")
+    p.add_argument("--json", action="store_true",
+                   help="print JSON: a list of orbits, each with r, theta0, phi0, word and window")
 
     p = add_command(commands, "stress", cmd_stress, help="stress the numerical engines against the certified one",
                     description="Near-singular data, 1000 seeded random orbits of 2000 collisions over "

@@ -1,0 +1,209 @@
+"""`certify orbit WORD`: the periodic orbits of the reduction, certified
+(certify/patterns/reduction_orbits.py).  Checked against independent routes: the
+stable windows of `certify pattern` for (ab)^n(cb)^n (L4), the exact reduction map of
+certify/dynamics/reduction.py (the word followed from n*, the multipliers against a
+finite-difference Jacobian), the ball engine of certify/numerics; the schema; the CLI."""
+import json
+
+import flint
+import pytest
+
+from certify import cli
+from certify.algebra import Q
+from certify.algebra.algebraic import Algebraic
+from certify.algebra.balls import precision
+from certify.dynamics import reduction as R
+from certify.dynamics.systems import candidate_in
+from certify.errors import UsageError
+from certify.numerics.engines import ball_orbit
+from certify.patterns import SCHEMA_PATH as PATTERN_SCHEMA
+from certify.patterns import analyse as analyse_pattern
+from certify.patterns import reduction_orbits as ro
+from certify.patterns.reduction_orbits import SCHEMA_PATH, analyse, normal_at
+
+COMPLEX = "abacbabcbcabcb"           # the issue's attractor at r = 0.3 (period 14)
+
+
+@pytest.fixture(scope="module")
+def complex_orbit():
+    return analyse(COMPLEX)
+
+
+def _windows(intervals):
+    """{(lo, hi)} of (branch, fixed point, lo, hi) or of the JSON intervals, as exact keys."""
+    return sorted((a.key(), b.key()) for a, b in intervals)
+
+
+def _attracting(res):
+    return [(a, b) for R_ in res.regions["attracting"] for a, b in R_.merged()[0]]
+
+
+# ------------------------------------------------------------------ two routes agree: L4
+@pytest.mark.parametrize("n", [2, 3, 4])
+def test_ab_cb_attracting_windows_are_the_stable_windows_of_pattern(n):
+    """The attracting windows of the reduction for (ab)^n(cb)^n are exactly the stable
+    self-similar windows of `certify pattern` (L4-L5): the same algebraic end points,
+    obtained from different conditions (the smallest eigenvalue of M_w in modulus at a
+    left eigenvector, against the dominant eigenvalue and |f'(x)| < 1 at a right one)."""
+    word = f"(ab)^{n}(cb)^{n}"
+    orbit, pattern = analyse(word), analyse_pattern(word)
+    stable = [(lo, hi) for _b, _x, lo, hi in pattern.intervals("stable")]
+    assert stable, "pattern certifies a stable window for n = 2..4"
+    assert _windows(_attracting(orbit)) == _windows(stable)
+    assert [a["pair"] for a in orbit.attracting()] == ["real"] * len(stable)
+    assert "attracting periodic orbit of the reduction" in orbit.verdict
+
+
+def test_a_flipped_modulus_condition_breaks_the_agreement(monkeypatch):
+    """Mutation: with λ (λ³ - det M) > 0 in place of λ (det M - λ³) > 0 (λ the largest
+    in modulus instead of the smallest), the attracting set is no longer the stable
+    window, so the test above can fail."""
+    word = "(ab)^2(cb)^2"
+    stable = [(lo, hi) for _b, _x, lo, hi in analyse_pattern(word).intervals("stable")]
+    real = ro.type_requirements
+
+    def flipped(cp):
+        out = real(cp)
+        out["attracting"] = out["attracting"][:2] + out["repelling"][2:]
+        return out
+    monkeypatch.setattr(ro, "type_requirements", flipped)
+    assert _windows(_attracting(analyse(word))) != _windows(stable)
+
+
+# ------------------------------------------------------------------ the complex-pair attractor
+def test_complex_pair_orbit_is_attracting_at_three_tenths(complex_orbit):
+    res = complex_orbit
+    r0 = Algebraic.rational(Q(3, 10))
+    hits = [a for a in res.attracting() if a["branch"] == "upper"]
+    assert len(hits) == 1 and hits[0]["pair"] == "complex"
+    (lo, hi), = [(a, b) for R_ in res.regions["attracting"] if R_.branch == 0 for a, b in R_.merged()[0]]
+    assert lo < r0 < hi
+    assert hits[0]["lo"]["minimal_polynomial"] == "r^4 - 6r^3 - 2r^2 - 22r + 5"
+    # the pair is complex on the whole window: the only real eigenvalue there is λ_x
+    assert len(candidate_in("four", COMPLEX).spectrum.real_eigenvalues(Q(3, 10))) == 1
+    assert "complex pair" in res.verdict
+    assert "not a collapse" in res.physics and "leave the word within a period or two" in res.physics
+    assert not res.sets("saddle") or all(s["branch"] != "upper" for s in res.sets("saddle"))
+
+
+def test_complex_pair_orbit_stays_on_its_word_exactly_and_in_balls():
+    """From a rational approximation of n* at r = 3/10 (inside the certified window), the
+    exact reduction map follows the word for 10 periods, and the ball engine certifies
+    the true orbit of that rational datum for 200 periods (2800 collisions)."""
+    r = Q(3, 10)
+    n = normal_at(COMPLEX, r, 0)
+    word, _ = R.word_of(R.canonical("b", n), r, 10 * len(COMPLEX))
+    assert word == COMPLEX * 10
+    res = ball_orbit(r, 0.0, 0.0, 200 * len(COMPLEX), word=True, letter="b", normal=n)
+    assert res.code == 0 and res.collisions == 200 * len(COMPLEX) and res.word == COMPLEX * 200
+    # a saddle leaves its word: ababcb at r = 1/20 (saddle on ]0, 0.101[), from the same kind of datum
+    m = normal_at("ababcb", Q(1, 20), 1, bits=64)
+    w, _ = R.word_of(R.canonical("b", m), Q(1, 20), 40 * 6)
+    assert w[:12] == "ababcb" * 2 and w != ("ababcb" * 40)[:len(w)]
+
+
+# ------------------------------------------------------------------ the multipliers
+def _return_map(word, r, n1, n2):
+    """The exact reduction (contacts decided, normals re-oriented) over one period from
+    (b, (n1, n2, 1)), in the chart n_z = 1."""
+    planes = R.orbit(R.canonical("b", (n1, n2, Q(1))), r, len(word))
+    assert R.word(planes) == word
+    m = planes[-1].n
+    return Q(m[0], m[2]), Q(m[1], m[2])
+
+
+@pytest.mark.parametrize("word, r, branch", [(COMPLEX, Q(3, 10), 0), ("ababcbcb", Q(3, 20), 2),
+                                             ("ababcb", Q(1, 20), 1)])
+def test_multipliers_are_the_eigenvalue_ratios(word, r, branch):
+    """The Jacobian of the exact return map at n* (central differences, step 2^-80, n*
+    to 2^-400) has trace λ/λ_y + λ/λ_z = λ²(tr M - λ)/det M and determinant
+    λ²/(λ_y λ_z) = λ³/det M (λ = λ_x): attracting (complex pair), attracting (real
+    pair), saddle."""
+    n1, n2, _ = normal_at(word, r, branch, bits=400)
+    h = Q(1, 2 ** 80)
+    cols = []
+    for d1, d2 in ((h, 0), (0, h)):
+        plus, minus = _return_map(word, r, n1 + d1, n2 + d2), _return_map(word, r, n1 - d1, n2 - d2)
+        cols.append([(p - m) / (2 * h) for p, m in zip(plus, minus)])
+    J = [[cols[0][0], cols[1][0]], [cols[0][1], cols[1][1]]]
+    trace, det = J[0][0] + J[1][1], J[0][0] * J[1][1] - J[0][1] * J[1][0]
+    M = flint.fmpq_mat([[c(r) for c in row] for row in candidate_in("four", word).Mq])
+    trM, detM = M[0, 0] + M[1, 1] + M[2, 2], M.det()
+    with precision(300):
+        lam = candidate_in("four", word).spectrum.real_eigenvalues(r)[branch].arb(300)
+        expect_trace, expect_det = lam ** 2 * (trM - lam) / detM, lam ** 3 / detM
+        for got, want in ((trace, expect_trace), (det, expect_det)):
+            assert abs(flint.arb(got) - want) < 1e-20 * (1 + abs(want))
+    # the type the analysis certifies at r is the one the multipliers show
+    inside = abs(expect_det) < 1 and abs(expect_trace) < 1 + expect_det
+    assert inside == (word != "ababcb")
+
+
+# ------------------------------------------------------------------ claims of the docstring
+@pytest.mark.parametrize("word", [COMPLEX, "ababcbcb"])
+def test_implied_orientation_and_face_conditions_hold_on_the_feasible_set(word):
+    """No re-orientation along a realised orbit, and every state inside its face: the
+    conditions the analysis does not impose hold wherever it certifies the orbit."""
+    res = analyse(word)
+    cand = candidate_in("four", res.normal)
+    an = ro._fork(ro.Analysis(ro.replace(cand, abcd=None, abcd_ring=None), 0, 1))
+    an.regions = ro._copy(res.regions["feasible"])
+    for q in ro.implied_requirements(res.normal, cand.Mq, cand.spectrum.lrq_cp):
+        assert [v for v in an.violations(q) if v[1].is_point is False] == [], q.name
+
+
+def test_types_are_disjoint_and_cover_the_feasible_set(complex_orbit):
+    for res in (complex_orbit, analyse("ababcbcb")):
+        spans = {t: [(R_.branch, a, b) for R_ in res.regions[t] for a, b in R_.merged()[0]] for t in ro.TYPES}
+        for s, t in ((0, 1), (0, 2), (1, 2)):
+            for k, a, b in spans[ro.TYPES[s]]:
+                assert not any(k == k2 and a < b2 and a2 < b for k2, a2, b2 in spans[ro.TYPES[t]])
+        feas = [(R_.branch, a, b) for R_ in res.regions["feasible"] for a, b in R_.merged()[0]]
+        for k, a, b in feas:            # covered up to finitely many points
+            inner = sorted((a2, b2) for t in ro.TYPES for k2, a2, b2 in spans[t] if k2 == k and a <= a2 and b2 <= b)
+            assert inner and inner[0][0] == a and inner[-1][1] == b
+            assert all(x[1] == y[0] for x, y in zip(inner, inner[1:]))
+
+
+# ------------------------------------------------------------------ JSON and the command line
+def test_json_follows_the_schema(complex_orbit):
+    jsonschema = pytest.importorskip("jsonschema")
+    referencing = pytest.importorskip("referencing")
+    schema = json.loads(SCHEMA_PATH.read_text())
+    registry = referencing.Registry().with_resource(
+        "certify/patterns/pattern.schema.json",
+        referencing.Resource.from_contents(json.loads(PATTERN_SCHEMA.read_text())))
+    doc = json.loads(complex_orbit.json_text())
+    jsonschema.Draft202012Validator(schema, registry=registry).validate(doc)
+    (a,) = doc["attracting"]
+    assert a["pair"] == "complex" and a["lo"]["digits"].startswith("0.2200697861") and a["hi"]["exact"] == "1"
+    bad = dict(doc, attracting=[{"branch": "upper", "lo": a["lo"], "hi": {"digits": "1"}, "pair": "complex"}])
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.Draft202012Validator(schema, registry=registry).validate(bad)
+
+
+@pytest.mark.parametrize("argv, says", [
+    (["orbit", "abx"], "unexpected 'x'"),
+    (["orbit", "abab"], "proper power"),
+    (["orbit", "acab"], "Proposition 4.4"),
+    (["orbit", "ab"], "four-particle"),
+    (["orbit", "[ac]b"], "four-particle"),
+    (["orbit", "ababcb", "--r-range", "1/2", "1/3"], "--r-range"),
+    (["orbit", "ababcb", "--r-range", "x", "1"], "--r-range"),
+])
+def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
+    assert cli.main(argv) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and says in err, err
+    if argv[1] in ("ab", "[ac]b"):
+        with pytest.raises(UsageError):
+            analyse(argv[1])
+
+
+def test_cli_prints_markdown_and_json(capsys):
+    assert cli.main(["orbit", "cbcbabab", "--r-range", "1/10", "1/5"]) == 0     # a rotation and mirror
+    out = capsys.readouterr().out
+    assert "normal form analysed: `ababcbcb`" in out and "## Verdict" in out and "lower branch" in out
+    assert cli.main(["orbit", "ababcbcb", "--json", "--r-range", "1/10", "1/5"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["r_range"] == ["1/10", "1/5"] and doc["attracting"][0]["branch"] == "lower"
