@@ -68,8 +68,9 @@ det M_w/λ: the attracting orbit is the dominant one; otherwise no orbit of w at
 r, and :func:`attempt` says so).  The frame: the real Jordan basis of DF(c) in the
 chart, a rotation-scaling block [[a, b], [-b, a]] for a complex pair (multipliers
 λ_x/λ_y, λ_x/λ̄_y), diagonal for a real pair, so that ‖A‖/α is about the spectral
-radius |ν| and an ellipse contracts even where a box would not.  The radius: the
-largest ρ below the nearest wall, shrunk by 4/5 until the two inequalities are proved.
+radius |ν| and an ellipse contracts even where a box would not.  The radius: 4/5 of the
+distance to the nearest wall, shrunk by 4/5 until everything is proved, then enlarged by
+bisection towards the last refused radius.
 """
 from __future__ import annotations
 
@@ -81,11 +82,13 @@ from certify.algebra.balls import precision
 from certify.dynamics.model import INDEX, LETTERS, check_word
 from certify.dynamics.particles import check_r
 from certify.dynamics.reduction import ORIENTATION, cofactor
+from certify.errors import UsageError
 
 PREC = 256               # working precision of the balls (bits)
 FRAME_BITS = 64          # the frame T and the radius ρ: dyadic rationals with this many bits
 SHRINK = flint.fmpq(4, 5)
 TRIES = 80
+BISECTIONS = 10         # then the radius is enlarged by bisection towards a refused one
 
 
 @dataclass(frozen=True)
@@ -299,6 +302,8 @@ def check(word: str, r, c: tuple, T: tuple, rho: flint.fmpq, pair: str = "given"
                 return f"the wall '{w.name}' is not proved positive on U"
         g0, A, alpha, beta = _return_map(N, c, T, t)
         den = flint.arb(alpha) - rho * _norm(beta)
+        if not den > 0:                                    # the wall at the return, again: R and κ need it
+            return "the return's denominator α - |β|ρ is not proved positive"
         norm_a, norm_g = _spectral(A), _norm(g0)
         R = (norm_g + norm_a * rho) / den
         kappa = norm_a / den + R * _norm(beta) / den
@@ -320,10 +325,10 @@ def attempt(word: str, r, centre: tuple | None = None) -> Trap | str:
     a one-line reason why none was found.  ``word``: the letters c_1 … c_L, the period
     starting from the contact c_0 = c_L (e.g. the normal form of ``certify orbit``);
     ``centre``: an approximate n* (c_t = 1), by default the dominant eigenvector of N_w.
-    UsageError for a bad word or r."""
+    UsageError for a bad word (not over a, b and c, a letter repeated) or r (not a rational in ]0, 1[)."""
     word, r = check_word(word), check_r(r)
     if set(word) != set(LETTERS):
-        return f"{word} is not a word of the four-particle reduction (it needs a, b and c)"
+        raise UsageError(f"{word!r} is not a word of the four-particle reduction of Section 4: it needs a, b and c")
     t = ORIENTATION[word[-1]]
     P = products(word, r)
     with precision(PREC):
@@ -339,14 +344,27 @@ def attempt(word: str, r, centre: tuple | None = None) -> Trap | str:
         T, pair = frame(P[-1], c, t)
         slopes = [(w, _norm([_dot(w.row, col) for col in T])) for w in walls(word, P)]
         rho0 = min(flint.arb(_dot(w.row, c)) / s for w, s in slopes if s > 0)
-        rho = _dyadic(rho0 * flint.arb(SHRINK))
+        rho, bad = _dyadic(rho0 * flint.arb(SHRINK)), _dyadic(rho0)
     why = "no radius tried"
     for _ in range(TRIES):
         found = check(word, r, c, T, rho, pair, P)
         if isinstance(found, Trap):
-            return found
-        why, rho = found, rho * SHRINK
+            return _largest(found, bad, P)
+        why, bad, rho = found, rho, rho * SHRINK
     return f"no trapping ellipse found down to ρ = {_dec(rho)}: {why}"
+
+
+def _largest(good: Trap, bad: flint.fmpq, P: list, steps: int = BISECTIONS) -> Trap:
+    """A larger certified radius between good.radius and a refused one, by bisection."""
+    for _ in range(steps):
+        mid = (good.radius + bad) / 2
+        mid = flint.fmpq((mid.p * 2 ** FRAME_BITS) // mid.q, 2 ** FRAME_BITS)
+        found = check(good.word, good.r, good.centre, good.frame, mid, good.pair, P)
+        if isinstance(found, Trap):
+            good = found
+        else:
+            bad = mid
+    return good
 
 
 def trap(word: str, r) -> Trap | None:
