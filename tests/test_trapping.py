@@ -14,6 +14,7 @@ from certify.numerics.trapping import Trap, attempt, check, products, trap
 COMPLEX = "abacbabcbcabcb"           # complex in-plane pair, attracting on ]0.22007…, 1[
 REAL = "ababcbcb"                    # (ab)^2(cb)^2, real pair
 Q = flint.fmpq
+NEAR_EDGE = Q(999, 1000)            # sample points at this fraction of the radius
 
 
 @pytest.fixture(scope="module")
@@ -81,7 +82,7 @@ def test_dropping_the_face_walls_breaks_the_exact_check(monkeypatch):
     assert not all(_follows(big, u, 1) for u in _boundary(big, 16))
 
 
-def _boundary(T: Trap, count: int, shrink=Q(999, 1000)) -> list:
+def _boundary(T: Trap, count: int, shrink=NEAR_EDGE) -> list:
     """Rational points u of the circle |u| = shrink·ρ: ((1-s²)/(1+s²), 2s/(1+s²))."""
     out = []
     for k in range(count):

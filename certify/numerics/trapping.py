@@ -242,7 +242,7 @@ def _return_map(N, c, T, t) -> tuple:
 
 
 # ------------------------------------------------------------------ the choice of U
-def dominant_normal(N, t: int) -> flint.fmpq | tuple | str:
+def dominant_normal(N, t: int) -> tuple | str:
     """A rational approximation c (c_t = 1) of the eigenvector of N for its eigenvalue of
     strictly largest modulus, or the reason why there is none."""
     roots = [z for z, _m in N.charpoly().complex_roots()]
@@ -285,6 +285,8 @@ def frame(N, c, t: int) -> tuple[tuple, str]:
         for k, z in zip(f, col):
             v[k] = _dyadic(z / top)
         T.append(tuple(v))
+    if T[0][f[0]] * T[1][f[1]] == T[1][f[0]] * T[0][f[1]]:       # degenerate (DF(c) nearly triangular): the chart's axes
+        return E, "axes"
     return tuple(T), pair
 
 
