@@ -63,9 +63,29 @@ def cmd_orbit(args) -> int:
     from certify.patterns import check_range, read
     from certify.patterns.reduction_orbits import analyse as analyse_orbit
     lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
-    read(args.word)                       # validate first: one line, exit 2
+    normal, system, _why = read(args.word)                       # validate first: one line, exit 2
+    if args.trap is not None:
+        return _trap(normal, system, args.trap)
     result = analyse_orbit(args.word, lo, hi)
     print(result.json_text() if args.json else result.markdown())
+    return 0
+
+
+def _trap(normal: str, system: str, r_text: str) -> int:
+    """``orbit WORD --trap R``: the certified trapping ellipse of the attracting orbit at the
+    rational R (certify/numerics/trapping.py), exit 0; or one line saying why none was
+    found, exit 1.  A bad R or a word without a, b and c: UsageError (exit 2)."""
+    from certify.dynamics.particles import check_r
+    from certify.numerics.trapping import attempt
+    r = check_r(r_text)
+    if system != "four":
+        raise UsageError(f"orbit --trap: {normal!r} is a word of the {system} system; the reduction of Section 4 "
+                         "is the four-particle one: a word with a, b and c")
+    found = attempt(normal, r)
+    if isinstance(found, str):
+        print(f"{normal} at r = {r}: no certified trapping neighbourhood: {found}")
+        return 1
+    print("\n".join(found.lines()))
     return 0
 
 
@@ -112,6 +132,9 @@ def register(commands) -> None:
                     "`pattern` (four particles: a, b and c).")
     p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n")
     p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/orbit.schema.json)")
+    p.add_argument("--trap", default=None, metavar="R",
+                   help="instead: certify a trapping ellipse of the attracting orbit at the rational R in ]0,1[ "
+                        "(exit 1 when none is found)")
     p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
                    help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
 

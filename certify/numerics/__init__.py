@@ -12,6 +12,7 @@ billiard reduction (Section 5 of the paper), from collision to collision, in flo
 - :mod:`.thresholds`: the red lines (CDKK thresholds, r_exist) and r_max(n) for any n (mpmath).
 - :mod:`.experiments`: N3-N7 read off the runs, the N4 search, the findings' numbers.
 - :mod:`.stress`: near-singular, long and random orbits against the ball engine.
+- :mod:`.trapping`: certified trapping ellipses of attracting periodic orbits of the reduction.
 """
 from . import experiments, figures, limits, stress, thresholds
 from .engines import ENGINES, OrbitResult, run_orbit
