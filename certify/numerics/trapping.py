@@ -148,7 +148,8 @@ class Trap:
 
     def summary(self) -> str:
         t = "xyz"[self.chart]
-        return (f"{self.word} at r = {self.r}: certified trapping ellipse U at contact {self.word[-1]} (chart n_{t} = 1, "
+        return (f"{self.word} at r = {self.r}: certified trapping ellipse U at contact {self.word[-1]} "
+                f"(chart n_{t} = 1, "
                 f"{self.pair} frame) of radius ρ = {_dec(self.radius)} (contains the chart disc of radius "
                 f"{_dec(self.inner)}, inside that of radius {_dec(self.outer)}); F(U) ⊂ {_dec(self.image)}·U, "
                 f"contraction κ ≤ {_dec(self.contraction)} per period; n* within {_dec(self.distance)} of the centre: "
@@ -285,7 +286,8 @@ def frame(N, c, t: int) -> tuple[tuple, str]:
         for k, z in zip(f, col):
             v[k] = _dyadic(z / top)
         T.append(tuple(v))
-    if T[0][f[0]] * T[1][f[1]] == T[1][f[0]] * T[0][f[1]]:       # degenerate (DF(c) nearly triangular): the chart's axes
+    # degenerate (DF(c) nearly triangular): the chart's axes
+    if T[0][f[0]] * T[1][f[1]] == T[1][f[0]] * T[0][f[1]]:
         return E, "axes"
     return tuple(T), pair
 
@@ -319,7 +321,8 @@ def check(word: str, r, c: tuple, T: tuple, rho: flint.fmpq, pair: str = "given"
         dt = abs(flint.arb(Tf[0][0] * Tf[1][1] - Tf[0][1] * Tf[1][0]))
         inner = rho * dt / sv                              # σ_min(T) = |det T| / σ_max(T)
         return Trap(word, flint.fmpq(r), tuple(c), tuple(T), rho, _upper(kappa), _upper(R / rho),
-                    _upper(norm_g / flint.arb(alpha) / (1 - kappa)), max(_lower(inner), flint.fmpq(0)), _upper(rho * sv), pair)
+                    _upper(norm_g / flint.arb(alpha) / (1 - kappa)), max(_lower(inner), flint.fmpq(0)),
+                    _upper(rho * sv), pair)
 
 
 def attempt(word: str, r, centre: tuple | None = None) -> Trap | str:
