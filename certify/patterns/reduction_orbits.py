@@ -95,6 +95,7 @@ from pathlib import Path
 import flint
 import sympy as sp
 
+from certify.algebra.algebraic import Algebraic, sign_at
 from certify.algebra.branches import BRANCH_NAMES
 from certify.algebra.poly import (
     FIELD,
@@ -109,7 +110,7 @@ from certify.algebra.poly import (
     show,
 )
 from certify.dynamics.model import INDEX, LETTERS
-from certify.dynamics.reduction import ORIENTATION, cofactor_columns
+from certify.dynamics.reduction import ORIENTATION, cofactor, cofactor_columns
 from certify.dynamics.systems import candidate_in
 from certify.errors import UsageError
 
@@ -550,7 +551,7 @@ def _lin(c, x) -> flint.fmpq_poly:
     return flint.fmpq_poly([c, x])
 
 
-def _cramer(M: flint.fmpq_mat, lam_: "Algebraic", sign_at) -> tuple:
+def _cramer(M: flint.fmpq_mat, lam_: Algebraic) -> tuple:
     """(N_1, N_2, N_3) in Q[λ] (degree ≤ 2) with n* = N/N_3 solving (M_wᵀ - λI) n = 0, from the
     first choice of two rows whose determinant N_3 does not vanish at λ; None if none."""
     A = [[_lin(M[j, i], -1 if i == j else 0) for j in range(3)] for i in range(3)]    # Mᵀ - λI
@@ -573,8 +574,6 @@ def orbit_at(word: str, r) -> list[PointOrbit]:
     strict), the type by the same polynomial criteria as :func:`analyse` and the pair by
     the sign of disc_λ cp.  The multiplier modulus is an arb ball (λ/λ_y, λ/λ_z from the
     quadratic factor of cp).  One entry per real eigenvalue, largest first."""
-    from certify.algebra.algebraic import Algebraic, sign_at
-    from certify.dynamics.reduction import cofactor
     normal, system_name, _ = read(word)
     if system_name != "four":
         raise UsageError(f"orbit: {show_word(normal)!r} is a word of the {system_name} system")
@@ -598,7 +597,7 @@ def orbit_at(word: str, r) -> list[PointOrbit]:
         def s(p, lam_=lam_):
             return sign_at(p, lam_)
         failed, kind = "", ""
-        N = _cramer(M, lam_, sign_at)
+        N = _cramer(M, lam_)
         if det == 0 or s(L) * (1 if det > 0 else -1) <= 0:
             failed = "det M / λ"
         elif N is None:
