@@ -534,6 +534,7 @@ class PointOrbit:
     pair: str                         # the in-plane pair: real or complex
     modulus: object                   # the largest multiplier modulus max(|λ/λ_y|, |λ/λ_z|), an arb ball
     failed: str = ""                  # the first condition that fails, if any
+    modulus_one: bool = False         # a multiplier of modulus exactly 1 (decided exactly)
 
     @property
     def branch_name(self) -> str:
@@ -572,7 +573,8 @@ def orbit_at(word: str, r) -> list[PointOrbit]:
     multiples), every sign of the module docstring's conditions decided by
     :func:`certify.algebra.algebraic.sign_at` (0 is a failure: the conditions are
     strict), the type by the same polynomial criteria as :func:`analyse` and the pair by
-    the sign of disc_λ cp.  The multiplier modulus is an arb ball (λ/λ_y, λ/λ_z from the
+    the sign of disc_λ cp; a multiplier of modulus exactly 1 by λ³ = det M_w (a complex
+    pair, |ν|² = λ³/det M_w) or cp'(λ) cp(-λ) = 0 (a real one).  The multiplier modulus is an arb ball (λ/λ_y, λ/λ_z from the
     quadratic factor of cp).  One entry per real eigenvalue, largest first."""
     normal, system_name, _ = read(word)
     if system_name != "four":
@@ -622,7 +624,8 @@ def orbit_at(word: str, r) -> list[PointOrbit]:
         feasible = not failed
         if feasible:
             kind = next((t for t in TYPES if all(s(p) > 0 for p in types[t])), "")
-        out.append(PointOrbit(k, lam_, exists, feasible, kind, pair, _modulus(cp, lam_), failed))
+        one = s(det - L ** 3) == 0 if pair == "complex" else s(d) == 0 or s(minus) == 0
+        out.append(PointOrbit(k, lam_, exists, feasible, kind, pair, _modulus(cp, lam_), failed, one))
     return out
 
 

@@ -8,20 +8,23 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.saving`, :mod:`.plots`: saving figures reproducibly; the certified charts.
 - :mod:`.files`, :mod:`.progress`: atomic writes, the committed findings; progress bars on a
   terminal only.
+- :mod:`.identify`, :mod:`.section5_orbits`: the periodic words of simulated orbits, certified;
+  the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
 from . import files, plots, progress, report, runner, saving
 from .files import load_findings
+from .section5_orbits import explanations
 from .saving import save_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
 from .runner import (CERTIFICATES, ERRATUM, ERRATUM_KINDS, FAIL, FALSE_STATEMENT, MISPRINT, OBSERVED, PASS,
-                     REFUTED_REMARK, STATUSES, Certificate, Check, Context, Mutant, Outcome, altered, certificate, conclude,
+                     REFUTED_REMARK, STATUSES, Certificate, Check, Context, Mutant, Outcome, altered, certificate, committed, conclude,
                      load_all, observe, overridden, quantity, replaced, reset_caches, reworded, run_certificate, run_selected, select,
                      unread)
 
 __all__ = [
     "files", "plots", "progress", "report", "runner", "saving",
-    "load_findings", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
+    "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart", "spectrum_figures",
     "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED", "PASS", "STATUSES", "Certificate", "Check", "Context",
-    "Mutant", "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches", "run_selected",
+    "Mutant", "Outcome", "altered", "certificate", "committed", "conclude", "load_all", "observe", "quantity", "reset_caches", "run_selected",
     "run_certificate", "select", "overridden", "replaced", "reworded", "unread",
 ]
