@@ -157,6 +157,16 @@ def _inside(r: flint.fmpq, window: dict) -> bool:
     return cmp(window["lo"]) > 0 and cmp(window["hi"]) < 0
 
 
+def _modulus(o) -> str:
+    """The certified largest multiplier modulus, as 1 + a ball near 1."""
+    if o is None:
+        return "-"
+    if o.modulus_one:
+        return "exactly 1"
+    m = o.modulus
+    return f"1 + {(m - 1).str(3)}" if abs(m - 1) < 1e-3 else m.str(6)
+
+
 def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
     """(holds, statement, evidence): the committed word re-decided exactly at the committed r."""
     r_ = Fraction(entry["r"])
@@ -169,7 +179,7 @@ def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
         return False, f"explanation: at r = {entry['r']}, {k} of {n} orbits settle on {w}: cannot be decided ({exc})", []
     o = next((x for x in points if x.feasible), None)
     seen = f"at r = {entry['r']}, {k} of {n} orbits settle on {w} (period {len(w)}; {entry['collisions']} collisions)"
-    modulus = f"largest multiplier modulus {'exactly 1' if o and o.modulus_one else o.modulus.str(6) if o else '-'}"
+    modulus = f"largest multiplier modulus {_modulus(o)}"
     if word["kind"] == "attracting":
         window = word["window"]
         holds = (normal == w and o is not None and o.kind == "attracting" and o.pair == word["pair"]
