@@ -320,7 +320,9 @@ PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="
              printed=PRINTED_N5,
              expect=OBSERVED,
              mutants=[overridden({"lo": "0.181", "hi": "0.185"}, "the transitory region moved"),
-                      committed("explained", (ORBIT_FINDINGS, {"word": "abcb"}), "a committed word replaced by abcb")])
+                      committed("explained", (ORBIT_FINDINGS, {"word": "abcb"}), "a committed word replaced by abcb"),
+                      committed("explained", (ORBIT_FINDINGS, {"r": "1/10"}), "the committed r of the first word moved "
+                                "to 1/10, where its orbit is a saddle")])
 def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count, explained):
     """The kind of ω-limit of the 8 orbits at 21 values of r in the printed region and 9 just
     above it (10^4 collisions, 500 kept); the figures are the previews of 5.3b and 5.4."""
@@ -360,7 +362,9 @@ PRINTED_N6 = dict(stripes=("0.1845", "0.1896"), special="0.184525", lo="0.1845",
              printed=PRINTED_N6,
              expect=OBSERVED,
              mutants=[replaced("special", "0.184525", "0.18455", "the special r moved"),
-                      committed("explained", (ORBIT_FINDINGS, {"word": "abcb"}), "a committed word replaced by abcb")])
+                      committed("explained", (ORBIT_FINDINGS, {"word": "abcb"}), "a committed word replaced by abcb"),
+                      committed("explained", (ORBIT_FINDINGS, {"r": "1/10"}), "the committed r of the first word moved "
+                                "to 1/10, where the word has no periodic orbit")])
 def stripes(section5_preview, stripes, special, lo, hi, step, count, explained):
     """Probes at Δr = 2.5e-5 (the step of Figure 7) around each printed stripe: the coverage of
     [0, π] by the 8 orbits drops there; a probe at Δr = 1e-7 around the printed special value:

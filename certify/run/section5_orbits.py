@@ -120,24 +120,23 @@ def write(found: dict, directory) -> str:
 
 
 # ------------------------------------------------------------------ the certificates' side
-def load(source) -> dict | None:
+def load(source, claim: str) -> dict | None:
     """The committed findings: ``source`` the file name under reports/, or ``(name, edits)``
-    with ``edits`` applied to the first entry that has a word (``word``: its first word
-    replaced; ``r``: its r replaced): an altered finding, for the mutation tests."""
+    with ``edits`` applied to the first entry of ``claim`` that has a word (``word``: its
+    first word replaced; ``r``: its r replaced): an altered finding, for the mutation tests."""
     from .files import load_findings
     name, edits = (source, {}) if isinstance(source, str) else source
     found = load_findings(name)
     if not found or not edits:
         return found
     found = json.loads(json.dumps(found))
-    for entries in found["claims"].values():
-        for e in entries:
-            if e["words"]:
-                if "word" in edits:
-                    e["words"][0]["word"] = edits["word"]
-                if "r" in edits:
-                    e["r"] = edits["r"]
-                return found
+    for e in found["claims"].get(claim, []):
+        if e["words"]:
+            if "word" in edits:
+                e["words"][0]["word"] = edits["word"]
+            if "r" in edits:
+                e["r"] = edits["r"]
+            return found
     return found
 
 
@@ -207,7 +206,7 @@ def explanations(claim: str, source) -> list:
     findings, each word re-decided exactly at its r (consistency checks: they FAIL the
     certificate when a committed finding does not hold; they are ours, not the paper's)."""
     from .runner import Check
-    found = load(source)
+    found = load(source, claim)
     if not found or claim not in found.get("claims", {}):
         return [Check(f"explanation: the committed findings {FINDINGS} hold an entry for {claim}", False,
                       [f"run `{COMMAND}`"], counts=False)]
