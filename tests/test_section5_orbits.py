@@ -56,3 +56,10 @@ def test_inside_is_exact_at_the_ends():
 def test_missing_findings_fail():
     (c,) = s5.explanations("N2", "no-such-findings.json")
     assert not holds(c) and "identify --section5" in c.evidence[0]
+
+
+def test_the_report_labels_an_explanation_as_ours_not_the_engines():
+    from certify.run.report import _checks
+    (c,) = [x for x in s5.explanations("N2", s5.FINDINGS) if "abacbabcbcabcb" in x.statement][:1]
+    text = _checks("As printed", [c])
+    assert "certified explanation, beside the observation" in text and "consistency check of the engine" not in text

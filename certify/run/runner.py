@@ -126,6 +126,10 @@ def conclude(printed: list[Check], corrected: list[Check] | None = None,
 
 
 AGREES = "The observation agrees with the printed statement."
+# The statement of a check that explains an observation (N2, N5, N6: a committed word
+# re-certified at its r): it must hold, like a consistency check, but it is our certified
+# explanation beside the observation, not the engine's consistency nor the paper's claim.
+EXPLANATION = "explanation:"
 DISAGREES = "The observation does not agree with the printed statement"
 
 

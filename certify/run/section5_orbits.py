@@ -47,6 +47,7 @@ from certify.patterns.reduction_orbits import orbit_at
 
 from .files import write_atomic
 from .identify import MAX_PERIOD, orbit_analysis, period_of, window_at
+from .runner import EXPLANATION, Check
 
 FINDINGS = "section5-orbits.json"
 SCHEMA = "certify-section5-orbits"
@@ -175,7 +176,7 @@ def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
         normal = read(w)[0]
         points = orbit_at(normal, r)
     except UsageError as exc:             # a word the grammar refuses: the finding cannot stand
-        return False, f"explanation: at r = {entry['r']}, {k} of {n} orbits settle on {w}: cannot be decided ({exc})", []
+        return False, f"{EXPLANATION} at r = {entry['r']}, {k} of {n} orbits settle on {w}: cannot be decided ({exc})", []
     o = next((x for x in points if x.feasible), None)
     seen = f"at r = {entry['r']}, {k} of {n} orbits settle on {w} (period {len(w)}; {entry['collisions']} collisions)"
     modulus = f"largest multiplier modulus {_modulus(o)}"
@@ -185,17 +186,17 @@ def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
                  and o.branch_name == word["branch"] and (window is None or _inside(r, window)))
         where = f"; its window ]{_end(window['lo'])}, {_end(window['hi'])}[" if window else ""
         pair = "complex in-plane pair: not a collapse" if word["pair"] == "complex" else "real in-plane pair"
-        text = (f"explanation: {seen}, an attracting periodic orbit of the reduction ({word['branch']} branch, {pair}, "
+        text = (f"{EXPLANATION} {seen}, an attracting periodic orbit of the reduction ({word['branch']} branch, {pair}, "
                 f"{modulus}), certified at r exactly{where}")
     elif word["kind"] in ("saddle", "repelling"):
         holds = normal == w and o is not None and o.kind == word["kind"] and not o.modulus_one
-        text = (f"explanation: {seen}: its periodic orbit of the reduction is {'a saddle' if word['kind'] == 'saddle' else 'repelling'} "
+        text = (f"{EXPLANATION} {seen}: its periodic orbit of the reduction is {'a saddle' if word['kind'] == 'saddle' else 'repelling'} "
                 f"at r ({word['pair']} in-plane pair, {modulus}), certified at r exactly: the orbits are still a "
                 "transient in that word after the collisions run, not on an attracting periodic orbit")
     else:
         holds = normal == w and o is None and any(x.modulus_one for x in points) == word["modulus_one"]
         one = ("; its eigen-normal's multipliers have modulus exactly 1 (λ³ = det M_w)" if word["modulus_one"] else "")
-        text = (f"explanation: {seen}: no periodic orbit of the reduction with this word at r (the eigen-normal n* "
+        text = (f"{EXPLANATION} {seen}: no periodic orbit of the reduction with this word at r (the eigen-normal n* "
                 f"fails {word['failed'] or 'a condition'}){one}, certified at r exactly: the ω-limit set is not a "
                 "periodic orbit of the reduction with this word")
     return holds, text, []
@@ -205,10 +206,9 @@ def explanations(claim: str, source) -> list:
     """The checks "explanation: ..." of claim ``claim`` (N2, N5, N6) from the committed
     findings, each word re-decided exactly at its r (consistency checks: they FAIL the
     certificate when a committed finding does not hold; they are ours, not the paper's)."""
-    from .runner import Check
     found = load(source, claim)
     if not found or claim not in found.get("claims", {}):
-        return [Check(f"explanation: the committed findings {FINDINGS} hold an entry for {claim}", False,
+        return [Check(f"{EXPLANATION} the committed findings {FINDINGS} hold an entry for {claim}", False,
                       [f"run `{COMMAND}`"], counts=False)]
     out = []
     for entry in found["claims"][claim]:
@@ -222,6 +222,6 @@ def explanations(claim: str, source) -> list:
         if entry["breaks"]:
             rest.append(f"{entry['breaks']} of {entry['orbits']} orbits stopped on a break")
         if rest:
-            out.append(Check(f"explanation: at r = {entry['r']}, " + "; ".join(rest) + " (observed, unexplained)",
+            out.append(Check(f"{EXPLANATION} at r = {entry['r']}, " + "; ".join(rest) + " (observed, unexplained)",
                              True, [], counts=False))
     return out
