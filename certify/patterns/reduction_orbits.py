@@ -611,15 +611,16 @@ def orbit_at(word: str, r) -> list[PointOrbit]:
                 run.append(n)
                 n = tuple(sum((row[m] * n[m] for m in range(3)), flint.fmpq_poly([])) for row in rows[letter])
             if s(run[0][0]) * s3 >= 0:
-                failed = "n*_x (inside the face b)"
+                failed = "n*_x (inside the face b)" + (" = 0" if s(run[0][0]) == 0 else "")
             letters = normal[-1] + normal
             for j in range(1, len(normal) + 1):
                 if failed:
                     break
                 i, nxt = INDEX[letters[j - 1]], INDEX[letters[j]]
                 sigma = 1 if nxt == (i + 1) % 3 else -1
-                if sigma * s(run[j - 1][i]) * s3 <= 0:
-                    failed = f"n_{j - 1}[{'xyz'[i]}] (contact {j}: {letters[j]})"
+                sign = s(run[j - 1][i])
+                if sigma * sign * s3 <= 0:
+                    failed = f"n_{j - 1}[{'xyz'[i]}] (contact {j}: {letters[j]})" + (" = 0: undecided" if sign == 0 else "")
         exists = not failed or failed.startswith("n_")
         feasible = not failed
         if feasible:

@@ -196,9 +196,12 @@ def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
     else:
         holds = normal == w and o is None and any(x.modulus_one for x in points) == word["modulus_one"]
         one = ("; its eigen-normal's multipliers have modulus exactly 1 (λ³ = det M_w)" if word["modulus_one"] else "")
+        failed = word["failed"] or "a condition"
+        where = (f"lies on the boundary of the word's cell, {failed}" if failed.endswith("undecided")
+                 else f"fails {failed}")
         text = (f"{EXPLANATION} {seen}: no periodic orbit of the reduction with this word at r (the eigen-normal n* "
-                f"fails {word['failed'] or 'a condition'}){one}, certified at r exactly: the ω-limit set is not a "
-                "periodic orbit of the reduction with this word")
+                f"{where}){one}, certified at r exactly: the ω-limit set is not a periodic orbit of the reduction "
+                "with this word")
     return holds, text, []
 
 
