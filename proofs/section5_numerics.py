@@ -26,6 +26,8 @@ from certify.run import (
     OBSERVED,
     Check,
     certificate,
+    committed,
+    explanations,
     load_findings,
     observe,
     overridden,
@@ -35,6 +37,7 @@ from certify.run import (
 )
 
 PAPER_FINDINGS = "numerics-paper.json"
+ORBIT_FINDINGS = "section5-orbits.json"   # `certify identify --section5`: the periodic orbits behind N2, N5, N6
 N4_FINDINGS = "numerics-n4.json"
 
 
@@ -125,7 +128,7 @@ def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
 
 PRINTED_N2 = dict(lo="0.072", hi="0.999", step="2.5\\times 10^{-4}", count="3709",
                   windows_below="0.17", chaos_until="0.9", discrete_near="1", segment_at="(0.08,\\pi/2)",
-                  breaks_near="0.072")
+                  breaks_near="0.072", explained=ORBIT_FINDINGS)
 NEAR = 0.001     # "close to the region r ≃ 0.072" (l. 1090): within 10^-3 of it, either side
 SEGMENT = 0.005  # "a short horizontal segment ... around (0.08, π/2)" (l. 1089): breaks within 0.005 of 0.08
 
@@ -136,9 +139,13 @@ SEGMENT = 0.005  # "a short horizontal segment ... around (0.08, π/2)" (l. 1089
              "(0.08, π/2), the breaks accumulated close to r ≃ 0.072.",
              needs=("section5_preview",), printed=PRINTED_N2,
              expect="OBSERVED, disagrees",
-             mutants=[overridden({"windows_below": "0.9"}, "the edge of the windows moved from 0.17 to 0.9")])
+             mutants=[overridden({"windows_below": "0.9"}, "the edge of the windows moved from 0.17 to 0.9"),
+                      committed("explained", (ORBIT_FINDINGS, {"word": "abcb"}), "the committed word at r = 1/5 "
+                                "replaced by abcb, repelling there"),
+                      committed("explained", (ORBIT_FINDINGS, {"r": "1/10"}), "the committed r of the first word "
+                                "moved to 1/10, outside its window")])
 def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until, discrete_near, segment_at,
-               breaks_near):
+               breaks_near, explained):
     """The preview of Figure 5.1, probes with the paper's lengths around the printed segment
     of breaks (l. 1089) and near r = 0.072 on both sides of the figure's lower end (l. 1090)."""
     lo_, hi_, step_, count_ = number(lo), number(hi), number(step.replace("{", "").replace("}", "")), number(count)
@@ -191,7 +198,7 @@ def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until
               if not breaks.size else "")
     note = paper_note("5.1", lambda s: f"{s['r'][2]} values of r, {breaks_text(s['breaks'])}; ω-limits per "
                       "r: " + ", ".join(f"{v} {k}" for k, v in s["kinds"].items()) + ".") + figure_links("5.1")
-    return observe(checks, figures=[section5_figure(d)], note=note, reason=reason)
+    return observe(checks + explanations("N2", explained), figures=[section5_figure(d)], note=note, reason=reason)
 
 
 def breaks_text(b: dict) -> str:
@@ -314,7 +321,8 @@ def below_0078(r_below, n_from, accumulate_above):
 # --------------------------------------------------------------------------
 # N5: the transitory region
 
-PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="10^{-6}", count="5001")
+PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="10^{-6}", count="5001",
+                  explained=ORBIT_FINDINGS)
 
 
 @certificate("N5", "l. 1148-1160",
@@ -322,8 +330,11 @@ PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="
              "Figure 9 (fig:Simul_3) at Δr = 1e-6 (5001 values, 0.171 ≤ r ≤ 0.176).", needs=("section5_preview",),
              printed=PRINTED_N5,
              expect=OBSERVED,
-             mutants=[overridden({"lo": "0.181", "hi": "0.185"}, "the transitory region moved")])
-def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count):
+             mutants=[overridden({"lo": "0.181", "hi": "0.185"}, "the transitory region moved"),
+                      committed("explained", (ORBIT_FINDINGS, {"word": "abcb"}), "a committed word replaced by abcb"),
+                      committed("explained", (ORBIT_FINDINGS, {"r": "1/10"}), "the committed r of the first word moved "
+                                "to 1/10, where its orbit is a saddle")])
+def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count, explained):
     """The kind of ω-limit of the 8 orbits at 21 values of r in the printed region and 9 just
     above it (10^4 collisions, 500 kept); the figures are the previews of 5.3b and 5.4."""
     lo_, hi_, flo, fhi = (number(x) for x in (lo, hi, fig_lo, fig_hi))
@@ -345,14 +356,15 @@ def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count):
     ]
     note = paper_note("n5", lambda s: f"finitely many points at {s['finite']:.0%} of {s['of']} values of r in "
                       f"[0.172, 0.176]; the numbers of points seen: {s['counts']}.") + figure_links("5.3b", "5.4")
-    return observe(checks, figures=[section5_figure(section5_preview["5.3b"]), section5_figure(d)], note=note)
+    return observe(checks + explanations("N5", explained),
+                   figures=[section5_figure(section5_preview["5.3b"]), section5_figure(d)], note=note)
 
 
 # --------------------------------------------------------------------------
 # N6: thin stripes
 
 PRINTED_N6 = dict(stripes=("0.1845", "0.1896"), special="0.184525", lo="0.1845", hi="0.1846", step="10^{-7}",
-                  count="1001")
+                  count="1001", explained=ORBIT_FINDINGS)
 
 
 @certificate("N6", "l. 1162-1208",
@@ -360,8 +372,11 @@ PRINTED_N6 = dict(stripes=("0.1845", "0.1896"), special="0.184525", lo="0.1845",
              "Figure 10 (fig:Simul_2_zoom_3); Figures 11a-11c (fig:Simul_4, fig:Simul_5, fig:Simul_6) at Δr = 1e-7 (1001 values, 0.1845 ≤ r ≤ 0.1846).", needs=("section5_preview",),
              printed=PRINTED_N6,
              expect=OBSERVED,
-             mutants=[replaced("special", "0.184525", "0.18455", "the special r moved")])
-def stripes(section5_preview, stripes, special, lo, hi, step, count):
+             mutants=[replaced("special", "0.184525", "0.18455", "the special r moved"),
+                      committed("explained", (ORBIT_FINDINGS, {"word": "abcb"}), "a committed word replaced by abcb"),
+                      committed("explained", (ORBIT_FINDINGS, {"r": "1/10"}), "the committed r of the first word moved "
+                                "to 1/10, where the word has no periodic orbit")])
+def stripes(section5_preview, stripes, special, lo, hi, step, count, explained):
     """Probes at Δr = 2.5e-5 (the step of Figure 7) around each printed stripe: the coverage of
     [0, π] by the 8 orbits drops there; a probe at Δr = 1e-7 around the printed special value:
     the r where the widest cluster of any orbit is narrowest, and whether every orbit is discrete."""
@@ -395,7 +410,7 @@ def stripes(section5_preview, stripes, special, lo, hi, step, count):
                       f"({s['coverages']}); in Figure 11a the "
                       f"widest cluster is narrowest at r = {s['special_r']:.7f} ({s['special_width']:.1e} rad).") \
         + figure_links("5.5", "5.6", "5.7", "5.8")
-    return observe(checks, figures=figs, note=note)
+    return observe(checks + explanations("N6", explained), figures=figs, note=note)
 
 
 # --------------------------------------------------------------------------

@@ -133,6 +133,10 @@ def cmd_identify(args) -> int:
     """Simulate, read the periodic word each orbit settles on, certify it with `orbit`:
     one line per orbit, or JSON with --json (certify.run.identify)."""
     from certify.run import identify as ident
+    if args.section5:
+        return section5_findings(args)
+    if args.out is not None:
+        raise UsageError("--out goes with --section5 (the findings file); without it identify prints")
     if (args.r is None) == (args.r_range is None):
         raise UsageError("give --r R [R ...] or --r-range LO HI COUNT")
     rs = ident.rationals(args.r) if args.r is not None else ident.r_grid(*args.r_range)
@@ -142,6 +146,19 @@ def cmd_identify(args) -> int:
     else:
         for x in found:
             print(x.line())
+    return 0
+
+
+def section5_findings(args) -> int:
+    """``identify --section5``: the plan of certify.run.section5_orbits, written to
+    DIR/section5-orbits.json (the findings the certificates N2, N5, N6 re-certify)."""
+    from certify.run import section5_orbits
+    if args.r is not None or args.r_range is not None or args.json:
+        raise UsageError("--section5 runs its own plan of r (certify.run.section5_orbits.PLAN): "
+                         "not with --r, --r-range or --json")
+    out = ensure_writable(args.out if args.out is not None else DEFAULT_OUT)
+    found = section5_orbits.findings(progress=lambda s: print(s, flush=True))
+    print(f"wrote {section5_orbits.write(found, out)} ({found['seconds']} s)")
     return 0
 
 
@@ -199,6 +216,11 @@ def register(commands) -> None:
                    help="collisions simulated per orbit (default: 10000)")
     p.add_argument("--json", action="store_true",
                    help="print JSON: a list of orbits, each with r, theta0, phi0, word and window")
+    p.add_argument("--section5", action="store_true",
+                   help="run the plan of Section 5 (N2 near r = 1 and 0.2-0.9, N5, N6; 10^5 collisions near 1) and "
+                        "write DIR/section5-orbits.json, the findings the certificates re-certify (minutes)")
+    p.add_argument("--out", type=Path, default=None, metavar="DIR",
+                   help="with --section5: the output directory (default: reports)")
 
     p = add_command(commands, "stress", cmd_stress, help="stress the numerical engines against the certified one",
                     description="Near-singular data, 1000 seeded random orbits of 2000 collisions over "

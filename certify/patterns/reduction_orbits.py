@@ -95,6 +95,7 @@ from pathlib import Path
 import flint
 import sympy as sp
 
+from certify.algebra.algebraic import Algebraic, sign_at
 from certify.algebra.branches import BRANCH_NAMES
 from certify.algebra.poly import (
     FIELD,
@@ -109,7 +110,7 @@ from certify.algebra.poly import (
     show,
 )
 from certify.dynamics.model import INDEX, LETTERS
-from certify.dynamics.reduction import ORIENTATION, cofactor_columns
+from certify.dynamics.reduction import ORIENTATION, cofactor, cofactor_columns
 from certify.dynamics.systems import candidate_in
 from certify.errors import UsageError
 
@@ -517,3 +518,126 @@ def normal_at(word: str, r, branch: int, bits: int = 256) -> tuple:
     N = left_eigenvector(cand.Mq)
     v = [e(lt, r) for e in N]
     return (v[0] / v[2], v[1] / v[2], flint.fmpq(1))
+
+
+# ------------------------------------------------------------------ the analysis at one rational r
+@dataclass
+class PointOrbit:
+    """The periodic orbit (b, n*) of one real eigenvalue λ of M_w at a rational r, decided
+    exactly (:func:`orbit_at`)."""
+
+    branch: int                       # 0 = the largest real eigenvalue of M_w at r
+    lam: object                       # λ, an Algebraic
+    exists: bool                      # n* oriented, inside the face b, det M_w / λ > 0
+    feasible: bool                    # moreover every contact of w decided strictly from n*
+    kind: str                         # attracting, saddle, repelling, or "" (a multiplier of modulus 1, or no orbit)
+    pair: str                         # the in-plane pair: real or complex
+    modulus: object                   # the largest multiplier modulus max(|λ/λ_y|, |λ/λ_z|), an arb ball
+    failed: str = ""                  # the first condition that fails, if any
+    modulus_one: bool = False         # a multiplier of modulus exactly 1 (decided exactly)
+
+    @property
+    def branch_name(self) -> str:
+        return BRANCH_NAMES[self.branch] if self.branch < len(BRANCH_NAMES) else str(self.branch)
+
+
+def _matrix_at(word: str, r: flint.fmpq) -> flint.fmpq_mat:
+    """M_w = K_{c_L} ··· K_{c_1} at the rational r, over Q."""
+    from certify.dynamics.model import word_matrix_flint
+    return flint.fmpq_mat([[e(r) for e in row] for row in word_matrix_flint(word)])
+
+
+def _lin(c, x) -> flint.fmpq_poly:
+    """The polynomial c + x λ (rationals c, x)."""
+    return flint.fmpq_poly([c, x])
+
+
+def _cramer(M: flint.fmpq_mat, lam_: Algebraic) -> tuple:
+    """(N_1, N_2, N_3) in Q[λ] (degree ≤ 2) with n* = N/N_3 solving (M_wᵀ - λI) n = 0, from the
+    first choice of two rows whose determinant N_3 does not vanish at λ; None if none."""
+    A = [[_lin(M[j, i], -1 if i == j else 0) for j in range(3)] for i in range(3)]    # Mᵀ - λI
+    for rows in ((0, 1), (0, 2), (1, 2)):
+        (a11, a12), (a21, a22) = [(A[i][0], A[i][1]) for i in rows]
+        b1, b2 = (-A[i][2] for i in rows)
+        N = (b1 * a22 - a12 * b2, a11 * b2 - b1 * a21, a11 * a22 - a12 * a21)
+        if sign_at(N[2], lam_) != 0:
+            return N
+    return None
+
+
+def orbit_at(word: str, r) -> list[PointOrbit]:
+    """The periodic orbits of the reduction with the word ``word`` (any rotation or mirror)
+    at one rational r, decided exactly: M_w over Q, cp over Q, its real roots λ as
+    algebraic numbers (Sturm), n* in Q[λ] (Cramer), its run n_k = cof(K_{c_k}) n_{k-1}
+    (the integer rows of :func:`certify.dynamics.reduction.cofactor`, positive
+    multiples), every sign of the module docstring's conditions decided by
+    :func:`certify.algebra.algebraic.sign_at` (0 is a failure: the conditions are
+    strict), the type by the same polynomial criteria as :func:`analyse` and the pair by
+    the sign of disc_λ cp; a multiplier of modulus exactly 1 by λ³ = det M_w (a complex
+    pair, |ν|² = λ³/det M_w) or cp'(λ) cp(-λ) = 0 (a real one).  The multiplier modulus is an
+    arb ball (λ/λ_y, λ/λ_z from the quadratic factor of cp).  One entry per real eigenvalue, largest first."""
+    normal, system_name, _ = read(word)
+    if system_name != "four":
+        raise UsageError(f"orbit: {show_word(normal)!r} is a word of the {system_name} system")
+    r = flint.fmpq(r)
+    if not 0 < r < 1:
+        raise UsageError(f"r must lie in ]0,1[, got {r}")
+    M = _matrix_at(normal, r)
+    cp = flint.fmpq_poly(M.charpoly())                     # monic: λ³ + a λ² + b λ + c
+    c, b, a = (cp[k] for k in range(3))
+    det = -c
+    disc = 18 * a * b * c - 4 * a ** 3 * c + a ** 2 * b ** 2 - 4 * b ** 3 - 27 * c ** 2
+    pair = "complex" if disc < 0 else "real"
+    L = flint.fmpq_poly([0, 1])
+    minus = flint.fmpq_poly([cp[k] * (-1) ** k for k in range(4)])          # cp(-λ)
+    d = cp.derivative()
+    types = {"attracting": [d, -L * minus, L * (det - L ** 3)], "repelling": [d, -L * minus, L * (L ** 3 - det)],
+             "saddle": [L * d * minus]}
+    rows = {x: cofactor(x, r) for x in LETTERS}
+    out = []
+    for k, lam_ in enumerate(Algebraic.roots(cp)[::-1]):
+        def s(p, lam_=lam_):
+            return sign_at(p, lam_)
+        failed, kind = "", ""
+        N = _cramer(M, lam_)
+        if det == 0 or s(L) * (1 if det > 0 else -1) <= 0:
+            failed = "det M / λ"
+        elif N is None:
+            failed = "n* (M_wᵀ - λI of rank < 2)"
+        else:
+            s3 = s(N[2])
+            run, n = [], N
+            for letter in normal:
+                run.append(n)
+                n = tuple(sum((row[m] * n[m] for m in range(3)), flint.fmpq_poly([])) for row in rows[letter])
+            if s(run[0][0]) * s3 >= 0:
+                failed = "n*_x (inside the face b)" + (" = 0" if s(run[0][0]) == 0 else "")
+            letters = normal[-1] + normal
+            for j in range(1, len(normal) + 1):
+                if failed:
+                    break
+                i, nxt = INDEX[letters[j - 1]], INDEX[letters[j]]
+                sigma = 1 if nxt == (i + 1) % 3 else -1
+                sign = s(run[j - 1][i])
+                if sigma * sign * s3 <= 0:
+                    failed = (f"n_{j - 1}[{'xyz'[i]}] (contact {j}: {letters[j]})"
+                              + (" = 0: undecided" if sign == 0 else ""))
+        exists = not failed or failed.startswith("n_")
+        feasible = not failed
+        if feasible:
+            kind = next((t for t in TYPES if all(s(p) > 0 for p in types[t])), "")
+        one = s(det - L ** 3) == 0 if pair == "complex" else s(d) == 0 or s(minus) == 0
+        out.append(PointOrbit(k, lam_, exists, feasible, kind, pair, _modulus(cp, lam_), failed, one))
+    return out
+
+
+def _modulus(cp: flint.fmpq_poly, lam_, prec: int = 128):
+    """max(|λ/λ_y|, |λ/λ_z|) as an arb ball: λ_y, λ_z the roots of cp(Λ)/(Λ - λ) =
+    Λ² + (a + λ)Λ + (b + λ(a + λ)), in ball arithmetic at ``prec`` bits."""
+    x = flint.acb(lam_.arb(prec))
+    a, b = flint.acb(flint.arb(cp[2])), flint.acb(flint.arb(cp[1]))
+    p = a + x
+    q = b + x * p
+    root = (p * p - 4 * q).sqrt()
+    ys = ((-p + root) / 2, (-p - root) / 2)
+    return max((abs(x / y) for y in ys), key=lambda m: m.mid())

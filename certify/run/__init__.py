@@ -10,6 +10,8 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.saving`, :mod:`.plots`: saving figures reproducibly; the certified charts.
 - :mod:`.files`, :mod:`.progress`: atomic writes, the committed findings; progress bars on a
   terminal only.
+- :mod:`.identify`, :mod:`.section5_orbits`: the periodic words of simulated orbits, certified;
+  the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
 from . import checks, files, plots, progress, report, runner, saving
 from .checks import check_of, combined, concluded, count_check, digits_check, eliminant_check, identity, result_check
@@ -33,6 +35,7 @@ from .runner import (
                      Outcome,
                      altered,
                      certificate,
+                     committed,
                      conclude,
                      load_all,
                      observe,
@@ -47,15 +50,17 @@ from .runner import (
                      unread,
 )
 from .saving import save_figure
+from .section5_orbits import explanations
 
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
-    "load_findings", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart",
+    "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart",
     "spectrum_figures",
     "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED",
     "PASS", "STATUSES", "Certificate", "Check", "Context",
-    "Mutant", "Outcome", "altered", "certificate", "conclude", "load_all", "observe", "quantity", "reset_caches",
+    "Mutant", "Outcome", "altered", "certificate", "committed", "conclude", "load_all", "observe", "quantity",
+    "reset_caches",
     "run_selected",
     "run_certificate", "select", "overridden", "replaced", "reworded", "unread",
 ]

@@ -22,7 +22,17 @@ from pathlib import Path
 from urllib.parse import quote
 
 from certify.run.files import write_atomic
-from certify.run.runner import ERRATUM, ERRATUM_KINDS, FAIL, OBSERVED, PASS, STATUSES, corrected_statement, holds
+from certify.run.runner import (
+    ERRATUM,
+    ERRATUM_KINDS,
+    EXPLANATION,
+    FAIL,
+    OBSERVED,
+    PASS,
+    STATUSES,
+    corrected_statement,
+    holds,
+)
 
 PAPER = ("T. Dolmaire and E. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
          "particles: asymmetric collision sequences and spherical billiard reduction*, "
@@ -342,6 +352,12 @@ def _table(results) -> str:
 
 
 SAME = "(as above)"
+def _role(check) -> str:
+    if check.counts:
+        return ""
+    if str(check.statement).startswith(EXPLANATION):
+        return " *(certified explanation, beside the observation: not the paper's claim)*"
+    return " *(consistency check of the engine, not evidence)*"
 
 
 def _checks(title: str, checks, shown: set | None = None) -> str:
@@ -350,7 +366,7 @@ def _checks(title: str, checks, shown: set | None = None) -> str:
     shown = set() if shown is None else shown
     items = []
     for check in checks:
-        role = "" if check.counts else " *(consistency check of the engine, not evidence)*"
+        role = _role(check)
         evidence = [str(e) for e in check.evidence]
         repeated = bool(evidence) and all(e in shown for e in evidence)
         items.append(_bullet(f"{MARK[holds(check)]} {_one_line(check.statement)}{role}"

@@ -127,6 +127,10 @@ def conclude(printed: list[Check], corrected: list[Check] | None = None,
 
 
 AGREES = "The observation agrees with the printed statement."
+# The statement of a check that explains an observation (N2, N5, N6: a committed word
+# re-certified at its r): it must hold, like a consistency check, but it is our certified
+# explanation beside the observation, not the engine's consistency nor the paper's claim.
+EXPLANATION = "explanation:"
 DISAGREES = "The observation does not agree with the printed statement"
 
 
@@ -151,8 +155,11 @@ def observe(printed: list[Check], evidence: list[str] | None = None, figures: li
 # The kinds of mutant: a constant (a coefficient, a digit, a letter, a sign) altered; the
 # wording of a printed condition altered so that it is false (the altered text must show in a
 # failing printed check); a wording the grammar does not read (it must be refused, quoted).
-CONSTANT, WORDING, UNREAD = "constant", "wording", "unread"
-MUTANT_KINDS = (CONSTANT, WORDING, UNREAD)
+# A fourth kind, committed: a committed finding that a certificate re-certifies (a word and its
+# r in reports/section5-orbits.json) altered; the certificate FAILs, an observation too (the
+# finding is ours, certified, not the paper's claim).
+CONSTANT, WORDING, UNREAD, COMMITTED = "constant", "wording", "unread", "committed"
+MUTANT_KINDS = (CONSTANT, WORDING, UNREAD, COMMITTED)
 
 
 @dataclass(frozen=True)
@@ -187,6 +194,12 @@ def replaced(name: str, old: str, new: str, why: str = "", kind: str = CONSTANT)
 def overridden(values: dict, why: str = "") -> Mutant:
     """Printed inputs replaced whole (a word, a tuple of digits, two ends together)."""
     return Mutant(CONSTANT, tuple((name, None, v) for name, v in values.items()), why)
+
+
+def committed(name: str, new, why: str = "") -> Mutant:
+    """The committed findings the input ``name`` points to, altered (``new``: what the
+    certificate reads instead): FAIL, for an observation too."""
+    return Mutant(COMMITTED, ((name, None, new),), why)
 
 
 def reworded(name: str, old: str, new: str, why: str = "") -> Mutant:

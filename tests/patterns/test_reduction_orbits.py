@@ -207,3 +207,56 @@ def test_cli_prints_markdown_and_json(capsys):
     assert cli.main(["orbit", "ababcbcb", "--json", "--r-range", "1/10", "1/5"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["r_range"] == ["1/10", "1/5"] and doc["attracting"][0]["branch"] == "lower"
+
+
+# ------------------------------------------------------------------ the point check against the interval analysis
+def _stage_at(res, r) -> dict:
+    """{branch: the type of the interval analysis at the rational r, or 'feasible' / 'exists' / ''}."""
+    x = Algebraic.rational(Q(r))
+    out = {}
+    for stage in ("exists", "feasible") + ro.TYPES:
+        for R_ in res.regions[stage]:
+            if any(lo < x < hi for lo, hi in R_.merged()[0]):
+                out[R_.branch] = stage
+    return out
+
+
+@pytest.mark.parametrize("word, rs", [
+    (COMPLEX, ["1/20", "1/5", "3/10", "1/2", "9/10"]),
+    ("(ab)^2(cb)^2", ["1/10", "1/8", "1/6", "7/40", "1/2"]),
+])
+def test_orbit_at_agrees_with_the_interval_analysis(word, rs):
+    """At rational points the exact point decision (M_w over Q, its real roots, every
+    contact sign) gives, branch by branch, the stage the interval analysis certifies on
+    the r-interval containing the point: attracting / saddle / repelling, feasible, exists."""
+    res = analyse(word)
+    for r in rs:
+        interval = _stage_at(res, r)
+        point = {}
+        for o in ro.orbit_at(word, r):
+            stage = o.kind or ("feasible" if o.feasible else "exists" if o.exists else "")
+            if stage:
+                point[o.branch] = stage
+        assert point == interval, (word, r, point, interval)
+
+
+def test_orbit_at_multiplier_modulus_and_pair():
+    """At r = 3/10 the complex attractor has |ν|² = λ³ / det M_w exactly (a complex pair):
+    the ball of the largest modulus contains the square root of that algebraic number."""
+    (o,) = [x for x in ro.orbit_at(COMPLEX, "3/10") if x.feasible]
+    assert o.kind == "attracting" and o.pair == "complex" and o.modulus < 1
+    M = ro._matrix_at(read_normal(COMPLEX), Q("3/10"))
+    square = o.lam.arb(128) ** 3 / flint.arb(M.det())
+    assert o.modulus.overlaps(square.sqrt())
+
+
+def read_normal(word):
+    from certify.patterns import read
+    return read(word)[0]
+
+
+def test_orbit_at_refuses_bad_input():
+    with pytest.raises(UsageError):
+        ro.orbit_at(COMPLEX, "3/2")
+    with pytest.raises(UsageError):
+        ro.orbit_at("abab", "1/2")

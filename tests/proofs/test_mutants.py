@@ -6,7 +6,9 @@ over all certificates in the session's shared context (tests/shared.py).
 - wording: a printed condition reworded so that it is false: FAIL, and the altered text is
   shown in a failing printed check (the certificate read it, it did not only run);
 - unread: a wording the grammar does not read, or the certificate cannot evaluate: FAIL with
-  that reason, the text quoted (never a guess).
+  that reason, the text quoted (never a guess);
+- committed: a committed finding the certificate re-certifies (a word, its r) altered: FAIL,
+  for an observation too (the finding is ours, not the paper's).
 
 An observation (Section 5) is never FAIL on the paper's figures: altered, it disagrees on one
 more printed check.  Each certificate's status as printed is the one it declares (``expect``,
@@ -14,7 +16,18 @@ as the report labels it)."""
 import pytest
 
 from certify.run.report import status_label
-from certify.run.runner import CERTIFICATES, CONSTANT, FAIL, MUTANT_KINDS, OBSERVED, UNREAD, WORDING, claim_key, holds
+from certify.run.runner import (
+    CERTIFICATES,
+    COMMITTED,
+    CONSTANT,
+    FAIL,
+    MUTANT_KINDS,
+    OBSERVED,
+    UNREAD,
+    WORDING,
+    claim_key,
+    holds,
+)
 from tests.shared import as_printed, outcome, read, registry
 
 IDS = sorted(registry(), key=claim_key)          # collection needs the ids: the session's one registration
@@ -47,7 +60,9 @@ def test_mutant_fails(id, k):
     m = CERTIFICATES[id].mutants[k]
     over = m.overrides(id)
     o = outcome(id, **over)
-    if CERTIFICATES[id].expect.startswith(OBSERVED):
+    if m.kind == COMMITTED:
+        assert o.status == FAIL, (m.why, o.status, failing(o))
+    elif CERTIFICATES[id].expect.startswith(OBSERVED):
         assert o.status == OBSERVED and o.agrees is False, (m.why, o.status, o.note)
         assert len(failing(o)) > len(failing(as_printed(id))), (m.why, failing(o))
     else:

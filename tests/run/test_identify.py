@@ -58,6 +58,8 @@ def test_ab_cb_orbit_is_identified_in_its_window():
     (["identify", "--r-range", "0.2", "0.1", "3"], "LO < HI"),
     (["identify", "--r-range", "0.1", "0.2", "z"], "COUNT"),
     (["identify", "--r", "0.3", "--orbits", "0"], "positive"),
+    (["identify", "--section5", "--r", "0.3"], "--section5"),
+    (["identify", "--r", "0.3", "--out", "somewhere"], "--out"),
 ])
 def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
     assert cli.main(argv) == 2

@@ -1,0 +1,66 @@
+"""The committed findings of Section 5 (reports/section5-orbits.json, `certify identify
+--section5`) and the explanations the certificates N2, N5, N6 draw from them
+(certify/run/section5_orbits.py): each committed word re-decided exactly at its r."""
+from certify.run import section5_orbits as s5
+from certify.run.files import load_findings
+from certify.run.runner import holds
+
+FOUND = load_findings(s5.FINDINGS)
+
+
+def _first_attracting():
+    for claim, entries in FOUND["claims"].items():
+        for e in entries:
+            for w in e["words"]:
+                if w["kind"] == "attracting" and w["window"]:
+                    return claim, e, w
+    raise AssertionError("no attracting word with a window in the findings")
+
+
+def test_the_committed_findings_follow_the_format():
+    assert FOUND["schema"] == s5.SCHEMA and FOUND["version"] == 1
+    assert set(FOUND["claims"]) == set(s5.PLAN)
+    for claim, entries in FOUND["claims"].items():
+        assert [e["r"] for e in entries] == [str(__import__("fractions").Fraction(r)) for r, _ in s5.PLAN[claim]]
+        for e in entries:
+            assert sum(w["count"] for w in e["words"]) + e["unsettled"] + e["breaks"] == e["orbits"]
+            for w in e["words"]:
+                assert w["period"] == len(w["word"]) and w["kind"] in ("attracting", "saddle", "repelling", "")
+
+
+def test_every_committed_explanation_holds_exactly():
+    for claim in s5.PLAN:
+        checks = s5.explanations(claim, s5.FINDINGS)
+        assert checks and all(holds(c) for c in checks), [c.statement for c in checks if not holds(c)]
+        assert all(not c.counts for c in checks)          # ours, not the paper's claim: never a disagreement
+
+
+def test_an_altered_word_or_r_fails():
+    claim, e, w = _first_attracting()
+    found = s5.explanations(claim, s5.FINDINGS)
+    assert any("an attracting periodic orbit of the reduction" in c.statement for c in found)
+    for edits in ({"word": "abcb"}, {"r": "1/10"}, {"word": "abacbabcbcabca"}):
+        checks = s5.explanations(claim, (s5.FINDINGS, edits))
+        assert not all(holds(c) for c in checks), edits
+
+
+def test_inside_is_exact_at_the_ends():
+    import flint
+    window = {"lo": {"exact": None, "interval": ["11/50", "221/1000"], "digits": "0.2200"},
+              "hi": {"exact": "1", "interval": None, "digits": "1"}}
+    assert s5._inside(flint.fmpq(3, 10), window)
+    assert not s5._inside(flint.fmpq(1, 5), window)
+    assert not s5._inside(flint.fmpq(2201, 10000), window)     # inside the isolating interval: undecided, not inside
+    assert not s5._inside(flint.fmpq(1), window)
+
+
+def test_missing_findings_fail():
+    (c,) = s5.explanations("N2", "no-such-findings.json")
+    assert not holds(c) and "identify --section5" in c.evidence[0]
+
+
+def test_the_report_labels_an_explanation_as_ours_not_the_engines():
+    from certify.run.report import _checks
+    (c,) = [x for x in s5.explanations("N2", s5.FINDINGS) if "abacbabcbcabcb" in x.statement][:1]
+    text = _checks("As printed", [c])
+    assert "certified explanation, beside the observation" in text and "consistency check of the engine" not in text
