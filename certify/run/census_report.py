@@ -186,6 +186,8 @@ def reduction_lines(s: dict, recs: list, L: int) -> list[str]:
         lines.append(f"| {L} | ∅ | ]0, 1[ |")
     for u in f["union_by_length"]:
         lines.append(f"| {u['max_length']} | {u['set']} | {census.show_gaps(u)} |")
+    if f["union_by_length"] and f["union_by_length"][-1]["max_length"] < L:
+        lines.append(f"| {L} | the same (no new window after L = {f['union_by_length'][-1]['max_length']}) | |")
     return lines + [""]
 
 
