@@ -484,7 +484,7 @@ def abcab_census(pattern):
     within = lambda w: census.contains(w, pattern) or census.contains(w, mirror)     # noqa: E731
     scope = [w for w in words if within(w)]
     extra = [w for w in FOUND if within(w) and w not in scope]
-    records = [census.analyse_word(w) for w in scope + extra]
+    records = [census.self_similar_record(w) for w in scope + extra]
     for r in records:
         r.pop(census.SECONDS, None)
     feasible = [r for r in records if r["feasible"]]

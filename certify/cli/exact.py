@@ -37,9 +37,10 @@ def cmd_census(args) -> int:
         print(census.to_json(doc), end="")
     else:
         s = doc["census"]
-        print(f"{s['words']} words up to length {s['max_length']}: {len(s['feasible'])} with feasible data, "
-              f"{len(s['stable'])} stable, {len(s['undecided'])} with undecided points, {len(s['errors'])} errors; "
-              f"with abcab: {s['abcab']['words']}, feasible {len(s['abcab']['feasible'])}")
+        print(f"{s['words']} words up to length {s['max_length']}: {len(s['feasible'])} with feasible self-similar "
+              f"data, {len(s['stable'])} with stable self-similar data, {len(s['undecided'])} with undecided points, "
+              f"{len(s['errors'])} errors; with abcab: {s['abcab']['words']}, feasible {len(s['abcab']['feasible'])}; "
+              f"with an attracting periodic orbit of the reduction: {len(s['reduction']['attracting'])}")
         print(f"wrote {out / 'CENSUS.md'}, census.json, {census.FIGURE}; state {state}")
     return 0
 

@@ -326,7 +326,8 @@ class OrbitResult:
                 "types": {t: self.sets(t) for t in TYPES}, "complex_pair": self.sets("complex"),
                 "attracting": self.attracting(), "attracting_points": self.attracting_points(),
                 "undecided": self.undecided, "eigenvector": self.eigenvector,
-                "self_similar": {"stable": p.stable, "feasible": p.feasible, "verdict": p.verdict},
+                "self_similar": None if p is None else {"stable": p.stable, "feasible": p.feasible,
+                                                        "verdict": p.verdict},
                 "physics": self.physics, "verdict": self.verdict}
 
     def json_text(self) -> str:
@@ -404,23 +405,27 @@ def physics(res: OrbitResult) -> str:
     def sets(lst):
         return "; ".join(f"{s['branch']}{'' if s['fixed_point'] == NO_X else ' ' + s['fixed_point']}: {s['set']}"
                          for s in lst) or "∅"
-    text = (f"Self-similar collapse data of {res.written} (certify pattern, the real-pair case: the velocity an "
-            f"eigenvector of M_w for λ > 0 in the invariant plane): stable on {sets(p.stable)}; "
-            f"feasible on {sets(p.feasible)}.")
+    text = "" if p is None else (
+        f"Self-similar collapse data of {res.written} (certify pattern, the real-pair case: the velocity an "
+        f"eigenvector of M_w for λ > 0 in the invariant plane): stable on {sets(p.stable)}; "
+        f"feasible on {sets(p.feasible)}. ")
     cx = res.sets("complex")
     if cx:
-        text += (f" Complex in-plane pair on {sets(cx)}: no velocity eigenvector lies in the plane, the velocity "
+        text += (f"Complex in-plane pair on {sets(cx)}: no velocity eigenvector lies in the plane, the velocity "
                  "turns in it by the argument of the pair each period, and the particles leave the word within a "
                  "period or two (the prefix of Remark 4.2, S11): there the orbit of the reduction is not a collapse.")
     else:
-        text += " No feasible orbit has a complex in-plane pair."
+        text += "No feasible orbit has a complex in-plane pair."
     return text
 
 
 # ------------------------------------------------------------------ the analysis
-def analyse(word: str, lo=0, hi=1) -> OrbitResult:
+def analyse(word: str, lo=0, hi=1, self_similar: bool = True) -> OrbitResult:
     """The periodic orbits of the reduction with the word ``word`` (any rotation or mirror),
-    over ]lo, hi[: the sets of the module docstring, per real branch, certified."""
+    over ]lo, hi[: the sets of the module docstring, per real branch, certified.
+    ``self_similar=False`` skips the pattern analysis of the physics line (the census has
+    it already): ``pattern`` is then None and the physics line says only where the pair
+    is complex."""
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
@@ -457,7 +462,7 @@ def analyse(word: str, lo=0, hi=1) -> OrbitResult:
         if name == "complex":
             conditions["complex"] = [_cond(q)]
     undecided |= _undecided(an)
-    pat = analyse_pattern(normal, lo, hi, formulas=False)
+    pat = analyse_pattern(normal, lo, hi, formulas=False) if self_similar else None
 
     def formulas():
         N = left_eigenvector(cand.Mq)

@@ -28,8 +28,9 @@ def dumps(record: dict) -> str:
 
 
 def load_state(path) -> dict[str, dict]:
-    """The records of a state file, by word; a line that does not parse (cut by an
-    interruption) is dropped, and the file is rewritten without it."""
+    """The records of a state file, by word, with their seconds; a line that does not
+    parse (cut by an interruption) is dropped, and the file is rewritten without it.
+    When a word has several lines (a record completed by a later run), the last wins."""
     text = read_text_or_none(path)
     if text is None:
         return {}
@@ -37,8 +38,7 @@ def load_state(path) -> dict[str, dict]:
     for line in text.splitlines():
         try:
             rec = json.loads(line)
-            rec.pop(census.SECONDS, None)
-            records[rec["word"]] = rec
+            records[rec["word"]] = rec          # a later line of a word (completed) wins
             kept.append(line)
         except (ValueError, KeyError, TypeError):
             cut = True
@@ -47,14 +47,23 @@ def load_state(path) -> dict[str, dict]:
     return records
 
 
+def _timeless(record: dict) -> dict:
+    """The record without its seconds (:data:`certify.patterns.census.TIMES`)."""
+    return {k: v for k, v in record.items() if k not in census.TIMES}
+
+
 def run_census(max_length: int, executor, state=None, resume: bool = False, progress=None,
-        job=census.analyse_word, window: int = WINDOW) -> list[dict]:
+        job=census.analyse_word, window: int = WINDOW, complete=census.add_reduction) -> list[dict]:
     """The census records of every word up to ``max_length``, in census order.
 
     ``state``: a JSON-lines file the records are appended to as they finish (created,
     or emptied unless ``resume``).  ``resume``: reuse the records found in ``state``.
     ``progress(k, n, word)`` after each word.  ``job(word)`` is what runs on the
-    executor (a module-level function: it may cross processes or machines)."""
+    executor (a module-level function: it may cross processes or machines).  A state
+    record without its :data:`~certify.patterns.census.REDUCTION` part (from an older
+    census) is reused as it is and completed by ``complete(record)``, which computes
+    only that part; the completed record is appended to the state (the last line of a
+    word wins)."""
     wanted = census.words(max_length)
     done = {}
     if state is not None:
@@ -63,6 +72,8 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
             done = {w: rec for w, rec in load_state(state).items() if w in set(wanted)}
         else:
             write_atomic(state, "")
+    partial = {w: done.pop(w) for w in list(done) if census.REDUCTION not in done[w]}
+    done = {w: _timeless(rec) for w, rec in done.items()}
     todo = [w for w in wanted if w not in done]       # shortest first: a cut census is complete up to a length
     n = len(wanted)
     if progress:
@@ -74,8 +85,7 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
         if sink is not None:
             sink.write(dumps(record) + "\n")
             sink.flush()
-        record.pop(census.SECONDS, None)
-        done[word] = record
+        done[word] = _timeless(record)
         if progress:
             progress(len(done), n, word)
 
@@ -86,7 +96,7 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
                 word = next(queue, None)
                 if word is None:
                     break
-                future = executor.submit(job, word)
+                future = executor.submit(complete, partial[word]) if word in partial else executor.submit(job, word)
                 if future.done():                 # a serial executor: written before the next job
                     collect(future, word)
                 else:
@@ -104,6 +114,11 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
         if sink is not None:
             sink.close()
     return census.order(done[w] for w in wanted)
+
+
+def completed(records: dict[str, dict]) -> int:
+    """How many records of a state have their reduction part."""
+    return sum(census.REDUCTION in r for r in records.values())
 
 
 def document(records, max_length: int) -> dict:
@@ -127,13 +142,65 @@ def _sets(record: dict, key: str) -> str:
     return "; ".join(f"{name}: {text}" for name, text in sets) or "∅"
 
 
+def _attracting(record: dict) -> str:
+    """The attracting windows of a record's periodic orbit of the reduction, as text."""
+    part = record.get(census.REDUCTION)
+    if part is None:
+        return "not computed"
+    if part["outcome"] != "analysed":
+        return part["error"] or part["outcome"]
+    wins = [f"{a['branch']}: ]{census.show_end(a['lo'])}, {census.show_end(a['hi'])}[ ({a['pair']} pair)"
+            for a in part["result"]["attracting"]]
+    wins += [f"{p['branch']}: {{{census.show_end(p['at'])}}}" for p in part["result"]["attracting_points"]]
+    return "; ".join(wins) or "∅"
+
+
+NOT_COLLAPSE = ("an orbit with a complex in-plane pair is not a collapse: no velocity eigenvector lies in the plane, "
+                "the velocity turns in it by the argument of the pair each period, and the particles leave the word "
+                "within a period or two (the prefix of Remark 4.2, S11)")
+
+
+def reduction_lines(s: dict, recs: list, L: int) -> list[str]:
+    """The findings on the attracting periodic orbits of the reduction."""
+    f = s["reduction"]
+    by = {r["word"]: r for r in recs}
+    lines = ["### Attracting periodic orbits of the reduction", "",
+             "The periodic orbits (b, n*) of the reduction map of Section 4 with each word (`certify orbit WORD`, "
+             "docs/orbit.md): n* a real left eigenvector of M_w, attracting where its eigenvalue is strictly the "
+             "smallest of M_w in modulus. They are what the simulator settles on (Section 5). Where the in-plane "
+             "pair is real they carry self-similar data; " + NOT_COLLAPSE + ".", "",
+             f"- words with a feasible periodic orbit of the reduction: {len(f['feasible'])}; with an attracting "
+             f"one: {len(f['attracting'])}; with undecided points: {len(f['undecided'])}; errors: {len(f['errors'])}"
+             + (f"; not computed: {len(f['missing'])}" if f["missing"] else ""),
+             "- attracting periodic orbits of the reduction: " + ("; ".join(
+                 f"`{by[w]['compact']}` on {_attracting(by[w])}" for w in f["attracting"]) or "none"),
+             "- with a complex in-plane pair where attracting (not collapse): "
+             + (", ".join(f"`{by[w]['compact']}`" for w in f["complex_pair_attracting"]) or "none"),
+             "- families (the words x_0 v^n x_1 … with one or two repeated factors v, attracting for at least three "
+             "consecutive n): " + ("; ".join(
+                 f"{', '.join(f'`{c}`' for c in fam['compact'])} (repeated: {', '.join(fam['repeated'])})"
+                 for fam in f["families"]) or f"none up to length {L}"),
+             "", "The r in ]0, 1[ with an attracting periodic orbit of the reduction of length at most L (the union "
+             "of the windows, exact ends compared as algebraic numbers; a row where the union grows):", "",
+             "| L | union of the attracting windows | gaps in ]0, 1[ |", "|---:|---|---|"]
+    if not f["union_by_length"]:
+        lines.append(f"| {L} | ∅ | ]0, 1[ |")
+    for u in f["union_by_length"]:
+        lines.append(f"| {u['max_length']} | {u['set']} | {census.show_gaps(u)} |")
+    if f["union_by_length"] and f["union_by_length"][-1]["max_length"] < L:
+        lines.append(f"| {L} | the same (no new window after L = {f['union_by_length'][-1]['max_length']}) | |")
+    return lines + [""]
+
+
 def markdown(doc: dict, figure: str | None = None) -> str:
-    """CENSUS.md: what was enumerated, the findings, then one row per word, the words
-    with feasible data first, then the undecided, the errors, the rest."""
+    """CENSUS.md: what was enumerated, the findings (stable self-similar data, then the
+    attracting periodic orbits of the reduction), then one row per word: stable first,
+    then attracting, feasible, undecided, in error, the rest."""
     s, recs = doc["census"], doc["words"]
     L = s["max_length"]
-    rank = lambda r: (0 if r["stable"] else 1 if r["feasible"] else 2 if r["undecided"] else  # noqa: E731
-                      3 if r["outcome"] == "error" else 4, r["length"], r["word"])
+    attracting = lambda r: bool((r.get(census.REDUCTION) or {}).get("attracting"))     # noqa: E731
+    rank = lambda r: (0 if r["stable"] else 1 if attracting(r) else 2 if r["feasible"] else  # noqa: E731
+                      3 if r["undecided"] else 4 if r["outcome"] == "error" else 5, r["length"], r["word"])
     lines = [
         f"# Census of periodic patterns up to length {L}",
         "",
@@ -142,14 +209,21 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         "",
         "Every primitive period made of the blocks ab, cb, acb, cab (Corollary 4.5, l. 1037-1051, with the "
         "correction certified in S10), of at most "
-        f"{L} collisions, one per class of rotations and the mirror a<->c (the pattern module's normal form). "
-        "For each, the r-sets in ]0, 1[ where its self-similar candidate realises it (feasible, per eigenvalue "
-        "branch and fixed point x±) and where it is moreover stable, as certified by `certify pattern WORD`.",
+        f"{L} collisions, one per class of rotations and the mirror a<->c (the pattern module's normal form), "
+        "analysed two ways:",
+        "",
+        "1. **stable self-similar (collapsing) data** (`certify pattern WORD`): the r-sets in ]0, 1[ where its "
+        "self-similar candidate (the velocity an eigenvector of M_w, λ > 0) realises it (feasible, per eigenvalue "
+        "branch and fixed point x±) and where it is moreover stable;",
+        "2. **attracting periodic orbits of the reduction** (`certify orbit WORD`): the r-intervals where the "
+        "reduction map of Section 4 has an attracting periodic orbit with this word, per real eigenvalue branch, "
+        "with its in-plane pair (real: it carries self-similar data; complex: not a collapse).",
         "",
         f"- words: {s['words']}",
         f"- with feasible self-similar data: {len(s['feasible'])}",
-        f"- with stable self-similar data: {len(s['stable'])}",
-        f"- with undecided points: {len(s['undecided'])}"
+        f"- with stable self-similar (collapsing) data: {len(s['stable'])}",
+        f"- with an attracting periodic orbit of the reduction: {len(s['reduction']['attracting'])}",
+        f"- self-similar analysis with undecided points: {len(s['undecided'])}"
         + (f" ({', '.join(s['undecided'])})" if s['undecided'] else ""),
         f"- analysis error: {len(s['errors'])}" + (f" ({', '.join(s['errors'])})" if s['errors'] else ""),
         f"- containing abcab cyclically (or its mirror cbacb): {s['abcab']['words']}, of which with feasible data: "
@@ -159,15 +233,18 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         "",
         "## Findings",
         "",
+        "### Stable self-similar (collapsing) data",
+        "",
     ]
     f = s["stable_findings"]
     stable = [r for r in census.order(recs) if r["stable"]]
     lines += [
-        "- stable patterns: " + ("; ".join(f"`{r['compact']}` on {_sets(r, 'stable')}" for r in stable) or "none"),
-        "- stable patterns other than (ab)^n(cb)^n (and the three-particle ab): "
+        "- stable self-similar data: " + ("; ".join(f"`{r['compact']}` on {_sets(r, 'stable')}" for r in stable)
+                                         or "none"),
+        "- stable self-similar data other than (ab)^n(cb)^n (and the three-particle ab): "
         + (", ".join(f"`{w}`" for w in f["other_than_ab_n_cb_n"]) or f"none up to length {L}"),
-        "- stable windows reaching above 3-2√2 ≈ 0.171573 (compared on certified isolating intervals and minimal "
-        "polynomials): " + (", ".join(f"`{w}`" for w in f["above_3-2√2"]) or f"none up to length {L}")
+        "- stable self-similar windows reaching above 3-2√2 ≈ 0.171573 (compared on certified isolating intervals "
+        "and minimal polynomials): " + (", ".join(f"`{w}`" for w in f["above_3-2√2"]) or f"none up to length {L}")
         + (f"; not decided: {', '.join(f['undecided_against_3-2√2'])}" if f["undecided_against_3-2√2"] else ""),
         "- T28 (l. 515, 'patterns containing abcab do not seem to have feasible self-similar data'): "
         + (f"refuted: {', '.join(f'`{w}`' for w in s['abcab']['feasible'])} contain abcab (cyclically, or its "
@@ -176,58 +253,95 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            else f"no counterexample up to length {L}"),
         "",
     ]
+    lines += reduction_lines(s, recs, L)
     if figure:
-        lines += [f"![every stable window on one r-axis]({figure})", ""]
-    lines += ["## Every word", "", "Words with stable data first, then feasible, undecided, in error, the rest.", "",
-              "| word | length | blocks | abcab | verdict | feasible r-sets | stable r-sets | note |",
-              "|---|---:|---|:-:|---|---|---|---|"]
+        lines += [f"![stable self-similar windows and attracting windows of the reduction]({figure})", ""]
+    lines += ["## Every word", "",
+              "Words with stable self-similar data first, then with an attracting periodic orbit of the reduction, "
+              "feasible, undecided, in error, the rest.", "",
+              "| word | length | blocks | abcab | verdict (self-similar) | feasible r-sets | stable r-sets | "
+              "attracting periodic orbit of the reduction | note |",
+              "|---|---:|---|:-:|---|---|---|---|---|"]
     for r in sorted(recs, key=rank):
         note = r["error"] if r["outcome"] == "error" else ("undecided points" if r["undecided"] else "")
         lines.append(f"| `{r['compact']}` | {r['length']} | {' '.join(r['blocks'])} | "
                      f"{'yes' if r['contains_abcab'] else ''} | {_cell(r['verdict'])} | "
                      f"{_cell(_sets(r, 'feasible')) if r['outcome'] == 'analysed' else '—'} | "
-                     f"{_cell(_sets(r, 'stable')) if r['outcome'] == 'analysed' else '—'} | {_cell(note)} |")
+                     f"{_cell(_sets(r, 'stable')) if r['outcome'] == 'analysed' else '—'} | "
+                     f"{_cell(_attracting(r))} | {_cell(note)} |")
     return "\n".join(lines) + "\n"
 
 
 # --------------------------------------------------------------------------
 # The figure: every stable window on one r-axis
 
-def window_figure(doc: dict, path, marks: dict | None = None) -> Path | None:
-    """One row per word with stable data, its stable windows drawn as bars on the r-axis
-    (floats of certified ends: a drawing only); written atomically to ``path`` (PNG).
-    Returns the path, or None when no word has stable data."""
-    from .saving import pyplot
-    plt = pyplot()
-    from .files import atomic_path
-    from .saving import DPI
+def _floats(pairs) -> list[tuple[float, float]]:
+    return [(float(lo["digits"]), float(hi["digits"])) for lo, hi in pairs]
 
-    rows = [(r["compact"], census.windows(r)) for r in doc["words"] if r["stable"]]
-    rows = [(name, w) for name, w in rows if w]
+
+def window_figure(doc: dict, path, marks: dict | None = None) -> Path | None:
+    """The census figure (floats of certified ends: a drawing only), written through
+    :mod:`.saving` (reproducible bytes) to ``path``.  Top: one row per word with stable
+    self-similar data or an attracting periodic orbit of the reduction, its stable
+    self-similar windows (blue) above its attracting windows of the reduction (orange:
+    real in-plane pair; red: complex, not a collapse).  Bottom: on the r-axis of Figure
+    5.1 (0.072-0.999), the union of the attracting windows of the words of at most L
+    collisions, one row per L where it grows.  None when nothing is to be drawn."""
+    from certify.numerics.figures import SPECS
+
+    from . import saving
+    plt = saving.pyplot()
+    red = doc["census"].get("reduction") or {}
+    rows = []
+    for r in doc["words"]:
+        stable = census.windows(r) if r["stable"] else []
+        att = [(float(lo["digits"]), float(hi["digits"]), pair) for lo, hi, pair in census.attracting_windows(r)]
+        if stable or att:
+            rows.append((r["compact"], stable, att))
     if not rows:
         return None
-    rows.sort(key=lambda row: (-max(hi for _, hi in row[1]), row[0]))
-    fig, ax = plt.subplots(figsize=(7.2, 1.2 + 0.28 * len(rows)))
-    for k, (_, wins) in enumerate(rows):
-        for lo, hi in wins:
-            ax.barh(k, hi - lo, left=lo, height=0.6, color="tab:blue")
-    ax.set_yticks(range(len(rows)), [name for name, _ in rows], fontsize=7)
+    rows.sort(key=lambda row: (-max(hi for _lo, hi, *_ in row[1] + row[2]), row[0]))
+    unions = red.get("union_by_length", [])
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(7.2, 2.4 + 0.3 * len(rows) + 0.25 * len(unions)),
+                                 gridspec_kw={"height_ratios": [max(len(rows), 2), max(len(unions), 2)]})
+    colour = {"real": "tab:orange", "complex": "tab:red", "real and complex": "tab:red"}
+    for k, (_name, stable, att) in enumerate(rows):
+        for lo, hi in stable:
+            ax.barh(k - 0.18, hi - lo, left=lo, height=0.34, color="tab:blue")
+        for lo, hi, pair in att:
+            ax.barh(k + 0.18, hi - lo, left=lo, height=0.34, color=colour[pair])
+    ax.set_yticks(range(len(rows)), [name for name, _s, _a in rows], fontsize=7)
     ax.invert_yaxis()
     for label, value in (marks or {}).items():
         ax.axvline(value, color="grey", lw=0.6, ls="--")
         ax.annotate(label, (value, 1.0), xycoords=("data", "axes fraction"), fontsize=7, rotation=90,
                     va="top", ha="right")
-    top = max(hi for _, w in rows for _, hi in w)
+    top = max(hi for _n, s, a in rows for _lo, hi, *_ in s + a)
     ax.set_xlim(0, min(1.0, math.ceil(top * 20 + 1) / 20))
     ax.set_xlabel("r")
-    ax.set_title(f"stable windows of the census up to length {doc['census']['max_length']}", fontsize=9)
+    from matplotlib.patches import Patch
+    ax.legend(handles=[Patch(color="tab:blue", label="stable self-similar (collapsing) data"),
+                       Patch(color="tab:orange", label="attracting periodic orbit of the reduction, real pair"),
+                       Patch(color="tab:red", label="attracting periodic orbit of the reduction, complex pair")],
+              fontsize=6, loc="best")
+    L = doc["census"]["max_length"]
+    ax.set_title(f"census up to length {L}: stable self-similar windows and attracting windows of the reduction",
+                 fontsize=9)
+    spec = SPECS["5.1"]
+    for k, u in enumerate(unions):
+        for lo, hi in _floats((i["lo"], i["hi"]) for i in u["intervals"]):
+            bx.barh(k, hi - lo, left=lo, height=0.6, color="tab:orange")
+        for p in u["points"]:
+            bx.plot([float(p["digits"])], [k], "|", color="tab:orange")
+    bx.set_yticks(range(len(unions)), [f"L ≤ {u['max_length']}" for u in unions], fontsize=7)
+    bx.invert_yaxis()
+    bx.set_xlim(spec.lo, spec.hi)
+    bx.set_xlabel(f"r (the axis of Figure {spec.id}, {spec.lo}-{spec.hi})")
+    bx.set_title("r with an attracting periodic orbit of the reduction of length at most L", fontsize=9)
     fig.tight_layout()
     path = Path(path)
-    try:
-        with atomic_path(path) as tmp:
-            fig.savefig(tmp, format="png", dpi=DPI, metadata={"Software": None})
-    finally:
-        plt.close(fig)
+    with saving.output_dir(path.parent):
+        saving.save_figure(fig, path.name)
     return path
 
 

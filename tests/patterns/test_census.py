@@ -166,7 +166,12 @@ def fake(word):
     return {"word": word, "compact": word, "length": len(word), "blocks": census.blocks_of(word),
             "contains_abcab": census.contains_abcab(word), "outcome": "analysed", "feasible": feasible,
             "stable": word == "ab", "undecided": False, "verdict": f"{word}: fake", "error": None,
-            "result": {"feasible": [], "stable": []}}
+            "result": {"feasible": [], "stable": []}, census.REDUCTION: FAKE_REDUCTION}
+
+
+FAKE_REDUCTION = {"outcome": "analysed", "feasible": False, "attracting": False, "verdict": "fake", "error": None,
+                  "result": {"exists": [], "feasible": [], "attracting": [], "attracting_points": [], "saddle": [],
+                             "repelling": [], "complex_pair": [], "undecided": []}}
 
 
 def test_markdown_lists_feasible_words_first_and_errors_with_their_error(tmp_path):
