@@ -22,6 +22,7 @@ the tangential velocity at p inside P is w = |n|² e_i − n_i n (w_i > 0), and 
 contact is the j ≠ i with w_j < 0, i.e. n_i n_j > 0.
 
 >>> from flint import fmpq
+>>> from certify.dynamics.simulate import exact
 >>> P = plane("a", exact([0, 1, 1]), exact([1, -2, "1/2"]))
 >>> [Q.letter for Q in orbit(P, fmpq(1, 10), 6)]
 ['a', 'b', 'c', 'a', 'b', 'a', 'b']
