@@ -113,6 +113,18 @@ def end_data(a: Algebraic) -> dict:
             "digits": a.digits(12)}
 
 
+def algebraic_ends(sets) -> dict:
+    """The irrational end points of the pieces of ``sets`` (r-sets in the JSON form), by
+    their decimal digits: what the Markdown lists under "End points"."""
+    ends = {}
+    for s in sets:
+        for p in s["pieces"]:
+            for e in ([p["lo"], p["hi"]] if p["kind"] == "interval" else [p["at"]]):
+                if e["exact"] is None:
+                    ends[e["digits"]] = e
+    return ends
+
+
 def _poly(a: Algebraic):
     c = [int(x) for x in a.minimal_polynomial().coeffs()]
     rr = sp.Symbol("r")
@@ -231,12 +243,7 @@ class PatternResult:
             for s in sets:
                 fp = "" if s["fixed_point"] == NO_X else f", {self.fixed_point_name(s['fixed_point'])}"
                 out.append(f"- {s['branch']} branch{fp}: {s['set']}")
-            ends = {}
-            for s in sets:
-                for p in s["pieces"]:
-                    for e in ([p["lo"], p["hi"]] if p["kind"] == "interval" else [p["at"]]):
-                        if e["exact"] is None:
-                            ends[e["digits"]] = e
+            ends = algebraic_ends(sets)
             if ends:
                 out += ["", "End points:"]
                 out += [f"  - {k}: the root of `{e['minimal_polynomial']}` in ]{e['interval'][0]}, "

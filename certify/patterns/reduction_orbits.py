@@ -115,7 +115,7 @@ from certify.dynamics.systems import candidate_in
 from certify.errors import UsageError
 
 from .feasibility import NO_X, Analysis, Requirement
-from .pattern import _cap, _cond, _copy, _nonempty, check_range, end_data
+from .pattern import _cap, _cond, _copy, _nonempty, algebraic_ends, check_range, end_data
 from .pattern import analyse as analyse_pattern
 from .periodic import compact, read
 from .periodic import show as show_word
@@ -358,11 +358,7 @@ class OrbitResult:
             sets = self.sets(stage)
             out += [f"- {s['branch']} branch: {s['set']}" for s in sets] or ["∅ on every branch."]
             out.append("")
-            for s in sets:
-                for p in s["pieces"]:
-                    for e in ([p["lo"], p["hi"]] if p["kind"] == "interval" else [p["at"]]):
-                        if e["exact"] is None:
-                            ends[e["digits"]] = e
+            ends.update(algebraic_ends(sets))
         if ends:
             out += ["End points:", ""] + [f"- {k}: the root of `{e['minimal_polynomial']}` in ]{e['interval'][0]}, "
                                           f"{e['interval'][1]}[" for k, e in sorted(ends.items())] + [""]
