@@ -5,7 +5,7 @@ the largest modules.  Run from the repository root:
     python tools/import_graph.py --top 25
 
 Floors are the layers of ``[tool.importlinter]`` in pyproject.toml, top first; an
-arrow ``A -> B  (n)`` says that n modules of A import B directly (grimp, the
+arrow ``A -> B  (n)`` says that there are n direct imports of a module of B by a module of A (grimp, the
 library under import-linter, reads the imports).  An arrow that runs up a floor
 would break the contract, and ``lint-imports`` reports it.
 """
@@ -76,7 +76,7 @@ def main(argv=None) -> int:
             if a and b and a != b:
                 arrows[(a, b)] += 1
     floor_of = {n: len(levels) - k for k, level in enumerate(levels) for n in level}
-    print(f"arrows between floors ({len(arrows)}; n = importing modules):")
+    print(f"arrows between floors ({len(arrows)}; n = module-to-module imports):")
     for (a, b), n in sorted(arrows.items(), key=lambda kv: (-floor_of[kv[0][0]], kv[0][0], -floor_of[kv[0][1]])):
         up = "  UP" if floor_of[b] >= floor_of[a] else ""
         print(f"  {a} -> {b}  ({n}){up}")
