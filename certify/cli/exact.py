@@ -100,6 +100,14 @@ def cmd_particles(args) -> int:
     return 0
 
 
+def add_word_options(p, word_help: str, schema: str) -> None:
+    """WORD, --json and --r-range: the options of the exact analyses of one word."""
+    p.add_argument("word", metavar="WORD", help=word_help)
+    p.add_argument("--json", action="store_true", help=f"print JSON (certify/patterns/{schema})")
+    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
+                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
+
+
 def register(commands) -> None:
     """The parsers of ``census``, ``pattern``, ``orbit`` and ``particles``."""
     p = add_command(commands, "census", cmd_census, help="analyse every periodic pattern of blocks up to a length")
@@ -120,10 +128,7 @@ def register(commands) -> None:
                     "feasible and are stable, with algebraic end points.  WORD: ababcb, (ab)^3(cb)^3, "
                     "[ac]b (a and c at once, the symmetric system), ab (three particles); any rotation "
                     "or the mirror a<->c.")
-    p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n; [ac]")
-    p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/pattern.schema.json)")
-    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
-                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
+    add_word_options(p, "a period over a, b, c; powers (…)^n; [ac]", "pattern.schema.json")
 
     p = add_command(commands, "orbit", cmd_orbit,
                     help="certify the periodic orbits of the reduction (Section 4) with one word",
@@ -131,13 +136,10 @@ def register(commands) -> None:
                     "reduction with this word exists and is feasible, and whether it is attracting, a saddle "
                     "or repelling (in-plane pair real or complex), with algebraic end points.  Same words as "
                     "`pattern` (four particles: a, b and c).")
-    p.add_argument("word", metavar="WORD", help="a period over a, b, c; powers (…)^n")
-    p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/orbit.schema.json)")
+    add_word_options(p, "a period over a, b, c; powers (…)^n", "orbit.schema.json")
     p.add_argument("--trap", default=None, metavar="R",
                    help="instead: certify a trapping ellipse of the attracting orbit at the rational R in ]0,1[ "
                         "(exit 1 when none is found)")
-    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
-                   help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
 
     p = add_command(commands, "particles", cmd_particles, help="simulate four particles exactly",
                     description="Four particles on a line, equal masses, restitution "
