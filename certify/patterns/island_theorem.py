@@ -45,7 +45,7 @@ import flint
 import sympy as sp
 
 from certify.algebra import Algebraic, checked_real_root_count, ends, flint_real_roots, precision, sign_at, sturm_count
-from certify.algebra.poly import to_fmpq
+from certify.algebra.poly import show, to_fmpq
 from certify.dynamics import island, reduction
 from certify.dynamics.model import INDEX, collide
 from certify.dynamics.reduction import ORIENTATION, Corner
@@ -442,7 +442,8 @@ def island_step(r, claims: Claims, symbolic: bool) -> Step:
                 f"4γQ = (2γv + βu)² + (4αγ − β²)u² (identity: remainder {identity}), so u² ≤ Q/c_max with "
                 f"c_max = (4αγ − β²)/(4γ) = {sp.factor(level)} (claimed {sp.factor(claimed)}); γ = {ga} > 0; the "
                 f"second wall is |first coordinate of A| = |{first}| < 1, which Q∘A = Q gives; "
-                f"the walls of R are 1 ± u, 1 ± A₁(u, v): {walls == expect}; Q(1, −β/2γ) − c_max = {touch} (touches u = 1)")
+                f"the walls of R are 1 ± u, 1 ± A₁(u, v): {walls == expect}; "
+                f"Q(1, −β/2γ) − c_max = {touch} (touches u = 1)")
 
 
 # --- (f) not a root of unity ---------------------------------------------------------
@@ -596,10 +597,23 @@ class Resonance:
     q: int
     r: Algebraic
 
+    def interval(self, k: int = 20) -> tuple[str, str]:
+        """An isolating interval with decimal ends ]L/10^k, (L+1)/10^k[ (checked: one root
+        of the minimal polynomial inside, none at the ends)."""
+        m = self.r.minimal_polynomial()
+        L = self.r.floor_scaled(10 ** k)
+        lo, hi = flint.fmpq(L, 10 ** k), flint.fmpq(L + 1, 10 ** k)
+        if m(lo) == 0 or m(hi) == 0 or sturm_count(m, lo, hi) != 1:
+            raise ArithmeticError(f"]{lo}, {hi}[ does not isolate {self.r}")
+        return _decimal(L, k), _decimal(L + 1, k)
+
     def as_json(self) -> dict:
-        self.r.refine(flint.fmpq(1, 10 ** 20))
-        return {"p": self.p, "q": self.q, "minimal_polynomial": str(self.r.minimal_polynomial()),
-                "isolating_interval": [str(self.r.lo), str(self.r.hi)], "digits": self.r.digits(20)}
+        return {"p": self.p, "q": self.q, "minimal_polynomial": show(self.r.minimal_polynomial()),
+                "isolating_interval": list(self.interval()), "digits": self.r.digits(20)}
+
+
+def _decimal(n: int, k: int) -> str:
+    return f"{n // 10 ** k}.{str(n % 10 ** k).zfill(k)}"
 
 
 @cache
@@ -611,14 +625,11 @@ def resonances_of_q(q: int) -> tuple:
     P = resonance_polynomial(q)
     for g, _m in P.factor()[1]:
         g = flint.fmpz_poly(g)
-        n = sturm_count(g, 0, 1) - (g(1) == 0)
-        roots = Algebraic.roots(g, 0, 1)
-        if n != len(roots) or n != len(flint_real_roots(g, 0, 1)):
+        checked_real_root_count(g)                  # Sturm and python-flint on the line
+        roots = [x for x in Algebraic.roots(g, 0, 1) if x > LOWER_END]
+        if len(roots) != roots_inside(flint.fmpq_poly(g)):
             raise ArithmeticError(f"root counts disagree for {g}")
-        checked_real_root_count(g)
         for x in roots:
-            if not x > LOWER_END:
-                continue
             with precision(200):
                 z = rotation_ball(x.arb(200), 200) * q
             k = round(float(z.mid()))
