@@ -462,11 +462,15 @@ def irrational_step(r, A: sp.Matrix | None) -> Step:
     disc = coeffs[1] ** 2 - 4 * coeffs[0] * coeffs[2]
     ok = coeffs == printed and disc < 0 and abs(prim.coeffs()[-1]) > 1
     return Step("(f) e^{iθ} is not a root of unity: θ/2π irrational, every orbit in U_r dense on its ellipse", bool(ok),
-                f"2pq·(ν² − tr A ν + det A) = {prim * content} at r = {p}/{q}; content {content}, primitive form "
-                f"{prim} (irreducible: discriminant {disc} < 0), leading coefficient {prim.coeffs()[-1]} ≠ ±1: "
+                f"2pq·(ν² − tr A ν + det A) = {_nu(prim * content)} at r = {p}/{q}; content {content}, primitive form "
+                f"{_nu(prim)} (irreducible: discriminant {disc} < 0), leading coefficient {prim.coeffs()[-1]} ≠ ±1: "
                 "not monic, so e^{iθ} is not an algebraic integer, not a root of unity; A is a rotation by θ in "
                 "coordinates where Q is Euclidean (det A = 1, Q∘A = Q), so each orbit is dense on its ellipse "
                 "(Kronecker)")
+
+
+def _nu(f: flint.fmpz_poly) -> str:
+    return str(f).replace("x", "ν")
 
 
 def symbolic_irrational_step() -> Step:
