@@ -65,8 +65,8 @@ def cmd_island(args) -> int:
         doc["symbolic"] = {"interval": "]3-2√2, 1[", "holds": T.holds, "c_max": str(T.c_max),
                            "steps": [{"name": s.name, "holds": s.holds, "evidence": s.evidence} for s in T.steps]}
     if args.figure is not None:
-        from certify.run import plots
-        plots.island_figure(args.figure, rs[0] if rs else None, args.resonances or 12)
+        from certify.run import island_figures
+        island_figures.island_figure(args.figure, rs[0] if rs else None, args.resonances or 12)
     print(json.dumps(doc, indent=2, ensure_ascii=False) if args.json else "\n".join(text_lines(doc)))
     return 0
 
