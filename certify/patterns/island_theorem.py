@@ -40,6 +40,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cache
+from pathlib import Path
 
 import flint
 import sympy as sp
@@ -50,6 +51,7 @@ from certify.dynamics import island, reduction
 from certify.dynamics.model import INDEX, collide
 from certify.dynamics.reduction import ORIENTATION, Corner
 
+SCHEMA_PATH = Path(__file__).with_name("island.schema.json")
 u, v, nu = sp.symbols("u v nu")
 R_SYMBOL = sp.Symbol("r", positive=True)
 WORDS = ("acb", "cab")

@@ -11,9 +11,10 @@ import jsonschema
 import pytest
 
 from certify import cli
+from certify.patterns import island_theorem
 
 ROOT = Path(__file__).resolve().parents[2]
-SCHEMA = json.loads((ROOT / "certify" / "patterns" / "island.schema.json").read_text())
+SCHEMA = json.loads(island_theorem.SCHEMA_PATH.read_text())
 
 
 def run(capsys, *argv):
@@ -23,7 +24,7 @@ def run(capsys, *argv):
 
 
 def test_text_shows_every_step_and_the_numbers(capsys):
-    code, out, err = run(capsys, "--r", "0.3")
+    code, out, err = run(capsys, "--r", "0.3", "--depth", "6")
     assert code == 0 and err == ""
     assert "island theorem at r = 3/10: proved" in out
     assert out.count("✓") == 7 and "✗" not in out
