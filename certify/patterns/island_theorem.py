@@ -48,7 +48,7 @@ import sympy as sp
 from certify.algebra import Algebraic, checked_real_root_count, ends, flint_real_roots, precision, sign_at, sturm_count
 from certify.algebra.poly import show, to_fmpq
 from certify.dynamics import island, reduction
-from certify.dynamics.model import INDEX, collide
+from certify.dynamics.model import INDEX, collide, collide_particles
 from certify.dynamics.reduction import ORIENTATION, Corner
 
 SCHEMA_PATH = Path(__file__).with_name("island.schema.json")
@@ -173,11 +173,19 @@ def cof(K: sp.Matrix) -> sp.Matrix:
 
 
 def commuting_step(r, claims: Claims) -> Step:
+    """K_a K_c = K_c K_a, and the same for the law on the four velocities (written
+    independently, :func:`model.collide_particles`): a and c act on disjoint pairs."""
     Ka, Kc = matrix(claims.law, "a", r), matrix(claims.law, "c", r)
     D = (Ka * Kc - Kc * Ka).applyfunc(sp.simplify)
-    ok = D.is_zero_matrix
+    w = sp.symbols("w1:5")
+    ac = collide_particles("c", collide_particles("a", w, r), r)
+    ca = collide_particles("a", collide_particles("c", w, r), r)
+    particles = all(sp.expand(x - y) == 0 for x, y in zip(ac, ca))
+    ok = D.is_zero_matrix and particles
     return Step("(a) K_a K_c = K_c K_a", bool(ok),
-                f"K_a K_c − K_c K_a = {D.tolist()} (exact); a acts on the pair 1-2, c on 3-4"
+                f"K_a K_c − K_c K_a = {D.tolist()} (exact); on the four velocities the law gives a∘c = c∘a: "
+                f"{particles} (a acts on the pair 1-2, c on 3-4); the double collision [ac] acts by K_a K_c, "
+                "and cof(K_a K_c) = cof(K_a) cof(K_c)"
                 + ("" if ok else ": the collisions do not commute, the tie v = 0 has no single map"))
 
 
@@ -701,7 +709,61 @@ def _split(box):
 
 
 def box_sign(box, r: flint.fmpq) -> int:
-    """+1 when the whole box is in U_r, −1 when none of it is, 0 undecided (balls)."""
+    """+1 when the whole box is in U_r, −1 when none of it is, 0 undecided: the chart of
+    the box enclosed in a rectangle [u] × [v] by monotonicity, then Q bounded on it exactly
+    as balls.  At b, n = p ∧ q = (−cos θ sin φ, cos φ, sin θ sin φ) (reduction.Angles), so
+    u = tan(θ − π/4), increasing in θ, and v = 2 cot φ · w(θ) with w = 1/(sin θ + cos θ) > 0,
+    cot φ decreasing, w smallest at θ = π/4 and largest at an end.  Q is convex (positive
+    definite): its maximum on the rectangle is at a corner, its minimum at the origin or
+    on an edge (a quadratic in one variable, minimised in closed form).  Boxes touching
+    φ = 0 or π (v unbounded) go to :func:`box_sign_balls`."""
+    s0, s1, t0, t1 = box
+    if t0 == 0 or t1 == 1:
+        return box_sign_balls(box, r)
+    pi = flint.arb.pi()
+    th0, th1 = s0 * pi / 2, s1 * pi / 2
+    ph0, ph1 = t0 * pi, t1 * pi
+    ua, ub = _lower((th0 - pi / 4).tan()), _upper((th1 - pi / 4).tan())
+    w = [1 / (x.sin() + x.cos()) for x in (th0, th1)]
+    w_hi = max(_upper(w[0]), _upper(w[1]))
+    w_lo = _lower(1 / flint.arb(2).sqrt()) if s0 <= flint.fmpq(1, 2) <= s1 else min(_lower(w[0]), _lower(w[1]))
+    c_lo, c_hi = _lower(ph1.cos() / ph1.sin()), _upper(ph0.cos() / ph0.sin())
+    va, vb = 2 * min(c_lo * w_lo, c_lo * w_hi), 2 * max(c_hi * w_lo, c_hi * w_hi)
+    ua, ub, va, vb = (flint.arb(x) for x in (ua, ub, va, vb))
+    R, c = flint.arb(r), flint.arb(island.c_max(r))
+    corners = [island.quadratic_form(x, y, R) for x in (ua, ub) for y in (va, vb)]
+    if all(c - q > 0 for q in corners):
+        return 1
+    if ua <= 0 <= ub and va <= 0 <= vb:
+        return 0
+    edges = [_edge_min(R, -(1 + R) * x, 2 * x * x, va, vb) for x in (ua, ub)] + \
+            [_edge_min(flint.arb(2), -(1 + R) * y, R * y * y, ua, ub) for y in (va, vb)]
+    return -1 if all(e - c > 0 for e in edges) else 0
+
+
+def _lower(z: flint.arb) -> flint.fmpq:
+    """The exact lower end of a ball (so that min and max below are exact)."""
+    return ends(z)[0]
+
+
+def _upper(z: flint.arb) -> flint.fmpq:
+    return ends(z)[1]
+
+
+def _edge_min(a2, a1, a0, lo, hi) -> flint.arb:
+    """A lower bound (a ball) of a2 x² + a1 x + a0 (a2 > 0) on [lo, hi]: the value at the
+    nearer end when the vertex −a1/(2a2) is proved outside, else the vertex value."""
+    x = -a1 / (2 * a2)
+    if x < lo:
+        return a2 * lo * lo + a1 * lo + a0
+    if x > hi:
+        return a2 * hi * hi + a1 * hi + a0
+    return a0 - a1 * a1 / (4 * a2)
+
+
+def box_sign_balls(box, r: flint.fmpq) -> int:
+    """:func:`box_sign` by plain ball arithmetic on the box (balls containing θ and φ through
+    reduction.Angles, n = p ∧ q, its chart and Q): coarser, the second route."""
     s0, s1, t0, t1 = box
     pi = flint.arb.pi()
     th = flint.arb((s0 + s1) / 2, (s1 - s0) / 2) * pi / 2

@@ -267,3 +267,19 @@ def test_many_rationals_and_long_orbits():
             if island.quadratic_form(*x, r) < island.c_max(r):
                 points, words = _mp_orbit(r, x, 2000, dps=80)
                 assert set(words) <= {"acb", "cab"}
+
+
+@pytest.mark.parametrize("r", [flint.fmpq(3, 10), flint.fmpq(19, 100)])
+def test_the_two_box_classifications_never_contradict(r):
+    """box_sign (monotone enclosure of the chart) against box_sign_balls (plain balls through
+    reduction.Angles): never inside for one and outside for the other; the first decides more."""
+    decided = [0, 0]
+    with it.precision(64):
+        for i in range(16):
+            for j in range(16):
+                box = (flint.fmpq(i, 16), flint.fmpq(i + 1, 16), flint.fmpq(j, 16), flint.fmpq(j + 1, 16))
+                a, b = it.box_sign(box, r), it.box_sign_balls(box, r)
+                assert a * b >= 0, box
+                decided[0] += a != 0
+                decided[1] += b != 0
+    assert decided[0] >= decided[1] > 0
