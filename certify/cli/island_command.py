@@ -60,6 +60,10 @@ def cmd_island(args) -> int:
     doc.update(records[0] if args.r is not None else {"islands": records} if rs else {})
     if args.resonances is not None:
         doc["resonances"] = [s.as_json() for s in it.resonances(args.resonances)]
+        windows = census_windows()
+        if windows is not None:
+            doc["window_resonances"] = [{"word": w, "end": side, "digits": d, "p": p, "q": q}
+                                        for w, side, d, (p, q) in it.window_resonances(windows, args.resonances)]
     if args.symbolic:
         T = it.symbolic_theorem()
         doc["symbolic"] = {"interval": "]3-2√2, 1[", "holds": T.holds, "c_max": str(T.c_max),
@@ -69,6 +73,13 @@ def cmd_island(args) -> int:
         island_figures.island_figure(args.figure, rs[0] if rs else None, args.resonances or 12)
     print(json.dumps(doc, indent=2, ensure_ascii=False) if args.json else "\n".join(text_lines(doc)))
     return 0
+
+
+def census_windows() -> dict | None:
+    """The attracting windows of the committed census (reports/census.json), or None."""
+    from certify.run import files
+    text = files.read_text_or_none(files.REPORTS / "census.json")
+    return None if text is None else json.loads(text)["census"]["reduction"].get("attracting_windows", {})
 
 
 def text_lines(doc: dict):
@@ -99,6 +110,11 @@ def text_lines(doc: dict):
         for x in doc["resonances"]:
             lo, hi = x["isolating_interval"]
             yield f"  ρ = {x['p']}/{x['q']}: r ≈ {x['digits']}, root of {x['minimal_polynomial']} in ]{lo}, {hi}["
+    if "window_resonances" in doc:
+        yield "ends of the census's attracting windows that are resonances (the same algebraic number):"
+        for x in doc["window_resonances"]:
+            which = "upper" if x["end"] == "hi" else "lower"
+            yield f"  {x['word']}: its {which} end {x['digits']} is ρ = {x['p']}/{x['q']}"
 
 
 def _steps(steps):

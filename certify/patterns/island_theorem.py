@@ -38,6 +38,7 @@ The steps (each a :class:`Step`: a name, whether it holds, evidence):
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
@@ -46,7 +47,7 @@ import flint
 import sympy as sp
 
 from certify.algebra import Algebraic, checked_real_root_count, ends, flint_real_roots, precision, sign_at, sturm_count
-from certify.algebra.poly import show, to_fmpq
+from certify.algebra.poly import parse, show, to_fmpq, to_fmpz_poly
 from certify.dynamics import island, reduction
 from certify.dynamics.model import INDEX, collide, collide_particles
 from certify.dynamics.reduction import ORIENTATION, Corner
@@ -670,6 +671,39 @@ def resonance_of(alg: Algebraic, Q: int) -> tuple[int, int] | None:
         if (mp == m or mp == -m) and s.r == alg:
             return s.p, s.q
     return None
+
+
+def algebraic_of(end: dict) -> Algebraic:
+    """The Algebraic of an end point as the census and ``orbit --json`` print it
+    ({"minimal_polynomial": "r^2 - 4r + 1", "interval": ["0.2679…", "0.2679…"], "exact": …})."""
+    if end.get("exact") is not None:
+        return Algebraic.rational(to_fmpq(end["exact"]))
+    p = to_fmpz_poly(parse(re.sub(r"(\d)r", r"\1*r", end["minimal_polynomial"])))     # "12r^3" as printed
+    lo, hi = (to_fmpq(x) for x in end["interval"])
+    return Algebraic(p, lo, hi)
+
+
+def window_resonances(windows: dict, Q: int = 12) -> list[tuple[str, str, str, tuple[int, int]]]:
+    """(word, "lo" or "hi", digits, (p, q)) for every end of the attracting windows
+    ({word: [{"lo": end, "hi": end}, ...]}, as census.json holds them) that is a resonance
+    of the island with q ≤ Q, exactly (:func:`resonance_of`); an end at 3 − 2√2 is listed
+    with (1, 2): ρ = 1/2 there, the end of the elliptic interval (A parabolic); an end at
+    r = 1 with (1, 4) (ρ → 1/4, the elastic end)."""
+    out = []
+    for word, spans in windows.items():
+        for span in spans:
+            for side in ("lo", "hi"):
+                end = span[side]
+                x = algebraic_of(end)
+                if x == LOWER_END:                   # ρ = 1/2 at 3 − 2√2: the end, A parabolic
+                    out.append((word, side, end["digits"], (1, 2)))
+                elif x == 1:                         # ρ = 1/4 at r = 1: the other end
+                    out.append((word, side, end["digits"], (1, 4)))
+                elif x > LOWER_END and x < 1:
+                    pq = resonance_of(x, Q)
+                    if pq is not None:
+                        out.append((word, side, end["digits"], pq))
+    return out
 
 
 # --- the share of the b-section inside the island -------------------------------------

@@ -42,6 +42,8 @@ def test_json_validates_and_says_what_the_issue_asks(capsys):
     assert "/" in lo and "/" in hi
     assert [(x["p"], x["q"]) for x in doc["resonances"]] == [(2, 5), (1, 3)]
     assert doc["resonances"][1]["minimal_polynomial"] == "r^2 - 4r + 1"
+    ends = {(x["word"], x["end"]): (x["p"], x["q"]) for x in doc["window_resonances"]}
+    assert ends.get(("abacbacbcb", "hi")) == (1, 3)          # a(bac)^2bcb ends at 2 - √3 (the issue)
 
 
 def test_range_json_with_the_symbolic_theorem_validates(capsys):

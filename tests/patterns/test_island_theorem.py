@@ -283,3 +283,21 @@ def test_the_two_box_classifications_never_contradict(r):
                 decided[0] += a != 0
                 decided[1] += b != 0
     assert decided[0] >= decided[1] > 0
+
+
+def _end(x: Algebraic) -> dict:
+    x.refine(flint.fmpq(1, 10 ** 12))
+    return {"exact": None, "minimal_polynomial": it.show(x.minimal_polynomial()),
+            "interval": [str(Fraction(int(x.lo.p), int(x.lo.q))), str(Fraction(int(x.hi.p), int(x.hi.q)))],
+            "digits": x.digits(12)}
+
+
+def test_window_ends_that_are_resonances():
+    """Ends written as the census writes them (minimal polynomial as printed, interval) are read
+    back exactly; 2 − √3 is ρ = 1/3, 3 − 2√2 the end ρ = 1/2, r = 1 the end ρ = 1/4, 1/5 none."""
+    windows = {"w1": [{"lo": _end(Algebraic.rational(flint.fmpq(1, 5))), "hi": _end(Algebraic.surd(2, -1, 3))}],
+               "w2": [{"lo": {"exact": "1/10", "digits": "0.1"}, "hi": _end(Algebraic.surd(3, -2, 2))}],
+               "w3": [{"lo": _end(Algebraic.surd(5, -2, 6)), "hi": {"exact": "1", "digits": "1"}}]}
+    found = {(w, side): pq for w, side, _d, pq in it.window_resonances(windows, 12)}
+    assert found == {("w1", "hi"): (1, 3), ("w2", "hi"): (1, 2), ("w3", "hi"): (1, 4)}
+    assert it.algebraic_of(windows["w1"][0]["hi"]) == Algebraic.surd(2, -1, 3)
