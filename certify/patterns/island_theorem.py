@@ -60,7 +60,7 @@ LOWER_END = Algebraic.surd(3, -2, 2)          # 3 − 2√2: the interval ]3−2
 
 
 def default_walls(r) -> list:
-    """The walls of R as the lead typed them (:mod:`certify.dynamics.island`): forms
+    """The walls of R as :mod:`certify.dynamics.island` states them: forms
     positive on R = {|u| < 1, |u − (1+r)v/2| < 1}.  Only compared with the derived ones."""
     h = (1 + r) / 2
     return [1 - u, 1 + u, 1 - u + h * v, 1 + u - h * v]
