@@ -401,18 +401,25 @@ def _matches_reduction(A: sp.Matrix, r) -> bool:
 
 
 def elliptic_step(r, A: sp.Matrix | None, symbolic: bool) -> tuple[Step, bool]:
+    """det A = 1, so A is elliptic iff tr² A − 4 < 0; then it turns every state one way, that
+    of det[e1, A e1] (no real eigenvector: det[w, Aw] never vanishes for w ≠ 0)."""
     if A is None:
         return Step("(c′) elliptic", False, "no linear map"), False
-    disc = sp.factor(A.trace() ** 2 - 4)            # det A = 1: elliptic iff tr² < 4
+    disc = sp.factor(A.trace() ** 2 - 4)
     s = sign_of(disc, symbolic)
     ell = s < 0
-    text = f"tr A² − 4 = {disc}"
+    where = ("on ]3−2√2, 1[ (no root inside: Sturm and python-flint; negative at r = 1/2)" if symbolic
+             else f"at r = {r}")
+    text = f"tr² A − 4 = {disc} {'<' if s < 0 else '>' if s > 0 else '='} 0 {where}"
+    if ell:
+        turn = sign_of(A[1, 0], symbolic)
+        text += (f"; det[e1, A e1] = {sp.factor(A[1, 0])} {'>' if turn > 0 else '<'} 0: A turns every state "
+                 f"{'counter' if turn > 0 else ''}clockwise in the (u, v) chart")
     if symbolic:
-        text += " < 0 on ]3−2√2, 1[ (no root inside: Sturm and python-flint; negative at r = 1/2)"
         return Step("(c′) A is elliptic on ]3−2√2, 1[ (r² − 6r + 1 < 0)", ell, text), ell
     name = "(c′) A is elliptic (r² − 6r + 1 < 0)" if ell else \
         "(c′) A is not elliptic (r² − 6r + 1 ≥ 0): hyperbolic or parabolic, no invariant ellipse, no island"
-    return Step(name, True, text + f" {'<' if s < 0 else '>' if s > 0 else '='} 0 at r = {r}"), ell
+    return Step(name, True, text), ell
 
 
 # --- (d) the invariant form, (e) the island inside R --------------------------------
