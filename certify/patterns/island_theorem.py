@@ -509,6 +509,8 @@ def theorem(r, claims: Claims | None = None) -> Theorem:
     """The island theorem at a rational r in ]0, 1[, every step proved exactly (module docstring)."""
     claims = claims or Claims()
     rq = to_fmpq(r)
+    if not 0 < rq < 1:
+        raise ValueError(f"r = {rq} is not in ]0, 1[")
     rs = sp.Rational(int(rq.p), int(rq.q))
     T = Theorem(rq)
     T.steps.append(commuting_step(rs, claims))
