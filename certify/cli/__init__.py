@@ -41,13 +41,16 @@
              [--out FILE.npz] [--jobs N] [--scheduler ADDRESS]
                                 iterate the reduction map numerically (Section 5,
                                 certify.numerics); the φ of the last b-collisions
+    island (--r R | --r-range LO HI [COUNT]) [--json] [--resonances Q] [--symbolic] [--depth D]
+                                the island theorem at each rational r: quasi-periodic
+                                orbits around [ac]b, proved (certify.patterns.island_theorem)
     stress [--out FILE] [--quick] [--jobs N]
                                 near-singular, long and 1000 random orbits on every
                                 engine against the certified one: reports/STRESS.md
 
 The commands by topic: :mod:`.claims` (all, run, list, bench), :mod:`.exact` (census,
-pattern, particles), :mod:`.section5` (simulate, stress, figures); :mod:`.options` holds
-what they share and :func:`~certify.cli.options.add_command`, the one way a command is
+pattern, particles), :mod:`.section5` (simulate, stress, figures), :mod:`.island_command`
+(island); :mod:`.options` holds what they share and :func:`~certify.cli.options.add_command`, the one way a command is
 registered (each topic's ``register(commands)`` calls it for its commands).
 
 Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
@@ -64,10 +67,10 @@ import traceback
 from certify.errors import UsageError
 from certify.run import progress
 
-from . import claims, exact, section5
+from . import claims, exact, island_command, section5
 from .options import Parser, say
 
-TOPICS = (claims, exact, section5)      # in the order of ``certify --help``
+TOPICS = (claims, exact, section5, island_command)      # in the order of ``certify --help``
 
 
 def build_parser() -> Parser:

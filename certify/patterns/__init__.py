@@ -7,6 +7,8 @@ It imports the models and the exact algebra below it.
 - :mod:`.periodic`: periods as written (powers, [ac]), validation, normal forms.
 - :mod:`.pattern`: ``certify pattern WORD``: exists / feasible / stable regions of a
   word, its verdict, Markdown and JSON (pattern.schema.json).
+- :mod:`.island_theorem`: ``certify island``: the elliptic island around [ac]b, every step
+  proved exactly; the rotation number, the resonances, the island's share of the section.
 """
 from certify.algebra.branches import BRANCH_NAMES
 

@@ -1,0 +1,838 @@
+"""The island theorem: around the symmetric orbit [ac]b the b-to-b map is an elliptic
+rotation, and the orbits in the island U_r are quasi-periodic.  Every step is proved
+here by exact computation, at a rational r (:func:`theorem`) or for r a symbol on
+]3−2√2, 1[ (:func:`symbolic_theorem`), from the collision law and the reduction's own
+sign rules; the objects it proves things about (the chart, A(r), Q, c_max) are those
+of :mod:`certify.dynamics.island`, passed in as :class:`Claims` so that a test can
+perturb any of them and see the theorem refuse.
+
+The steps (each a :class:`Step`: a name, whether it holds, evidence):
+
+(a) K_a K_c = K_c K_a (a and c act on the disjoint pairs 1-2 and 3-4).
+(b) The branch region.  The reduction's rules (the orientation of :func:`reduction.canonical`,
+    the face and next-letter rules of ``reduction._next_letter_exact``) are run on the
+    normal n = (u−1, v, u+1) of the chart with entries that are linear forms in (u, v):
+    every sign the rules ask for is branched on (+, −, 0).  The leaves partition the
+    plane; the states whose next segment is ac or ca and then b are exactly the leaves
+    that contain the walls |u| < 1, |u − (1+r)v/2| < 1 (and v > 0: cab, v < 0: acb), and
+    every other leaf contradicts one of them.  On the tie v = 0 the rules stop (cos φ = 0):
+    it is the double collision [ac], well defined because a and c commute (a).
+(c) On R the b-to-b map is n ↦ cof(K_b) cof(K_a) cof(K_c) n (= cof(K_b) cof(K_c) cof(K_a) n
+    by (a)); n_z − n_x is multiplied by a positive constant, so in the chart it is linear:
+    A(r), det A = 1, tr A = −(1−r)²/(2r); elliptic iff r² − 6r + 1 < 0.
+(d) Q∘A = Q, Q positive definite (and Q spans the invariant quadratic forms of A).
+(e) 4γ·Q = (2γv + βu)² + (4αγ − β²)u² for Q = αu² + βuv + γv², so u² ≤ Q/c_max with
+    c_max = (4αγ − β²)/(4γ): the island {Q < c_max} lies in |u| < 1, and, Q being
+    A-invariant, in |first coordinate of A| < 1, the second wall; c_max is the largest
+    such level (Q = c_max touches u = 1).
+(f) At r = p/q the eigenvalue e^{iθ} is a root of 2pqν² + (q−p)²ν + 2pq, whose primitive
+    form is not monic: e^{iθ} is not a root of unity (a root of unity is an algebraic
+    integer), θ/2π is irrational, and every orbit in U_r is dense on its ellipse
+    Q = const (Kronecker: A is a rotation by θ in coordinates where Q is Euclidean).
+
+>>> from flint import fmpq
+>>> T = theorem(fmpq(3, 10))
+>>> T.holds, T.elliptic, T.c_max, T.quasi_periodic
+(True, True, 71/120, True)
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from functools import cache
+from pathlib import Path
+
+import flint
+import sympy as sp
+
+from certify.algebra import Algebraic, checked_real_root_count, ends, flint_real_roots, precision, sign_at, sturm_count
+from certify.algebra.poly import parse, show, to_fmpq, to_fmpz_poly
+from certify.dynamics import island, reduction
+from certify.dynamics.model import INDEX, collide, collide_particles
+from certify.dynamics.reduction import ORIENTATION, Corner
+
+SCHEMA_PATH = Path(__file__).with_name("island.schema.json")
+u, v, nu = sp.symbols("u v nu")
+R_SYMBOL = sp.Symbol("r", positive=True)
+WORDS = ("acb", "cab")
+LOWER_END = Algebraic.surd(3, -2, 2)          # 3 − 2√2: the interval ]3−2√2, 1[ where A is elliptic
+
+
+def default_walls(r) -> list:
+    """The walls of R as :mod:`certify.dynamics.island` states them: forms
+    positive on R = {|u| < 1, |u − (1+r)v/2| < 1}.  Only compared with the derived ones."""
+    h = (1 + r) / 2
+    return [1 - u, 1 + u, 1 - u + h * v, 1 + u - h * v]
+
+
+@dataclass
+class Claims:
+    """What the theorem is about: the collision law, A, Q, c_max, the walls of R and the
+    words of its two sides.  The defaults are the objects of :mod:`certify.dynamics.island`;
+    a test replaces one to see a step refuse."""
+
+    law: object = collide
+    A: object = island.matrix_A
+    Q: object = island.quadratic_form
+    c_max: object = island.c_max
+    walls: object = default_walls
+    words: tuple = WORDS
+
+
+@dataclass
+class Step:
+    name: str
+    holds: bool
+    evidence: str
+
+
+@dataclass
+class Theorem:
+    """The island theorem at r (a rational, or the symbol r on ]3−2√2, 1[)."""
+
+    r: object
+    steps: list = field(default_factory=list)
+    elliptic: bool = False
+    c_max: object = None
+
+    @property
+    def holds(self) -> bool:
+        return all(s.holds for s in self.steps)
+
+    @property
+    def quasi_periodic(self) -> bool:
+        """Proved: every step holds, A is elliptic and θ/2π is irrational (step f)."""
+        return self.holds and self.elliptic and any(s.name.startswith("(f)") for s in self.steps)
+
+
+# --- signs of polynomials in r, at a rational r or on ]3−2√2, 1[ ----------------
+
+def _fmpq_poly(expr) -> flint.fmpq_poly:
+    P = sp.Poly(sp.expand(expr), R_SYMBOL)
+    return flint.fmpq_poly([to_fmpq(c) for c in reversed(P.all_coeffs())])
+
+
+def interval_sign(expr) -> int:
+    """The sign of a rational function of r on ]3−2√2, 1[: ±1 when it keeps one sign there
+    (no root of its numerator or denominator in the interval, counted by Sturm and
+    python-flint's isolation), ValueError otherwise."""
+    num, den = sp.fraction(sp.cancel(sp.together(expr)))
+    s = 1
+    for f in (num, den):
+        P = _fmpq_poly(f)
+        if P.degree() > 0 and roots_inside(P) != 0:
+            raise ValueError(f"{f} changes sign on ]3−2√2, 1[")
+        s *= (P(flint.fmpq(1, 2)) > 0) - (P(flint.fmpq(1, 2)) < 0)
+    if s == 0:
+        raise ValueError(f"{expr} vanishes on ]3−2√2, 1[")
+    return s
+
+
+def roots_inside(P: flint.fmpq_poly) -> int:
+    """The number of distinct roots of P in the open interval ]3−2√2, 1[, by two routes:
+    Sturm isolation on ]0, 1[ compared exactly with 3−2√2, and python-flint's root
+    balls (a ball meeting 3−2√2 is decided by the exact sign of P there); ArithmeticError
+    when they disagree."""
+    sturm = sum(1 for x in Algebraic.roots(P, 0, 1) if x > LOWER_END)
+    zero_at_end = sign_at(P, LOWER_END) == 0
+    end = LOWER_END.arb(128)
+    flint_count = 0
+    for b in flint_real_roots(P):
+        if b.overlaps(end) and zero_at_end or b.overlaps(flint.arb(1)) and P(1) == 0:
+            continue                        # the root is an end (decided exactly above)
+        if b.overlaps(end) or b.overlaps(flint.arb(1)):
+            raise ArithmeticError(f"a root ball of {P} meets an end of the interval")
+        flint_count += bool(b > end and b < 1)
+    if sturm != flint_count:
+        raise ArithmeticError(f"Sturm ({sturm}) and python-flint ({flint_count}) disagree on the roots of {P}")
+    return sturm
+
+
+def sign_of(expr, symbolic: bool) -> int:
+    """The sign of a constant of Q(r): exact at a rational r, certified on the interval
+    for the symbol r."""
+    expr = sp.cancel(sp.together(expr))
+    if expr == 0:
+        return 0
+    if symbolic and expr.has(R_SYMBOL):
+        return interval_sign(expr)
+    return 1 if expr > 0 else -1
+
+
+# --- (a) the commuting collisions --------------------------------------------------
+
+def matrix(law, letter: str, r) -> sp.Matrix:
+    """The matrix of the collision ``letter`` of ``law`` (its columns: the images of e_1, e_2, e_3)."""
+    cols = [law(letter, e, r) for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+    return sp.Matrix(3, 3, lambda i, j: sp.sympify(cols[j][i]))
+
+
+def cof(K: sp.Matrix) -> sp.Matrix:
+    """cof(K) = det(K) K^{-T}: the map of the normals (reduction's docstring)."""
+    return K.adjugate().T
+
+
+def commuting_step(r, claims: Claims) -> Step:
+    """K_a K_c = K_c K_a, and the same for the law on the four velocities (written
+    independently, :func:`model.collide_particles`): a and c act on disjoint pairs."""
+    Ka, Kc = matrix(claims.law, "a", r), matrix(claims.law, "c", r)
+    D = (Ka * Kc - Kc * Ka).applyfunc(sp.simplify)
+    w = sp.symbols("w1:5")
+    ac = collide_particles("c", collide_particles("a", w, r), r)
+    ca = collide_particles("a", collide_particles("c", w, r), r)
+    particles = all(sp.expand(x - y) == 0 for x, y in zip(ac, ca))
+    ok = D.is_zero_matrix and particles
+    return Step("(a) K_a K_c = K_c K_a", bool(ok),
+                f"K_a K_c − K_c K_a = {D.tolist()} (exact); on the four velocities the law gives a∘c = c∘a: "
+                f"{particles} (a acts on the pair 1-2, c on 3-4); the double collision [ac] acts by K_a K_c, "
+                "and cof(K_a K_c) = cof(K_a) cof(K_c)"
+                + ("" if ok else ": the collisions do not commute, the tie v = 0 has no single map"))
+
+
+# --- (b) the branch region, from the reduction's sign rules ---------------------
+
+class NeedSign(Exception):
+    """The rules asked for the sign of a linear form not yet branched on."""
+
+    def __init__(self, key):
+        self.key = key
+
+
+def form_key(expr, symbolic: bool):
+    """(sign factor, key) with expr = factor · key, key the monic linear form (first
+    coefficient in u, v, 1 equal to 1) over Q(r); None key for a constant."""
+    expr = sp.expand(expr)
+    P = sp.Poly(expr, u, v, domain=sp.QQ.frac_field(R_SYMBOL) if symbolic else sp.QQ)
+    if P.is_zero:
+        return 0, None
+    if P.total_degree() == 0:
+        return sign_of(P.as_expr(), symbolic), None
+    lc = P.coeffs()[0]
+    return sign_of(P.domain.to_sympy(lc), symbolic), P.monic()
+
+
+class Form:
+    """A linear form in (u, v) whose comparisons with 0 are answered by the branch
+    assignment (so that the reduction's own rules can run on it)."""
+
+    def __init__(self, expr, oracle):
+        self.expr, self.oracle = expr, oracle
+
+    def sign(self) -> int:
+        return self.oracle.sign(self.expr)
+
+    def __gt__(self, other):
+        return self.sign() > 0
+
+    def __lt__(self, other):
+        return self.sign() < 0
+
+
+class Oracle:
+    def __init__(self, assignment: dict, symbolic: bool):
+        self.assignment, self.symbolic = assignment, symbolic
+
+    def sign(self, expr) -> int:
+        factor, key = form_key(expr, self.symbolic)
+        if key is None:
+            return factor
+        if key not in self.assignment:
+            raise NeedSign(key)
+        return factor * self.assignment[key]
+
+
+def walk(n: tuple, cofs: dict, oracle: Oracle) -> str:
+    """From the state n at b, the letters up to the return to b (at most 3), by the
+    reduction's rules: the orientation e_t · n > 0 of :func:`reduction.canonical` and the
+    face / next-letter rule of ``reduction._next_letter_exact``; the landing at b must lie
+    inside its face (the same face rule, its next-letter part set aside).  Corner → "corner"."""
+    letter, m, letters = "b", _orient("b", n, oracle), ""
+    try:
+        for _ in range(3):
+            j = reduction._next_letter_exact(letter, INDEX[letter], tuple(Form(z, oracle) for z in m))
+            m = _orient(j, cofs[j] * sp.Matrix(m), oracle)
+            letter, letters = j, letters + j
+            if j == "b":
+                one = Form(sp.Integer(1), oracle)
+                reduction._next_letter_exact("b", INDEX["b"], (Form(m[0], oracle), one, Form(m[2], oracle)))
+                break
+    except Corner:
+        return letters + "|corner"
+    return letters
+
+
+def _orient(letter: str, m, oracle: Oracle) -> tuple:
+    s = oracle.sign(m[ORIENTATION[letter]])
+    if s == 0:
+        raise Corner("e_t · n = 0")
+    return tuple(sp.expand(z * s) for z in m)
+
+
+def explore(n: tuple, cofs: dict, symbolic: bool) -> list[tuple[dict, str]]:
+    """Every leaf of the sign branching: (assignment key → sign, outcome word)."""
+    leaves, stack = [], [{}]
+    while stack:
+        a = stack.pop()
+        try:
+            leaves.append((a, walk(n, cofs, Oracle(a, symbolic))))
+        except NeedSign as need:
+            stack.extend(b for b in ({**a, need.key: s} for s in (1, -1, 0)) if feasible(b, symbolic))
+            continue
+        except Corner:
+            leaves.append((a, "|corner"))
+    return leaves
+
+
+def feasible(assignment: dict, symbolic: bool) -> bool:
+    """Whether some (u, v) gives every form of the assignment its sign: Fourier–Motzkin
+    elimination of u, then v, exact (each coefficient's sign proved, on the interval for the
+    symbol r); strict inequalities combine into strict ones, equalities are substituted."""
+    cons = [(sp.expand(s * k.as_expr()), s == 0) for k, s in assignment.items()]
+    cons = [(k.as_expr(), True) if z else (e, False) for (e, z), k in zip(cons, assignment)]
+    for var in (u, v):
+        coeff = [sp.cancel(sp.diff(e, var)) for e, _ in cons]
+        eq = next((i for i, (c, (_, z)) in enumerate(zip(coeff, cons)) if z and c != 0), None)
+        if eq is not None:
+            e, a = cons[eq][0], coeff[eq]
+            value = sp.cancel(var - e / a)
+            cons = [(sp.expand(sp.cancel(f.subs(var, value))), z) for i, (f, z) in enumerate(cons) if i != eq]
+            continue
+        keep, low, up = [], [], []
+        for (e, z), a in zip(cons, coeff):
+            if a == 0:
+                keep.append((e, z))
+            else:                                   # a·var + rest > 0: var > −rest/a when a > 0
+                bound = sp.cancel(-(e - a * var) / a)
+                (low if sign_of(a, symbolic) > 0 else up).append(bound)
+        cons = keep + [(sp.expand(sp.cancel(U - L)), False) for L in low for U in up]
+    for e, z in cons:
+        e = sp.cancel(e)
+        if z and e != 0:
+            return False
+        if not z and sign_of(e, symbolic) <= 0:
+            return False
+    return True
+
+
+def region_step(r, claims: Claims, symbolic: bool) -> Step:
+    cofs = {L: cof(matrix(claims.law, L, r)) for L in "abc"}
+    n = island.normal(u, v)
+    leaves = explore(n, cofs, symbolic)
+    walls = [form_key(w, symbolic) for w in claims.walls(r)]
+    side = form_key(v, symbolic)
+    sides = {claims.words[1]: 1, claims.words[0]: -1}          # cab on v > 0, acb on v < 0
+    bad = []
+    success = [(a, w) for a, w in leaves if w in sides]
+    for a, w in success:
+        need = [(k, s) for s, k in walls] + [(side[1], side[0] * sides[w])]
+        if any(a.get(k) != s for k, s in need):
+            bad.append(f"the leaf {w} misses a wall: {_show(a)}")
+    for a, w in leaves:
+        if w in sides:
+            continue
+        contradicts = any(k in a and a[k] != s for s, k in walls) or a.get(side[1]) == 0
+        if not contradicts:
+            bad.append(f"the leaf {w or '(none)'} meets the claimed R: {_show(a)}")
+    found = sorted({w for _, w in success})
+    if found != sorted(sides):
+        bad.append(f"the words through R are {found}, not {sorted(sides)}")
+    keys = {k for a, _ in leaves for k in a}
+    text = (f"{len(leaves)} leaves of the sign branching on {len(keys)} linear forms in (u, v), from n = (u−1, v, u+1) "
+            f"at b by the reduction's orientation, face and next-letter rules; the leaves through ac/ca then b: "
+            + "; ".join(f"{w}: {_show(a)}" for a, w in success)
+            + f"; walls claimed: {', '.join(str(sp.factor(w)) + ' > 0' for w in claims.walls(r))}; "
+            "the tie v = 0 stops the rules (cos φ = 0): the double collision [ac], one map by (a)")
+    return Step("(b) the branch region R = {|u| < 1, |u − (1+r)v/2| < 1}, from the reduction's sign rules",
+                not bad, text + ("" if not bad else "; REFUSED: " + "; ".join(bad[:3])))
+
+
+def _show(a: dict) -> str:
+    return ", ".join(f"{sp.factor(k.as_expr())} {'>' if s > 0 else '<' if s < 0 else '='} 0" for k, s in a.items())
+
+
+# --- (c) the linear map -------------------------------------------------------------
+
+def derived_A(r, claims: Claims) -> tuple[sp.Matrix | None, str]:
+    """A in the chart from cof(K_b) cof(K_a) cof(K_c) (and the other order), or None with why."""
+    K = {L: cof(matrix(claims.law, L, r)) for L in "abc"}
+    M_cab, M_acb = K["b"] * K["a"] * K["c"], K["b"] * K["c"] * K["a"]
+    if not (M_cab - M_acb).applyfunc(sp.simplify).is_zero_matrix:
+        return None, "cof(K_b)cof(K_a)cof(K_c) ≠ cof(K_b)cof(K_c)cof(K_a): two maps on the two sides"
+    m = [sp.expand(z) for z in M_cab * sp.Matrix(island.normal(u, v))]
+    d = sp.cancel(m[2] - m[0])
+    if d.has(u) or d.has(v):
+        return None, f"n_z − n_x ↦ {d}: the map is projective, not linear, in the chart"
+    U, V = sp.expand(sp.cancel((m[0] + m[2]) / d)), sp.expand(sp.cancel(2 * m[1] / d))
+    rows = [[sp.cancel(sp.Poly(w, u, v).coeff_monomial(x)) for x in (u, v)] for w in (U, V)]
+    consts = [sp.Poly(w, u, v).coeff_monomial(1) for w in (U, V)]
+    if any(c != 0 for c in consts):
+        return None, f"the image has a constant part {consts}: affine, not linear"
+    return sp.Matrix(rows), f"n_z − n_x ↦ {sp.factor(d)}·(n_z − n_x)/2; M = cof(K_b)cof(K_a)cof(K_c)"
+
+
+def map_step(r, claims: Claims, symbolic: bool) -> tuple[Step, sp.Matrix | None]:
+    A, why = derived_A(r, claims)
+    claimed = sp.Matrix([[sp.sympify(z) for z in row] for row in claims.A(r)])
+    ok = A is not None and (A - claimed).applyfunc(sp.cancel).is_zero_matrix
+    det = sp.cancel(A.det()) if A is not None else None
+    tr = sp.factor(A.trace()) if A is not None else None
+    ok = ok and det == 1 and sp.cancel(tr + (1 - r) ** 2 / (2 * r)) == 0
+    if A is not None and not symbolic:
+        ok = ok and _matches_reduction(A, r)
+    text = (f"{why}; derived A = {A.applyfunc(sp.factor).tolist() if A is not None else None}, "
+            f"claimed {claimed.tolist()}; det A = {det}, tr A = {tr}")
+    return Step("(c) on R the b-to-b map is A(r) in the chart, det A = 1, tr A = −(1−r)²/(2r)", bool(ok), text), A
+
+
+def _matches_reduction(A: sp.Matrix, r) -> bool:
+    """Route 2 at a rational r: reduction.step from the state with chart (1/3, 1/5) (in R
+    for every r in ]0, 1[) lands on A(1/3, 1/5)."""
+    x = (flint.fmpq(1, 3), flint.fmpq(1, 5))
+    P = reduction.canonical("b", island.normal(*x))
+    rq = to_fmpq(r)
+    for _ in range(3):
+        P = reduction.step(P, rq)
+        if P.letter == "b":
+            break
+    got = island.chart(P.n)
+    want = A * sp.Matrix([sp.Rational(1, 3), sp.Rational(1, 5)])
+    return all(to_fmpq(w) == g for w, g in zip(want, got))
+
+
+def elliptic_step(r, A: sp.Matrix | None, symbolic: bool) -> tuple[Step, bool]:
+    """det A = 1, so A is elliptic iff tr² A − 4 < 0; then it turns every state one way, that
+    of det[e1, A e1] (no real eigenvector: det[w, Aw] never vanishes for w ≠ 0)."""
+    if A is None:
+        return Step("(c′) elliptic", False, "no linear map"), False
+    disc = sp.factor(A.trace() ** 2 - 4)
+    s = sign_of(disc, symbolic)
+    ell = s < 0
+    where = ("on ]3−2√2, 1[ (no root inside: Sturm and python-flint; negative at r = 1/2)" if symbolic
+             else f"at r = {r}")
+    text = f"tr² A − 4 = {disc} {'<' if s < 0 else '>' if s > 0 else '='} 0 {where}"
+    if ell:
+        turn = sign_of(A[1, 0], symbolic)
+        text += (f"; det[e1, A e1] = {sp.factor(A[1, 0])} {'>' if turn > 0 else '<'} 0: A turns every state "
+                 f"{'counter' if turn > 0 else ''}clockwise in the (u, v) chart")
+    if symbolic:
+        return Step("(c′) A is elliptic on ]3−2√2, 1[ (r² − 6r + 1 < 0)", ell, text), ell
+    name = "(c′) A is elliptic (r² − 6r + 1 < 0)" if ell else \
+        "(c′) A is not elliptic (r² − 6r + 1 ≥ 0): hyperbolic or parabolic, no invariant ellipse, no island"
+    return Step(name, True, text), ell
+
+
+# --- (d) the invariant form, (e) the island inside R --------------------------------
+
+def invariant_step(r, claims: Claims, symbolic: bool) -> Step:
+    A = sp.Matrix([[sp.sympify(z) for z in row] for row in claims.A(r)])
+    Q = sp.expand(claims.Q(u, v, r))
+    Au, Av = A * sp.Matrix([u, v])
+    diff = sp.cancel(sp.expand(claims.Q(Au, Av, r) - Q))
+    P = sp.Poly(Q, u, v)
+    al, be, ga = (P.coeff_monomial(m) for m in (u ** 2, u * v, v ** 2))
+    pos = sign_of(al, symbolic) > 0 and sign_of(4 * al * ga - be ** 2, symbolic) > 0
+    x, y, z = sp.symbols("x y z")
+    G = sp.expand(x * Au ** 2 + y * Au * Av + z * Av ** 2 - x * u ** 2 - y * u * v - z * v ** 2)
+    eqs = [sp.cancel(c) for c in sp.Poly(G, u, v).coeffs()]
+    dim = 3 - sp.Matrix([[sp.diff(e, w) for w in (x, y, z)] for e in eqs]).rank(simplify=True)
+    ok = diff == 0 and pos and dim == 1
+    return Step("(d) Q∘A = Q, Q positive definite, and Q spans the A-invariant quadratic forms", bool(ok),
+                f"Q = {sp.factor(Q)}; Q∘A − Q = {diff}; α = {al} > 0, 4αγ − β² = {sp.factor(4 * al * ga - be ** 2)}"
+                f" {'> 0' if pos else '≯ 0'}; invariant forms: a space of dimension {dim}")
+
+
+def island_step(r, claims: Claims, symbolic: bool) -> Step:
+    Q = sp.expand(claims.Q(u, v, r))
+    P = sp.Poly(Q, u, v)
+    al, be, ga = (P.coeff_monomial(m) for m in (u ** 2, u * v, v ** 2))
+    level = sp.cancel((4 * al * ga - be ** 2) / (4 * ga))
+    identity = sp.cancel(sp.expand(4 * ga * Q - (2 * ga * v + be * u) ** 2 - (4 * al * ga - be ** 2) * u ** 2))
+    claimed = sp.cancel(sp.sympify(claims.c_max(r)))
+    A = sp.Matrix([[sp.sympify(z) for z in row] for row in claims.A(r)])
+    first = sp.expand((A * sp.Matrix([u, v]))[0])
+    walls = {form_key(w, symbolic)[1] for w in claims.walls(r)}
+    expect = {form_key(w, symbolic)[1] for w in (1 - u, 1 + u, 1 - first, 1 + first)}
+    touch = sp.cancel(claims.Q(1, -be / (2 * ga), r) - level)      # Q = c_max at u = 1: the wall is touched
+    ok = (identity == 0 and sp.cancel(level - claimed) == 0 and sign_of(ga, symbolic) > 0
+          and sign_of(level, symbolic) > 0 and walls == expect and touch == 0)
+    return Step("(e) the island U_r = {Q < c_max} lies in R, c_max the largest such level", bool(ok),
+                f"4γQ = (2γv + βu)² + (4αγ − β²)u² (identity: remainder {identity}), so u² ≤ Q/c_max with "
+                f"c_max = (4αγ − β²)/(4γ) = {sp.factor(level)} (claimed {sp.factor(claimed)}); γ = {ga} > 0; the "
+                f"second wall is |first coordinate of A| = |{first}| < 1, which Q∘A = Q gives; "
+                f"the walls of R are 1 ± u, 1 ± A₁(u, v): {walls == expect}; "
+                f"Q(1, −β/2γ) − c_max = {touch} (touches u = 1)")
+
+
+# --- (f) not a root of unity ---------------------------------------------------------
+
+def irrational_step(r, A: sp.Matrix | None) -> Step:
+    if A is None:
+        return Step("(f) e^{iθ} is not a root of unity", False, "no linear map")
+    rq = to_fmpq(r)
+    p, q = int(rq.p), int(rq.q)
+    cp = sp.Poly(sp.expand(2 * p * q * (nu ** 2 - A.trace() * nu + A.det())), nu)
+    coeffs = [int(c) for c in cp.all_coeffs()]
+    printed = [2 * p * q, (q - p) ** 2, 2 * p * q]
+    f = flint.fmpz_poly(list(reversed(coeffs)))
+    content = f.content()
+    prim = flint.fmpz_poly([c // content for c in f.coeffs()])
+    disc = coeffs[1] ** 2 - 4 * coeffs[0] * coeffs[2]
+    ok = coeffs == printed and disc < 0 and abs(prim.coeffs()[-1]) > 1
+    return Step("(f) e^{iθ} is not a root of unity: θ/2π irrational, every orbit in U_r dense on its ellipse", bool(ok),
+                f"2pq·(ν² − tr A ν + det A) = {_nu(prim * content)} at r = {p}/{q}; content {content}, primitive form "
+                f"{_nu(prim)} (irreducible: discriminant {disc} < 0), leading coefficient {prim.coeffs()[-1]} ≠ ±1: "
+                "not monic, so e^{iθ} is not an algebraic integer, not a root of unity; A is a rotation by θ in "
+                "coordinates where Q is Euclidean (det A = 1, Q∘A = Q), so each orbit is dense on its ellipse "
+                "(Kronecker)")
+
+
+def _nu(f: flint.fmpz_poly) -> str:
+    return str(f).replace("x", "ν")
+
+
+def symbolic_irrational_step() -> Step:
+    """(f) for every rational r = p/q in the interval: the identity in p, q, and the content."""
+    p, q = sp.symbols("p q", positive=True)
+    tr = -(1 - p / q) ** 2 / (2 * p / q)
+    lhs = sp.expand(sp.cancel(2 * p * q * (nu ** 2 - tr * nu + 1)))
+    ok = sp.expand(lhs - (2 * p * q * nu ** 2 + (q - p) ** 2 * nu + 2 * p * q)) == 0
+    return Step("(f) at every rational r = p/q (gcd 1) in the interval, e^{iθ} is not a root of unity", bool(ok),
+                f"2pq(ν² − tr A ν + 1) = {sp.factor(lhs)} (identity in p, q); a prime dividing pq and q − p divides "
+                "p and q, so the content is gcd(2, (q−p)²) ≤ 2 < 2pq: the primitive form is not monic, e^{iθ} is no "
+                "algebraic integer, no root of unity.  At an irrational algebraic r it can be one: the resonances")
+
+
+# --- the theorem -----------------------------------------------------------------
+
+def theorem(r, claims: Claims | None = None) -> Theorem:
+    """The island theorem at a rational r in ]0, 1[, every step proved exactly (module docstring)."""
+    claims = claims or Claims()
+    rq = to_fmpq(r)
+    if not 0 < rq < 1:
+        raise ValueError(f"r = {rq} is not in ]0, 1[")
+    rs = sp.Rational(int(rq.p), int(rq.q))
+    T = Theorem(rq)
+    T.steps.append(commuting_step(rs, claims))
+    T.steps.append(region_step(rs, claims, False))
+    step, A = map_step(rs, claims, False)
+    T.steps.append(step)
+    step, T.elliptic = elliptic_step(rs, A, False)
+    T.steps.append(step)
+    if T.elliptic:
+        T.steps.append(invariant_step(rs, claims, False))
+        T.steps.append(island_step(rs, claims, False))
+        T.steps.append(irrational_step(rs, A))
+        c = sp.cancel(sp.sympify(claims.c_max(rs)))
+        T.c_max = flint.fmpq(int(sp.numer(c)), int(sp.denom(c)))
+    return T
+
+
+@cache
+def symbolic_theorem() -> Theorem:
+    """The theorem for r a symbol on ]3−2√2, 1[: the same steps as identities in Q(r), every
+    sign of a polynomial in r certified on the interval (Sturm and python-flint)."""
+    claims, rs = Claims(), R_SYMBOL
+    T = Theorem(rs)
+    T.steps.append(commuting_step(rs, claims))
+    T.steps.append(region_step(rs, claims, True))
+    step, A = map_step(rs, claims, True)
+    T.steps.append(step)
+    step, T.elliptic = elliptic_step(rs, A, True)
+    T.steps.append(step)
+    T.steps.append(invariant_step(rs, claims, True))
+    T.steps.append(island_step(rs, claims, True))
+    T.steps.append(symbolic_irrational_step())
+    T.c_max = sp.factor(claims.c_max(rs))
+    return T
+
+
+# --- the rotation number ----------------------------------------------------------
+
+CONVENTION = ("ρ = θ/2π with cos θ = tr A/2 = −(1−r)²/(4r), θ ∈ ]0, π[: A turns every state counterclockwise "
+              "in the (u, v) chart (det[w, Aw] > 0) by the angle θ, measured in coordinates where Q is Euclidean")
+
+
+def rotation_ball(r, prec: int = 128) -> flint.arb:
+    """ρ(r) as an arb ball (r rational with r² − 6r + 1 < 0)."""
+    rq = r if isinstance(r, flint.arb) else to_fmpq(r)
+    with precision(prec):
+        c = flint.arb(-(1 - rq) ** 2 / (4 * rq))
+        return c.acos() / (2 * flint.arb.pi())
+
+
+def rotation_number(r, digits: int = 20) -> str:
+    """ρ(r) rounded to ``digits`` significant digits, every one certified: the ball is made
+    narrow enough that both of its ends round alike (increasing the precision)."""
+    prec = 4 * digits + 40
+    while True:
+        z = rotation_ball(r, prec)
+        lo, hi = ends(z)
+        a, b = _round(lo, digits), _round(hi, digits)
+        if a == b:
+            return a
+        prec *= 2
+
+
+def _round(x: flint.fmpq, digits: int) -> str:
+    from certify.dynamics.particles import decimal_digits
+    return decimal_digits(x, digits)[0]
+
+
+# --- resonances -----------------------------------------------------------------------
+
+def cos_minimal_polynomial(q: int) -> flint.fmpz_poly:
+    """The minimal polynomial of cos(2πp/q), gcd(p, q) = 1 (the same for every such p): the
+    factor of T_q(x) − 1 that vanishes at cos(2π/q) (decided by ball evaluation at a point
+    of the factor's isolated roots, and by degree φ(q)/2)."""
+    T = sp.chebyshevt_poly(q, sp.Symbol("x"), polys=True) - 1
+    f = flint.fmpz_poly([int(c) for c in reversed(T.all_coeffs())])
+    with precision(200):
+        c = (2 * flint.arb.pi() / q).cos()
+    want = max(1, sp.totient(q) // 2) if q > 2 else 1
+    for g, _m in f.factor()[1]:
+        if g.degree() == want and flint.arb_poly([flint.arb(x) for x in g.coeffs()])(c).contains(0):
+            return g
+    raise ArithmeticError(f"no factor of T_{q} − 1 vanishes at cos(2π/{q})")
+
+
+def resonance_polynomial(q: int) -> flint.fmpz_poly:
+    """The polynomial in r whose roots in ]0, 1[ are the r with cos θ(r) = cos(2πp/q) for some
+    p prime to q, computed by two routes: the substitution c = −(1−r)²/(4r) cleared of
+    denominators, and SymPy's resultant in c of Ψ_q(c) and r² − (2 − 4c) r + 1; ArithmeticError
+    when they differ (up to a constant)."""
+    psi = cos_minimal_polynomial(q)
+    d = psi.degree()
+    R = flint.fmpz_poly([0, 1])
+    num = -(1 - R) ** 2
+    sub = sum((psi.coeffs()[k] * num ** k * (4 * R) ** (d - k) for k in range(d + 1)), flint.fmpz_poly(0))
+    c, rr = sp.symbols("c r")
+    res = sp.Poly(sp.resultant(sum(int(a) * c ** k for k, a in enumerate(psi.coeffs())),
+                               rr ** 2 - (2 - 4 * c) * rr + 1, c), rr)
+    res = flint.fmpz_poly([int(a) for a in reversed(res.all_coeffs())])
+    if sub * res.coeffs()[-1] != res * sub.coeffs()[-1]:
+        raise ArithmeticError(f"the two eliminations differ at q = {q}")
+    return sub
+
+
+@dataclass
+class Resonance:
+    p: int
+    q: int
+    r: Algebraic
+
+    def interval(self, k: int = 20) -> tuple[str, str]:
+        """An isolating interval with decimal ends ]L/10^k, (L+1)/10^k[ (checked: one root
+        of the minimal polynomial inside, none at the ends)."""
+        m = self.r.minimal_polynomial()
+        L = self.r.floor_scaled(10 ** k)
+        lo, hi = flint.fmpq(L, 10 ** k), flint.fmpq(L + 1, 10 ** k)
+        if m(lo) == 0 or m(hi) == 0 or sturm_count(m, lo, hi) != 1:
+            raise ArithmeticError(f"]{lo}, {hi}[ does not isolate {self.r}")
+        return _decimal(L, k), _decimal(L + 1, k)
+
+    def as_json(self) -> dict:
+        return {"p": self.p, "q": self.q, "minimal_polynomial": show(self.r.minimal_polynomial()),
+                "isolating_interval": list(self.interval()), "digits": self.r.digits(20)}
+
+
+def _decimal(n: int, k: int) -> str:
+    return f"{n // 10 ** k}.{str(n % 10 ** k).zfill(k)}"
+
+
+@cache
+def resonances_of_q(q: int) -> tuple:
+    """The r in ]3−2√2, 1[ where ρ(r) = p/q, gcd(p, q) = 1 (q ≥ 3): roots in ]0, 1[ of the
+    resonance polynomial's factors, counted by Sturm and python-flint alike; p = the integer
+    in q·ρ(r) (a certified ball narrower than 1/2)."""
+    out = []
+    P = resonance_polynomial(q)
+    for g, _m in P.factor()[1]:
+        g = flint.fmpz_poly(g)
+        checked_real_root_count(g)                  # Sturm and python-flint on the line
+        roots = [x for x in Algebraic.roots(g, 0, 1) if x > LOWER_END]
+        if len(roots) != roots_inside(flint.fmpq_poly(g)):
+            raise ArithmeticError(f"root counts disagree for {g}")
+        for x in roots:
+            with precision(200):
+                z = rotation_ball(x.arb(200), 200) * q
+            k = round(float(z.mid()))
+            if not abs(z - k) < flint.arb(1) / 4 or math.gcd(k, q) != 1:
+                raise ArithmeticError(f"no p/q for the root {x} of {g}")
+            out.append(Resonance(k, q, x))
+    return tuple(sorted(out, key=lambda s: s.r))
+
+
+def resonances(Q: int) -> list[Resonance]:
+    """Every r in ]3−2√2, 1[ where the rotation number is p/q with q ≤ Q, increasing in r
+    (ρ decreases from 1/2 to 1/4 as r goes from 3−2√2 to 1, so each p/q ∈ ]1/4, 1/2[ once)."""
+    out = [s for q in range(3, Q + 1) for s in resonances_of_q(q)]
+    return sorted(out, key=lambda s: s.r)
+
+
+def resonance_of(alg: Algebraic, Q: int) -> tuple[int, int] | None:
+    """(p, q) when the algebraic number alg is a resonance with q ≤ Q, else None: the same
+    number (the same minimal polynomial, and isolating intervals that overlap however far
+    refined: Algebraic's exact equality)."""
+    m = alg.minimal_polynomial()
+    for s in resonances(Q):
+        mp = s.r.minimal_polynomial()
+        if (mp == m or mp == -m) and s.r == alg:
+            return s.p, s.q
+    return None
+
+
+def algebraic_of(end: dict) -> Algebraic:
+    """The Algebraic of an end point as the census and ``orbit --json`` print it
+    ({"minimal_polynomial": "r^2 - 4r + 1", "interval": ["0.2679…", "0.2679…"], "exact": …})."""
+    if end.get("exact") is not None:
+        return Algebraic.rational(to_fmpq(end["exact"]))
+    p = to_fmpz_poly(parse(re.sub(r"(\d)r", r"\1*r", end["minimal_polynomial"])))     # "12r^3" as printed
+    lo, hi = (to_fmpq(x) for x in end["interval"])
+    return Algebraic(p, lo, hi)
+
+
+def window_resonances(windows: dict, Q: int = 12) -> list[tuple[str, str, str, tuple[int, int]]]:
+    """(word, "lo" or "hi", digits, (p, q)) for every end of the attracting windows
+    ({word: [{"lo": end, "hi": end}, ...]}, as census.json holds them) that is a resonance
+    of the island with q ≤ Q, exactly (:func:`resonance_of`); an end at 3 − 2√2 is listed
+    with (1, 2): ρ = 1/2 there, the end of the elliptic interval (A parabolic); an end at
+    r = 1 with (1, 4) (ρ → 1/4, the elastic end)."""
+    out = []
+    for word, spans in windows.items():
+        for span in spans:
+            for side in ("lo", "hi"):
+                end = span[side]
+                x = algebraic_of(end)
+                if x == LOWER_END:                   # ρ = 1/2 at 3 − 2√2: the end, A parabolic
+                    out.append((word, side, end["digits"], (1, 2)))
+                elif x == 1:                         # ρ = 1/4 at r = 1: the other end
+                    out.append((word, side, end["digits"], (1, 4)))
+                elif x > LOWER_END and x < 1:
+                    pq = resonance_of(x, Q)
+                    if pq is not None:
+                        out.append((word, side, end["digits"], pq))
+    return out
+
+
+# --- the share of the b-section inside the island -------------------------------------
+
+def island_fraction(r, depth: int = 8, prec: int = 64) -> tuple[flint.fmpq, flint.fmpq]:
+    """[lo, hi] ∋ the share of the b-section (θ, φ) ∈ ]0, π/2[ × ]0, π[ (uniform measure)
+    inside U_r: boxes (fractions s, t of the rectangle, θ = πs/2, φ = πt) are classified by arb
+    balls containing them (p, q from reduction.P0/Q0 at b, n = p ∧ q, Q and c_max at its chart);
+    undecided ones are bisected up to ``depth`` times.  lo = the area proved inside, hi = lo +
+    the area undecided; exact rationals."""
+    rq = to_fmpq(r)
+    if rq * rq - 6 * rq + 1 >= 0:
+        return flint.fmpq(0), flint.fmpq(0)
+    inside, undecided = flint.fmpq(0), flint.fmpq(0)
+    boxes = [(flint.fmpq(0), flint.fmpq(1), flint.fmpq(0), flint.fmpq(1))]
+    with precision(prec):
+        for level in range(depth + 1):
+            nxt = []
+            for box in boxes:
+                s = box_sign(box, rq)
+                area = (box[1] - box[0]) * (box[3] - box[2])
+                if s > 0:
+                    inside += area
+                elif s == 0:
+                    if level == depth:
+                        undecided += area
+                    else:
+                        nxt.extend(_split(box))
+            boxes = nxt
+    return inside, inside + undecided
+
+
+def _split(box):
+    s0, s1, t0, t1 = box
+    sm, tm = (s0 + s1) / 2, (t0 + t1) / 2
+    return [(s0, sm, t0, tm), (sm, s1, t0, tm), (s0, sm, tm, t1), (sm, s1, tm, t1)]
+
+
+def box_sign(box, r: flint.fmpq) -> int:
+    """+1 when the whole box is in U_r, −1 when none of it is, 0 undecided: the chart of
+    the box enclosed in a rectangle [u] × [v] by monotonicity, then Q bounded on it exactly
+    as balls.  At b, n = p ∧ q = (−cos θ sin φ, cos φ, sin θ sin φ) (reduction.Angles), so
+    u = tan(θ − π/4), increasing in θ, and v = 2 cot φ · w(θ) with w = 1/(sin θ + cos θ) > 0,
+    cot φ decreasing, w smallest at θ = π/4 and largest at an end.  Q is convex (positive
+    definite): its maximum on the rectangle is at a corner, its minimum at the origin or
+    on an edge (a quadratic in one variable, minimised in closed form).  Boxes touching
+    φ = 0 or π (v unbounded) go to :func:`box_sign_balls`."""
+    s0, s1, t0, t1 = box
+    if t0 == 0 or t1 == 1:
+        return box_sign_balls(box, r)
+    pi = flint.arb.pi()
+    th0, th1 = s0 * pi / 2, s1 * pi / 2
+    ph0, ph1 = t0 * pi, t1 * pi
+    ua, ub = _lower((th0 - pi / 4).tan()), _upper((th1 - pi / 4).tan())
+    w = [1 / (x.sin() + x.cos()) for x in (th0, th1)]
+    w_hi = max(_upper(w[0]), _upper(w[1]))
+    w_lo = _lower(1 / flint.arb(2).sqrt()) if s0 <= flint.fmpq(1, 2) <= s1 else min(_lower(w[0]), _lower(w[1]))
+    c_lo, c_hi = _lower(ph1.cos() / ph1.sin()), _upper(ph0.cos() / ph0.sin())
+    va, vb = 2 * min(c_lo * w_lo, c_lo * w_hi), 2 * max(c_hi * w_lo, c_hi * w_hi)
+    ua, ub, va, vb = (flint.arb(x) for x in (ua, ub, va, vb))
+    R, c = flint.arb(r), flint.arb(island.c_max(r))
+    corners = [island.quadratic_form(x, y, R) for x in (ua, ub) for y in (va, vb)]
+    if all(c - q > 0 for q in corners):
+        return 1
+    if ua <= 0 <= ub and va <= 0 <= vb:
+        return 0
+    edges = [_edge_min(R, -(1 + R) * x, 2 * x * x, va, vb) for x in (ua, ub)] + \
+            [_edge_min(flint.arb(2), -(1 + R) * y, R * y * y, ua, ub) for y in (va, vb)]
+    return -1 if all(e - c > 0 for e in edges) else 0
+
+
+def _lower(z: flint.arb) -> flint.fmpq:
+    """The exact lower end of a ball (so that min and max below are exact)."""
+    return ends(z)[0]
+
+
+def _upper(z: flint.arb) -> flint.fmpq:
+    return ends(z)[1]
+
+
+def _edge_min(a2, a1, a0, lo, hi) -> flint.arb:
+    """A lower bound (a ball) of a2 x² + a1 x + a0 (a2 > 0) on [lo, hi]: the value at the
+    nearer end when the vertex −a1/(2a2) is proved outside, else the vertex value."""
+    x = -a1 / (2 * a2)
+    if x < lo:
+        return a2 * lo * lo + a1 * lo + a0
+    if x > hi:
+        return a2 * hi * hi + a1 * hi + a0
+    return a0 - a1 * a1 / (4 * a2)
+
+
+def box_sign_balls(box, r: flint.fmpq) -> int:
+    """:func:`box_sign` by plain ball arithmetic on the box (balls containing θ and φ through
+    reduction.Angles, n = p ∧ q, its chart and Q): coarser, the second route."""
+    s0, s1, t0, t1 = box
+    pi = flint.arb.pi()
+    th = flint.arb((s0 + s1) / 2, (s1 - s0) / 2) * pi / 2
+    ph = flint.arb((t0 + t1) / 2, (t1 - t0) / 2) * pi
+    T = reduction.Angles("b", th.cos(), th.sin(), ph.cos(), ph.sin())
+    n = T.u()
+    d = n[2] - n[0]
+    if not d > 0:
+        return 0
+    U, V = (n[0] + n[2]) / d, 2 * n[1] / d
+    gap = flint.arb(island.c_max(r)) - island.quadratic_form(U, V, flint.arb(r))
+    return 1 if gap > 0 else -1 if gap < 0 else 0
+
+
+# --- JSON -------------------------------------------------------------------------------
+
+def report(r, depth: int = 8, digits: int = 20) -> dict:
+    """The JSON record of the island at a rational r (schema island.schema.json)."""
+    T = theorem(r)
+    rq = T.r
+    out = {"r": str(rq), "elliptic": T.elliptic, "holds": T.holds,
+           "c_max": str(T.c_max) if T.c_max is not None else None,
+           "rotation_number": None, "quasi_periodic": T.quasi_periodic, "island_fraction": None,
+           "steps": [{"name": s.name, "holds": s.holds, "evidence": s.evidence} for s in T.steps]}
+    if T.elliptic:
+        out["rotation_number"] = {"value": rotation_number(rq, digits), "digits": digits, "convention": CONVENTION}
+        lo, hi = island_fraction(rq, depth)
+        out["island_fraction"] = {"lo": str(lo), "hi": str(hi), "depth": depth}
+    return out

@@ -1,0 +1,114 @@
+"""The island's figures (floats: drawings only; the proofs are in
+:mod:`certify.patterns.island_theorem`):
+
+* :func:`section_axes`: the b-section (θ, φ) at r with the island's boundary ellipse
+  Q = c_max drawn over the b-section points of the paper's orbits (float64 engine, the
+  initial data of ``certify.numerics.grid(8)``);
+* :func:`rotation_axes`: the rotation number ρ(r) on ]3−2√2, 1[ with the resonances p/q
+  marked, over the attracting windows of the census (reports/census.json, read with
+  :func:`certify.patterns.census.attracting_windows`);
+* :func:`island_figure`: both, side by side, written to a path (``certify island --figure``).
+"""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from certify.dynamics import island
+from certify.patterns import census
+from certify.patterns import island_theorem as it
+
+from . import files, saving
+
+LOWER = 3 - 2 * math.sqrt(2)
+
+
+def b_section_points(r: float, collisions: int = 3000, count: int = 8) -> list[tuple[np.ndarray, np.ndarray]]:
+    """(θ, φ) at every b-collision of the float64 orbits of the paper's first ``count``
+    initial data (an observation: float orbits past their certified horizon)."""
+    from certify.numerics import engines, grid, rules
+    theta0, phi0 = grid(count)
+    out = []
+    for t0, p0 in zip(theta0, phi0):
+        res = engines.float64_orbit(r, float(t0), float(p0), collisions, checkpoints=range(1, collisions + 1))
+        pts = [(rules.theta_of(1, n), rules.phi_of(1, n)) for c, (i, n) in sorted(res.checkpoints.items()) if i == 1]
+        th, ph = (np.array(x) for x in zip(*pts)) if pts else (np.array([]), np.array([]))
+        out.append((th, ph))
+    return out
+
+
+def island_share(theta: np.ndarray, phi: np.ndarray, r: float) -> np.ndarray:
+    """c_max − Q at the b-states (θ, φ), floats (positive inside the island)."""
+    n = np.array([-np.cos(theta) * np.sin(phi), np.cos(phi), np.sin(theta) * np.sin(phi)])
+    d = n[2] - n[0]
+    u, v = (n[0] + n[2]) / d, 2 * n[1] / d
+    return float(island.c_max(r)) - island.quadratic_form(u, v, r)
+
+
+def section_axes(ax, r, collisions: int = 3000) -> None:
+    rf = float(r)
+    for k, (th, ph) in enumerate(b_section_points(rf, collisions)):
+        ax.plot(th, ph, ".", ms=1.2, alpha=0.6, label=f"orbit {k + 1}")
+    if rf > LOWER:
+        T, P = np.meshgrid(np.linspace(1e-3, math.pi / 2 - 1e-3, 400), np.linspace(1e-3, math.pi - 1e-3, 400))
+        ax.contour(T, P, island_share(T, P, rf), levels=[0], colors="k", linewidths=1.2)
+    ax.set_xlim(0, math.pi / 2)
+    ax.set_ylim(0, math.pi)
+    ax.set_xlabel("θ")
+    ax.set_ylabel("φ")
+    ax.set_title(f"b-section at r = {r}: the island's boundary Q = c_max (black)")
+
+
+def census_windows(path: Path | None = None) -> list[tuple[str, float, float]]:
+    """(word, lo, hi) of every attracting window of the committed census (floats of the
+    certified ends), or [] when there is no census file."""
+    text = files.read_text_or_none(path or files.REPORTS / "census.json")
+    if text is None:
+        return []
+    doc = json.loads(text)
+    return [(rec.get("compact", rec.get("word", "?")), float(lo["digits"]), float(hi["digits"]))
+            for rec in doc.get("words", []) for lo, hi, _pair in census.attracting_windows(rec)]
+
+
+def rotation_axes(ax, Q: int = 12, windows=None) -> None:
+    rs = np.linspace(LOWER + 1e-9, 1 - 1e-9, 600)
+    rho = np.arccos(-(1 - rs) ** 2 / (4 * rs)) / (2 * math.pi)
+    ax.plot(rs, rho, "k-", lw=1.2, label="ρ(r)")
+    for s in it.resonances(Q):
+        x = float(s.r)
+        ax.axvline(x, color="tab:blue", lw=0.5, alpha=0.6)
+        ax.annotate(f"{s.p}/{s.q}", (x, s.p / s.q), fontsize=7, xytext=(2, 2), textcoords="offset points")
+    shown = [(w, lo, hi) for w, lo, hi in (windows if windows is not None else census_windows()) if hi > LOWER]
+    for k, (w, lo, hi) in enumerate(shown):            # one thin row per window, at the bottom
+        y = 0.02 + 0.04 * k
+        ax.axvspan(max(lo, LOWER), hi, ymin=y, ymax=y + 0.03, color="tab:orange", alpha=0.8,
+                   label="attracting windows (census)" if k == 0 else None)
+        ax.annotate(w, (max(lo, LOWER), 0.24 + 0.27 * (y + 0.03)), fontsize=6, va="bottom")
+    ax.set_xlim(LOWER - 0.01, 1)
+    ax.set_ylim(0.24, 0.51)
+    ax.set_xlabel("r")
+    ax.set_ylabel("rotation number ρ")
+    ax.set_title(f"ρ(r) and the resonances p/q, q ≤ {Q}")
+    ax.legend(loc="upper right", fontsize=7)
+
+
+def island_figure(path, r=None, Q: int = 12) -> Path:
+    """The b-section at r (when given) and the rotation number against r, into ``path``."""
+    plt = saving.pyplot()
+    ncols = 2 if r is not None else 1
+    fig, axes = plt.subplots(1, ncols, figsize=(6 * ncols, 4.5))
+    axes = np.atleast_1d(axes)
+    if r is not None:
+        section_axes(axes[0], r)
+    rotation_axes(axes[-1], Q)
+    fig.tight_layout()
+    path = Path(path)
+    try:
+        with files.atomic_path(path) as tmp:
+            fig.savefig(tmp, format="png", dpi=saving.DPI, metadata={"Software": None})
+    finally:
+        plt.close(fig)
+    return path
