@@ -60,11 +60,15 @@ ISLAND, ATTRACTING, UNRESOLVED = "island", "attracting periodic", "unresolved"
 CLASSES = (ISLAND, ATTRACTING, UNRESOLVED)
 COLLISIONS = 100_000       # default length of the float64 run (and of the rigorous scan)
 WINDOW_MAX = 24            # the window over ]0, 1[ only for words up to this length
+MAX_ANALYSED = 1000        # longer observed periods are not analysed (orbit_at, the trap)
+SHOWN = 200                # an island orbit's observed quasi-period is shown up to this length
 VERIFY_START = 128         # bits of the second route's balls, doubled up to VERIFY_CAP
 VERIFY_CAP = 1 << 16
 VERIFY_MAX = 20_000        # the second route re-runs at most this many collisions
 REFUSALS = 3               # a kind of proof refused this often by the second route is dropped
 GRID = "the tool's grid of 8 initial data"
+BEYOND = "beyond the second route's reach"
+PROOF_OF = {"island": "island", "attracting periodic": "trapping ellipse"}
 
 
 def period_of(word: str, max_period: int | None = None) -> str | None:
@@ -179,11 +183,11 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
     """None when the claim "the orbit from (θ0, φ0) at r is of class ``cls`` from collision
     k" (``word``: the rotation followed, for the attracting class) is proved by the second
     route of the module docstring; otherwise the reason it is refused."""
-    r = rules.exact_r(r)
+    r = flint.fmpq(r.numerator, r.denominator) if isinstance(r, Fraction) else rules.exact_r(r)
     if cls not in (ISLAND, ATTRACTING):
         return f"{cls!r} is not a class with a proof"
     if k > VERIFY_MAX:
-        return f"collision {k} is beyond the second route's reach ({VERIFY_MAX})"
+        return f"{BEYOND} ({VERIFY_MAX} collisions)"
     if cls == ISLAND and not elliptic(r):
         return f"no island at r = {r}: r² − 6r + 1 ≥ 0 (A(r) not elliptic)"
     if cls == ATTRACTING:
@@ -214,7 +218,8 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
             return None if s > 0 else f"the state at b after collision {k} is not proved inside the island (Q < c_max)"
         if last != word[-1]:
             return f"the state after collision {k} is at contact {last}, not {word[-1]} (the start of {word})"
-        return None if U.ball_sign(n) > 0 else f"the state after collision {k} is not proved inside the trapping ellipse"
+        inside = U.ball_sign(n) > 0
+        return None if inside else f"the state after collision {k} is not proved inside the trapping ellipse"
 
 
 # ------------------------------------------------------------------ the classification
@@ -258,11 +263,14 @@ class Identified:
 def _observed(x: Identified, word: str, block: str | None) -> str:
     if x.breaks:
         return f"the float64 run stopped with break {x.breaks} after {x.collisions} collisions"
+    if block is not None and x.word is None:
+        return (f"the float64 run repeats a block of {len(block)} letters from about collision {x.settled} to its "
+                f"end ({x.collisions}; observed, not certified)")
     if block is None:
         return (f"no period within {x.collisions} collisions (the last half of the float64 run has no period "
                 f"≤ {x.collisions // 8})")
-    return (f"settles on {x.word} (= {x.compact}) in float64 from about collision {x.settled} "
-            "(observed, not certified)")
+    return (f"the float64 run repeats {x.word} (= {x.compact}) from about collision {x.settled} to its end "
+            f"({x.collisions}; observed, not certified)")
 
 
 def _scan(x: Identified, r, theta0, phi0, U, rotation, budget):
@@ -284,17 +292,24 @@ def _scan(x: Identified, r, theta0, phi0, U, rotation, budget):
             why = verify(r, theta0, phi0, cls, k, rotation)
             if why is None:
                 return cls, k
-            tries[cls] -= 1
-            x.notes.append(f"{cls} at collision {k} refused by the second route: {why}")
+            if why.startswith(BEYOND):                     # later states are further still: stop trying
+                tries[cls] = 0
+                x.notes.append(f"the rigorous orbit is inside the {PROOF_OF[cls]} at collision {k}, not re-checked: "
+                               f"{why}")
+            else:
+                tries[cls] -= 1
+                x.notes.append(f"{cls} at collision {k} refused by the second route: {why}")
         if not any(tries.values()):
             return None, ""
     done = k
     if stop["code"]:
         return None, f"the certified orbit (balls) stopped undecided at collision {done + 1} ({stop['bits']} bits)"
-    return None, f"the certified orbit (balls) was not proved inside the island or the trap within {done} collisions"
+    where = " or ".join(w for w, k in (("the island", ISLAND), ("the trapping ellipse", ATTRACTING)) if tries[k])
+    return None, f"the certified orbit (balls) was not proved inside {where} within {done} collisions"
 
 
-def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIONS, windows: bool = False) -> Identified:
+def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIONS,
+             windows: bool = False) -> Identified:
     """One orbit's class (module docstring)."""
     q = flint.fmpq(r.numerator, r.denominator)
     res = engines.float64_orbit(q, theta0, phi0, collisions, word=True)
@@ -303,6 +318,9 @@ def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIO
     U, rotation, o, why_not = None, None, None, ""
     if block is not None:
         x.settled = settled_from(res.word, len(block))
+    if block is not None and len(block) > MAX_ANALYSED:
+        why_not = f"a block of {len(block)} letters (longer than {MAX_ANALYSED}: not analysed)"
+    elif block is not None:
         try:
             normal = read(block)[0]
         except UsageError as exc:
@@ -329,8 +347,11 @@ def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIO
         x.cls, x.certified_from = ISLAND, k
         x.why = (f"quasi-periodic for ever, proved from collision {k}: the state at b after collision {k} "
                  "(arb balls from the datum) lies in the island U_r = {Q < c_max} (the island theorem, "
-                 "`certify island`)" + (f"; observed in float64: repeats {x.word} for a while (not a periodic "
-                                        "orbit of the island)" if block is not None else ""))
+                 "`certify island`)")
+        if x.word is not None and len(x.word) > SHOWN:
+            x.word = x.compact = None                # a quasi-period of the island: not worth printing
+        if x.word is not None:
+            x.why += f"; observed in float64: repeats {x.word} for {res.collisions - x.settled} collisions"
         x.rotation = None
     elif cls == ATTRACTING:
         x.cls, x.certified_from, x.rotation = ATTRACTING, k, rotation

@@ -12,7 +12,7 @@ runs settle on is also decided exactly at r by
 multiplier modulus); its attracting window over ]0, 1[ (``certify orbit``) is added for
 words of at most :data:`WINDOW_MAX` letters.  No timing is written (the file is committed).
 
-The format (schema ``certify-section5-orbits``, version 2, docs/schemas/section5-orbits.schema.json)::
+The format (schema ``certify-section5-orbits``, version 2, certify/run/section5-orbits.schema.json)::
 
     {"schema", "version", "command", "grid", "period_search",
      "claims": {"N2" | "N5" | "N6": [
@@ -26,7 +26,8 @@ The format (schema ``certify-section5-orbits``, version 2, docs/schemas/section5
                     "modulus": the largest multiplier modulus (decimal, a certified ball's midpoint),
                     "modulus_one": |ν| = 1 exactly (λ³ = det M_w, a complex pair),
                     "window": {"branch", "pair", "lo", "hi"} (ends as in `orbit --json`) | null}],
-         "unsettled": number of orbits with no period within the collisions,
+         "unsettled": number of orbits with no word analysed (no period within the collisions, or a
+                      block too long: an island orbit's quasi-period),
          "breaks": number of orbits that stopped on a break}]}}
 
 What is certified and what is observed: a word is observed (the float64 run) unless an
@@ -256,8 +257,6 @@ def classes_check(entry: dict) -> list:
     if left:
         rest.append(f"{len(left)} of {n} orbits unresolved (neither in the island nor proved inside a trapping "
                     f"ellipse within {entry['collisions']} collisions)")
-    if entry["unsettled"]:
-        rest.append(f"{entry['unsettled']} of {n} orbits show no period within {entry['collisions']} collisions")
     if entry["breaks"]:
         rest.append(f"{entry['breaks']} of {n} orbits stopped on a break")
     if rest:
