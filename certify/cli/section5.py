@@ -159,7 +159,8 @@ def section5_findings(args) -> int:
         raise UsageError("--section5 runs its own plan of r (certify.run.section5_orbits.PLAN): "
                          "not with --r, --r-range or --json")
     out = ensure_writable(args.out if args.out is not None else DEFAULT_OUT)
-    found = section5_orbits.findings(progress=lambda s: print(s, flush=True))
+    from certify.run.progress import Bar
+    found = section5_orbits.findings(progress=Bar("r"))
     print(f"wrote {section5_orbits.write(found, out)}")
     return 0
 

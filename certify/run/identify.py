@@ -20,9 +20,10 @@ For each r (an exact rational: 0.3 is 3/10) and initial datum (θ0, φ0) at the 
 
 Each proof is checked again before it is reported (:func:`verify`), by a second route to
 the state: the reduction's own ball steps (:func:`certify.dynamics.reduction.ball_run`,
-precision doubled until every sign is decided), the island's sign recomputed from Q and
-c_max, the trapping ellipse re-certified from its exact data (:func:`trapping.check`)
-and the word re-decided by ``orbit_at``.  A word is "certified" only in the second class;
+precision doubled until every sign is decided; up to :data:`VERIFY_MAX` collisions, beyond
+which the first route's state is used), the island's sign recomputed from Q and c_max,
+the trapping ellipse re-certified from its exact data (:func:`trapping.check`) and the
+word re-decided by ``orbit_at``.  A word is "certified" only in the second class;
 otherwise it is what the float64 run shows past its certified horizon: "observed".
 
 The period search: the shortest period p of the last half of the run (the prefix
@@ -45,7 +46,7 @@ from certify.algebra.balls import precision
 from certify.algebra.branches import BRANCH_NAMES
 from certify.dynamics import island
 from certify.dynamics.island import island_sign
-from certify.dynamics.model import INDEX
+from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ball_run
 from certify.dynamics.simulate import Undecided, sign
 from certify.errors import UsageError
@@ -64,11 +65,9 @@ MAX_ANALYSED = 1000        # longer observed periods are not analysed (orbit_at,
 SHOWN = 200                # an island orbit's observed quasi-period is shown up to this length
 VERIFY_START = 128         # bits of the second route's balls, doubled up to VERIFY_CAP
 VERIFY_CAP = 1 << 16
-VERIFY_MAX = 20_000        # the second route re-runs at most this many collisions
+VERIFY_MAX = 20_000        # the second route re-runs at most this many collisions (beyond: the first route)
 REFUSALS = 3               # a kind of proof refused this often by the second route is dropped
 GRID = "the tool's grid of 8 initial data"
-BEYOND = "beyond the second route's reach"
-PROOF_OF = {"island": "island", "attracting periodic": "trapping ellipse"}
 
 
 def period_of(word: str, max_period: int | None = None) -> str | None:
@@ -166,7 +165,14 @@ def elliptic(r: flint.fmpq) -> bool:
 def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tuple, int] | str:
     """The state after collision k from the datum by :func:`ball_run` (contact, oriented
     ball normal, bits), precision doubled from VERIFY_START until all k collisions are
-    decided; a reason when VERIFY_CAP does not suffice."""
+    decided; a reason when VERIFY_CAP does not suffice.  Beyond VERIFY_MAX collisions (the
+    second route's balls wrap, about a bit per collision: minutes) the state is the first
+    route's (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
+    if k > VERIFY_MAX:
+        for done, j, n, bits in engines.ball_states(r, theta0, phi0, k):
+            if done == k:
+                return LETTERS[j], n, bits
+        return f"the certified orbit stopped undecided before collision {k}"
     prec = VERIFY_START
     while True:
         with precision(prec):
@@ -186,8 +192,6 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
     r = flint.fmpq(r.numerator, r.denominator) if isinstance(r, Fraction) else rules.exact_r(r)
     if cls not in (ISLAND, ATTRACTING):
         return f"{cls!r} is not a class with a proof"
-    if k > VERIFY_MAX:
-        return f"{BEYOND} ({VERIFY_MAX} collisions)"
     if cls == ISLAND and not elliptic(r):
         return f"no island at r = {r}: r² − 6r + 1 ≥ 0 (A(r) not elliptic)"
     if cls == ATTRACTING:
@@ -292,13 +296,8 @@ def _scan(x: Identified, r, theta0, phi0, U, rotation, budget):
             why = verify(r, theta0, phi0, cls, k, rotation)
             if why is None:
                 return cls, k
-            if why.startswith(BEYOND):                     # later states are further still: stop trying
-                tries[cls] = 0
-                x.notes.append(f"the rigorous orbit is inside the {PROOF_OF[cls]} at collision {k}, not re-checked: "
-                               f"{why}")
-            else:
-                tries[cls] -= 1
-                x.notes.append(f"{cls} at collision {k} refused by the second route: {why}")
+            tries[cls] -= 1
+            x.notes.append(f"{cls} at collision {k} refused by the second route: {why}")
         if not any(tries.values()):
             return None, ""
     done = k

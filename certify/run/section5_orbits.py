@@ -18,7 +18,8 @@ The format (schema ``certify-section5-orbits``, version 2, certify/run/section5-
      "claims": {"N2" | "N5" | "N6": [
         {"r": "99/100", "collisions": 100000, "orbits": 8,
          "classes": {"island": k, "attracting periodic": m, "unresolved": u},
-         "classified": [{"theta0", "phi0", "class", "certified_from", "word", "rotation"}]  (one per orbit),
+         "classified": [{"theta0", "phi0", "class", "certified_from", "word" (certified), "rotation",
+                         "observed" (the word the float64 run repeats, or null)}]  (one per orbit),
          "words": [{"word": normal form, "compact", "period", "count" (orbits observed to settle on it),
                     "certified" (orbits proved to follow it for ever),
                     "kind": attracting | saddle | repelling | "" (no orbit, or modulus 1),
@@ -98,7 +99,8 @@ def at(r: Fraction, collisions: int, orbits: int = 8) -> dict:
     for t, p in zip(theta0, phi0):
         x = ident.classify(r, float(t), float(p), collisions)
         classified.append({"theta0": x.theta0, "phi0": x.phi0, "class": x.cls, "certified_from": x.certified_from,
-                           "word": x.word if x.cls == ident.ATTRACTING else None, "rotation": x.rotation})
+                           "word": x.word if x.cls == ident.ATTRACTING else None, "rotation": x.rotation,
+                           "observed": x.word})
         if x.breaks:
             breaks += 1
             continue
@@ -119,15 +121,16 @@ def at(r: Fraction, collisions: int, orbits: int = 8) -> dict:
 
 def findings(plan=None, progress=None) -> dict:
     """Run the plan (:data:`PLAN`): the findings in the module docstring's format (no
-    timing: the file is committed)."""
+    timing: the file is committed); ``progress(k, n, label)`` after each r."""
     plan = plan or PLAN
-    claims = {}
+    claims, total, done = {}, sum(len(points) for points in plan.values()), 0
     for claim, points in plan.items():
         claims[claim] = []
         for r, collisions in points:
             claims[claim].append(at(Fraction(r), collisions))
+            done += 1
             if progress is not None:
-                progress(f"{claim} r = {r}")
+                progress(done, total, f"{claim} r = {r}")
     return {"schema": SCHEMA, "version": VERSION, "command": COMMAND, "grid": ident.GRID,
             "period_search": PERIOD_SEARCH, "claims": claims}
 
@@ -228,7 +231,18 @@ def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
         text = (f"{EXPLANATION} {seen}: no periodic orbit of the reduction with this word at r (the eigen-normal n* "
                 f"{where}){one}, certified at r exactly: the ω-limit set is not a periodic orbit of the reduction "
                 "with this word")
+    text += _island_note(entry, w)
     return holds, text, []
+
+
+def _island_note(entry: dict, w: str) -> str:
+    """", m of them island orbits (...)" for the orbits that repeat w in float64 and are
+    proved island orbits (their check follows, :func:`classes_check`)."""
+    m = sum(o.get("observed") == w and o["class"] == "island" for o in entry.get("classified", []))
+    if not m:
+        return ""
+    return (f"; {m} of the orbits that repeat it are island orbits, quasi-periodic for ever (proved below): "
+            "the word codes the island's rotation for a while")
 
 
 def classes_check(entry: dict) -> list:

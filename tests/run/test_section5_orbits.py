@@ -56,6 +56,9 @@ def test_the_classes_of_the_committed_findings_say_what_is_proved():
     for claim in s5.PLAN:
         for c in s5.explanations(claim, s5.FINDINGS):
             assert "unexplained" not in c.statement
+    near_one = [c.statement for c in s5.explanations("N2", s5.FINDINGS) if "r = 999/1000" in c.statement]
+    assert any("(acb)^2(cab)^2" in t.replace("acbacbcabcab", "(acb)^2(cab)^2") and "island orbits" in t
+               for t in near_one), near_one
 
 
 def test_a_committed_class_that_does_not_hold_fails():
