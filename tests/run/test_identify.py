@@ -174,3 +174,11 @@ def test_the_command_prints_one_line_per_orbit_with_its_class(capsys):
     assert cli.main(["identify", "--r", "3/10", "--orbits", "2", "--collisions", "5000"]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert len(lines) == 2 and lines[0].split(": ")[1] in ident.CLASSES
+
+
+def test_windows_adds_the_attracting_window_of_short_words_only_when_asked():
+    theta0, phi0 = grid(1)
+    x = ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 5000, windows=True)
+    assert x.cls == ident.ATTRACTING and x.window["pair"] == "complex" and x.window["hi"]["exact"] == "1"
+    assert Fraction(x.window["lo"]["interval"][1]) < Fraction(3, 10)
+    assert ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 5000).window is None
