@@ -273,8 +273,12 @@ def _observed(x: Identified, word: str, block: str | None) -> str:
     if block is None:
         return (f"no period within {x.collisions} collisions (the last half of the float64 run has no period "
                 f"≤ {x.collisions // 8})")
-    return (f"the float64 run repeats {x.word} (= {x.compact}) from about collision {x.settled} to its end "
-            f"({x.collisions}; observed, not certified)")
+    return (f"the float64 run repeats {_named(x)} from about collision {x.settled} to its end "
+            f"({x.collisions} collisions; not certified)")
+
+
+def _named(x: Identified) -> str:
+    return x.word if x.compact in (None, x.word) else f"{x.word} (= {x.compact})"
 
 
 def _scan(x: Identified, r, theta0, phi0, U, rotation, budget):
@@ -350,13 +354,14 @@ def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIO
         if x.word is not None and len(x.word) > SHOWN:
             x.word = x.compact = None                # a quasi-period of the island: not worth printing
         if x.word is not None:
-            x.why += f"; observed in float64: repeats {x.word} for {res.collisions - x.settled} collisions"
+            x.why += (f"; observed in float64: repeats {_named(x)} for {res.collisions - x.settled} collisions "
+                      "(a coding of the island's rotation, not a periodic orbit)")
         x.rotation = None
     elif cls == ATTRACTING:
         x.cls, x.certified_from, x.rotation = ATTRACTING, k, rotation
         x.trap = {"contact": rotation[-1], "radius": str(U.radius), "contraction": trapping._dec(U.contraction)}
         pair = f"{o.pair} in-plane pair" + (": not a collapse" if o.pair == "complex" else "")
-        x.why = (f"certified: follows {x.word} (= {x.compact}) for ever from collision {k}, and converges to its "
+        x.why = (f"certified: follows {_named(x)} for ever from collision {k}, and converges to its "
                  f"attracting periodic orbit ({o.branch_name} branch, {pair}; decided exactly at r): its state at "
                  f"{rotation[-1]} after collision {k} (arb balls from the datum) lies in the certified trapping "
                  f"ellipse U (contraction κ ≤ {x.trap['contraction']} per period)")
