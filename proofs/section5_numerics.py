@@ -119,7 +119,7 @@ def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
     checks.append(Check("the engine breaks on each printed rule: " + "; ".join(breaks),
                         all(k is not None and rules[k] for k in printed_rules),
                         ["the engine's break codes: " + "; ".join(f"{c}: {b}" for c, b in BREAKS.items())]))
-    return observe(checks, note="The paper does not print its 8 initial data; ours are θ0 ∈ {π/6, π/3}, "
+    return observe(checks, note="The paper does not print its 8 initial data; the tool's grid of 8: θ0 ∈ {π/6, π/3}, "
                                 "φ0 ∈ {π/5, 2π/5, 3π/5, 4π/5} at contact b.")
 
 

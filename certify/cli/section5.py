@@ -37,7 +37,7 @@ def r_values(args):
 
 def initial_data(args):
     """(θ0, φ0): paired from ``--theta0`` and ``--phi0`` (θ0 in [0, π/2], φ0 in [0, π]),
-    else the first ``--orbits`` of the paper's grid."""
+    else the first ``--orbits`` of the tool's grid of 8 initial data."""
     import math
 
     import numpy as np
@@ -48,7 +48,7 @@ def initial_data(args):
     if args.theta0 is None or args.phi0 is None:
         raise UsageError("--theta0 and --phi0 go together (one φ0 per θ0)")
     if args.orbits is not None:
-        raise UsageError("--orbits chooses from the paper's grid: not with --theta0/--phi0")
+        raise UsageError("--orbits chooses from the tool's grid of initial data: not with --theta0/--phi0")
     if len(args.theta0) != len(args.phi0):
         raise UsageError(f"--theta0 has {len(args.theta0)} value(s), --phi0 {len(args.phi0)}: they are paired")
     for name, values, top, text in (("theta0", args.theta0, math.pi / 2, "π/2"), ("phi0", args.phi0, math.pi, "π")):
@@ -59,7 +59,7 @@ def initial_data(args):
 
 
 def cmd_simulate(args) -> int:
-    """Iterate the reduction map from the paper's grid of initial data (or the given
+    """Iterate the reduction map from the tool's grid of 8 initial data (or the given
     ones) for every r."""
     from certify import numerics
     r = r_values(args)
@@ -130,9 +130,10 @@ def cmd_figures(args) -> int:
 
 
 def cmd_identify(args) -> int:
-    """Simulate, read the periodic word each orbit settles on, certify it with `orbit`:
-    one line per orbit, or JSON with --json (certify.run.identify)."""
+    """Classify each orbit: island, attracting periodic (its word certified for ever) or
+    unresolved; one line per orbit, or JSON with --json (certify.run.identify)."""
     from certify.run import identify as ident
+    from certify.run.progress import Bar
     if args.section5:
         return section5_findings(args)
     if args.out is not None:
@@ -140,7 +141,8 @@ def cmd_identify(args) -> int:
     if (args.r is None) == (args.r_range is None):
         raise UsageError("give --r R [R ...] or --r-range LO HI COUNT")
     rs = ident.rationals(args.r) if args.r is not None else ident.r_grid(*args.r_range)
-    found = ident.identify(rs, orbits=args.orbits, collisions=args.collisions)
+    found = ident.identify(rs, orbits=args.orbits, collisions=args.collisions, windows=args.windows,
+                           progress=Bar("orbit"))
     if args.json:
         print(ident.json_text(found))
     else:
@@ -157,8 +159,9 @@ def section5_findings(args) -> int:
         raise UsageError("--section5 runs its own plan of r (certify.run.section5_orbits.PLAN): "
                          "not with --r, --r-range or --json")
     out = ensure_writable(args.out if args.out is not None else DEFAULT_OUT)
-    found = section5_orbits.findings(progress=lambda s: print(s, flush=True))
-    print(f"wrote {section5_orbits.write(found, out)} ({found['seconds']} s)")
+    from certify.run.progress import Bar
+    found = section5_orbits.findings(progress=Bar("r"))
+    print(f"wrote {section5_orbits.write(found, out)}")
     return 0
 
 
@@ -167,7 +170,8 @@ def register(commands) -> None:
     from certify.numerics.engines import ENGINES
     p = add_command(commands, "simulate", cmd_simulate, help="iterate the reduction map numerically (Section 5)",
                     description="The spherical billiard reduction iterated from collision to "
-                    "collision from the paper's grid of initial data (θ0, φ0) at a b-contact; "
+                    "collision from the tool's grid of 8 initial data (θ0, φ0) at a b-contact (the paper does not "
+                    "print its own); "
                     "keeps the φ of the last b-collisions.  Breaks: 1 undecided contact "
                     "(|cos φ| below the rounding bound), 2 time step below precision, "
                     "3 corner, 4 non-finite, 5 certified horizon (--strict).  Every orbit reports "
@@ -178,7 +182,8 @@ def register(commands) -> None:
     which.add_argument("--r-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
                        help="COUNT values from LO to HI, ends included (paper Figure 6: 0.072 0.999 3709)")
     p.add_argument("--orbits", type=positive_int, default=None, metavar="N",
-                   help="initial data per r: the first N of the paper's grid, 2 θ0 × 4 φ0 (default: 8)")
+                   help="initial data per r: the first N of the tool's grid, 2 θ0 × 4 φ0 (default: 8; N > 8 adds "
+                        "finer φ0, a superset of the eight)")
     p.add_argument("--theta0", nargs="+", type=number, metavar="T",
                    help="initial θ0 in [0, π/2], paired with --phi0 (instead of the grid)")
     p.add_argument("--phi0", nargs="+", type=number, metavar="P", help="initial φ0 in [0, π], one per --theta0")
@@ -203,22 +208,35 @@ def register(commands) -> None:
                    help="run the mp and ball orbits on this Dask scheduler instead")
 
     p = add_command(commands, "identify", cmd_identify,
-                    help="the periodic word each simulated orbit settles on, certified by `orbit`",
-                    description="Runs the float64 simulator (the paper's eight orbits by default), reads the "
-                    "shortest period of each orbit's last collisions, and certifies that word with `orbit`: "
-                    "its normal form and the attracting window that contains r, or why there is none.")
+                    help="classify each orbit: island (quasi-periodic, proved), attracting periodic (its word "
+                         "certified for ever) or unresolved",
+                    description="For each r and initial datum (the tool's grid of 8 initial data by default: the "
+                    "paper does not print its own), one class: island (its state at b after some collision, in arb "
+                    "balls from the datum, lies in the island U_r = {Q < c_max}: quasi-periodic for ever, the island "
+                    "theorem); attracting periodic (the float64 run settles on a word w, orbit_at decides exactly "
+                    "that w has an attracting periodic orbit at r, a trapping ellipse U of w is certified, and the "
+                    "rigorous orbit enters U: it follows w for ever, certified); or unresolved (what the float64 run "
+                    "shows, observed).  Each proof is re-checked by a second route; certified_from is the collision "
+                    "from which the proof holds.")
     p.add_argument("--r", nargs="+", default=None, metavar="R", help="values of r (exact rationals: 0.3 is 3/10)")
     p.add_argument("--r-range", nargs=3, default=None, metavar=("LO", "HI", "COUNT"),
                    help="COUNT equally spaced r from LO to HI, ends included")
     p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
-                   help="the first N initial data of the paper's grid (default: 8)")
-    p.add_argument("--collisions", type=positive_int, default=10_000, metavar="N",
-                   help="collisions simulated per orbit (default: 10000)")
+                   help="the first N initial data of the tool's grid (default: its 8; N > 8 adds finer φ0, "
+                        "a superset of the eight)")
+    p.add_argument("--collisions", type=positive_int, default=100_000, metavar="N",
+                   help="collisions of the float64 run and of the rigorous scan, per orbit (default: 100000); "
+                        "periods up to N/8 are searched")
+    p.add_argument("--windows", action="store_true",
+                   help="also give the attracting window over ]0, 1[ of each word of at most 24 letters (certify "
+                        "orbit; slower, not needed by the classification)")
     p.add_argument("--json", action="store_true",
-                   help="print JSON: a list of orbits, each with r, theta0, phi0, word and window")
+                   help="print JSON (certify/run/identify.schema.json): each orbit with r, theta0, phi0, class, "
+                        "certified_from, word, word_status (certified | observed), why")
     p.add_argument("--section5", action="store_true",
-                   help="run the plan of Section 5 (N2 near r = 1 and 0.2-0.9, N5, N6; 10^5 collisions near 1) and "
-                        "write DIR/section5-orbits.json, the findings the certificates re-certify (minutes)")
+                   help="run the plan of Section 5 (N2 near r = 1 and 0.2-0.9, N5, N6; 10^5 collisions near 1) on the "
+                        "tool's grid of 8 initial data and write DIR/section5-orbits.json (no timing), the findings "
+                        "the certificates re-certify")
     p.add_argument("--out", type=Path, default=None, metavar="DIR",
                    help="with --section5: the output directory (default: reports)")
 
@@ -235,7 +253,7 @@ def register(commands) -> None:
     p = add_command(commands, "figures", cmd_figures, help="draw Figures 6-11 of the paper, Section 5 (ids 5.1-5.8)",
                     description="Figures 6-11 of the paper (Section 5; our ids 5.1-5.8: 5.1 = Figure 6, 5.2 = 7, "
                     "5.3a/b = 8a/b, "
-                    "5.4 = 9, 5.5 = 10, 5.6-5.8 = 11a-c): the last kept b-angles φ of the paper's 8 "
+                    "5.4 = 9, 5.5 = 10, 5.6-5.8 = 11a-c): the last kept b-angles φ of the tool's 8 "
                     "orbits against r (float64), breaks as red dots at (r, π/2), the CDKK thresholds as red "
                     "lines.  preview: the cheap version `certify all` draws; paper: the captions' grids, "
                     "10^4 collisions, 500 kept (about a minute on two cores).")

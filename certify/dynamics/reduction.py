@@ -253,24 +253,34 @@ def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:
     return "".join(letters), canonical(P.letter, P.n)
 
 
-def ball_word(P: Plane, r, n: int, prec: int) -> str:
-    """The first n collision letters from P with the normal in balls at ``prec`` bits
-    (rescaled each step so that max |n_k| ≈ 1); every letter is proven by the balls,
-    and the word stops at the first sign they cannot decide."""
+def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]:
+    """The first ``count`` collisions from the state (letter, n), n a ball (or exact)
+    normal, with the normal in balls at ``prec`` bits, rescaled each step so that
+    max |n_k| ≈ 1 and oriented (e_t · n > 0, :data:`ORIENTATION`): (the letters, the
+    last contact, a ball vector containing a positive multiple of the last oriented normal).
+    Every letter is proven by the balls (:func:`next_letter`); the run stops at the first
+    sign they cannot decide, or at a corner."""
     letters = []
     with precision(prec):
-        m = tuple(flint.arb(z) for z in P.n)
-        L = P.letter
+        m = tuple(flint.arb(z) for z in n)
+        L = letter
         try:
-            for _ in range(n):
-                L = next_letter(Plane(L, m))
-                m = cofactor_apply(L, r, m)
-                top = max(abs(z).upper() for z in m)
-                m = tuple(z / top for z in m)
+            for _ in range(count):
+                L2 = next_letter(Plane(L, m))
+                m2 = cofactor_apply(L2, r, m)
+                top = max(abs(z).upper() for z in m2) * sign(m2[ORIENTATION[L2]])     # oriented: e_t · n > 0
+                L, m = L2, tuple(z / top for z in m2)
                 letters.append(L)
         except (Undecided, Corner):
             pass
-    return "".join(letters)
+    return "".join(letters), L, m
+
+
+def ball_word(P: Plane, r, n: int, prec: int) -> str:
+    """The first n collision letters from P with the normal in balls at ``prec`` bits
+    (:func:`ball_run`); every letter is proven by the balls, and the word stops at the
+    first sign they cannot decide."""
+    return ball_run(P.letter, P.n, r, n, prec)[0]
 
 
 def word(planes) -> str:

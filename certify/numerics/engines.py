@@ -220,14 +220,17 @@ def _initial_ball(theta0, phi0, letter, normal):
     return rules.initial_normal(flint.arb(theta0), flint.arb(phi0), letter, flint.arb.cos, flint.arb.sin)
 
 
-def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkpoints=(), letter=rules.START,
-               normal=None, start_bits=BALL_START, strict=False) -> OrbitResult:
-    """One certified orbit: every collision choice proven by arb balls, the normal
-    evaluated from exact products of cofactor matrices (module docstring,
-    :class:`_Product`); the precision of the datum doubled from ``start_bits`` when a
-    choice is undecided, up to ``dps`` digits (default :data:`BALL_CAP_DPS`).
-    ``collisions`` of the result is the certified horizon (``strict`` changes
-    nothing: every collision is certified)."""
+def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, normal=None, start_bits=BALL_START,
+                stop: dict | None = None):
+    """The certified orbit, state by state: yields ``(k, j, n, bits)`` for the state right
+    after collision k (k = 0: the datum, at contact ``letter``), j its contact's index and
+    n a ball vector containing a positive multiple of the reduction's normal (oriented,
+    e_t · n > 0), computed at ``bits`` of precision (:class:`_Product`; the precision of
+    the datum doubled from ``start_bits`` when a choice is undecided, up to ``dps``
+    digits, default :data:`BALL_CAP_DPS`).  Every collision choice is proven by the balls.
+    Ends after ``collisions`` collisions or at the first choice the cap cannot decide;
+    ``stop``, when given, receives the break code and the precision (``stop["code"]``,
+    ``stop["bits"]``)."""
     cap = int((dps or BALL_CAP_DPS) * BITS_PER_DIGIT) + 1
     prec = min(start_bits, cap)
     with precision(prec):
@@ -235,12 +238,6 @@ def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkp
         n = prod.evaluate(prod.P, prod.base, prec)
     i = rules.INDEX[letter]
     code, done = 0, 0
-
-    def phi(v):
-        with precision(prec):
-            return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
-
-    rec = _Record(keep, word, checkpoints, phi)
 
     def more(P):
         """Double the precision: the datum again, through the segments, then P."""
@@ -250,6 +247,7 @@ def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkp
             prod.rebase(_initial_ball(theta0, phi0, letter, normal), prec)
             return prod.evaluate(P, prod.base, prec)
 
+    yield 0, i, n, prec
     while done < collisions:
         with precision(prec):
             code, j = rules.classify(i, n, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
@@ -269,8 +267,33 @@ def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkp
         prod.push(P, m)
         n = m
         i, done = j, done + 1
-        rec.add(j, n, done)
-    return OrbitResult(code, done, _ring_to_phi(rec.ring, keep), "".join(rec.letters), rec.cps, bits=prec)
+        yield done, j, n, prec
+    if stop is not None:
+        stop.update(code=code, bits=prec)
+
+
+def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkpoints=(), letter=rules.START,
+               normal=None, start_bits=BALL_START, strict=False) -> OrbitResult:
+    """One certified orbit: every collision choice proven by arb balls, the normal
+    evaluated from exact products of cofactor matrices (module docstring,
+    :class:`_Product`, :func:`ball_states`); the precision of the datum doubled from
+    ``start_bits`` when a choice is undecided, up to ``dps`` digits (default
+    :data:`BALL_CAP_DPS`).  ``collisions`` of the result is the certified horizon
+    (``strict`` changes nothing: every collision is certified)."""
+    stop = {"code": 0, "bits": start_bits}
+    prec = [start_bits]
+
+    def phi(v):
+        with precision(prec[0]):
+            return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
+
+    rec = _Record(keep, word, checkpoints, phi)
+    done = 0
+    for done, j, n, prec[0] in ball_states(r, theta0, phi0, collisions, dps, letter, normal, start_bits, stop):
+        if done:
+            rec.add(j, n, done)
+    return OrbitResult(stop["code"], done, _ring_to_phi(rec.ring, keep), "".join(rec.letters), rec.cps,
+                       bits=stop["bits"])
 
 
 def run_orbit(engine: str, r, theta0, phi0, collisions, keep=0, dps=None, **kw) -> OrbitResult:

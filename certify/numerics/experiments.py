@@ -66,7 +66,7 @@ def n4_window(n: int, engine: str = "mp", dps: int | None = None, fractions=(0.0
               collisions: int | None = None, thresholds: tuple | None = None) -> dict:
     """Look for the stability window of (ab)^n(cb)^n just below its upper threshold:
     at r = r_max(n) − f (r_max(n) − r_max(n+1)) for each f of ``fractions``, run the first
-    ``orbits`` orbits of the paper's grid on ``engine`` and count the accumulation points of
+    ``orbits`` orbits of the tool's grid of 8 initial data on ``engine`` and count the accumulation points of
     their kept φ (gap 1e-8, point 1e-10 for mp and ball; the float defaults for float64);
     check the last 8n letters of the first orbit against (ab)^n(cb)^n."""
     t0 = time.perf_counter()

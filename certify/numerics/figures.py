@@ -94,7 +94,8 @@ def r_values(spec: Spec, resolution: str) -> np.ndarray:
 
 
 def initial_data(orbits: str):
-    """(θ0, φ0) arrays of the orbits: the paper's grid, or one random datum."""
+    """(θ0, φ0) arrays of the orbits: the tool's grid of 8 initial data (the paper does not print
+    its own), or one random datum."""
     if orbits == "grid":
         theta0, phi0 = paper_grid()
         return np.asarray(theta0, float), np.asarray(phi0, float)

@@ -6,8 +6,9 @@ p(0) = (sin θ0, 0, cos θ0), q(0) = (cos θ0 cos φ0, sin φ0, −sin θ0 cos �
 so that the normal is u = p(0) ∧ q(0) = (−cos θ0 sin φ0, cos φ0, sin θ0 sin φ0).
 
 The paper does not print its grid of 8 initial configurations ("a regular grid, with
-2 values of θ0 and 4 values of φ0", captions of Figures 5.1-5.4).  :func:`paper_grid`
-is the interior regular grid θ0 ∈ {π/6, π/3} (θ ∈ ]0, π/2[ cut in 3), φ0 ∈ {π/5,
+2 values of θ0 and 4 values of φ0", captions of Figures 5.1-5.4): the eight are the
+tool's choice, the tool's grid of 8 initial data.  :func:`paper_grid` (named for the
+paper's description, not its data) is the interior regular grid θ0 ∈ {π/6, π/3} (θ ∈ ]0, π/2[ cut in 3), φ0 ∈ {π/5,
 2π/5, 3π/5, 4π/5} (φ ∈ ]0, π[ cut in 5), θ0 outer, φ0 inner; none of them is a
 corner (cos φ0 ≠ 0, sin θ0 cos θ0 ≠ 0).
 """
@@ -35,17 +36,25 @@ def paper_grid() -> tuple[np.ndarray, np.ndarray]:
 
 
 def grid(count: int) -> tuple[np.ndarray, np.ndarray]:
-    """``count`` initial data: the first ``count`` of :func:`paper_grid` when at most 8,
-    else 2 values of θ0 (π/6, π/3) times m = ⌈count/2⌉ of φ0 (π k/(m+1)), the first
-    ``count`` (θ0 outer)."""
+    """``count`` initial data, the tool's grid: the first ``count`` of :func:`paper_grid`
+    when at most 8; beyond, the eight and then, level by level, the same two θ0 times the
+    midpoints of the previous level's φ cells, φ0 = π(2k−1)/(5·2^j), j = 1, 2, …
+    (φ0 = π/2, a corner, excluded at j = 1: it is never on the grid), θ0 outer within a
+    level.  So the grid of N > 8 is a superset of the eight."""
+    theta0, phi0 = paper_grid()
     if count <= 8:
-        theta0, phi0 = paper_grid()
         return theta0[:count], phi0[:count]
-    m = -(-count // 2)
-    phis = [math.pi * k / (m + 1) for k in range(1, m + 1)]
-    theta0 = np.array([math.pi * t / 6 for t in (1, 2) for _ in phis])[:count]
-    phi0 = np.array([p for _ in (1, 2) for p in phis])[:count]
-    return theta0, phi0
+    thetas, phis = list(theta0), list(phi0)
+    level = 1
+    while len(thetas) < count:
+        den = 5 * 2 ** level
+        cells = [math.pi * k / den for k in range(1, den, 2) if 2 * k != den]
+        for t in (math.pi / 6, math.pi / 3):
+            for p in cells:
+                thetas.append(t)
+                phis.append(p)
+        level += 1
+    return np.array(thetas[:count]), np.array(phis[:count])
 
 
 @dataclass

@@ -22,7 +22,7 @@ import numpy as np
 from . import engines
 
 R_CRIT3 = 7 - 4 * math.sqrt(3)                 # the three-particle threshold, ≈ 0.0718
-THETA, PHI = math.pi / 6, math.pi / 5          # the first datum of the paper's grid
+THETA, PHI = math.pi / 6, math.pi / 5          # the first datum of the tool's grid of 8 initial data
 COMPARED = (("float64", None), ("mp", 30), ("mp", 16))
 RANDOM_COMPARED = (("float64", None), ("mp", 30))
 RANDOM = dict(count=1000, collisions=2000, seed=20241110)

@@ -138,6 +138,23 @@ class Trap:
         u = self.coordinates(n)
         return u[0] ** 2 + u[1] ** 2 <= self.radius ** 2
 
+    def ball_sign(self, n) -> int:
+        """For a ball vector n (arb, or exact) containing a positive multiple of a normal at
+        the contact ``word[-1]``: +1 when every point of the ball lies in U (ρ² − |u|² > 0
+        proved, with n_t > 0 proved), −1 when every point lies outside, 0 when the balls do
+        not decide.  Exact rationals for c and T, arb for n (at the caller's precision)."""
+        t = self.chart
+        if not n[t] > 0:
+            return 0
+        m = [flint.arb(z) / n[t] for z in n]
+        f = _free(t)
+        d = [m[k] - self.centre[k] for k in f]
+        (p, q), (s, v) = [[self.frame[j][k] for j in range(2)] for k in f]
+        det = p * v - q * s
+        u = ((v * d[0] - q * d[1]) / det, (p * d[1] - s * d[0]) / det)
+        gap = self.radius ** 2 - (u[0] ** 2 + u[1] ** 2)
+        return 1 if gap > 0 else -1 if gap < 0 else 0
+
     def lines(self) -> list[str]:
         """The summary, then the exact data of U (centre and frame to 12 digits, ρ exact)."""
         def vec(v):

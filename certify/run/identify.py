@@ -1,59 +1,131 @@
-"""``certify identify``: the periodic word each simulated orbit settles on, certified.
+"""``certify identify``: each orbit classified, and certified for ever where a proof stands.
 
-For each r and initial datum (θ0, φ0) (the paper's grid by default) the float64 engine
-(:func:`certify.numerics.simulate`, with the words) runs the reduction map; the tail of
-the collision word is read for its shortest period (:func:`period_of`: the last half
-of the word, at least 4 periods, is periodic), and that block, in the normal form of
-``certify pattern``, is analysed by ``certify orbit``
-(:func:`certify.patterns.reduction_orbits.analyse`, once per word over ]0, 1[): the
-attracting window that contains r, with its branch and in-plane pair, or why there
-is none (the orbit at r is a saddle or repelling, or the word is not realised there).
+For each r (an exact rational: 0.3 is 3/10) and initial datum (θ0, φ0) at the contact b
+(the tool's grid of 8 initial data by default, :func:`certify.numerics.grid`; the doubles
+θ0, φ0 are read as exact dyadic rationals), one class:
 
-What is certified and what is not: the window and its type are exact; the word is
-the one the float64 simulation shows (a shadowing orbit past its certified horizon,
-docs/engines.md), so "this orbit settles on w" is the observation and "w has an
-attracting periodic orbit of the reduction at r" the certificate.  r is the exact
-rational typed (0.3 is 3/10); the simulation runs at its nearest double.
+* **island**: the state at b after some collision k, computed rigorously from the datum
+  (arb balls from the first collision, :func:`certify.numerics.engines.ball_states`),
+  lies in the island U_r = {Q < c_max} of :mod:`certify.dynamics.island` (r in
+  ]3−2√2, 1[, decided exactly): by the island theorem (``certify island``) the orbit
+  stays in U_r for ever and is quasi-periodic.  No word is needed.
+* **attracting periodic**: the float64 run (an observation) settles on a periodic word w;
+  :func:`~certify.patterns.reduction_orbits.orbit_at` decides exactly that w has an
+  attracting periodic orbit at r; :func:`~certify.numerics.trapping.attempt` certifies a
+  trapping ellipse U at the contact c_0 = w[-1] (the rotation of w the orbit follows,
+  ending with b); the rigorous orbit's state at c_0 after collision k lies in U
+  (:meth:`~certify.numerics.trapping.Trap.ball_sign`).  Then the orbit follows w for
+  ever and converges to the periodic orbit (the trap's theorem): the word is certified.
+* **unresolved**: neither, said with what was observed.
+
+Each proof is checked again before it is reported (:func:`verify`), by a second route to
+the state: the reduction's own ball steps (:func:`certify.dynamics.reduction.ball_run`,
+precision doubled until every sign is decided; up to :data:`VERIFY_MAX` collisions, beyond
+which the first route's state is used), the island's sign recomputed from Q and c_max,
+the trapping ellipse re-certified from its exact data (:func:`trapping.check`) and the
+word re-decided by ``orbit_at``.  A word is "certified" only in the second class;
+otherwise it is what the float64 run shows past its certified horizon: "observed".
+
+The period search: the shortest period p of the last half of the run (the prefix
+function, linear time), at most a quarter of that half (4 periods at least): no cap
+(r = 0.173 settles on a word of 122 letters).  The attracting window of ``certify orbit``
+over ]0, 1[ (:func:`window_at`) is added with ``windows=True`` for words of at most
+:data:`WINDOW_MAX` letters (cached; not needed by the classification).
 """
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cache
 
 import flint
-import numpy as np
 
 from certify.algebra.algebraic import Algebraic
+from certify.algebra.balls import precision
 from certify.algebra.branches import BRANCH_NAMES
+from certify.dynamics import island
+from certify.dynamics.island import island_sign
+from certify.dynamics.model import INDEX, LETTERS
+from certify.dynamics.reduction import ball_run
+from certify.dynamics.simulate import Undecided, sign
 from certify.errors import UsageError
-from certify.numerics import grid, iterate
+from certify.numerics import engines, grid, rules, trapping
 from certify.patterns import compact, read, show_word
 from certify.patterns.pattern import end_data
-from certify.patterns.reduction_orbits import OrbitResult, analyse
+from certify.patterns.reduction_orbits import OrbitResult, analyse, orbit_at
 
-MAX_PERIOD = 120
 SCHEMA = "certify-identify"
+VERSION = 2
+ISLAND, ATTRACTING, UNRESOLVED = "island", "attracting periodic", "unresolved"
+CLASSES = (ISLAND, ATTRACTING, UNRESOLVED)
+COLLISIONS = 100_000       # default length of the float64 run (and of the rigorous scan)
+WINDOW_MAX = 24            # the window over ]0, 1[ only for words up to this length
+MAX_ANALYSED = 1000        # longer observed periods are not analysed (orbit_at, the trap)
+SHOWN = 200                # an island orbit's observed quasi-period is shown up to this length
+VERIFY_START = 128         # bits of the second route's balls, doubled up to VERIFY_CAP
+VERIFY_CAP = 1 << 16
+VERIFY_MAX = 20_000        # the second route re-runs at most this many collisions (beyond: the first route)
+REFUSALS = 3               # a kind of proof refused this often by the second route is dropped
+GRID = "the tool's grid of 8 initial data"
 
 
-def period_of(word: str, max_period: int = MAX_PERIOD) -> str | None:
-    """The shortest block B (|B| ≤ max_period) such that the last half of ``word`` (at
-    least 4|B| letters) is periodic with period |B|; B = the last |B| letters.  None
-    when no such block exists (a transient, or no short periodic orbit)."""
-    tail = len(word) // 2
-    for p in range(2, max_period + 1):
-        if 4 * p > tail:
-            break
-        if all(word[i] == word[i + p] for i in range(len(word) - tail, len(word) - p)):
-            return word[-p:]
-    return None
+def period_of(word: str, max_period: int | None = None) -> str | None:
+    """The shortest block B such that the last half of ``word`` is periodic with period
+    |B| and holds at least 4 periods (|B| ≤ half/4, and ≤ ``max_period`` when given);
+    B = the last |B| letters.  None when there is none.  Linear time: the shortest
+    period of a string s is |s| − π(s), π the longest proper border (prefix function)."""
+    tail = word[len(word) - len(word) // 2:]
+    m = len(tail)
+    if m < 8:
+        return None
+    border, k = [0] * m, 0
+    for i in range(1, m):
+        while k and tail[k] != tail[i]:
+            k = border[k - 1]
+        if tail[k] == tail[i]:
+            k += 1
+        border[i] = k
+    p = m - border[-1]
+    bound = m // 4 if max_period is None else min(m // 4, max_period)
+    return word[-p:] if p <= bound else None
+
+
+def settled_from(word: str, p: int) -> int:
+    """The first collision from which ``word`` is p-periodic to its end (observed)."""
+    i = len(word) - p - 1
+    while i >= 0 and word[i] == word[i + p]:
+        i -= 1
+    return i + 1
+
+
+def followed(block: str, normal: str) -> str:
+    """The rotation of the observed block the orbit follows, ending with b (the trap's
+    contact c_0): the normal form when it is a rotation of the block, else the least
+    rotation ending with b (the block is then a mirror image of the normal form)."""
+    rotations = [block[k:] + block[:k] for k in range(len(block))]
+    if normal in rotations:
+        return normal
+    return min(x for x in rotations if x[-1] == "b")
 
 
 @cache
 def orbit_analysis(normal: str) -> OrbitResult:
     """``certify orbit`` on a normal form over ]0, 1[, once per word."""
     return analyse(normal)
+
+
+@cache
+def decided(normal: str, r: flint.fmpq):
+    """``orbit_at``: the periodic orbit of the word at r, decided exactly (the feasible
+    branch, else None), once per (word, r)."""
+    return next((x for x in orbit_at(normal, r) if x.feasible), None)
+
+
+@cache
+def trap_of(word: str, r: flint.fmpq) -> trapping.Trap | str:
+    """The certified trapping ellipse of the rotation ``word`` at r, or the reason why none."""
+    return trapping.attempt(word, r)
 
 
 def window_at(res: OrbitResult, r: Algebraic) -> tuple[dict | None, str]:
@@ -84,69 +156,246 @@ def _end(e: dict) -> str:
     return e["exact"] if e["exact"] is not None else "≈" + e["digits"]
 
 
+def elliptic(r: flint.fmpq) -> bool:
+    """r in ]3−2√2, 1[ (r² − 6r + 1 < 0, exactly): the island exists."""
+    return r < 1 and island.elliptic_polynomial(r) < 0
+
+
+# ------------------------------------------------------------------ the second route
+def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tuple, int] | str:
+    """The state after collision k from the datum by :func:`ball_run` (contact, oriented
+    ball normal, bits), precision doubled from VERIFY_START until all k collisions are
+    decided; a reason when VERIFY_CAP does not suffice.  Beyond VERIFY_MAX collisions (the
+    second route's balls wrap, about a bit per collision: minutes) the state is the first
+    route's (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
+    if k > VERIFY_MAX:
+        for done, j, n, bits in engines.ball_states(r, theta0, phi0, k):
+            if done == k:
+                return LETTERS[j], n, bits
+        return f"the certified orbit stopped undecided before collision {k}"
+    prec = VERIFY_START
+    while True:
+        with precision(prec):
+            n0 = rules.initial_normal(flint.arb(theta0), flint.arb(phi0), "b", flint.arb.cos, flint.arb.sin)
+        letters, last, n = ball_run("b", n0, r, k, prec)
+        if len(letters) == k:
+            return last, n, prec
+        if prec >= VERIFY_CAP:
+            return f"the second route lost precision at collision {len(letters) + 1} ({prec} bits)"
+        prec *= 2
+
+
+def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = None) -> str | None:
+    """None when the claim "the orbit from (θ0, φ0) at r is of class ``cls`` from collision
+    k" (``word``: the rotation followed, for the attracting class) is proved by the second
+    route of the module docstring; otherwise the reason it is refused."""
+    r = flint.fmpq(r.numerator, r.denominator) if isinstance(r, Fraction) else rules.exact_r(r)
+    if cls not in (ISLAND, ATTRACTING):
+        return f"{cls!r} is not a class with a proof"
+    if cls == ISLAND and not elliptic(r):
+        return f"no island at r = {r}: r² − 6r + 1 ≥ 0 (A(r) not elliptic)"
+    if cls == ATTRACTING:
+        if not word:
+            return "no word"
+        o = decided(read(word)[0], r)
+        if o is None or o.kind != "attracting":
+            return f"{word} has no attracting periodic orbit at r = {r} (orbit_at)"
+        U = trap_of(word, r)
+        if isinstance(U, str):
+            return f"no certified trapping ellipse for {word} at r = {r}: {U}"
+        U = trapping.check(word, r, U.centre, U.frame, U.radius, U.pair)
+        if isinstance(U, str):
+            return f"the trapping ellipse of {word} is not re-certified: {U}"
+    state = _state(r, theta0, phi0, k)
+    if isinstance(state, str):
+        return state
+    last, n, prec = state
+    with precision(prec):
+        if cls == ISLAND:
+            if last != "b":
+                return f"the state after collision {k} is at contact {last}, not b"
+            try:
+                u, v = island.chart(n)
+                s = sign(island.c_max(r) - island.quadratic_form(u, v, r))
+            except (Undecided, ValueError):
+                s = 0
+            return None if s > 0 else f"the state at b after collision {k} is not proved inside the island (Q < c_max)"
+        if last != word[-1]:
+            return f"the state after collision {k} is at contact {last}, not {word[-1]} (the start of {word})"
+        inside = U.ball_sign(n) > 0
+        return None if inside else f"the state after collision {k} is not proved inside the trapping ellipse"
+
+
+# ------------------------------------------------------------------ the classification
 @dataclass
 class Identified:
+    """One orbit's class (module docstring) and what was observed."""
+
     r: str
     theta0: float
     phi0: float
-    collisions: int
-    breaks: int
-    word: str | None                 # the normal form, or None
-    compact: str | None
-    window: dict | None
-    why: str
+    collisions: int                  # of the float64 run
+    breaks: int                      # its break code (0: it ran to the end)
+    cls: str = UNRESOLVED
+    certified_from: int | None = None
+    word: str | None = None          # the normal form of the observed (or certified) word
+    compact: str | None = None
+    rotation: str | None = None      # the rotation followed (certified), ending with the trap's contact
+    settled: int | None = None       # observed: the float64 word periodic from this collision
+    why: str = ""
+    trap: dict | None = None
+    window: dict | None = None
+    notes: list = field(default_factory=list)
+
+    @property
+    def word_status(self) -> str | None:
+        if self.word is None:
+            return None
+        return "certified" if self.cls == ATTRACTING else "observed"
 
     def to_json(self) -> dict:
         return {"r": self.r, "theta0": self.theta0, "phi0": self.phi0, "collisions": self.collisions,
-                "break": self.breaks, "word": self.word, "compact": self.compact, "window": self.window,
-                "why": self.why}
+                "break": self.breaks, "class": self.cls, "certified_from": self.certified_from,
+                "word": self.word, "compact": self.compact, "word_status": self.word_status,
+                "rotation": self.rotation, "settled_from": self.settled, "trap": self.trap,
+                "window": self.window, "why": self.why}
 
     def line(self) -> str:
-        head = f"r = {self.r}, θ0 = {self.theta0:.6f}, φ0 = {self.phi0:.6f}: "
-        if self.word is None:
-            return head + self.why
-        return head + f"settles on {self.word} (= {self.compact}); {self.why}"
+        return f"r = {self.r}, θ0 = {self.theta0:.6f}, φ0 = {self.phi0:.6f}: {self.cls}: {self.why}"
 
 
-def identify(rs: list[Fraction], theta0=None, phi0=None, orbits: int = 8, collisions: int = 4000) -> list[Identified]:
-    """Simulate, read the periodic word of each orbit, certify it (module docstring)."""
+def _observed(x: Identified, word: str, block: str | None) -> str:
+    if x.breaks:
+        return f"the float64 run stopped with break {x.breaks} after {x.collisions} collisions"
+    if block is not None and x.word is None:
+        return (f"the float64 run repeats a block of {len(block)} letters from about collision {x.settled} to its "
+                f"end ({x.collisions}; observed, not certified)")
+    if block is None:
+        return (f"no period within {x.collisions} collisions (the last half of the float64 run has no period "
+                f"≤ {x.collisions // 8})")
+    return (f"the float64 run repeats {_named(x)} from about collision {x.settled} to its end "
+            f"({x.collisions} collisions; not certified)")
+
+
+def _named(x: Identified) -> str:
+    return x.word if x.compact in (None, x.word) else f"{x.word} (= {x.compact})"
+
+
+def _scan(x: Identified, r, theta0, phi0, U, rotation, budget):
+    """The rigorous orbit, state by state: the first (class, k) whose proof the second
+    route accepts; refusals recorded in x.notes.  Returns (class, k) or (None, stop note)."""
+    tries = {ISLAND: REFUSALS if elliptic(r) else 0, ATTRACTING: REFUSALS if U is not None else 0}
+    if not any(tries.values()):
+        return None, ""
+    stop = {"code": 0, "bits": 0}
+    c0 = INDEX[rotation[-1]] if rotation else -1
+    for k, j, n, bits in engines.ball_states(r, theta0, phi0, budget, stop=stop):
+        with precision(bits):
+            found = []
+            if tries[ISLAND] and j == INDEX["b"] and island_sign(n, r) == 1:
+                found.append(ISLAND)
+            if tries[ATTRACTING] and j == c0 and U.ball_sign(n) == 1:
+                found.append(ATTRACTING)
+        for cls in found:
+            why = verify(r, theta0, phi0, cls, k, rotation)
+            if why is None:
+                return cls, k
+            tries[cls] -= 1
+            x.notes.append(f"{cls} at collision {k} refused by the second route: {why}")
+        if not any(tries.values()):
+            return None, ""
+    done = k
+    if stop["code"]:
+        return None, f"the certified orbit (balls) stopped undecided at collision {done + 1} ({stop['bits']} bits)"
+    where = " or ".join(w for w, k in (("the island", ISLAND), ("the trapping ellipse", ATTRACTING)) if tries[k])
+    return None, f"the certified orbit (balls) was not proved inside {where} within {done} collisions"
+
+
+def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIONS,
+             windows: bool = False) -> Identified:
+    """One orbit's class (module docstring)."""
+    q = flint.fmpq(r.numerator, r.denominator)
+    res = engines.float64_orbit(q, theta0, phi0, collisions, word=True)
+    x = Identified(str(r), float(theta0), float(phi0), res.collisions, res.code)
+    block = period_of(res.word) if res.code == 0 else None
+    U, rotation, o, why_not = None, None, None, ""
+    if block is not None:
+        x.settled = settled_from(res.word, len(block))
+    if block is not None and len(block) > MAX_ANALYSED:
+        why_not = f"a block of {len(block)} letters (longer than {MAX_ANALYSED}: not analysed)"
+    elif block is not None:
+        try:
+            normal = read(block)[0]
+        except UsageError as exc:
+            normal, why_not = None, f"not a word of the reduction ({exc})"
+            x.word = x.compact = block
+        if normal is not None:
+            x.word, x.compact = show_word(normal), compact(normal)
+            o = decided(normal, q)
+            if o is None:
+                why_not = "no periodic orbit with this word at r (decided exactly, orbit_at)"
+            elif o.kind != "attracting":
+                kind = {"saddle": "a saddle", "repelling": "repelling"}.get(o.kind, "of multiplier modulus 1")
+                why_not = f"its periodic orbit at r is {kind} (decided exactly, orbit_at)"
+            else:
+                rotation = followed(block, normal)
+                U = trap_of(rotation, q)
+                if isinstance(U, str):
+                    why_not, U = f"no certified trapping ellipse: {U}", None
+            if windows and len(normal) <= WINDOW_MAX:
+                x.window = window_at(orbit_analysis(normal), Algebraic.rational(q))[0]
+    observed = _observed(x, res.word, block)
+    cls, k = _scan(x, q, theta0, phi0, U, rotation, collisions)
+    if cls == ISLAND:
+        x.cls, x.certified_from = ISLAND, k
+        x.why = (f"quasi-periodic for ever, proved from collision {k}: the state at b after collision {k} "
+                 "(arb balls from the datum) lies in the island U_r = {Q < c_max} (the island theorem, "
+                 "`certify island`)")
+        if x.word is not None and len(x.word) > SHOWN:
+            x.word = x.compact = None                # a quasi-period of the island: not worth printing
+        if x.word is not None:
+            x.why += (f"; observed in float64: repeats {_named(x)} for {res.collisions - x.settled} collisions "
+                      "(a coding of the island's rotation, not a periodic orbit)")
+        x.rotation = None
+    elif cls == ATTRACTING:
+        x.cls, x.certified_from, x.rotation = ATTRACTING, k, rotation
+        x.trap = {"contact": rotation[-1], "radius": str(U.radius), "contraction": trapping._dec(U.contraction)}
+        pair = f"{o.pair} in-plane pair" + (": not a collapse" if o.pair == "complex" else "")
+        x.why = (f"certified: follows {_named(x)} for ever from collision {k}, and converges to its "
+                 f"attracting periodic orbit ({o.branch_name} branch, {pair}; decided exactly at r): its state at "
+                 f"{rotation[-1]} after collision {k} (arb balls from the datum) lies in the certified trapping "
+                 f"ellipse U (contraction κ ≤ {x.trap['contraction']} per period)")
+    else:
+        x.rotation = None
+        reasons = [why for why in (why_not, k) if why]
+        x.why = "observed: " + observed + ("; " + "; ".join(reasons) if reasons else "")
+    if x.notes and x.cls == UNRESOLVED:
+        x.why += "; " + "; ".join(x.notes)
+    return x
+
+
+def identify(rs: list[Fraction], theta0=None, phi0=None, orbits: int = 8, collisions: int = COLLISIONS,
+             windows: bool = False, progress=None) -> list[Identified]:
+    """Classify every orbit (module docstring); ``progress(k, n, label)`` as they finish."""
     if theta0 is None:
         theta0, phi0 = grid(orbits)
-    sims = iterate(np.array([float(x) for x in rs]), theta0, phi0, collisions=collisions, keep=0, words=True)
-    out = []
-    for a, r in enumerate(rs):
-        ra = Algebraic.rational(flint.fmpq(r.numerator, r.denominator))
+    out, total = [], len(rs) * len(theta0)
+    for r in rs:
         for b in range(len(theta0)):
-            w, code, done = str(sims.word[a, b]), int(sims.breaks[a, b]), int(sims.collisions[a, b])
-            args = (str(r), float(theta0[b]), float(phi0[b]), done, code)
-            block = period_of(w) if code == 0 else None
-            if block is None:
-                why = (f"the orbit stopped with break {code} after {done} collisions" if code else
-                       f"no periodic word within {done} collisions (a transient, or not a short periodic orbit)")
-                out.append(Identified(*args, None, None, None, why))
-                continue
-            try:
-                normal = read(block)[0]
-            except UsageError as exc:
-                out.append(Identified(*args, show_word(block), block, None, f"not a periodic word to analyse: {exc}"))
-                continue
-            try:
-                res = orbit_analysis(normal)
-            except UsageError as exc:
-                out.append(Identified(*args, show_word(normal), compact(normal), None, str(exc)))
-                continue
-            window, why = window_at(res, ra)
-            out.append(Identified(*args, show_word(normal), compact(normal), window, why))
+            out.append(classify(r, float(theta0[b]), float(phi0[b]), collisions, windows))
+            if progress is not None:
+                progress(len(out), total, f"r = {r}")
     return out
 
 
 def json_text(found: list[Identified]) -> str:
-    return json.dumps({"schema": SCHEMA, "version": 1, "orbits": [x.to_json() for x in found]},
+    return json.dumps({"schema": SCHEMA, "version": VERSION, "orbits": [x.to_json() for x in found]},
                       ensure_ascii=False, indent=2, sort_keys=True)
 
 
 def rationals(values: list[str]) -> list[Fraction]:
-    """The r typed, as exact rationals in ]0, 1[ (UsageError otherwise)."""
+    """The r typed, as exact rationals in ]0, 1[ that the float64 run can represent
+    (UsageError otherwise, one line)."""
     out = []
     for v in values:
         try:
@@ -155,8 +404,16 @@ def rationals(values: list[str]) -> list[Fraction]:
             raise UsageError(f"--r: {v!r} is not a rational number") from None
         if not 0 < f < 1:
             raise UsageError(f"r must lie in ]0,1[, got {v}")
+        if not MIN_R <= f <= 1 - MIN_GAP:
+            raise UsageError(f"r = {v} is too close to {'0' if f < MIN_R else '1'} for identify's float64 run "
+                             f"(it needs {float(MIN_R):g} ≤ r ≤ 1 - {float(MIN_GAP):g}: the double nearest r must "
+                             "differ from 0 and 1 and its collision matrices stay normal doubles)")
         out.append(f)
     return out
+
+
+MIN_R = Fraction(1, 10 ** 12)
+MIN_GAP = Fraction(1, 10 ** 12)
 
 
 def r_grid(lo: str, hi: str, count: str) -> list[Fraction]:

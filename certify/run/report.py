@@ -27,6 +27,7 @@ from certify.run.runner import (
     ERRATUM_KINDS,
     EXPLANATION,
     FAIL,
+    OBSERVATION,
     OBSERVED,
     PASS,
     STATUSES,
@@ -357,6 +358,8 @@ def _role(check) -> str:
         return ""
     if str(check.statement).startswith(EXPLANATION):
         return " *(certified explanation, beside the observation: not the paper's claim)*"
+    if str(check.statement).startswith(OBSERVATION):
+        return " *(observed, not certified: not the paper's claim)*"
     return " *(consistency check of the engine, not evidence)*"
 
 

@@ -131,6 +131,7 @@ AGREES = "The observation agrees with the printed statement."
 # re-certified at its r): it must hold, like a consistency check, but it is our certified
 # explanation beside the observation, not the engine's consistency nor the paper's claim.
 EXPLANATION = "explanation:"
+OBSERVATION = "observed, not explained:"   # what a committed finding shows without a proof
 DISAGREES = "The observation does not agree with the printed statement"
 
 

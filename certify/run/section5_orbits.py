@@ -1,59 +1,70 @@
-"""``certify identify --section5``: the periodic orbits behind Section 5's discrete ω-limit
-sets, identified once and committed (reports/section5-orbits.json).
+"""``certify identify --section5``: the orbits behind Section 5's discrete ω-limit sets,
+classified once and committed (reports/section5-orbits.json).
 
 For each r of :data:`PLAN` (the places where the paper sees discrete ω-limit sets, N2
 near r = 1, N5 in 0.172-0.176, N6 at r ≈ 0.184525 and its stripes, and N2's region of
-apparent chaos, 0.2 ≤ r ≤ 0.9), the paper's eight orbits are run by the float64 engine
-(the collisions of the plan: 10^5 near r = 1, where the multipliers are close to 1),
-the tail of each collision word is read for its shortest period (at most
-:data:`certify.run.identify.MAX_PERIOD` letters, :func:`certify.run.identify.period_of`),
-and each word seen is decided exactly at r by
+apparent chaos, 0.2 ≤ r ≤ 0.9), the tool's grid of 8 initial data (the paper does not
+print its own) is classified by :func:`certify.run.identify.classify`: *island*
+(quasi-periodic for ever, proved), *attracting periodic* (follows its word for ever,
+proved) or *unresolved* (what the float64 run shows, observed).  Each word the float64
+runs settle on is also decided exactly at r by
 :func:`certify.patterns.reduction_orbits.orbit_at` (its type, in-plane pair and
 multiplier modulus); its attracting window over ]0, 1[ (``certify orbit``) is added for
-words of at most :data:`WINDOW_MAX` letters.
+words of at most :data:`WINDOW_MAX` letters.  No timing is written (the file is committed).
 
-The format (schema ``certify-section5-orbits``, version 1)::
+The format (schema ``certify-section5-orbits``, version 2, certify/run/section5-orbits.schema.json)::
 
-    {"schema", "version", "command", "max_period", "seconds",
+    {"schema", "version", "command", "grid", "period_search",
      "claims": {"N2" | "N5" | "N6": [
         {"r": "99/100", "collisions": 100000, "orbits": 8,
-         "words": [{"word": normal form, "compact", "period", "count",
+         "classes": {"island": k, "attracting periodic": m, "unresolved": u},
+         "classified": [{"theta0", "phi0", "class", "certified_from", "word" (certified), "rotation",
+                         "observed" (the word the float64 run repeats, or null)}]  (one per orbit),
+         "words": [{"word": normal form, "compact", "period", "count" (orbits observed to settle on it),
+                    "certified" (orbits proved to follow it for ever),
                     "kind": attracting | saddle | repelling | "" (no orbit, or modulus 1),
                     "branch", "pair": real | complex, "failed": the first condition that fails,
                     "modulus": the largest multiplier modulus (decimal, a certified ball's midpoint),
                     "modulus_one": |ν| = 1 exactly (λ³ = det M_w, a complex pair),
                     "window": {"branch", "pair", "lo", "hi"} (ends as in `orbit --json`) | null}],
-         "unsettled": number of orbits with no period within the collisions,
+         "unsettled": number of orbits with no word analysed (no period within the collisions, or a
+                      block too long: an island orbit's quasi-period),
          "breaks": number of orbits that stopped on a break}]}}
 
-What is certified and what is observed: the word is what the float64 simulation
-shows (an observation); its type at r and its window are exact.  The certificates
-of Section 5 (proofs) re-decide each committed word at its r with ``orbit_at``
-(milliseconds), so ``certify all`` never simulates for this.
+What is certified and what is observed: a word is observed (the float64 run) unless an
+orbit is proved to follow it for ever (``certified`` > 0); its type at r and its window
+are exact; the classes island and attracting periodic are proved.  The certificates of
+Section 5 (proofs) re-decide each committed word at its r with ``orbit_at``
+(milliseconds) and re-check each committed class by the second route of
+:func:`certify.run.identify.verify` (the state at the committed collision), so
+``certify all`` never simulates for this.
 """
 from __future__ import annotations
 
 import json
-import time
 from fractions import Fraction
 
 import flint
 
 from certify.algebra.algebraic import Algebraic
 from certify.errors import UsageError
-from certify.numerics import grid, iterate
+from certify.numerics import grid
 from certify.patterns import compact, read
 from certify.patterns.reduction_orbits import orbit_at
 
+from . import identify as ident
 from .files import write_atomic
-from .identify import MAX_PERIOD, orbit_analysis, period_of, window_at
-from .runner import EXPLANATION, Check
+from .identify import orbit_analysis, window_at
+from .runner import EXPLANATION, OBSERVATION, Check
 
 FINDINGS = "section5-orbits.json"
 SCHEMA = "certify-section5-orbits"
+VERSION = 2
 # the attracting window over ]0, 1[ (certify orbit) for words up to this length (minutes beyond)
 WINDOW_MAX = 24
 COMMAND = "python -m certify identify --section5"
+PERIOD_SEARCH = ("the shortest period of the last half of each float64 run, at most a quarter of that half "
+                 "(4 periods at least)")
 
 # claim -> [(r, collisions)]: where the paper sees discrete ω-limit sets, and N2's apparent chaos
 PLAN = {
@@ -64,12 +75,13 @@ PLAN = {
 }
 
 
-def word_entry(normal: str, count: int, r: Fraction) -> dict:
+def word_entry(normal: str, count: int, certified: int, r: Fraction) -> dict:
     """One word seen at r: its exact decision at r (``orbit_at``: the feasible branch, else
     the first), and its attracting window containing r for short words."""
     points = orbit_at(normal, flint.fmpq(r.numerator, r.denominator))
     o = next((x for x in points if x.feasible), points[0] if points else None)
     entry = {"word": normal, "compact": compact(normal), "period": len(normal), "count": count,
+             "certified": certified,
              "kind": o.kind if o else "", "branch": o.branch_name if o else "", "pair": o.pair if o else "",
              "failed": o.failed if o else "no real eigenvalue", "modulus": o.modulus.str(8, radius=False) if o else "",
              "modulus_one": bool(o and o.modulus_one), "window": None}
@@ -80,37 +92,47 @@ def word_entry(normal: str, count: int, r: Fraction) -> dict:
 
 
 def at(r: Fraction, collisions: int, orbits: int = 8) -> dict:
-    """The paper's first ``orbits`` orbits at r: the words they settle on, decided exactly."""
+    """The tool's first ``orbits`` initial data at r: each orbit classified, and the words
+    the float64 runs settle on, decided exactly."""
     theta0, phi0 = grid(orbits)
-    sims = iterate([float(r)], theta0, phi0, collisions=collisions, keep=0, words=True)
-    counts, unsettled, breaks = {}, 0, 0
-    for b in range(len(theta0)):
-        if int(sims.breaks[0, b]):
+    counts, certified, unsettled, breaks, classified = {}, {}, 0, 0, []
+    for t, p in zip(theta0, phi0):
+        x = ident.classify(r, float(t), float(p), collisions)
+        classified.append({"theta0": x.theta0, "phi0": x.phi0, "class": x.cls, "certified_from": x.certified_from,
+                           "word": x.word if x.cls == ident.ATTRACTING else None, "rotation": x.rotation,
+                           "observed": x.word})
+        if x.breaks:
             breaks += 1
             continue
-        block = period_of(str(sims.word[0, b]))
-        if block is None:
+        try:
+            normal = read(x.word)[0] if x.word else None
+        except UsageError:
+            normal = None
+        if normal is None:
             unsettled += 1
             continue
-        normal = read(block)[0]
         counts[normal] = counts.get(normal, 0) + 1
-    words = [word_entry(w, k, r) for w, k in sorted(counts.items(), key=lambda x: (-x[1], x[0]))]
-    return {"r": str(r), "collisions": collisions, "orbits": orbits, "words": words,
-            "unsettled": unsettled, "breaks": breaks}
+        certified[normal] = certified.get(normal, 0) + (x.cls == ident.ATTRACTING)
+    words = [word_entry(w, k, certified[w], r) for w, k in sorted(counts.items(), key=lambda x: (-x[1], x[0]))]
+    classes = {c: sum(o["class"] == c for o in classified) for c in ident.CLASSES}
+    return {"r": str(r), "collisions": collisions, "orbits": orbits, "classes": classes, "classified": classified,
+            "words": words, "unsettled": unsettled, "breaks": breaks}
 
 
 def findings(plan=None, progress=None) -> dict:
-    """Run the plan (:data:`PLAN`): the findings in the module docstring's format."""
-    start, plan = time.perf_counter(), plan or PLAN
-    claims = {}
+    """Run the plan (:data:`PLAN`): the findings in the module docstring's format (no
+    timing: the file is committed); ``progress(k, n, label)`` after each r."""
+    plan = plan or PLAN
+    claims, total, done = {}, sum(len(points) for points in plan.values()), 0
     for claim, points in plan.items():
         claims[claim] = []
         for r, collisions in points:
             claims[claim].append(at(Fraction(r), collisions))
+            done += 1
             if progress is not None:
-                progress(f"{claim} r = {r}")
-    return {"schema": SCHEMA, "version": 1, "command": COMMAND, "max_period": MAX_PERIOD,
-            "seconds": round(time.perf_counter() - start, 1), "claims": claims}
+                progress(done, total, f"{claim} r = {r}")
+    return {"schema": SCHEMA, "version": VERSION, "command": COMMAND, "grid": ident.GRID,
+            "period_search": PERIOD_SEARCH, "claims": claims}
 
 
 def write(found: dict, directory) -> str:
@@ -180,7 +202,10 @@ def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
         return False, (f"{EXPLANATION} at r = {entry['r']}, {k} of {n} orbits settle on {w}: "
                        f"cannot be decided ({exc})"), []
     o = next((x for x in points if x.feasible), None)
-    seen = f"at r = {entry['r']}, {k} of {n} orbits settle on {w} (period {len(w)}; {entry['collisions']} collisions)"
+    proved = word.get("certified", 0)
+    seen = (f"at r = {entry['r']}, {k} of {n} orbits settle on {w} in float64 (period {len(w)}; "
+            f"{entry['collisions']} collisions; observed" +
+            (f", and {proved} of them certified to follow it for ever" if proved else "") + ")")
     modulus = f"largest multiplier modulus {_modulus(o)}"
     if word["kind"] == "attracting":
         window = word["window"]
@@ -206,13 +231,59 @@ def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
         text = (f"{EXPLANATION} {seen}: no periodic orbit of the reduction with this word at r (the eigen-normal n* "
                 f"{where}){one}, certified at r exactly: the ω-limit set is not a periodic orbit of the reduction "
                 "with this word")
+    text += _island_note(entry, w)
     return holds, text, []
+
+
+def _island_note(entry: dict, w: str) -> str:
+    """", m of them island orbits (...)" for the orbits that repeat w in float64 and are
+    proved island orbits (their check follows, :func:`classes_check`)."""
+    m = sum(o.get("observed") == w and o["class"] == "island" for o in entry.get("classified", []))
+    if not m:
+        return ""
+    return (f"; {m} of the orbits that repeat it are island orbits, quasi-periodic for ever (proved below): "
+            "the word codes the island's rotation for a while")
+
+
+def classes_check(entry: dict) -> list:
+    """The checks of one committed entry's classes: each island and attracting orbit
+    re-checked by :func:`certify.run.identify.verify` at its committed collision (the
+    second route: milliseconds), one check per class; the unresolved orbits as an
+    observation."""
+    r, n, out = Fraction(entry["r"]), entry["orbits"], []
+    for cls, says in ((ident.ISLAND, "island orbits: the state at b after collision {ks}, in arb balls from each "
+                                     "datum, lies in the island U_r = {{Q < c_max}}, so each orbit is quasi-periodic "
+                                     "for ever (the island theorem)"),
+                      (ident.ATTRACTING, "attracting periodic orbits: the state after collision {ks}, in arb balls "
+                                         "from each datum, lies in the certified trapping ellipse of {words}, so each "
+                                         "orbit follows its word for ever (certified)")):
+        mine = [o for o in entry["classified"] if o["class"] == cls]
+        if not mine:
+            continue
+        refused = [f"θ0 = {o['theta0']:.6f}, φ0 = {o['phi0']:.6f}: {why}" for o in mine
+                   if (why := ident.verify(r, o["theta0"], o["phi0"], cls, o["certified_from"], o["rotation"]))]
+        ks = ", ".join(sorted({str(o["certified_from"]) for o in mine}, key=int))
+        words = ", ".join(sorted({o["word"] for o in mine if o["word"]}))
+        text = f"{EXPLANATION} at r = {entry['r']}, {len(mine)} of {n} orbits are " + says.format(ks=ks, words=words)
+        out.append(Check(text, not refused, refused, counts=False))
+    rest = []
+    left = [o for o in entry["classified"] if o["class"] == ident.UNRESOLVED]
+    if left:
+        rest.append(f"{len(left)} of {n} orbits unresolved (neither in the island nor proved inside a trapping "
+                    f"ellipse within {entry['collisions']} collisions)")
+    if entry["breaks"]:
+        rest.append(f"{entry['breaks']} of {n} orbits stopped on a break")
+    if rest:
+        out.append(Check(f"{OBSERVATION} at r = {entry['r']}, " + "; ".join(rest), True, [], counts=False))
+    return out
 
 
 def explanations(claim: str, source) -> list:
     """The checks "explanation: ..." of claim ``claim`` (N2, N5, N6) from the committed
-    findings, each word re-decided exactly at its r (consistency checks: they FAIL the
-    certificate when a committed finding does not hold; they are ours, not the paper's)."""
+    findings: each word re-decided exactly at its r, each proved class re-checked
+    (:func:`classes_check`) (consistency checks: they FAIL the certificate when a committed
+    finding does not hold; they are ours, not the paper's); what stays unresolved, as an
+    observation."""
     found = load(source, claim)
     if not found or claim not in found.get("claims", {}):
         return [Check(f"{EXPLANATION} the committed findings {FINDINGS} hold an entry for {claim}", False,
@@ -222,13 +293,5 @@ def explanations(claim: str, source) -> list:
         for word in entry["words"]:
             holds, text, ev = decide(entry, word)
             out.append(Check(text, holds, ev, counts=False))
-        rest = []
-        if entry["unsettled"]:
-            rest.append(f"{entry['unsettled']} of {entry['orbits']} orbits: no period ≤ {found['max_period']} within "
-                        f"{entry['collisions']} collisions (a transient, or not a short periodic orbit)")
-        if entry["breaks"]:
-            rest.append(f"{entry['breaks']} of {entry['orbits']} orbits stopped on a break")
-        if rest:
-            out.append(Check(f"{EXPLANATION} at r = {entry['r']}, " + "; ".join(rest) + " (observed, unexplained)",
-                             True, [], counts=False))
+        out += classes_check(entry)
     return out

@@ -292,3 +292,19 @@ def test_s8_corrected_c_formula_is_proven_and_the_printed_one_refuted():
     fixed = [c for c in out.corrected if "u(0) ∧ e_z" in c.statement]
     assert len(fixed) == 1 and fixed[0].holds and any("their cross product" in e for e in fixed[0].evidence)
     assert any(e.startswith("Supporting evidence, not proof") and "0 of 261 collisions a→c" in e for e in out.evidence)
+
+
+def test_ball_run_follows_the_exact_orbit_and_encloses_its_oriented_normal():
+    """ball_run (identify's second route) on a rational state: the same letters as the exact
+    reduction, and its last ball contains a positive multiple of the exact oriented normal
+    (the ratios n_k / n_t enclose the exact ones, n_t > 0)."""
+    r = flint.fmpq(3, 10)
+    P = R.canonical("b", (-3, 1, 4))
+    exact, last = R.word_of(P, r, 60)
+    letters, L, n = R.ball_run("b", P.n, r, 60, 512)
+    assert letters == exact and L == last.letter
+    t = R.ORIENTATION[L]
+    assert n[t] > 0 and last.n[t] > 0
+    for k in range(3):
+        assert (n[k] / n[t]).contains(flint.fmpq(last.n[k], last.n[t]))
+    assert len(R.ball_run("b", P.n, r, 60, 16)[0]) < 60          # too few bits: stops at an undecided sign

@@ -283,3 +283,12 @@ def test_paper_resolution_figure_5_1_in_float64():
     out = numerics.iterate(r, THETA, PHI)
     assert out.phi.shape == (3709, 8, 500)
     assert (out.breaks == 0).mean() > 0.99
+
+
+def test_the_grid_beyond_eight_is_a_superset_of_the_eight_without_corners():
+    """Issue 25 item 6: --orbits N > 8 keeps the tool's eight and adds finer φ0, never
+    φ0 = π/2 (cos φ0 = 0: a corner, the orbit stops at once)."""
+    for n in (9, 16, 40):
+        t, p = numerics.grid(n)
+        assert len(t) == n and list(t[:8]) == list(THETA) and list(p[:8]) == list(PHI)
+        assert len(set(zip(t, p))) == n and all(abs(math.cos(x)) > 1e-6 for x in p)

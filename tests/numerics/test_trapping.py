@@ -162,3 +162,22 @@ def test_cli_trap_bad_input_exit_2(argv, capsys):
     assert cli.main(argv) == 2
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1
+
+
+def test_ball_sign_agrees_with_the_exact_membership_and_refuses_straddling_balls(complex_trap):
+    """Trap.ball_sign (identify's check that a rigorous state lies in U): +1 on small balls
+    around rational points just inside U, −1 just outside, 0 for a ball straddling the
+    boundary; a positive multiple of the normal changes nothing, a negative one is refused."""
+    from certify.algebra.balls import precision
+    T = complex_trap
+    with precision(256):
+        for inside, shrink in ((True, Q(99, 100)), (False, Q(101, 100))):
+            for u in _boundary(T, 6, shrink):
+                n = _normal(T, u)
+                assert T.contains(n) == inside
+                ball = tuple(flint.arb(3 * z, Q(1, 10 ** 30)) for z in n)
+                assert T.ball_sign(ball) == (1 if inside else -1)
+                assert T.ball_sign(tuple(-z for z in ball)) == 0
+        u = _boundary(T, 1, Q(1))[0]
+        wide = tuple(flint.arb(z, T.radius / 100) for z in _normal(T, u))
+        assert T.ball_sign(wide) == 0

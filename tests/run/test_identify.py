@@ -1,16 +1,27 @@
-"""`certify identify`: the simulator's periodic words, certified by `certify orbit`
-(certify/run/identify.py)."""
+"""`certify identify`: each orbit classified, island / attracting periodic / unresolved,
+and each proof re-checked (certify/run/identify.py)."""
 import json
+import math
 from fractions import Fraction
+from pathlib import Path
 
 import flint
 import pytest
 
 from certify import cli
 from certify.algebra.algebraic import Algebraic
+from certify.numerics import grid
 from certify.run import identify as ident
 
 COMPLEX = "abacbabcbcabcb"
+LONG = ("abacbcabacbcabacbcabacbcabacbcabcabacbcabacbcabacbcabacbcababcbcabacbcabacbcabacbcabacbcabacbacbcabacbcabacb"
+        "cabacbcabacbcb")
+SCHEMA = Path(ident.__file__).with_name("identify.schema.json")
+
+
+@pytest.fixture(scope="module")
+def three_tenths():
+    return ident.identify([Fraction(3, 10)], collisions=20_000)
 
 
 def test_period_of_reads_the_shortest_period_after_a_transient():
@@ -18,6 +29,23 @@ def test_period_of_reads_the_shortest_period_after_a_transient():
     assert ident.period_of("ab" * 3 + COMPLEX * 20) == COMPLEX            # not a multiple of the period
     assert ident.period_of("abcb" * 5 + "acbc" * 5 + "abcb" * 3) is None      # the last half is not periodic
     assert ident.period_of(COMPLEX * 3) is None                                  # fewer than 4 periods in the last half
+    assert ident.period_of("abcb" * 40, max_period=3) is None
+
+
+def test_period_of_is_not_capped_at_120_and_agrees_with_a_brute_force_search():
+    word = "ab" * 7 + LONG * 9
+    assert len(LONG) == 122 and ident.period_of(word) == LONG
+    half = word[len(word) - len(word) // 2:]
+    brute = next(p for p in range(1, len(half)) if all(half[i] == half[i + p] for i in range(len(half) - p)))
+    assert brute == 122 and ident.settled_from(word, 122) <= 14
+
+
+def test_followed_is_the_rotation_ending_with_b():
+    assert ident.followed(COMPLEX[5:] + COMPLEX[:5], COMPLEX) == COMPLEX
+    word = "ababcbcbcb"                                # (ab)^2(cb)^3: its mirror is not a rotation of it
+    mirror = word.translate(str.maketrans("ac", "ca"))
+    rot = ident.followed(mirror, word)
+    assert rot[-1] == "b" and rot in mirror + mirror and rot not in word + word
 
 
 def _at(r):
@@ -34,20 +62,93 @@ def test_window_at_says_which_window_or_why_not():
     assert window is None and "no periodic orbit" in why
 
 
-def test_the_paper_orbits_at_three_tenths_settle_on_the_certified_complex_attractor():
-    """The first orbit of the paper's grid at r = 3/10 settles on abacbabcbcabcb, whose
-    attracting window, certified exactly, contains 3/10."""
-    (x,) = ident.identify([Fraction(3, 10)], orbits=1, collisions=2000)
-    assert x.word == COMPLEX and x.window is not None and x.window["pair"] == "complex"
-    assert Fraction(x.window["lo"]["interval"][1]) < Fraction(3, 10) and x.window["hi"]["exact"] == "1"
-    doc = json.loads(ident.json_text([x]))
-    (o,) = doc["orbits"]
-    assert {"r", "theta0", "phi0", "word", "window"} <= set(o) and o["r"] == "3/10"
+def test_three_tenths_has_island_and_certified_attracting_orbits(three_tenths):
+    classes = {x.cls for x in three_tenths}
+    assert classes == {ident.ISLAND, ident.ATTRACTING}
+    for x in three_tenths:
+        if x.cls == ident.ATTRACTING:
+            assert x.word == COMPLEX and x.word_status == "certified" and x.rotation[-1] == "b"
+            assert x.certified_from is not None and "follows" in x.why
+        else:
+            assert x.word_status in (None, "observed") and "quasi-periodic" in x.why
+        assert ident.verify(Fraction(3, 10), x.theta0, x.phi0, x.cls, x.certified_from, x.rotation) is None
 
 
-def test_ab_cb_orbit_is_identified_in_its_window():
-    (x,) = ident.identify([Fraction(1, 10)], orbits=1, collisions=2000)
-    assert x.compact == "(ab)^3(cb)^3" and x.window["branch"] == "lower" and x.window["pair"] == "real"
+def test_the_json_follows_its_schema(three_tenths):
+    jsonschema = pytest.importorskip("jsonschema")
+    doc = json.loads(ident.json_text(three_tenths))
+    jsonschema.validate(doc, json.loads(SCHEMA.read_text()))
+    assert {o["class"] for o in doc["orbits"]} == {"island", "attracting periodic"}
+    bad = json.loads(json.dumps(doc))
+    bad["orbits"][0]["word_status"] = "certified"
+    bad["orbits"][0]["class"] = "unresolved"
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate(bad, json.loads(SCHEMA.read_text()))
+
+
+def test_a_mislabelled_class_a_wrong_word_or_a_state_outside_the_trap_is_refused(three_tenths):
+    r = Fraction(3, 10)
+    att = next(x for x in three_tenths if x.cls == ident.ATTRACTING)
+    isl = next(x for x in three_tenths if x.cls == ident.ISLAND)
+    k = att.certified_from
+    assert ident.verify(r, att.theta0, att.phi0, ident.ISLAND, k) is not None          # not in the island
+    assert ident.verify(r, isl.theta0, isl.phi0, ident.ATTRACTING, isl.certified_from + 14, COMPLEX) is not None
+    assert ident.verify(r, att.theta0, att.phi0, ident.ATTRACTING, k, "abcb") is not None       # a wrong word
+    rotated = att.rotation[1:] + att.rotation[0]
+    assert ident.verify(r, att.theta0, att.phi0, ident.ATTRACTING, k, rotated) is not None    # the wrong phase
+    assert ident.verify(r, att.theta0, att.phi0, ident.ATTRACTING, 0, att.rotation) is not None  # before it enters
+    assert ident.verify(Fraction(1, 10), isl.theta0, isl.phi0, ident.ISLAND, 0) is not None      # no island at 1/10
+    assert ident.verify(r, att.theta0, att.phi0, ident.UNRESOLVED, k) is not None
+
+
+def test_a_lying_island_sign_is_caught_by_the_second_route(monkeypatch):
+    """island_sign says +1 everywhere: the scan proposes "island" for every orbit, the
+    second route (Q and c_max recomputed on its own state) refuses it for the orbits that
+    are attracted, which stay attracting periodic."""
+    monkeypatch.setattr(ident, "island_sign", lambda n, r: 1)
+    theta0, phi0 = grid(8)
+    x = ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 20_000)
+    assert x.cls == ident.ATTRACTING and any("refused by the second route" in n for n in x.notes)
+
+
+def test_without_the_island_sign_or_the_trap_the_class_changes(monkeypatch):
+    theta0, phi0 = grid(2)
+    monkeypatch.setattr(ident, "island_sign", lambda n, r: -1)
+    assert ident.classify(Fraction(3, 10), float(theta0[1]), float(phi0[1]), 5000).cls == ident.UNRESOLVED
+    monkeypatch.setattr(ident.trapping.Trap, "ball_sign", lambda self, n: 0)
+    assert ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 5000).cls == ident.UNRESOLVED
+
+
+def test_r_outside_the_island_range_has_no_island_class():
+    """At r = 1/10 < 3−2√2 the island does not exist (c_max < 0, Q indefinite): an orbit
+    there is attracting periodic (the (ab)^3(cb)^3 window) or unresolved, never island."""
+    theta0, phi0 = grid(1)
+    x = ident.classify(Fraction(1, 10), float(theta0[0]), float(phi0[0]), 5000)
+    assert x.cls == ident.ATTRACTING and x.compact == "(ab)^3(cb)^3"
+
+
+def test_the_122_letter_word_of_0_173_is_certified():
+    """Under a second: the float64 run, orbit_at, the trap and the scan."""
+    theta0, phi0 = grid(8)
+    x = ident.classify(Fraction(173, 1000), float(theta0[0]), float(phi0[0]), 100_000)
+    assert x.cls == ident.ATTRACTING and x.word == LONG and len(x.rotation) == 122
+
+
+def test_near_one_no_line_contradicts_itself():
+    """Issue 25 item 8: r = 0.999 no longer reads "settles on (acb)^2(cab)^2; no periodic
+    orbit with this word at r": the orbits repeating that word are island orbits."""
+    theta0, phi0 = grid(2)
+    x = ident.classify(Fraction(999, 1000), float(theta0[1]), float(phi0[1]), 20_000)
+    assert x.cls == ident.ISLAND and "no periodic orbit with this word" not in x.line()
+    y = ident.classify(Fraction(999, 1000), float(theta0[0]), float(phi0[0]), 5000)
+    assert y.cls == ident.UNRESOLVED and y.line().count("observed") >= 1 and "certified:" not in y.line()
+
+
+def test_the_grid_beyond_eight_is_a_superset_without_corners():
+    t8, p8 = grid(8)
+    t, p = grid(24)
+    assert list(t[:8]) == list(t8) and list(p[:8]) == list(p8) and len(set(zip(t, p))) == 24
+    assert all(abs(math.cos(x)) > 1e-3 for x in p)                   # never φ0 = π/2
 
 
 @pytest.mark.parametrize("argv, says", [
@@ -55,6 +156,8 @@ def test_ab_cb_orbit_is_identified_in_its_window():
     (["identify", "--r", "0.3", "--r-range", "0.1", "0.2", "3"], "--r R"),
     (["identify", "--r", "2"], "]0,1["),
     (["identify", "--r", "x"], "not a rational"),
+    (["identify", "--r", "1e-400"], "too close to 0"),
+    (["identify", "--r", "0.99999999999999999999"], "too close to 1"),
     (["identify", "--r-range", "0.2", "0.1", "3"], "LO < HI"),
     (["identify", "--r-range", "0.1", "0.2", "z"], "COUNT"),
     (["identify", "--r", "0.3", "--orbits", "0"], "positive"),
@@ -65,3 +168,17 @@ def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
     assert cli.main(argv) == 2
     out, err = capsys.readouterr()
     assert out == "" and err.count("\n") == 1 and says in err, err
+
+
+def test_the_command_prints_one_line_per_orbit_with_its_class(capsys):
+    assert cli.main(["identify", "--r", "3/10", "--orbits", "2", "--collisions", "5000"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == 2 and lines[0].split(": ")[1] in ident.CLASSES
+
+
+def test_windows_adds_the_attracting_window_of_short_words_only_when_asked():
+    theta0, phi0 = grid(1)
+    x = ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 5000, windows=True)
+    assert x.cls == ident.ATTRACTING and x.window["pair"] == "complex" and x.window["hi"]["exact"] == "1"
+    assert Fraction(x.window["lo"]["interval"][1]) < Fraction(3, 10)
+    assert ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 5000).window is None

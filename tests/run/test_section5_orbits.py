@@ -18,14 +18,66 @@ def _first_attracting():
 
 
 def test_the_committed_findings_follow_the_format():
-    assert FOUND["schema"] == s5.SCHEMA and FOUND["version"] == 1
+    assert FOUND["schema"] == s5.SCHEMA and FOUND["version"] == s5.VERSION
     assert set(FOUND["claims"]) == set(s5.PLAN)
     for claim, entries in FOUND["claims"].items():
         assert [e["r"] for e in entries] == [str(__import__("fractions").Fraction(r)) for r, _ in s5.PLAN[claim]]
         for e in entries:
             assert sum(w["count"] for w in e["words"]) + e["unsettled"] + e["breaks"] == e["orbits"]
+            assert sum(e["classes"].values()) == e["orbits"] == len(e["classified"])
             for w in e["words"]:
                 assert w["period"] == len(w["word"]) and w["kind"] in ("attracting", "saddle", "repelling", "")
+                assert w["certified"] <= w["count"] and (w["certified"] == 0 or w["kind"] == "attracting")
+
+
+def test_the_committed_findings_follow_their_schema_and_hold_no_timing():
+    import json
+    from pathlib import Path
+    jsonschema = __import__("pytest").importorskip("jsonschema")
+    schema = json.loads(Path(s5.__file__).with_name("section5-orbits.schema.json").read_text())
+    jsonschema.validate(FOUND, schema)
+    assert "seconds" not in json.dumps(FOUND)
+    bad = json.loads(json.dumps(FOUND))
+    bad["seconds"] = 1.0
+    with __import__("pytest").raises(jsonschema.ValidationError):
+        jsonschema.validate(bad, schema)
+
+
+def test_the_classes_of_the_committed_findings_say_what_is_proved():
+    """r = 3/10: island and attracting abacbabcbcabcb orbits; r = 0.173: the 122-letter word
+    certified for ever for all 8; near r = 1 the (acb)^2(cab)^2 orbits are island orbits
+    and no explanation reads "unexplained"."""
+    entries = {(c, e["r"], e["collisions"]): e for c, es in FOUND["claims"].items() for e in es}
+    e = entries[("N2", "3/10", 10_000)]
+    assert e["classes"]["island"] > 0 and e["classes"]["attracting periodic"] > 0
+    assert {o["word"] for o in e["classified"] if o["word"]} == {"abacbabcbcabcb"}
+    e = entries[("N5", "173/1000", 100_000)]
+    assert e["classes"]["attracting periodic"] == 8 and {len(o["word"]) for o in e["classified"]} == {122}
+    for claim in s5.PLAN:
+        for c in s5.explanations(claim, s5.FINDINGS):
+            assert "unexplained" not in c.statement
+    near_one = [c.statement for c in s5.explanations("N2", s5.FINDINGS) if "r = 999/1000" in c.statement]
+    assert any("(acb)^2(cab)^2" in t.replace("acbacbcabcab", "(acb)^2(cab)^2") and "island orbits" in t
+               for t in near_one), near_one
+
+
+def test_a_committed_class_that_does_not_hold_fails():
+    import json
+    e = next(e for e in FOUND["claims"]["N2"] if e["r"] == "3/10")
+    checks = s5.classes_check(e)
+    assert checks and all(holds(c) for c in checks)
+    wrong = json.loads(json.dumps(e))
+    for o in wrong["classified"]:                      # an attracting orbit called an island orbit
+        if o["class"] == "attracting periodic":
+            o["class"], o["word"], o["rotation"] = "island", None, None
+            break
+    assert not all(holds(c) for c in s5.classes_check(wrong))
+    late = json.loads(json.dumps(e))
+    for o in late["classified"]:                       # the proof claimed from collision 0, before it holds
+        if o["class"] == "attracting periodic":
+            o["certified_from"] = 0
+            break
+    assert not all(holds(c) for c in s5.classes_check(late))
 
 
 def test_every_committed_explanation_holds_exactly():
