@@ -51,7 +51,7 @@ from certify.dynamics.reduction import ball_run
 from certify.dynamics.simulate import Undecided, sign
 from certify.errors import UsageError
 from certify.numerics import engines, grid, rules, trapping
-from certify.patterns import compact, read, show_word
+from certify.patterns import compact, island_theorem, read, show_word
 from certify.patterns.pattern import end_data
 from certify.patterns.reduction_orbits import OrbitResult, analyse, orbit_at
 
@@ -156,9 +156,12 @@ def _end(e: dict) -> str:
     return e["exact"] if e["exact"] is not None else "≈" + e["digits"]
 
 
+@cache
 def elliptic(r: flint.fmpq) -> bool:
-    """r in ]3−2√2, 1[ (r² − 6r + 1 < 0, exactly): the island exists."""
-    return r < 1 and island.elliptic_polynomial(r) < 0
+    """The island exists at r and every orbit in it is quasi-periodic: r in ]3−2√2, 1[
+    (r² − 6r + 1 < 0, exactly) and the island theorem at r proved step by step
+    (:func:`certify.patterns.island_theorem.theorem`, ``certify island --r``)."""
+    return bool(r < 1 and island.elliptic_polynomial(r) < 0 and island_theorem.theorem(r).quasi_periodic)
 
 
 # ------------------------------------------------------------------ the second route
