@@ -294,25 +294,29 @@ def test_cli_stress_runs_its_random_orbits_on_jobs(tmp_path, monkeypatch, capsys
 # --- the bound's own proof, across a rescaling, and what certifies ------------------------
 
 U, ETA = Fraction(1, 2 ** 53), Fraction(1, 2 ** 1074)
+GAMMA3 = 3 * U / (1 - 3 * U)
 
 
 def test_carry_bound_meets_its_proof_inequality_in_exact_rationals():
-    """Step (iv) of rules.carry_bound's proof on computed values: err'_m ≥ S_m/(1 − u) + 3η
-    exactly (S_m = Σ_c |Ĉ_mc| (err_c + g |n_c|) in rationals), on random states whose error
-    ranges from 0 to far above |n| (past the horizon), at several r.  Without κ (K = 1) the
-    five roundings of S are uncovered and the inequality fails."""
+    """Step (iii) of rules.carry_bound's proof on computed values, exactly in rationals:
+    err'_m ≥ Σ_c |Ĉ_mc| ((γ_3 + u/(1 − u)) |n_c| + err_c/(1 − u)) + 3η, γ_3 = 3u/(1 − 3u)
+    written here (not rules.gamma_bound), on random states whose error ranges from 0 to far
+    above |n| (past the horizon), at several r.  Without κ (K = 1) the five roundings of the
+    bound are uncovered, with γ = 3u the rounding of the product, and the inequality fails."""
     rng = random.Random(7)
     for r in (0.013, 0.3, 0.77):
         absrows = np.abs(np.array(rules.float_rows(r))).tolist()
-        for _ in range(300):
-            n = [rng.uniform(-1, 1) * 2.0 ** rng.randint(-40, 40) for _ in range(3)]
+        for k in range(400):
+            low = -1070 if k % 4 == 0 else -40                  # a quarter underflows: the 3η term and tiny
+            n = [rng.uniform(-1, 1) * 2.0 ** rng.randint(low, 40) for _ in range(3)]
             err = [abs(z) * 2.0 ** rng.randint(-60, 8) * rng.random() for z in n]
             j = rng.randrange(3)
             out = rules.carry_bound(j, n, err, absrows, rules.G64, rules.K64, rules.TINY64)
             for m in range(3):
-                S = sum(Fraction(absrows[j][m][c]) * (Fraction(err[c]) + Fraction(rules.G64) * abs(Fraction(n[c])))
-                        for c in range(3))
-                assert Fraction(out[m]) >= S / (1 - U) + 3 * ETA, (r, j, m)
+                C = [Fraction(absrows[j][m][c]) for c in range(3)]
+                needed = sum(C[c] * ((GAMMA3 + U / (1 - U)) * abs(Fraction(n[c])) + Fraction(err[c]) / (1 - U))
+                             for c in range(3)) + 3 * ETA
+                assert Fraction(out[m]) >= needed, (r, j, m)
 
 
 def _exact_check(r, n0, collisions):

@@ -269,10 +269,10 @@ def test_orbit_at_refuses_bad_input():
 
 
 # ------------------------------------------------------------------ the type against the multipliers themselves
-def _type_from_multipliers(word, r, lam) -> str:
-    """attracting / saddle / repelling from the moduli of the multipliers λ/λ_y, λ/λ_z, the
-    other roots of cp taken from python-flint's complex root finder (balls): a third route,
-    without the Jury polynomials of analyse and orbit_at."""
+def _type_from_multipliers(word, r, lam) -> tuple:
+    """(type, largest multiplier modulus): attracting / saddle / repelling from the moduli of
+    the multipliers λ/λ_y, λ/λ_z, the other roots of cp taken from python-flint's complex root
+    finder (balls): a third route, without the Jury polynomials of analyse and orbit_at."""
     M = ro._matrix_at(read_normal(word), Q(r))
     roots = [z for z, _m in flint.fmpq_poly(M.charpoly()).complex_roots()]
     x = lam.arb(128)
@@ -280,7 +280,8 @@ def _type_from_multipliers(word, r, lam) -> str:
     assert len(others) == 2
     inside = [bool(abs(x / z) < 1) for z in others]
     assert all(bool(abs(x / z) < 1) or bool(abs(x / z) > 1) for z in others)      # decided by the balls
-    return {2: "attracting", 1: "saddle", 0: "repelling"}[sum(inside)]
+    return {2: "attracting", 1: "saddle", 0: "repelling"}[sum(inside)], max((abs(x / z) for z in others),
+                                                                          key=lambda m: m.mid())
 
 
 @pytest.mark.parametrize("word, rs", [
@@ -299,7 +300,8 @@ def test_types_are_those_of_the_multipliers_at_points_and_on_intervals(word, rs)
         assert feasible, (word, r)
         x = Algebraic.rational(Q(r))
         for o in feasible:
-            assert o.kind == _type_from_multipliers(word, r, o.lam), (word, r, o.branch, o.kind)
+            kind, modulus = _type_from_multipliers(word, r, o.lam)
+            assert o.kind == kind and o.modulus.overlaps(modulus), (word, r, o.branch, o.kind, o.modulus)
             types = {t for t in ro.TYPES for R_ in res.regions[t] if R_.branch == o.branch
                      and any(lo < x < hi for lo, hi in R_.merged()[0])}
             assert types == {o.kind}, (word, r, o.branch, types)
