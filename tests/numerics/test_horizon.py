@@ -410,3 +410,22 @@ def test_cli_simulate_subnormal_r_is_one_line_exit_2(capsys):
     assert main(["simulate", "--r", "1e-310"]) == 2
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and "2^-1022" in err, err
+
+
+def test_the_rescaled_bound_covers_an_underflowing_entry():
+    """Step (v) of rules.carry_bound's proof on a crafted state of kernel._advance: the normal
+    is scaled down (its largest entry passes 2^256, f = 2^-258) while the bound of its small
+    entry, err'_2 f ≈ 2^-1028, is subnormal: the kernel's err''_2 = fl(fl(err'_2 f) + tiny) must
+    exceed err'_2 f + η/2 exactly (the underflow of f n'_2).  Without tiny it does not."""
+    rows = np.array(rules.float_rows(0.5)).reshape(27)
+    n = (math.ldexp(-3.0, 255), math.ldexp(5.0, 255), math.ldexp(4.0, -720))
+    err = (2.0 ** -1000,) * 3
+    m, _bnd, out = kernel._advance(0, n, err, rows, *CONSTANTS)
+    before = rules.carry_bound(0, n, err, np.abs(rows.reshape(3, 3, 3)).tolist(), *CONSTANTS[1:])
+    unscaled = rules.advance(0, n, rows.reshape(3, 3, 3).tolist())
+    f = Fraction(max(abs(z) for z in m)) / max(abs(Fraction(z)) for z in unscaled)
+    assert f == Fraction(1, 2 ** 258)
+    assert Fraction(before[2]) * f < Fraction(1, 2 ** 1022)              # the case the proof's tiny covers
+    small = [k for k in range(3) if Fraction(before[k]) * f < Fraction(1, 2 ** 947)]
+    assert small == [2]                  # (the others are exact, and (iv)'s slack covers them)
+    assert Fraction(out[2]) >= Fraction(before[2]) * f + ETA / 2
