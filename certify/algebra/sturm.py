@@ -249,13 +249,20 @@ def isolate(p, a=None, b=None, width=None) -> list[tuple[flint.fmpq, flint.fmpq]
     """Isolating intervals (lo, hi) of the distinct real roots of p in the open
     interval ]a, b[, increasing.  Each interval holds exactly one root; lo == hi
     means the root is that rational; otherwise the root lies in ]lo, hi[ and p
-    does not vanish at lo or hi.  ``width`` refines each interval below it."""
+    does not vanish at lo or hi.  ``width`` refines each interval below it.
+    ValueError when a ≥ b (an empty or reversed interval: a caller's mistake; the
+    bisection would never end)."""
     p = flint.fmpq_poly(p)
     seq = sturm_sequence(p)
     p0 = seq[0]
     bound = cauchy_bound(p0)
-    a = -bound if a is None else to_fmpq(a)
-    b = bound if b is None else to_fmpq(b)
+    a = None if a is None else to_fmpq(a)
+    b = None if b is None else to_fmpq(b)
+    if a is not None and b is not None and not a < b:
+        raise ValueError(f"isolate: the interval ]{a}, {b}[ is empty or reversed (a ≥ b)")
+    # an omitted end: beyond every root (all lie in ]-bound, bound[) and beyond the other end
+    a = a if a is not None else -bound if b is None else min(-bound, b - 1)
+    b = b if b is not None else max(bound, a + 1)
     out = []
     # roots exactly at b are excluded (open interval): count in ]a, b] minus root at b
     stack = [(a, b)]

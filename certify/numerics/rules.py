@@ -51,6 +51,7 @@ import flint
 
 from certify.dynamics import reduction
 from certify.dynamics.model import INDEX, LETTERS
+from certify.errors import UsageError
 
 COMPLETED, UNDECIDED, SHORT_STEP, CORNER, NONFINITE, HORIZON = 0, 1, 2, 3, 4, 5
 BREAKS = {
@@ -156,6 +157,7 @@ def inflation(bits: int) -> Fraction:
 G64 = float(gamma_bound(53))        # exact: 2^-51 (1 + 2^-50)
 K64 = float(inflation(53))          # exact: 1 + 2^-48
 TINY64 = 2.0 ** -1000               # the absolute term that covers underflow (float64 only)
+NORMAL64 = 2.0 ** -1022             # the smallest normal float64: float_rows needs its entries above it
 
 
 def carry_bound(j: int, n, err, absrows, g, kappa, tiny=0):
@@ -240,11 +242,21 @@ def integer_rows(r) -> list[tuple]:
 
 def float_rows(r) -> list[list[list[float]]]:
     """:func:`integer_rows` converted to float, each matrix scaled by a power of 2 so
-    that its largest entry lies in [1, 2) (a positive multiple keeps the plane)."""
+    that its largest entry lies in [1, 2) (a positive multiple keeps the plane).
+
+    UsageError when an entry is not zero and below the smallest normal float64
+    (:data:`NORMAL64` = 2^-1022; r itself subnormal, e.g. 1e-310): such an entry is
+    rounded to an absolute, not a relative, precision, step (i) of :func:`carry_bound`
+    fails, and the kernel's power-of-2 rescaling of a subnormal normal overflows."""
     out = []
     for rows in integer_rows(r):
         shift = max(abs(int(z)) for row in rows for z in row).bit_length() - 1
         out.append([[_scaled(int(z), shift) for z in row] for row in rows])
+    tiny = [abs(z) for K in out for row in K for z in row if z and abs(z) < NORMAL64]
+    if tiny:
+        raise UsageError(f"r = {float(exact_r(r)):g} is too small for the float64 engine: its matrices have an "
+                         f"entry {tiny[0]:g} below the smallest normal float64 2^-1022 ≈ {NORMAL64:.3g} "
+                         "(no relative rounding bound there); use the mp or ball engine")
     return out
 
 

@@ -771,3 +771,18 @@ def test_roots_in_unit_interval_unique_root_and_constant_multiples():
     assert not same_up_to_constant(flint.fmpq_poly([1, 2]), flint.fmpq_poly([1, 3]))
     assert divides(flint.fmpq_poly([1, 2]), flint.fmpq_poly([1, 2]) * flint.fmpq_poly([5, 1, 7]))
     assert not divides(flint.fmpq_poly([1, 2]), flint.fmpq_poly([1, 3]))
+
+
+@pytest.mark.parametrize("a, b", [(2, 0), (1, 1), (0, -1)])
+def test_isolate_refuses_an_empty_or_reversed_interval(a, b):
+    """isolate(p, a, b) with a ≥ b: a ValueError at once (it used to bisect for ever)."""
+    with pytest.raises(ValueError, match="empty or reversed"):
+        isolate(flint.fmpq_poly([-1, 0, 1]), fq(a), fq(b))
+
+
+def test_isolate_with_one_end_omitted_beyond_the_roots():
+    """An omitted end is taken beyond the roots and beyond the other end: ]-∞, -5[ and ]5, ∞[
+    hold no root of x² - 1 (its Cauchy bound is 2), ]-∞, 0[ and ]0, ∞[ one each."""
+    p = flint.fmpq_poly([-1, 0, 1])
+    assert isolate(p, None, fq(-5)) == [] and isolate(p, fq(5), None) == []
+    assert len(isolate(p, None, fq(0))) == 1 and len(isolate(p, fq(0), None)) == 1

@@ -289,3 +289,143 @@ def test_cli_stress_runs_its_random_orbits_on_jobs(tmp_path, monkeypatch, capsys
     assert "## 4 random orbits, 100 collisions each" in text and "**Silent wrong collisions: 0.**" in text
     assert "0 silent wrong collision(s)" in capsys.readouterr().out
     assert main(["stress", "--jobs", "0", "--out", str(out)]) == 2
+
+
+# --- the bound's own proof, across a rescaling, and what certifies ------------------------
+
+U, ETA = Fraction(1, 2 ** 53), Fraction(1, 2 ** 1074)
+GAMMA3 = 3 * U / (1 - 3 * U)
+
+
+def test_carry_bound_meets_its_proof_inequality_in_exact_rationals():
+    """Step (iii) of rules.carry_bound's proof on computed values, exactly in rationals:
+    err'_m ≥ Σ_c |Ĉ_mc| ((γ_3 + u/(1 − u)) |n_c| + err_c/(1 − u)) + 3η, γ_3 = 3u/(1 − 3u)
+    written here (not rules.gamma_bound), on random states whose error ranges from 0 to far
+    above |n| (past the horizon), at several r.  Without κ (K = 1) the five roundings of the
+    bound are uncovered, with γ = 3u the rounding of the product, and the inequality fails."""
+    rng = random.Random(7)
+    for r in (0.013, 0.3, 0.77):
+        absrows = np.abs(np.array(rules.float_rows(r))).tolist()
+        for k in range(400):
+            low = -1070 if k % 4 == 0 else -40                  # a quarter underflows: the 3η term and tiny
+            n = [rng.uniform(-1, 1) * 2.0 ** rng.randint(low, 40) for _ in range(3)]
+            err = [abs(z) * 2.0 ** rng.randint(-60, 8) * rng.random() for z in n]
+            j = rng.randrange(3)
+            out = rules.carry_bound(j, n, err, absrows, rules.G64, rules.K64, rules.TINY64)
+            for m in range(3):
+                C = [Fraction(absrows[j][m][c]) for c in range(3)]
+                needed = sum(C[c] * ((GAMMA3 + U / (1 - U)) * abs(Fraction(n[c])) + Fraction(err[c]) / (1 - U))
+                             for c in range(3)) + 3 * ETA
+                assert Fraction(out[m]) >= needed, (r, j, m)
+
+
+def _exact_check(r, n0, collisions):
+    """The float64 orbit of the exact datum n0 (initial bound 0) against its exact orbit,
+    with the engine's orientations and power-of-2 rescalings: |n̂_k − x_k| ≤ err_k.  Returns
+    the rescaling factors met."""
+    code, done, cert, letters, normals, errs, rows = traced(r, n0, collisions, tol=0.0)
+    assert code == 0 and done == collisions
+    exact = exact_scaled_rows(r)
+    x = [Fraction(z) for z in n0]
+    prev = np.array(n0, dtype=float)
+    factors = []
+    for k in range(done):
+        C = exact[letters[k]]
+        y = [sum(C[m][c] * x[c] for c in range(3)) for m in range(3)]
+        approx = rows[letters[k]] @ prev
+        s = 1 if float(np.dot(approx, normals[k])) > 0 else -1
+        e = round(math.log2(np.max(np.abs(normals[k])) / np.max(np.abs(approx))))
+        factors.append(e)
+        x = [s * Fraction(2) ** e * z for z in y]
+        for m in range(3):
+            assert abs(Fraction(normals[k, m]) - x[m]) <= Fraction(errs[k, m]), (k, m, e)
+        prev = normals[k]
+    return factors
+
+
+@pytest.mark.parametrize("scale", [-255, 255])
+def test_the_bound_bounds_the_error_across_a_rescaling(scale):
+    """A datum at the edge of the kernel's range [2^-256, 2^256]: the normal is rescaled by
+    a power of 2 within a few collisions (up for 2^-255, down for 2^255), and the bound,
+    rescaled with it (step (v)), still bounds the error of the exact orbit."""
+    n0 = tuple(math.ldexp(z, scale) for z in (-3, 5, 4))
+    factors = _exact_check(0.5, n0, 40)
+    assert any(e != 0 for e in factors) and all((e > 0) == (scale < 0) for e in factors if e)
+
+
+def test_the_kernel_rescales_the_bound_as_the_rules_say():
+    """Bit for bit across rescalings: the kernel's err is rules.carry_bound, then, when the
+    normal is multiplied by f = 2^e, fl(fl(err f) + tiny) (kernel._advance, step (v))."""
+    r = 0.5
+    for scale in (-255, 255):
+        n0 = tuple(math.ldexp(z, scale) for z in (-3, 5, 4))
+        code, done, cert, letters, normals, errs, rows = traced(r, n0, 40)
+        absrows = np.abs(rows).tolist()
+        err = (rules.TOL64 * max(abs(z) for z in n0),) * 3
+        n, scaled = n0, 0
+        for k in range(done):
+            err = rules.carry_bound(int(letters[k]), n, err, absrows, rules.G64, rules.K64, rules.TINY64)
+            m = rules.advance(int(letters[k]), n, rows.tolist())
+            e = round(math.log2(np.max(np.abs(normals[k])) / max(abs(z) for z in m)))
+            if e:
+                f = 2.0 ** e
+                err = tuple(z * f + rules.TINY64 for z in err)
+                scaled += 1
+            assert tuple(errs[k]) == err, (scale, k)
+            n = tuple(normals[k])
+        assert scaled
+
+
+@pytest.mark.parametrize("certifies", [rules.certifies, kernel._certifies], ids=["rules", "kernel"])
+def test_a_contact_is_not_certified_when_an_in_face_entry_is_within_its_bound(certifies):
+    """A state at b (i = 1) whose contact entry n_b is decided by its bound but whose
+    orientation entry n_z or face entry n_x lies within its bound of 0: not certified (the
+    true normal may be outside the face).  Decided by the margin rule (classify at a smaller
+    bound), so only the accumulated bound can refuse it."""
+    err = (1e-9, 1e-9, 1e-9)
+    assert certifies(1, (-1.0, 0.5, 1.0), err, 2)                     # every entry decided: certified
+    for n in ((-1.0, 0.5, 5e-10), (-5e-10, 0.5, 1.0), (-1.0, -0.5, 5e-10), (-5e-10, -0.5, 1.0)):
+        j = 2 if n[1] > 0 else 0
+        assert rules.classify(1, n, (1e-12,) * 3) == (0, j)
+        assert not certifies(1, n, err, j), n
+
+
+def test_float64_refuses_a_subnormal_r():
+    """At r = 1e-310 (subnormal) the float matrices carry subnormal entries (no relative
+    rounding; the kernel's rescaling overflowed to a non-finite break): refused, one line,
+    exit 2 at the command line; the smallest normal r is accepted and completes its steps
+    without a non-finite break."""
+    from certify.errors import UsageError
+    with pytest.raises(UsageError, match="too small for the float64 engine"):
+        rules.float_rows(1e-310)
+    with pytest.raises(UsageError):
+        engines.float64_orbit(1e-310, 0.5, 1.0, 10)
+    res = numerics.iterate([2.0 ** -1021], *numerics.grid(8), collisions=50, keep=1)
+    assert numerics.NONFINITE not in res.breaks
+    assert engines.mp_orbit(1e-310, 0.5, 1.0, 20).code == 0        # exact rows: no limit there
+
+
+def test_cli_simulate_subnormal_r_is_one_line_exit_2(capsys):
+    from certify.cli import main
+    assert main(["simulate", "--r", "1e-310"]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "2^-1022" in err, err
+
+
+def test_the_rescaled_bound_covers_an_underflowing_entry():
+    """Step (v) of rules.carry_bound's proof on a crafted state of kernel._advance: the normal
+    is scaled down (its largest entry passes 2^256, f = 2^-258) while the bound of its small
+    entry, err'_2 f ≈ 2^-1028, is subnormal: the kernel's err''_2 = fl(fl(err'_2 f) + tiny) must
+    exceed err'_2 f + η/2 exactly (the underflow of f n'_2).  Without tiny it does not."""
+    rows = np.array(rules.float_rows(0.5)).reshape(27)
+    n = (math.ldexp(-3.0, 255), math.ldexp(5.0, 255), math.ldexp(4.0, -720))
+    err = (2.0 ** -1000,) * 3
+    m, _bnd, out = kernel._advance(0, n, err, rows, *CONSTANTS)
+    before = rules.carry_bound(0, n, err, np.abs(rows.reshape(3, 3, 3)).tolist(), *CONSTANTS[1:])
+    unscaled = rules.advance(0, n, rows.reshape(3, 3, 3).tolist())
+    f = Fraction(max(abs(z) for z in m)) / max(abs(Fraction(z)) for z in unscaled)
+    assert f == Fraction(1, 2 ** 258)
+    assert Fraction(before[2]) * f < Fraction(1, 2 ** 1022)              # the case the proof's tiny covers
+    small = [k for k in range(3) if Fraction(before[k]) * f < Fraction(1, 2 ** 947)]
+    assert small == [2]                  # (the others are exact, and (iv)'s slack covers them)
+    assert Fraction(out[2]) >= Fraction(before[2]) * f + ETA / 2

@@ -181,3 +181,83 @@ def test_ball_sign_agrees_with_the_exact_membership_and_refuses_straddling_balls
         u = _boundary(T, 1, Q(1))[0]
         wide = tuple(flint.arb(z, T.radius / 100) for z in _normal(T, u))
         assert T.ball_sign(wide) == 0
+
+
+# ------------------------------------------------------------------ the bounds of check() against the map itself
+def _g(T: Trap, u) -> tuple:
+    """The return map in the frame, by the exact reduction (one period from c + T u)."""
+    w, P = R.word_of(R.canonical(T.word[-1], _normal(T, u)), T.r, len(T.word))
+    assert w == T.word
+    return T.coordinates(P.n)
+
+
+def _dg_norm(T: Trap, u, h) -> flint.arb:
+    """‖Dg(u)‖₂ by exact central differences of the exact return map (step h), in arb."""
+    cols = []
+    for d in ((h, 0), (0, h)):
+        plus, minus = _g(T, (u[0] + d[0], u[1] + d[1])), _g(T, (u[0] - d[0], u[1] - d[1]))
+        cols.append([(a - b) / (2 * h) for a, b in zip(plus, minus)])
+    return trapping._spectral(((cols[0][0], cols[1][0]), (cols[0][1], cols[1][1])))
+
+
+@pytest.mark.parametrize("which", ["complex", "real"])
+def test_the_jacobian_of_the_exact_return_map_is_below_kappa_on_u(which, complex_trap, real_trap):
+    """‖Dg‖ ≤ κ at points of U near its boundary and at its centre, Dg from the exact reduction
+    map (differences of step ρ·2^-40), not from the formula of check().  The term R|β|/(α - |β|ρ)
+    of κ is needed: without it κ is below ‖Dg‖ on U (0.19 against 0.22 for the real trap)."""
+    T = complex_trap if which == "complex" else real_trap
+    h = T.radius / 2 ** 40
+    with trapping.precision(128):
+        for u in _boundary(T, 12, shrink=Q(1) - Q(1, 2 ** 20)) + [(Q(0), Q(0))]:
+            assert _dg_norm(T, u, h) < T.contraction, u
+
+
+def _lower_fixed_radius(T: Trap, bits: int = 2048) -> flint.arb:
+    """ρ₀, the smaller root of |β|ρ² - (α - ‖A‖)ρ + |g_0| = 0: R(ρ) = ρ there (R < ρ just above it)."""
+    g0, A, alpha, beta = trapping._return_map(products(T.word, T.r)[-1], T.centre, T.frame, T.chart)
+    with trapping.precision(bits):
+        b, a, n = trapping._norm(beta), flint.arb(alpha) - trapping._spectral(A), trapping._norm(g0)
+        return (a - (a * a - 4 * b * n).sqrt()) / (2 * b)
+
+
+def test_a_radius_at_the_boundary_of_r_below_rho_is_refused(real_trap, monkeypatch):
+    """ρ just below ρ₀ (F(U) ⊄ U: R > ρ by a relative 2^-200), checked with balls of 20 to 59
+    bits: R's ball then contains ρ, and check() must refuse at every precision; a check at the
+    ball's midpoint accepts at some of them (verified below: the test reaches the boundary)."""
+    T = real_trap
+    with trapping.precision(2048):
+        rho0 = _lower_fixed_radius(T)
+        rho = trapping._dyadic(rho0 * (1 - flint.arb(2) ** -200), 400)
+    g0, A, alpha, beta = trapping._return_map(products(T.word, T.r)[-1], T.centre, T.frame, T.chart)
+    below_mid = 0
+    for bits in range(20, 60):
+        monkeypatch.setattr(trapping, "PREC", bits)
+        why = check(T.word, T.r, T.centre, T.frame, rho)
+        assert isinstance(why, str) and "F(U) ⊂ U" in why, (bits, why)
+        with trapping.precision(bits):
+            Rb = (trapping._norm(g0) + trapping._spectral(A) * rho) / (flint.arb(alpha) - rho * trapping._norm(beta))
+            below_mid += bool(Rb.mid() < rho)
+    assert below_mid > 0
+    monkeypatch.setattr(trapping, "PREC", 256)
+    assert isinstance(check(T.word, T.r, T.centre, T.frame, 2 * rho), Trap)          # above ρ₀: certified
+
+
+def test_each_contact_wall_is_a_wall_of_the_next_state(complex_trap):
+    """Why dropping the contact walls cannot change a certificate (docs/developing.md,
+    mutation run): cof(K_j)'s rows other than j are multiples of e_m, so the contact wall at
+    state k is a positive multiple of the orientation or face wall at state k + 1 (k < L - 1),
+    and the last one of the orientation at the return or of the face wall at state 0 applied
+    to N n (implied by F(U) ⊂ U)."""
+    for word in (COMPLEX, REAL, "abacb"):
+        P = products(word, Q(3, 10))
+        ws = trapping.walls(word, P) + [trapping.Wall("face at the return", tuple(
+            -Q(P[-1][(R.ORIENTATION[word[-1]] + 1) % 3, j]) for j in range(3)))]
+        for k, w in enumerate(x for x in ws if x.name.startswith("contact")):
+            later = [v for v in ws if f"state {k + 1} " in v.name or (k == len(word) - 1 and "return" in v.name)]
+            assert any(_positive_multiple(w.row, v.row) for v in later), (word, w.name)
+
+
+def _positive_multiple(a, b) -> bool:
+    i = next(m for m in range(3) if a[m] != 0)
+    f = b[i] / a[i]
+    return f > 0 and all(b[m] == f * a[m] for m in range(3))

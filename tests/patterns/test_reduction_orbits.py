@@ -266,3 +266,42 @@ def test_orbit_at_refuses_bad_input():
         ro.orbit_at(COMPLEX, "3/2")
     with pytest.raises(UsageError):
         ro.orbit_at("abab", "1/2")
+
+
+# ------------------------------------------------------------------ the type against the multipliers themselves
+def _type_from_multipliers(word, r, lam) -> tuple:
+    """(type, largest multiplier modulus): attracting / saddle / repelling from the moduli of
+    the multipliers λ/λ_y, λ/λ_z, the other roots of cp taken from python-flint's complex root
+    finder (balls): a third route, without the Jury polynomials of analyse and orbit_at."""
+    M = ro._matrix_at(read_normal(word), Q(r))
+    roots = [z for z, _m in flint.fmpq_poly(M.charpoly()).complex_roots()]
+    x = lam.arb(128)
+    others = [z for z in roots if not (z.real.overlaps(x) and abs(z.imag) < 1e-30)]
+    assert len(others) == 2
+    inside = [bool(abs(x / z) < 1) for z in others]
+    assert all(bool(abs(x / z) < 1) or bool(abs(x / z) > 1) for z in others)      # decided by the balls
+    return {2: "attracting", 1: "saddle", 0: "repelling"}[sum(inside)], max((abs(x / z) for z in others),
+                                                                          key=lambda m: m.mid())
+
+
+@pytest.mark.parametrize("word, rs", [
+    ("abcb", ["1/10", "1/2", "9/10"]),            # repelling with a complex pair on ]0.17, 1[, a saddle below
+    ("abacb", ["1/10", "3/20"]),                  # a saddle with a real multiplier below -1 (-1.90 at 3/20)
+    ("ababcbcb", ["3/20"]),                       # attracting, real pair
+])
+def test_types_are_those_of_the_multipliers_at_points_and_on_intervals(word, rs):
+    """At rational r, the type orbit_at decides (the Jury polynomials at λ) is the one the
+    multipliers' moduli show, and the one analyse certifies on the interval holding r.
+    Kills a sign changed in λ (det M - λ³) and a dropped -λ cp(-λ) > 0 (abacb at 3/20:
+    ν = -1.90 and -0.13, |ν_1 ν_2| < 1 and a(1) > 0: attracting without it)."""
+    res = analyse(word)
+    for r in rs:
+        feasible = [o for o in ro.orbit_at(word, r) if o.feasible]
+        assert feasible, (word, r)
+        x = Algebraic.rational(Q(r))
+        for o in feasible:
+            kind, modulus = _type_from_multipliers(word, r, o.lam)
+            assert o.kind == kind and o.modulus.overlaps(modulus), (word, r, o.branch, o.kind, o.modulus)
+            types = {t for t in ro.TYPES for R_ in res.regions[t] if R_.branch == o.branch
+                     and any(lo < x < hi for lo, hi in R_.merged()[0])}
+            assert types == {o.kind}, (word, r, o.branch, types)
