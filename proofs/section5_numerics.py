@@ -21,12 +21,17 @@ import math
 import numpy as np
 
 import certify.numerics as F
+from certify.algebra import Q, radical
 from certify.numerics import BREAKS, paper_grid
+from certify.patterns import island_theorem as island
 from certify.run import (
+    EXPLANATION,
     OBSERVED,
+    PASS,
     Check,
     certificate,
     committed,
+    conclude,
     explanations,
     load_findings,
     observe,
@@ -422,10 +427,10 @@ PRINTED_N7 = dict(grows_below="1", not_discrete_at="0.92")
 @certificate("N7", "l. 1088-1094, 1200-1208",
              "The ω-limit sets look like finite unions of intervals, growing as r decreases from 1 and not "
              "discrete at r ≈ 0.92; each orbit may cover only part of [0, π] while the union is dense "
-             "(quasi-periodicity).", needs=("section5_preview",), printed=PRINTED_N7,
+             "(quasi-periodicity).", needs=("section5_preview", "island_theorem"), printed=PRINTED_N7,
              expect=OBSERVED,
              mutants=[replaced("not_discrete_at", "0.92", "0.999", "where the ω-limit sets are not discrete")])
-def quasi_periodic(section5_preview, grows_below, not_discrete_at):
+def quasi_periodic(section5_preview, island_theorem, grows_below, not_discrete_at):
     """Cluster counts and widths of each orbit's kept φ (gap 10^-3): near r = 1, in the region
     of apparent chaos, and in the thin stripe."""
     top, r92 = number(grows_below), number(not_discrete_at)
@@ -459,7 +464,97 @@ def quasi_periodic(section5_preview, grows_below, not_discrete_at):
               [f"intervals per orbit over {len(pieces)} orbits (preview of Figure 11a and the 8 values of r above): "
                + ", ".join(f"{c}: {pieces.count(c)}" for c in sorted(set(pieces)))]),
     ]
-    note = ("Evidence, not a proof of quasi-periodicity: counts and widths of clusters of kept angles (no rotation "
-            "numbers). " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 11a: "
+    checks += island_explanations(island_theorem, not_discrete_at)
+    note = ("The cluster counts are evidence, not a proof; the explanations are ours and certified: the island "
+            "theorem (N7.1) proves quasi-periodic orbits for every r in ]3−2√2, 1[. " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 11a: "
                                         f"{s['stripe_intervals']}; in Figure 6 for 0.2 ≤ r ≤ 0.9: {s['chaos_intervals']}."))
     return observe(checks, note=note)
+
+
+# --------------------------------------------------------------------------
+# N7.1: the paper's suggestion, proved for the island around [ac]b (ours)
+
+ISLAND_R = ("1/5", "3/10", "1/2", "4/5", "23/25")     # r of Figure 6 above 3−2√2 (0.92: l. 1093)
+ISLAND_DEPTH = 8                                      # bisections of the section for the island's share
+
+
+@quantity("island_theorem")
+def island_theorem():
+    """The island theorem for r a symbol on ]3−2√2, 1[ and at the rationals ISLAND_R, with the
+    island's share of the b-section (``certify island``)."""
+    at = {}
+    for text in ISLAND_R:
+        r = Q(text)
+        at[text] = (island.theorem(r), island.rotation_number(r, 15), island.island_fraction(r, depth=ISLAND_DEPTH))
+    return {"symbolic": island.symbolic_theorem(), "at": at}
+
+
+def island_explanations(island_theorem, at_text) -> list:
+    """N7's explanation lines: the island theorem, and the island's share of the section."""
+    T = island_theorem["symbolic"]
+    shares = "; ".join(f"r = {r}: [{float(lo):.3f}, {float(hi):.3f}]"
+                       for r, (_, _, (lo, hi)) in island_theorem["at"].items())
+    return [Check(f"{EXPLANATION} quasi-periodic orbits exist for every r in ]3−2√2, 1[ (so at r ≈ {at_text}): "
+                  "the orbits in the island U_r around [ac]b turn densely on invariant ellipses (the island theorem, "
+                  "N7.1)", T.quasi_periodic,
+                  [f"the theorem for r a symbol: {sum(s.holds for s in T.steps)} of {len(T.steps)} steps proved",
+                   f"the island's share of the b-section (θ, φ) ∈ ]0, π/2[ × ]0, π[, certified intervals: {shares}"],
+                  counts=False)] + grid_classes()
+
+
+def grid_classes() -> list:
+    """N7's summary of the committed classes of the tool's grid (each re-checked in N2, N5, N6)."""
+    found = load_findings(ORBIT_FINDINGS) or {}
+    rows = [(e["r"], e["classes"]) for claim in ("N2", "N5", "N6") for e in found.get("claims", {}).get(claim, [])]
+    if not rows:
+        return []
+    text = "; ".join(f"r = {r}: " + ", ".join(f"{n} {c}" for c, n in k.items() if n) for r, k in rows)
+    return [Check(f"{EXPLANATION} every orbit of the tool's grid is classified at the r of {ORBIT_FINDINGS} "
+                  "(island: quasi-periodic, proved; attracting periodic: its word certified for ever; unresolved: "
+                  "observed only), each proof re-checked in N2, N5 and N6", True, [text], counts=False)]
+
+
+PRINTED_N7_1 = dict(suggests="the orbits of such a system might be quasi-periodic",
+                    tori="The $\\omega$-limit sets might indeed be invariant tori",
+                    above="3-2√2")
+
+
+@certificate("N7.1", "l. 95, 1210, 1223-1226",
+             "The numerical simulations suggest that the orbits of the spherical reduction might be quasi-periodic "
+             "(l. 95), on invariant tori (l. 1210), in regimes above r = 3−2√2 (l. 1223-1226).  Proved here (ours) "
+             "for the island: for every r in ]3−2√2, 1[ the b-to-b map around the [ac]b orbit is an elliptic "
+             "rotation A(r) preserving Q, the island U_r = {Q < c_max} is invariant, and every orbit in it is "
+             "quasi-periodic, dense on its ellipse, wherever the rotation number is irrational (at every rational r).",
+             needs=("island_theorem",), printed=PRINTED_N7_1, expect=PASS,
+             mutants=[replaced("above", "3-2√2", "2-√3", "the threshold above which the tori appear"),
+                      replaced("above", "3-2√2", "3-2√3", "a threshold outside ]0, 1["),
+                      replaced("suggests", "quasi-periodic", "periodic", "the suggestion reworded"),
+                      replaced("tori", "invariant tori", "periodic orbits", "what the ω-limit sets might be")])
+def island_quasi_periodic(island_theorem, suggests, tori, above):
+    """The island theorem (certify/patterns/island_theorem.py) for r a symbol and at rationals of
+    Figure 6; the printed threshold compared, as an algebraic number, with the end of the interval
+    where A(r) is elliptic (the root of r² − 6r + 1 in ]0, 1[)."""
+    T = island_theorem["symbolic"]
+    steps = [f"{'✓' if s.holds else '✗'} {s.name}" for s in T.steps]
+    lower = radical(above)
+    at = island_theorem["at"]
+    checks = [
+        Check(f"l. 95: \"{suggests}\": proved for the island, for every r in ]3−2√2, 1[ (r a symbol, every step "
+              "an identity in Q(r) or a sign certified on the interval)",
+              "quasi-periodic" in suggests and T.quasi_periodic, steps),
+        Check(f"l. 1210: \"{tori}\": the island is foliated by the invariant ellipses Q = c, c < c_max, on which "
+              "the orbits are dense (closed invariant curves of the b-to-b section)",
+              "invariant tori" in tori and T.quasi_periodic,
+              ["A(r) is a rotation by θ, cos θ = −(1−r)²/(4r), in coordinates where Q is Euclidean"]),
+        Check(f"l. 1223-1226: the quasi-periodic regimes lie above r = {above}: the island exists exactly for r "
+              "above it (A(r) is elliptic iff r² − 6r + 1 < 0)", lower == island.LOWER_END,
+              [f"the printed {above} = {lower}; A(r) elliptic on ]{island.LOWER_END}, 1["]),
+        Check("at the rationals r = " + ", ".join(at) + " of Figure 6 the theorem is proved step by step, θ/2π "
+              "irrational (e^{iθ} is no root of unity)", all(t.quasi_periodic for t, _, _ in at.values()),
+              [f"r = {r}: c_max = {t.c_max}, ρ = {rho}, island share in [{lo}, {hi}]"
+               for r, (t, rho, (lo, hi)) in at.items()]),
+    ]
+    note = ("The island exists on the whole of ]3−2√2, 1[, not only below r ≃ 0.19166 (l. 1226), where the paper "
+            "saw its regimes; outside the island the orbits may be attracted by periodic orbits (`certify identify`). "
+            "The theorem and its steps: `python -m certify island --symbolic`, docs/island.md.")
+    return conclude(checks, note=note)

@@ -12,6 +12,7 @@ It imports the models and the exact algebra below it.
 """
 from certify.algebra.branches import BRANCH_NAMES
 
+from . import island_theorem
 from .feasibility import NO_X, Analysis, Requirement, fmt, mod_cp, prefix_requirements, vanishes_on_branch
 from .pattern import (
                           SCHEMA_PATH,
@@ -25,7 +26,7 @@ from .pattern import (
 from .periodic import compact, normal_form, parse, primitive_root, read, system_of, validate
 from .periodic import show as show_word
 
-__all__ = ["BRANCH_NAMES", "NO_X", "Analysis", "Requirement", "fmt", "mod_cp", "prefix_requirements",
+__all__ = ["BRANCH_NAMES", "island_theorem", "NO_X", "Analysis", "Requirement", "fmt", "mod_cp", "prefix_requirements",
            "vanishes_on_branch",
            "compact", "normal_form", "parse", "primitive_root", "read", "show_word", "system_of", "validate",
            "SCHEMA_PATH", "PatternResult", "analyse", "check_range", "dominance_requirements", "end_data",
