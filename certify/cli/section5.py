@@ -12,27 +12,34 @@ from certify.errors import UsageError
 from certify.run import executors, progress, saving
 from certify.run.files import atomic_path, ensure_writable, write_atomic
 
-from .options import DEFAULT_OUT, add_command, add_jobs, count, number, positive_int, prepare_output
+from .options import (
+    DEFAULT_OUT,
+    add_command,
+    add_jobs,
+    number,
+    positive_int,
+    prepare_output,
+    r_grid,
+    r_value,
+    restitution,
+)
 
 DEFAULT_STRESS = DEFAULT_OUT / "STRESS.md"
 
 def r_values(args):
-    """The r of ``--r`` or ``--r-range LO HI COUNT`` (COUNT values, ends included)."""
+    """The r of ``--r`` or ``--r-range LO HI COUNT`` (COUNT values, ends included), read
+    exactly (certify.cli.options) and rounded to float64 for the engines."""
     import numpy as np
-    if args.r_range is not None:
-        lo, hi, n = args.r_range
-        if n != int(n) or n < 1:
-            raise UsageError(f"--r-range COUNT must be a positive integer, not {n:g}")
-        if lo > hi or (lo == hi and n > 1):
-            raise UsageError(f"--r-range LO HI COUNT needs LO < HI (or LO = HI with COUNT 1), "
-                             f"got LO = {lo:g}, HI = {hi:g}")
-        r = np.linspace(lo, hi, int(n))
-    else:
-        r = np.array(args.r, dtype=float)
-    bad = [x for x in r if not 0 < x < 1]
-    if bad:
-        raise UsageError(f"r must lie in ]0,1[, got {bad[0]:g}")
-    return r
+    return np.array([float(x) for x in float64_r(r_grid(*args.r_range) if args.r_range is not None else args.r)])
+
+
+def float64_r(rs):
+    """The exact r that the float64 simulator tells from 1 (UsageError for the others, as
+    1 - 10^-17, which rounds to 1.0)."""
+    for x in rs:
+        if float(x) >= 1:
+            raise UsageError(f"r = {x} rounds to 1.0 in float64, the simulator's numbers: use r ≤ 1 - 2^-53")
+    return rs
 
 
 def initial_data(args):
@@ -139,7 +146,7 @@ def cmd_identify(args) -> int:
         raise UsageError("--out goes with --section5 (the findings file); without it identify prints")
     if (args.r is None) == (args.r_range is None):
         raise UsageError("give --r R [R ...] or --r-range LO HI COUNT")
-    rs = ident.rationals(args.r) if args.r is not None else ident.r_grid(*args.r_range)
+    rs = float64_r([r_value(x, "--r") for x in args.r] if args.r is not None else r_grid(*args.r_range))
     found = ident.identify(rs, orbits=args.orbits, collisions=args.collisions)
     if args.json:
         print(ident.json_text(found))
@@ -174,8 +181,9 @@ def register(commands) -> None:
                     "the collisions it certifies (float64, mp: an accumulated rigorous error bound; "
                     "ball: all).")
     which = p.add_mutually_exclusive_group(required=True)
-    which.add_argument("--r", nargs="+", type=number, metavar="R", help="restitution coefficients in ]0,1[")
-    which.add_argument("--r-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
+    which.add_argument("--r", nargs="+", type=restitution, metavar="R",
+                       help="restitution coefficients in ]0,1[ (3/10, 0.3, 1e-1)")
+    which.add_argument("--r-range", nargs=3, metavar=("LO", "HI", "COUNT"),
                        help="COUNT values from LO to HI, ends included (paper Figure 6: 0.072 0.999 3709)")
     p.add_argument("--orbits", type=positive_int, default=None, metavar="N",
                    help="initial data per r: the first N of the paper's grid, 2 θ0 × 4 φ0 (default: 8)")
@@ -187,8 +195,9 @@ def register(commands) -> None:
                         "go on past it and --out's `certified` says how far they are proven")
     p.add_argument("--words", action="store_true",
                    help="also store each orbit's collision word in --out (an array `word` of strings)")
-    p.add_argument("--collisions", type=count, default=10_000, metavar="N", help="collisions per orbit (default: 10^4)")
-    p.add_argument("--keep", type=count, default=500, metavar="N",
+    p.add_argument("--collisions", type=positive_int, default=10_000, metavar="N",
+                   help="collisions per orbit (default: 10^4)")
+    p.add_argument("--keep", type=positive_int, default=500, metavar="N",
                    help="keep the φ of the last N b-collisions (default: 500)")
     p.add_argument("--engine", choices=ENGINES, default="float64",
                    help="float64 (numba, parallel), mp (mpmath at --dps), ball (certified arb, precision up to --dps)")
