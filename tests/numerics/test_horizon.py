@@ -289,3 +289,11 @@ def test_cli_stress_runs_its_random_orbits_on_jobs(tmp_path, monkeypatch, capsys
     assert "## 4 random orbits, 100 collisions each" in text and "**Silent wrong collisions: 0.**" in text
     assert "0 silent wrong collision(s)" in capsys.readouterr().out
     assert main(["stress", "--jobs", "0", "--out", str(out)]) == 2
+
+
+@pytest.mark.parametrize("quick", [True, False])
+def test_stress_runs_each_near_singular_datum_once(quick):
+    """π/2 ± 1e-17 are one float64: the table once showed that datum twice (issue 25)."""
+    from certify.numerics import stress
+    data = [(c.r, c.theta0, c.phi0, c.collisions) for c in stress.cases(quick)]
+    assert len(data) == len(set(data)) and len(data) > 30
