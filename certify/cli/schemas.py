@@ -21,7 +21,9 @@ WRITERS = {"pattern": "certify pattern WORD --json", "orbit": "certify orbit WOR
            "trap": "certify orbit WORD --trap R --json", "census": "certify census: DIR/census.json",
            "report": "certify all: reports/report.json", "timings": "certify all: reports/timings.json",
            "numerics-paper": "certify figures --resolution paper: reports/numerics-paper.json",
-           "numerics-n4": "certify figures --n4 NMAX: reports/numerics-n4.json"}
+           "numerics-n4": "certify figures --n4 NMAX: reports/numerics-n4.json",
+           "identify": "certify identify --json", "section5-orbits": "certify identify --section5: "
+           "reports/section5-orbits.json"}
 
 
 def schemas() -> dict[str, Path]:

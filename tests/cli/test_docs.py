@@ -98,3 +98,17 @@ def test_the_readme_reading_list_links_every_page_of_the_docs():
     read_on = readme.split("## Read on", 1)[1]
     for page in sorted((ROOT / "docs").glob("*.md")):
         assert f"(docs/{page.name})" in read_on, page.name
+
+
+def test_timings_quoted_by_the_docs_come_from_the_benchmarks():
+    """docs/orbit.md quotes no typed seconds: it points at the section of reports/BENCH.md that
+    benchmarks/bench_patterns.py --orbit writes; BENCH.md's `certify all` counts the
+    certificates there are (regenerate it with `certify bench` when certificates are added)."""
+    from certify.run import runner
+    orbit = (ROOT / "docs" / "orbit.md").read_text(encoding="utf-8")
+    speed = orbit.split("**Speed**", 1)[1].split("\n\n", 1)[0]
+    assert not re.search(r"\d+(\.\d+)? s\b", speed) and "bench_patterns.py --orbit" in speed
+    bench = (ROOT / "reports" / "BENCH.md").read_text(encoding="utf-8")
+    assert "## certify orbit" in bench
+    measured = re.search(r"## certify all\n\n.*?; (\d+) certificates", bench, re.S)
+    assert measured and int(measured.group(1)) == len(runner.select()), "BENCH.md is stale: run `certify bench`"

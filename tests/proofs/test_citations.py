@@ -9,6 +9,7 @@ repository carries (tests/data/paper-lines.json), which must then be the source'
 from __future__ import annotations
 
 import json
+import re
 
 import pytest
 
@@ -98,3 +99,12 @@ def test_the_carried_lines_are_the_sources():
     assert paper.carried()
     for n, text in paper.carried().items():
         assert lines[n - 1] == text, n
+
+
+def test_the_engine_reads_nothing_beside_the_checkout():
+    """`certify all` needs no ../shared: no module of certify/ or proofs/ names the paper's
+    source or the claims list as a file (the report cites lines; only the tests read them)."""
+    root = paper.ROOT
+    for path in [*sorted((root / "certify").rglob("*.py")), *sorted((root / "proofs").glob("*.py"))]:
+        text = path.read_text(encoding="utf-8")
+        assert not re.search(r"""/\s*["']shared["']|["'][^"'\n]*\.\./shared|\.tex["']|CLAIMS\.md["']""", text), path
