@@ -77,11 +77,12 @@ def integer(text: str, name: str | None = None, least: int = 1) -> int:
     return int(value)
 
 
-def r_value(text: str, name: str | None = "r") -> Fraction:
+def r_value(text: str, name: str | None = None) -> Fraction:
     """A restitution coefficient: an exact rational in [2^-60, 1 - 2^-60].  Closer to 0 or 1
     the certified enclosures would need more than their precision cap and float64 cannot
     tell r from 0 or 1 (1 - 10^-20 rounds to 1.0): refused with that reason (exit 2)."""
     r = exact(text, name)
+    name = name or "r"
     if not 0 < r < 1:
         raise UsageError(f"{name} must lie in ]0,1[, got {text}")
     if not R_MARGIN <= r <= 1 - R_MARGIN:

@@ -54,7 +54,7 @@ def test_ab_cb_orbit_is_identified_in_its_window():
     (["identify"], "--r R"),
     (["identify", "--r", "0.3", "--r-range", "0.1", "0.2", "3"], "--r R"),
     (["identify", "--r", "2"], "]0,1["),
-    (["identify", "--r", "x"], "not a rational"),
+    (["identify", "--r", "x"], "expected an exact number"),
     (["identify", "--r-range", "0.2", "0.1", "3"], "LO < HI"),
     (["identify", "--r-range", "0.1", "0.2", "z"], "COUNT"),
     (["identify", "--r", "0.3", "--orbits", "0"], "positive"),
