@@ -61,7 +61,7 @@ def initial_data(args):
     for name, values, top, text in (("theta0", args.theta0, math.pi / 2, "π/2"), ("phi0", args.phi0, math.pi, "π")):
         bad = [x for x in values if not 0 <= x <= top]
         if bad:
-            raise UsageError(f"--{name} must lie in [0, {text}], got {bad[0]:g}")
+            raise UsageError(f"--{name} must lie in [0, {text}], got {float(bad[0]):g}")
     return np.array(args.theta0, dtype=float), np.array(args.phi0, dtype=float)
 
 
