@@ -20,10 +20,11 @@
                                 the exact analysis of one periodic word (ababcb,
                                 (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
                                 exist, are feasible, are stable (certify.patterns.pattern)
-    orbit WORD [--json] [--r-range LO HI]
+    orbit WORD [--json] [--r-range LO HI | --trap R]
                                 the periodic orbits of the reduction with one word:
                                 where they exist, are feasible, attracting, saddles,
-                                repelling (certify.patterns.reduction_orbits)
+                                repelling (certify.patterns.reduction_orbits); --trap:
+                                a certified trapping ellipse at R
     identify (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N] [--json]
                                 the periodic word each simulated orbit settles on,
                                 certified by orbit (certify.run.identify)
@@ -44,10 +45,13 @@
     stress [--out FILE] [--quick] [--jobs N]
                                 near-singular, long and 1000 random orbits on every
                                 engine against the certified one: reports/STRESS.md
+    schema [NAME] [--validate FILE]
+                                the JSON Schema of every JSON output; check a file
 
 The commands by topic: :mod:`.claims` (all, run, list, bench), :mod:`.exact` (census,
-pattern, particles), :mod:`.section5` (simulate, stress, figures); :mod:`.options` holds
-what they share and :func:`~certify.cli.options.add_command`, the one way a command is
+pattern, orbit, particles), :mod:`.section5` (simulate, identify, stress, figures),
+:mod:`.schemas` (schema); :mod:`.options` holds what they share (the parser, the one syntax
+of numbers) and :func:`~certify.cli.options.add_command`, the one way a command is
 registered (each topic's ``register(commands)`` calls it for its commands).
 
 Exit codes (:data:`EXIT_CODES`): 0 when every selected certificate is PASS, ERRATUM or
