@@ -144,29 +144,3 @@ def json_text(found: list[Identified]) -> str:
     return json.dumps({"schema": SCHEMA, "version": 1, "orbits": [x.to_json() for x in found]},
                       ensure_ascii=False, indent=2, sort_keys=True)
 
-
-def rationals(values: list[str]) -> list[Fraction]:
-    """The r typed, as exact rationals in ]0, 1[ (UsageError otherwise)."""
-    out = []
-    for v in values:
-        try:
-            f = Fraction(v)
-        except (ValueError, ZeroDivisionError):
-            raise UsageError(f"--r: {v!r} is not a rational number") from None
-        if not 0 < f < 1:
-            raise UsageError(f"r must lie in ]0,1[, got {v}")
-        out.append(f)
-    return out
-
-
-def r_grid(lo: str, hi: str, count: str) -> list[Fraction]:
-    """COUNT equally spaced exact rationals from LO to HI, ends included."""
-    (a, b), n = rationals([lo, hi]), count
-    try:
-        n = int(n)
-    except ValueError:
-        raise UsageError(f"--r-range COUNT must be a positive integer, not {count!r}") from None
-    if n < 1 or a > b or (a == b and n > 1):
-        raise UsageError("--r-range LO HI COUNT needs LO < HI and COUNT ≥ 1 (or LO = HI with COUNT 1), "
-                         f"got {lo} {hi} {count}")
-    return [a] if n == 1 else [a + (b - a) * k / (n - 1) for k in range(n)]
