@@ -12,7 +12,7 @@ from certify.errors import UsageError
 from certify.run import progress
 from certify.run.files import ensure_writable
 
-from .options import DEFAULT_OUT, add_command, add_jobs, number, positive_int, r_range, r_value, restitution
+from .options import DEFAULT_OUT, add_command, add_jobs, number, positive_int, r_range, r_value, restitution, say
 
 MAX_DIGITS = 1000             # particles --digits
 # census --max-length: the census to 17 (1214 words) took about an hour on two cores, and the
@@ -39,6 +39,11 @@ def cmd_census(args) -> int:
     if args.max_length > MAX_CENSUS_LENGTH:
         raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} ({CENSUS_COST}; the words "
                          "multiply by about 1.7 per collision, so a longer census does not finish in a working day)")
+    if args.max_length > 17:
+        from certify.patterns.census import words
+        n = len(words(args.max_length))
+        say(f"census up to length {args.max_length}: {n} words, {n / 1214:.1f} times as many as the census to 17, "
+            f"which took about an hour on two cores: expect hours (progress on a terminal)")
     out = ensure_writable(args.out)
     longer = census.written_length(out)
     if longer is not None and longer > args.max_length and not args.force:

@@ -71,3 +71,13 @@ def test_trap_json_when_none_is_found(capsys):
 def test_trap_with_r_range_is_refused(capsys):
     code, out, err = run(capsys, "orbit", "abcb", "--trap", "3/10", "--r-range", "0.2", "0.4")
     assert code == 2 and out == "" and "--trap R certifies one r: not with --r-range" in err
+
+
+def test_a_census_of_hours_says_so_before_it_starts(tmp_path, capsys, monkeypatch):
+    from certify.run import census_report
+
+    def stop(*args, **kwargs):
+        raise KeyboardInterrupt
+    monkeypatch.setattr(census_report, "run_census", stop)
+    code, _, err = run(capsys, "census", "--max-length", "18", "--out", str(tmp_path), "--jobs", "1")
+    assert code == 130 and "census up to length 18: 2015 words, 1.7 times as many as the census to 17" in err
