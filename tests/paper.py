@@ -54,6 +54,7 @@ def plain(tex: str) -> str:
     or line-ending backslashes, runs of spaces made one."""
     t = re.sub(r"\\mathfrak\{(\w+)\}", r"\1", tex)
     t = re.sub(r"\\frak([ABC])", lambda m: m.group(1).lower(), t)
+    t = re.sub(r"\\sqrt\{(\w+)\}", r"√\1", t)
     t = t.replace("$", "").replace("\\\\", " ").replace("\\,", " ").replace("``", '"').replace("''", '"')
     return " ".join(t.split())
 
@@ -107,8 +108,15 @@ def squeezed(text: str) -> str:
 
 
 def found_on(phrase: str, ranges) -> bool:
-    """Whether ``phrase`` is printed on the lines ``ranges`` (plain, white space ignored)."""
-    return squeezed(phrase) in squeezed(plain_lines(ranges))
+    """Whether ``phrase`` is printed on the lines ``ranges`` (plain, white space ignored; an
+    ellipsis … stands for any text between its parts, in order)."""
+    text, at = squeezed(plain_lines(ranges)), 0
+    for part in phrase.split("…"):
+        at = text.find(squeezed(part), at)
+        if at < 0:
+            return False
+        at += len(squeezed(part))
+    return True
 
 
 THEOREM_LIKE = ("theorem", "proposition", "corollary", "remark", "lemma")

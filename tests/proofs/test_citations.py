@@ -71,6 +71,25 @@ def test_every_phrase_the_committed_report_quotes_is_on_the_line_it_cites():
     assert not wrong, wrong
 
 
+def docs_quotations():
+    """(where, ranges, phrase) of the README and docs/*.md, outside code blocks (an example
+    of code is not a quotation)."""
+    for page in [paper.ROOT / "README.md", *sorted((paper.ROOT / "docs").glob("*.md"))]:
+        fenced = False
+        for n, line in enumerate(page.read_text(encoding="utf-8").splitlines(), 1):
+            fenced ^= line.lstrip().startswith("```")
+            if not fenced:
+                for ranges, phrase in paper.quotations(line):
+                    yield f"{page.name}:{n}", ranges, phrase
+
+
+def test_every_phrase_the_docs_quote_is_on_the_line_they_cite():
+    found = list(docs_quotations())
+    assert len(found) >= 4             # T28, T16, T17, S2, S10 in docs/report.md at least
+    wrong = [(where, ranges, phrase) for where, ranges, phrase in found if not paper.found_on(phrase, ranges)]
+    assert not wrong, wrong
+
+
 def test_a_quotation_on_the_next_line_is_caught():
     # T17's erratum once cited l. 437 for "until r = 1", which the source prints on l. 436
     assert paper.found_on("until r = 1", [(436, 436)])
@@ -78,13 +97,16 @@ def test_a_quotation_on_the_next_line_is_caught():
     assert [p for _, p in paper.quotations("l. 437: Δ < 0 'until r = 1' misses (7-2√10)/3")] == ["until r = 1"]
     # a phrase quoted after the paper's (its correction) and a prime are not quotations
     assert [p for _, p in paper.quotations("l. 628: 'smaller' printed for 'larger', f'(x) and p'(0)")] == ["smaller"]
+    # an ellipsis: the parts in order
+    assert paper.found_on("t_c … smaller than t_b", [(628, 628)])
+    assert not paper.found_on("smaller than t_b … t_c is negative", [(628, 628)])
 
 
 def cited_lines() -> set[int]:
     """The lines the quotations of the certificates and of the committed report cite, and
     the line of Remark 3.3 that T28's tests read (tests/patterns/test_census.py)."""
     out = {515}
-    for _, ranges, _ in [*certificate_quotations(), *report_quotations()]:
+    for _, ranges, _ in [*certificate_quotations(), *report_quotations(), *docs_quotations()]:
         out |= {k for lo, hi in ranges for k in range(lo, hi + 1)}
     return out
 
