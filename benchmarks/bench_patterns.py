@@ -1,6 +1,7 @@
 """The cost of ``certify pattern (ab)^n(cb)^n`` against n.
 
     python benchmarks/bench_patterns.py [--repeat N] [--n 2 3 ... 12] [--budget SECONDS]
+    python benchmarks/bench_patterns.py --orbit [--repeat N] [--n 2 ... 6]
     python -m certify bench --patterns [--repeat N]
 
 For each n, :func:`certify.patterns.analyse` on (ab)^n(cb)^n over ]0, 1[, ``--repeat``
@@ -8,7 +9,10 @@ times, each cold (the engine's caches emptied first, :func:`certify.run.runner.r
 printed: the median and minimum seconds, the length of the word and the verdict.  An n
 whose first run takes longer than ``--budget`` seconds (default 600) stops the series:
 the larger n are reported as not measured.  The table goes to stdout and to the section
-"certify pattern" of reports/BENCH.md (:func:`certify.run.files.write_section`).
+"certify pattern" of reports/BENCH.md (:func:`certify.run.files.write_section`).  With
+``--orbit``: :func:`certify.patterns.reduction_orbits.analyse` instead (``certify orbit``), on
+(ab)^n(cb)^n and the complex-pair attractor abacbabcbcabcb, into the section "certify orbit"
+(the figures docs/orbit.md quotes).
 
 :func:`bench_pattern_words` is the function other benchmark scripts (the census's) call.
 """
@@ -34,7 +38,7 @@ BENCH = ROOT / "reports" / "BENCH.md"
 NS = tuple(range(2, 13))
 
 
-def bench_pattern_words(ns=NS, repeat: int = 3, budget: float = 600.0, words=None) -> list[dict]:
+def bench_pattern_words(ns=NS, repeat: int = 3, budget: float = 600.0, words=None, analyse=analyse) -> list[dict]:
     """Time ``analyse(word)`` cold, ``repeat`` times per word ((ab)^n(cb)^n for n in ``ns``,
     or the given ``words``); one dict per word: word, length, median, min, verdict (or
     ``skipped``: the reason)."""
@@ -99,13 +103,31 @@ def main(argv=None) -> int:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--n", type=int, nargs="+", default=list(NS))
     ap.add_argument("--budget", type=float, default=600.0)
+    ap.add_argument("--orbit", action="store_true", help="time `certify orbit` instead (section 'certify orbit')")
     args = ap.parse_args(argv)
+    if args.orbit:
+        return bench_orbit(args)
     rows = bench_pattern_words(args.n, args.repeat, args.budget)
     body = (f"`certify pattern (ab)^n(cb)^n` over ]0, 1[, cold (caches emptied), median of {args.repeat} "
             f"({date.today()}, {platform.processor() or platform.machine()}, Python {platform.python_version()}; "
             f"benchmarks/bench_patterns.py):\n\n" + table(rows) + "\n\n" + growth_law(rows))
     print(body)
     files.write_section(BENCH, "certify pattern", body)
+    return 0
+
+
+def bench_orbit(args) -> int:
+    """``--orbit``: ``certify orbit`` on (ab)^n(cb)^n (n of ``--n``, at most 6 by default) and
+    abacbabcbcabcb, cold; the section "certify orbit" of reports/BENCH.md."""
+    from certify.patterns.reduction_orbits import analyse as analyse_orbit
+    ns = args.n if args.n != list(NS) else [2, 3, 4, 5, 6]
+    words = ["abacbabcbcabcb"] + [f"(ab)^{n}(cb)^{n}" for n in ns]
+    rows = bench_pattern_words(repeat=args.repeat, budget=args.budget, words=words, analyse=analyse_orbit)
+    body = (f"`certify orbit WORD` over ]0, 1[ (with the `pattern` analysis of its physics line), cold (caches "
+            f"emptied), median of {args.repeat} ({date.today()}, {platform.processor() or platform.machine()}, "
+            f"Python {platform.python_version()}; benchmarks/bench_patterns.py --orbit):\n\n" + table(rows))
+    print(body)
+    files.write_section(BENCH, "certify orbit", body)
     return 0
 
 

@@ -519,7 +519,7 @@ def abcab_census(pattern):
             + f" (certified), the exact dynamics from each datum repeating the word for {PERIODS} periods",
             all(ok for ok, _ in replays), [text for _, text in replays], corrects=printed))
     return conclude(checks + [printed], corrected, evidence=ev, kind=REFUTED_REMARK,
-                    misprint="l. 515, Remark 3.3: patterns containing abcab 'do not seem to have feasible initial data'",
+                    misprint="l. 515, Remark 3.3: a pattern containing abcab 'does not seem to have feasible initial data'",
                     note=f"An empirical remark, tested on every pattern of at most {LENGTH} collisions containing "
                          f"{pattern} and on the shortest counterexamples of the census (reports/CENSUS.md: "
                          "`python -m certify census --max-length L`).")

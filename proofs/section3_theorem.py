@@ -657,7 +657,7 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
                                [f"signs at that r on the upper branch: x {sx and sx[UPPER]}, v {sv and sv[UPPER]}, "
                                 f"t_c - t_a {tc and tc[UPPER]}"]))
     return conclude(printed, corrected, kind=FALSE_STATEMENT,
-                    misprint="l. 437: Δ < 0 'until r = 1' misses the zero of Δ at (7-2√10)/3",
+                    misprint="l. 436: Δ < 0 'until r = 1' misses the zero of Δ at (7-2√10)/3",
                     note="The printed 'until r = 1' misses one point: at r = (7-2√10)/3 the upper "
                     "branch has Δ = 0 and a positive double fixed point; it does not give a self-similar datum.")
 

@@ -361,5 +361,5 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
                            + ("all parse." if all(parses(w[1:] if w.startswith('b') else w, blks) for w in scan)
                               else "some still do not parse."))]
     return conclude(printed, corrected, evidence=evidence, kind=FALSE_STATEMENT,
-                    misprint="l. 1049-1051, Remark 4.6: 'every pattern is a concatenation of ab, cb, acb, cab' is "
-                             "false for a pattern that starts with b (Corollary 4.5 holds)")
+                    misprint="l. 1049-1051, Remark 4.6: every pattern 'is obtained by the concatenation of only four "
+                             "elementary \"blocks\" of collisions, namely ab, cb, acb and cab': false for a pattern that starts with b (Corollary 4.5 holds)")

@@ -20,10 +20,11 @@
                                 the exact analysis of one periodic word (ababcb,
                                 (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
                                 exist, are feasible, are stable (certify.patterns.pattern)
-    orbit WORD [--json] [--r-range LO HI]
+    orbit WORD [--json] [--r-range LO HI | --trap R]
                                 the periodic orbits of the reduction with one word:
                                 where they exist, are feasible, attracting, saddles,
-                                repelling (certify.patterns.reduction_orbits)
+                                repelling (certify.patterns.reduction_orbits); --trap:
+                                a certified trapping ellipse at R
     identify (--r R [R ...] | --r-range LO HI COUNT) [--orbits N] [--collisions N] [--json]
                                 the periodic word each simulated orbit settles on,
                                 certified by orbit (certify.run.identify)
@@ -47,15 +48,21 @@
     stress [--out FILE] [--quick] [--jobs N]
                                 near-singular, long and 1000 random orbits on every
                                 engine against the certified one: reports/STRESS.md
+    schema [NAME] [--validate FILE]
+                                the JSON Schema of every JSON output; check a file
 
 The commands by topic: :mod:`.claims` (all, run, list, bench), :mod:`.exact` (census,
-pattern, particles), :mod:`.section5` (simulate, stress, figures), :mod:`.island_command`
-(island); :mod:`.options` holds what they share and :func:`~certify.cli.options.add_command`, the one way a command is
+pattern, orbit, particles), :mod:`.section5` (simulate, identify, stress, figures),
+:mod:`.island_command` (island), :mod:`.schemas` (schema); :mod:`.options` holds what they share
+(the parser, the one syntax of numbers) and :func:`~certify.cli.options.add_command`, the one way a command is
 registered (each topic's ``register(commands)`` calls it for its commands).
 
-Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
-1 when one FAILs (or, with ``all --check``, when the committed REPORT.md is
-stale); 2 for a usage error; 130 when interrupted.  Errors are reported in one
+Exit codes (:data:`EXIT_CODES`): 0 when every selected certificate is PASS, ERRATUM or
+OBSERVED; 1 when one FAILs (or, with ``all --check``, when the committed REPORT.md is
+stale; ``orbit --trap``: no trapping neighbourhood found; ``stress``: a silent wrong
+collision); 2 for a usage error (a bad option or value, an input beyond a stated limit);
+3 for an internal error, or a question the certified enclosures left undecided at their
+precision cap (nothing is claimed); 130 when interrupted.  Errors are reported in one
 line on stderr, never as a traceback (set ``CERTIFY_DEBUG=1`` to see one).
 """
 from __future__ import annotations
@@ -64,21 +71,22 @@ import os
 import sys
 import traceback
 
-from certify.errors import UsageError
+from certify.errors import Undecided, UsageError
 from certify.run import progress
 
-from . import claims, exact, island_command, section5
+from . import claims, exact, island_command, schemas, section5
 from .options import Parser, say
 
-TOPICS = (claims, exact, section5, island_command)      # in the order of ``certify --help``
+TOPICS = (claims, exact, section5, island_command, schemas)    # in the order of ``certify --help``
+EXIT_CODES = {0: "all PASS/ERRATUM/OBSERVED", 1: "a FAIL or a stale report", 2: "usage error",
+              3: "internal error or undecided", 130: "interrupted"}
 
 
 def build_parser() -> Parser:
     """The parser of ``certify COMMAND [options]``: each topic registers its commands."""
     parser = Parser(prog="certify", description="Check every claim of arXiv:2411.10324 "
                     "in exact arithmetic and write the report.",
-                    epilog="exit codes: 0 all PASS/ERRATUM/OBSERVED, 1 a FAIL or a stale "
-                    "report, 2 usage error, 130 interrupted")
+                    epilog="exit codes: " + ", ".join(f"{k} {v}" for k, v in EXIT_CODES.items()))
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for topic in TOPICS:
         topic.register(commands)
@@ -119,9 +127,16 @@ def main(argv=None) -> int:
     except BrokenPipeError:  # e.g. `certify list | head`
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
+    except Undecided as exc:
+        if os.environ.get("CERTIFY_DEBUG"):
+            raise
+        progress.clear()
+        say(f"undecided: {' '.join(str(exc).split())[:300]}: the certified enclosures did not decide at their "
+            "precision cap; nothing is claimed")
+        return 3
     except Exception as exc:
         if os.environ.get("CERTIFY_DEBUG"):
             raise
         progress.clear()
         say(f"internal error: {describe(exc)}; set CERTIFY_DEBUG=1 for the traceback")
-        return 1
+        return 3

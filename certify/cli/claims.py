@@ -196,23 +196,34 @@ def cmd_bench(args) -> int:
 
 def register(commands) -> None:
     """The parsers of ``all``, ``run``, ``list`` and ``bench``."""
-    p = add_command(commands, "all", cmd_all, help="run every certificate and write the report")
+    p = add_command(commands, "all", cmd_all, help="run every certificate and write the report",
+                    description="Run every certificate of proofs/ (on every core by default) and write "
+                    "DIR/REPORT.md, report.json, timings.json and figures/; print the counts, the errors of the "
+                    "paper and the observations that disagree with it.  Exit 1 if a certificate FAILs (with "
+                    "--check: also if the existing REPORT.md was stale).")
     p.add_argument("--check", action="store_true",
                    help="exit 1 also when the existing DIR/REPORT.md was stale")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR",
                    help="output directory (default: reports)")
     add_jobs(p)
 
-    p = add_command(commands, "run", cmd_run, help="run some certificates and print their verdicts")
+    p = add_command(commands, "run", cmd_run, help="run some certificates and print their verdicts",
+                    description="Run the certificates named (T10 also selects T10.1, T10.2, ...) and print one "
+                    "line each: id, status, statement, with the failing checks or the erratum under it.  Writes "
+                    "a report only with --out.")
     p.add_argument("ids", nargs="+", metavar="ID",
                    help="claim ids such as T5; T10 also selects T10.1, T10.2, ...")
     p.add_argument("--out", type=Path, default=None, metavar="DIR",
                    help="also write a report of these certificates into DIR")
     add_jobs(p)
 
-    p = add_command(commands, "list", cmd_list, help="list the certificates")
+    p = add_command(commands, "list", cmd_list, help="list the certificates",
+                    description="One line per certificate: its id, the lines of the paper it checks, its statement.")
 
-    p = add_command(commands, "bench", cmd_bench, help="time the whole run")
+    p = add_command(commands, "bench", cmd_bench, help="time the whole run",
+                    description="Time `certify all` (benchmarks/bench.py: serial, on every core, and the whole "
+                    "command; writes reports/BENCH.md), or instead the exact simulator and reduction map "
+                    "(--reduction), the numerical engines (--numerics), or pattern and the census (--patterns).")
     p.add_argument("--repeat", type=positive_int, default=5, metavar="N",
                    help="number of runs (default: 5)")
     p.add_argument("--reduction", action="store_true",

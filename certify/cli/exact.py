@@ -4,6 +4,7 @@ exactly).
 """
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 from certify.dynamics import particles
@@ -11,9 +12,21 @@ from certify.errors import UsageError
 from certify.run import progress
 from certify.run.files import ensure_writable
 
-from .options import DEFAULT_OUT, add_command, add_jobs, positive_int
+from .options import DEFAULT_OUT, add_command, add_jobs, number, positive_int, r_range, r_value, restitution, say
 
 MAX_DIGITS = 1000             # particles --digits
+# census --max-length: the census to 17 (1214 words) took about an hour on two cores, and the
+# words multiply by about 1.7 per collision (2015 at 18, 5618 at 20, 45178 at 24, 375592 at
+# 28): 20 is some five hours; beyond it a census does not finish in a working day (and at 60
+# listing the words alone exhausts memory).  Measured: benchmarks/bench_census.py, issue 25.
+MAX_CENSUS_LENGTH = 20
+CENSUS_COST = "the census to 17 (1214 words) took about an hour on two cores"
+
+
+def plural(n: int, word: str) -> str:
+    """``1 word``, ``2 words``."""
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
 
 def cmd_census(args) -> int:
     """The census of periodic patterns (certify/run/census_report.py): records stream to the
@@ -23,6 +36,14 @@ def cmd_census(args) -> int:
     from certify.run import census_report as census
     from certify.run import executors
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
+    if args.max_length > MAX_CENSUS_LENGTH:
+        raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} ({CENSUS_COST}; the words "
+                         "multiply by about 1.7 per collision, so a longer census does not finish in a working day)")
+    if args.max_length > 17:
+        from certify.patterns.census import words
+        n = len(words(args.max_length))
+        say(f"census up to length {args.max_length}: {n} words, {n / 1214:.1f} times as many as the census to 17, "
+            f"which took about an hour on two cores: expect hours (progress on a terminal)")
     out = ensure_writable(args.out)
     longer = census.written_length(out)
     if longer is not None and longer > args.max_length and not args.force:
@@ -37,11 +58,13 @@ def cmd_census(args) -> int:
         print(census.to_json(doc), end="")
     else:
         s = doc["census"]
-        print(f"{s['words']} words up to length {s['max_length']}: {len(s['feasible'])} with feasible self-similar "
-              f"data, {len(s['stable'])} with stable self-similar data, {len(s['undecided'])} with undecided points, "
-              f"{len(s['errors'])} errors; with abcab: {s['abcab']['words']}, feasible {len(s['abcab']['feasible'])}; "
+        print(f"{plural(s['words'], 'word')} up to length {s['max_length']}: {len(s['feasible'])} with feasible "
+              f"self-similar data, {len(s['stable'])} with stable self-similar data, {len(s['undecided'])} with "
+              f"undecided points, {plural(len(s['errors']), 'error')}; with abcab: {s['abcab']['words']}, "
+              f"feasible {len(s['abcab']['feasible'])}; "
               f"with an attracting periodic orbit of the reduction: {len(s['reduction']['attracting'])}")
-        print(f"wrote {out / 'CENSUS.md'}, census.json, {census.FIGURE}; state {state}")
+        figure = f", {census.FIGURE}" if (out / census.FIGURE).is_file() else " (no window to draw: no figure)"
+        print(f"wrote {out / 'CENSUS.md'}, census.json{figure}; state {state}")
     return 0
 
 
@@ -50,7 +73,7 @@ def cmd_pattern(args) -> int:
     (schema certify/patterns/pattern.schema.json).  A bad word is a UsageError (exit 2),
     raised before any work; nothing is written to a file."""
     from certify.patterns import analyse, check_range, read
-    lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
+    lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
     read(args.word)                       # validate first: one line, exit 2
     result = analyse(args.word, lo, hi)
     print(result.json_text() if args.json else result.markdown())
@@ -63,31 +86,53 @@ def cmd_orbit(args) -> int:
     (exit 2), raised before any work."""
     from certify.patterns import check_range, read
     from certify.patterns.reduction_orbits import analyse as analyse_orbit
-    lo, hi = check_range(*args.r_range) if args.r_range else (0, 1)
+    lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     if args.trap is not None:
-        return _trap(normal, system, args.trap)
+        if args.r_range:
+            raise UsageError("--trap R certifies one r: not with --r-range (use one or the other)")
+        return _trap(normal, system, args.trap, args.json)
     result = analyse_orbit(args.word, lo, hi)
     print(result.json_text() if args.json else result.markdown())
     return 0
 
 
-def _trap(normal: str, system: str, r_text: str) -> int:
+def _trap(normal: str, system: str, r_text: str, as_json: bool = False) -> int:
     """``orbit WORD --trap R``: the certified trapping ellipse of the attracting orbit at the
     rational R (certify/numerics/trapping.py), exit 0; or one line saying why none was
-    found, exit 1.  A bad R or a word without a, b and c: UsageError (exit 2)."""
-    from certify.dynamics.particles import check_r
+    found, exit 1; with ``as_json`` the same as JSON (certify/schemas/trap.schema.json).
+    A bad R or a word without a, b and c: UsageError (exit 2)."""
     from certify.numerics.trapping import attempt
-    r = check_r(r_text)
+    r = r_value(r_text, "--trap R")
     if system != "four":
         raise UsageError(f"orbit --trap: {normal!r} is a word of the {system} system; the reduction of Section 4 "
                          "is the four-particle one: a word with a, b and c")
     found = attempt(normal, r)
-    if isinstance(found, str):
+    if as_json:
+        print(json.dumps(trap_json(normal, r, found), ensure_ascii=False, indent=2, sort_keys=True))
+    elif isinstance(found, str):
         print(f"{normal} at r = {r}: no certified trapping neighbourhood: {found}")
-        return 1
-    print("\n".join(found.lines()))
-    return 0
+    else:
+        print("\n".join(found.lines()))
+    return 1 if isinstance(found, str) else 0
+
+
+def _number(q) -> dict:
+    """An exact rational for JSON: the fraction as text, and a float to read."""
+    from fractions import Fraction
+    return {"exact": str(q), "approx": float(Fraction(int(q.p), int(q.q)))}
+
+
+def trap_json(word: str, r, found) -> dict:
+    """``orbit --trap --json`` (schema certify/schemas/trap.schema.json): the trapping ellipse
+    U = {c + T u : |u| ≤ ρ} in exact rationals, or why none was found."""
+    doc = {"schema": "certify-trap", "version": 1, "word": word, "r": str(r), "trapped": not isinstance(found, str)}
+    if isinstance(found, str):
+        return {**doc, "why": found}
+    return {**doc, "contact": word[-1], "pair": found.pair, "lines": found.lines(),
+            "centre": [str(z) for z in found.centre], "frame": [[str(z) for z in col] for col in found.frame],
+            **{name: _number(getattr(found, name))
+               for name in ("radius", "contraction", "image", "distance", "inner", "outer")}}
 
 
 def cmd_particles(args) -> int:
@@ -110,8 +155,13 @@ def add_word_options(p, word_help: str, schema: str) -> None:
 
 def register(commands) -> None:
     """The parsers of ``census``, ``pattern``, ``orbit`` and ``particles``."""
-    p = add_command(commands, "census", cmd_census, help="analyse every periodic pattern of blocks up to a length")
-    p.add_argument("--max-length", type=positive_int, required=True, metavar="L", help="longest period, in collisions")
+    p = add_command(commands, "census", cmd_census, help="analyse every periodic pattern of blocks up to a length",
+                    description="Every periodic collision word made of the blocks ab, cb, acb, cab (Corollary 4.5) "
+                    "of at most L collisions, one per class (rotations, mirror a<->c), analysed two ways: stable "
+                    "self-similar data (`pattern`) and attracting periodic orbits of the reduction (`orbit`).  "
+                    f"Writes DIR/CENSUS.md, census.json, {'census-windows.png'}; {CENSUS_COST}.")
+    p.add_argument("--max-length", type=positive_int, required=True, metavar="L",
+                   help=f"longest period, in collisions (at most {MAX_CENSUS_LENGTH})")
     p.add_argument("--json", action="store_true", help="also print the census as JSON on stdout")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
     p.add_argument("--state", type=Path, default=None, metavar="FILE",
@@ -139,17 +189,18 @@ def register(commands) -> None:
     add_word_options(p, "a period over a, b, c; powers (…)^n", "orbit.schema.json")
     p.add_argument("--trap", default=None, metavar="R",
                    help="instead: certify a trapping ellipse of the attracting orbit at the rational R in ]0,1[ "
-                        "(exit 1 when none is found)")
+                        "(exit 1 when none is found; with --json: certify/schemas/trap.schema.json; "
+                        "not with --r-range)")
 
     p = add_command(commands, "particles", cmd_particles, help="simulate four particles exactly",
                     description="Four particles on a line, equal masses, restitution "
                     "coefficient r: the collisions (a: 1-2, b: 2-3, c: 3-4, ac: a and c "
-                    "at once) and their exact times.  Numbers: -2, 3/7, 0.25 (exact).")
-    p.add_argument("--x", nargs=4, required=True, metavar=("X1", "X2", "X3", "X4"),
+                    "at once) and their exact times.  Numbers: -2, 3/7, 0.25, 1e-2 (exact).")
+    p.add_argument("--x", nargs=4, type=number, required=True, metavar=("X1", "X2", "X3", "X4"),
                    help="initial positions, x1 <= x2 <= x3 <= x4")
-    p.add_argument("--v", nargs=4, required=True, metavar=("V1", "V2", "V3", "V4"),
+    p.add_argument("--v", nargs=4, type=number, required=True, metavar=("V1", "V2", "V3", "V4"),
                    help="initial velocities")
-    p.add_argument("--r", required=True, metavar="R", help="restitution coefficient in ]0,1[")
+    p.add_argument("--r", type=restitution, required=True, metavar="R", help="restitution coefficient in ]0,1[")
     p.add_argument("--collisions", type=positive_int, default=100, metavar="N",
                    help="stop after N collisions, ac counting as one (default: 100)")
     p.add_argument("--digits", type=positive_int, default=20, metavar="D",

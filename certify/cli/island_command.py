@@ -10,10 +10,12 @@ from __future__ import annotations
 
 import json
 
+import flint
+
 from certify.errors import UsageError
 from certify.run import progress
 
-from .options import add_command, positive_int
+from .options import add_command, integer, positive_int, r_grid, restitution
 
 MAX_RESONANCE_Q = 60          # --resonances: the degrees grow like φ(q)/2
 MAX_DEPTH = 14                # --depth: 4^depth boxes at worst
@@ -22,22 +24,15 @@ MAX_COUNT = 1000              # --r-range COUNT
 
 def r_list(args) -> list:
     """The exact rationals of ``--r`` or ``--r-range LO HI [COUNT]`` (COUNT values, ends
-    included, default 5), each in ]0, 1[; UsageError otherwise."""
-    from certify.dynamics.particles import check_r
+    included, default 5), read by the one syntax of numbers (certify.cli.options)."""
     if args.r is not None:
-        return [check_r(args.r)]
+        return [flint.fmpq(args.r.numerator, args.r.denominator)]
     if len(args.r_range) not in (2, 3):
         raise UsageError("--r-range takes LO HI [COUNT]")
-    lo, hi = check_r(args.r_range[0]), check_r(args.r_range[1])
-    try:
-        n = int(args.r_range[2]) if len(args.r_range) == 3 else 5
-    except ValueError:
-        raise UsageError(f"--r-range COUNT must be a positive integer, not {args.r_range[2]!r}") from None
-    if not 1 <= n <= MAX_COUNT:
-        raise UsageError(f"--r-range COUNT must lie in 1..{MAX_COUNT}, not {n}")
-    if not lo < hi and n > 1 or lo > hi:
-        raise UsageError(f"--r-range needs LO < HI, not {lo}, {hi}")
-    return [lo] if n == 1 else [lo + (hi - lo) * k / (n - 1) for k in range(n)]
+    count = args.r_range[2] if len(args.r_range) == 3 else "5"
+    if integer(count, "--r-range COUNT") > MAX_COUNT:
+        raise UsageError(f"--r-range COUNT must lie in 1..{MAX_COUNT}, not {count}")
+    return [flint.fmpq(x.numerator, x.denominator) for x in r_grid(args.r_range[0], args.r_range[1], count)]
 
 
 def cmd_island(args) -> int:
@@ -146,7 +141,8 @@ def register(commands) -> None:
                     "With the rotation number (certified digits) and the island's share of the b-section.  "
                     "Numbers: 3/10 or 0.3 (exact).")
     g = p.add_mutually_exclusive_group()
-    g.add_argument("--r", default=None, metavar="R", help="a rational restitution coefficient in ]0,1[")
+    g.add_argument("--r", type=restitution, default=None, metavar="R",
+                   help="a rational restitution coefficient in ]0,1[")
     g.add_argument("--r-range", nargs="+", default=None, metavar="LO HI [COUNT]",
                    help="COUNT rationals from LO to HI, ends included (default COUNT 5)")
     p.add_argument("--json", action="store_true", help="print JSON (certify/patterns/island.schema.json)")

@@ -1,6 +1,7 @@
-"""What the commands share: the parser (errors as UsageErrors), the option types
-(positive integers, numbers, counts), ``--jobs``, the output directory, one-line messages,
-and the one way a command is registered (:func:`add_command`).
+"""What the commands share: the parser (errors as UsageErrors), the one syntax of numbers
+(integers: 10000, 1e4, 10^4; exact rationals: 3/10, 0.3, 1e-1; r in [2^-60, 1 - 2^-60]),
+``--jobs``, the output directory, one-line messages, and the one way a command is registered
+(:func:`add_command`).
 """
 from __future__ import annotations
 
@@ -23,43 +24,111 @@ class Parser(argparse.ArgumentParser):
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
-        self._negative_number_matcher = re.compile(r"^-(\d+(/\d+)?|\d+\.\d*|\.\d+)$")
+        self._negative_number_matcher = re.compile(
+            r"^-(\d+(/\d+)?|\d+\.?\d*([eE][+-]?\d+)?|\.\d+([eE][+-]?\d+)?|\d+\^-?\d+)$")
 
     def error(self, message):
         raise UsageError(message)
 
 
-def positive_int(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
-    return value
+# --- numbers: one syntax for every command --------------------------------------------
+#
+# An integer: 10000, 1e4 or 10^4 (exactly an integer); an exact rational: 3/10, 0.3, 1e-1,
+# -2 (a decimal is read exactly: 0.3 is 3/10, never the float 0.299999...).  Exponents are
+# bounded (MAX_EXPONENT), so that no input makes a number too large to build.
 
-def number(text: str) -> float:
-    """A real number: decimal or fraction ("0.15", "3/20")."""
-    try:
-        return float(Fraction(text))
-    except (ValueError, ZeroDivisionError):
-        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+MAX_EXPONENT = 10_000                 # |e| of 1e<e> and 10^<e>: 10^10000 is built at once
+R_MARGIN = Fraction(1, 2 ** 60)       # r is at least this far from 0 and 1 (see r_value)
+R_MARGIN_TEXT = "2^-60"
+_DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)(?:[eE]([+-]?\d+))?")
+_POWER = re.compile(r"([+-]?\d+)\^([+-]?\d+)")
+_FRACTION = re.compile(r"([+-]?\d+)/(\d+)")
 
 
-def count(text: str) -> int:
-    """A non-negative integer: 10000, 1e4 or 10^4."""
+def _named(name: str | None) -> str:
+    return f"{name}: " if name else ""
+
+
+def exact(text: str, name: str | None = None) -> Fraction:
+    """``text`` as an exact rational: 3/10, 0.3, 1e-1, 10^-1, -2 (a decimal read exactly).
+    UsageError (one line, exit 2) otherwise, naming ``name``."""
+    t = str(text).strip().replace("_", "")
+    m, p, f = _DECIMAL.fullmatch(t), _POWER.fullmatch(t), _FRACTION.fullmatch(t)
+    exponent = int(m.group(2) or 0) if m else int(p.group(2)) if p else 0
+    if not (m or p or f):
+        raise UsageError(f"{_named(name)}expected an exact number (3/10, 0.3, 1e-1 or 10^-1), got {text!r}")
+    if abs(exponent) > MAX_EXPONENT:
+        raise UsageError(f"{_named(name)}the exponent of {text!r} is beyond ±{MAX_EXPONENT}")
+    if f and int(f.group(2)) == 0:
+        raise UsageError(f"{_named(name)}{text!r} divides by zero")
+    return Fraction(int(p.group(1))) ** exponent if p else Fraction(t)
+
+
+def integer(text: str, name: str | None = None, least: int = 1) -> int:
+    """``text`` as an integer at least ``least``: 10000, 1e4 or 10^4 (read exactly: 1.5e1
+    is 15, 1e-1 is refused).  UsageError otherwise."""
     try:
-        if "^" in text:
-            base, exp = text.split("^")
-            value = int(base) ** int(exp)
-        else:
-            f = float(text)
-            value = int(f) if f == int(f) else -1
-    except (ValueError, OverflowError):
-        value = -1
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"expected a non-negative integer, got {text!r}")
-    return value
+        value = exact(text, name)
+    except UsageError:
+        value = None
+    if value is None or value.denominator != 1 or value < least:
+        kind = "a positive integer" if least == 1 else f"an integer ≥ {least}"
+        raise UsageError(f"{_named(name)}expected {kind} (10000, 1e4 or 10^4), got {text!r}")
+    return int(value)
+
+
+def r_value(text: str, name: str | None = None) -> Fraction:
+    """A restitution coefficient: an exact rational in [2^-60, 1 - 2^-60].  Closer to 0 or 1
+    the certified enclosures would need more than their precision cap and float64 cannot
+    tell r from 0 or 1 (1 - 10^-20 rounds to 1.0): refused with that reason (exit 2)."""
+    r = exact(text, name)
+    name = name or "r"
+    if not 0 < r < 1:
+        raise UsageError(f"{name} must lie in ]0,1[, got {text}")
+    if not R_MARGIN <= r <= 1 - R_MARGIN:
+        raise UsageError(f"{name} = {text} is within {R_MARGIN_TEXT} of {0 if r < R_MARGIN else 1}: not supported "
+                         f"(the engines need r in [{R_MARGIN_TEXT}, 1 - {R_MARGIN_TEXT}])")
+    return r
+
+
+def r_end(text: str, name: str) -> Fraction:
+    """An end of an r-range: 0, 1, or an r as :func:`r_value` reads it."""
+    r = exact(text, name)
+    return r if r in (0, 1) else r_value(text, name)
+
+
+def r_range(lo: str, hi: str) -> tuple[Fraction, Fraction]:
+    """``--r-range LO HI`` of the exact analyses: 0 ≤ LO < HI ≤ 1, ends as :func:`r_end`."""
+    a, b = r_end(lo, "--r-range LO"), r_end(hi, "--r-range HI")
+    if not a < b:
+        raise UsageError(f"--r-range: need 0 ≤ LO < HI ≤ 1, got {lo} {hi}")
+    return a, b
+
+
+def r_grid(lo: str, hi: str, count: str) -> list[Fraction]:
+    """``--r-range LO HI COUNT``: COUNT equally spaced exact r from LO to HI, ends included."""
+    a, b, n = r_value(lo, "--r-range LO"), r_value(hi, "--r-range HI"), integer(count, "--r-range COUNT")
+    if a > b or (a == b and n > 1):
+        raise UsageError(f"--r-range LO HI COUNT needs LO < HI (or LO = HI with COUNT 1), got {lo} {hi} {count}")
+    return [a] if n == 1 else [a + (b - a) * k / (n - 1) for k in range(n)]
+
+
+def _typed(reader):
+    """An argparse ``type`` from a reader: its UsageError becomes argparse's one-line error
+    ("argument --collisions: expected a positive integer ...")."""
+    def read(text: str):
+        try:
+            return reader(text)
+        except UsageError as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+    read.__name__ = reader.__name__
+    return read
+
+
+positive_int = _typed(integer)                 # --collisions, --orbits, --jobs, ...
+number = _typed(exact)                         # an exact rational (θ0, φ0, ...)
+restitution = _typed(r_value)                  # --r, --trap
+
 
 def add_jobs(p) -> None:
     """The --jobs option of the commands that run certificates."""

@@ -12,27 +12,34 @@ from certify.errors import UsageError
 from certify.run import executors, progress, saving
 from certify.run.files import atomic_path, ensure_writable, write_atomic
 
-from .options import DEFAULT_OUT, add_command, add_jobs, count, number, positive_int, prepare_output
+from .options import (
+    DEFAULT_OUT,
+    add_command,
+    add_jobs,
+    number,
+    positive_int,
+    prepare_output,
+    r_grid,
+    r_value,
+    restitution,
+)
 
 DEFAULT_STRESS = DEFAULT_OUT / "STRESS.md"
 
 def r_values(args):
-    """The r of ``--r`` or ``--r-range LO HI COUNT`` (COUNT values, ends included)."""
+    """The r of ``--r`` or ``--r-range LO HI COUNT`` (COUNT values, ends included), read
+    exactly (certify.cli.options) and rounded to float64 for the engines."""
     import numpy as np
-    if args.r_range is not None:
-        lo, hi, n = args.r_range
-        if n != int(n) or n < 1:
-            raise UsageError(f"--r-range COUNT must be a positive integer, not {n:g}")
-        if lo > hi or (lo == hi and n > 1):
-            raise UsageError(f"--r-range LO HI COUNT needs LO < HI (or LO = HI with COUNT 1), "
-                             f"got LO = {lo:g}, HI = {hi:g}")
-        r = np.linspace(lo, hi, int(n))
-    else:
-        r = np.array(args.r, dtype=float)
-    bad = [x for x in r if not 0 < x < 1]
-    if bad:
-        raise UsageError(f"r must lie in ]0,1[, got {bad[0]:g}")
-    return r
+    return np.array([float(x) for x in float64_r(r_grid(*args.r_range) if args.r_range is not None else args.r)])
+
+
+def float64_r(rs):
+    """The exact r that the float64 simulator tells from 1 (UsageError for the others, as
+    1 - 10^-17, which rounds to 1.0)."""
+    for x in rs:
+        if float(x) >= 1:
+            raise UsageError(f"r = {x} rounds to 1.0 in float64, the simulator's numbers: use r ≤ 1 - 2^-53")
+    return rs
 
 
 def initial_data(args):
@@ -54,7 +61,7 @@ def initial_data(args):
     for name, values, top, text in (("theta0", args.theta0, math.pi / 2, "π/2"), ("phi0", args.phi0, math.pi, "π")):
         bad = [x for x in values if not 0 <= x <= top]
         if bad:
-            raise UsageError(f"--{name} must lie in [0, {text}], got {bad[0]:g}")
+            raise UsageError(f"--{name} must lie in [0, {text}], got {float(bad[0]):g}")
     return np.array(args.theta0, dtype=float), np.array(args.phi0, dtype=float)
 
 
@@ -140,7 +147,7 @@ def cmd_identify(args) -> int:
         raise UsageError("--out goes with --section5 (the findings file); without it identify prints")
     if (args.r is None) == (args.r_range is None):
         raise UsageError("give --r R [R ...] or --r-range LO HI COUNT")
-    rs = ident.rationals(args.r) if args.r is not None else ident.r_grid(*args.r_range)
+    rs = float64_r([r_value(x, "--r") for x in args.r] if args.r is not None else r_grid(*args.r_range))
     found = ident.identify(rs, orbits=args.orbits, collisions=args.collisions, windows=args.windows,
                            progress=Bar("orbit"))
     if args.json:
@@ -178,8 +185,9 @@ def register(commands) -> None:
                     "the collisions it certifies (float64, mp: an accumulated rigorous error bound; "
                     "ball: all).")
     which = p.add_mutually_exclusive_group(required=True)
-    which.add_argument("--r", nargs="+", type=number, metavar="R", help="restitution coefficients in ]0,1[")
-    which.add_argument("--r-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
+    which.add_argument("--r", nargs="+", type=restitution, metavar="R",
+                       help="restitution coefficients in ]0,1[ (3/10, 0.3, 1e-1)")
+    which.add_argument("--r-range", nargs=3, metavar=("LO", "HI", "COUNT"),
                        help="COUNT values from LO to HI, ends included (paper Figure 6: 0.072 0.999 3709)")
     p.add_argument("--orbits", type=positive_int, default=None, metavar="N",
                    help="initial data per r: the first N of the tool's grid, 2 θ0 × 4 φ0 (default: 8; N > 8 adds "
@@ -192,8 +200,9 @@ def register(commands) -> None:
                         "go on past it and --out's `certified` says how far they are proven")
     p.add_argument("--words", action="store_true",
                    help="also store each orbit's collision word in --out (an array `word` of strings)")
-    p.add_argument("--collisions", type=count, default=10_000, metavar="N", help="collisions per orbit (default: 10^4)")
-    p.add_argument("--keep", type=count, default=500, metavar="N",
+    p.add_argument("--collisions", type=positive_int, default=10_000, metavar="N",
+                   help="collisions per orbit (default: 10^4)")
+    p.add_argument("--keep", type=positive_int, default=500, metavar="N",
                    help="keep the φ of the last N b-collisions (default: 500)")
     p.add_argument("--engine", choices=ENGINES, default="float64",
                    help="float64 (numba, parallel), mp (mpmath at --dps), ball (certified arb, precision up to --dps)")
@@ -222,7 +231,7 @@ def register(commands) -> None:
     p.add_argument("--r-range", nargs=3, default=None, metavar=("LO", "HI", "COUNT"),
                    help="COUNT equally spaced r from LO to HI, ends included")
     p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
-                   help="the first N initial data of the tool's grid (default: its 8; N > 8 adds finer φ0, "
+                   help="the first N initial data of the tool's grid (default 8, the tool's eight; N > 8 adds finer φ0, "
                         "a superset of the eight)")
     p.add_argument("--collisions", type=positive_int, default=100_000, metavar="N",
                    help="collisions of the float64 run and of the rigorous scan, per orbit (default: 100000); "
@@ -231,7 +240,7 @@ def register(commands) -> None:
                    help="also give the attracting window over ]0, 1[ of each word of at most 24 letters (certify "
                         "orbit; slower, not needed by the classification)")
     p.add_argument("--json", action="store_true",
-                   help="print JSON (certify/run/identify.schema.json): each orbit with r, theta0, phi0, class, "
+                   help="print JSON (certify/schemas/identify.schema.json): each orbit with r, theta0, phi0, class, "
                         "certified_from, word, word_status (certified | observed), why")
     p.add_argument("--section5", action="store_true",
                    help="run the plan of Section 5 (N2 near r = 1 and 0.2-0.9, N5, N6; 10^5 collisions near 1) on the "

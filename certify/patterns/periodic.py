@@ -80,11 +80,15 @@ def parse(text: str) -> str:
         raise UsageError("invalid pattern word: the word is empty")
     if len(t) > 10 * MAX_LENGTH:
         raise UsageError(f"invalid pattern word: longer than {MAX_LENGTH} collisions")
+    _check_powers(t, text)
     for _ in range(20):                                   # nested groups, innermost first
         new = _GROUP.sub(lambda m: m.group(1) * _count(m.group(2), text), t)
         if new == t:
             break
         t = new
+        if len(t) > 10 * MAX_LENGTH:
+            raise UsageError(f"invalid pattern word {text.strip()!r}: more than {MAX_LENGTH} collisions "
+                             f"(a word has at most {MAX_LENGTH} letters)")
     t = _POWER.sub(lambda m: m.group(1) * _count(m.group(2), text), t)
     typed = {SIM} & set(t)                                # the internal letter is not for users
     t = re.sub(r"\[(ac|ca)\]", SIM, t.replace(SIM, ""))
@@ -99,12 +103,34 @@ def parse(text: str) -> str:
     return t
 
 
+def _check_powers(t: str, text: str) -> None:
+    """One clear line for a misplaced power or parenthesis (before any expansion)."""
+    where = f"invalid pattern word {text.strip()!r}"
+    negative = re.search(r"\^-(\d*)", t)
+    if negative:
+        raise UsageError(f"{where}: negative power -{negative.group(1)}; a power is a whole number n ≥ 1")
+    if re.search(r"\^(?!\d)", t):
+        raise UsageError(f"{where}: '^' must be followed by a whole number n ≥ 1, as in (ab)^3")
+    depth = 0
+    for ch in t:
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if depth < 0:
+            break
+    if depth != 0:
+        raise UsageError(f"{where}: unbalanced parentheses")
+    bare = re.search(r"\(([^()]*)\)(?!\^)", t)
+    if bare:
+        raise UsageError(f"{where}: the group ({bare.group(1)}) has no power: write ({bare.group(1)})^n, "
+                         "or leave out the parentheses")
+
+
 def _count(digits: str, text: str) -> int:
     n = int(digits)
     if n < 1:
         raise UsageError(f"invalid pattern word {text.strip()!r}: a power must be at least 1")
     if n > MAX_LENGTH:
-        raise UsageError(f"invalid pattern word {text.strip()!r}: the power {n} is too large")
+        raise UsageError(f"invalid pattern word {text.strip()!r}: the power {n} is too large (a word has at most "
+                         f"{MAX_LENGTH} letters)")
     return n
 
 

@@ -246,7 +246,7 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         "- stable self-similar windows reaching above 3-2√2 ≈ 0.171573 (compared on certified isolating intervals "
         "and minimal polynomials): " + (", ".join(f"`{w}`" for w in f["above_3-2√2"]) or f"none up to length {L}")
         + (f"; not decided: {', '.join(f['undecided_against_3-2√2'])}" if f["undecided_against_3-2√2"] else ""),
-        "- T28 (l. 515, 'patterns containing abcab do not seem to have feasible self-similar data'): "
+        "- T28 (l. 515, Remark 3.3: a pattern containing abcab 'does not seem to have feasible initial data'): "
         + (f"refuted: {', '.join(f'`{w}`' for w in s['abcab']['feasible'])} contain abcab (cyclically, or its "
            "mirror cbacb) and have feasible self-similar data (certificate T28 re-checks the shortest and runs "
            "the exact dynamics from their data)" if s["abcab"]["feasible"]

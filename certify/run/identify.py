@@ -395,38 +395,3 @@ def json_text(found: list[Identified]) -> str:
     return json.dumps({"schema": SCHEMA, "version": VERSION, "orbits": [x.to_json() for x in found]},
                       ensure_ascii=False, indent=2, sort_keys=True)
 
-
-def rationals(values: list[str]) -> list[Fraction]:
-    """The r typed, as exact rationals in ]0, 1[ that the float64 run can represent
-    (UsageError otherwise, one line)."""
-    out = []
-    for v in values:
-        try:
-            f = Fraction(v)
-        except (ValueError, ZeroDivisionError):
-            raise UsageError(f"--r: {v!r} is not a rational number") from None
-        if not 0 < f < 1:
-            raise UsageError(f"r must lie in ]0,1[, got {v}")
-        if not MIN_R <= f <= 1 - MIN_GAP:
-            raise UsageError(f"r = {v} is too close to {'0' if f < MIN_R else '1'} for identify's float64 run "
-                             f"(it needs {float(MIN_R):g} ≤ r ≤ 1 - {float(MIN_GAP):g}: the double nearest r must "
-                             "differ from 0 and 1 and its collision matrices stay normal doubles)")
-        out.append(f)
-    return out
-
-
-MIN_R = Fraction(1, 10 ** 12)
-MIN_GAP = Fraction(1, 10 ** 12)
-
-
-def r_grid(lo: str, hi: str, count: str) -> list[Fraction]:
-    """COUNT equally spaced exact rationals from LO to HI, ends included."""
-    (a, b), n = rationals([lo, hi]), count
-    try:
-        n = int(n)
-    except ValueError:
-        raise UsageError(f"--r-range COUNT must be a positive integer, not {count!r}") from None
-    if n < 1 or a > b or (a == b and n > 1):
-        raise UsageError("--r-range LO HI COUNT needs LO < HI and COUNT ≥ 1 (or LO = HI with COUNT 1), "
-                         f"got {lo} {hi} {count}")
-    return [a] if n == 1 else [a + (b - a) * k / (n - 1) for k in range(n)]

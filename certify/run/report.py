@@ -218,11 +218,49 @@ def errata_line(results) -> str:
 # --------------------------------------------------------------------------
 # REPORT.md, part by part
 
-def _head() -> str:
+def _head(results=()) -> str:
     meanings = "\n".join(f"- **{s}**: {MEANING[s]}" for s in STATUSES)
-    return (f"# certify: the claims of arXiv:2411.10324, checked\n\n"
-            f"Every claim of {PAPER} is checked as printed, with the paper's line "
+    main = main_results_line(results)
+    return ("# certify: the claims of arXiv:2411.10324, checked\n\n" + (f"{main}\n\n" if main else "")
+            + f"Every claim of {PAPER} is checked as printed, with the paper's line "
             f"numbers.  {SOURCE}  Each certificate ends in one of four statuses:\n\n{meanings}\n\n{READING}")
+
+
+MAIN_RESULT = re.compile(r"^(Theorem|Proposition|Corollary) (\d+\.\d+)\b")
+
+
+def main_results(results) -> list[tuple[str, bool, list]]:
+    """The paper's main results (theorems, propositions, corollaries) in the order the
+    certificates state them: (name, holds, members), members = the (certificate, outcome)
+    whose statement opens with the name.  It holds when none FAILs and each member is a
+    PASS, or an ERRATUM whose misprint says that the name holds (a false step of its proof,
+    or a remark stated beside it: "the proposition holds", "Corollary 4.5 holds")."""
+    found: dict[str, list] = {}
+    for cert, outcome in results:
+        m = MAIN_RESULT.match(cert.statement)
+        if m:
+            found.setdefault(m.group(0), []).append((cert, outcome))
+
+    def stands(name, outcome):
+        kind = name.split()[0].lower()
+        return outcome.status == PASS or (outcome.status == ERRATUM and bool(
+            re.search(rf"({re.escape(name)}|the {kind}) holds", outcome.misprint or "")))
+    return [(name, all(stands(name, o) for _, o in members), members) for name, members in found.items()]
+
+
+def main_results_line(results) -> str:
+    """One line for the first screen: which main results hold, with their certificates."""
+    found = main_results(results)
+    if not found:
+        return ""
+
+    def named(name, members):
+        return f"{name} ({', '.join(_link(c.id) for c, _ in members)})"
+    held = [named(n, m) for n, ok, m in found if ok]
+    not_held = [named(n, m) for n, ok, m in found if not ok]
+    text = ("**The main results**: " + (", ".join(held) + (" hold" if len(held) > 1 else " holds") if held else "")
+            + ("; " if held and not_held else "") + (", ".join(not_held) + " not certified" if not_held else ""))
+    return text + ".  Where the paper errs, and what is certified instead: [Errata](#errata)."
 
 
 def _contents(results) -> str:
@@ -407,7 +445,7 @@ def _section(cert, outcome) -> str:
 def render_markdown(results) -> str:
     """The text of REPORT.md: head, contents, summary, errata, table, then the
     certificates part by part, and a last line that closes the report."""
-    parts = [_head(), _contents(results), _summary(results), _disagreements(results), _errata(results),
+    parts = [_head(results), _contents(results), _summary(results), _disagreements(results), _errata(results),
              _table(results)]
     for part, members in _by_part(results):
         parts.append(f'## <a id="{part_anchor(part)}"></a>{part}')

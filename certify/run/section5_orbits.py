@@ -12,7 +12,7 @@ runs settle on is also decided exactly at r by
 multiplier modulus); its attracting window over ]0, 1[ (``certify orbit``) is added for
 words of at most :data:`WINDOW_MAX` letters.  No timing is written (the file is committed).
 
-The format (schema ``certify-section5-orbits``, version 2, certify/run/section5-orbits.schema.json)::
+The format (schema ``certify-section5-orbits``, version 2, certify/schemas/section5-orbits.schema.json)::
 
     {"schema", "version", "command", "grid", "period_search",
      "claims": {"N2" | "N5" | "N6": [

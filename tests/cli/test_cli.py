@@ -209,9 +209,30 @@ def test_internal_error_is_one_line(fake, tmp_path, monkeypatch, capsys):
     def crash(*args):
         raise RuntimeError("boom")
     monkeypatch.setattr(report, "write_report", crash)
-    assert cli.main(["all", "--out", str(tmp_path)]) == 1
+    assert cli.main(["all", "--out", str(tmp_path)]) == 3        # its own code: not a FAIL (1), not usage (2)
     err = [line for line in lines(capsys.readouterr().err)]
     assert len(err) == 1 and err[0].startswith("certify: internal error: RuntimeError: boom")
+
+
+def test_undecided_is_one_line_with_the_code_of_an_internal_error(fake, tmp_path, monkeypatch, capsys):
+    from certify.errors import Undecided
+
+    def undecided(*args):
+        raise Undecided("sign of x undecided at r = 1/3")
+    monkeypatch.setattr(report, "write_report", undecided)
+    assert cli.main(["all", "--out", str(tmp_path)]) == 3
+    err = lines(capsys.readouterr().err)
+    assert len(err) == 1 and err[0].startswith("certify: undecided: sign of x undecided at r = 1/3")
+    assert "nothing is claimed" in err[0]
+
+
+def test_the_exit_codes_are_in_the_help_and_the_docs(capsys):
+    assert cli.main(["--help"]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    commands = " ".join((ROOT / "docs" / "commands.md").read_text(encoding="utf-8").split())
+    for code, meaning in cli.EXIT_CODES.items():
+        assert f"{code} {meaning}" in out
+        assert f"| {code} |" in commands, code
 
 
 def test_interrupt_exits_130(fake, tmp_path, capsys):

@@ -295,14 +295,15 @@ def test_command_negative_fractions_and_limits(capsys):
 
 
 @pytest.mark.parametrize("args, message", [
-    (["--r", "1"], "r = 1 is outside ]0,1["),
-    (["--r", "0"], "r = 0 is outside ]0,1["),
-    (["--r", "-1/2"], "r = -1/2 is outside ]0,1["),
-    (["--r", "half"], "r = 'half' is not an exact number"),
+    (["--r", "1"], "argument --r: r must lie in ]0,1[, got 1"),
+    (["--r", "0"], "argument --r: r must lie in ]0,1[, got 0"),
+    (["--r", "-1/2"], "argument --r: r must lie in ]0,1[, got -1/2"),
+    (["--r", "half"], "argument --r: expected an exact number (3/10, 0.3, 1e-1 or 10^-1), got 'half'"),
     (["--r", "1/2", "--collisions", "0"], "argument --collisions: expected a positive integer"),
     (["--r", "1/2", "--x", "0", "1", "2"], "argument --x: expected 4 arguments"),
     (["--r", "1/2", "--x", "0", "2", "1", "3"], "x2 = 2 > x3 = 1"),
-    (["--r", "1/2", "--v", "1", "0", "z", "-1"], "v3 = 'z' is not an exact number"),
+    (["--r", "1/2", "--v", "1", "0", "z", "-1"], "argument --v: expected an exact number (3/10, 0.3, 1e-1 or 10^-1), "
+                                                  "got 'z'"),
     (["--r", "1/2", "--digits", "100000"], "--digits is at most 1000"),
 ])
 def test_command_usage_errors(args, message, capsys):
@@ -331,4 +332,4 @@ def test_the_real_command():
                       "--r", "2")
     assert bad.returncode == 2 and "Traceback" not in bad.stderr + bad.stdout
     assert bad.stderr.splitlines() == [
-        "certify: error: the restitution coefficient r = 2 is outside ]0,1["]
+        "certify: error: argument --r: r must lie in ]0,1[, got 2"]

@@ -429,3 +429,11 @@ def test_the_rescaled_bound_covers_an_underflowing_entry():
     small = [k for k in range(3) if Fraction(before[k]) * f < Fraction(1, 2 ** 947)]
     assert small == [2]                  # (the others are exact, and (iv)'s slack covers them)
     assert Fraction(out[2]) >= Fraction(before[2]) * f + ETA / 2
+
+
+@pytest.mark.parametrize("quick", [True, False])
+def test_stress_runs_each_near_singular_datum_once(quick):
+    """π/2 ± 1e-17 are one float64: the table once showed that datum twice (issue 25)."""
+    from certify.numerics import stress
+    data = [(c.r, c.theta0, c.phi0, c.collisions) for c in stress.cases(quick)]
+    assert len(data) == len(set(data)) and len(data) > 30

@@ -33,6 +33,12 @@ ROOT = Path(__file__).resolve().parents[2]
     ("abab", "proper power of 'ab'"),                           # a proper power, root named
     ("(abcb)^2", "proper power of 'abcb'"),
     ("(ab)^0cb", "power"),
+    ("(ab)^-1cb", "negative power -1; a power is a whole number n ≥ 1"),     # one reason, not the characters
+    ("(ab)^1000000cb", "the power 1000000 is too large (a word has at most 400 letters)"),
+    ("(ab)^cb", "'^' must be followed by a whole number"),
+    ("(ab)cb", "the group (ab) has no power"),
+    ("((ab)^2cb", "unbalanced parentheses"),
+    ("(((ab)^20cb)^20)^20", "more than 400 collisions (a word has at most 400 letters)"),   # refused as it grows
 ])
 def test_rejections_are_one_line_exit_2_nothing_written(word, says, tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)

@@ -3,15 +3,13 @@ reader finds in the paper's source (arXiv:2411.10324v1, the LaTeX file)."""
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import pytest
 
 from certify.run import runner
+from tests.paper import NO_SOURCE, PAPER, ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
-PAPER = ROOT.parent / "shared" / "paper" / "inelastic-collapse-four-particles.tex"
-CLAIMS = ROOT.parent / "shared" / "CLAIMS.md"
+CLAIMS = PAPER.parent.parent / "CLAIMS.md"          # ../shared/CLAIMS.md beside the paper's folder
 LINES = re.compile(r"l\. (\d+)(?:-(\d+))?((?:, \d+(?:-\d+)?)*)")
 
 
@@ -31,7 +29,7 @@ def test_every_paper_line_is_a_range():
             assert 1 <= lo <= hi, (cert.id, cert.line)
 
 
-@pytest.mark.skipif(not PAPER.is_file(), reason="the paper's source is not beside this checkout")
+@pytest.mark.skipif(not PAPER.is_file(), reason=NO_SOURCE)
 def test_every_range_lies_in_the_source():
     n = len(PAPER.read_text(encoding="utf-8").splitlines())
     for cert in runner.select():
@@ -39,7 +37,7 @@ def test_every_range_lies_in_the_source():
             assert hi <= n, (cert.id, cert.line, n)
 
 
-@pytest.mark.skipif(not CLAIMS.is_file(), reason="CLAIMS.md is not beside this checkout")
+@pytest.mark.skipif(not CLAIMS.is_file(), reason=f"the claims list is not beside this checkout ({CLAIMS})")
 def test_every_certificate_names_a_listed_claim():
     ids = set(re.findall(r"^\| ([LMTSN]\d+) \|", CLAIMS.read_text(encoding="utf-8"), re.M))
     for cert in runner.select():

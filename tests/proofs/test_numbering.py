@@ -9,10 +9,10 @@ import pytest
 
 from certify.numerics import figures as F
 from certify.run import report, runner
-from tests.paper import PAPER, numbering, plain_lines
+from tests.paper import NO_SOURCE, PAPER, numbering, plain_lines
 from tests.proofs.test_claims import ranges
 
-pytestmark = pytest.mark.skipif(not PAPER.is_file(), reason="the paper's source is not beside this checkout")
+pytestmark = pytest.mark.skipif(not PAPER.is_file(), reason=NO_SOURCE)        # it reads the whole source
 
 NAMED = re.compile(r"\b(Theorem|Proposition|Corollary|Remark|Lemma)s? (\d+\.\d+)")
 FIGURE = re.compile(r"\bFigures? (\d+)([a-c]?)(?:-\d+([a-c]))? \(([^)]*)\)")

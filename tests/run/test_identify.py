@@ -16,7 +16,7 @@ from certify.run import identify as ident
 COMPLEX = "abacbabcbcabcb"
 LONG = ("abacbcabacbcabacbcabacbcabacbcabcabacbcabacbcabacbcabacbcababcbcabacbcabacbcabacbcabacbcabacbacbcabacbcabacb"
         "cabacbcabacbcb")
-SCHEMA = Path(ident.__file__).with_name("identify.schema.json")
+SCHEMA = Path(ident.__file__).parents[1] / "schemas" / "identify.schema.json"
 
 
 @pytest.fixture(scope="module")
@@ -155,9 +155,8 @@ def test_the_grid_beyond_eight_is_a_superset_without_corners():
     (["identify"], "--r R"),
     (["identify", "--r", "0.3", "--r-range", "0.1", "0.2", "3"], "--r R"),
     (["identify", "--r", "2"], "]0,1["),
-    (["identify", "--r", "x"], "not a rational"),
-    (["identify", "--r", "1e-400"], "too close to 0"),
-    (["identify", "--r", "0.99999999999999999999"], "too close to 1"),
+    (["identify", "--r", "x"], "expected an exact number"),
+    (["identify", "--r", "1e-400"], "r must lie in"),
     (["identify", "--r-range", "0.2", "0.1", "3"], "LO < HI"),
     (["identify", "--r-range", "0.1", "0.2", "z"], "COUNT"),
     (["identify", "--r", "0.3", "--orbits", "0"], "positive"),

@@ -277,3 +277,22 @@ def test_evidence_shown_under_as_printed_is_not_repeated_under_corrected():
     text = report.render_markdown([(cert("T17"), _erratum("Δ < 0", "l. 437"))])
     section = text.split('<a id="cert-t17"></a>')[1]
     assert section.count("the same sign table") == 1 and "✓ shared (as above)" in section
+
+
+def test_the_first_screen_says_which_main_results_hold():
+    """Computed from the outcomes (issue 25): a theorem holds when its certificates PASS, or
+    are errata whose misprint says it holds (a false step of its proof); a FAIL is said."""
+    step = Check("the printed step", False)
+    results = [
+        (cert("T25.1", "Theorem 3.1: self-similar data iff r < 5-2√6"), conclude([Check("iff", True)])),
+        (cert("S9.1", "Proposition 4.4: no aca, by the printed argument"),
+         conclude([step], corrected=[Check("the right step", True, corrects=step)], kind="false statement",
+                  misprint="l. 1014: a step of the proof of Proposition 4.4; the proposition holds")),
+        (cert("S6", "Theorem 4.1: the plane is determined"), conclude([Check("plane", False)])),
+        (cert("M1", "AC = CA"), conclude([Check("AC = CA", True)])),
+    ]
+    head = report.render_markdown(results).split("## Contents", 1)[0]
+    assert "**The main results**: Theorem 3.1 ([T25.1](#cert-t25-1)), Proposition 4.4 ([S9.1](#cert-s9-1)) hold; " \
+           "Theorem 4.1 ([S6](#cert-s6)) not certified." in head
+    assert head.index("The main results") < head.index("Every claim")
+    assert "main results" not in report.render_markdown([results[-1]]).split("## Contents", 1)[0]
