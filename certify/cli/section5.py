@@ -231,8 +231,8 @@ def register(commands) -> None:
     p.add_argument("--r-range", nargs=3, default=None, metavar=("LO", "HI", "COUNT"),
                    help="COUNT equally spaced r from LO to HI, ends included")
     p.add_argument("--orbits", type=positive_int, default=8, metavar="N",
-                   help="the first N initial data of the tool's grid (default 8, the tool's eight; N > 8 adds finer φ0, "
-                        "a superset of the eight)")
+                   help="the first N initial data of the tool's grid (default 8, the tool's eight; "
+                        "N > 8 adds finer φ0, a superset of the eight)")
     p.add_argument("--collisions", type=positive_int, default=100_000, metavar="N",
                    help="collisions of the float64 run and of the rigorous scan, per orbit (default: 100000); "
                         "periods up to N/8 are searched")

@@ -16,6 +16,7 @@ and progress on a terminal.  It imports every layer below it.
 from . import checks, files, plots, progress, report, runner, saving
 from .checks import check_of, combined, concluded, count_check, digits_check, eliminant_check, identity, result_check
 from .files import load_findings
+from .island_figures import report_figure as island_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
 from .runner import (
                      CERTIFICATES,
@@ -56,7 +57,8 @@ from .section5_orbits import explanations
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
-    "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart",
+    "load_findings", "island_figure", "explanations", "save_figure",
+    "omega_figure", "section5_figure", "section5_name", "sign_chart",
     "spectrum_figures",
     "CERTIFICATES", "EXPLANATION", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK",
     "OBSERVED",

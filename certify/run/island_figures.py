@@ -112,3 +112,14 @@ def island_figure(path, r=None, Q: int = 12) -> Path:
     finally:
         plt.close(fig)
     return path
+
+
+def report_figure(r) -> str:
+    """The b-section at r and the rotation number, as one figure of the report (``island.png``
+    in the output directory of the run, :func:`certify.run.saving.save_figure`)."""
+    plt = saving.pyplot()
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    section_axes(axes[0], r)
+    rotation_axes(axes[1])
+    fig.tight_layout()
+    return saving.save_figure(fig, "island")
