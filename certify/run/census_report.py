@@ -15,7 +15,7 @@ import math
 from concurrent.futures import FIRST_COMPLETED, wait
 from pathlib import Path
 
-from certify.patterns import census
+from certify.patterns import census, island_theorem
 
 from .files import read_text_or_none, write_atomic
 
@@ -189,7 +189,24 @@ def reduction_lines(s: dict, recs: list, L: int) -> list[str]:
         lines.append(f"| {u['max_length']} | {u['set']} | {census.show_gaps(u)} |")
     if f["union_by_length"] and f["union_by_length"][-1]["max_length"] < L:
         lines.append(f"| {L} | the same (no new window after L = {f['union_by_length'][-1]['max_length']}) | |")
-    return lines + [""]
+    return lines + [""] + resonance_lines(f.get("attracting_windows", {}), by)
+
+
+RESONANCE_Q = 12        # the window ends compared with the island's resonances p/q, q ≤ RESONANCE_Q
+
+
+def resonance_lines(windows: dict, by: dict) -> list[str]:
+    """The window ends that are resonances of the island's rotation number (the same algebraic
+    number, :func:`certify.patterns.island_theorem.window_resonances`; ``certify island``)."""
+    found = island_theorem.window_resonances(windows, RESONANCE_Q)
+    if not windows:
+        return []
+    rows = [f"- `{by[w]['compact'] if w in by else w}`: its {'upper' if side == 'hi' else 'lower'} end ≈ {d} is "
+            f"where the island's rotation number is ρ = {p}/{q}" for w, side, d, (p, q) in found]
+    return ["The ends of the attracting windows that are resonances of the island around [ac]b (`certify island "
+            f"--resonances {RESONANCE_Q}`: the rotation number of the b-to-b map there is p/q, q ≤ {RESONANCE_Q}; "
+            "the same algebraic number, compared exactly; ρ = 1/2 at 3−2√2 and ρ → 1/4 at r = 1 are the ends of "
+            "the island's interval):", ""] + (rows or ["- none"]) + [""]
 
 
 def markdown(doc: dict, figure: str | None = None) -> str:

@@ -134,3 +134,21 @@ def test_census_md_and_readme_name_the_two_notions_apart():
         assert "stable self-similar (collapsing) data" in text, path
         assert "attracting periodic orbit of the reduction" in text, path
         assert "no stable pattern other than" not in text, path
+
+
+def test_census_md_names_the_window_ends_that_are_resonances_of_the_island():
+    """CENSUS.md's resonance lines are what island_theorem.window_resonances decides on the
+    committed census.json (2 − √3 is ρ = 1/3: a(bac)^2bcb's upper end); a window moved off
+    the resonance loses its line."""
+    import json
+
+    doc = json.loads((ROOT / "reports" / "census.json").read_text(encoding="utf-8"))
+    by = {r["word"]: r for r in doc["words"]}
+    windows = doc["census"]["reduction"]["attracting_windows"]
+    lines = run_census.resonance_lines(windows, by)
+    text = (ROOT / "reports" / "CENSUS.md").read_text(encoding="utf-8")
+    assert all(line in text for line in lines if line)
+    assert any("`a(bac)^2bcb`: its upper end" in line and "ρ = 1/3" in line for line in lines)
+    word = next(w for w in windows if by[w]["compact"] == "a(bac)^2bcb")
+    moved = {word: [dict(span, hi={"exact": "27/100", "digits": "0.27"}) for span in windows[word]]}
+    assert run_census.resonance_lines(moved, by)[2:] == ["- none", ""]
