@@ -44,14 +44,20 @@
     island (--r R | --r-range LO HI [COUNT]) [--json] [--resonances Q] [--symbolic] [--depth D]
                                 the island theorem at each rational r: quasi-periodic
                                 orbits around [ac]b, proved (certify.patterns.island_theorem)
+    atlas [--r-range LO HI] [--resolution N] [--data M] [--out DIR] [--jobs N | --scheduler ADDRESS]
+          [--resume] [--json]
+                                the attractors of the reduction over ]0, 1[: each orbit's
+                                class, the certified windows stitched into cells, families:
+                                DIR/ATLAS.md, atlas.json, atlas.png (certify.run.atlas)
     stress [--out FILE] [--quick] [--jobs N]
                                 near-singular, long and 1000 random orbits on every
                                 engine against the certified one: reports/STRESS.md
 
 The commands by topic: :mod:`.claims` (all, run, list, bench), :mod:`.exact` (census,
 pattern, particles), :mod:`.section5` (simulate, stress, figures), :mod:`.island_command`
-(island); :mod:`.options` holds what they share and :func:`~certify.cli.options.add_command`, the one way a command is
-registered (each topic's ``register(commands)`` calls it for its commands).
+(island), :mod:`.atlas_command` (atlas); :mod:`.options` holds what they share and
+:func:`~certify.cli.options.add_command`, the one way a command is registered (each topic's
+``register(commands)`` calls it for its commands).
 
 Exit codes: 0 when every selected certificate is PASS, ERRATUM or OBSERVED;
 1 when one FAILs (or, with ``all --check``, when the committed REPORT.md is
@@ -67,10 +73,10 @@ import traceback
 from certify.errors import UsageError
 from certify.run import progress
 
-from . import claims, exact, island_command, section5
+from . import atlas_command, claims, exact, island_command, section5
 from .options import Parser, say
 
-TOPICS = (claims, exact, section5, island_command)      # in the order of ``certify --help``
+TOPICS = (claims, exact, section5, island_command, atlas_command)     # in the order of ``certify --help``
 
 
 def build_parser() -> Parser:
