@@ -65,12 +65,12 @@ SCHEMA = "certify-atlas"
 VERSION = 1
 SCHEMA_PATH = Path(__file__).with_name("atlas.schema.json")
 LO, HI = Fraction(9, 125), Fraction(1)        # the axis of Figure 5.1 starts at 0.072
-RESOLUTION = 160                              # r values
-DATA = 16                                     # initial data per r, besides the tool's 8
+RESOLUTION = 200                              # r values
+DATA = 24                                     # initial data per r, besides the tool's 8
 COLLISIONS = 20_000                           # of each float64 run and rigorous scan
-WORD_MAX = 60                                 # longer words: no window (orbit_at at the r seen)
+WORD_MAX = 64                                 # longer words: no window (orbit_at at the r seen)
 WORD_SECONDS = 180                            # time limit of one word's window
-RESONANCE_Q = 12
+RESONANCE_Q = 24
 STATE = "atlas-state.jsonl"
 FIGURE = "atlas.png"
 WINDOW = 16                                   # jobs in flight
@@ -451,12 +451,22 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
             if word in analysed and not any(_alg(w["lo"]) < x < _alg(w["hi"]) for w in
                                             (by_name[k]["windows"] if k in by_name else [])):
                 inconsistent.append({"attractor": k, "r": row["r"]})
+    resonant, above = [], 0
+    for a in atts:
+        for w in a["windows"]:
+            rot = end_rotation(w["hi"])
+            if rot is not None:
+                above += 1
+                if rot["resonance"]:
+                    resonant.append({"attractor": name(a["word"], a["branch"]), "hi": w["hi"]["digits"],
+                                     "p": rot["resonance"][0], "q": rot["resonance"][1]})
     totals = {k: sum(row["counts"].get(k, 0) for row in rows) for k in (ISLAND, UNRESOLVED)}
     totals[ATTRACTING] = sum(n for row in rows for k, n in row["counts"].items() if k not in (ISLAND, UNRESOLVED))
     return {"schema": SCHEMA, "version": VERSION, "parameters": parameters,
             "summary": {"r_values": len(rows), "orbits": sum(row["total"] for row in rows), "classes": totals,
                         "words": len(word_records), "attractors_with_windows": len(atts),
-                        "attractors_without_windows": len(no_window), "inconsistent": inconsistent},
+                        "attractors_without_windows": len(no_window), "inconsistent": inconsistent,
+                        "upper_ends_above": above, "resonant_upper_ends": resonant},
             "attractors": attractors, "without_window": no_window, "cells": cells,
             "families": families(atts),
             "observed_words": dict(sorted(observed.items(), key=lambda kv: (-kv[1], kv[0]))),
@@ -500,6 +510,10 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            f"{s['attractors_with_windows']}; without one: {s['attractors_without_windows']} (longer than "
            f"{p['word_max']} letters, or over the time limit of {p['word_seconds']} s: known only at the r where "
            "seen, by `orbit_at`)",
+           f"- windows ending in [3−2√2, 1] at a resonance of the island (ρ = p/q exactly, q ≤ {RESONANCE_Q}): "
+           f"{len(s['resonant_upper_ends'])} of {s['upper_ends_above']}"
+           + (": " + ", ".join(f"`{x['attractor']}` at ≈{x['hi']} (ρ = {x['p']}/{x['q']})"
+                               for x in s["resonant_upper_ends"]) if s["resonant_upper_ends"] else ""),
            "- certified orbits outside their word's certified window: "
            + (", ".join(f"{x['attractor']} at r = {x['r']}" for x in s["inconsistent"]) or "none"), "",
            "**Certified**: each orbit's class (island: quasi-periodic for ever, by the island theorem; attracting "
@@ -544,7 +558,7 @@ def markdown(doc: dict, figure: str | None = None) -> str:
     out += ["", "## Families", "",
             "The attractors grouped by their compact spelling with the exponents replaced by n (the block that "
             "repeats); ρ: the island's rotation number at each window's upper end (a resonance decided exactly, "
-            "or the nearest p/q with q ≤ 12: observed).", "",
+            f"or the nearest p/q with q ≤ {RESONANCE_Q}: observed).", "",
             "| family | repeated blocks | members: window, ρ at its upper end |", "|---|---|---|"]
     for f in doc["families"]:
         members = "; ".join(f"`{m['attractor']}` ]{w['lo']}, {w['hi']}[ {_rot(w['rotation_at_hi'])}"
@@ -568,6 +582,10 @@ def markdown(doc: dict, figure: str | None = None) -> str:
 
 
 # ------------------------------------------------------------------ the figure
+def _short(text: str, n: int = 34) -> str:
+    return text if len(text) <= n else text[:n - 12] + "…" + text[-11:]
+
+
 def figure(doc: dict, path) -> Path:
     """atlas.png: top, the island's rotation number ρ(r) on ]3−2√2, 1[ (certified digits at the
     sampled r) with the resonances p/q, q ≤ 8; middle, one row per attractor, its certified
@@ -577,19 +595,22 @@ def figure(doc: dict, path) -> Path:
     plt = saving.pyplot()
     atts = doc["attractors"]
     rows = doc["r"]
+    n = len(atts) + len(doc["without_window"])
     lo, hi = (float(Fraction(x)) for x in doc["parameters"]["r_range"])
-    fig, (ax0, ax, bx) = plt.subplots(3, 1, sharex=True, figsize=(8, 3.2 + 0.22 * max(len(atts), 4)),
-                                      gridspec_kw={"height_ratios": [1.2, max(len(atts), 4) * 0.3, 1.4]})
+    fig, (ax0, ax, bx) = plt.subplots(3, 1, sharex=True, figsize=(9, 3.4 + 0.22 * max(n, 4)),
+                                      gridspec_kw={"height_ratios": [1.2, max(n, 4) * 0.3, 1.4]})
     isl = [(float(Fraction(r["r"])), float(r["island"]["rotation_number"])) for r in rows if r["island"]]
     if isl:
         ax0.plot(*zip(*isl), ".-", color="tab:green", ms=2, lw=0.8)
-    for res in island_theorem.resonances(8):
-        x = float(res.r.arb(64).mid())
+    marks = sorted({(float(x["hi"]), x["p"], x["q"]) for x in doc["summary"]["resonant_upper_ends"]})
+    for k, (x, p, q) in enumerate(marks):
         if lo <= x <= hi:
-            ax0.axvline(x, color="grey", lw=0.4, ls=":")
-            ax0.annotate(f"{res.p}/{res.q}", (x, 1.0), xycoords=("data", "axes fraction"), fontsize=6,
+            for panel in (ax0, ax):
+                panel.axvline(x, color="grey", lw=0.4, ls=":")
+            ax0.annotate(f"{p}/{q}", (x, 1.0 + 0.11 * (k % 3)), xycoords=("data", "axes fraction"), fontsize=6,
                          ha="center", va="bottom")
     ax0.set_ylabel("ρ", fontsize=8)
+    ax0.set_title("the island's rotation number ρ(r); dotted: windows ending at ρ = p/q exactly", fontsize=7, pad=14)
     colour = {"real": "tab:orange", "complex": "tab:red", "real and complex": "tab:purple"}
     for k, a in enumerate(atts):
         for w in a["windows"]:
@@ -597,7 +618,12 @@ def figure(doc: dict, path) -> Path:
             ax.barh(k, x1 - x0, left=x0, height=0.6, color=colour[w["pair"]])
         xs = [float(Fraction(r)) for r in a["seen_at"]]
         ax.plot(xs, [k] * len(xs), "k.", ms=2)
-    ax.set_yticks(range(len(atts)), [a["name"] for a in atts], fontsize=6)
+    for k, a in enumerate(doc["without_window"], start=len(atts)):
+        xs = [float(Fraction(r)) for r in a["seen_at"]]
+        ax.plot(xs, [k] * len(xs), "k.", ms=2)
+    labels = [_short(a["name"]) for a in atts]
+    labels += [_short(a["attractor"]) + " (no window)" for a in doc["without_window"]]
+    ax.set_yticks(range(len(labels)), labels, fontsize=6)
     ax.invert_yaxis()
     ax.axvline(3 - 2 * 2 ** 0.5, color="grey", lw=0.6, ls="--")
     ax.set_title("certified attracting windows (bars; orange: real in-plane pair, red: complex) and the sampled r "
@@ -619,6 +645,7 @@ def figure(doc: dict, path) -> Path:
     bx.set_xlim(lo, hi)
     bx.set_xlabel("r")
     fig.tight_layout()
+    fig.subplots_adjust(left=0.3)
     path = Path(path)
     with saving.output_dir(path.parent):
         saving.save_figure(fig, path.name)

@@ -142,6 +142,8 @@ def test_families_and_rotation_numbers(doc):
     assert his["(ab)^2(cb)^2 (lower)"]["resonance"] == [1, 2]                # ends at 3−2√2
     assert his["a(bac)^2bcb (upper)"]["resonance"] == [1, 3]                 # ends at 2−√3, ρ = 1/3
     assert his["abacba(bc)^2abcb (upper)"]["resonance"] == [1, 4]            # ends at r = 1
+    ends = {(x["attractor"], x["p"], x["q"]) for x in doc["summary"]["resonant_upper_ends"]}
+    assert ("a(bac)^2bcb (upper)", 1, 3) in ends and doc["summary"]["upper_ends_above"] >= len(ends)
 
 
 @pytest.mark.parametrize("argv", [["--r-range", "0.5", "0.2"], ["--r-range", "0", "2"], ["--r-range", "x", "1"],
