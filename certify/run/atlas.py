@@ -610,7 +610,7 @@ def figure(doc: dict, path) -> Path:
             ax0.annotate(f"{p}/{q}", (x, 1.0 + 0.11 * (k % 3)), xycoords=("data", "axes fraction"), fontsize=6,
                          ha="center", va="bottom")
     ax0.set_ylabel("ρ", fontsize=8)
-    ax0.set_title("the island's rotation number ρ(r); dotted: windows ending at ρ = p/q exactly", fontsize=7, pad=14)
+    ax0.set_title("the island's rotation number ρ(r); dotted: windows ending at ρ = p/q exactly", fontsize=7, pad=34)
     colour = {"real": "tab:orange", "complex": "tab:red", "real and complex": "tab:purple"}
     for k, a in enumerate(atts):
         for w in a["windows"]:
