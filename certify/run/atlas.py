@@ -384,6 +384,16 @@ def families(attractors: list[dict]) -> list[dict]:
     return out
 
 
+def by_resonance(resonant: list[dict]) -> list[dict]:
+    """The attractors grouped by the resonance p/q at which their windows end (the summary's
+    ``resonant_upper_ends``), by decreasing p/q (increasing r)."""
+    groups: dict[tuple, list] = {}
+    for x in resonant:
+        groups.setdefault((x["p"], x["q"]), []).append(x["attractor"])
+    return [{"p": p, "q": q, "attractors": sorted(groups[(p, q)])}
+            for p, q in sorted(groups, key=lambda pq: -Fraction(*pq))]
+
+
 # ------------------------------------------------------------------ the document
 def _counts(orbits: list[dict]) -> dict:
     c: dict[str, int] = {}
@@ -468,7 +478,7 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                         "attractors_without_windows": len(no_window), "inconsistent": inconsistent,
                         "upper_ends_above": above, "resonant_upper_ends": resonant},
             "attractors": attractors, "without_window": no_window, "cells": cells,
-            "families": families(atts),
+            "families": families(atts), "by_resonance": by_resonance(resonant),
             "observed_words": dict(sorted(observed.items(), key=lambda kv: (-kv[1], kv[0]))),
             "words": [_timeless(w) for w in word_records], "r": rows}
 
@@ -564,6 +574,11 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         members = "; ".join(f"`{m['attractor']}` ]{w['lo']}, {w['hi']}[ {_rot(w['rotation_at_hi'])}"
                             for m in f["members"] for w in m["windows"])
         out.append(f"| `{f['family']}` | {', '.join(f['repeated']) or '—'} | {members} |")
+    out += ["", "### By the resonance at which the windows end", "",
+            "The island's rotation number at a window's upper end, when it is exactly p/q (decided as algebraic "
+            "numbers): the windows that close at the same resonance.", "",
+            "| ρ = p/q at the upper end | attractors |", "|---|---|"]
+    out += [f"| {g['p']}/{g['q']} | {', '.join(f'`{a}`' for a in g['attractors'])} |" for g in doc["by_resonance"]]
     if doc["observed_words"]:
         out += ["", "## Words observed in unresolved orbits", "",
                 "The float64 run repeats the word to its end, but no proof stands (the word's orbit is not "

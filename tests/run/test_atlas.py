@@ -144,6 +144,8 @@ def test_families_and_rotation_numbers(doc):
     assert his["abacba(bc)^2abcb (upper)"]["resonance"] == [1, 4]            # ends at r = 1
     ends = {(x["attractor"], x["p"], x["q"]) for x in doc["summary"]["resonant_upper_ends"]}
     assert ("a(bac)^2bcb (upper)", 1, 3) in ends and doc["summary"]["upper_ends_above"] >= len(ends)
+    groups = {(g["p"], g["q"]): g["attractors"] for g in doc["by_resonance"]}
+    assert groups[(1, 4)] == ["abacba(bc)^2abcb (upper)"] and list(groups)[0] == (1, 2)   # by increasing r
 
 
 @pytest.mark.parametrize("argv", [["--r-range", "0.5", "0.2"], ["--r-range", "0", "2"], ["--r-range", "x", "1"],
