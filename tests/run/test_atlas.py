@@ -160,3 +160,32 @@ def test_an_unwritable_output_directory_exits_2(tmp_path, capsys):
     blocker = tmp_path / "file"
     blocker.write_text("x")
     assert cli.main(["atlas", "--resolution", "1", "--out", str(blocker / "sub")]) == 2
+
+
+def test_the_command_on_two_processes_writes_the_atlas_and_resumes(tmp_path, capsys):
+    argv = ["atlas", "--r-range", "0.2", "0.3", "--resolution", "1", "--data", "1", "--collisions", "2000",
+            "--out", str(tmp_path)]
+    assert cli.main([*argv, "--jobs", "2"]) == 0
+    first = (tmp_path / "atlas.json").read_bytes()
+    assert "wrote" in capsys.readouterr().out and (tmp_path / "atlas-state.jsonl").exists()
+    assert cli.main([*argv, "--jobs", "1", "--resume", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    jsonschema.validate(doc, SCHEMA)
+    assert (tmp_path / "atlas.json").read_bytes() == first and doc["summary"]["orbits"] == 9
+
+
+def test_the_progress_bar_follows_a_total_that_grows():
+    import io
+
+    from certify.run import progress
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+    tty = Terminal()
+    bar = progress.Bar("job", tty)
+    bar(1, 3, "r = 1/5")
+    bar(2, 4, "10-letter word")                    # a new word met: one more job
+    assert "2/4" in tty.getvalue()
+    bar(4, 4)
+    assert progress._OPEN == []
