@@ -45,6 +45,11 @@
     island (--r R | --r-range LO HI [COUNT]) [--json] [--resonances Q] [--symbolic] [--depth D]
                                 the island theorem at each rational r: quasi-periodic
                                 orbits around [ac]b, proved (certify.patterns.island_theorem)
+    atlas [--r-range LO HI] [--resolution N] [--data M] [--out DIR] [--jobs N | --scheduler ADDRESS]
+          [--resume] [--json]
+                                the attractors of the reduction over ]0, 1[: each orbit's
+                                class, the certified windows stitched into cells, families:
+                                DIR/ATLAS.md, atlas.json, atlas.png (certify.run.atlas)
     stress [--out FILE] [--quick] [--jobs N]
                                 near-singular, long and 1000 random orbits on every
                                 engine against the certified one: reports/STRESS.md
@@ -53,7 +58,8 @@
 
 The commands by topic: :mod:`.claims` (all, run, list, bench), :mod:`.exact` (census,
 pattern, orbit, particles), :mod:`.section5` (simulate, identify, stress, figures),
-:mod:`.island_command` (island), :mod:`.schemas` (schema); :mod:`.options` holds what they share
+:mod:`.island_command` (island),
+:mod:`.atlas_command` (atlas), :mod:`.schemas` (schema); :mod:`.options` holds what they share
 (the parser, the one syntax of numbers) and :func:`~certify.cli.options.add_command`, the one way a command is
 registered (each topic's ``register(commands)`` calls it for its commands).
 
@@ -74,10 +80,10 @@ import traceback
 from certify.errors import Undecided, UsageError
 from certify.run import progress
 
-from . import claims, exact, island_command, schemas, section5
+from . import atlas_command, claims, exact, island_command, schemas, section5
 from .options import Parser, say
 
-TOPICS = (claims, exact, section5, island_command, schemas)    # in the order of ``certify --help``
+TOPICS = (claims, exact, section5, island_command, atlas_command, schemas)    # in the order of ``certify --help``
 EXIT_CODES = {0: "all PASS/ERRATUM/OBSERVED", 1: "a FAIL or a stale report", 2: "usage error",
               3: "internal error or undecided", 130: "interrupted"}
 

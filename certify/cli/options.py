@@ -125,7 +125,13 @@ def _typed(reader):
     return read
 
 
+def nonnegative(text: str, name: str | None = None) -> int:
+    """An integer ≥ 0, read as :func:`integer` reads it."""
+    return integer(text, name, least=0)
+
+
 positive_int = _typed(integer)                 # --collisions, --orbits, --jobs, ...
+count = _typed(nonnegative)                    # a number of things that may be 0 (atlas --data)
 number = _typed(exact)                         # an exact rational (θ0, φ0, ...)
 restitution = _typed(r_value)                  # --r, --trap
 

@@ -23,7 +23,8 @@ WRITERS = {"pattern": "certify pattern WORD --json", "orbit": "certify orbit WOR
            "numerics-paper": "certify figures --resolution paper: reports/numerics-paper.json",
            "numerics-n4": "certify figures --n4 NMAX: reports/numerics-n4.json",
            "identify": "certify identify --json", "section5-orbits": "certify identify --section5: "
-           "reports/section5-orbits.json", "island": "certify island --json"}
+           "reports/section5-orbits.json", "island": "certify island --json",
+           "atlas": "certify atlas: DIR/atlas.json"}
 
 
 def schemas() -> dict[str, Path]:

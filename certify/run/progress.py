@@ -35,6 +35,8 @@ class Bar:
         if self.bar is None:
             self.bar = tqdm(total=n, file=self.stream, unit=self.unit, leave=False, dynamic_ncols=True)
             _OPEN.append(self)
+        if self.bar.total != n:                # a total that grows (the atlas meets new words)
+            self.bar.total = n
         self.bar.n = k
         if label:
             self.bar.set_postfix_str(label, refresh=False)

@@ -1,0 +1,90 @@
+"""``certify atlas``: the attractors of the reduction over ]0, 1[ (certify/run/atlas.py):
+every orbit of a grid of r and initial data classified by identify, each certified word's
+exact attracting windows by orbit, stitched into cells; ATLAS.md, atlas.json, atlas.png."""
+from __future__ import annotations
+
+import shlex
+import sys
+from pathlib import Path
+
+from certify.run import progress
+from certify.run.files import ensure_writable
+
+from .options import DEFAULT_OUT, add_command, count, positive_int, r_range
+
+
+def cmd_atlas(args) -> int:
+    import signal
+
+    from certify.run import atlas, executors
+    signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
+    lo, hi = r_range(*args.r_range) if args.r_range else (atlas.LO, atlas.HI)
+    rs = atlas.r_values(lo, hi, args.resolution)
+    data = atlas.data_grid(args.data)
+    out = ensure_writable(args.out)
+    state = out / atlas.STATE
+    params = {"r_range": [str(atlas.Fraction(lo)), str(atlas.Fraction(hi))], "resolution": args.resolution,
+              "data": args.data, "collisions": args.collisions, "word_max": args.word_max,
+              "word_seconds": args.word_seconds, "command": command_line(args)}
+    with executors.executor(args.jobs, args.scheduler) as ex:
+        rrec, wrec = atlas.run_atlas(rs, data, args.collisions, ex, state, args.resume, progress=progress.Bar("job"),
+                                     word_seconds=args.word_seconds, word_max=args.word_max)
+    doc = atlas.document(rrec, wrec, params)
+    atlas.write_outputs(doc, out)
+    if args.json:
+        print(atlas.to_json(doc), end="")
+    else:
+        s = doc["summary"]
+        c = s["classes"]
+        print(f"{s['r_values']} r × {len(data)} initial data: {s['orbits']} orbits: island {c['island']}, "
+              f"attracting periodic {c['attracting periodic']}, unresolved {c['unresolved']}; {s['words']} words "
+              f"certified, {s['attractors_with_windows']} attractors with exact windows, "
+              f"{s['attractors_without_windows']} without; {len(doc['cells'])} cells; {len(doc['families'])} families")
+        print(f"wrote {out / 'ATLAS.md'}, atlas.json, {atlas.FIGURE}; state {state}")
+    return 0
+
+
+def command_line(args) -> str:
+    """The command as typed, without --jobs, --scheduler, --resume, --json (they do not change the atlas)."""
+    argv, skip, out = sys.argv[1:], {"--jobs": 1, "--scheduler": 1, "--resume": 0, "--json": 0}, []
+    if not argv or argv[0] != "atlas":
+        argv = ["atlas"]
+    i = 0
+    while i < len(argv):
+        if argv[i] in skip:
+            i += 1 + skip[argv[i]]
+            continue
+        out.append(argv[i])
+        i += 1
+    return "python -m certify " + shlex.join(out)
+
+
+def register(commands) -> None:
+    from certify.run import atlas
+    p = add_command(commands, "atlas", cmd_atlas,
+                    help="map the attractors of the reduction over ]0, 1[: classes, certified windows, families",
+                    description="Over a grid of r and of initial data on the b-section, every orbit classified by "
+                    "identify (island / attracting periodic, certified / unresolved); each certified word's exact "
+                    "attracting windows over ]0, 1[ by orbit (words too long or too slow: only at the r seen); the "
+                    "windows stitched into cells of ]0, 1[ with the attractors that coexist there (certified) and "
+                    "the shares of initial data reaching each (observed); families of words. Writes DIR/ATLAS.md, "
+                    "DIR/atlas.json, DIR/atlas.png and the state DIR/atlas-state.jsonl (--resume).")
+    p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
+                   help=f"r in ]LO, HI[ (rationals, 0 <= LO < HI <= 1; default {atlas.LO} 1)")
+    p.add_argument("--resolution", type=positive_int, default=atlas.RESOLUTION, metavar="N",
+                   help=f"number of r values (midpoints of N equal cells; default {atlas.RESOLUTION})")
+    p.add_argument("--data", type=count, default=atlas.DATA, metavar="M",
+                   help=f"initial data per r besides the tool's 8 (Halton points; default {atlas.DATA})")
+    p.add_argument("--collisions", type=positive_int, default=atlas.COLLISIONS, metavar="N",
+                   help=f"collisions per float64 run and rigorous scan (default {atlas.COLLISIONS})")
+    p.add_argument("--word-max", type=positive_int, default=atlas.WORD_MAX, metavar="L",
+                   help=f"longest word whose window over ]0, 1[ is computed (default {atlas.WORD_MAX})")
+    p.add_argument("--word-seconds", type=positive_int, default=atlas.WORD_SECONDS, metavar="S",
+                   help=f"time limit of one word's window (default {atlas.WORD_SECONDS})")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    p.add_argument("--resume", action="store_true", help="reuse the records of DIR/atlas-state.jsonl")
+    p.add_argument("--json", action="store_true", help="also print atlas.json on stdout")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
+    p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
+                   help="worker processes (default: all cores)")

@@ -1,0 +1,797 @@
+"""``certify atlas``: the attractors of the reduction over ]0, 1[, certified windows stitched.
+
+Over a grid of rationals r (:func:`r_values`) and a grid of initial data on the b-section
+(:func:`data_grid`: the tool's 8 and a Halton sequence in (θ0, φ0) ∈ ]0, π/2[ × ]0, π[),
+every orbit is classified by ``certify identify`` (:func:`certify.run.identify.classify`):
+island (quasi-periodic for ever, proved), attracting periodic (its word certified for ever:
+the rigorous orbit enters a certified trapping ellipse) or unresolved (observed).  An
+*attractor* is a certified word w with the real eigenvalue branch of its periodic orbit at r
+(:func:`~certify.run.identify.decided`).  Each new word is certified once over ]0, 1[ by
+``certify orbit`` (:func:`certify.patterns.reduction_orbits.analyse`): its exact attracting
+windows (algebraic ends), per branch; a word longer than ``word_max`` letters, or whose
+analysis exceeds ``word_seconds``, gets no window: it is known only at the r where it was
+seen (``orbit_at`` there, through identify), and the atlas says so.
+
+The windows are stitched into *cells*: the open intervals of ]0, 1[ between consecutive
+window ends (and 3 − 2√2, where the island appears), compared exactly as algebraic
+numbers.  In each cell the attractors whose certified windows contain it coexist
+(certified: each has an attracting periodic orbit at every r of the cell; only the words the
+atlas met are listed); at the sampled r of the cell, the share of the initial data that
+reaches each attractor, the island, or stays unresolved is *observed* (a finite grid of
+data), and the island's area on the b-section is certified as an interval
+(:func:`certify.patterns.island_theorem.island_fraction`).
+
+Families group the words by structure: the compact spelling with its exponents replaced by
+n (the block that repeats), and the island's rotation number at the ends of each window
+(a resonance p/q decided exactly by :func:`~certify.patterns.island_theorem.resonance_of`,
+else the certified ρ and the nearest p/q with q ≤ 12, said "near": observed).
+
+:func:`run_atlas` runs the jobs (one per r, one per word) on any executor
+(:mod:`.executors`), appending each record to a JSON-lines state file as it arrives; with
+``resume`` the records already there (same data and collisions) are reused.
+:func:`check_atlas` re-derives a document: the windows by ``orbit``, the cells by stitching
+again, each cell's attractors by ``orbit_at`` at an r inside, each orbit's class by
+``identify``, the island by ``island``.
+"""
+from __future__ import annotations
+
+import json
+import math
+import re
+import signal
+import threading
+import time
+from concurrent.futures import FIRST_COMPLETED, wait
+from fractions import Fraction
+from functools import cmp_to_key
+from pathlib import Path
+
+import flint
+
+from certify.algebra import Algebraic, ends
+from certify.algebra.balls import precision
+from certify.errors import UsageError
+from certify.numerics import grid
+from certify.patterns import compact, island_theorem, read
+from certify.patterns.island_theorem import LOWER_END, algebraic_of
+from certify.patterns.pattern import end_data
+from certify.patterns.reduction_orbits import analyse
+
+from . import identify as ident
+from .census_report import dumps
+from .files import read_text_or_none, write_atomic
+
+SCHEMA = "certify-atlas"
+VERSION = 1
+SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
+LO, HI = Fraction(9, 125), Fraction(1)        # the axis of Figure 5.1 starts at 0.072
+RESOLUTION = 200                              # r values
+DATA = 24                                     # initial data per r, besides the tool's 8
+COLLISIONS = 20_000                           # of each float64 run and rigorous scan
+WORD_MAX = 64                                 # longer words: no window (orbit_at at the r seen)
+WORD_SECONDS = 180                            # time limit of one word's window
+RESONANCE_Q = 24
+STATE = "atlas-state.jsonl"
+FIGURE = "atlas.png"
+WINDOW = 16                                   # jobs in flight
+ISLAND_DEPTH = 8
+ISLAND, ATTRACTING, UNRESOLVED = ident.ISLAND, ident.ATTRACTING, ident.UNRESOLVED
+
+
+# ------------------------------------------------------------------ the grids
+def r_values(lo, hi, n: int) -> list[Fraction]:
+    """``n`` rationals in ]lo, hi[: the midpoints of n equal cells, rounded to d decimals
+    (d = 4, more when n needs it), without repeats.  UsageError on a bad range or count."""
+    try:
+        a, b = Fraction(str(lo)), Fraction(str(hi))
+    except (ValueError, ZeroDivisionError):
+        raise UsageError(f"--r-range: {lo!r} {hi!r} are not rational numbers") from None
+    if not 0 <= a < b <= 1:
+        raise UsageError(f"--r-range needs 0 <= LO < HI <= 1, got {lo} {hi}")
+    if n < 1:
+        raise UsageError(f"--resolution must be a positive integer, got {n}")
+    d = max(4, len(str(n)) + 2)
+    out = []
+    for k in range(n):
+        mid = a + (b - a) * (2 * k + 1) / (2 * n)
+        x = Fraction(round(mid * 10 ** d), 10 ** d)
+        if a < x < b and 0 < x < 1 and x not in out:
+            out.append(x)
+    return out
+
+
+def _radical_inverse(i: int, base: int) -> Fraction:
+    x, f = Fraction(0), Fraction(1, base)
+    while i:
+        i, digit = divmod(i, base)
+        x += digit * f
+        f /= base
+    return x
+
+
+def data_grid(m: int) -> list[tuple[float, float]]:
+    """The tool's 8 initial data (:func:`certify.numerics.grid`) and then the first ``m``
+    points of the Halton sequence (bases 2, 3) in the b-section: θ0 = π s/2, φ0 = π t
+    (s, t ∈ ]0, 1[; t never 1/2, the corner φ0 = π/2).  Nested: m data are the first m of
+    any larger grid.  Uniform in (θ0, φ0), as the island's share is measured."""
+    if m < 0:
+        raise UsageError(f"--data must be a non-negative integer, got {m}")
+    th, ph = grid(8)
+    out = [(float(t), float(p)) for t, p in zip(th, ph)]
+    for i in range(1, m + 1):
+        s, t = _radical_inverse(i, 2), _radical_inverse(i, 3)
+        out.append((math.pi * float(s) / 2, math.pi * float(t)))
+    return out
+
+
+# ------------------------------------------------------------------ the jobs
+def r_job(r: str, data: list, collisions: int) -> dict:
+    """Every orbit of ``data`` at r classified by identify; the island at r (the theorem,
+    the rotation number, the certified share of the b-section).  Plain data."""
+    start = time.perf_counter()
+    q = Fraction(r)
+    fq = flint.fmpq(q.numerator, q.denominator)
+    orbits = []
+    for th, ph in data:
+        x = ident.classify(q, th, ph, collisions)
+        rec = {"theta0": th, "phi0": ph, "class": x.cls, "certified_from": x.certified_from,
+               "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else ""}
+        if x.cls == ATTRACTING:
+            normal = read(x.word)[0]
+            rec["word"], rec["branch"] = normal, ident.decided(normal, fq).branch_name
+        elif x.cls == UNRESOLVED and x.word is not None:
+            rec["observed"] = x.word
+        orbits.append(rec)
+    island = None
+    if fq * fq - 6 * fq + 1 < 0:
+        lo, hi = island_theorem.island_fraction(fq, ISLAND_DEPTH)
+        island = {"theorem": ident.elliptic(fq), "rotation_number": island_theorem.rotation_number(fq, 8),
+                  "fraction": [str(lo), str(hi)], "depth": ISLAND_DEPTH}
+    return {"kind": "r", "r": str(q), "data": len(data), "collisions": collisions, "orbits": orbits,
+            "island": island, "seconds": round(time.perf_counter() - start, 3)}
+
+
+class _TimeLimit(Exception):
+    pass
+
+
+def word_job(word: str, seconds: float | None = WORD_SECONDS, word_max: int = WORD_MAX) -> dict:
+    """``certify orbit`` on one word over ]0, 1[: its attracting windows (exact ends), per
+    branch; "too long" beyond ``word_max`` letters, "time limit" beyond ``seconds`` (an
+    alarm, where the job runs in a process's main thread; elsewhere no limit)."""
+    start = time.perf_counter()
+    rec = {"kind": "word", "word": word, "compact": compact(word), "length": len(word), "outcome": "analysed",
+           "attracting": [], "attracting_points": [], "undecided": [], "word_max": word_max, "word_seconds": seconds}
+    if len(word) > word_max:
+        rec["outcome"], rec["seconds"] = "too long", 0.0
+        return rec
+    alarm = seconds is not None and threading.current_thread() is threading.main_thread()
+
+    def stop(_signum, _frame):
+        raise _TimeLimit()
+    old = signal.signal(signal.SIGALRM, stop) if alarm else None
+    try:
+        if alarm:
+            signal.setitimer(signal.ITIMER_REAL, seconds)
+        res = analyse(word, self_similar=False)
+        rec["attracting"], rec["attracting_points"] = res.attracting(), res.attracting_points()
+        rec["undecided"] = list(res.undecided)
+    except _TimeLimit:
+        rec["outcome"] = "time limit"
+    except (ArithmeticError, ValueError, UsageError) as exc:
+        rec["outcome"], rec["error"] = "error", f"{type(exc).__name__}: {exc}"
+    finally:
+        if alarm:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, old)
+    rec["seconds"] = round(time.perf_counter() - start, 3)
+    return rec
+
+
+# ------------------------------------------------------------------ the state and the run
+def load_state(path) -> list[dict]:
+    """The records of a state file (a line cut by an interruption is dropped)."""
+    text = read_text_or_none(path)
+    out = []
+    for line in (text or "").splitlines():
+        try:
+            rec = json.loads(line)
+            if rec["kind"] in ("r", "word"):
+                out.append(rec)
+        except (ValueError, KeyError, TypeError):
+            continue
+    return out
+
+
+def _words_of(rec: dict) -> list[str]:
+    return sorted({o["word"] for o in rec["orbits"] if o["word"] is not None})
+
+
+def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=None, resume: bool = False,
+              progress=None, word_seconds: float | None = WORD_SECONDS, word_max: int = WORD_MAX) -> tuple:
+    """(r records, word records): the r jobs, and a word job for each new certified word as
+    soon as it is met; records appended to ``state`` as they arrive.  ``resume``: the r
+    records of ``state`` with the same data and collisions, and its word records with the
+    same limits, are reused."""
+    done_r, done_w = {}, {}
+    if state is not None:
+        state = Path(state)
+        if resume:
+            for rec in load_state(state):
+                if rec["kind"] == "r" and rec["data"] == len(data) and rec["collisions"] == collisions:
+                    done_r[rec["r"]] = rec
+                elif rec["kind"] == "word" and rec["word_max"] == word_max and (
+                        rec["outcome"] != "time limit" or rec["word_seconds"] == word_seconds):
+                    done_w[rec["word"]] = rec
+        else:
+            write_atomic(state, "")
+    wanted = [str(r) for r in rs]
+    queue = [("r", r) for r in wanted if r not in done_r]
+    seen = set(done_w)
+    for r in wanted:
+        if r in done_r:
+            for w in _words_of(done_r[r]):
+                if w not in seen:
+                    seen.add(w)
+                    queue.insert(0, ("word", w))
+    total = [len(wanted) + len(seen)]
+    count = [len([r for r in wanted if r in done_r]) + len(done_w)]
+    if progress:
+        progress(count[0], total[0], "")
+    sink = state.open("a", encoding="utf-8") if state is not None else None
+
+    def collect(kind, key, rec):
+        if sink is not None:
+            sink.write(dumps(rec) + "\n")
+            sink.flush()
+        if kind == "r":
+            done_r[key] = rec
+            for w in _words_of(rec):
+                if w not in seen:
+                    seen.add(w)
+                    total[0] += 1
+                    queue.insert(0, ("word", w))       # words first: the longest jobs start early
+        else:
+            done_w[key] = rec
+        count[0] += 1
+        if progress:
+            progress(count[0], total[0], f"r = {key}" if kind == "r" else f"{len(key)}-letter word")
+
+    def submit(kind, key):
+        if kind == "r":
+            return executor.submit(r_job, key, data, collisions)
+        return executor.submit(word_job, key, word_seconds, word_max)
+
+    try:
+        pending, what = set(), {}
+        while queue or pending:
+            while queue and len(pending) < WINDOW:
+                kind, key = queue.pop(0)
+                future = submit(kind, key)
+                if future.done():
+                    collect(kind, key, future.result())
+                else:
+                    what[future] = (kind, key)
+                    pending.add(future)
+            if pending:
+                finished, pending = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
+                for future in sorted(finished, key=lambda f: what[f]):
+                    kind, key = what.pop(future)
+                    collect(kind, key, future.result())
+    finally:
+        if sink is not None:
+            sink.close()
+    return [done_r[r] for r in wanted], sorted(done_w.values(), key=lambda w: (w["length"], w["word"]))
+
+
+# ------------------------------------------------------------------ stitching
+def _cmp(x: Algebraic, y: Algebraic) -> int:
+    return 0 if x == y else -1 if x < y else 1
+
+
+def _alg(end) -> Algebraic:
+    return end if isinstance(end, Algebraic) else algebraic_of(end)
+
+
+def attractors_of(words: list[dict]) -> list[dict]:
+    """One attractor per (word, branch) with an attracting window, its windows (exact ends)."""
+    out = {}
+    for w in words:
+        for a in w["attracting"]:
+            key = (w["word"], a["branch"])
+            out.setdefault(key, {"word": w["word"], "compact": w["compact"], "length": w["length"],
+                                 "branch": a["branch"], "windows": []})
+            out[key]["windows"].append({"lo": a["lo"], "hi": a["hi"], "pair": a["pair"]})
+    return [out[k] for k in sorted(out, key=lambda k: (len(k[0]), k))]
+
+
+def name(word: str, branch: str) -> str:
+    return f"{compact(word)} ({branch})"
+
+
+def stitch(attractors: list[dict]) -> list[dict]:
+    """The cells of ]0, 1[: the open intervals between consecutive distinct window ends (and
+    3 − 2√2), exact; each with the attractors (names) whose certified windows contain it."""
+    pts = [Algebraic.rational(flint.fmpq(0)), Algebraic.rational(flint.fmpq(1)), LOWER_END]
+    for a in attractors:
+        for win in a["windows"]:
+            pts += [_alg(win["lo"]), _alg(win["hi"])]
+    pts = sorted(pts, key=cmp_to_key(_cmp))
+    uniq = [pts[0]]
+    for x in pts[1:]:
+        if not x == uniq[-1]:
+            uniq.append(x)
+    wins = [(name(a["word"], a["branch"]), _alg(w["lo"]), _alg(w["hi"])) for a in attractors for w in a["windows"]]
+    cells = []
+    for lo, hi in zip(uniq, uniq[1:]):
+        inside = sorted({n for n, a, b in wins if not lo < a and not b < hi})
+        cells.append({"lo": end_data(lo), "hi": end_data(hi), "attractors": inside,
+                      "island": not lo < LOWER_END})
+    return cells
+
+
+def _in_cell(q: Fraction, cell: dict) -> bool:
+    x = Algebraic.rational(flint.fmpq(q.numerator, q.denominator))
+    return _alg(cell["lo"]) < x < _alg(cell["hi"])
+
+
+# ------------------------------------------------------------------ families and rotation numbers
+def template(compact_word: str) -> str:
+    """The family of a word: its compact spelling with every exponent replaced by n."""
+    return re.sub(r"\^\d+", "^n", compact_word)
+
+
+def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
+    """The island's rotation number at a window end in [3 − 2√2, 1]: a resonance p/q (q ≤ Q)
+    decided exactly, else ρ (8 certified digits) and the nearest p/q with q ≤ Q ("near",
+    with the distance: an observation); None below 3 − 2√2."""
+    x = _alg(end)
+    if x < LOWER_END:
+        return None
+    if x == LOWER_END:
+        return {"rho": "0.5", "resonance": [1, 2], "near": None}
+    if x == Algebraic.rational(flint.fmpq(1)):
+        return {"rho": "0.25", "resonance": [1, 4], "near": None}
+    pq = island_theorem.resonance_of(x, Q)
+    with precision(200):
+        rho = island_theorem.rotation_ball(x.arb(200), 200)
+    lo, hi = ends(rho)
+    digits = f"{float((lo + hi) / 2):.8f}"
+    if pq is not None:
+        return {"rho": digits, "resonance": list(pq), "near": None}
+    mid = Fraction(int((lo + hi).p), int((lo + hi).q)) / 2
+    best = min((Fraction(p, q) for q in range(2, Q + 1) for p in range(1, q) if math.gcd(p, q) == 1),
+               key=lambda f: (abs(f - mid), f.denominator))
+    return {"rho": digits, "resonance": None, "near": [best.numerator, best.denominator],
+            "distance": f"{float(abs(best - mid)):.2e}"}
+
+
+def families(attractors: list[dict]) -> list[dict]:
+    """The attractors grouped by :func:`template`, with their windows and the rotation number
+    at each window's upper end."""
+    groups: dict[str, list] = {}
+    for a in attractors:
+        groups.setdefault(template(a["compact"]), []).append(a)
+    out = []
+    for key in sorted(groups, key=lambda k: (-len(groups[k]), k)):
+        members = []
+        for a in groups[key]:
+            members.append({"attractor": name(a["word"], a["branch"]),
+                            "windows": [{"lo": w["lo"]["digits"], "hi": w["hi"]["digits"],
+                                         "rotation_at_hi": end_rotation(w["hi"])} for w in a["windows"]]})
+        blocks = sorted(set(re.findall(r"\(([abc]+)\)\^\d+", " ".join(a["compact"] for a in groups[key]))))
+        out.append({"family": key, "repeated": blocks, "members": members})
+    return out
+
+
+def by_resonance(resonant: list[dict]) -> list[dict]:
+    """The attractors grouped by the resonance p/q at which their windows end (the summary's
+    ``resonant_upper_ends``), by decreasing p/q (increasing r)."""
+    groups: dict[tuple, list] = {}
+    for x in resonant:
+        groups.setdefault((x["p"], x["q"]), []).append(x["attractor"])
+    return [{"p": p, "q": q, "attractors": sorted(groups[(p, q)])}
+            for p, q in sorted(groups, key=lambda pq: -Fraction(*pq))]
+
+
+# ------------------------------------------------------------------ the document
+def _counts(orbits: list[dict]) -> dict:
+    c: dict[str, int] = {}
+    for o in orbits:
+        k = name(o["word"], o["branch"]) if o["class"] == ATTRACTING else o["class"]
+        c[k] = c.get(k, 0) + 1
+    return dict(sorted(c.items()))
+
+
+def _timeless(rec: dict) -> dict:
+    return {k: v for k, v in rec.items() if k != "seconds"}
+
+
+def document(r_records: list[dict], word_records: list[dict], parameters: dict) -> dict:
+    """The atlas as one JSON document (deterministic: no timing)."""
+    atts = attractors_of(word_records)
+    cells = stitch(atts)
+    rows = []
+    for rec in r_records:
+        q = Fraction(rec["r"])
+        rows.append({"r": rec["r"], "digits": f"{float(q):.6f}", "island": rec["island"],
+                     "counts": _counts(rec["orbits"]), "total": len(rec["orbits"]),
+                     "orbits": [{k: o[k] for k in ("theta0", "phi0", "class", "certified_from", "word", "branch",
+                                                   "observed", "why")} for o in rec["orbits"]]})
+    for cell in cells:
+        sampled = [row for row in rows if _in_cell(Fraction(row["r"]), cell)]
+        cell["sampled"] = [row["r"] for row in sampled]
+        total = sum(row["total"] for row in sampled)
+        counts: dict[str, int] = {}
+        for row in sampled:
+            for k, n in row["counts"].items():
+                counts[k] = counts.get(k, 0) + n
+        cell["orbits"] = total
+        cell["counts"] = dict(sorted(counts.items()))
+        cell["unresolved"] = counts.get(UNRESOLVED, 0)
+        fr = [row["island"]["fraction"] for row in sampled if row["island"]]
+        cell["island_fraction"] = ([str(min(Fraction(f[0]) for f in fr)), str(max(Fraction(f[1]) for f in fr))]
+                                   if fr else None)
+    seen: dict[str, list] = {}
+    for row in rows:
+        for o in row["orbits"]:
+            if o["class"] == ATTRACTING:
+                seen.setdefault(name(o["word"], o["branch"]), []).append(row["r"])
+    no_window = []
+    for w in word_records:
+        if w["outcome"] != "analysed":
+            for k in sorted(seen):
+                if k.startswith(w["compact"] + " ("):
+                    no_window.append({"attractor": k, "word": w["word"], "length": w["length"], "why": w["outcome"],
+                                      "seen_at": sorted(set(seen[k]), key=Fraction)})
+    observed: dict[str, int] = {}
+    for row in rows:
+        for o in row["orbits"]:
+            if o["observed"]:
+                observed[o["observed"]] = observed.get(o["observed"], 0) + 1
+    attractors = [{"name": name(a["word"], a["branch"]), **a,
+                   "seen_at": sorted(set(seen.get(name(a["word"], a["branch"]), [])), key=Fraction)} for a in atts]
+    inconsistent = []
+    by_name = {a["name"]: a for a in attractors}
+    analysed = {w["word"] for w in word_records if w["outcome"] == "analysed"}
+    for row in rows:
+        x = Algebraic.rational(flint.fmpq(Fraction(row["r"]).numerator, Fraction(row["r"]).denominator))
+        for k in sorted({name(o["word"], o["branch"]) for o in row["orbits"] if o["class"] == ATTRACTING}):
+            word = next(o["word"] for o in row["orbits"] if o["word"] and name(o["word"], o["branch"]) == k)
+            if word in analysed and not any(_alg(w["lo"]) < x < _alg(w["hi"]) for w in
+                                            (by_name[k]["windows"] if k in by_name else [])):
+                inconsistent.append({"attractor": k, "r": row["r"]})
+    resonant, above = [], 0
+    for a in atts:
+        for w in a["windows"]:
+            rot = end_rotation(w["hi"])
+            if rot is not None:
+                above += 1
+                if rot["resonance"]:
+                    resonant.append({"attractor": name(a["word"], a["branch"]), "hi": w["hi"]["digits"],
+                                     "p": rot["resonance"][0], "q": rot["resonance"][1]})
+    totals = {k: sum(row["counts"].get(k, 0) for row in rows) for k in (ISLAND, UNRESOLVED)}
+    totals[ATTRACTING] = sum(n for row in rows for k, n in row["counts"].items() if k not in (ISLAND, UNRESOLVED))
+    return {"schema": SCHEMA, "version": VERSION, "parameters": parameters,
+            "summary": {"r_values": len(rows), "orbits": sum(row["total"] for row in rows), "classes": totals,
+                        "words": len(word_records), "attractors_with_windows": len(atts),
+                        "attractors_without_windows": len(no_window), "inconsistent": inconsistent,
+                        "upper_ends_above": above, "resonant_upper_ends": resonant},
+            "attractors": attractors, "without_window": no_window, "cells": cells,
+            "families": families(atts), "by_resonance": by_resonance(resonant),
+            "observed_words": dict(sorted(observed.items(), key=lambda kv: (-kv[1], kv[0]))),
+            "words": [_timeless(w) for w in word_records], "r": rows}
+
+
+def to_json(doc: dict) -> str:
+    return json.dumps(doc, sort_keys=True, ensure_ascii=False, indent=1) + "\n"
+
+
+# ------------------------------------------------------------------ ATLAS.md
+def _end(e: dict) -> str:
+    return e["exact"] if e["exact"] is not None else "≈" + e["digits"]
+
+
+def _share(n: int, total: int) -> str:
+    return f"{n}/{total} ({100 * n / total:.0f}%)" if total else "—"
+
+
+def _rot(x: dict | None) -> str:
+    if x is None:
+        return "— (below 3−2√2: no island)"
+    if x["resonance"]:
+        return f"ρ = {x['resonance'][0]}/{x['resonance'][1]} exactly (a resonance)"
+    return f"ρ ≈ {x['rho']}, near {x['near'][0]}/{x['near'][1]} (distance {x['distance']}; observed)"
+
+
+def markdown(doc: dict, figure: str | None = None) -> str:
+    """ATLAS.md: what was run, the cells (certified coexistence, observed shares), the
+    attractors and their windows, those without a window, the families, the observed words."""
+    p, s = doc["parameters"], doc["summary"]
+    cls = s["classes"]
+    out = ["# Atlas of the attractors of the reduction over ]0, 1[", "",
+           f"Written by `{p['command']}` (certify/run/atlas.py); do not edit by hand.", "",
+           f"- r: {s['r_values']} rationals in ]{p['r_range'][0]}, {p['r_range'][1]}[ (midpoints of equal cells); "
+           f"initial data per r: the tool's 8 and {p['data']} Halton points of the b-section (θ0 ∈ ]0, π/2[, "
+           f"φ0 ∈ ]0, π[); {p['collisions']} collisions per float64 run and per rigorous scan",
+           f"- orbits: {s['orbits']}: island {cls[ISLAND]}, attracting periodic (certified) {cls[ATTRACTING]}, "
+           f"unresolved {cls[UNRESOLVED]} (`certify identify`'s classes)",
+           f"- words certified: {s['words']}; attractors (word, branch) with an exact window over ]0, 1[: "
+           f"{s['attractors_with_windows']}; without one: {s['attractors_without_windows']} (longer than "
+           f"{p['word_max']} letters, or over the time limit of {p['word_seconds']} s: known only at the r where "
+           "seen, by `orbit_at`)",
+           f"- windows ending in [3−2√2, 1] at a resonance of the island (ρ = p/q exactly, q ≤ {RESONANCE_Q}): "
+           f"{len(s['resonant_upper_ends'])} of {s['upper_ends_above']}"
+           + (": " + ", ".join(f"`{x['attractor']}` at ≈{x['hi']} (ρ = {x['p']}/{x['q']})"
+                               for x in s["resonant_upper_ends"]) if s["resonant_upper_ends"] else ""),
+           "- certified orbits outside their word's certified window: "
+           + (", ".join(f"{x['attractor']} at r = {x['r']}" for x in s["inconsistent"]) or "none"), "",
+           "**Certified**: each orbit's class (island: quasi-periodic for ever, by the island theorem; attracting "
+           "periodic: it follows its word for ever, by a certified trapping ellipse), each attractor's window (exact "
+           "algebraic ends, `certify orbit`), the cells (the windows' ends compared exactly), the coexistence of the "
+           "attractors in a cell (each is attracting at every r of the cell), the island's share of the b-section "
+           "(an interval, `island_fraction`) and its rotation number. **Observed**: the share of the sampled initial "
+           "data that reaches each class or attractor (a finite grid), the unresolved orbits' words, and a window "
+           "end's nearness to a rotation number p/q that is not exactly a resonance.", ""]
+    if figure:
+        out += [f"![the attractors' certified windows, the island's rotation number above]({figure})", ""]
+    out += ["## Cells", "",
+            "The open intervals between consecutive window ends (exact; 3−2√2 added, where the island appears). "
+            "Attractors: those met by the atlas whose certified window contains the cell. Shares: over the "
+            "initial data at the sampled r inside the cell (observed).", "",
+            "| cell ]lo, hi[ | attractors (certified) | island | sampled r | shares of the orbits (observed) | "
+            "unresolved | island's area (certified) |", "|---|---|---|---:|---|---:|---|"]
+    for c in doc["cells"]:
+        shares = "; ".join(f"{k}: {_share(n, c['orbits'])}" for k, n in c["counts"].items()
+                           if k != UNRESOLVED) or "—"
+        fr = c["island_fraction"]
+        out.append(f"| ]{_end(c['lo'])}, {_end(c['hi'])}[ | {', '.join(f'`{a}`' for a in c['attractors']) or '—'} | "
+                   f"{'yes' if c['island'] else ''} | {len(c['sampled'])} | {shares} | "
+                   f"{_share(c['unresolved'], c['orbits']) if c['orbits'] else '—'} | "
+                   f"{f'[{float(Fraction(fr[0])):.3f}, {float(Fraction(fr[1])):.3f}]' if fr else '—'} |")
+    out += ["", "## Attractors and their certified windows", "",
+            "| attractor (word, branch) | length | window(s) (certified) | pair | ρ at the upper end | sampled r where "
+            "reached |", "|---|---:|---|---|---|---|"]
+    for a in doc["attractors"]:
+        wins = "; ".join(f"]{_end(w['lo'])}, {_end(w['hi'])}[" for w in a["windows"])
+        pairs = ", ".join(sorted({w["pair"] for w in a["windows"]}))
+        rot = "; ".join(_rot(end_rotation(w["hi"])) for w in a["windows"])
+        seen = ", ".join(a["seen_at"][:6]) + (f" … ({len(a['seen_at'])})" if len(a["seen_at"]) > 6 else "")
+        out.append(f"| `{a['name']}` | {a['length']} | {wins} | {pairs} | {rot} | {seen} |")
+    if doc["without_window"]:
+        out += ["", "### Attractors without a window", "",
+                "Certified attracting at the r where reached (`orbit_at` and a trapping ellipse, through identify); "
+                "their window over ]0, 1[ was not computed.", "",
+                "| attractor | length | why no window | sampled r where reached |", "|---|---:|---|---|"]
+        for a in doc["without_window"]:
+            out.append(f"| `{a['attractor']}` | {a['length']} | {a['why']} | {', '.join(a['seen_at'])} |")
+    out += ["", "## Families", "",
+            "The attractors grouped by their compact spelling with the exponents replaced by n (the block that "
+            "repeats); ρ: the island's rotation number at each window's upper end (a resonance decided exactly, "
+            f"or the nearest p/q with q ≤ {RESONANCE_Q}: observed).", "",
+            "| family | repeated blocks | members: window, ρ at its upper end |", "|---|---|---|"]
+    for f in doc["families"]:
+        members = "; ".join(f"`{m['attractor']}` ]{w['lo']}, {w['hi']}[ {_rot(w['rotation_at_hi'])}"
+                            for m in f["members"] for w in m["windows"])
+        out.append(f"| `{f['family']}` | {', '.join(f['repeated']) or '—'} | {members} |")
+    out += ["", "### By the resonance at which the windows end", "",
+            "The island's rotation number at a window's upper end, when it is exactly p/q (decided as algebraic "
+            "numbers): the windows that close at the same resonance.", "",
+            "| ρ = p/q at the upper end | attractors |", "|---|---|"]
+    out += [f"| {g['p']}/{g['q']} | {', '.join(f'`{a}`' for a in g['attractors'])} |" for g in doc["by_resonance"]]
+    if doc["observed_words"]:
+        out += ["", "## Words observed in unresolved orbits", "",
+                "The float64 run repeats the word to its end, but no proof stands (the word's orbit is not "
+                "attracting at r, or the rigorous orbit did not enter a trap): observed, with how many orbits.", ""]
+        out += [f"- `{compact(read(w)[0]) if len(w) < 400 else w[:40] + '…'}`: {n}"
+                for w, n in list(doc["observed_words"].items())[:30]]
+    out += ["", "## Per r", "",
+            "| r | island (ρ; certified area) | orbits: shares (observed) |", "|---:|---|---|"]
+    for row in doc["r"]:
+        isl = row["island"]
+        it = (f"ρ = {isl['rotation_number']}; [{float(Fraction(isl['fraction'][0])):.3f}, "
+              f"{float(Fraction(isl['fraction'][1])):.3f}]") if isl else "—"
+        shares = "; ".join(f"{k}: {n}" for k, n in row["counts"].items())
+        out.append(f"| {row['r']} | {it} | {shares} (of {row['total']}) |")
+    return "\n".join(out) + "\n"
+
+
+# ------------------------------------------------------------------ the figure
+def _short(text: str, n: int = 34) -> str:
+    return text if len(text) <= n else text[:n - 12] + "…" + text[-11:]
+
+
+def figure(doc: dict, path) -> Path:
+    """atlas.png: top, the island's rotation number ρ(r) on ]3−2√2, 1[ (certified digits at the
+    sampled r) with the resonances p/q, q ≤ 8; middle, one row per attractor, its certified
+    windows as bars and the sampled r where data reached it as dots; bottom, the observed
+    shares at each sampled r (island, attracting, unresolved).  Floats: a drawing only."""
+    from . import saving
+    plt = saving.pyplot()
+    atts = doc["attractors"]
+    rows = doc["r"]
+    n = len(atts) + len(doc["without_window"])
+    lo, hi = (float(Fraction(x)) for x in doc["parameters"]["r_range"])
+    fig, (ax0, ax, bx) = plt.subplots(3, 1, sharex=True, figsize=(9, 3.4 + 0.22 * max(n, 4)),
+                                      gridspec_kw={"height_ratios": [1.2, max(n, 4) * 0.3, 1.4]})
+    isl = [(float(Fraction(r["r"])), float(r["island"]["rotation_number"])) for r in rows if r["island"]]
+    if isl:
+        ax0.plot(*zip(*isl), ".-", color="tab:green", ms=2, lw=0.8)
+    marks = sorted({(float(x["hi"]), x["p"], x["q"]) for x in doc["summary"]["resonant_upper_ends"]})
+    for k, (x, p, q) in enumerate(marks):
+        if lo <= x <= hi:
+            for panel in (ax0, ax):
+                panel.axvline(x, color="grey", lw=0.4, ls=":")
+            ax0.annotate(f"{p}/{q}", (x, 1.0 + 0.11 * (k % 3)), xycoords=("data", "axes fraction"), fontsize=6,
+                         ha="center", va="bottom")
+    ax0.set_ylabel("ρ", fontsize=8)
+    ax0.set_title("the island's rotation number ρ(r); dotted: windows ending at ρ = p/q exactly", fontsize=7, pad=34)
+    colour = {"real": "tab:orange", "complex": "tab:red", "real and complex": "tab:purple"}
+    for k, a in enumerate(atts):
+        for w in a["windows"]:
+            x0, x1 = float(w["lo"]["digits"]), float(w["hi"]["digits"])
+            ax.barh(k, x1 - x0, left=x0, height=0.6, color=colour[w["pair"]])
+        xs = [float(Fraction(r)) for r in a["seen_at"]]
+        ax.plot(xs, [k] * len(xs), "k.", ms=2)
+    for k, a in enumerate(doc["without_window"], start=len(atts)):
+        xs = [float(Fraction(r)) for r in a["seen_at"]]
+        ax.plot(xs, [k] * len(xs), "k.", ms=2)
+    labels = [_short(a["name"]) for a in atts]
+    labels += [_short(a["attractor"]) + " (no window)" for a in doc["without_window"]]
+    ax.set_yticks(range(len(labels)), labels, fontsize=6)
+    ax.invert_yaxis()
+    ax.axvline(3 - 2 * 2 ** 0.5, color="grey", lw=0.6, ls="--")
+    ax.set_title("certified attracting windows (bars; orange: real in-plane pair, red: complex) and the sampled r "
+                 "where data reached each (dots)", fontsize=7)
+    xs = [float(Fraction(r["r"])) for r in rows]
+    parts = [(ISLAND, "tab:green"), (ATTRACTING, "tab:orange"), (UNRESOLVED, "lightgrey")]
+    bottom = [0.0] * len(rows)
+    for key, c in parts:
+        ys = []
+        for r in rows:
+            n = sum(v for k, v in r["counts"].items() if (k == key) or (key == ATTRACTING and k not in
+                                                                          (ISLAND, UNRESOLVED)))
+            ys.append(n / r["total"] if r["total"] else 0)
+        bx.bar(xs, ys, bottom=bottom, width=(hi - lo) / max(len(rows), 1), color=c, label=key, lw=0)
+        bottom = [b + y for b, y in zip(bottom, ys)]
+    bx.set_ylim(0, 1)
+    bx.set_ylabel("share", fontsize=8)
+    bx.legend(fontsize=6, loc="upper right")
+    bx.set_xlim(lo, hi)
+    bx.set_xlabel("r")
+    fig.tight_layout()
+    fig.subplots_adjust(left=0.3)
+    path = Path(path)
+    with saving.output_dir(path.parent):
+        saving.save_figure(fig, path.name)
+    return path
+
+
+def write_outputs(doc: dict, out) -> None:
+    """OUT/ATLAS.md, OUT/atlas.json, OUT/atlas.png."""
+    out = Path(out)
+    figure(doc, out / FIGURE)
+    write_atomic(out / "ATLAS.md", markdown(doc, FIGURE))
+    write_atomic(out / "atlas.json", to_json(doc))
+
+
+# ------------------------------------------------------------------ the check
+def rational_inside(a: Algebraic, b: Algebraic) -> flint.fmpq:
+    """A rational strictly between a < b (enclosures refined until they separate)."""
+    prec = 64
+    while True:
+        ua, lb = ends(a.arb(prec))[1], ends(b.arb(prec))[0]
+        if ua < lb:
+            return (ua + lb) / 2
+        prec *= 2
+
+
+def _fq(r: str) -> flint.fmpq:
+    q = Fraction(r)
+    return flint.fmpq(q.numerator, q.denominator)
+
+
+def _attracting_at(word: str, r: flint.fmpq) -> set[str]:
+    """The names of the attracting periodic orbits of ``word`` at r, by ``orbit_at`` (exact)."""
+    from certify.patterns.reduction_orbits import orbit_at
+    return {name(word, o.branch_name) for o in orbit_at(word, r) if o.feasible and o.kind == ATTRACTING.split()[0]}
+
+
+def _same_end(x: dict, y: dict) -> bool:
+    return _alg(x) == _alg(y)
+
+
+def check_windows(doc: dict, window_max: int) -> list[str]:
+    """Each analysed word of at most ``window_max`` letters: its windows recomputed by
+    ``certify orbit`` equal the atlas's (branch, pair, ends exactly)."""
+    problems = []
+    mine = {(a["word"], a["branch"]): a["windows"] for a in doc["attractors"]}
+    for w in doc["words"]:
+        if w["outcome"] != "analysed" or w["length"] > window_max:
+            continue
+        fresh = analyse(w["word"], self_similar=False).attracting()
+        want: dict = {}
+        for a in fresh:
+            want.setdefault(a["branch"], []).append(a)
+        have = {br: wins for (word, br), wins in mine.items() if word == w["word"]}
+        for br in sorted(set(want) | set(have)):
+            x, y = want.get(br, []), have.get(br, [])
+            if len(x) != len(y) or not all(_same_end(p["lo"], q["lo"]) and _same_end(p["hi"], q["hi"])
+                                           and p["pair"] == q["pair"] for p, q in zip(x, y)):
+                problems.append(f"{name(w['word'], br)}: window(s) "
+                                f"{[(q['lo']['digits'], q['hi']['digits']) for q in y]} in the atlas, "
+                                f"{[(p['lo']['digits'], p['hi']['digits']) for p in x]} by certify orbit")
+    return problems
+
+
+def check_cells(doc: dict) -> list[str]:
+    """The cells stitched again from the attractors' windows, and each cell's attractors
+    re-derived by ``orbit_at`` at a rational inside it (a sampled r, else one chosen): every
+    analysed word attracting there is listed, and every listed one is attracting there."""
+    problems = []
+    fresh = stitch(doc["attractors"])
+    key = lambda c: (c["lo"]["digits"], c["hi"]["digits"], tuple(c["attractors"]))     # noqa: E731
+    if [key(c) for c in fresh] != [key(c) for c in doc["cells"]]:
+        problems.append("the cells differ from the windows stitched again")
+    analysed = [w["word"] for w in doc["words"] if w["outcome"] == "analysed"]
+    for c in doc["cells"]:
+        a, b = _alg(c["lo"]), _alg(c["hi"])
+        r = _fq(c["sampled"][0]) if c["sampled"] else rational_inside(a, b)
+        if not a < Algebraic.rational(r) < b:
+            problems.append(f"cell ]{c['lo']['digits']}, {c['hi']['digits']}[: its sampled r = {r} is not inside")
+            continue
+        want = set().union(*[_attracting_at(w, r) for w in analysed]) if analysed else set()
+        if want != set(c["attractors"]):
+            problems.append(f"cell ]{c['lo']['digits']}, {c['hi']['digits']}[ at r = {r}: attractors "
+                            f"{sorted(c['attractors'])} in the atlas, {sorted(want)} by orbit_at")
+        if c["island"] != (LOWER_END < Algebraic.rational(r)):
+            problems.append(f"cell ]{c['lo']['digits']}, {c['hi']['digits']}[: island {c['island']} wrong")
+    return problems
+
+
+def check_orbits(doc: dict, rows=None) -> list[str]:
+    """Each orbit of the rows (default: every r) classified again by identify (class, word,
+    branch), each attracting one re-decided by ``orbit_at`` and each island one by the island
+    theorem at r; the counts recounted; the island's share and rotation number recomputed."""
+    problems = []
+    collisions = doc["parameters"]["collisions"]
+    for row in doc["r"] if rows is None else rows:
+        r, fq = Fraction(row["r"]), _fq(row["r"])
+        if _counts(row["orbits"]) != row["counts"] or row["total"] != len(row["orbits"]):
+            problems.append(f"r = {row['r']}: the counts are not those of its orbits")
+        for o in row["orbits"]:
+            x = ident.classify(r, o["theta0"], o["phi0"], collisions)
+            word = read(x.word)[0] if x.cls == ATTRACTING else None
+            branch = ident.decided(word, fq).branch_name if word else None
+            if (x.cls, word, branch) != (o["class"], o["word"], o["branch"]):
+                problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: {o['class']} "
+                                f"{o['word'] or ''} in the atlas, {x.cls} {word or ''} by identify")
+            if o["class"] == ATTRACTING and name(o["word"], o["branch"]) not in _attracting_at(o["word"], fq):
+                problems.append(f"r = {row['r']}: {name(o['word'], o['branch'])} is not attracting there (orbit_at)")
+            if o["class"] == ISLAND and not ident.elliptic(fq):
+                problems.append(f"r = {row['r']}: an island orbit where the island theorem does not hold")
+        isl = row["island"]
+        if (isl is not None) != (fq * fq - 6 * fq + 1 < 0):
+            problems.append(f"r = {row['r']}: the island is {'given' if isl else 'missing'}")
+        elif isl is not None:
+            lo, hi = island_theorem.island_fraction(fq, isl["depth"])
+            if [str(lo), str(hi)] != isl["fraction"] or island_theorem.rotation_number(fq, 8) != isl["rotation_number"]:
+                problems.append(f"r = {row['r']}: the island's share or rotation number differs from `certify island`")
+    return problems
+
+
+def check_atlas(doc: dict, window_max: int = 24, rows=None) -> list[str]:
+    """Every way the document can be wrong that a recomputation sees (empty: it checks):
+    the windows (:func:`check_windows`, words up to ``window_max`` letters), the cells
+    (:func:`check_cells`), the orbits and the island (:func:`check_orbits` on ``rows``,
+    default every r), the cells' counts."""
+    problems = check_windows(doc, window_max) + check_cells(doc) + check_orbits(doc, rows)
+    for c in doc["cells"]:
+        rows_in = [row for row in doc["r"] if row["r"] in c["sampled"]]
+        counts: dict[str, int] = {}
+        for row in rows_in:
+            for k, n in row["counts"].items():
+                counts[k] = counts.get(k, 0) + n
+        if counts != c["counts"] or [row["r"] for row in doc["r"] if _in_cell(Fraction(row["r"]), c)] != c["sampled"]:
+            problems.append(f"cell ]{c['lo']['digits']}, {c['hi']['digits']}[: its sampled r or counts differ")
+    return problems
