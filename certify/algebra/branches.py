@@ -728,16 +728,29 @@ def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:
 def _root_ball(sqf, rc, k, isolated=None):
     """prec -> a ball around the k-th largest real root of a squarefree K[λ] polynomial;
     ``isolated`` (prec -> the real roots or None) is shared by the roots of one polynomial,
-    so that each precision isolates them once."""
+    so that each precision isolates them once.  A ball isolated at a higher precision than
+    asked is as good (it is tighter), and the roots are often isolated only from some
+    precision on (huge coefficients: :meth:`Spectrum._branches_at` found them at the
+    precision it seeds ``isolated`` with): the smallest successful isolation at or above
+    ``prec`` is used, else prec, 2·prec, 4·prec are tried, else the tightest ball known
+    (a true ball, only coarser: the caller's own test then stays undecided, never wrong).
+    Every isolation certifies the same number of real roots in the same order, so the
+    k-th ball encloses the same root at every precision."""
     isolated = {} if isolated is None else isolated
 
     def ball(prec):
-        for p in (prec, 2 * prec, 4 * prec):        # a tighter ball is as good (the isolation may
-            if p not in isolated:                   # fail at one precision and succeed at the next)
+        above = sorted(p for p, v in isolated.items() if p >= prec and v is not None)
+        if above:
+            return isolated[above[0]][k]
+        for p in (prec, 2 * prec, 4 * prec):
+            if p not in isolated:
                 isolated[p] = nf.real_roots(sqf, rc, p)
             if isolated[p] is not None:
                 return isolated[p][k]
-        raise ValueError("roots lost at higher precision")
+        known = [p for p, v in isolated.items() if v is not None]
+        if not known:
+            raise Undecided("the real roots could not be isolated")
+        return isolated[max(known)][k]
     return ball
 
 

@@ -796,3 +796,24 @@ def test_sign_word_names_every_answer():
 
     assert sign_word({1, -1}) == "< 0, > 0"
     assert sign_word({0, None, NO_BRANCH, UNDECIDED}) == "= 0, absent, not real, undecided"
+
+
+def test_root_ball_uses_an_isolation_found_above_the_precision_asked():
+    """Two roots 2^-100 apart are isolated only from 1024 bits on; a ball asked at 128 bits
+    (as sign_at_point asks first) is the one isolated at 1024, not 'roots lost at higher
+    precision' (the crash of `certify orbit` on the 122-letter word of r = 0.173)."""
+    from certify.algebra.balls import ends
+    from certify.algebra.branches import _root_ball
+    eps = flint.fmpq(1, 2 ** 100)
+    rc = Algebraic.rational(flint.fmpq(1, 3))
+    m = nf.modulus(rc)
+    # (λ - 1)(λ - 1 - eps) in Q(rc)[λ], highest coefficient first
+    sqf = [nf.reduce(c, m) for c in (flint.fmpq(1), -(2 + eps), 1 + eps)]
+    assert nf.real_roots(sqf, rc, 512) is None
+    found = nf.real_roots(sqf, rc, 1024)
+    assert found is not None and len(found) == 2
+    isolated = {1024: found}
+    roots = (1 + eps, flint.fmpq(1))                      # largest first
+    for k in range(2):
+        lo, hi = ends(_root_ball(sqf, rc, k, isolated)(128))
+        assert lo <= roots[k] <= hi and not lo <= roots[1 - k] <= hi
