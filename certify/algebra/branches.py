@@ -394,6 +394,7 @@ class Spectrum:
         self._branches = {}
         self._eigenvalues = {}
         self._common = {}                  # (id of h, key of rc) -> (h, common roots of cp and h there)
+        self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -432,6 +433,10 @@ class Spectrum:
         """Res_λ(g, cp) ∈ Z[r] (python-flint), primitive; g an integer ``fmpz_mpoly`` in
         (r, λ, s) or an element of the engine's ring; cached by g's text."""
         G = g if isinstance(g, flint.fmpz_mpoly) else ring_to_mpoly(g)
+        if not G.is_zero():                # the same key for proportional polynomials (the same zeros)
+            G = G / G.content()
+            if G.coeffs()[0] < 0:
+                G = -G
         key = str(G)
         if key not in self._resultants:
             if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
@@ -550,6 +555,7 @@ class Spectrum:
     def _branches_at(self, rc, maxprec):
         m = nf.modulus(rc)
         sqf, g = nf.squarefree(nf.kpoly(self.ring_cp, m), m)
+        self._sqf[rc.key()] = sqf
         if len(g) > 2:
             return None                  # a root of multiplicity > 2: not handled
         prec = 128
@@ -637,18 +643,76 @@ class Spectrum:
 
     def _common_roots(self, h, rc: Algebraic):
         """The common roots of cp(rc, λ) and h(rc, λ): True when h(rc, λ) ≡ 0, False when
-        there is none (the gcd in Q(rc)[λ] is 1), else prec -> certified balls around them.
-        The gcd is made monic (an inverse in Q(rc)): evaluating a gcd of pseudo-remainders
-        at a ball instead loses the branches of (ab)^12(cb)^12 at 1024 bits."""
+        there is none, else prec -> certified balls around the real ones.  Three routes,
+        cheapest first, each exact or certified:
+
+        1. no common root when Res_λ(h, cp) does not vanish at rc (cp monic in λ up to a
+           constant: Res_λ(h, cp)(rc) = ±c^k Π h(rc, λ_i) over the roots λ_i of cp(rc, λ),
+           an identity of polynomials that evaluation at rc respects), decided exactly
+           over Z: the minimal polynomial of rc does not divide the resultant;
+        2. where it vanishes, some root of cp(rc, λ) is a root of h: when certified balls
+           exclude h = 0 at every root of cp(rc, λ) but one, that one is the common root
+           (:meth:`_single_common_root`);
+        3. else the gcd in Q(rc)[λ], made monic (an inverse in Q(rc)): evaluating a gcd of
+           pseudo-remainders at a ball instead loses the branches of (ab)^12(cb)^12 at
+           1024 bits."""
         m = nf.modulus(rc)
         hk = nf.kpoly(h, m)
         if not hk:
             return True
+        if self.lc.degree() <= 0:
+            R = self.resultant(h)
+            if not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
+                return False
+            if not R.is_zero():
+                single = self._single_common_root(h, rc)
+                if single is not None:
+                    return single
         G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
         if len(G) == 1:
             return False
         G, _ = nf.squarefree(G, m)
         return lambda prec: nf.real_roots(G, rc, prec)
+
+    def _single_common_root(self, h, rc: Algebraic, maxprec: int = 1024):
+        """Given that cp(rc, λ) and h(rc, λ) have a common root (route 1 of
+        :meth:`_common_roots`): prec -> [the real common root's ball] or [] (it is not
+        real), when at some precision P ≤ ``maxprec`` certified balls exclude h = 0 at
+        every distinct root of cp(rc, λ) (the roots of its squarefree part) but one, which
+        is then the common root; balls asked below P are made at P.  None when no precision
+        leaves a single candidate (the gcd decides then)."""
+        if self.branches_at(rc) is None:
+            return None
+        sqf = self._sqf[rc.key()]
+        try:
+            terms = ring_terms(h)
+        except ValueError:                  # h still has √Δ: the gcd decides
+            return None
+        n = max((max(i, j) for _c, i, j in terms), default=0)
+
+        def candidates(prec):
+            roots = nf.root_balls(sqf, rc, prec)
+            if roots is None:
+                return None
+            with precision(prec + GUARD):
+                Rp = _powers(rc.arb(prec), n)
+                left = [z for z in roots if _eval_terms(terms, Rp, _powers(z, n)).contains(0)]
+                if len(left) != 1:
+                    return None
+                z = left[0]
+                if z.imag > 0 or z.imag < 0:
+                    return []
+                conj = z.conjugate()
+                if not z.overlaps(conj) or any(w is not z and w.overlaps(conj) for w in roots):
+                    return None
+                return [z.real]
+        prec = 128
+        while prec <= maxprec:
+            found = candidates(prec)
+            if found is not None:
+                return _at_least(candidates, prec, found)
+            prec *= 2
+        return None
 
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) (an expression or an element of
@@ -752,6 +816,20 @@ def _root_ball(sqf, rc, k, isolated=None):
             raise Undecided("the real roots could not be isolated")
         return isolated[max(known)][k]
     return ball
+
+
+def _at_least(compute, P: int, found):
+    """prec -> compute(prec) for prec > P (memoised), ``found`` (= compute(P)) below: a
+    ball made at a higher precision than asked is as good."""
+    done = {P: found}
+
+    def at(prec):
+        if prec <= P:
+            return found
+        if prec not in done:
+            done[prec] = compute(prec)
+        return done[prec]
+    return at
 
 
 def _at_r(P, t) -> flint.fmpq_poly:

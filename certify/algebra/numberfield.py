@@ -129,6 +129,22 @@ def evaluate(f, R: flint.arb, z: flint.arb) -> flint.arb:
     return val
 
 
+def root_balls(f, alpha: Algebraic, prec: int):
+    """Certified complex balls around all the roots of a squarefree f ∈ Q(α)[λ], one per
+    root (python-flint's acb root isolation); None when they cannot be isolated at this
+    precision."""
+    try:
+        with precision(prec + GUARD):
+            R = alpha.arb(prec)
+            poly = flint.acb_poly([flint.acb(arb_of(c, R)) for c in f][::-1])
+            try:
+                return poly.roots(tol=flint.arb(2) ** -(prec // 2))
+            except ValueError:
+                return poly.roots()
+    except ValueError:
+        return None
+
+
 def real_roots(f, alpha: Algebraic, prec: int):
     """Certified balls around the real roots of a squarefree f ∈ Q(α)[λ], largest first
     (the order decided on the exact rational ends of the balls, so that the upper,

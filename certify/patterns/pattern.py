@@ -294,15 +294,19 @@ def _nonempty(regions) -> list[dict]:
     return [region_set(R) for R in regions if R.pieces]
 
 
-def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
+def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True) -> PatternResult:
     """The exact analysis of a written period (any rotation / mirror) over ]lo, hi[.
 
     ``formulas=False`` (the census) skips what only the report prints: the period
     matrix, the factored discriminant and the datum's formulas (left empty); the
     certified sets, the undecided points, the diagnosis and the verdict are the same.
-    With ``formulas`` they are computed when first read."""
+    With ``formulas`` they are computed when first read.  ``diagnosis=False`` (the
+    physics line of ``certify orbit``, which reads only the certified sets) skips the
+    search for the collision that comes instead where the word is never feasible
+    (``diagnosis`` None, the verdict without it); the certified sets are the same."""
     import time
     start = time.perf_counter()
+    diagnose_failure = diagnosis
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
     system = BY_NAME[system_name]
@@ -332,7 +336,8 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
         # that the regions shrink before the tables with x (norms of twice the degree)
         for q in sorted(group, key=lambda q: q.has_x):
             an.impose(q)
-        if any(R.pieces for R in before) and not any(R.pieces for R in an.regions) and diagnosis is None:
+        if diagnose_failure and any(R.pieces for R in before) and not any(R.pieces for R in an.regions) \
+                and diagnosis is None:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
         before = _copy(an.regions)
     regions["feasible"] = _copy(an.regions)

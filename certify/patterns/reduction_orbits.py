@@ -458,7 +458,7 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool = True) -> OrbitResult:
         if name == "complex":
             conditions["complex"] = [_cond(q)]
     undecided |= _undecided(an)
-    pat = analyse_pattern(normal, lo, hi, formulas=False) if self_similar else None
+    pat = analyse_pattern(normal, lo, hi, formulas=False, diagnosis=False) if self_similar else None
 
     def formulas():
         N = left_eigenvector(cand.Mq)
