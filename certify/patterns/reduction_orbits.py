@@ -393,17 +393,27 @@ def _digits(e: dict) -> str:
     return e["exact"] if e["exact"] is not None else "≈" + e["digits"]
 
 
+# One output, two objects named by branches: the orbit's branch is the eigenvalue λ of its
+# normal n* (a left eigenvector), the self-similar datum's the eigenvalue of its velocity q(0)
+# (a right eigenvector, in the plane n*^⊥).  (ab)^3(cb)^3's window is "lower" for the orbit and
+# "upper x₊" for the datum: the same r-interval, two eigenvalues.
+BRANCH_WORDS = ("there a branch names the eigenvalue of q(0); in the sets above and in the verdict it names "
+                "the eigenvalue λ of the normal n*, whose plane n*^⊥ holds the eigenvectors of the two other "
+                "branches: an orbit on the lower branch turns in the plane of the upper and middle ones")
+
+
 def physics(res: OrbitResult) -> str:
     """Where self-similar collapse data exist (``certify pattern``, the real-pair case) and
-    where the in-plane pair is complex (not collapse)."""
+    where the in-plane pair is complex (not collapse); the two meanings of a branch's name
+    said once (:data:`BRANCH_WORDS`)."""
     p = res.pattern
 
     def sets(lst):
         return "; ".join(f"{s['branch']}{'' if s['fixed_point'] == NO_X else ' ' + s['fixed_point']}: {s['set']}"
                          for s in lst) or "∅"
     text = "" if p is None else (
-        f"Self-similar collapse data of {res.written} (certify pattern, the real-pair case: the velocity an "
-        f"eigenvector of M_w for λ > 0 in the invariant plane): stable on {sets(p.stable)}; "
+        f"Self-similar collapse data of {res.written} (certify pattern, the real-pair case: the velocity q(0) an "
+        f"eigenvector of M_w for λ > 0 in the invariant plane; {BRANCH_WORDS}): stable on {sets(p.stable)}; "
         f"feasible on {sets(p.feasible)}. ")
     cx = res.sets("complex")
     if cx:

@@ -53,6 +53,11 @@ def test_ab_cb_attracting_windows_are_the_stable_windows_of_pattern(n):
     assert _windows(_attracting(orbit)) == _windows(stable)
     assert [a["pair"] for a in orbit.attracting()] == ["real"] * len(stable)
     assert "attracting periodic orbit of the reduction" in orbit.verdict
+    # one window, two eigenvalues: the orbit's branch is λ of its normal n* (the smallest, lower),
+    # the datum's that of its velocity q(0) in the plane n*^⊥ (upper); the physics line says so
+    assert {a["branch"] for a in orbit.attracting()} == {"lower"}
+    assert {s["branch"] for s in pattern.stable} == {"upper"}
+    assert ro.BRANCH_WORDS in orbit.physics and "eigenvalue of q(0)" in ro.BRANCH_WORDS
 
 
 def test_a_flipped_modulus_condition_breaks_the_agreement(monkeypatch):
