@@ -27,6 +27,7 @@ from math import gcd as _gcd
 
 import flint
 import sympy as sp
+from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
@@ -660,6 +661,8 @@ class Spectrum:
         hk = nf.kpoly(h, m)
         if not hk:
             return True
+        if not isinstance(h, PolyElement):
+            h = to_ring(sp.expand(expr(h)))
         if self.lc.degree() <= 0:
             R = self.resultant(h)
             if not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():

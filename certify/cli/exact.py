@@ -67,7 +67,7 @@ def cmd_orbit(args) -> int:
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     if args.trap is not None:
         return _trap(normal, system, args.trap)
-    result = analyse_orbit(args.word, lo, hi)
+    result = analyse_orbit(args.word, lo, hi, progress=progress.Bar("step"))
     print(result.json_text() if args.json else result.markdown())
     return 0
 

@@ -426,30 +426,60 @@ def physics(res: OrbitResult) -> str:
 
 
 # ------------------------------------------------------------------ the analysis
-def analyse(word: str, lo=0, hi=1, self_similar: bool = True) -> OrbitResult:
+MAX_ORBIT_LENGTH = 240
+"""The longest normal form ``analyse`` takes.  M_w has entries of degree L in r, so the
+conditions have degree about 2L in r and 3L-bit coefficients, and the work grows faster
+than L³ (measured: 38 letters in seconds, 122 letters in about a minute or two on one
+core, 240 in several times that, 400 beyond half an hour); longer words are refused with
+this reason rather than run silently for hours (:func:`check_length`)."""
+
+
+def check_length(normal: str) -> None:
+    """UsageError (one line, exit 2) for a normal form longer than :data:`MAX_ORBIT_LENGTH`."""
+    if len(normal) > MAX_ORBIT_LENGTH:
+        raise UsageError(f"orbit: {len(normal)} letters, more than {MAX_ORBIT_LENGTH}: the exact analysis grows "
+                         f"faster than the cube of the length (122 letters take a minute or two) and would not "
+                         f"finish in reasonable time")
+
+
+def analyse(word: str, lo=0, hi=1, self_similar: bool = True, progress=None) -> OrbitResult:
     """The periodic orbits of the reduction with the word ``word`` (any rotation or mirror),
     over ]lo, hi[: the sets of the module docstring, per real branch, certified.
     ``self_similar=False`` skips the pattern analysis of the physics line (the census has
     it already): ``pattern`` is then None and the physics line says only where the pair
-    is complex."""
+    is complex.  ``progress(k, n, label)`` (e.g. :class:`certify.run.progress.Bar`) is told
+    after each step: M_w, the branches, each condition imposed, the physics line.  A
+    normal form longer than :data:`MAX_ORBIT_LENGTH` is refused (UsageError)."""
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
     if system_name != "four":
         raise UsageError(f"orbit: {show_word(normal)!r} is a word of the {system_name} system (two gaps); the "
                          "reduction of Section 4 is the four-particle one: a word with a, b and c")
+    check_length(normal)
+    total, done = len(normal) + 14 + self_similar, [0]
+
+    def step(label):
+        done[0] += 1
+        if progress is not None:
+            progress(done[0], total, label)
     cand = candidate_in(system_name, normal)
     spec = cand.spectrum
+    step("M_w and cp")
     an = Analysis(replace(cand, abcd=None, abcd_ring=None), lo, hi)   # no position variable x here
+    step("the real branches")
     C = spec.lrq_cp
     exists, feasible = contact_requirements(normal, cand.Mq, C)
+    step("n* and its run")
     mu = mu_requirement(spec.ring_cp)
     conditions = {"exists": [_cond(q) for q in [mu] + exists], "feasible": [_cond(q) for q in feasible]}
     for q in [mu] + exists:
         an.impose(q)
+        step(q.name)
     regions = {"exists": _copy(an.regions)}
     for q in feasible:
         an.impose(q)
+        step(q.name)
     regions["feasible"] = _copy(an.regions)
     types = type_requirements(spec.ring_cp)
     undecided = set()
@@ -458,17 +488,21 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool = True) -> OrbitResult:
         conditions[t] = [_cond(q) for q in types[t]]
         for q in types[t]:
             sub.impose(q)
+            step(f"{t}: {q.name}")
         regions[t] = sub.regions
         undecided |= _undecided(sub)
     for name, sign in (("complex", -1), ("real", 1)):
         sub = _fork(an)
         q = pair_requirement(spec, sign)
         sub.impose(q)
+        step(f"{name} pair")
         regions[name] = sub.regions
         if name == "complex":
             conditions["complex"] = [_cond(q)]
     undecided |= _undecided(an)
     pat = analyse_pattern(normal, lo, hi, formulas=False, diagnosis=False) if self_similar else None
+    if self_similar:
+        step("self-similar data (the physics line)")
 
     def formulas():
         N = left_eigenvector(cand.Mq)
