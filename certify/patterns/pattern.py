@@ -38,7 +38,8 @@ import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS
-from certify.algebra.poly import FIELD, RING, Lf, Q, lam, show, to_field, to_ring
+from certify.algebra.poly import FIELD, RING, Lf, Q, lam, r, show, to_field, to_ring
+from certify.dynamics.model import factor_flint, factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
 
@@ -352,7 +353,8 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
                         for R in an.regions for rc, why_ in R.undecided})
     def printed():
         M = [[show(e) for e in row] for row in cand.M.tolist()]
-        return M, show(sp.factor(sp.discriminant(sp.Poly(cp, lam)).as_expr())), datum(cand)
+        disc = sp.Poly(sp.discriminant(sp.Poly(cp, lam)).as_expr(), r)       # factored by python-flint
+        return M, show(factor_flint([Q(int(c.p), int(c.q)) for c in disc.all_coeffs()[::-1]])), datum(cand)
     res = PatternResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cp, lam)),
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
                         undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None)
@@ -370,8 +372,8 @@ def datum(cand) -> dict:
     def fmt(e):
         e = e.as_expr() if hasattr(e, "as_expr") else e
         num, den = sp.fraction(sp.cancel(e))
-        return _cap(f"({show(sp.factor(num) if len(str(num)) < 3000 else num)}) / "
-                    f"({show(sp.factor(den) if len(str(den)) < 3000 else den)})")
+        return _cap(f"({show(factor_lr(num) if len(str(num)) < 3000 else num)}) / "
+                    f"({show(factor_lr(den) if len(str(den)) < 3000 else den)})")
     out = {"q(0)": "(-1, u" + (", v)" if len(cand.q0) == 3 else ")"), "u": fmt(cand.q0[1])}
     if len(cand.q0) == 3:
         out["v"] = fmt(cand.q0[2])
