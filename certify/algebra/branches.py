@@ -651,9 +651,11 @@ class Spectrum:
            constant: Res_λ(h, cp)(rc) = ±c^k Π h(rc, λ_i) over the roots λ_i of cp(rc, λ),
            an identity of polynomials that evaluation at rc respects), decided exactly
            over Z: the minimal polynomial of rc does not divide the resultant;
-        2. where it vanishes, some root of cp(rc, λ) is a root of h: when certified balls
-           exclude h = 0 at every root of cp(rc, λ) but one, that one is the common root
-           (:meth:`_single_common_root`);
+        2. where it vanishes, some root of cp(rc, λ) is a root of h: every one when the
+           squarefree part of cp(rc, λ) (a rational leading coefficient) divides h(rc, λ)
+           exactly (a division in Q(rc)[λ] without inverses; it happens where n* is 0/0 on
+           every branch); else, when certified balls exclude h = 0 at every root of
+           cp(rc, λ) but one, that one is the common root (:meth:`_single_common_root`);
         3. else the gcd in Q(rc)[λ], made monic (an inverse in Q(rc)): evaluating a gcd of
            pseudo-remainders at a ball instead loses the branches of (ab)^12(cb)^12 at
            1024 bits."""
@@ -668,6 +670,9 @@ class Spectrum:
             if not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
                 return False
             if not R.is_zero():
+                if self.branches_at(rc) is not None and nf.divides(self._sqf[rc.key()], hk, m):
+                    sqf = self._sqf[rc.key()]          # every root of cp(rc, λ) is a root of h
+                    return lambda prec: nf.real_roots(sqf, rc, prec)
                 single = self._single_common_root(h, rc)
                 if single is not None:
                     return single
