@@ -682,13 +682,15 @@ class Spectrum:
         G, _ = nf.squarefree(G, m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
-    def _single_common_root(self, h, rc: Algebraic, maxprec: int = 1024):
+    def _single_common_root(self, h, rc: Algebraic, maxprec: int = 4096):
         """Given that cp(rc, λ) and h(rc, λ) have a common root (route 1 of
         :meth:`_common_roots`): prec -> [the real common root's ball] or [] (it is not
         real), when at some precision P ≤ ``maxprec`` certified balls exclude h = 0 at
         every distinct root of cp(rc, λ) (the roots of its squarefree part) but one, which
-        is then the common root; balls asked below P are made at P.  None when no precision
-        leaves a single candidate (the gcd decides then)."""
+        is then the common root, or but a pair of complex conjugate roots (h and cp are real
+        at the real rc: the common roots are closed under conjugation, so both are common,
+        and neither is real); balls asked below P are made at P.  None when no precision
+        decides so (the gcd decides then)."""
         if self.branches_at(rc) is None:
             return None
         sqf = self._sqf[rc.key()]
@@ -704,9 +706,12 @@ class Spectrum:
                 return None
             with precision(prec + GUARD):
                 Rp = _powers(rc.arb(prec), n)
-                left = [z for z in roots if _eval_terms(terms, Rp, _powers(z, n)).contains(0)]
+                left = [i for i, z in enumerate(roots) if _eval_terms(terms, Rp, _powers(z, n)).contains(0)]
+                if len(left) == 2 and _conjugate_pair(roots, *left):
+                    return []                    # both common (h is real), neither real
                 if len(left) != 1:
                     return None
+                left = [roots[i] for i in left]
                 z = left[0]
                 if z.imag > 0 or z.imag < 0:
                     return []
@@ -824,6 +829,18 @@ def _root_ball(sqf, rc, k, isolated=None):
             raise Undecided("the real roots could not be isolated")
         return isolated[max(known)][k]
     return ball
+
+
+def _conjugate_pair(roots, i: int, j: int) -> bool:
+    """roots[i], roots[j] (disjoint certified balls around distinct roots, every root in
+    one) enclose two complex conjugate non-real roots: roots[i] excludes the real axis and
+    its conjugate ball meets roots[j] and no other ball (the conjugate of its root is a root,
+    in a ball meeting that conjugate ball)."""
+    z = roots[i]
+    if not (z.imag > 0 or z.imag < 0):
+        return False
+    conj = z.conjugate()
+    return [k for k, w in enumerate(roots) if w.overlaps(conj)] == [j]
 
 
 def _at_least(compute, P: int, found):
