@@ -9,8 +9,8 @@ cp = det(λI - M_w), disc_λ cp factored over Q and the real roots of its factor
 of n*_x, cp) with its real roots in ]0, 1[; nothing of the engine but the word reader.
 For each target (``certify orbit`` on the 38-letter word, ``certify pattern
 (ab)^6(cb)^6``; with ``--long`` also ``orbit`` on the 122-letter attractor of r = 0.173):
-the median seconds of the script and of the engine's analysis (in process, caches emptied
-before each run: :func:`certify.run.runner.reset_caches`), and their ratio.  Run the copy
+the median seconds of the script and of the engine's analysis (in process, the engine's caches
+(:func:`certify.run.runner.reset_caches`) and SymPy's emptied before each run), and their ratio.  Run the copy
 of this file in another checkout to time that checkout's engine (the script imports the
 checkout it lives in).
 """
@@ -71,8 +71,11 @@ def engine(kind: str, word: str) -> None:
 
 
 def median_seconds(f, repeat: int) -> float:
+    """The median of ``repeat`` runs of f, each from SymPy's cache emptied (its memo would
+    make every run after the first one several times faster)."""
     times = []
     for _ in range(repeat):
+        sp.core.cache.clear_cache()
         start = time.perf_counter()
         f()
         times.append(time.perf_counter() - start)
