@@ -396,6 +396,7 @@ class Spectrum:
         self._eigenvalues = {}
         self._common = {}                  # (id of h, key of rc) -> (h, common roots of cp and h there)
         self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
+        self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -666,7 +667,7 @@ class Spectrum:
         if not isinstance(h, PolyElement):
             h = to_ring(sp.expand(expr(h)))
         if self.lc.degree() <= 0:
-            R = self.resultant(h)
+            R = self._resultant_of(h)
             if not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
                 return False
             if not R.is_zero():
@@ -681,6 +682,14 @@ class Spectrum:
             return False
         G, _ = nf.squarefree(G, m)
         return lambda prec: nf.real_roots(G, rc, prec)
+
+    def _resultant_of(self, h) -> flint.fmpz_poly:
+        """:meth:`resultant` of the polynomial object h, memoised by its identity (the same h
+        is tested at many r)."""
+        entry = self._resultant_ids.get(id(h))
+        if entry is None or entry[0] is not h:
+            entry = self._resultant_ids[id(h)] = (h, self.resultant(h))
+        return entry[1]
 
     def _single_common_root(self, h, rc: Algebraic, maxprec: int = 4096):
         """Given that cp(rc, λ) and h(rc, λ) have a common root (route 1 of
@@ -700,6 +709,8 @@ class Spectrum:
             return None
         n = max((max(i, j) for _c, i, j in terms), default=0)
 
+        seen = []                            # how many roots balls left at each precision tried
+
         def candidates(prec):
             roots = nf.root_balls(sqf, rc, prec)
             if roots is None:
@@ -707,6 +718,7 @@ class Spectrum:
             with precision(prec + GUARD):
                 Rp = _powers(rc.arb(prec), n)
                 left = [i for i, z in enumerate(roots) if _eval_terms(terms, Rp, _powers(z, n)).contains(0)]
+                seen.append(len(left))
                 if len(left) == 2 and _conjugate_pair(roots, *left):
                     return []                    # both common (h is real), neither real
                 if len(left) != 1:
@@ -724,6 +736,8 @@ class Spectrum:
             found = candidates(prec)
             if found is not None:
                 return _at_least(candidates, prec, found)
+            if len(seen) >= 2 and seen[-1] == seen[-2] >= 2 and prec >= 512:
+                return None                      # several real roots stay: likely all common, the gcd says
             prec *= 2
         return None
 
