@@ -1,7 +1,7 @@
 """The same certified results before and after a change of the exact engine.
 
-    python benchmarks/same_results.py write [--max-length 12] [--out FILE]
-    python benchmarks/same_results.py check [--max-length 12] [--digests FILE]
+    python benchmarks/same_results.py write [--max-length 12] [--out FILE] [--orbit]
+    python benchmarks/same_results.py check [--max-length 12] [--digests FILE] [--orbit]
 
 ``write`` records, for every census word up to ``--max-length`` collisions, the SHA-256
 of ``certify pattern WORD --json`` (the whole JSON: certified sets, end points,
@@ -12,6 +12,12 @@ digests equals, word for word, that of the engine of commit cb9d573 (before the 
 exact core) but for the reworded diagnosis of five words whose first collision fails:
 ``check`` shows that the faster engine certifies the very same sets.  The census records are compared
 the same way by ``tests/patterns/test_census.py`` (against the committed ``reports/census.json``).
+
+``--orbit`` does the same for ``certify orbit WORD --json`` (the census words of the
+four-particle system; ``reports/orbit-json-digests.txt``).  Its committed digests were written
+by the engine of the long-words branch; the engine before it (398b50a) gives the same JSON
+but for two texts that changed on purpose: the physics line (which now says what a branch
+names) and the self-similar verdict quoted from ``pattern`` (now without its diagnosis).
 """
 from __future__ import annotations
 
@@ -28,18 +34,22 @@ if str(ROOT) not in sys.path:  # run as a script from a source checkout
 from certify.patterns import analyse, census  # noqa: E402
 
 DIGESTS = ROOT / "reports" / "pattern-json-digests.txt"
+ORBIT_DIGESTS = ROOT / "reports" / "orbit-json-digests.txt"
 
 
-def digest(word: str) -> str:
-    """SHA-256 of ``certify pattern WORD --json`` over ]0, 1[."""
-    return hashlib.sha256(analyse(word, 0, 1).json_text().encode("utf-8")).hexdigest()
+def digest(word: str, orbit: bool = False) -> str:
+    """SHA-256 of ``certify pattern WORD --json`` (``orbit``: of ``certify orbit WORD --json``) over ]0, 1[."""
+    from certify.patterns.reduction_orbits import analyse as analyse_orbit
+    res = analyse_orbit(word, 0, 1) if orbit else analyse(word, 0, 1)
+    return hashlib.sha256(res.json_text().encode("utf-8")).hexdigest()
 
 
-def digests(max_length: int, progress=None) -> dict[str, str]:
+def digests(max_length: int, progress=None, orbit: bool = False) -> dict[str, str]:
+    from certify.patterns.periodic import read as read_word
     out = {}
-    words = census.words(max_length)
+    words = [w for w in census.words(max_length) if not orbit or read_word(w)[1] == "four"]
     for k, word in enumerate(words, 1):
-        out[word] = digest(word)
+        out[word] = digest(word, orbit)
         if progress:
             progress(k, len(words), word)
     return out
@@ -55,15 +65,18 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("action", choices=("write", "check"))
     ap.add_argument("--max-length", type=int, default=12)
-    ap.add_argument("--digests", "--out", dest="path", type=Path, default=DIGESTS)
+    ap.add_argument("--digests", "--out", dest="path", type=Path, default=None)
+    ap.add_argument("--orbit", action="store_true", help="certify orbit WORD --json instead of pattern")
     args = ap.parse_args(argv)
+    args.path = args.path or (ORBIT_DIGESTS if args.orbit else DIGESTS)
+    command = "orbit" if args.orbit else "pattern"
     show = (lambda k, n, w: print(f"\r{k}/{n} {w:<24}", end="", file=sys.stderr)) if sys.stderr.isatty() else None
     start = time.perf_counter()
-    now = digests(args.max_length, show)
+    now = digests(args.max_length, show, args.orbit)
     if show:
         print(file=sys.stderr)
     if args.action == "write":
-        text = (f"# SHA-256 of `certify pattern WORD --json` for the {len(now)} census words up to "
+        text = (f"# SHA-256 of `certify {command} WORD --json` for the {len(now)} census words up to "
                 f"{args.max_length} collisions (benchmarks/same_results.py)\n"
                 + "".join(f"{w} {d}\n" for w, d in now.items()))
         args.path.write_text(text, encoding="utf-8")

@@ -27,6 +27,7 @@ from math import gcd as _gcd
 
 import flint
 import sympy as sp
+from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
@@ -394,6 +395,8 @@ class Spectrum:
         self._branches = {}
         self._eigenvalues = {}
         self._common = {}                  # (id of h, key of rc) -> (h, common roots of cp and h there)
+        self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
+        self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -432,6 +435,10 @@ class Spectrum:
         """Res_λ(g, cp) ∈ Z[r] (python-flint), primitive; g an integer ``fmpz_mpoly`` in
         (r, λ, s) or an element of the engine's ring; cached by g's text."""
         G = g if isinstance(g, flint.fmpz_mpoly) else ring_to_mpoly(g)
+        if not G.is_zero():                # the same key for proportional polynomials (the same zeros)
+            G = G / G.content()
+            if G.coeffs()[0] < 0:
+                G = -G
         key = str(G)
         if key not in self._resultants:
             if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
@@ -550,6 +557,7 @@ class Spectrum:
     def _branches_at(self, rc, maxprec):
         m = nf.modulus(rc)
         sqf, g = nf.squarefree(nf.kpoly(self.ring_cp, m), m)
+        self._sqf[rc.key()] = sqf
         if len(g) > 2:
             return None                  # a root of multiplicity > 2: not handled
         prec = 128
@@ -637,18 +645,101 @@ class Spectrum:
 
     def _common_roots(self, h, rc: Algebraic):
         """The common roots of cp(rc, λ) and h(rc, λ): True when h(rc, λ) ≡ 0, False when
-        there is none (the gcd in Q(rc)[λ] is 1), else prec -> certified balls around them.
-        The gcd is made monic (an inverse in Q(rc)): evaluating a gcd of pseudo-remainders
-        at a ball instead loses the branches of (ab)^12(cb)^12 at 1024 bits."""
+        there is none, else prec -> certified balls around the real ones.  Three routes,
+        cheapest first, each exact or certified:
+
+        1. no common root when Res_λ(h, cp) does not vanish at rc (cp monic in λ up to a
+           constant: Res_λ(h, cp)(rc) = ±c^k Π h(rc, λ_i) over the roots λ_i of cp(rc, λ),
+           an identity of polynomials that evaluation at rc respects), decided exactly
+           over Z: the minimal polynomial of rc does not divide the resultant;
+        2. where it vanishes, some root of cp(rc, λ) is a root of h: every one when the
+           squarefree part of cp(rc, λ) (a rational leading coefficient) divides h(rc, λ)
+           exactly (a division in Q(rc)[λ] without inverses; it happens where n* is 0/0 on
+           every branch); else, when certified balls exclude h = 0 at every root of
+           cp(rc, λ) but one, that one is the common root (:meth:`_single_common_root`);
+        3. else the gcd in Q(rc)[λ], made monic (an inverse in Q(rc)): evaluating a gcd of
+           pseudo-remainders at a ball instead loses the branches of (ab)^12(cb)^12 at
+           1024 bits."""
         m = nf.modulus(rc)
         hk = nf.kpoly(h, m)
         if not hk:
             return True
+        if not isinstance(h, PolyElement):
+            h = to_ring(sp.expand(expr(h)))
+        if self.lc.degree() <= 0:
+            R = self._resultant_of(h)
+            if not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
+                return False
+            if not R.is_zero():
+                if self.branches_at(rc) is not None and nf.divides(self._sqf[rc.key()], hk, m):
+                    sqf = self._sqf[rc.key()]          # every root of cp(rc, λ) is a root of h
+                    return lambda prec: nf.real_roots(sqf, rc, prec)
+                single = self._single_common_root(h, rc)
+                if single is not None:
+                    return single
         G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
         if len(G) == 1:
             return False
         G, _ = nf.squarefree(G, m)
         return lambda prec: nf.real_roots(G, rc, prec)
+
+    def _resultant_of(self, h) -> flint.fmpz_poly:
+        """:meth:`resultant` of the polynomial object h, memoised by its identity (the same h
+        is tested at many r)."""
+        entry = self._resultant_ids.get(id(h))
+        if entry is None or entry[0] is not h:
+            entry = self._resultant_ids[id(h)] = (h, self.resultant(h))
+        return entry[1]
+
+    def _single_common_root(self, h, rc: Algebraic, maxprec: int = 4096):
+        """Given that cp(rc, λ) and h(rc, λ) have a common root (route 1 of
+        :meth:`_common_roots`): prec -> [the real common root's ball] or [] (it is not
+        real), when at some precision P ≤ ``maxprec`` certified balls exclude h = 0 at
+        every distinct root of cp(rc, λ) (the roots of its squarefree part) but one, which
+        is then the common root, or but a pair of complex conjugate roots (h and cp are real
+        at the real rc: the common roots are closed under conjugation, so both are common,
+        and neither is real); balls asked below P are made at P.  None when no precision
+        decides so (the gcd decides then)."""
+        if self.branches_at(rc) is None:
+            return None
+        sqf = self._sqf[rc.key()]
+        try:
+            terms = ring_terms(h)
+        except ValueError:                  # h still has √Δ: the gcd decides
+            return None
+        n = max((max(i, j) for _c, i, j in terms), default=0)
+
+        seen = []                            # how many roots balls left at each precision tried
+
+        def candidates(prec):
+            roots = nf.root_balls(sqf, rc, prec)
+            if roots is None:
+                return None
+            with precision(prec + GUARD):
+                Rp = _powers(rc.arb(prec), n)
+                left = [i for i, z in enumerate(roots) if _eval_terms(terms, Rp, _powers(z, n)).contains(0)]
+                seen.append(len(left))
+                if len(left) == 2 and _conjugate_pair(roots, *left):
+                    return []                    # both common (h is real), neither real
+                if len(left) != 1:
+                    return None
+                left = [roots[i] for i in left]
+                z = left[0]
+                if z.imag > 0 or z.imag < 0:
+                    return []
+                conj = z.conjugate()
+                if not z.overlaps(conj) or any(w is not z and w.overlaps(conj) for w in roots):
+                    return None
+                return [z.real]
+        prec = 128
+        while prec <= maxprec:
+            found = candidates(prec)
+            if found is not None:
+                return _at_least(candidates, prec, found)
+            if len(seen) >= 2 and seen[-1] == seen[-2] >= 2 and prec >= 512:
+                return None                      # several real roots stay: likely all common, the gcd says
+            prec *= 2
+        return None
 
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) (an expression or an element of
@@ -728,17 +819,56 @@ def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:
 def _root_ball(sqf, rc, k, isolated=None):
     """prec -> a ball around the k-th largest real root of a squarefree K[λ] polynomial;
     ``isolated`` (prec -> the real roots or None) is shared by the roots of one polynomial,
-    so that each precision isolates them once."""
+    so that each precision isolates them once.  A ball isolated at a higher precision than
+    asked is as good (it is tighter), and the roots are often isolated only from some
+    precision on (huge coefficients: :meth:`Spectrum._branches_at` found them at the
+    precision it seeds ``isolated`` with): the smallest successful isolation at or above
+    ``prec`` is used, else prec, 2·prec, 4·prec are tried, else the tightest ball known
+    (a true ball, only coarser: the caller's own test then stays undecided, never wrong).
+    Every isolation certifies the same number of real roots in the same order, so the
+    k-th ball encloses the same root at every precision."""
     isolated = {} if isolated is None else isolated
 
     def ball(prec):
-        for p in (prec, 2 * prec, 4 * prec):        # a tighter ball is as good (the isolation may
-            if p not in isolated:                   # fail at one precision and succeed at the next)
+        above = sorted(p for p, v in isolated.items() if p >= prec and v is not None)
+        if above:
+            return isolated[above[0]][k]
+        for p in (prec, 2 * prec, 4 * prec):
+            if p not in isolated:
                 isolated[p] = nf.real_roots(sqf, rc, p)
             if isolated[p] is not None:
                 return isolated[p][k]
-        raise ValueError("roots lost at higher precision")
+        known = [p for p, v in isolated.items() if v is not None]
+        if not known:
+            raise Undecided("the real roots could not be isolated")
+        return isolated[max(known)][k]
     return ball
+
+
+def _conjugate_pair(roots, i: int, j: int) -> bool:
+    """roots[i], roots[j] (disjoint certified balls around distinct roots, every root in
+    one) enclose two complex conjugate non-real roots: roots[i] excludes the real axis and
+    its conjugate ball meets roots[j] and no other ball (the conjugate of its root is a root,
+    in a ball meeting that conjugate ball)."""
+    z = roots[i]
+    if not (z.imag > 0 or z.imag < 0):
+        return False
+    conj = z.conjugate()
+    return [k for k, w in enumerate(roots) if w.overlaps(conj)] == [j]
+
+
+def _at_least(compute, P: int, found):
+    """prec -> compute(prec) for prec > P (memoised), ``found`` (= compute(P)) below: a
+    ball made at a higher precision than asked is as good."""
+    done = {P: found}
+
+    def at(prec):
+        if prec <= P:
+            return found
+        if prec not in done:
+            done[prec] = compute(prec)
+        return done[prec]
+    return at
 
 
 def _at_r(P, t) -> flint.fmpq_poly:

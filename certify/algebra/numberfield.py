@@ -100,6 +100,22 @@ def divide(f, g, m) -> list[flint.fmpq_poly]:
     return out
 
 
+def divides(g, f, m) -> bool | None:
+    """Whether g divides f in Q(α)[λ], exactly, for g with a rational leading coefficient
+    (no inverse in Q(α) needed); None when g's leading coefficient is not rational."""
+    g = _strip(g)
+    if not g or g[0].degree() > 0:
+        return None
+    lead = g[0][0]
+    g = [c / lead for c in g]
+    f = _strip(list(f))
+    while len(f) >= len(g):
+        q = f[0]
+        shifted = g + [flint.fmpq_poly(0)] * (len(f) - len(g))
+        f = _strip([reduce(a - q * b, m) for a, b in zip(f, shifted)][1:])
+    return not f
+
+
 def derivative(f, m) -> list[flint.fmpq_poly]:
     n = len(f) - 1
     return _strip([reduce(c * (n - i), m) for i, c in enumerate(f[:-1])])
@@ -127,6 +143,22 @@ def evaluate(f, R: flint.arb, z: flint.arb) -> flint.arb:
     for c in f:
         val = val * z + arb_of(c, R)
     return val
+
+
+def root_balls(f, alpha: Algebraic, prec: int):
+    """Certified complex balls around all the roots of a squarefree f ∈ Q(α)[λ], one per
+    root (python-flint's acb root isolation); None when they cannot be isolated at this
+    precision."""
+    try:
+        with precision(prec + GUARD):
+            R = alpha.arb(prec)
+            poly = flint.acb_poly([flint.acb(arb_of(c, R)) for c in f][::-1])
+            try:
+                return poly.roots(tol=flint.arb(2) ** -(prec // 2))
+            except ValueError:
+                return poly.roots()
+    except ValueError:
+        return None
 
 
 def real_roots(f, alpha: Algebraic, prec: int):

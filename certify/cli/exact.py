@@ -92,7 +92,7 @@ def cmd_orbit(args) -> int:
         if args.r_range:
             raise UsageError("--trap R certifies one r: not with --r-range (use one or the other)")
         return _trap(normal, system, args.trap, args.json)
-    result = analyse_orbit(args.word, lo, hi)
+    result = analyse_orbit(args.word, lo, hi, progress=progress.Bar("step"))
     print(result.json_text() if args.json else result.markdown())
     return 0
 

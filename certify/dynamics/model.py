@@ -126,6 +126,31 @@ def factor_flint(p) -> sp.Expr:
     return _keep_coeff(sp.Rational(int(coeff.p), int(coeff.q)), sp.Mul(*prod))
 
 
+_LR = flint.fmpz_mpoly_ctx.get(("r", "lam"), "lex")     # SymPy's order of the gens r, λ
+
+
+def factor_lr(e) -> sp.Expr:
+    """sp.factor(e) for a polynomial e in r, λ over Q (the same expression: the rational
+    coefficient in front of the primitive irreducible factors, each with a positive
+    leading coefficient in SymPy's lex order of (r, λ)), by python-flint's multivariate
+    factorisation (an order of magnitude faster on the datum of (ab)^6(cb)^6)."""
+    P = sp.Poly(e, r, lam)
+    if P.total_degree() <= 0:
+        return sp.factor(e)
+    den = 1
+    for c in P.coeffs():
+        den = sp.ilcm(den, sp.Rational(c).q)
+    F = _LR.from_dict({m: int(c * den) for m, c in P.terms()})
+    content, factors = F.factor()
+    coeff = sp.Rational(int(content), den)
+    prod = []
+    for f, m in factors:
+        if f.leading_coefficient() < 0:
+            f, coeff = -f, coeff * (-1) ** int(m)
+        prod.append(sp.Add(*[sp.Integer(int(k)) * r ** i * lam ** j for (i, j), k in f.to_dict().items()]) ** int(m))
+    return _keep_coeff(coeff, sp.Mul(*prod))
+
+
 def charpoly_flint(M) -> sp.Expr:
     """det(λI - M) for a 2x2 or 3x3 matrix of python-flint polynomials in r, as the
     expanded SymPy expression (equal to ``sp.expand(Matrix.charpoly(λ).as_expr())``)."""

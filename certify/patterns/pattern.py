@@ -38,7 +38,8 @@ import sympy as sp
 
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS
-from certify.algebra.poly import FIELD, RING, Lf, Q, lam, show, to_field, to_ring
+from certify.algebra.poly import FIELD, RING, Lf, Q, lam, r, show, to_field, to_ring
+from certify.dynamics.model import factor_flint, factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
 
@@ -294,15 +295,19 @@ def _nonempty(regions) -> list[dict]:
     return [region_set(R) for R in regions if R.pieces]
 
 
-def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
+def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True) -> PatternResult:
     """The exact analysis of a written period (any rotation / mirror) over ]lo, hi[.
 
     ``formulas=False`` (the census) skips what only the report prints: the period
     matrix, the factored discriminant and the datum's formulas (left empty); the
     certified sets, the undecided points, the diagnosis and the verdict are the same.
-    With ``formulas`` they are computed when first read."""
+    With ``formulas`` they are computed when first read.  ``diagnosis=False`` (the
+    physics line of ``certify orbit``, which reads only the certified sets) skips the
+    search for the collision that comes instead where the word is never feasible
+    (``diagnosis`` None, the verdict without it); the certified sets are the same."""
     import time
     start = time.perf_counter()
+    diagnose_failure = diagnosis
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
     system = BY_NAME[system_name]
@@ -332,7 +337,8 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
         # that the regions shrink before the tables with x (norms of twice the degree)
         for q in sorted(group, key=lambda q: q.has_x):
             an.impose(q)
-        if any(R.pieces for R in before) and not any(R.pieces for R in an.regions) and diagnosis is None:
+        if diagnose_failure and any(R.pieces for R in before) and not any(R.pieces for R in an.regions) \
+                and diagnosis is None:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
         before = _copy(an.regions)
     regions["feasible"] = _copy(an.regions)
@@ -347,7 +353,8 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True) -> PatternResult:
                         for R in an.regions for rc, why_ in R.undecided})
     def printed():
         M = [[show(e) for e in row] for row in cand.M.tolist()]
-        return M, show(sp.factor(sp.discriminant(sp.Poly(cp, lam)).as_expr())), datum(cand)
+        disc = sp.Poly(sp.discriminant(sp.Poly(cp, lam)).as_expr(), r)       # factored by python-flint
+        return M, show(factor_flint([Q(int(c.p), int(c.q)) for c in disc.all_coeffs()[::-1]])), datum(cand)
     res = PatternResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cp, lam)),
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
                         undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None)
@@ -365,8 +372,8 @@ def datum(cand) -> dict:
     def fmt(e):
         e = e.as_expr() if hasattr(e, "as_expr") else e
         num, den = sp.fraction(sp.cancel(e))
-        return _cap(f"({show(sp.factor(num) if len(str(num)) < 3000 else num)}) / "
-                    f"({show(sp.factor(den) if len(str(den)) < 3000 else den)})")
+        return _cap(f"({show(factor_lr(num) if len(str(num)) < 3000 else num)}) / "
+                    f"({show(factor_lr(den) if len(str(den)) < 3000 else den)})")
     out = {"q(0)": "(-1, u" + (", v)" if len(cand.q0) == 3 else ")"), "u": fmt(cand.q0[1])}
     if len(cand.q0) == 3:
         out["v"] = fmt(cand.q0[2])

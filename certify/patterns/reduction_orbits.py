@@ -393,17 +393,27 @@ def _digits(e: dict) -> str:
     return e["exact"] if e["exact"] is not None else "≈" + e["digits"]
 
 
+# One output, two objects named by branches: the orbit's branch is the eigenvalue λ of its
+# normal n* (a left eigenvector), the self-similar datum's the eigenvalue of its velocity q(0)
+# (a right eigenvector, in the plane n*^⊥).  (ab)^3(cb)^3's window is "lower" for the orbit and
+# "upper x₊" for the datum: the same r-interval, two eigenvalues.
+BRANCH_WORDS = ("there a branch names the eigenvalue of q(0); in the sets above and in the verdict it names "
+                "the eigenvalue λ of the normal n*, whose plane n*^⊥ holds the eigenvectors of the two other "
+                "branches: an orbit on the lower branch turns in the plane of the upper and middle ones")
+
+
 def physics(res: OrbitResult) -> str:
     """Where self-similar collapse data exist (``certify pattern``, the real-pair case) and
-    where the in-plane pair is complex (not collapse)."""
+    where the in-plane pair is complex (not collapse); the two meanings of a branch's name
+    said once (:data:`BRANCH_WORDS`)."""
     p = res.pattern
 
     def sets(lst):
         return "; ".join(f"{s['branch']}{'' if s['fixed_point'] == NO_X else ' ' + s['fixed_point']}: {s['set']}"
                          for s in lst) or "∅"
     text = "" if p is None else (
-        f"Self-similar collapse data of {res.written} (certify pattern, the real-pair case: the velocity an "
-        f"eigenvector of M_w for λ > 0 in the invariant plane): stable on {sets(p.stable)}; "
+        f"Self-similar collapse data of {res.written} (certify pattern, the real-pair case: the velocity q(0) an "
+        f"eigenvector of M_w for λ > 0 in the invariant plane; {BRANCH_WORDS}): stable on {sets(p.stable)}; "
         f"feasible on {sets(p.feasible)}. ")
     cx = res.sets("complex")
     if cx:
@@ -416,30 +426,61 @@ def physics(res: OrbitResult) -> str:
 
 
 # ------------------------------------------------------------------ the analysis
-def analyse(word: str, lo=0, hi=1, self_similar: bool = True) -> OrbitResult:
+MAX_ORBIT_LENGTH = 240
+"""The longest normal form ``analyse`` takes: twice the longest attractor met so far (the
+122 letters of r = 0.173, about 100 s of one core).  M_w has entries of degree L in r, the
+conditions degree about 2L in r with coefficients of about 3L bits, their resultants and
+norms degree several times that, and the work grows faster than L³; longer words (up to
+the reader's 400 letters: (ab)^100(cb)^100 ran silently for over 10 minutes) are refused
+with this reason (:func:`check_length`), shorter ones show progress on a terminal."""
+
+
+def check_length(normal: str) -> None:
+    """UsageError (one line, exit 2) for a normal form longer than :data:`MAX_ORBIT_LENGTH`."""
+    if len(normal) > MAX_ORBIT_LENGTH:
+        raise UsageError(f"orbit: {len(normal)} letters, more than {MAX_ORBIT_LENGTH}: the exact analysis grows "
+                         f"faster than the cube of the length (122 letters take a minute or two; 400 letters ran "
+                         f"for over 10 minutes without an end)")
+
+
+def analyse(word: str, lo=0, hi=1, self_similar: bool = True, progress=None) -> OrbitResult:
     """The periodic orbits of the reduction with the word ``word`` (any rotation or mirror),
     over ]lo, hi[: the sets of the module docstring, per real branch, certified.
     ``self_similar=False`` skips the pattern analysis of the physics line (the census has
     it already): ``pattern`` is then None and the physics line says only where the pair
-    is complex."""
+    is complex.  ``progress(k, n, label)`` (e.g. :class:`certify.run.progress.Bar`) is told
+    after each step: M_w, the branches, each condition imposed, the physics line.  A
+    normal form longer than :data:`MAX_ORBIT_LENGTH` is refused (UsageError)."""
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
     if system_name != "four":
         raise UsageError(f"orbit: {show_word(normal)!r} is a word of the {system_name} system (two gaps); the "
                          "reduction of Section 4 is the four-particle one: a word with a, b and c")
+    check_length(normal)
+    total, done = len(normal) + 14 + self_similar, [0]
+
+    def step(label):
+        done[0] += 1
+        if progress is not None:
+            progress(done[0], total, label)
     cand = candidate_in(system_name, normal)
     spec = cand.spectrum
+    step("M_w and cp")
     an = Analysis(replace(cand, abcd=None, abcd_ring=None), lo, hi)   # no position variable x here
+    step("the real branches")
     C = spec.lrq_cp
     exists, feasible = contact_requirements(normal, cand.Mq, C)
+    step("n* and its run")
     mu = mu_requirement(spec.ring_cp)
     conditions = {"exists": [_cond(q) for q in [mu] + exists], "feasible": [_cond(q) for q in feasible]}
     for q in [mu] + exists:
         an.impose(q)
+        step(q.name)
     regions = {"exists": _copy(an.regions)}
     for q in feasible:
         an.impose(q)
+        step(q.name)
     regions["feasible"] = _copy(an.regions)
     types = type_requirements(spec.ring_cp)
     undecided = set()
@@ -448,17 +489,21 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool = True) -> OrbitResult:
         conditions[t] = [_cond(q) for q in types[t]]
         for q in types[t]:
             sub.impose(q)
+            step(f"{t}: {q.name}")
         regions[t] = sub.regions
         undecided |= _undecided(sub)
     for name, sign in (("complex", -1), ("real", 1)):
         sub = _fork(an)
         q = pair_requirement(spec, sign)
         sub.impose(q)
+        step(f"{name} pair")
         regions[name] = sub.regions
         if name == "complex":
             conditions["complex"] = [_cond(q)]
     undecided |= _undecided(an)
-    pat = analyse_pattern(normal, lo, hi, formulas=False) if self_similar else None
+    pat = analyse_pattern(normal, lo, hi, formulas=False, diagnosis=False) if self_similar else None
+    if self_similar:
+        step("self-similar data (the physics line)")
 
     def formulas():
         N = left_eigenvector(cand.Mq)

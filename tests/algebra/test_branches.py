@@ -796,3 +796,57 @@ def test_sign_word_names_every_answer():
 
     assert sign_word({1, -1}) == "< 0, > 0"
     assert sign_word({0, None, NO_BRANCH, UNDECIDED}) == "= 0, absent, not real, undecided"
+
+
+def test_root_ball_uses_an_isolation_found_above_the_precision_asked():
+    """Two roots 2^-100 apart are isolated only from 1024 bits on; a ball asked at 128 bits
+    (as sign_at_point asks first) is the one isolated at 1024, not 'roots lost at higher
+    precision' (the crash of `certify orbit` on the 122-letter word of r = 0.173)."""
+    from certify.algebra.balls import ends
+    from certify.algebra.branches import _root_ball
+    eps = flint.fmpq(1, 2 ** 100)
+    rc = Algebraic.rational(flint.fmpq(1, 3))
+    m = nf.modulus(rc)
+    # (λ - 1)(λ - 1 - eps) in Q(rc)[λ], highest coefficient first
+    sqf = [nf.reduce(c, m) for c in (flint.fmpq(1), -(2 + eps), 1 + eps)]
+    assert nf.real_roots(sqf, rc, 512) is None
+    found = nf.real_roots(sqf, rc, 1024)
+    assert found is not None and len(found) == 2
+    isolated = {1024: found}
+    roots = (1 + eps, flint.fmpq(1))                      # largest first
+    for k in range(2):
+        lo, hi = ends(_root_ball(sqf, rc, k, isolated)(128))
+        assert lo <= roots[k] <= hi and not lo <= roots[1 - k] <= hi
+
+
+def test_exact_zero_tests_agree_with_the_gcd_in_the_number_field(monkeypatch):
+    """Spectrum.vanishes_at decides most zeros at an algebraic r by the resultant over Z and
+    certified balls (routes 1-2 of _common_roots); with the resultant hidden, every one goes
+    to the gcd in Q(rc)[λ] (route 3).  The two agree on every contact condition of the orbit
+    of (ab)^2(cb)^2 and every condition with √Δ of its self-similar datum, at every critical
+    value of its table, on every branch, numerator, denominator and norms, and both answers
+    occur."""
+    from certify.algebra.poly import mpoly_to_ring
+    from certify.dynamics.systems import candidate_in
+    from certify.patterns.feasibility import condition, fixed_point_data, prefix_requirements
+    from certify.patterns.reduction_orbits import contact_requirements
+    cand = candidate_in("four", "ababcbcb")
+    fast = cand.spectrum
+    slow = Spectrum(fast.cp, fast.ring_cp)
+    monkeypatch.setattr(slow, "resultant", lambda g: flint.fmpz_poly(0))
+    exists, feasible = contact_requirements("ababcbcb", cand.Mq, fast.lrq_cp)
+    conds = [condition(req, fast.lrq_cp) for req in exists + feasible]
+    fps = fixed_point_data(cand.abcd_ring, fast.ring_cp)         # the self-similar datum's, with √Δ
+    reqs, _ = prefix_requirements("ababcbcb", 8, cand.q0, cand.steps, cand.q0_other)
+    conds += [condition(req, fast.lrq_cp, fp) for req in reqs if req.has_x for fp in fps]
+    answers = []
+    for cond in conds:
+        hs = [cond.N[0], cond.D[0]] + [mpoly_to_ring(e) for e in cond.norms()]
+        for rc in fast.critical_values(cond, 0, 1):
+            branches = fast.branches_at(rc)
+            for k in range(len(branches or [])):
+                for h in hs:
+                    if h:
+                        answers.append((fast.vanishes_at(h, rc, k), slow.vanishes_at(h, rc, k)))
+    assert answers and all(a == b for a, b in answers)
+    assert {a for a, _ in answers} == {True, False}

@@ -53,6 +53,11 @@ def test_ab_cb_attracting_windows_are_the_stable_windows_of_pattern(n):
     assert _windows(_attracting(orbit)) == _windows(stable)
     assert [a["pair"] for a in orbit.attracting()] == ["real"] * len(stable)
     assert "attracting periodic orbit of the reduction" in orbit.verdict
+    # one window, two eigenvalues: the orbit's branch is λ of its normal n* (the smallest, lower),
+    # the datum's that of its velocity q(0) in the plane n*^⊥ (upper); the physics line says so
+    assert {a["branch"] for a in orbit.attracting()} == {"lower"}
+    assert {s["branch"] for s in pattern.stable} == {"upper"}
+    assert ro.BRANCH_WORDS in orbit.physics and "eigenvalue of q(0)" in ro.BRANCH_WORDS
 
 
 def test_a_flipped_modulus_condition_breaks_the_agreement(monkeypatch):
@@ -196,6 +201,7 @@ def test_json_follows_the_schema(complex_orbit):
     (["orbit", "[ac]b"], "four-particle"),
     (["orbit", "ababcb", "--r-range", "1/2", "1/3"], "--r-range"),
     (["orbit", "ababcb", "--r-range", "x", "1"], "--r-range"),
+    (["orbit", "(ab)^61(cb)^61"], f"more than {ro.MAX_ORBIT_LENGTH}"),     # 244 letters: refused before any work
 ])
 def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
     assert cli.main(argv) == 2
@@ -305,3 +311,33 @@ def test_types_are_those_of_the_multipliers_at_points_and_on_intervals(word, rs)
             types = {t for t in ro.TYPES for R_ in res.regions[t] if R_.branch == o.branch
                      and any(lo < x < hi for lo, hi in R_.merged()[0])}
             assert types == {o.kind}, (word, r, o.branch, types)
+
+
+# ------------------------------------------------------------------ long words
+ATTRACTOR_0173 = "(abacbc)^5a(bcabac)^4bc(ab)^2(cbcaba)^5c(bacbca)^4ba(cb)^2"    # 122 letters, r = 0.173
+
+
+def test_long_words_are_refused_with_the_limit_and_a_progress_callback_is_told():
+    assert len(ro.read("(ab)^60(cb)^60")[0]) == ro.MAX_ORBIT_LENGTH
+    with pytest.raises(UsageError, match=str(ro.MAX_ORBIT_LENGTH)):
+        ro.check_length("ab" * (ro.MAX_ORBIT_LENGTH // 2 + 1))
+    calls = []
+    res = analyse("ababcbcb", self_similar=False, progress=lambda k, n, label: calls.append((k, n, label)))
+    assert [k for k, _n, _ in calls] == list(range(1, len(calls) + 1)) and calls[-1][0] == calls[-1][1]
+    assert res.pattern is None
+
+
+@pytest.mark.slow
+def test_the_122_letter_attractor_of_0173_is_certified_and_agrees_with_the_point_check():
+    """The word r = 0.173 settles on (identify): `orbit` crashed on it ("roots lost at higher
+    precision"); now its attracting window on the upper branch (complex pair) contains 0.173,
+    and the exact point decision at 173/1000 says attracting on the same branch."""
+    res = analyse(ATTRACTOR_0173, self_similar=False)
+    assert len(res.normal) == 122
+    r0 = Algebraic.rational(Q(173, 1000))
+    hits = [(R_.branch, a, b) for R_ in res.regions["attracting"] for a, b in R_.merged()[0] if a < r0 < b]
+    assert [h[0] for h in hits] == [0]
+    assert [a["pair"] for a in res.attracting() if a["branch"] == "upper"] == ["complex"]
+    point = ro.orbit_at(ATTRACTOR_0173, Q(173, 1000))
+    assert point[0].kind == "attracting" and point[0].pair == "complex"
+    assert all(p.kind != "attracting" for p in point[1:])

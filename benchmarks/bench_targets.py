@@ -1,0 +1,99 @@
+"""The speed targets of issue 26: the engine against a plain SymPy script, in one sitting.
+
+    python benchmarks/bench_targets.py [--repeat N] [--long]
+
+The yardstick (:func:`algebra`) is a plain SymPy script doing the core of ``certify
+pattern``'s algebra on a word: M_w = K_{c_L} ··· K_{c_1} (expanded after each letter),
+cp = det(λI - M_w), disc_λ cp factored over Q and the real roots of its factors in ]0, 1[
+(SymPy's isolation), the left eigenvector n* of M_w by Cramer's rule, and Res_λ(numerator
+of n*_x, cp) with its real roots in ]0, 1[; nothing of the engine but the word reader.
+For each target (``certify orbit`` on the 38-letter word, ``certify pattern
+(ab)^6(cb)^6``; with ``--long`` also ``orbit`` on the 122-letter attractor of r = 0.173):
+the median seconds of the script and of the engine's analysis (in process, the engine's caches
+(:func:`certify.run.runner.reset_caches`) and SymPy's emptied before each run), and their ratio.  Run the copy
+of this file in another checkout to time that checkout's engine (the script imports the
+checkout it lives in).
+"""
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import sympy as sp
+
+ROOT = Path(__file__).resolve().parent.parent
+if str(ROOT) not in sys.path:  # run as a script from a source checkout
+    sys.path.insert(0, str(ROOT))
+
+from certify.patterns.periodic import read  # noqa: E402
+
+TARGETS = (("orbit", "abacbabcbabcbabcabacbcabcbabcbabcbacbc"), ("pattern", "(ab)^6(cb)^6"))
+LONG = ("orbit", "(abacbc)^5a(bcabac)^4bc(ab)^2(cbcaba)^5c(bacbca)^4ba(cb)^2")     # r = 0.173's attractor
+r, lam = sp.symbols("r lambda")
+H = (1 + r) / 2
+K = {"a": sp.Matrix([[-r, 0, 0], [H, 1, 0], [0, 0, 1]]),
+     "b": sp.Matrix([[1, H, 0], [0, -r, 0], [0, H, 1]]),
+     "c": sp.Matrix([[1, 0, 0], [0, 1, H], [0, 0, -r]])}
+
+
+def real_roots_01(p) -> list:
+    """The real roots of p in ]0, 1[, isolated by SymPy (intervals of its factors)."""
+    out = []
+    for f, _m in sp.factor_list(sp.Poly(p, r))[1]:
+        out += [iv for iv, _k in f.intervals() if iv[1] > 0 and iv[0] < 1]
+    return out
+
+
+def algebra(word: str) -> int:
+    normal = read(word)[0]
+    M = sp.eye(3)
+    for letter in normal:
+        M = (K[letter] * M).applyfunc(sp.expand)
+    cp = M.charpoly(lam).as_expr()
+    disc = sp.discriminant(cp, lam)
+    n = len(real_roots_01(disc))
+    A = (M.T - lam * sp.eye(3)).applyfunc(sp.expand)
+    nx = sp.expand(-A[0, 2] * A[1, 1] + A[0, 1] * A[1, 2])        # numerator of n*_x (rows 0, 1)
+    res = sp.resultant(sp.Poly(nx, lam), sp.Poly(cp, lam))
+    return n + len(real_roots_01(res.as_expr()))
+
+
+def engine(kind: str, word: str) -> None:
+    """The engine's analysis behind ``certify KIND WORD``, from cold caches."""
+    from certify.patterns import analyse as analyse_pattern
+    from certify.patterns.reduction_orbits import analyse as analyse_orbit
+    from certify.run import runner
+    runner.reset_caches()
+    (analyse_orbit if kind == "orbit" else analyse_pattern)(word)
+
+
+def median_seconds(f, repeat: int) -> float:
+    """The median of ``repeat`` runs of f, each from SymPy's cache emptied (its memo would
+    make every run after the first one several times faster)."""
+    times = []
+    for _ in range(repeat):
+        sp.core.cache.clear_cache()
+        start = time.perf_counter()
+        f()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--long", action="store_true", help="also orbit on the 122-letter word (minutes)")
+    args = ap.parse_args(argv)
+    for kind, word in TARGETS + ((LONG,) if args.long else ()):
+        ref = median_seconds(lambda w=word: algebra(w), args.repeat)
+        eng = median_seconds(lambda k=kind, w=word: engine(k, w), args.repeat)
+        print(f"{kind} {word}: script {ref:.2f} s, engine {eng:.2f} s, ratio {eng / ref:.2f} "
+              f"(medians of {args.repeat})", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
