@@ -15,13 +15,12 @@ Remark 3.2 (T26, the threshold 5-2√6 of (ab)^3(cb)^3) is in proofs/section3_re
 from __future__ import annotations
 
 import re
-from functools import cache
 
 from certify.algebra import Algebraic, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
 from certify.patterns import analyse, fmt, vanishes_on_branch
 from certify.patterns import parse as parse_word
-from certify.run import PASS, Check, certificate, conclude, overridden, quantity, replaced
+from certify.run import PASS, Check, certificate, conclude, overridden, quantity, replaced, replaying
 
 
 def expand_pattern(pattern: str) -> str:
@@ -43,7 +42,7 @@ def expand_pattern(pattern: str) -> str:
 N_MAX = 6                      # (ab)^n(cb)^n analysed for n = 2..N_MAX (about a minute in all)
 
 
-@cache
+@replaying
 def pattern(word: str):
     """`certify pattern word` over ]0, 1[ (memoised for the certificates of one process)."""
     return analyse(word)

@@ -34,6 +34,9 @@ from functools import cache
 import flint
 import sympy as sp
 
+from certify.obligations import fact
+
+from . import facts
 from .poly import lam, r
 from .poly import parse as parse_paper
 from .sturm import count_roots
@@ -248,6 +251,7 @@ class Result:
         return self.holds
 
 
+@fact(lambda res, E: facts.identity(res.holds, E, 0))
 def is_zero(E) -> Result:
     """E ≡ 0 on the circles, by both routes; RoutesDisagree if they differ."""
     za, ea = groebner_is_zero(E)
@@ -259,6 +263,7 @@ def is_zero(E) -> Result:
                        f"Weierstrass substitution: {eb[0]}"], (ea[0], ea[1], eb[0]))
 
 
+@fact(lambda res, lhs, rhs: facts.identity(res.holds, lhs, rhs))
 def equal(lhs, rhs) -> Result:
     """lhs ≡ rhs (scalars, or vectors component by component)."""
     if isinstance(lhs, sp.MatrixBase) or isinstance(rhs, sp.MatrixBase):

@@ -13,6 +13,8 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.identify`, :mod:`.section5_orbits`: the periodic words of simulated orbits, certified;
   the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
+from certify.obligations import replaying
+
 from . import checks, files, plots, progress, report, runner, saving
 from .checks import check_of, combined, concluded, count_check, digits_check, eliminant_check, identity, result_check
 from .files import load_findings
@@ -55,7 +57,8 @@ from .section5_orbits import explanations
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
-    "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name", "sign_chart",
+    "replaying", "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name",
+    "sign_chart",
     "spectrum_figures",
     "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED",
     "PASS", "STATUSES", "Certificate", "Check", "Context",

@@ -454,6 +454,34 @@ def render_json(results) -> str:
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
+CERTIFICATES_FORMAT = "certify-certificates/1"   # certify_kernel.FORMAT: docs/verify.md
+UNCOVERED = "no fact of the obligation language was recorded for this check"
+
+
+def _subclaim(role: str, check) -> dict:
+    data = {"role": role, "statement": " ".join(str(check.statement).split()), "holds": holds(check),
+            "counts": bool(check.counts), "obligations": list(check.obligations or [])}
+    if not data["obligations"]:
+        data["uncovered"] = UNCOVERED
+    return data
+
+
+def render_certificates(results) -> str:
+    """The text of certificates.json: for each certificate its obligations (the facts the
+    engine recorded, certify.obligations) and its sub-claims, each naming the obligations its
+    verdict was computed from; one certificate per line, deterministic like report.json."""
+    head = {"format": CERTIFICATES_FORMAT, "paper": VERSION, "schema": "docs/verify.md"}
+    lines = []
+    for cert, outcome in results:
+        subs = [_subclaim("printed", c) for c in outcome.printed] + \
+            [_subclaim("corrected", c) for c in outcome.corrected]
+        lines.append(json.dumps({"id": cert.id, "status": outcome.status, "subclaims": subs,
+                                 "obligations": list(outcome.obligations)},
+                                ensure_ascii=False, separators=(",", ":"), sort_keys=True))
+    text = json.dumps(head, ensure_ascii=False)[:-1] + ', "certificates": [\n' + ",\n".join(lines) + "\n]}\n"
+    return text
+
+
 def render_timings(timings: dict) -> str:
     """The text of timings.json: the runner's timings and their total, in seconds."""
     per_cert = timings.get("certificates", {})
@@ -465,7 +493,7 @@ def render_timings(timings: dict) -> str:
 # Writing, and comparing with a committed report
 
 def write_report(results, timings: dict, out_dir) -> str:
-    """Write REPORT.md, report.json and timings.json into ``out_dir``.
+    """Write REPORT.md, report.json, certificates.json and timings.json into ``out_dir``.
 
     All texts are rendered before anything is written, and each file is
     replaced atomically; REPORT.md comes last.  Returns the text of REPORT.md.
@@ -473,7 +501,9 @@ def write_report(results, timings: dict, out_dir) -> str:
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     markdown, data, times = render_markdown(results), render_json(results), render_timings(timings)
+    certificates = render_certificates(results)
     write_atomic(out / "report.json", data)
+    write_atomic(out / "certificates.json", certificates)
     write_atomic(out / "timings.json", times)
     write_atomic(out / "REPORT.md", markdown)
     return markdown

@@ -22,7 +22,7 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 
-from certify import caches
+from certify import caches, obligations
 from certify.errors import StatementError, UsageError
 
 from .executors import default_jobs  # noqa: F401  (runner.default_jobs, used by the CLI and benchmarks)
@@ -46,6 +46,11 @@ class Check:
     evidence: list[str] = field(default_factory=list)
     corrects: Check | str | None = None
     counts: bool = True
+    obligations: list[str] | None = None
+
+    def __post_init__(self):
+        if self.obligations is None:     # the facts recorded since the last check: its verdict's
+            self.obligations = obligations.take()
 
 
 # The kinds of erratum, the first column a referee reads in the Errata.
@@ -75,6 +80,7 @@ class Outcome:
     misprint: str = ""
     agrees: bool | None = None
     reason: str = ""
+    obligations: list[dict] = field(default_factory=list)   # the certificate's facts (certify.obligations)
 
 
 def holds(check: Check) -> bool:
@@ -320,7 +326,8 @@ class Context:
             q = QUANTITIES[name]
             args = {n: self.get(n) for n in q.needs}
             t = time.perf_counter()
-            self.values[name] = q.func(**args)
+            with obligations.quiet():
+                self.values[name] = q.func(**args)
             self.seconds[name] = time.perf_counter() - t
         return self.values[name]
 
@@ -349,7 +356,9 @@ def run_certificate(cert: Certificate, ctx: Context | None = None,
         printed.update(overrides)
     try:
         args = {n: ctx.get(n) for n in cert.needs}
-        outcome = cert.func(**args, **printed)
+        with obligations.recording(cert.id) as rec:
+            outcome = cert.func(**args, **printed)
+        outcome.obligations = rec.items
     except StatementError as exc:  # a printed text the grammar does not read: never a guess
         outcome = Outcome(FAIL, [Check("the printed text was read", False, [f"`{exc}`"])])
     except Exception as exc:  # a check that could not be completed is a FAIL
@@ -369,11 +378,11 @@ def plain(outcome: Outcome) -> Outcome:
     bools.  That is all a report needs, and it crosses process boundaries (pickle)."""
     def check(c: Check) -> Check:
         return Check(str(c.statement), holds(c), [str(e) for e in c.evidence],
-                     corrected_statement(c) or None, c.counts)
+                     corrected_statement(c) or None, c.counts, list(c.obligations or []))
     return Outcome(outcome.status, [check(c) for c in outcome.printed],
                    [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
                    [str(f) for f in outcome.figures], str(outcome.note), str(outcome.kind),
-                   str(outcome.misprint), outcome.agrees, str(outcome.reason))
+                   str(outcome.misprint), outcome.agrees, str(outcome.reason), list(outcome.obligations))
 
 
 def units(certs: list[Certificate]) -> list[list[Certificate]]:

@@ -1,0 +1,279 @@
+"""One checker per kind of obligation (docs/verify.md).  A checker returns nothing when the
+obligation holds, raises :class:`Failed` with the reason when it does not, and
+:class:`Unsupported` when checking it needs something the kernel does not have."""
+from __future__ import annotations
+
+from fractions import Fraction
+
+from .poly import (
+    at_r,
+    d_lambda,
+    deg,
+    in_lambda,
+    madd,
+    mmul,
+    mpoly,
+    mul,
+    rat,
+    reduce_circles,
+    resultant_in,
+    squarefree,
+    sub,
+    upoly,
+)
+from .sturm import Algebraic, count, real_roots
+
+
+class Failed(Exception):
+    """The obligation is false (or malformed)."""
+
+
+class Unsupported(Exception):
+    """The kernel cannot check this obligation (the reason names what it lacks)."""
+
+
+def _end(x):
+    return None if x is None else rat(x)
+
+
+def root_count(ob: dict, env) -> None:
+    """Sturm's theorem: the number of distinct real roots of p in ]lo, hi] is V(lo) − V(hi)."""
+    n = count(upoly(ob["poly"]), _end(ob.get("lo")), _end(ob.get("hi")))
+    if n != ob["count"]:
+        raise Failed(f"Sturm counts {n} roots in ]{ob.get('lo')}, {ob.get('hi')}], not {ob['count']}")
+
+
+def algebraic(ob: dict, env) -> None:
+    """A square-free polynomial with an interval holding exactly one of its roots (Sturm)."""
+    try:
+        Algebraic.of(ob["number"])
+    except ValueError as exc:
+        raise Failed(f"not an isolated algebraic number: {exc}") from None
+
+
+def digits(ob: dict, env) -> None:
+    """The number lies in [d − h, d + h], h half a unit of the last printed digit, exactly when
+    it rounds to the printed decimal d; decided by comparing it with the two rationals."""
+    a = Algebraic.of(ob["number"])
+    text = ob["printed"]
+    d = Fraction(text)
+    places = len(text.split(".")[1]) if "." in text else 0
+    h = Fraction(1, 2 * 10 ** places)
+    inside = a.compare_rational(d - h) >= 0 and a.compare_rational(d + h) <= 0
+    if inside != ob["holds"]:
+        raise Failed(f"the number is {'inside' if inside else 'outside'} the rounding interval of {text}")
+
+
+def compare(ob: dict, env) -> None:
+    """sign(a − b) for two algebraic numbers (disjoint intervals, or a common root of the two
+    polynomials in both intervals)."""
+    s = Algebraic.of(ob["a"]).compare(Algebraic.of(ob["b"]))
+    if s != ob["sign"]:
+        raise Failed(f"sign(a − b) is {s}, not {ob['sign']}")
+
+
+def sign_at(ob: dict, env) -> None:
+    """The sign of a polynomial at an algebraic number (gcd for 0, else bisection until the
+    polynomial has no root in the interval, then its value at an end)."""
+    s = Algebraic.of(ob["number"]).sign_of(upoly(ob["poly"]))
+    if s != ob["sign"]:
+        raise Failed(f"the sign is {s}, not {ob['sign']}")
+
+
+def _fraction_parts(data: dict, names: list) -> tuple[dict, dict]:
+    def conv(part):
+        return mpoly({"vars": names, "terms": part})
+    return conv(data["num"]), conv(data.get("den", [["1", [0] * len(names)]]))
+
+
+def identity(ob: dict, env) -> None:
+    """lhs ≡ rhs, component by component, as rational functions of the variables, on the
+    circles cos² + sin² = 1 of each pair: n_l·d_r − n_r·d_l reduces to 0 modulo the circles
+    (a Gröbner basis, :func:`reduce_circles`), which holds exactly when the difference lies in
+    the ideal; the ideal is prime and its real points are Zariski-dense in its zero set, so a
+    non-zero normal form means the identity is false."""
+    names = ob["vars"]
+    pairs = [(names.index(c), names.index(s)) for c, s in ob.get("circles", [])]
+    if len(ob["lhs"]) != len(ob["rhs"]):
+        raise Failed("the two sides have different numbers of components")
+    zero = True
+    for k, (lhs, rhs) in enumerate(zip(ob["lhs"], ob["rhs"])):
+        nl, dl = _fraction_parts(lhs, names)
+        nr, dr = _fraction_parts(rhs, names)
+        if not reduce_circles(dl, pairs) or not reduce_circles(dr, pairs):
+            raise Failed(f"component {k + 1}: a denominator vanishes identically")
+        if reduce_circles(madd(mmul(nl, dr), mmul(nr, dl), -1), pairs):
+            zero = False
+    if zero != ob["holds"]:
+        raise Failed("the two sides are " + ("equal" if zero else "not equal") +
+                     f" (the obligation says {'equal' if ob['holds'] else 'not equal'})")
+
+
+_NAMES = ("N0", "N1", "D0", "D1", "delta")
+
+
+def _norm(p0: dict, p1: dict, delta: dict) -> dict:
+    """N₀² − N₁²Δ: the product of N₀ + N₁√Δ and its conjugate, zero where either is."""
+    return madd(mmul(p0, p0), mmul(mmul(p1, p1), delta), -1) if p1 else p0
+
+
+def bounding(cp: dict, parts: dict) -> list:
+    """The polynomials in r whose real roots bound the cells: Res_λ(cp, ∂cp/∂λ) (zero where
+    two eigenvalues meet, or where the leading coefficient vanishes), the leading coefficient
+    of cp in λ, and Res_λ(P, cp) for P the norms of the numerator and denominator of g and Δ
+    (a resultant vanishes at r where P and cp have a common root λ).  Off their roots the real
+    branches are continuous and separate, and g keeps its sign on each (continuity, no zero)."""
+    out = [resultant_in(cp, d_lambda(cp)), in_lambda(cp)[-1]]
+    delta = parts.get("delta") or {}
+    polys = [_norm(parts["N0"], parts.get("N1") or {}, delta), _norm(parts["D0"], parts.get("D1") or {}, delta)]
+    if delta:
+        polys.append(delta)
+    for P in polys:
+        if not P:
+            raise Unsupported("a part of the condition is identically 0")
+        if any(any(k) for k in P):
+            R = resultant_in(P, cp)
+            if not R:
+                raise Unsupported("a norm of the condition vanishes on a whole branch (Res_λ ≡ 0): the "
+                                  "kernel lacks factoring cp over Q(r)")
+            out.append(R)
+    return [squarefree(b) for b in out if deg(b) > 0]
+
+
+def _roots_inside(B: list, lo: Algebraic, hi: Algebraic) -> int:
+    """The number of roots of B in ]lo, hi[ (lo < hi algebraic): refine each end until B has
+    no root in its interval but the end itself, then count on ]lo.hi, hi.lo] (Sturm)."""
+    for a in (lo, hi):
+        if not a.rational:
+            for _ in range(10_000):
+                own = 1 if a.sign_of(B) == 0 else 0
+                if count(B, a.lo, a.hi) == own:
+                    break
+                a.bisect()
+    while not (lo.hi <= hi.lo):
+        lo.bisect()
+        hi.bisect()
+    n = count(B, lo.hi, hi.lo)
+    if hi.rational and hi.sign_of(B) == 0:
+        n -= 1
+    return n
+
+
+def _sign_of_surd(p0: list, p1: list, delta: list, lam: Algebraic) -> int:
+    """sign(P₀ + P₁√Δ) at λ (Δ > 0 there): the signs of P₀ and P₁ decide unless they differ;
+    then P₀ + P₁√Δ has the sign of P₀ when P₀² > P₁²Δ and the opposite one otherwise."""
+    s0 = lam.sign_of(p0)
+    s1 = lam.sign_of(p1) if p1 else 0
+    if s1 == 0 or s0 == s1:
+        return s0 if s0 else s1
+    if s0 == 0:
+        return s1
+    return s0 * lam.sign_of(sub(mul(p0, p0), mul(mul(p1, p1), delta)))
+
+
+def sign_of_condition(parts: dict, r0: Fraction, lam: Algebraic):
+    """The sign of g = (N₀ + N₁√Δ)/(D₀ + D₁√Δ) at (r0, λ): None when Δ < 0 (x not real)."""
+    at = {k: (at_r(v, r0) if v else []) for k, v in parts.items()}
+    delta = at.get("delta") or []
+    if parts.get("delta"):
+        sd = lam.sign_of(delta)
+        if sd < 0:
+            return None
+        if sd == 0:
+            raise Unsupported("Δ = 0 at a sample point")
+    sn = _sign_of_surd(at["N0"], at.get("N1") or [], delta, lam)
+    sd_ = _sign_of_surd(at["D0"], at.get("D1") or [], delta, lam)
+    if sd_ == 0:
+        raise Failed(f"the condition has a pole at the sample r = {r0}")
+    return sn * sd_
+
+
+def load_table(ob: dict):
+    """The table's polynomials and cell ends, read."""
+    names = ["r", "λ"]
+    cp = mpoly({"vars": names, "terms": ob["cp"]})
+    parts = {k: mpoly({"vars": names, "terms": ob["parts"][k]}) for k in _NAMES if ob["parts"].get(k)}
+    parts.setdefault("N0", {})
+    parts.setdefault("D0", {})
+    ends = [Algebraic.of(e) for e in ob["ends"]]
+    return cp, parts, ends
+
+
+def sign_table(ob: dict, env) -> None:
+    """The signs of g on the real eigenvalue branches λ₀ > λ₁ > ... of cp(λ, r) over each cell
+    ]e_i, e_{i+1}[: no bounding polynomial (:func:`bounding`) has a root in the cell, so the
+    number of real branches and g's sign on each are those at the cell's sample (real roots of
+    cp(λ, r₀) isolated by Sturm, the sign of g by exact arithmetic at each)."""
+    cp, parts, ends = load_table(ob)
+    if len(ob["samples"]) != len(ends) - 1 or len(ob["signs"]) != len(ends) - 1:
+        raise Failed("cells, samples and signs do not match")
+    for a, b in zip(ends, ends[1:]):
+        if a.compare(b) >= 0:
+            raise Failed("the cell ends are not increasing")
+    key = (str(ob["cp"]), str(ob["parts"]))
+    if key not in env.setdefault("bounding", {}):
+        env["bounding"][key] = bounding(cp, parts)
+    for k, (a, b) in enumerate(zip(ends, ends[1:])):
+        for B in env["bounding"][key]:
+            if _roots_inside(B, a, b):
+                raise Failed(f"cell {k + 1}: a bounding polynomial of degree {deg(B)} has a root inside")
+        r0 = rat(ob["samples"][k])
+        if a.compare_rational(r0) >= 0 or b.compare_rational(r0) <= 0:
+            raise Failed(f"cell {k + 1}: the sample {r0} is not inside the cell")
+        lams = real_roots(at_r(cp, r0))
+        claimed = ob["signs"][k]
+        if len(lams) != len(claimed):
+            raise Failed(f"cell {k + 1}: cp(λ, {r0}) has {len(lams)} real roots, not {len(claimed)}")
+        for j, (lam, s) in enumerate(zip(lams, claimed)):
+            if s == "?":            # a sign this table does not claim
+                continue
+            if s == "undecided":
+                raise Unsupported(f"cell {k + 1}: the engine left branch {j} undecided")
+            got = sign_of_condition(parts, r0, lam)
+            if got != s:
+                raise Failed(f"cell {k + 1}, branch {j}: the sign at r = {r0} is {got}, not {s}")
+
+
+def _key(s):
+    return "null" if s is None else str(s)
+
+
+def signs_query(ob: dict, env) -> None:
+    """The set of signs a verified table gives on one branch over ]lo, hi[: the union over the
+    cells that meet it (a branch absent on a cell gives "missing").  Signs at the critical
+    values themselves (interior cell ends) are not covered: they need arithmetic in Q(r₀)[λ]
+    for an algebraic r₀, which the kernel does not have."""
+    table = env["obligations"].get(ob["table"])
+    if table is None or table.get("kind") != "sign_table":
+        raise Failed(f"no sign table {ob['table']!r}")
+    if ob["table"] not in env.setdefault("verified", set()):
+        raise Failed(f"the sign table {ob['table']} is not verified")
+    _cp, _parts, ends = load_table(table)
+    lo = Algebraic.of(ob["lo"]) if ob.get("lo") is not None else ends[0]
+    hi = Algebraic.of(ob["hi"]) if ob.get("hi") is not None else ends[-1]
+    if ends[0].compare(lo) > 0 or ends[-1].compare(hi) < 0:
+        raise Failed("the interval is not inside the table's")
+    got = set()
+    branch = ob["branch"]
+    for k, (a, b) in enumerate(zip(ends, ends[1:])):
+        if b.compare(lo) <= 0 or a.compare(hi) >= 0:
+            continue
+        row = table["signs"][k]
+        got.add(_key(row[branch]) if branch < len(row) else "missing")
+    if ob.get("include_points", True):
+        for e in ends[1:-1]:
+            if lo.compare(e) < 0 < hi.compare(e):
+                raise Unsupported("the sign at a critical value (an algebraic r) is needed: the kernel lacks "
+                                  "arithmetic in Q(r0)[λ]")
+    claimed = {_key(s) for s in ob["result"]}
+    if got != claimed:
+        raise Failed(f"the signs on branch {branch} are {sorted(got)}, not {sorted(claimed)}")
+
+
+def unsupported(ob: dict, env) -> None:
+    """A fact the engine used that has no obligation the kernel can check (the reason says why)."""
+    raise Unsupported(ob.get("reason", "not expressible in the obligation language"))
+
+
+CHECKERS = {f.__name__: f for f in (root_count, algebraic, digits, compare, sign_at, identity, sign_table,
+                                    signs_query, unsupported)}
