@@ -75,16 +75,16 @@ def record(ob: dict) -> str | None:
 _CAPTURES: list[list] = []
 
 
-def emit(ob: dict) -> None:
+def emit(ob: dict) -> str | None:
     """Record ``ob`` (a query of a table: the table first), and keep it for every
-    :func:`replaying` computation under way."""
+    :func:`replaying` computation under way; its id."""
     if not _ACTIVE or _ACTIVE[-1].depth:
-        return
+        return None
     for got in _CAPTURES:
         got.append(ob)
     if isinstance(ob.get("table"), dict):
         ob = {**ob, "table": _ACTIVE[-1].add(ob["table"])}
-    record(ob)
+    return record(ob)
 
 
 def replaying(func: Callable) -> Callable:
@@ -110,12 +110,26 @@ def replaying(func: Callable) -> Callable:
     return inner
 
 
-def take() -> list[str]:
-    """The ids recorded since the last call (for the check being made)."""
+def take(own: list[str] | None = None) -> list[str]:
+    """The facts of the check being made: ``own`` when the deciding result carried its facts
+    (they leave the pending ones), else the ids recorded since the last check."""
     if not _ACTIVE:
-        return []
+        return list(own or [])
     rec = _ACTIVE[-1]
+    if own:
+        rec.pending = [i for i in rec.pending if i not in own]
+        return list(own)
     out, rec.pending = rec.pending, []
+    return out
+
+
+def facts_of(*results) -> list[str]:
+    """The facts carried by deciding results (a trig Result, ...), in order, once each."""
+    out: list[str] = []
+    for res in results:
+        for i in getattr(res, "facts", None) or []:
+            if i not in out:
+                out.append(i)
     return out
 
 
@@ -138,8 +152,11 @@ def fact(build: Callable) -> Callable:
                     obs = {"kind": "unsupported", "reason": f"{func.__qualname__}: {type(exc).__name__}: {exc}"[:300]}
             finally:
                 rec.depth -= 1
-            for ob in ([] if obs is None else obs if isinstance(obs, list) else [obs]):
-                emit(ob)
+            ids = [emit(ob) for ob in ([] if obs is None else obs if isinstance(obs, list) else [obs])]
+            try:                        # a result object carries its own facts (see take)
+                answer.facts = [i for i in ids if i]
+            except AttributeError:
+                pass
             return answer
         return inner
     return wrap

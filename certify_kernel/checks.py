@@ -17,9 +17,12 @@ from .poly import (
     rat,
     reduce_circles,
     resultant_in,
+    sign,
     squarefree,
     sub,
+    trim,
     upoly,
+    value,
 )
 from .sturm import Algebraic, count, real_roots
 
@@ -270,10 +273,91 @@ def signs_query(ob: dict, env) -> None:
         raise Failed(f"the signs on branch {branch} are {sorted(got)}, not {sorted(claimed)}")
 
 
+def _term_signs(h: dict, hyp: list) -> set:
+    """The signs of the terms of h under the hypotheses (a variable of unknown sign must occur
+    to an even power: such a term is ≥ 0 times its coefficient's sign, "weak")."""
+    out = set()
+    for k, v in h.items():
+        s, strict = sign(v), True
+        for e, hs in zip(k, hyp):
+            if e and hs is None:
+                if e % 2:
+                    return {None}
+                strict = False
+            elif e:
+                s *= hs ** e
+        out.add((s, strict))
+    return out
+
+
+def _factor_sign(f: dict, names: list, pairs: list, hyp: list) -> int:
+    """The strict sign of a factor: a polynomial in r alone with no root in ]0, 1[ (Sturm) has
+    the sign of its value at 1/2 on all of ]0, 1[ (intermediate values); otherwise a form
+    congruent to it modulo the circles whose terms all have one strict sign under the
+    hypotheses (a sum of terms of one sign, one of them strict, has that sign)."""
+    poly = mpoly({"vars": names, "terms": f["poly"]})
+    if f["how"] == "r":
+        k = names.index("r")
+        if any(e for key in poly for i, e in enumerate(key) if i != k):
+            raise Failed("a factor said to be in r alone has other variables")
+        u = [Fraction(0)] * (max((key[k] for key in poly), default=0) + 1)
+        for key, v in poly.items():
+            u[key[k]] += v
+        u = trim(u)
+        if count(u, Fraction(0), Fraction(1)) - (1 if not sum(u) else 0):
+            raise Failed("a factor in r has a root in ]0, 1[")
+        return sign(value(u, Fraction(1, 2)))
+    form = mpoly({"vars": names, "terms": f["form"]})
+    if reduce_circles(madd(poly, form, -1), pairs):
+        raise Failed("a factor's rewritten form differs from it modulo the circles")
+    signs = _term_signs(form, hyp)
+    if not form:
+        raise Failed("a factor is 0")
+    if len({s for s, _ in signs}) != 1 or None in {s for s, _ in signs} or not any(st for _, st in signs):
+        raise Failed("a factor's terms do not all have one strict sign")
+    return next(iter(signs))[0]
+
+
+def _part_sign(part: dict, given: dict, names: list, pairs: list, hyp: list) -> int:
+    """The sign of a polynomial from a congruent form c·Π f^m (expanded exactly and compared)."""
+    form = mpoly({"vars": names, "terms": part["form"]})
+    if reduce_circles(madd(given, form, -1), pairs):
+        raise Failed("the rewritten form differs from the expression modulo the circles")
+    c = rat(part["constant"])
+    product = {tuple([0] * len(names)): c} if c else {}
+    s = sign(c)
+    for f in part["factors"]:
+        poly = mpoly({"vars": names, "terms": f["poly"]})
+        for _ in range(f["mult"]):
+            product = mmul(product, poly)
+        fs = _factor_sign(f, names, pairs, hyp)
+        if fs != f["sign"]:
+            raise Failed(f"a factor has the sign {fs}, not {f['sign']}")
+        s *= fs ** f["mult"]
+    if madd(product, form, -1):
+        raise Failed("the factors do not multiply to the form")
+    return s
+
+
+def signed(ob: dict, env) -> None:
+    """n/d has a strict sign under sign hypotheses on the variables (and 0 < r < 1): the sign
+    of n and of d, each from a factorisation of a form congruent to it modulo the circles."""
+    names = ob["vars"]
+    pairs = [(names.index(c), names.index(s)) for c, s in ob.get("circles", [])]
+    hyp = [ob["hyp"].get(n) for n in names]
+    if any(h not in (None, 1, -1) for h in hyp):
+        raise Failed("a hypothesis is not a strict sign")
+    n = mpoly({"vars": names, "terms": ob["expr"]["num"]})
+    d = mpoly({"vars": names, "terms": ob["expr"]["den"]})
+    s = _part_sign(ob["num"], n, names, pairs, hyp) * _part_sign(ob["den"], d, names, pairs, hyp)
+    if s != ob["sign"]:
+        raise Failed(f"the sign is {s}, not {ob['sign']}")
+
+
 def unsupported(ob: dict, env) -> None:
     """A fact the engine used that has no obligation the kernel can check (the reason says why)."""
     raise Unsupported(ob.get("reason", "not expressible in the obligation language"))
 
 
 CHECKERS = {f.__name__: f for f in (root_count, algebraic, digits, compare, sign_at, identity, sign_table,
-                                    signs_query, unsupported)}
+                                    signs_query, signed, unsupported)}

@@ -156,3 +156,25 @@ def sign_query(result, table, branch, lo=None, hi=None, include_points=True):
     return {"kind": "signs_query", "table": data, "branch": int(branch),
             "lo": None if lo is None else number_of(lo), "hi": None if hi is None else number_of(hi),
             "include_points": bool(include_points), "result": sorted((_sign_code(s) for s in result), key=str)}
+
+
+def signed(E, n, d, parts: list, hyp: dict, total: int) -> dict:
+    """E = n/d has the strict sign ``total`` under the sign hypotheses ``hyp`` (and 0 < r < 1):
+    for n and d, a form congruent modulo the circles, its factorisation, and for each factor
+    either (r alone) no root in ]0, 1[ or a form whose terms all have one strict sign."""
+    factors = [f["poly"] for part in parts for f in part["factors"]] + \
+        [f["form"] for part in parts for f in part["factors"] if "form" in f]
+    gens, circles = generators(E, n, d, *[part["form"] for part in parts], *factors)
+    names = [str(g) for g in gens]
+
+    def terms(x):
+        return rational_function(x, gens)["num"]
+
+    def part_data(part):
+        return {"form": terms(part["form"]), "constant": rational(part["constant"]),
+                "factors": [{"poly": terms(f["poly"]), "mult": f["mult"], "how": f["how"], "sign": int(f["sign"]),
+                             **({"form": terms(f["form"])} if "form" in f else {})} for f in part["factors"]]}
+    return {"kind": "signed", "vars": names, "circles": circles,
+            "hyp": {k: v for k, v in sorted(hyp.items()) if k in names},
+            "expr": {"num": terms(n), "den": terms(d)}, "num": part_data(parts[0]), "den": part_data(parts[1]),
+            "sign": int(total)}

@@ -401,6 +401,72 @@ def sign(E, H: Signs) -> tuple[int | None, list[str]]:
     return (sn * sd if sn and sd else None), why
 
 
+def _factor_data(f, H: Signs) -> dict | None:
+    """How one factor's sign is proved (:func:`_factor_sign`), as data for the kernel."""
+    syms = sp.sympify(f).free_symbols
+    if syms == {r}:
+        fs = _factor_sign(f, H)
+        return None if fs is None else {"poly": f, "how": "r", "sign": fs}
+    for g in _rewrites(f):
+        if g.free_symbols:
+            sg = _term_sign(sp.Poly(g, *sorted(g.free_symbols, key=str)), H)
+        else:
+            sg = int(sp.sign(g)) or None
+        if sg:
+            return {"poly": f, "how": "terms", "form": g, "sign": sg}
+    return None
+
+
+def _poly_data(p, H: Signs) -> dict | None:
+    """:func:`_poly_sign` as data: the rewritten form, its constant and factors with their proofs."""
+    if p == 0:
+        return None
+    for g in _rewrites(p):
+        c, factors = sp.factor_list(g)
+        data = []
+        for f, m in factors:
+            d = _factor_data(f, H)
+            if d is None:
+                break
+            data.append({**d, "mult": int(m)})
+        else:
+            return {"form": g, "constant": c, "factors": data}
+    return None
+
+
+def signed_fact(E, H: Signs) -> dict:
+    """The strict sign of E under H by inspection, as an obligation (ValueError if undecided)."""
+    n, d = fraction(E)
+    parts = [_poly_data(n, H), _poly_data(d, H)]
+    if None in parts:
+        raise ValueError("sign undecided by inspection")
+    sign_of = {1: 1, -1: -1}
+    total = 1
+    for part in parts:
+        total *= (1 if part["constant"] > 0 else -1)
+        for f in part["factors"]:
+            total *= sign_of[f["sign"]] ** f["mult"]
+    return facts.signed(E, n, d, parts, {str(a): int(sg) for a, sg in H.atoms}, total)
+
+
+def _has_sign_facts(res, target, expected, H, witness=None) -> list:
+    W = target if witness is None else witness
+    out = []
+    if witness is not None:
+        out.append(facts.identity(bool(equal(target, H.unfold(W))), target, H.unfold(W)))
+    return out + [signed_fact(W, H)]
+
+
+def _proportional_facts(res, v, w, H, ratio=None) -> list:
+    candidates = ([ratio] if ratio is not None
+                  else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0])
+    for k in candidates:
+        if sign(k, H)[0] == 1:
+            return [signed_fact(k, H), facts.identity(bool(equal(v, k * w)), v, k * w)]
+    raise ValueError("no ratio with a proved sign")
+
+
+@fact(_has_sign_facts)
 def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     """target has the strict sign ``expected`` under H.  With a ``witness`` W (written in
     the named quantities of H): target ≡ W after unfolding their definitions, and W has
@@ -417,6 +483,7 @@ def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     return Result(s == expected, ev + [f"under {H.describe()}: {word}"] + why)
 
 
+@fact(_proportional_facts)
 def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
     """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
     component i where that quotient has a sign by inspection; then v − k w ≡ 0."""

@@ -6,6 +6,7 @@ the printed checks one for one.
 """
 from __future__ import annotations
 
+from certify import obligations
 from certify.algebra import Algebraic, eliminate, parse, same_up_to_constant, show_factored_int, to_fmpz_poly
 from certify.algebra import trig as T
 
@@ -43,13 +44,19 @@ def check_of(lemma) -> Check:
 
 
 def result_check(statement: str, res: T.Result) -> Check:
-    """A proven or refuted statement of :mod:`certify.algebra.trig` as a check."""
-    return Check(statement, res.holds, res.evidence)
+    """A proven or refuted statement of :mod:`certify.algebra.trig` as a check (with the
+    facts the result carries, for the independent kernel)."""
+    return Check(statement, res.holds, res.evidence, obligations=obligations.take(obligations.facts_of(res)))
 
 
 def combined(statement: str, parts: list[T.Result]) -> Check:
     """One check that holds when every part holds; the parts' evidence in order."""
-    return Check(statement, all(parts), [e for p_ in parts for e in p_.evidence])
+    own = obligations.facts_of(*parts)
+    if own and not all(getattr(p_, "facts", None) for p_ in parts):    # a part without recorded facts
+        own.append(obligations.emit({"kind": "unsupported", "reason": "a part of the check carries no fact"})
+                   or "")
+    return Check(statement, all(parts), [e for p_ in parts for e in p_.evidence],
+                 obligations=obligations.take([i for i in own if i]))
 
 
 def identity(statement: str, lhs, rhs) -> Check:

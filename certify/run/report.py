@@ -256,6 +256,7 @@ def _summary(results) -> str:
         lines += ["", "Failing: " + ", ".join(_link(c) for c in failing) + "."]
     if errata_line(results):
         lines += ["", errata_line(results) + "; see [Errata](#errata)."]
+    lines += ["", kernel_line(results)]
     return "\n".join(lines)
 
 
@@ -344,11 +345,41 @@ def _errata(results) -> str:
     return "\n\n".join(parts)
 
 
+def kernel_coverage(outcome) -> tuple[int, int]:
+    """(k, n): of the n sub-claims of a certificate that count, the k that name obligations of
+    the independent kernel's language only (certificates.json; ``certify verify`` re-checks them)."""
+    kinds = {ob["id"]: ob.get("kind") for ob in getattr(outcome, "obligations", [])}
+    subs = [c for c in list(outcome.printed) + list(outcome.corrected) if c.counts]
+    return sum(1 for c in subs if c.obligations and all(kinds.get(i) not in (None, "unsupported")
+                                                          for i in c.obligations)), len(subs)
+
+
+def kernel_cell(outcome) -> str:
+    """The table's "Kernel" column: "independently verified" or "k/n sub-claims"; "—" for an observation."""
+    if outcome.status not in (PASS, ERRATUM):
+        return "—"
+    k, n = kernel_coverage(outcome)
+    return "independently verified" if n and k == n else f"{k}/{n} sub-claims"
+
+
+def kernel_line(results) -> str:
+    """The summary's line on the independent kernel."""
+    proved = [o for _, o in results if o.status in (PASS, ERRATUM)]
+    k = sum(kernel_coverage(o)[0] for o in proved)
+    n = sum(kernel_coverage(o)[1] for o in proved)
+    whole = sum(1 for o in proved if kernel_coverage(o)[1] and kernel_coverage(o)[0] == kernel_coverage(o)[1])
+    pct = f" ({100 * k / n:.0f}%)" if n else ""
+    return (f"Independent kernel (`python -m certify verify`, docs/verify.md): {k} of the {n} sub-claims of "
+            f"the PASS and ERRATUM certificates{pct} rest on obligations in reports/certificates.json that "
+            f"it re-checks with the Python standard library alone; {whole} of {len(proved)} certificates "
+            "are independently verified whole.")
+
+
 def _table(results) -> str:
-    rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {status_label(outcome)} |"
-            for cert, outcome in results]
-    return "\n".join(["## All certificates", "", "| Id | Paper | Statement | Status |",
-                      "|---|---|---|---|", *rows])
+    rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {status_label(outcome)} | "
+            f"{kernel_cell(outcome)} |" for cert, outcome in results]
+    return "\n".join(["## All certificates", "", "| Id | Paper | Statement | Status | Kernel |",
+                      "|---|---|---|---|---|", *rows])
 
 
 SAME = "(as above)"

@@ -49,8 +49,8 @@ class Check:
     obligations: list[str] | None = None
 
     def __post_init__(self):
-        if self.obligations is None:     # the facts recorded since the last check: its verdict's
-            self.obligations = obligations.take()
+        if self.obligations is None:     # the facts its verdict was computed from (obligations.take)
+            self.obligations = obligations.take(obligations.facts_of(self.holds))
 
 
 # The kinds of erratum, the first column a referee reads in the Errata.
