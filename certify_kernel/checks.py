@@ -89,6 +89,39 @@ def _fraction_parts(data: dict, names: list) -> tuple[dict, dict]:
     return conv(data["num"]), conv(data.get("den", [["1", [0] * len(names)]]))
 
 
+def _rf_mul(a: tuple, b: tuple) -> tuple:
+    return mmul(a[0], b[0]), mmul(a[1], b[1])
+
+
+def _rf_add(a: tuple, b: tuple) -> tuple:
+    return madd(mmul(a[0], b[1]), mmul(b[0], a[1])), mmul(a[1], b[1])
+
+
+def _side(side, names: list) -> list:
+    """The components of one side: a list of rational functions, or {"product": [matrices],
+    "entry": k} (the matrices multiplied by the definition of the product, then read row by row)."""
+    if isinstance(side, list):
+        return [_fraction_parts(x, names) for x in side]
+    mats = []
+    for m in side["product"]:
+        entries = [_fraction_parts(x, names) for x in m["entries"]]
+        mats.append((m["rows"], m["cols"], entries))
+    rows, cols, acc = mats[0]
+    for r2, c2, e2 in mats[1:]:
+        if cols != r2:
+            raise Failed("the matrices of a product do not fit")
+        zero = ({}, {tuple([0] * len(names)): Fraction(1)})
+        out = []
+        for i in range(rows):
+            for j in range(c2):
+                t = zero
+                for k in range(cols):
+                    t = _rf_add(t, _rf_mul(acc[i * cols + k], e2[k * c2 + j]))
+                out.append(t)
+        cols, acc = c2, out
+    return [acc[side["entry"]]] if "entry" in side else acc
+
+
 def identity(ob: dict, env) -> None:
     """lhs ≡ rhs, component by component, as rational functions of the variables, on the
     circles cos² + sin² = 1 of each pair: n_l·d_r − n_r·d_l reduces to 0 modulo the circles
@@ -97,12 +130,11 @@ def identity(ob: dict, env) -> None:
     non-zero normal form means the identity is false."""
     names = ob["vars"]
     pairs = [(names.index(c), names.index(s)) for c, s in ob.get("circles", [])]
-    if len(ob["lhs"]) != len(ob["rhs"]):
+    left, right = _side(ob["lhs"], names), _side(ob["rhs"], names)
+    if len(left) != len(right):
         raise Failed("the two sides have different numbers of components")
     zero = True
-    for k, (lhs, rhs) in enumerate(zip(ob["lhs"], ob["rhs"])):
-        nl, dl = _fraction_parts(lhs, names)
-        nr, dr = _fraction_parts(rhs, names)
+    for k, ((nl, dl), (nr, dr)) in enumerate(zip(left, right)):
         if not reduce_circles(dl, pairs) or not reduce_circles(dr, pairs):
             raise Failed(f"component {k + 1}: a denominator vanishes identically")
         if reduce_circles(madd(mmul(nl, dr), mmul(nr, dl), -1), pairs):

@@ -80,6 +80,7 @@ from certify.run import (
     digits_check,
     eliminant_check,
     overridden,
+    product_fact,
     quantity,
     replaced,
     reworded,
@@ -190,9 +191,16 @@ def matrix_of_ababcb(M, M_text):
     """The product of the collision matrices in time order a, b, a, b, c, b."""
     printed = sp.Matrix(parse(M_text))
     direct = (B_ * C_ * B_ * A_ * B_ * A_).applyfunc(sp.factor)
-    checks = [Check(f"entry ({i + 1},{j + 1}) as printed", sp.simplify(M[i, j] - printed[i, j]) == 0,
-                    [f"computed `{show(M[i, j])}`"]) for i in range(3) for j in range(3)]
-    checks.append(Check("word_matrix('ababcb') is the product BCBABA", (direct - M).applyfunc(sp.simplify) == sp.zeros(3, 3)))
+    word = [B_, C_, B_, A_, B_, A_]
+    checks = []
+    for i in range(3):
+        for j in range(3):
+            ok = sp.simplify(M[i, j] - printed[i, j]) == 0
+            checks.append(Check(f"entry ({i + 1},{j + 1}) as printed", ok, [f"computed `{show(M[i, j])}`"],
+                                obligations=product_fact(ok, word, printed, 3 * i + j)))
+    same = (direct - M).applyfunc(sp.simplify) == sp.zeros(3, 3)
+    checks.append(Check("word_matrix('ababcb') is the product BCBABA", same,
+                        obligations=product_fact(same, word, M)))
     return conclude(checks, note="l. 259 has an unbalanced parenthesis, `(r^3 - r^2 + 7r + 9))/32`; read without it.")
 
 

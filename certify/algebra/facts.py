@@ -178,3 +178,31 @@ def signed(E, n, d, parts: list, hyp: dict, total: int) -> dict:
             "hyp": {k: v for k, v in sorted(hyp.items()) if k in names},
             "expr": {"num": terms(n), "den": terms(d)}, "num": part_data(parts[0]), "den": part_data(parts[1]),
             "sign": int(total)}
+
+
+def product_identity(holds: bool, factors: list, rhs, entry: int | None = None) -> dict:
+    """The product of the matrices ``factors`` (left to right) equals ``rhs`` (a matrix, or its
+    entry number ``entry`` read row by row), as the kernel multiplies it."""
+    rhs_list = list(rhs) if isinstance(rhs, sp.MatrixBase) else [rhs]
+    if entry is not None and len(rhs_list) > 1:
+        rhs_list = [rhs_list[entry]]
+    gens, circles = generators(*[e for F in factors for e in F], *rhs_list)
+    names = [str(g) for g in gens]
+    product = {"product": [{"rows": F.shape[0], "cols": F.shape[1],
+                            "entries": [rational_function(e, gens) for e in F]} for F in factors]}
+    if entry is not None:
+        product["entry"] = int(entry)
+    return {"kind": "identity", "vars": names, "circles": circles, "lhs": product,
+            "rhs": [rational_function(e, gens) for e in rhs_list], "holds": bool(holds)}
+
+
+def products_identity(holds: bool, left: list, right: list) -> dict:
+    """The product of the matrices ``left`` equals that of ``right`` (each multiplied by the kernel)."""
+    gens, circles = generators(*[e for F in left + right for e in F])
+    names = [str(g) for g in gens]
+
+    def product(factors):
+        return {"product": [{"rows": F.shape[0], "cols": F.shape[1],
+                             "entries": [rational_function(e, gens) for e in F]} for F in factors]}
+    return {"kind": "identity", "vars": names, "circles": circles, "lhs": product(left), "rhs": product(right),
+            "holds": bool(holds)}

@@ -16,7 +16,18 @@ and progress on a terminal.  It imports every layer below it.
 from certify.obligations import replaying
 
 from . import checks, files, plots, progress, report, runner, saving
-from .checks import check_of, combined, concluded, count_check, digits_check, eliminant_check, identity, result_check
+from .checks import (
+                     check_of,
+                     combined,
+                     concluded,
+                     count_check,
+                     digits_check,
+                     eliminant_check,
+                     identity,
+                     identity_facts,
+                     product_fact,
+                     result_check,
+)
 from .files import load_findings
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
 from .runner import (
@@ -56,6 +67,7 @@ from .section5_orbits import explanations
 
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
+    "product_fact", "identity_facts",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "replaying", "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name",
     "sign_chart",

@@ -7,7 +7,7 @@ the printed checks one for one.
 from __future__ import annotations
 
 from certify import obligations
-from certify.algebra import Algebraic, eliminate, parse, same_up_to_constant, show_factored_int, to_fmpz_poly
+from certify.algebra import Algebraic, eliminate, facts, parse, same_up_to_constant, show_factored_int, to_fmpz_poly
 from certify.algebra import trig as T
 
 from .runner import Check, conclude
@@ -76,3 +76,34 @@ def concluded(printed: list[Check], corrected: list[Check] | None = None, note: 
             if not wrong.holds and id(wrong) not in named and fix.corrects is None and fix is not wrong:
                 fix.corrects = wrong
     return conclude(printed, corrected, note=note, kind=kind, misprint=misprint)
+
+
+def product_fact(holds: bool, factors: list, rhs, entry: int | None = None) -> list[str]:
+    """Record, for the independent kernel, that the product of the matrices ``factors`` equals
+    ``rhs`` (or its entry ``entry``), with the engine's verdict ``holds``; the ids, for
+    ``Check(..., obligations=...)``."""
+    try:
+        ob = facts.product_identity(holds, factors, rhs, entry)
+    except Exception as exc:   # not in the obligation language
+        ob = {"kind": "unsupported", "reason": f"product identity: {exc}"[:200]}
+    i = obligations.emit(ob)
+    return obligations.take([i]) if i else []
+
+
+def identity_facts(*triples) -> list[str]:
+    """Record, for the independent kernel, identities ``(holds, lhs, rhs)`` (scalars or matrices;
+    ``lhs`` or ``rhs`` a list of matrices stands for their product) with the engine's verdicts;
+    the ids, for ``Check(..., obligations=...)``."""
+    ids = []
+    for holds, lhs, rhs in triples:
+        try:
+            if isinstance(lhs, list) or isinstance(rhs, list):
+                left = lhs if isinstance(lhs, list) else [lhs]
+                right = rhs if isinstance(rhs, list) else [rhs]
+                ob = facts.products_identity(holds, left, right)
+            else:
+                ob = facts.identity(holds, lhs, rhs)
+        except Exception as exc:   # not in the obligation language
+            ob = {"kind": "unsupported", "reason": f"identity: {exc}"[:200]}
+        ids.append(obligations.emit(ob))
+    return obligations.take([i for i in ids if i])
