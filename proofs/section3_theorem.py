@@ -79,6 +79,7 @@ from certify.run import (
     count_check,
     digits_check,
     eliminant_check,
+    identity_facts,
     overridden,
     product_fact,
     quantity,
@@ -406,8 +407,10 @@ def eigenvector_components(M, U, V):
     res = (M * q0 - lam * q0).applyfunc(sp.cancel)
     third = reduce_mod(res[2], characteristic_polynomial(M))
     return conclude([
-        Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0),
-        Check("second component vanishes identically", res[1] == 0),
+        Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0,
+              obligations=identity_facts((res[0] == 0, (M * q0)[0], lam * q0[0]))),
+        Check("second component vanishes identically", res[1] == 0,
+              obligations=identity_facts((res[1] == 0, (M * q0)[1], lam * q0[1]))),
         Check("and the third vanishes modulo cp(M): q(0) is an eigenvector", third == 0,
               [f"third component reduced modulo cp: `{show(third)}`"]),
     ])
@@ -455,7 +458,8 @@ def position_map_of_ababcb(candidate, a, b, c, d):
 def expansion_of_a_minus_d(a, d, amd):
     """a - d from the printed a and d, expanded, against the printed expansion."""
     diff = sp.expand(parse(a) - parse(d) - parse(amd))
-    return conclude([Check("(a) - (d) - (printed a-d) = 0", diff == 0, [f"difference: `{show(diff)}`"])])
+    return conclude([Check("(a) - (d) - (printed a-d) = 0", diff == 0, [f"difference: `{show(diff)}`"],
+                           obligations=identity_facts((diff == 0, parse(a) - parse(d), parse(amd))))])
 
 
 

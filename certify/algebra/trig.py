@@ -392,6 +392,13 @@ def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
     return None, [f"`{show(sp.factor(p))}`: " + undecided[0]]
 
 
+def _sign_facts(answer, E, H: Signs):
+    if answer[0] is None:
+        raise ValueError("sign undecided by inspection")
+    return signed_fact(E, H)
+
+
+@fact(_sign_facts)
 def sign(E, H: Signs) -> tuple[int | None, list[str]]:
     """The strict sign of E under the hypotheses H, by inspection of its factors."""
     n, d = fraction(E)
