@@ -23,9 +23,16 @@ def count_check(name: str, roots: list, counts: tuple[int, int], expected: int) 
     count and python-flint's, as :func:`certify.algebra.roots_in_unit_interval` gives
     them), and as many isolated."""
     sturm, flint_count = counts
+    own = None
+    if roots:        # for the kernel: the count on ]0, 1] and whether 1 is a root (same p: distinct roots)
+        p = roots[0].p
+        at_one = 1 if p(1) == 0 else 0
+        own = obligations.take([i for i in (obligations.emit(facts.root_count(sturm + at_one, p, 0, 1)),
+                                            obligations.emit(facts.sign_at(int(p(1) > 0) - int(p(1) < 0), p, 1)))
+                                if i])
     return Check(f"{name} has exactly {expected} root(s) in ]0,1[ (Sturm and python-flint)",
                  sturm == expected and flint_count == expected and len(roots) == expected,
-                 [f"Sturm count {sturm}, python-flint count {flint_count}"])
+                 [f"Sturm count {sturm}, python-flint count {flint_count}"], obligations=own)
 
 
 def eliminant_check(name: str, g, cp, printed_product: str) -> list[Check]:
