@@ -386,10 +386,30 @@ def signed(ob: dict, env) -> None:
         raise Failed(f"the sign is {s}, not {ob['sign']}")
 
 
+def resultant(ob: dict, env) -> None:
+    """Res_λ(f, g) (the Sylvester determinant, :func:`resultant_in`; for g = ∂f/∂λ with f monic
+    in λ it is ± the discriminant) against a given polynomial P in r: "proportional" (equal up to
+    a non-zero constant) or "same_factors" (the same square-free part: the same roots)."""
+    names = ["r", "λ"]
+    f = mpoly({"vars": names, "terms": ob["f"]})
+    g = d_lambda(f) if ob["g"] == "d/dλ" else mpoly({"vars": names, "terms": ob["g"]})
+    R, P = resultant_in(f, g), upoly(ob["poly"])
+    if not R or not P:
+        raise Failed("a resultant or the given polynomial is 0")
+    if ob["relation"] == "proportional":
+        same = [c / R[-1] for c in R] == [c / P[-1] for c in P]
+    elif ob["relation"] == "same_factors":
+        same = squarefree(R) == squarefree(P)
+    else:
+        raise Failed(f"unknown relation {ob['relation']!r}")
+    if same != ob["holds"]:
+        raise Failed(f"the resultant is {'' if same else 'not '}{ob['relation'].replace('_', ' ')} to the polynomial")
+
+
 def unsupported(ob: dict, env) -> None:
     """A fact the engine used that has no obligation the kernel can check (the reason says why)."""
     raise Unsupported(ob.get("reason", "not expressible in the obligation language"))
 
 
 CHECKERS = {f.__name__: f for f in (root_count, algebraic, digits, compare, sign_at, identity, sign_table,
-                                    signs_query, signed, unsupported)}
+                                    signs_query, signed, resultant, unsupported)}

@@ -84,6 +84,7 @@ from certify.run import (
     product_fact,
     quantity,
     replaced,
+    resultant_fact,
     reworded,
     unread,
 )
@@ -272,7 +273,8 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     condition = statements.relation(three_real_when, {"Δ_cp": DELTA})
     three_real = {s: constant and int(sp.sign(ratio)) * s > 0 for s in (-1, 0, 1)}   # Disc = ratio·Δ_cp > 0
     return conclude([
-        Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"]),
+        Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
+              obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional")),
         Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0),
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,

@@ -206,3 +206,14 @@ def products_identity(holds: bool, left: list, right: list) -> dict:
                              "entries": [rational_function(e, gens) for e in F]} for F in factors]}
     return {"kind": "identity", "vars": names, "circles": circles, "lhs": product(left), "rhs": product(right),
             "holds": bool(holds)}
+
+
+def resultant(holds: bool, f, g, poly, relation: str) -> dict:
+    """Res_λ(f, g) (g "d/dλ" for ∂f/∂λ) is proportional to, or has the factors of, ``poly``."""
+    from .poly import lam, r
+    def terms(e):
+        P = sp.Poly(sp.expand(e), r, lam, domain="QQ")
+        return sorted([rational(c), list(m)] for m, c in P.terms())
+    P = sp.Poly(sp.expand(poly), r, domain="QQ")
+    return {"kind": "resultant", "f": terms(f), "g": g if isinstance(g, str) else terms(g),
+            "poly": [rational(c) for c in P.all_coeffs()[::-1]], "relation": relation, "holds": bool(holds)}

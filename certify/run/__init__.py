@@ -23,10 +23,12 @@ from .checks import (
                      count_check,
                      digits_check,
                      eliminant_check,
+                     fact_ids,
                      identity,
                      identity_facts,
                      product_fact,
                      result_check,
+                     resultant_fact,
 )
 from .files import load_findings
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
@@ -67,7 +69,7 @@ from .section5_orbits import explanations
 
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
-    "product_fact", "identity_facts",
+    "product_fact", "identity_facts", "fact_ids", "resultant_fact",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "replaying", "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name",
     "sign_chart",

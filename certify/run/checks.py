@@ -40,9 +40,24 @@ def eliminant_check(name: str, g, cp, printed_product: str) -> list[Check]:
     product up to a constant; the resultant route has the same factors."""
     E = eliminate(g, cp)
     P = to_fmpz_poly(parse(printed_product))
-    return [Check(f"Gröbner basis of {{{name}, cp(M)}} (lex λ > r) eliminates to the printed polynomial",
-                  same_up_to_constant(E.groebner, P), E.evidence() + [f"printed: `{show_factored_int(P)}`"]),
-            Check("the resultant route agrees factor by factor", E.agree)]
+    groebner = Check(f"Gröbner basis of {{{name}, cp(M)}} (lex λ > r) eliminates to the printed polynomial",
+                     same_up_to_constant(E.groebner, P), E.evidence() + [f"printed: `{show_factored_int(P)}`"])
+    return [groebner, Check("the resultant route agrees factor by factor", E.agree,
+                            obligations=fact_ids(lambda: facts.resultant(
+                                E.agree and groebner.holds, g, cp, parse(printed_product), "same_factors")))]
+
+
+def fact_ids(*builders) -> list[str]:
+    """Record, for the independent kernel, the obligations the ``builders`` (functions of no
+    argument) make; one that fails records an ``unsupported`` obligation with the reason."""
+    ids = []
+    for build in builders:
+        try:
+            ob = build()
+        except Exception as exc:   # not in the obligation language
+            ob = {"kind": "unsupported", "reason": f"{type(exc).__name__}: {exc}"[:200]}
+        ids.append(obligations.emit(ob))
+    return obligations.take([i for i in ids if i])
 
 
 def check_of(lemma) -> Check:
@@ -114,3 +129,9 @@ def identity_facts(*triples) -> list[str]:
             ob = {"kind": "unsupported", "reason": f"identity: {exc}"[:200]}
         ids.append(obligations.emit(ob))
     return obligations.take([i for i in ids if i])
+
+
+def resultant_fact(holds: bool, f, g, poly, relation: str) -> list[str]:
+    """Record that Res_λ(f, g) (g "d/dλ": ∂f/∂λ) is "proportional" to, or has the "same_factors"
+    as, the polynomial ``poly`` in r (the engine's verdict ``holds``); the ids."""
+    return fact_ids(lambda: facts.resultant(holds, f, g, poly, relation))
