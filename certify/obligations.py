@@ -172,3 +172,17 @@ def silent(func: Callable) -> Callable:
         with quiet():
             return func(*args, **kwargs)
     return inner
+
+
+@contextmanager
+def gathered():
+    """The ids recorded while the block runs (a list filled in place), for a check made
+    later: ``Check(..., obligations=take(ids))``."""
+    ids: list[str] = []
+    rec = _ACTIVE[-1] if _ACTIVE else None
+    before = list(rec.pending) if rec is not None else []
+    try:
+        yield ids
+    finally:
+        if rec is not None:
+            ids.extend(i for i in rec.pending if i not in before)

@@ -79,6 +79,7 @@ from certify.run import (
     count_check,
     digits_check,
     eliminant_check,
+    gathered,
     identity_facts,
     overridden,
     product_fact,
@@ -86,6 +87,7 @@ from certify.run import (
     replaced,
     resultant_fact,
     reworded,
+    take,
     unread,
 )
 
@@ -378,9 +380,11 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
     T = spectrum.table("λ", lam, 0, 1)
     three = all((len(c.branches) == 3) == (c.hi <= rs) for c in T.cells)
     st = statements.statement(positive, {"λ": lam})
-    signs = [T.signs(k, st.range.lo, st.range.hi) for k in range(3)]
+    with gathered() as facts_three:
+        signs = [T.signs(k, st.range.lo, st.range.hi) for k in range(3)]
     all_three = all(st.relation.holds_on(lam, sg) for sg in signs)
-    pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
+    with gathered() as facts_rstar:
+        pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
     figs = spectrum_figures(spectrum, T, marks={"r*": rs, "5-2√6": rr1, "(7-2√10)/3": unique_root("3*r^2 - 14*r + 3")})
     return conclude([
         Check("three distinct real eigenvalues exactly on ]0, r*[ (one real eigenvalue on ]r*, 1[ but a double "
@@ -393,9 +397,9 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
         Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
                                                                              f"r* is {rs.describe()}"]),
         Check(f"all three eigenvalues: {positive}", all_three,
-              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)]),
+              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)], obligations=take(facts_three)),
         Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
-              "(all positive there, ordered)", pos_rstar),
+              "(all positive there, ordered)", pos_rstar, obligations=take(facts_rstar)),
     ], figures=figs)
 
 

@@ -13,7 +13,7 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.identify`, :mod:`.section5_orbits`: the periodic words of simulated orbits, certified;
   the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
-from certify.obligations import replaying
+from certify.obligations import gathered, replaying, take
 
 from . import checks, files, plots, progress, report, runner, saving
 from .checks import (
@@ -71,7 +71,8 @@ __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "product_fact", "identity_facts", "fact_ids", "resultant_fact",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
-    "replaying", "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name",
+    "replaying", "gathered", "take",
+    "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name",
     "sign_chart",
     "spectrum_figures",
     "CERTIFICATES", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK", "OBSERVED",

@@ -491,7 +491,8 @@ UNCOVERED = "no fact of the obligation language was recorded for this check"
 
 def _subclaim(role: str, check) -> dict:
     data = {"role": role, "statement": " ".join(str(check.statement).split()), "holds": holds(check),
-            "counts": bool(check.counts), "obligations": list(check.obligations or [])}
+            "counts": bool(check.counts),
+            "obligations": sorted(set(check.obligations or []), key=lambda i: int(i.rsplit(":", 1)[1]))}
     if not data["obligations"]:
         data["uncovered"] = UNCOVERED
     return data
