@@ -644,25 +644,30 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
     amd, bb, cc = (spectrum.table(n, g, 0, 1) for n, g in (("a-d", parse(a) - parse(d)), ("b", parse(b)), ("c", parse(c))))
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     D = spectrum.table("Δ", fp.delta, 0, 1)
-    at_r2 = spectrum.sign_at_point(Condition.of("Δ", fp.delta), rr2)
-    between, ev_between = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, rr2)
-    zeros = [rc for rc in D.critical if rr2 < rc and spectrum.vanishes_at(fp.delta, rc, UPPER)]
-    cells_negative = D.signs(UPPER, rr2, 1, include_points=False) == {-1}
+    with gathered() as facts_r2:
+        at_r2 = spectrum.sign_at_point(Condition.of("Δ", fp.delta), rr2)
+    with gathered() as facts_between:
+        between, ev_between = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, rr2)
+    with gathered() as facts_zeros:
+        zeros = [rc for rc in D.critical if rr2 < rc and spectrum.vanishes_at(fp.delta, rc, UPPER)]
+        cells_negative = D.signs(UPPER, rr2, 1, include_points=False) == {-1}
+    take(facts_r2 + facts_between + facts_zeros)       # they belong to the checks below, not the first one
     printed = [
         Check("a-d, b, c > 0 on the upper branch for r < 5-2√6",
               all(T.holds(UPPER, 1, 0, rr1) for T in (amd, bb, cc))),
         Check("exactly one positive fixed point, x₊, for r < 5-2√6", xp.holds(UPPER, 1, 0, rr1) and xm.holds(UPPER, -1, 0, rr1),
               ["x₊ on the branches:\n\n" + xp.markdown(), "x₋ on the branches:\n\n" + xm.markdown()]),
-        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between),
-        Check("at r2 the fixed points are not real (Δ < 0 on the upper branch)", at_r2 is not None and at_r2[0] == -1),
+        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between, obligations=list(facts_between)),
+        Check("at r2 the fixed points are not real (Δ < 0 on the upper branch)", at_r2 is not None and at_r2[0] == -1,
+              obligations=list(facts_r2)),
         Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1", cells_negative and not zeros,
               ["Δ on the branches:\n\n" + D.markdown()] +
-              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros]),
+              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros], obligations=list(facts_zeros)),
     ]
     corrected = printed[:4] + [Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1, except at the one point "
                                      "r0 = (7-2√10)/3, where it vanishes",
                                      cells_negative and len(zeros) == 1 and zeros[0] == Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
-                                     corrects=printed[4])]
+                                     corrects=printed[4], obligations=list(facts_zeros))]
     for z in zeros:
         x0 = sp.cancel((fp.a - fp.d) / (2 * fp.c))
         sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), z)

@@ -580,7 +580,7 @@ class Spectrum:
             prec *= 2
         return None
 
-    @silent
+    @fact(facts.at_algebraic_r)
     def sign_at_point(self, cond: Condition, rc: Algebraic, maxprec: int = 1024):
         """Signs of g on the branches at an algebraic r (UNDECIDED where undecided: g
         vanishing or a pole there), or None when the branches cannot be isolated."""
@@ -662,7 +662,7 @@ class Spectrum:
         G, _ = nf.squarefree(G, m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
-    @silent
+    @fact(facts.at_algebraic_r)
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) (an expression or an element of
         ``poly.RING``) vanishes on branch ``branch`` at r = rc:

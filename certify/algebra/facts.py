@@ -217,3 +217,8 @@ def resultant(holds: bool, f, g, poly, relation: str) -> dict:
     P = sp.Poly(sp.expand(poly), r, domain="QQ")
     return {"kind": "resultant", "f": terms(f), "g": g if isinstance(g, str) else terms(g),
             "poly": [rational(c) for c in P.all_coeffs()[::-1]], "relation": relation, "holds": bool(holds)}
+
+
+def at_algebraic_r(*args, **kwargs) -> dict:
+    """A sign on a branch at an algebraic r (a critical value): not in the kernel's language."""
+    return {"kind": "unsupported", "reason": "a sign at an algebraic r: the kernel lacks arithmetic in Q(r0)[λ]"}
