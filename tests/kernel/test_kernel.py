@@ -1,7 +1,8 @@
 """The independent kernel (certify_kernel): a certificates file written by the run is verified,
 every tampering of it is rejected with a message naming the obligation, and the kernel needs
 nothing but the standard library.  The file is made from a few certificates (L1: digits and a
-sign table; T5: Sturm counts; T17: sign tables with √Δ; S3: trigonometric identities)."""
+sign table; T1: a product of matrices; T4: a resultant; T5: Sturm counts; T17: sign tables with √Δ;
+S2: signs by inspection; S3: trigonometric identities)."""
 from __future__ import annotations
 
 import ast
@@ -18,7 +19,7 @@ import certify_kernel
 from certify.run import report, runner
 
 ROOT = Path(__file__).resolve().parents[2]
-IDS = ["L1", "T5", "T17", "S3"]
+IDS = ["L1", "T1", "T4", "T5", "T17", "S2", "S3"]
 
 
 @pytest.fixture(scope="module")
@@ -50,7 +51,7 @@ def test_the_run_writes_obligations_that_the_kernel_verifies(data):
         assert out["ok"], out["failure"]
         assert out["verified"] > 0, c["id"]
     kinds = {ob["kind"] for c in data["certificates"] for ob in c["obligations"]}
-    assert {"digits", "root_count", "sign_table", "signs_query", "identity"} <= kinds
+    assert {"digits", "root_count", "sign_table", "signs_query", "identity", "signed", "resultant"} <= kinds
 
 
 def test_the_file_is_deterministic(data):
@@ -166,3 +167,30 @@ def test_certify_verify_exit_codes(tmp_path, data):
     assert ok.returncode == 0, ok.stdout + ok.stderr
     assert failed.returncode == 1 and "T5: FAILED: obligation T5:" in failed.stdout
     assert missing.returncode == 2
+
+
+def test_a_changed_entry_of_a_product_is_rejected(data):
+    c = cert(data, "T1")
+    ob = first(c, "identity", lambda ob: isinstance(ob["lhs"], dict) and ob["holds"])
+    coef, exps = ob["lhs"]["product"][0]["entries"][0]["num"][0]
+    ob["lhs"]["product"][0]["entries"][0]["num"][0] = [str(Fraction(coef) * 2), exps]
+    assert "not equal" in rejected(c, ob["id"])
+
+
+def test_a_changed_resultant_is_rejected(data):
+    c = cert(data, "T4")
+    ob = first(c, "resultant")
+    ob["poly"][0] = str(Fraction(ob["poly"][0]) + 1)
+    rejected(c, ob["id"])
+
+
+def test_a_changed_sign_hypothesis_is_rejected(data):
+    """A sign by inspection rests on the signs of the atoms: flip one it uses."""
+    c = cert(data, "S2")
+    ob = first(c, "signed", lambda ob: any(f["how"] == "terms" for f in ob["num"]["factors"] + ob["den"]["factors"])
+               and ob["hyp"])
+    used = next(name for name in ob["hyp"]
+                if any(t[1][ob["vars"].index(name)] % 2 for f in ob["num"]["factors"] + ob["den"]["factors"]
+                       if f["how"] == "terms" for t in f["form"]))
+    ob["hyp"][used] = -ob["hyp"][used]
+    rejected(c, ob["id"])
