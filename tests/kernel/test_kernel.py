@@ -194,3 +194,9 @@ def test_a_changed_sign_hypothesis_is_rejected(data):
                        if f["how"] == "terms" for t in f["form"]))
     ob["hyp"][used] = -ob["hyp"][used]
     rejected(c, ob["id"])
+
+
+def test_the_file_follows_its_schema(data):
+    jsonschema = pytest.importorskip("jsonschema")
+    schema = json.loads((ROOT / "certify_kernel" / "certificates.schema.json").read_text())
+    jsonschema.validate(data, schema)
