@@ -331,6 +331,7 @@ class SignTable:
         right = [c for c in self.cells if c.lo == point]
         return (left[0], right[0]) if left and right else None
 
+    @fact(facts.sign_around)
     def changes_at(self, branch: int, point) -> bool:
         """The sign on ``branch`` differs on the two cells adjacent to ``point``."""
         cells = self._around(point)
@@ -338,6 +339,7 @@ class SignTable:
             return False
         return cells[0].signs[branch] * cells[1].signs[branch] < 0
 
+    @fact(facts.sign_around)
     def keeps_sign_at(self, branch: int, point) -> bool:
         """No sign change on ``branch`` across ``point`` (true where the branch ends there)."""
         cells = self._around(point)

@@ -130,6 +130,18 @@ def _sign_code(s):
     return "missing" if s == "missing" else "undecided"
 
 
+def sign_around(answer, table, branch, point) -> list:
+    """changes_at / keeps_sign_at: the signs on ``branch`` over the two cells beside ``point``."""
+    cells = table._around(point)
+    if cells is None:
+        raise ValueError("no cell on one side of the point")
+    out = []
+    for cell in cells:
+        sign = cell.signs[branch] if branch < len(cell.signs) else "missing"
+        out.append(sign_query([sign], table, branch, cell.lo, cell.hi, include_points=False))
+    return out
+
+
 def sign_query(result, table, branch, lo=None, hi=None, include_points=True):
     """The signs a sign table gives on one branch over ]lo, hi[, with the part of the table
     it reads: the cells that meet ]lo, hi[, their samples and the signs on that branch."""
