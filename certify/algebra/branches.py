@@ -282,10 +282,19 @@ class Cell:
     def __init__(self, lo: Algebraic, hi: Algebraic, sample: flint.fmpq, branches_at, sign_of):
         self.lo, self.hi, self.sample = lo, hi, sample
         self._branches_at, self._sign_of = branches_at, sign_of
+        self._branches: list[Algebraic] | None = None
+        self.table: SignTable | None = None      # set by the table (for the kernel's record)
 
-    @cached_property
+    @property
     def branches(self) -> list[Algebraic]:
-        return self._branches_at(self.sample)
+        """The real eigenvalues at the sample, largest first: their number is that on the cell."""
+        return self._real_branches()
+
+    @fact(facts.cell_branches)
+    def _real_branches(self) -> list[Algebraic]:
+        if self._branches is None:
+            self._branches = self._branches_at(self.sample)
+        return self._branches
 
     @cached_property
     def signs(self) -> Lazy:
@@ -300,7 +309,13 @@ class SignTable:
 
     def __init__(self, condition: str, interval: tuple, critical: list, cells: list, point_at=None):
         self.condition, self.interval, self.critical, self.cells = condition, interval, critical, cells
-        self.points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
+        self._points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
+
+    @property
+    @fact(facts.at_algebraic_r)
+    def points(self) -> Lazy:
+        """The signs at the critical values (read by a proof: a fact the kernel cannot check)."""
+        return self._points
 
     @fact(facts.sign_query)
     def signs(self, branch: int, lo=None, hi=None, include_points=True) -> set:
@@ -508,6 +523,8 @@ class Spectrum:
                       lambda t, L: self._cell_sign(cond, t, L)) for a, b in zip(ends, ends[1:])]
         table = SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, lambda rc: self.sign_at_point(cond, rc))
         table.source = (self, cond)      # what the independent kernel re-derives (facts.sign_query)
+        for cell in cells:
+            cell.table = table
         return table
 
     def _cell_sign(self, cond: Condition, t, L: Algebraic):

@@ -130,6 +130,18 @@ def _sign_code(s):
     return "missing" if s == "missing" else "undecided"
 
 
+def cell_branches(answer, cell) -> dict:
+    """The number of real eigenvalues on a cell of a sign table (no sign claimed)."""
+    if cell.table is None:
+        raise ValueError("a cell outside a sign table")
+    spectrum, cond = cell.table.source
+    from .poly import ring_terms
+    return {"kind": "sign_table", "cp": ring_terms_data(ring_terms(spectrum.ring_cp)),
+            "parts": {k: ring_terms_data(v) for k, v in cond.terms.items() if v},
+            "ends": [number_of(cell.lo), number_of(cell.hi)], "samples": [rational(cell.sample)],
+            "signs": [["?"] * len(answer)]}
+
+
 def sign_around(answer, table, branch, point) -> list:
     """changes_at / keeps_sign_at: the signs on ``branch`` over the two cells beside ``point``."""
     cells = table._around(point)
