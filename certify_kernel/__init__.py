@@ -32,7 +32,7 @@ def verify_certificate(cert: dict) -> dict:
     obligations = {ob["id"]: ob for ob in cert["obligations"]}
     env: dict = {"obligations": obligations, "verified": set()}
     unsupported: dict = {}
-    out = {"id": cert["id"], "ok": True, "failure": "", "unsupported": unsupported}
+    out = {"id": cert["id"], "status": cert.get("status", ""), "ok": True, "failure": "", "unsupported": unsupported}
     if len(obligations) != len(cert["obligations"]):
         return {**out, "ok": False, "failure": "two obligations share an id"}
     for ob in cert["obligations"]:

@@ -51,8 +51,11 @@ def main(argv=None) -> int:
     n = sum(r.get("subclaims", 0) for r in results)
     k = sum(r.get("verified", 0) for r in results)
     whole = sum(1 for r in results if r["ok"] and r["subclaims"] and r["verified"] == r["subclaims"])
+    proved = [r for r in results if r["ok"] and r["status"] in ("PASS", "ERRATUM")]
+    pk, pn = sum(r["verified"] for r in proved), sum(r["subclaims"] for r in proved)
     print(f"{len(results)} certificates: {len(failed)} failed, {whole} independently verified whole; "
-          f"{k}/{n} sub-claims independently verified ({time.perf_counter() - start:.1f} s)")
+          f"{k}/{n} sub-claims independently verified, {pk}/{pn} of the PASS and ERRATUM ones"
+          f"{f' ({100 * pk / pn:.0f}%)' if pn else ''} ({time.perf_counter() - start:.1f} s)")
     return 1 if failed else 0
 
 
