@@ -130,6 +130,16 @@ def identity(ob: dict, env) -> None:
     non-zero normal form means the identity is false."""
     names = ob["vars"]
     pairs = [(names.index(c), names.index(s)) for c, s in ob.get("circles", [])]
+    modulo = None
+    if ob.get("modulo"):
+        k = names.index(ob["modulo"]["var"])
+        modulo = (k, mpoly({"vars": names, "terms": ob["modulo"]["poly"]}))
+        top = max((key[k] for key in modulo[1]), default=0)
+        lead = {key: v for key, v in modulo[1].items() if key[k] == top}
+        unit = tuple(top if i == k else 0 for i in range(len(names)))
+        if top < 1 or list(lead) != [unit]:
+            raise Failed("the modulus is not monic in its variable (up to a constant)")
+        modulo = (k, {key: v / lead[unit] for key, v in modulo[1].items()})
     left, right = _side(ob["lhs"], names), _side(ob["rhs"], names)
     if len(left) != len(right):
         raise Failed("the two sides have different numbers of components")
@@ -137,11 +147,30 @@ def identity(ob: dict, env) -> None:
     for k, ((nl, dl), (nr, dr)) in enumerate(zip(left, right)):
         if not reduce_circles(dl, pairs) or not reduce_circles(dr, pairs):
             raise Failed(f"component {k + 1}: a denominator vanishes identically")
-        if reduce_circles(madd(mmul(nl, dr), mmul(nr, dl), -1), pairs):
+        diff = reduce_circles(madd(mmul(nl, dr), mmul(nr, dl), -1), pairs)
+        if modulo is not None:
+            diff = reduce_monic(diff, *modulo)
+        if diff:
             zero = False
     if zero != ob["holds"]:
         raise Failed("the two sides are " + ("equal" if zero else "not equal") +
                      f" (the obligation says {'equal' if ob['holds'] else 'not equal'})")
+
+
+def reduce_monic(p: dict, k: int, m: dict) -> dict:
+    """The remainder of p by m, m monic in variable k of degree d (division by a monic
+    polynomial needs no fraction, and the remainder, of degree < d in that variable, is 0 exactly
+    when m divides p)."""
+    d = max(key[k] for key in m)
+    lower = {key: v for key, v in m.items() if key[k] < d}          # λ^d ≡ −lower
+    while True:
+        high = {key: v for key, v in p.items() if key[k] >= d}
+        if not high:
+            return p
+        key, v = max(high.items(), key=lambda kv: kv[0][k])
+        shift = tuple(e - d if i == k else e for i, e in enumerate(key))
+        p = madd(p, {key: v}, -1)                                    # remove v·x^shift·λ^d ...
+        p = madd(p, mmul({shift: v}, lower), -1)                     # ... and add v·x^shift·(−lower)
 
 
 _NAMES = ("N0", "N1", "D0", "D1", "delta")

@@ -81,6 +81,7 @@ from certify.run import (
     eliminant_check,
     gathered,
     identity_facts,
+    identity_modulo_facts,
     overridden,
     product_fact,
     quantity,
@@ -411,14 +412,16 @@ def eigenvector_components(M, U, V):
     """Substitute q(0) = (-1, u, v) into rows 1 and 2 of M q - λ q: zero in Q(r, λ)."""
     q0 = sp.Matrix([-1, parse(U), parse(V)])
     res = (M * q0 - lam * q0).applyfunc(sp.cancel)
-    third = reduce_mod(res[2], characteristic_polynomial(M))
+    cpM = characteristic_polynomial(M)
+    third = reduce_mod(res[2], cpM)
     return conclude([
         Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0,
               obligations=identity_facts((res[0] == 0, (M * q0)[0], lam * q0[0]))),
         Check("second component vanishes identically", res[1] == 0,
               obligations=identity_facts((res[1] == 0, (M * q0)[1], lam * q0[1]))),
         Check("and the third vanishes modulo cp(M): q(0) is an eigenvector", third == 0,
-              [f"third component reduced modulo cp: `{show(third)}`"]),
+              [f"third component reduced modulo cp: `{show(third)}`"],
+              obligations=identity_modulo_facts(cpM, (third == 0, (M * q0)[2], lam * q0[2]))),
     ])
 
 
@@ -448,7 +451,11 @@ def position_map_of_ababcb(candidate, a, b, c, d):
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
                f"printed c / computed c = {factor}"] +
-              [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()]),
+              [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()],
+              obligations=identity_modulo_facts(cp, *[(minors[f"{names[i]}{names[j]}"] == 0,
+                                                       P[i].as_expr() * comp[j].as_expr(),
+                                                       P[j].as_expr() * comp[i].as_expr())
+                                                      for i in range(4) for j in range(i + 1, 4)])),
         Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
               "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
               bool(factor.is_Rational) and factor < 0),

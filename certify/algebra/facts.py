@@ -63,19 +63,24 @@ def generators(*exprs) -> tuple[list, list]:
     return gens, circles + [["cos" + a, "sin" + a] for a in sorted(named)]
 
 
-def identity(answer: bool, lhs, rhs) -> dict:
-    """lhs ≡ rhs (scalars or vectors) on the circles cos² + sin² = 1, with the engine's answer."""
+def identity(answer: bool, lhs, rhs, modulo=None) -> dict:
+    """lhs ≡ rhs (scalars or vectors) on the circles cos² + sin² = 1 (and modulo ``modulo``, a
+    polynomial monic in λ, when given), with the engine's answer."""
     if isinstance(lhs, sp.MatrixBase) or isinstance(rhs, sp.MatrixBase):
         left, right = list(lhs), list(rhs)
         if lhs.shape != rhs.shape:
             raise ValueError("shapes differ")
     else:
         left, right = [lhs], [rhs]
-    gens, circles = generators(*left, *right)
+    gens, circles = generators(*left, *right, *([modulo] if modulo is not None else []))
     names = [str(g) for g in gens]
-    return {"kind": "identity", "vars": names, "circles": circles,
-            "lhs": [rational_function(e, gens) for e in left],
-            "rhs": [rational_function(e, gens) for e in right], "holds": bool(answer)}
+    out = {"kind": "identity", "vars": names, "circles": circles,
+           "lhs": [rational_function(e, gens) for e in left],
+           "rhs": [rational_function(e, gens) for e in right], "holds": bool(answer)}
+    if modulo is not None:
+        from .poly import lam
+        out["modulo"] = {"var": str(lam), "poly": rational_function(modulo, gens)["num"]}
+    return out
 
 
 def number_of(a) -> dict | str:

@@ -26,6 +26,7 @@ from .checks import (
                      fact_ids,
                      identity,
                      identity_facts,
+                     identity_modulo_facts,
                      product_fact,
                      result_check,
                      resultant_fact,
@@ -69,7 +70,7 @@ from .section5_orbits import explanations
 
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
-    "product_fact", "identity_facts", "fact_ids", "resultant_fact",
+    "product_fact", "identity_facts", "fact_ids", "resultant_fact", "identity_modulo_facts",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "replaying", "gathered", "take",
     "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name",

@@ -112,6 +112,11 @@ def product_fact(holds: bool, factors: list, rhs, entry: int | None = None) -> l
     return obligations.take([i]) if i else []
 
 
+def identity_modulo_facts(modulo, *triples) -> list[str]:
+    """:func:`identity_facts` modulo a polynomial monic in λ (cp)."""
+    return fact_ids(*[lambda h=h, a=a, b=b: facts.identity(h, a, b, modulo) for h, a, b in triples])
+
+
 def identity_facts(*triples) -> list[str]:
     """Record, for the independent kernel, identities ``(holds, lhs, rhs)`` (scalars or matrices;
     ``lhs`` or ``rhs`` a list of matrices stands for their product) with the engine's verdicts;

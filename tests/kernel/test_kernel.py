@@ -1,7 +1,7 @@
 """The independent kernel (certify_kernel): a certificates file written by the run is verified,
 every tampering of it is rejected with a message naming the obligation, and the kernel needs
 nothing but the standard library.  The file is made from a few certificates (L1: digits and a
-sign table; T1: a product of matrices; T4: a resultant; T5: Sturm counts; T17: sign tables with √Δ;
+sign table; T1: a product of matrices; T4: a resultant; T5: Sturm counts; T9: an identity modulo cp; T17: sign tables with √Δ;
 S2: signs by inspection; S3: trigonometric identities)."""
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ import certify_kernel
 from certify.run import report, runner
 
 ROOT = Path(__file__).resolve().parents[2]
-IDS = ["L1", "T1", "T4", "T5", "T17", "S2", "S3"]
+IDS = ["L1", "T1", "T4", "T5", "T9", "T17", "S2", "S3"]
 
 
 @pytest.fixture(scope="module")
@@ -200,3 +200,11 @@ def test_the_file_follows_its_schema(data):
     jsonschema = pytest.importorskip("jsonschema")
     schema = json.loads((ROOT / "certify_kernel" / "certificates.schema.json").read_text())
     jsonschema.validate(data, schema)
+
+
+def test_a_changed_modulus_is_rejected(data):
+    c = cert(data, "T9")
+    ob = first(c, "identity", lambda ob: "modulo" in ob)
+    coef, exps = ob["modulo"]["poly"][0]
+    ob["modulo"]["poly"][0] = [str(Fraction(coef) + 1), exps]
+    rejected(c, ob["id"])
