@@ -97,11 +97,30 @@ def _rf_add(a: tuple, b: tuple) -> tuple:
     return madd(mmul(a[0], b[1]), mmul(b[0], a[1])), mmul(a[1], b[1])
 
 
+def _det(entries: list, n: int, nvars: int) -> tuple:
+    """The determinant by Laplace expansion along the first row (its definition, regrouped)."""
+    if n == 1:
+        return entries[0]
+    total = ({}, {tuple([0] * nvars): Fraction(1)})
+    for j in range(n):
+        minor = [entries[i * n + c] for i in range(1, n) for c in range(n) if c != j]
+        term = _rf_mul(entries[j], _det(minor, n - 1, nvars))
+        if j % 2:
+            term = ({k: -v for k, v in term[0].items()}, term[1])
+        total = _rf_add(total, term)
+    return total
+
+
 def _side(side, names: list) -> list:
     """The components of one side: a list of rational functions, or {"product": [matrices],
     "entry": k} (the matrices multiplied by the definition of the product, then read row by row)."""
     if isinstance(side, list):
         return [_fraction_parts(x, names) for x in side]
+    if "det" in side:
+        m = side["det"]
+        if m["rows"] != m["cols"]:
+            raise Failed("the determinant of a matrix that is not square")
+        return [_det([_fraction_parts(x, names) for x in m["entries"]], m["rows"], len(names))]
     mats = []
     for m in side["product"]:
         entries = [_fraction_parts(x, names) for x in m["entries"]]

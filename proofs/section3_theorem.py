@@ -77,6 +77,7 @@ from certify.run import (
     certificate,
     conclude,
     count_check,
+    determinant_fact,
     digits_check,
     eliminant_check,
     gathered,
@@ -218,7 +219,11 @@ def matrix_of_ababcb(M, M_text):
 def characteristic_polynomial_of_M(cp, cp_text):
     """det(λI - M) expanded, against the print."""
     diff = sp.expand(cp - parse(cp_text))
-    return conclude([Check("det(λI - M) - printed cp = 0", diff == 0, [f"det(λI - M) = `{show(sp.collect(cp, lam))}`"])])
+    # for the kernel: det(λI - M) of the printed M (T1: the product BCBABA) is the printed cp
+    ok = diff == 0
+    return conclude([Check("det(λI - M) - printed cp = 0", ok, [f"det(λI - M) = `{show(sp.collect(cp, lam))}`"],
+                           obligations=determinant_fact(ok, lam * sp.eye(3) - sp.Matrix(parse(M_PRINTED)),
+                                                        parse(cp_text)))])
 
 
 @certificate("T3", "l. 340", "det M = r^6 > 0, hence a positive real eigenvalue for every r in ]0,1[.",

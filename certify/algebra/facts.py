@@ -251,3 +251,12 @@ def resultant(holds: bool, f, g, poly, relation: str) -> dict:
 def at_algebraic_r(*args, **kwargs) -> dict:
     """A sign on a branch at an algebraic r (a critical value): not in the kernel's language."""
     return {"kind": "unsupported", "reason": "a sign at an algebraic r: the kernel lacks arithmetic in Q(r0)[λ]"}
+
+
+def determinant_identity(holds: bool, matrix, rhs) -> dict:
+    """det(matrix) = rhs, the determinant expanded by the kernel."""
+    gens, circles = generators(*list(matrix), rhs)
+    return {"kind": "identity", "vars": [str(g) for g in gens], "circles": circles,
+            "lhs": {"det": {"rows": matrix.shape[0], "cols": matrix.shape[1],
+                            "entries": [rational_function(e, gens) for e in matrix]}},
+            "rhs": [rational_function(rhs, gens)], "holds": bool(holds)}

@@ -21,6 +21,7 @@ from .checks import (
                      combined,
                      concluded,
                      count_check,
+                     determinant_fact,
                      digits_check,
                      eliminant_check,
                      fact_ids,
@@ -71,6 +72,7 @@ from .section5_orbits import explanations
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "product_fact", "identity_facts", "fact_ids", "resultant_fact", "identity_modulo_facts",
+    "determinant_fact",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "replaying", "gathered", "take",
     "load_findings", "explanations", "save_figure", "omega_figure", "section5_figure", "section5_name",

@@ -140,3 +140,8 @@ def resultant_fact(holds: bool, f, g, poly, relation: str) -> list[str]:
     """Record that Res_λ(f, g) (g "d/dλ": ∂f/∂λ) is "proportional" to, or has the "same_factors"
     as, the polynomial ``poly`` in r (the engine's verdict ``holds``); the ids."""
     return fact_ids(lambda: facts.resultant(holds, f, g, poly, relation))
+
+
+def determinant_fact(holds: bool, matrix, rhs) -> list[str]:
+    """Record that det(matrix) = rhs (the engine's verdict ``holds``); the ids."""
+    return fact_ids(lambda: facts.determinant_identity(holds, matrix, rhs))
