@@ -24,6 +24,7 @@ class Recording:
     def __init__(self, prefix: str) -> None:
         self.prefix, self.items, self.by_key, self.pending = prefix, [], {}, []
         self.depth = 0
+        self.taken: set[str] = set()      # ids a check has taken from the pending ones
 
     def add(self, ob: dict) -> str:
         """The id of ``ob`` (a new one if it was not recorded before)."""
@@ -67,7 +68,7 @@ def record(ob: dict) -> str | None:
         return None
     rec = _ACTIVE[-1]
     oid = rec.add(ob)
-    if oid not in rec.pending:
+    if oid not in rec.pending and oid not in rec.taken:   # a fact goes to the first check that takes it
         rec.pending.append(oid)
     return oid
 
@@ -107,7 +108,17 @@ def replaying(func: Callable) -> Callable:
                 emit(ob)
         return memo[args][0]
     inner.cache_clear = memo.clear   # type: ignore[attr-defined]
+    _MEMOS.append(memo)
     return inner
+
+
+_MEMOS: list[dict] = []
+
+
+def forget() -> None:
+    """Empty every :func:`replaying` memo (with the engine's caches: a cold run)."""
+    for memo in _MEMOS:
+        memo.clear()
 
 
 def take(own: list[str] | None = None) -> list[str]:
@@ -120,6 +131,7 @@ def take(own: list[str] | None = None) -> list[str]:
         rec.pending = [i for i in rec.pending if i not in own]
         return list(own)
     out, rec.pending = rec.pending, []
+    rec.taken.update(out)
     return out
 
 

@@ -371,6 +371,7 @@ def reset_caches() -> None:
     """Forget what the engine memoises across runs (every cache registered with
     :func:`certify.caches.register`): the next run is cold."""
     caches.reset()
+    obligations.forget()
 
 
 def plain(outcome: Outcome) -> Outcome:
@@ -438,6 +439,7 @@ def _worker_run(k: int):
     queue = _DONE
     assert queue is not None  # set by _worker_start, the initializer of every worker
     try:
+        reset_caches()      # each unit from cold caches: what it records does not depend on the units before
         done, seconds = run_unit(_PLAN[k], report=lambda cert: queue.put(cert.id))
     except KeyboardInterrupt:  # raised by a certificate itself
         return None
@@ -495,7 +497,7 @@ def run_selected(ids=None, progress=None, jobs: int = 1,
     """Run the selected certificates on ``jobs`` processes; return the outcomes (in claim
     order, whatever the order they finished in) and the timings.
 
-    With ``jobs = 1`` they run one after another in claim order, in this process.
+    With ``jobs = 1`` they run unit by unit in this process, each unit from cold caches.
     With ``jobs > 1`` the units (:func:`units`) run in forked worker processes, the
     heaviest first by ``estimates`` (seconds per certificate id, e.g. the last run's
     timings; by size without them).  The outcomes are the same as with ``jobs = 1``:
@@ -513,7 +515,12 @@ def run_selected(ids=None, progress=None, jobs: int = 1,
     else:
         done = iter(range(1, len(certs) + 1))
         report = (lambda cert: progress(next(done), len(certs), cert.id)) if progress else None
-        finished, seconds = run_unit(certs, report)
+        finished, seconds = [], {}
+        for unit in plan:   # unit by unit from cold caches, as the workers do: the same records
+            reset_caches()
+            part, secs = run_unit(unit, report)
+            finished += part
+            seconds.update(secs)
     finished.sort(key=lambda item: claim_key(item[0].id))
     timings = {cert.id: {"seconds": round(total, 4), "of_which_shared": round(shared, 4)}
                for cert, _, total, shared in finished}
