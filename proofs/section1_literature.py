@@ -15,13 +15,12 @@ Remark 3.2 (T26, the threshold 5-2√6 of (ab)^3(cb)^3) is in proofs/section3_re
 from __future__ import annotations
 
 import re
-from functools import cache
 
 from certify.algebra import Algebraic, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
 from certify.patterns import analyse, fmt, vanishes_on_branch
 from certify.patterns import parse as parse_word
-from certify.run import PASS, Check, certificate, conclude, overridden, quantity, replaced
+from certify.run import PASS, Check, certificate, conclude, gathered, overridden, quantity, replaced, replaying, take
 
 
 def expand_pattern(pattern: str) -> str:
@@ -43,7 +42,7 @@ def expand_pattern(pattern: str) -> str:
 N_MAX = 6                      # (ab)^n(cb)^n analysed for n = 2..N_MAX (about a minute in all)
 
 
-@cache
+@replaying
 def pattern(word: str):
     """`certify pattern word` over ]0, 1[ (memoised for the certificates of one process)."""
     return analyse(word)
@@ -75,17 +74,21 @@ def _digits_check(name: str, a, digits: str) -> Check:
 def _threshold_certificate(word, threshold, digits, what):
     """No self-similar datum above the threshold, stable self-similar data on all of
     ]0, threshold[ (an open set of initial data: positive measure)."""
-    res = pattern(word)
+    with gathered() as analysis:         # the analysis' facts: for the checks that read it
+        res = pattern(word)
+    take(analysis)
     thr = radical(threshold)
     exists = _pieces(res, "exists")
     checks = [_digits_check(threshold, thr, digits),
               Check(f"for r > {threshold} no self-similar datum of {word} exists on any branch "
                     f"(λ > 0 real, u > 0{', x > 0' if res.system == 'four' else ''})",
-                    bool(exists) and _top(exists) <= thr, [f"exists: {_sets(res, 'exists')}"]),
+                    bool(exists) and _top(exists) <= thr, [f"exists: {_sets(res, 'exists')}"],
+                    obligations=analysis + take()),
               Check(f"for every r in ]0, {threshold}[ the self-similar datum of {word} (upper branch) is feasible "
                     f"and stable ({what})",
                     any(lo == 0 and hi == thr for _, _, lo, hi in res.intervals("stable", 0)),
-                    [f"stable: {_sets(res, 'stable')}", f"conditions: {'; '.join(res.conditions['stable'])}"]),
+                    [f"stable: {_sets(res, 'stable')}", f"conditions: {'; '.join(res.conditions['stable'])}"],
+                    obligations=analysis + take()),
               Check("every point of ]0, 1[ decided", not res.undecided, res.undecided)]
     ev = [f"`certify pattern {word}`: {res.verdict}", "M = `[" + ", ".join("[" + ", ".join(row) + "]" for row in res.matrix) + "]`", f"cp = `{res.cp}`",
           f"disc = `{res.discriminant}`", f"feasible: {_sets(res, 'feasible')}"]

@@ -13,7 +13,7 @@ import sympy as sp
 from certify.algebra import parse, r, show, statements, to_fmpq
 from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.dynamics import simulate as sim
-from certify.run import PASS, Check, certificate, conclude, overridden, replaced, reworded, unread
+from certify.run import PASS, Check, certificate, conclude, identity_facts, overridden, replaced, reworded, unread
 
 A_PRINTED = "[[-r, 0, 0], [(1+r)/2, 1, 0], [0, 0, 1]]"
 B_PRINTED = "[[1, (1+r)/2, 0], [0, -r, 0], [0, (1+r)/2, 1]]"
@@ -76,8 +76,11 @@ def a_and_c_commute(A, B, C, equality):
     eq = statements.product_equation(equality)
     X, Y = (sp.prod((K[letter] for letter in word), start=sp.eye(3)) for word in (eq.lhs, eq.rhs))
     diff = (X - Y).applyfunc(sp.expand)
-    return conclude([Check(f"{equality} identically in r", (diff == sp.zeros(3, 3)) == eq.equal,
-                           [f"{eq.lhs} - {eq.rhs} = `{show(diff.tolist())}`"])])
+    same = diff == sp.zeros(3, 3)
+    facts = identity_facts((same, [K[letter] for letter in eq.lhs] or [sp.eye(3)],
+                            [K[letter] for letter in eq.rhs] or [sp.eye(3)]))
+    return conclude([Check(f"{equality} identically in r", same == eq.equal,
+                           [f"{eq.lhs} - {eq.rhs} = `{show(diff.tolist())}`"], obligations=facts)])
 
 
 Q_I = sp.Symbol("q_i")
@@ -131,9 +134,12 @@ def scaling_invariance(A, B, C, time_factor):
         t, ts = -p[i] / q[i], -(al * p[i]) / (be * q[i])
         new_p, new_ps = p + t * q, al * p + ts * be * q
         factor = sp.sympify(time_factor, locals={"alpha": al, "beta": be})
-        ok = (sp.simplify(ts - factor * t) == 0 and (new_ps - al * new_p).applyfunc(sp.simplify) == sp.zeros(3, 1)
-              and (K * (be * q) - be * (K * q)).applyfunc(sp.expand) == sp.zeros(3, 1))
-        checks.append(Check(f"collision {letter}: time ×α/β, p(t) ×α, K q ×β", ok))
+        parts = [(sp.simplify(ts - factor * t) == 0, ts, factor * t),
+                 ((new_ps - al * new_p).applyfunc(sp.simplify) == sp.zeros(3, 1), new_ps, al * new_p),
+                 ((K * (be * q) - be * (K * q)).applyfunc(sp.expand) == sp.zeros(3, 1), K * (be * q), be * (K * q))]
+        ok = all(holds for holds, _, _ in parts)
+        checks.append(Check(f"collision {letter}: time ×α/β, p(t) ×α, K q ×β", ok,
+                            obligations=identity_facts(*parts)))
     runs = scaled_runs_agree(sp.sympify(time_factor, locals={"alpha": al, "beta": be}), al, be)
     return conclude(checks, evidence=[f"Supporting evidence, not proof: {runs.statement}: "
                                       f"{'yes' if runs.holds else 'NO'}, {runs.evidence[0]}."])

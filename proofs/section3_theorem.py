@@ -77,12 +77,19 @@ from certify.run import (
     certificate,
     conclude,
     count_check,
+    determinant_fact,
     digits_check,
     eliminant_check,
+    gathered,
+    identity_facts,
+    identity_modulo_facts,
     overridden,
+    product_fact,
     quantity,
     replaced,
+    resultant_fact,
     reworded,
+    take,
     unread,
 )
 
@@ -190,9 +197,16 @@ def matrix_of_ababcb(M, M_text):
     """The product of the collision matrices in time order a, b, a, b, c, b."""
     printed = sp.Matrix(parse(M_text))
     direct = (B_ * C_ * B_ * A_ * B_ * A_).applyfunc(sp.factor)
-    checks = [Check(f"entry ({i + 1},{j + 1}) as printed", sp.simplify(M[i, j] - printed[i, j]) == 0,
-                    [f"computed `{show(M[i, j])}`"]) for i in range(3) for j in range(3)]
-    checks.append(Check("word_matrix('ababcb') is the product BCBABA", (direct - M).applyfunc(sp.simplify) == sp.zeros(3, 3)))
+    word = [B_, C_, B_, A_, B_, A_]
+    checks = []
+    for i in range(3):
+        for j in range(3):
+            ok = sp.simplify(M[i, j] - printed[i, j]) == 0
+            checks.append(Check(f"entry ({i + 1},{j + 1}) as printed", ok, [f"computed `{show(M[i, j])}`"],
+                                obligations=product_fact(ok, word, printed, 3 * i + j)))
+    same = (direct - M).applyfunc(sp.simplify) == sp.zeros(3, 3)
+    checks.append(Check("word_matrix('ababcb') is the product BCBABA", same,
+                        obligations=product_fact(same, word, M)))
     return conclude(checks, note="l. 259 has an unbalanced parenthesis, `(r^3 - r^2 + 7r + 9))/32`; read without it.")
 
 
@@ -205,7 +219,11 @@ def matrix_of_ababcb(M, M_text):
 def characteristic_polynomial_of_M(cp, cp_text):
     """det(λI - M) expanded, against the print."""
     diff = sp.expand(cp - parse(cp_text))
-    return conclude([Check("det(λI - M) - printed cp = 0", diff == 0, [f"det(λI - M) = `{show(sp.collect(cp, lam))}`"])])
+    # for the kernel: det(λI - M) of the printed M (T1: the product BCBABA) is the printed cp
+    ok = diff == 0
+    return conclude([Check("det(λI - M) - printed cp = 0", ok, [f"det(λI - M) = `{show(sp.collect(cp, lam))}`"],
+                           obligations=determinant_fact(ok, lam * sp.eye(3) - sp.Matrix(parse(M_PRINTED)),
+                                                        parse(cp_text)))])
 
 
 @certificate("T3", "l. 340", "det M = r^6 > 0, hence a positive real eigenvalue for every r in ]0,1[.",
@@ -263,7 +281,8 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     condition = statements.relation(three_real_when, {"Δ_cp": DELTA})
     three_real = {s: constant and int(sp.sign(ratio)) * s > 0 for s in (-1, 0, 1)}   # Disc = ratio·Δ_cp > 0
     return conclude([
-        Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"]),
+        Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
+              obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional")),
         Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0),
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
@@ -367,9 +386,11 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
     T = spectrum.table("λ", lam, 0, 1)
     three = all((len(c.branches) == 3) == (c.hi <= rs) for c in T.cells)
     st = statements.statement(positive, {"λ": lam})
-    signs = [T.signs(k, st.range.lo, st.range.hi) for k in range(3)]
+    with gathered() as facts_three:
+        signs = [T.signs(k, st.range.lo, st.range.hi) for k in range(3)]
     all_three = all(st.relation.holds_on(lam, sg) for sg in signs)
-    pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
+    with gathered() as facts_rstar:
+        pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
     figs = spectrum_figures(spectrum, T, marks={"r*": rs, "5-2√6": rr1, "(7-2√10)/3": unique_root("3*r^2 - 14*r + 3")})
     return conclude([
         Check("three distinct real eigenvalues exactly on ]0, r*[ (one real eigenvalue on ]r*, 1[ but a double "
@@ -382,9 +403,9 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
         Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
                                                                              f"r* is {rs.describe()}"]),
         Check(f"all three eigenvalues: {positive}", all_three,
-              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)]),
+              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)], obligations=take(facts_three)),
         Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
-              "(all positive there, ordered)", pos_rstar),
+              "(all positive there, ordered)", pos_rstar, obligations=take(facts_rstar)),
     ], figures=figs)
 
 
@@ -396,12 +417,16 @@ def eigenvector_components(M, U, V):
     """Substitute q(0) = (-1, u, v) into rows 1 and 2 of M q - λ q: zero in Q(r, λ)."""
     q0 = sp.Matrix([-1, parse(U), parse(V)])
     res = (M * q0 - lam * q0).applyfunc(sp.cancel)
-    third = reduce_mod(res[2], characteristic_polynomial(M))
+    cpM = characteristic_polynomial(M)
+    third = reduce_mod(res[2], cpM)
     return conclude([
-        Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0),
-        Check("second component vanishes identically", res[1] == 0),
+        Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0,
+              obligations=identity_facts((res[0] == 0, (M * q0)[0], lam * q0[0]))),
+        Check("second component vanishes identically", res[1] == 0,
+              obligations=identity_facts((res[1] == 0, (M * q0)[1], lam * q0[1]))),
         Check("and the third vanishes modulo cp(M): q(0) is an eigenvector", third == 0,
-              [f"third component reduced modulo cp: `{show(third)}`"]),
+              [f"third component reduced modulo cp: `{show(third)}`"],
+              obligations=identity_modulo_facts(cpM, (third == 0, (M * q0)[2], lam * q0[2]))),
     ])
 
 
@@ -431,7 +456,11 @@ def position_map_of_ababcb(candidate, a, b, c, d):
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
                f"printed c / computed c = {factor}"] +
-              [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()]),
+              [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()],
+              obligations=identity_modulo_facts(cp, *[(minors[f"{names[i]}{names[j]}"] == 0,
+                                                       P[i].as_expr() * comp[j].as_expr(),
+                                                       P[j].as_expr() * comp[i].as_expr())
+                                                      for i in range(4) for j in range(i + 1, 4)])),
         Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
               "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
               bool(factor.is_Rational) and factor < 0),
@@ -447,7 +476,8 @@ def position_map_of_ababcb(candidate, a, b, c, d):
 def expansion_of_a_minus_d(a, d, amd):
     """a - d from the printed a and d, expanded, against the printed expansion."""
     diff = sp.expand(parse(a) - parse(d) - parse(amd))
-    return conclude([Check("(a) - (d) - (printed a-d) = 0", diff == 0, [f"difference: `{show(diff)}`"])])
+    return conclude([Check("(a) - (d) - (printed a-d) = 0", diff == 0, [f"difference: `{show(diff)}`"],
+                           obligations=identity_facts((diff == 0, parse(a) - parse(d), parse(amd))))])
 
 
 
@@ -626,25 +656,30 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
     amd, bb, cc = (spectrum.table(n, g, 0, 1) for n, g in (("a-d", parse(a) - parse(d)), ("b", parse(b)), ("c", parse(c))))
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     D = spectrum.table("Δ", fp.delta, 0, 1)
-    at_r2 = spectrum.sign_at_point(Condition.of("Δ", fp.delta), rr2)
-    between, ev_between = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, rr2)
-    zeros = [rc for rc in D.critical if rr2 < rc and spectrum.vanishes_at(fp.delta, rc, UPPER)]
-    cells_negative = D.signs(UPPER, rr2, 1, include_points=False) == {-1}
+    with gathered() as facts_r2:
+        at_r2 = spectrum.sign_at_point(Condition.of("Δ", fp.delta), rr2)
+    with gathered() as facts_between:
+        between, ev_between = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, rr2)
+    with gathered() as facts_zeros:
+        zeros = [rc for rc in D.critical if rr2 < rc and spectrum.vanishes_at(fp.delta, rc, UPPER)]
+        cells_negative = D.signs(UPPER, rr2, 1, include_points=False) == {-1}
+    take(facts_r2 + facts_between + facts_zeros)       # they belong to the checks below, not the first one
     printed = [
         Check("a-d, b, c > 0 on the upper branch for r < 5-2√6",
               all(T.holds(UPPER, 1, 0, rr1) for T in (amd, bb, cc))),
         Check("exactly one positive fixed point, x₊, for r < 5-2√6", xp.holds(UPPER, 1, 0, rr1) and xm.holds(UPPER, -1, 0, rr1),
               ["x₊ on the branches:\n\n" + xp.markdown(), "x₋ on the branches:\n\n" + xm.markdown()]),
-        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between),
-        Check("at r2 the fixed points are not real (Δ < 0 on the upper branch)", at_r2 is not None and at_r2[0] == -1),
+        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between, obligations=list(facts_between)),
+        Check("at r2 the fixed points are not real (Δ < 0 on the upper branch)", at_r2 is not None and at_r2[0] == -1,
+              obligations=list(facts_r2)),
         Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1", cells_negative and not zeros,
               ["Δ on the branches:\n\n" + D.markdown()] +
-              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros]),
+              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros], obligations=list(facts_zeros)),
     ]
     corrected = printed[:4] + [Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1, except at the one point "
                                      "r0 = (7-2√10)/3, where it vanishes",
                                      cells_negative and len(zeros) == 1 and zeros[0] == Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
-                                     corrects=printed[4])]
+                                     corrects=printed[4], obligations=list(facts_zeros))]
     for z in zeros:
         x0 = sp.cancel((fp.a - fp.d) / (2 * fp.c))
         sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), z)

@@ -52,6 +52,7 @@ from certify.run import (
     conclude,
     concluded,
     identity,
+    identity_facts,
     overridden,
     quantity,
     replaced,
@@ -269,7 +270,8 @@ def matrices_are(letter: str, seen: list, lines: str) -> Check:
     diffs = [(m - K).applyfunc(sp.expand) for m in seen]
     return Check(f"l. {lines}: every matrix printed inline ({len(seen)}) is {letter.upper()} "
                  "(certify.dynamics.model.collision_matrix)", bool(seen) and all(d.is_zero_matrix for d in diffs),
-                 [f"printed: `{T.show(sp.Matrix(m).tolist())}`" for m in seen[:1]])
+                 [f"printed: `{T.show(sp.Matrix(m).tolist())}`" for m in seen[:1]],
+                 obligations=identity_facts(*[(d.is_zero_matrix, m, K) for m, d in zip(seen, diffs)]) if seen else None)
 
 
 def call_factors(text: str, fn: str, names: dict) -> list[list[tuple]]:

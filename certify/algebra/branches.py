@@ -31,7 +31,9 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
+from certify.obligations import fact, silent
 
+from . import facts
 from . import numberfield as nf
 from .algebraic import Algebraic, sign_at, to_fmpq
 from .balls import GUARD, decide, precision
@@ -281,10 +283,19 @@ class Cell:
     def __init__(self, lo: Algebraic, hi: Algebraic, sample: flint.fmpq, branches_at, sign_of):
         self.lo, self.hi, self.sample = lo, hi, sample
         self._branches_at, self._sign_of = branches_at, sign_of
+        self._branches: list[Algebraic] | None = None
+        self.table: SignTable | None = None      # set by the table (for the kernel's record)
 
-    @cached_property
+    @property
     def branches(self) -> list[Algebraic]:
-        return self._branches_at(self.sample)
+        """The real eigenvalues at the sample, largest first: their number is that on the cell."""
+        return self._real_branches()
+
+    @fact(facts.cell_branches)
+    def _real_branches(self) -> list[Algebraic]:
+        if self._branches is None:
+            self._branches = self._branches_at(self.sample)
+        return self._branches
 
     @cached_property
     def signs(self) -> Lazy:
@@ -299,8 +310,15 @@ class SignTable:
 
     def __init__(self, condition: str, interval: tuple, critical: list, cells: list, point_at=None):
         self.condition, self.interval, self.critical, self.cells = condition, interval, critical, cells
-        self.points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
+        self._points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
 
+    @property
+    @fact(facts.at_algebraic_r)
+    def points(self) -> Lazy:
+        """The signs at the critical values (read by a proof: a fact the kernel cannot check)."""
+        return self._points
+
+    @fact(facts.sign_query)
     def signs(self, branch: int, lo=None, hi=None, include_points=True) -> set:
         """Signs taken by g on branch ``branch`` (0 = largest real eigenvalue) over
         ]lo, hi[ (default: the whole interval), interior critical values included.
@@ -329,6 +347,7 @@ class SignTable:
         right = [c for c in self.cells if c.lo == point]
         return (left[0], right[0]) if left and right else None
 
+    @fact(facts.sign_around)
     def changes_at(self, branch: int, point) -> bool:
         """The sign on ``branch`` differs on the two cells adjacent to ``point``."""
         cells = self._around(point)
@@ -336,6 +355,7 @@ class SignTable:
             return False
         return cells[0].signs[branch] * cells[1].signs[branch] < 0
 
+    @fact(facts.sign_around)
     def keeps_sign_at(self, branch: int, point) -> bool:
         """No sign change on ``branch`` across ``point`` (true where the branch ends there)."""
         cells = self._around(point)
@@ -343,6 +363,7 @@ class SignTable:
             return True
         return cells[0].signs[branch] == cells[1].signs[branch]
 
+    @silent
     def markdown(self, names=BRANCH_NAMES) -> str:
         """The sign table: one row per cell and per critical value."""
         width = max([len(c.signs) for c in self.cells] + [1])
@@ -375,6 +396,7 @@ def sign_word(signs) -> str:
 class Spectrum:
     """The real eigenvalue branches of cp(λ; r), cp ∈ Q[r][λ]."""
 
+    @silent
     def __init__(self, cp, ring_cp=None):
         """``cp`` an expression (or text) in r, λ; ``ring_cp`` the same polynomial as an
         element of the engine's ring, when the caller has it (no conversion then)."""
@@ -422,6 +444,7 @@ class Spectrum:
         t = to_fmpq(r0)
         return flint.fmpq_poly([c(t) for c in self._coefficients])
 
+    @silent
     def real_eigenvalues(self, r0) -> list[Algebraic]:
         """The real roots λ of cp(λ; r0), largest first, as algebraic numbers (Sturm);
         memoised, as the same samples recur across tables."""
@@ -467,6 +490,7 @@ class Spectrum:
         cond.degenerate = [d for d in cond.degenerate if d[0] != label] + [(label, e)]
         return R
 
+    @silent
     def critical_values(self, cond: Condition | None, lo, hi) -> list[Algebraic]:
         """The critical values in ]lo, hi[, increasing: the polynomials are factored
         over Q (python-flint) and each irreducible factor's real roots isolated by
@@ -490,6 +514,7 @@ class Spectrum:
         ``fixed_point`` of f when given), the one way a proof asks for a sign table."""
         return self.sign_table(Condition.of(name, g, fixed_point), lo, hi)
 
+    @silent
     def sign_table(self, cond: Condition, lo, hi) -> SignTable:
         """Certified signs of ``cond`` on every branch over ]lo, hi[ (memoised per
         condition and interval, so certificates sharing a condition share the work)."""
@@ -503,7 +528,11 @@ class Spectrum:
         ends = [_alg(lo)] + crit + [_alg(hi)]
         cells = [Cell(a, b, simple_rational_between(a, b), self.real_eigenvalues,
                       lambda t, L: self._cell_sign(cond, t, L)) for a, b in zip(ends, ends[1:])]
-        return SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, lambda rc: self.sign_at_point(cond, rc))
+        table = SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, lambda rc: self.sign_at_point(cond, rc))
+        table.source = (self, cond)      # what the independent kernel re-derives (facts.sign_query)
+        for cell in cells:
+            cell.table = table
+        return table
 
     def _cell_sign(self, cond: Condition, t, L: Algebraic):
         """The sign of g at the sample t of a cell on the branch L: the sign over the
@@ -545,6 +574,7 @@ class Spectrum:
         out = decide(attempt, 128, 1024, undecided=lambda v: v == _MORE_PRECISION)
         return UNDECIDED if out == _MORE_PRECISION else out
 
+    @silent
     def branches_at(self, rc: Algebraic, maxprec: int = 1024):
         """The real eigenvalues at the algebraic r = rc, largest first, each repeated
         by its multiplicity (1, or 2 for the root of a linear gcd(cp, cp')), as
@@ -577,6 +607,7 @@ class Spectrum:
             prec *= 2
         return None
 
+    @fact(facts.at_algebraic_r)
     def sign_at_point(self, cond: Condition, rc: Algebraic, maxprec: int = 1024):
         """Signs of g on the branches at an algebraic r (UNDECIDED where undecided: g
         vanishing or a pole there), or None when the branches cannot be isolated."""
@@ -741,6 +772,7 @@ class Spectrum:
             prec *= 2
         return None
 
+    @fact(facts.at_algebraic_r)
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) (an expression or an element of
         ``poly.RING``) vanishes on branch ``branch`` at r = rc:

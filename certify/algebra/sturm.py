@@ -25,7 +25,9 @@ from __future__ import annotations
 import flint
 
 from certify import caches
+from certify.obligations import fact, silent
 
+from . import facts
 from .balls import ordered, precision
 from .poly import Q, poly_key, to_fmpq
 
@@ -202,6 +204,7 @@ def count_roots(p, a=None, b=None, seq=None) -> int:
     return va - vb
 
 
+@fact(facts.root_count)
 def sturm_count(p, a=None, b=None) -> int:
     """The number of distinct real roots of p in ]a, b] (a = -∞, b = +∞ when None) by
     Sturm's theorem alone: V(a) - V(b), the sign changes of the Sturm sequence, each
@@ -233,6 +236,7 @@ _CHECKED: dict = {}              # coefficients of p -> its number of distinct r
 caches.register(_CHECKED.clear)
 
 
+@silent
 def checked_real_root_count(p) -> int:
     """The number of distinct real roots of p, counted by both routes: the Sturm count
     over the line (:func:`sturm_count`) and python-flint's isolation
@@ -263,6 +267,7 @@ def cauchy_bound(p) -> flint.fmpq:
     return 1 + max((abs(a) / lead for a in c[:-1]), default=Q(0))
 
 
+@silent
 def isolate(p, a=None, b=None, width=None) -> list[tuple[flint.fmpq, flint.fmpq]]:
     """Isolating intervals (lo, hi) of the distinct real roots of p in the open
     interval ]a, b[, increasing.  Each interval holds exactly one root; lo == hi
@@ -304,6 +309,7 @@ def isolate(p, a=None, b=None, width=None) -> list[tuple[flint.fmpq, flint.fmpq]
     return out
 
 
+@silent
 def refine(p, lo, hi, width) -> tuple[flint.fmpq, flint.fmpq]:
     """Bisect an isolating interval of a simple root of p until hi - lo <= width."""
     p = flint.fmpq_poly(p)

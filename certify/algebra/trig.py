@@ -34,6 +34,9 @@ from functools import cache
 import flint
 import sympy as sp
 
+from certify.obligations import fact
+
+from . import facts
 from .poly import lam, r
 from .poly import parse as parse_paper
 from .sturm import count_roots
@@ -248,6 +251,7 @@ class Result:
         return self.holds
 
 
+@fact(lambda res, E: facts.identity(res.holds, E, 0))
 def is_zero(E) -> Result:
     """E ≡ 0 on the circles, by both routes; RoutesDisagree if they differ."""
     za, ea = groebner_is_zero(E)
@@ -259,6 +263,7 @@ def is_zero(E) -> Result:
                        f"Weierstrass substitution: {eb[0]}"], (ea[0], ea[1], eb[0]))
 
 
+@fact(lambda res, lhs, rhs: facts.identity(res.holds, lhs, rhs))
 def equal(lhs, rhs) -> Result:
     """lhs ≡ rhs (scalars, or vectors component by component)."""
     if isinstance(lhs, sp.MatrixBase) or isinstance(rhs, sp.MatrixBase):
@@ -387,6 +392,13 @@ def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
     return None, [f"`{show(sp.factor(p))}`: " + undecided[0]]
 
 
+def _sign_facts(answer, E, H: Signs):
+    if answer[0] is None:
+        raise ValueError("sign undecided by inspection")
+    return signed_fact(E, H)
+
+
+@fact(_sign_facts)
 def sign(E, H: Signs) -> tuple[int | None, list[str]]:
     """The strict sign of E under the hypotheses H, by inspection of its factors."""
     n, d = fraction(E)
@@ -396,6 +408,72 @@ def sign(E, H: Signs) -> tuple[int | None, list[str]]:
     return (sn * sd if sn and sd else None), why
 
 
+def _factor_data(f, H: Signs) -> dict | None:
+    """How one factor's sign is proved (:func:`_factor_sign`), as data for the kernel."""
+    syms = sp.sympify(f).free_symbols
+    if syms == {r}:
+        fs = _factor_sign(f, H)
+        return None if fs is None else {"poly": f, "how": "r", "sign": fs}
+    for g in _rewrites(f):
+        if g.free_symbols:
+            sg = _term_sign(sp.Poly(g, *sorted(g.free_symbols, key=str)), H)
+        else:
+            sg = int(sp.sign(g)) or None
+        if sg:
+            return {"poly": f, "how": "terms", "form": g, "sign": sg}
+    return None
+
+
+def _poly_data(p, H: Signs) -> dict | None:
+    """:func:`_poly_sign` as data: the rewritten form, its constant and factors with their proofs."""
+    if p == 0:
+        return None
+    for g in _rewrites(p):
+        c, factors = sp.factor_list(g)
+        data = []
+        for f, m in factors:
+            d = _factor_data(f, H)
+            if d is None:
+                break
+            data.append({**d, "mult": int(m)})
+        else:
+            return {"form": g, "constant": c, "factors": data}
+    return None
+
+
+def signed_fact(E, H: Signs) -> dict:
+    """The strict sign of E under H by inspection, as an obligation (ValueError if undecided)."""
+    n, d = fraction(E)
+    parts = [_poly_data(n, H), _poly_data(d, H)]
+    if None in parts:
+        raise ValueError("sign undecided by inspection")
+    sign_of = {1: 1, -1: -1}
+    total = 1
+    for part in parts:
+        total *= (1 if part["constant"] > 0 else -1)
+        for f in part["factors"]:
+            total *= sign_of[f["sign"]] ** f["mult"]
+    return facts.signed(E, n, d, parts, {str(a): int(sg) for a, sg in H.atoms}, total)
+
+
+def _has_sign_facts(res, target, expected, H, witness=None) -> list:
+    W = target if witness is None else witness
+    out = []
+    if witness is not None:
+        out.append(facts.identity(bool(equal(target, H.unfold(W))), target, H.unfold(W)))
+    return out + [signed_fact(W, H)]
+
+
+def _proportional_facts(res, v, w, H, ratio=None) -> list:
+    candidates = ([ratio] if ratio is not None
+                  else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0])
+    for k in candidates:
+        if sign(k, H)[0] == 1:
+            return [signed_fact(k, H), facts.identity(bool(equal(v, k * w)), v, k * w)]
+    raise ValueError("no ratio with a proved sign")
+
+
+@fact(_has_sign_facts)
 def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     """target has the strict sign ``expected`` under H.  With a ``witness`` W (written in
     the named quantities of H): target ≡ W after unfolding their definitions, and W has
@@ -412,6 +490,7 @@ def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     return Result(s == expected, ev + [f"under {H.describe()}: {word}"] + why)
 
 
+@fact(_proportional_facts)
 def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
     """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
     component i where that quotient has a sign by inspection; then v − k w ≡ 0."""

@@ -83,6 +83,7 @@ def cmd_all(args) -> int:
     """Run everything, write the report; with --check, also fail on a stale report."""
     out = prepare_output(args.out)
     committed = read_text_or_none(out / "REPORT.md")
+    committed_certificates = read_text_or_none(out / "certificates.json")
     results, timings = execute(None, out, args.jobs)
     markdown = report.write_report(results, timings, out)
     saving.prune(out / "figures", keep={name for _, o in results for name in o.figures})
@@ -91,6 +92,8 @@ def cmd_all(args) -> int:
     wrote(out, results)
     if args.check:
         stale = report.changed_parts(committed, markdown)
+        if committed_certificates != read_text_or_none(out / "certificates.json") and stale != ["missing"]:
+            stale = stale + ["certificates.json"]
         if stale == ["missing"]:
             say(f"{out / 'REPORT.md'} was missing: generated it now, commit it")
         elif stale:
@@ -160,6 +163,17 @@ def cmd_run(args) -> int:
     return code
 
 
+def cmd_verify(args) -> int:
+    """Re-check DIR/certificates.json with the independent kernel (certify_kernel: the standard
+    library alone), one line per certificate; exit 0, 1 when an obligation fails, 2 on bad input."""
+    import certify_kernel.__main__ as kernel
+    if not args.path.is_file():
+        raise UsageError(f"no certificates file at {args.path} (run `python -m certify all` first)")
+    argv = [str(args.path)] + (["--only", *args.only] if args.only else []) + \
+        (["--jobs", str(args.jobs)] if args.jobs else [])
+    return kernel.main(argv)
+
+
 def cmd_list(args) -> int:
     """One line per certificate: id, paper line, statement."""
     certs = runner.select()
@@ -216,6 +230,13 @@ def register(commands) -> None:
     p.add_argument("--out", type=Path, default=None, metavar="DIR",
                    help="also write a report of these certificates into DIR")
     add_jobs(p)
+
+    p = add_command(commands, "verify", cmd_verify,
+                    help="re-check reports/certificates.json with the independent kernel (certify_kernel)")
+    p.add_argument("path", nargs="?", type=Path, default=DEFAULT_OUT / "certificates.json", metavar="PATH",
+                   help="the certificates file (default: reports/certificates.json)")
+    p.add_argument("--only", nargs="+", metavar="ID", default=None, help="re-check only these certificates")
+    p.add_argument("--jobs", type=positive_int, default=None, metavar="N", help="processes (default: 2)")
 
     p = add_command(commands, "list", cmd_list, help="list the certificates",
                     description="One line per certificate: its id, the lines of the paper it checks, its statement.")

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
+from certify.algebra import facts
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import NO_BRANCH, X_MINUS, X_PLUS, Condition, Spectrum, simplest_between
 from certify.algebra.poly import (
@@ -35,6 +36,7 @@ from certify.algebra.poly import (
 from certify.dynamics.systems import FOUR, System, run_in
 from certify.dynamics.words import Candidate
 from certify.errors import UNDECIDED
+from certify.obligations import fact
 
 NO_X = "—"                   # the label of the only "fixed point" of a two-gap system (no x)
 
@@ -190,6 +192,17 @@ def sign_in_cell(T, branch: int, lo, hi):
     return next(iter(signs))
 
 
+def _sign_at_facts(answer, T, rc, branch):
+    """For the kernel: a point of a cell has the cell's sign (the cell's signs query and rc
+    inside it); a critical value needs arithmetic the kernel lacks."""
+    if any(c == rc for c in T.critical):
+        return facts.at_algebraic_r()
+    cell = next(c for c in T.cells if c.lo < rc < c.hi)
+    return [facts.sign_query([answer], T, branch, cell.lo, cell.hi, include_points=False),
+            facts.compare(1, rc, cell.lo), facts.compare(-1, rc, cell.hi)]
+
+
+@fact(_sign_at_facts)
 def table_sign_at(T, rc: Algebraic, branch: int):
     """The sign of table T at rc on ``branch``: its point value when rc is one of
     T's critical values, else the sign of the cell holding rc."""

@@ -13,8 +13,25 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.identify`, :mod:`.section5_orbits`: the periodic words of simulated orbits, certified;
   the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
+from certify.obligations import gathered, replaying, take
+
 from . import checks, files, plots, progress, report, runner, saving
-from .checks import check_of, combined, concluded, count_check, digits_check, eliminant_check, identity, result_check
+from .checks import (
+                     check_of,
+                     combined,
+                     concluded,
+                     count_check,
+                     determinant_fact,
+                     digits_check,
+                     eliminant_check,
+                     fact_ids,
+                     identity,
+                     identity_facts,
+                     identity_modulo_facts,
+                     product_fact,
+                     result_check,
+                     resultant_fact,
+)
 from .files import load_findings
 from .island_figures import report_figure as island_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
@@ -56,7 +73,10 @@ from .section5_orbits import explanations
 
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
+    "product_fact", "identity_facts", "fact_ids", "resultant_fact", "identity_modulo_facts",
+    "determinant_fact",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
+    "replaying", "gathered", "take",
     "load_findings", "island_figure", "explanations", "save_figure",
     "omega_figure", "section5_figure", "section5_name", "sign_chart",
     "spectrum_figures",

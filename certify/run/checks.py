@@ -6,7 +6,8 @@ the printed checks one for one.
 """
 from __future__ import annotations
 
-from certify.algebra import Algebraic, eliminate, parse, same_up_to_constant, show_factored_int, to_fmpz_poly
+from certify import obligations
+from certify.algebra import Algebraic, eliminate, facts, parse, same_up_to_constant, show_factored_int, to_fmpz_poly
 from certify.algebra import trig as T
 
 from .runner import Check, conclude
@@ -22,9 +23,16 @@ def count_check(name: str, roots: list, counts: tuple[int, int], expected: int) 
     count and python-flint's, as :func:`certify.algebra.roots_in_unit_interval` gives
     them), and as many isolated."""
     sturm, flint_count = counts
+    own = None
+    if roots:        # for the kernel: the count on ]0, 1] and whether 1 is a root (same p: distinct roots)
+        p = roots[0].p
+        at_one = 1 if p(1) == 0 else 0
+        own = obligations.take([i for i in (obligations.emit(facts.root_count(sturm + at_one, p, 0, 1)),
+                                            obligations.emit(facts.sign_at(int(p(1) > 0) - int(p(1) < 0), p, 1)))
+                                if i])
     return Check(f"{name} has exactly {expected} root(s) in ]0,1[ (Sturm and python-flint)",
                  sturm == expected and flint_count == expected and len(roots) == expected,
-                 [f"Sturm count {sturm}, python-flint count {flint_count}"])
+                 [f"Sturm count {sturm}, python-flint count {flint_count}"], obligations=own)
 
 
 def eliminant_check(name: str, g, cp, printed_product: str) -> list[Check]:
@@ -32,9 +40,24 @@ def eliminant_check(name: str, g, cp, printed_product: str) -> list[Check]:
     product up to a constant; the resultant route has the same factors."""
     E = eliminate(g, cp)
     P = to_fmpz_poly(parse(printed_product))
-    return [Check(f"Gröbner basis of {{{name}, cp(M)}} (lex λ > r) eliminates to the printed polynomial",
-                  same_up_to_constant(E.groebner, P), E.evidence() + [f"printed: `{show_factored_int(P)}`"]),
-            Check("the resultant route agrees factor by factor", E.agree)]
+    groebner = Check(f"Gröbner basis of {{{name}, cp(M)}} (lex λ > r) eliminates to the printed polynomial",
+                     same_up_to_constant(E.groebner, P), E.evidence() + [f"printed: `{show_factored_int(P)}`"])
+    return [groebner, Check("the resultant route agrees factor by factor", E.agree,
+                            obligations=fact_ids(lambda: facts.resultant(
+                                E.agree and groebner.holds, g, cp, parse(printed_product), "same_factors")))]
+
+
+def fact_ids(*builders) -> list[str]:
+    """Record, for the independent kernel, the obligations the ``builders`` (functions of no
+    argument) make; one that fails records an ``unsupported`` obligation with the reason."""
+    ids = []
+    for build in builders:
+        try:
+            ob = build()
+        except Exception as exc:   # not in the obligation language
+            ob = {"kind": "unsupported", "reason": f"{type(exc).__name__}: {exc}"[:200]}
+        ids.append(obligations.emit(ob))
+    return obligations.take([i for i in ids if i])
 
 
 def check_of(lemma) -> Check:
@@ -43,13 +66,19 @@ def check_of(lemma) -> Check:
 
 
 def result_check(statement: str, res: T.Result) -> Check:
-    """A proven or refuted statement of :mod:`certify.algebra.trig` as a check."""
-    return Check(statement, res.holds, res.evidence)
+    """A proven or refuted statement of :mod:`certify.algebra.trig` as a check (with the
+    facts the result carries, for the independent kernel)."""
+    return Check(statement, res.holds, res.evidence, obligations=obligations.take(obligations.facts_of(res)))
 
 
 def combined(statement: str, parts: list[T.Result]) -> Check:
     """One check that holds when every part holds; the parts' evidence in order."""
-    return Check(statement, all(parts), [e for p_ in parts for e in p_.evidence])
+    own = obligations.facts_of(*parts)
+    if own and not all(getattr(p_, "facts", None) for p_ in parts):    # a part without recorded facts
+        own.append(obligations.emit({"kind": "unsupported", "reason": "a part of the check carries no fact"})
+                   or "")
+    return Check(statement, all(parts), [e for p_ in parts for e in p_.evidence],
+                 obligations=obligations.take([i for i in own if i]))
 
 
 def identity(statement: str, lhs, rhs) -> Check:
@@ -69,3 +98,50 @@ def concluded(printed: list[Check], corrected: list[Check] | None = None, note: 
             if not wrong.holds and id(wrong) not in named and fix.corrects is None and fix is not wrong:
                 fix.corrects = wrong
     return conclude(printed, corrected, note=note, kind=kind, misprint=misprint)
+
+
+def product_fact(holds: bool, factors: list, rhs, entry: int | None = None) -> list[str]:
+    """Record, for the independent kernel, that the product of the matrices ``factors`` equals
+    ``rhs`` (or its entry ``entry``), with the engine's verdict ``holds``; the ids, for
+    ``Check(..., obligations=...)``."""
+    try:
+        ob = facts.product_identity(holds, factors, rhs, entry)
+    except Exception as exc:   # not in the obligation language
+        ob = {"kind": "unsupported", "reason": f"product identity: {exc}"[:200]}
+    i = obligations.emit(ob)
+    return obligations.take([i]) if i else []
+
+
+def identity_modulo_facts(modulo, *triples) -> list[str]:
+    """:func:`identity_facts` modulo a polynomial monic in λ (cp)."""
+    return fact_ids(*[lambda h=h, a=a, b=b: facts.identity(h, a, b, modulo) for h, a, b in triples])
+
+
+def identity_facts(*triples) -> list[str]:
+    """Record, for the independent kernel, identities ``(holds, lhs, rhs)`` (scalars or matrices;
+    ``lhs`` or ``rhs`` a list of matrices stands for their product) with the engine's verdicts;
+    the ids, for ``Check(..., obligations=...)``."""
+    ids = []
+    for holds, lhs, rhs in triples:
+        try:
+            if isinstance(lhs, list) or isinstance(rhs, list):
+                left = lhs if isinstance(lhs, list) else [lhs]
+                right = rhs if isinstance(rhs, list) else [rhs]
+                ob = facts.products_identity(holds, left, right)
+            else:
+                ob = facts.identity(holds, lhs, rhs)
+        except Exception as exc:   # not in the obligation language
+            ob = {"kind": "unsupported", "reason": f"identity: {exc}"[:200]}
+        ids.append(obligations.emit(ob))
+    return obligations.take([i for i in ids if i])
+
+
+def resultant_fact(holds: bool, f, g, poly, relation: str) -> list[str]:
+    """Record that Res_λ(f, g) (g "d/dλ": ∂f/∂λ) is "proportional" to, or has the "same_factors"
+    as, the polynomial ``poly`` in r (the engine's verdict ``holds``); the ids."""
+    return fact_ids(lambda: facts.resultant(holds, f, g, poly, relation))
+
+
+def determinant_fact(holds: bool, matrix, rhs) -> list[str]:
+    """Record that det(matrix) = rhs (the engine's verdict ``holds``); the ids."""
+    return fact_ids(lambda: facts.determinant_identity(holds, matrix, rhs))

@@ -295,6 +295,7 @@ def _summary(results) -> str:
         lines += ["", "Failing: " + ", ".join(_link(c) for c in failing) + "."]
     if errata_line(results):
         lines += ["", errata_line(results) + "; see [Errata](#errata)."]
+    lines += ["", kernel_line(results)]
     return "\n".join(lines)
 
 
@@ -383,11 +384,41 @@ def _errata(results) -> str:
     return "\n\n".join(parts)
 
 
+def kernel_coverage(outcome) -> tuple[int, int]:
+    """(k, n): of the n sub-claims of a certificate that count, the k that name obligations of
+    the independent kernel's language only (certificates.json; ``certify verify`` re-checks them)."""
+    kinds = {ob["id"]: ob.get("kind") for ob in getattr(outcome, "obligations", [])}
+    subs = [c for c in list(outcome.printed) + list(outcome.corrected) if c.counts]
+    return sum(1 for c in subs if c.obligations and all(kinds.get(i) not in (None, "unsupported")
+                                                          for i in c.obligations)), len(subs)
+
+
+def kernel_cell(outcome) -> str:
+    """The table's "Kernel" column: "independently verified" or "k/n sub-claims"; "—" for an observation."""
+    if outcome.status not in (PASS, ERRATUM):
+        return "—"
+    k, n = kernel_coverage(outcome)
+    return "independently verified" if n and k == n else f"{k}/{n} sub-claims"
+
+
+def kernel_line(results) -> str:
+    """The summary's line on the independent kernel."""
+    proved = [o for _, o in results if o.status in (PASS, ERRATUM)]
+    k = sum(kernel_coverage(o)[0] for o in proved)
+    n = sum(kernel_coverage(o)[1] for o in proved)
+    whole = sum(1 for o in proved if kernel_coverage(o)[1] and kernel_coverage(o)[0] == kernel_coverage(o)[1])
+    pct = f" ({100 * k / n:.0f}%)" if n else ""
+    return (f"Independent kernel (`python -m certify verify`, docs/verify.md): {k} of the {n} sub-claims of "
+            f"the PASS and ERRATUM certificates{pct} rest on obligations in reports/certificates.json that "
+            f"it re-checks with the Python standard library alone; {whole} of {len(proved)} certificates "
+            "are independently verified whole.")
+
+
 def _table(results) -> str:
-    rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {status_label(outcome)} |"
-            for cert, outcome in results]
-    return "\n".join(["## All certificates", "", "| Id | Paper | Statement | Status |",
-                      "|---|---|---|---|", *rows])
+    rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {status_label(outcome)} | "
+            f"{kernel_cell(outcome)} |" for cert, outcome in results]
+    return "\n".join(["## All certificates", "", "| Id | Paper | Statement | Status | Kernel |",
+                      "|---|---|---|---|---|", *rows])
 
 
 SAME = "(as above)"
@@ -495,6 +526,35 @@ def render_json(results) -> str:
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
+CERTIFICATES_FORMAT = "certify-certificates/1"   # certify_kernel.FORMAT: docs/verify.md
+UNCOVERED = "no fact of the obligation language was recorded for this check"
+
+
+def _subclaim(role: str, check) -> dict:
+    data = {"role": role, "statement": " ".join(str(check.statement).split()), "holds": holds(check),
+            "counts": bool(check.counts),
+            "obligations": sorted(set(check.obligations or []), key=lambda i: int(i.rsplit(":", 1)[1]))}
+    if not data["obligations"]:
+        data["uncovered"] = UNCOVERED
+    return data
+
+
+def render_certificates(results) -> str:
+    """The text of certificates.json: for each certificate its obligations (the facts the
+    engine recorded, certify.obligations) and its sub-claims, each naming the obligations its
+    verdict was computed from; one certificate per line, deterministic like report.json."""
+    head = {"format": CERTIFICATES_FORMAT, "paper": VERSION, "schema": "docs/verify.md"}
+    lines = []
+    for cert, outcome in results:
+        subs = [_subclaim("printed", c) for c in outcome.printed] + \
+            [_subclaim("corrected", c) for c in outcome.corrected]
+        lines.append(json.dumps({"id": cert.id, "status": outcome.status, "subclaims": subs,
+                                 "obligations": list(outcome.obligations)},
+                                ensure_ascii=False, separators=(",", ":"), sort_keys=True))
+    text = json.dumps(head, ensure_ascii=False)[:-1] + ', "certificates": [\n' + ",\n".join(lines) + "\n]}\n"
+    return text
+
+
 def render_timings(timings: dict) -> str:
     """The text of timings.json: the runner's timings and their total, in seconds."""
     per_cert = timings.get("certificates", {})
@@ -506,7 +566,7 @@ def render_timings(timings: dict) -> str:
 # Writing, and comparing with a committed report
 
 def write_report(results, timings: dict, out_dir) -> str:
-    """Write REPORT.md, report.json and timings.json into ``out_dir``.
+    """Write REPORT.md, report.json, certificates.json and timings.json into ``out_dir``.
 
     All texts are rendered before anything is written, and each file is
     replaced atomically; REPORT.md comes last.  Returns the text of REPORT.md.
@@ -514,7 +574,9 @@ def write_report(results, timings: dict, out_dir) -> str:
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     markdown, data, times = render_markdown(results), render_json(results), render_timings(timings)
+    certificates = render_certificates(results)
     write_atomic(out / "report.json", data)
+    write_atomic(out / "certificates.json", certificates)
     write_atomic(out / "timings.json", times)
     write_atomic(out / "REPORT.md", markdown)
     return markdown

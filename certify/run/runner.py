@@ -22,7 +22,7 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 
-from certify import caches
+from certify import caches, obligations
 from certify.errors import StatementError, UsageError
 
 from .executors import default_jobs  # noqa: F401  (runner.default_jobs, used by the CLI and benchmarks)
@@ -46,6 +46,11 @@ class Check:
     evidence: list[str] = field(default_factory=list)
     corrects: Check | str | None = None
     counts: bool = True
+    obligations: list[str] | None = None
+
+    def __post_init__(self):
+        if self.obligations is None:     # the facts its verdict was computed from (obligations.take)
+            self.obligations = obligations.take(obligations.facts_of(self.holds))
 
 
 # The kinds of erratum, the first column a referee reads in the Errata.
@@ -75,6 +80,7 @@ class Outcome:
     misprint: str = ""
     agrees: bool | None = None
     reason: str = ""
+    obligations: list[dict] = field(default_factory=list)   # the certificate's facts (certify.obligations)
 
 
 def holds(check: Check) -> bool:
@@ -321,7 +327,8 @@ class Context:
             q = QUANTITIES[name]
             args = {n: self.get(n) for n in q.needs}
             t = time.perf_counter()
-            self.values[name] = q.func(**args)
+            with obligations.quiet():
+                self.values[name] = q.func(**args)
             self.seconds[name] = time.perf_counter() - t
         return self.values[name]
 
@@ -350,7 +357,9 @@ def run_certificate(cert: Certificate, ctx: Context | None = None,
         printed.update(overrides)
     try:
         args = {n: ctx.get(n) for n in cert.needs}
-        outcome = cert.func(**args, **printed)
+        with obligations.recording(cert.id) as rec:
+            outcome = cert.func(**args, **printed)
+        outcome.obligations = rec.items
     except StatementError as exc:  # a printed text the grammar does not read: never a guess
         outcome = Outcome(FAIL, [Check("the printed text was read", False, [f"`{exc}`"])])
     except Exception as exc:  # a check that could not be completed is a FAIL
@@ -363,6 +372,7 @@ def reset_caches() -> None:
     """Forget what the engine memoises across runs (every cache registered with
     :func:`certify.caches.register`): the next run is cold."""
     caches.reset()
+    obligations.forget()
 
 
 def plain(outcome: Outcome) -> Outcome:
@@ -370,11 +380,11 @@ def plain(outcome: Outcome) -> Outcome:
     bools.  That is all a report needs, and it crosses process boundaries (pickle)."""
     def check(c: Check) -> Check:
         return Check(str(c.statement), holds(c), [str(e) for e in c.evidence],
-                     corrected_statement(c) or None, c.counts)
+                     corrected_statement(c) or None, c.counts, list(c.obligations or []))
     return Outcome(outcome.status, [check(c) for c in outcome.printed],
                    [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
                    [str(f) for f in outcome.figures], str(outcome.note), str(outcome.kind),
-                   str(outcome.misprint), outcome.agrees, str(outcome.reason))
+                   str(outcome.misprint), outcome.agrees, str(outcome.reason), list(outcome.obligations))
 
 
 def units(certs: list[Certificate]) -> list[list[Certificate]]:
@@ -430,6 +440,7 @@ def _worker_run(k: int):
     queue = _DONE
     assert queue is not None  # set by _worker_start, the initializer of every worker
     try:
+        reset_caches()      # each unit from cold caches: what it records does not depend on the units before
         done, seconds = run_unit(_PLAN[k], report=lambda cert: queue.put(cert.id))
     except KeyboardInterrupt:  # raised by a certificate itself
         return None
@@ -487,7 +498,7 @@ def run_selected(ids=None, progress=None, jobs: int = 1,
     """Run the selected certificates on ``jobs`` processes; return the outcomes (in claim
     order, whatever the order they finished in) and the timings.
 
-    With ``jobs = 1`` they run one after another in claim order, in this process.
+    With ``jobs = 1`` they run unit by unit in this process, each unit from cold caches.
     With ``jobs > 1`` the units (:func:`units`) run in forked worker processes, the
     heaviest first by ``estimates`` (seconds per certificate id, e.g. the last run's
     timings; by size without them).  The outcomes are the same as with ``jobs = 1``:
@@ -505,7 +516,12 @@ def run_selected(ids=None, progress=None, jobs: int = 1,
     else:
         done = iter(range(1, len(certs) + 1))
         report = (lambda cert: progress(next(done), len(certs), cert.id)) if progress else None
-        finished, seconds = run_unit(certs, report)
+        finished, seconds = [], {}
+        for unit in plan:   # unit by unit from cold caches, as the workers do: the same records
+            reset_caches()
+            part, secs = run_unit(unit, report)
+            finished += part
+            seconds.update(secs)
     finished.sort(key=lambda item: claim_key(item[0].id))
     timings = {cert.id: {"seconds": round(total, 4), "of_which_shared": round(shared, 4)}
                for cert, _, total, shared in finished}

@@ -305,3 +305,15 @@ def test_list_runs():
     done = certify("list")
     assert done.returncode == 0, done.stderr
     assert "Traceback" not in done.stderr
+
+
+def test_all_check_fails_on_a_stale_certificates_file(fake, tmp_path, capsys):
+    """certificates.json is part of the staleness check of `all --check`."""
+    out = tmp_path / "reports"
+    cli.main(["all", "--out", str(out)])
+    capsys.readouterr()
+    fresh = (out / "certificates.json").read_text(encoding="utf-8")
+    (out / "certificates.json").write_text(fresh.replace('"format"', '"format" ', 1), encoding="utf-8")
+    assert cli.main(["all", "--check", "--out", str(out)]) == 1
+    assert "certificates.json" in capsys.readouterr().err
+    assert (out / "certificates.json").read_text(encoding="utf-8") == fresh     # rewritten anyway

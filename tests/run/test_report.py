@@ -80,11 +80,11 @@ def test_no_errata():
 
 def test_table_rows_escape_pipes():
     text = report.render_markdown(sample_results())
-    header = "| Id | Paper | Statement | Status |"
+    header = "| Id | Paper | Statement | Status | Kernel |"
     assert header in text
     table = text.split(header, 1)[1].split("\n\n", 1)[0].splitlines()[2:]
     assert len(table) == 4
-    assert all(unescaped_pipes(row) == 5 for row in table)
+    assert all(unescaped_pipes(row) == 6 for row in table)
     assert "\\|q\\| > 1 on the upper branch" in text
 
 

@@ -1,0 +1,376 @@
+"""Polynomials over Q, in the Python standard library alone.
+
+Univariate polynomials are lists of Fractions, lowest degree first, with no trailing
+zero (the zero polynomial is ``[]``).  Multivariate polynomials are dicts mapping an
+exponent tuple to a non-zero Fraction.  Everything is exact: ``fractions.Fraction``
+and Python's unbounded ``int``.
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+from math import gcd as igcd
+
+
+def rat(text) -> Fraction:
+    """A rational read from an int or a string "p/q" (Fraction's own exact parser; no eval)."""
+    if isinstance(text, bool) or not isinstance(text, (int, str)):
+        raise ValueError(f"not a rational: {text!r}")
+    return Fraction(text)
+
+
+def trim(p: list) -> list:
+    """The same polynomial without trailing zero coefficients (a polynomial's value does not
+    depend on zero terms)."""
+    p = list(p)
+    while p and p[-1] == 0:
+        p.pop()
+    return p
+
+
+def upoly(coeffs) -> list:
+    """A univariate polynomial from JSON coefficients (ints or "p/q"), lowest degree first."""
+    return trim(rat(c) for c in coeffs)
+
+
+def deg(p: list) -> int:
+    """The degree (−1 for the zero polynomial)."""
+    return len(p) - 1
+
+
+def add(p: list, q: list) -> list:
+    """p + q, coefficient by coefficient (the definition of the sum)."""
+    n = max(len(p), len(q))
+    return trim((p[i] if i < len(p) else 0) + (q[i] if i < len(q) else 0) for i in range(n))
+
+
+def scale(p: list, c) -> list:
+    """c·p."""
+    return trim(c * a for a in p)
+
+
+def sub(p: list, q: list) -> list:
+    """p − q."""
+    return add(p, scale(q, -1))
+
+
+def mul(p: list, q: list) -> list:
+    """p·q by the Cauchy product of coefficient sequences."""
+    if not p or not q:
+        return []
+    out = [Fraction(0)] * (len(p) + len(q) - 1)
+    for i, a in enumerate(p):
+        if a:
+            for j, b in enumerate(q):
+                out[i + j] += a * b
+    return trim(out)
+
+
+def divmod_(p: list, q: list) -> tuple[list, list]:
+    """(quotient, remainder) of Euclidean division over the field Q: p = quotient·q +
+    remainder with deg remainder < deg q (q ≠ 0)."""
+    if not q:
+        raise ZeroDivisionError("division by the zero polynomial")
+    r, quo = list(p), [Fraction(0)] * max(len(p) - len(q) + 1, 0)
+    lead = q[-1]
+    while len(r) >= len(q):
+        c = Fraction(r[-1]) / lead
+        k = len(r) - len(q)
+        quo[k] = c
+        for j, b in enumerate(q):
+            r[k + j] -= c * b
+        r = trim(r)
+    return trim(quo), r
+
+
+def monic(p: list) -> list:
+    """p divided by its leading coefficient (same roots)."""
+    return scale(p, Fraction(1) / p[-1]) if p else []
+
+
+def integer_primitive(p: list) -> list:
+    """p times a non-zero rational, with coprime integer coefficients (same roots)."""
+    den = 1
+    for a in p:
+        den = den * Fraction(a).denominator // igcd(den, Fraction(a).denominator)
+    ints = [int(a * den) for a in p]
+    g = 0
+    for a in ints:
+        g = igcd(g, a)
+    return [a // g for a in ints] if g else []
+
+
+def pseudo_remainder(a: list, b: list) -> list:
+    """prem(a, b) = lc(b)^(deg a − deg b + 1)·a mod b, in integers (b ≠ 0): Euclidean division
+    of lc(b)^k·a needs no fraction."""
+    r, lb, n = list(a), b[-1], len(b)
+    steps = len(a) - n + 1
+    for _ in range(max(steps, 0)):
+        if len(r) < n:
+            r = [x * lb for x in r]
+            continue
+        c, k = r[-1], len(r) - n
+        r = [x * lb for x in r]
+        for j, y in enumerate(b):
+            r[k + j] -= c * y
+        r = trim(r)
+    return r
+
+
+def gcd(p: list, q: list) -> list:
+    """The monic gcd by Euclid's algorithm (Q[x] is a Euclidean domain), run on primitive
+    integer polynomials with pseudo-remainders (each differs from the remainder by a non-zero
+    constant factor, which changes no gcd)."""
+    a, b = integer_primitive(p), integer_primitive(q)
+    if not b:
+        return monic([Fraction(x) for x in a])
+    while b:
+        a, b = b, integer_primitive(pseudo_remainder(a, b))
+    return monic([Fraction(x) for x in a])
+
+
+def derivative(p: list) -> list:
+    """p' (term by term)."""
+    return trim(i * a for i, a in enumerate(p) if i > 0)
+
+
+def value(p: list, x) -> Fraction:
+    """p(x) by Horner's rule."""
+    v = Fraction(0)
+    for a in reversed(p):
+        v = v * x + a
+    return v
+
+
+def sign(x) -> int:
+    """−1, 0 or 1."""
+    return (x > 0) - (x < 0)
+
+
+def squarefree(p: list) -> list:
+    """p / gcd(p, p'): the same real roots, each simple (a multiple root of p is a root of p')."""
+    g = gcd(p, derivative(p))
+    return monic(divmod_(p, g)[0]) if len(g) > 1 else monic(p)
+
+
+def determinant(rows: list) -> Fraction:
+    """The determinant by Gaussian elimination over Q (row operations of the third kind keep
+    it; a swap changes its sign; it is the product of the pivots of a triangular matrix)."""
+    a = [[Fraction(x) for x in row] for row in rows]
+    n, det = len(a), Fraction(1)
+    for k in range(n):
+        piv = next((i for i in range(k, n) if a[i][k] != 0), None)
+        if piv is None:
+            return Fraction(0)
+        if piv != k:
+            a[k], a[piv] = a[piv], a[k]
+            det = -det
+        det *= a[k][k]
+        for i in range(k + 1, n):
+            f = a[i][k] / a[k][k]
+            if f:
+                for j in range(k, n):
+                    a[i][j] -= f * a[k][j]
+    return det
+
+
+def sylvester_resultant(p: list, q: list, m: int, n: int) -> Fraction:
+    """Res(p, q) as the determinant of the Sylvester matrix of p, q with *formal* degrees m, n
+    (p, q padded with zeros).  The determinant is a polynomial in the coefficients, so it
+    commutes with specialising a parameter, which :func:`resultant_in` relies on."""
+    p = list(p) + [Fraction(0)] * (m + 1 - len(p))
+    q = list(q) + [Fraction(0)] * (n + 1 - len(q))
+    size = m + n
+    rows = []
+    for i in range(n):
+        rows.append([0] * i + p[::-1] + [0] * (size - m - 1 - i))
+    for i in range(m):
+        rows.append([0] * i + q[::-1] + [0] * (size - n - 1 - i))
+    return determinant(rows)
+
+
+def interpolate(xs: list, ys: list) -> list:
+    """The polynomial of degree < len(xs) through the points (distinct xs): Newton's divided
+    differences, expanded by Horner's scheme.  Unique, since a non-zero polynomial of degree
+    < n has fewer than n roots."""
+    c = [Fraction(y) for y in ys]
+    n = len(xs)
+    for k in range(1, n):
+        for i in range(n - 1, k - 1, -1):
+            c[i] = (c[i] - c[i - 1]) / (xs[i] - xs[i - k])
+    out: list = []
+    for i in range(n - 1, -1, -1):
+        out = add(mul(out, [-xs[i], Fraction(1)]), [c[i]])
+    return out
+
+
+# --- multivariate: dict exponent-tuple -> Fraction -------------------------------------
+
+def mpoly(data: dict, nvars: int | None = None) -> dict:
+    """A multivariate polynomial from JSON: {"vars": [...], "terms": [[coef, [e1, ...]], ...]}."""
+    names = data["vars"]
+    out: dict = {}
+    for coef, exps in data["terms"]:
+        if len(exps) != len(names) or any(not isinstance(e, int) or e < 0 for e in exps):
+            raise ValueError(f"bad exponents {exps!r} for variables {names!r}")
+        key = tuple(exps)
+        out[key] = out.get(key, Fraction(0)) + rat(coef)
+    return {k: v for k, v in out.items() if v}
+
+
+def madd(p: dict, q: dict, c=1) -> dict:
+    """p + c·q."""
+    out = dict(p)
+    for k, v in q.items():
+        w = out.get(k, Fraction(0)) + c * v
+        if w:
+            out[k] = w
+        else:
+            out.pop(k, None)
+    return out
+
+
+def mmul(p: dict, q: dict) -> dict:
+    """p·q, term by term (distributivity; exponents add)."""
+    out: dict = {}
+    for k1, v1 in p.items():
+        for k2, v2 in q.items():
+            k = tuple(a + b for a, b in zip(k1, k2))
+            out[k] = out.get(k, Fraction(0)) + v1 * v2
+    return {k: v for k, v in out.items() if v}
+
+
+def reduce_circles(p: dict, pairs: list) -> dict:
+    """The normal form of p modulo the ideal (c² + s² − 1 for each pair of variable indices
+    (c, s)): every s² rewritten as 1 − c² until s has degree ≤ 1.  The leading terms s²
+    (lex, s first) of these generators are pairwise coprime, so they form a Gröbner basis and
+    the normal form is 0 exactly when p lies in the ideal (Buchberger's first criterion)."""
+    out: dict = {}
+    todo = list(p.items())
+    while todo:
+        k, v = todo.pop()
+        for c, s in pairs:
+            if k[s] >= 2:
+                k2 = list(k)
+                k2[s] -= 2
+                k3 = list(k2)
+                k3[c] += 2
+                todo += [(tuple(k2), v), (tuple(k3), -v)]
+                break
+        else:
+            w = out.get(k, Fraction(0)) + v
+            if w:
+                out[k] = w
+            else:
+                out.pop(k, None)
+    return out
+
+
+def in_lambda(p: dict) -> list:
+    """A polynomial in (r, λ) as a list of univariate polynomials in r: the coefficients of
+    λ⁰, λ¹, ... (a bivariate polynomial is a polynomial in λ over Q[r])."""
+    n = max((k[1] for k in p), default=-1)
+    out = [dict() for _ in range(n + 1)]
+    for (i, j), v in p.items():
+        out[j][i] = v
+    return [trim(d.get(i, Fraction(0)) for i in range(max(d, default=-1) + 1)) for d in out]
+
+
+def at_r(p: dict, r0) -> list:
+    """p(r0, λ) as a univariate polynomial in λ."""
+    return trim(value(c, r0) for c in in_lambda(p))
+
+
+def _integer_rows(p: dict) -> list:
+    """p ∈ Q[r][λ] times a positive integer (the lcm of its denominators), as integer
+    coefficient lists in r, one per power of λ (a constant factor changes no root)."""
+    den = 1
+    for v in p.values():
+        den = den * v.denominator // igcd(den, v.denominator)
+    return [[int(c * den) for c in row] for row in in_lambda(p)]
+
+
+def _int_value(row: list, x: int) -> int:
+    v = 0
+    for a in reversed(row):
+        v = v * x + a
+    return v
+
+
+def bareiss(rows: list) -> int:
+    """The determinant of an integer matrix by Bareiss' fraction-free elimination (every
+    division is exact, by Sylvester's identity)."""
+    a = [list(r) for r in rows]
+    n, sgn, prev = len(a), 1, 1
+    for k in range(n - 1):
+        piv = next((i for i in range(k, n) if a[i][k]), None)
+        if piv is None:
+            return 0
+        if piv != k:
+            a[k], a[piv] = a[piv], a[k]
+            sgn = -sgn
+        for i in range(k + 1, n):
+            for j in range(k + 1, n):
+                a[i][j] = (a[i][j] * a[k][k] - a[i][k] * a[k][j]) // prev
+        prev = a[k][k]
+    return sgn * a[n - 1][n - 1] if n else 1
+
+
+def interpolate_integers(ys: list) -> list:
+    """D!·p for the polynomial p of degree ≤ D through (0, y_0), ..., (D, y_D), integers: by
+    Newton's forward differences, p(x) = Σ_k Δ^k y_0 · x(x−1)···(x−k+1)/k!, each term
+    multiplied by D! (an integer multiple has the same roots)."""
+    D = len(ys) - 1
+    diffs, row = [], list(ys)
+    for _ in range(D + 1):
+        diffs.append(row[0])
+        row = [b - a for a, b in zip(row, row[1:])]
+    fact = [1]
+    for k in range(1, D + 1):
+        fact.append(fact[-1] * k)
+    out = [0] * (D + 1)
+    falling = [1]                        # x(x−1)···(x−k+1), integer coefficients
+    for k in range(D + 1):
+        c = diffs[k] * (fact[D] // fact[k])
+        if c:
+            for i, a in enumerate(falling):
+                out[i] += c * a
+        falling = [0] + falling          # times x ...
+        for i in range(len(falling) - 1):
+            falling[i] -= k * falling[i + 1]   # ... minus k times
+    return trim(out)
+
+
+_RESULTANTS: dict = {}
+
+
+def resultant_in(p: dict, q: dict) -> list:
+    """A non-zero constant multiple of Res_λ(p, q) ∈ Q[r] for p, q ∈ Q[r][λ] (the same roots),
+    by evaluation at r = 0, 1, 2, ... and interpolation.  The Sylvester determinant with the
+    formal λ-degrees m, n commutes with r ↦ r_i, and its degree in r is at most
+    n·deg_r p + m·deg_r q, so that many points plus one determine it."""
+    key = (tuple(sorted(p.items())), tuple(sorted(q.items())))
+    if key in _RESULTANTS:
+        return _RESULTANTS[key]
+    P, Q = _integer_rows(p), _integer_rows(q)
+    m, n = len(P) - 1, len(Q) - 1
+    if m < 0 or n < 0:
+        return []
+    bound = n * max((len(c) - 1 for c in P), default=0) + m * max((len(c) - 1 for c in Q), default=0)
+    xs, ys = list(range(bound + 1)), []
+    size = m + n
+    for x in xs:
+        a = [_int_value(c, x) for c in reversed(P)]
+        b = [_int_value(c, x) for c in reversed(Q)]
+        rows = [[0] * i + a + [0] * (size - m - 1 - i) for i in range(n)] + \
+            [[0] * i + b + [0] * (size - n - 1 - i) for i in range(m)]
+        ys.append(bareiss(rows))
+    out = [Fraction(c) for c in integer_primitive(interpolate_integers(ys))] if any(ys) else []
+    if len(_RESULTANTS) > 500:
+        _RESULTANTS.clear()
+    _RESULTANTS[key] = out
+    return out
+
+
+def d_lambda(p: dict) -> dict:
+    """∂p/∂λ for p in (r, λ)."""
+    return {(i, j - 1): j * v for (i, j), v in p.items() if j > 0}

@@ -1,0 +1,227 @@
+"""Real roots by Sturm sequences, and real algebraic numbers (a polynomial with an isolating
+interval), over Q with the standard library alone."""
+from __future__ import annotations
+
+from fractions import Fraction
+from math import gcd as igcd
+
+from .poly import deg, derivative, gcd, pseudo_remainder, rat, sign, squarefree, trim, upoly, value
+
+_SEQ: dict = {}
+_SQF: dict = {}
+
+
+def _primitive_positive(p: list) -> list:
+    """p times a positive rational so that its coefficients are coprime integers (a positive
+    factor changes no sign, so a Sturm sequence stays one)."""
+    den = 1
+    for a in p:
+        den = den * a.denominator // igcd(den, a.denominator)
+    ints = [int(a * den) for a in p]
+    g = 0
+    for a in ints:
+        g = igcd(g, a)
+    return [Fraction(a // g) for a in ints] if g else []
+
+
+def sturm_sequence(p: list) -> list:
+    """The Sturm sequence p₀ = p, p₁ = p', p_{k+1} = −rem(p_{k−1}, p_k) (each up to a positive
+    factor).  Sturm's theorem: for p square-free and a < b, the number of roots in ]a, b] is
+    V(a) − V(b), V the number of sign changes in the sequence (zeros dropped)."""
+    key = tuple(p)
+    if key not in _SEQ:
+        seq = [_primitive_positive(p), _primitive_positive(derivative(p))]
+        while seq[-1] and deg(seq[-1]) > 0:
+            a, b = [int(x) for x in seq[-2]], [int(x) for x in seq[-1]]
+            rem = pseudo_remainder(a, b)       # lc(b)^k · rem(a, b), k = deg a − deg b + 1
+            if not rem:
+                break
+            flip = -1 if b[-1] < 0 and (len(a) - len(b) + 1) % 2 else 1
+            seq.append(_primitive_positive([Fraction(-flip * x) for x in rem]))
+        if len(_SEQ) > 5000:
+            _SEQ.clear()
+        _SEQ[key] = [s for s in seq if s]
+    return _SEQ[key]
+
+
+def _changes(signs: list) -> int:
+    signs = [s for s in signs if s]
+    return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
+
+
+def variations(seq: list, x) -> int:
+    """V(x): sign changes of the sequence at x; x None for +∞, "-inf" for −∞ (there the sign
+    of a polynomial is that of its leading term)."""
+    if x is None:
+        return _changes([sign(q[-1]) for q in seq])
+    if x == "-inf":
+        return _changes([sign(q[-1]) * (-1) ** deg(q) for q in seq])
+    x = Fraction(x)
+    return _changes([_int_sign(q, x.numerator, x.denominator) for q in seq])
+
+
+def _int_sign(q: list, a: int, b: int) -> int:
+    """sign q(a/b) for q with integer coefficients, b > 0: the sign of b^deg·q(a/b) =
+    Σ q_i a^i b^(deg − i), an integer (Horner's rule, homogenised)."""
+    v, bp = 0, 1
+    for c in reversed(q):
+        v = v * a + int(c) * bp
+        bp *= b
+    return sign(v)
+
+
+def count(p: list, a=None, b=None) -> int:
+    """The number of distinct real roots of p in ]a, b] (None: −∞ or +∞), by Sturm's theorem
+    applied to the square-free part of p (which has the same distinct roots)."""
+    if not p:
+        raise ValueError("the zero polynomial has every number as a root")
+    if deg(p) == 0:
+        return 0
+    key = tuple(p)
+    if key not in _SQF:
+        if len(_SQF) > 5000:
+            _SQF.clear()
+        _SQF[key] = sturm_sequence(squarefree(p))
+    seq = _SQF[key]
+    return variations(seq, "-inf" if a is None else a) - variations(seq, b)
+
+
+def cauchy_bound(p: list) -> Fraction:
+    """1 + max |a_i / a_n|: every complex root of p has a smaller modulus (Cauchy)."""
+    return 1 + max((abs(a / p[-1]) for a in p[:-1]), default=Fraction(0))
+
+
+class Algebraic:
+    """A real algebraic number: a square-free p ∈ Q[x] and an interval ]lo, hi] holding exactly
+    one root of p, lo and hi not roots (or lo = hi, a rational root)."""
+
+    def __init__(self, p: list, lo, hi, check: bool = True):
+        self.p, self.lo, self.hi = p, Fraction(lo), Fraction(hi)
+        if check:
+            self.validate()
+
+    @classmethod
+    def of(cls, data) -> Algebraic:
+        """From JSON: {"poly": [...], "lo": "p/q", "hi": "p/q"}, or a rational "p/q"."""
+        if isinstance(data, (int, str)):
+            q = rat(data)
+            return cls([-q, Fraction(1)], q, q)
+        return cls(upoly(data["poly"]), rat(data["lo"]), rat(data["hi"]))
+
+    def validate(self) -> None:
+        """p square-free (gcd(p, p') = 1, so Sturm counts each root once) and the interval
+        isolating: one root of p in ]lo, hi], none at lo or hi (Sturm's theorem)."""
+        if deg(self.p) < 1:
+            raise ValueError("a constant polynomial defines no number")
+        if deg(gcd(self.p, derivative(self.p))) > 0:
+            raise ValueError("the polynomial is not square-free")
+        if self.lo > self.hi:
+            raise ValueError("empty interval")
+        if self.lo == self.hi:
+            if value(self.p, self.lo) != 0:
+                raise ValueError(f"{self.lo} is not a root")
+            return
+        if value(self.p, self.lo) == 0 or value(self.p, self.hi) == 0:
+            raise ValueError("an end of the interval is a root")
+        n = count(self.p, self.lo, self.hi)
+        if n != 1:
+            raise ValueError(f"the interval holds {n} roots, not exactly one")
+
+    @property
+    def rational(self) -> bool:
+        return self.lo == self.hi
+
+    def bisect(self) -> None:
+        """Halve the interval, keeping the half that holds the root (by Sturm's count), or the
+        midpoint itself when p vanishes there."""
+        if self.rational:
+            return
+        mid = (self.lo + self.hi) / 2
+        if value(self.p, mid) == 0:
+            self.lo = self.hi = mid
+        elif count(self.p, self.lo, mid) == 1:
+            self.hi = mid
+        else:
+            self.lo = mid
+
+    def compare_rational(self, q) -> int:
+        """sign(self − q): q outside ]lo, hi[ decides at once, else bisect (q a root of p in the
+        interval is the number)."""
+        q = Fraction(q)
+        while True:
+            if self.rational:
+                return sign(self.lo - q)
+            if q <= self.lo:
+                return 1
+            if q >= self.hi:
+                return -1
+            if value(self.p, q) == 0:
+                return 0
+            self.bisect()
+
+    def sign_of(self, h: list) -> int:
+        """The sign of h at the number.  If gcd(h, p) has a root in ]lo, hi] it is the number
+        (the only root of p there): 0.  Otherwise bisect until h has no root in ]lo, hi]
+        (Sturm), so that h keeps one sign there (intermediate value theorem); read it at hi."""
+        if not h:
+            return 0
+        if self.rational:
+            return sign(value(h, self.lo))
+        g = gcd(h, self.p)
+        if deg(g) > 0 and count(g, self.lo, self.hi) == 1:
+            return 0
+        for _ in range(10_000):
+            if self.rational:
+                return sign(value(h, self.lo))
+            if count(h, self.lo, self.hi) == 0:
+                return sign(value(h, self.hi))
+            self.bisect()
+        raise ArithmeticError("sign not decided in 10 000 bisections")
+
+    def compare(self, other: Algebraic) -> int:
+        """sign(self − other).  Disjoint intervals decide.  If gcd of the two polynomials has
+        exactly one root in the overlap, that root is a root of each in its isolating
+        interval: both numbers, equal.  Else bisect both."""
+        for _ in range(10_000):
+            if other.rational:
+                return self.compare_rational(other.lo)
+            if self.rational:
+                return -other.compare_rational(self.lo)
+            if self.hi <= other.lo:
+                return -1
+            if other.hi <= self.lo:
+                return 1
+            g = gcd(self.p, other.p)
+            lo, hi = max(self.lo, other.lo), min(self.hi, other.hi)
+            if deg(g) > 0 and count(g, lo, hi) == 1:
+                return 0
+            self.bisect()
+            other.bisect()
+        raise ArithmeticError("comparison not decided in 10 000 bisections")
+
+    def __repr__(self) -> str:
+        return f"root of {self.p} in ]{self.lo}, {self.hi}]"
+
+
+def real_roots(p: list) -> list:
+    """The distinct real roots of p, largest first, as isolated algebraic numbers: bisection of
+    ]−B, B] (B Cauchy's bound) until each piece holds one root, by Sturm counts."""
+    p = squarefree(trim(p))
+    if deg(p) < 1:
+        return []
+    B = cauchy_bound(p)
+    out, todo = [], [(-B, B, count(p, -B, B))]
+    while todo:
+        lo, hi, n = todo.pop()
+        if n == 0:
+            continue
+        if n == 1:
+            if value(p, hi) == 0:
+                out.append(Algebraic(p, hi, hi, check=False))
+            else:
+                out.append(Algebraic(p, lo, hi, check=False))
+            continue
+        mid = (lo + hi) / 2
+        left = count(p, lo, mid)
+        todo += [(lo, mid, left), (mid, hi, n - left)]
+    return sorted(out, key=lambda a: a.hi, reverse=True)
