@@ -40,8 +40,14 @@ read as a rational; lo, hi rational bounds of arb balls; PIXEL a rational lower 
   The state after the j-th letter of the period is a positive multiple of P_j (c + T u_i);
   its φ is enclosed in arb on the box |u| ≤ s_i, once per b-letter of w, with i the first
   period of the window (s_i decreases).  Before k_0 the window's b-states are the ball run's.
-* **unresolved**: neither proved (no period observed, no trap, not proved inside U within
-  ``collisions``): its points are not certified.  An orbit whose float64 run breaks is
+* **ball**: neither, but the ball engine run to the end (every collision choice decided by
+  arb balls, exact products, precision up to :data:`BALL_DPS` digits; about 0.2 s for 10^4
+  collisions when 64 bits suffice) encloses the true φ at each b-collision of the window
+  directly: its certified horizon covers the window.  This holds the orbits that follow a
+  word without an attracting periodic orbit (r near 1: abcb, whose N_w has a complex pair
+  of modulus slightly above its real eigenvalue) or without a period in 10^4 collisions.
+* **unresolved**: none of these (no trap and the ball engine stops undecided before the
+  end: a chaotic orbit): its points are not certified.  An orbit whose float64 run breaks is
   drawn as a red dot: its points are not counted as plotted.
 
 A continuation refuses a state that is not proved inside the island or the trap
@@ -49,6 +55,7 @@ A continuation refuses a state that is not proved inside the island or the trap
 """
 from __future__ import annotations
 
+import re
 import time
 from dataclasses import dataclass
 from functools import cache
@@ -66,8 +73,9 @@ from certify.patterns import island_theorem, read
 from . import identify
 
 PREC = 128                  # bits of the continuations' balls
-ISLAND, TRAPPED, UNRESOLVED, BROKEN = "island", "trapped", "unresolved", "break"
-KINDS = (ISLAND, TRAPPED, UNRESOLVED, BROKEN)
+ISLAND, TRAPPED, BALL, UNRESOLVED, BROKEN = "island", "trapped", "ball", "unresolved", "break"
+KINDS = (ISLAND, TRAPPED, BALL, UNRESOLVED, BROKEN)
+BALL_DPS = 100              # the cap of the ball engine run to the end (digits): a chaotic orbit stops cheaply
 R_ISLAND = 3 - 2 * 2 ** 0.5  # 3 − 2√2 (for splitting the counts only; the island is decided exactly)
 
 
@@ -281,6 +289,8 @@ def certify_orbit(r: float, theta0: float, phi0: float, phi, collisions: int, ke
     else:
         found = _trapped(x, q, theta0, phi0, collisions, keep)
         if found is None:
+            found = _ball_all(x, q, theta0, phi0, collisions, keep)
+        if found is None:
             return x
         intervals = found
     ok = matched(phi, intervals)
@@ -288,6 +298,29 @@ def certify_orbit(r: float, theta0: float, phi0: float, phi, collisions: int, ke
     if x.certified < x.points:
         x.why += f"{x.points - x.certified} plotted point(s) farther than a pixel from the certified set"
     return x
+
+
+def _ball_all(x: OrbitPoints, q, theta0, phi0, collisions, keep) -> list | None:
+    """The window's true φ from the ball engine run to the end (every collision decided,
+    :func:`certify.numerics.engines.ball_states`, precision up to BALL_DPS digits), or None
+    (x.why completed) when it stops undecided before."""
+    stop, states = {"code": 0, "bits": 0}, []
+    done = 0
+    for done, j, n, bits in engines.ball_states(q, theta0, phi0, collisions, dps=BALL_DPS, stop=stop):
+        if done and j == INDEX["b"]:
+            states.append((n, bits))
+            if len(states) > 2 * keep:
+                del states[:-keep]
+    if done < collisions:
+        x.why = (f"the ball engine stops undecided at collision {done + 1} ({stop['bits']} bits, "
+                 f"cap {BALL_DPS} digits); {x.why}")
+        return None
+    out = []
+    for n, bits in states[-keep:]:
+        with precision(bits):
+            out.append(_bounds(_phi(n)))
+    x.kind, x.entry, x.why = BALL, collisions, ""
+    return out
 
 
 def _trapped(x: OrbitPoints, q, theta0, phi0, collisions, keep) -> list | None:
@@ -390,7 +423,7 @@ def summary(found: dict, lo: float | None = None, hi: float | None = None) -> di
     why: dict = {}
     for o in orbits:
         if o["certified"] < o["points"]:
-            key = o["why"].split(":")[0].split(" (")[0]
+            key = re.sub(r"\d+", "N", o["why"].split(";")[0].split(" (")[0])
             why[key] = why.get(key, 0) + o["points"] - o["certified"]
     return {"every": found["every"], "r_values": len({o["r"] for o in orbits}), "orbits": len(orbits),
             "all": frac(orbits), "above_3-2sqrt2": frac(above),
