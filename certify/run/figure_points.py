@@ -75,6 +75,7 @@ from . import identify
 PREC = 128                  # bits of the continuations' balls
 ISLAND, TRAPPED, BALL, UNRESOLVED, BROKEN = "island", "trapped", "ball", "unresolved", "break"
 KINDS = (ISLAND, TRAPPED, BALL, UNRESOLVED, BROKEN)
+SMALL = flint.fmpq(1, 10 ** 12)   # a trap radius below this: one interval for all later periods
 BALL_DPS = 100              # the cap of the ball engine run to the end (digits): a chaotic orbit stops cheaply
 R_ISLAND = 3 - 2 * 2 ** 0.5  # 3 − 2√2 (for splitting the counts only; the island is decided exactly)
 
@@ -170,24 +171,28 @@ def _radii(U, state, periods):
 
 
 def trap_intervals(U: trapping.Trap, state, offsets: dict) -> list | str:
-    """Intervals (lo, hi) enclosing the true φ after the j-th letter of U.word (a b) in every
-    period i ≥ i_j of the orbit that is at ``state`` (contact U.word[-1]), ``offsets`` =
-    {j: i_j}; the reason when the state is not proved inside U."""
+    """Intervals (lo, hi) enclosing the true φ after the j-th letter of U.word (a b) in the
+    periods i of the orbit that is at ``state`` (contact U.word[-1]), ``offsets`` = {j: the
+    periods i wanted}: one interval per (j, i) while the radius s_i exceeds :data:`SMALL`,
+    then one for every later period (s_i decreases); the reason when the state is not
+    proved inside U."""
     with precision(PREC):
         if U.ball_sign(state) != 1:
             return "the state is not proved inside the trapping ellipse"
         P = trapping.products(U.word, U.r)
-        s_of = radii(U, state, max(offsets.values(), default=0))
+        s_of = radii(U, state, max((max(v) for v in offsets.values()), default=0))
         out = []
-        for j, i in offsets.items():
-            s = s_of[i]
+        for j, periods in offsets.items():
             Pq = [[flint.fmpq(P[j][a, b]) for b in range(3)] for a in range(3)]
             c = [sum((Pq[a][b] * U.centre[b] for b in range(3)), flint.fmpq(0)) for a in range(3)]
             T = [[sum((Pq[a][b] * U.frame[col][b] for b in range(3)), flint.fmpq(0)) for a in range(3)]
                  for col in range(2)]
-            box = flint.arb(0, 1) * s                      # [−s, s]: the disc |u| ≤ s lies in the box
-            n = tuple(flint.arb(c[a]) + T[0][a] * box + T[1][a] * box for a in range(3))
-            out.append(_bounds(_phi(n)))
+            for i in sorted(periods):
+                box = flint.arb(0, 1) * s_of[i]            # [−s, s]: the disc |u| ≤ s lies in the box
+                n = tuple(flint.arb(c[a]) + T[0][a] * box + T[1][a] * box for a in range(3))
+                out.append(_bounds(_phi(n)))
+                if s_of[i] <= SMALL:
+                    break
         return out
 
 
@@ -257,15 +262,23 @@ def _trap(word: str, r: flint.fmpq) -> trapping.Trap | str:
 
 
 def _entry_trap(q, theta0, phi0, U, collisions):
-    """The first (k, state, b-states before k) with the ball state at U's contact proved in U."""
-    c0, pre = INDEX[U.word[-1]], {}
+    """(k0, k1, state at k1, bits, b-states up to k1): the ball state at U's contact proved in U at a
+    first collision k0, then followed by the ball engine while the trap's radius bound
+    (:func:`radii`) stays above :data:`SMALL` (the periods right after the entry, where the
+    bound is coarse and the ball states are sharp), up to k1 = k0 + E·L; None when never in U."""
+    c0, pre, k0, stop_at = INDEX[U.word[-1]], {}, None, None
     for k, j, n, bits in engines.ball_states(q, theta0, phi0, collisions):
         if j == INDEX["b"]:
             pre[k] = (n, bits)
-        if j == c0:
+        if k0 is None and j == c0:
             with precision(bits):
                 if U.ball_sign(n) == 1:
-                    return k, n, bits, pre
+                    k0 = k
+                    s = radii(U, n, (collisions - k) // len(U.word))
+                    E = next((i for i, x in enumerate(s) if x <= SMALL), len(s) - 1)
+                    stop_at = k + E * len(U.word)
+        if stop_at is not None and k == stop_at:
+            return k0, k, n, bits, pre
     return None
 
 
@@ -344,14 +357,14 @@ def _trapped(x: OrbitPoints, q, theta0, phi0, collisions, keep) -> list | None:
     if got is None:
         x.why = f"the rigorous orbit is not proved inside the trap of {word} within {collisions} collisions"
         return None
-    k0, state, bits, pre = got
-    window = trap_window(word, k0, collisions, keep)
-    before = sorted(k for k in pre if k <= k0)[-keep:]
-    allk = sorted([(k, None, None) for k in before if k < k0] + window)[-keep:]
+    k0, k1, state, bits, pre = got
+    window = trap_window(word, k1, collisions, keep)
+    before = sorted(k for k in pre if k <= k1)[-keep:]
+    allk = sorted([(k, None, None) for k in before] + window)[-keep:]      # k1 itself: the ball state
     offsets: dict = {}
     for _k, i, j in allk:
         if i is not None:
-            offsets.setdefault(j, i)
+            offsets.setdefault(j, set()).add(i)
     with precision(bits):
         intervals = trap_intervals(U, state, offsets)
     if isinstance(intervals, str):

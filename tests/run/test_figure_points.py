@@ -118,6 +118,17 @@ def test_a_state_outside_is_refused():
     far = [U.centre[k] + 4 * U.outer * (1 if k == (t + 1) % 3 else 0) for k in range(3)]
     state = tuple(flint.arb(z) for z in far)
     assert U.ball_sign(state) == -1
-    assert "not proved inside the trapping ellipse" in fp.trap_intervals(U, state, {len(x.word): 1})
+    assert "not proved inside the trapping ellipse" in fp.trap_intervals(U, state, {len(x.word): {1}})
     centre = tuple(flint.arb(z) for z in U.centre)
-    assert not isinstance(fp.trap_intervals(U, centre, {len(x.word): 1}), str)
+    assert not isinstance(fp.trap_intervals(U, centre, {len(x.word): {1}}), str)
+
+
+def test_a_window_reaching_back_before_the_entry():
+    """The window's b-collisions up to the entry are the ball engine's, the entry's own included."""
+    th, ph = figures.initial_data("grid")
+    data = figures.compute("5.1", "paper", r=[0.5], collisions=600, keep=200)
+    x = fp.certify_orbit(0.5, float(th[0]), float(ph[0]), data.phi[0, 0], 600, 200)
+    assert x.kind == fp.TRAPPED and x.entry > 600 - 3 * 200
+    window = fp.trap_window(x.word, x.entry, 600, 200)
+    assert len(window) < 200                     # the rest comes from before the entry
+    assert x.points == 200 and x.certified == x.points, x.why
