@@ -198,7 +198,8 @@ def section5_figure(data, dpi: int | None = None) -> str:
     points = data.extra.get("points")
     if points and points["all"]["points"]:
         a, b = points["all"], points["above_3-2sqrt2"]
-        title += (f"\ncertified points (within a pixel of the true orbit, island or trap): {a['fraction']:.2%}"
+        title += ("\ncertified points (within a pixel of the true orbit: island, trap or ball engine): "
+                  f"{a['fraction']:.2%}"
                   + (f", {b['fraction']:.2%} for r > 3−2√2" if b["points"] else "")
                   + (f" (every {points['every']}th r)" if points["every"] > 1 else ""))
     return omega_figure(data, section5_name(spec.id, data.resolution), lines=red_lines(), boxes=spec.boxes,
