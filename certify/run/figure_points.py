@@ -36,10 +36,12 @@ read as a rational; lo, hi rational bounds of arb balls; PIXEL a rational lower 
   rigorous orbit (:func:`certify.numerics.engines.ball_states`, exact products, arb) is
   proved inside U at some collision k_0 at c_0 (:meth:`~certify.numerics.trapping.Trap.ball_sign`).
   By the trap's theorem the true orbit follows w for ever, and after i periods its state at
-  c_0 is c + T u_i with |u_i| ≤ s_i = min(ρ, d + κ^i (ρ + d)) (d ≥ |u*|, κ the contraction).
-  The state after the j-th letter of the period is a positive multiple of P_j (c + T u_i);
-  its φ is enclosed in arb on the box |u| ≤ s_i, once per b-letter of w, with i the first
-  period of the window (s_i decreases).  Before k_0 the window's b-states are the ball run's.
+  c_0 is c + T u_i with |u_i| ≤ s_i, s_{i+1} = min(ρ, R(s_i)), R the trap's image bound
+  (:func:`radii`: a Lohner-style scalar bound that follows the contraction).  The ball
+  engine follows the orbit on while s_i > :data:`SMALL` (to k_1 = k_0 + E·L); from k_1 the
+  state after the j-th letter of period i is a positive multiple of P_j (c + T u_i), its φ
+  enclosed in arb on the box |u| ≤ s_i, one interval per (j, i) until s_i ≤ SMALL, then one
+  for all later periods.  Up to k_1 the window's b-states are the ball run's.
 * **ball**: neither, but the ball engine run to the end (every collision choice decided by
   arb balls, exact products, precision up to :data:`BALL_DPS` digits; about 0.2 s for 10^4
   collisions when 64 bits suffice) encloses the true φ at each b-collision of the window
