@@ -203,8 +203,20 @@ def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until
                                             if outside.size else f"nor just below {lo}")
               if not breaks.size else "")
     note = paper_note("5.1", lambda s: f"{s['r'][2]} values of r, {breaks_text(s['breaks'])}; ω-limits per "
-                      "r: " + ", ".join(f"{v} {k}" for k, v in s["kinds"].items()) + ".") + figure_links("5.1")
+                      "r: " + ", ".join(f"{v} {k}" for k, v in s["kinds"].items()) + "." + points_text(s)) \
+        + figure_links("5.1")
     return observe(checks + explanations("N2", explained), figures=[section5_figure(d)], note=note, reason=reason)
+
+
+def points_text(s: dict) -> str:
+    """The certified fraction of the plotted points (`figures --certify-points`), when computed."""
+    p = s.get("points")
+    if not p or not p["all"]["points"]:
+        return ""
+    a, b = p["all"], p["above_3-2sqrt2"]
+    return (f" Certified points (each within a pixel of the true orbit: island, certified trap or ball engine; "
+            f"every {p['every']}th r): {a['fraction']:.2%} of {a['points']}"
+            + (f", {b['fraction']:.2%} for r > 3−2√2" if b["points"] else "") + ".")
 
 
 def breaks_text(b: dict) -> str:

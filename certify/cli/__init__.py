@@ -35,7 +35,9 @@
     figures [--resolution preview|paper] [--only FIG ...] [--n4 NMAX] [--out DIR]
                                 Figures 6-11 of the paper (our ids 5.1-5.8) into
                                 DIR/figures; paper: also
-                                DIR/numerics-paper.json; --n4: DIR/numerics-n4.json
+                                DIR/numerics-paper.json; --n4: DIR/numerics-n4.json;
+                                --certify-points EVERY: the plotted points certified
+                                (certify.run.figure_points)
     simulate (--r R [R ...] | --r-range LO HI COUNT)
              [--orbits N | --theta0 T [T ...] --phi0 P [P ...]] [--collisions N]
              [--keep N] [--engine float64|mp|ball] [--dps D] [--strict] [--words]

@@ -123,17 +123,53 @@ def cmd_figures(args) -> int:
         if not args.only and args.resolution is None:
             return 0
     resolution = args.resolution or "preview"
-    datas, names = {}, []
+    datas, names, points = {}, [], {}
     with saving.output_dir(out / "figures"):
         for fig in args.only or numerics.SPECS:
             datas[fig] = numerics.compute(fig, resolution, progress=progress.Bar(f"figure {fig}"))
+            if args.certify_points is not None:
+                datas[fig].extra["points"] = points[fig] = certified_points(fig, datas[fig], args, points)
             names.append(plots.section5_figure(datas[fig], dpi=FIGURE_DPI[resolution]))
             print(f"figure {fig}: {len(datas[fig].r)} values of r, {int((datas[fig].breaks != 0).sum())} breaks, "
                   f"{datas[fig].seconds:.1f} s -> {out / 'figures' / names[-1]}")
+            if fig in points:
+                print("  " + points_line(points[fig]))
     if resolution == "paper" and not args.only:
-        write_atomic(out / "numerics-paper.json", json.dumps(numerics.findings(datas), indent=1) + "\n")
+        found = numerics.findings(datas)
+        for fig, summary in points.items():
+            found[fig]["points"] = summary
+        write_atomic(out / "numerics-paper.json", json.dumps(found, indent=1) + "\n")
         print(f"wrote {out / 'numerics-paper.json'}")
     return 0
+
+
+_CERTIFIED_RUNS: dict = {}
+
+
+def certified_points(fig: str, data, args, done: dict) -> dict:
+    """``figures --certify-points EVERY``: the plotted points of figure ``fig`` certified
+    (certify.run.figure_points) on every EVERY-th r of its run; a magnification reuses its
+    source's certification, restricted to its range of r."""
+    from certify import numerics
+    from certify.run import figure_points
+    spec = numerics.SPECS[fig]
+    source = spec.source or fig
+    if source not in _CERTIFIED_RUNS:
+        run = data if spec.source is None else numerics.compute(source, data.resolution)
+        with executors.executor(args.jobs) as ex:
+            _CERTIFIED_RUNS[source] = figure_points.certify_figure(
+                run, args.certify_points, executor=ex if args.jobs != 1 else None,
+                progress=progress.Bar(f"points {source}"))
+    lo, hi = (spec.lo, spec.hi) if spec.source is not None else (None, None)
+    return figure_points.summary(_CERTIFIED_RUNS[source], lo, hi)
+
+
+def points_line(s: dict) -> str:
+    """One line: the certified fraction of the plotted points (all; r > 3−2√2)."""
+    def part(x):
+        return f"{x['certified']}/{x['points']} ({x['fraction']:.2%})" if x["points"] else "none"
+    return (f"certified points: {part(s['all'])} on {s['r_values']} values of r (every {s['every']}); "
+            f"for r > 3−2√2: {part(s['above_3-2sqrt2'])}; classes {s['classes']}; {s['seconds']} s")
 
 
 def cmd_identify(args) -> int:
@@ -269,6 +305,10 @@ def register(commands) -> None:
     p.add_argument("--resolution", choices=("preview", "paper"), default=None,
                    help="preview (default) or the paper's parameters")
     p.add_argument("--only", nargs="+", metavar="FIG", help="only these figures, e.g. 5.2 5.3a")
+    p.add_argument("--certify-points", type=positive_int, default=None, metavar="EVERY",
+                   help="certify the plotted points on every EVERY-th r (1: all): each point within a pixel of "
+                        "the true orbit, proved through the island or a certified trap (certify.run.figure_points); "
+                        "the fractions in the captions and numerics-paper.json")
     p.add_argument("--n4", type=positive_int, default=None, metavar="NMAX",
                    help="find the windows of (ab)^n(cb)^n up to n = NMAX with the mp engine (minutes)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")

@@ -195,5 +195,12 @@ def section5_figure(data, dpi: int | None = None) -> str:
         title += (f"\ncertified: {fraction:.2%} of the collisions (horizon ≤ {int(data.certified.max())}: "
                   "the points are shadowing orbits)" if data.certified.max() < data.collisions - data.keep
                   else f"\ncertified: {fraction:.2%} of the collisions")
+    points = data.extra.get("points")
+    if points and points["all"]["points"]:
+        a, b = points["all"], points["above_3-2sqrt2"]
+        title += ("\ncertified points (within a pixel of the true orbit: island, trap or ball engine): "
+                  f"{a['fraction']:.2%}"
+                  + (f", {b['fraction']:.2%} for r > 3−2√2" if b["points"] else "")
+                  + (f" (every {points['every']}th r)" if points["every"] > 1 else ""))
     return omega_figure(data, section5_name(spec.id, data.resolution), lines=red_lines(), boxes=spec.boxes,
                         title=title, dpi=dpi)
