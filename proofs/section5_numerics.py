@@ -311,7 +311,7 @@ def below_0078(r_below, n_from, accumulate_above):
                             "staying above it", all(a > b > rcrit for a, b in zip(rmax, rmax[1:])),
                             [", ".join(f"r_max({n}) = {r:.10f}" for n, r in zip(ns, rmax))]))
         f64 = committed.get("largest_n_float64")
-        ev.append(f"committed search (`certify figures --n4 {max(ns)}`, {committed['seconds']} s): mp engine at "
+        ev.append(f"committed search (`certify figures --n4 {max(ns)}`): mp engine at "
                   f"40 + 1.5n digits, 2 orbits, max(10^4, 400n) collisions, r = r_max(n) − f (r_max(n) − r_max(n+1)) "
                   f"for f = 0.05, 0.2; float64 at the same r: largest n {f64}. Smallest relative component of the "
                   "dominant eigenvector: " + ", ".join(f"n = {n}: {c:.1e}" for n, c in zip(ns, below) if c))

@@ -4,13 +4,12 @@ paper, our 5.1-5.8, and the findings N2-N7 quote).
 """
 from __future__ import annotations
 
-import json
 from contextlib import nullcontext
 from pathlib import Path
 
 from certify.errors import UsageError
 from certify.run import executors, progress, saving
-from certify.run.files import atomic_path, ensure_writable, write_atomic
+from certify.run.files import atomic_path, ensure_writable, write_atomic, write_findings
 
 from .options import (
     DEFAULT_OUT,
@@ -117,7 +116,7 @@ def cmd_figures(args) -> int:
     if args.n4 is not None:
         with executors.executor(args.jobs) as ex:                      # one n per job
             found = numerics.n4_search(args.n4, progress=progress.Bar("n"), executor=ex if args.jobs > 1 else None)
-        write_atomic(out / "numerics-n4.json", json.dumps(found, indent=1) + "\n")
+        write_findings(out / "numerics-n4.json", found)
         print(f"N4: largest n with 2n accumulation points (mp): {found['largest_n_mp']}; "
               f"float64: {found['largest_n_float64']}; {found['seconds']} s; wrote {out / 'numerics-n4.json'}")
         if not args.only and args.resolution is None:
@@ -138,7 +137,7 @@ def cmd_figures(args) -> int:
         found = numerics.findings(datas)
         for fig, summary in points.items():
             found[fig]["points"] = summary
-        write_atomic(out / "numerics-paper.json", json.dumps(found, indent=1) + "\n")
+        write_findings(out / "numerics-paper.json", found)
         print(f"wrote {out / 'numerics-paper.json'}")
     return 0
 

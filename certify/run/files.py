@@ -70,6 +70,25 @@ def load_findings(name: str, directory=REPORTS) -> dict | None:
         return None
 
 
+TIMINGS = ("seconds",)      # wall times: printed on the terminal, never in a committed file
+
+
+def timeless(doc):
+    """``doc`` without its timings (the keys in TIMINGS, at any depth): committed findings
+    hold what was found, not how long it took on one machine."""
+    if isinstance(doc, dict):
+        return {k: timeless(v) for k, v in doc.items() if k not in TIMINGS}
+    if isinstance(doc, list):
+        return [timeless(v) for v in doc]
+    return doc
+
+
+def write_findings(path, doc: dict) -> None:
+    """Write the findings ``doc`` as JSON at ``path``, atomically and without timings."""
+    import json
+    write_atomic(Path(path), json.dumps(timeless(doc), indent=1) + "\n")
+
+
 def ensure_writable(directory) -> Path:
     """Create ``directory`` if needed and prove that a file can be written there.
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import os
 import re
+from pathlib import Path
 
 import pytest
 
@@ -296,3 +297,30 @@ def test_the_first_screen_says_which_main_results_hold():
            "Theorem 4.1 ([S6](#cert-s6)) not certified." in head
     assert head.index("The main results") < head.index("Every claim")
     assert "main results" not in report.render_markdown([results[-1]]).split("## Contents", 1)[0]
+
+
+def test_no_committed_json_holds_a_timing():
+    """Issue 25: a committed finding holds what was found, not how long it took (the writers
+    drop TIMINGS: run.files.write_findings); timings.json is written but not committed."""
+    import json
+    import subprocess
+
+    from certify.run import files
+    root = Path(__file__).resolve().parents[2]
+    committed = subprocess.run(["git", "ls-files", "reports/*.json"], cwd=root, capture_output=True, text=True).stdout
+    names = [n for n in committed.split() if n]
+    if not names:
+        pytest.skip("not a git checkout")
+
+    def keys(x):
+        if isinstance(x, dict):
+            for k, v in x.items():
+                yield k
+                yield from keys(v)
+        elif isinstance(x, list):
+            for v in x:
+                yield from keys(v)
+    for name in names:
+        found = set(keys(json.loads((root / name).read_text(encoding="utf-8")))) & set(files.TIMINGS)
+        assert not found, (name, found)
+    assert files.timeless({"a": [{"seconds": 1, "b": 2}], "seconds": 3}) == {"a": [{"b": 2}]}
