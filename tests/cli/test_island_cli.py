@@ -78,4 +78,4 @@ def test_exit_code_2_from_the_shell():
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     p = subprocess.run([sys.executable, "-m", "certify", "island", "--r", "1.5"], capture_output=True, text=True,
                        env=env, cwd=ROOT)
-    assert p.returncode == 2 and "outside ]0,1[" in p.stderr and len(p.stderr.strip().splitlines()) == 1
+    assert p.returncode == 2 and "must lie in ]0,1[" in p.stderr and len(p.stderr.strip().splitlines()) == 1
