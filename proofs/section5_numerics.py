@@ -567,9 +567,30 @@ def island_quasi_periodic(island_theorem, suggests, tori, above):
               [f"r = {r}: c_max = {t.c_max}, ρ = {rho}, island share in [{lo}, {hi}]"
                for r, (t, rho, (lo, hi)) in at.items()]),
     ]
+    checks += window_resonance_explanation()
     note = ("The island exists on the whole of ]3−2√2, 1[, not only below r ≃ 0.19166 (l. 1226), where the paper "
             "saw its regimes; outside the island the orbits may be attracted by periodic orbits (`certify identify`). "
             "The theorem and its steps: `python -m certify island --symbolic`, docs/island.md.  The figure: the "
             "b-section at r = 3/10 with the island's boundary ellipse over the tool's eight orbits, and the rotation "
             "number against r with its resonances over the attracting windows of the census.")
     return conclude(checks, note=note, figures=[island_figure(Q(3, 10))])
+
+
+def window_resonance_explanation() -> list:
+    """N7.1's line on the census (ours): the attracting windows that close where the island's
+    rotation number is rational (the same algebraic number, island_theorem.window_resonances)."""
+    census = load_findings("census.json")
+    if not census:
+        return []
+    windows = census["census"]["reduction"].get("attracting_windows", {})
+    by = {rec["word"]: rec.get("compact", rec["word"]) for rec in census["words"]}
+    found = island.window_resonances(windows, 12)
+    closing = {(w, "hi", i) for w, spans in windows.items() for i, span in enumerate(spans)
+               if island.algebraic_of(span["hi"]) >= island.LOWER_END}
+    named = {(w, side, i) for w, spans in windows.items() for i, span in enumerate(spans)
+             for fw, side, d, _ in found if fw == w and side == "hi" and d == span["hi"]["digits"]}
+    return [Check(f"{EXPLANATION} each of the {len(closing)} attracting windows of the census (reports/census.json) "
+                  "that close in [3−2√2, 1] closes exactly where the island's rotation number is p/q (q ≤ 12)",
+                  bool(closing) and closing <= named,
+                  [", ".join(f"{by.get(w, w)}: {'upper' if side == 'hi' else 'lower'} end ≈ {d}, ρ = {p}/{q}"
+                             for w, side, d, (p, q) in found)], counts=False)]

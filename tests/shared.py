@@ -61,3 +61,15 @@ def _traced(id: str):
             setattr(statements, name, func)
     printed = CERTIFICATES[id].printed
     return out, {n for n, v in printed.items() if isinstance(v, str) and v in texts}
+
+
+def strings(value):
+    """Every string inside a JSON value or a certificate's printed inputs."""
+    if isinstance(value, str):
+        yield value
+    elif isinstance(value, (tuple, list)):
+        for v in value:
+            yield from strings(v)
+    elif isinstance(value, dict):
+        for v in value.values():
+            yield from strings(v)

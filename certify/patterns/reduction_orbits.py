@@ -366,7 +366,24 @@ class OrbitResult:
             out += ["## Undecided", ""] + [f"- {u}" for u in self.undecided] + [""]
         out += ["## The normal n*", ""] + [f"- {k} = `{v}`" for k, v in self.eigenvector.items()] + [""]
         out += ["## Physics", "", self.physics, "", "## Verdict", "", self.verdict, ""]
-        return "\n".join(out)
+        return "\n".join(out + resonance_lines(self))
+
+
+RESONANCE_Q = 12          # window ends compared with the island's resonances p/q, q ≤ RESONANCE_Q
+
+
+def resonance_lines(res: OrbitResult) -> list[str]:
+    """The ends of the attracting windows that are resonances of the island around [ac]b (the
+    same algebraic number: :func:`.island_theorem.window_resonances`), as a section of the
+    text output; nothing when there are none."""
+    from .island_theorem import window_resonances
+    found = window_resonances({res.written: res.attracting()}, RESONANCE_Q)
+    if not found:
+        return []
+    return ["## Window ends at resonances of the island", ""] + [
+        f"- the {'upper' if side == 'hi' else 'lower'} end ≈ {d} of an attracting window: the island's rotation "
+        f"number is ρ = {p}/{q} there (`certify island --resonances {RESONANCE_Q}`)"
+        for _w, side, d, (p, q) in found] + [""]
 
 
 def verdict(res: OrbitResult) -> str:

@@ -341,3 +341,14 @@ def test_the_122_letter_attractor_of_0173_is_certified_and_agrees_with_the_point
     point = ro.orbit_at(ATTRACTOR_0173, Q(173, 1000))
     assert point[0].kind == "attracting" and point[0].pair == "complex"
     assert all(p.kind != "attracting" for p in point[1:])
+
+
+def test_orbit_names_the_window_ends_that_are_resonances_of_the_island():
+    """`certify orbit` says exactly which attracting window ends are resonances of the island
+    (a(bac)^2bcb closes at 2 − √3, ρ = 1/3); a window moved off it is not named."""
+    from certify.patterns import reduction_orbits as ro
+    res = ro.analyse("abacbacbcb", self_similar=False)
+    lines = ro.resonance_lines(res)
+    assert any("upper end" in line and "ρ = 1/3" in line for line in lines), lines
+    moved = [dict(a, hi={"exact": "27/100", "digits": "0.27"}) for a in res.attracting()]
+    assert ro.resonance_lines(type("R", (), {"written": res.written, "attracting": lambda self: moved})()) == []

@@ -16,18 +16,7 @@ import pytest
 from certify.run import runner
 from certify.run.files import REPORTS
 from tests import paper, shared
-
-
-def strings(value):
-    """Every string inside a JSON value or a certificate's printed inputs."""
-    if isinstance(value, str):
-        yield value
-    elif isinstance(value, (tuple, list)):
-        for v in value:
-            yield from strings(v)
-    elif isinstance(value, dict):
-        for v in value.values():
-            yield from strings(v)
+from tests.shared import strings
 
 
 def certificate_quotations():

@@ -11,23 +11,12 @@ from certify.numerics import figures as F
 from certify.run import report, runner
 from tests.paper import NO_SOURCE, PAPER, numbering, plain_lines
 from tests.proofs.test_claims import ranges
+from tests.shared import strings
 
 pytestmark = pytest.mark.skipif(not PAPER.is_file(), reason=NO_SOURCE)        # it reads the whole source
 
 NAMED = re.compile(r"\b(Theorem|Proposition|Corollary|Remark|Lemma)s? (\d+\.\d+)")
 FIGURE = re.compile(r"\bFigures? (\d+)([a-c]?)(?:-\d+([a-c]))? \(([^)]*)\)")
-
-
-def strings(value):
-    """Every string inside a certificate's printed inputs."""
-    if isinstance(value, str):
-        yield value
-    elif isinstance(value, (tuple, list)):
-        for v in value:
-            yield from strings(v)
-    elif isinstance(value, dict):
-        for v in value.values():
-            yield from strings(v)
 
 
 def texts():
