@@ -62,7 +62,7 @@ def quadratic_form(u, v, r):
 
 def c_max(r):
     """c_max = 1 − (1−r)²/(4r), the level of the island's boundary ellipse."""
-    return 1 - (1 - r) ** 2 / (4 * r)
+    return 1 - (1 - r) * (1 - r) / (4 * r)        # x * x: an arb x ** 2 is nan when x holds 0
 
 
 def matrix_A(r) -> tuple:

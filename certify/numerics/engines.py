@@ -285,7 +285,7 @@ def ball_orbit(r, theta0, phi0, collisions, keep=0, dps=None, word=False, checkp
 
     def phi(v):
         with precision(prec[0]):
-            return float(flint.arb.atan2((v[2] ** 2 + v[0] ** 2).sqrt(), v[1]).mid())
+            return float(flint.arb.atan2((v[2] * v[2] + v[0] * v[0]).sqrt(), v[1]).mid())
 
     rec = _Record(keep, word, checkpoints, phi)
     done = 0

@@ -152,7 +152,7 @@ class Trap:
         (p, q), (s, v) = [[self.frame[j][k] for j in range(2)] for k in f]
         det = p * v - q * s
         u = ((v * d[0] - q * d[1]) / det, (p * d[1] - s * d[0]) / det)
-        gap = self.radius ** 2 - (u[0] ** 2 + u[1] ** 2)
+        gap = self.radius * self.radius - (u[0] * u[0] + u[1] * u[1])     # x * x: arb's x ** 2 is nan at 0 ± ε
         return 1 if gap > 0 else -1 if gap < 0 else 0
 
     def lines(self) -> list[str]:
@@ -231,15 +231,15 @@ def _dot(a, b):
 
 
 def _norm(v) -> flint.arb:
-    return sum((flint.arb(z) ** 2 for z in v), flint.arb(0)).sqrt()
+    return sum((flint.arb(z) * flint.arb(z) for z in v), flint.arb(0)).sqrt()
 
 
 def _spectral(A) -> flint.arb:
     """An enclosure of ‖A‖₂ for a rational 2x2 A: σ² = (f + √(f² - 4d²))/2, f the squared
     Frobenius norm, d = det A (f² - 4d² ≥ 0; its ball is made non-negative by abs)."""
-    f = flint.arb(sum(z ** 2 for row in A for z in row))
+    f = flint.arb(sum(z * z for row in A for z in row))
     d = flint.arb(A[0][0] * A[1][1] - A[0][1] * A[1][0])
-    return ((f + abs(f ** 2 - 4 * d ** 2).sqrt()) / 2).sqrt()
+    return ((f + abs(f * f - 4 * d * d).sqrt()) / 2).sqrt()
 
 
 def _return_map(N, c, T, t) -> tuple:
@@ -288,7 +288,7 @@ def frame(N, c, t: int) -> tuple[tuple, str]:
     _g0, D, alpha, _beta = _return_map(N, c, E, t)
     d = [[flint.arb(z) / flint.arb(alpha) for z in row] for row in D]
     tr, det = d[0][0] + d[1][1], d[0][0] * d[1][1] - d[0][1] * d[1][0]
-    disc = tr ** 2 - 4 * det
+    disc = tr * tr - 4 * det
     if disc.mid() < 0:
         a, b = tr / 2, (-disc).sqrt() / 2
         cols, pair = ((d[0][1], a - d[0][0]), (flint.arb(0), b)), "complex"

@@ -13,6 +13,11 @@
   (no pickling; what a test or a certificate wants).
 
 Jobs must be module-level functions of picklable arguments returning plain data.
+
+A Dask worker must run one thread per process (``dask worker --nthreads 1``): python-flint's
+working precision (``flint.ctx.prec``) is global to a process, so two threads that set it at
+once would leave each other's balls at a precision neither asked for (still rigorous, but
+possibly undecided, and not the same bytes).
 """
 from __future__ import annotations
 

@@ -115,7 +115,7 @@ def _bounds(x: flint.arb) -> tuple:
 
 def _phi(n) -> flint.arb:
     """φ of a state at b (any positive multiple of an oriented normal), a ball."""
-    return flint.arb.atan2((n[2] ** 2 + n[0] ** 2).sqrt(), n[1])
+    return flint.arb.atan2((n[2] * n[2] + n[0] * n[0]).sqrt(), n[1])
 
 
 # ------------------------------------------------------------------ the continuations
@@ -165,7 +165,7 @@ def _radii(U, state, periods):
     (p, q), (w, v) = [[U.frame[j][k] for j in range(2)] for k in f]
     det = p * v - q * w
     u = ((v * d[0] - q * d[1]) / det, (p * d[1] - w * d[0]) / det)
-    s = [min(_bounds((u[0] ** 2 + u[1] ** 2).sqrt())[1], U.radius)]
+    s = [min(_bounds((u[0] * u[0] + u[1] * u[1]).sqrt())[1], U.radius)]
     for _ in range(periods):
         R = (norm_g + norm_a * s[-1]) / (flint.arb(alpha) - norm_b * s[-1])
         s.append(min(_bounds(R)[1], U.radius))

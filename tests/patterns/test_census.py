@@ -97,7 +97,7 @@ def test_serial_census_lists_every_word(reference):
 
 def test_a_dask_cluster_gives_the_same_bytes(reference):
     distributed = pytest.importorskip("distributed")
-    with distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=2,
+    with distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=1,
                                   dashboard_address=None) as cluster:
         with executor(scheduler=cluster.scheduler_address) as ex:
             on_cluster = run_census.run_census(L_SMALL, ex)
