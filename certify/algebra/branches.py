@@ -310,6 +310,7 @@ class SignTable:
 
     def __init__(self, condition: str, interval: tuple, critical: list, cells: list, point_at=None):
         self.condition, self.interval, self.critical, self.cells = condition, interval, critical, cells
+        self.source: tuple | None = None        # (spectrum, condition): what the kernel re-derives
         self._points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
 
     @property
@@ -459,7 +460,7 @@ class Spectrum:
         (r, λ, s) or an element of the engine's ring; cached by g's text."""
         G = g if isinstance(g, flint.fmpz_mpoly) else ring_to_mpoly(g)
         if not G.is_zero():                # the same key for proportional polynomials (the same zeros)
-            G = G / G.content()
+            G = G / G.content()  # type: ignore[attr-defined]
             if G.coeffs()[0] < 0:
                 G = -G
         key = str(G)

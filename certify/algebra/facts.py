@@ -217,7 +217,7 @@ def product_identity(holds: bool, factors: list, rhs, entry: int | None = None) 
         rhs_list = [rhs_list[entry]]
     gens, circles = generators(*[e for F in factors for e in F], *rhs_list)
     names = [str(g) for g in gens]
-    product = {"product": [{"rows": F.shape[0], "cols": F.shape[1],
+    product: dict[str, object] = {"product": [{"rows": F.shape[0], "cols": F.shape[1],
                             "entries": [rational_function(e, gens) for e in F]} for F in factors]}
     if entry is not None:
         product["entry"] = int(entry)

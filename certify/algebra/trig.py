@@ -444,8 +444,9 @@ def _poly_data(p, H: Signs) -> dict | None:
 def signed_fact(E, H: Signs) -> dict:
     """The strict sign of E under H by inspection, as an obligation (ValueError if undecided)."""
     n, d = fraction(E)
-    parts = [_poly_data(n, H), _poly_data(d, H)]
-    if None in parts:
+    found = [_poly_data(n, H), _poly_data(d, H)]
+    parts = [x for x in found if x is not None]
+    if len(parts) != len(found):
         raise ValueError("sign undecided by inspection")
     sign_of = {1: 1, -1: -1}
     total = 1
