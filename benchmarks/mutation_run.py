@@ -116,7 +116,7 @@ MUTANTS = [
     Mutant("R without its ‖A‖ρ term", "trapping", TRAP,
            "R = (norm_g + norm_a * rho) / den", "R = norm_g / den"),
     Mutant("‖A‖ by half the Frobenius norm squared, no root term", "trapping", TRAP,
-           "return ((f + abs(f ** 2 - 4 * d ** 2).sqrt()) / 2).sqrt()", "return (f / 2).sqrt()"),
+           "return ((f + abs(f * f - 4 * d * d).sqrt()) / 2).sqrt()", "return (f / 2).sqrt()"),
     Mutant("the face walls dropped", "trapping", TRAP,
            '                Wall(f"face at state {k} ({letters[k]})", row(k, (i + 2) % 3, -1)),\n', ""),
     Mutant("the orientation at the return dropped", "trapping", TRAP,
