@@ -31,6 +31,7 @@ from certify.run import (
     Check,
     certificate,
     committed,
+    committed_windows,
     conclude,
     explanations,
     island_figure,
@@ -518,13 +519,17 @@ def island_explanations(island_theorem, at_text) -> list:
 def grid_classes() -> list:
     """N7's summary of the committed classes of the tool's grid (each re-checked in N2, N5, N6)."""
     found = load_findings(ORBIT_FINDINGS) or {}
-    rows = [(e["r"], e["classes"]) for claim in ("N2", "N5", "N6") for e in found.get("claims", {}).get(claim, [])]
-    if not rows:
+    entries = [e for claim in ("N2", "N5", "N6") for e in found.get("claims", {}).get(claim, [])]
+    if not entries:
         return []
-    text = "; ".join(f"r = {r}: " + ", ".join(f"{n} {c}" for c, n in k.items() if n) for r, k in rows)
+    text = "; ".join(f"r = {e['r']}: " + ", ".join(f"{n} {c}" for c, n in e["classes"].items() if n) for e in entries)
+    # each orbit has one class, and the counts are those of the orbits listed
+    whole = all(len(e["classified"]) == e["orbits"] and
+                all(sum(o["class"] == c for o in e["classified"]) == n for c, n in e["classes"].items())
+                for e in entries)
     return [Check(f"{EXPLANATION} every orbit of the tool's grid is classified at the r of {ORBIT_FINDINGS} "
                   "(island: quasi-periodic, proved; attracting periodic: its word certified for ever; unresolved: "
-                  "observed only), each proof re-checked in N2, N5 and N6", True, [text], counts=False)]
+                  "observed only), each proof re-checked in N2, N5 and N6", whole, [text], counts=False)]
 
 
 PRINTED_N7_1 = dict(suggests="the orbits of such a system might be quasi-periodic",
@@ -579,11 +584,10 @@ def island_quasi_periodic(island_theorem, suggests, tori, above):
 def window_resonance_explanation() -> list:
     """N7.1's line on the census (ours): the attracting windows that close where the island's
     rotation number is rational (the same algebraic number, island_theorem.window_resonances)."""
-    census = load_findings("census.json")
-    if not census:
+    committed = committed_windows()
+    if committed is None:
         return []
-    windows = census["census"]["reduction"].get("attracting_windows", {})
-    by = {rec["word"]: rec.get("compact", rec["word"]) for rec in census["words"]}
+    windows, by = committed
     found = island.window_resonances(windows, 12)
     closing = {(w, "hi", i) for w, spans in windows.items() for i, span in enumerate(spans)
                if island.algebraic_of(span["hi"]) >= island.LOWER_END}

@@ -13,7 +13,7 @@ import json
 import flint
 
 from certify.errors import UsageError
-from certify.run import progress
+from certify.run import census_report, progress
 
 from .options import add_command, integer, positive_int, r_grid, restitution
 
@@ -62,7 +62,8 @@ def cmd_island(args) -> int:
     doc.update(records[0] if args.r is not None else {"islands": records} if rs else {})
     if args.resonances is not None:
         doc["resonances"] = [s.as_json() for s in it.resonances(args.resonances)]
-        windows = census_windows()
+        committed = census_report.committed_windows()
+        windows = None if committed is None else committed[0]
         if windows is not None:
             doc["window_resonances"] = [{"word": w, "end": side, "digits": d, "p": p, "q": q}
                                         for w, side, d, (p, q) in it.window_resonances(windows, args.resonances)]
@@ -75,13 +76,6 @@ def cmd_island(args) -> int:
         island_figures.island_figure(args.figure, rs[0] if rs else None, args.resonances or 12)
     print(json.dumps(doc, indent=2, ensure_ascii=False) if args.json else "\n".join(text_lines(doc)))
     return 0
-
-
-def census_windows() -> dict | None:
-    """The attracting windows of the committed census (reports/census.json), or None."""
-    from certify.run import files
-    text = files.read_text_or_none(files.REPORTS / "census.json")
-    return None if text is None else json.loads(text)["census"]["reduction"].get("attracting_windows", {})
 
 
 def text_lines(doc: dict):

@@ -16,6 +16,7 @@ and progress on a terminal.  It imports every layer below it.
 from certify.obligations import gathered, replaying, take
 
 from . import checks, files, plots, progress, report, runner, saving
+from .census_report import committed_windows
 from .checks import (
                      check_of,
                      combined,
@@ -77,7 +78,7 @@ __all__ = [
     "determinant_fact",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "replaying", "gathered", "take",
-    "load_findings", "island_figure", "explanations", "save_figure",
+    "load_findings", "committed_windows", "island_figure", "explanations", "save_figure",
     "omega_figure", "section5_figure", "section5_name", "sign_chart",
     "spectrum_figures",
     "CERTIFICATES", "EXPLANATION", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK",

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from certify.patterns import census, island_theorem
 
-from .files import read_text_or_none, write_atomic
+from .files import REPORTS, read_text_or_none, write_atomic
 
 WINDOW = 64                  # jobs in flight at once (an interruption loses at most these)
 
@@ -190,6 +190,17 @@ def reduction_lines(s: dict, recs: list, L: int) -> list[str]:
     if f["union_by_length"] and f["union_by_length"][-1]["max_length"] < L:
         lines.append(f"| {L} | the same (no new window after L = {f['union_by_length'][-1]['max_length']}) | |")
     return lines + [""] + resonance_lines(f.get("attracting_windows", {}), by)
+
+
+def committed_windows(path=None) -> tuple[dict, dict] | None:
+    """The attracting windows of the committed census ({word: [{"lo", "hi", ...}]}, as
+    census.json holds them) and each word's compact form, or None without a census file."""
+    text = read_text_or_none(path or REPORTS / "census.json")
+    if text is None:
+        return None
+    doc = json.loads(text)
+    return (doc["census"]["reduction"].get("attracting_windows", {}),
+            {rec["word"]: rec.get("compact", rec["word"]) for rec in doc["words"]})
 
 
 RESONANCE_Q = 12        # the window ends compared with the island's resonances p/q, q ≤ RESONANCE_Q

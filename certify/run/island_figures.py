@@ -11,17 +11,15 @@
 """
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
 import numpy as np
 
 from certify.dynamics import island
-from certify.patterns import census
 from certify.patterns import island_theorem as it
 
-from . import files, saving
+from . import census_report, files, saving
 
 LOWER = 3 - 2 * math.sqrt(2)
 
@@ -64,13 +62,13 @@ def section_axes(ax, r, collisions: int = 3000) -> None:
 
 def census_windows(path: Path | None = None) -> list[tuple[str, float, float]]:
     """(word, lo, hi) of every attracting window of the committed census (floats of the
-    certified ends), or [] when there is no census file."""
-    text = files.read_text_or_none(path or files.REPORTS / "census.json")
-    if text is None:
+    certified ends, :func:`.census_report.committed_windows`), or [] without a census file."""
+    committed = census_report.committed_windows(path)
+    if committed is None:
         return []
-    doc = json.loads(text)
-    return [(rec.get("compact", rec.get("word", "?")), float(lo["digits"]), float(hi["digits"]))
-            for rec in doc.get("words", []) for lo, hi, _pair in census.attracting_windows(rec)]
+    windows, compact = committed
+    return [(compact.get(w, w), float(span["lo"]["digits"]), float(span["hi"]["digits"]))
+            for w, spans in windows.items() for span in spans]
 
 
 def rotation_axes(ax, Q: int = 12, windows=None) -> None:
