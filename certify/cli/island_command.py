@@ -107,10 +107,10 @@ def text_lines(doc: dict):
             lo, hi = x["isolating_interval"]
             yield f"  ρ = {x['p']}/{x['q']}: r ≈ {x['digits']}, root of {x['minimal_polynomial']} in ]{lo}, {hi}["
     if "window_resonances" in doc:
+        from certify.patterns import island_theorem
         yield "ends of the census's attracting windows that are resonances (the same algebraic number):"
         for x in doc["window_resonances"]:
-            which = "upper" if x["end"] == "hi" else "lower"
-            yield f"  {x['word']}: its {which} end {x['digits']} is ρ = {x['p']}/{x['q']}"
+            yield f"  {x['word']}: {island_theorem.resonance_phrase(x['end'], x['digits'], x['p'], x['q'])}"
 
 
 def _steps(steps):

@@ -692,7 +692,16 @@ def algebraic_of(end: dict) -> Algebraic:
     return Algebraic(p, lo, hi)
 
 
-def window_resonances(windows: dict, Q: int = 12) -> list[tuple[str, str, str, tuple[int, int]]]:
+RESONANCE_Q = 12      # window ends compared with the resonances p/q, q ≤ RESONANCE_Q (orbit, CENSUS.md, island)
+
+
+def resonance_phrase(side: str, digits: str, p: int, q: int) -> str:
+    """How every output words a window end at a resonance (:func:`window_resonances`)."""
+    return (f"its {'upper' if side == 'hi' else 'lower'} end ≈ {digits} is where the island's rotation number "
+            f"is ρ = {p}/{q}")
+
+
+def window_resonances(windows: dict, Q: int = RESONANCE_Q) -> list[tuple[str, str, str, tuple[int, int]]]:
     """(word, "lo" or "hi", digits, (p, q)) for every end of the attracting windows
     ({word: [{"lo": end, "hi": end}, ...]}, as census.json holds them) that is a resonance
     of the island with q ≤ Q, exactly (:func:`resonance_of`); an end at 3 − 2√2 is listed

@@ -369,20 +369,16 @@ class OrbitResult:
         return "\n".join(out + resonance_lines(self))
 
 
-RESONANCE_Q = 12          # window ends compared with the island's resonances p/q, q ≤ RESONANCE_Q
-
-
 def resonance_lines(res: OrbitResult) -> list[str]:
     """The ends of the attracting windows that are resonances of the island around [ac]b (the
     same algebraic number: :func:`.island_theorem.window_resonances`), as a section of the
     text output; nothing when there are none."""
-    from .island_theorem import window_resonances
+    from .island_theorem import RESONANCE_Q, resonance_phrase, window_resonances
     found = window_resonances({res.written: res.attracting()}, RESONANCE_Q)
     if not found:
         return []
     return ["## Window ends at resonances of the island", ""] + [
-        f"- the {'upper' if side == 'hi' else 'lower'} end ≈ {d} of an attracting window: the island's rotation "
-        f"number is ρ = {p}/{q} there (`certify island --resonances {RESONANCE_Q}`)"
+        f"- an attracting window: {resonance_phrase(side, d, p, q)} (`certify island --resonances {RESONANCE_Q}`)"
         for _w, side, d, (p, q) in found] + [""]
 
 

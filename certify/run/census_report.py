@@ -203,7 +203,7 @@ def committed_windows(path=None) -> tuple[dict, dict] | None:
             {rec["word"]: rec.get("compact", rec["word"]) for rec in doc["words"]})
 
 
-RESONANCE_Q = 12        # the window ends compared with the island's resonances p/q, q ≤ RESONANCE_Q
+RESONANCE_Q = island_theorem.RESONANCE_Q
 
 
 def resonance_lines(windows: dict, by: dict) -> list[str]:
@@ -212,8 +212,8 @@ def resonance_lines(windows: dict, by: dict) -> list[str]:
     found = island_theorem.window_resonances(windows, RESONANCE_Q)
     if not windows:
         return []
-    rows = [f"- `{by[w]['compact'] if w in by else w}`: its {'upper' if side == 'hi' else 'lower'} end ≈ {d} is "
-            f"where the island's rotation number is ρ = {p}/{q}" for w, side, d, (p, q) in found]
+    rows = [f"- `{by[w]['compact'] if w in by else w}`: {island_theorem.resonance_phrase(side, d, p, q)}"
+            for w, side, d, (p, q) in found]
     return ["The ends of the attracting windows that are resonances of the island around [ac]b (`certify island "
             f"--resonances {RESONANCE_Q}`: the rotation number of the b-to-b map there is p/q, q ≤ {RESONANCE_Q}; "
             "the same algebraic number, compared exactly; ρ = 1/2 at 3−2√2 and ρ → 1/4 at r = 1 are the ends of "
