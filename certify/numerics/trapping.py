@@ -143,17 +143,28 @@ class Trap:
         the contact ``word[-1]``: +1 when every point of the ball lies in U (ρ² − |u|² > 0
         proved, with n_t > 0 proved), −1 when every point lies outside, 0 when the balls do
         not decide.  Exact rationals for c and T, arb for n (at the caller's precision)."""
-        t = self.chart
-        if not n[t] > 0:
+        if not n[self.chart] > 0:
             return 0
+        u = self.ball_coordinates(n)
+        gap = self.radius * self.radius - (u[0] * u[0] + u[1] * u[1])     # x * x: arb's x ** 2 is nan at 0 ± ε
+        return 1 if gap > 0 else -1 if gap < 0 else 0
+
+    def ball_coordinates(self, n) -> tuple:
+        """Balls containing u with n ∝ c + T u, for a ball vector n (n_t ≠ 0): the frame
+        coordinates of :meth:`coordinates` in arb, at the caller's precision."""
+        t = self.chart
         m = [flint.arb(z) / n[t] for z in n]
         f = _free(t)
         d = [m[k] - self.centre[k] for k in f]
         (p, q), (s, v) = [[self.frame[j][k] for j in range(2)] for k in f]
         det = p * v - q * s
-        u = ((v * d[0] - q * d[1]) / det, (p * d[1] - s * d[0]) / det)
-        gap = self.radius * self.radius - (u[0] * u[0] + u[1] * u[1])     # x * x: arb's x ** 2 is nan at 0 ± ε
-        return 1 if gap > 0 else -1 if gap < 0 else 0
+        return ((v * d[0] - q * d[1]) / det, (p * d[1] - s * d[0]) / det)
+
+    def image_bound(self) -> tuple:
+        """(|g_0|, ‖A‖, α, |β|) of the return map in the frame (module docstring), balls at
+        the caller's precision: |g(u)| ≤ R(|u|) = (|g_0| + ‖A‖ |u|)/(α − |β| |u|) on U."""
+        g0, A, alpha, beta = _return_map(products(self.word, self.r)[-1], self.centre, self.frame, self.chart)
+        return _norm(g0), _spectral(A), flint.arb(alpha), _norm(beta)
 
     def lines(self) -> list[str]:
         """The summary, then the exact data of U (centre and frame to 12 digits, ρ exact)."""

@@ -156,18 +156,11 @@ def radii(U: trapping.Trap, state, periods: int) -> list[flint.fmpq]:
 
 
 def _radii(U, state, periods):
-    t = U.chart
-    g0, A, alpha, beta = trapping._return_map(trapping.products(U.word, U.r)[-1], U.centre, U.frame, t)
-    norm_a, norm_g, norm_b = trapping._spectral(A), trapping._norm(g0), trapping._norm(beta)
-    m = [flint.arb(z) / state[t] for z in state]
-    f = ((t + 1) % 3, (t + 2) % 3)
-    d = [m[k] - U.centre[k] for k in f]
-    (p, q), (w, v) = [[U.frame[j][k] for j in range(2)] for k in f]
-    det = p * v - q * w
-    u = ((v * d[0] - q * d[1]) / det, (p * d[1] - w * d[0]) / det)
+    norm_g, norm_a, alpha, norm_b = U.image_bound()
+    u = U.ball_coordinates(state)
     s = [min(_bounds((u[0] * u[0] + u[1] * u[1]).sqrt())[1], U.radius)]
     for _ in range(periods):
-        R = (norm_g + norm_a * s[-1]) / (flint.arb(alpha) - norm_b * s[-1])
+        R = (norm_g + norm_a * s[-1]) / (alpha - norm_b * s[-1])
         s.append(min(_bounds(R)[1], U.radius))
     return s
 
