@@ -79,17 +79,11 @@ ISLAND, ATTRACTING, UNRESOLVED = ident.ISLAND, ident.ATTRACTING, ident.UNRESOLVE
 
 
 # ------------------------------------------------------------------ the grids
-def r_values(lo, hi, n: int) -> list[Fraction]:
-    """``n`` rationals in ]lo, hi[: the midpoints of n equal cells, rounded to d decimals
-    (d = 4, more when n needs it), without repeats.  UsageError on a bad range or count."""
-    try:
-        a, b = Fraction(str(lo)), Fraction(str(hi))
-    except (ValueError, ZeroDivisionError):
-        raise UsageError(f"--r-range: {lo!r} {hi!r} are not rational numbers") from None
-    if not 0 <= a < b <= 1:
-        raise UsageError(f"--r-range needs 0 <= LO < HI <= 1, got {lo} {hi}")
-    if n < 1:
-        raise UsageError(f"--resolution must be a positive integer, got {n}")
+def r_values(lo: Fraction, hi: Fraction, n: int) -> list[Fraction]:
+    """``n`` rationals in ]lo, hi[ (0 ≤ lo < hi ≤ 1 exact, as the CLI's one reader gives them,
+    :func:`certify.cli.options.r_range`): the midpoints of n equal cells, rounded to d decimals
+    (d = 4, more when n needs it), without repeats."""
+    a, b = Fraction(lo), Fraction(hi)
     d = max(4, len(str(n)) + 2)
     out = []
     for k in range(n):

@@ -4,6 +4,7 @@
 import copy
 import json
 import math
+from fractions import Fraction
 
 import jsonschema
 import pytest
@@ -19,7 +20,7 @@ PARAMS = {"r_range": ["7/50", "8/25"], "resolution": 3, "data": 0, "collisions":
 
 
 def _run(state=None, resume=False, ex=None):
-    rs = atlas.r_values("0.14", "0.32", 3)              # 0.17 (below 3−2√2), 0.23, 0.29
+    rs = atlas.r_values(Fraction("0.14"), Fraction("0.32"), 3)              # 0.17 (below 3−2√2), 0.23, 0.29
     return atlas.run_atlas(rs, atlas.data_grid(0), 5000, ex or Serial(), state, resume, word_seconds=60, word_max=30)
 
 
@@ -39,7 +40,7 @@ def _cell_with(doc, k):
 
 
 def test_the_grids():
-    rs = atlas.r_values("0.14", "0.32", 3)
+    rs = atlas.r_values(Fraction("0.14"), Fraction("0.32"), 3)
     assert [str(r) for r in rs] == ["17/100", "23/100", "29/100"]
     th, ph = grid(8)
     data = atlas.data_grid(5)
