@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from certify.algebra import Q, lam, r, show, statements
+from certify.algebra import Q, facts, lam, r, show, statements
 from certify.algebra import trig as T
 from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.dynamics import cones as RC
@@ -56,6 +56,7 @@ from certify.run import (
     fact_ids,
     identity,
     identity_facts,
+    identity_modulo_facts,
     kept_facts,
     overridden,
     quantity,
@@ -749,12 +750,29 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
     checks, rates = [], sorted({d.r for d in section4_data} | {Q(1, 3)})
     for letter, text in zip(LETTERS, (A, B, C)):
         K, j = matrix(text), INDEX[letter]
-        fixed = all((K * sp.eye(3).col(m) - sp.eye(3).col(m)).applyfunc(sp.expand) == sp.zeros(3, 1)
-                    for m in range(3) if m != j)
+        kept = [(K * sp.eye(3).col(m) - sp.eye(3).col(m)).applyfunc(sp.expand) == sp.zeros(3, 1)
+                for m in range(3) if m != j]
+        fixed = all(kept)
         cof = K.adjugate().T                     # cof(K)(a ∧ b) = Ka ∧ Kb for every K
+        det = sp.expand(K.det())
+        adjugate = (K.T * cof - det * sp.eye(3)).applyfunc(sp.expand).is_zero_matrix     # K^T cof(K) = det(K) I
         engine = sp.Matrix.hstack(*(sp.Matrix(col) for col in R.cofactor_columns(letter, r)))
-        same = all(sp.cancel(e) == 0 for e in engine - cof)                 # as matrices over Q(r)
-        scaled = [multiple(R.cofactor(letter, r0), cof.subs(r, sp.Rational(int(r0.p), int(r0.q)))) for r0 in rates]
+        equal = all(sp.cancel(e) == 0 for e in engine - cof)                           # as matrices over Q(r)
+        same = adjugate and equal
+        values = [sp.Rational(int(r0.p), int(r0.q)) for r0 in rates]
+        integer = [R.cofactor(letter, r0) for r0 in rates]
+        scaled = [multiple(N_, cof.subs(r, v)) for N_, v in zip(integer, values)]
+        # for the kernel: K fixes e_m (m ≠ j); cof is K's cofactor matrix (K^T cof = det K · I, det K given) and the
+        # engine's; at each r₀ the integer matrix is k·cof(r₀) (an identity modulo r − r₀) with k > 0
+        grounds = identity_facts(*[(ok, [K, sp.eye(3).col(m)], sp.eye(3).col(m))
+                                   for ok, m in zip(kept, [m for m in range(3) if m != j])],
+                                 (adjugate, [K.T, cof], det * sp.eye(3)), (equal, engine, cof))
+        grounds += determinant_fact(True, K, det)
+        for N_, v, k in zip(integer, values, scaled):
+            if k is not None:
+                grounds += identity_modulo_facts(r - v, (True, sp.Matrix([[int(z) for z in row] for row in N_]), k * cof),
+                                                 var=r)
+                grounds += fact_ids(lambda k=k: facts.compare(1, k, 0))
         checks.append(Check(f"{letter.upper()} fixes {{x_{j + 1} = 0}} pointwise, so the plane after a collision "
                             f"{letter} is {letter.upper()}·P, with normal cof({letter.upper()}) n; the projective map "
                             f"moves normals by this cof({letter.upper()}): the engine's cof({letter.upper()}) equals "
@@ -763,7 +781,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                             [f"cof({letter.upper()}) = det·{letter.upper()}^(-T) = `{show(cof.applyfunc(sp.factor).tolist())}`",
                              f"engine − printed over Q(r): {'0' if same else show((engine - cof).applyfunc(sp.factor).tolist())}; "
                              f"integer multiples at {len(rates)} values of r: "
-                             f"{sum(k is not None for k in scaled)} positive"]))
+                             f"{sum(k is not None for k in scaled)} positive"], obligations=grounds))
     cones = printed_cones(reduction_cones, A, B, C)
     checks.append(Check("the next collision depends on the contact and the plane only: on each of the six cones of "
                         "states, whatever the radial part of the velocity, the particles collide next at the map's "

@@ -114,9 +114,10 @@ def product_fact(holds: bool, factors: list, rhs, entry: int | None = None) -> l
     return obligations.take([i]) if i else []
 
 
-def identity_modulo_facts(modulo, *triples) -> list[str]:
-    """:func:`identity_facts` modulo a polynomial monic in λ (cp)."""
-    return fact_ids(*[lambda h=h, a=a, b=b: facts.identity(h, a, b, modulo) for h, a, b in triples])
+def identity_modulo_facts(modulo, *triples, var=None) -> list[str]:
+    """:func:`identity_facts` modulo a polynomial monic in λ (cp), or in ``var`` (r − r₀: the
+    identity at r = r₀)."""
+    return fact_ids(*[lambda h=h, a=a, b=b: facts.identity(h, a, b, modulo, var) for h, a, b in triples])
 
 
 def identity_facts(*triples) -> list[str]:
