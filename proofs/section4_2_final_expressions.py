@@ -119,7 +119,7 @@ def contact_frame(contact: str, p0, q0) -> Check:
     i = INDEX[contact]
     res = T.equal(sp.Matrix([p0.dot(p0), q0.dot(q0), p0.dot(q0), q0[i], p0[i]]), sp.Matrix([1, 1, 0, sφ, 0]))
     return result_check(f"contact {contact}: |p(0)| = |q(0)| = 1, p(0)·q(0) = 0, p_{i + 1}(0) = 0, "
-                        "q_{i + 1}(0) = sin φ > 0", res)
+                        f"q_{i + 1}(0) = sin φ > 0", res)
 
 
 def next_gap(contact: str, p0, q0, H: T.Signs) -> tuple[int | None, list[str], list[dict]]:
