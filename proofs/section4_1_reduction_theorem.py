@@ -41,7 +41,6 @@ from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
-from certify.obligations import facts_of
 from certify.run import (
     ERRATUM,
     MISPRINT,
@@ -54,6 +53,7 @@ from certify.run import (
     concluded,
     determinant_fact,
     fact_ids,
+    facts_of,
     identity,
     identity_facts,
     identity_modulo_facts,

@@ -18,17 +18,18 @@ from certify.dynamics import INDEX, LETTERS
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
-from certify.obligations import captured, facts_of
 from certify.run import (
     ERRATUM,
     MISPRINT,
     PASS,
     Check,
+    captured,
     certificate,
     combined,
     conclude,
     concluded,
     fact_ids,
+    facts_of,
     identity,
     identity_facts,
     kept_facts,

@@ -18,12 +18,12 @@ from certify.algebra import trig as T
 from certify.dynamics import INDEX, LETTERS
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
-from certify.obligations import captured
 from certify.run import (
     ERRATUM,
     FALSE_STATEMENT,
     PASS,
     Check,
+    captured,
     certificate,
     combined,
     conclude,
