@@ -198,3 +198,17 @@ def gathered():
     finally:
         if rec is not None:
             ids.extend(i for i in rec.pending if i not in before)
+
+
+@contextmanager
+def captured():
+    """The obligations (as data) emitted while the block runs, in order, repeats included:
+    the facts of a computation, kept with its result (a lemma of a shared quantity, a sign
+    read as a tuple) so that each check that reads the result records them again
+    (``certify.run.kept_facts``)."""
+    got: list = []
+    _CAPTURES.append(got)
+    try:
+        yield got
+    finally:
+        _CAPTURES.remove(got)

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from certify.algebra import Q, lam, r, show, statements
+from certify.algebra import Q, facts, lam, r, show, statements
 from certify.algebra import trig as T
 from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.dynamics import cones as RC
@@ -51,13 +51,19 @@ from certify.run import (
     combined,
     conclude,
     concluded,
+    determinant_fact,
+    fact_ids,
+    facts_of,
     identity,
     identity_facts,
+    identity_modulo_facts,
+    kept_facts,
     overridden,
     quantity,
     replaced,
     result_check,
     reworded,
+    take,
     unread,
 )
 from proofs.section2_model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
@@ -293,8 +299,7 @@ def same_factors(statement: str, calls: list[list[tuple]], members: list[int], p
     vs = [calls[m][0][position] for m in members if len(calls[m]) == 1]
     if len(vs) != len(members):
         return Check(statement, False, ["a member is not a single product"])
-    parts = [T.equal(vs[0], v) for v in vs[1:]]
-    return Check(statement, all(parts), [e for p_ in parts for e in p_.evidence])
+    return combined(statement, [T.equal(vs[0], v) for v in vs[1:]])
 
 
 def hit_point(p0, q0, k: int):
@@ -321,10 +326,12 @@ def tangent_bases(p0_a, e_x, e_theta_a, limit_0, limit_pi2, q_a_sum, q_a, p0_b, 
               identity("l. 545: det(e_x, p(0), e_θ) = +1 for every θ (direct)", frame.det(), 1)]
     for angle, text in (("0", limit_0), ("π/2", limit_pi2)):
         L = T.parse(text)
-        same = (frame.xreplace(T.ANGLE[angle]) - L).is_zero_matrix
+        at = frame.xreplace(T.ANGLE[angle])
+        same, det = (at - L).is_zero_matrix, L.det()
         checks.append(Check(f"l. 545: at θ = {angle} the basis is the printed {T.show(L.tolist())}, det = +1",
-                            same and L.det() == 1, [f"(e_x, p(0), e_θ) at θ = {angle}: "
-                                                    f"`{T.show(frame.xreplace(T.ANGLE[angle]).tolist())}`, det {L.det()}"]))
+                            same and det == 1, [f"(e_x, p(0), e_θ) at θ = {angle}: "
+                                                f"`{T.show(at.tolist())}`, det {det}"],
+                            obligations=identity_facts((same, at, L)) + determinant_fact(det == 1, L, 1)))
     checks.append(identity("l. 614: cos φ e_θ + sin φ e_x + λ e_r is the printed vector q(0) (e_r = p(0))",
                            T.parse(q_a_sum, eθ=eta, ex=ex, er=pa), vec(q_a)))
     frame_b = sp.Matrix.hstack(etb, ey, pb).T
@@ -346,8 +353,7 @@ TAN = sθ / cθ
 def solves(name: str, members: list, p0, q, k: int, lines: str) -> Check:
     """Every printed form of a time solves p_k(0) + t q_k(0) = 0."""
     parts = [T.is_zero((p0 + m * q)[k]) for m in members]
-    return Check(f"l. {lines}: both printed forms of {name} solve p_{k + 1}(0) + t q_{k + 1}(0) = 0",
-                 all(parts), [e for p_ in parts for e in p_.evidence])
+    return combined(f"l. {lines}: both printed forms of {name} solve p_{k + 1}(0) + t q_{k + 1}(0) = 0", parts)
 
 
 def order_claim(ti, tj, li: str, lj: str, cos_phi: int, expected: int) -> T.Result:
@@ -446,8 +452,15 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
             return Check(f"l. 628 corrected: the stated correction {' → '.join(ORDER_CORRECTION)} applies to the "
                          f"printed `{order}`", False)
         holds = bool(known) and statements.relation(text, {"t_c": T_C, "t_b": T_B}).holds(known)
-        return Check(f"{label}: cos φ > 0, t_b > 0, t_c > 0 ⇒ {text}", holds and ok_pt, R["order+"].evidence + (
-            [] if holds else [f"false whenever its hypotheses hold, and they do hold: {pt_ev}"]))
+        # the implication rests on the certified sign of t_c - t_b; refuting it needs the hypotheses to hold
+        # somewhere, shown at a rational point: an evaluation the obligation language does not have
+        point = [] if holds else fact_ids(lambda: {"kind": "unsupported", "reason": (
+            "the hypotheses hold at a rational point (cos φ > 0, t_b, t_c > 0 there): the obligation language "
+            "has no evaluation at a point")})
+        return Check(f"{label}: cos φ > 0, t_b > 0, t_c > 0 ⇒ {text}", holds, R["order+"].evidence + (
+            [] if holds else [f"false whenever its hypotheses hold, and they do hold: {pt_ev}" if ok_pt else
+                              f"false whenever its hypotheses hold; NO witness that they hold: {pt_ev}"]),
+            obligations=take(facts_of(R["order+"])) + point)
     as_printed = order_check("l. 628", order)
     corrected_order = order_check("l. 628 corrected", statements.corrected(order, *ORDER_CORRECTION))
     return concluded(common + [as_printed] + conclusion + bc, common + [corrected_order] + conclusion + bc,
@@ -681,13 +694,20 @@ def printed_cones(cones: dict, A: str, B: str, C: str) -> dict:
     return cones if all(K[L] == SECTION2_K[L] for L in LETTERS) else RC.steps(K)
 
 
+def cone_facts(cones, motion: bool = False) -> list[str]:
+    """The facts of the step lemmas on ``cones`` (and of the particle lemmas with ``motion``),
+    kept by certify.dynamics.cones, recorded for the check that reads them; the ids."""
+    return kept_facts(RC.facts(cones, motion))
+
+
 def lemma_check(s: RC.Step) -> Check:
     """The step lemma on one cone as one check; its parts as evidence (✓/✗)."""
     nxt = (f"the next collision is {s.following}; the next state lies in a cone of {s.following}, with "
            f"cos φ' {RC.SIGN[s.cos_next]}") if s.following else "no next collision proven"
     ev = [f"{'✓' if c.holds else '✗'} {c.statement}" for c in s.checks]
     ev += [e for c in s.checks if not c.holds for e in c.evidence]
-    return Check(f"step lemma on the cone {s.label} (every state there, exact): {nxt}", s.holds, ev)
+    return Check(f"step lemma on the cone {s.label} (every state there, exact): {nxt}", s.holds, ev,
+                 obligations=cone_facts([s]))
 
 
 def supporting(text: str) -> str:
@@ -730,12 +750,29 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
     checks, rates = [], sorted({d.r for d in section4_data} | {Q(1, 3)})
     for letter, text in zip(LETTERS, (A, B, C)):
         K, j = matrix(text), INDEX[letter]
-        fixed = all((K * sp.eye(3).col(m) - sp.eye(3).col(m)).applyfunc(sp.expand) == sp.zeros(3, 1)
-                    for m in range(3) if m != j)
+        kept = [(K * sp.eye(3).col(m) - sp.eye(3).col(m)).applyfunc(sp.expand) == sp.zeros(3, 1)
+                for m in range(3) if m != j]
+        fixed = all(kept)
         cof = K.adjugate().T                     # cof(K)(a ∧ b) = Ka ∧ Kb for every K
+        det = sp.expand(K.det())
+        adjugate = (K.T * cof - det * sp.eye(3)).applyfunc(sp.expand).is_zero_matrix     # K^T cof(K) = det(K) I
         engine = sp.Matrix.hstack(*(sp.Matrix(col) for col in R.cofactor_columns(letter, r)))
-        same = all(sp.cancel(e) == 0 for e in engine - cof)                 # as matrices over Q(r)
-        scaled = [multiple(R.cofactor(letter, r0), cof.subs(r, sp.Rational(int(r0.p), int(r0.q)))) for r0 in rates]
+        equal = all(sp.cancel(e) == 0 for e in engine - cof)                           # as matrices over Q(r)
+        same = adjugate and equal
+        values = [sp.Rational(int(r0.p), int(r0.q)) for r0 in rates]
+        integer = [R.cofactor(letter, r0) for r0 in rates]
+        scaled = [multiple(N_, cof.subs(r, v)) for N_, v in zip(integer, values)]
+        # for the kernel: K fixes e_m (m ≠ j); cof is K's cofactor matrix (K^T cof = det K · I, det K given) and the
+        # engine's; at each r₀ the integer matrix is k·cof(r₀) (an identity modulo r − r₀) with k > 0
+        grounds = identity_facts(*[(ok, [K, sp.eye(3).col(m)], sp.eye(3).col(m))
+                                   for ok, m in zip(kept, [m for m in range(3) if m != j])],
+                                 (adjugate, [K.T, cof], det * sp.eye(3)), (equal, engine, cof))
+        grounds += determinant_fact(True, K, det)
+        for N_, v, k in zip(integer, values, scaled):
+            if k is not None:
+                grounds += identity_modulo_facts(r - v, (True, sp.Matrix([[int(z) for z in row] for row in N_]), k * cof),
+                                                 var=r)
+                grounds += fact_ids(lambda k=k: facts.compare(1, k, 0))
         checks.append(Check(f"{letter.upper()} fixes {{x_{j + 1} = 0}} pointwise, so the plane after a collision "
                             f"{letter} is {letter.upper()}·P, with normal cof({letter.upper()}) n; the projective map "
                             f"moves normals by this cof({letter.upper()}): the engine's cof({letter.upper()}) equals "
@@ -744,7 +781,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                             [f"cof({letter.upper()}) = det·{letter.upper()}^(-T) = `{show(cof.applyfunc(sp.factor).tolist())}`",
                              f"engine − printed over Q(r): {'0' if same else show((engine - cof).applyfunc(sp.factor).tolist())}; "
                              f"integer multiples at {len(rates)} values of r: "
-                             f"{sum(k is not None for k in scaled)} positive"]))
+                             f"{sum(k is not None for k in scaled)} positive"], obligations=grounds))
     cones = printed_cones(reduction_cones, A, B, C)
     checks.append(Check("the next collision depends on the contact and the plane only: on each of the six cones of "
                         "states, whatever the radial part of the velocity, the particles collide next at the map's "
@@ -752,7 +789,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                         "lemmas with the printed A, B, C); by induction, two trajectories on one plane have the same "
                         "collision types while both last", RC.dynamics_is_proven(cones),
                         [f"{'✓' if c.motion.holds else '✗'} {c.label}: next {c.following}"
-                         for c in cones.values()]))
+                         for c in cones.values()], obligations=cone_facts(cones.values(), motion=True)))
     compared = same = 0
     for d in section4_data:
         k = d.realised
@@ -836,14 +873,15 @@ def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduct
     closed = RC.map_is_proven(cones)
     checks.append(Check(f"every orbit of the reduction off the corners has {reduction}: the six cones hold every "
                         "state off the corners, and each step maps a cone into a cone of the next contact, or onto a "
-                        "corner (n'_j = 0)", closed and claim.infinite))
+                        "corner (n'_j = 0)", closed and claim.infinite, obligations=cone_facts(cones.values())))
     checks += [check_of(c.motion) for c in cones.values()]
     prefix = RC.dynamics_is_proven(cones)
     runs = [(run, d) for d in section4_data for run in d.runs]
     separated = sum(run.stop == "free" for run, d in runs)
     checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence (for every datum, by "
                         "induction on the collisions)", prefix and (extent == "prefix" or separated == 0),
-                        [f"{separated} exact runs end because the particles separate while the reduction goes on"]))
+                        [f"{separated} exact runs end because the particles separate while the reduction goes on"],
+                        obligations=cone_facts(cones.values(), motion=True)))
     lengths = [len(o.word) for o in reduction_scan]
     realise = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)
     evidence = [supporting(f"{len(lengths)} exact orbits from random planes meet no corner in {sum(lengths)} "

@@ -23,16 +23,33 @@ from certify.run import (
     MISPRINT,
     PASS,
     Check,
+    captured,
     certificate,
     combined,
     conclude,
     concluded,
+    fact_ids,
+    facts_of,
     identity,
+    identity_facts,
+    kept_facts,
     overridden,
     replaced,
     result_check,
+    take,
 )
-from proofs.section4_1_reduction_theorem import PAIR, SECTION2, UNIT, cθ, cφ, hit_point, supporting, sφ, vec
+from proofs.section4_1_reduction_theorem import (
+    PAIR,
+    SECTION2,
+    UNIT,
+    cone_facts,
+    cθ,
+    cφ,
+    hit_point,
+    supporting,
+    sφ,
+    vec,
+)
 
 # ================================================================ as printed (l. 877-987)
 # One misprint, false in S8.1 (the formula) and S8.2 (the reduction it gives): counted once.
@@ -102,21 +119,23 @@ def contact_frame(contact: str, p0, q0) -> Check:
     """p(0), q(0) unit and orthogonal, q_i(0) = sin φ > 0 for the gap i in contact."""
     i = INDEX[contact]
     res = T.equal(sp.Matrix([p0.dot(p0), q0.dot(q0), p0.dot(q0), q0[i], p0[i]]), sp.Matrix([1, 1, 0, sφ, 0]))
-    return Check(f"contact {contact}: |p(0)| = |q(0)| = 1, p(0)·q(0) = 0, p_{i + 1}(0) = 0, q_{i + 1}(0) = sin φ > 0",
-                 res.holds, res.evidence)
+    return result_check(f"contact {contact}: |p(0)| = |q(0)| = 1, p(0)·q(0) = 0, p_{i + 1}(0) = 0, "
+                        f"q_{i + 1}(0) = sin φ > 0", res)
 
 
-def next_gap(contact: str, p0, q0, H: T.Signs) -> tuple[int | None, list[str]]:
+def next_gap(contact: str, p0, q0, H: T.Signs) -> tuple[int | None, list[str], list[dict]]:
     """The one other gap k that closes on the ray p(0) + t q(0) (p_k(0) > 0, q_k(0) < 0)
-    while the third one opens (q_l(0) > 0), all signs read from the factors under H."""
+    while the third one opens (q_l(0) > 0), all signs read from the factors under H; the
+    evidence, and the facts (signs) it was decided by, for :func:`certify.run.kept_facts`."""
     others = [j for j in range(3) if j != INDEX[contact]]
-    sp_ = {j: T.sign(p0[j], H)[0] for j in others}
-    sq = {j: T.sign(q0[j], H)[0] for j in others}
+    with captured() as got:
+        sp_ = {j: T.sign(p0[j], H)[0] for j in others}
+        sq = {j: T.sign(q0[j], H)[0] for j in others}
     ev = [f"gap {j + 1}: p = `{T.show(p0[j])}` {'> 0' if sp_[j] == 1 else '?'}, "
           f"q = `{T.show(q0[j])}` {'> 0' if sq[j] == 1 else '< 0' if sq[j] == -1 else '?'}" for j in others]
     closing = [j for j in others if sq[j] == -1 and sp_[j] == 1]
     ok = len(closing) == 1 and all(sq[j] == 1 for j in others if j not in closing)
-    return (closing[0] if ok else None), ev
+    return (closing[0] if ok else None), ev, list(got)
 
 
 def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
@@ -124,9 +143,10 @@ def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
     contact, cos_phi = CASE_KEYS[key]
     H, label = T.hypotheses(cos_phi), f"contact {contact}, {RANGE[cos_phi]}"
     pair, letter, V_text, R_text = (x.strip() for x in spec.split("|"))
-    k, ev = next_gap(contact, p0, q0, H)
+    k, ev, signs = next_gap(contact, p0, q0, H)
     first = Check(f"{label}: the next collision is the printed {pair} with matrix {letter}: the only gap the ray "
-                  "p(0) + t q(0) closes", k is not None and PAIR.get(pair) == LETTERS[k] and letter == LETTERS[k].upper(), ev)
+                  "p(0) + t q(0) closes", k is not None and PAIR.get(pair) == LETTERS[k] and letter == LETTERS[k].upper(),
+                  ev, obligations=kept_facts(signs))
     if k is None:
         return [first]
     V, R = vec(V_text), T.parse(R_text)
@@ -178,18 +198,23 @@ def engine_is_printed(printed: dict) -> list[Check]:
     the same p(0), q(0), next pair and p(t1), as polynomials in cos, sin of θ, φ."""
     args = (T.cθ, T.sθ, T.cφ, T.sφ)
     checks = []
+
+    def same(text, engine):        # (verdict, printed, engine's), as the check compared them
+        v, e = T.vector(text), sp.Matrix(engine)
+        return (v - e).applyfunc(sp.expand) == sp.zeros(3, 1), v, e
     for c in LETTERS:
-        ok = (T.vector(printed[f"p0_{c}"]) == sp.Matrix(R.P0[c](*args[:2])) and
-              (T.vector(printed[f"q0_{c}"]) - sp.Matrix(R.Q0[c](*args))).applyfunc(sp.expand) == sp.zeros(3, 1))
+        compared = [same(printed[f"p0_{c}"], R.P0[c](*args[:2])), same(printed[f"q0_{c}"], R.Q0[c](*args))]
+        ok = all(x[0] for x in compared)
         for key, (c2, s) in CASE_KEYS.items():
             if c2 != c:
                 continue
             pair, _K, vec, _radicand = (x.strip() for x in printed[key].split("|"))
             j, p1 = R.CASES[(c, s)]
-            ok = ok and PAIR.get(pair) == j and \
-                (T.vector(vec) - sp.Matrix(p1(*args))).applyfunc(sp.expand) == sp.zeros(3, 1)
+            compared.append(same(vec, p1(*args)))
+            ok = ok and PAIR.get(pair) == j and compared[-1][0]
         checks.append(Check(f"contact {c}: the map steps with the printed p(0), q(0), next pair and p(t1)", ok,
-                            [f"`{printed[k]}`" for k in (f"p0_{c}", f"q0_{c}", f"{c}_pos", f"{c}_neg")]))
+                            [f"`{printed[k]}`" for k in (f"p0_{c}", f"q0_{c}", f"{c}_pos", f"{c}_neg")],
+                            obligations=identity_facts(*compared)))
     return checks
 
 
@@ -258,7 +283,7 @@ def trigonometric_map_agrees_with_dynamics(section4_data, reduction_cones, **pri
     checks += [case_is_the_map(key, printed[key], *frames[c]) for key, (c, _s) in CASE_KEYS.items()]
     checks.append(Check("the particles follow the projective map: on each of the six cones of states they collide "
                         "next at its contact, or never, and then span its plane (step and particle lemmas, S11)",
-                        RC.dynamics_is_proven(reduction_cones)))
+                        RC.dynamics_is_proven(reduction_cones), obligations=cone_facts(reduction_cones.values(), True)))
     compared = agree = undecided = 0
     if all(c.holds for c in checks[:3]):
         for d in section4_data:
@@ -396,16 +421,19 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
     on_b, on_c = trilinear_on_cone(to_b, a_b), trilinear_on_cone(to_c, a_c)
     relabelled = [trilinear_on_cone(None, st) for st in cones.values()]
     premise = "; with the step and particle lemmas on the six cones (S11)"
+
+    def grounds(*results) -> list[str]:      # the lemmas on the cones, and the results read on them
+        return cone_facts(cones.values(), motion=True) + take(facts_of(*results))
     printed = [Check(f"u(k) = p(k) ∧ q(k) = αρ n satisfies the orientation e_t · u(k) > 0 (t = {orientation}) on every "
                      "cone of states", lemmas and all(orient), [e for o in orient for e in o.evidence[:1]]),
                Check(f"contact a, next b: `{to_b}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
-                     lemmas and a_b.following == "b" and on_b.holds, on_b.evidence),
+                     lemmas and a_b.following == "b" and on_b.holds, on_b.evidence, obligations=grounds(on_b)),
                Check(f"contact a, next c: `{to_c}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
                      lemmas and a_c.following == "c" and on_c.holds,
-                     on_c.evidence + ([] if on_c.holds else [not_normal_at(to_c, a_c)[1]])),
+                     on_c.evidence + ([] if on_c.holds else [not_normal_at(to_c, a_c)[1]]), obligations=grounds(on_c)),
                Check(f"every contact: the relabelled formula [u ∧ e_j] ∧ [K_j(u ∧ [e_i ∧ u])] ∝ p(1) ∧ q(1), "
                      f"positively, for every state{premise}", lemmas and all(relabelled),
-                     [e for x in relabelled for e in x.evidence[:1]])]
+                     [e for x in relabelled for e in x.evidence[:1]], obligations=grounds(*relabelled))]
     corrected = []
     fixed = statements.corrected(to_c, *TRILINEAR_C_CORRECTION)     # the correction stated once, for S8.1 too
     if not printed[2].holds and fixed:
@@ -415,7 +443,10 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
                      Check(f"contact a, next c, with p(1) ∝ u(0) ∧ e_z (as in l. 962): `{fixed}` ∝ p(1) ∧ q(1), "
                            f"positively, for every state{premise}; the printed one is refuted at an exact state",
                            lemmas and a_c.following == "c" and on_fixed.holds and refuted,
-                           on_fixed.evidence + [witness], corrects=printed[2]), printed[3]]
+                           on_fixed.evidence + [witness], corrects=printed[2],
+                           obligations=grounds(on_fixed) + fact_ids(lambda: {"kind": "unsupported", "reason": (
+                               "the printed formula refuted at an exact state of the cone: the obligation language "
+                               "has no evaluation at a point")})), printed[3]]
     evidence = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
     return conclude(printed, corrected, evidence=evidence, kind=MISPRINT, misprint=E_Y_FOR_E_Z)
 

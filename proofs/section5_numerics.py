@@ -34,6 +34,7 @@ from certify.run import (
     committed_windows,
     conclude,
     explanations,
+    fact_ids,
     island_figure,
     load_findings,
     observe,
@@ -559,18 +560,19 @@ def island_quasi_periodic(island_theorem, suggests, tori, above):
     checks = [
         Check(f"l. 95: \"{suggests}\": proved for the island, for every r in ]3−2√2, 1[ (r a symbol, every step "
               "an identity in Q(r) or a sign certified on the interval)",
-              "quasi-periodic" in suggests and T.quasi_periodic, steps),
+              "quasi-periodic" in suggests and T.quasi_periodic, steps, obligations=island_unsupported(True)),
         Check(f"l. 1210: \"{tori}\": the island is foliated by the invariant ellipses Q = c, c < c_max, on which "
               "the orbits are dense (closed invariant curves of the b-to-b section)",
               "invariant tori" in tori and T.quasi_periodic,
-              ["A(r) is a rotation by θ, cos θ = −(1−r)²/(4r), in coordinates where Q is Euclidean"]),
+              ["A(r) is a rotation by θ, cos θ = −(1−r)²/(4r), in coordinates where Q is Euclidean"],
+              obligations=island_unsupported(True)),
         Check(f"l. 1223-1226: the quasi-periodic regimes lie above r = {above}: the island exists exactly for r "
               "above it (A(r) is elliptic iff r² − 6r + 1 < 0)", lower == island.LOWER_END,
               [f"the printed {above} = {lower}; A(r) elliptic on ]{island.LOWER_END}, 1["]),
         Check("at the rationals r = " + ", ".join(at) + " of Figure 6 the theorem is proved step by step, θ/2π "
               "irrational (e^{iθ} is no root of unity)", all(t.quasi_periodic for t, _, _ in at.values()),
               [f"r = {r}: c_max = {t.c_max}, ρ = {rho}, island share in [{lo}, {hi}]"
-               for r, (t, rho, (lo, hi)) in at.items()]),
+               for r, (t, rho, (lo, hi)) in at.items()], obligations=island_unsupported(False)),
     ]
     checks += window_resonance_explanation()
     note = ("The island exists on the whole of ]3−2√2, 1[, not only below r ≃ 0.19166 (l. 1226), where the paper "
@@ -579,6 +581,19 @@ def island_quasi_periodic(island_theorem, suggests, tori, above):
             "b-section at r = 3/10 with the island's boundary ellipse over the tool's eight orbits, and the rotation "
             "number against r with its resonances over the attracting windows of the census.")
     return conclude(checks, note=note, figures=[island_figure(Q(3, 10))])
+
+
+def island_unsupported(symbolic: bool) -> list[str]:
+    """What the island theorem's verdict rests on that the obligation language lacks (the
+    steps are computed in certify.patterns.island_theorem, none of them recorded): named, for
+    the sub-claims of N7.1 that rest on it."""
+    signs = ("the signs of rational functions of r on ]3−2√2, 1[ (an interval with an algebraic end: `signed` and "
+             "`root_count` know ]0, 1[ and rational ends)" if symbolic else
+             "the content of the integer polynomial 2pq(ν² − tr A ν + det A) and its leading coefficient (step f)")
+    return fact_ids(lambda: {"kind": "unsupported", "reason": (
+        "the island theorem (certify.patterns.island_theorem): step (b), the branch region, is a Fourier–Motzkin "
+        f"elimination over the leaves of a sign branching of linear forms in (u, v), and the steps rest on {signs}; "
+        "neither is in the obligation language (the identities of steps a, c, d, e alone do not give the verdict)")})
 
 
 def window_resonance_explanation() -> list:

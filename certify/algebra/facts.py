@@ -63,9 +63,10 @@ def generators(*exprs) -> tuple[list, list]:
     return gens, circles + [["cos" + a, "sin" + a] for a in sorted(named)]
 
 
-def identity(answer: bool, lhs, rhs, modulo=None) -> dict:
+def identity(answer: bool, lhs, rhs, modulo=None, var=None) -> dict:
     """lhs ≡ rhs (scalars or vectors) on the circles cos² + sin² = 1 (and modulo ``modulo``, a
-    polynomial monic in λ, when given), with the engine's answer."""
+    polynomial monic in λ, or in ``var`` when given: r − r₀ for the value at r₀), with the
+    engine's answer."""
     if isinstance(lhs, sp.MatrixBase) or isinstance(rhs, sp.MatrixBase):
         left, right = list(lhs), list(rhs)
         if lhs.shape != rhs.shape:
@@ -79,7 +80,7 @@ def identity(answer: bool, lhs, rhs, modulo=None) -> dict:
            "rhs": [rational_function(e, gens) for e in right], "holds": bool(answer)}
     if modulo is not None:
         from .poly import lam
-        out["modulo"] = {"var": str(lam), "poly": rational_function(modulo, gens)["num"]}
+        out["modulo"] = {"var": str(lam if var is None else var), "poly": rational_function(modulo, gens)["num"]}
     return out
 
 

@@ -284,7 +284,9 @@ def parallel(v, w) -> Result:
     """v ∧ w ≡ 0 (v, w colinear wherever both are non-zero)."""
     c = v.cross(w)
     res = equal(c, sp.zeros(3, 1))
-    return Result(res.holds, [f"v ∧ w = {short(c.applyfunc(sp.cancel))}"] + res.evidence)
+    out = Result(res.holds, [f"v ∧ w = {short(c.applyfunc(sp.cancel))}"] + res.evidence)
+    out.facts = getattr(res, "facts", None)      # the identity v ∧ w ≡ 0 it was decided by
+    return out
 
 
 # ---------------------------------------------------------------- signs by inspection

@@ -24,10 +24,12 @@ radial part of their velocity, collide next at j or never, and then span the sam
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import sympy as sp
 
+from certify import obligations
 from certify.algebra import trig as T
 from certify.algebra.poly import r
 
@@ -48,23 +50,31 @@ class Lemma:
     statement: str
     holds: bool
     evidence: list[str] = field(default_factory=list)
+    facts: list[dict] = field(default_factory=list)    # the obligations its verdict was computed from, as data
 
 
 def name(k: int) -> str:
     return f"n_{k + 1}"
 
 
-def combined(statement: str, parts: list[T.Result]) -> Lemma:
-    return Lemma(statement, all(parts), [e for p in parts for e in p.evidence])
+def combined(statement: str, build: Callable[[], list[T.Result]]) -> Lemma:
+    """A lemma that holds when every part holds; the parts are computed by ``build``, and the
+    facts they record are kept with the lemma (:func:`certify.obligations.captured`)."""
+    with obligations.captured() as got:
+        parts = build()
+    return Lemma(statement, all(parts), [e for p in parts for e in p.evidence], list(got))
 
 
-def labelled(statement: str, parts: list[tuple[str, T.Result]]) -> Lemma:
-    """A check made of named parts; each part's evidence under its name."""
+def labelled(statement: str, build: Callable[[], list[tuple[str, T.Result]]]) -> Lemma:
+    """A check made of named parts (computed by ``build``, their facts kept); each part's
+    evidence under its name."""
+    with obligations.captured() as got:
+        parts = build()
     ev = []
     for what, res in parts:
         ev.append(f"{'✓' if res.holds else '✗'} {what}: " + (res.evidence[0] if res.evidence else ""))
         ev += res.evidence[1:]
-    return Lemma(statement, all(res.holds for _, res in parts), ev)
+    return Lemma(statement, all(res.holds for _, res in parts), ev, list(got))
 
 
 def base(contact: str) -> T.Signs:
@@ -94,7 +104,14 @@ class Cone:
 def cone(contact: str) -> Cone:
     """With n_t > 0, the sign of n_m for which p = ±(n ∧ e_i) has both free components of
     one strict sign (the plane meets the open face), proven for one sign and refuted for
-    the other."""
+    the other; with the facts the lemma was computed from."""
+    with obligations.captured() as got:
+        C = _cone(contact)
+    C.check.facts = list(got)
+    return C
+
+
+def _cone(contact: str) -> Cone:
     i, t, m = INDEX[contact], R.ORIENTATION[contact], third(contact)
     ne = N.cross(UNIT[i])
     # the free components of n ∧ e_i are ±n_m and ±n_t: n_t = 0 puts p on an edge's end (a
@@ -170,16 +187,17 @@ def step(contact: str, sign: int, K: dict) -> Step:
     others = [k for k in range(3) if k != i]
     out.checks += [
         combined(f"{lab}: the position p = `{T.show(p)}` lies in the open face: p_{i + 1} = 0, the others > 0",
-                 [T.is_zero(p[i])] + [T.has_sign(p[k], 1, H) for k in others]),
+                 lambda: [T.is_zero(p[i])] + [T.has_sign(p[k], 1, H) for k in others]),
         combined(f"{lab}: the tangent w = |n|² e_{i + 1} − n_{i + 1} n is ⊥ n and ⊥ p, and w_{i + 1} > 0 "
                  "(the pair in contact separates)",
-                 [T.is_zero(w.dot(N)), T.is_zero(w.dot(p)), T.has_sign(w[i], 1, H)])]
-    signs = {k: T.sign(w[k], H) for k in others}
+                 lambda: [T.is_zero(w.dot(N)), T.is_zero(w.dot(p)), T.has_sign(w[i], 1, H)])]
+    with obligations.captured() as got:
+        signs = {k: T.sign(w[k], H) for k in others}
     closing = [k for k in others if signs[k][0] == -1]
     opening = [k for k in others if signs[k][0] == 1]
     one = len(closing) == 1 and len(opening) == 1
     out.checks.append(Lemma(f"{lab}: exactly one other gap closes (w_j < 0 < w_k)", one,
-                            [f"w_{k + 1} = `{T.show(w[k])}`: " + "; ".join(signs[k][1]) for k in others]))
+                            [f"w_{k + 1} = `{T.show(w[k])}`: " + "; ".join(signs[k][1]) for k in others], list(got)))
     if not one:
         return out
     j, k = closing[0], opening[0]
@@ -195,20 +213,24 @@ def step(contact: str, sign: int, K: dict) -> Step:
     out.checks += [
         combined(f"{lab}: gap {j + 1} ({LETTERS[j]}) closes at t = p_{j + 1}/(−w_{j + 1}) > 0, at p' = p + t w with "
                  f"p'_{j + 1} = 0 and p'_{i + 1}, p'_{k + 1} > 0: the open face {LETTERS[j]}",
-                 [T.has_sign(t, 1, H), T.is_zero(p1[j]), T.has_sign(p1[i], 1, H), T.has_sign(p1[k], 1, H)]),
+                 lambda: [T.has_sign(t, 1, H), T.is_zero(p1[j]), T.has_sign(p1[i], 1, H), T.has_sign(p1[k], 1, H)]),
         combined(f"{lab}: after it the velocity is {LETTERS[j].upper()} w, whose component {j + 1} "
-                 f"(−r w_{j + 1}) is > 0: the pair {LETTERS[j]} separates (sin φ' > 0)", [T.has_sign(q1[j], 1, H)]),
+                 f"(−r w_{j + 1}) is > 0: the pair {LETTERS[j]} separates (sin φ' > 0)",
+                 lambda: [T.has_sign(q1[j], 1, H)]),
         combined(f"{lab}: {LETTERS[j].upper()} p' = p' and p ∧ w = ρ n with ρ = `{T.show(rho)}` > 0, so the next "
                  f"plane has the normal p' ∧ {LETTERS[j].upper()} w = ρ cof({LETTERS[j].upper()}) n: "
                  "the projective map",
-                 [T.equal(Kj * p1, p1), T.equal(p.cross(w), rho * N), T.has_sign(rho, 1, H),
-                  T.equal(u, rho * cof * N)]),
+                 lambda: [T.equal(Kj * p1, p1), T.equal(p.cross(w), rho * N), T.has_sign(rho, 1, H),
+                          T.equal(u, rho * cof * N)]),
         Cj.check,
         combined(f"{lab}: the next state lies in a cone of the contact {LETTERS[j]}: n' = p' ∧ {LETTERS[j].upper()} w "
                  f"has n'_{tj + 1} n'_{mj + 1} {SIGN[Cj.sigma]}",
-                 [T.has_sign(u[tj] * u[mj], Cj.sigma, H)] if Cj.sigma is not None else [T.Result(False)])]
+                 lambda: [T.has_sign(u[tj] * u[mj], Cj.sigma, H)] if Cj.sigma is not None else [T.Result(False)])]
     out.following, out.p, out.w, out.t, out.p1, out.normal = LETTERS[j], p, w, t, p1, u
-    out.cos_next = T.sign(u[j], H)[0]
+    with obligations.captured() as got:
+        out.cos_next, why = T.sign(u[j], H)
+    if out.cos_next is not None:      # a sign the step lemma states (cos φ' = n'_j/|n'|)
+        out.checks.append(Lemma(f"{lab}: cos φ' = n'_{j + 1}/|n'| {SIGN[out.cos_next]}", True, why, list(got)))
     return out
 
 
@@ -231,31 +253,39 @@ def physical(s: Step, K: dict) -> Lemma:
     q = alpha * s.w + lam * s.p
     after = Kj * q
     ratio = U * s.t / TAU
-    parts = [(f"x_{i + 1} = s w_{i + 1} > 0: the gap {s.contact} stays open", T.has_sign(x[i], 1, H0)),
-             (f"x_{k + 1} > 0 while u > 0", T.has_sign(x[k], 1, H)),
-             (f"at u = 0, x_{k + 1} = s w_{k + 1} > 0 and x_{j + 1} = s w_{j + 1} < 0: the gap {s.following} has "
-              "closed before", T.Result(T.has_sign(x[k].subs(U, 0), 1, H0).holds and
-                                        T.has_sign(x[j].subs(U, 0), -1, H0).holds,
-                                        T.has_sign(x[j].subs(U, 0), -1, H0).evidence)),
-             (f"with α = t u/τ, λ = (u − 1)/τ the gap {s.following} closes at τ: p_{j + 1} + τ q_{j + 1} = 0",
-              T.equal((s.p + TAU * q)[j], 0)),
-             ("there x = u p + τα w = u p'", T.equal(U * s.p + TAU * alpha * s.w, U * s.p1)),
-             (f"({Lj} q)_{j + 1} > 0: the pair {s.following} separates", T.has_sign(after[j], 1, H)),
-             (f"x ∧ {Lj} q = (u t/τ) n' with u t/τ > 0: the reduction's next plane, same orientation",
-              T.Result(T.has_sign(ratio, 1, H).holds and
-                       T.equal((U * s.p1).cross(after), ratio * s.normal).holds,
-                       T.equal((U * s.p1).cross(after), ratio * s.normal).evidence))]
+    def parts() -> list[tuple[str, T.Result]]:
+        below = T.has_sign(x[j].subs(U, 0), -1, H0)
+        spans = T.equal((U * s.p1).cross(after), ratio * s.normal)
+        return [(f"x_{i + 1} = s w_{i + 1} > 0: the gap {s.contact} stays open", T.has_sign(x[i], 1, H0)),
+                (f"x_{k + 1} > 0 while u > 0", T.has_sign(x[k], 1, H)),
+                (f"at u = 0, x_{k + 1} = s w_{k + 1} > 0 and x_{j + 1} = s w_{j + 1} < 0: the gap {s.following} has "
+                 "closed before", T.Result(T.has_sign(x[k].subs(U, 0), 1, H0).holds and below.holds, below.evidence)),
+                (f"with α = t u/τ, λ = (u − 1)/τ the gap {s.following} closes at τ: p_{j + 1} + τ q_{j + 1} = 0",
+                 T.equal((s.p + TAU * q)[j], 0)),
+                ("there x = u p + τα w = u p'", T.equal(U * s.p + TAU * alpha * s.w, U * s.p1)),
+                (f"({Lj} q)_{j + 1} > 0: the pair {s.following} separates", T.has_sign(after[j], 1, H)),
+                (f"x ∧ {Lj} q = (u t/τ) n' with u t/τ > 0: the reduction's next plane, same orientation",
+                 T.Result(T.has_sign(ratio, 1, H).holds and spans.holds, spans.evidence))]
     return labelled(f"{s.label}: the particles (velocity q = α w + λ p, α > 0, any radial part λ; gaps x = u p + s w "
                     f"at the time τ, u = 1 + τλ, s = τα) collide next at {s.following} or never, and then span the "
                     "reduction's next plane", parts)
 
 
 def steps(K: dict) -> dict[tuple[str, int], Step]:
-    """The step lemma on the six cones, each with the particles' motion (:func:`physical`)."""
-    out = {(c, s): step(c, s, K) for c in LETTERS for s in (1, -1)}
-    for st in out.values():
-        st.motion = physical(st, K) if st.holds else Lemma(f"{st.label}: the step lemma fails", False)
+    """The step lemma on the six cones, each with the particles' motion (:func:`physical`);
+    each lemma keeps the facts it was computed from (recorded here apart from any
+    certificate's: a certificate that reads a lemma records them, :func:`facts`)."""
+    with obligations.recording("cones"):
+        out = {(c, s): step(c, s, K) for c in LETTERS for s in (1, -1)}
+        for st in out.values():
+            st.motion = physical(st, K) if st.holds else Lemma(f"{st.label}: the step lemma fails", False)
     return out
+
+
+def facts(cones, motion: bool = False) -> list[dict]:
+    """The facts of the step lemmas on ``cones`` (Steps), and of the particle lemmas with ``motion``."""
+    out = [ob for st in cones for c in st.checks for ob in c.facts]
+    return out + ([ob for st in cones if st.motion for ob in st.motion.facts] if motion else [])
 
 
 def map_is_proven(cones: dict) -> bool:

@@ -13,7 +13,7 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.identify`, :mod:`.section5_orbits`: the periodic words of simulated orbits, certified;
   the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
-from certify.obligations import gathered, replaying, take
+from certify.obligations import captured, facts_of, gathered, replaying, take
 
 from . import checks, files, plots, progress, report, runner, saving
 from .census_report import committed_windows
@@ -29,6 +29,7 @@ from .checks import (
                      identity,
                      identity_facts,
                      identity_modulo_facts,
+                     kept_facts,
                      product_fact,
                      result_check,
                      resultant_fact,
@@ -75,9 +76,9 @@ from .section5_orbits import explanations
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "product_fact", "identity_facts", "fact_ids", "resultant_fact", "identity_modulo_facts",
-    "determinant_fact",
+    "determinant_fact", "kept_facts",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
-    "replaying", "gathered", "take",
+    "replaying", "gathered", "take", "captured", "facts_of",
     "load_findings", "committed_windows", "island_figure", "explanations", "save_figure",
     "omega_figure", "section5_figure", "section5_name", "sign_chart",
     "spectrum_figures",

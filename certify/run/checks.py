@@ -61,8 +61,10 @@ def fact_ids(*builders) -> list[str]:
 
 
 def check_of(lemma) -> Check:
-    """A lemma proven in a lower layer (statement, holds, evidence), as a check."""
-    return Check(lemma.statement, lemma.holds, list(lemma.evidence))
+    """A lemma proven in a lower layer (statement, holds, evidence), as a check (with the facts
+    it kept, if any: ``lemma.facts``, obligations as data)."""
+    kept = getattr(lemma, "facts", None)
+    return Check(lemma.statement, lemma.holds, list(lemma.evidence), obligations=kept_facts(kept) if kept else None)
 
 
 def result_check(statement: str, res: T.Result) -> Check:
@@ -112,9 +114,10 @@ def product_fact(holds: bool, factors: list, rhs, entry: int | None = None) -> l
     return obligations.take([i]) if i else []
 
 
-def identity_modulo_facts(modulo, *triples) -> list[str]:
-    """:func:`identity_facts` modulo a polynomial monic in λ (cp)."""
-    return fact_ids(*[lambda h=h, a=a, b=b: facts.identity(h, a, b, modulo) for h, a, b in triples])
+def identity_modulo_facts(modulo, *triples, var=None) -> list[str]:
+    """:func:`identity_facts` modulo a polynomial monic in λ (cp), or in ``var`` (r − r₀: the
+    identity at r = r₀)."""
+    return fact_ids(*[lambda h=h, a=a, b=b: facts.identity(h, a, b, modulo, var) for h, a, b in triples])
 
 
 def identity_facts(*triples) -> list[str]:
@@ -140,6 +143,17 @@ def resultant_fact(holds: bool, f, g, poly, relation: str) -> list[str]:
     """Record that Res_λ(f, g) (g "d/dλ": ∂f/∂λ) is "proportional" to, or has the "same_factors"
     as, the polynomial ``poly`` in r (the engine's verdict ``holds``); the ids."""
     return fact_ids(lambda: facts.resultant(holds, f, g, poly, relation))
+
+
+def kept_facts(data: list) -> list[str]:
+    """Record again, for a check, the obligations ``data`` (dicts) that a computation kept
+    (:func:`certify.obligations.captured`: a lemma of a shared quantity, computed once); the ids."""
+    ids = []
+    for ob in data:
+        i = obligations.emit(ob)
+        if i and i not in ids:
+            ids.append(i)
+    return obligations.take(ids)
 
 
 def determinant_fact(holds: bool, matrix, rhs) -> list[str]:
