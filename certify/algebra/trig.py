@@ -474,7 +474,7 @@ def _proportional_facts(res, v, w, H, ratio=None) -> list:
     raise ValueError("no ratio with a proved sign")
 
 
-@fact(_has_sign_facts)
+@fact(_has_sign_facts, facts.sign_piece)
 def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     """target has the strict sign ``expected`` under H.  With a ``witness`` W (written in
     the named quantities of H): target ≡ W after unfolding their definitions, and W has

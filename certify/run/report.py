@@ -543,6 +543,8 @@ def _subclaim(role: str, check) -> dict:
             "obligations": sorted(set(check.obligations or []), key=lambda i: int(i.rsplit(":", 1)[1]))}
     if not data["obligations"]:
         data["uncovered"] = UNCOVERED
+    if getattr(check, "derivation", None):
+        data["derivation"] = check.derivation
     return data
 
 
