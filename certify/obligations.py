@@ -243,7 +243,8 @@ def silent(func: Callable) -> Callable:
 @contextmanager
 def gathered():
     """The ids recorded while the block runs (a list filled in place), for a check made
-    later: ``Check(..., obligations=take(ids))``."""
+    later: ``Check(..., obligations=take(ids))``; they leave the pending ones (a check that
+    does not name its facts does not get them)."""
     ids: list[str] = []
     rec = _ACTIVE[-1] if _ACTIVE else None
     before = list(rec.pending) if rec is not None else []
@@ -255,6 +256,7 @@ def gathered():
         if rec is not None:
             rec.gathering -= 1
             ids.extend(i for i in rec.pending if i not in before)
+            rec.pending = [i for i in rec.pending if i in before]
 
 
 # ---------------------------------------------------------------- derivations (docs/verify.md)
