@@ -318,3 +318,9 @@ def sign_piece(answer, emitted, target, expected, H, witness=None) -> dict:
     facts = [{"id": i, "holds": True} if ob["kind"] == "identity" else {"id": i, "sign": int(expected)}
              for i, ob in emitted]
     return {"rule": "expect", "facts": facts}
+
+
+def proportional_piece(answer, emitted, v, w, H, ratio=None) -> dict:
+    """trig.positively_proportional: the ratio k has the sign 1, and v ≡ k w (an identity)."""
+    return {"rule": "expect", "facts": [{"id": i, "holds": True} if ob["kind"] == "identity" else {"id": i, "sign": 1}
+                                        for i, ob in emitted]}

@@ -491,7 +491,7 @@ def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     return Result(s == expected, ev + [f"under {H.describe()}: {word}"] + why)
 
 
-@fact(_proportional_facts)
+@fact(_proportional_facts, facts.proportional_piece)
 def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
     """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
     component i where that quotient has a sign by inspection; then v − k w ≡ 0."""
