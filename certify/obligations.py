@@ -33,6 +33,7 @@ class Recording:
         self.taken: set[str] = set()      # ids a check has taken from the pending ones
         self.pieces: list[tuple[dict, bool]] = []    # derivation pieces not yet taken (reserved?)
         self.gathering = 0                # inside gathered(): pieces are reserved for its check
+        self.held: set[str] = set()       # ids gathered() kept for a check that names them
         self.by_id: dict[str, dict] = {}
 
     def add(self, ob: dict) -> str:
@@ -103,10 +104,26 @@ def emit(ob: dict) -> str | None:
 
 
 def derive(piece: dict | None, carried: bool = False) -> None:
-    """Record a piece of derivation (docs/verify.md) for the check being made (``carried``, or
-    made inside gathered(): only for a check that names its facts)."""
+    """Record a piece of derivation (docs/verify.md) for the check being made (``carried``, made
+    inside gathered() or naming a fact it gathered: only for a check that names its facts)."""
     if piece is not None and _ACTIVE and not _ACTIVE[-1].depth:
-        _ACTIVE[-1].pieces.append((piece, carried or _ACTIVE[-1].gathering > 0))
+        rec = _ACTIVE[-1]
+        rec.pieces.append((piece, carried or rec.gathering > 0 or bool(rec.held.intersection(_refs(piece)))))
+
+
+def signs_within(found, allowed) -> None:
+    """Record that the signs ``found`` (a set a sign table returned, carrying its one query) are
+    asserted to lie in ``allowed``: the piece is a cover of the query's interval."""
+    ids = getattr(found, "facts", None)
+    rec = _ACTIVE[-1] if _ACTIVE else None
+    if rec is None or not ids or len(ids) != 1 or rec.by_id.get(ids[0], {}).get("kind") != "signs_query":
+        return
+    q = rec.by_id[ids[0]]
+    ends = rec.by_id[q["table"]]["ends"]
+    if not q["include_points"] and len(ends) > 2:     # the signs at the cell ends inside are not read
+        return
+    derive({"rule": "cover", "lo": ends[0] if q["lo"] is None else q["lo"], "hi": ends[-1] if q["hi"] is None
+            else q["hi"], "branch": q["branch"], "signs": sorted(allowed, key=str), "queries": list(ids)})
 
 
 def asserting(make: Callable) -> Callable:
@@ -257,6 +274,7 @@ def gathered():
             rec.gathering -= 1
             ids.extend(i for i in rec.pending if i not in before)
             rec.pending = [i for i in rec.pending if i in before]
+            rec.held.update(ids)
 
 
 # ---------------------------------------------------------------- derivations (docs/verify.md)

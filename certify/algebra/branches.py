@@ -303,6 +303,11 @@ class Cell:
         return Lazy(len(lams), lambda k: self._sign_of(self.sample, lams[k]))
 
 
+class Found(set):
+    """The signs a table gives on a branch over an interval: a set, carrying the facts it was
+    read from (certify.obligations.fact sets ``facts``)."""
+
+
 class SignTable:
     """The certified sign of a condition on each branch, cell by cell, and at each
     critical value (a list of signs, UNDECIDED where undecided; None where the branches
@@ -336,7 +341,7 @@ class SignTable:
                 if lo < rc < hi:
                     pt = self.points[k]
                     out.add(UNDECIDED if pt is None else pt[branch] if branch < len(pt) else NO_BRANCH)
-        return out
+        return Found(out)
 
     @asserting(facts.holds_piece)
     def holds(self, branch: int, sign: int, lo=None, hi=None) -> bool:
