@@ -1,8 +1,9 @@
 """Derivations (certify_kernel.derive, docs/verify.md): the run writes, per sub-claim, how its
 obligations give it; the kernel checks each and that the sub-claim's verdict is what it
 concludes; every tampering of a derivation is rejected with a message naming the sub-claim or
-the obligation.  The file is made from T5 (a root count), T14 (sign changes on branches: covers),
-T17 (signs on a branch over an interval) and S2 (signs by inspection)."""
+the obligation.  The file is made from T5 (a root count), T8 (a printed relation read on sign tables), T14
+(sign changes on branches: covers), T17 (signs on a branch over an interval) and S2 (signs by
+inspection)."""
 from __future__ import annotations
 
 import copy
@@ -14,7 +15,7 @@ import certify_kernel
 from certify import obligations
 from certify.run import Check, report, runner
 
-IDS = ["T5", "T14", "T17", "S2"]
+IDS = ["T5", "T8", "T14", "T17", "S2"]
 
 
 @pytest.fixture(scope="module")
@@ -61,6 +62,16 @@ def test_the_run_writes_derivations_that_the_kernel_checks(data):
     s, left, right = change(c)
     assert left["rule"] == right["rule"] == "cover" and left["signs"] == [-right["signs"][0]]
     assert json.dumps(left["hi"]) == json.dumps(right["lo"])       # the two cells meet at r1
+
+
+def test_a_printed_relation_on_sign_tables_is_a_cover_of_its_range(data):
+    """T8, "all three eigenvalues: λ > 0 for 0 < r < 5-2√6": a cover of ]0, 5-2√6[ with the sign
+    +1 on each branch; the facts it reads belong to it, not to the check made before it."""
+    c = cert(data, "T8")
+    s = sub(c, "all three eigenvalues")
+    covers = s["derivation"]["of"]
+    assert [(d["rule"], d["branch"], d["lo"], d["signs"]) for d in covers] == [("cover", k, "0", [1]) for k in range(3)]
+    assert not set(s["obligations"]) & set(sub(c, "three distinct real eigenvalues")["obligations"])
 
 
 def test_a_removed_cell_of_a_cover_is_rejected(data):
