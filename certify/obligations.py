@@ -327,13 +327,13 @@ def expected(ob: dict) -> dict | None:
 
 def derivation(ids: list[str], verdict: bool, free: bool) -> tuple[list[str], dict | None]:
     """The check's obligations and its derivation: the pieces made since the previous check
-    (``free``: every one not reserved by gathered(), their ids added; else those whose ids are
-    among ``ids``), with the expected value of every other fact; None when a fact has no form
+    whose ids are among ``ids``, and with ``free`` every one not reserved (their ids added),
+    with the expected value of every other fact; None when a fact has no form
     (unsupported), or when the derivation does not conclude ``verdict``."""
     if not _ACTIVE:
         return ids, None
     rec = _ACTIVE[-1]
-    mine = [(p, r) for p, r in rec.pieces if (free and not r) or (not free and set(_refs(p)) <= set(ids))]
+    mine = [(p, r) for p, r in rec.pieces if (free and not r) or set(_refs(p)) <= set(ids)]
     rec.pieces = [x for x in rec.pieces if x not in mine]
     pieces = [p for p, _ in mine]
     used = {i for p in pieces for i in _refs(p)}
