@@ -31,7 +31,7 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
-from certify.obligations import fact, silent
+from certify.obligations import asserting, fact, silent
 
 from . import facts
 from . import numberfield as nf
@@ -303,6 +303,11 @@ class Cell:
         return Lazy(len(lams), lambda k: self._sign_of(self.sample, lams[k]))
 
 
+class Found(set):
+    """The signs a table gives on a branch over an interval: a set, carrying the facts it was
+    read from (certify.obligations.fact sets ``facts``)."""
+
+
 class SignTable:
     """The certified sign of a condition on each branch, cell by cell, and at each
     critical value (a list of signs, UNDECIDED where undecided; None where the branches
@@ -336,11 +341,18 @@ class SignTable:
                 if lo < rc < hi:
                     pt = self.points[k]
                     out.add(UNDECIDED if pt is None else pt[branch] if branch < len(pt) else NO_BRANCH)
-        return out
+        return Found(out)
 
+    @asserting(facts.holds_piece)
     def holds(self, branch: int, sign: int, lo=None, hi=None) -> bool:
         """g has the sign ``sign`` at every point of branch ``branch`` over ]lo, hi[."""
         return self.signs(branch, lo, hi) == {sign}
+
+    @asserting(facts.within_piece)
+    def within(self, branch: int, allowed, lo=None, hi=None) -> bool:
+        """g takes only signs in ``allowed`` (1, -1, 0, None: not real, NO_BRANCH) at the points
+        of branch ``branch`` over ]lo, hi[, interior critical values included."""
+        return self.signs(branch, lo, hi) <= set(allowed)
 
     def _around(self, point):
         """The cells on either side of the critical value ``point`` (None where there is none)."""
@@ -348,7 +360,7 @@ class SignTable:
         right = [c for c in self.cells if c.lo == point]
         return (left[0], right[0]) if left and right else None
 
-    @fact(facts.sign_around)
+    @fact(facts.sign_around, facts.changes_piece)
     def changes_at(self, branch: int, point) -> bool:
         """The sign on ``branch`` differs on the two cells adjacent to ``point``."""
         cells = self._around(point)
@@ -356,7 +368,7 @@ class SignTable:
             return False
         return cells[0].signs[branch] * cells[1].signs[branch] < 0
 
-    @fact(facts.sign_around)
+    @fact(facts.sign_around, facts.keeps_piece)
     def keeps_sign_at(self, branch: int, point) -> bool:
         """No sign change on ``branch`` across ``point`` (true where the branch ends there)."""
         cells = self._around(point)

@@ -261,3 +261,67 @@ def determinant_identity(holds: bool, matrix, rhs) -> dict:
             "lhs": {"det": {"rows": matrix.shape[0], "cols": matrix.shape[1],
                             "entries": [rational_function(e, gens) for e in matrix]}},
             "rhs": [rational_function(rhs, gens)], "holds": bool(holds)}
+
+
+# ---------------------------------------------------------------- pieces of derivation (docs/verify.md)
+# What a deciding function's answer asserts, naming the facts it emitted ((id, obligation) pairs):
+# certify.obligations.fact(build, piece) and asserting(piece) record them for the check being made.
+
+def cover(signs, emitted, lo, hi, branch) -> dict | None:
+    """The condition takes only ``signs`` on ``branch`` over ]lo, hi[, by the queries (and the
+    signs at points) emitted, in order; None when something else was emitted."""
+    queries = [i for i, ob in emitted if ob.get("kind") == "signs_query"]
+    points = [i for i, ob in emitted if ob.get("kind") == "branch_signs_at"]
+    if not queries or len(queries) + len(points) != len(emitted):
+        return None
+    return {"rule": "cover", "lo": number_of(lo), "hi": number_of(hi), "branch": int(branch),
+            "signs": sorted({_sign_code(s) for s in signs}, key=str), "queries": queries,
+            **({"points": points} if points else {})}
+
+
+def holds_piece(answer, emitted, table, branch, sign, lo=None, hi=None) -> dict | None:
+    """SignTable.holds: g has the sign ``sign`` on ``branch`` over ]lo, hi[."""
+    return within_piece(answer, emitted, table, branch, [sign], lo, hi)
+
+
+def within_piece(answer, emitted, table, branch, allowed, lo=None, hi=None) -> dict | None:
+    """SignTable.within: g takes only signs in ``allowed`` on ``branch`` over ]lo, hi[."""
+    return cover(allowed, emitted, table.interval[0] if lo is None else lo,
+                 table.interval[1] if hi is None else hi, branch)
+
+
+def _cell_cover(emitted_one, sign) -> dict:
+    i, ob = emitted_one
+    return {"rule": "cover", "lo": ob["lo"], "hi": ob["hi"], "branch": ob["branch"], "signs": [sign], "queries": [i]}
+
+
+def changes_piece(answer, emitted, table, branch, point) -> dict | None:
+    """SignTable.changes_at: the sign is s on the cell left of ``point`` and −s on the right one."""
+    left, right = emitted
+    s = left[1]["result"][0]
+    if s not in (1, -1):
+        return None
+    return {"rule": "all", "of": [_cell_cover(left, s), _cell_cover(right, -s)]}
+
+
+def keeps_piece(answer, emitted, table, branch, point) -> dict | None:
+    """SignTable.keeps_sign_at: the branch is absent on one side of ``point``, or has the same
+    sign s on both."""
+    left, right = emitted
+    s, t = left[1]["result"][0], right[1]["result"][0]
+    if "missing" in (s, t):
+        return _cell_cover(left if s == "missing" else right, "missing")
+    return {"rule": "all", "of": [_cell_cover(left, s), _cell_cover(right, s)]}
+
+
+def sign_piece(answer, emitted, target, expected, H, witness=None) -> dict:
+    """trig.has_sign: target ≡ the witness (an identity), and the witness has the sign ``expected``."""
+    facts = [{"id": i, "holds": True} if ob["kind"] == "identity" else {"id": i, "sign": int(expected)}
+             for i, ob in emitted]
+    return {"rule": "expect", "facts": facts}
+
+
+def proportional_piece(answer, emitted, v, w, H, ratio=None) -> dict:
+    """trig.positively_proportional: the ratio k has the sign 1, and v ≡ k w (an identity)."""
+    return {"rule": "expect", "facts": [{"id": i, "holds": True} if ob["kind"] == "identity" else {"id": i, "sign": 1}
+                                        for i, ob in emitted]}

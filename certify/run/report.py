@@ -394,10 +394,14 @@ def _errata(results) -> str:
 def kernel_coverage(outcome) -> tuple[int, int]:
     """(k, n): of the n sub-claims of a certificate that count, the k that name obligations of
     the independent kernel's language only (certificates.json; ``certify verify`` re-checks them)."""
+    return len(_kernel_subclaims(outcome)), sum(1 for c in list(outcome.printed) + list(outcome.corrected) if c.counts)
+
+
+def _kernel_subclaims(outcome) -> list:
+    """The sub-claims that count and name obligations of the kernel's language only."""
     kinds = {ob["id"]: ob.get("kind") for ob in getattr(outcome, "obligations", [])}
     subs = [c for c in list(outcome.printed) + list(outcome.corrected) if c.counts]
-    return sum(1 for c in subs if c.obligations and all(kinds.get(i) not in (None, "unsupported")
-                                                          for i in c.obligations)), len(subs)
+    return [c for c in subs if c.obligations and all(kinds.get(i) not in (None, "unsupported") for i in c.obligations)]
 
 
 def kernel_cell(outcome) -> str:
@@ -414,10 +418,12 @@ def kernel_line(results) -> str:
     k = sum(kernel_coverage(o)[0] for o in proved)
     n = sum(kernel_coverage(o)[1] for o in proved)
     whole = sum(1 for o in proved if kernel_coverage(o)[1] and kernel_coverage(o)[0] == kernel_coverage(o)[1])
+    derived = sum(1 for o in proved for c in _kernel_subclaims(o) if c.derivation)
     pct = f" ({100 * k / n:.0f}%)" if n else ""
     return (f"Independent kernel (`python -m certify verify`, docs/verify.md): {k} of the {n} sub-claims of "
             f"the PASS and ERRATUM certificates{pct} rest on obligations in reports/certificates.json that "
-            f"it re-checks with the Python standard library alone; {whole} of {len(proved)} certificates "
+            f"it re-checks with the Python standard library alone, {derived} of them with a derivation (how "
+            f"the obligations give the statement) that it checks too; {whole} of {len(proved)} certificates "
             "are independently verified whole.")
 
 
@@ -543,6 +549,8 @@ def _subclaim(role: str, check) -> dict:
             "obligations": sorted(set(check.obligations or []), key=lambda i: int(i.rsplit(":", 1)[1]))}
     if not data["obligations"]:
         data["uncovered"] = UNCOVERED
+    if getattr(check, "derivation", None):
+        data["derivation"] = check.derivation
     return data
 
 

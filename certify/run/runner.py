@@ -39,7 +39,10 @@ class Check:
     replaces; the Errata show the two side by side.  ``counts``: False for a
     consistency check, one that holds by construction of the engine (the word it
     applied is the word it was given, cp(0) = -det M for every matrix): it must hold,
-    or the certificate FAILs, but it is not evidence for the printed claim."""
+    or the certificate FAILs, but it is not evidence for the printed claim.
+    ``obligations``: the ids of the facts its verdict was computed from; ``derivation``: how
+    they give it, for the independent kernel (docs/verify.md; made from the pieces the deciding
+    functions recorded, :func:`certify.obligations.derivation`)."""
 
     statement: str
     holds: bool
@@ -47,10 +50,16 @@ class Check:
     corrects: Check | str | None = None
     counts: bool = True
     obligations: list[str] | None = None
+    derivation: dict | None = None
 
     def __post_init__(self):
-        if self.obligations is None:     # the facts its verdict was computed from (obligations.take)
-            self.obligations = obligations.take(obligations.facts_of(self.holds))
+        free = self.obligations is None
+        if free:                         # the facts its verdict was computed from (obligations.take)
+            own = obligations.facts_of(self.holds)
+            free = not own
+            self.obligations = obligations.take(own)
+        if self.derivation is None:
+            self.obligations, self.derivation = obligations.derivation(self.obligations, holds(self), free)
 
 
 # The kinds of erratum, the first column a referee reads in the Errata.
@@ -380,7 +389,7 @@ def plain(outcome: Outcome) -> Outcome:
     bools.  That is all a report needs, and it crosses process boundaries (pickle)."""
     def check(c: Check) -> Check:
         return Check(str(c.statement), holds(c), [str(e) for e in c.evidence],
-                     corrected_statement(c) or None, c.counts, list(c.obligations or []))
+                     corrected_statement(c) or None, c.counts, list(c.obligations or []), c.derivation)
     return Outcome(outcome.status, [check(c) for c in outcome.printed],
                    [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
                    [str(f) for f in outcome.figures], str(outcome.note), str(outcome.kind),
