@@ -89,6 +89,7 @@ from certify.run import (
     replaced,
     resultant_fact,
     reworded,
+    sign_intervals_facts,
     take,
     unread,
 )
@@ -240,12 +241,17 @@ def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
     cp(0) = -det M, which holds for every 3×3 matrix: evidence, not a check."""
     det = sp.factor(M.det())
     T = spectrum.table("λ", lam, 0, 1)
-    sign = statements.statement(det_sign, {"det M": DET}, subject="det M")
-    signs = sign.range.signs(sign_intervals(to_fmpq_poly(det), 0, 1))
+    as_printed = sp.expand(det - parse(det_text)) == 0
+    printed_det = determinant_fact(as_printed, M, parse(det_text))
+    ivs = sign_intervals(to_fmpq_poly(det), 0, 1)
+    with gathered(again=True) as reading:        # the printed sign and range, read on the sign intervals
+        sign = statements.statement(det_sign, {"det M": DET}, subject="det M")
+        signs = sign.range.signs(ivs)
+    signs_det = take(reading) + determinant_fact(True, M, det) + sign_intervals_facts(to_fmpq_poly(det), ivs)
     return conclude([
-        Check(f"det M = {det_text}", sp.expand(det - parse(det_text)) == 0, [f"det M = `{show(det)}`"]),
+        Check(f"det M = {det_text}", as_printed, [f"det M = `{show(det)}`"], obligations=printed_det),
         Check(f"det M is {det_sign} on ]0,1[", sign.relation.holds_on(DET, signs),
-              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"]),
+              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"], obligations=signs_det),
         Check("the largest real eigenvalue is positive on all of ]0,1[", T.holds(UPPER, 1),
               ["sign of λ per branch:\n\n" + T.markdown()]),
     ], evidence=["the paper's argument (l. 340): cp(0) = det(-M) = -det M < 0 and cp(λ) → +∞ as λ → +∞, so cp has a "
@@ -280,17 +286,19 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     constant = ratio is not None and ratio.is_number and ratio != 0
     condition = statements.relation(three_real_when, {"Δ_cp": DELTA})
     three_real = {s: constant and int(sp.sign(ratio)) * s > 0 for s in (-1, 0, 1)}   # Disc = ratio·Δ_cp > 0
+    flint_same = same_up_to_constant(discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))
     return conclude([
         Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
               obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional")),
-        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0),
+        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0,
+              obligations=identity_facts((sp.expand(card - delta) == 0, card, delta))),
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
               [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
                + ", ".join("yes" if three_real[s] else "no" for s in (-1, 0, 1)) + "; the printed condition "
                + ", ".join("yes" if condition.holds({DELTA: s}) else "no" for s in (-1, 0, 1))]),
-        Check("flint's Disc_λ(cp) has the same factors", same_up_to_constant(
-            discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))),
+        Check("flint's Disc_λ(cp) has the same factors", flint_same,
+              obligations=resultant_fact(flint_same, cp, "d/dλ", delta, "proportional")),
     ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "
             "'discriminant', l. 341). Disc_λ(cp) = −108·Δ_cp.")
 
@@ -450,8 +458,11 @@ def position_map_of_ababcb(candidate, a, b, c, d):
               for i in range(4) for j in range(i + 1, 4)}
     word = "".join(s.letter for s in steps)
     factor = sp.cancel(P[2].as_expr() / comp[2].as_expr())
+    p1 = steps[-1].position(0)
+    scaled = (sp.expand(P[2].as_expr() - factor * comp[2].as_expr()) == 0, P[2].as_expr(), factor * comp[2].as_expr())
     return conclude([
-        Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", steps[-1].position(0) != 0),
+        Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", p1 != 0,
+              obligations=identity_facts((p1 == 0, p1.as_expr(), sp.Integer(0)))),
         Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
@@ -463,7 +474,7 @@ def position_map_of_ababcb(candidate, a, b, c, d):
                                                       for i in range(4) for j in range(i + 1, 4)])),
         Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
               "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
-              bool(factor.is_Rational) and factor < 0),
+              bool(factor.is_Rational) and factor < 0 and scaled[0], obligations=identity_facts(scaled)),
     ], evidence=[f"by construction: the engine applies the collisions {', '.join(word)} (q(t_k) = K q(t_(k-1))) and "
                  "defines t6 by p_2(t6) = 0, so p(t6) = (p_1(t6), 0, p_3(t6)) = p_1(t6)(1, 0, f(x))"])
 
@@ -584,15 +595,22 @@ def sign_of_c(c, below, above):
     quad = parse("r^2 - 10*r + 1")
     ratio = sp.cancel(cr / quad)
     ivs = sign_intervals(to_fmpq_poly(sp.expand(cr)), 0, 1)
-    ratio_pos = not ratio.has(lam) and all(sg > 0 for _a, _b, sg in sign_intervals(to_fmpq_poly(sp.expand(ratio)), 0, 1))
+    signs_c = sign_intervals_facts(to_fmpq_poly(sp.expand(cr)), ivs)     # for the kernel: the signs of c/λ
+    ratio_pos, factored = False, []
+    if not ratio.has(lam) and ratio.is_polynomial(r):
+        ratio_ivs = sign_intervals(to_fmpq_poly(sp.expand(ratio)), 0, 1)
+        ratio_pos = all(sg > 0 for _a, _b, sg in ratio_ivs)
+        factored = identity_facts((sp.expand(parse(c) - lam * quad * ratio) == 0, parse(c), lam * quad * ratio)) + \
+            sign_intervals_facts(to_fmpq_poly(sp.expand(ratio)), ratio_ivs)
 
     def half(text, evidence=()):
-        st = statements.statement(text, {"c": C_SIGN})
-        signs = st.range.signs(ivs)
+        with gathered(again=True) as reading:        # the range read, compared with the ends of the intervals
+            st = statements.statement(text, {"c": C_SIGN})
+            signs = st.range.signs(ivs)
         return Check(text, st.relation.holds_on(C_SIGN, signs), [f"signs of c for {st.range}: {sign_word(signs)}",
-                                                                 *evidence])
+                                                                 *evidence], obligations=take(reading) + signs_c)
     printed = [Check("c/λ = (r^2-10r+1)·(positive on ]0,1[), so sign c = sign(r^2-10r+1) when λ > 0", ratio_pos,
-                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"]),
+                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"], obligations=factored),
                half(below),
                half(above, [f"sign of c/λ on ]{a.short()}, {b_.short()}[: {'+' if sg > 0 else '−'}" for a, b_, sg in ivs])]
     fixed = statements.corrected(above, *T16_CORRECTION)
@@ -762,7 +780,8 @@ def sign_of_u(cp, spectrum, U, quintic, digits, r1, position):
     checks = [Check("the eliminant's factors vanishing in ]0,1[ are r^2-10r+1 and the quintic",
                     wanted >= target and all(not Algebraic.roots(f, 0, 1) for f, _ in E.factors if str(f) not in target),
                     E.evidence()),
-              Check("both routes agree", E.agree),
+              Check("both routes agree", E.agree,
+                    obligations=resultant_fact(E.agree, num, cp, from_flint(E.groebner), "same_factors")),
               count_check("the quintic", roots, nf, 1)]
     if roots:
         checks += [digits_check("its root", roots[0], digits),
