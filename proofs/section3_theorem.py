@@ -92,6 +92,7 @@ from certify.run import (
     sign_intervals_facts,
     take,
     unread,
+    unsupported_fact,
 )
 
 WORD = "ababcb"
@@ -727,8 +728,11 @@ def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
     amd = spectrum.table("a-d", parse(a) - parse(d), 0, 1)
     bc = spectrum.table("bc", parse(b) * parse(c), 0, 1)
     cc = spectrum.table("c", parse(c), 0, 1)
-    away, ev = no_positive_fixed_point(spectrum, fp, xp, xm, MIDDLE, 0, rs, skip=(rr1,))
-    degenerate = all(spectrum.vanishes_at(g, rr1, MIDDLE) for g in (fp.a, fp.b, fp.c, fp.d))
+    with gathered(again=True) as facts_away:
+        away, ev = no_positive_fixed_point(spectrum, fp, xp, xm, MIDDLE, 0, rs, skip=(rr1,))
+    with gathered(again=True) as facts_degenerate:
+        degenerate = all(spectrum.vanishes_at(g, rr1, MIDDLE) for g in (fp.a, fp.b, fp.c, fp.d))
+    take(facts_away + facts_degenerate)         # they belong to the first two checks below
     reasoning = [
         Check("the middle branch exists exactly on ]0, r*[ (and at r*)", all((len(cl.branches) >= 2) == (cl.hi <= rs) for cl in xp.cells)),
         Check("for r < 5-2√6: a-d < 0, bc < 0, c > 0 on the middle branch",
@@ -736,9 +740,10 @@ def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
         Check("for 5-2√6 < r < r*: a-d > 0, bc < 0, c < 0 on the middle branch",
               amd.holds(MIDDLE, 1, rr1, rs) and bc.holds(MIDDLE, -1, rr1, rs) and cc.holds(MIDDLE, -1, rr1, rs)),
     ]
-    return conclude([Check("x₊ and x₋ are never positive on the middle branch wherever f is defined", away, ev),
+    return conclude([Check("x₊ and x₋ are never positive on the middle branch wherever f is defined", away, ev,
+                           obligations=list(facts_away)),
                      Check("at r = 5-2√6 the printed f is undefined on the middle branch: a = b = c = d = 0 exactly",
-                           degenerate)] + reasoning,
+                           degenerate, obligations=list(facts_degenerate))] + reasoning,
                     note="At r = 5-2√6 on the middle branch a, b, c, d (and the numerators and denominators of u, v) "
                          "all vanish: the printed formulas define no datum there, so the claim holds vacuously at that point.")
 
@@ -914,6 +919,18 @@ def modulus_sign_factor(e: sp.Expr) -> int | None:
     return int(sp.sign(ratio)) if ratio.is_number and ratio != 0 else None
 
 
+def modulus_facts(e: sp.Expr) -> list[str]:
+    """For the kernel: the identity :func:`modulus_sign_factor` reads k from, P² - Q² =
+    κ·(a + d)·s with the constant κ it found (nothing when it found none)."""
+    A, B, C, D, s, xp, xm = mobius_symbols()
+    num, den = sp.fraction(sp.cancel(sp.together(e)))
+    ratio = sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+    if not (ratio.is_number and ratio != 0):
+        return []
+    lhs, rhs = num ** 2 - den ** 2, ratio * (A + D) * s
+    return identity_facts((sp.expand(lhs - rhs) == 0, lhs, rhs))
+
+
 def f_prime_at_fixed_point() -> sp.Expr:
     """f'(x₊) = (ad - bc)/(cx₊ + d)² for f(x) = (ax + b)/(cx + d)."""
     A, B, C, D, s, xp, xm = mobius_symbols()
@@ -964,29 +981,39 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
         return all(verdicts.values()), [f"with q = {q_text}, sign(|q| - 1) = {'+' if k > 0 else '−'}sign(a+d): "
                                         + "; ".join(f"{t}: {MARK[v]}" for t, v in verdicts.items())]
     sentence_text = f"x₊ stable iff {stable_when} (l. 495); {upper} on the upper branch and {lower} on the lower, r < 5-2√6 (l. 505)"
-    ok, ev = sentences(q)
+    with gathered(again=True) as facts_printed:
+        ok, ev = sentences(q)
+    facts_printed += modulus_facts(read_q(q)) + modulus_facts(f_prime_at_fixed_point())
     a_d = ["a+d on the branches:\n\n" + apd.markdown(),
            f"Δ = (a-d)² + 4bc > 0 on the upper branch: {MARK[real.holds(UPPER, 1, 0, rr1)]}, on the lower branch: "
            f"{MARK[real.holds(LOWER, 1, 0, rr1)]} (r < 5-2√6), so q is real and √Δ > 0",
            f"for every Möbius map, f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) and |f'(x₊)| - 1 has the sign of "
            f"{'a+d' if k_f == 1 else '-(a+d)'}"]
-    printed = [Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d)]
+    printed = [Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d, obligations=take(facts_printed))]
     if ok:
         return conclude(printed)
     if T24_CORRECTION[0] not in q:
         return conclude(printed + [Check(f"the stated correction {' → '.join(T24_CORRECTION)} applies to the "
                                          f"printed q = {q}", False)])
     q_fixed = q.replace(*T24_CORRECTION)
-    ok_fixed, ev_fixed = sentences(q_fixed)
+    with gathered(again=True) as facts_fixed:
+        ok_fixed, ev_fixed = sentences(q_fixed)
     is_fprime = sp.cancel(read_q(q_fixed) - f_prime_at_fixed_point()) == 0
+    facts_fixed += modulus_facts(read_q(q_fixed)) + modulus_facts(f_prime_at_fixed_point()) + \
+        identity_facts((is_fprime, read_q(q_fixed), f_prime_at_fixed_point()))
+    with gathered(again=True) as facts_upper:
+        upper_repels = k_f == -1 and apd.holds(UPPER, -1)
+    with gathered(again=True) as facts_lower:
+        lower_dominated = k_f == -1 and apd.holds(LOWER, 1) and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)
     corrected = [
         Check(f"l. 493: q = {q_fixed}; with it, {sentence_text}", ok_fixed and is_fprime,
-              ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"], corrects=printed[0]),
-        Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)",
-              k_f == -1 and apd.holds(UPPER, -1)),
+              ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"], corrects=printed[0],
+              obligations=take(facts_fixed)),
+        Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)", upper_repels,
+              obligations=take(facts_upper + modulus_facts(f_prime_at_fixed_point()))),
         Check("and on the lower branch a+d > 0 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: λ is not dominant "
-              "(unstable in the velocities)", k_f == -1 and apd.holds(LOWER, 1)
-              and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)),
+              "(unstable in the velocities)", lower_dominated,
+              obligations=take(facts_lower + modulus_facts(f_prime_at_fixed_point()))),
     ]
     return conclude(printed, corrected, kind=MISPRINT, misprint="l. 493: q displayed as 1/f'(x₊), the fraction inverted",
                     note="One misprint: the q displayed at l. 493, (cx₊+d)/(cx₋+d), is 1/f'(x₊). With q = f'(x₊) = "
@@ -1011,14 +1038,16 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     upper and lower branches below r1, from the sign tables shared with T17-T22.
     Instability as in T24 (corrected reading)."""
     spectrum, rr1 = candidate.spectrum, r1_of(r1)
-    an = Analysis(candidate)
-    reqs, _ = prefix_requirements(WORD, len(WORD), candidate.q0, candidate.steps, candidate.q0_other)
-    for q in reqs:
-        an.impose(q)
-    undecided = [(R, u_) for R in an.regions for u_ in R.undecided]
-    where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
-    exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
-                     and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
+    with gathered(again=True) as analysis:     # the regions: for the first two checks
+        an = Analysis(candidate)
+        reqs, _ = prefix_requirements(WORD, len(WORD), candidate.q0, candidate.steps, candidate.q0_other)
+        for q in reqs:
+            an.impose(q)
+        undecided = [(R, u_) for R in an.regions for u_ in R.undecided]
+        where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
+    with gathered(again=True) as ends:
+        exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
+                         and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
     regions = [f"{BRANCH_NAMES[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
                + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}" if R.dropped else "")
                for R in an.regions]
@@ -1027,22 +1056,29 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     tables = [spectrum.table("u", parse(U), 0, 1)]
     tables += [spectrum.table(name, parse(text).subs(uv), 0, 1) for name, (_k, _i, text) in velocities.items()]
     dist = [spectrum.table(name, parse(text), 0, 1, fp) for name, text in (("p3(t4)", p3t4), ("p1(t5)", p1t5))]
-    printed_ok = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
-                     and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
-                     for k in (UPPER, LOWER))
+    with gathered(again=True) as facts_printed:
+        printed_ok = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
+                         and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
+                         for k in (UPPER, LOWER))
     apd = spectrum.table("a+d", fp.a + fp.d, 0, rr1)
     lam_t = spectrum.table("λ", lam, 0, rr1)
-    unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
+    with gathered(again=True) as facts_unstable:
+        unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
+    facts_unstable += modulus_facts(f_prime_at_fixed_point())      # |f'(x₊)| > 1 iff a+d < 0 (T24)
+    take(analysis + ends + facts_printed + facts_unstable)
     return conclude([
         Check("every cell and critical value of ]0,1[ decided, on every branch, for both fixed points", not undecided,
-              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
+              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided],
+              obligations=list(analysis)),
         Check("the candidate realises ababcb, with every inequality strict, exactly for 0 < r < 5-2√6 on the upper "
               "branch and on the lower branch, and nowhere on the middle branch",
               exactly_below[UPPER] and exactly_below[LOWER] and not where[MIDDLE],
-              ["the inequalities: " + ", ".join(f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs)] + regions),
+              ["the inequalities: " + ", ".join(f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs)] + regions,
+              obligations=analysis + ends),
         Check("with the printed formulas (x = x₊, u, v): x₊ > 0, u > 0, the five velocities < 0 and p3(t4), p1(t5) > 0 "
-              "on the upper and lower branches for r < 5-2√6", printed_ok),
-        Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable),
+              "on the upper and lower branches for r < 5-2√6", printed_ok, obligations=list(facts_printed)),
+        Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable,
+              obligations=list(facts_unstable)),
     ], note="p_1(t_6) > 0 (μ > 0) is needed too and is not in the paper's list (l. 470-486); it holds on the same "
             "region. The computed (a, b, c, d) is the printed one times a negative constant (T10), so the paper's x₊ "
             "is the computed x₋.")
@@ -1070,6 +1106,10 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
 # radii, not on floats), which a wrong formula fails by many orders of magnitude.
 PRINTED_T25_2 = dict(U=U_PRINTED, V=V_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, word="ababcb",
                      r="1/20", periods=20, perturbation="1/10^30")
+SIMULATOR = ("the particle simulator in ball arithmetic (certify.dynamics.simulate, python-flint arb: each collision "
+             "chosen by enclosures of the collision times): the kernel has no interval arithmetic")
+ENCLOSURES = ("ball arithmetic (python-flint arb): the enclosures of the state after k periods and of its "
+              "scaled initial value, from the simulator: the kernel has no interval arithmetic")
 MAX_PERIODS = 200                      # how long a perturbed orbit is followed at most
 TIGHT_BITS = 40                        # "tight": relative radius < 2^-40 (decided exactly)
 
@@ -1219,10 +1259,12 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                           "(f'(x₊) = 1/q)".format(*(z.str(8, radius=False) for z in datum.mobius(256))))
         checks += [
             Check(f"{name} branch: the printed datum repeats {word} for {periods} periods (every collision proven)",
-                  ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else []),
+                  ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else [],
+                  obligations=unsupported_fact(SIMULATOR)),
             Check(f"{name} branch: q(t_{len(word)}k) = λ^k q(0), k = 1..{periods} (the enclosures overlap and have "
-                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok),
-            Check(f"{name} branch: p(t_{len(word)}k) = μ^k p(0), k = 1..{periods} (the same)", p_ok),
+                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok, obligations=unsupported_fact(ENCLOSURES)),
+            Check(f"{name} branch: p(t_{len(word)}k) = μ^k p(0), k = 1..{periods} (the same)", p_ok,
+                  obligations=unsupported_fact(ENCLOSURES)),
         ]
     # instability: upper branch through the positions, lower branch through the velocities
     cases = [("upper", "x + ε", eps, (Q(0), Q(0), Q(0)), MAX_PERIODS),
@@ -1247,7 +1289,8 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                             f"ends with {run.events[first]} instead of {word[first % n]} (proven at {prec} bits)")
         if (name, what) in (("upper", "x + ε"), ("lower", "v + ε")):
             checks.append(Check(f"{name} branch: the datum with {what} (ε = {perturbation}) leaves the pattern "
-                                f"{word} after a bounded number of periods", first is not None))
+                                f"{word} after a bounded number of periods", first is not None,
+                                obligations=unsupported_fact(SIMULATOR)))
     return conclude(checks, evidence=evidence,
                     note="Instability is shown the way the paper argues it: on the upper branch through the positions "
                          "(x perturbed), on the lower branch through the velocities (q perturbed); the other two "
