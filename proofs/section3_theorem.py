@@ -39,6 +39,7 @@ from certify.algebra import (
     ball_value,
     discriminant_lambda,
     eliminate,
+    facts,
     flint_real_roots,
     from_flint,
     lam,
@@ -80,6 +81,7 @@ from certify.run import (
     determinant_fact,
     digits_check,
     eliminant_check,
+    fact_ids,
     gathered,
     identity_facts,
     identity_modulo_facts,
@@ -780,13 +782,18 @@ def sign_of_u(cp, spectrum, U, quintic, digits, r1, position):
     E = eliminate(num, cp)
     wanted = {str(f) for f, _ in E.factors if f.degree() > 1 or f(0) != 0}
     target = {str(f) for f, _ in to_fmpz_poly(parse(f"(r^2-10*r+1)*({quintic})")).factor()[1]}
+    others = [f for f, _ in E.factors if str(f) not in target]
+    both_routes = resultant_fact(E.agree, num, cp, from_flint(E.groebner), "same_factors")
+    # for the kernel: the other factors have no root in ]0, 1[ (Sturm on ]0, 1], and the sign at 1)
+    no_root = fact_ids(*[b for f in others for b in (
+        lambda f=f: facts.root_count(len(Algebraic.roots(f, 0, 1)) + (f(1) == 0), f, 0, 1),
+        lambda f=f: facts.sign_at(int(f(1) > 0) - int(f(1) < 0), f, 1))])
     roots, nf = roots_in_unit_interval(quintic)
     T = spectrum.table("u", parse(U), 0, 1)
     checks = [Check("the eliminant's factors vanishing in ]0,1[ are r^2-10r+1 and the quintic",
-                    wanted >= target and all(not Algebraic.roots(f, 0, 1) for f, _ in E.factors if str(f) not in target),
-                    E.evidence()),
-              Check("both routes agree", E.agree,
-                    obligations=resultant_fact(E.agree, num, cp, from_flint(E.groebner), "same_factors")),
+                    wanted >= target and all(not Algebraic.roots(f, 0, 1) for f in others),
+                    E.evidence(), obligations=both_routes + no_root),
+              Check("both routes agree", E.agree, obligations=both_routes),
               count_check("the quintic", roots, nf, 1)]
     if roots:
         checks += [digits_check("its root", roots[0], digits),
