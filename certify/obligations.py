@@ -258,21 +258,32 @@ def silent(func: Callable) -> Callable:
 
 
 @contextmanager
-def gathered():
+def gathered(again: bool = False):
     """The ids recorded while the block runs (a list filled in place), for a check made
     later: ``Check(..., obligations=take(ids))``; they leave the pending ones (a check that
-    does not name its facts does not get them)."""
+    does not name its facts does not get them); with ``again``, also those of the facts the
+    block records again that an earlier check took (a second reading of one table)."""
     ids: list[str] = []
     rec = _ACTIVE[-1] if _ACTIVE else None
     before = list(rec.pending) if rec is not None else []
+    got: list = []
+    if again:
+        _CAPTURES.append(got)
     if rec is not None:
         rec.gathering += 1
     try:
         yield ids
     finally:
+        if again:
+            _CAPTURES.remove(got)
         if rec is not None:
             rec.gathering -= 1
             ids.extend(i for i in rec.pending if i not in before)
+            for ob in got:
+                if isinstance(ob.get("table"), dict):
+                    ob = {**ob, "table": rec.add(ob["table"])}
+                if rec.add(ob) not in ids:
+                    ids.append(rec.add(ob))
             rec.pending = [i for i in rec.pending if i in before]
             rec.held.update(ids)
 

@@ -13,7 +13,19 @@ import sympy as sp
 from certify.algebra import parse, r, show, statements, to_fmpq
 from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.dynamics import simulate as sim
-from certify.run import PASS, Check, certificate, conclude, identity_facts, overridden, replaced, reworded, unread
+from certify.run import (
+    PASS,
+    Check,
+    certificate,
+    conclude,
+    gathered,
+    identity_facts,
+    overridden,
+    replaced,
+    reworded,
+    take,
+    unread,
+)
 
 A_PRINTED = "[[-r, 0, 0], [(1+r)/2, 1, 0], [0, 0, 1]]"
 B_PRINTED = "[[1, (1+r)/2, 0], [0, -r, 0], [0, (1+r)/2, 1]]"
@@ -26,14 +38,23 @@ def matrix(text: str) -> sp.Matrix:
 
 
 def law_matrix(letter: str) -> sp.Matrix:
+    """The matrix K with q' = K q derived from the collision law itself (:func:`law`)."""
+    return law(letter)[0]
+
+
+def law(letter: str) -> tuple[sp.Matrix, list]:
     """The matrix K with q' = K q derived from the collision law itself: for the pair
-    (i, i+1), v_i' + v_{i+1}' = v_i + v_{i+1} and v_i' - v_{i+1}' = -r(v_i - v_{i+1})."""
+    (i, i+1), v_i' + v_{i+1}' = v_i + v_{i+1} and v_i' - v_{i+1}' = -r(v_i - v_{i+1});
+    with the identities decided on the way (``(holds, lhs, rhs)``, for the kernel): the
+    solved velocities satisfy both equations, and q' = K q with v written through q."""
     v = sp.symbols("v1:5")
     i = INDEX[letter]
     vp = list(v)
     a, b = sp.symbols("a b")
     sol = sp.solve([a + b - (v[i] + v[i + 1]), a - b + r * (v[i] - v[i + 1])], [a, b])
     vp[i], vp[i + 1] = sol[a], sol[b]
+    law_lhs = sp.Matrix([vp[i] + vp[i + 1], vp[i] - vp[i + 1]])
+    law_rhs = sp.Matrix([v[i] + v[i + 1], -r * (v[i] - v[i + 1])])
     qp = sp.Matrix([vp[k + 1] - vp[k] for k in range(3)])
     # express q' in the basis q: v is determined by q up to a common shift
     shift = sp.Symbol("w")
@@ -43,8 +64,11 @@ def law_matrix(letter: str) -> sp.Matrix:
         subs[v[k + 1]] = shift + sum(qs[: k + 1])
     qp = qp.subs(subs).applyfunc(sp.expand)
     K = sp.Matrix(3, 3, lambda row, col: sp.expand(qp[row]).coeff(qs[col]))
-    assert all(sp.expand(qp[row] - sum(K[row, c] * qs[c] for c in range(3))) == 0 for row in range(3))
-    return K.applyfunc(sp.factor)
+    Kq = K * sp.Matrix(qs)
+    decided = [((law_lhs - law_rhs).applyfunc(sp.expand) == sp.zeros(2, 1), law_lhs, law_rhs),
+               ((qp - Kq).applyfunc(sp.expand) == sp.zeros(3, 1), qp, Kq)]
+    assert all(holds for holds, _, _ in decided)
+    return K.applyfunc(sp.factor), decided
 
 
 @certificate("M1", "l. 209-232", "The collision law in relative coordinates gives exactly the matrices A, B, C.",
@@ -55,12 +79,16 @@ def collision_law_gives_A_B_C(A, B, C):
     """Derive q' = K q from momentum conservation and restitution, compare with the print."""
     checks = []
     for letter, text in zip(LETTERS, (A, B, C)):
-        K = law_matrix(letter)
+        K, decided = law(letter)
         diff = (K - matrix(text)).applyfunc(sp.simplify)
+        same = diff == sp.zeros(3, 3)
         checks.append(Check(f"the law for a collision of type {letter} gives the printed {letter.upper()}",
-                            diff == sp.zeros(3, 3), [f"derived: `{show(K.tolist())}`"]))
-    engine = all((law_matrix(k) - collision_matrix(k)).applyfunc(sp.simplify) == sp.zeros(3, 3) for k in LETTERS)
-    checks.append(Check("the engine's collision matrices are the ones the law gives", engine, counts=False))
+                            same, [f"derived: `{show(K.tolist())}`"],
+                            obligations=identity_facts(*decided, (same, K, matrix(text)))))
+    same = [((law_matrix(k) - collision_matrix(k)).applyfunc(sp.simplify) == sp.zeros(3, 3), law_matrix(k),
+             collision_matrix(k)) for k in LETTERS]
+    checks.append(Check("the engine's collision matrices are the ones the law gives", all(h for h, _, _ in same),
+                        counts=False, obligations=identity_facts(*same)))
     return conclude(checks)
 
 
@@ -99,9 +127,10 @@ def collisions_separate(A, B, C, approaching, separating):
     first (approaching, before) gives after the collision a sign allowed by the second.
     Between collisions p is affine in t and a gap closes only at a collision, after
     which it reopens: every gap p_i stays >= 0, so the order of the particles holds."""
-    before, after = (statements.relation(t, {"q_i": Q_I}) for t in (approaching, separating))
-    allowed = [s for s in (-1, 0, 1) if before.holds({Q_I: s})]
-    turns = bool(allowed) and all(after.holds({Q_I: -s}) for s in allowed)
+    with gathered() as reading:        # the signs the printed conditions allow: for every check
+        before, after = (statements.relation(t, {"q_i": Q_I}) for t in (approaching, separating))
+        allowed = [s for s in (-1, 0, 1) if before.holds({Q_I: s})]
+        turns = bool(allowed) and all(after.holds({Q_I: -s}) for s in allowed)
     checks = []
     for letter, text in zip(LETTERS, (A, B, C)):
         K, i = matrix(text), INDEX[letter]
@@ -112,7 +141,8 @@ def collisions_separate(A, B, C, approaching, separating):
                             [f"row {i + 1} of {letter.upper()}: `{show(row.tolist())}`",
                              f"signs of q_i allowed before: {', '.join('+' if s > 0 else '−' for s in allowed)}; "
                              "the sign after (−sign) separating: "
-                             + ", ".join("yes" if after.holds({Q_I: -s}) else "no" for s in allowed)]))
+                             + ", ".join("yes" if after.holds({Q_I: -s}) else "no" for s in allowed)],
+                            obligations=take(reading) + identity_facts((row == expected, row, expected))))
     return conclude(checks)
 
 

@@ -39,6 +39,7 @@ from certify.algebra import (
     ball_value,
     discriminant_lambda,
     eliminate,
+    facts,
     flint_real_roots,
     from_flint,
     lam,
@@ -80,6 +81,7 @@ from certify.run import (
     determinant_fact,
     digits_check,
     eliminant_check,
+    fact_ids,
     gathered,
     identity_facts,
     identity_modulo_facts,
@@ -89,8 +91,10 @@ from certify.run import (
     replaced,
     resultant_fact,
     reworded,
+    sign_intervals_facts,
     take,
     unread,
+    unsupported_fact,
 )
 
 WORD = "ababcb"
@@ -240,12 +244,17 @@ def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
     cp(0) = -det M, which holds for every 3×3 matrix: evidence, not a check."""
     det = sp.factor(M.det())
     T = spectrum.table("λ", lam, 0, 1)
-    sign = statements.statement(det_sign, {"det M": DET}, subject="det M")
-    signs = sign.range.signs(sign_intervals(to_fmpq_poly(det), 0, 1))
+    as_printed = sp.expand(det - parse(det_text)) == 0
+    printed_det = determinant_fact(as_printed, M, parse(det_text))
+    ivs = sign_intervals(to_fmpq_poly(det), 0, 1)
+    with gathered(again=True) as reading:        # the printed sign and range, read on the sign intervals
+        sign = statements.statement(det_sign, {"det M": DET}, subject="det M")
+        signs = sign.range.signs(ivs)
+    signs_det = take(reading) + determinant_fact(True, M, det) + sign_intervals_facts(to_fmpq_poly(det), ivs)
     return conclude([
-        Check(f"det M = {det_text}", sp.expand(det - parse(det_text)) == 0, [f"det M = `{show(det)}`"]),
+        Check(f"det M = {det_text}", as_printed, [f"det M = `{show(det)}`"], obligations=printed_det),
         Check(f"det M is {det_sign} on ]0,1[", sign.relation.holds_on(DET, signs),
-              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"]),
+              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"], obligations=signs_det),
         Check("the largest real eigenvalue is positive on all of ]0,1[", T.holds(UPPER, 1),
               ["sign of λ per branch:\n\n" + T.markdown()]),
     ], evidence=["the paper's argument (l. 340): cp(0) = det(-M) = -det M < 0 and cp(λ) → +∞ as λ → +∞, so cp has a "
@@ -280,17 +289,19 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     constant = ratio is not None and ratio.is_number and ratio != 0
     condition = statements.relation(three_real_when, {"Δ_cp": DELTA})
     three_real = {s: constant and int(sp.sign(ratio)) * s > 0 for s in (-1, 0, 1)}   # Disc = ratio·Δ_cp > 0
+    flint_same = same_up_to_constant(discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))
     return conclude([
         Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
               obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional")),
-        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0),
+        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0,
+              obligations=identity_facts((sp.expand(card - delta) == 0, card, delta))),
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
               [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
                + ", ".join("yes" if three_real[s] else "no" for s in (-1, 0, 1)) + "; the printed condition "
                + ", ".join("yes" if condition.holds({DELTA: s}) else "no" for s in (-1, 0, 1))]),
-        Check("flint's Disc_λ(cp) has the same factors", same_up_to_constant(
-            discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))),
+        Check("flint's Disc_λ(cp) has the same factors", flint_same,
+              obligations=resultant_fact(flint_same, cp, "d/dλ", delta, "proportional")),
     ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "
             "'discriminant', l. 341). Disc_λ(cp) = −108·Δ_cp.")
 
@@ -450,8 +461,11 @@ def position_map_of_ababcb(candidate, a, b, c, d):
               for i in range(4) for j in range(i + 1, 4)}
     word = "".join(s.letter for s in steps)
     factor = sp.cancel(P[2].as_expr() / comp[2].as_expr())
+    p1 = steps[-1].position(0)
+    scaled = (sp.expand(P[2].as_expr() - factor * comp[2].as_expr()) == 0, P[2].as_expr(), factor * comp[2].as_expr())
     return conclude([
-        Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", steps[-1].position(0) != 0),
+        Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", p1 != 0,
+              obligations=identity_facts((p1 == 0, p1.as_expr(), sp.Integer(0)))),
         Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
@@ -463,7 +477,7 @@ def position_map_of_ababcb(candidate, a, b, c, d):
                                                       for i in range(4) for j in range(i + 1, 4)])),
         Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
               "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
-              bool(factor.is_Rational) and factor < 0),
+              bool(factor.is_Rational) and factor < 0 and scaled[0], obligations=identity_facts(scaled)),
     ], evidence=[f"by construction: the engine applies the collisions {', '.join(word)} (q(t_k) = K q(t_(k-1))) and "
                  "defines t6 by p_2(t6) = 0, so p(t6) = (p_1(t6), 0, p_3(t6)) = p_1(t6)(1, 0, f(x))"])
 
@@ -584,15 +598,22 @@ def sign_of_c(c, below, above):
     quad = parse("r^2 - 10*r + 1")
     ratio = sp.cancel(cr / quad)
     ivs = sign_intervals(to_fmpq_poly(sp.expand(cr)), 0, 1)
-    ratio_pos = not ratio.has(lam) and all(sg > 0 for _a, _b, sg in sign_intervals(to_fmpq_poly(sp.expand(ratio)), 0, 1))
+    signs_c = sign_intervals_facts(to_fmpq_poly(sp.expand(cr)), ivs)     # for the kernel: the signs of c/λ
+    ratio_pos, factored = False, []
+    if not ratio.has(lam) and ratio.is_polynomial(r):
+        ratio_ivs = sign_intervals(to_fmpq_poly(sp.expand(ratio)), 0, 1)
+        ratio_pos = all(sg > 0 for _a, _b, sg in ratio_ivs)
+        factored = identity_facts((sp.expand(parse(c) - lam * quad * ratio) == 0, parse(c), lam * quad * ratio)) + \
+            sign_intervals_facts(to_fmpq_poly(sp.expand(ratio)), ratio_ivs)
 
     def half(text, evidence=()):
-        st = statements.statement(text, {"c": C_SIGN})
-        signs = st.range.signs(ivs)
+        with gathered(again=True) as reading:        # the range read, compared with the ends of the intervals
+            st = statements.statement(text, {"c": C_SIGN})
+            signs = st.range.signs(ivs)
         return Check(text, st.relation.holds_on(C_SIGN, signs), [f"signs of c for {st.range}: {sign_word(signs)}",
-                                                                 *evidence])
+                                                                 *evidence], obligations=take(reading) + signs_c)
     printed = [Check("c/λ = (r^2-10r+1)·(positive on ]0,1[), so sign c = sign(r^2-10r+1) when λ > 0", ratio_pos,
-                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"]),
+                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"], obligations=factored),
                half(below),
                half(above, [f"sign of c/λ on ]{a.short()}, {b_.short()}[: {'+' if sg > 0 else '−'}" for a, b_, sg in ivs])]
     fixed = statements.corrected(above, *T16_CORRECTION)
@@ -709,8 +730,11 @@ def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
     amd = spectrum.table("a-d", parse(a) - parse(d), 0, 1)
     bc = spectrum.table("bc", parse(b) * parse(c), 0, 1)
     cc = spectrum.table("c", parse(c), 0, 1)
-    away, ev = no_positive_fixed_point(spectrum, fp, xp, xm, MIDDLE, 0, rs, skip=(rr1,))
-    degenerate = all(spectrum.vanishes_at(g, rr1, MIDDLE) for g in (fp.a, fp.b, fp.c, fp.d))
+    with gathered(again=True) as facts_away:
+        away, ev = no_positive_fixed_point(spectrum, fp, xp, xm, MIDDLE, 0, rs, skip=(rr1,))
+    with gathered(again=True) as facts_degenerate:
+        degenerate = all(spectrum.vanishes_at(g, rr1, MIDDLE) for g in (fp.a, fp.b, fp.c, fp.d))
+    take(facts_away + facts_degenerate)         # they belong to the first two checks below
     reasoning = [
         Check("the middle branch exists exactly on ]0, r*[ (and at r*)", all((len(cl.branches) >= 2) == (cl.hi <= rs) for cl in xp.cells)),
         Check("for r < 5-2√6: a-d < 0, bc < 0, c > 0 on the middle branch",
@@ -718,9 +742,10 @@ def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
         Check("for 5-2√6 < r < r*: a-d > 0, bc < 0, c < 0 on the middle branch",
               amd.holds(MIDDLE, 1, rr1, rs) and bc.holds(MIDDLE, -1, rr1, rs) and cc.holds(MIDDLE, -1, rr1, rs)),
     ]
-    return conclude([Check("x₊ and x₋ are never positive on the middle branch wherever f is defined", away, ev),
+    return conclude([Check("x₊ and x₋ are never positive on the middle branch wherever f is defined", away, ev,
+                           obligations=list(facts_away)),
                      Check("at r = 5-2√6 the printed f is undefined on the middle branch: a = b = c = d = 0 exactly",
-                           degenerate)] + reasoning,
+                           degenerate, obligations=list(facts_degenerate))] + reasoning,
                     note="At r = 5-2√6 on the middle branch a, b, c, d (and the numerators and denominators of u, v) "
                          "all vanish: the printed formulas define no datum there, so the claim holds vacuously at that point.")
 
@@ -757,12 +782,18 @@ def sign_of_u(cp, spectrum, U, quintic, digits, r1, position):
     E = eliminate(num, cp)
     wanted = {str(f) for f, _ in E.factors if f.degree() > 1 or f(0) != 0}
     target = {str(f) for f, _ in to_fmpz_poly(parse(f"(r^2-10*r+1)*({quintic})")).factor()[1]}
+    others = [f for f, _ in E.factors if str(f) not in target]
+    both_routes = resultant_fact(E.agree, num, cp, from_flint(E.groebner), "same_factors")
+    # for the kernel: the other factors have no root in ]0, 1[ (Sturm on ]0, 1], and the sign at 1)
+    no_root = fact_ids(*[b for f in others for b in (
+        lambda f=f: facts.root_count(len(Algebraic.roots(f, 0, 1)) + (f(1) == 0), f, 0, 1),
+        lambda f=f: facts.sign_at(int(f(1) > 0) - int(f(1) < 0), f, 1))])
     roots, nf = roots_in_unit_interval(quintic)
     T = spectrum.table("u", parse(U), 0, 1)
     checks = [Check("the eliminant's factors vanishing in ]0,1[ are r^2-10r+1 and the quintic",
-                    wanted >= target and all(not Algebraic.roots(f, 0, 1) for f, _ in E.factors if str(f) not in target),
-                    E.evidence()),
-              Check("both routes agree", E.agree),
+                    wanted >= target and all(not Algebraic.roots(f, 0, 1) for f in others),
+                    E.evidence(), obligations=both_routes + no_root),
+              Check("both routes agree", E.agree, obligations=both_routes),
               count_check("the quintic", roots, nf, 1)]
     if roots:
         checks += [digits_check("its root", roots[0], digits),
@@ -852,7 +883,9 @@ def distance_inequalities(candidate, p3t4, p1t5, a, b, c, d, U, V, r1):
 def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, degree, position):
     product = f"r^6*(r-1)^6*(r+1)^3*(r^2-10*r+1)*({P2_text})*({P3_text})"
     checks = eliminant_check("a+d", parse(a) + parse(d), cp, product)
-    checks.append(Check(f"the polynomial has degree {degree}", to_fmpz_poly(parse(product)).degree() == degree))
+    checks.append(Check(f"the polynomial has degree {degree}", to_fmpz_poly(parse(product)).degree() == degree,
+                        obligations=unsupported_fact("the degree of a polynomial, read off the printed product's "
+                                                     "expansion: the obligation language has no kind for a degree")))
     for name, text, digits in (("P2", P2_text, d2), ("P3", P3_text, d3)):
         roots, nf = roots_in_unit_interval(text)
         checks.append(count_check(name, roots, nf, 1))
@@ -893,6 +926,18 @@ def modulus_sign_factor(e: sp.Expr) -> int | None:
     num, den = sp.fraction(sp.cancel(sp.together(e)))
     ratio = sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
     return int(sp.sign(ratio)) if ratio.is_number and ratio != 0 else None
+
+
+def modulus_facts(e: sp.Expr) -> list[str]:
+    """For the kernel: the identity :func:`modulus_sign_factor` reads k from, P² - Q² =
+    κ·(a + d)·s with the constant κ it found (nothing when it found none)."""
+    A, B, C, D, s, xp, xm = mobius_symbols()
+    num, den = sp.fraction(sp.cancel(sp.together(e)))
+    ratio = sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+    if not (ratio.is_number and ratio != 0):
+        return []
+    lhs, rhs = num ** 2 - den ** 2, ratio * (A + D) * s
+    return identity_facts((sp.expand(lhs - rhs) == 0, lhs, rhs))
 
 
 def f_prime_at_fixed_point() -> sp.Expr:
@@ -945,29 +990,39 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
         return all(verdicts.values()), [f"with q = {q_text}, sign(|q| - 1) = {'+' if k > 0 else '−'}sign(a+d): "
                                         + "; ".join(f"{t}: {MARK[v]}" for t, v in verdicts.items())]
     sentence_text = f"x₊ stable iff {stable_when} (l. 495); {upper} on the upper branch and {lower} on the lower, r < 5-2√6 (l. 505)"
-    ok, ev = sentences(q)
+    with gathered(again=True) as facts_printed:
+        ok, ev = sentences(q)
+    facts_printed += modulus_facts(read_q(q)) + modulus_facts(f_prime_at_fixed_point())
     a_d = ["a+d on the branches:\n\n" + apd.markdown(),
            f"Δ = (a-d)² + 4bc > 0 on the upper branch: {MARK[real.holds(UPPER, 1, 0, rr1)]}, on the lower branch: "
            f"{MARK[real.holds(LOWER, 1, 0, rr1)]} (r < 5-2√6), so q is real and √Δ > 0",
            f"for every Möbius map, f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) and |f'(x₊)| - 1 has the sign of "
            f"{'a+d' if k_f == 1 else '-(a+d)'}"]
-    printed = [Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d)]
+    printed = [Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d, obligations=take(facts_printed))]
     if ok:
         return conclude(printed)
     if T24_CORRECTION[0] not in q:
         return conclude(printed + [Check(f"the stated correction {' → '.join(T24_CORRECTION)} applies to the "
                                          f"printed q = {q}", False)])
     q_fixed = q.replace(*T24_CORRECTION)
-    ok_fixed, ev_fixed = sentences(q_fixed)
+    with gathered(again=True) as facts_fixed:
+        ok_fixed, ev_fixed = sentences(q_fixed)
     is_fprime = sp.cancel(read_q(q_fixed) - f_prime_at_fixed_point()) == 0
+    facts_fixed += modulus_facts(read_q(q_fixed)) + modulus_facts(f_prime_at_fixed_point()) + \
+        identity_facts((is_fprime, read_q(q_fixed), f_prime_at_fixed_point()))
+    with gathered(again=True) as facts_upper:
+        upper_repels = k_f == -1 and apd.holds(UPPER, -1)
+    with gathered(again=True) as facts_lower:
+        lower_dominated = k_f == -1 and apd.holds(LOWER, 1) and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)
     corrected = [
         Check(f"l. 493: q = {q_fixed}; with it, {sentence_text}", ok_fixed and is_fprime,
-              ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"], corrects=printed[0]),
-        Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)",
-              k_f == -1 and apd.holds(UPPER, -1)),
+              ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"], corrects=printed[0],
+              obligations=take(facts_fixed)),
+        Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)", upper_repels,
+              obligations=take(facts_upper + modulus_facts(f_prime_at_fixed_point()))),
         Check("and on the lower branch a+d > 0 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: λ is not dominant "
-              "(unstable in the velocities)", k_f == -1 and apd.holds(LOWER, 1)
-              and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)),
+              "(unstable in the velocities)", lower_dominated,
+              obligations=take(facts_lower + modulus_facts(f_prime_at_fixed_point()))),
     ]
     return conclude(printed, corrected, kind=MISPRINT, misprint="l. 493: q displayed as 1/f'(x₊), the fraction inverted",
                     note="One misprint: the q displayed at l. 493, (cx₊+d)/(cx₋+d), is 1/f'(x₊). With q = f'(x₊) = "
@@ -992,14 +1047,16 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     upper and lower branches below r1, from the sign tables shared with T17-T22.
     Instability as in T24 (corrected reading)."""
     spectrum, rr1 = candidate.spectrum, r1_of(r1)
-    an = Analysis(candidate)
-    reqs, _ = prefix_requirements(WORD, len(WORD), candidate.q0, candidate.steps, candidate.q0_other)
-    for q in reqs:
-        an.impose(q)
-    undecided = [(R, u_) for R in an.regions for u_ in R.undecided]
-    where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
-    exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
-                     and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
+    with gathered(again=True) as analysis:     # the regions: for the first two checks
+        an = Analysis(candidate)
+        reqs, _ = prefix_requirements(WORD, len(WORD), candidate.q0, candidate.steps, candidate.q0_other)
+        for q in reqs:
+            an.impose(q)
+        undecided = [(R, u_) for R in an.regions for u_ in R.undecided]
+        where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
+    with gathered(again=True) as ends:
+        exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
+                         and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
     regions = [f"{BRANCH_NAMES[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
                + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}" if R.dropped else "")
                for R in an.regions]
@@ -1008,22 +1065,29 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     tables = [spectrum.table("u", parse(U), 0, 1)]
     tables += [spectrum.table(name, parse(text).subs(uv), 0, 1) for name, (_k, _i, text) in velocities.items()]
     dist = [spectrum.table(name, parse(text), 0, 1, fp) for name, text in (("p3(t4)", p3t4), ("p1(t5)", p1t5))]
-    printed_ok = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
-                     and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
-                     for k in (UPPER, LOWER))
+    with gathered(again=True) as facts_printed:
+        printed_ok = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
+                         and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
+                         for k in (UPPER, LOWER))
     apd = spectrum.table("a+d", fp.a + fp.d, 0, rr1)
     lam_t = spectrum.table("λ", lam, 0, rr1)
-    unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
+    with gathered(again=True) as facts_unstable:
+        unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
+    facts_unstable += modulus_facts(f_prime_at_fixed_point())      # |f'(x₊)| > 1 iff a+d < 0 (T24)
+    take(analysis + ends + facts_printed + facts_unstable)
     return conclude([
         Check("every cell and critical value of ]0,1[ decided, on every branch, for both fixed points", not undecided,
-              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
+              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided],
+              obligations=list(analysis)),
         Check("the candidate realises ababcb, with every inequality strict, exactly for 0 < r < 5-2√6 on the upper "
               "branch and on the lower branch, and nowhere on the middle branch",
               exactly_below[UPPER] and exactly_below[LOWER] and not where[MIDDLE],
-              ["the inequalities: " + ", ".join(f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs)] + regions),
+              ["the inequalities: " + ", ".join(f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs)] + regions,
+              obligations=analysis + ends),
         Check("with the printed formulas (x = x₊, u, v): x₊ > 0, u > 0, the five velocities < 0 and p3(t4), p1(t5) > 0 "
-              "on the upper and lower branches for r < 5-2√6", printed_ok),
-        Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable),
+              "on the upper and lower branches for r < 5-2√6", printed_ok, obligations=list(facts_printed)),
+        Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable,
+              obligations=list(facts_unstable)),
     ], note="p_1(t_6) > 0 (μ > 0) is needed too and is not in the paper's list (l. 470-486); it holds on the same "
             "region. The computed (a, b, c, d) is the printed one times a negative constant (T10), so the paper's x₊ "
             "is the computed x₋.")
@@ -1051,6 +1115,10 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
 # radii, not on floats), which a wrong formula fails by many orders of magnitude.
 PRINTED_T25_2 = dict(U=U_PRINTED, V=V_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, word="ababcb",
                      r="1/20", periods=20, perturbation="1/10^30")
+SIMULATOR = ("the particle simulator in ball arithmetic (certify.dynamics.simulate, python-flint arb: each collision "
+             "chosen by enclosures of the collision times): the kernel has no interval arithmetic")
+ENCLOSURES = ("ball arithmetic (python-flint arb): the enclosures of the state after k periods and of its "
+              "scaled initial value, from the simulator: the kernel has no interval arithmetic")
 MAX_PERIODS = 200                      # how long a perturbed orbit is followed at most
 TIGHT_BITS = 40                        # "tight": relative radius < 2^-40 (decided exactly)
 
@@ -1200,10 +1268,12 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                           "(f'(x₊) = 1/q)".format(*(z.str(8, radius=False) for z in datum.mobius(256))))
         checks += [
             Check(f"{name} branch: the printed datum repeats {word} for {periods} periods (every collision proven)",
-                  ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else []),
+                  ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else [],
+                  obligations=unsupported_fact(SIMULATOR)),
             Check(f"{name} branch: q(t_{len(word)}k) = λ^k q(0), k = 1..{periods} (the enclosures overlap and have "
-                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok),
-            Check(f"{name} branch: p(t_{len(word)}k) = μ^k p(0), k = 1..{periods} (the same)", p_ok),
+                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok, obligations=unsupported_fact(ENCLOSURES)),
+            Check(f"{name} branch: p(t_{len(word)}k) = μ^k p(0), k = 1..{periods} (the same)", p_ok,
+                  obligations=unsupported_fact(ENCLOSURES)),
         ]
     # instability: upper branch through the positions, lower branch through the velocities
     cases = [("upper", "x + ε", eps, (Q(0), Q(0), Q(0)), MAX_PERIODS),
@@ -1228,7 +1298,8 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                             f"ends with {run.events[first]} instead of {word[first % n]} (proven at {prec} bits)")
         if (name, what) in (("upper", "x + ε"), ("lower", "v + ε")):
             checks.append(Check(f"{name} branch: the datum with {what} (ε = {perturbation}) leaves the pattern "
-                                f"{word} after a bounded number of periods", first is not None))
+                                f"{word} after a bounded number of periods", first is not None,
+                                obligations=unsupported_fact(SIMULATOR)))
     return conclude(checks, evidence=evidence,
                     note="Instability is shown the way the paper argues it: on the upper branch through the positions "
                          "(x perturbed), on the lower branch through the velocities (q perturbed); the other two "

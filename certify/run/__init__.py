@@ -33,6 +33,8 @@ from .checks import (
                      product_fact,
                      result_check,
                      resultant_fact,
+                     sign_intervals_facts,
+                     unsupported_fact,
 )
 from .files import load_findings
 from .island_figures import report_figure as island_figure
@@ -76,7 +78,7 @@ from .section5_orbits import explanations
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "product_fact", "identity_facts", "fact_ids", "resultant_fact", "identity_modulo_facts",
-    "determinant_fact", "kept_facts",
+    "determinant_fact", "kept_facts", "sign_intervals_facts", "unsupported_fact",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "replaying", "gathered", "take", "captured", "facts_of",
     "load_findings", "committed_windows", "island_figure", "explanations", "save_figure",

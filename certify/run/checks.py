@@ -6,8 +6,21 @@ the printed checks one for one.
 """
 from __future__ import annotations
 
+import flint
+import sympy as sp
+
 from certify import obligations
-from certify.algebra import Algebraic, eliminate, facts, parse, same_up_to_constant, show_factored_int, to_fmpz_poly
+from certify.algebra import (
+    Algebraic,
+    eliminate,
+    facts,
+    from_flint,
+    parse,
+    r,
+    same_up_to_constant,
+    show_factored_int,
+    to_fmpz_poly,
+)
 from certify.algebra import trig as T
 
 from .runner import Check, conclude
@@ -40,14 +53,19 @@ def count_check(name: str, roots: list, counts: tuple[int, int], expected: int) 
 
 def eliminant_check(name: str, g, cp, printed_product: str) -> list[Check]:
     """The λ-free element of the lex Gröbner basis of {g, cp} equals the printed
-    product up to a constant; the resultant route has the same factors."""
+    product up to a constant; the resultant route has the same factors.  For the kernel,
+    the Gröbner check names the identity (Gröbner eliminant)·k = printed product and the
+    resultant route's fact; the second check names the latter."""
     E = eliminate(g, cp)
-    P = to_fmpz_poly(parse(printed_product))
-    groebner = Check(f"Gröbner basis of {{{name}, cp(M)}} (lex λ > r) eliminates to the printed polynomial",
-                     same_up_to_constant(E.groebner, P), E.evidence() + [f"printed: `{show_factored_int(P)}`"])
-    return [groebner, Check("the resultant route agrees factor by factor", E.agree,
-                            obligations=fact_ids(lambda: facts.resultant(
-                                E.agree and groebner.holds, g, cp, parse(printed_product), "same_factors")))]
+    printed = parse(printed_product)
+    P = to_fmpz_poly(printed)
+    same = same_up_to_constant(E.groebner, P)
+    res = fact_ids(lambda: facts.resultant(E.agree and same, g, cp, printed, "same_factors"))
+    k = sp.Poly(printed, r).LC() / sp.Integer(int(E.groebner.coeffs()[-1]))   # the constant, leading terms
+    eliminant = identity_facts((same, k * from_flint(E.groebner), printed))
+    groebner = Check(f"Gröbner basis of {{{name}, cp(M)}} (lex λ > r) eliminates to the printed polynomial", same,
+                     E.evidence() + [f"printed: `{show_factored_int(P)}`"], obligations=eliminant + res)
+    return [groebner, Check("the resultant route agrees factor by factor", E.agree, obligations=res)]
 
 
 def fact_ids(*builders) -> list[str]:
@@ -157,6 +175,46 @@ def kept_facts(data: list) -> list[str]:
         if i and i not in ids:
             ids.append(i)
     return obligations.take(ids)
+
+
+def sign_intervals_facts(poly, ivs) -> list[str]:
+    """Record the facts :func:`certify.algebra.sign_intervals` decided ``ivs`` from (the
+    intervals between the roots of ``poly`` in ]lo, hi[, lo and hi rational, with a sign
+    each): the number of roots in ]lo, hi] and the sign at hi (Sturm), each inner end a
+    root, and for each interval a rational sample inside it (two comparisons) with the sign
+    there; the ids."""
+    P = flint.fmpq_poly(poly) if not isinstance(poly, flint.fmpq_poly) else poly
+    lo, hi = ivs[0][0], ivs[-1][1]
+    inner = [b for _a, b, _s in ivs[:-1]]
+    at_hi = P(hi.lo)
+
+    def sign(q) -> int:
+        return int(q > 0) - int(q < 0)
+    builders = [lambda: facts.root_count(len(inner) + (at_hi == 0), P, lo.lo, hi.lo),
+                lambda: facts.sign_at(sign(at_hi), P, hi.lo)]
+    builders += [lambda z=z: facts.sign_at(0, P, z) for z in inner]
+    for a, b, s in ivs:
+        t = between(a, b)
+        builders += [lambda a=a, t=t: facts.compare(-1, a, t), lambda b=b, t=t: facts.compare(-1, t, b),
+                     lambda s=s, t=t: facts.sign_at(s, P, t)]
+    return fact_ids(*builders)
+
+
+def between(a: Algebraic, b: Algebraic):
+    """A rational strictly between the algebraic numbers a < b (their intervals refined)."""
+    with obligations.quiet():        # the comparisons are recorded by the caller
+        t = (a.hi + b.lo) / 2
+        while not (a < Algebraic.rational(t) < b):
+            a.refine((a.hi - a.lo) / 16)
+            b.refine((b.hi - b.lo) / 16)
+            t = (a.hi + b.lo) / 2
+    return t
+
+
+def unsupported_fact(reason: str) -> list[str]:
+    """Record that a check rests on something the kernel does not have, named by ``reason``
+    (the exact simulator of the particles, ball arithmetic, ...); the ids."""
+    return fact_ids(lambda: {"kind": "unsupported", "reason": reason})
 
 
 def determinant_fact(holds: bool, matrix, rhs) -> list[str]:
