@@ -417,9 +417,10 @@ class Spectrum:
         self._tables = {}
         self._branches = {}
         self._eigenvalues = {}
-        self._common = {}                  # (id of h, key of rc) -> (h, common roots of cp and h there)
+        self._common = {}                  # (h or id of h, key of rc) -> (h, common roots of cp and h there)
         self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
-        self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
+        self._norms = {}                   # (P₀, P₁, Δ) -> norm(P₀, P₁, Δ)
+        self._resultant_ids = {}           # h or id of h -> (h, Res_λ(h, cp))
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -660,7 +661,10 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided."""
         P0, P1 = P
-        if not self.vanishes_at(norm(P0, P1, delta), rc, k):
+        key = (P0, P1, delta)              # the same norm asked on every branch: one object, one test
+        if key not in self._norms:
+            self._norms[key] = norm(P0, P1, delta)
+        if not self.vanishes_at(self._norms[key], rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -689,19 +693,23 @@ class Spectrum:
            exactly (a division in Q(rc)[λ] without inverses; it happens where n* is 0/0 on
            every branch); else, when certified balls exclude h = 0 at every root of
            cp(rc, λ) but one, that one is the common root (:meth:`_single_common_root`);
-        3. else the gcd in Q(rc)[λ], made monic (an inverse in Q(rc)): evaluating a gcd of
-           pseudo-remainders at a ball instead loses the branches of (ab)^12(cb)^12 at
-           1024 bits."""
+        3. else the gcd in Q(rc)[λ]; of degree 1, or 2 with distinct roots, its roots are
+           enclosed as it comes (up to a factor of Q(rc)), else it is made monic (an inverse in
+           Q(rc)) and squarefree: evaluating a gcd of pseudo-remainders at a ball instead lost the
+           branches of (ab)^12(cb)^12 at 1024 bits."""
         m = nf.modulus(rc)
+        if not isinstance(h, PolyElement):
+            h = to_ring(sp.expand(expr(h)))
+        if any(e[2] or e[3] or e[4] or e[5] for e in h.itermonoms()):
+            raise ValueError("polynomial still depends on x, u, v or s")      # as nf.kpoly says
+        # route 1 before h(rc, λ) is formed: R(rc) ≠ 0 also proves h(rc, λ) ≢ 0 (Π h(rc, λ_i) ≠ 0)
+        R = self._resultant_of(h) if self.lc.degree() <= 0 else None
+        if R is not None and not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
+            return False
         hk = nf.kpoly(h, m)
         if not hk:
             return True
-        if not isinstance(h, PolyElement):
-            h = to_ring(sp.expand(expr(h)))
-        if self.lc.degree() <= 0:
-            R = self._resultant_of(h)
-            if not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
-                return False
+        if R is not None:
             if not R.is_zero():
                 if self.branches_at(rc) is not None and nf.divides(self._sqf[rc.key()], hk, m):
                     sqf = self._sqf[rc.key()]          # every root of cp(rc, λ) is a root of h
@@ -709,18 +717,22 @@ class Spectrum:
                 single = self._single_common_root(h, rc)
                 if single is not None:
                     return single
-        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
+        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m, make_monic=False)
         if len(G) == 1:
             return False
-        G, _ = nf.squarefree(G, m)
+        if len(G) == 2 or len(G) == 3 and nf.squarefree_quadratic(G, m):
+            return lambda prec: nf.real_roots(G, rc, prec)     # squarefree already: no inverse in Q(rc)
+        G, _ = nf.squarefree(nf.monic(G, m), m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
     def _resultant_of(self, h) -> flint.fmpz_poly:
-        """:meth:`resultant` of the polynomial object h, memoised by its identity (the same h
-        is tested at many r)."""
-        entry = self._resultant_ids.get(id(h))
-        if entry is None or entry[0] is not h:
-            entry = self._resultant_ids[id(h)] = (h, self.resultant(h))
+        """:meth:`resultant` of the polynomial h, memoised by its value (a ring element) or
+        its identity (the same h is tested at many r)."""
+        content = isinstance(h, PolyElement)
+        key = h if content else id(h)
+        entry = self._resultant_ids.get(key)
+        if entry is None or not content and entry[0] is not h:
+            entry = self._resultant_ids[key] = (h, self.resultant(h))
         return entry[1]
 
     def _single_common_root(self, h, rc: Algebraic, maxprec: int = 4096):
@@ -779,9 +791,10 @@ class Spectrum:
         ``poly.RING``) vanishes on branch ``branch`` at r = rc:
         G = gcd(cp(λ; rc), h(rc, λ)) is computed in Q(rc)[λ]; h vanishes there iff
         the branch's eigenvalue is a root of G, decided by disjoint certified balls."""
-        key = (id(h), rc.key())
+        content = isinstance(h, PolyElement)        # the same polynomial rebuilt (a norm, a condition): one test
+        key = (h if content else id(h), rc.key())
         entry = self._common.get(key)
-        if entry is None or entry[0] is not h:
+        if entry is None or not content and entry[0] is not h:
             entry = self._common[key] = (h, self._common_roots(h, rc))
         G = entry[1]
         if G is True or G is False:

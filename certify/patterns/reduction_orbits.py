@@ -283,6 +283,7 @@ class OrbitResult:
     undecided: list
     pattern: object                   # the PatternResult of the same word (self-similar collapse data)
     verdict: str = ""
+    not_computed: str = ""            # why ``pattern`` is None when the physics line should say so
     physics: str = ""
     seconds: float = 0.0
     formulas: object = field(default=None, repr=False)     # () -> {name: formula} of n*
@@ -428,7 +429,7 @@ def physics(res: OrbitResult) -> str:
     def sets(lst):
         return "; ".join(f"{s['branch']}{'' if s['fixed_point'] == NO_X else ' ' + s['fixed_point']}: {s['set']}"
                          for s in lst) or "∅"
-    text = "" if p is None else (
+    text = (res.not_computed + " " if res.not_computed else "") if p is None else (
         f"Self-similar collapse data of {res.written} (certify pattern, the real-pair case: the velocity q(0) an "
         f"eigenvector of M_w for λ > 0 in the invariant plane; {BRANCH_WORDS}): stable on {sets(p.stable)}; "
         f"feasible on {sets(p.feasible)}. ")
@@ -443,6 +444,14 @@ def physics(res: OrbitResult) -> str:
 
 
 # ------------------------------------------------------------------ the analysis
+SELF_SIMILAR_MAX_LENGTH = 40
+"""The longest normal form whose physics line runs ``certify pattern``'s analysis by default.
+That analysis certifies every collision with the fixed point x (norms with √Δ, of several
+times the degree of the orbit's own conditions) and grows faster: 3 s of the 38 letters near
+r = 0.5, but 80% of the 122 letters of r = 0.173.  Longer words get a physics line saying the
+self-similar data were not computed and how to get them (``--self-similar``, or ``certify
+pattern``); everything about the orbit itself is computed whatever the length."""
+
 MAX_ORBIT_LENGTH = 240
 """The longest normal form ``analyse`` takes: twice the longest attractor met so far (the
 122 letters of r = 0.173, about 100 s of one core).  M_w has entries of degree L in r, the
@@ -460,14 +469,16 @@ def check_length(normal: str) -> None:
                          f"for over 10 minutes without an end)")
 
 
-def analyse(word: str, lo=0, hi=1, self_similar: bool = True, progress=None) -> OrbitResult:
+def analyse(word: str, lo=0, hi=1, self_similar: bool | None = None, progress=None) -> OrbitResult:
     """The periodic orbits of the reduction with the word ``word`` (any rotation or mirror),
     over ]lo, hi[: the sets of the module docstring, per real branch, certified.
     ``self_similar=False`` skips the pattern analysis of the physics line (the census has
     it already): ``pattern`` is then None and the physics line says only where the pair
-    is complex.  ``progress(k, n, label)`` (e.g. :class:`certify.run.progress.Bar`) is told
-    after each step: M_w, the branches, each condition imposed, the physics line.  A
-    normal form longer than :data:`MAX_ORBIT_LENGTH` is refused (UsageError)."""
+    is complex.  ``None`` (the default) runs it up to :data:`SELF_SIMILAR_MAX_LENGTH`
+    letters and beyond says in the physics line that it was not computed; ``True`` always.
+    ``progress(k, n, label)`` (e.g. :class:`certify.run.progress.Bar`) is told after each
+    step: M_w, the branches, each condition imposed, the physics line.  A normal form
+    longer than :data:`MAX_ORBIT_LENGTH` is refused (UsageError)."""
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
@@ -475,6 +486,13 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool = True, progress=None) -> 
         raise UsageError(f"orbit: {show_word(normal)!r} is a word of the {system_name} system (two gaps); the "
                          "reduction of Section 4 is the four-particle one: a word with a, b and c")
     check_length(normal)
+    not_computed = ""
+    if self_similar is None:
+        self_similar = len(normal) <= SELF_SIMILAR_MAX_LENGTH
+        if not self_similar:
+            not_computed = (f"Self-similar collapse data of {show_word(normal)}: not computed ({len(normal)} letters, "
+                            f"more than {SELF_SIMILAR_MAX_LENGTH}: `certify orbit --self-similar` or `certify pattern` "
+                            "computes them).")
     total, done = len(normal) + 14 + self_similar, [0]
 
     def step(label):
@@ -529,7 +547,7 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool = True, progress=None) -> 
         out["n*"] = "(n_1, n_2, 1), λ a root of cp (the formulas reduced modulo cp)"
         return out
     res = OrbitResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cand.cp, lam)), conditions, regions,
-                      sorted(undecided), pat, formulas=formulas)
+                      sorted(undecided), pat, not_computed=not_computed, formulas=formulas)
     res.verdict, res.physics = verdict(res), physics(res)
     res.seconds = time.perf_counter() - start
     return res
