@@ -112,6 +112,7 @@ from certify.algebra.poly import (
 from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ORIENTATION, cofactor, cofactor_columns
 from certify.dynamics.systems import candidate_in
+from certify.dynamics.words import Candidate, spectrum_of
 from certify.errors import UsageError
 
 from .feasibility import NO_X, Analysis, Requirement
@@ -499,7 +500,7 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool | None = None, progress=No
         done[0] += 1
         if progress is not None:
             progress(done[0], total, label)
-    cand = candidate_in(system_name, normal)
+    cand = candidate_in(system_name, normal) if self_similar else orbit_candidate(normal)
     spec = cand.spectrum
     step("M_w and cp")
     an = Analysis(replace(cand, abcd=None, abcd_ring=None), lo, hi)   # no position variable x here
@@ -551,6 +552,14 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool | None = None, progress=No
     res.verdict, res.physics = verdict(res), physics(res)
     res.seconds = time.perf_counter() - start
     return res
+
+
+def orbit_candidate(normal: str) -> Candidate:
+    """What the orbit's analysis reads of a word's candidate: M_w, cp and the Spectrum
+    (shared with ``certify pattern``'s candidate, :func:`certify.dynamics.words.spectrum_of`),
+    without q(0)'s run and the position map (no position variable x here)."""
+    Mq, cp, _ring_cp, spectrum = spectrum_of(normal)
+    return Candidate(normal, Mq, cp, spectrum, (), [], None, [], None)
 
 
 def _factored(num, den) -> str:

@@ -357,6 +357,21 @@ def test_beyond_the_limit_the_physics_line_says_the_self_similar_data_were_not_c
     assert json.loads(capsys.readouterr().out)["self_similar"] == whole["self_similar"]
 
 
+def test_without_the_physics_line_the_run_of_q0_is_not_computed_and_the_spectrum_is_shared():
+    """self_similar=False reads only M_w, cp and the Spectrum (orbit_candidate): pattern's
+    candidate (the run of q(0), most of a long word's candidate) is not built; built later, it
+    shares the Spectrum (its sign tables), and the orbit's JSON is the same either way."""
+    from certify.dynamics import words
+    from certify.run import runner
+    runner.reset_caches()
+    light = analyse("ababcbcb", self_similar=False)
+    assert words.candidate.cache_info().currsize == 0 and words.spectrum_of.cache_info().currsize == 1
+    assert candidate_in("four", "ababcbcb").spectrum is ro.orbit_candidate("ababcbcb").spectrum
+    runner.reset_caches()
+    candidate_in("four", "ababcbcb")
+    assert analyse("ababcbcb", self_similar=False).json_text() == light.json_text()
+
+
 @pytest.mark.slow
 def test_the_122_letter_attractor_of_0173_is_certified_and_agrees_with_the_point_check():
     """The word r = 0.173 settles on (identify): `orbit` crashed on it ("roots lost at higher
