@@ -151,6 +151,7 @@ class Condition:
         self.degenerate = []
         self.terms = {k: ring_terms(p) for k, p in
                       (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
+        self.powers = max((max(i, j) for ts in self.terms.values() for _c, i, j in ts), default=0)   # of r, λ
 
     @classmethod
     def of(cls, name: str, g, fixed_point: FixedPoint | None = None) -> Condition:
@@ -207,8 +208,7 @@ def _powers(z, n):
 def _sign_ball(cond: Condition, R, L, delta_is_zero=False):
     """Sign of g at balls R, L (r and λ); None when x is not real (Δ < 0); '?' if
     the balls do not decide it.  ``delta_is_zero``: Δ = 0 there is known exactly."""
-    n = max((max(i, j) for ts in cond.terms.values() for _c, i, j in ts), default=0)
-    Rp, Lp = _powers(R, n), _powers(L, n)
+    Rp, Lp = _powers(R, cond.powers), _powers(L, cond.powers)
     S = flint.arb(0)
     if cond.delta is not None and not delta_is_zero:
         dv = _eval_terms(cond.terms["delta"], Rp, Lp)
@@ -230,8 +230,7 @@ def ball_value(cond: Condition, R, L) -> flint.arb:
     """g = N₀/D₀ at balls R, L, for a condition without √Δ."""
     if cond.delta is not None:
         raise ValueError("ball_value needs a condition without √Δ")
-    n = max((max(i, j) for ts in cond.terms.values() for _c, i, j in ts), default=0)
-    Rp, Lp = _powers(R, n), _powers(L, n)
+    Rp, Lp = _powers(R, cond.powers), _powers(L, cond.powers)
     return _eval_terms(cond.terms["N0"], Rp, Lp) / _eval_terms(cond.terms["D0"], Rp, Lp)
 
 
@@ -419,6 +418,7 @@ class Spectrum:
         self._eigenvalues = {}
         self._common = {}                  # (h or id of h, key of rc) -> (h, common roots of cp and h there)
         self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
+        self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
         self._norms = {}                   # (P₀, P₁, Δ) -> norm(P₀, P₁, Δ)
         self._resultant_ids = {}           # h or id of h -> (h, Res_λ(h, cp))
 
@@ -588,7 +588,9 @@ class Spectrum:
 
     def _branches_at(self, rc, maxprec):
         m = nf.modulus(rc)
-        sqf, g = nf.squarefree(nf.kpoly(self.ring_cp, m), m)
+        if str(m) not in self._sqf_modulo:                 # the same for every root of m
+            self._sqf_modulo[str(m)] = nf.squarefree(nf.kpoly(self.ring_cp, m), m)
+        sqf, g = self._sqf_modulo[str(m)]
         self._sqf[rc.key()] = sqf
         if len(g) > 2:
             return None                  # a root of multiplicity > 2: not handled
@@ -700,11 +702,10 @@ class Spectrum:
         m = nf.modulus(rc)
         if not isinstance(h, PolyElement):
             h = to_ring(sp.expand(expr(h)))
-        if any(e[2] or e[3] or e[4] or e[5] for e in h.itermonoms()):
-            raise ValueError("polynomial still depends on x, u, v or s")      # as nf.kpoly says
-        # route 1 before h(rc, λ) is formed: R(rc) ≠ 0 also proves h(rc, λ) ≢ 0 (Π h(rc, λ_i) ≠ 0)
+        # route 1 before h(rc, λ) is formed: R(rc) ≠ 0 also proves h(rc, λ) ≢ 0 (Π h(rc, λ_i) ≠ 0);
+        # m irreducible divides R iff gcd(R, m) ≠ 1 (a gcd over Z: cheaper than R mod m over Q)
         R = self._resultant_of(h) if self.lc.degree() <= 0 else None
-        if R is not None and not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
+        if R is not None and not R.is_zero() and R.gcd(m.numer()).degree() <= 0:
             return False
         hk = nf.kpoly(h, m)
         if not hk:
@@ -732,6 +733,8 @@ class Spectrum:
         key = h if content else id(h)
         entry = self._resultant_ids.get(key)
         if entry is None or not content and entry[0] is not h:
+            if any(e[2] or e[3] or e[4] or e[5] for e in h.itermonoms()):
+                raise ValueError("polynomial still depends on x, u, v or s")      # as nf.kpoly says
             entry = self._resultant_ids[key] = (h, self.resultant(h))
         return entry[1]
 

@@ -455,7 +455,8 @@ pattern``); everything about the orbit itself is computed whatever the length.""
 
 MAX_ORBIT_LENGTH = 240
 """The longest normal form ``analyse`` takes: twice the longest attractor met so far (the
-122 letters of r = 0.173, about 100 s of one core).  M_w has entries of degree L in r, the
+122 letters of r = 0.173, about 20 s of one core without the self-similar data, 100 s with
+them).  M_w has entries of degree L in r, the
 conditions degree about 2L in r with coefficients of about 3L bits, their resultants and
 norms degree several times that, and the work grows faster than L³; longer words (up to
 the reader's 400 letters: (ab)^100(cb)^100 ran silently for over 10 minutes) are refused
@@ -466,7 +467,7 @@ def check_length(normal: str) -> None:
     """UsageError (one line, exit 2) for a normal form longer than :data:`MAX_ORBIT_LENGTH`."""
     if len(normal) > MAX_ORBIT_LENGTH:
         raise UsageError(f"orbit: {len(normal)} letters, more than {MAX_ORBIT_LENGTH}: the exact analysis grows "
-                         f"faster than the cube of the length (122 letters take a minute or two; 400 letters ran "
+                         f"faster than the cube of the length (122 letters take under a minute; 400 letters ran "
                          f"for over 10 minutes without an end)")
 
 
