@@ -448,7 +448,7 @@ def physics(res: OrbitResult) -> str:
 SELF_SIMILAR_MAX_LENGTH = 40
 """The longest normal form whose physics line runs ``certify pattern``'s analysis by default.
 That analysis certifies every collision with the fixed point x (norms with √Δ, of several
-times the degree of the orbit's own conditions) and grows faster: 3 s of the 38 letters near
+times the degree of the orbit's own conditions) and grows faster: half of the 38 letters near
 r = 0.5, but 80% of the 122 letters of r = 0.173.  Longer words get a physics line saying the
 self-similar data were not computed and how to get them (``--self-similar``, or ``certify
 pattern``); everything about the orbit itself is computed whatever the length."""
