@@ -151,6 +151,7 @@ class Condition:
         self.degenerate = []
         self.terms = {k: ring_terms(p) for k, p in
                       (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
+        self.powers = max((max(i, j) for ts in self.terms.values() for _c, i, j in ts), default=0)   # of r, λ
 
     @classmethod
     def of(cls, name: str, g, fixed_point: FixedPoint | None = None) -> Condition:
@@ -207,8 +208,7 @@ def _powers(z, n):
 def _sign_ball(cond: Condition, R, L, delta_is_zero=False):
     """Sign of g at balls R, L (r and λ); None when x is not real (Δ < 0); '?' if
     the balls do not decide it.  ``delta_is_zero``: Δ = 0 there is known exactly."""
-    n = max((max(i, j) for ts in cond.terms.values() for _c, i, j in ts), default=0)
-    Rp, Lp = _powers(R, n), _powers(L, n)
+    Rp, Lp = _powers(R, cond.powers), _powers(L, cond.powers)
     S = flint.arb(0)
     if cond.delta is not None and not delta_is_zero:
         dv = _eval_terms(cond.terms["delta"], Rp, Lp)
@@ -230,8 +230,7 @@ def ball_value(cond: Condition, R, L) -> flint.arb:
     """g = N₀/D₀ at balls R, L, for a condition without √Δ."""
     if cond.delta is not None:
         raise ValueError("ball_value needs a condition without √Δ")
-    n = max((max(i, j) for ts in cond.terms.values() for _c, i, j in ts), default=0)
-    Rp, Lp = _powers(R, n), _powers(L, n)
+    Rp, Lp = _powers(R, cond.powers), _powers(L, cond.powers)
     return _eval_terms(cond.terms["N0"], Rp, Lp) / _eval_terms(cond.terms["D0"], Rp, Lp)
 
 
@@ -429,9 +428,11 @@ class Spectrum:
         self._tables = {}
         self._branches = {}
         self._eigenvalues = {}
-        self._common = {}                  # (id of h, key of rc) -> (h, common roots of cp and h there)
+        self._common = {}                  # (h or id of h, key of rc) -> (h, common roots of cp and h there)
         self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
-        self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
+        self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
+        self._norms = {}                   # (P₀, P₁, Δ) -> norm(P₀, P₁, Δ)
+        self._resultant_ids = {}           # h or id of h -> (h, Res_λ(h, cp))
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -599,7 +600,9 @@ class Spectrum:
 
     def _branches_at(self, rc, maxprec):
         m = nf.modulus(rc)
-        sqf, g = nf.squarefree(nf.kpoly(self.ring_cp, m), m)
+        if str(m) not in self._sqf_modulo:                 # the same for every root of m
+            self._sqf_modulo[str(m)] = nf.squarefree(nf.kpoly(self.ring_cp, m), m)
+        sqf, g = self._sqf_modulo[str(m)]
         self._sqf[rc.key()] = sqf
         if len(g) > 2:
             return None                  # a root of multiplicity > 2: not handled
@@ -672,7 +675,10 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided."""
         P0, P1 = P
-        if not self.vanishes_at(norm(P0, P1, delta), rc, k):
+        key = (P0, P1, delta)              # the same norm asked on every branch: one object, one test
+        if key not in self._norms:
+            self._norms[key] = norm(P0, P1, delta)
+        if not self.vanishes_at(self._norms[key], rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -701,19 +707,22 @@ class Spectrum:
            exactly (a division in Q(rc)[λ] without inverses; it happens where n* is 0/0 on
            every branch); else, when certified balls exclude h = 0 at every root of
            cp(rc, λ) but one, that one is the common root (:meth:`_single_common_root`);
-        3. else the gcd in Q(rc)[λ], made monic (an inverse in Q(rc)): evaluating a gcd of
-           pseudo-remainders at a ball instead loses the branches of (ab)^12(cb)^12 at
-           1024 bits."""
+        3. else the gcd in Q(rc)[λ]; of degree 1, or 2 with distinct roots, its roots are
+           enclosed as it comes (up to a factor of Q(rc)), else it is made monic (an inverse in
+           Q(rc)) and squarefree: evaluating a gcd of pseudo-remainders at a ball instead lost the
+           branches of (ab)^12(cb)^12 at 1024 bits."""
         m = nf.modulus(rc)
+        if not isinstance(h, PolyElement):
+            h = to_ring(sp.expand(expr(h)))
+        # route 1 before h(rc, λ) is formed: R(rc) ≠ 0 also proves h(rc, λ) ≢ 0 (Π h(rc, λ_i) ≠ 0);
+        # m irreducible divides R iff gcd(R, m) ≠ 1 (a gcd over Z: cheaper than R mod m over Q)
+        R = self._resultant_of(h) if self.lc.degree() <= 0 else None
+        if R is not None and not R.is_zero() and R.gcd(m.numer()).degree() <= 0:
+            return False
         hk = nf.kpoly(h, m)
         if not hk:
             return True
-        if not isinstance(h, PolyElement):
-            h = to_ring(sp.expand(expr(h)))
-        if self.lc.degree() <= 0:
-            R = self._resultant_of(h)
-            if not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
-                return False
+        if R is not None:
             if not R.is_zero():
                 if self.branches_at(rc) is not None and nf.divides(self._sqf[rc.key()], hk, m):
                     sqf = self._sqf[rc.key()]          # every root of cp(rc, λ) is a root of h
@@ -721,18 +730,24 @@ class Spectrum:
                 single = self._single_common_root(h, rc)
                 if single is not None:
                     return single
-        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
+        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m, make_monic=False)
         if len(G) == 1:
             return False
-        G, _ = nf.squarefree(G, m)
+        if len(G) == 2 or len(G) == 3 and nf.squarefree_quadratic(G, m):
+            return lambda prec: nf.real_roots(G, rc, prec)     # squarefree already: no inverse in Q(rc)
+        G, _ = nf.squarefree(nf.monic(G, m), m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
     def _resultant_of(self, h) -> flint.fmpz_poly:
-        """:meth:`resultant` of the polynomial object h, memoised by its identity (the same h
-        is tested at many r)."""
-        entry = self._resultant_ids.get(id(h))
-        if entry is None or entry[0] is not h:
-            entry = self._resultant_ids[id(h)] = (h, self.resultant(h))
+        """:meth:`resultant` of the polynomial h, memoised by its value (a ring element) or
+        its identity (the same h is tested at many r)."""
+        content = isinstance(h, PolyElement)
+        key = h if content else id(h)
+        entry = self._resultant_ids.get(key)
+        if entry is None or not content and entry[0] is not h:
+            if any(e[2] or e[3] or e[4] or e[5] for e in h.itermonoms()):
+                raise ValueError("polynomial still depends on x, u, v or s")      # as nf.kpoly says
+            entry = self._resultant_ids[key] = (h, self.resultant(h))
         return entry[1]
 
     def _single_common_root(self, h, rc: Algebraic, maxprec: int = 4096):
@@ -791,9 +806,10 @@ class Spectrum:
         ``poly.RING``) vanishes on branch ``branch`` at r = rc:
         G = gcd(cp(λ; rc), h(rc, λ)) is computed in Q(rc)[λ]; h vanishes there iff
         the branch's eigenvalue is a root of G, decided by disjoint certified balls."""
-        key = (id(h), rc.key())
+        content = isinstance(h, PolyElement)        # the same polynomial rebuilt (a norm, a condition): one test
+        key = (h if content else id(h), rc.key())
         entry = self._common.get(key)
-        if entry is None or entry[0] is not h:
+        if entry is None or not content and entry[0] is not h:
             entry = self._common[key] = (h, self._common_roots(h, rc))
         G = entry[1]
         if G is True or G is False:

@@ -59,18 +59,21 @@ def _strip(p):
     return p
 
 
-def _monic(p, m):
+def monic(p, m):
+    """p ∈ Q(α)[λ] divided by its leading coefficient (an inverse in Q(α), by xgcd in Q[r])."""
     g, inv, _ = p[0].xgcd(m)          # g = inv·p[0] + _·m, g monic
     if g != 1:
         raise ZeroDivisionError(f"{p[0]} is not invertible modulo {m}")
     return [reduce(c * inv, m) for c in p]
 
 
-def gcd(f, g, m) -> list[flint.fmpq_poly]:
+def gcd(f, g, m, make_monic: bool = True) -> list[flint.fmpq_poly]:
     """The monic gcd in Q(α)[λ] (m irreducible, so Q(α) is a field).  Euclid by
     pseudo-remainders (f <- lc(g) f - lc(f) λ^k g: no inverse in Q(α), which costs an
     extended gcd in Q[r] each), each remainder scaled by a rational to keep its
-    numbers small; one inverse at the end, none when the gcd is a constant (1)."""
+    numbers small; one inverse at the end, none when the gcd is a constant (1).
+    ``make_monic=False``: a gcd up to a non-zero factor of Q(α), without that inverse (the
+    same roots: enough to enclose them)."""
     f, g = _strip(f), _strip(g)
     while g:
         a = g[0]
@@ -86,7 +89,14 @@ def gcd(f, g, m) -> list[flint.fmpq_poly]:
         return f
     if len(f) == 1:
         return [flint.fmpq_poly(1)]
-    return _monic(f, m)
+    return monic(f, m) if make_monic else f
+
+
+def squarefree_quadratic(f, m) -> bool:
+    """Whether a f = aλ² + bλ + c ∈ Q(α)[λ] (a ≠ 0) has two distinct roots: b² - 4ac ≠ 0
+    in Q(α), exactly (no inverse)."""
+    a, b, c = f
+    return not reduce(b * b - 4 * a * c, m).is_zero()
 
 
 def divide(f, g, m) -> list[flint.fmpq_poly]:

@@ -92,7 +92,8 @@ def cmd_orbit(args) -> int:
         if args.r_range:
             raise UsageError("--trap R certifies one r: not with --r-range (use one or the other)")
         return _trap(normal, system, args.trap, args.json)
-    result = analyse_orbit(args.word, lo, hi, progress=progress.Bar("step"))
+    result = analyse_orbit(args.word, lo, hi, self_similar=True if args.self_similar else None,
+                           progress=progress.Bar("step"))
     print(result.json_text() if args.json else result.markdown())
     return 0
 
@@ -191,6 +192,9 @@ def register(commands) -> None:
                    help="instead: certify a trapping ellipse of the attracting orbit at the rational R in ]0,1[ "
                         "(exit 1 when none is found; with --json: certify/schemas/trap.schema.json; "
                         "not with --r-range)")
+    p.add_argument("--self-similar", action="store_true",
+                   help="the physics line's self-similar data (certify pattern's analysis) for a word longer than "
+                        "40 letters too (by default not computed there: most of the time of a long word)")
 
     p = add_command(commands, "particles", cmd_particles, help="simulate four particles exactly",
                     description="Four particles on a line, equal masses, restitution "

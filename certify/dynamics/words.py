@@ -227,14 +227,24 @@ def fixed_point_ball(a, b, c, d, sigma: int = 1) -> flint.arb:
 
 
 @cache
-def candidate(word: str) -> Candidate:
-    """M_w, cp, the branches, q(0) and the position map of a word a ... b."""
+def spectrum_of(word: str) -> tuple:
+    """(M_w, cp, cp in the engine's ring, the Spectrum) of a word a ... b: what
+    :func:`candidate` starts from, and all that ``certify orbit`` needs (without the run
+    of q(0), which takes most of a long word's candidate); one Spectrum per word, so both
+    share its sign tables."""
     check_word(word)
     if word[0] != "a" or word[-1] != "b":
         raise ValueError(f"the normalisation q(0) = (-1, u, v), p(0) = (1, 0, x) needs a word a...b, not {word!r}")
     Mq = word_matrix_flint(word)
     cp = charpoly_flint(Mq)                                           # = characteristic_polynomial(M)
     ring_cp = charpoly_ring(Mq)                                       # the same, in the engine's ring
+    return Mq, cp, ring_cp, Spectrum(cp, ring_cp)
+
+
+@cache
+def candidate(word: str) -> Candidate:
+    """M_w, cp, the branches, q(0) and the position map of a word a ... b."""
+    Mq, cp, ring_cp, spectrum = spectrum_of(word)
     Mf = [[flint_poly_to_frac(e) for e in row] for row in Mq]
     q0 = eigenvector_lr(Mf)
     run = run_lr(word, q0)
@@ -248,8 +258,9 @@ def candidate(word: str) -> Candidate:
     abcd = tuple(e.as_expr() for e in abcd_ring)
     q0_other = [tuple(frac_to_field(e) for e in eigenvector_lr(Mf, rows)) for rows in ((0, 2), (1, 2))]
     q0 = tuple(frac_to_field(e) for e in q0)
-    return Candidate(word, Mq, cp, Spectrum(cp, ring_cp), q0, q0_other, abcd, steps_of(run), abcd_ring)
+    return Candidate(word, Mq, cp, spectrum, q0, q0_other, abcd, steps_of(run), abcd_ring)
 
 
 
 caches.register(candidate.cache_clear)
+caches.register(spectrum_of.cache_clear)

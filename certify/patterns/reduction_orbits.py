@@ -112,6 +112,7 @@ from certify.algebra.poly import (
 from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ORIENTATION, cofactor, cofactor_columns
 from certify.dynamics.systems import candidate_in
+from certify.dynamics.words import Candidate, spectrum_of
 from certify.errors import UsageError
 
 from .feasibility import NO_X, Analysis, Requirement
@@ -283,6 +284,7 @@ class OrbitResult:
     undecided: list
     pattern: object                   # the PatternResult of the same word (self-similar collapse data)
     verdict: str = ""
+    not_computed: str = ""            # why ``pattern`` is None when the physics line should say so
     physics: str = ""
     seconds: float = 0.0
     formulas: object = field(default=None, repr=False)     # () -> {name: formula} of n*
@@ -424,7 +426,7 @@ def physics(res: OrbitResult) -> str:
     def sets(lst):
         return "; ".join(f"{s['branch']}{'' if s['fixed_point'] == NO_X else ' ' + s['fixed_point']}: {s['set']}"
                          for s in lst) or "∅"
-    text = "" if p is None else (
+    text = (res.not_computed + " " if res.not_computed else "") if p is None else (
         f"Self-similar collapse data of {res.written} (certify pattern, the real-pair case: the velocity q(0) an "
         f"eigenvector of M_w for λ > 0 in the invariant plane; {BRANCH_WORDS}): stable on {sets(p.stable)}; "
         f"feasible on {sets(p.feasible)}. ")
@@ -439,9 +441,18 @@ def physics(res: OrbitResult) -> str:
 
 
 # ------------------------------------------------------------------ the analysis
+SELF_SIMILAR_MAX_LENGTH = 40
+"""The longest normal form whose physics line runs ``certify pattern``'s analysis by default.
+That analysis certifies every collision with the fixed point x (norms with √Δ, of several
+times the degree of the orbit's own conditions) and grows faster: half of the 38 letters near
+r = 0.5, but 80% of the 122 letters of r = 0.173.  Longer words get a physics line saying the
+self-similar data were not computed and how to get them (``--self-similar``, or ``certify
+pattern``); everything about the orbit itself is computed whatever the length."""
+
 MAX_ORBIT_LENGTH = 240
 """The longest normal form ``analyse`` takes: twice the longest attractor met so far (the
-122 letters of r = 0.173, about 100 s of one core).  M_w has entries of degree L in r, the
+122 letters of r = 0.173, about 20 s of one core without the self-similar data, 100 s with
+them).  M_w has entries of degree L in r, the
 conditions degree about 2L in r with coefficients of about 3L bits, their resultants and
 norms degree several times that, and the work grows faster than L³; longer words (up to
 the reader's 400 letters: (ab)^100(cb)^100 ran silently for over 10 minutes) are refused
@@ -452,18 +463,20 @@ def check_length(normal: str) -> None:
     """UsageError (one line, exit 2) for a normal form longer than :data:`MAX_ORBIT_LENGTH`."""
     if len(normal) > MAX_ORBIT_LENGTH:
         raise UsageError(f"orbit: {len(normal)} letters, more than {MAX_ORBIT_LENGTH}: the exact analysis grows "
-                         f"faster than the cube of the length (122 letters take a minute or two; 400 letters ran "
+                         f"faster than the cube of the length (122 letters take under a minute; 400 letters ran "
                          f"for over 10 minutes without an end)")
 
 
-def analyse(word: str, lo=0, hi=1, self_similar: bool = True, progress=None) -> OrbitResult:
+def analyse(word: str, lo=0, hi=1, self_similar: bool | None = None, progress=None) -> OrbitResult:
     """The periodic orbits of the reduction with the word ``word`` (any rotation or mirror),
     over ]lo, hi[: the sets of the module docstring, per real branch, certified.
     ``self_similar=False`` skips the pattern analysis of the physics line (the census has
     it already): ``pattern`` is then None and the physics line says only where the pair
-    is complex.  ``progress(k, n, label)`` (e.g. :class:`certify.run.progress.Bar`) is told
-    after each step: M_w, the branches, each condition imposed, the physics line.  A
-    normal form longer than :data:`MAX_ORBIT_LENGTH` is refused (UsageError)."""
+    is complex.  ``None`` (the default) runs it up to :data:`SELF_SIMILAR_MAX_LENGTH`
+    letters and beyond says in the physics line that it was not computed; ``True`` always.
+    ``progress(k, n, label)`` (e.g. :class:`certify.run.progress.Bar`) is told after each
+    step: M_w, the branches, each condition imposed, the physics line.  A normal form
+    longer than :data:`MAX_ORBIT_LENGTH` is refused (UsageError)."""
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
@@ -471,13 +484,20 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool = True, progress=None) -> 
         raise UsageError(f"orbit: {show_word(normal)!r} is a word of the {system_name} system (two gaps); the "
                          "reduction of Section 4 is the four-particle one: a word with a, b and c")
     check_length(normal)
+    not_computed = ""
+    if self_similar is None:
+        self_similar = len(normal) <= SELF_SIMILAR_MAX_LENGTH
+        if not self_similar:
+            not_computed = (f"Self-similar collapse data of {show_word(normal)}: not computed ({len(normal)} letters, "
+                            f"more than {SELF_SIMILAR_MAX_LENGTH}: `certify orbit --self-similar` or `certify pattern` "
+                            "computes them).")
     total, done = len(normal) + 14 + self_similar, [0]
 
     def step(label):
         done[0] += 1
         if progress is not None:
             progress(done[0], total, label)
-    cand = candidate_in(system_name, normal)
+    cand = candidate_in(system_name, normal) if self_similar else orbit_candidate(normal)
     spec = cand.spectrum
     step("M_w and cp")
     an = Analysis(replace(cand, abcd=None, abcd_ring=None), lo, hi)   # no position variable x here
@@ -525,10 +545,18 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool = True, progress=None) -> 
         out["n*"] = "(n_1, n_2, 1), λ a root of cp (the formulas reduced modulo cp)"
         return out
     res = OrbitResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cand.cp, lam)), conditions, regions,
-                      sorted(undecided), pat, formulas=formulas)
+                      sorted(undecided), pat, not_computed=not_computed, formulas=formulas)
     res.verdict, res.physics = verdict(res), physics(res)
     res.seconds = time.perf_counter() - start
     return res
+
+
+def orbit_candidate(normal: str) -> Candidate:
+    """What the orbit's analysis reads of a word's candidate: M_w, cp and the Spectrum
+    (shared with ``certify pattern``'s candidate, :func:`certify.dynamics.words.spectrum_of`),
+    without q(0)'s run and the position map (no position variable x here)."""
+    Mq, cp, _ring_cp, spectrum = spectrum_of(normal)
+    return Candidate(normal, Mq, cp, spectrum, (), [], None, [], None)
 
 
 def _factored(num, den) -> str:

@@ -327,6 +327,51 @@ def test_long_words_are_refused_with_the_limit_and_a_progress_callback_is_told()
     assert res.pattern is None
 
 
+def test_beyond_the_limit_the_physics_line_says_the_self_similar_data_were_not_computed(monkeypatch, capsys):
+    """Above SELF_SIMILAR_MAX_LENGTH letters (lowered here to 6) the physics line does not run
+    `certify pattern` and says so, with how to get it; the orbit's own sets are the same;
+    --self-similar (or self_similar=True) runs it anyway, and the JSON follows the schema."""
+    jsonschema = pytest.importorskip("jsonschema")
+    referencing = pytest.importorskip("referencing")
+    word = "ababcbcb"
+    full = analyse(word)
+    assert full.pattern is not None and not full.not_computed
+    monkeypatch.setattr(ro, "SELF_SIMILAR_MAX_LENGTH", 6)
+    short = analyse(word)
+    assert short.pattern is None and "not computed (8 letters, more than 6" in short.physics
+    assert "--self-similar" in short.physics and "Self-similar collapse data of" in short.physics
+    doc, whole = json.loads(short.json_text()), json.loads(full.json_text())
+    assert doc["self_similar"] is None and whole["self_similar"] is not None
+    assert {k: v for k, v in doc.items() if k not in ("self_similar", "physics")} == \
+        {k: v for k, v in whole.items() if k not in ("self_similar", "physics")}
+    schema = json.loads(SCHEMA_PATH.read_text())
+    registry = referencing.Registry().with_resource(
+        "certify/patterns/pattern.schema.json",
+        referencing.Resource.from_contents(json.loads(PATTERN_SCHEMA.read_text())))
+    jsonschema.Draft202012Validator(schema, registry=registry).validate(doc)
+    monkeypatch.undo()
+    assert f"longer than {ro.SELF_SIMILAR_MAX_LENGTH} letters" in schema["properties"]["self_similar"]["description"]
+    assert analyse(word, self_similar=True).json_text() == full.json_text()
+    monkeypatch.setattr(ro, "SELF_SIMILAR_MAX_LENGTH", 6)
+    assert cli.main(["orbit", word, "--json", "--self-similar"]) == 0
+    assert json.loads(capsys.readouterr().out)["self_similar"] == whole["self_similar"]
+
+
+def test_without_the_physics_line_the_run_of_q0_is_not_computed_and_the_spectrum_is_shared():
+    """self_similar=False reads only M_w, cp and the Spectrum (orbit_candidate): pattern's
+    candidate (the run of q(0), most of a long word's candidate) is not built; built later, it
+    shares the Spectrum (its sign tables), and the orbit's JSON is the same either way."""
+    from certify.dynamics import words
+    from certify.run import runner
+    runner.reset_caches()
+    light = analyse("ababcbcb", self_similar=False)
+    assert words.candidate.cache_info().currsize == 0 and words.spectrum_of.cache_info().currsize == 1
+    assert candidate_in("four", "ababcbcb").spectrum is ro.orbit_candidate("ababcbcb").spectrum
+    runner.reset_caches()
+    candidate_in("four", "ababcbcb")
+    assert analyse("ababcbcb", self_similar=False).json_text() == light.json_text()
+
+
 @pytest.mark.slow
 def test_the_122_letter_attractor_of_0173_is_certified_and_agrees_with_the_point_check():
     """The word r = 0.173 settles on (identify): `orbit` crashed on it ("roots lost at higher
