@@ -5,6 +5,7 @@ in λ are lists of polynomials in r (lowest degree first, both ways)."""
 from __future__ import annotations
 
 from fractions import Fraction
+from math import gcd as igcd
 
 from .poly import add, divmod_, gcd, integer_primitive, mul, scale, sign, sub, value
 from .sturm import Algebraic, count
@@ -24,19 +25,15 @@ class AtR0:
 
     def sign(self, c: list) -> int:
         """sign c(r0).  0 exactly when gcd(c, m) has a root in r0's interval (the one root of m
-        there is r0).  Else the sign of c(x), x the middle of the interval [x − w, x + w], once
-        |c(x)| > w·Σ k|c_k|M^(k−1) (M = |x| + w), a bound of |c(r0) − c(x)| (the mean value
-        theorem): true after enough bisections, as c(r0) ≠ 0."""
+        there is r0).  Else that at the middle of the interval, once :func:`_enclose` proves it
+        (true after enough bisections, as c(r0) ≠ 0)."""
         c, r0, tested = self.reduce(c), self.r0, False
         while c:
             if r0.rational:
                 return sign(value(c, r0.lo))
-            x, w = (r0.lo + r0.hi) / 2, (r0.hi - r0.lo) / 2
-            M, v, bound = abs(x) + w, value(c, x), Fraction(0)
-            for k in range(len(c) - 1, 0, -1):
-                bound = bound * M + k * abs(c[k])
-            if abs(v) > w * bound:
-                return 1 if v > 0 else -1
+            s = _enclose(c, r0.lo, r0.hi)
+            if s:
+                return s
             if not tested:
                 g, tested = gcd(c, r0.p), True
                 if len(g) > 1 and count(g, r0.lo, r0.hi) == 1:
@@ -58,12 +55,11 @@ class AtR0:
         for i, a in enumerate(P):
             for j, b in enumerate(Q):
                 out[i + j] = add(out[i + j], mul(a, b))
-        return self.trim(out)
+        return [self.reduce(c) for c in out]
 
     def sub(self, P: list, Q: list) -> list:
         """P − Q in Q[r][λ]."""
-        n = max(len(P), len(Q))
-        return self.trim([sub(P[i] if i < len(P) else [], Q[i] if i < len(Q) else []) for i in range(n)])
+        return [sub(P[i] if i < len(P) else [], Q[i] if i < len(Q) else []) for i in range(max(len(P), len(Q)))]
 
     def remainder(self, A: list, B: list) -> list:
         """A positive multiple at r0 of −rem(A, B) in Q(r0)[λ] (B trimmed, lc B(r0) ≠ 0): the
@@ -92,37 +88,38 @@ class AtR0:
                              else self.at(P, x) for P in seq) if s]
         return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
-    def taq(self, Q: list, P: list, a, b) -> int:
+    def taq(self, Q: list, P: list, a, b, seq=None) -> int:
         """Σ sign Q(r0, λ) over the distinct roots λ of P(r0, λ) in ]a, b[ (a, b rational or
         ±∞, not roots): the Sturm–Tarski theorem, Var(SRemS(P, P'·Q); a) − Var(...; b), over
-        the real closed field R ⊃ Q(r0) (Basu–Pollack–Roy, Thm 2.73; P need not be square-free)."""
-        dP = self.trim([scale(c, i) for i, c in enumerate(P)][1:])
-        seq = self.sequence(P, self.mul(dP, Q))
+        the real closed field R ⊃ Q(r0) (Basu–Pollack–Roy, Thm 2.73; P need not be square-free).
+        Q = 1 (``seq`` given: SRemS(P, P')) is Sturm's theorem, the number of distinct roots."""
+        if seq is None:
+            seq = self.sequence(P, self.mul(_d(P), Q))
         return self.variations(seq, a) - self.variations(seq, b)
 
-    def roots(self, P: list) -> list:
-        """The distinct real roots of P(r0, λ), largest first, as intervals ]a, b[ holding one
-        each: the count on ]−∞, ∞[ (TaQ with Q = 1), a power of 2 B with all of them in ]−B, B[,
-        then bisection at rationals that are not roots."""
-        P, one = self.trim(P), [[Fraction(1)]]
+    def roots(self, P: list) -> tuple[list, list]:
+        """SRemS(P, P') and the distinct real roots of P(r0, λ), largest first, as intervals
+        [a, b] holding one each in ]a, b[: the count on ]−∞, ∞[ (Sturm), a power of 2 B with all
+        of them in ]−B, B[, then bisection at rationals that are not roots."""
+        P = self.trim(P)
         if not P:
             raise ValueError("the polynomial vanishes identically at r0")
-        total = self.taq(one, P, "-inf", "+inf")
-        B = Fraction(1)
-        while self.at(P, B) == 0 or self.at(P, -B) == 0 or self.taq(one, P, -B, B) != total:
+        seq = self.sequence(P, _d(P))
+        total, B = self.taq([], P, "-inf", "+inf", seq), Fraction(1)
+        while self.at(P, B) == 0 or self.at(P, -B) == 0 or self.taq([], P, -B, B, seq) != total:
             B *= 2
         out, todo = [], [(-B, B, total)]
         while todo:
             lo, hi, n = todo.pop()
             if n == 1:
-                out.append((lo, hi))
+                out.append([lo, hi])
             elif n > 1:
                 mid = (lo + hi) / 2
-                while self.at(P, mid) == 0:
+                while self.at(P, mid) == 0:      # a rational in ]lo, hi[ that is not a root
                     mid = (mid + hi) / 2
-                left = self.taq(one, P, lo, mid)
+                left = self.taq([], P, lo, mid, seq)
                 todo += [(lo, mid, left), (mid, hi, n - left)]
-        return sorted(out, reverse=True)
+        return seq, sorted(out, reverse=True)
 
     def at(self, P: list, x) -> int:
         """sign P(r0, x) for a rational x (Horner's rule in λ gives P(r, x) ∈ Q[r])."""
@@ -132,18 +129,40 @@ class AtR0:
         return self.sign(out)
 
     def branches(self, P: list) -> list:
-        """The real roots of P(r0, λ), largest first, each repeated by its multiplicity (the
-        least k with P^(k) ≠ 0 there, each tested by a Tarski query on its interval)."""
-        out = []
-        for a, b in self.roots(P):
-            D, k = P, 1
-            while True:
-                D = self.trim([scale(c, i) for i, c in enumerate(D)][1:])
-                if self.taq(D, P, a, b) != 0:
-                    break
-                k += 1
-            out += [(a, b)] * k
-        return out
+        """The real roots of P(r0, λ), largest first, each repeated by its multiplicity: 1 when
+        the last term of SRemS(P, P') (gcd(P, P') at r0) is constant in λ, else the least k
+        with P^(k) ≠ 0 there, each tested by a Tarski query on the root's interval."""
+        seq, out = self.roots(P)
+        if len(seq[-1]) == 1:
+            return out
+        mult = []
+        for iv in out:
+            D, k = _d(P), 1
+            while self.taq(D, P, *iv) == 0:
+                D, k = _d(D), k + 1
+            mult += [iv] * k
+        return mult
+
+
+def _enclose(c: list, lo: Fraction, hi: Fraction) -> int:
+    """The sign of c ∈ Q[r] on [lo, hi] when it is that at the centre x: |c(x)| > w·Σ k|c_k|M^(k−1)
+    (w the half-width, M = |x| + w), a bound of |c − c(x)| there (the mean value theorem); else
+    0.  In integers: times d·D^n > 0 (x = X/D, w = W/D, d the common denominator of c)."""
+    x, w = (lo + hi) / 2, (hi - lo) / 2
+    D = d = x.denominator * w.denominator // igcd(x.denominator, w.denominator)
+    X, W = int(x * D), int(w * D)
+    for q in c:
+        d = d * q.denominator // igcd(d, q.denominator)
+    val = bound = 0
+    for k, q in enumerate(c):
+        val += int(q * d) * X ** k * D ** (len(c) - 1 - k)
+        bound += k * abs(int(q * d)) * (abs(X) + W) ** (k - 1) * W * D ** (len(c) - 1 - k) if k else 0
+    return (1 if val > 0 else -1) if abs(val) > bound else 0
+
+
+def _d(P: list) -> list:
+    """∂P/∂λ."""
+    return [scale(c, i) for i, c in enumerate(P)][1:]
 
 
 def _positive_content_free(P: list) -> list:

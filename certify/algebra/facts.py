@@ -280,12 +280,15 @@ def table_points(answer, table) -> list:
 
 def vanishing(answer, spectrum, h, rc, branch, *rest, **kw) -> dict:
     """Spectrum.vanishes_at: the polynomial h is 0 (or not) on ``branch`` at rc."""
+    from sympy.polys.rings import PolyElement
+
     from .branches import Condition
     from .poly import RING, to_ring
-    from sympy.polys.rings import PolyElement
     H = h if isinstance(h, PolyElement) else to_ring(sp.expand(sp.sympify(h)))
     cond = Condition("h", (H, RING.zero), (RING.one, RING.zero), None, None)
     n = len(spectrum.branches_at(rc) or [])
+    if branch >= n:
+        raise ValueError("the branch is not isolated at this r")
     return branch_signs([0 if answer else "nonzero"] * n, spectrum, cond, rc, only=branch)
 
 

@@ -43,11 +43,11 @@ def test_sturm_tarski_over_q_sqrt2():
     smaller; (λ − r)²(λ + 1) has the double root √2 (listed twice), where λ² − 2 vanishes."""
     A = AtR0(Algebraic([F(-2), F(0), F(1)], 1, 2))
     P = [[F(0), F(-1)], [], [F(1)]]
-    assert [A.taq([[F(-1)], [F(1)]], P, a, b) for a, b in A.roots(P)] == [1, -1]
+    assert [A.taq([[F(-1)], [F(1)]], P, a, b) for a, b in A.roots(P)[1]] == [1, -1]
     P2 = A.mul([[F(0), F(0), F(1)], [F(0), F(-2)], [F(1)]], [[F(1)], [F(1)]])
     branches = A.branches(P2)
     assert len(branches) == 3 and branches[0] == branches[1]
-    assert [A.taq([[F(-2)], [], [F(1)]], P2, a, b) for a, b in A.roots(P2)] == [0, -1]
+    assert [A.taq([[F(-2)], [], [F(1)]], P2, a, b) for a, b in A.roots(P2)[1]] == [0, -1]
     # a leading coefficient vanishing at r0: (r² − 2)λ³ + λ − r is λ − √2 there
     assert len(A.branches([[F(0), F(-1)], [F(1)], [], [F(-2), F(0), F(1)]])) == 1
 
@@ -113,3 +113,26 @@ def test_the_sign_at_a_critical_value_is_computed():
     c = synthetic([-1, 0, 1])
     c["obligations"][2]["signs"] = ["nonzero"]
     assert "the sign at r0 is 0" in rejected(c, "X:3")
+
+
+@pytest.mark.parametrize("eps, signs", [(F(1, 10 ** 15), [-1, -1, -1]), (-F(1, 10 ** 15), [1, 1, -1])])
+def test_the_kernel_agrees_with_the_engine_at_a_double_root(eps, signs):
+    """cp = (λ + 2)(λ² − 2rλ + 1/2) has the double root √2/2 at r = √2/2: λ − r ∓ 10⁻¹⁵ there,
+    signed by the engine (balls, exact zero tests) and by the kernel (Tarski queries in
+    Q(√2/2)[λ]); the obligation is the engine's record of its answer."""
+    import sympy as sp
+
+    from certify.algebra import facts
+    from certify.algebra.algebraic import Algebraic as EngineAlgebraic
+    from certify.algebra.branches import Condition, Spectrum
+    from certify.algebra.poly import lam, r
+    S = Spectrum(sp.expand((lam + 2) * (lam ** 2 - 2 * r * lam + sp.Rational(1, 2))))
+    rc = EngineAlgebraic.surd(0, sp.Rational(1, 2), 2)
+    cond = Condition.of("λ - r - ε", lam - r - sp.Rational(eps.numerator, eps.denominator))
+    answer = S.sign_at_point(cond, rc)
+    assert answer == signs
+    ob = {"id": "X:1", **facts.point_signs(answer, S, cond, rc)}
+    c = {"id": "X", "obligations": [ob], "subclaims": [{"statement": "the signs at √2/2", "obligations": ["X:1"]}]}
+    assert certify_kernel.verify_certificate(c)["verified"] == 1
+    ob["signs"][0] = -ob["signs"][0]
+    assert "branch 0: the sign at r0" in rejected(c, "X:1")
