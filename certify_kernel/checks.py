@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+from .field import AtR0
 from .poly import (
     at_r,
     d_lambda,
@@ -242,42 +243,82 @@ def _roots_inside(B: list, lo: Algebraic, hi: Algebraic) -> int:
     return n
 
 
-def _sign_of_surd(p0: list, p1: list, delta: list, lam: Algebraic) -> int:
-    """sign(P₀ + P₁√Δ) at λ (Δ > 0 there): the signs of P₀ and P₁ decide unless they differ;
-    then P₀ + P₁√Δ has the sign of P₀ when P₀² > P₁²Δ and the opposite one otherwise."""
-    s0 = lam.sign_of(p0)
-    s1 = lam.sign_of(p1) if p1 else 0
+def _sign_of_surd(p0, p1, delta, sg, mul_, sub_) -> int:
+    """sign(P₀ + P₁√Δ) at a point where Δ ≥ 0, sg the sign of a polynomial there: the signs of
+    P₀ and P₁ decide unless they differ; then P₀ + P₁√Δ has the sign of P₀ when P₀² > P₁²Δ
+    and the opposite one otherwise."""
+    s0 = sg(p0) if p0 else 0
+    s1 = sg(p1) if p1 else 0
     if s1 == 0 or s0 == s1:
         return s0 if s0 else s1
     if s0 == 0:
         return s1
-    return s0 * lam.sign_of(sub(mul(p0, p0), mul(mul(p1, p1), delta)))
+    return s0 * sg(sub_(mul_(p0, p0), mul_(mul_(p1, p1), delta)))
 
 
-def sign_of_condition(parts: dict, r0: Fraction, lam: Algebraic):
-    """The sign of g = (N₀ + N₁√Δ)/(D₀ + D₁√Δ) at (r0, λ): None when Δ < 0 (x not real)."""
-    at = {k: (at_r(v, r0) if v else []) for k, v in parts.items()}
+def sign_of_condition(at: dict, sg, mul_=mul, sub_=sub):
+    """The sign of g = (N₀ + N₁√Δ)/(D₀ + D₁√Δ) at a point (r, λ), from its parts specialised
+    there (``at``: their products by mul_, sub_; their signs by sg): None when Δ < 0 (x not
+    real); √Δ = 0 when Δ = 0."""
     delta = at.get("delta") or []
-    if parts.get("delta"):
-        sd = lam.sign_of(delta)
+    if delta:
+        sd = sg(delta)
         if sd < 0:
             return None
         if sd == 0:
-            raise Unsupported("Δ = 0 at a sample point")
-    sn = _sign_of_surd(at["N0"], at.get("N1") or [], delta, lam)
-    sd_ = _sign_of_surd(at["D0"], at.get("D1") or [], delta, lam)
-    if sd_ == 0:
-        raise Failed(f"the condition has a pole at the sample r = {r0}")
-    return sn * sd_
+            at = {k: v for k, v in at.items() if k not in ("N1", "D1")}
+    sn = _sign_of_surd(at["N0"], at.get("N1") or [], delta, sg, mul_, sub_)
+    sden = _sign_of_surd(at["D0"], at.get("D1") or [], delta, sg, mul_, sub_)
+    if sden == 0:
+        raise Failed("the condition has a pole there")
+    return sn * sden
 
 
-def load_table(ob: dict):
-    """The table's polynomials and cell ends, read."""
+def _polys(ob: dict) -> tuple[dict, dict]:
     names = ["r", "λ"]
     cp = mpoly({"vars": names, "terms": ob["cp"]})
     parts = {k: mpoly({"vars": names, "terms": ob["parts"][k]}) for k in _NAMES if ob["parts"].get(k)}
     parts.setdefault("N0", {})
     parts.setdefault("D0", {})
+    return cp, parts
+
+
+def point_signs(ob: dict, r0, env: dict) -> tuple[int, object]:
+    """(the number of real roots of cp(r0, λ) with multiplicity, branch k -> the sign of g at the
+    k-th largest), r0 algebraic: exact arithmetic in Q(r0)[λ] (:class:`field.AtR0`), the roots
+    isolated by Sturm's theorem, the sign of each polynomial g needs at a root by its Tarski
+    query on the root's interval (the sign itself: one root there)."""
+    memo, key = env.setdefault("points", {}), (str(ob["cp"]), str(r0))
+    if key not in memo:
+        cp, _parts = _polys(ob)
+        A, cpl = AtR0(Algebraic.of(r0)), in_lambda(cp)
+        memo[key] = (A, cpl, A.branches(cpl))
+    A, cpl, branches = memo[key]
+    done, pkey = env.setdefault("point_signs", {}), key + (str(ob["parts"]),)
+
+    def sign_on(k: int):
+        if (pkey, k) not in done:
+            at = {name: in_lambda(P) for name, P in _polys(ob)[1].items()}
+            done[pkey, k] = sign_of_condition(at, lambda P: A.taq(P, cpl, *branches[k]), A.mul, A.sub)
+        return done[pkey, k]
+    return len(branches), sign_on
+
+
+def branch_signs_at(ob: dict, env) -> None:
+    """The signs of g on the real eigenvalue branches of cp at an algebraic r0 (largest first,
+    each root by its multiplicity): :func:`point_signs`; "?" not claimed, "nonzero" ≠ 0."""
+    n, sign_on = point_signs(ob, ob["r"], env)
+    if n != len(ob["signs"]):
+        raise Failed(f"cp(r0, λ) has {n} real roots (with multiplicity), not {len(ob['signs'])}")
+    for j, s in enumerate(ob["signs"]):
+        got = "?" if s == "?" else sign_on(j)
+        if got != s and not (s == "nonzero" and got in (1, -1)):
+            raise Failed(f"branch {j}: the sign at r0 is {got}, not {s}")
+
+
+def load_table(ob: dict):
+    """The table's polynomials and cell ends, read."""
+    cp, parts = _polys(ob)
     ends = [Algebraic.of(e) for e in ob["ends"]]
     return cp, parts, ends
 
@@ -312,7 +353,7 @@ def sign_table(ob: dict, env) -> None:
                 continue
             if s == "undecided":
                 raise Unsupported(f"cell {k + 1}: the engine left branch {j} undecided")
-            got = sign_of_condition(parts, r0, lam)
+            got = sign_of_condition({name: at_r(P, r0) for name, P in parts.items()}, lam.sign_of)
             if got != s:
                 raise Failed(f"cell {k + 1}, branch {j}: the sign at r = {r0} is {got}, not {s}")
 
@@ -323,9 +364,8 @@ def _key(s):
 
 def signs_query(ob: dict, env) -> None:
     """The set of signs a verified table gives on one branch over ]lo, hi[: the union over the
-    cells that meet it (a branch absent on a cell gives "missing").  Signs at the critical
-    values themselves (interior cell ends) are not covered: they need arithmetic in Q(r₀)[λ]
-    for an algebraic r₀, which the kernel does not have."""
+    cells that meet it (a branch absent on a cell gives "missing"), and with include_points the
+    signs at the interior cell ends (critical values, algebraic r₀: :func:`point_signs`)."""
     table = env["obligations"].get(ob["table"])
     if table is None or table.get("kind") != "sign_table":
         raise Failed(f"no sign table {ob['table']!r}")
@@ -344,10 +384,12 @@ def signs_query(ob: dict, env) -> None:
         row = table["signs"][k]
         got.add(_key(row[branch]) if branch < len(row) else "missing")
     if ob.get("include_points", True):
-        for e in ends[1:-1]:
+        if "undecided" in ob["result"]:
+            raise Unsupported("the engine left a sign at a critical value undecided")
+        for k, e in enumerate(ends[1:-1]):
             if lo.compare(e) < 0 < hi.compare(e):
-                raise Unsupported("the sign at a critical value (an algebraic r) is needed: the kernel lacks "
-                                  "arithmetic in Q(r0)[λ]")
+                n, sign_on = point_signs(table, table["ends"][k + 1], env)
+                got.add(_key(sign_on(branch)) if branch < n else "missing")
     claimed = {_key(s) for s in ob["result"]}
     if got != claimed:
         raise Failed(f"the signs on branch {branch} are {sorted(got)}, not {sorted(claimed)}")
@@ -460,4 +502,4 @@ def unsupported(ob: dict, env) -> None:
 
 
 CHECKERS = {f.__name__: f for f in (root_count, algebraic, digits, compare, sign_at, identity, sign_table,
-                                    signs_query, signed, resultant, unsupported)}
+                                    signs_query, branch_signs_at, signed, resultant, unsupported)}

@@ -318,9 +318,10 @@ class SignTable:
         self._points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
 
     @property
-    @fact(facts.at_algebraic_r)
+    @fact(facts.table_points)
     def points(self) -> Lazy:
-        """The signs at the critical values (read by a proof: a fact the kernel cannot check)."""
+        """The signs at the critical values (read by a proof: the kernel re-derives each in
+        Q(r0)[λ], facts.branch_signs)."""
         return self._points
 
     @fact(facts.sign_query)
@@ -623,7 +624,7 @@ class Spectrum:
             prec *= 2
         return None
 
-    @fact(facts.at_algebraic_r)
+    @fact(facts.point_signs)
     def sign_at_point(self, cond: Condition, rc: Algebraic, maxprec: int = 1024):
         """Signs of g on the branches at an algebraic r (UNDECIDED where undecided: g
         vanishing or a pole there), or None when the branches cannot be isolated."""
@@ -800,7 +801,7 @@ class Spectrum:
             prec *= 2
         return None
 
-    @fact(facts.at_algebraic_r)
+    @fact(facts.vanishing)
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) (an expression or an element of
         ``poly.RING``) vanishes on branch ``branch`` at r = rc:

@@ -130,10 +130,11 @@ def sign_at(s, poly, alpha, *rest, **kw) -> dict:
 
 
 def _sign_code(s):
-    """A sign as the kernel reads it: 1, -1, 0, null (x not real), "missing", "undecided"."""
+    """A sign as the kernel reads it: 1, -1, 0, null (x not real), "missing", "undecided",
+    "nonzero"."""
     if s is None or s in (1, -1, 0) and not isinstance(s, str):
         return s if s is None else int(s)
-    return "missing" if s == "missing" else "undecided"
+    return s if s in ("missing", "nonzero") else "undecided"
 
 
 def cell_branches(answer, cell) -> dict:
@@ -169,9 +170,6 @@ def sign_query(result, table, branch, lo=None, hi=None, include_points=True):
     lo_ = table.interval[0] if lo is None else lo
     hi_ = table.interval[1] if hi is None else hi
     cells = [c for c in table.cells if not (c.hi <= lo_ or c.lo >= hi_)]
-    if include_points and len(cells) > 1:
-        raise ValueError("the sign at a critical value (an algebraic r) is needed: the kernel lacks "
-                         "arithmetic in Q(r0)[λ]")
     rows = []
     for c in cells:
         row = ["?"] * len(c.branches)
@@ -249,9 +247,57 @@ def resultant(holds: bool, f, g, poly, relation: str) -> dict:
             "poly": [rational(c) for c in P.all_coeffs()[::-1]], "relation": relation, "holds": bool(holds)}
 
 
-def at_algebraic_r(*args, **kwargs) -> dict:
-    """A sign on a branch at an algebraic r (a critical value): not in the kernel's language."""
-    return {"kind": "unsupported", "reason": "a sign at an algebraic r: the kernel lacks arithmetic in Q(r0)[λ]"}
+def _point_claims(signs, only=None) -> list:
+    """Signs on the branches at a point as the kernel reads them; "?" where nothing is claimed
+    (an undecided sign, or a branch other than ``only``)."""
+    out = []
+    for k, s in enumerate(signs):
+        code = _sign_code(s)
+        out.append("?" if code in ("undecided", "missing") or (only is not None and k != only) else code)
+    return out
+
+
+def branch_signs(signs, spectrum, cond, rc, only=None) -> dict:
+    """The signs of a condition on the real branches of cp at the algebraic r = rc (largest
+    first, a double root twice): the kernel isolates them in Q(rc)[λ] and signs g exactly."""
+    from .poly import ring_terms
+    if signs is None:
+        raise ValueError("the branches at this r were not isolated")
+    return {"kind": "branch_signs_at", "cp": ring_terms_data(ring_terms(spectrum.ring_cp)),
+            "parts": {k: ring_terms_data(v) for k, v in cond.terms.items() if v}, "r": number_of(rc),
+            "signs": _point_claims(signs, only)}
+
+
+def point_signs(answer, spectrum, cond, rc, *rest, **kw) -> dict:
+    """Spectrum.sign_at_point: the signs of a condition on every branch at rc."""
+    return branch_signs(answer, spectrum, cond, rc)
+
+
+def table_points(answer, table) -> list:
+    """SignTable.points: the signs at every critical value of the table."""
+    spectrum, cond = table.source
+    return [branch_signs(answer[k], spectrum, cond, rc) for k, rc in enumerate(table.critical)]
+
+
+def vanishing(answer, spectrum, h, rc, branch, *rest, **kw) -> dict:
+    """Spectrum.vanishes_at: the polynomial h is 0 (or not) on ``branch`` at rc."""
+    from sympy.polys.rings import PolyElement
+
+    from .branches import Condition
+    from .poly import RING, to_ring
+    H = h if isinstance(h, PolyElement) else to_ring(sp.expand(sp.sympify(h)))
+    cond = Condition("h", (H, RING.zero), (RING.one, RING.zero), None, None)
+    n = len(spectrum.branches_at(rc) or [])
+    if branch >= n:
+        raise ValueError("the branch is not isolated at this r")
+    return branch_signs([0 if answer else "nonzero"] * n, spectrum, cond, rc, only=branch)
+
+
+def table_point(answer, table, rc, branch) -> dict:
+    """The sign of a table on ``branch`` at its critical value rc."""
+    spectrum, cond = table.source
+    k = next(i for i, c in enumerate(table.critical) if c == rc)
+    return branch_signs(table.points[k], spectrum, cond, rc, only=branch)
 
 
 def determinant_identity(holds: bool, matrix, rhs) -> dict:

@@ -194,9 +194,9 @@ def sign_in_cell(T, branch: int, lo, hi):
 
 def _sign_at_facts(answer, T, rc, branch):
     """For the kernel: a point of a cell has the cell's sign (the cell's signs query and rc
-    inside it); a critical value needs arithmetic the kernel lacks."""
+    inside it); at a critical value, the table's signs there (re-derived in Q(rc)[λ])."""
     if any(c == rc for c in T.critical):
-        return facts.at_algebraic_r()
+        return facts.table_point(answer, T, rc, branch)
     cell = next(c for c in T.cells if c.lo < rc < c.hi)
     return [facts.sign_query([answer], T, branch, cell.lo, cell.hi, include_points=False),
             facts.compare(1, rc, cell.lo), facts.compare(-1, rc, cell.hi)]

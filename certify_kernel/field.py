@@ -1,0 +1,174 @@
+"""The real roots of a polynomial P(r0, λ) and the sign of another polynomial at each, for a
+real algebraic r0: exact arithmetic in Q[r]/(m), m the polynomial of r0 (m(r0) = 0, so
+reducing a coefficient modulo m keeps its value at r0), with no inverse needed.  Polynomials
+in λ are lists of polynomials in r (lowest degree first, both ways)."""
+from __future__ import annotations
+
+from fractions import Fraction
+from math import gcd as igcd
+
+from .poly import add, divmod_, gcd, integer_primitive, mul, scale, sign, sub, value
+from .sturm import Algebraic, count
+
+
+class AtR0:
+    """Signs at r0 of polynomials in r, and Sturm–Tarski queries in λ over Q(r0)."""
+
+    def __init__(self, r0: Algebraic):
+        self.r0 = r0
+        while not r0.rational and r0.hi - r0.lo > Fraction(1, 2 ** 60):   # cheap enclosures decide most signs
+            r0.bisect()
+
+    def reduce(self, c: list) -> list:
+        """c mod m: the same value at r0 (m(r0) = 0)."""
+        return c if self.r0.rational or len(c) < len(self.r0.p) else divmod_(c, self.r0.p)[1]
+
+    def sign(self, c: list) -> int:
+        """sign c(r0).  0 exactly when gcd(c, m) has a root in r0's interval (the one root of m
+        there is r0).  Else that at the middle of the interval, once :func:`_enclose` proves it
+        (true after enough bisections, as c(r0) ≠ 0)."""
+        c, r0, tested = self.reduce(c), self.r0, False
+        while c:
+            if r0.rational:
+                return sign(value(c, r0.lo))
+            s = _enclose(c, r0.lo, r0.hi)
+            if s:
+                return s
+            if not tested:
+                g, tested = gcd(c, r0.p), True
+                if len(g) > 1 and count(g, r0.lo, r0.hi) == 1:
+                    return 0
+            for _ in range(8):
+                r0.bisect()
+        return 0
+
+    def trim(self, P: list) -> list:
+        """P without its leading coefficients that vanish at r0 (the same P(r0, λ))."""
+        P = [self.reduce(c) for c in P]
+        while P and self.sign(P[-1]) == 0:
+            P.pop()
+        return P
+
+    def mul(self, P: list, Q: list) -> list:
+        """P·Q in Q[r][λ] (Cauchy product), coefficients reduced modulo m."""
+        out: list = [[] for _ in range(max(len(P) + len(Q) - 1, 0))]
+        for i, a in enumerate(P):
+            for j, b in enumerate(Q):
+                out[i + j] = add(out[i + j], mul(a, b))
+        return [self.reduce(c) for c in out]
+
+    def sub(self, P: list, Q: list) -> list:
+        """P − Q in Q[r][λ]."""
+        return [sub(P[i] if i < len(P) else [], Q[i] if i < len(Q) else []) for i in range(max(len(P), len(Q)))]
+
+    def remainder(self, A: list, B: list) -> list:
+        """A positive multiple at r0 of −rem(A, B) in Q(r0)[λ] (B trimmed, lc B(r0) ≠ 0): the
+        pseudo-division lc(B)^k·A = Q·B + R, so −rem = −R / lc(B)^k, of the sign of −R·sign(lc B)^k."""
+        R, lb, k = list(A), B[-1], 0
+        while len(R) >= len(B):
+            c, shift = R[-1], len(R) - len(B)
+            R = [mul(x, lb) for x in R]
+            for j, y in enumerate(B):
+                R[shift + j] = sub(R[shift + j], mul(c, y))
+            R, k = self.trim(R[:-1]), k + 1
+        s = -(self.sign(lb) ** k)
+        return _positive_content_free([scale(x, s) for x in R])
+
+    def sequence(self, P: list, Q: list) -> list:
+        """The signed remainder sequence SRemS(P, Q) over Q(r0), each term up to a positive factor."""
+        seq = [_positive_content_free(self.trim(P)), _positive_content_free(self.trim(Q))]
+        while seq[-1]:
+            seq.append(self.remainder(seq[-2], seq[-1]))
+        return seq[:-1]
+
+    def variations(self, seq: list, x) -> int:
+        """Sign changes of the sequence at λ = x (rational), or at ±∞ ("+inf", "-inf": the signs
+        of the leading terms), zeros dropped."""
+        signs = [s for s in (self.sign(P[-1]) * (-1 if x == "-inf" and len(P) % 2 == 0 else 1) if isinstance(x, str)
+                             else self.at(P, x) for P in seq) if s]
+        return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
+
+    def taq(self, Q: list, P: list, a, b, seq=None) -> int:
+        """Σ sign Q(r0, λ) over the distinct roots λ of P(r0, λ) in ]a, b[ (a, b rational or
+        ±∞, not roots): the Sturm–Tarski theorem, Var(SRemS(P, P'·Q); a) − Var(...; b), over
+        the real closed field R ⊃ Q(r0) (Basu–Pollack–Roy, Thm 2.73; P need not be square-free).
+        Q = 1 (``seq`` given: SRemS(P, P')) is Sturm's theorem, the number of distinct roots."""
+        if seq is None:
+            seq = self.sequence(P, self.mul(_d(P), Q))
+        return self.variations(seq, a) - self.variations(seq, b)
+
+    def roots(self, P: list) -> tuple[list, list]:
+        """SRemS(P, P') and the distinct real roots of P(r0, λ), largest first, as intervals
+        [a, b] holding one each in ]a, b[: the count on ]−∞, ∞[ (Sturm), a power of 2 B with all
+        of them in ]−B, B[, then bisection at rationals that are not roots."""
+        P = self.trim(P)
+        if not P:
+            raise ValueError("the polynomial vanishes identically at r0")
+        seq = self.sequence(P, _d(P))
+        total, B = self.taq([], P, "-inf", "+inf", seq), Fraction(1)
+        while self.at(P, B) == 0 or self.at(P, -B) == 0 or self.taq([], P, -B, B, seq) != total:
+            B *= 2
+        out, todo = [], [(-B, B, total)]
+        while todo:
+            lo, hi, n = todo.pop()
+            if n == 1:
+                out.append([lo, hi])
+            elif n > 1:
+                mid = (lo + hi) / 2
+                while self.at(P, mid) == 0:      # a rational in ]lo, hi[ that is not a root
+                    mid = (mid + hi) / 2
+                left = self.taq([], P, lo, mid, seq)
+                todo += [(lo, mid, left), (mid, hi, n - left)]
+        return seq, sorted(out, reverse=True)
+
+    def at(self, P: list, x) -> int:
+        """sign P(r0, x) for a rational x (Horner's rule in λ gives P(r, x) ∈ Q[r])."""
+        out: list = []
+        for c in reversed(P):
+            out = add(scale(out, Fraction(x)), c)
+        return self.sign(out)
+
+    def branches(self, P: list) -> list:
+        """The real roots of P(r0, λ), largest first, each repeated by its multiplicity: 1 when
+        the last term of SRemS(P, P') (gcd(P, P') at r0) is constant in λ, else the least k
+        with P^(k) ≠ 0 there, each tested by a Tarski query on the root's interval."""
+        seq, out = self.roots(P)
+        if len(seq[-1]) == 1:
+            return out
+        mult = []
+        for iv in out:
+            D, k = _d(P), 1
+            while self.taq(D, P, *iv) == 0:
+                D, k = _d(D), k + 1
+            mult += [iv] * k
+        return mult
+
+
+def _enclose(c: list, lo: Fraction, hi: Fraction) -> int:
+    """The sign of c ∈ Q[r] on [lo, hi] when it is that at the centre x: |c(x)| > w·Σ k|c_k|M^(k−1)
+    (w the half-width, M = |x| + w), a bound of |c − c(x)| there (the mean value theorem); else
+    0.  In integers: times d·D^n > 0 (x = X/D, w = W/D, d the common denominator of c)."""
+    x, w = (lo + hi) / 2, (hi - lo) / 2
+    D = d = x.denominator * w.denominator // igcd(x.denominator, w.denominator)
+    X, W = int(x * D), int(w * D)
+    for q in c:
+        d = d * q.denominator // igcd(d, q.denominator)
+    val = bound = 0
+    for k, q in enumerate(c):
+        val += int(q * d) * X ** k * D ** (len(c) - 1 - k)
+        bound += k * abs(int(q * d)) * (abs(X) + W) ** (k - 1) * W * D ** (len(c) - 1 - k) if k else 0
+    return (1 if val > 0 else -1) if abs(val) > bound else 0
+
+
+def _d(P: list) -> list:
+    """∂P/∂λ."""
+    return [scale(c, i) for i, c in enumerate(P)][1:]
+
+
+def _positive_content_free(P: list) -> list:
+    """P divided by the positive rational content of its coefficients (a positive factor
+    changes no sign)."""
+    flat = integer_primitive([x for c in P for x in c])     # a positive multiple: igcd ≥ 0
+    it = iter(Fraction(x) for x in flat)
+    return [[next(it) for _ in c] for c in P]
+
