@@ -152,57 +152,6 @@ def squarefree(p: list) -> list:
     return monic(divmod_(p, g)[0]) if len(g) > 1 else monic(p)
 
 
-def determinant(rows: list) -> Fraction:
-    """The determinant by Gaussian elimination over Q (row operations of the third kind keep
-    it; a swap changes its sign; it is the product of the pivots of a triangular matrix)."""
-    a = [[Fraction(x) for x in row] for row in rows]
-    n, det = len(a), Fraction(1)
-    for k in range(n):
-        piv = next((i for i in range(k, n) if a[i][k] != 0), None)
-        if piv is None:
-            return Fraction(0)
-        if piv != k:
-            a[k], a[piv] = a[piv], a[k]
-            det = -det
-        det *= a[k][k]
-        for i in range(k + 1, n):
-            f = a[i][k] / a[k][k]
-            if f:
-                for j in range(k, n):
-                    a[i][j] -= f * a[k][j]
-    return det
-
-
-def sylvester_resultant(p: list, q: list, m: int, n: int) -> Fraction:
-    """Res(p, q) as the determinant of the Sylvester matrix of p, q with *formal* degrees m, n
-    (p, q padded with zeros).  The determinant is a polynomial in the coefficients, so it
-    commutes with specialising a parameter, which :func:`resultant_in` relies on."""
-    p = list(p) + [Fraction(0)] * (m + 1 - len(p))
-    q = list(q) + [Fraction(0)] * (n + 1 - len(q))
-    size = m + n
-    rows = []
-    for i in range(n):
-        rows.append([0] * i + p[::-1] + [0] * (size - m - 1 - i))
-    for i in range(m):
-        rows.append([0] * i + q[::-1] + [0] * (size - n - 1 - i))
-    return determinant(rows)
-
-
-def interpolate(xs: list, ys: list) -> list:
-    """The polynomial of degree < len(xs) through the points (distinct xs): Newton's divided
-    differences, expanded by Horner's scheme.  Unique, since a non-zero polynomial of degree
-    < n has fewer than n roots."""
-    c = [Fraction(y) for y in ys]
-    n = len(xs)
-    for k in range(1, n):
-        for i in range(n - 1, k - 1, -1):
-            c[i] = (c[i] - c[i - 1]) / (xs[i] - xs[i - k])
-    out: list = []
-    for i in range(n - 1, -1, -1):
-        out = add(mul(out, [-xs[i], Fraction(1)]), [c[i]])
-    return out
-
-
 # --- multivariate: dict exponent-tuple -> Fraction -------------------------------------
 
 def mpoly(data: dict, nvars: int | None = None) -> dict:
