@@ -38,6 +38,7 @@ from . import numberfield as nf
 from .algebraic import Algebraic, sign_at, to_fmpq
 from .balls import GUARD, decide, precision
 from .poly import (
+    MCTX,
     RING,
     Q,
     Sf,
@@ -46,6 +47,7 @@ from .poly import (
     expr,
     irreducible_factors,
     lam,
+    lr_to_ring,
     mpoly_to_ring,
     mpoly_to_univariate,
     primitive,
@@ -95,11 +97,38 @@ def norm_mpoly(P0, P1, delta) -> flint.fmpz_mpoly:
     """A positive integer multiple of P₀² - P₁²Δ (polynomials of the engine's ring in
     r, λ) as a primitive ``fmpz_mpoly`` in (r, λ, s), by python-flint: the same zeros,
     which is all a norm is used for."""
-    A0, d0 = _integer_mpoly(P0)
-    A1, d1 = _integer_mpoly(P1)
-    AD, dD = _integer_mpoly(delta)
+    return _norm_of(_integer_mpoly(P0), _integer_mpoly(P1), _integer_mpoly(delta))
+
+
+def _norm_of(P0, P1, delta) -> flint.fmpz_mpoly:
+    """:func:`norm_mpoly` from the pairs (A, d) of :func:`_integer_mpoly`."""
+    (A0, d0), (A1, d1), (AD, dD) = P0, P1, delta
     M = A0 * A0 * (d1 * d1 * dD) - A1 * A1 * AD * (d0 * d0)     # d0² d1² dD (P0² - P1²Δ)
     return M if M.is_zero() else M / M.content()
+
+
+_DELTAS: dict = {}               # id of a Δ of the engine's ring -> (Δ, its (A, d), its terms)
+caches.register(_DELTAS.clear)
+
+
+def _delta_entry(delta) -> tuple:
+    entry = _DELTAS.get(id(delta))
+    if entry is None or entry[0] is not delta:
+        if len(_DELTAS) > 1000:
+            _DELTAS.clear()
+        entry = _DELTAS[id(delta)] = (delta, _integer_mpoly(delta), ring_terms(delta))
+    return entry
+
+
+def _integer_delta(delta) -> tuple:
+    """:func:`_integer_mpoly` of Δ (or of c), memoised by identity (every condition with x
+    shares its Δ and c)."""
+    return _delta_entry(delta)[1]
+
+
+def _delta_terms(delta) -> list:
+    """:func:`poly.ring_terms` of Δ (or of 0 when there is none), memoised by identity."""
+    return ring_terms(RING.zero) if delta is None else list(_delta_entry(delta)[2])
 
 
 def norm(P0, P1, delta):
@@ -140,17 +169,56 @@ def _split_sqrt(P, delta):
     return P0, P1
 
 
+def _lrq_terms(q) -> list[tuple[flint.fmpq, int, int]]:
+    """:func:`poly.ring_terms` of an fmpq_mpoly in (λ, r) (lex, λ first: the same terms in
+    the same order as those of the equal element of the engine's ring)."""
+    return [(c, er, el) for (el, er), c in q.to_dict().items()]
+
+
+def _lrq_to_mpoly(q) -> tuple:
+    """(A, d): q = A/d with A an integer ``fmpz_mpoly`` in (r, λ, s) and d > 0 the lcm of
+    q's denominators (q an fmpq_mpoly in (λ, r)): :func:`_integer_mpoly` without the ring."""
+    items = q.to_dict().items()
+    d = flint.fmpz(1)
+    for _m, c in items:
+        d = d.lcm(c.q)
+    return MCTX.from_dict({(er, el, 0): (c * d).p for (el, er), c in items}), d
+
+
 class Condition:
-    """g = N/D with N = N₀ + N₁√Δ, D = D₀ + D₁√Δ, over Q[r, λ]; built once per (g, x)."""
+    """g = N/D with N = N₀ + N₁√Δ, D = D₀ + D₁√Δ, over Q[r, λ]; built once per (g, x).
+
+    ``lrq`` (optional): N₀, N₁, D₀ as fmpq_mpoly in (λ, r) (D₁ = 0), the same polynomials:
+    the terms and norms are read from them, and ``N``, ``D`` (elements of the engine's
+    ring) are made only when first asked for (an exact zero test)."""
 
     _cache: dict = {}
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
 
-    def __init__(self, name, N, D, delta, c):
-        self.name, self.N, self.D, self.delta, self.c = name, N, D, delta, c
+    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None):
+        self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
+        self._lrq = lrq
         self.degenerate = []
-        self.terms = {k: ring_terms(p) for k, p in
-                      (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
+        if lrq is None:
+            self.terms = {k: ring_terms(p) for k, p in
+                          (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
+        else:
+            self.terms = {"N0": _lrq_terms(lrq[0]), "N1": _lrq_terms(lrq[1]), "D0": _lrq_terms(lrq[2]), "D1": [],
+                          "delta": _delta_terms(delta)}
+        # the highest exponent of r or λ in any part: how many powers a ball evaluation needs
+        self.top = max((max(i, j) for ts in self.terms.values() for _c, i, j in ts), default=0)
+
+    @property
+    def N(self) -> tuple:
+        if self._N is None:
+            self._N = (lr_to_ring(self._lrq[0]), lr_to_ring(self._lrq[1]))
+        return self._N
+
+    @property
+    def D(self) -> tuple:
+        if self._D is None:
+            self._D = (lr_to_ring(self._lrq[2]), RING.zero)
+        return self._D
 
     @classmethod
     def of(cls, name: str, g, fixed_point: FixedPoint | None = None) -> Condition:
@@ -179,10 +247,16 @@ class Condition:
         integer ``fmpz_mpoly`` in (r, λ, s) (positive multiples: the same zeros); memoised."""
         if getattr(self, "_norms", None) is None:
             out = []
-            for label, (P0, P1) in (("N", self.N), ("D", self.D)):
-                out.append((label, norm_mpoly(P0, P1, self.delta) if P1 else ring_to_mpoly(P0)))
+            if self._lrq is None:
+                for label, (P0, P1) in (("N", self.N), ("D", self.D)):
+                    out.append((label, norm_mpoly(P0, P1, self.delta) if P1 else ring_to_mpoly(P0)))
+            else:
+                N0, N1, D0 = self._lrq
+                out.append(("N", _lrq_to_mpoly(N0)[0] if N1.is_zero() else
+                            _norm_of(_lrq_to_mpoly(N0), _lrq_to_mpoly(N1), _integer_delta(self.delta))))
+                out.append(("D", _lrq_to_mpoly(D0)[0]))
             if self.delta is not None:
-                out += [("delta", ring_to_mpoly(self.delta)), ("c", ring_to_mpoly(self.c))]
+                out += [("delta", _integer_delta(self.delta)[0]), ("c", _integer_delta(self.c)[0])]
             self._norms = [(label, p) for label, p in out if not p.is_constant()]
         return self._norms
 
@@ -207,8 +281,7 @@ def _powers(z, n):
 def _sign_ball(cond: Condition, R, L, delta_is_zero=False):
     """Sign of g at balls R, L (r and λ); None when x is not real (Δ < 0); '?' if
     the balls do not decide it.  ``delta_is_zero``: Δ = 0 there is known exactly."""
-    n = max((max(i, j) for ts in cond.terms.values() for _c, i, j in ts), default=0)
-    Rp, Lp = _powers(R, n), _powers(L, n)
+    Rp, Lp = _powers(R, cond.top), _powers(L, cond.top)
     S = flint.arb(0)
     if cond.delta is not None and not delta_is_zero:
         dv = _eval_terms(cond.terms["delta"], Rp, Lp)
@@ -230,8 +303,7 @@ def ball_value(cond: Condition, R, L) -> flint.arb:
     """g = N₀/D₀ at balls R, L, for a condition without √Δ."""
     if cond.delta is not None:
         raise ValueError("ball_value needs a condition without √Δ")
-    n = max((max(i, j) for ts in cond.terms.values() for _c, i, j in ts), default=0)
-    Rp, Lp = _powers(R, n), _powers(L, n)
+    Rp, Lp = _powers(R, cond.top), _powers(L, cond.top)
     return _eval_terms(cond.terms["N0"], Rp, Lp) / _eval_terms(cond.terms["D0"], Rp, Lp)
 
 
@@ -420,6 +492,8 @@ class Spectrum:
         self._common = {}                  # (id of h, key of rc) -> (h, common roots of cp and h there)
         self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
         self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
+        self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
+        self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -498,17 +572,25 @@ class Spectrum:
         Sturm sequences, their number checked against python-flint's isolation."""
         polys = [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])
         for label, e in (cond.labelled_norms() if cond is not None else []):
-            R = self.resultant(e)
+            R = self._resultant_of(e)
             if R.is_zero():
                 assert cond is not None  # e is one of cond's norms
                 R = self._resultant_off_common_factor(mpoly_to_ring(e), cond, label)
             polys.append(R)
         lo, hi = _alg(lo), _alg(hi)
         roots = []
-        for f in {str(f): f for p in polys for f, _m in irreducible_factors(p)}.values():
+        for f in {k: f for p in polys for f, k in self._factors(p)}.values():
             checked_real_root_count(f)          # Sturm and python-flint agree (memoised per factor)
-            roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if lo < a < hi]
-        return sorted(roots)
+            roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
+        return sorted_numbers(roots)
+
+    def _factors(self, p) -> list:
+        """(factor, its text) for the irreducible factors of p, memoised by the identity of p
+        (the discriminant and the cached resultants are the same objects in every table)."""
+        entry = self._factor_ids.get(id(p))
+        if entry is None or entry[0] is not p:
+            entry = self._factor_ids[id(p)] = (p, [(f, str(f)) for f, _m in irreducible_factors(p)])
+        return entry[1]
 
     def table(self, name: str, g, lo, hi, fixed_point: FixedPoint | None = None) -> SignTable:
         """:meth:`sign_table` of the condition ``g`` (named ``name``; x the fixed point
@@ -660,7 +742,7 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided."""
         P0, P1 = P
-        if not self.vanishes_at(norm(P0, P1, delta), rc, k):
+        if not self.vanishes_at(self._norm_of(P0, P1, delta), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -714,6 +796,15 @@ class Spectrum:
             return False
         G, _ = nf.squarefree(G, m)
         return lambda prec: nf.real_roots(G, rc, prec)
+
+    def _norm_of(self, P0, P1, delta):
+        """:func:`norm` of P₀ + P₁√Δ, memoised by the identity of the three (the same object
+        for the same parts: the exact tests at other points find their work done)."""
+        key = (id(P0), id(P1), id(delta))
+        entry = self._norms.get(key)
+        if entry is None or entry[0] is not P0 or entry[1] is not P1 or entry[2] is not delta:
+            entry = self._norms[key] = (P0, P1, delta, norm(P0, P1, delta))
+        return entry[3]
 
     def _resultant_of(self, h) -> flint.fmpz_poly:
         """:meth:`resultant` of the polynomial object h, memoised by its identity (the same h
@@ -913,6 +1004,30 @@ def _at_r(P, t) -> flint.fmpq_poly:
     n = max(coeffs, default=0)
     return flint.fmpq_poly([coeffs.get(j, Q(0)) for j in range(n + 1)])
 
+
+
+def _apart(a: Algebraic, b: Algebraic) -> bool:
+    """a < b read off the isolating intervals alone (no refinement, no comparison): True
+    only when it is certain that way; False says nothing."""
+    return a.hi < b.lo or (a.hi == b.lo and not (a.lo == a.hi and b.lo == b.hi))
+
+
+def strictly_between(lo, a: Algebraic, hi) -> bool:
+    """lo < a < hi, exact: from the isolating intervals where they are apart (where an exact
+    comparison would not refine them either), else by exact comparisons."""
+    if isinstance(lo, Algebraic) and isinstance(hi, Algebraic) and _apart(lo, a) and _apart(a, hi):
+        return True
+    return lo < a < hi
+
+
+def sorted_numbers(numbers: list) -> list:
+    """``sorted(numbers)`` (distinct Algebraic numbers): by the left ends of the isolating
+    intervals when consecutive intervals are then apart (the order is certain, and exact
+    comparisons would refine nothing), else by exact comparisons."""
+    out = sorted(numbers, key=lambda a: a.lo)
+    if all(_apart(a, b) for a, b in zip(out, out[1:])):
+        return out
+    return sorted(numbers)
 
 
 def _alg(a) -> Algebraic:

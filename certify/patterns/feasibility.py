@@ -20,15 +20,21 @@ import sympy as sp
 
 from certify.algebra import facts
 from certify.algebra.algebraic import Algebraic
-from certify.algebra.branches import NO_BRANCH, X_MINUS, X_PLUS, Condition, Spectrum, simplest_between
+from certify.algebra.branches import (
+    NO_BRANCH,
+    X_MINUS,
+    X_PLUS,
+    Condition,
+    Spectrum,
+    simplest_between,
+    strictly_between,
+)
 from certify.algebra.poly import (
     FIELD,
-    RING,
     Q,
     field_to_frac,
     frac_to_field,
     lam,
-    lr_to_ring,
     ring_to_lrq,
     to_field,
     to_ring,
@@ -101,8 +107,8 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
         A, cc = ring_to_lrq(fp.amd), ring_to_lrq(fp.c)
         N0, N1, D0 = 2 * cc * n0 * d1 + A * n1 * d0, fp.sigma * n1 * d0, 2 * cc * d0 * d1
         delta, c = fp.delta, fp.c
-    N0, N1, D0 = (lr_to_ring(divmod(e, C)[1]) for e in (N0, N1, D0))
-    return Condition(req.name, (N0, N1), (D0, RING.zero), delta, c)
+    N0, N1, D0 = (divmod(e, C)[1] for e in (N0, N1, D0))
+    return Condition(req.name, None, None, delta, c, lrq=(N0, N1, D0))
 
 
 def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:
@@ -318,7 +324,7 @@ class Analysis:
             if p.is_point:
                 yield self._point(R, p, req, T)
                 continue
-            cuts = [c for c in T.critical if p.lo < c < p.hi]
+            cuts = [c for c in T.critical if strictly_between(p.lo, c, p.hi)]
             ends = [p.lo] + cuts + [p.hi]
             for a, b in zip(ends, ends[1:]):
                 ok = _meets(sign_in_cell(T, R.branch, a, b), req.sign)
