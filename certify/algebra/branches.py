@@ -775,15 +775,15 @@ class Spectrum:
            pseudo-remainders at a ball instead loses the branches of (ab)^12(cb)^12 at
            1024 bits."""
         m = nf.modulus(rc)
+        if not isinstance(h, PolyElement):
+            h = to_ring(sp.expand(expr(h)))
+        R = self._resultant_of(h) if self.lc.degree() <= 0 else None
+        if R is not None and not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
+            return False                  # route 1 (then h(rc, λ) ≢ 0 too: the resultant vanishes where it is)
         hk = nf.kpoly(h, m)
         if not hk:
             return True
-        if not isinstance(h, PolyElement):
-            h = to_ring(sp.expand(expr(h)))
-        if self.lc.degree() <= 0:
-            R = self._resultant_of(h)
-            if not R.is_zero() and not (flint.fmpq_poly(R) % m).is_zero():
-                return False
+        if R is not None:
             if not R.is_zero():
                 if self.branches_at(rc) is not None and nf.divides(self._sqf[rc.key()], hk, m):
                     sqf = self._sqf[rc.key()]          # every root of cp(rc, λ) is a root of h

@@ -160,7 +160,7 @@ class PatternResult:
     system: str
     explanation: str
     interval: tuple
-    cp: str
+    cp_text: object                   # cp printed, or () -> that text (printed when first read)
     exists: list                      # [{branch, fixed_point, set, pieces}], non-empty sets only
     feasible: list
     stable: list
@@ -177,6 +177,13 @@ class PatternResult:
         """What only a reader needs, computed when first read: the period matrix, the
         factored discriminant and the datum's formulas (empty without ``formulas``)."""
         return self.formulas() if self.formulas is not None else ([], "", {})
+
+    @property
+    def cp(self) -> str:
+        """cp(M_w) as printed (collected in λ), computed when first read."""
+        if callable(self.cp_text):
+            self.cp_text = self.cp_text()
+        return self.cp_text
 
     @property
     def matrix(self) -> list:
@@ -355,7 +362,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
         M = [[show(e) for e in row] for row in cand.M.tolist()]
         disc = sp.Poly(sp.discriminant(sp.Poly(cp, lam)).as_expr(), r)       # factored by python-flint
         return M, show(factor_flint([Q(int(c.p), int(c.q)) for c in disc.all_coeffs()[::-1]])), datum(cand)
-    res = PatternResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cp, lam)),
+    res = PatternResult(word, normal, system_name, why, (lo, hi), lambda: show(sp.collect(cp, lam)),
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
                         undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None)
     res.verdict = verdict(res)
