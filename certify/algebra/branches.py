@@ -205,8 +205,11 @@ class Condition:
         else:
             self.terms = {"N0": _lrq_terms(lrq[0]), "N1": _lrq_terms(lrq[1]), "D0": _lrq_terms(lrq[2]), "D1": [],
                           "delta": _delta_terms(delta)}
-        # the highest exponent of r or λ in any part: how many powers a ball evaluation needs
-        self.top = max((max(i, j) for ts in self.terms.values() for _c, i, j in ts), default=0)
+
+    @cached_property
+    def top(self) -> int:
+        """The highest exponent of r or λ in any part: how many powers a ball evaluation needs."""
+        return max((max(i, j) for ts in self.terms.values() for _c, i, j in ts), default=0)
 
     @property
     def N(self) -> tuple:
@@ -278,20 +281,58 @@ def _powers(z, n):
     return out
 
 
+def _horner_form(terms) -> tuple:
+    """The terms (c, i, j) of a polynomial in r, λ as ([(j, P_j)], d): the polynomial is
+    Σ_j P_j(r) λ^j / d with P_j ∈ Z[r] (fmpz_poly) and d > 0 the lcm of the denominators."""
+    d = flint.fmpz(1)
+    for c, _i, _j in terms:
+        d = d.lcm(c.q)
+    by_j: dict = {}
+    for c, i, j in terms:
+        by_j.setdefault(j, {})[i] = (c * d).p
+    return [(j, flint.fmpz_poly([row.get(i, 0) for i in range(max(row) + 1)])) for j, row in sorted(by_j.items())], d
+
+
+def _eval_form(form, R, L) -> flint.arb:
+    """A ball around Σ_j P_j(R) L^j / d (:func:`_horner_form`): each P_j at the ball R by
+    python-flint, then Horner in L, at the working precision."""
+    rows, d = form
+    if not rows:
+        return flint.arb(0)
+    total = flint.arb(0)
+    k = rows[-1][0]
+    for j, P in reversed(rows):
+        while k > j:
+            total *= L
+            k -= 1
+        total += P(R)
+    while k > 0:
+        total *= L
+        k -= 1
+    return total / d
+
+
+def _forms(cond: Condition) -> dict:
+    forms = getattr(cond, "_forms", None)
+    if forms is None:
+        forms = cond._forms = {k: _horner_form(ts) for k, ts in cond.terms.items()}
+    return forms
+
+
 def _sign_ball(cond: Condition, R, L, delta_is_zero=False):
     """Sign of g at balls R, L (r and λ); None when x is not real (Δ < 0); '?' if
     the balls do not decide it.  ``delta_is_zero``: Δ = 0 there is known exactly."""
-    Rp, Lp = _powers(R, cond.top), _powers(L, cond.top)
+    forms = _forms(cond)
     S = flint.arb(0)
     if cond.delta is not None and not delta_is_zero:
-        dv = _eval_terms(cond.terms["delta"], Rp, Lp)
+        dv = _eval_form(forms["delta"], R, L)
         if dv < 0:
             return None
         if not dv > 0:
             return UNDECIDED
         S = dv.sqrt()
-    num = _eval_terms(cond.terms["N0"], Rp, Lp) + _eval_terms(cond.terms["N1"], Rp, Lp) * S
-    den = _eval_terms(cond.terms["D0"], Rp, Lp) + _eval_terms(cond.terms["D1"], Rp, Lp) * S
+    num = _eval_form(forms["N0"], R, L) + _eval_form(forms["N1"], R, L) * S
+    den = _eval_form(forms["D0"], R, L) + _eval_form(forms["D1"], R, L) * S
     sn = 1 if num > 0 else -1 if num < 0 else None
     sd = 1 if den > 0 else -1 if den < 0 else None
     if sn is None or sd is None:
