@@ -315,7 +315,13 @@ def _eval_form(form, R, L) -> flint.arb:
 def _forms(cond: Condition) -> dict:
     forms = getattr(cond, "_forms", None)
     if forms is None:
-        forms = cond._forms = {k: _horner_form(ts) for k, ts in cond.terms.items()}
+        forms = cond._forms = {k: _horner_form(ts) for k, ts in cond.terms.items()
+                               if k != "delta" or cond.delta is None}
+        if cond.delta is not None:           # every condition with x shares its Δ: one form
+            entry = _delta_entry(cond.delta)
+            if len(entry) < 4:
+                entry = _DELTAS[id(cond.delta)] = entry + (_horner_form(entry[2]),)
+            forms["delta"] = entry[3]
     return forms
 
 
