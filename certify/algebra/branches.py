@@ -245,6 +245,11 @@ class Condition:
         """Polynomials in r, λ whose zeros contain every zero and pole of g."""
         return [p for _label, p in self.labelled_norms()]
 
+    def share_norms(self, twin: Condition) -> None:
+        """Take the norms of ``twin``, a condition with the same N₀, D₀, Δ, c and N₁ up to
+        its sign (the other fixed point): the same polynomials N₀² - N₁²Δ, D₀, Δ, c."""
+        self._norms = twin.labelled_norms()
+
     def labelled_norms(self) -> list:
         """The norms with what they come from: "N", "D", "delta", "c", as primitive
         integer ``fmpz_mpoly`` in (r, λ, s) (positive multiples: the same zeros); memoised."""

@@ -260,6 +260,7 @@ class Analysis:
         self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd_ring or cand.abcd, self.spec.ring_cp)} \
             if cand.abcd is not None else {NO_X: None}
         self.tables = {}
+        self._twins: dict = {}          # id of a requirement with x -> (it, its first Condition)
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
         self.regions = [Region(k, f, [], [], []) for k in range(nb) for f in self.fps]
@@ -283,8 +284,16 @@ class Analysis:
             return None
         key = (req.name, fname if req.has_x else "", tuple(_key(e) for e in hull))
         if key not in self.tables:
-            self.tables[key] = self.spec.sign_table(condition(req, self.spec.lrq_cp,
-                                                               self.fps[fname] if req.has_x else None), *hull)
+            cond = condition(req, self.spec.lrq_cp, self.fps[fname] if req.has_x else None)
+            if req.has_x:
+                # x₊ and x₋ differ only in the sign of N₁ (σ): the norms N₀² - N₁²Δ, D₀, Δ and c
+                # are the same polynomials, computed once for the requirement
+                twin = self._twins.get(id(req))
+                if twin is not None and twin[0] is req:
+                    cond.share_norms(twin[1])
+                else:
+                    self._twins[id(req)] = (req, cond)
+            self.tables[key] = self.spec.sign_table(cond, *hull)
         return self.tables[key]
 
     def impose(self, req: Requirement):
