@@ -452,12 +452,12 @@ class SignTable:
         hi = self.interval[1] if hi is None else hi
         out = set()
         for cell in self.cells:
-            if cell.hi <= lo or cell.lo >= hi:
+            if at_most(cell.hi, lo) or at_most(hi, cell.lo):
                 continue
             out.add(cell.signs[branch] if branch < len(cell.signs) else NO_BRANCH)
         if include_points:
             for k, rc in enumerate(self.critical):
-                if lo < rc < hi:
+                if less(lo, rc) and less(rc, hi):
                     pt = self.points[k]
                     out.add(UNDECIDED if pt is None else pt[branch] if branch < len(pt) else NO_BRANCH)
         return out
@@ -468,8 +468,8 @@ class SignTable:
 
     def _around(self, point):
         """The cells on either side of the critical value ``point`` (None where there is none)."""
-        left = [c for c in self.cells if c.hi == point]
-        right = [c for c in self.cells if c.lo == point]
+        left = [c for c in self.cells if same(c.hi, point)]
+        right = [c for c in self.cells if same(c.lo, point)]
         return (left[0], right[0]) if left and right else None
 
     @fact(facts.sign_around)
@@ -1062,6 +1062,34 @@ def _apart(a: Algebraic, b: Algebraic) -> bool:
     """a < b read off the isolating intervals alone (no refinement, no comparison): True
     only when it is certain that way; False says nothing."""
     return a.hi < b.lo or (a.hi == b.lo and not (a.lo == a.hi and b.lo == b.hi))
+
+
+def less(a, b) -> bool:
+    """a < b, exact: from the isolating intervals where they are apart (an exact comparison
+    would then refine nothing either), else by the exact comparison."""
+    if isinstance(a, Algebraic) and isinstance(b, Algebraic):
+        if _apart(a, b):
+            return True
+        if _apart(b, a):
+            return False
+    return a < b
+
+
+def at_most(a, b) -> bool:
+    """a ≤ b, exact (as :func:`less`)."""
+    if isinstance(a, Algebraic) and isinstance(b, Algebraic):
+        if _apart(a, b):
+            return True
+        if _apart(b, a):
+            return False
+    return a <= b
+
+
+def same(a, b) -> bool:
+    """a = b, exact (as :func:`less`)."""
+    if isinstance(a, Algebraic) and isinstance(b, Algebraic) and (_apart(a, b) or _apart(b, a)):
+        return False
+    return a == b
 
 
 def strictly_between(lo, a: Algebraic, hi) -> bool:

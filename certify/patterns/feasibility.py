@@ -26,6 +26,7 @@ from certify.algebra.branches import (
     X_PLUS,
     Condition,
     Spectrum,
+    same,
     simplest_between,
     strictly_between,
 )
@@ -201,7 +202,7 @@ def sign_in_cell(T, branch: int, lo, hi):
 def _sign_at_facts(answer, T, rc, branch):
     """For the kernel: a point of a cell has the cell's sign (the cell's signs query and rc
     inside it); a critical value needs arithmetic the kernel lacks."""
-    if any(c == rc for c in T.critical):
+    if any(same(c, rc) for c in T.critical):
         return facts.at_algebraic_r()
     cell = next(c for c in T.cells if c.lo < rc < c.hi)
     return [facts.sign_query([answer], T, branch, cell.lo, cell.hi, include_points=False),
@@ -213,13 +214,13 @@ def table_sign_at(T, rc: Algebraic, branch: int):
     """The sign of table T at rc on ``branch``: its point value when rc is one of
     T's critical values, else the sign of the cell holding rc."""
     for k, c in enumerate(T.critical):
-        if c == rc:
+        if same(c, rc):
             pt = T.points[k]
             if pt is None:
                 return UNDECIDED
             return pt[branch] if branch < len(pt) else NO_BRANCH
     for cell in T.cells:
-        if cell.lo < rc < cell.hi:
+        if strictly_between(cell.lo, rc, cell.hi):
             return cell.signs[branch] if branch < len(cell.signs) else NO_BRANCH
     raise ArithmeticError(f"{rc} outside the table of {T.condition}")
 
