@@ -35,10 +35,11 @@ from pathlib import Path
 
 import flint
 import sympy as sp
+from sympy.polys.rings import PolyElement
 
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS
-from certify.algebra.poly import FIELD, RING, Lf, Q, lam, r, show, to_field, to_ring
+from certify.algebra.poly import FIELD, RING, Lf, Q, lam, lr_to_ring, r, ring_to_lrq, show, to_field, to_ring
 from certify.dynamics.model import factor_flint, factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
@@ -93,11 +94,15 @@ def stability_conditions(abcd) -> list[Requirement]:
     At a fixed point c x² = (a - d) x + b, hence (cx + d)² = c(a + d) x + bc + d²,
     affine in x: the conditions are requirements G₀ + x G₁ > 0 like the others.
     A common factor of a, b, c, d (of either sign) leaves f' unchanged."""
-    a, b, c, d = (to_field(e) for e in abcd)
-    out = []
-    for sg, name in ((-1, "(cx+d)² - (ad-bc)"), (1, "(cx+d)² + (ad-bc)")):
-        out.append(Requirement(f"attracting: {name}", (b * c + d * d + sg * (a * d - b * c), c * (a + d)), 1))
-    return out
+    if all(isinstance(e, PolyElement) for e in abcd):    # polynomials: the products by python-flint
+        a, b, c, d = (ring_to_lrq(e) for e in abcd)
+        parts = [(sg, b * c + d * d + sg * (a * d - b * c), c * (a + d)) for sg in (-1, 1)]
+        parts = [(sg, FIELD(lr_to_ring(G0)), FIELD(lr_to_ring(G1))) for sg, G0, G1 in parts]
+    else:
+        a, b, c, d = (to_field(e) for e in abcd)
+        parts = [(sg, b * c + d * d + sg * (a * d - b * c), c * (a + d)) for sg in (-1, 1)]
+    names = {-1: "(cx+d)² - (ad-bc)", 1: "(cx+d)² + (ad-bc)"}
+    return [Requirement(f"attracting: {names[sg]}", (G0, G1), 1) for sg, G0, G1 in parts]
 
 
 # ------------------------------------------------------------------ results
