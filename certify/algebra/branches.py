@@ -949,12 +949,17 @@ class Spectrum:
 def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
     """G ∈ Z[r][λ] (an fmpz_mpoly in (r, λ, s) free of s) as its coefficients in λ,
     lowest first, each an fmpz_poly in r."""
-    coeffs: dict = {}
-    for (er, el, _es), c in G.to_dict().items():
-        coeffs.setdefault(el, {})[er] = int(c)
-    n = max(coeffs, default=0)
-    return [flint.fmpz_poly([coeffs.get(j, {}).get(i, 0) for i in range(max(coeffs.get(j, {0: 0}), default=0) + 1)])
-            for j in range(n + 1)]
+    rows: dict = {}
+    for (er, el, _es), c in zip(G.monoms(), G.coeffs()):
+        rows.setdefault(el, {})[er] = c
+    out = []
+    for j in range(max(rows, default=0) + 1):
+        row = rows.get(j)
+        coeffs = [0] * (max(row) + 1 if row else 1)
+        for i, c in (row or {}).items():
+            coeffs[i] = c
+        out.append(flint.fmpz_poly(coeffs))
+    return out
 
 
 def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:
