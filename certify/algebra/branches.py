@@ -855,7 +855,11 @@ class Spectrum:
         key = (id(P0), id(P1), id(delta))
         entry = self._norms.get(key)
         if entry is None or entry[0] is not P0 or entry[1] is not P1 or entry[2] is not delta:
-            entry = self._norms[key] = (P0, P1, delta, norm(P0, P1, delta))
+            M = norm_mpoly(P0, P1, delta)
+            h = mpoly_to_ring(M)
+            if self.lc.degree() <= 0:        # its resultant from M itself (no conversion back)
+                self._resultant_ids[id(h)] = (h, self.resultant(M))
+            entry = self._norms[key] = (P0, P1, delta, h)
         return entry[3]
 
     def _resultant_of(self, h) -> flint.fmpz_poly:
