@@ -334,7 +334,9 @@ class Analysis:
             if p.is_point:
                 yield self._point(R, p, req, T)
                 continue
-            cuts = [c for c in T.critical if strictly_between(p.lo, c, p.hi)]
+            # exact comparisons (not read off the intervals): outside a deciding function each
+            # one is an obligation of the certificate being made (Algebraic._cmp records it)
+            cuts = [c for c in T.critical if p.lo < c < p.hi]
             ends = [p.lo] + cuts + [p.hi]
             for a, b in zip(ends, ends[1:]):
                 ok = _meets(sign_in_cell(T, R.branch, a, b), req.sign)
