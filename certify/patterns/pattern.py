@@ -31,6 +31,7 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, field
 from functools import cached_property
+from math import gcd
 from pathlib import Path
 
 import flint
@@ -39,7 +40,19 @@ from sympy.polys.rings import PolyElement
 
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS
-from certify.algebra.poly import FIELD, RING, Lf, Q, lam, lr_to_ring, r, ring_to_lrq, show, to_field, to_ring
+from certify.algebra.poly import (
+    FIELD,
+    RING,
+    Lf,
+    Q,
+    lam,
+    lr_to_ring,
+    mpoly_to_univariate,
+    ring_to_lrq,
+    show,
+    to_field,
+    to_ring,
+)
 from certify.dynamics.model import factor_flint, factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
@@ -365,14 +378,25 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
                         for R in an.regions for rc, why_ in R.undecided})
     def printed():
         M = [[show(e) for e in row] for row in cand.M.tolist()]
-        disc = sp.Poly(sp.discriminant(sp.Poly(cp, lam)).as_expr(), r)       # factored by python-flint
-        return M, show(factor_flint([Q(int(c.p), int(c.q)) for c in disc.all_coeffs()[::-1]])), datum(cand)
+        return M, show(factor_flint(discriminant(cand.spectrum))), datum(cand)
     res = PatternResult(word, normal, system_name, why, (lo, hi), lambda: show(sp.collect(cp, lam)),
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
                         undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None)
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res
+
+
+def discriminant(spec) -> flint.fmpq_poly:
+    """disc_λ cp ∈ Q[r] (SymPy's ``discriminant(Poly(cp, λ))``, the same polynomial) by
+    python-flint: the discriminant of the integer multiple den·cp held by the spectrum
+    (den the lcm of cp's denominators), divided by den^(2n-2), n = deg_λ cp (the
+    discriminant is homogeneous of degree 2n - 2 in the coefficients)."""
+    den = 1
+    for c in spec.ring_cp.values():
+        den = den * int(c.denominator) // gcd(den, int(c.denominator))
+    D = mpoly_to_univariate(spec.mpoly_cp.discriminant("lam"))
+    return flint.fmpq_poly(D) / flint.fmpz(den) ** (2 * spec.degree - 2)
 
 
 def _cond(q: Requirement) -> str:
