@@ -38,6 +38,7 @@ from . import numberfield as nf
 from .algebraic import Algebraic, sign_at, to_fmpq
 from .balls import GUARD, decide, precision
 from .poly import (
+    MCTX,
     RING,
     Q,
     Sf,
@@ -46,6 +47,7 @@ from .poly import (
     expr,
     irreducible_factors,
     lam,
+    lr_to_ring,
     mpoly_to_ring,
     mpoly_to_univariate,
     primitive,
@@ -95,11 +97,38 @@ def norm_mpoly(P0, P1, delta) -> flint.fmpz_mpoly:
     """A positive integer multiple of P₀² - P₁²Δ (polynomials of the engine's ring in
     r, λ) as a primitive ``fmpz_mpoly`` in (r, λ, s), by python-flint: the same zeros,
     which is all a norm is used for."""
-    A0, d0 = _integer_mpoly(P0)
-    A1, d1 = _integer_mpoly(P1)
-    AD, dD = _integer_mpoly(delta)
+    return _norm_of(_integer_mpoly(P0), _integer_mpoly(P1), _integer_mpoly(delta))
+
+
+def _norm_of(P0, P1, delta) -> flint.fmpz_mpoly:
+    """:func:`norm_mpoly` from the pairs (A, d) of :func:`_integer_mpoly`."""
+    (A0, d0), (A1, d1), (AD, dD) = P0, P1, delta
     M = A0 * A0 * (d1 * d1 * dD) - A1 * A1 * AD * (d0 * d0)     # d0² d1² dD (P0² - P1²Δ)
     return M if M.is_zero() else M / M.content()
+
+
+_DELTAS: dict = {}               # id of a Δ of the engine's ring -> (Δ, its (A, d), its terms)
+caches.register(_DELTAS.clear)
+
+
+def _delta_entry(delta) -> tuple:
+    entry = _DELTAS.get(id(delta))
+    if entry is None or entry[0] is not delta:
+        if len(_DELTAS) > 1000:
+            _DELTAS.clear()
+        entry = _DELTAS[id(delta)] = (delta, _integer_mpoly(delta), ring_terms(delta))
+    return entry
+
+
+def _integer_delta(delta) -> tuple:
+    """:func:`_integer_mpoly` of Δ (or of c), memoised by identity (every condition with x
+    shares its Δ and c)."""
+    return _delta_entry(delta)[1]
+
+
+def _delta_terms(delta) -> list:
+    """:func:`poly.ring_terms` of Δ (or of 0 when there is none), memoised by identity."""
+    return ring_terms(RING.zero) if delta is None else list(_delta_entry(delta)[2])
 
 
 def norm(P0, P1, delta):
@@ -140,18 +169,59 @@ def _split_sqrt(P, delta):
     return P0, P1
 
 
+def _lrq_terms(q) -> list[tuple[flint.fmpq, int, int]]:
+    """:func:`poly.ring_terms` of an fmpq_mpoly in (λ, r) (lex, λ first: the same terms in
+    the same order as those of the equal element of the engine's ring)."""
+    return [(c, er, el) for (el, er), c in q.to_dict().items()]
+
+
+def _lrq_to_mpoly(q) -> tuple:
+    """(A, d): q = A/d with A an integer ``fmpz_mpoly`` in (r, λ, s) and d > 0 the lcm of
+    q's denominators (q an fmpq_mpoly in (λ, r)): :func:`_integer_mpoly` without the ring."""
+    items = q.to_dict().items()
+    d = flint.fmpz(1)
+    for _m, c in items:
+        d = d.lcm(c.q)
+    return MCTX.from_dict({(er, el, 0): (c * d).p for (el, er), c in items}), d
+
+
 class Condition:
-    """g = N/D with N = N₀ + N₁√Δ, D = D₀ + D₁√Δ, over Q[r, λ]; built once per (g, x)."""
+    """g = N/D with N = N₀ + N₁√Δ, D = D₀ + D₁√Δ, over Q[r, λ]; built once per (g, x).
+
+    ``lrq`` (optional): N₀, N₁, D₀ as fmpq_mpoly in (λ, r) (D₁ = 0), the same polynomials:
+    the terms and norms are read from them, and ``N``, ``D`` (elements of the engine's
+    ring) are made only when first asked for (an exact zero test)."""
 
     _cache: dict = {}
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
 
-    def __init__(self, name, N, D, delta, c):
-        self.name, self.N, self.D, self.delta, self.c = name, N, D, delta, c
+    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None):
+        self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
+        self._lrq = lrq
         self.degenerate = []
-        self.terms = {k: ring_terms(p) for k, p in
-                      (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
-        self.powers = max((max(i, j) for ts in self.terms.values() for _c, i, j in ts), default=0)   # of r, λ
+        if lrq is None:
+            self.terms = {k: ring_terms(p) for k, p in
+                          (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
+        else:
+            self.terms = {"N0": _lrq_terms(lrq[0]), "N1": _lrq_terms(lrq[1]), "D0": _lrq_terms(lrq[2]), "D1": [],
+                          "delta": _delta_terms(delta)}
+
+    @cached_property
+    def top(self) -> int:
+        """The highest exponent of r or λ in any part: how many powers a ball evaluation needs."""
+        return max((max(i, j) for ts in self.terms.values() for _c, i, j in ts), default=0)
+
+    @property
+    def N(self) -> tuple:
+        if self._N is None:
+            self._N = (lr_to_ring(self._lrq[0]), lr_to_ring(self._lrq[1]))
+        return self._N
+
+    @property
+    def D(self) -> tuple:
+        if self._D is None:
+            self._D = (lr_to_ring(self._lrq[2]), RING.zero)
+        return self._D
 
     @classmethod
     def of(cls, name: str, g, fixed_point: FixedPoint | None = None) -> Condition:
@@ -175,15 +245,26 @@ class Condition:
         """Polynomials in r, λ whose zeros contain every zero and pole of g."""
         return [p for _label, p in self.labelled_norms()]
 
+    def share_norms(self, twin: Condition) -> None:
+        """Take the norms of ``twin``, a condition with the same N₀, D₀, Δ, c and N₁ up to
+        its sign (the other fixed point): the same polynomials N₀² - N₁²Δ, D₀, Δ, c."""
+        self._norms = twin.labelled_norms()
+
     def labelled_norms(self) -> list:
         """The norms with what they come from: "N", "D", "delta", "c", as primitive
         integer ``fmpz_mpoly`` in (r, λ, s) (positive multiples: the same zeros); memoised."""
         if getattr(self, "_norms", None) is None:
             out = []
-            for label, (P0, P1) in (("N", self.N), ("D", self.D)):
-                out.append((label, norm_mpoly(P0, P1, self.delta) if P1 else ring_to_mpoly(P0)))
+            if self._lrq is None:
+                for label, (P0, P1) in (("N", self.N), ("D", self.D)):
+                    out.append((label, norm_mpoly(P0, P1, self.delta) if P1 else ring_to_mpoly(P0)))
+            else:
+                N0, N1, D0 = self._lrq
+                out.append(("N", _lrq_to_mpoly(N0)[0] if N1.is_zero() else
+                            _norm_of(_lrq_to_mpoly(N0), _lrq_to_mpoly(N1), _integer_delta(self.delta))))
+                out.append(("D", _lrq_to_mpoly(D0)[0]))
             if self.delta is not None:
-                out += [("delta", ring_to_mpoly(self.delta)), ("c", ring_to_mpoly(self.c))]
+                out += [("delta", _integer_delta(self.delta)[0]), ("c", _integer_delta(self.c)[0])]
             self._norms = [(label, p) for label, p in out if not p.is_constant()]
         return self._norms
 
@@ -205,20 +286,64 @@ def _powers(z, n):
     return out
 
 
+def _horner_form(terms) -> tuple:
+    """The terms (c, i, j) of a polynomial in r, λ as ([(j, P_j)], d): the polynomial is
+    Σ_j P_j(r) λ^j / d with P_j ∈ Z[r] (fmpz_poly) and d > 0 the lcm of the denominators."""
+    d = flint.fmpz(1)
+    for c, _i, _j in terms:
+        d = d.lcm(c.q)
+    by_j: dict = {}
+    for c, i, j in terms:
+        by_j.setdefault(j, {})[i] = (c * d).p
+    return [(j, flint.fmpz_poly([row.get(i, 0) for i in range(max(row) + 1)])) for j, row in sorted(by_j.items())], d
+
+
+def _eval_form(form, R, L) -> flint.arb:
+    """A ball around Σ_j P_j(R) L^j / d (:func:`_horner_form`): each P_j at the ball R by
+    python-flint, then Horner in L, at the working precision."""
+    rows, d = form
+    if not rows:
+        return flint.arb(0)
+    total = flint.arb(0)
+    k = rows[-1][0]
+    for j, P in reversed(rows):
+        while k > j:
+            total *= L
+            k -= 1
+        total += P(R)
+    while k > 0:
+        total *= L
+        k -= 1
+    return total / d
+
+
+def _forms(cond: Condition) -> dict:
+    forms = getattr(cond, "_forms", None)
+    if forms is None:
+        forms = cond._forms = {k: _horner_form(ts) for k, ts in cond.terms.items()
+                               if k != "delta" or cond.delta is None}
+        if cond.delta is not None:           # every condition with x shares its Δ: one form
+            entry = _delta_entry(cond.delta)
+            if len(entry) < 4:
+                entry = _DELTAS[id(cond.delta)] = entry + (_horner_form(entry[2]),)
+            forms["delta"] = entry[3]
+    return forms
+
+
 def _sign_ball(cond: Condition, R, L, delta_is_zero=False):
     """Sign of g at balls R, L (r and λ); None when x is not real (Δ < 0); '?' if
     the balls do not decide it.  ``delta_is_zero``: Δ = 0 there is known exactly."""
-    Rp, Lp = _powers(R, cond.powers), _powers(L, cond.powers)
+    forms = _forms(cond)
     S = flint.arb(0)
     if cond.delta is not None and not delta_is_zero:
-        dv = _eval_terms(cond.terms["delta"], Rp, Lp)
+        dv = _eval_form(forms["delta"], R, L)
         if dv < 0:
             return None
         if not dv > 0:
             return UNDECIDED
         S = dv.sqrt()
-    num = _eval_terms(cond.terms["N0"], Rp, Lp) + _eval_terms(cond.terms["N1"], Rp, Lp) * S
-    den = _eval_terms(cond.terms["D0"], Rp, Lp) + _eval_terms(cond.terms["D1"], Rp, Lp) * S
+    num = _eval_form(forms["N0"], R, L) + _eval_form(forms["N1"], R, L) * S
+    den = _eval_form(forms["D0"], R, L) + _eval_form(forms["D1"], R, L) * S
     sn = 1 if num > 0 else -1 if num < 0 else None
     sd = 1 if den > 0 else -1 if den < 0 else None
     if sn is None or sd is None:
@@ -230,7 +355,7 @@ def ball_value(cond: Condition, R, L) -> flint.arb:
     """g = N₀/D₀ at balls R, L, for a condition without √Δ."""
     if cond.delta is not None:
         raise ValueError("ball_value needs a condition without √Δ")
-    Rp, Lp = _powers(R, cond.powers), _powers(L, cond.powers)
+    Rp, Lp = _powers(R, cond.top), _powers(L, cond.top)
     return _eval_terms(cond.terms["N0"], Rp, Lp) / _eval_terms(cond.terms["D0"], Rp, Lp)
 
 
@@ -333,12 +458,12 @@ class SignTable:
         hi = self.interval[1] if hi is None else hi
         out = set()
         for cell in self.cells:
-            if cell.hi <= lo or cell.lo >= hi:
+            if at_most(cell.hi, lo) or at_most(hi, cell.lo):
                 continue
             out.add(cell.signs[branch] if branch < len(cell.signs) else NO_BRANCH)
         if include_points:
             for k, rc in enumerate(self.critical):
-                if lo < rc < hi:
+                if less(lo, rc) and less(rc, hi):
                     pt = self.points[k]
                     out.add(UNDECIDED if pt is None else pt[branch] if branch < len(pt) else NO_BRANCH)
         return Found(out)
@@ -356,8 +481,8 @@ class SignTable:
 
     def _around(self, point):
         """The cells on either side of the critical value ``point`` (None where there is none)."""
-        left = [c for c in self.cells if c.hi == point]
-        right = [c for c in self.cells if c.lo == point]
+        left = [c for c in self.cells if same(c.hi, point)]
+        right = [c for c in self.cells if same(c.lo, point)]
         return (left[0], right[0]) if left and right else None
 
     @fact(facts.sign_around, facts.changes_piece)
@@ -432,8 +557,9 @@ class Spectrum:
         self._common = {}                  # (h or id of h, key of rc) -> (h, common roots of cp and h there)
         self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
         self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
-        self._norms = {}                   # (P₀, P₁, Δ) -> norm(P₀, P₁, Δ)
-        self._resultant_ids = {}           # h or id of h -> (h, Res_λ(h, cp))
+        self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
+        self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
+        self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -512,17 +638,25 @@ class Spectrum:
         Sturm sequences, their number checked against python-flint's isolation."""
         polys = [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])
         for label, e in (cond.labelled_norms() if cond is not None else []):
-            R = self.resultant(e)
+            R = self._resultant_of(e)
             if R.is_zero():
                 assert cond is not None  # e is one of cond's norms
                 R = self._resultant_off_common_factor(mpoly_to_ring(e), cond, label)
             polys.append(R)
         lo, hi = _alg(lo), _alg(hi)
         roots = []
-        for f in {str(f): f for p in polys for f, _m in irreducible_factors(p)}.values():
+        for f in {k: f for p in polys for f, k in self._factors(p)}.values():
             checked_real_root_count(f)          # Sturm and python-flint agree (memoised per factor)
-            roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if lo < a < hi]
-        return sorted(roots)
+            roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
+        return sorted_numbers(roots)
+
+    def _factors(self, p) -> list:
+        """(factor, its text) for the irreducible factors of p, memoised by the identity of p
+        (the discriminant and the cached resultants are the same objects in every table)."""
+        entry = self._factor_ids.get(id(p))
+        if entry is None or entry[0] is not p:
+            entry = self._factor_ids[id(p)] = (p, [(f, str(f)) for f, _m in irreducible_factors(p)])
+        return entry[1]
 
     def table(self, name: str, g, lo, hi, fixed_point: FixedPoint | None = None) -> SignTable:
         """:meth:`sign_table` of the condition ``g`` (named ``name``; x the fixed point
@@ -676,10 +810,7 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided."""
         P0, P1 = P
-        key = (P0, P1, delta)              # the same norm asked on every branch: one object, one test
-        if key not in self._norms:
-            self._norms[key] = norm(P0, P1, delta)
-        if not self.vanishes_at(self._norms[key], rc, k):
+        if not self.vanishes_at(self._norm_of(P0, P1, delta), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -738,6 +869,19 @@ class Spectrum:
             return lambda prec: nf.real_roots(G, rc, prec)     # squarefree already: no inverse in Q(rc)
         G, _ = nf.squarefree(nf.monic(G, m), m)
         return lambda prec: nf.real_roots(G, rc, prec)
+
+    def _norm_of(self, P0, P1, delta):
+        """:func:`norm` of P₀ + P₁√Δ, memoised by the identity of the three (the same object
+        for the same parts: the exact tests at other points find their work done)."""
+        key = (id(P0), id(P1), id(delta))
+        entry = self._norms.get(key)
+        if entry is None or entry[0] is not P0 or entry[1] is not P1 or entry[2] is not delta:
+            M = norm_mpoly(P0, P1, delta)
+            h = mpoly_to_ring(M)
+            if self.lc.degree() <= 0:        # its resultant from M itself (no conversion back)
+                self._resultant_ids[h] = (h, self.resultant(M))     # keyed as _resultant_of keys a ring element
+            entry = self._norms[key] = (P0, P1, delta, h)
+        return entry[3]
 
     def _resultant_of(self, h) -> flint.fmpz_poly:
         """:meth:`resultant` of the polynomial h, memoised by its value (a ring element) or
@@ -835,12 +979,17 @@ class Spectrum:
 def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
     """G ∈ Z[r][λ] (an fmpz_mpoly in (r, λ, s) free of s) as its coefficients in λ,
     lowest first, each an fmpz_poly in r."""
-    coeffs: dict = {}
-    for (er, el, _es), c in G.to_dict().items():
-        coeffs.setdefault(el, {})[er] = int(c)
-    n = max(coeffs, default=0)
-    return [flint.fmpz_poly([coeffs.get(j, {}).get(i, 0) for i in range(max(coeffs.get(j, {0: 0}), default=0) + 1)])
-            for j in range(n + 1)]
+    rows: dict = {}
+    for (er, el, _es), c in zip(G.monoms(), G.coeffs()):
+        rows.setdefault(el, {})[er] = c
+    out = []
+    for j in range(max(rows, default=0) + 1):
+        row = rows.get(j)
+        coeffs = [0] * (max(row) + 1 if row else 1)
+        for i, c in (row or {}).items():
+            coeffs[i] = c
+        out.append(flint.fmpz_poly(coeffs))
+    return out
 
 
 def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:
@@ -942,6 +1091,58 @@ def _at_r(P, t) -> flint.fmpq_poly:
     n = max(coeffs, default=0)
     return flint.fmpq_poly([coeffs.get(j, Q(0)) for j in range(n + 1)])
 
+
+
+def _apart(a: Algebraic, b: Algebraic) -> bool:
+    """a < b read off the isolating intervals alone (no refinement, no comparison): True
+    only when it is certain that way; False says nothing."""
+    return a.hi < b.lo or (a.hi == b.lo and not (a.lo == a.hi and b.lo == b.hi))
+
+
+def less(a, b) -> bool:
+    """a < b, exact: from the isolating intervals where they are apart (an exact comparison
+    would then refine nothing either), else by the exact comparison."""
+    if isinstance(a, Algebraic) and isinstance(b, Algebraic):
+        if _apart(a, b):
+            return True
+        if _apart(b, a):
+            return False
+    return a < b
+
+
+def at_most(a, b) -> bool:
+    """a ≤ b, exact (as :func:`less`)."""
+    if isinstance(a, Algebraic) and isinstance(b, Algebraic):
+        if _apart(a, b):
+            return True
+        if _apart(b, a):
+            return False
+    return a <= b
+
+
+def same(a, b) -> bool:
+    """a = b, exact (as :func:`less`)."""
+    if isinstance(a, Algebraic) and isinstance(b, Algebraic) and (_apart(a, b) or _apart(b, a)):
+        return False
+    return a == b
+
+
+def strictly_between(lo, a: Algebraic, hi) -> bool:
+    """lo < a < hi, exact: from the isolating intervals where they are apart (where an exact
+    comparison would not refine them either), else by exact comparisons."""
+    if isinstance(lo, Algebraic) and isinstance(hi, Algebraic) and _apart(lo, a) and _apart(a, hi):
+        return True
+    return lo < a < hi
+
+
+def sorted_numbers(numbers: list) -> list:
+    """``sorted(numbers)`` (distinct Algebraic numbers): by the left ends of the isolating
+    intervals when consecutive intervals are then apart (the order is certain, and exact
+    comparisons would refine nothing), else by exact comparisons."""
+    out = sorted(numbers, key=lambda a: a.lo)
+    if all(_apart(a, b) for a, b in zip(out, out[1:])):
+        return out
+    return sorted(numbers)
 
 
 def _alg(a) -> Algebraic:

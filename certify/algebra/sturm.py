@@ -144,8 +144,12 @@ def _root_enclosures(seq):
     the whole line: then each holds exactly one root and every root is in one.
     [(a, b, sign p0(a))], or None when that check fails.  Memoised."""
     p0 = seq[0]
+    known = _BALLS_OF.get(id(seq))
+    if known is not None and known[0] is seq:        # the same sequence object: no key to build
+        return known[1]
     key = poly_key(p0)
     if key in _BALLS:
+        _remember(seq, _BALLS[key])
         return _BALLS[key]
     if len(_BALLS) > 20000:
         _BALLS.clear()
@@ -170,7 +174,18 @@ def _root_enclosures(seq):
     except (ValueError, ArithmeticError):
         out = None
     _BALLS[key] = out
+    _remember(seq, out)
     return out
+
+
+_BALLS_OF: dict = {}             # id of a sequence -> (sequence, its enclosures): _BALLS without the key
+caches.register(_BALLS_OF.clear)
+
+
+def _remember(seq, enclosures) -> None:
+    if len(_BALLS_OF) > 20000:
+        _BALLS_OF.clear()
+    _BALLS_OF[id(seq)] = (seq, enclosures)
 
 
 def _compare_root(p0, enclosure, x) -> int:

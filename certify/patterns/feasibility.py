@@ -20,15 +20,22 @@ import sympy as sp
 
 from certify.algebra import facts
 from certify.algebra.algebraic import Algebraic
-from certify.algebra.branches import NO_BRANCH, X_MINUS, X_PLUS, Condition, Spectrum, simplest_between
+from certify.algebra.branches import (
+    NO_BRANCH,
+    X_MINUS,
+    X_PLUS,
+    Condition,
+    Spectrum,
+    same,
+    simplest_between,
+    strictly_between,
+)
 from certify.algebra.poly import (
     FIELD,
-    RING,
     Q,
     field_to_frac,
     frac_to_field,
     lam,
-    lr_to_ring,
     ring_to_lrq,
     to_field,
     to_ring,
@@ -101,8 +108,8 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
         A, cc = ring_to_lrq(fp.amd), ring_to_lrq(fp.c)
         N0, N1, D0 = 2 * cc * n0 * d1 + A * n1 * d0, fp.sigma * n1 * d0, 2 * cc * d0 * d1
         delta, c = fp.delta, fp.c
-    N0, N1, D0 = (lr_to_ring(divmod(e, C)[1]) for e in (N0, N1, D0))
-    return Condition(req.name, (N0, N1), (D0, RING.zero), delta, c)
+    N0, N1, D0 = (divmod(e, C)[1] for e in (N0, N1, D0))
+    return Condition(req.name, None, None, delta, c, lrq=(N0, N1, D0))
 
 
 def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:
@@ -195,7 +202,7 @@ def sign_in_cell(T, branch: int, lo, hi):
 def _sign_at_facts(answer, T, rc, branch):
     """For the kernel: a point of a cell has the cell's sign (the cell's signs query and rc
     inside it); at a critical value, the table's signs there (re-derived in Q(rc)[λ])."""
-    if any(c == rc for c in T.critical):
+    if any(same(c, rc) for c in T.critical):
         return facts.table_point(answer, T, rc, branch)
     cell = next(c for c in T.cells if c.lo < rc < c.hi)
     return [facts.sign_query([answer], T, branch, cell.lo, cell.hi, include_points=False),
@@ -207,13 +214,13 @@ def table_sign_at(T, rc: Algebraic, branch: int):
     """The sign of table T at rc on ``branch``: its point value when rc is one of
     T's critical values, else the sign of the cell holding rc."""
     for k, c in enumerate(T.critical):
-        if c == rc:
+        if same(c, rc):
             pt = T.points[k]
             if pt is None:
                 return UNDECIDED
             return pt[branch] if branch < len(pt) else NO_BRANCH
     for cell in T.cells:
-        if cell.lo < rc < cell.hi:
+        if strictly_between(cell.lo, rc, cell.hi):
             return cell.signs[branch] if branch < len(cell.signs) else NO_BRANCH
     raise ArithmeticError(f"{rc} outside the table of {T.condition}")
 
@@ -254,6 +261,7 @@ class Analysis:
         self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd_ring or cand.abcd, self.spec.ring_cp)} \
             if cand.abcd is not None else {NO_X: None}
         self.tables = {}
+        self._twins: dict = {}          # id of a requirement with x -> (it, its first Condition)
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
         self.regions = [Region(k, f, [], [], []) for k in range(nb) for f in self.fps]
@@ -277,8 +285,16 @@ class Analysis:
             return None
         key = (req.name, fname if req.has_x else "", tuple(_key(e) for e in hull))
         if key not in self.tables:
-            self.tables[key] = self.spec.sign_table(condition(req, self.spec.lrq_cp,
-                                                               self.fps[fname] if req.has_x else None), *hull)
+            cond = condition(req, self.spec.lrq_cp, self.fps[fname] if req.has_x else None)
+            if req.has_x:
+                # x₊ and x₋ differ only in the sign of N₁ (σ): the norms N₀² - N₁²Δ, D₀, Δ and c
+                # are the same polynomials, computed once for the requirement
+                twin = self._twins.get(id(req))
+                if twin is not None and twin[0] is req:
+                    cond.share_norms(twin[1])
+                else:
+                    self._twins[id(req)] = (req, cond)
+            self.tables[key] = self.spec.sign_table(cond, *hull)
         return self.tables[key]
 
     def impose(self, req: Requirement):
@@ -318,6 +334,8 @@ class Analysis:
             if p.is_point:
                 yield self._point(R, p, req, T)
                 continue
+            # exact comparisons (not read off the intervals): outside a deciding function each
+            # one is an obligation of the certificate being made (Algebraic._cmp records it)
             cuts = [c for c in T.critical if p.lo < c < p.hi]
             ends = [p.lo] + cuts + [p.hi]
             for a, b in zip(ends, ends[1:]):

@@ -31,14 +31,28 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, field
 from functools import cached_property
+from math import gcd
 from pathlib import Path
 
 import flint
 import sympy as sp
+from sympy.polys.rings import PolyElement
 
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS
-from certify.algebra.poly import FIELD, RING, Lf, Q, lam, r, show, to_field, to_ring
+from certify.algebra.poly import (
+    FIELD,
+    RING,
+    Lf,
+    Q,
+    lam,
+    lr_to_ring,
+    mpoly_to_univariate,
+    ring_to_lrq,
+    show,
+    to_field,
+    to_ring,
+)
 from certify.dynamics.model import factor_flint, factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
@@ -93,11 +107,15 @@ def stability_conditions(abcd) -> list[Requirement]:
     At a fixed point c x² = (a - d) x + b, hence (cx + d)² = c(a + d) x + bc + d²,
     affine in x: the conditions are requirements G₀ + x G₁ > 0 like the others.
     A common factor of a, b, c, d (of either sign) leaves f' unchanged."""
-    a, b, c, d = (to_field(e) for e in abcd)
-    out = []
-    for sg, name in ((-1, "(cx+d)² - (ad-bc)"), (1, "(cx+d)² + (ad-bc)")):
-        out.append(Requirement(f"attracting: {name}", (b * c + d * d + sg * (a * d - b * c), c * (a + d)), 1))
-    return out
+    if all(isinstance(e, PolyElement) for e in abcd):    # polynomials: the products by python-flint
+        a, b, c, d = (ring_to_lrq(e) for e in abcd)
+        parts = [(sg, b * c + d * d + sg * (a * d - b * c), c * (a + d)) for sg in (-1, 1)]
+        parts = [(sg, FIELD(lr_to_ring(G0)), FIELD(lr_to_ring(G1))) for sg, G0, G1 in parts]
+    else:
+        a, b, c, d = (to_field(e) for e in abcd)
+        parts = [(sg, b * c + d * d + sg * (a * d - b * c), c * (a + d)) for sg in (-1, 1)]
+    names = {-1: "(cx+d)² - (ad-bc)", 1: "(cx+d)² + (ad-bc)"}
+    return [Requirement(f"attracting: {names[sg]}", (G0, G1), 1) for sg, G0, G1 in parts]
 
 
 # ------------------------------------------------------------------ results
@@ -160,7 +178,7 @@ class PatternResult:
     system: str
     explanation: str
     interval: tuple
-    cp: str
+    cp_text: object                   # cp printed, or () -> that text (printed when first read)
     exists: list                      # [{branch, fixed_point, set, pieces}], non-empty sets only
     feasible: list
     stable: list
@@ -177,6 +195,13 @@ class PatternResult:
         """What only a reader needs, computed when first read: the period matrix, the
         factored discriminant and the datum's formulas (empty without ``formulas``)."""
         return self.formulas() if self.formulas is not None else ([], "", {})
+
+    @property
+    def cp(self) -> str:
+        """cp(M_w) as printed (collected in λ), computed when first read."""
+        if callable(self.cp_text):
+            self.cp_text = self.cp_text()
+        return self.cp_text
 
     @property
     def matrix(self) -> list:
@@ -353,14 +378,25 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
                         for R in an.regions for rc, why_ in R.undecided})
     def printed():
         M = [[show(e) for e in row] for row in cand.M.tolist()]
-        disc = sp.Poly(sp.discriminant(sp.Poly(cp, lam)).as_expr(), r)       # factored by python-flint
-        return M, show(factor_flint([Q(int(c.p), int(c.q)) for c in disc.all_coeffs()[::-1]])), datum(cand)
-    res = PatternResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cp, lam)),
+        return M, show(factor_flint(discriminant(cand.spectrum))), datum(cand)
+    res = PatternResult(word, normal, system_name, why, (lo, hi), lambda: show(sp.collect(cp, lam)),
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
                         undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None)
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res
+
+
+def discriminant(spec) -> flint.fmpq_poly:
+    """disc_λ cp ∈ Q[r] (SymPy's ``discriminant(Poly(cp, λ))``, the same polynomial) by
+    python-flint: the discriminant of the integer multiple den·cp held by the spectrum
+    (den the lcm of cp's denominators), divided by den^(2n-2), n = deg_λ cp (the
+    discriminant is homogeneous of degree 2n - 2 in the coefficients)."""
+    den = 1
+    for c in spec.ring_cp.values():
+        den = den * int(c.denominator) // gcd(den, int(c.denominator))
+    D = mpoly_to_univariate(spec.mpoly_cp.discriminant("lam"))
+    return flint.fmpq_poly(D) / flint.fmpz(den) ** (2 * spec.degree - 2)
 
 
 def _cond(q: Requirement) -> str:

@@ -850,3 +850,37 @@ def test_exact_zero_tests_agree_with_the_gcd_in_the_number_field(monkeypatch):
                         answers.append((fast.vanishes_at(h, rc, k), slow.vanishes_at(h, rc, k)))
     assert answers and all(a == b for a, b in answers)
     assert {a for a, _ in answers} == {True, False}
+
+
+# --- the fast paths of the sign tables (speed of `certify pattern`) agree with the plain ones
+def test_horner_form_encloses_the_exact_value():
+    """The Horner form of a condition's terms, evaluated at balls around rational r, λ,
+    contains the exact rational value (SymPy); a wrong form (a dropped term) would not."""
+    from certify.algebra.branches import _eval_form, _horner_form
+    e = sp.Rational(3, 7) * r ** 5 * lam ** 2 - 11 * r ** 2 * lam + sp.Rational(1, 5) * lam ** 3 - r + 2
+    terms = [(flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q)), i, j)
+             for (i, j), c in sp.Poly(e, r, lam).terms()]
+    form = _horner_form(terms)
+    for r0, l0 in ((Fraction(1, 3), Fraction(-5, 4)), (Fraction(7, 9), Fraction(2, 1))):
+        exact = e.subs({r: sp.Rational(r0.numerator, r0.denominator), lam: sp.Rational(l0.numerator, l0.denominator)})
+        ball = _eval_form(form, flint.arb(flint.fmpq(r0.numerator, r0.denominator)),
+                          flint.arb(flint.fmpq(l0.numerator, l0.denominator)))
+        assert ball.contains(flint.fmpq(int(exact.p), int(exact.q)))
+        wrong = _eval_form(_horner_form(terms[1:]), flint.arb(flint.fmpq(r0.numerator, r0.denominator)),
+                           flint.arb(flint.fmpq(l0.numerator, l0.denominator)))
+        assert not wrong.contains(flint.fmpq(int(exact.p), int(exact.q)))
+
+
+def test_order_from_intervals_agrees_with_exact_comparison():
+    """sorted_numbers, less, at_most, same and strictly_between give what the exact
+    comparisons give, on roots of several polynomials (some equal, some close)."""
+    from certify.algebra.branches import at_most, less, same, sorted_numbers, strictly_between
+    nums = (Algebraic.roots(flint.fmpq_poly([-2, 0, 1]), 0, 2) + Algebraic.roots(flint.fmpq_poly([-3, 0, 1]), 0, 2)
+            + Algebraic.roots(flint.fmpq_poly([1, -10, 1]), 0, 1) + [Algebraic.rational(flint.fmpq(7, 5))])
+    assert [str(a.digits(8)) for a in sorted_numbers(nums)] == [str(a.digits(8)) for a in sorted(nums)]
+    twin = Algebraic.roots(flint.fmpq_poly([-2, 0, 1]), 1, 2)[0]         # √2 again, another object
+    for a in nums + [twin]:
+        for b in nums + [twin]:
+            assert less(a, b) == (a < b) and at_most(a, b) == (a <= b) and same(a, b) == (a == b)
+    lo, hi = Algebraic.rational(flint.fmpq(1)), Algebraic.rational(flint.fmpq(3, 2))
+    assert [strictly_between(lo, a, hi) for a in nums] == [lo < a < hi for a in nums]

@@ -235,3 +235,17 @@ def test_ababcb_names_the_fixed_points_both_ways_and_t10_certifies_the_factor(ce
 def test_a_candidate_that_misses_the_first_collision_says_so_plainly():
     text = analyse("acb").markdown()
     assert "(nothing)" not in text and "1..0" not in text and "never realises the first collision" in text
+
+
+@pytest.mark.parametrize("word", ["ababcb", "abacbc", "ab", "[ac]b"])
+def test_discriminant_by_flint_is_sympys(word):
+    """The report's disc_λ cp (python-flint, :func:`pattern.discriminant`) is SymPy's
+    discriminant of cp as a polynomial in λ, for four- and three-particle words."""
+    import sympy as sp
+
+    from certify.algebra.poly import from_flint, lam
+    from certify.dynamics.systems import candidate_in
+    from certify.patterns.pattern import discriminant
+    normal, system, _ = read(word)
+    cand = candidate_in(system, normal)
+    assert sp.expand(from_flint(discriminant(cand.spectrum)) - sp.discriminant(sp.Poly(cand.cp, lam)).as_expr()) == 0
