@@ -890,7 +890,7 @@ class Spectrum:
         key = h if content else id(h)
         entry = self._resultant_ids.get(key)
         if entry is None or not content and entry[0] is not h:
-            if any(e[2] or e[3] or e[4] or e[5] for e in h.itermonoms()):
+            if content and any(e[2] or e[3] or e[4] or e[5] for e in h.itermonoms()):
                 raise ValueError("polynomial still depends on x, u, v or s")      # as nf.kpoly says
             entry = self._resultant_ids[key] = (h, self.resultant(h))
         return entry[1]
