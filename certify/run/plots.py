@@ -49,8 +49,8 @@ def _draw_marks(ax, marks: list[tuple[str, float]]) -> None:
 
 
 def _spectrum_key(spectrum) -> str:
-    """The characteristic polynomial the curves are computed from (:func:`branch_curves`)."""
-    return f"{spectrum.degree} {[str(c) for c in spectrum.P.all_coeffs()]}"
+    """The characteristic polynomial the curves are computed from (:func:`branch_curves`), and the legend's names."""
+    return f"{spectrum.degree} {[str(c) for c in spectrum.P.all_coeffs()]} {BRANCH_NAMES}"
 
 
 def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
