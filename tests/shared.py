@@ -22,11 +22,18 @@ def registry() -> dict:
     return load_all()
 
 
+_ALTERED: dict = {}          # (id, the overrides) -> outcome: a mutant and a test that alter alike share one run
+
+
 def outcome(id: str, **overrides):
-    """Certificate ``id`` run in the session's context, its printed inputs replaced by ``overrides``."""
+    """Certificate ``id`` run in the session's context, its printed inputs replaced by ``overrides``
+    (each alteration run once per session: the certificates are deterministic)."""
     if not overrides:
         return as_printed(id)
-    return run_certificate(registry()[id], CONTEXT, overrides)
+    key = (id, repr(sorted(overrides.items())))
+    if key not in _ALTERED:
+        _ALTERED[key] = run_certificate(registry()[id], CONTEXT, overrides)
+    return _ALTERED[key]
 
 
 def as_printed(id: str):

@@ -4,14 +4,27 @@ and answer.  Polynomials become lists of exact coefficients, numbers "p/q" strin
 from __future__ import annotations
 
 import copy
+from fractions import Fraction
 
+import flint
 import sympy as sp
+
+from certify import caches
 
 
 def rational(q) -> str:
     """A rational (fmpq, Fraction, SymPy Rational, int) as "p/q"."""
-    q = sp.Rational(str(q)) if not isinstance(q, int) else sp.Integer(q)
-    return str(q.p) if q.q == 1 else f"{q.p}/{q.q}"
+    kind = type(q)
+    if kind is flint.fmpq or isinstance(q, sp.Rational):
+        num, den = q.p, q.q          # lowest terms, den > 0: as each of these types keeps it
+    elif isinstance(q, int):
+        return str(int(q))
+    elif kind is Fraction:
+        num, den = q.numerator, q.denominator
+    else:                            # anything else (fmpz, a numeral as text): as SymPy reads it
+        q = sp.Rational(str(q))
+        num, den = q.p, q.q
+    return str(num) if den == 1 else f"{num}/{den}"
 
 
 def upoly(p) -> list:
@@ -28,7 +41,24 @@ _CIRCLE_ARGS = ("θ", "φ")
 
 
 def rational_function(e, gens: list) -> dict:
-    """A SymPy expression, a rational function of ``gens`` over Q, as {"num": terms, "den": terms}."""
+    """A SymPy expression, a rational function of ``gens`` over Q, as {"num": terms, "den": terms}
+    (a fresh copy of the one computed for the same expression and generators since the caches'
+    last reset: the same facts are recorded over and over)."""
+    try:
+        key = (e, tuple(gens))
+        found = _RATIONAL_FUNCTIONS.get(key)
+    except TypeError:                # an unhashable expression: computed every time
+        return _rational_function(e, gens)
+    if found is None:
+        found = _RATIONAL_FUNCTIONS[key] = _rational_function(e, gens)
+    return {part: [[c, list(m)] for c, m in terms] for part, terms in found.items()}
+
+
+_RATIONAL_FUNCTIONS: dict = {}
+caches.register(_RATIONAL_FUNCTIONS.clear)
+
+
+def _rational_function(e, gens: list) -> dict:
     n, d = sp.fraction(sp.together(sp.sympify(e)))
     def terms(x):
         if not gens:

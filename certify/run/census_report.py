@@ -10,9 +10,11 @@ so the output does not depend on the executor or on the order of completion.
 """
 from __future__ import annotations
 
+import copy
 import json
 import math
 from concurrent.futures import FIRST_COMPLETED, wait
+from functools import lru_cache
 from pathlib import Path
 
 from certify.patterns import census, island_theorem
@@ -194,8 +196,20 @@ def reduction_lines(s: dict, recs: list, L: int) -> list[str]:
 
 def committed_windows(path=None) -> tuple[dict, dict] | None:
     """The attracting windows of the committed census ({word: [{"lo", "hi", ...}]}, as
-    census.json holds them) and each word's compact form, or None without a census file."""
-    text = read_text_or_none(path or REPORTS / "census.json")
+    census.json holds them) and each word's compact form, or None without a census file.
+    The file (megabytes) is parsed once per version of it (its size and time of change)."""
+    path = Path(path or REPORTS / "census.json")
+    try:
+        stat = path.stat()
+    except OSError:
+        return None
+    found = _windows_of(str(path.resolve()), stat.st_size, stat.st_mtime_ns)
+    return None if found is None else copy.deepcopy(found)
+
+
+@lru_cache(maxsize=4)
+def _windows_of(path: str, size: int, mtime_ns: int) -> tuple[dict, dict] | None:
+    text = read_text_or_none(path)
     if text is None:
         return None
     doc = json.loads(text)

@@ -46,18 +46,33 @@ def island_share(theta: np.ndarray, phi: np.ndarray, r: float) -> np.ndarray:
     return float(island.c_max(r)) - island.quadratic_form(u, v, r)
 
 
-def section_axes(ax, r, collisions: int = 3000) -> None:
+def section_data(r, collisions: int = 3000) -> tuple[float, list, tuple | None]:
+    """What :func:`section_axes` draws: r as a float, the b-section points of the orbits,
+    and (θ, φ, c_max − Q) on a grid for the island's boundary (None below 3−2√2)."""
     rf = float(r)
-    for k, (th, ph) in enumerate(b_section_points(rf, collisions)):
-        ax.plot(th, ph, ".", ms=1.2, alpha=0.6, label=f"orbit {k + 1}")
+    points = b_section_points(rf, collisions)
+    grid = None
     if rf > LOWER:
         T, P = np.meshgrid(np.linspace(1e-3, math.pi / 2 - 1e-3, 400), np.linspace(1e-3, math.pi - 1e-3, 400))
-        ax.contour(T, P, island_share(T, P, rf), levels=[0], colors="k", linewidths=1.2)
+        grid = (T, P, island_share(T, P, rf))
+    return rf, points, grid
+
+
+def draw_section(ax, r, data) -> None:
+    _, points, grid = data
+    for k, (th, ph) in enumerate(points):
+        ax.plot(th, ph, ".", ms=1.2, alpha=0.6, label=f"orbit {k + 1}")
+    if grid is not None:
+        ax.contour(*grid, levels=[0], colors="k", linewidths=1.2)
     ax.set_xlim(0, math.pi / 2)
     ax.set_ylim(0, math.pi)
     ax.set_xlabel("θ")
     ax.set_ylabel("φ")
     ax.set_title(f"b-section at r = {r}: the island's boundary Q = c_max (black)")
+
+
+def section_axes(ax, r, collisions: int = 3000) -> None:
+    draw_section(ax, r, section_data(r, collisions))
 
 
 def census_windows(path: Path | None = None) -> list[tuple[str, float, float]]:
@@ -71,15 +86,22 @@ def census_windows(path: Path | None = None) -> list[tuple[str, float, float]]:
             for w, spans in windows.items() for span in spans]
 
 
-def rotation_axes(ax, Q: int = 12, windows=None) -> None:
+def rotation_data(Q: int = 12, windows=None) -> tuple[list, list]:
+    """What :func:`rotation_axes` draws: the resonances (label, r as a float, p/q) with q ≤ Q,
+    and the attracting windows (word, lo, hi) above 3−2√2 (the committed census by default)."""
+    marks = [(f"{s.p}/{s.q}", float(s.r), s.p / s.q) for s in it.resonances(Q)]
+    shown = [(w, lo, hi) for w, lo, hi in (windows if windows is not None else census_windows()) if hi > LOWER]
+    return marks, shown
+
+
+def draw_rotation(ax, Q: int, data) -> None:
+    marks, shown = data
     rs = np.linspace(LOWER + 1e-9, 1 - 1e-9, 600)
     rho = np.arccos(-(1 - rs) ** 2 / (4 * rs)) / (2 * math.pi)
     ax.plot(rs, rho, "k-", lw=1.2, label="ρ(r)")
-    for s in it.resonances(Q):
-        x = float(s.r)
+    for label, x, y in marks:
         ax.axvline(x, color="tab:blue", lw=0.5, alpha=0.6)
-        ax.annotate(f"{s.p}/{s.q}", (x, s.p / s.q), fontsize=7, xytext=(2, 2), textcoords="offset points")
-    shown = [(w, lo, hi) for w, lo, hi in (windows if windows is not None else census_windows()) if hi > LOWER]
+        ax.annotate(label, (x, y), fontsize=7, xytext=(2, 2), textcoords="offset points")
     for k, (w, lo, hi) in enumerate(shown):            # one thin row per window, at the bottom
         y = 0.02 + 0.04 * k
         ax.axvspan(max(lo, LOWER), hi, ymin=y, ymax=y + 0.03, color="tab:orange", alpha=0.8,
@@ -91,6 +113,10 @@ def rotation_axes(ax, Q: int = 12, windows=None) -> None:
     ax.set_ylabel("rotation number ρ")
     ax.set_title(f"ρ(r) and the resonances p/q, q ≤ {Q}")
     ax.legend(loc="upper right", fontsize=7)
+
+
+def rotation_axes(ax, Q: int = 12, windows=None) -> None:
+    draw_rotation(ax, Q, rotation_data(Q, windows))
 
 
 def island_figure(path, r=None, Q: int = 12) -> Path:
@@ -114,10 +140,19 @@ def island_figure(path, r=None, Q: int = 12) -> Path:
 
 def report_figure(r) -> str:
     """The b-section at r and the rotation number, as one figure of the report (``island.png``
-    in the output directory of the run, :func:`certify.run.saving.save_figure`)."""
-    plt = saving.pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
-    section_axes(axes[0], r)
-    rotation_axes(axes[1])
-    fig.tight_layout()
-    return saving.save_figure(fig, "island")
+    in the output directory of the run, :func:`certify.run.saving.save_figure`; drawn only
+    then, copied from :func:`certify.run.saving.cached` when drawn before from the same data)."""
+    if not saving.enabled():
+        return saving.figure_name("island")
+    section, rotation = section_data(r), rotation_data()
+
+    def draw() -> str:
+        plt = saving.pyplot()
+        fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+        draw_section(axes[0], r, section)
+        draw_rotation(axes[1], 12, rotation)
+        fig.tight_layout()
+        return saving.save_figure(fig, "island")
+    _, points, grid = section
+    key = saving.input_digest(str(r), *(a for pair in points for a in pair), *(grid or ()), rotation)
+    return saving.cached("island", key, draw)

@@ -37,69 +37,94 @@ def _cell_indices(table, rs: np.ndarray) -> list[int | None]:
     return out
 
 
+def _marks(marks: dict | None) -> list[tuple[str, float]]:
+    return [(label, float(value)) for label, value in (marks or {}).items()]
+
+
+def _draw_marks(ax, marks: list[tuple[str, float]]) -> None:
+    for label, value in marks:
+        ax.axvline(value, color="grey", lw=0.6, ls="--")
+        ax.annotate(label, (value, 1.0), xycoords=("data", "axes fraction"), fontsize=7,
+                    rotation=90, va="top", ha="right")
+
+
+def _spectrum_key(spectrum) -> str:
+    """The characteristic polynomial the curves are computed from (:func:`branch_curves`), and the legend's names."""
+    return f"{spectrum.degree} {[str(c) for c in spectrum.P.all_coeffs()]} {BRANCH_NAMES}"
+
+
 def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
     """Figures 1-2 of the paper (fig:spectrum, fig:spectrum zoom): the real spectrum of M on ]0,1[
     and its zoom 0<r<0.13, 0<λ<0.05.
     Branches are taken from the certified table: a point is drawn on branch k only
-    where the table proves k+1 real eigenvalues."""
+    where the table proves k+1 real eigenvalues.  What the table says at each point is
+    read first (the same reads, in the same order, whether the PNG is drawn or copied
+    from :func:`saving.cached`)."""
     if not saving.enabled():
         return ["spectrum.png", "spectrum_zoom.png"]
-    plt = saving.pyplot()
     names = []
     for name, (r_lo, r_hi), ylim in (("spectrum.png", (1e-4, 0.9999), None),
                                      ("spectrum_zoom.png", (1e-4, 0.13), (0, 0.05))):
         rs = np.linspace(r_lo, r_hi, 1500)
-        curves = branch_curves(spectrum, rs)
-        fig, ax = plt.subplots(figsize=(6.4, 4.2))
         cells = _cell_indices(table, rs)
-        for k in range(spectrum.degree):
-            ok = np.array([c is not None and k < len(table.cells[c].branches) for c in cells])
-            ax.plot(rs[ok], np.where(ok, curves[:, k], np.nan)[ok], ".", ms=1.5, color=COLORS[k],
-                    label=BRANCH_NAMES[k] + " branch" if k < 3 else f"branch {k}")
-        for label, value in marks.items():
-            ax.axvline(float(value), color="grey", lw=0.6, ls="--")
-            ax.annotate(label, (float(value), 1.0), xycoords=("data", "axes fraction"), fontsize=7,
-                        rotation=90, va="top", ha="right")
-        ax.set_xlim(r_lo, r_hi)
-        if ylim:
-            ax.set_ylim(*ylim)
-        ax.set_xlabel("r")
-        ax.set_ylabel("real eigenvalues λ of M")
-        ax.legend(loc="best", fontsize=7, markerscale=6)
-        names.append(saving.save_figure(fig, name))
+        oks = [np.array([c is not None and k < len(table.cells[c].branches) for c in cells])
+               for k in range(spectrum.degree)]
+        shown = _marks(marks)
+
+        def draw(name=name, rs=rs, oks=oks, shown=shown, r_lo=r_lo, r_hi=r_hi, ylim=ylim):
+            plt = saving.pyplot()
+            curves = branch_curves(spectrum, rs)
+            fig, ax = plt.subplots(figsize=(6.4, 4.2))
+            for k, ok in enumerate(oks):
+                ax.plot(rs[ok], np.where(ok, curves[:, k], np.nan)[ok], ".", ms=1.5, color=COLORS[k],
+                        label=BRANCH_NAMES[k] + " branch" if k < 3 else f"branch {k}")
+            _draw_marks(ax, shown)
+            ax.set_xlim(r_lo, r_hi)
+            if ylim:
+                ax.set_ylim(*ylim)
+            ax.set_xlabel("r")
+            ax.set_ylabel("real eigenvalues λ of M")
+            ax.legend(loc="best", fontsize=7, markerscale=6)
+            return saving.save_figure(fig, name)
+        key = saving.input_digest(_spectrum_key(spectrum), r_lo, r_hi, ylim, *oks, shown)
+        names.append(saving.cached(name, key, draw))
     return names
 
 
 def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=None, marks=None) -> str:
     """Figures 3-4 of the paper (fig: sign changes a-d, fig: sign change b): each branch coloured
-    by the certified sign of a condition."""
+    by the certified sign of a condition (read first, as in :func:`spectrum_figures`)."""
     if not saving.enabled():
         return name
-    plt = saving.pyplot()
     rs = np.linspace(xlim[0], xlim[1], 1500)
-    curves = branch_curves(spectrum, rs)
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
     cells = _cell_indices(table, rs)
-    for sign, color, label in ((1, "tab:red", "> 0"), (-1, "tab:blue", "< 0")):
-        for k in range(spectrum.degree):
-            ok = np.array([c is not None and k < len(table.cells[c].signs) and table.cells[c].signs[k] == sign
-                           for c in cells])
+    oks = [(sign, color, k, np.array([c is not None and k < len(table.cells[c].signs)
+                                      and table.cells[c].signs[k] == sign for c in cells]))
+           for sign, color in ((1, "tab:red"), (-1, "tab:blue")) for k in range(spectrum.degree)]
+    shown = _marks(marks)
+
+    def draw():
+        plt = saving.pyplot()
+        curves = branch_curves(spectrum, rs)
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        labelled = set()
+        for sign, color, k, ok in oks:
             if ok.any():
-                ax.plot(rs[ok], curves[ok, k], ".", ms=1.5, color=color, label=label)
-                label = None
-    for label, value in (marks or {}).items():
-        ax.axvline(float(value), color="grey", lw=0.6, ls="--")
-        ax.annotate(label, (float(value), 1.0), xycoords=("data", "axes fraction"), fontsize=7,
-                    rotation=90, va="top", ha="right")
-    ax.set_xlim(*xlim)
-    if ylim:
-        ax.set_ylim(*ylim)
-    ax.set_yscale("symlog", linthresh=1e-4)
-    ax.set_xlabel("r")
-    ax.set_ylabel("λ")
-    ax.set_title(title, fontsize=9)
-    ax.legend(loc="best", fontsize=7, markerscale=6)
-    return saving.save_figure(fig, name)
+                ax.plot(rs[ok], curves[ok, k], ".", ms=1.5, color=color,
+                        label=None if sign in labelled else ("> 0" if sign > 0 else "< 0"))
+                labelled.add(sign)
+        _draw_marks(ax, shown)
+        ax.set_xlim(*xlim)
+        if ylim:
+            ax.set_ylim(*ylim)
+        ax.set_yscale("symlog", linthresh=1e-4)
+        ax.set_xlabel("r")
+        ax.set_ylabel("λ")
+        ax.set_title(title, fontsize=9)
+        ax.legend(loc="best", fontsize=7, markerscale=6)
+        return saving.save_figure(fig, name)
+    key = saving.input_digest(_spectrum_key(spectrum), title, xlim, ylim, *(ok for *_, ok in oks), shown)
+    return saving.cached(name, key, draw)
 
 
 # --------------------------------------------------------------------------
@@ -137,6 +162,12 @@ def omega_figure(data, name: str, lines: dict | None = None, boxes=(), title: st
     rectangles.  ``dpi``: the resolution of the saved PNG (default: saving.DPI)."""
     if not saving.enabled():
         return saving.figure_name(name)
+    key = saving.input_digest(float(data.spec.lo), float(data.spec.hi), data.r, data.phi, data.break_r(),
+                              list((lines or {}).items()), list(boxes), title, size, dpi)
+    return saving.cached(name, key, lambda: _draw_omega(data, name, lines, boxes, title, size, dpi), dpi)
+
+
+def _draw_omega(data, name: str, lines, boxes, title: str, size, dpi) -> str:
     plt = saving.pyplot()
     from matplotlib.patches import Rectangle
     lo, hi = float(data.spec.lo), float(data.spec.hi)

@@ -17,15 +17,21 @@ the figure and still returns the name, so the certificate behaves the same.
 :func:`enabled` lets a certificate skip an expensive drawing in that case.
 
 The PNG bytes are reproducible: Agg backend, a fixed dpi, and no "Software"
-metadata (which would carry the matplotlib version).
+metadata (which would carry the matplotlib version).  So a drawing is a function of
+its inputs: :func:`cached` copies the PNG drawn before from the same inputs (and the
+same drawing code and libraries) instead of drawing it again.
 """
 from __future__ import annotations
 
+import hashlib
+import os
+from collections.abc import Callable
 from contextlib import contextmanager
 from fnmatch import fnmatch
+from functools import cache
 from pathlib import Path
 
-from certify.run.files import atomic_path
+from certify.run.files import atomic_path, write_atomic
 
 DPI = 110
 
@@ -93,6 +99,75 @@ def save_figure(fig, name: str, dpi: int | None = None) -> str:
     finally:
         plt.close(fig)
     return name
+
+
+CACHE_ENV = "CERTIFY_FIGURE_CACHE"     # the cache's directory; "off" (or empty) draws every figure
+DRAWING_CODE = ("saving.py", "plots.py", "island_figures.py")   # the modules that draw (this directory)
+
+
+def cache_dir() -> Path | None:
+    """Where drawn figures are kept by their inputs: $CERTIFY_FIGURE_CACHE, else
+    $XDG_CACHE_HOME/certify/figures (~/.cache/certify/figures); None when turned off."""
+    value = os.environ.get(CACHE_ENV)
+    if value is not None:
+        return None if value.strip().lower() in ("", "off", "0", "no") else Path(value)
+    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+    return Path(base) / "certify" / "figures"
+
+
+@cache
+def _drawing_version() -> str:
+    """The drawing code and the libraries that turn inputs into pixels, as one digest."""
+    from importlib.metadata import version
+    h = hashlib.sha256()
+    for name in DRAWING_CODE:
+        h.update((Path(__file__).parent / name).read_bytes())
+    for lib in ("matplotlib", "numpy"):
+        h.update(f"{lib} {version(lib)};".encode())
+    return h.hexdigest()
+
+
+def input_digest(*parts) -> str:
+    """A digest of a drawing's inputs: numpy arrays by dtype, shape and bytes, the rest by repr."""
+    h = hashlib.sha256()
+    for part in parts:
+        if hasattr(part, "tobytes") and hasattr(part, "dtype"):
+            h.update(f"array {part.dtype} {part.shape}:".encode() + part.tobytes())
+        else:
+            h.update(repr(part).encode())
+        h.update(b"|")
+    return h.hexdigest()
+
+
+def cached(name: str, inputs: str, draw: Callable[[], str], dpi: int | None = None) -> str:
+    """Figure ``name``, drawn by ``draw()`` (which saves it with :func:`save_figure` and
+    returns its name) unless the cache holds the PNG drawn from the same ``inputs`` (a
+    digest of everything the drawing reads: :func:`input_digest`) with the same drawing
+    code, libraries and dpi; then the cached bytes are written.  With no output directory,
+    nothing is drawn (``name`` returned).  The bytes are the same either way: the PNG is
+    a function of its inputs (module docstring)."""
+    name = figure_name(name)
+    if _output_dir is None:
+        return name
+    where = cache_dir()
+    if where is None:
+        return draw()
+    key = hashlib.sha256(f"{name}|{dpi or DPI}|{inputs}|{_drawing_version()}".encode()).hexdigest()
+    hit = where / f"{key}.png"
+    try:
+        data = hit.read_bytes()
+    except OSError:
+        data = None
+    if data is not None:
+        write_atomic(_output_dir / name, data)
+        return name
+    drawn = draw()
+    try:
+        where.mkdir(parents=True, exist_ok=True)
+        write_atomic(hit, (_output_dir / drawn).read_bytes())
+    except OSError:                     # a read-only or full cache: the figure is written all the same
+        pass
+    return drawn
 
 
 KEPT = ("*-paper.png", "bench_*.png", "census-*.png")   # written by `certify figures --resolution paper`,

@@ -46,6 +46,7 @@ from fractions import Fraction
 
 import flint
 
+from certify import obligations
 from certify.algebra.algebraic import Algebraic
 from certify.errors import UsageError
 from certify.numerics import grid
@@ -245,6 +246,19 @@ def _island_note(entry: dict, w: str) -> str:
             "the word codes the island's rotation for a while")
 
 
+_verify_replayed = obligations.replaying(ident.verify)
+
+
+def verify(r: Fraction, theta0: float, phi0: float, cls: str, k: int, rotation: str | None) -> str | None:
+    """:func:`certify.run.identify.verify`, computed once per run of the engine's caches while a
+    certificate records (:func:`certify.obligations.replaying`: a later call records its facts
+    again, so that a certificate's facts do not depend on what ran before it); computed afresh
+    otherwise (nothing would be captured to replay)."""
+    if obligations._ACTIVE and not obligations._ACTIVE[-1].depth:
+        return _verify_replayed(r, theta0, phi0, cls, k, rotation)
+    return ident.verify(r, theta0, phi0, cls, k, rotation)
+
+
 def classes_check(entry: dict) -> list:
     """The checks of one committed entry's classes: each island and attracting orbit
     re-checked by :func:`certify.run.identify.verify` at its committed collision (the
@@ -261,7 +275,7 @@ def classes_check(entry: dict) -> list:
         if not mine:
             continue
         refused = [f"θ0 = {o['theta0']:.6f}, φ0 = {o['phi0']:.6f}: {why}" for o in mine
-                   if (why := ident.verify(r, o["theta0"], o["phi0"], cls, o["certified_from"], o["rotation"]))]
+                   if (why := verify(r, o["theta0"], o["phi0"], cls, o["certified_from"], o["rotation"]))]
         ks = ", ".join(sorted({str(o["certified_from"]) for o in mine}, key=int))
         words = ", ".join(sorted({o["word"] for o in mine if o["word"]}))
         text = f"{EXPLANATION} at r = {entry['r']}, {len(mine)} of {n} orbits are " + says.format(ks=ks, words=words)

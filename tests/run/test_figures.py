@@ -47,3 +47,33 @@ def test_prune_keeps_listed_figures(tmp_path):
         (tmp_path / name).write_text("x")
     assert figures.prune(tmp_path, keep={"keep.png"}) == ["old.png"]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["keep.png", "notes.txt"]
+
+
+def test_a_cached_figure_is_the_drawn_one_and_drawn_again_when_an_input_changes(tmp_path, monkeypatch):
+    monkeypatch.setenv(figures.CACHE_ENV, str(tmp_path / "cache"))
+    drawn = []
+
+    def drawing(title):
+        def go():
+            drawn.append(title)
+            fig = draw()
+            fig.axes[0].set_title(title)
+            return figures.save_figure(fig, "f.png")
+        return go
+    key = figures.input_digest([0.5, 1.0], "a")
+    with figures.output_dir(tmp_path / "a"):
+        assert figures.cached("f", key, drawing("a")) == "f.png"
+    with figures.output_dir(tmp_path / "b"):
+        assert figures.cached("f", key, drawing("a")) == "f.png"            # copied, not drawn
+        figures.cached("f", figures.input_digest([0.5, 1.0], "b"), drawing("b"))
+    assert drawn == ["a", "b"]
+    assert figures.cached("f", key, drawing("a")) == "f.png" and drawn == ["a", "b"]   # nothing saved: nothing drawn
+    with figures.output_dir(tmp_path / "c"):
+        figures.cached("f", key, drawing("a"))
+    assert (tmp_path / "a" / "f.png").read_bytes() == (tmp_path / "c" / "f.png").read_bytes()
+    assert (tmp_path / "b" / "f.png").read_bytes() != (tmp_path / "c" / "f.png").read_bytes()
+    monkeypatch.setenv(figures.CACHE_ENV, "off")
+    with figures.output_dir(tmp_path / "d"):
+        figures.cached("f", key, drawing("a"))
+    assert drawn == ["a", "b", "a"]
+    assert (tmp_path / "d" / "f.png").read_bytes() == (tmp_path / "a" / "f.png").read_bytes()

@@ -1,11 +1,22 @@
 """The committed findings of Section 5 (reports/section5-orbits.json, `certify identify
 --section5`) and the explanations the certificates N2, N5, N6 draw from them
 (certify/run/section5_orbits.py): each committed word re-decided exactly at its r."""
+from functools import cache
+
+import pytest
+
 from certify.run import section5_orbits as s5
 from certify.run.files import load_findings
 from certify.run.runner import holds
 
 FOUND = load_findings(s5.FINDINGS)
+
+
+@cache
+def explained(claim: str) -> tuple:
+    """The explanations of ``claim`` from the committed findings, computed once for this module
+    (each re-decides every word and re-checks every class: seconds)."""
+    return tuple(s5.explanations(claim, s5.FINDINGS))
 
 
 def _first_attracting():
@@ -54,9 +65,9 @@ def test_the_classes_of_the_committed_findings_say_what_is_proved():
     e = entries[("N5", "173/1000", 100_000)]
     assert e["classes"]["attracting periodic"] == 8 and {len(o["word"]) for o in e["classified"]} == {122}
     for claim in s5.PLAN:
-        for c in s5.explanations(claim, s5.FINDINGS):
+        for c in explained(claim):
             assert "unexplained" not in c.statement
-    near_one = [c.statement for c in s5.explanations("N2", s5.FINDINGS) if "r = 999/1000" in c.statement]
+    near_one = [c.statement for c in explained("N2") if "r = 999/1000" in c.statement]
     assert any("(acb)^2(cab)^2" in t.replace("acbacbcabcab", "(acb)^2(cab)^2") and "island orbits" in t
                for t in near_one), near_one
 
@@ -82,11 +93,25 @@ def test_a_committed_class_that_does_not_hold_fails():
 
 def test_every_committed_explanation_holds_exactly():
     for claim in s5.PLAN:
-        checks = s5.explanations(claim, s5.FINDINGS)
+        checks = explained(claim)
         assert checks and all(holds(c) for c in checks), [c.statement for c in checks if not holds(c)]
         assert all(not c.counts for c in checks)          # ours, not the paper's claim: never a disagreement
 
 
+def test_an_altered_word_fails():
+    """A committed word altered into a near miss (its last letter): the explanation fails.
+    (The word abcb and the r 1/10 are the committed mutants of N2, tests/proofs/test_mutants.py;
+    all three edits: the slow test below.)"""
+    claim, e, w = _first_attracting()
+    assert any("an attracting periodic orbit of the reduction" in c.statement for c in explained(claim))
+    found = s5.load((s5.FINDINGS, {"word": "abacbabcbcabca"}), claim)
+    entry = next(e for e in found["claims"][claim] if e["words"])
+    assert entry["words"][0]["word"] == "abacbabcbcabca"
+    holds_, text, _ = s5.decide(entry, entry["words"][0])
+    assert not holds_ and "abacbabcbcabca" in text
+
+
+@pytest.mark.slow
 def test_an_altered_word_or_r_fails():
     claim, e, w = _first_attracting()
     found = s5.explanations(claim, s5.FINDINGS)
@@ -113,6 +138,6 @@ def test_missing_findings_fail():
 
 def test_the_report_labels_an_explanation_as_ours_not_the_engines():
     from certify.run.report import _checks
-    (c,) = [x for x in s5.explanations("N2", s5.FINDINGS) if "abacbabcbcabcb" in x.statement][:1]
+    (c,) = [x for x in explained("N2") if "abacbabcbcabcb" in x.statement][:1]
     text = _checks("As printed", [c])
     assert "certified explanation, beside the observation" in text and "consistency check of the engine" not in text
