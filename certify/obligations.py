@@ -362,7 +362,7 @@ def derivation(ids: list[str], verdict: bool, free: bool) -> tuple[list[str], di
     rec.pieces = [x for x in rec.pieces if x not in mine]
     pieces = [p for p, _ in mine]
     used = {i for p in pieces for i in _refs(p)}
-    ids = list(ids) + sorted(used - set(ids), key=lambda i: int(i.rsplit(":", 1)[1]))
+    ids = sorted(set(ids) | used, key=lambda i: int(i.rsplit(":", 1)[1]))   # as the file lists them: one order
     rest = [expected(rec.by_id[i]) for i in ids if i not in used and rec.by_id[i]["kind"] != "algebraic"]
     if not ids or None in rest:
         return ids, None
