@@ -80,3 +80,19 @@ def strings(value):
     elif isinstance(value, dict):
         for v in value.values():
             yield from strings(v)
+
+
+def certificates_file(ids) -> dict:
+    """reports/certificates.json as `certify all` would write it, for the certificates ``ids``
+    alone (the kernel's tests tamper with copies of it)."""
+    import json
+
+    from certify.run import report, runner
+    results, _ = runner.run_selected(list(ids))
+    return json.loads(report.render_certificates(results))
+
+
+def certificate_of(data: dict, cid: str) -> dict:
+    """A deep copy of certificate ``cid`` of a certificates file (to tamper with)."""
+    import copy
+    return copy.deepcopy(next(c for c in data["certificates"] if c["id"] == cid))

@@ -6,26 +6,24 @@ the obligation.  The file is made from T5 (a root count), T8 (a printed relation
 inspection)."""
 from __future__ import annotations
 
-import copy
 import json
 
 import pytest
 
 import certify_kernel
 from certify import obligations
-from certify.run import Check, report, runner
+from certify.run import Check
+from tests.shared import certificate_of, certificates_file
 
 IDS = ["T5", "T8", "T14", "T17", "S2"]
 
 
 @pytest.fixture(scope="module")
 def data() -> dict:
-    results, _ = runner.run_selected(IDS)
-    return json.loads(report.render_certificates(results))
+    return certificates_file(IDS)
 
 
-def cert(data: dict, cid: str) -> dict:
-    return copy.deepcopy(next(c for c in data["certificates"] if c["id"] == cid))
+cert = certificate_of
 
 
 def sub(c: dict, start: str) -> dict:

@@ -6,7 +6,6 @@ T17: sign tables with √Δ; S2: signs by inspection; S3: trigonometric identiti
 from __future__ import annotations
 
 import ast
-import copy
 import json
 import subprocess
 import sys
@@ -18,6 +17,7 @@ import pytest
 import certify_kernel
 from certify import cli
 from certify.run import report, runner
+from tests.shared import certificate_of, certificates_file
 
 ROOT = Path(__file__).resolve().parents[2]
 IDS = ["L1", "T1", "T4", "T5", "T9", "T17", "S2", "S3"]
@@ -25,12 +25,10 @@ IDS = ["L1", "T1", "T4", "T5", "T9", "T17", "S2", "S3"]
 
 @pytest.fixture(scope="module")
 def data() -> dict:
-    results, _ = runner.run_selected(IDS)
-    return json.loads(report.render_certificates(results))
+    return certificates_file(IDS)
 
 
-def cert(data: dict, cid: str) -> dict:
-    return copy.deepcopy(next(c for c in data["certificates"] if c["id"] == cid))
+cert = certificate_of
 
 
 def first(c: dict, kind: str, test=lambda ob: True) -> dict:
