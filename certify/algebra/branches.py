@@ -194,6 +194,7 @@ class Condition:
 
     _cache: dict = {}
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
+    _forms: dict | None = None             # the Horner forms of the parts (_forms), made on first use
 
     def __init__(self, name, N, D, delta, c, lrq: tuple | None = None):
         self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
@@ -214,12 +215,14 @@ class Condition:
     @property
     def N(self) -> tuple:
         if self._N is None:
+            assert self._lrq is not None          # built from flint polynomials
             self._N = (lr_to_ring(self._lrq[0]), lr_to_ring(self._lrq[1]))
         return self._N
 
     @property
     def D(self) -> tuple:
         if self._D is None:
+            assert self._lrq is not None
             self._D = (lr_to_ring(self._lrq[2]), RING.zero)
         return self._D
 

@@ -246,6 +246,7 @@ class Result:
     holds: bool
     evidence: list[str] = field(default_factory=list)
     routes: tuple = ()          # (numerator, normal form, Weierstrass) of an identity
+    facts: list | None = field(default=None, compare=False, repr=False)   # the obligations it was decided by
 
     def __bool__(self):
         return self.holds
