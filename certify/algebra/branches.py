@@ -865,7 +865,7 @@ class Spectrum:
                 single = self._single_common_root(h, rc)
                 if single is not None:
                     return single
-        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m, make_monic=False)
+        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
         if len(G) == 1:
             return False
         if len(G) == 2 or len(G) == 3 and nf.squarefree_quadratic(G, m):

@@ -397,3 +397,14 @@ def test_orbit_names_the_window_ends_that_are_resonances_of_the_island():
     assert any("upper end" in line and "ρ = 1/3" in line for line in lines), lines
     moved = [dict(a, hi={"exact": "27/100", "digits": "0.27"}) for a in res.attracting()]
     assert ro.resonance_lines(type("R", (), {"written": res.written, "attracting": lambda self: moved})()) == []
+
+
+@pytest.mark.slow
+def test_the_self_similar_line_of_the_122_letter_attractor_is_decided():
+    """`orbit --self-similar` on r = 0.173's attractor (pattern's analysis of the word): a gcd
+    in Q(rc)[λ] taken without its monic normalisation left a zero test undecided at the
+    precision cap (exit 3, nothing claimed); made monic, the analysis ends: feasible data,
+    never stable, with the same verdict as `certify pattern`."""
+    from certify.patterns import analyse as analyse_pattern
+    verdict = analyse_pattern(ATTRACTOR_0173).verdict
+    assert "feasible self-similar data, never stable" in verdict
