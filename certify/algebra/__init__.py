@@ -17,7 +17,7 @@ ground floor (:mod:`certify.errors`, :mod:`certify.caches`).
   the paper's phrases), evaluated on certified signs and numbers; unread text is an error.
 """
 from . import numberfield, statements, trig
-from .algebraic import Algebraic, roots_in_unit_interval, sign_at, sign_intervals, unique_root
+from .algebraic import Algebraic, rational_between, roots_in_unit_interval, sign_at, sign_intervals, unique_root
 from .balls import GUARD, decide, ends, ordered, precision, tight
 from .branches import (
                        BRANCH_NAMES,
@@ -69,7 +69,7 @@ from .sturm import checked_real_root_count, count_roots, flint_real_roots, isola
 
 __all__ = [
     "numberfield", "statements", "trig", "StatementError", "radical",
-    "Algebraic", "roots_in_unit_interval", "sign_at", "sign_intervals", "unique_root",
+    "Algebraic", "rational_between", "roots_in_unit_interval", "sign_at", "sign_intervals", "unique_root",
     "GUARD", "decide", "ends", "ordered", "precision", "tight",
     "BRANCH_NAMES", "LOWER", "MIDDLE", "UPPER", "X_MINUS", "X_PLUS", "Condition", "FixedPoint", "SignTable",
     "Spectrum", "ball_value", "sign_word", "simplest_between",

@@ -482,17 +482,20 @@ def sign_intervals(poly, lo, hi) -> list[tuple[object, object, int]]:
     P = flint.fmpq_poly(poly) if not isinstance(poly, flint.fmpq_poly) else poly
     roots = Algebraic.roots(primitive(P), lo, hi)
     ends = [Algebraic.rational(lo)] + roots + [Algebraic.rational(hi)]
-    out: list[tuple[object, object, int]] = []
-    for a, b in zip(ends, ends[1:]):
-        a.refine(Q(1, 2 ** 20))
-        b.refine(Q(1, 2 ** 20))
-        t = (a.hi + b.lo) / 2 if a.hi < b.lo else None
-        while t is None or not (a < Algebraic.rational(t) < b):
-            a.refine((a.hi - a.lo) / 16)
-            b.refine((b.hi - b.lo) / 16)
-            t = (a.hi + b.lo) / 2
-        out.append((a, b, _sign(P(t))))
-    return out
+    return [(a, b, _sign(P(rational_between(a, b)))) for a, b in zip(ends, ends[1:])]
+
+
+def rational_between(a: Algebraic, b: Algebraic):
+    """A rational strictly between a < b: the middle of the gap between their isolating
+    intervals (refined to 2^-20 first, then until there is a gap), checked exactly."""
+    a.refine(Q(1, 2 ** 20))
+    b.refine(Q(1, 2 ** 20))
+    t = (a.hi + b.lo) / 2 if a.hi < b.lo else None
+    while t is None or not (a < Algebraic.rational(t) < b):
+        a.refine((a.hi - a.lo) / 16)
+        b.refine((b.hi - b.lo) / 16)
+        t = (a.hi + b.lo) / 2
+    return t
 
 
 def roots_in_unit_interval(poly_text: str) -> tuple[list[Algebraic], tuple[int, int]]:

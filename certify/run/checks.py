@@ -17,6 +17,7 @@ from certify.algebra import (
     from_flint,
     parse,
     r,
+    rational_between,
     same_up_to_constant,
     show_factored_int,
     to_fmpz_poly,
@@ -194,21 +195,11 @@ def sign_intervals_facts(poly, ivs) -> list[str]:
                 lambda: facts.sign_at(sign(at_hi), P, hi.lo)]
     builders += [lambda z=z: facts.sign_at(0, P, z) for z in inner]
     for a, b, s in ivs:
-        t = between(a, b)
+        with obligations.quiet():        # the comparisons are recorded below
+            t = rational_between(a, b)
         builders += [lambda a=a, t=t: facts.compare(-1, a, t), lambda b=b, t=t: facts.compare(-1, t, b),
                      lambda s=s, t=t: facts.sign_at(s, P, t)]
     return fact_ids(*builders)
-
-
-def between(a: Algebraic, b: Algebraic):
-    """A rational strictly between the algebraic numbers a < b (their intervals refined)."""
-    with obligations.quiet():        # the comparisons are recorded by the caller
-        t = (a.hi + b.lo) / 2
-        while not (a < Algebraic.rational(t) < b):
-            a.refine((a.hi - a.lo) / 16)
-            b.refine((b.hi - b.lo) / 16)
-            t = (a.hi + b.lo) / 2
-    return t
 
 
 def unsupported_fact(reason: str) -> list[str]:
