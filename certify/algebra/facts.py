@@ -390,14 +390,17 @@ def keeps_piece(answer, emitted, table, branch, point) -> dict | None:
     return {"rule": "all", "of": [_cell_cover(left, s), _cell_cover(right, s)]}
 
 
+def _identities_and_sign(emitted, sign: int) -> dict:
+    """Every identity emitted holds, and every other fact has the sign ``sign``."""
+    return {"rule": "expect", "facts": [{"id": i, "holds": True} if ob["kind"] == "identity"
+                                        else {"id": i, "sign": sign} for i, ob in emitted]}
+
+
 def sign_piece(answer, emitted, target, expected, H, witness=None) -> dict:
     """trig.has_sign: target ≡ the witness (an identity), and the witness has the sign ``expected``."""
-    facts = [{"id": i, "holds": True} if ob["kind"] == "identity" else {"id": i, "sign": int(expected)}
-             for i, ob in emitted]
-    return {"rule": "expect", "facts": facts}
+    return _identities_and_sign(emitted, int(expected))
 
 
 def proportional_piece(answer, emitted, v, w, H, ratio=None) -> dict:
     """trig.positively_proportional: the ratio k has the sign 1, and v ≡ k w (an identity)."""
-    return {"rule": "expect", "facts": [{"id": i, "holds": True} if ob["kind"] == "identity" else {"id": i, "sign": 1}
-                                        for i, ob in emitted]}
+    return _identities_and_sign(emitted, 1)
