@@ -97,10 +97,10 @@ def norm_mpoly(P0, P1, delta) -> flint.fmpz_mpoly:
     """A positive integer multiple of P₀² - P₁²Δ (polynomials of the engine's ring in
     r, λ) as a primitive ``fmpz_mpoly`` in (r, λ, s), by python-flint: the same zeros,
     which is all a norm is used for."""
-    return _norm_of(_integer_mpoly(P0), _integer_mpoly(P1), _integer_mpoly(delta))
+    return _norm_of_pairs(_integer_mpoly(P0), _integer_mpoly(P1), _integer_mpoly(delta))
 
 
-def _norm_of(P0, P1, delta) -> flint.fmpz_mpoly:
+def _norm_of_pairs(P0, P1, delta) -> flint.fmpz_mpoly:
     """:func:`norm_mpoly` from the pairs (A, d) of :func:`_integer_mpoly`."""
     (A0, d0), (A1, d1), (AD, dD) = P0, P1, delta
     M = A0 * A0 * (d1 * d1 * dD) - A1 * A1 * AD * (d0 * d0)     # d0² d1² dD (P0² - P1²Δ)
@@ -264,7 +264,7 @@ class Condition:
             else:
                 N0, N1, D0 = self._lrq
                 out.append(("N", _lrq_to_mpoly(N0)[0] if N1.is_zero() else
-                            _norm_of(_lrq_to_mpoly(N0), _lrq_to_mpoly(N1), _integer_delta(self.delta))))
+                            _norm_of_pairs(_lrq_to_mpoly(N0), _lrq_to_mpoly(N1), _integer_delta(self.delta))))
                 out.append(("D", _lrq_to_mpoly(D0)[0]))
             if self.delta is not None:
                 out += [("delta", _integer_delta(self.delta)[0]), ("c", _integer_delta(self.c)[0])]
