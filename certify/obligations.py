@@ -153,11 +153,14 @@ def asserting(make: Callable) -> Callable:
 def replaying(func: Callable) -> Callable:
     """functools.cache for a computation whose facts a certificate relies on: the facts
     recorded while it first ran are recorded again at every later call, so that what a
-    certificate records does not depend on what ran before it in the same process."""
+    certificate records does not depend on what ran before it in the same process.  Outside
+    a recording it computes afresh (it could capture nothing to replay later)."""
     memo: dict = {}
 
     @functools.wraps(func)
     def inner(*args):
+        if not _ACTIVE or _ACTIVE[-1].depth:
+            return func(*args)
         if args not in memo:
             got: list = []
             _CAPTURES.append(got)

@@ -246,17 +246,7 @@ def _island_note(entry: dict, w: str) -> str:
             "the word codes the island's rotation for a while")
 
 
-_verify_replayed = obligations.replaying(ident.verify)
-
-
-def verify(r: Fraction, theta0: float, phi0: float, cls: str, k: int, rotation: str | None) -> str | None:
-    """:func:`certify.run.identify.verify`, computed once per run of the engine's caches while a
-    certificate records (:func:`certify.obligations.replaying`: a later call records its facts
-    again, so that a certificate's facts do not depend on what ran before it); computed afresh
-    otherwise (nothing would be captured to replay)."""
-    if obligations._ACTIVE and not obligations._ACTIVE[-1].depth:
-        return _verify_replayed(r, theta0, phi0, cls, k, rotation)
-    return ident.verify(r, theta0, phi0, cls, k, rotation)
+verify = obligations.replaying(ident.verify)    # once per run of the caches; its facts recorded at every call
 
 
 def classes_check(entry: dict) -> list:

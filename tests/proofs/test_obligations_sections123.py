@@ -118,3 +118,26 @@ def test_gathered_again_names_a_fact_an_earlier_check_took():
         with obligations.gathered(again=True) as again:
             obligations.emit(fact)
     assert plain == [] and again == [first]
+
+
+def test_replaying_records_the_facts_at_every_call_and_keeps_nothing_outside_a_recording():
+    """obligations.replaying: in one certificate's recording the first call runs and records its
+    fact; in the next certificate's recording a call runs nothing and records the same fact
+    again; a call outside a recording runs afresh and leaves nothing to replay (a memo filled
+    there would replay no fact)."""
+    runs: list = []
+    fact = {"kind": "compare", "a": "2", "b": "1", "sign": 1}
+
+    def compute(x):
+        runs.append(x)
+        obligations.emit(fact)
+        return x * 2
+
+    replayed = obligations.replaying(compute)
+    assert replayed(3) == 6 and runs == [3]            # not recording: computed, nothing kept
+    facts = []
+    for cid in ("Y", "Z"):
+        with obligations.recording(cid) as rec:
+            assert replayed(3) == 6
+            facts.append([rec.by_id[i]["sign"] for i in obligations.take()])
+    assert runs == [3, 3] and facts == [[1], [1]]
