@@ -34,7 +34,6 @@ from certify.run import (
     committed_windows,
     conclude,
     explanations,
-    fact_ids,
     island_figure,
     load_findings,
     observe,
@@ -42,6 +41,7 @@ from certify.run import (
     quantity,
     replaced,
     section5_figure,
+    unsupported_fact,
 )
 
 PAPER_FINDINGS = "numerics-paper.json"
@@ -590,10 +590,10 @@ def island_unsupported(symbolic: bool) -> list[str]:
     signs = ("the signs of rational functions of r on ]3−2√2, 1[ (an interval with an algebraic end: `signed` and "
              "`root_count` know ]0, 1[ and rational ends)" if symbolic else
              "the content of the integer polynomial 2pq(ν² − tr A ν + det A) and its leading coefficient (step f)")
-    return fact_ids(lambda: {"kind": "unsupported", "reason": (
+    return unsupported_fact(
         "the island theorem (certify.patterns.island_theorem): step (b), the branch region, is a Fourier–Motzkin "
         f"elimination over the leaves of a sign branching of linear forms in (u, v), and the steps rest on {signs}; "
-        "neither is in the obligation language (the identities of steps a, c, d, e alone do not give the verdict)")})
+        "neither is in the obligation language (the identities of steps a, c, d, e alone do not give the verdict)")
 
 
 def window_resonance_explanation() -> list:
