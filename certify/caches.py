@@ -11,13 +11,25 @@ from __future__ import annotations
 from collections.abc import Callable
 
 _CLEARS: list[Callable[[], None]] = []
+_OF_A_WORD: list[Callable[[], None]] = []
 
 
-def register(clear: Callable[[], None]) -> Callable[[], None]:
-    """Remember ``clear`` (a function of no argument that empties one cache); return it."""
+def register(clear: Callable[[], None], of_a_word: bool = False) -> Callable[[], None]:
+    """Remember ``clear`` (a function of no argument that empties one cache); return it.
+    ``of_a_word``: the cache is keyed by a collision word (a word's candidate, its
+    Spectrum), and :func:`reset_words` empties it too."""
     if clear not in _CLEARS:
         _CLEARS.append(clear)
+    if of_a_word and clear not in _OF_A_WORD:
+        _OF_A_WORD.append(clear)
     return clear
+
+
+def reset_words() -> None:
+    """Empty the caches keyed by a word: what a run over many words (the census) forgets
+    after each one, keeping the memos that serve every word."""
+    for clear in _OF_A_WORD:
+        clear()
 
 
 def reset() -> None:

@@ -115,4 +115,4 @@ def candidate_in(system_name: str, word: str) -> Candidate:
                      steps_of(run))
 
 
-caches.register(candidate_in.cache_clear)
+caches.register(candidate_in.cache_clear, of_a_word=True)

@@ -262,5 +262,5 @@ def candidate(word: str) -> Candidate:
 
 
 
-caches.register(candidate.cache_clear)
-caches.register(spectrum_of.cache_clear)
+caches.register(candidate.cache_clear, of_a_word=True)
+caches.register(spectrum_of.cache_clear, of_a_word=True)

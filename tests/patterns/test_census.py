@@ -72,6 +72,14 @@ def test_an_analysis_error_is_a_record_not_an_exception(monkeypatch):
     assert rec["feasible"] is None and rec["contains_abcab"] is False
 
 
+def test_a_census_word_leaves_no_memo_behind():
+    """A worker analyses thousands of words: each word's memos (its candidate, its
+    Spectrum and their sign tables) must not outlive it."""
+    from certify.dynamics import words
+    census.analyse_word("ababcbcb")
+    assert words.candidate.cache_info().currsize == words.spectrum_of.cache_info().currsize == 0
+
+
 # ----------------------------------------------------------------- running, executors, resume
 L_SMALL = 4                                   # ab, acb, abcb: seconds
 
