@@ -14,7 +14,7 @@ PENDING: set = set()                 # pages linked before they are written (non
 def test_the_first_screen_is_short_and_has_the_two_commands():
     assert len(README.encode()) < 6200
     assert "pip install -e . && python -m certify all" in README
-    assert "pip install -e '.[test]' && python -m pytest -q" in README
+    assert "pip install -e '.[test]' && python -m pytest -q -n auto" in README
     assert "this session" not in README
 
 
