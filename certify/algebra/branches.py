@@ -178,11 +178,11 @@ def _lrq_terms(q) -> list[tuple[flint.fmpq, int, int]]:
 def _lrq_to_mpoly(q) -> tuple:
     """(A, d): q = A/d with A an integer ``fmpz_mpoly`` in (r, λ, s) and d > 0 the lcm of
     q's denominators (q an fmpq_mpoly in (λ, r)): :func:`_integer_mpoly` without the ring."""
-    items = q.to_dict().items()
+    cs = q.coeffs()
     d = flint.fmpz(1)
-    for _m, c in items:
+    for c in cs:
         d = d.lcm(c.q)
-    return MCTX.from_dict({(er, el, 0): (c * d).p for (el, er), c in items}), d
+    return MCTX.from_dict({(er, el, 0): (c * d).p for (el, er), c in zip(q.monoms(), cs)}), d
 
 
 class Condition:
@@ -270,6 +270,15 @@ class Condition:
                 out += [("delta", _integer_delta(self.delta)[0]), ("c", _integer_delta(self.c)[0])]
             self._norms = [(label, p) for label, p in out if not p.is_constant()]
         return self._norms
+
+
+    def numerator_norm(self):
+        """N₀² - N₁²Δ as :meth:`labelled_norms` holds it (the very polynomial :func:`norm_mpoly`
+        makes of N₀, N₁, Δ), when N₁ ≠ 0 and it is not constant; else None."""
+        zero = self._lrq[1].is_zero() if self._lrq is not None else not self.N[1]
+        if self.delta is None or zero:
+            return None
+        return next((p for label, p in self.labelled_norms() if label == "N"), None)
 
 
 caches.register(Condition._cache.clear)
@@ -801,19 +810,19 @@ class Spectrum:
                 return 0
             return UNDECIDED
         if not self.vanishes_at(cond.delta, rc, k):
-            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball) and \
+            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball, cond.numerator_norm()) and \
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
             return UNDECIDED
         return decide(lambda p: _sign_ball(cond, rc.arb(p), ball(p), delta_is_zero=True), 128, maxprec)
 
-    def _root_with_sqrt(self, P, delta, rc, k, ball, maxprec: int = 1024):
+    def _root_with_sqrt(self, P, delta, rc, k, ball, M=None, maxprec: int = 1024):
         """Whether P₀ + P₁√Δ vanishes on branch k at rc, where Δ > 0: exactly when the
         norm P₀² - P₁²Δ vanishes (exact test) and P₀ = -P₁√Δ, that is P₁ = 0 (then
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
-        None when undecided."""
+        None when undecided.  ``M``: the norm as :func:`norm_mpoly` makes it, when known."""
         P0, P1 = P
-        if not self.vanishes_at(self._norm_of(P0, P1, delta), rc, k):
+        if not self.vanishes_at(self._norm_of(P0, P1, delta, M), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -873,13 +882,14 @@ class Spectrum:
         G, _ = nf.squarefree(nf.monic(G, m), m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
-    def _norm_of(self, P0, P1, delta):
+    def _norm_of(self, P0, P1, delta, M=None):
         """:func:`norm` of P₀ + P₁√Δ, memoised by the identity of the three (the same object
-        for the same parts: the exact tests at other points find their work done)."""
+        for the same parts: the exact tests at other points find their work done); ``M``
+        that norm as :func:`norm_mpoly` makes it, when the caller holds it already."""
         key = (id(P0), id(P1), id(delta))
         entry = self._norms.get(key)
         if entry is None or entry[0] is not P0 or entry[1] is not P1 or entry[2] is not delta:
-            M = norm_mpoly(P0, P1, delta)
+            M = norm_mpoly(P0, P1, delta) if M is None else M
             h = mpoly_to_ring(M)
             if self.lc.degree() <= 0:        # its resultant from M itself (no conversion back)
                 self._resultant_ids[h] = (h, self.resultant(M))     # keyed as _resultant_of keys a ring element
