@@ -615,14 +615,20 @@ class Spectrum:
             G = G / G.content()  # type: ignore[attr-defined]
             if G.coeffs()[0] < 0:
                 G = -G
-        key = str(G)
-        if key not in self._resultants:
-            if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
-                R = _norm_modulo(_lambda_coefficients(G), self._cp_coeffs)
-            else:
-                R = mpoly_to_univariate(G.resultant(self.mpoly_cp, "lam"))
-            self._resultants[key] = primitive(R)
-        return self._resultants[key]
+        # a cheap key (size, degrees, outer coefficients) and python-flint's equality within it:
+        # the same as keying by the text, without printing a polynomial of thousands of terms
+        coeffs = G.coeffs()
+        key = (len(coeffs), tuple(G.degrees()), int(coeffs[0]) if coeffs else 0, int(coeffs[-1]) if coeffs else 0)
+        bucket = self._resultants.setdefault(key, [])
+        for H, R in bucket:
+            if H == G:
+                return R
+        if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
+            R = _norm_modulo(_lambda_coefficients(G), self._cp_coeffs)
+        else:
+            R = mpoly_to_univariate(G.resultant(self.mpoly_cp, "lam"))
+        bucket.append((G, primitive(R)))
+        return bucket[-1][1]
 
     def _resultant_off_common_factor(self, e, cond: Condition, label: str) -> flint.fmpz_poly:
         """Res_λ(e, cp) ≡ 0: e and cp share a factor G in Q(r)[λ] (cp is reducible), so e
