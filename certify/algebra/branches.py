@@ -998,17 +998,13 @@ class Spectrum:
 def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
     """G ∈ Z[r][λ] (an fmpz_mpoly in (r, λ, s) free of s) as its coefficients in λ,
     lowest first, each an fmpz_poly in r."""
-    rows: dict = {}
+    if G.is_zero():
+        return [flint.fmpz_poly(0)]
+    dr, dl, _ds = G.degrees()
+    rows = [[0] * (dr + 1) for _ in range(dl + 1)]
     for (er, el, _es), c in zip(G.monoms(), G.coeffs()):
-        rows.setdefault(el, {})[er] = c
-    out = []
-    for j in range(max(rows, default=0) + 1):
-        row = rows.get(j)
-        coeffs = [0] * (max(row) + 1 if row else 1)
-        for i, c in (row or {}).items():
-            coeffs[i] = c
-        out.append(flint.fmpz_poly(coeffs))
-    return out
+        rows[el][er] = c
+    return [flint.fmpz_poly(row) for row in rows]
 
 
 def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:
