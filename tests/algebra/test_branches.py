@@ -884,3 +884,17 @@ def test_order_from_intervals_agrees_with_exact_comparison():
             assert less(a, b) == (a < b) and at_most(a, b) == (a <= b) and same(a, b) == (a == b)
     lo, hi = Algebraic.rational(flint.fmpq(1)), Algebraic.rational(flint.fmpq(3, 2))
     assert [strictly_between(lo, a, hi) for a in nums] == [lo < a < hi for a in nums]
+
+
+
+def test_numerator_norm_is_the_norm_of_the_parts():
+    """The norm the exact zero test takes from a condition (Condition.numerator_norm) is
+    the very polynomial norm_mpoly makes of N₀, N₁, Δ (x - 1/2, x the fixed point of
+    (λx + r)/(x + 1)); None where there is no √Δ (the norm would be N₀², not N₀).  The
+    engine's conditions of a candidate: tests/patterns/test_feasibility.py."""
+    from certify.algebra.branches import norm_mpoly
+    fp = FixedPoint(lam, r, sp.Integer(1), sp.Integer(1))
+    cond = Condition.of("x - 1/2", x - HALF, fp)
+    assert cond.numerator_norm() is not None
+    assert cond.numerator_norm() == norm_mpoly(*cond.N, cond.delta)
+    assert Condition.of("λ - 1/2", lam - HALF).numerator_norm() is None
