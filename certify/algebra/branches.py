@@ -291,6 +291,30 @@ def _eval_terms(terms, Rp, Lp) -> flint.arb:
     return total
 
 
+def _lambda_polys(terms) -> list[flint.fmpq_poly]:
+    """:func:`poly.ring_terms` of h(r, λ) as h's coefficients in λ (lowest first), each an
+    ``fmpq_poly`` in r (made an ``arb_poly`` at the working precision to evaluate at a ball)."""
+    rows: dict[int, dict[int, flint.fmpq]] = {}
+    for c, i, j in terms:
+        rows.setdefault(j, {})[i] = c
+    out = []
+    for j in range(max(rows, default=0) + 1):
+        row = rows.get(j, {})
+        coeffs = [flint.fmpq(0)] * (max(row, default=0) + 1)
+        for i, c in row.items():
+            coeffs[i] = c
+        out.append(flint.fmpq_poly(coeffs))
+    return out
+
+
+def _horner(coeffs, z):
+    """Σ coeffs[j] z^j (balls, lowest first) by Horner's rule."""
+    total = z * 0
+    for c in reversed(coeffs):
+        total = total * z + c
+    return total
+
+
 def _powers(z, n):
     out = [flint.arb(1)]
     for _ in range(n):
@@ -930,7 +954,7 @@ class Spectrum:
             terms = ring_terms(h)
         except ValueError:                  # h still has √Δ: the gcd decides
             return None
-        n = max((max(i, j) for _c, i, j in terms), default=0)
+        in_lambda = _lambda_polys(terms)
 
         seen = []                            # how many roots balls left at each precision tried
 
@@ -939,8 +963,9 @@ class Spectrum:
             if roots is None:
                 return None
             with precision(prec + GUARD):
-                Rp = _powers(rc.arb(prec), n)
-                left = [i for i, z in enumerate(roots) if _eval_terms(terms, Rp, _powers(z, n)).contains(0)]
+                R = rc.arb(prec)                   # h(rc, λ)'s coefficients, balls at this precision
+                at_rc = [flint.arb_poly(p)(R) for p in in_lambda]
+                left = [i for i, z in enumerate(roots) if _horner(at_rc, z).contains(0)]
                 seen.append(len(left))
                 if len(left) == 2 and _conjugate_pair(roots, *left):
                     return []                    # both common (h is real), neither real
