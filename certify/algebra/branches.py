@@ -178,11 +178,11 @@ def _lrq_terms(q) -> list[tuple[flint.fmpq, int, int]]:
 def _lrq_to_mpoly(q) -> tuple:
     """(A, d): q = A/d with A an integer ``fmpz_mpoly`` in (r, λ, s) and d > 0 the lcm of
     q's denominators (q an fmpq_mpoly in (λ, r)): :func:`_integer_mpoly` without the ring."""
-    items = q.to_dict().items()
+    cs = q.coeffs()
     d = flint.fmpz(1)
-    for _m, c in items:
+    for c in cs:
         d = d.lcm(c.q)
-    return MCTX.from_dict({(er, el, 0): (c * d).p for (el, er), c in items}), d
+    return MCTX.from_dict({(er, el, 0): (c * d).p for (el, er), c in zip(q.monoms(), cs)}), d
 
 
 class Condition:
@@ -272,6 +272,15 @@ class Condition:
         return self._norms
 
 
+    def numerator_norm(self):
+        """N₀² - N₁²Δ as :meth:`labelled_norms` holds it (the very polynomial :func:`norm_mpoly`
+        makes of N₀, N₁, Δ), when N₁ ≠ 0 and it is not constant; else None."""
+        zero = self._lrq[1].is_zero() if self._lrq is not None else not self.N[1]
+        if self.delta is None or zero:
+            return None
+        return next((p for label, p in self.labelled_norms() if label == "N"), None)
+
+
 caches.register(Condition._cache.clear)
 
 
@@ -279,6 +288,30 @@ def _eval_terms(terms, Rp, Lp) -> flint.arb:
     total = flint.arb(0)
     for c, i, j in terms:
         total += c * Rp[i] * Lp[j]
+    return total
+
+
+def _lambda_polys(terms) -> list[flint.fmpq_poly]:
+    """:func:`poly.ring_terms` of h(r, λ) as h's coefficients in λ (lowest first), each an
+    ``fmpq_poly`` in r (made an ``arb_poly`` at the working precision to evaluate at a ball)."""
+    rows: dict[int, dict[int, flint.fmpq]] = {}
+    for c, i, j in terms:
+        rows.setdefault(j, {})[i] = c
+    out = []
+    for j in range(max(rows, default=0) + 1):
+        row = rows.get(j, {})
+        coeffs = [flint.fmpq(0)] * (max(row, default=0) + 1)
+        for i, c in row.items():
+            coeffs[i] = c
+        out.append(flint.fmpq_poly(coeffs))
+    return out
+
+
+def _horner(coeffs, z):
+    """Σ coeffs[j] z^j (balls, lowest first) by Horner's rule."""
+    total = z * 0
+    for c in reversed(coeffs):
+        total = total * z + c
     return total
 
 
@@ -606,14 +639,20 @@ class Spectrum:
             G = G / G.content()  # type: ignore[attr-defined]
             if G.coeffs()[0] < 0:
                 G = -G
-        key = str(G)
-        if key not in self._resultants:
-            if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
-                R = _norm_modulo(_lambda_coefficients(G), self._cp_coeffs)
-            else:
-                R = mpoly_to_univariate(G.resultant(self.mpoly_cp, "lam"))
-            self._resultants[key] = primitive(R)
-        return self._resultants[key]
+        # a cheap key (size, degrees, outer coefficients) and python-flint's equality within it:
+        # the same as keying by the text, without printing a polynomial of thousands of terms
+        coeffs = G.coeffs()
+        key = (len(coeffs), tuple(G.degrees()), int(coeffs[0]) if coeffs else 0, int(coeffs[-1]) if coeffs else 0)
+        bucket = self._resultants.setdefault(key, [])
+        for H, R in bucket:
+            if H == G:
+                return R
+        if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
+            R = _norm_modulo(_lambda_coefficients(G), self._cp_coeffs)
+        else:
+            R = mpoly_to_univariate(G.resultant(self.mpoly_cp, "lam"))
+        bucket.append((G, primitive(R)))
+        return bucket[-1][1]
 
     def _resultant_off_common_factor(self, e, cond: Condition, label: str) -> flint.fmpz_poly:
         """Res_λ(e, cp) ≡ 0: e and cp share a factor G in Q(r)[λ] (cp is reducible), so e
@@ -801,19 +840,19 @@ class Spectrum:
                 return 0
             return UNDECIDED
         if not self.vanishes_at(cond.delta, rc, k):
-            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball) and \
+            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball, cond.numerator_norm()) and \
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
             return UNDECIDED
         return decide(lambda p: _sign_ball(cond, rc.arb(p), ball(p), delta_is_zero=True), 128, maxprec)
 
-    def _root_with_sqrt(self, P, delta, rc, k, ball, maxprec: int = 1024):
+    def _root_with_sqrt(self, P, delta, rc, k, ball, M=None, maxprec: int = 1024):
         """Whether P₀ + P₁√Δ vanishes on branch k at rc, where Δ > 0: exactly when the
         norm P₀² - P₁²Δ vanishes (exact test) and P₀ = -P₁√Δ, that is P₁ = 0 (then
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
-        None when undecided."""
+        None when undecided.  ``M``: the norm as :func:`norm_mpoly` makes it, when known."""
         P0, P1 = P
-        if not self.vanishes_at(self._norm_of(P0, P1, delta), rc, k):
+        if not self.vanishes_at(self._norm_of(P0, P1, delta, M), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -873,13 +912,14 @@ class Spectrum:
         G, _ = nf.squarefree(nf.monic(G, m), m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
-    def _norm_of(self, P0, P1, delta):
+    def _norm_of(self, P0, P1, delta, M=None):
         """:func:`norm` of P₀ + P₁√Δ, memoised by the identity of the three (the same object
-        for the same parts: the exact tests at other points find their work done)."""
+        for the same parts: the exact tests at other points find their work done); ``M``
+        that norm as :func:`norm_mpoly` makes it, when the caller holds it already."""
         key = (id(P0), id(P1), id(delta))
         entry = self._norms.get(key)
         if entry is None or entry[0] is not P0 or entry[1] is not P1 or entry[2] is not delta:
-            M = norm_mpoly(P0, P1, delta)
+            M = norm_mpoly(P0, P1, delta) if M is None else M
             h = mpoly_to_ring(M)
             if self.lc.degree() <= 0:        # its resultant from M itself (no conversion back)
                 self._resultant_ids[h] = (h, self.resultant(M))     # keyed as _resultant_of keys a ring element
@@ -914,7 +954,7 @@ class Spectrum:
             terms = ring_terms(h)
         except ValueError:                  # h still has √Δ: the gcd decides
             return None
-        n = max((max(i, j) for _c, i, j in terms), default=0)
+        in_lambda = _lambda_polys(terms)
 
         seen = []                            # how many roots balls left at each precision tried
 
@@ -923,8 +963,9 @@ class Spectrum:
             if roots is None:
                 return None
             with precision(prec + GUARD):
-                Rp = _powers(rc.arb(prec), n)
-                left = [i for i, z in enumerate(roots) if _eval_terms(terms, Rp, _powers(z, n)).contains(0)]
+                R = rc.arb(prec)                   # h(rc, λ)'s coefficients, balls at this precision
+                at_rc = [flint.arb_poly(p)(R) for p in in_lambda]
+                left = [i for i, z in enumerate(roots) if _horner(at_rc, z).contains(0)]
                 seen.append(len(left))
                 if len(left) == 2 and _conjugate_pair(roots, *left):
                     return []                    # both common (h is real), neither real
@@ -982,17 +1023,13 @@ class Spectrum:
 def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
     """G ∈ Z[r][λ] (an fmpz_mpoly in (r, λ, s) free of s) as its coefficients in λ,
     lowest first, each an fmpz_poly in r."""
-    rows: dict = {}
+    if G.is_zero():
+        return [flint.fmpz_poly(0)]
+    dr, dl, _ds = G.degrees()
+    rows = [[0] * (dr + 1) for _ in range(dl + 1)]
     for (er, el, _es), c in zip(G.monoms(), G.coeffs()):
-        rows.setdefault(el, {})[er] = c
-    out = []
-    for j in range(max(rows, default=0) + 1):
-        row = rows.get(j)
-        coeffs = [0] * (max(row) + 1 if row else 1)
-        for i, c in (row or {}).items():
-            coeffs[i] = c
-        out.append(flint.fmpz_poly(coeffs))
-    return out
+        rows[el][er] = c
+    return [flint.fmpz_poly(row) for row in rows]
 
 
 def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:

@@ -256,7 +256,8 @@ def mpoly_to_ring(p: flint.fmpz_mpoly) -> PolyElement:
     """An ``fmpz_mpoly`` in (r, λ, s) as an element of RING (the inverse of
     :func:`ring_to_mpoly` up to its positive factor)."""
     dom = RING.domain
-    return RING.zero.new({(el, er, 0, 0, 0, es): dom(int(c)) for (er, el, es), c in p.to_dict().items()})
+    conv = flint.fmpq if dom.dtype is flint.fmpq else (lambda c: dom(int(c)))
+    return RING.zero.new({(el, er, 0, 0, 0, es): conv(c) for (er, el, es), c in p.to_dict().items()})
 
 
 def ring_terms(p: PolyElement) -> list[tuple[flint.fmpq, int, int]]:
@@ -413,11 +414,13 @@ def field_to_frac(f) -> Frac:
 def lr_to_ring(p, scale=1) -> PolyElement:
     """An fmpz_mpoly/fmpq_mpoly in (λ, r), divided by ``scale``, as an element of RING."""
     dom = RING.domain
+    # SymPy's QQ over python-flint holds fmpq itself: build them directly (no domain dispatch)
+    conv = flint.fmpq if dom.dtype is flint.fmpq else dom
     if scale == 1:
-        d = {(el, er, 0, 0, 0, 0): dom(c) for (el, er), c in p.to_dict().items()}
+        d = {(el, er, 0, 0, 0, 0): conv(c) for (el, er), c in p.to_dict().items()}
     else:
         s = flint.fmpq(scale)
-        d = {(el, er, 0, 0, 0, 0): dom(flint.fmpq(c) / s) for (el, er), c in p.to_dict().items()}
+        d = {(el, er, 0, 0, 0, 0): conv(flint.fmpq(c) / s) for (el, er), c in p.to_dict().items()}
     return RING.zero.new(d)
 
 

@@ -135,6 +135,22 @@ def _changes_at_infinity(seq, sign: int) -> int:
 
 _BALLS: dict = {}                # coefficients of p0 -> [(a, b, sign p0(a))] or None
 caches.register(_BALLS.clear)
+_COMPLEX: dict = {}              # (coefficients of P, working precision) -> P.complex_roots()
+caches.register(_COMPLEX.clear)
+BALL_BITS = 64 + 30              # the working precision of the root balls of both uses below
+
+
+def _complex_roots(P: flint.fmpz_poly) -> list:
+    """python-flint's certified complex roots of P, (acb, multiplicity) pairs, at the current
+    working precision; memoised (the enclosures of :func:`count_roots` and the second
+    route's count, :func:`flint_real_roots`, isolate the same factors)."""
+    key = (poly_key(P), flint.ctx.prec)
+    out = _COMPLEX.get(key)
+    if out is None:
+        if len(_COMPLEX) > 20000:
+            _COMPLEX.clear()
+        out = _COMPLEX[key] = P.complex_roots()
+    return out
 
 
 def _root_enclosures(seq):
@@ -155,8 +171,8 @@ def _root_enclosures(seq):
         _BALLS.clear()
     out = None
     try:
-        with precision(64 + 30):
-            roots = [c.real for c, _m in p0.numer().complex_roots() if c.imag.is_zero()]
+        with precision(BALL_BITS):
+            roots = [c.real for c, _m in _complex_roots(p0.numer()) if c.imag.is_zero()]
         cand = []
         for z in roots:
             m, d = z.mid().fmpq(), z.rad().fmpq()
@@ -266,7 +282,9 @@ def checked_real_root_count(p) -> int:
     The two routes share nothing but p: a disagreement is an error, never a count."""
     key = poly_key(p)
     if key not in _CHECKED:
-        n, m = sturm_count(p), len(flint_real_roots(p))
+        n = sturm_count(p)
+        with precision(BALL_BITS):          # the balls the enclosures of count_roots use too
+            m = len(flint_real_roots(p))
         if n != m:
             raise ArithmeticError(f"Sturm ({n}) and python-flint ({m}) disagree on the real roots of {p}")
         if len(_CHECKED) > 20000:
@@ -352,7 +370,7 @@ def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
     from .poly import primitive, squarefree_part
     P = squarefree_part(primitive(flint.fmpq_poly(p)))
     out = []
-    roots: list[tuple[flint.acb, int]] = P.complex_roots()  # type: ignore[assignment]  # stub says list[acb]; it returns (acb, multiplicity) pairs
+    roots: list[tuple[flint.acb, int]] = _complex_roots(P)  # type: ignore[assignment]  # stub says list[acb]; it returns (acb, multiplicity) pairs
     for c, _m in roots:
         if not c.imag.is_zero():
             continue

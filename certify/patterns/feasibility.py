@@ -365,7 +365,7 @@ class Analysis:
             # g = N/D without √Δ: N = 0 (g = 0) or D = 0 (g undefined: a collision time or
             # the normalisation q_1(0) = -1 breaks down) both defeat a strict inequality;
             # N = D = 0 stays undecided.
-            cond = condition(req, self.spec.lrq_cp, x_value=p.x_value if req.has_x else None)
+            cond = self._condition_at_point(req, p, T)
             zero_n = vanishes_on_branch(self.spec, cond.N[0], rc, k)
             zero_d = vanishes_on_branch(self.spec, cond.D[0], rc, k)
             if zero_n != zero_d:
@@ -384,6 +384,14 @@ class Analysis:
                     return p, "holds" if ok else "fails", "" if ok else \
                         f"{req.name} has the wrong sign (other rows of the eigen-equation)"
         return p, "undecided", req.name
+
+    def _condition_at_point(self, req: Requirement, p: Piece, T):
+        """The Condition of req at the point p: the table's own when req has no x (the same
+        polynomials; unless marked degenerate, which a fresh one is not yet), else made afresh."""
+        own = T.source[1] if T is not None and getattr(T, "source", None) else None
+        if not req.has_x and own is not None and not own.degenerate:
+            return own
+        return condition(req, self.spec.lrq_cp, x_value=p.x_value if req.has_x else None)
 
     def _sign_with_x(self, req, rc, k, xv):
         sg = self.spec.sign_at_point(condition(req, self.spec.lrq_cp, x_value=xv), rc)

@@ -884,3 +884,35 @@ def test_order_from_intervals_agrees_with_exact_comparison():
             assert less(a, b) == (a < b) and at_most(a, b) == (a <= b) and same(a, b) == (a == b)
     lo, hi = Algebraic.rational(flint.fmpq(1)), Algebraic.rational(flint.fmpq(3, 2))
     assert [strictly_between(lo, a, hi) for a in nums] == [lo < a < hi for a in nums]
+
+
+
+def test_numerator_norm_is_the_norm_of_the_parts():
+    """The norm the exact zero test takes from a condition (Condition.numerator_norm) is
+    the very polynomial norm_mpoly makes of N₀, N₁, Δ (x - 1/2, x the fixed point of
+    (λx + r)/(x + 1)); None where there is no √Δ (the norm would be N₀², not N₀).  The
+    engine's conditions of a candidate: tests/patterns/test_feasibility.py."""
+    from certify.algebra.branches import norm_mpoly
+    fp = FixedPoint(lam, r, sp.Integer(1), sp.Integer(1))
+    cond = Condition.of("x - 1/2", x - HALF, fp)
+    assert cond.numerator_norm() is not None
+    assert cond.numerator_norm() == norm_mpoly(*cond.N, cond.delta)
+    assert Condition.of("λ - 1/2", lam - HALF).numerator_norm() is None
+
+
+def test_ball_values_of_h_at_r_and_lambda_contain_the_exact_value():
+    """The balls the single-common-root route evaluates (h's coefficients in λ as polynomials in
+    r, then Horner in λ) contain h(t, z) for rationals t, z, and are narrow: an evaluation with
+    the powers of λ or r crossed (an error) would miss it."""
+    from certify.algebra.balls import precision
+    from certify.algebra.branches import _horner, _lambda_polys
+    from certify.algebra.poly import ring_terms, to_ring
+    h = to_ring(3 * lam**3 * r - sp.Rational(2, 7) * lam**2 + lam * r**4 - 5 * r**2 + sp.Rational(1, 3))
+    for t, z in ((Q(1, 5), Q(-3, 4)), (Q(2, 3), Q(7, 2)), (Q(-1, 2), Q(1, 9))):
+        exact = 3 * z**3 * t - Q(2, 7) * z**2 + z * t**4 - 5 * t**2 + Q(1, 3)
+        with precision(200):
+            coeffs = [flint.arb_poly(p)(flint.arb(t)) for p in _lambda_polys(ring_terms(h))]
+            v = _horner(coeffs, flint.acb(flint.arb(z)))
+            # the exact value minus the ball's centre, exactly, within the radius
+            assert abs(exact - v.real.mid().fmpq()) <= v.real.rad().fmpq() and v.imag.contains(0)
+        assert v.real.rad().fmpq() < Q(1, 2**150)

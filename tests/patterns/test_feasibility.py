@@ -62,3 +62,23 @@ def test_simplest_between():
     assert simplest_between(Q(0), Q(1, 10)) == 0
 
 
+
+
+def test_numerator_norm_of_the_conditions_with_x():
+    """For each requirement with x of ababcb and each fixed point, the norm a condition
+    holds for the exact zero test (Condition.numerator_norm, from the python-flint parts)
+    is the polynomial norm_mpoly makes of its N₀, N₁, Δ as ring elements."""
+    from certify.algebra.branches import Spectrum, norm_mpoly
+    from certify.patterns.feasibility import condition, fixed_point_data
+    c = candidate("ababcb")
+    S = Spectrum(c.cp)
+    reqs, _ = prefix_requirements("ababcb", 6, c.q0, c.steps)
+    with_x = [q for q in reqs if q.has_x]
+    assert with_x
+    for q in with_x:
+        for f in fixed_point_data(c.abcd_ring or c.abcd, S.ring_cp):
+            cond = condition(q, S.lrq_cp, f)
+            M = cond.numerator_norm()
+            assert (M is None) == (not cond.N[1])
+            if M is not None:
+                assert M == norm_mpoly(*cond.N, cond.delta)
