@@ -34,6 +34,7 @@ from functools import cache
 import flint
 import sympy as sp
 
+from certify import caches
 from certify.obligations import fact
 
 from . import facts
@@ -344,18 +345,40 @@ def _term_sign(P: sp.Poly, H: Signs) -> int | None:
     return signs.pop() if len(signs) == 1 and strict else None
 
 
+LEADING = ((cθ, sθ, cφ, sφ), (cθ, sθ, sφ, cφ), (sθ, cθ, cφ, sφ), (sθ, cθ, sφ, cφ))   # the lex orders of _rewrites
+
+
 def _rewrites(f):
     """f as written, then rewritten with cθ² → 1−sθ² or sθ² → 1−cθ² (same for φ): the
     normal forms for the four lex orders with one of each pair leading (lazily)."""
+    for k in range(1 + len(LEADING)):
+        yield _rewrite(f, k)
+
+
+@cache
+def _rewrite(f, k: int):
+    """The k-th form of :func:`_rewrites` (0: f expanded).  Memoised for a run: a sign and
+    the obligation that records it (:func:`signed_fact`) read the same forms, and the step
+    lemmas ask the same signs again (pure SymPy; nothing here records)."""
     f = sp.expand(f)
-    yield f
-    others = _gens(f)[4:]
-    for x, y in ((cθ, sθ), (sθ, cθ)):
-        for u, w in ((cφ, sφ), (sφ, cφ)):
-            K, G = _field((x, y, u, w) + others, "lex")
-            yield K.ring.from_expr(f).rem(G).as_expr()
+    if k == 0:
+        return f
+    K, G = _field(LEADING[k - 1] + _gens(f)[4:], "lex")
+    return K.ring.from_expr(f).rem(G).as_expr()
 
 
+@cache
+def _factor_list(g) -> tuple:
+    """sp.factor_list(g) as (constant, ((factor, multiplicity), ...)), memoised like :func:`_rewrite`."""
+    c, factors = sp.factor_list(g)
+    return c, tuple(factors)
+
+
+for _memo in (_rewrite, _factor_list):
+    caches.register(_memo.cache_clear)
+
+
+@cache
 def _factor_sign(f, H: Signs) -> int | None:
     """The strict sign of one irreducible factor under H, or None."""
     syms = sp.sympify(f).free_symbols
@@ -374,6 +397,9 @@ def _factor_sign(f, H: Signs) -> int | None:
     return None
 
 
+caches.register(_factor_sign.cache_clear)
+
+
 def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
     """Strict sign of a polynomial from its factors (even powers need a known factor
     sign), the polynomial taken as written or rewritten with the circle relations."""
@@ -381,7 +407,7 @@ def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
         return None, ["`0`: no strict sign"]
     undecided = []
     for g in _rewrites(p):
-        c, factors = sp.factor_list(g)
+        c, factors = _factor_list(g)
         s, why = (1 if c > 0 else -1), []
         for f, m in factors:
             fs = _factor_sign(f, H)
@@ -432,7 +458,7 @@ def _poly_data(p, H: Signs) -> dict | None:
     if p == 0:
         return None
     for g in _rewrites(p):
-        c, factors = sp.factor_list(g)
+        c, factors = _factor_list(g)
         data = []
         for f, m in factors:
             d = _factor_data(f, H)
