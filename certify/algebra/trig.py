@@ -29,7 +29,7 @@ root in ]0, 1[ (Sturm).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, wraps
 
 import flint
 import sympy as sp
@@ -41,6 +41,27 @@ from . import facts
 from .poly import lam, r
 from .poly import parse as parse_paper
 from .sturm import count_roots
+
+
+def _memo(func):
+    """``func`` memoised for a run (its cache registered, emptied by ``runner.reset_caches``):
+    for the pure steps that a deciding function and the obligation recording its answer both
+    take on the same expression (a sign, a route of an identity).  Each route still runs once
+    per expression; an unhashable argument is computed every time, an exception is not kept."""
+    memo: dict = {}
+
+    @wraps(func)
+    def inner(*args):
+        try:
+            return memo[args]
+        except KeyError:
+            memo[args] = out = func(*args)
+            return out
+        except TypeError:
+            return func(*args)
+    caches.register(memo.clear)
+    return inner
+
 
 θ, φ = sp.symbols("θ φ")
 cθ, sθ, cφ, sφ = sp.symbols("cosθ sinθ cosφ sinφ")
@@ -153,6 +174,7 @@ def _lowest_terms(E):
     return f.numer, f.denom
 
 
+@_memo
 def fraction(E) -> tuple[sp.Expr, sp.Expr]:
     """Numerator and denominator of E in lowest terms (``together`` and ``cancel`` done by
     SymPy's sparse rational functions)."""
@@ -174,6 +196,12 @@ def normal_form(n) -> sp.Expr:
 
 def groebner_is_zero(E) -> tuple[bool, list[str]]:
     """Route (a): the numerator of E reduces to 0 and its denominator does not."""
+    zero, evidence = _groebner_is_zero(E)
+    return zero, list(evidence)
+
+
+@_memo
+def _groebner_is_zero(E) -> tuple[bool, tuple[str, ...]]:
     gens = _gens(E)
     groebner_basis(gens)
     n, d = _lowest_terms(E)
@@ -181,7 +209,7 @@ def groebner_is_zero(E) -> tuple[bool, list[str]]:
     if d.rem(G) == 0:
         raise ZeroDivisionError(f"the denominator of {show(E)} vanishes on the circles")
     nf = n.rem(G)
-    return nf == 0, [short(n.as_expr()), short(nf.as_expr())]
+    return nf == 0, (short(n.as_expr()), short(nf.as_expr()))
 
 
 # ---------------------------------------------------------------- route (b): Weierstrass substitution
@@ -235,8 +263,14 @@ def _evaluate(e, images, ctx, memo):
 
 def weierstrass_is_zero(E) -> tuple[bool, list[str]]:
     """Route (b): the Weierstrass substitution of E is the zero rational function."""
+    zero, evidence = _weierstrass_is_zero(E)
+    return zero, list(evidence)
+
+
+@_memo
+def _weierstrass_is_zero(E) -> tuple[bool, tuple[str, ...]]:
     n, _d = weierstrass(E)
-    return n.is_zero(), ["0" if n.is_zero() else f"non-zero ({len(list(n.terms()))} terms)"]
+    return n.is_zero(), ("0" if n.is_zero() else f"non-zero ({len(list(n.terms()))} terms)",)
 
 
 # ---------------------------------------------------------------- identities
