@@ -15,6 +15,8 @@ from certify import caches
 def rational(q) -> str:
     """A rational (fmpq, Fraction, SymPy Rational, int) as "p/q"."""
     kind = type(q)
+    if kind is flint.fmpz:           # an integer coefficient (fmpz_poly, fmpz_mpoly): its digits
+        return str(q)
     if kind is flint.fmpq or isinstance(q, sp.Rational):
         num, den = q.p, q.q          # lowest terms, den > 0: as each of these types keeps it
     elif isinstance(q, int):
@@ -122,6 +124,19 @@ def number_of(a) -> dict | str:
         return rational(a)
     if a.is_rational:
         return rational(a.lo)
+    key = (str(a.p), a.lo, a.hi)
+    if key not in _NUMBERS:
+        _NUMBERS[key] = _dyadic_record(a)
+    found = _NUMBERS[key]
+    return {**found, "poly": list(found["poly"])} if isinstance(found, dict) else found
+
+
+_NUMBERS: dict = {}      # number_of's records by polynomial and interval, since the caches' last reset
+caches.register(_NUMBERS.clear)
+
+
+def _dyadic_record(a) -> dict | str:
+    """:func:`number_of` for an irrational (or not yet known rational) Algebraic a."""
     from .poly import Q
     from .sturm import count_roots
     b = copy.copy(a)
