@@ -124,19 +124,6 @@ def number_of(a) -> dict | str:
         return rational(a)
     if a.is_rational:
         return rational(a.lo)
-    key = (str(a.p), a.lo, a.hi)
-    if key not in _NUMBERS:
-        _NUMBERS[key] = _dyadic_record(a)
-    found = _NUMBERS[key]
-    return {**found, "poly": list(found["poly"])} if isinstance(found, dict) else found
-
-
-_NUMBERS: dict = {}      # number_of's records by polynomial and interval, since the caches' last reset
-caches.register(_NUMBERS.clear)
-
-
-def _dyadic_record(a) -> dict | str:
-    """:func:`number_of` for an irrational (or not yet known rational) Algebraic a."""
     from .poly import Q
     from .sturm import count_roots
     b = copy.copy(a)
