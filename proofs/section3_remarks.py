@@ -60,6 +60,7 @@ from certify.run import (
     Check,
     certificate,
     conclude,
+    first_member,
     gathered,
     overridden,
     product_fact,
@@ -472,11 +473,12 @@ def reading_counts(words: list[str], pattern: str) -> list[tuple[str, int, int]]
 
 
 def committed_census() -> dict | None:
-    """reports/census.json of the source checkout (``certify census``), or None."""
-    import json
+    """The summary "census" of reports/census.json of the source checkout (``certify census``),
+    or None; its per-word records are not read (:func:`certify.run.files.first_member`)."""
     from pathlib import Path
     try:
-        return json.loads((Path(__file__).resolve().parents[1] / "reports" / "census.json").read_text(encoding="utf-8"))
+        text = (Path(__file__).resolve().parents[1] / "reports" / "census.json").read_text(encoding="utf-8")
+        return first_member(text, "census")
     except (OSError, ValueError):
         return None
 
@@ -486,11 +488,11 @@ def readings_evidence(pattern: str) -> str:
     doc = committed_census()
     if not doc:
         return "No committed census (reports/census.json): run `python -m certify census --max-length 16`."
-    feasible = doc["census"]["feasible"]
+    feasible = doc["feasible"]
     rows = [f"| {name} | {a} | {b} |" for name, a, b in reading_counts(feasible, pattern)]
     return ("How \"contains ... as a subsequence\" is read, and the counterexamples under each reading among the "
             f"{len(feasible)} classes with feasible self-similar data of the committed census (periods of at most "
-            f"{doc['census']['max_length']} collisions, reports/CENSUS.md):\n\n"
+            f"{doc['max_length']} collisions, reports/CENSUS.md):\n\n"
             f"| Reading of \"contains {pattern}\" | classes, with the mirror {mirrored(pattern)} | oriented patterns, "
             "without the mirror |\n|---|---:|---:|\n" + "\n".join(rows))
 

@@ -10,7 +10,6 @@ through a float: two roots that agree to 20 digits are still ordered correctly.
 from __future__ import annotations
 
 from collections.abc import Callable
-from contextlib import contextmanager
 from typing import TypeVar
 
 import flint
@@ -21,16 +20,23 @@ GUARD = 30          # extra working bits over the precision of the inputs
 T = TypeVar("T")    # what an attempt of :func:`decide` answers
 
 
-@contextmanager
-def precision(bits: int | None):
-    """Run ball arithmetic at ``bits`` of working precision (restored afterwards)."""
-    old = flint.ctx.prec
-    if bits is not None:
-        flint.ctx.prec = bits
-    try:
-        yield
-    finally:
-        flint.ctx.prec = old
+class precision:
+    """Run ball arithmetic at ``bits`` of working precision (restored afterwards): ``with
+    precision(bits):``.  A class rather than a generator context: the orbits enter it at
+    every collision."""
+
+    __slots__ = ("bits", "old")
+
+    def __init__(self, bits: int | None):
+        self.bits = bits
+
+    def __enter__(self) -> None:
+        self.old = flint.ctx.prec
+        if self.bits is not None:
+            flint.ctx.prec = self.bits
+
+    def __exit__(self, *exc) -> None:
+        flint.ctx.prec = self.old
 
 
 def decide(attempt: Callable[[int], T], prec: int = 128, maxprec: int = 1024,

@@ -15,6 +15,8 @@ from certify import caches
 def rational(q) -> str:
     """A rational (fmpq, Fraction, SymPy Rational, int) as "p/q"."""
     kind = type(q)
+    if kind is flint.fmpz:           # an integer coefficient (fmpz_poly, fmpz_mpoly): its digits
+        return str(q)
     if kind is flint.fmpq or isinstance(q, sp.Rational):
         num, den = q.p, q.q          # lowest terms, den > 0: as each of these types keeps it
     elif isinstance(q, int):

@@ -29,17 +29,39 @@ root in ]0, 1[ (Sturm).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, wraps
 
 import flint
 import sympy as sp
 
+from certify import caches
 from certify.obligations import fact
 
 from . import facts
 from .poly import lam, r
 from .poly import parse as parse_paper
 from .sturm import count_roots
+
+
+def _memo(func):
+    """``func`` memoised for a run (its cache registered, emptied by ``runner.reset_caches``):
+    for the pure steps that a deciding function and the obligation recording its answer both
+    take on the same expression (a sign, a route of an identity).  Each route still runs once
+    per expression; an unhashable argument is computed every time, an exception is not kept."""
+    memo: dict = {}
+
+    @wraps(func)
+    def inner(*args):
+        try:
+            return memo[args]
+        except KeyError:
+            memo[args] = out = func(*args)
+            return out
+        except TypeError:
+            return func(*args)
+    caches.register(memo.clear)
+    return inner
+
 
 θ, φ = sp.symbols("θ φ")
 cθ, sθ, cφ, sφ = sp.symbols("cosθ sinθ cosφ sinφ")
@@ -152,6 +174,7 @@ def _lowest_terms(E):
     return f.numer, f.denom
 
 
+@_memo
 def fraction(E) -> tuple[sp.Expr, sp.Expr]:
     """Numerator and denominator of E in lowest terms (``together`` and ``cancel`` done by
     SymPy's sparse rational functions)."""
@@ -173,6 +196,12 @@ def normal_form(n) -> sp.Expr:
 
 def groebner_is_zero(E) -> tuple[bool, list[str]]:
     """Route (a): the numerator of E reduces to 0 and its denominator does not."""
+    zero, evidence = _groebner_is_zero(E)
+    return zero, list(evidence)
+
+
+@_memo
+def _groebner_is_zero(E) -> tuple[bool, tuple[str, ...]]:
     gens = _gens(E)
     groebner_basis(gens)
     n, d = _lowest_terms(E)
@@ -180,7 +209,7 @@ def groebner_is_zero(E) -> tuple[bool, list[str]]:
     if d.rem(G) == 0:
         raise ZeroDivisionError(f"the denominator of {show(E)} vanishes on the circles")
     nf = n.rem(G)
-    return nf == 0, [short(n.as_expr()), short(nf.as_expr())]
+    return nf == 0, (short(n.as_expr()), short(nf.as_expr()))
 
 
 # ---------------------------------------------------------------- route (b): Weierstrass substitution
@@ -234,8 +263,14 @@ def _evaluate(e, images, ctx, memo):
 
 def weierstrass_is_zero(E) -> tuple[bool, list[str]]:
     """Route (b): the Weierstrass substitution of E is the zero rational function."""
+    zero, evidence = _weierstrass_is_zero(E)
+    return zero, list(evidence)
+
+
+@_memo
+def _weierstrass_is_zero(E) -> tuple[bool, tuple[str, ...]]:
     n, _d = weierstrass(E)
-    return n.is_zero(), ["0" if n.is_zero() else f"non-zero ({len(list(n.terms()))} terms)"]
+    return n.is_zero(), ("0" if n.is_zero() else f"non-zero ({len(list(n.terms()))} terms)",)
 
 
 # ---------------------------------------------------------------- identities
@@ -344,18 +379,40 @@ def _term_sign(P: sp.Poly, H: Signs) -> int | None:
     return signs.pop() if len(signs) == 1 and strict else None
 
 
+LEADING = ((cθ, sθ, cφ, sφ), (cθ, sθ, sφ, cφ), (sθ, cθ, cφ, sφ), (sθ, cθ, sφ, cφ))   # the lex orders of _rewrites
+
+
 def _rewrites(f):
     """f as written, then rewritten with cθ² → 1−sθ² or sθ² → 1−cθ² (same for φ): the
     normal forms for the four lex orders with one of each pair leading (lazily)."""
+    for k in range(1 + len(LEADING)):
+        yield _rewrite(f, k)
+
+
+@cache
+def _rewrite(f, k: int):
+    """The k-th form of :func:`_rewrites` (0: f expanded).  Memoised for a run: a sign and
+    the obligation that records it (:func:`signed_fact`) read the same forms, and the step
+    lemmas ask the same signs again (pure SymPy; nothing here records)."""
     f = sp.expand(f)
-    yield f
-    others = _gens(f)[4:]
-    for x, y in ((cθ, sθ), (sθ, cθ)):
-        for u, w in ((cφ, sφ), (sφ, cφ)):
-            K, G = _field((x, y, u, w) + others, "lex")
-            yield K.ring.from_expr(f).rem(G).as_expr()
+    if k == 0:
+        return f
+    K, G = _field(LEADING[k - 1] + _gens(f)[4:], "lex")
+    return K.ring.from_expr(f).rem(G).as_expr()
 
 
+@cache
+def _factor_list(g) -> tuple:
+    """sp.factor_list(g) as (constant, ((factor, multiplicity), ...)), memoised like :func:`_rewrite`."""
+    c, factors = sp.factor_list(g)
+    return c, tuple(factors)
+
+
+for _memo in (_rewrite, _factor_list):
+    caches.register(_memo.cache_clear)
+
+
+@cache
 def _factor_sign(f, H: Signs) -> int | None:
     """The strict sign of one irreducible factor under H, or None."""
     syms = sp.sympify(f).free_symbols
@@ -374,6 +431,9 @@ def _factor_sign(f, H: Signs) -> int | None:
     return None
 
 
+caches.register(_factor_sign.cache_clear)
+
+
 def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
     """Strict sign of a polynomial from its factors (even powers need a known factor
     sign), the polynomial taken as written or rewritten with the circle relations."""
@@ -381,7 +441,7 @@ def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
         return None, ["`0`: no strict sign"]
     undecided = []
     for g in _rewrites(p):
-        c, factors = sp.factor_list(g)
+        c, factors = _factor_list(g)
         s, why = (1 if c > 0 else -1), []
         for f, m in factors:
             fs = _factor_sign(f, H)
@@ -432,7 +492,7 @@ def _poly_data(p, H: Signs) -> dict | None:
     if p == 0:
         return None
     for g in _rewrites(p):
-        c, factors = sp.factor_list(g)
+        c, factors = _factor_list(g)
         data = []
         for f, m in factors:
             d = _factor_data(f, H)

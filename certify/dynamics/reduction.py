@@ -66,22 +66,26 @@ def scale(c, v) -> tuple:
     return tuple(c * z for z in v)
 
 
+_EXACT = (flint.fmpq, flint.fmpz, int)       # taken by fmpq_poly as they are
+
+
 def integral(n) -> tuple:
     """den·n, den > 0 the lcm of the denominators of the rational vector n: the numerator
     of n as a canonical fmpq_poly (its content is coprime to its positive denominator)."""
-    exact_types = (flint.fmpq, flint.fmpz, int)       # taken by fmpq_poly as they are
-    m = flint.fmpq_poly([z if isinstance(z, exact_types) else to_fmpq(z) for z in n]).numer()
+    m = flint.fmpq_poly([z if isinstance(z, _EXACT) else to_fmpq(z) for z in n]).numer()
     return (m[0], m[1], m[2])
 
 
 def primitive(n) -> tuple:
     """The primitive integer vector positively proportional to the rational n ≠ 0."""
-    if not all(isinstance(z, flint.fmpz) for z in n):
+    fmpz = flint.fmpz
+    if not (type(n[0]) is fmpz and type(n[1]) is fmpz and type(n[2]) is fmpz) and \
+            not all(isinstance(z, fmpz) for z in n):
         n = integral(n)
     g = n[0].gcd(n[1]).gcd(n[2])
     if g == 0:
         raise ValueError("the zero vector spans no plane")
-    return n if g == 1 else tuple(z // g for z in n)
+    return n if g == 1 else (n[0] // g, n[1] // g, n[2] // g)
 
 
 def cofactor_columns(letter: str, r, unit=E) -> list[tuple]:
@@ -118,7 +122,10 @@ def cofactors(r) -> dict[str, tuple]:
 
 def apply(rows: tuple, n) -> tuple:
     """The matrix with these rows times n."""
-    return tuple(row[0] * n[0] + row[1] * n[1] + row[2] * n[2] for row in rows)
+    n0, n1, n2 = n
+    r0, r1, r2 = rows
+    return (r0[0] * n0 + r0[1] * n1 + r0[2] * n2, r1[0] * n0 + r1[1] * n1 + r1[2] * n2,
+            r2[0] * n0 + r2[1] * n1 + r2[2] * n2)
 
 
 def cofactor_apply(letter: str, r, n) -> tuple:
@@ -148,7 +155,7 @@ def canonical(letter: str, n) -> Plane:
     s = sign(n[ORIENTATION[letter]])
     if s == 0:
         raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")
-    return Plane(letter, n if s > 0 else tuple(-z for z in n))
+    return Plane(letter, n if s > 0 else (-n[0], -n[1], -n[2]))
 
 
 def normal(p, q) -> tuple:

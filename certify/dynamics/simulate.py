@@ -223,6 +223,8 @@ def follow(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
     """At most n collisions from (p0, q0); ball arithmetic at ``prec`` bits.
     A comparison that cannot be decided ends the run with stop="undecided" (the
     prefix is certified).  ``until(run)`` may stop the run early (stop="until")."""
+    if until is None and type(r) is flint.fmpq and all(type(z) is flint.fmpq for z in (*p0, *q0)):
+        return _follow_exact(tuple(p0), tuple(q0), r, n)
     t = zero_like(p0[0])
     out = Run(states=[State(t, tuple(p0), tuple(q0))])
     p, q = tuple(p0), tuple(q0)
@@ -246,6 +248,46 @@ def follow(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
             if until is not None and until(out):
                 out.stop = "until"
                 return out
+    return out
+
+
+def _follow_exact(p: tuple, q: tuple, r: flint.fmpq, n: int) -> Run:
+    """:func:`follow` for fmpq p, q and r: the same steps as :func:`step` (the next
+    collision by :func:`first_collisions_exact`, the meeting test of :func:`meeting`, the
+    closed gap set to 0, the law of :func:`certify.dynamics.model.collide` with h = (1 + r)/2
+    formed once), inlined; the same Run, without the generic dispatch per step."""
+    zero, h = flint.fmpq(0), (1 + r) / 2
+    t = zero
+    out = Run(states=[State(t, p, q)])
+    events, states = out.events, out.states
+    for _ in range(n):
+        first = first_collisions_exact(p, q)
+        if first is None:
+            out.stop = "free"
+            return out
+        letters, dt = first
+        closed = [i for i, L in enumerate(LETTERS)
+                  if L in letters or (q[i].p >= 0 and p[i].p == 0 and (q[i].p == 0 or dt.p == 0))]
+        if 1 in closed and len(closed) > 1:
+            exc = MultipleCollision(range(min(closed) + 1, max(closed) + 3), dt)
+            out.stop, out.reason = "multiple", str(exc)
+            return out
+        p = [p[0] + dt * q[0], p[1] + dt * q[1], p[2] + dt * q[2]]
+        q1, q2, q3 = q
+        for L in letters:
+            if L == "a":
+                p[0] = zero
+                q1, q2 = -r * q1, q2 + h * q1
+            elif L == "b":
+                p[1] = zero
+                q1, q2, q3 = q1 + h * q2, -r * q2, q3 + h * q2
+            else:
+                p[2] = zero
+                q2, q3 = q2 + h * q3, -r * q3
+        p, q = tuple(p), (q1, q2, q3)
+        t = t + dt
+        events.append(letters)
+        states.append(State(t, p, q))
     return out
 
 

@@ -17,9 +17,9 @@ from concurrent.futures import FIRST_COMPLETED, wait
 from functools import lru_cache
 from pathlib import Path
 
-from certify.patterns import census, island_theorem
+from certify.patterns import census, compact, island_theorem
 
-from .files import REPORTS, read_text_or_none, write_atomic
+from .files import REPORTS, first_member, read_text_or_none, write_atomic
 
 WINDOW = 64                  # jobs in flight at once (an interruption loses at most these)
 
@@ -196,8 +196,10 @@ def reduction_lines(s: dict, recs: list, L: int) -> list[str]:
 
 def committed_windows(path=None) -> tuple[dict, dict] | None:
     """The attracting windows of the committed census ({word: [{"lo", "hi", ...}]}, as
-    census.json holds them) and each word's compact form, or None without a census file.
-    The file (megabytes) is parsed once per version of it (its size and time of change)."""
+    census.json holds them) and the compact form of each of their words (:func:`compact`,
+    as the census records it), or None without a census file.  Only the file's summary is
+    decoded (:func:`.files.first_member`: not the megabytes of word records), once per
+    version of the file (its size and time of change)."""
     path = Path(path or REPORTS / "census.json")
     try:
         stat = path.stat()
@@ -212,9 +214,8 @@ def _windows_of(path: str, size: int, mtime_ns: int) -> tuple[dict, dict] | None
     text = read_text_or_none(path)
     if text is None:
         return None
-    doc = json.loads(text)
-    return (doc["census"]["reduction"].get("attracting_windows", {}),
-            {rec["word"]: rec.get("compact", rec["word"]) for rec in doc["words"]})
+    windows = first_member(text, "census")["reduction"].get("attracting_windows", {})
+    return windows, {word: compact(word) for word in windows}
 
 
 RESONANCE_Q = island_theorem.RESONANCE_Q

@@ -9,6 +9,7 @@ file intact, never a half-written one.
 from __future__ import annotations
 
 import os
+import re
 import tempfile
 from contextlib import contextmanager, suppress
 from pathlib import Path
@@ -57,6 +58,25 @@ def read_text_or_none(path) -> str | None:
         return Path(path).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError):
         return None
+
+
+def first_member(text: str, key: str):
+    """``json.loads(text)[key]`` for a JSON object, decoding only that member when it is the
+    object's first (the rest of the text is not parsed: reports/census.json opens with its
+    summary "census", 33 kB, before 13 MB of per-word records); KeyError without it,
+    ValueError for text that is not JSON."""
+    import json
+    decoder, ws = json.JSONDecoder(), re.compile(r"[ \t\n\r]*")
+    i = ws.match(text, 0).end()
+    if text[i:i + 1] == "{":
+        try:
+            name, i = decoder.raw_decode(text, ws.match(text, i + 1).end())
+            i = ws.match(text, i).end()
+            if name == key and text[i:i + 1] == ":":
+                return decoder.raw_decode(text, ws.match(text, i + 1).end())[0]
+        except ValueError:          # not a member there: the whole text decides
+            pass
+    return json.loads(text)[key]
 
 
 def load_findings(name: str, directory=REPORTS) -> dict | None:

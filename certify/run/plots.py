@@ -6,6 +6,8 @@ from the certified sign tables.  Nothing is drawn when figures are not being sav
 """
 from __future__ import annotations
 
+import bisect
+
 import numpy as np
 import sympy as sp
 
@@ -31,9 +33,13 @@ def branch_curves(spectrum, rs: np.ndarray) -> np.ndarray:
 def _cell_indices(table, rs: np.ndarray) -> list[int | None]:
     """For each r (float), the index of the certified cell holding it (None on a border)."""
     bounds = [(float(cell.lo), float(cell.hi)) for cell in table.cells]
+    los = [lo for lo, _ in bounds]
+    if any(b[1] > c[0] for b, c in zip(bounds, bounds[1:])):     # not consecutive cells: look through them all
+        return [next((k for k, (lo, hi) in enumerate(bounds) if lo < t < hi), None) for t in rs]
     out = []
-    for t in rs:
-        out.append(next((k for k, (lo, hi) in enumerate(bounds) if lo < t < hi), None))
+    for t in rs:                 # the last cell starting below t is the only one that can hold it
+        k = bisect.bisect_left(los, t) - 1
+        out.append(k if k >= 0 and bounds[k][0] < t < bounds[k][1] else None)
     return out
 
 
@@ -67,8 +73,11 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
                                      ("spectrum_zoom.png", (1e-4, 0.13), (0, 0.05))):
         rs = np.linspace(r_lo, r_hi, 1500)
         cells = _cell_indices(table, rs)
-        oks = [np.array([c is not None and k < len(table.cells[c].branches) for c in cells])
-               for k in range(spectrum.degree)]
+        count = {}               # real branches per cell, each cell read once, in the order the points meet them
+        for c in cells:
+            if c is not None and c not in count:
+                count[c] = len(table.cells[c].branches)
+        oks = [np.array([c is not None and k < count[c] for c in cells]) for k in range(spectrum.degree)]
         shown = _marks(marks)
 
         def draw(name=name, rs=rs, oks=oks, shown=shown, r_lo=r_lo, r_hi=r_hi, ylim=ylim):
@@ -233,5 +242,6 @@ def section5_figure(data, dpi: int | None = None) -> str:
                   f"{a['fraction']:.2%}"
                   + (f", {b['fraction']:.2%} for r > 3−2√2" if b["points"] else "")
                   + (f" (every {points['every']}th r)" if points["every"] > 1 else ""))
-    return omega_figure(data, section5_name(spec.id, data.resolution), lines=red_lines(), boxes=spec.boxes,
+    lines = red_lines() if saving.enabled() else None       # mpmath roots, for drawing only
+    return omega_figure(data, section5_name(spec.id, data.resolution), lines=lines, boxes=spec.boxes,
                         title=title, dpi=dpi)

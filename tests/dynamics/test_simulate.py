@@ -66,6 +66,17 @@ def test_exact_first_collisions_is_the_generic_one(p, q):
         assert sim.less(s, t) == (s < t)
 
 
+@settings(max_examples=200)
+@given(st.tuples(small.map(abs), small.map(abs), small.map(abs)), st.tuples(small, small, small), restitution)
+def test_inlined_exact_run_is_the_generic_one(p, q, r0):
+    """follow on fmpq data takes the inlined loop (_follow_exact); with ``until`` it steps
+    through step() and next_collision: the same events, states and stop (ties, contacts and
+    multiple collisions are frequent with small entries)."""
+    fast = sim.follow(p, q, r0, 30)
+    slow = sim.follow(p, q, r0, 30, until=lambda run: False)
+    assert (fast.events, fast.states, fast.stop, fast.reason) == (slow.events, slow.states, slow.stop, slow.reason)
+
+
 def test_simultaneous_a_and_c_exact():
     """a and c at exactly the same time: one event "ac" (A and C commute, l. 240)."""
     p, q = sim.exact([1, 1, 2]), sim.exact([-1, 1, -2])
