@@ -95,6 +95,14 @@ def as_json(records):
     return run_census.to_json(run_census.document(records, L_SMALL))
 
 
+def test_census_json_is_the_document_with_a_record_a_line(reference):
+    text = as_json(reference)
+    assert json.loads(text) == run_census.document(reference, L_SMALL)
+    lines = text.splitlines()
+    start = lines.index('"words": [') + 1
+    assert [json.loads(line.rstrip(",")) for line in lines[start:-1]] == reference and lines[-1] == "]}"
+
+
 def test_serial_census_lists_every_word(reference):
     assert [r["word"] for r in reference] == census.words(L_SMALL)
     assert all("seconds" not in r for r in reference)
