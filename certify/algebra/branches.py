@@ -1026,7 +1026,7 @@ def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
     if G.is_zero():
         return [flint.fmpz_poly(0)]
     dr, dl, _ds = G.degrees()
-    rows = [[0] * (dr + 1) for _ in range(dl + 1)]
+    rows: list[list] = [[0] * (dr + 1) for _ in range(dl + 1)]
     for (er, el, _es), c in zip(G.monoms(), G.coeffs()):
         rows[el][er] = c
     return [flint.fmpz_poly(row) for row in rows]
