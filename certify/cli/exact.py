@@ -15,12 +15,13 @@ from certify.run.files import ensure_writable
 from .options import DEFAULT_OUT, add_command, add_jobs, number, positive_int, r_range, r_value, restitution, say
 
 MAX_DIGITS = 1000             # particles --digits
-# census --max-length: the census to 17 (1214 words) took about an hour on two cores, and the
-# words multiply by about 1.7 per collision (2015 at 18, 5618 at 20, 45178 at 24, 375592 at
-# 28): 20 is some five hours; beyond it a census does not finish in a working day (and at 60
-# listing the words alone exhausts memory).  Measured: benchmarks/bench_census.py, issue 25.
+# census --max-length: the census to 20 (5618 words) took about an hour of the two cores (7300 s of
+# CPU; 83 min wall on a machine shared with other work, 2026-11-24), and the words multiply by
+# about 1.7 per collision (9423 at 21, 45178 at 24, 375592 at 28) while each takes longer: 21 would be
+# some three hours more (an estimate); beyond 20 a census does not finish in a working day (and at 60 listing the
+# words alone exhausts memory).  Measured: benchmarks/bench_census.py, issues 25 and 26.
 MAX_CENSUS_LENGTH = 20
-CENSUS_COST = "the census to 17 (1214 words) took about an hour on two cores"
+CENSUS_COST = "the census to 20 (5618 words) took about an hour on two cores"
 
 
 def plural(n: int, word: str) -> str:
@@ -42,8 +43,8 @@ def cmd_census(args) -> int:
     if args.max_length > 17:
         from certify.patterns.census import words
         n = len(words(args.max_length))
-        say(f"census up to length {args.max_length}: {n} words, {n / 1214:.1f} times as many as the census to 17, "
-            f"which took about an hour on two cores: expect hours (progress on a terminal)")
+        say(f"census up to length {args.max_length}: {n} words; {CENSUS_COST} and the census to 17 (1214 words) "
+            "about ten minutes (progress on a terminal)")
     out = ensure_writable(args.out)
     longer = census.written_length(out)
     if longer is not None and longer > args.max_length and not args.force:
