@@ -8,6 +8,7 @@ needs to know no module above it.
 """
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 
 _CLEARS: list[Callable[[], None]] = []
@@ -36,3 +37,23 @@ def reset() -> None:
     """Empty every registered cache."""
     for clear in _CLEARS:
         clear()
+
+
+def for_a_run(func: Callable) -> Callable:
+    """``func`` memoised until :func:`reset` (its memo registered here): for pure steps that
+    several callers of one run take on the same arguments.  An unhashable argument is
+    computed every time; an exception is not kept."""
+    cached = functools.cache(func)
+    register(cached.cache_clear)
+
+    @functools.wraps(func)
+    def inner(*args):
+        try:
+            return cached(*args)
+        except TypeError:
+            try:
+                hash(args)
+            except TypeError:          # an unhashable argument: no memo
+                return func(*args)
+            raise                      # the function's own TypeError
+    return inner

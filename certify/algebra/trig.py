@@ -29,7 +29,7 @@ root in ]0, 1[ (Sturm).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cache, wraps
+from functools import cache
 
 import flint
 import sympy as sp
@@ -41,27 +41,6 @@ from . import facts
 from .poly import lam, r
 from .poly import parse as parse_paper
 from .sturm import count_roots
-
-
-def _memo(func):
-    """``func`` memoised for a run (its cache registered, emptied by ``runner.reset_caches``):
-    for the pure steps that a deciding function and the obligation recording its answer both
-    take on the same expression (a sign, a route of an identity).  Each route still runs once
-    per expression; an unhashable argument is computed every time, an exception is not kept."""
-    memo: dict = {}
-
-    @wraps(func)
-    def inner(*args):
-        try:
-            return memo[args]
-        except KeyError:
-            memo[args] = out = func(*args)
-            return out
-        except TypeError:
-            return func(*args)
-    caches.register(memo.clear)
-    return inner
-
 
 θ, φ = sp.symbols("θ φ")
 cθ, sθ, cφ, sφ = sp.symbols("cosθ sinθ cosφ sinφ")
@@ -174,7 +153,7 @@ def _lowest_terms(E):
     return f.numer, f.denom
 
 
-@_memo
+@caches.for_a_run
 def fraction(E) -> tuple[sp.Expr, sp.Expr]:
     """Numerator and denominator of E in lowest terms (``together`` and ``cancel`` done by
     SymPy's sparse rational functions)."""
@@ -200,7 +179,7 @@ def groebner_is_zero(E) -> tuple[bool, list[str]]:
     return zero, list(evidence)
 
 
-@_memo
+@caches.for_a_run
 def _groebner_is_zero(E) -> tuple[bool, tuple[str, ...]]:
     gens = _gens(E)
     groebner_basis(gens)
@@ -267,7 +246,7 @@ def weierstrass_is_zero(E) -> tuple[bool, list[str]]:
     return zero, list(evidence)
 
 
-@_memo
+@caches.for_a_run
 def _weierstrass_is_zero(E) -> tuple[bool, tuple[str, ...]]:
     n, _d = weierstrass(E)
     return n.is_zero(), ("0" if n.is_zero() else f"non-zero ({len(list(n.terms()))} terms)",)
@@ -389,7 +368,7 @@ def _rewrites(f):
         yield _rewrite(f, k)
 
 
-@cache
+@caches.for_a_run
 def _rewrite(f, k: int):
     """The k-th form of :func:`_rewrites` (0: f expanded).  Memoised for a run: a sign and
     the obligation that records it (:func:`signed_fact`) read the same forms, and the step
@@ -401,18 +380,14 @@ def _rewrite(f, k: int):
     return K.ring.from_expr(f).rem(G).as_expr()
 
 
-@cache
+@caches.for_a_run
 def _factor_list(g) -> tuple:
     """sp.factor_list(g) as (constant, ((factor, multiplicity), ...)), memoised like :func:`_rewrite`."""
     c, factors = sp.factor_list(g)
     return c, tuple(factors)
 
 
-for _memo in (_rewrite, _factor_list):
-    caches.register(_memo.cache_clear)
-
-
-@cache
+@caches.for_a_run
 def _factor_sign(f, H: Signs) -> int | None:
     """The strict sign of one irreducible factor under H, or None."""
     syms = sp.sympify(f).free_symbols
@@ -430,8 +405,6 @@ def _factor_sign(f, H: Signs) -> int | None:
             return s
     return None
 
-
-caches.register(_factor_sign.cache_clear)
 
 
 def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:

@@ -1,0 +1,47 @@
+"""certify.caches: the memos of a run, and the hook that forgets them."""
+from __future__ import annotations
+
+from certify import caches
+
+
+def test_a_memo_for_a_run_is_forgotten_by_reset():
+    calls = []
+
+    @caches.for_a_run
+    def double(x):
+        calls.append(x)
+        return x + x
+
+    assert double(3) == double(3) == 6 and calls == [3]
+    caches.reset()
+    assert double(3) == 6 and calls == [3, 3]
+    assert double([2]) == double([2]) == [2, 2] and calls == [3, 3, [2], [2]]    # unhashable: computed each time
+
+
+def test_an_exception_is_not_kept():
+    tries = []
+
+    @caches.for_a_run
+    def flaky(x):
+        tries.append(x)
+        if len(tries) == 1:
+            raise ArithmeticError("first time")
+        return x
+
+    try:
+        flaky(1)
+    except ArithmeticError:
+        pass
+    assert flaky(1) == 1 and tries == [1, 1]
+
+
+def test_a_type_error_inside_is_not_taken_for_an_unhashable_argument():
+    @caches.for_a_run
+    def bad(x):
+        return x + "a"
+
+    try:
+        bad(1)
+    except TypeError:
+        return
+    raise AssertionError("the TypeError of the function was swallowed")
