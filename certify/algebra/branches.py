@@ -478,6 +478,10 @@ class SignTable:
         self.source: tuple | None = None        # (spectrum, condition): what the kernel re-derives
         self._points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
 
+    def has_point(self, k: int) -> bool:
+        """Whether the signs at the k-th critical value are computed already."""
+        return k in self._points._done
+
     @property
     @fact(facts.table_points)
     def points(self) -> Lazy:
@@ -814,6 +818,21 @@ class Spectrum:
         # often a zero of g: no precision decides it), then balls up to maxprec for the rest
         return [self._undecided_sign(cond, rc, k, roots[k], 2 * quick, maxprec) if sg == UNDECIDED else sg
                 for k, sg in enumerate(out)]
+
+    @silent
+    def sign_on_branch_at(self, cond: Condition, rc: Algebraic, k: int, maxprec: int = 1024):
+        """``sign_at_point(cond, rc)[k]`` computed for the branch k alone (the same sign: balls
+        decide a sign only where it is proven, and the exact tests are those of branch k);
+        UNDECIDED when the branches cannot be isolated (sign_at_point's None), NO_BRANCH when
+        there are fewer than k + 1."""
+        roots = self.branches_at(rc)
+        if roots is None:
+            return UNDECIDED
+        if k >= len(roots):
+            return NO_BRANCH
+        quick = min(256, maxprec)
+        sg = decide(lambda p: _sign_ball(cond, rc.arb(p), roots[k](p)), 128, quick)
+        return self._undecided_sign(cond, rc, k, roots[k], 2 * quick, maxprec) if sg == UNDECIDED else sg
 
     def _undecided_sign(self, cond: Condition, rc: Algebraic, k: int, ball, prec: int, maxprec: int):
         """The sign of g on branch k at rc where balls of < ``prec`` bits did not decide it: the

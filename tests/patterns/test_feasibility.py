@@ -82,3 +82,22 @@ def test_numerator_norm_of_the_conditions_with_x():
             assert (M is None) == (not cond.N[1])
             if M is not None:
                 assert M == norm_mpoly(*cond.N, cond.delta)
+
+
+@pytest.mark.parametrize("word", ["ababacbabacb", "abcb"])
+def test_the_route_without_a_recording_certifies_the_same_sets(monkeypatch, word):
+    # without a certificate being recorded, points are signed on the branch read only
+    # (Spectrum.sign_on_branch_at) and cuts found with comparisons read off the intervals
+    # first; with a recording, every branch's signs and exact comparisons (the facts the
+    # kernel re-derives).  The JSON of `certify pattern` is the same both ways
+    # (ababacbabacb: an "x not real" sign at a critical value, which the first version of
+    # the branch-alone route read as undecided)
+    from certify.patterns import analyse
+    from certify.patterns import feasibility as F
+    from certify.run import runner
+    runner.reset_caches()
+    fast = analyse(word).json_text()
+    runner.reset_caches()
+    monkeypatch.setattr(F, "recording_now", lambda: True)
+    exact = analyse(word).json_text()
+    assert fast == exact
