@@ -871,6 +871,8 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided.  ``M``: the norm as :func:`norm_mpoly` makes it, when known."""
         P0, P1 = P
+        if not P1:                     # the norm is (a positive multiple of) P₀²: the zeros of P₀
+            return self.vanishes_at(P0, rc, k)
         if not self.vanishes_at(self._norm_of(P0, P1, delta, M), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
