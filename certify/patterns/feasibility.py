@@ -113,6 +113,14 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
     return Condition(req.name, None, None, delta, c, lrq=(N0, N1, D0))
 
 
+def _twin(cond: Condition, name: str) -> Condition:
+    """The condition of the same requirement at the other fixed point (σ → -σ): the
+    polynomials of :func:`condition` with N₁ negated (the products and remainders of N₀,
+    σN₁, D₀ are linear in σ)."""
+    N0, N1, D0 = cond._lrq
+    return Condition(name, None, None, cond.delta, cond.c, lrq=(N0, -N1, D0))
+
+
 def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:
     """Exact: the polynomial g(r, λ) (an expression or an element of the engine's ring)
     vanishes at r = rc on the real branch ``branch`` (the engine's gcd test in
@@ -275,7 +283,7 @@ class Analysis:
         self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd_ring or cand.abcd, self.spec.ring_cp)} \
             if cand.abcd is not None else {NO_X: None}
         self.tables = {}
-        self._twins: dict = {}          # id of a requirement with x -> (it, its first Condition)
+        self._twins: dict = {}          # id of a requirement with x -> (it, its first Condition, its x)
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
         self.regions = [Region(k, f, [], [], []) for k in range(nb) for f in self.fps]
@@ -299,15 +307,17 @@ class Analysis:
             return None
         key = (req.name, fname if req.has_x else "", tuple(_key(e) for e in hull))
         if key not in self.tables:
-            cond = condition(req, self.spec.lrq_cp, self.fps[fname] if req.has_x else None)
-            if req.has_x:
-                # x₊ and x₋ differ only in the sign of N₁ (σ): the norms N₀² - N₁²Δ, D₀, Δ and c
-                # are the same polynomials, computed once for the requirement
-                twin = self._twins.get(id(req))
-                if twin is not None and twin[0] is req:
-                    cond.share_norms(twin[1])
-                else:
-                    self._twins[id(req)] = (req, cond)
+            twin = self._twins.get(id(req)) if req.has_x else None
+            if twin is not None and twin[0] is req:
+                # x₊ and x₋ differ only in the sign of N₁ (σ): N₀, D₀ and the norms N₀² - N₁²Δ,
+                # D₀, Δ and c are the same polynomials, computed once for the requirement
+                cond = _twin(twin[1], req.name) if twin[2] != fname else \
+                    condition(req, self.spec.lrq_cp, self.fps[fname])
+                cond.share_norms(twin[1])
+            else:
+                cond = condition(req, self.spec.lrq_cp, self.fps[fname] if req.has_x else None)
+                if req.has_x:
+                    self._twins[id(req)] = (req, cond, fname)
             self.tables[key] = self.spec.sign_table(cond, *hull)
         return self.tables[key]
 

@@ -101,3 +101,21 @@ def test_the_route_without_a_recording_certifies_the_same_sets(monkeypatch, word
     monkeypatch.setattr(F, "recording_now", lambda: True)
     exact = analyse(word).json_text()
     assert fast == exact
+
+
+def test_the_condition_at_the_other_fixed_point_is_the_twin_with_n1_negated():
+    # feasibility._twin: x₋'s condition from x₊'s (N₁ negated, N₀ and D₀ shared) is the
+    # condition built afresh for x₋, for every requirement with x of ababcb
+    from certify.algebra.branches import X_MINUS, X_PLUS
+    from certify.patterns.feasibility import Analysis, _twin, condition
+    c = candidate("ababcb")
+    an = Analysis(c)
+    reqs, _ = prefix_requirements("ababcb", 6, c.q0, c.steps, c.q0_other)
+    with_x = [q for q in reqs if q.has_x]
+    assert len(with_x) >= 3
+    for q in with_x:
+        plus = condition(q, c.spectrum.lrq_cp, an.fps[X_PLUS])
+        minus = condition(q, c.spectrum.lrq_cp, an.fps[X_MINUS])
+        assert plus._lrq[1] != minus._lrq[1]              # σ matters
+        assert _twin(plus, q.name)._lrq == minus._lrq
+        assert _twin(minus, q.name)._lrq == plus._lrq
