@@ -651,7 +651,7 @@ class Spectrum:
         for H, R in bucket:
             if H == G:
                 return R
-        if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
+        if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and G.degrees()[2] == 0:          # free of s
             R = _norm_modulo(_lambda_coefficients(G), self._cp_coeffs)
         else:
             R = mpoly_to_univariate(G.resultant(self.mpoly_cp, "lam"))
@@ -1056,36 +1056,40 @@ def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
 def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:
     """Res_λ(cp, g) for cp monic in λ up to a constant factor (cp's leading coefficient a
     non-zero integer c): the determinant of multiplication by g on Q[r][λ]/(cp) in the
-    basis 1, λ, ..., λ^{n-1}, which is Π g(λ_i) over the roots λ_i of cp, times c^{-m}
-    for some m (a non-zero rational multiple of the resultant: the same zeros in r).
-    Univariate python-flint arithmetic, no Sylvester matrix."""
+    basis 1, λ, ..., λ^{n-1}, which is Π g(λ_i) over the roots λ_i of cp (cp/c monic: the
+    reduction over Q[r], no power of c accumulates in the coefficients), returned as the
+    numerator of that determinant (a non-zero rational multiple of the resultant: the same
+    zeros in r).  Univariate python-flint arithmetic, no Sylvester matrix."""
     n = len(cp) - 1
-    lead = cp[n]
+    lead = flint.fmpq(int(cp[n][0]))
+    monic = [flint.fmpq_poly(c) / lead for c in cp[:n]]
+    zero = flint.fmpq_poly(0)
 
     def reduce(h):
-        h = list(h) + [flint.fmpz_poly(0)] * max(0, n - len(h))
-        for k in range(len(h) - 1, n - 1, -1):          # lead·h ≡ ..., keeping integer coefficients
+        h = list(h) + [zero] * max(0, n - len(h))
+        for k in range(len(h) - 1, n - 1, -1):          # λ^k ≡ -Σ monic[i] λ^(k-n+i)
             t = h[k]
             if t.is_zero():
                 continue
-            h = [hi * lead for hi in h]
             for i in range(n):
-                h[k - n + i] -= t * cp[i]
-            h[k] = flint.fmpz_poly(0)
+                h[k - n + i] -= t * monic[i]
+            h[k] = zero
         return h[:n]
 
-    cols = [reduce(g)]
+    cols = [reduce([flint.fmpq_poly(c) for c in g])]
     for _ in range(n - 1):
-        cols.append(reduce([flint.fmpz_poly(0)] + cols[-1]))
+        cols.append(reduce([zero] + cols[-1]))
     A = [[cols[j][i] for j in range(n)] for i in range(n)]
     if n == 1:
-        return A[0][0]
-    if n == 2:
-        return A[0][0] * A[1][1] - A[0][1] * A[1][0]
-    if n == 3:
+        det = A[0][0]
+    elif n == 2:
+        det = A[0][0] * A[1][1] - A[0][1] * A[1][0]
+    elif n == 3:
         (a, b, c), (d, e, f), (p, q, t) = A
-        return a * (e * t - f * q) - b * (d * t - f * p) + c * (d * q - e * p)
-    raise ValueError("multiplication determinant implemented for degree ≤ 3")
+        det = a * (e * t - f * q) - b * (d * t - f * p) + c * (d * q - e * p)
+    else:
+        raise ValueError("multiplication determinant implemented for degree ≤ 3")
+    return det.numer()
 
 
 def _root_ball(sqf, rc, k, isolated=None):
