@@ -248,6 +248,12 @@ def fact(build: Callable, piece: Callable | None = None) -> Callable:
     return wrap
 
 
+def recording_now() -> bool:
+    """Whether a deciding function called here would record its fact (a certificate is
+    being made and no :func:`quiet` block is open)."""
+    return bool(_ACTIVE) and not _ACTIVE[-1].depth
+
+
 def silent(func: Callable) -> Callable:
     """Decorate an engine routine whose inner facts are the engine's business (an isolation,
     a table's construction): nothing it calls records."""

@@ -74,8 +74,7 @@ def primitive(p) -> flint.fmpz_poly:
         q = flint.fmpq_poly(p).numer()
     if q.is_zero():
         return q
-    g = q.content()
-    q = flint.fmpz_poly([c // g for c in q.coeffs()])
+    q = q / q.content()                 # exact division (python-flint)
     if q.leading_coefficient() < 0:
         q = -q
     return q
