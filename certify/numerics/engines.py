@@ -249,21 +249,20 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
 
     yield 0, i, n, prec
     while done < collisions:
-        with precision(prec):
+        with precision(prec):          # one context a collision (more() enters its own)
             code, j = rules.classify(i, n, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
-        if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
-            n = more(prod.P)
-            continue
-        if code:
-            break
-        P = prod.times(j)
-        with precision(prec):
+            if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
+                n = more(prod.P)
+                continue
+            if code:
+                break
+            P = prod.times(j)
             m = prod.evaluate(P, prod.base, prec)
-        t = (j + 1) % 3
-        while not (m[t] > 0 or m[t] < 0) and prec < cap:     # the orientation undecided
-            m = more(P)
-        if m[t] < 0:
-            P, m = -P, tuple(-z for z in m)
+            t = (j + 1) % 3
+            while not (m[t] > 0 or m[t] < 0) and prec < cap:     # the orientation undecided
+                m = more(P)
+            if m[t] < 0:
+                P, m = -P, tuple(-z for z in m)
         prod.push(P, m)
         n = m
         i, done = j, done + 1
