@@ -913,10 +913,11 @@ def island_fraction(r, depth: int = 8, prec: int = 64) -> tuple[flint.fmpq, flin
     inside, undecided = flint.fmpq(0), flint.fmpq(0)
     boxes = [(flint.fmpq(0), flint.fmpq(1), flint.fmpq(0), flint.fmpq(1))]
     with precision(prec):
+        sides = Sides(rq)
         for level in range(depth + 1):
             nxt = []
             for box in boxes:
-                s = box_sign(box, rq)
+                s = box_sign(box, rq, sides)
                 area = (box[1] - box[0]) * (box[3] - box[2])
                 if s > 0:
                     inside += area
@@ -935,7 +936,37 @@ def _split(box):
     return [(s0, sm, t0, tm), (sm, s1, t0, tm), (s0, sm, tm, t1), (sm, s1, tm, t1)]
 
 
-def box_sign(box, r: flint.fmpq) -> int:
+class Sides:
+    """What :func:`box_sign` reads at the sides of the boxes, at r and the working precision,
+    each computed once: the exact ends of the balls tan(θ − π/4) and w = 1/(sin θ + cos θ) at
+    θ = πs/2 (:meth:`at_s`), of cot φ at φ = πt (:meth:`at_t`); r and c_max as balls."""
+
+    def __init__(self, r: flint.fmpq):
+        self.r, self.pi = r, flint.arb.pi()
+        self.R, self.c = flint.arb(r), flint.arb(island.c_max(r))
+        self.w_min = _lower(1 / flint.arb(2).sqrt())          # w at θ = π/4
+        self.s, self.t = {}, {}
+
+    def at_s(self, s: flint.fmpq) -> tuple:
+        """(lower, upper end of tan(θ − π/4), lower, upper end of w(θ)) at θ = πs/2."""
+        key = (s.p, s.q)                  # python-flint hashes an fmpq slowly, an fmpz fast
+        got = self.s.get(key)
+        if got is None:
+            th = s * self.pi / 2
+            got = self.s[key] = ends((th - self.pi / 4).tan()) + ends(1 / (th.sin() + th.cos()))
+        return got
+
+    def at_t(self, t: flint.fmpq) -> tuple:
+        """(lower, upper end of cot φ) at φ = πt."""
+        key = (t.p, t.q)
+        got = self.t.get(key)
+        if got is None:
+            ph = t * self.pi
+            got = self.t[key] = ends(ph.cos() / ph.sin())
+        return got
+
+
+def box_sign(box, r: flint.fmpq, sides: Sides | None = None) -> int:
     """+1 when the whole box is in U_r, −1 when none of it is, 0 undecided: the chart of
     the box enclosed in a rectangle [u] × [v] by monotonicity, then Q bounded on it exactly
     as balls.  At b, n = p ∧ q = (−cos θ sin φ, cos φ, sin θ sin φ) (reduction.Angles), so
@@ -947,17 +978,14 @@ def box_sign(box, r: flint.fmpq) -> int:
     s0, s1, t0, t1 = box
     if t0 == 0 or t1 == 1:
         return box_sign_balls(box, r)
-    pi = flint.arb.pi()
-    th0, th1 = s0 * pi / 2, s1 * pi / 2
-    ph0, ph1 = t0 * pi, t1 * pi
-    ua, ub = _lower((th0 - pi / 4).tan()), _upper((th1 - pi / 4).tan())
-    w = [1 / (x.sin() + x.cos()) for x in (th0, th1)]
-    w_hi = max(_upper(w[0]), _upper(w[1]))
-    w_lo = _lower(1 / flint.arb(2).sqrt()) if s0 <= flint.fmpq(1, 2) <= s1 else min(_lower(w[0]), _lower(w[1]))
-    c_lo, c_hi = _lower(ph1.cos() / ph1.sin()), _upper(ph0.cos() / ph0.sin())
+    sides = sides if sides is not None and sides.r == r else Sides(r)
+    (ua, _, w0_lo, w0_hi), (_, ub, w1_lo, w1_hi) = sides.at_s(s0), sides.at_s(s1)
+    w_hi = max(w0_hi, w1_hi)
+    w_lo = sides.w_min if s0 <= flint.fmpq(1, 2) <= s1 else min(w0_lo, w1_lo)
+    c_lo, c_hi = sides.at_t(t1)[0], sides.at_t(t0)[1]
     va, vb = 2 * min(c_lo * w_lo, c_lo * w_hi), 2 * max(c_hi * w_lo, c_hi * w_hi)
     ua, ub, va, vb = (flint.arb(x) for x in (ua, ub, va, vb))
-    R, c = flint.arb(r), flint.arb(island.c_max(r))
+    R, c = sides.R, sides.c
     corners = [island.quadratic_form(x, y, R) for x in (ua, ub) for y in (va, vb)]
     if all(c - q > 0 for q in corners):
         return 1
