@@ -285,10 +285,12 @@ def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]
 
 def _next_letter_ball(letter: str, n: tuple) -> str:
     """:func:`next_letter` for a ball normal n (the same sign decisions, without building
-    the Plane): the position inside the face (:func:`position`), then the one closing letter."""
+    the Plane): the position inside the face (:func:`position`: n ∧ e_i has the entries n_k
+    at j and −n_j at k, j, k = i+1, i+2, exact copies of the balls), then the one closing letter."""
     i = INDEX[letter]
-    p = cross(n, E[i])
-    if {sign(z) for k, z in enumerate(p) if k != i} not in ({1}, {-1}):
+    j, k = (i + 1) % 3, (i + 2) % 3
+    sk = sign(n[k])
+    if sk == 0 or sign(n[j]) != -sk:
         raise Corner(f"the plane {n} meets the face {letter} outside its interior")
     closing = [L for L in LETTERS if L != letter and sign(n[i] * n[INDEX[L]]) > 0]
     if len(closing) != 1:
