@@ -98,6 +98,10 @@ class Step:
             self.text = self.text()
         return str(self.text)
 
+    def __getstate__(self) -> dict:
+        """Pickled with its evidence written (a function that writes it is not picklable)."""
+        return {"name": self.name, "holds": self.holds, "text": self.evidence}
+
 
 @dataclass
 class Theorem:

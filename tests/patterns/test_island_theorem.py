@@ -342,3 +342,12 @@ def test_signs_on_the_interval_from_the_field_and_from_sympy():
             F.sign(F.of(e))
         with pytest.raises(ValueError):
             it.interval_sign(e)
+
+
+def test_a_theorem_crosses_process_boundaries_with_its_evidence():
+    """A Theorem pickles (a worker may return one) with every step's evidence written."""
+    import pickle
+    T = it.prove(flint.fmpq(7, 10), it.Claims())
+    U = pickle.loads(pickle.dumps(T))
+    assert [(s.name, s.holds, s.evidence) for s in U.steps] == [(s.name, s.holds, s.evidence) for s in T.steps]
+    assert U.quasi_periodic and U.c_max == T.c_max
