@@ -267,20 +267,35 @@ def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]
     last contact, a ball vector containing a positive multiple of the last oriented normal).
     Every letter is proven by the balls (:func:`next_letter`); the run stops at the first
     sign they cannot decide, or at a corner."""
-    letters = []
+    letters, rows = [], cofactors(r)
     with precision(prec):
         m = tuple(flint.arb(z) for z in n)
         L = letter
         try:
             for _ in range(count):
-                L2 = next_letter(Plane(L, m))
-                m2 = cofactor_apply(L2, r, m)
+                L2 = _next_letter_ball(L, m)
+                m2 = apply(rows[L2], m)
                 top = max(abs(z).upper() for z in m2) * sign(m2[ORIENTATION[L2]])     # oriented: e_t · n > 0
                 L, m = L2, tuple(z / top for z in m2)
                 letters.append(L)
         except (Undecided, Corner):
             pass
     return "".join(letters), L, m
+
+
+def _next_letter_ball(letter: str, n: tuple) -> str:
+    """:func:`next_letter` for a ball normal n (the same sign decisions, without building
+    the Plane): the position inside the face (:func:`position`: n ∧ e_i has the entries n_k
+    at j and −n_j at k, j, k = i+1, i+2, exact copies of the balls), then the one closing letter."""
+    i = INDEX[letter]
+    j, k = (i + 1) % 3, (i + 2) % 3
+    sk = sign(n[k])
+    if sk == 0 or sign(n[j]) != -sk:
+        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
+    closing = [L for L in LETTERS if L != letter and sign(n[i] * n[INDEX[L]]) > 0]
+    if len(closing) != 1:
+        raise Corner(f"cos φ = 0 at {Plane(letter, n)}: the orbit heads for a corner")
+    return closing[0]
 
 
 def ball_word(P: Plane, r, n: int, prec: int) -> str:

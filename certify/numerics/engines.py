@@ -184,6 +184,7 @@ class _Product:
         self.done = []
         self.steps = 0
         self.base = n0
+        self._column, self._of = None, None
 
     def times(self, j):
         return self.mats[j] * self.P
@@ -204,6 +205,15 @@ class _Product:
             n0 = self.evaluate(S, n0, prec)
         self.base = n0
         return self.evaluate(self.P, n0, prec)
+
+    def value(self, P):
+        """:meth:`evaluate` of P at the base (the base's column built once a base: a column
+        of balls is copied exactly, whatever the precision)."""
+        if self._of is not self.base:
+            n0 = self.base
+            self._column, self._of = flint.arb_mat([[n0[0]], [n0[1]], [n0[2]]]), n0
+        v = flint.arb_mat(P) * self._column
+        return (v[0, 0], v[1, 0], v[2, 0])
 
     @staticmethod
     def evaluate(P, n0, prec):
@@ -249,21 +259,20 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
 
     yield 0, i, n, prec
     while done < collisions:
-        with precision(prec):
+        with precision(prec):          # one context a collision (more() enters its own)
             code, j = rules.classify(i, n, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
-        if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
-            n = more(prod.P)
-            continue
-        if code:
-            break
-        P = prod.times(j)
-        with precision(prec):
-            m = prod.evaluate(P, prod.base, prec)
-        t = (j + 1) % 3
-        while not (m[t] > 0 or m[t] < 0) and prec < cap:     # the orientation undecided
-            m = more(P)
-        if m[t] < 0:
-            P, m = -P, tuple(-z for z in m)
+            if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
+                n = more(prod.P)
+                continue
+            if code:
+                break
+            P = prod.times(j)
+            m = prod.value(P)
+            t = (j + 1) % 3
+            while not (m[t] > 0 or m[t] < 0) and prec < cap:     # the orientation undecided
+                m = more(P)
+            if m[t] < 0:
+                P, m = -P, tuple(-z for z in m)
         prod.push(P, m)
         n = m
         i, done = j, done + 1

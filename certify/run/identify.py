@@ -41,6 +41,7 @@ from functools import cache
 
 import flint
 
+from certify import caches
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.balls import precision
 from certify.algebra.branches import BRANCH_NAMES
@@ -128,6 +129,14 @@ def trap_of(word: str, r: flint.fmpq) -> trapping.Trap | str:
     return trapping.attempt(word, r)
 
 
+@caches.for_a_run
+def recheck(word: str, r: flint.fmpq, centre: tuple, frame: tuple, radius: flint.fmpq, pair: str):
+    """The trapping ellipse (centre, frame, radius) of the rotation ``word`` at r re-certified
+    from its exact data (:func:`trapping.check`, the second route), once per run: every orbit
+    of the grid that follows the word at r asks for the same."""
+    return trapping.check(word, r, centre, frame, radius, pair)
+
+
 def window_at(res: OrbitResult, r: Algebraic) -> tuple[dict | None, str]:
     """(the attracting window containing r, or None; a sentence saying which, or why not)."""
     for a in res.attracting():
@@ -206,7 +215,7 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
         U = trap_of(word, r)
         if isinstance(U, str):
             return f"no certified trapping ellipse for {word} at r = {r}: {U}"
-        U = trapping.check(word, r, U.centre, U.frame, U.radius, U.pair)
+        U = recheck(word, r, U.centre, U.frame, U.radius, U.pair)
         if isinstance(U, str):
             return f"the trapping ellipse of {word} is not re-certified: {U}"
     state = _state(r, theta0, phi0, k)

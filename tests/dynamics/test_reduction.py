@@ -308,3 +308,25 @@ def test_ball_run_follows_the_exact_orbit_and_encloses_its_oriented_normal():
     for k in range(3):
         assert (n[k] / n[t]).contains(flint.fmpq(last.n[k], last.n[t]))
     assert len(R.ball_run("b", P.n, r, 60, 16)[0]) < 60          # too few bits: stops at an undecided sign
+
+
+def _decided(f, *args):
+    try:
+        return f(*args)
+    except (R.Corner, sim.Undecided):
+        return "refused"
+
+
+def test_the_ball_next_letter_decides_as_next_letter():
+    """ball_run's _next_letter_ball against next_letter on a Plane of the same balls: the same
+    letter, or both refusing (a corner, or a sign the balls do not decide), on balls that
+    straddle 0, exact zeros and decided entries of every sign, at every contact."""
+    rng = random.Random(3)
+    choices = [flint.arb(0), flint.arb(0, 1), flint.arb(1, Q(1, 2)), flint.arb(-2, Q(1, 3)), flint.arb(3),
+               flint.arb(-1)]
+    with precision(64):
+        for _ in range(400):
+            letter = rng.choice(LETTERS)
+            n = tuple(rng.choice(choices) * rng.choice((1, 2)) for _ in range(3))
+            plane = _decided(lambda: R.next_letter(R.Plane(letter, n)))       # noqa: B023
+            assert _decided(R._next_letter_ball, letter, n) == plane, (letter, n)
