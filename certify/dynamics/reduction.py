@@ -151,7 +151,11 @@ class Plane:
 
 def canonical(letter: str, n) -> Plane:
     """The Plane with contact ``letter`` and normal ∝ n (orientation e_t · n > 0)."""
-    n = primitive(n)
+    return oriented(letter, primitive(n))
+
+
+def oriented(letter: str, n) -> Plane:
+    """:func:`canonical` for a primitive integer n (±n is the Plane's normal)."""
     s = sign(n[ORIENTATION[letter]])
     if s == 0:
         raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")
@@ -160,7 +164,10 @@ def canonical(letter: str, n) -> Plane:
 
 def normal(p, q) -> tuple:
     """The primitive integer vector positively proportional to p ∧ q (p, q rational):
-    p and q are first scaled to integer vectors by positive factors."""
+    p and q are first scaled to integer vectors by positive factors (integer ones are)."""
+    fmpz = flint.fmpz
+    if all(type(z) is fmpz for z in (*p, *q)):
+        return primitive(cross(p, q))
     return primitive(cross(integral(p), integral(q)))
 
 
@@ -170,7 +177,7 @@ def plane(letter: str, p, q) -> Plane:
     i = INDEX[letter]
     if p[i] != 0 or sign(q[i]) <= 0:
         raise ValueError(f"not a state right after a collision {letter}: need p_{i + 1} = 0 < q_{i + 1}")
-    return canonical(letter, normal(p, q))
+    return oriented(letter, normal(p, q))
 
 
 def position(P: Plane) -> tuple:
