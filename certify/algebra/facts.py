@@ -65,9 +65,65 @@ def _rational_function(e, gens: list) -> dict:
     def terms(x):
         if not gens:
             return [[rational(sp.Rational(x)), []]] if x != 0 else []
+        try:
+            return polynomial_terms(x, gens)
+        except _NotPolynomial:
+            pass
         P = sp.Poly(sp.expand(x), *gens, domain="QQ")
         return sorted([rational(c), list(m)] for m, c in P.terms())
     return {"num": terms(n), "den": terms(d)}
+
+
+class _NotPolynomial(ValueError):
+    """Not a sum of products of rationals, ``gens`` and their powers, as read by :func:`polynomial_terms`."""
+
+
+def polynomial_terms(x, gens: list) -> list:
+    """The terms of the polynomial x in ``gens`` over Q as [["p/q", exponents], ...], sorted: what
+    ``sp.Poly(sp.expand(x), *gens, domain="QQ").terms()`` gives (the zero polynomial as one term
+    0), multiplied out in flint's fmpq_mpoly instead of SymPy's expand.  The terms of a polynomial
+    are unique, so both give the same list.  _NotPolynomial for anything but rationals, ``gens``,
+    sums, products and powers with a natural exponent (the caller then asks SymPy)."""
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "lex")
+    index = dict(zip(gens, ctx.gens()))
+
+    def walk(e):
+        found = index.get(e)
+        if found is not None:
+            return found
+        if e.is_Rational:
+            return flint.fmpq(int(e.p), int(e.q))
+        if e.is_Add or e.is_Mul:
+            args = [walk(a) for a in e.args]
+            out = args[0]
+            for a in args[1:]:
+                out = out + a if e.is_Add else out * a
+            return out
+        if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+            return walk(e.base) ** int(e.exp)
+        raise _NotPolynomial(f"{e} is not read as a polynomial")
+    P = walk(sp.sympify(x))
+    if not isinstance(P, flint.fmpq_mpoly):
+        P = ctx.from_dict({(0,) * len(gens): P})
+    if P == 0:
+        return [["0", [0] * len(gens)]]
+    return sorted([rational(c), [int(k) for k in m]] for m, c in zip(P.monoms(), P.coeffs()))
+
+
+def _bare_symbols(e) -> set:
+    """The symbols (not Dummy) of e that occur outside its function atoms: the free symbols of
+    e with each function atom replaced by a Dummy, found by a walk that does not enter them."""
+    out, todo = set(), [e]
+    while todo:
+        x = todo.pop()
+        if isinstance(x, sp.Function):
+            continue
+        if x.is_Symbol:
+            if not isinstance(x, sp.Dummy):
+                out.add(x)
+            continue
+        todo.extend(x.args)
+    return out
 
 
 def generators(*exprs) -> tuple[list, list]:
@@ -83,8 +139,7 @@ def generators(*exprs) -> tuple[list, list]:
         for p in e.atoms(sp.Pow):
             if not p.exp.is_Integer:
                 raise ValueError(f"a non-integer power {p}")
-        bare = e.subs({f: sp.Dummy() for f in e.atoms(sp.Function)})
-        symbols |= {x for x in bare.free_symbols if not isinstance(x, sp.Dummy)}
+        symbols |= _bare_symbols(e)
     if symbols & trig:
         raise ValueError("a symbol occurs both alone and inside cos, sin")
     # the engine's own names for cos θ, sin θ (certify.algebra.trig): the symbols cosX, sinX
