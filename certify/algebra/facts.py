@@ -61,7 +61,13 @@ caches.register(_RATIONAL_FUNCTIONS.clear)
 
 
 def _rational_function(e, gens: list) -> dict:
-    n, d = sp.fraction(sp.together(sp.sympify(e)))
+    e = sp.sympify(e)
+    if gens and _integral(e):        # together leaves it whole over 1: the terms of e itself
+        try:
+            return {"num": polynomial_terms(e, gens), "den": [["1", [0] * len(gens)]]}
+        except _NotPolynomial:
+            pass
+    n, d = sp.fraction(sp.together(e))
     def terms(x):
         if not gens:
             return [[rational(sp.Rational(x)), []]] if x != 0 else []
@@ -72,6 +78,27 @@ def _rational_function(e, gens: list) -> dict:
         P = sp.Poly(sp.expand(x), *gens, domain="QQ")
         return sorted([rational(c), list(m)] for m, c in P.terms())
     return {"num": terms(n), "den": terms(d)}
+
+
+def _integral(e) -> bool:
+    """e is written with integers, symbols, function atoms, sums, products and natural powers
+    only (no fraction anywhere): ``sp.fraction(sp.together(e))`` is then (e, 1), up to the
+    grouping of its terms."""
+    todo = [e]
+    while todo:
+        x = todo.pop()
+        if x.is_Rational:
+            if not x.is_Integer:
+                return False
+        elif x.is_Pow:
+            if not (x.exp.is_Integer and x.exp >= 0):
+                return False
+            todo.append(x.base)
+        elif x.is_Add or x.is_Mul:
+            todo.extend(x.args)
+        elif not (x.is_Symbol or isinstance(x, sp.Function)):
+            return False
+    return True
 
 
 class _NotPolynomial(ValueError):

@@ -60,3 +60,25 @@ def bare_by_subs(e) -> set:
 def test_bare_symbols_are_those_outside_functions(e, extra):
     e = e + extra
     assert facts._bare_symbols(e) == bare_by_subs(e)
+
+
+integers = st.sampled_from(GENS + [sp.Integer(-2), sp.Integer(0), sp.Integer(1), sp.Integer(3)])
+integral_exprs = st.recursive(integers, lambda sub: st.one_of(
+    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Add(*a)),
+    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Mul(*a)),
+    st.tuples(sub, st.integers(0, 3)).map(lambda a: a[0] ** a[1])), max_leaves=12)
+
+
+@settings(max_examples=200, deadline=None)
+@given(integral_exprs)
+def test_an_expression_without_fractions_is_its_own_numerator(e):
+    """For an expression without fractions, rational_function's shortcut (the terms of e over 1)
+    is what SymPy's together and fraction give."""
+    assert facts._integral(e)
+    n, d = sp.fraction(sp.together(e))
+    assert facts._rational_function(e, GENS) == {"num": sympy_terms(n, GENS), "den": sympy_terms(d, GENS)}
+
+
+@pytest.mark.parametrize("e", [x / 2, x ** -1, sp.sqrt(x), sp.Float(2.0) * x, x * (r / 2 + sp.Rational(1, 2))])
+def test_a_fraction_is_left_to_together(e):
+    assert not facts._integral(e)
