@@ -166,7 +166,8 @@ def normal(p, q) -> tuple:
     """The primitive integer vector positively proportional to p ∧ q (p, q rational):
     p and q are first scaled to integer vectors by positive factors (integer ones are)."""
     fmpz = flint.fmpz
-    if all(type(z) is fmpz for z in (*p, *q)):
+    if type(p[0]) is fmpz and type(p[1]) is fmpz and type(p[2]) is fmpz and \
+            type(q[0]) is fmpz and type(q[1]) is fmpz and type(q[2]) is fmpz:
         return primitive(cross(p, q))
     return primitive(cross(integral(p), integral(q)))
 

@@ -339,11 +339,12 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
         if not times:
             out.stop = "free"
             return out
-        _, num, den = times[0]
-        for _L, n1, d1 in times[1:]:
-            if n1 * den < num * d1:
-                num, den = n1, d1
-        letters = "".join(L for L, n1, d1 in times if n1 * den == num * d1)
+        letters, num, den = times[0]
+        if len(times) > 1:
+            for _L, n1, d1 in times[1:]:
+                if n1 * den < num * d1:
+                    num, den = n1, d1
+            letters = "".join(L for L, n1, d1 in times if n1 * den == num * d1)
         closed = [i for i, L in enumerate(LETTERS)
                   if L in letters or (Q[i] >= 0 and P[i] == 0 and (Q[i] == 0 or num == 0))]
         if 1 in closed and len(closed) > 1:
