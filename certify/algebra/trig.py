@@ -33,6 +33,7 @@ from functools import cache
 
 import flint
 import sympy as sp
+from sympy.core.mul import _keep_coeff
 
 from certify import caches
 from certify.obligations import fact
@@ -387,6 +388,14 @@ def _factor_list(g) -> tuple:
     return c, tuple(factors)
 
 
+def _factored(g) -> sp.Expr:
+    """sp.factor(g) for a polynomial g, rebuilt as SymPy's factor builds it (the constant kept
+    before the product of the factors' powers) from the memoised :func:`_factor_list`, not
+    factored a second time."""
+    c, factors = _factor_list(g)
+    return _keep_coeff(sp.sympify(c), sp.Mul(*[f**m for f, m in factors]))
+
+
 @caches.for_a_run
 def _factor_sign(f, H: Signs) -> int | None:
     """The strict sign of one irreducible factor under H, or None."""
@@ -424,7 +433,7 @@ def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
             s *= fs**m
             why.append(f"`{show(f)}` {'>' if fs > 0 else '<'} 0")
         else:
-            return s, [f"`{show(sp.factor(g))}`: " + ", ".join(why or ["constant"])]
+            return s, [f"`{show(_factored(g))}`: " + ", ".join(why or ["constant"])]
     return None, [f"`{show(sp.factor(p))}`: " + undecided[0]]
 
 
