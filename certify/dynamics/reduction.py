@@ -238,16 +238,37 @@ def step(P: Plane, r, rows: dict | None = None) -> Plane:
 
 
 def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
-    """P and its first n images (fewer if a corner is met and stop_at_corner)."""
+    """P and its first n images (fewer if a corner is met and stop_at_corner).
+
+    After the first step every normal is primitive, and then the content g of m = M n (M the
+    integer rows of cof(K_j)) divides det M: adj(M) m = det(M) n, so g divides det(M)·n_k for
+    every k, and n is primitive.  So g = gcd(det M, m_1, m_2, m_3): gcds of the long entries
+    with a short number, the same primitive normal as :func:`canonical`'s."""
     out, rows = [P], cofactors(r)
-    for _ in range(n):
+    dets = {L: _det(rows[L]) for L in LETTERS}
+    fmpz = flint.fmpz
+    for k in range(n):
         try:
-            out.append(step(out[-1], r, rows))
+            Q = out[-1]
+            m = Q.n
+            if k == 0 or not (type(m[0]) is fmpz and type(m[1]) is fmpz and type(m[2]) is fmpz):
+                out.append(step(Q, r, rows))
+                continue
+            j = _next_letter_exact(Q.letter, INDEX[Q.letter], m)
+            m = apply(rows[j], m)
+            g = dets[j].gcd(m[0]).gcd(m[1]).gcd(m[2])
+            out.append(oriented(j, m if g == 1 else (m[0] // g, m[1] // g, m[2] // g)))
         except Corner:
             if not stop_at_corner:
                 raise
             break
     return out
+
+
+def _det(rows: tuple):
+    """The determinant of a 3×3 matrix given by its rows."""
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
 
 
 def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:

@@ -329,3 +329,23 @@ def test_angles_of_an_integer_normal_is_the_generic_one(letter, n):
         a, b = R.angles(P), R.angles_of(letter, *want)
     assert [z.mid().str(40) + z.rad().str(5) for z in (a.ct, a.st, a.cp, a.sp)] == \
         [z.mid().str(40) + z.rad().str(5) for z in (b.ct, b.st, b.cp, b.sp)]
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-60, 60)] * 3), st.integers(1, 99), st.integers(1, 3))
+def test_orbit_is_step_after_step(letter, n, k, c):
+    """orbit() (the content of each new normal read off det M) is step() applied again and again
+    from canonical(P), a corner included; a start normal that is not primitive (c > 1) too."""
+    r0 = flint.fmpq(k, 100)
+    try:
+        P = R.canonical(letter, n)
+    except (R.Corner, ValueError):
+        return
+    start = R.Plane(letter, tuple(c * z for z in P.n))
+    want, rows = [start], R.cofactors(r0)
+    for _ in range(40):
+        try:
+            want.append(R.step(want[-1], r0, rows))
+        except R.Corner:
+            break
+    assert R.orbit(start, r0, 40) == want
