@@ -276,17 +276,34 @@ def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:
     orbit: the normal is made primitive only every ``reduce_every`` steps (its gcd
     is small, and the sign tests do not need it).  Stops early at a corner."""
     letters, rows = [], cofactors(r)
+    fmpz = flint.fmpz
+    if not all(type(z) is fmpz for z in P.n):
+        try:
+            for k in range(n):
+                j = next_letter(P)
+                m = apply(rows[j], P.n)
+                if m[ORIENTATION[j]] < 0:
+                    m = tuple(-z for z in m)
+                P = canonical(j, m) if k % reduce_every == 0 else Plane(j, m)
+                letters.append(j)
+        except Corner:
+            pass
+        return "".join(letters), canonical(P.letter, P.n)
+    # the same steps on (letter, normal) without a Plane per step (integer normals stay integer)
+    L, m = P.letter, P.n
     try:
         for k in range(n):
-            j = next_letter(P)
-            m = apply(rows[j], P.n)
-            if m[ORIENTATION[j]] < 0:
-                m = tuple(-z for z in m)
-            P = canonical(j, m) if k % reduce_every == 0 else Plane(j, m)
+            j = _next_letter_exact(L, INDEX[L], m)
+            m2 = apply(rows[j], m)
+            if m2[ORIENTATION[j]] < 0:
+                m2 = (-m2[0], -m2[1], -m2[2])
+            if k % reduce_every == 0:
+                m2 = canonical(j, m2).n          # a Corner here keeps (L, m), as the Plane path does
+            L, m = j, m2
             letters.append(j)
     except Corner:
         pass
-    return "".join(letters), canonical(P.letter, P.n)
+    return "".join(letters), canonical(L, m)
 
 
 def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]:

@@ -349,3 +349,21 @@ def test_orbit_is_step_after_step(letter, n, k, c):
         except R.Corner:
             break
     assert R.orbit(start, r0, 40) == want
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-30, 30)] * 3), st.integers(1, 99),
+       st.sampled_from([1, 2, 5, 64]))
+def test_word_of_on_integers_is_the_plane_path(letter, n, k, every):
+    """word_of on an integer normal (no Plane per step) gives the letters and the end of the
+    Plane path (taken for a rational normal), a corner included."""
+    r0 = flint.fmpq(k, 100)
+    exact = R.Plane(letter, tuple(flint.fmpz(z) for z in n))
+    plane = R.Plane(letter, tuple(flint.fmpq(z) for z in n))
+    try:
+        want = R.word_of(plane, r0, 60, every)
+    except (R.Corner, ValueError) as exc:
+        with pytest.raises(type(exc)):
+            R.word_of(exact, r0, 60, every)
+        return
+    assert R.word_of(exact, r0, 60, every) == want
