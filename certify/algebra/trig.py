@@ -434,7 +434,7 @@ def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
             why.append(f"`{show(f)}` {'>' if fs > 0 else '<'} 0")
         else:
             return s, [f"`{show(_factored(g))}`: " + ", ".join(why or ["constant"])]
-    return None, [f"`{show(sp.factor(p))}`: " + undecided[0]]
+    return None, [f"`{show(_factored(_rewrite(p, 0)))}`: " + undecided[0]]     # p expanded, factored above
 
 
 def _sign_facts(answer, E, H: Signs):

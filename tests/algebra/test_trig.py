@@ -21,3 +21,12 @@ def test_factored_is_sympys_factor(p):
     g = sp.expand(p)
     assert T._factored(g) == sp.factor(g)
     assert T.show(T._factored(g)) == T.show(sp.factor(g))
+
+
+def test_undecided_sign_shows_sympys_factor():
+    """An undecided sign shows the polynomial factored as sp.factor shows it (from the memoised
+    factor list of its expanded form)."""
+    H = T.Signs(atoms=((r, 1),))
+    p = sp.expand((x - y) * (x + 2 * y) * (r + 1) * 3)
+    s, why = T._poly_sign(p, H)
+    assert s is None and why[0].startswith(f"`{T.show(sp.factor(p))}`: ")
