@@ -137,20 +137,23 @@ def polynomial_terms(x, gens: list) -> list:
     return sorted([rational(c), [int(k) for k in m]] for m, c in zip(P.monoms(), P.coeffs()))
 
 
-def _bare_symbols(e) -> set:
-    """The symbols (not Dummy) of e that occur outside its function atoms: the free symbols of
-    e with each function atom replaced by a Dummy, found by a walk that does not enter them."""
-    out, todo = set(), [e]
+def _atoms(e) -> tuple[set, set, set]:
+    """``e.atoms(sp.Function)``, ``e.atoms(sp.Pow)`` and the bare symbols of e (not Dummy) that
+    occur outside its function atoms (the free symbols of e with each function atom replaced by
+    a Dummy), in one walk of e in preorder (the order in which atoms() fills its sets)."""
+    functions, powers, bare = set(), set(), set()
+    todo = [(e, False)]
     while todo:
-        x = todo.pop()
+        x, inside = todo.pop()
         if isinstance(x, sp.Function):
-            continue
-        if x.is_Symbol:
-            if not isinstance(x, sp.Dummy):
-                out.add(x)
-            continue
-        todo.extend(x.args)
-    return out
+            functions.add(x)
+            inside = True
+        elif x.is_Pow:
+            powers.add(x)
+        elif x.is_Symbol and not inside and not isinstance(x, sp.Dummy):
+            bare.add(x)
+        todo.extend((a, inside) for a in reversed(x.args))
+    return functions, powers, bare
 
 
 def generators(*exprs) -> tuple[list, list]:
@@ -159,14 +162,15 @@ def generators(*exprs) -> tuple[list, list]:
     square root, ...) or a symbol occurs both alone and inside cos, sin."""
     trig, symbols = set(), set()
     for e in map(sp.sympify, exprs):
-        for f in e.atoms(sp.Function):
+        functions, powers, bare = _atoms(e)
+        for f in functions:
             if f.func not in (sp.cos, sp.sin) or not f.args[0].is_Symbol:
                 raise ValueError(f"the function {f} is outside Q[variables, cos, sin]")
             trig.add(f.args[0])
-        for p in e.atoms(sp.Pow):
+        for p in powers:
             if not p.exp.is_Integer:
                 raise ValueError(f"a non-integer power {p}")
-        symbols |= _bare_symbols(e)
+        symbols |= bare
     if symbols & trig:
         raise ValueError("a symbol occurs both alone and inside cos, sin")
     # the engine's own names for cos θ, sin θ (certify.algebra.trig): the symbols cosX, sinX

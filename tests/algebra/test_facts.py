@@ -59,7 +59,7 @@ def bare_by_subs(e) -> set:
 @given(exprs, st.sampled_from([x, th, r * sp.cos(x), sp.Dummy() * y, sp.sin(y) * y]))
 def test_bare_symbols_are_those_outside_functions(e, extra):
     e = e + extra
-    assert facts._bare_symbols(e) == bare_by_subs(e)
+    assert facts._atoms(e)[2] == bare_by_subs(e)
 
 
 integers = st.sampled_from(GENS + [sp.Integer(-2), sp.Integer(0), sp.Integer(1), sp.Integer(3)])
@@ -82,3 +82,14 @@ def test_an_expression_without_fractions_is_its_own_numerator(e):
 @pytest.mark.parametrize("e", [x / 2, x ** -1, sp.sqrt(x), sp.Float(2.0) * x, x * (r / 2 + sp.Rational(1, 2))])
 def test_a_fraction_is_left_to_together(e):
     assert not facts._integral(e)
+
+
+@settings(max_examples=200, deadline=None)
+@given(exprs, st.sampled_from([x, th, r * sp.cos(x), sp.Dummy() * y, sp.sin(y) * y, sp.sqrt(x), sp.cos(x ** 2)]))
+def test_one_walk_finds_the_atoms(e, extra):
+    """_atoms: the sets of atoms() (the same iteration order: filled in preorder) and the bare symbols."""
+    e = e + extra
+    functions, powers, bare = facts._atoms(e)
+    assert functions == e.atoms(sp.Function) and list(functions) == list(e.atoms(sp.Function))
+    assert powers == e.atoms(sp.Pow) and list(powers) == list(e.atoms(sp.Pow))
+    assert bare == bare_by_subs(e)
