@@ -38,7 +38,7 @@ from certify import caches
 from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 
-from .model import INDEX, LETTERS, collide
+from .model import INDEX, LETTERS, collide, collide_integral
 from .simulate import Undecided, sign
 
 ORIENTATION = {"a": 1, "b": 2, "c": 0}       # t with e_t · u(k) ≥ 0 (l. 950)
@@ -356,6 +356,30 @@ def vectorial_step(letter: str, u, r) -> tuple[str, tuple]:
     other = LETTERS[(i + 2) % 3]
     j = succ if s > 0 else other
     return j, trilinear(letter, j, u, r)
+
+
+def vectorial_ray(letter: str, u, r) -> tuple[str, tuple]:
+    """:func:`vectorial_step` up to a positive factor, in integers for an integer u and a
+    rational r = m/d: K_j occurs once in the trilinear formula, and 2d·K_j
+    (:func:`certify.dynamics.model.collide_integral`) in its place multiplies ũ(1) by 2d > 0."""
+    i = INDEX[letter]
+    s = sign(u[i])
+    if s == 0:
+        raise Corner("cos φ = 0: the orbit heads for a corner")
+    j = LETTERS[(i + 1) % 3] if s > 0 else LETTERS[(i + 2) % 3]
+    p1 = cross(u, E[INDEX[j]])
+    q0 = cross(u, cross(E[i], u))
+    return j, cross(p1, collide_integral(j, q0, r))
+
+
+def same_ray(v, w) -> bool:
+    """v = k w for some k > 0 (exact; False when w = 0): v ∧ w = 0 and v · w > 0, read from
+    one non-zero entry w_k of w (v_k w_k > 0 and v_j w_k = v_k w_j for every j)."""
+    for k in range(3):
+        if w[k] != 0:
+            vk, wk = v[k], w[k]
+            return (vk > 0) == (wk > 0) and vk != 0 and all(v[m] * wk == vk * w[m] for m in range(3) if m != k)
+    return False
 
 
 def trilinear(letter: str, j: str, u, r) -> tuple:

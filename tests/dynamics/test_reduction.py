@@ -15,7 +15,7 @@ from certify.algebra.poly import r
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
-from certify.dynamics.model import INDEX, LETTERS, collision_matrix
+from certify.dynamics.model import INDEX, LETTERS, collide, collide_integral, collision_matrix
 from certify.run.runner import CERTIFICATES, FAIL, PASS, Context, altered, run_certificate
 from proofs import section4_1_reduction_theorem as S41
 from proofs import section4_2_final_expressions as S42
@@ -367,3 +367,24 @@ def test_word_of_on_integers_is_the_plane_path(letter, n, k, every):
             R.word_of(exact, r0, 60, every)
         return
     assert R.word_of(exact, r0, 60, every) == want
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-10 ** 30, 10 ** 30) | st.integers(-3, 3)] * 3),
+       st.integers(1, 99), st.integers(1, 99))
+def test_vectorial_ray_is_the_vectorial_step_up_to_a_positive_factor(letter, u, m, d):
+    """collide_integral is 2d·collide; vectorial_ray gives the contact of vectorial_step and a
+    positive multiple of its ũ(1) (or the same Corner); same_ray is v ∧ w = 0 and v · w > 0."""
+    r0 = flint.fmpq(m, d)
+    u = tuple(flint.fmpz(z) for z in u)
+    assert collide_integral(letter, u, r0) == tuple(2 * r0.q * z for z in collide(letter, u, r0))
+    try:
+        j, ut = R.vectorial_step(letter, u, r0)
+    except R.Corner:
+        with pytest.raises(R.Corner):
+            R.vectorial_ray(letter, u, r0)
+        return
+    j2, ray = R.vectorial_ray(letter, u, r0)
+    assert j2 == j and ray == tuple(2 * r0.q * z for z in ut)
+    for v, w in ((ray, ut), (ut, u), (u, tuple(-z for z in u)), (u, (0, 0, 0)), ((0, 0, 0), u), (u, u)):
+        assert R.same_ray(v, w) == (R.cross(v, w) == (0, 0, 0) and R.dot(v, w) > 0)
