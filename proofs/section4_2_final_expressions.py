@@ -464,9 +464,9 @@ def tally_runs(section4_data, orientation, to_b, to_c) -> str:
             oriented[0] += 1
             oriented[1] += u[t[L]] > 0
             key = f"a→{L1}" if L == "a" else "relabelled"
-            ut = formulas[L1](u, d.r) if L == "a" else R.vectorial_step(L, u, d.r)[1]
+            ut = formulas[L1](u, d.r) if L == "a" else R.vectorial_ray(L, u, d.r)[1]     # up to a factor > 0
             tally[key][0] += 1
-            tally[key][1] += R.cross(ut, u1) == (0, 0, 0) and R.dot(ut, u1) > 0
+            tally[key][1] += R.same_ray(ut, u1)
     return (f"on the exact runs, the orientation holds at {oriented[1]} of {oriented[0]} states, and the printed or "
             "relabelled formula gives a positive multiple of p(k+1) ∧ q(k+1) at " +
             ", ".join(f"{v[1]} of {v[0]} collisions {k}" for k, v in tally.items()) + ".")

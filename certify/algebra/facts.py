@@ -61,13 +61,99 @@ caches.register(_RATIONAL_FUNCTIONS.clear)
 
 
 def _rational_function(e, gens: list) -> dict:
-    n, d = sp.fraction(sp.together(sp.sympify(e)))
+    e = sp.sympify(e)
+    if gens and _integral(e):        # together leaves it whole over 1: the terms of e itself
+        try:
+            return {"num": polynomial_terms(e, gens), "den": [["1", [0] * len(gens)]]}
+        except _NotPolynomial:
+            pass
+    n, d = sp.fraction(sp.together(e))
     def terms(x):
         if not gens:
             return [[rational(sp.Rational(x)), []]] if x != 0 else []
+        try:
+            return polynomial_terms(x, gens)
+        except _NotPolynomial:
+            pass
         P = sp.Poly(sp.expand(x), *gens, domain="QQ")
         return sorted([rational(c), list(m)] for m, c in P.terms())
     return {"num": terms(n), "den": terms(d)}
+
+
+def _integral(e) -> bool:
+    """e is written with integers, symbols, function atoms, sums, products and natural powers
+    only (no fraction anywhere): ``sp.fraction(sp.together(e))`` is then (e, 1), up to the
+    grouping of its terms."""
+    todo = [e]
+    while todo:
+        x = todo.pop()
+        if x.is_Rational:
+            if not x.is_Integer:
+                return False
+        elif x.is_Pow:
+            if not (x.exp.is_Integer and x.exp >= 0):
+                return False
+            todo.append(x.base)
+        elif x.is_Add or x.is_Mul:
+            todo.extend(x.args)
+        elif not (x.is_Symbol or isinstance(x, sp.Function)):
+            return False
+    return True
+
+
+class _NotPolynomial(ValueError):
+    """Not a sum of products of rationals, ``gens`` and their powers, as read by :func:`polynomial_terms`."""
+
+
+def polynomial_terms(x, gens: list) -> list:
+    """The terms of the polynomial x in ``gens`` over Q as [["p/q", exponents], ...], sorted: what
+    ``sp.Poly(sp.expand(x), *gens, domain="QQ").terms()`` gives (the zero polynomial as one term
+    0), multiplied out in flint's fmpq_mpoly instead of SymPy's expand.  The terms of a polynomial
+    are unique, so both give the same list.  _NotPolynomial for anything but rationals, ``gens``,
+    sums, products and powers with a natural exponent (the caller then asks SymPy)."""
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "lex")
+    index = dict(zip(gens, ctx.gens()))
+
+    def walk(e):
+        found = index.get(e)
+        if found is not None:
+            return found
+        if e.is_Rational:
+            return flint.fmpq(int(e.p), int(e.q))
+        if e.is_Add or e.is_Mul:
+            args = [walk(a) for a in e.args]
+            out = args[0]
+            for a in args[1:]:
+                out = out + a if e.is_Add else out * a
+            return out
+        if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+            return walk(e.base) ** int(e.exp)
+        raise _NotPolynomial(f"{e} is not read as a polynomial")
+    P = walk(sp.sympify(x))
+    if not isinstance(P, flint.fmpq_mpoly):
+        P = ctx.from_dict({(0,) * len(gens): P})
+    if P == 0:
+        return [["0", [0] * len(gens)]]
+    return sorted([rational(c), [int(k) for k in m]] for m, c in zip(P.monoms(), P.coeffs()))
+
+
+def _atoms(e) -> tuple[set, set, set]:
+    """``e.atoms(sp.Function)``, ``e.atoms(sp.Pow)`` and the bare symbols of e (not Dummy) that
+    occur outside its function atoms (the free symbols of e with each function atom replaced by
+    a Dummy), in one walk of e in preorder (the order in which atoms() fills its sets)."""
+    functions, powers, bare = set(), set(), set()
+    todo = [(e, False)]
+    while todo:
+        x, inside = todo.pop()
+        if isinstance(x, sp.Function):
+            functions.add(x)
+            inside = True
+        elif x.is_Pow:
+            powers.add(x)
+        elif x.is_Symbol and not inside and not isinstance(x, sp.Dummy):
+            bare.add(x)
+        todo.extend((a, inside) for a in reversed(x.args))
+    return functions, powers, bare
 
 
 def generators(*exprs) -> tuple[list, list]:
@@ -76,15 +162,15 @@ def generators(*exprs) -> tuple[list, list]:
     square root, ...) or a symbol occurs both alone and inside cos, sin."""
     trig, symbols = set(), set()
     for e in map(sp.sympify, exprs):
-        for f in e.atoms(sp.Function):
+        functions, powers, bare = _atoms(e)
+        for f in functions:
             if f.func not in (sp.cos, sp.sin) or not f.args[0].is_Symbol:
                 raise ValueError(f"the function {f} is outside Q[variables, cos, sin]")
             trig.add(f.args[0])
-        for p in e.atoms(sp.Pow):
+        for p in powers:
             if not p.exp.is_Integer:
                 raise ValueError(f"a non-integer power {p}")
-        bare = e.subs({f: sp.Dummy() for f in e.atoms(sp.Function)})
-        symbols |= {x for x in bare.free_symbols if not isinstance(x, sp.Dummy)}
+        symbols |= bare
     if symbols & trig:
         raise ValueError("a symbol occurs both alone and inside cos, sin")
     # the engine's own names for cos θ, sin θ (certify.algebra.trig): the symbols cosX, sinX

@@ -33,6 +33,7 @@ from functools import cache
 
 import flint
 import sympy as sp
+from sympy.core.mul import _keep_coeff
 
 from certify import caches
 from certify.obligations import fact
@@ -387,6 +388,14 @@ def _factor_list(g) -> tuple:
     return c, tuple(factors)
 
 
+def _factored(g) -> sp.Expr:
+    """sp.factor(g) for a polynomial g, rebuilt as SymPy's factor builds it (the constant kept
+    before the product of the factors' powers) from the memoised :func:`_factor_list`, not
+    factored a second time."""
+    c, factors = _factor_list(g)
+    return _keep_coeff(sp.sympify(c), sp.Mul(*[f**m for f, m in factors]))
+
+
 @caches.for_a_run
 def _factor_sign(f, H: Signs) -> int | None:
     """The strict sign of one irreducible factor under H, or None."""
@@ -424,8 +433,8 @@ def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
             s *= fs**m
             why.append(f"`{show(f)}` {'>' if fs > 0 else '<'} 0")
         else:
-            return s, [f"`{show(sp.factor(g))}`: " + ", ".join(why or ["constant"])]
-    return None, [f"`{show(sp.factor(p))}`: " + undecided[0]]
+            return s, [f"`{show(_factored(g))}`: " + ", ".join(why or ["constant"])]
+    return None, [f"`{show(_factored(_rewrite(p, 0)))}`: " + undecided[0]]     # p expanded, factored above
 
 
 def _sign_facts(answer, E, H: Signs):
@@ -501,9 +510,21 @@ def _has_sign_facts(res, target, expected, H, witness=None) -> list:
     return out + [signed_fact(W, H)]
 
 
+@caches.for_a_run
+def _ratio(x, y) -> sp.Expr:
+    """x / y in lowest terms (memoised for a run: a proportionality and its fact read the same ratios)."""
+    return sp.cancel(x / y)
+
+
+def _ratios(v, w):
+    """The ratios v_i / w_i where w_i ≢ 0 on the circles, in order, computed as they are asked for."""
+    for x, y in zip(v, w):
+        if normal_form(fraction(y)[0]) != 0:
+            yield _ratio(x, y)
+
+
 def _proportional_facts(res, v, w, H, ratio=None) -> list:
-    candidates = ([ratio] if ratio is not None
-                  else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0])
+    candidates = [ratio] if ratio is not None else _ratios(v, w)
     for k in candidates:
         if sign(k, H)[0] == 1:
             return [signed_fact(k, H), facts.identity(bool(equal(v, k * w)), v, k * w)]
@@ -531,15 +552,16 @@ def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
 def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
     """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
     component i where that quotient has a sign by inspection; then v − k w ≡ 0."""
-    candidates = ([ratio] if ratio is not None
-                  else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0])
-    for k in candidates:
+    candidates = [ratio] if ratio is not None else _ratios(v, w)
+    seen = []
+    for k in candidates:          # the first ratio with a proved positive sign: the later ones are not formed
+        seen.append(k)
         s, why = sign(k, H)
         if s == 1:
             same = equal(v, k * w)
             return Result(same.holds, [f"ratio k = `{show(sp.factor(k))}` > 0 under {H.describe()}: " + "; ".join(why),
                                        "v − k w ≡ 0: " + ("yes" if same else "no")] + same.evidence)
-    tried = ", ".join(show(sp.factor(k)) for k in candidates)
+    tried = ", ".join(show(sp.factor(k)) for k in seen)
     return Result(False, [f"no ratio with a proved positive sign among {tried}"])
 
 

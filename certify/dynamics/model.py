@@ -37,6 +37,21 @@ def collide(letter: str, q, rr=r) -> tuple:
     raise ValueError(f"unknown collision {letter!r}")
 
 
+def collide_integral(letter: str, q, rr) -> tuple:
+    """2d·K q for a rational r = m/d (d > 0): the positive multiple of :func:`collide` whose
+    matrix has the integer entries −2m (for −r), 2d (for 1) and m + d (for h); integer q
+    stay integer."""
+    m, d = rr.p, rr.q
+    q1, q2, q3 = q
+    if letter == "a":
+        return (-2 * m * q1, 2 * d * q2 + (m + d) * q1, 2 * d * q3)
+    if letter == "b":
+        return (2 * d * q1 + (m + d) * q2, -2 * m * q2, 2 * d * q3 + (m + d) * q2)
+    if letter == "c":
+        return (2 * d * q1, 2 * d * q2 + (m + d) * q3, -2 * m * q3)
+    raise ValueError(f"unknown collision {letter!r}")
+
+
 def collide_particles(letter: str, v, rr=r) -> tuple:
     """The collision law (l. 158-163) on the velocities v = (v1, v2, v3, v4) of the
     particles, equal masses: the pair i, i+1 of ``letter`` (a: 1-2, b: 2-3, c: 3-4)

@@ -38,7 +38,7 @@ from certify import caches
 from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 
-from .model import INDEX, LETTERS, collide
+from .model import INDEX, LETTERS, collide, collide_integral
 from .simulate import Undecided, sign
 
 ORIENTATION = {"a": 1, "b": 2, "c": 0}       # t with e_t · u(k) ≥ 0 (l. 950)
@@ -151,7 +151,11 @@ class Plane:
 
 def canonical(letter: str, n) -> Plane:
     """The Plane with contact ``letter`` and normal ∝ n (orientation e_t · n > 0)."""
-    n = primitive(n)
+    return oriented(letter, primitive(n))
+
+
+def oriented(letter: str, n) -> Plane:
+    """:func:`canonical` for a primitive integer n (±n is the Plane's normal)."""
     s = sign(n[ORIENTATION[letter]])
     if s == 0:
         raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")
@@ -160,7 +164,11 @@ def canonical(letter: str, n) -> Plane:
 
 def normal(p, q) -> tuple:
     """The primitive integer vector positively proportional to p ∧ q (p, q rational):
-    p and q are first scaled to integer vectors by positive factors."""
+    p and q are first scaled to integer vectors by positive factors (integer ones are)."""
+    fmpz = flint.fmpz
+    if type(p[0]) is fmpz and type(p[1]) is fmpz and type(p[2]) is fmpz and \
+            type(q[0]) is fmpz and type(q[1]) is fmpz and type(q[2]) is fmpz:
+        return primitive(cross(p, q))
     return primitive(cross(integral(p), integral(q)))
 
 
@@ -170,7 +178,7 @@ def plane(letter: str, p, q) -> Plane:
     i = INDEX[letter]
     if p[i] != 0 or sign(q[i]) <= 0:
         raise ValueError(f"not a state right after a collision {letter}: need p_{i + 1} = 0 < q_{i + 1}")
-    return canonical(letter, normal(p, q))
+    return oriented(letter, normal(p, q))
 
 
 def position(P: Plane) -> tuple:
@@ -230,11 +238,26 @@ def step(P: Plane, r, rows: dict | None = None) -> Plane:
 
 
 def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
-    """P and its first n images (fewer if a corner is met and stop_at_corner)."""
+    """P and its first n images (fewer if a corner is met and stop_at_corner).
+
+    After the first step every normal is primitive, and then the content g of m = M n (M the
+    integer rows of cof(K_j)) divides det M: adj(M) m = det(M) n, so g divides det(M)·n_k for
+    every k, and n is primitive.  So g = gcd(det M, m_1, m_2, m_3): gcds of the long entries
+    with a short number, the same primitive normal as :func:`canonical`'s."""
     out, rows = [P], cofactors(r)
-    for _ in range(n):
+    dets = {L: _det(rows[L]) for L in LETTERS}
+    fmpz = flint.fmpz
+    for k in range(n):
         try:
-            out.append(step(out[-1], r, rows))
+            Q = out[-1]
+            m = Q.n
+            if k == 0 or not (type(m[0]) is fmpz and type(m[1]) is fmpz and type(m[2]) is fmpz):
+                out.append(step(Q, r, rows))
+                continue
+            j = _next_letter_exact(Q.letter, INDEX[Q.letter], m)
+            m = apply(rows[j], m)
+            g = dets[j].gcd(m[0]).gcd(m[1]).gcd(m[2])
+            out.append(oriented(j, m if g == 1 else (m[0] // g, m[1] // g, m[2] // g)))
         except Corner:
             if not stop_at_corner:
                 raise
@@ -242,22 +265,45 @@ def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
     return out
 
 
+def _det(rows: tuple):
+    """The determinant of a 3×3 matrix given by its rows."""
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+
+
 def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:
     """The next n collision letters from P, and the final Plane, without keeping the
     orbit: the normal is made primitive only every ``reduce_every`` steps (its gcd
     is small, and the sign tests do not need it).  Stops early at a corner."""
     letters, rows = [], cofactors(r)
+    fmpz = flint.fmpz
+    if not all(type(z) is fmpz for z in P.n):
+        try:
+            for k in range(n):
+                j = next_letter(P)
+                m = apply(rows[j], P.n)
+                if m[ORIENTATION[j]] < 0:
+                    m = tuple(-z for z in m)
+                P = canonical(j, m) if k % reduce_every == 0 else Plane(j, m)
+                letters.append(j)
+        except Corner:
+            pass
+        return "".join(letters), canonical(P.letter, P.n)
+    # the same steps on (letter, normal) without a Plane per step (integer normals stay integer)
+    L, m = P.letter, P.n
     try:
         for k in range(n):
-            j = next_letter(P)
-            m = apply(rows[j], P.n)
-            if m[ORIENTATION[j]] < 0:
-                m = tuple(-z for z in m)
-            P = canonical(j, m) if k % reduce_every == 0 else Plane(j, m)
+            j = _next_letter_exact(L, INDEX[L], m)
+            m2 = apply(rows[j], m)
+            if m2[ORIENTATION[j]] < 0:
+                m2 = (-m2[0], -m2[1], -m2[2])
+            if k % reduce_every == 0:
+                m2 = canonical(j, m2).n          # a Corner here keeps (L, m), as the Plane path does
+            L, m = j, m2
             letters.append(j)
     except Corner:
         pass
-    return "".join(letters), canonical(P.letter, P.n)
+    return "".join(letters), canonical(L, m)
 
 
 def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]:
@@ -327,6 +373,30 @@ def vectorial_step(letter: str, u, r) -> tuple[str, tuple]:
     return j, trilinear(letter, j, u, r)
 
 
+def vectorial_ray(letter: str, u, r) -> tuple[str, tuple]:
+    """:func:`vectorial_step` up to a positive factor, in integers for an integer u and a
+    rational r = m/d: K_j occurs once in the trilinear formula, and 2d·K_j
+    (:func:`certify.dynamics.model.collide_integral`) in its place multiplies ũ(1) by 2d > 0."""
+    i = INDEX[letter]
+    s = sign(u[i])
+    if s == 0:
+        raise Corner("cos φ = 0: the orbit heads for a corner")
+    j = LETTERS[(i + 1) % 3] if s > 0 else LETTERS[(i + 2) % 3]
+    p1 = cross(u, E[INDEX[j]])
+    q0 = cross(u, cross(E[i], u))
+    return j, cross(p1, collide_integral(j, q0, r))
+
+
+def same_ray(v, w) -> bool:
+    """v = k w for some k > 0 (exact; False when w = 0): v ∧ w = 0 and v · w > 0, read from
+    one non-zero entry w_k of w (v_k w_k > 0 and v_j w_k = v_k w_j for every j)."""
+    for k in range(3):
+        if w[k] != 0:
+            vk, wk = v[k], w[k]
+            return (vk > 0) == (wk > 0) and vk != 0 and all(v[m] * wk == vk * w[m] for m in range(3) if m != k)
+    return False
+
+
 def trilinear(letter: str, j: str, u, r) -> tuple:
     """ũ(1) = [u ∧ e_j] ∧ [K_j (u ∧ [e_i ∧ u])] for the contact ``letter`` = i and the
     next collision j, in any ring (rationals, SymPy symbols)."""
@@ -387,18 +457,46 @@ def angles_of(letter: str, p, q) -> Angles:
     the unit tangential part of q gives sin φ = q̂_i and cos φ = q̂ · e_θ.  The
     tangential part |p|² q − (q · p) p is formed before rounding (exactly, when p and q
     are exact: near a collapse q is almost radial and rounding first would cancel)."""
-    pp, qp = dot(p, p), dot(q, p)
-    w = tuple(pp * qk - qp * pk for qk, pk in zip(q, p))
-    p, w = (tuple(flint.arb(z) for z in v) for v in (p, w))
-    ph, wh = scale(1 / norm(p), p), scale(1 / norm(w), w)
-    ct, st = {"a": (ph[1], ph[2]), "b": (ph[2], ph[0]), "c": (ph[0], ph[1])}[letter]
-    return Angles(letter, ct, st, dot(wh, e_theta(letter, ct, st)), wh[INDEX[letter]])
+    # dot, scale and norm written out (this runs ~10^5 times in S7.2), the same operations in the same order
+    arb = flint.arb
+    p0, p1, p2 = p
+    q0, q1, q2 = q
+    pp, qp = p0 * p0 + p1 * p1 + p2 * p2, q0 * p0 + q1 * p1 + q2 * p2
+    w0, w1, w2 = arb(pp * q0 - qp * p0), arb(pp * q1 - qp * p1), arb(pp * q2 - qp * p2)
+    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
+    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
+    ph, wh = (c * p0, c * p1, c * p2), (d * w0, d * w1, d * w2)
+    ct, st = (ph[1], ph[2]) if letter == "a" else (ph[2], ph[0]) if letter == "b" else (ph[0], ph[1])
+    e0, e1, e2 = e_theta(letter, ct, st)
+    return Angles(letter, ct, st, wh[0] * e0 + wh[1] * e1 + wh[2] * e2, wh[INDEX[letter]])
 
 
 def angles(P: Plane, prec: int | None = None) -> Angles:
     """The trigonometric representation of a Plane (balls at ``prec`` bits)."""
     with precision(prec):
+        n = P.n
+        if type(n[0]) is flint.fmpz and type(n[1]) is flint.fmpz and type(n[2]) is flint.fmpz:
+            return angles_of(P.letter, *_position_tangent(P.letter, n))
         return angles_of(P.letter, position(P), tangent(P))
+
+
+def _position_tangent(letter: str, n: tuple) -> tuple[tuple, tuple]:
+    """:func:`position` and :func:`tangent` of an integer normal n, written out: n ∧ e_i has
+    the entries 0 at i, n_k at j and −n_j at k (j, k = i+1, i+2 mod 3); the same values."""
+    i = INDEX[letter]
+    j, k = (i + 1) % 3, (i + 2) % 3
+    p = [0, 0, 0]
+    p[j], p[k] = n[k], -n[j]
+    s, t = (p[j] > 0) - (p[j] < 0), (p[k] > 0) - (p[k] < 0)
+    if s != t or s == 0:
+        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
+    if s < 0:
+        p[j], p[k] = -p[j], -p[k]
+    n0, n1, n2 = n
+    ni = n[i]
+    w = [-ni * n0, -ni * n1, -ni * n2]
+    w[i] = n0 * n0 + n1 * n1 + n2 * n2 - ni * ni
+    return tuple(p), tuple(w)
 
 
 def trig_step(T: Angles, r) -> Angles:
@@ -408,11 +506,14 @@ def trig_step(T: Angles, r) -> Angles:
     if s == 0:
         raise Corner("cos φ = 0")
     j, p1 = CASES[(T.letter, s)]
-    p1 = p1(T.ct, T.st, T.cp, T.sp)
-    p1 = tuple(flint.arb(z) for z in p1)
-    p1 = scale(1 / norm(p1), p1)
-    Kq = collide(j, T.q(), flint.arb(r))
-    return angles_of(j, p1, tuple(k - dot(Kq, p1) * z for k, z in zip(Kq, p1)))
+    arb = flint.arb
+    x0, x1, x2 = p1(T.ct, T.st, T.cp, T.sp)
+    x0, x1, x2 = arb(x0), arb(x1), arb(x2)
+    c = 1 / (x0 * x0 + x1 * x1 + x2 * x2).sqrt()
+    x0, x1, x2 = c * x0, c * x1, c * x2
+    k0, k1, k2 = collide(j, T.q(), arb(r))
+    d = k0 * x0 + k1 * x1 + k2 * x2
+    return angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
 
 
 # --- printed vector formulas ---------------------------------------------------

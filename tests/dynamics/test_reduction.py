@@ -15,7 +15,7 @@ from certify.algebra.poly import r
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
-from certify.dynamics.model import INDEX, LETTERS, collision_matrix
+from certify.dynamics.model import INDEX, LETTERS, collide, collide_integral, collision_matrix
 from certify.run.runner import CERTIFICATES, FAIL, PASS, Context, altered, run_certificate
 from proofs import section4_1_reduction_theorem as S41
 from proofs import section4_2_final_expressions as S42
@@ -330,3 +330,81 @@ def test_the_ball_next_letter_decides_as_next_letter():
             n = tuple(rng.choice(choices) * rng.choice((1, 2)) for _ in range(3))
             plane = _decided(lambda: R.next_letter(R.Plane(letter, n)))       # noqa: B023
             assert _decided(R._next_letter_ball, letter, n) == plane, (letter, n)
+@settings(max_examples=200, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-3, 3) | st.integers(-10 ** 40, 10 ** 40)] * 3))
+def test_angles_of_an_integer_normal_is_the_generic_one(letter, n):
+    """angles() of an integer normal takes _position_tangent: the position and tangent of
+    position() and tangent() (Corner alike), hence the same balls."""
+    n = tuple(flint.fmpz(z) for z in n)
+    assume_nonzero = any(n)
+    P = R.Plane(letter, n)
+    try:
+        want = (R.position(P), R.tangent(P))
+    except R.Corner:
+        with pytest.raises(R.Corner):
+            R._position_tangent(letter, n)
+        return
+    assert assume_nonzero and R._position_tangent(letter, n) == want
+    with precision(128):
+        a, b = R.angles(P), R.angles_of(letter, *want)
+    assert [z.mid().str(40) + z.rad().str(5) for z in (a.ct, a.st, a.cp, a.sp)] == \
+        [z.mid().str(40) + z.rad().str(5) for z in (b.ct, b.st, b.cp, b.sp)]
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-60, 60)] * 3), st.integers(1, 99), st.integers(1, 3))
+def test_orbit_is_step_after_step(letter, n, k, c):
+    """orbit() (the content of each new normal read off det M) is step() applied again and again
+    from canonical(P), a corner included; a start normal that is not primitive (c > 1) too."""
+    r0 = flint.fmpq(k, 100)
+    try:
+        P = R.canonical(letter, n)
+    except (R.Corner, ValueError):
+        return
+    start = R.Plane(letter, tuple(c * z for z in P.n))
+    want, rows = [start], R.cofactors(r0)
+    for _ in range(40):
+        try:
+            want.append(R.step(want[-1], r0, rows))
+        except R.Corner:
+            break
+    assert R.orbit(start, r0, 40) == want
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-30, 30)] * 3), st.integers(1, 99),
+       st.sampled_from([1, 2, 5, 64]))
+def test_word_of_on_integers_is_the_plane_path(letter, n, k, every):
+    """word_of on an integer normal (no Plane per step) gives the letters and the end of the
+    Plane path (taken for a rational normal), a corner included."""
+    r0 = flint.fmpq(k, 100)
+    exact = R.Plane(letter, tuple(flint.fmpz(z) for z in n))
+    plane = R.Plane(letter, tuple(flint.fmpq(z) for z in n))
+    try:
+        want = R.word_of(plane, r0, 60, every)
+    except (R.Corner, ValueError) as exc:
+        with pytest.raises(type(exc)):
+            R.word_of(exact, r0, 60, every)
+        return
+    assert R.word_of(exact, r0, 60, every) == want
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-10 ** 30, 10 ** 30) | st.integers(-3, 3)] * 3),
+       st.integers(1, 99), st.integers(1, 99))
+def test_vectorial_ray_is_the_vectorial_step_up_to_a_positive_factor(letter, u, m, d):
+    """collide_integral is 2d·collide; vectorial_ray gives the contact of vectorial_step and a
+    positive multiple of its ũ(1) (or the same Corner); same_ray is v ∧ w = 0 and v · w > 0."""
+    r0 = flint.fmpq(m, d)
+    u = tuple(flint.fmpz(z) for z in u)
+    assert collide_integral(letter, u, r0) == tuple(2 * r0.q * z for z in collide(letter, u, r0))
+    try:
+        j, ut = R.vectorial_step(letter, u, r0)
+    except R.Corner:
+        with pytest.raises(R.Corner):
+            R.vectorial_ray(letter, u, r0)
+        return
+    j2, ray = R.vectorial_ray(letter, u, r0)
+    assert j2 == j and ray == tuple(2 * r0.q * z for z in ut)
+    for v, w in ((ray, ut), (ut, u), (u, tuple(-z for z in u)), (u, (0, 0, 0)), ((0, 0, 0), u), (u, u)):
+        assert R.same_ray(v, w) == (R.cross(v, w) == (0, 0, 0) and R.dot(v, w) > 0)
