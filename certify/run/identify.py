@@ -181,7 +181,7 @@ def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tupl
     second route's balls wrap, about a bit per collision: minutes) the state is the first
     route's (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
     if k > VERIFY_MAX:
-        for done, j, n, bits in engines.ball_states(r, theta0, phi0, k):
+        for done, j, n, bits in engines.ball_states(r, theta0, phi0, k, every=False):   # the last state
             if done == k:
                 return LETTERS[j], n, bits
         return f"the certified orbit stopped undecided before collision {k}"
