@@ -314,19 +314,43 @@ def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]
     Every letter is proven by the balls (:func:`next_letter`); the run stops at the first
     sign they cannot decide, or at a corner."""
     letters, rows = [], cofactors(r)
+    rows = [rows[L] for L in LETTERS]
     with precision(prec):
         m = tuple(flint.arb(z) for z in n)
-        L = letter
+        i = INDEX[letter]
         try:
             for _ in range(count):
-                L2 = _next_letter_ball(L, m)
-                m2 = apply(rows[L2], m)
-                top = max(abs(z).upper() for z in m2) * sign(m2[ORIENTATION[L2]])     # oriented: e_t · n > 0
-                L, m = L2, tuple(z / top for z in m2)
-                letters.append(L)
-        except (Undecided, Corner):
+                j = _next_index_ball(i, m)
+                if j < 0:
+                    break
+                x, y, z = apply(rows[j], m)
+                top = max(abs(x).upper(), abs(y).upper(), abs(z).upper()) * sign((x, y, z)[_ORIENTATION[j]])
+                i, m = j, (x / top, y / top, z / top)          # oriented: e_t · n > 0, max |n_k| ≈ 1
+                letters.append(LETTERS[j])
+        except Undecided:
             pass
-    return "".join(letters), L, m
+    return "".join(letters), LETTERS[i], m
+
+
+_ORIENTATION = tuple(ORIENTATION[L] for L in LETTERS)
+_NEXT = ((1, 2), (2, 0), (0, 1))     # (j, k) = (i + 1, i + 2) mod 3
+
+
+def _next_index_ball(i: int, n: tuple) -> int:
+    """The index of :func:`_next_letter_ball` (i's letter, n), or -1 where it raises
+    (Undecided or Corner: the run stops), from the same ball products and comparisons:
+    n_k and n_j of opposite decided signs, then n_i n_j and n_i n_k, exactly one > 0 and
+    both decided."""
+    j, k = _NEXT[i]
+    a, b, c = n[i], n[j], n[k]
+    if not ((c > 0 and b < 0) or (c < 0 and b > 0)):
+        return -1
+    pj, pk = a * b, a * c
+    if pj > 0 and pk < 0:
+        return j
+    if pj < 0 and pk > 0:
+        return k
+    return -1
 
 
 def _next_letter_ball(letter: str, n: tuple) -> str:

@@ -948,8 +948,10 @@ class Sides:
     def __init__(self, r: flint.fmpq):
         self.r, self.pi = r, flint.arb.pi()
         self.R, self.c = flint.arb(r), flint.arb(island.c_max(r))
+        self.K = 1 + self.R                                   # 1 + r and −(1 + r), as box_sign forms them
+        self.minus_K = -(1 + self.R)
         self.w_min = _lower(1 / flint.arb(2).sqrt())          # w at θ = π/4
-        self.s, self.t = {}, {}
+        self.s, self.t, self.pairs = {}, {}, {}
 
     def at_s(self, s: flint.fmpq) -> tuple:
         """(lower, upper end of tan(θ − π/4), lower, upper end of w(θ)) at θ = πs/2."""
@@ -958,6 +960,20 @@ class Sides:
         if got is None:
             th = s * self.pi / 2
             got = self.s[key] = ends((th - self.pi / 4).tan()) + ends(1 / (th.sin() + th.cos()))
+        return got
+
+    def at_pair(self, s0: flint.fmpq, s1: flint.fmpq) -> tuple:
+        """((x, 2x·x, (1+r)x) for x the ball of u's lower end at s0, the same for its upper end
+        at s1, the lower and upper end of w on [s0, s1]: its minimum w(π/4) when π/4 is in the
+        interval) for the boxes of columns [s0, s1], once a pair and working precision."""
+        key = (s0.p, s0.q, s1.p, s1.q, flint.ctx.prec)
+        got = self.pairs.get(key)
+        if got is None:
+            (ua, _, w0_lo, w0_hi), (_, ub, w1_lo, w1_hi) = self.at_s(s0), self.at_s(s1)
+            w_lo = self.w_min if s0 <= flint.fmpq(1, 2) <= s1 else min(w0_lo, w1_lo)
+            ua, ub = flint.arb(ua), flint.arb(ub)
+            got = self.pairs[key] = ((ua, 2 * ua * ua, self.K * ua), (ub, 2 * ub * ub, self.K * ub),
+                                     w_lo, max(w0_hi, w1_hi))
         return got
 
     def at_t(self, t: flint.fmpq) -> tuple:
@@ -983,20 +999,20 @@ def box_sign(box, r: flint.fmpq, sides: Sides | None = None) -> int:
     if t0 == 0 or t1 == 1:
         return box_sign_balls(box, r)
     sides = sides if sides is not None and sides.r == r else Sides(r)
-    (ua, _, w0_lo, w0_hi), (_, ub, w1_lo, w1_hi) = sides.at_s(s0), sides.at_s(s1)
-    w_hi = max(w0_hi, w1_hi)
-    w_lo = sides.w_min if s0 <= flint.fmpq(1, 2) <= s1 else min(w0_lo, w1_lo)
+    (ua, Aa, Ba), (ub, Ab, Bb), w_lo, w_hi = sides.at_pair(s0, s1)
     c_lo, c_hi = sides.at_t(t1)[0], sides.at_t(t0)[1]
     va, vb = 2 * min(c_lo * w_lo, c_lo * w_hi), 2 * max(c_hi * w_lo, c_hi * w_hi)
-    ua, ub, va, vb = (flint.arb(x) for x in (ua, ub, va, vb))
+    va, vb = flint.arb(va), flint.arb(vb)
     R, c = sides.R, sides.c
-    corners = [island.quadratic_form(x, y, R) for x in (ua, ub) for y in (va, vb)]
-    if all(c - q > 0 for q in corners):
+    Ca, Cb = R * va * va, R * vb * vb
+    # Q at the corners, island.quadratic_form(x, y, R) = (2x·x − (1+R)x·y) + R y·y, operation for operation
+    if all(c - ((A - B * y) + C) > 0 for A, B in ((Aa, Ba), (Ab, Bb)) for y, C in ((va, Ca), (vb, Cb))):
         return 1
     if ua <= 0 <= ub and va <= 0 <= vb:
         return 0
-    edges = [_edge_min(R, -(1 + R) * x, 2 * x * x, va, vb) for x in (ua, ub)] + \
-            [_edge_min(flint.arb(2), -(1 + R) * y, R * y * y, ua, ub) for y in (va, vb)]
+    minus = sides.minus_K
+    edges = [_edge_min(R, minus * x, A, va, vb) for x, A in ((ua, Aa), (ub, Ab))] + \
+            [_edge_min(flint.arb(2), minus * y, C, ua, ub) for y, C in ((va, Ca), (vb, Cb))]
     return -1 if all(e - c > 0 for e in edges) else 0
 
 

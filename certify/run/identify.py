@@ -41,7 +41,7 @@ from functools import cache
 
 import flint
 
-from certify import caches
+from certify import caches, obligations
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.balls import precision
 from certify.algebra.branches import BRANCH_NAMES
@@ -116,11 +116,16 @@ def orbit_analysis(normal: str) -> OrbitResult:
     return analyse(normal)
 
 
+orbits_at = obligations.replaying(orbit_at)
+"""``orbit_at`` once per (normal form, r) in a recording, its facts recorded again at every call
+(Section 5's explanations decide a committed word, then verify re-decides it: one computation)."""
+
+
 @cache
 def decided(normal: str, r: flint.fmpq):
     """``orbit_at``: the periodic orbit of the word at r, decided exactly (the feasible
     branch, else None), once per (word, r)."""
-    return next((x for x in orbit_at(normal, r) if x.feasible), None)
+    return next((x for x in orbits_at(normal, r) if x.feasible), None)
 
 
 @cache
@@ -181,7 +186,7 @@ def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tupl
     second route's balls wrap, about a bit per collision: minutes) the state is the first
     route's (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
     if k > VERIFY_MAX:
-        for done, j, n, bits in engines.ball_states(r, theta0, phi0, k):
+        for done, j, n, bits in engines.ball_states(r, theta0, phi0, k, every=False):   # the last state
             if done == k:
                 return LETTERS[j], n, bits
         return f"the certified orbit stopped undecided before collision {k}"
