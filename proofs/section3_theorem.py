@@ -58,6 +58,7 @@ from certify.algebra import (
     to_fmpq,
     to_fmpq_poly,
     to_fmpz_poly,
+    to_ring,
     u,
     unique_root,
     v,
@@ -186,6 +187,22 @@ def fixed_point(a, b, c, d) -> FixedPoint:
     return FixedPoint(parse(a), parse(b), parse(c), parse(d))
 
 
+def field_matrix(K) -> list[list]:
+    """A matrix of rational functions as rows of elements of Q(λ, r, ...) (canonical: equal
+    entries are equal elements)."""
+    return [[to_field(K[i, j]) for j in range(K.cols)] for i in range(K.rows)]
+
+
+def field_product(factors) -> list[list]:
+    """The product of the matrices ``factors`` (left to right), computed in Q(λ, r, ...)."""
+    out = field_matrix(factors[0])
+    for K in factors[1:]:
+        Kf = field_matrix(K)
+        out = [[sum((row[k] * Kf[k][j] for k in range(len(Kf))), to_field(0)) for j in range(len(Kf[0]))]
+               for row in out]
+    return out
+
+
 def printed_uv(U, V):
     """The substitution u, v -> the printed formulas (l. 279-281)."""
     return {u: parse(U), v: parse(V)}
@@ -200,15 +217,16 @@ def printed_uv(U, V):
 def matrix_of_ababcb(M, M_text):
     """The product of the collision matrices in time order a, b, a, b, c, b."""
     printed = sp.Matrix(parse(M_text))
-    direct = (B_ * C_ * B_ * A_ * B_ * A_).applyfunc(sp.factor)
     word = [B_, C_, B_, A_, B_, A_]
+    direct = field_product(word)
+    computed = field_matrix(M)
     checks = []
     for i in range(3):
         for j in range(3):
-            ok = sp.simplify(M[i, j] - printed[i, j]) == 0
+            ok = computed[i][j] == to_field(printed[i, j])      # equal in Q(r): the difference is 0
             checks.append(Check(f"entry ({i + 1},{j + 1}) as printed", ok, [f"computed `{show(M[i, j])}`"],
                                 obligations=product_fact(ok, word, printed, 3 * i + j)))
-    same = (direct - M).applyfunc(sp.simplify) == sp.zeros(3, 3)
+    same = direct == computed
     checks.append(Check("word_matrix('ababcb') is the product BCBABA", same,
                         obligations=product_fact(same, word, M)))
     return conclude(checks, note="l. 259 has an unbalanced parenthesis, `(r^3 - r^2 + 7r + 9))/32`; read without it.")
@@ -263,11 +281,16 @@ def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
 
 def cardano(cp):
     """(q/2)² + (p/3)³ for the depressed cubic t³ + pt + q of the monic cubic cp in λ."""
-    c = sp.Poly(cp, lam).all_coeffs()
-    a2, a1, a0 = [ci / c[0] for ci in c[1:]]
-    p = a1 - a2 ** 2 / 3
-    q = 2 * a2 ** 3 / 27 - a2 * a1 / 3 + a0
-    return sp.expand((q / 2) ** 2 + (p / 3) ** 3)
+    P = to_ring(cp)
+    L = P.ring.gens[0]                      # λ, the first generator of the ring
+    c = [P.coeff_wrt(L, k) for k in range(P.degree(L), -1, -1)]
+    if len(c) != 4 or not c[0].is_ground:
+        raise ValueError("cp is not a cubic in λ with a constant leading coefficient")
+    a2, a1, a0 = [ci * (1 / c[0].LC) for ci in c[1:]]
+    third, half = sp.Rational(1, 3), sp.Rational(1, 2)
+    p = a1 - a2 ** 2 * third
+    q = a2 ** 3 * sp.Rational(2, 27) - a2 * a1 * third + a0
+    return ((q * half) ** 2 + (p * third) ** 3).as_expr()     # expanded: the sparse polynomial's terms
 
 
 @certificate("T4", "l. 340-349", "Δ_cp = -(1/1811939328)(r-1)^4(r+1)^6(3r^2-14r+3)^2 P0(r), and three real "
@@ -284,17 +307,18 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     and its truth, for each sign of Δ_cp, compared with that of Disc > 0."""
     delta = parse(delta_text.replace("P0", f"({P0_text})"))
     disc = sp.discriminant(cp, lam)
-    ratio = sp.cancel(disc / delta) if delta != 0 else None
+    ratio = (to_field(disc) / to_field(delta)).as_expr() if delta != 0 else None   # canceled
     card = cardano(cp)
+    card_same = to_field(card) == to_field(delta)
     constant = ratio is not None and ratio.is_number and ratio != 0
     condition = statements.relation(three_real_when, {"Δ_cp": DELTA})
     three_real = {s: constant and int(sp.sign(ratio)) * s > 0 for s in (-1, 0, 1)}   # Disc = ratio·Δ_cp > 0
-    flint_same = same_up_to_constant(discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))
+    flint_same = same_up_to_constant(discriminant_lambda(cp), to_fmpz_poly(delta))
     return conclude([
         Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
               obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional")),
-        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0,
-              obligations=identity_facts((sp.expand(card - delta) == 0, card, delta))),
+        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", card_same,
+              obligations=identity_facts((card_same, card, delta))),
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
               [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
@@ -427,7 +451,8 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
 def eigenvector_components(M, U, V):
     """Substitute q(0) = (-1, u, v) into rows 1 and 2 of M q - λ q: zero in Q(r, λ)."""
     q0 = sp.Matrix([-1, parse(U), parse(V)])
-    res = (M * q0 - lam * q0).applyfunc(sp.cancel)
+    Mf, qf = field_matrix(M), [to_field(e) for e in q0]
+    res = [sum((Mf[i][j] * qf[j] for j in range(3)), -to_field(lam) * qf[i]) for i in range(3)]   # in Q(λ, r)
     cpM = characteristic_polynomial(M)
     third = reduce_mod(res[2], cpM)
     return conclude([

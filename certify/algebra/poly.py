@@ -35,9 +35,22 @@ NAMES = {"r": r, "λ": lam, "lam": lam, "lambda": lam, "la": lam, "x": x, "u": u
 
 def parse(text: str, names: dict | None = None) -> sp.Expr:
     """A formula transcribed from the paper, as a SymPy expression (exact); ``names``
-    adds local names (functions, vectors) to the paper's (see :mod:`certify.algebra.trig`)."""
+    adds local names (functions, vectors) to the paper's (see :mod:`certify.algebra.trig`).
+    With the paper's names only, memoised for the run (the same formula is read by many
+    claims; a SymPy expression is immutable)."""
+    if names:
+        return _parse(text, names)
+    return _parse_paper(text)
+
+
+def _parse(text: str, names: dict | None) -> sp.Expr:
     text = text.replace("λ", "lam").replace("^", "**").replace("−", "-")
     return sp.sympify(text, locals={**NAMES, **names} if names else NAMES, rational=True)
+
+
+@caches.for_a_run
+def _parse_paper(text: str) -> sp.Expr:
+    return _parse(text, None)
 
 
 def expr(e) -> sp.Expr:
@@ -218,6 +231,13 @@ def to_field(e) -> FracElement:
         return e
     if isinstance(e, PolyElement):
         return FIELD(e)
+    return _field_of(e if isinstance(e, (str, sp.Basic)) else expr(e))
+
+
+@caches.for_a_run
+def _field_of(e) -> FracElement:
+    """:func:`to_field` of a text or SymPy expression, memoised for the run (the same
+    formulas and matrix entries are converted by many claims)."""
     return FIELD.from_expr(expr(e))
 
 
