@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
+from certify import caches
 from certify.algebra import (
     BRANCH_NAMES,
     GUARD,
@@ -201,6 +202,12 @@ def field_product(factors) -> list[list]:
         out = [[sum((row[k] * Kf[k][j] for k in range(len(Kf))), to_field(0)) for j in range(len(Kf[0]))]
                for row in out]
     return out
+
+
+@caches.for_a_run
+def cancelled(e: sp.Expr) -> sp.Expr:
+    """sp.cancel(e), memoised for the run (the same quotients recur in several claims)."""
+    return sp.cancel(e)
 
 
 def printed_uv(U, V):
@@ -485,9 +492,11 @@ def position_map_of_ababcb(candidate, a, b, c, d):
     minors = {f"{names[i]}{names[j]}": reduce_mod(P[i] * comp[j] - P[j] * comp[i], cp)
               for i in range(4) for j in range(i + 1, 4)}
     word = "".join(s.letter for s in steps)
-    factor = sp.cancel(P[2].as_expr() / comp[2].as_expr())
+    ratio = P[2] / comp[2]
+    constant = ratio.numer.is_ground and ratio.denom.is_ground
+    factor = ratio.as_expr() if constant else sp.cancel(P[2].as_expr() / comp[2].as_expr())
     p1 = steps[-1].position(0)
-    scaled = (sp.expand(P[2].as_expr() - factor * comp[2].as_expr()) == 0, P[2].as_expr(), factor * comp[2].as_expr())
+    scaled = (P[2] == to_field(factor) * comp[2], P[2].as_expr(), factor * comp[2].as_expr())
     return conclude([
         Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", p1 != 0,
               obligations=identity_facts((p1 == 0, p1.as_expr(), sp.Integer(0)))),
@@ -655,7 +664,7 @@ def fixed_point_tables(spectrum, a, b, c, d, lo, hi):
     """Sign tables of x₊ and x₋ = (a-d)/c - x₊ (x real only where Δ ≥ 0)."""
     fp = fixed_point(a, b, c, d)
     xp = spectrum.table("x₊", x, lo, hi, fp)
-    xm = spectrum.table("x₋", sp.cancel((parse(a) - parse(d)) / parse(c)) - x, lo, hi, fp)
+    xm = spectrum.table("x₋", cancelled((parse(a) - parse(d)) / parse(c)) - x, lo, hi, fp)
     return fp, xp, xm
 
 
@@ -666,7 +675,7 @@ def fixed_point_signs_at(spectrum, fp, rc, branch) -> set:
         pt = spectrum.sign_at_point(Condition.of("(a-d)/c", (fp.a - fp.d) / fp.c), rc)
         return {pt[branch] if pt else "?"}
     out = set()
-    for name, g in (("x₊", x), ("x₋", sp.cancel((fp.a - fp.d) / fp.c) - x)):
+    for name, g in (("x₊", x), ("x₋", cancelled((fp.a - fp.d) / fp.c) - x)):
         pt = spectrum.sign_at_point(Condition.of(name, g, fp), rc)
         out.add(pt[branch] if pt else "?")
     return out
@@ -727,7 +736,7 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
                                      cells_negative and len(zeros) == 1 and zeros[0] == Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
                                      corrects=printed[4], obligations=list(facts_zeros))]
     for z in zeros:
-        x0 = sp.cancel((fp.a - fp.d) / (2 * fp.c))
+        x0 = cancelled((fp.a - fp.d) / (2 * fp.c))
         sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), z)
         tc = spectrum.sign_at_point(Condition.of("t_c - t_a", x0 / (-parse(V)) - 1), z)
         sv = spectrum.sign_at_point(Condition.of("v", parse(V)), z)
@@ -857,6 +866,7 @@ def velocity_inequalities(spectrum, velocities, U, V, inequality):
     return conclude(checks)
 
 
+@caches.for_a_run
 def velocities_of(word):
     """q(t_0), ..., q(t_n) for q(0) = (-1, u, v) with u, v free."""
     return velocities(word, sp.Matrix([-1, u, v]))
@@ -943,13 +953,20 @@ def read_q(text: str) -> sp.Expr:
     return sp.sympify(t, locals={"a": A, "c": C, "d": D, "xp": xp, "xm": xm})
 
 
+@caches.for_a_run
+def modulus_ratio(e: sp.Expr) -> tuple:
+    """(P, Q, κ) with e = P/Q canceled and κ = (P² - Q²)/((a + d)·s) canceled (a Möbius map's
+    a, d and s = √Δ, :func:`mobius_symbols`)."""
+    A, B, C, D, s, xp, xm = mobius_symbols()
+    num, den = sp.fraction(sp.cancel(sp.together(e)))
+    return num, den, sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+
+
 def modulus_sign_factor(e: sp.Expr) -> int | None:
     """k with sign(|e| - 1) = k·sign(a + d) for every Möbius map with real fixed points
     (s > 0), when e = P/Q and P² - Q² = (a+d)·s·(a nonzero constant k·κ); None otherwise.
     As |e| > 1 iff P² > Q², this reads the sign of |e| - 1 off the sign of a + d."""
-    A, B, C, D, s, xp, xm = mobius_symbols()
-    num, den = sp.fraction(sp.cancel(sp.together(e)))
-    ratio = sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+    num, den, ratio = modulus_ratio(e)
     return int(sp.sign(ratio)) if ratio.is_number and ratio != 0 else None
 
 
@@ -957,8 +974,7 @@ def modulus_facts(e: sp.Expr) -> list[str]:
     """For the kernel: the identity :func:`modulus_sign_factor` reads k from, P² - Q² =
     κ·(a + d)·s with the constant κ it found (nothing when it found none)."""
     A, B, C, D, s, xp, xm = mobius_symbols()
-    num, den = sp.fraction(sp.cancel(sp.together(e)))
-    ratio = sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+    num, den, ratio = modulus_ratio(e)
     if not (ratio.is_number and ratio != 0):
         return []
     lhs, rhs = num ** 2 - den ** 2, ratio * (A + D) * s

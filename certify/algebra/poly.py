@@ -73,9 +73,32 @@ def to_fmpq(a) -> flint.fmpq:
 
 
 def to_fmpq_poly(e, var=r) -> flint.fmpq_poly:
-    """A univariate polynomial with rational coefficients as ``fmpq_poly``."""
-    coeffs = sp.Poly(expr(e), var).all_coeffs()[::-1]
+    """A univariate polynomial with rational coefficients as ``fmpq_poly`` (a product or
+    power of polynomials multiplied out by python-flint, not expanded by SymPy)."""
+    e = expr(e)
+    p = _flint_tree(e, var)
+    if p is not None:
+        return p
+    coeffs = sp.Poly(e, var).all_coeffs()[::-1]
     return flint.fmpq_poly([flint.fmpq(int(sp.numer(c)), int(sp.denom(c))) for c in coeffs])
+
+
+def _flint_tree(e: sp.Expr, var) -> flint.fmpq_poly | None:
+    """``e`` built from rationals and ``var`` by +, × and natural powers, as ``fmpq_poly``;
+    None for anything else (another symbol, a fraction of polynomials, a function)."""
+    if e.is_Rational:
+        return flint.fmpq_poly([flint.fmpq(int(e.p), int(e.q))])
+    if e.is_Symbol:
+        return flint.fmpq_poly([0, 1]) if e == var else None
+    if e.is_Add or e.is_Mul:
+        parts = [_flint_tree(a, var) for a in e.args]
+        if any(q is None for q in parts):
+            return None
+        return reduce(lambda a, b: a + b, parts) if e.is_Add else reduce(lambda a, b: a * b, parts)
+    if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+        base = _flint_tree(e.base, var)
+        return None if base is None else base ** int(e.exp)
+    return None
 
 
 def primitive(p) -> flint.fmpz_poly:
