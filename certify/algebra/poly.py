@@ -261,7 +261,48 @@ def to_field(e) -> FracElement:
 def _field_of(e) -> FracElement:
     """:func:`to_field` of a text or SymPy expression, memoised for the run (the same
     formulas and matrix entries are converted by many claims)."""
-    return FIELD.from_expr(expr(e))
+    e = expr(e)
+    pair = _ring_pair(e)
+    if pair is None:
+        return FIELD.from_expr(e)
+    return FIELD.new(*pair)          # one cancellation: the canonical element, as from_expr gives it
+
+
+_RING_GENS = dict(zip(FIELD.symbols, RING.gens))
+
+
+def _ring_pair(e: sp.Expr) -> tuple[PolyElement, PolyElement] | None:
+    """``e`` built from rationals and the field's symbols by +, ×, integer powers, as
+    (numerator, denominator) in RING, not canceled; None for anything else."""
+    if e.is_Rational:
+        return RING(sp.QQ(int(e.p), int(e.q))), RING.one
+    if e.is_Symbol:
+        g = _RING_GENS.get(e)
+        return None if g is None else (g, RING.one)
+    if e.is_Add or e.is_Mul:
+        num, den = (RING.zero if e.is_Add else RING.one), RING.one
+        for a in e.args:
+            pa = _ring_pair(a)
+            if pa is None:
+                return None
+            n, d = pa
+            if e.is_Mul:
+                num, den = num * n, den * d
+            elif d == den:
+                num = num + n
+            else:
+                num, den = num * d + n * den, den * d
+        return num, den
+    if e.is_Pow and e.exp.is_Integer:
+        pb = _ring_pair(e.base)
+        if pb is None:
+            return None
+        k = int(e.exp)
+        n, d = pb if k >= 0 else pb[::-1]
+        if d == 0:
+            return None                 # 0 to a negative power: left to from_expr's error
+        return n ** abs(k), d ** abs(k)
+    return None
 
 
 def to_ring(e) -> PolyElement:
