@@ -218,7 +218,11 @@ def to_mpoly(e) -> flint.fmpz_mpoly:
     of denominators (a positive constant multiple, so signs are kept)."""
     if isinstance(e, PolyElement):
         return ring_to_mpoly(e)
-    P = sp.Poly(expr(e), r, lam, s)
+    e = expr(e)
+    pair = _ring_pair(e)          # multiplied out in RING; SymPy's Poly only for what that does not read
+    if pair is not None and pair[1].is_ground and not any(m[2] or m[3] or m[4] for m in pair[0].monoms()):
+        return ring_to_mpoly(pair[0] * (1 / pair[1].LC))
+    P = sp.Poly(e, r, lam, s)
     den = _lcm([int(sp.denom(c)) for c in P.coeffs()] or [1])
     terms = {m: int(c * int(den)) for m, c in P.terms()}
     return MCTX.from_dict(terms)
