@@ -855,7 +855,7 @@ def velocity_inequalities(spectrum, velocities, U, V, inequality):
     qs = velocities_of(WORD)
     checks = []
     for name, (k, i, text) in velocities.items():
-        same = sp.expand(qs[k][i] - parse(text)) == 0
+        same = to_field(qs[k][i]) == to_field(parse(text))
         T = spectrum.table(name, parse(text).subs(printed_uv(U, V)), 0, 1)
         up, low = T.signs(UPPER, lo, hi), T.signs(LOWER, lo, hi)
         ok = st.relation.holds_on(Q_VELOCITY, up) and st.relation.holds_on(Q_VELOCITY, low)
