@@ -58,8 +58,7 @@ def law(letter: str) -> tuple[sp.Matrix, list]:
     i = INDEX[letter]
     vp = list(v)
     a, b = sp.symbols("a b")
-    sol = sp.solve([a + b - (v[i] + v[i + 1]), a - b + r * (v[i] - v[i + 1])], [a, b])
-    vp[i], vp[i + 1] = sol[a], sol[b]
+    (vp[i], vp[i + 1]), = sp.linsolve([a + b - (v[i] + v[i + 1]), a - b + r * (v[i] - v[i + 1])], [a, b])
     law_lhs = sp.Matrix([vp[i] + vp[i + 1], vp[i] - vp[i + 1]])
     law_rhs = sp.Matrix([v[i] + v[i + 1], -r * (v[i] - v[i + 1])])
     qp = sp.Matrix([vp[k + 1] - vp[k] for k in range(3)])
