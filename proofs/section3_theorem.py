@@ -183,6 +183,7 @@ def r1_of(printed) -> Algebraic:
     return Algebraic.surd(*printed)
 
 
+@caches.for_a_run
 def fixed_point(a, b, c, d) -> FixedPoint:
     """The fixed point x₊ of the printed f(x) = (ax + b)/(cx + d)."""
     return FixedPoint(parse(a), parse(b), parse(c), parse(d))
