@@ -10,7 +10,6 @@ import random
 import flint
 import sympy as sp
 
-from certify import caches
 from certify.algebra import parse, r, show, statements, to_field, to_fmpq
 from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.dynamics import simulate as sim
@@ -19,6 +18,7 @@ from certify.run import (
     Check,
     certificate,
     conclude,
+    for_a_run,
     gathered,
     identity_facts,
     overridden,
@@ -48,7 +48,7 @@ def same_matrix(K, L) -> bool:
     return K.shape == L.shape and all(to_field(a) == to_field(b) for a, b in zip(K, L))
 
 
-@caches.for_a_run
+@for_a_run
 def law(letter: str) -> tuple[sp.Matrix, list]:
     """The matrix K with q' = K q derived from the collision law itself: for the pair
     (i, i+1), v_i' + v_{i+1}' = v_i + v_{i+1} and v_i' - v_{i+1}' = -r(v_i - v_{i+1});

@@ -26,7 +26,6 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from certify import caches
 from certify.algebra import (
     BRANCH_NAMES,
     GUARD,
@@ -84,6 +83,7 @@ from certify.run import (
     digits_check,
     eliminant_check,
     fact_ids,
+    for_a_run,
     gathered,
     identity_facts,
     identity_modulo_facts,
@@ -183,7 +183,7 @@ def r1_of(printed) -> Algebraic:
     return Algebraic.surd(*printed)
 
 
-@caches.for_a_run
+@for_a_run
 def fixed_point(a, b, c, d) -> FixedPoint:
     """The fixed point x₊ of the printed f(x) = (ax + b)/(cx + d)."""
     return FixedPoint(parse(a), parse(b), parse(c), parse(d))
@@ -205,7 +205,7 @@ def field_product(factors) -> list[list]:
     return out
 
 
-@caches.for_a_run
+@for_a_run
 def cancelled(e: sp.Expr) -> sp.Expr:
     """sp.cancel(e), memoised for the run (the same quotients recur in several claims)."""
     return sp.cancel(e)
@@ -867,7 +867,7 @@ def velocity_inequalities(spectrum, velocities, U, V, inequality):
     return conclude(checks)
 
 
-@caches.for_a_run
+@for_a_run
 def velocities_of(word):
     """q(t_0), ..., q(t_n) for q(0) = (-1, u, v) with u, v free."""
     return velocities(word, sp.Matrix([-1, u, v]))
@@ -954,7 +954,7 @@ def read_q(text: str) -> sp.Expr:
     return sp.sympify(t, locals={"a": A, "c": C, "d": D, "xp": xp, "xm": xm})
 
 
-@caches.for_a_run
+@for_a_run
 def modulus_ratio(e: sp.Expr) -> tuple:
     """(P, Q, κ) with e = P/Q canceled and κ = (P² - Q²)/((a + d)·s) canceled (a Möbius map's
     a, d and s = √Δ, :func:`mobius_symbols`)."""
