@@ -184,14 +184,28 @@ def scaled_runs_agree(factor: sp.Expr, al: sp.Symbol, be: sp.Symbol, n_data: int
     same collisions, and every collision time of the second is ``factor`` times the first."""
     rng = random.Random(2024)
     agree = total = 0
+    at = exact_values(factor, al, be)
     for _ in range(n_data):
         rr = flint.fmpq(1, rng.randint(4, 40))
         p = tuple(flint.fmpq(rng.randint(0, 50), rng.randint(1, 50)) for _ in range(3))
         q = tuple(flint.fmpq(rng.randint(-50, 20), rng.randint(1, 50)) for _ in range(3))
         a, b = (flint.fmpq(rng.randint(1, 30), rng.randint(1, 30)) for _ in range(2))
-        f = to_fmpq(factor.subs({al: sp.Rational(int(a.p), int(a.q)), be: sp.Rational(int(b.p), int(b.q))}))
+        f = at(a, b)
         one, two = sim.follow(p, q, rr, n), sim.follow(tuple(a * z for z in p), tuple(b * z for z in q), rr, n)
         total += 1
         agree += one.events == two.events and all(s2.t == f * s1.t for s1, s2 in zip(one.states, two.states))
     return Check(f"exact runs: (αp, βq) has the collisions of (p, q) at {factor} times its times",
                  agree == total, [f"{agree} of {total} random rational data, up to {n} collisions each"])
+
+
+def exact_values(e: sp.Expr, al: sp.Symbol, be: sp.Symbol):
+    """(a, b) ↦ e at α = a, β = b (rationals, fmpq), exactly: a quotient of polynomials over Q
+    evaluated in fmpq; SymPy's subs for any other ``e``."""
+    try:
+        num, den = (sp.Poly(part, al, be, domain="QQ") for part in sp.fraction(sp.together(e)))
+    except sp.PolynomialError:
+        return lambda a, b: to_fmpq(e.subs({al: sp.Rational(int(a.p), int(a.q)), be: sp.Rational(int(b.p), int(b.q))}))
+
+    def value(P, a, b):
+        return sum((to_fmpq(c) * a ** i * b ** j for (i, j), c in P.terms()), flint.fmpq(0))
+    return lambda a, b: value(num, a, b) / value(den, a, b)
