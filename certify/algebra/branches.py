@@ -80,7 +80,7 @@ class FixedPoint:
     c: sp.Expr
     d: sp.Expr
 
-    @property
+    @cached_property
     def delta(self) -> sp.Expr:
         return sp.expand((self.a - self.d) ** 2 + 4 * self.b * self.c)
 

@@ -13,6 +13,7 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.identify`, :mod:`.section5_orbits`: the periodic words of simulated orbits, certified;
   the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
+from certify.caches import for_a_run  # the memo of a run, for the proofs' shared steps
 from certify.obligations import captured, facts_of, gathered, replaying, take
 
 from . import checks, files, plots, progress, report, runner, saving
@@ -88,7 +89,7 @@ __all__ = [
     "OBSERVED",
     "PASS", "STATUSES", "Certificate", "Check", "Context",
     "Mutant", "Outcome", "altered", "certificate", "committed", "conclude", "load_all", "observe", "quantity",
-    "reset_caches",
+    "reset_caches", "for_a_run",
     "run_selected",
     "run_certificate", "select", "overridden", "replaced", "reworded", "unread",
 ]
