@@ -231,6 +231,11 @@ class Algebraic:
             return -1
         if other.hi <= self.lo:
             return 1
+        if self.p is other.p or self.p == other.p:
+            # one polynomial, nested isolating intervals (a copy refined apart from its original):
+            # the inner one's root lies in the outer interval, which isolates one root of p
+            if self.lo <= other.lo and other.hi <= self.hi or other.lo <= self.lo and self.hi <= other.hi:
+                return 0
         g = self.p.gcd(other.p)
         # certified balls first (python-flint root isolation, ends checked exactly)
         for prec in (64, 256):

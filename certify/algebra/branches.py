@@ -31,7 +31,7 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
-from certify.obligations import asserting, fact, silent
+from certify.obligations import asserting, fact, recording_now, silent
 
 from . import facts
 from . import numberfield as nf
@@ -1167,6 +1167,8 @@ def _apart(a: Algebraic, b: Algebraic) -> bool:
 def less(a, b) -> bool:
     """a < b, exact: from the isolating intervals where they are apart (an exact comparison
     would then refine nothing either), else by the exact comparison."""
+    if _itself(a, b):
+        return False
     if isinstance(a, Algebraic) and isinstance(b, Algebraic):
         if _apart(a, b):
             return True
@@ -1175,8 +1177,16 @@ def less(a, b) -> bool:
     return a < b
 
 
+def _itself(a, b) -> bool:
+    """a and b are one object, where no comparison would be recorded (the answer is then
+    read off without one: a = a)."""
+    return a is b and not recording_now()
+
+
 def at_most(a, b) -> bool:
     """a ≤ b, exact (as :func:`less`)."""
+    if _itself(a, b):
+        return True
     if isinstance(a, Algebraic) and isinstance(b, Algebraic):
         if _apart(a, b):
             return True
@@ -1187,6 +1197,8 @@ def at_most(a, b) -> bool:
 
 def same(a, b) -> bool:
     """a = b, exact (as :func:`less`)."""
+    if _itself(a, b):
+        return True
     if isinstance(a, Algebraic) and isinstance(b, Algebraic) and (_apart(a, b) or _apart(b, a)):
         return False
     return a == b

@@ -210,6 +210,19 @@ def number_of(a) -> dict | str:
         return rational(a)
     if a.is_rational:
         return rational(a.lo)
+    key = a.key()                    # equal keys, equal numbers: the same record (memoised)
+    found = _NUMBERS.get(key)
+    if found is None:
+        found = _NUMBERS[key] = _dyadic(a)
+    return dict(found, poly=list(found["poly"])) if isinstance(found, dict) else found
+
+
+_NUMBERS: dict = {}              # key of an Algebraic -> its record by number_of
+caches.register(_NUMBERS.clear)
+
+
+def _dyadic(a) -> dict | str:
+    """:func:`number_of` of an irrational-looking Algebraic, computed."""
     from .poly import Q
     from .sturm import count_roots
     b = copy.copy(a)
