@@ -196,11 +196,13 @@ class Condition:
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
     _forms: dict | None = None             # the Horner forms of the parts (_forms), made on first use
 
-    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None):
+    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None, terms: dict | None = None):
         self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
         self._lrq = lrq
         self.degenerate = []
-        if lrq is None:
+        if terms is not None:                  # the terms of lrq, known to the caller (a twin's)
+            self.terms = terms
+        elif lrq is None:
             self.terms = {k: ring_terms(p) for k, p in
                           (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
         else:
@@ -353,10 +355,25 @@ def _eval_form(form, R, L) -> flint.arb:
     return total / d
 
 
+_FORMS: dict = {}                # id of a list of terms -> (it, its Horner form)
+caches.register(_FORMS.clear)
+
+
+def _form_of(terms) -> tuple:
+    """:func:`_horner_form` of a list of terms, memoised by identity (a condition and its
+    twin at the other fixed point share the lists of N₀ and D₀)."""
+    entry = _FORMS.get(id(terms))
+    if entry is None or entry[0] is not terms:
+        if len(_FORMS) > 20000:
+            _FORMS.clear()
+        entry = _FORMS[id(terms)] = (terms, _horner_form(terms))
+    return entry[1]
+
+
 def _forms(cond: Condition) -> dict:
     forms = getattr(cond, "_forms", None)
     if forms is None:
-        forms = cond._forms = {k: _horner_form(ts) for k, ts in cond.terms.items()
+        forms = cond._forms = {k: _form_of(ts) for k, ts in cond.terms.items()
                                if k != "delta" or cond.delta is None}
         if cond.delta is not None:           # every condition with x shares its Δ: one form
             entry = _delta_entry(cond.delta)

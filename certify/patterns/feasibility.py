@@ -116,9 +116,10 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
 def _twin(cond: Condition, name: str) -> Condition:
     """The condition of the same requirement at the other fixed point (σ → -σ): the
     polynomials of :func:`condition` with N₁ negated (the products and remainders of N₀,
-    σN₁, D₀ are linear in σ)."""
+    σN₁, D₀ are linear in σ); the terms of N₀, D₀ and Δ shared, those of N₁ negated."""
     N0, N1, D0 = cond._lrq
-    return Condition(name, None, None, cond.delta, cond.c, lrq=(N0, -N1, D0))
+    terms = dict(cond.terms, N1=[(-c, i, j) for c, i, j in cond.terms["N1"]])     # the terms of -N₁
+    return Condition(name, None, None, cond.delta, cond.c, lrq=(N0, -N1, D0), terms=terms)
 
 
 def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:
