@@ -480,8 +480,19 @@ def committed_census() -> dict | None:
     or None; its per-word records are not read (:func:`certify.run.files.first_member`)."""
     from pathlib import Path
     try:
-        text = (Path(__file__).resolve().parents[1] / "reports" / "census.json").read_text(encoding="utf-8")
-        return first_member(text, "census")
+        with (Path(__file__).resolve().parents[1] / "reports" / "census.json").open(encoding="utf-8") as fh:
+            text = ""
+            while True:                # the file (about 100 MB) read only up to the end of its summary
+                chunk = fh.read(1 << 18)
+                text += chunk
+                if not chunk:
+                    return first_member(text, "census")        # the whole text: as before
+                try:
+                    found = first_member(text, "census")
+                except (ValueError, KeyError):                   # the summary not complete yet
+                    continue
+                if isinstance(found, dict):                     # an object ends with its '}': complete
+                    return found
     except (OSError, ValueError):
         return None
 

@@ -10,6 +10,7 @@ import flint
 import sympy as sp
 
 from certify import caches
+from certify.obligations import recording_now
 
 
 def rational(q) -> str:
@@ -237,6 +238,10 @@ def number_of(a) -> dict | str:
         return rational(a)
     if a.is_rational:
         return rational(a.lo)
+    if recording_now():
+        # outside a fact's builder the comparisons made here are facts of the certificate
+        # (compare_rational records them): made every time
+        return _dyadic(a)
     key = a.key()                    # equal keys, equal numbers: the same record (memoised)
     found = _NUMBERS.get(key)
     if found is None:
