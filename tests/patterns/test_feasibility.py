@@ -119,3 +119,6 @@ def test_the_condition_at_the_other_fixed_point_is_the_twin_with_n1_negated():
         assert plus._lrq[1] != minus._lrq[1]              # σ matters
         assert _twin(plus, q.name)._lrq == minus._lrq
         assert _twin(minus, q.name)._lrq == plus._lrq
+        # the terms it takes (N₀, D₀, Δ shared, N₁'s negated) are those read from its polynomials
+        for cond, other in ((plus, minus), (minus, plus)):
+            assert _twin(cond, q.name).terms == other.terms
