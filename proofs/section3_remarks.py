@@ -467,11 +467,11 @@ def reading_counts(words: list[str], pattern: str) -> list[tuple[str, int, int]]
     """For each reading: how many of ``words`` (classes of rotations and mirror) contain
     ``pattern`` with the mirror (some orientation does), and how many oriented patterns
     do without it (the word and its mirror counted apart)."""
+    oriented = [orientations(w) for w in words]          # each word's orientations, once
     out = []
     for name, reads in READINGS.items():
-        with_mirror = sum(any(reads(v, pattern) for v in orientations(w)) for w in words)
-        without = sum(reads(v, pattern) for w in words for v in orientations(w))
-        out.append((name, with_mirror, without))
+        hits = [[bool(reads(v, pattern)) for v in vs] for vs in oriented]
+        out.append((name, sum(any(h) for h in hits), sum(sum(h) for h in hits)))
     return out
 
 
