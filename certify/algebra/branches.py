@@ -616,6 +616,7 @@ class Spectrum:
         self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
         self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
         self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
+        self._checked = {}                 # id of a factor -> it, once its real roots were counted both ways
         self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
 
     @cached_property
@@ -709,7 +710,9 @@ class Spectrum:
         lo, hi = _alg(lo), _alg(hi)
         roots = []
         for f in {k: f for p in polys for f, k in self._factors(p)}.values():
-            checked_real_root_count(f)          # Sturm and python-flint agree (memoised per factor)
+            if self._checked.get(id(f)) is not f:     # Sturm and python-flint agree (once per factor)
+                checked_real_root_count(f)
+                self._checked[id(f)] = f
             roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
         return sorted_numbers(roots)
 
