@@ -31,7 +31,7 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
-from certify.obligations import asserting, fact, silent
+from certify.obligations import asserting, fact, recording_now, silent
 
 from . import facts
 from . import numberfield as nf
@@ -196,11 +196,13 @@ class Condition:
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
     _forms: dict | None = None             # the Horner forms of the parts (_forms), made on first use
 
-    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None):
+    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None, terms: dict | None = None):
         self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
         self._lrq = lrq
         self.degenerate = []
-        if lrq is None:
+        if terms is not None:                  # the terms of lrq, known to the caller (a twin's)
+            self.terms = terms
+        elif lrq is None:
             self.terms = {k: ring_terms(p) for k, p in
                           (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
         else:
@@ -353,10 +355,25 @@ def _eval_form(form, R, L) -> flint.arb:
     return total / d
 
 
+_FORMS: dict = {}                # id of a list of terms -> (it, its Horner form)
+caches.register(_FORMS.clear)
+
+
+def _form_of(terms) -> tuple:
+    """:func:`_horner_form` of a list of terms, memoised by identity (a condition and its
+    twin at the other fixed point share the lists of N₀ and D₀)."""
+    entry = _FORMS.get(id(terms))
+    if entry is None or entry[0] is not terms:
+        if len(_FORMS) > 20000:
+            _FORMS.clear()
+        entry = _FORMS[id(terms)] = (terms, _horner_form(terms))
+    return entry[1]
+
+
 def _forms(cond: Condition) -> dict:
     forms = getattr(cond, "_forms", None)
     if forms is None:
-        forms = cond._forms = {k: _horner_form(ts) for k, ts in cond.terms.items()
+        forms = cond._forms = {k: _form_of(ts) for k, ts in cond.terms.items()
                                if k != "delta" or cond.delta is None}
         if cond.delta is not None:           # every condition with x shares its Δ: one form
             entry = _delta_entry(cond.delta)
@@ -599,6 +616,7 @@ class Spectrum:
         self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
         self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
         self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
+        self._checked = {}                 # id of a factor -> it, once its real roots were counted both ways
         self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
 
     @cached_property
@@ -692,7 +710,9 @@ class Spectrum:
         lo, hi = _alg(lo), _alg(hi)
         roots = []
         for f in {k: f for p in polys for f, k in self._factors(p)}.values():
-            checked_real_root_count(f)          # Sturm and python-flint agree (memoised per factor)
+            if self._checked.get(id(f)) is not f:     # Sturm and python-flint agree (once per factor)
+                checked_real_root_count(f)
+                self._checked[id(f)] = f
             roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
         return sorted_numbers(roots)
 
@@ -1167,6 +1187,8 @@ def _apart(a: Algebraic, b: Algebraic) -> bool:
 def less(a, b) -> bool:
     """a < b, exact: from the isolating intervals where they are apart (an exact comparison
     would then refine nothing either), else by the exact comparison."""
+    if _itself(a, b):
+        return False
     if isinstance(a, Algebraic) and isinstance(b, Algebraic):
         if _apart(a, b):
             return True
@@ -1175,8 +1197,16 @@ def less(a, b) -> bool:
     return a < b
 
 
+def _itself(a, b) -> bool:
+    """a and b are one object, where no comparison would be recorded (the answer is then
+    read off without one: a = a)."""
+    return a is b and not recording_now()
+
+
 def at_most(a, b) -> bool:
     """a ≤ b, exact (as :func:`less`)."""
+    if _itself(a, b):
+        return True
     if isinstance(a, Algebraic) and isinstance(b, Algebraic):
         if _apart(a, b):
             return True
@@ -1187,6 +1217,8 @@ def at_most(a, b) -> bool:
 
 def same(a, b) -> bool:
     """a = b, exact (as :func:`less`)."""
+    if _itself(a, b):
+        return True
     if isinstance(a, Algebraic) and isinstance(b, Algebraic) and (_apart(a, b) or _apart(b, a)):
         return False
     return a == b

@@ -10,6 +10,7 @@ import flint
 import sympy as sp
 
 from certify import caches
+from certify.obligations import recording_now
 
 
 def rational(q) -> str:
@@ -37,6 +38,33 @@ def upoly(p) -> list:
 def ring_terms_data(terms) -> list:
     """Terms (c, i, j) of a polynomial in r, λ (c r^i λ^j) as [["p/q", [i, j]], ...], sorted."""
     return sorted([rational(c), [int(i), int(j)]] for c, i, j in terms)
+
+
+_TERMS_DATA: dict = {}           # id of a polynomial or of its list of terms -> (it, ring_terms_data of it)
+caches.register(_TERMS_DATA.clear)
+
+
+def _data_of(obj, make) -> list:
+    """``make()`` for the object ``obj`` (a spectrum's cp, a condition's terms: the same
+    objects in every query of a table), memoised by identity; the lists are shared by the
+    records that hold them (a record is never modified)."""
+    entry = _TERMS_DATA.get(id(obj))
+    if entry is None or entry[0] is not obj:
+        if len(_TERMS_DATA) > 20000:
+            _TERMS_DATA.clear()
+        entry = _TERMS_DATA[id(obj)] = (obj, make())
+    return entry[1]
+
+
+def _cp_data(spectrum) -> list:
+    """The terms of a spectrum's cp as a record holds them."""
+    from .poly import ring_terms
+    return _data_of(spectrum.ring_cp, lambda: ring_terms_data(ring_terms(spectrum.ring_cp)))
+
+
+def _parts_data(cond) -> dict:
+    """The non-zero parts of a condition (N0, N1, D0, D1, delta) as a record holds them."""
+    return {k: _data_of(v, lambda v=v: ring_terms_data(v)) for k, v in cond.terms.items() if v}
 
 
 _CIRCLE_ARGS = ("θ", "φ")
@@ -210,6 +238,23 @@ def number_of(a) -> dict | str:
         return rational(a)
     if a.is_rational:
         return rational(a.lo)
+    if recording_now():
+        # outside a fact's builder the comparisons made here are facts of the certificate
+        # (compare_rational records them): made every time
+        return _dyadic(a)
+    key = a.key()                    # equal keys, equal numbers: the same record (memoised)
+    found = _NUMBERS.get(key)
+    if found is None:
+        found = _NUMBERS[key] = _dyadic(a)
+    return dict(found, poly=list(found["poly"])) if isinstance(found, dict) else found
+
+
+_NUMBERS: dict = {}              # key of an Algebraic -> its record by number_of
+caches.register(_NUMBERS.clear)
+
+
+def _dyadic(a) -> dict | str:
+    """:func:`number_of` of an irrational-looking Algebraic, computed."""
     from .poly import Q
     from .sturm import count_roots
     b = copy.copy(a)
@@ -260,9 +305,7 @@ def cell_branches(answer, cell) -> dict:
     if cell.table is None:
         raise ValueError("a cell outside a sign table")
     spectrum, cond = cell.table.source
-    from .poly import ring_terms
-    return {"kind": "sign_table", "cp": ring_terms_data(ring_terms(spectrum.ring_cp)),
-            "parts": {k: ring_terms_data(v) for k, v in cond.terms.items() if v},
+    return {"kind": "sign_table", "cp": _cp_data(spectrum), "parts": _parts_data(cond),
             "ends": [number_of(cell.lo), number_of(cell.hi)], "samples": [rational(cell.sample)],
             "signs": [["?"] * len(answer)]}
 
@@ -294,9 +337,7 @@ def sign_query(result, table, branch, lo=None, hi=None, include_points=True):
         if branch < len(row):
             row[branch] = _sign_code(c.signs[branch])
         rows.append(row)
-    from .poly import ring_terms
-    data = {"kind": "sign_table", "cp": ring_terms_data(ring_terms(spectrum.ring_cp)),
-            "parts": {k: ring_terms_data(v) for k, v in cond.terms.items() if v},
+    data = {"kind": "sign_table", "cp": _cp_data(spectrum), "parts": _parts_data(cond),
             "ends": [number_of(cells[0].lo)] + [number_of(c.hi) for c in cells],
             "samples": [rational(c.sample) for c in cells], "signs": rows}
     return {"kind": "signs_query", "table": data, "branch": int(branch),
@@ -378,11 +419,9 @@ def _point_claims(signs, only=None) -> list:
 def branch_signs(signs, spectrum, cond, rc, only=None) -> dict:
     """The signs of a condition on the real branches of cp at the algebraic r = rc (largest
     first, a double root twice): the kernel isolates them in Q(rc)[λ] and signs g exactly."""
-    from .poly import ring_terms
     if signs is None:
         raise ValueError("the branches at this r were not isolated")
-    return {"kind": "branch_signs_at", "cp": ring_terms_data(ring_terms(spectrum.ring_cp)),
-            "parts": {k: ring_terms_data(v) for k, v in cond.terms.items() if v}, "r": number_of(rc),
+    return {"kind": "branch_signs_at", "cp": _cp_data(spectrum), "parts": _parts_data(cond), "r": number_of(rc),
             "signs": _point_claims(signs, only)}
 
 

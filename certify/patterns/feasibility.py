@@ -116,9 +116,10 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
 def _twin(cond: Condition, name: str) -> Condition:
     """The condition of the same requirement at the other fixed point (σ → -σ): the
     polynomials of :func:`condition` with N₁ negated (the products and remainders of N₀,
-    σN₁, D₀ are linear in σ)."""
+    σN₁, D₀ are linear in σ); the terms of N₀, D₀ and Δ shared, those of N₁ negated."""
     N0, N1, D0 = cond._lrq
-    return Condition(name, None, None, cond.delta, cond.c, lrq=(N0, -N1, D0))
+    terms = dict(cond.terms, N1=[(-c, i, j) for c, i, j in cond.terms["N1"]])     # the terms of -N₁
+    return Condition(name, None, None, cond.delta, cond.c, lrq=(N0, -N1, D0), terms=terms)
 
 
 def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:
@@ -210,9 +211,16 @@ def sign_in_cell(T, branch: int, lo, hi):
 
 def _sign_at_facts(answer, T, rc, branch):
     """For the kernel: a point of a cell has the cell's sign (the cell's signs query and rc
-    inside it); at a critical value, the table's signs there (re-derived in Q(rc)[λ])."""
-    if any(same(c, rc) for c in T.critical):
-        return facts.table_point(answer, T, rc, branch)
+    inside it); at a critical value, the table's sign there on ``branch`` (re-derived in
+    Q(rc)[λ]; the others are not claimed, so not computed unless the table holds them)."""
+    k = next((i for i, c in enumerate(T.critical) if same(c, rc)), None)
+    if k is not None:
+        if T.has_point(k) or T.source is None:
+            return facts.table_point(answer, T, rc, branch)
+        spec, cond = T.source
+        roots = spec.branches_at(rc)
+        signs = None if roots is None else [answer if i == branch else UNDECIDED for i in range(len(roots))]
+        return facts.branch_signs(signs, spec, cond, rc, only=branch)
     cell = next(c for c in T.cells if c.lo < rc < c.hi)
     return [facts.sign_query([answer], T, branch, cell.lo, cell.hi, include_points=False),
             facts.compare(1, rc, cell.lo), facts.compare(-1, rc, cell.hi)]
@@ -224,6 +232,11 @@ def table_sign_at(T, rc: Algebraic, branch: int):
     T's critical values, else the sign of the cell holding rc."""
     for k, c in enumerate(T.critical):
         if same(c, rc):
+            if not T.has_point(k) and T.source is not None:
+                # the entry T.points[k] would hold on this branch, for this branch alone
+                # (Spectrum.sign_on_branch_at; UNDECIDED where the branches are not isolated)
+                spec, cond = T.source
+                return spec.sign_on_branch_at(cond, rc, branch)
             pt = T.points[k]
             if pt is None:
                 return UNDECIDED
@@ -232,19 +245,6 @@ def table_sign_at(T, rc: Algebraic, branch: int):
         if strictly_between(cell.lo, rc, cell.hi):
             return cell.signs[branch] if branch < len(cell.signs) else NO_BRANCH
     raise ArithmeticError(f"{rc} outside the table of {T.condition}")
-
-
-def _branch_sign_at(T, rc: Algebraic, branch: int):
-    """:func:`table_sign_at` where no certificate records it: at a critical value of T the
-    sign on ``branch`` alone (:meth:`Spectrum.sign_on_branch_at`, the entry that T's point
-    signs would hold there), unless T holds them already; elsewhere the cell's sign."""
-    for k, c in enumerate(T.critical):
-        if same(c, rc):
-            if T.has_point(k) or T.source is None:
-                return table_sign_at(T, rc, branch)
-            spec, cond = T.source
-            return spec.sign_on_branch_at(cond, rc, branch)
-    return table_sign_at(T, rc, branch)
 
 
 def _key(a):
@@ -377,7 +377,7 @@ class Analysis:
         rc, k = p.lo, R.branch
         with_x = p.x_value is not None and req.has_x
         sg = self._sign_with_x(req, rc, k, p.x_value) if with_x else \
-            table_sign_at(T, rc, k) if recording_now() else _branch_sign_at(T, rc, k)
+            table_sign_at(T, rc, k)
         ok = _meets(sg, req.sign)
         if ok != UNDECIDED:
             return p, "holds" if ok else "fails", "" if ok else \

@@ -119,3 +119,30 @@ def test_the_condition_at_the_other_fixed_point_is_the_twin_with_n1_negated():
         assert plus._lrq[1] != minus._lrq[1]              # σ matters
         assert _twin(plus, q.name)._lrq == minus._lrq
         assert _twin(minus, q.name)._lrq == plus._lrq
+        # the terms it takes (N₀, D₀, Δ shared, N₁'s negated) are those read from its polynomials
+        for cond, other in ((plus, minus), (minus, plus)):
+            assert _twin(cond, q.name).terms == other.terms
+
+
+def test_a_sign_at_a_critical_value_is_recorded_as_the_table_points_would_have_it():
+    # table_sign_at at a critical value the table has not signed: the branch's sign alone and
+    # its fact claiming that branch only, the same as from every branch's signs (table_point)
+    from certify.algebra import facts
+    from certify.algebra.branches import Condition
+    from certify.algebra.poly import lam
+    from certify.obligations import recording
+    from certify.patterns.feasibility import table_sign_at
+    spec = candidate("abcb").spectrum
+    T = spec.sign_table(Condition.of("λ - 1/4", lam - sp.Rational(1, 4)), 0, 1)
+    assert len(T.critical) >= 2
+    for k, rc in enumerate(T.critical):
+        for branch in range(3):
+            with recording("X") as rec:
+                sg = table_sign_at(T, rc, branch)
+            assert not T.has_point(k)
+            pt = T.points[k]                       # every branch's signs, computed now
+            T._points._done.pop(k)
+            assert sg == (pt[branch] if branch < len(pt) else "missing")
+            [ob] = rec.items
+            assert {key: v for key, v in ob.items() if key != "id"} == facts.table_point(sg, T, rc, branch)
+            T._points._done.pop(k)
