@@ -60,10 +60,10 @@ from certify.run import (
     Check,
     certificate,
     conclude,
-    first_member,
     gathered,
     overridden,
     product_fact,
+    read_first_member,
     take,
     unsupported_fact,
 )
@@ -477,23 +477,11 @@ def reading_counts(words: list[str], pattern: str) -> list[tuple[str, int, int]]
 
 def committed_census() -> dict | None:
     """The summary "census" of reports/census.json of the source checkout (``certify census``),
-    or None; its per-word records are not read (:func:`certify.run.files.first_member`)."""
+    or None; its per-word records are not read (:func:`certify.run.files.read_first_member`)."""
     from pathlib import Path
     try:
-        with (Path(__file__).resolve().parents[1] / "reports" / "census.json").open(encoding="utf-8") as fh:
-            text = ""
-            while True:                # the file (about 100 MB) read only up to the end of its summary
-                chunk = fh.read(1 << 18)
-                text += chunk
-                if not chunk:
-                    return first_member(text, "census")        # the whole text: as before
-                try:
-                    found = first_member(text, "census")
-                except (ValueError, KeyError):                   # the summary not complete yet
-                    continue
-                if isinstance(found, dict):                     # an object ends with its '}': complete
-                    return found
-    except (OSError, ValueError):
+        return read_first_member(Path(__file__).resolve().parents[1] / "reports" / "census.json", "census")
+    except (KeyError, ValueError):
         return None
 
 

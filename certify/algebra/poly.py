@@ -9,7 +9,6 @@ python-flint's ``fmpz_poly``/``fmpq_poly`` and ``fmpz_mpoly``.
 from __future__ import annotations
 
 import math
-import re
 from fractions import Fraction
 from functools import reduce
 
@@ -51,108 +50,7 @@ def _parse(text: str, names: dict | None) -> sp.Expr:
 
 @caches.for_a_run
 def _parse_paper(text: str) -> sp.Expr:
-    t = text.replace("λ", "lam").replace("^", "**").replace("−", "-")
-    try:
-        return _Arithmetic(t).read()
-    except _Unread:
-        return _parse(text, None)
-
-
-class _Unread(ValueError):
-    """Text outside the arithmetic :class:`_Arithmetic` reads (SymPy's parser reads it)."""
-
-
-_TOKEN = re.compile(r"\s*(?:(\d+)(?![\d.eEjJ_])|([A-Za-z_]\w*)|(\*\*|[-+*/()\[\],]))")
-
-
-class _Arithmetic:
-    """Integers, the paper's names, + - * / ** (Python's precedence), parentheses and
-    nested lists, evaluated by the very SymPy operations Python's evaluation of the
-    sympified text performs (so the same expression as ``sympify``, without its parser);
-    _Unread for anything else."""
-
-    def __init__(self, text: str):
-        self.tokens, pos = [], 0
-        text = text.rstrip()
-        while pos < len(text):
-            m = _TOKEN.match(text, pos)
-            if not m:
-                raise _Unread(text)
-            number, name, op = m.groups()
-            if (name is not None and (name not in NAMES or name == "lambda")      # a keyword of Python
-                    or number is not None and len(number) > 1 and number[0] == "0"):  # 07: Python's error
-                raise _Unread(name)
-            self.tokens.append(("n", sp.Integer(int(number))) if number is not None else
-                               ("v", NAMES[name]) if name is not None else ("o", op))
-            pos = m.end()
-        self.k = 0
-
-    def peek(self):
-        return self.tokens[self.k] if self.k < len(self.tokens) else ("end", None)
-
-    def take(self, op: str) -> bool:
-        if self.peek() == ("o", op):
-            self.k += 1
-            return True
-        return False
-
-    def read(self):
-        out = self.item()
-        if self.k != len(self.tokens):
-            raise _Unread("trailing text")
-        return out
-
-    def item(self):
-        if self.take("["):
-            items = [] if self.peek() == ("o", "]") else [self.item()]
-            while self.take(","):
-                items.append(self.item())
-            if not self.take("]"):
-                raise _Unread("]")
-            return items
-        return self.sum()
-
-    def sum(self):
-        out = self.product()
-        while True:
-            if self.take("+"):
-                out = out + self.product()
-            elif self.take("-"):
-                out = out - self.product()
-            else:
-                return out
-
-    def product(self):
-        out = self.unary()
-        while True:
-            if self.take("*"):
-                out = out * self.unary()
-            elif self.take("/"):
-                out = out / self.unary()
-            else:
-                return out
-
-    def unary(self):
-        if self.take("-"):
-            return -self.unary()
-        if self.take("+"):
-            return +self.unary()
-        base = self.atom()
-        return base ** self.unary() if self.take("**") else base
-
-    def atom(self):
-        kind, value = self.peek()
-        if kind in ("n", "v"):
-            self.k += 1
-            if self.peek() == ("o", "("):
-                raise _Unread("a call")
-            return value
-        if self.take("("):
-            out = self.sum()
-            if not self.take(")"):
-                raise _Unread(")")
-            return out
-        raise _Unread(str(value))
+    return _parse(text, None)
 
 
 def expr(e) -> sp.Expr:

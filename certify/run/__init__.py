@@ -37,7 +37,7 @@ from .checks import (
                      sign_intervals_facts,
                      unsupported_fact,
 )
-from .files import first_member, load_findings
+from .files import first_member, load_findings, read_first_member
 from .island_figures import report_figure as island_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
 from .runner import (
@@ -82,7 +82,8 @@ __all__ = [
     "determinant_fact", "kept_facts", "sign_intervals_facts", "unsupported_fact",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "replaying", "gathered", "take", "captured", "facts_of",
-    "first_member", "load_findings", "committed_windows", "island_figure", "explanations", "save_figure",
+    "first_member", "read_first_member", "load_findings",
+    "committed_windows", "island_figure", "explanations", "save_figure",
     "omega_figure", "section5_figure", "section5_name", "sign_chart",
     "spectrum_figures",
     "CERTIFICATES", "EXPLANATION", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK",

@@ -1,5 +1,5 @@
 """The fast conversions of certify.algebra.poly give what SymPy's own routes give: the
-reader of the paper's arithmetic (against sympify), the expression tree in RING (against
+expression tree in RING (against
 FIELD.from_expr), polynomials in r multiplied out by python-flint (against sp.Poly) and the
 mpoly of a polynomial in r, λ, s (against sp.Poly)."""
 import flint
@@ -24,18 +24,6 @@ from proofs.section3_theorem import (
 TEXTS = [M_PRINTED, CP_PRINTED, U_PRINTED, V_PRINTED, P1_T5_PRINTED, DELTA_PRINTED.replace("P0", f"({P0_PRINTED})"),
          "-2^2", "2^-1", "r^2^3", "1/2/3", "-r^2 - -3", "+r", "lam*λ", "x - u*v", "0^0", "[[1, r], [-r/2, (1+r)/2]]",
          "[]", "3*r\n + 2"]
-
-
-@pytest.mark.parametrize("text", TEXTS)
-def test_the_reader_gives_sympifys_expression(text):
-    fast = poly._Arithmetic(text.replace("λ", "lam").replace("^", "**")).read()
-    assert sp.srepr(fast) == sp.srepr(poly._parse(text, None))
-
-
-@pytest.mark.parametrize("text", ["07", "2r", "lambda", "r,", "E*r", "1.5*r", "sin(r)", "theta"])
-def test_the_reader_leaves_the_rest_to_sympy(text):
-    with pytest.raises(poly._Unread):
-        poly._Arithmetic(text.replace("^", "**")).read()
 
 
 @pytest.mark.parametrize("text", TEXTS[1:6])
