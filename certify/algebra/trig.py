@@ -29,11 +29,12 @@ root in ]0, 1[ (Sturm).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, cmp_to_key
 
 import flint
 import sympy as sp
 from sympy.core.mul import _keep_coeff
+from sympy.polys.polyutils import _sort_gens
 
 from certify import caches
 from certify.obligations import fact
@@ -383,9 +384,81 @@ def _rewrite(f, k: int):
 
 @caches.for_a_run
 def _factor_list(g) -> tuple:
-    """sp.factor_list(g) as (constant, ((factor, multiplicity), ...)), memoised like :func:`_rewrite`."""
+    """sp.factor_list(g) as (constant, ((factor, multiplicity), ...)), memoised like :func:`_rewrite`;
+    by python-flint for a sum with integer coefficients (:func:`_flint_factor_list`)."""
+    found = _flint_factor_list(g)
+    if found is not None:
+        return found
     c, factors = sp.factor_list(g)
     return c, tuple(factors)
+
+
+def _flint_factor_list(g) -> tuple | None:
+    """What :func:`_factor_list` returns from SymPy, for a sum g of terms c·x^e (c an integer, x
+    symbols, e natural), the irreducible factors found by python-flint's fmpz_mpoly; None for
+    anything else.  SymPy's factor_list first writes g as ``together`` does: the integer content,
+    the symbols common to every term (each a factor (x, min e) of its own polynomial in x alone)
+    and the rest, one polynomial in its own symbols (_sort_gens: SymPy's order); its factors,
+    primitive with a positive leading coefficient in lex order, are unique.  All are sorted by
+    SymPy's key (length of the dense representation, number of generators, multiplicity, domain,
+    the representation; ties, among the common symbols, in the order of together's product), and
+    the constant is what remains."""
+    if not g.is_Add:
+        return None
+    terms = []
+    for t in g.args:
+        c, m = t.as_coeff_Mul()
+        if not c.is_Integer:
+            return None
+        powers = {}
+        for f in sp.Mul.make_args(m):
+            b, e = f.as_base_exp()
+            if not (b.is_Symbol and e.is_Integer and e > 0):
+                if f == 1:
+                    continue
+                return None
+            powers[b] = powers.get(b, 0) + int(e)
+        terms.append((int(c), powers))
+    symbols = set().union(*(p.keys() for _, p in terms))
+    common = {x: min(p.get(x, 0) for _, p in terms) for x in symbols}
+    common = {x: e for x, e in common.items() if e > 0}
+    gens = _sort_gens([x for x in symbols if any(p.get(x, 0) > common.get(x, 0) for _, p in terms)])
+    ctx = flint.fmpz_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "lex")
+    rest = ctx.from_dict({tuple(p.get(x, 0) - common.get(x, 0) for x in gens): c for c, p in terms})
+    content, found = rest.factor()
+    # the common symbols as together's product holds them (Basic.compare): SymPy's sort is stable
+    order = sorted(common, key=cmp_to_key(lambda a, b: sp.Basic.compare(a ** common[a], b ** common[b])))
+    keyed = [((2, 1, common[x], [1, 0]), x, common[x]) for x in order]
+    for f, k in found:
+        if f.leading_coefficient() < 0:
+            f, content = -f, content * (-1) ** k
+        d = f.to_dict()
+        rep = _dense(d, len(gens))
+        expr = sp.Add(*[sp.Integer(int(c)) * sp.Mul(*[x ** e for x, e in zip(gens, m) if e]) for m, c in d.items()])
+        keyed.append(((len(rep), len(gens), int(k), rep), expr, int(k)))
+    keyed.sort(key=lambda item: item[0])
+    return sp.Integer(int(content)), tuple((f, k) for _, f, k in keyed)
+
+
+def _dense(d: dict, n: int) -> list:
+    """The dense recursive representation (SymPy's DMP, ``Poly.rep.to_list()``) of the polynomial
+    {exponents: coefficient} in n generators: coefficients by falling powers of the first one,
+    each in the others; the zero polynomial is [] wrapped n − 1 times."""
+    if not d:
+        z: list = []
+        for _ in range(n - 1):
+            z = [z]
+        return z
+    top = max(m[0] for m in d)
+    if n == 1:
+        out = [0] * (top + 1)
+        for m, c in d.items():
+            out[top - m[0]] = int(c)
+        return out
+    parts: dict = {}
+    for m, c in d.items():
+        parts.setdefault(m[0], {})[m[1:]] = c
+    return [_dense(parts.get(top - k, {}), n - 1) for k in range(top + 1)]
 
 
 def _factored(g) -> sp.Expr:

@@ -30,3 +30,52 @@ def test_undecided_sign_shows_sympys_factor():
     p = sp.expand((x - y) * (x + 2 * y) * (r + 1) * 3)
     s, why = T._poly_sign(p, H)
     assert s is None and why[0].startswith(f"`{T.show(sp.factor(p))}`: ")
+
+
+int_atoms = st.sampled_from([x, y, r, T.cθ, T.sφ, sp.Integer(2), sp.Integer(-1), sp.Integer(3)])
+int_polys = st.recursive(int_atoms, lambda sub: st.one_of(
+    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Add(*a)),
+    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Mul(*a)),
+    st.tuples(sub, st.integers(1, 3)).map(lambda a: a[0] ** a[1])), max_leaves=12)
+
+
+def _same_as_sympy(g):
+    """_factor_list(g) is sp.factor_list(g): the same constant, factors (as expressions, printed
+    alike) and multiplicities, in the same order."""
+    T.caches.reset()
+    c, factors = sp.factor_list(g)
+    got = T._factor_list(g)
+    assert got == (c, tuple(factors)), (g, got, (c, factors))
+    assert [T.show(f) for f, _ in got[1]] == [T.show(f) for f, _ in factors]
+    assert type(got[0]) is type(c)
+
+
+@settings(max_examples=300, deadline=None)
+@given(int_polys, polys)
+def test_flint_factor_list_is_sympys(p, q):
+    """On sums with integer coefficients (common symbols, contents, signs, repeated factors,
+    one or several generators) the flint route gives SymPy's factor list; other polynomials
+    (rational coefficients, monomials, constants) go to SymPy."""
+    for g in (sp.expand(p), sp.expand(p * q), sp.expand(p ** 2 * (x - y) * r)):
+        _same_as_sympy(g)
+        if not g.is_Add or any(not c.is_Integer for c in g.as_coefficients_dict().values()):
+            assert T._flint_factor_list(g) is None
+
+
+def test_flint_factor_list_on_the_step_lemmas():
+    """The polynomials whose signs the step lemmas read (certify.dynamics.cones on the six cones)
+    are factored by the flint route as SymPy factors them."""
+    from certify.dynamics import cones as RC
+    from proofs.section4_1_reduction_theorem import SECTION2_K
+    seen = []
+    original = T._flint_factor_list
+    T._flint_factor_list = lambda g: seen.append(g)      # SymPy factors them all, as before
+    try:
+        T.caches.reset()
+        RC.transitions(RC.steps(SECTION2_K))
+    finally:
+        T._flint_factor_list = original
+    flint_route = [g for g in seen if original(g) is not None]
+    assert len(flint_route) > 20
+    for g in flint_route:
+        _same_as_sympy(g)
