@@ -148,11 +148,75 @@ def _field(gens: tuple, order: str = "grevlex"):
 
 
 def _lowest_terms(E):
-    """E in lowest terms in Q(cθ, sθ, cφ, sφ, ...): numerator and denominator as ring elements."""
+    """E in lowest terms in Q(cθ, sθ, cφ, sφ, ...): numerator and denominator as ring elements
+    (those of SymPy's field, computed by python-flint when E is a rational function of its
+    symbols: :func:`_flint_lowest_terms`)."""
     E = sp.sympify(E)
-    K, _ = _field(_gens(E))
+    gens = _gens(E)
+    K, _ = _field(gens)
+    found = _flint_lowest_terms(E, gens)
+    if found is not None:
+        ring = K.ring
+        return ring.from_dict(found[0]), ring.from_dict(found[1])
     f = K.from_expr(E)
     return f.numer, f.denom
+
+
+def _flint_lowest_terms(E, gens: tuple) -> tuple[dict, dict] | None:
+    """The numerator and denominator SymPy's field Q(gens) gives E, as {exponents: fmpq}: E's
+    fraction multiplied out in fmpq_mpoly and divided by the gcd, then the unique normal form
+    SymPy's cancel keeps: integer coefficients, the contents of numerator and denominator
+    coprime, the denominator's leading coefficient (grevlex, the gens in order) > 0.  None when
+    E is not built from the gens and rationals by +, ·, integer powers (or divides by 0)."""
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "degrevlex")
+    index = dict(zip(gens, ctx.gens()))
+    one = ctx.from_dict({(0,) * len(gens): 1})
+
+    def walk(e):
+        found = index.get(e)
+        if found is not None:
+            return found, one
+        if e.is_Rational:
+            return ctx.from_dict({(0,) * len(gens): flint.fmpq(int(e.p), int(e.q))}), one
+        if e.is_Add or e.is_Mul:
+            n, d = walk(e.args[0])
+            for a in e.args[1:]:
+                n2, d2 = walk(a)
+                if e.is_Mul:
+                    n, d = n * n2, d * d2
+                elif d == d2:
+                    n = n + n2
+                else:
+                    n, d = n * d2 + n2 * d, d * d2
+            return n, d
+        if e.is_Pow and e.exp.is_Integer:
+            n, d = walk(e.base)
+            k = int(e.exp)
+            if k < 0:
+                if n == 0:
+                    raise ZeroDivisionError
+                n, d, k = d, n, -k
+            return n ** k, d ** k
+        raise ValueError("not a rational function of the gens")
+    try:
+        n, d = walk(E)
+    except (ValueError, ZeroDivisionError):
+        return None
+    if n == 0:
+        return {}, {(0,) * len(gens): flint.fmpq(1)}
+    g = n.gcd(d)
+    n, d = n / g, d / g
+    den = flint.fmpz(1)
+    for c in n.coeffs() + d.coeffs():
+        den = den.lcm(c.q)
+    n, d = n * den, d * den
+    content = flint.fmpz(0)
+    for c in n.coeffs() + d.coeffs():
+        content = content.gcd(c.p)
+    if d.leading_coefficient() < 0:
+        content = -content
+    n, d = n / content, d / content
+    return dict(zip(n.monoms(), n.coeffs())), dict(zip(d.monoms(), d.coeffs()))
 
 
 @caches.for_a_run

@@ -79,3 +79,50 @@ def test_flint_factor_list_on_the_step_lemmas():
     assert len(flint_route) > 20
     for g in flint_route:
         _same_as_sympy(g)
+
+
+fractions = st.recursive(atoms, lambda sub: st.one_of(
+    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Add(*a)),
+    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Mul(*a)),
+    st.tuples(sub, st.integers(-2, 3)).map(lambda a: a[0] ** a[1] if a[0] != 0 or a[1] > 0 else a[0])),
+    max_leaves=12)
+
+
+def _same_lowest_terms(E):
+    """_lowest_terms(E) is the numerator and denominator of SymPy's field Q(gens)."""
+    E = sp.sympify(E)
+    K, _ = T._field(T._gens(E))
+    try:
+        f = K.from_expr(E)
+    except (ZeroDivisionError, ValueError, sp.PolynomialError):
+        return
+    assert T._lowest_terms(E) == (f.numer, f.denom), E
+    assert T._flint_lowest_terms(E, T._gens(E)) is not None
+
+
+@settings(max_examples=300, deadline=None)
+@given(fractions, fractions)
+def test_flint_lowest_terms_are_sympys(p, q):
+    """Sums, products and integer powers of symbols and rationals (the denominators' signs,
+    contents and common factors varied): python-flint's route gives SymPy's field's numerator
+    and denominator, as ring elements."""
+    for E in (p, p / q if q != 0 else p, p * q - 1 / (q - x) if q != x else p):
+        _same_lowest_terms(E)
+    assert T._flint_lowest_terms(sp.sqrt(x) + 1, T._gens(x)) is None
+
+
+def test_flint_lowest_terms_on_the_step_lemmas():
+    """Every expression whose lowest terms the step lemmas (certify.dynamics.cones) ask for."""
+    from certify.dynamics import cones as RC
+    from proofs.section4_1_reduction_theorem import SECTION2_K
+    seen = []
+    original = T._flint_lowest_terms
+    T._flint_lowest_terms = lambda E, gens: seen.append(E)      # SymPy's field for all, as before
+    try:
+        T.caches.reset()
+        RC.steps(SECTION2_K)
+    finally:
+        T._flint_lowest_terms = original
+    assert len(seen) > 50
+    for E in seen:
+        _same_lowest_terms(E)
