@@ -163,12 +163,23 @@ def _lowest_terms(E):
 
 
 def _flint_lowest_terms(E, gens: tuple) -> tuple[dict, dict] | None:
-    """The numerator and denominator SymPy's field Q(gens) gives E, as {exponents: fmpq}: E's
-    fraction multiplied out in fmpq_mpoly and divided by the gcd, then the unique normal form
-    SymPy's cancel keeps: integer coefficients, the contents of numerator and denominator
-    coprime, the denominator's leading coefficient (grevlex, the gens in order) > 0.  None when
-    E is not built from the gens and rationals by +, ·, integer powers (or divides by 0)."""
-    ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "degrevlex")
+    """The numerator and denominator SymPy's field Q(gens) gives E, as {exponents: fmpq}, from
+    :func:`_flint_fraction` in grevlex (the order of the field's ring); None when E is not a
+    rational function of the gens."""
+    found = _flint_fraction(E, gens, "degrevlex")
+    if found is None:
+        return None
+    n, d = found
+    return dict(zip(n.monoms(), n.coeffs())), dict(zip(d.monoms(), d.coeffs()))
+
+
+def _flint_fraction(E, gens: tuple, order: str):
+    """E = n/d in lowest terms as fmpq_mpoly in ``gens`` (ordered by ``order``), in the unique
+    normal form SymPy's cancellations keep (PolyElement.cancel, dmp_cancel): n, d with integer
+    coefficients, their contents coprime, the leading coefficient of d > 0 in that order (n = 0:
+    d = 1).  E's fraction is multiplied out and divided by the gcd once.  None when E is not
+    built from the gens and rationals by +, ·, integer powers (or divides by 0)."""
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), order)
     index = dict(zip(gens, ctx.gens()))
     one = ctx.from_dict({(0,) * len(gens): 1})
 
@@ -203,7 +214,7 @@ def _flint_lowest_terms(E, gens: tuple) -> tuple[dict, dict] | None:
     except (ValueError, ZeroDivisionError):
         return None
     if n == 0:
-        return {}, {(0,) * len(gens): flint.fmpq(1)}
+        return n, one
     g = n.gcd(d)
     n, d = n / g, d / g
     den = flint.fmpz(1)
@@ -215,8 +226,13 @@ def _flint_lowest_terms(E, gens: tuple) -> tuple[dict, dict] | None:
         content = content.gcd(c.p)
     if d.leading_coefficient() < 0:
         content = -content
-    n, d = n / content, d / content
-    return dict(zip(n.monoms(), n.coeffs())), dict(zip(d.monoms(), d.coeffs()))
+    return n / content, d / content
+
+
+def _expr(P, gens: tuple) -> sp.Expr:
+    """The fmpq_mpoly P in ``gens`` as a SymPy expression (the sum of its terms, as Poly.as_expr)."""
+    return sp.Add(*[sp.Rational(int(c.p), int(c.q)) * sp.Mul(*[x ** e for x, e in zip(gens, m) if e])
+                    for m, c in zip(P.monoms(), P.coeffs())])
 
 
 @caches.for_a_run
@@ -649,8 +665,26 @@ def _has_sign_facts(res, target, expected, H, witness=None) -> list:
 
 @caches.for_a_run
 def _ratio(x, y) -> sp.Expr:
-    """x / y in lowest terms (memoised for a run: a proportionality and its fact read the same ratios)."""
-    return sp.cancel(x / y)
+    """x / y in lowest terms (memoised for a run: a proportionality and its fact read the same ratios):
+    sp.cancel's expression, by :func:`_flint_cancel` for a rational function of its symbols."""
+    E = x / y
+    found = _flint_cancel(E)
+    return found if found is not None else sp.cancel(E)
+
+
+def _flint_cancel(E) -> sp.Expr | None:
+    """sp.cancel(E) for a rational function E of its symbols: SymPy writes E = p/q, cancels in
+    Poly over its symbols (_sort_gens: SymPy's order, lex) to the normal form of
+    :func:`_flint_fraction` and returns P/Q as expressions; None for anything else."""
+    E = sp.sympify(E)
+    if E.is_Number:
+        return None
+    gens = tuple(_sort_gens(E.free_symbols))
+    found = _flint_fraction(E, gens, "lex")
+    if found is None:
+        return None
+    n, d = found
+    return 1 * (_expr(n, gens) / _expr(d, gens))
 
 
 def _ratios(v, w):

@@ -126,3 +126,42 @@ def test_flint_lowest_terms_on_the_step_lemmas():
     assert len(seen) > 50
     for E in seen:
         _same_lowest_terms(E)
+
+
+def _same_cancel(E):
+    """_flint_cancel(E) is sp.cancel(E): the same expression, printed alike."""
+    got, want = T._flint_cancel(E), sp.cancel(E)
+    assert got is not None and got == want and T.show(got) == T.show(want), (E, got, want)
+
+
+@settings(max_examples=300, deadline=None)
+@given(fractions, fractions)
+def test_flint_cancel_is_sympys(p, q):
+    """On quotients of sums, products and integer powers of symbols and rationals the flint route
+    gives sp.cancel's expression; numbers and other expressions are left to sp.cancel."""
+    if q == 0:
+        return
+    E = p / q
+    if E.is_Number or E.has(sp.zoo, sp.nan):
+        assert E.has(sp.zoo, sp.nan) or T._flint_cancel(E) is None
+        return
+    _same_cancel(E)
+    assert T._flint_cancel(sp.sqrt(x) / y) is None
+
+
+def test_flint_cancel_on_the_printed_cases():
+    """Every ratio the six printed cases (S7.2's case_is_the_map) form."""
+    from proofs import section4_2_final_expressions as S42
+    seen = []
+    original = T._flint_cancel
+    T._flint_cancel = lambda E: seen.append(E)      # sp.cancel for all, as before
+    try:
+        T.caches.reset()
+        for key, (c, _s) in S42.CASE_KEYS.items():
+            S42.case_is_the_map(key, S42.PRINTED_S7[key], T.vector(S42.PRINTED_S7[f"p0_{c}"]),
+                                T.vector(S42.PRINTED_S7[f"q0_{c}"]))
+    finally:
+        T._flint_cancel = original
+    assert len(seen) >= 6
+    for E in seen:
+        _same_cancel(E)
