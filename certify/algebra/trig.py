@@ -165,8 +165,16 @@ def _lowest_terms(E):
 def _flint_lowest_terms(E, gens: tuple) -> tuple[dict, dict] | None:
     """The numerator and denominator SymPy's field Q(gens) gives E, as {exponents: fmpq}, from
     :func:`_flint_fraction` in grevlex (the order of the field's ring); None when E is not a
-    rational function of the gens."""
-    found = _flint_fraction(E, gens, "degrevlex")
+    rational function of the gens.  The field inverts without normalising: for E = b^(−k) its
+    numerator and denominator are d^k, n^k from b's n, d (the sign of the denominator as it falls)."""
+    if E.is_Pow and E.exp.is_Integer and E.exp < 0:
+        found = _flint_fraction(E.base, gens, "degrevlex")
+        if found is None or found[0] == 0:
+            return None
+        k = -int(E.exp)
+        found = found[1] ** k, found[0] ** k
+    else:
+        found = _flint_fraction(E, gens, "degrevlex")
     if found is None:
         return None
     n, d = found

@@ -106,7 +106,7 @@ def test_flint_lowest_terms_are_sympys(p, q):
     """Sums, products and integer powers of symbols and rationals (the denominators' signs,
     contents and common factors varied): python-flint's route gives SymPy's field's numerator
     and denominator, as ring elements."""
-    for E in (p, p / q if q != 0 else p, p * q - 1 / (q - x) if q != x else p):
+    for E in (p, p / q if q != 0 else p, p * q - 1 / (q - x) if q != x else p, 1 / (1 - x), (2 - x) ** -2 / 3):
         _same_lowest_terms(E)
     assert T._flint_lowest_terms(sp.sqrt(x) + 1, T._gens(x)) is None
 
