@@ -116,4 +116,3 @@ def test_one_walk_finds_the_atoms(e, extra):
     assert functions == e.atoms(sp.Function) and list(functions) == list(e.atoms(sp.Function))
     assert powers == e.atoms(sp.Pow) and list(powers) == list(e.atoms(sp.Pow))
     assert bare == bare_by_subs(e)
-
