@@ -671,13 +671,17 @@ def _has_sign_facts(res, target, expected, H, witness=None) -> list:
     return out + [signed_fact(W, H)]
 
 
+def cancel(E) -> sp.Expr:
+    """sp.cancel(E), by :func:`_flint_cancel` for a rational function of its symbols."""
+    found = _flint_cancel(E)
+    return found if found is not None else sp.cancel(E)
+
+
 @caches.for_a_run
 def _ratio(x, y) -> sp.Expr:
     """x / y in lowest terms (memoised for a run: a proportionality and its fact read the same ratios):
     sp.cancel's expression, by :func:`_flint_cancel` for a rational function of its symbols."""
-    E = x / y
-    found = _flint_cancel(E)
-    return found if found is not None else sp.cancel(E)
+    return cancel(x / y)
 
 
 def _flint_cancel(E) -> sp.Expr | None:

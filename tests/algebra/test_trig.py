@@ -165,3 +165,20 @@ def test_flint_cancel_on_the_printed_cases():
     assert len(seen) >= 6
     for E in seen:
         _same_cancel(E)
+
+
+def test_cancel_on_the_step_lemmas():
+    """trig.cancel is sp.cancel on every expression the step lemmas cancel (p', ρ, n')."""
+    from certify.dynamics import cones as RC
+    from proofs.section4_1_reduction_theorem import SECTION2_K
+    seen = []
+    original = T.cancel
+    T.cancel = lambda E: seen.append(E) or sp.cancel(E)
+    try:
+        T.caches.reset()
+        RC.steps(SECTION2_K)
+    finally:
+        T.cancel = original
+    assert len(seen) >= 6 * 7
+    for E in seen:
+        assert T.cancel(E) == sp.cancel(E) and T.show(T.cancel(E)) == T.show(sp.cancel(E))
