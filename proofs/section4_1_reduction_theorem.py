@@ -647,10 +647,15 @@ def datum(rng: random.Random) -> Datum:
     q2 = tuple(be * qk + ga * pk for qk, pk in zip(q, p))
     runs = (sim.follow_rays(p, q, r, N_COLLISIONS), sim.follow_rays(p2, q2, r, N_COLLISIONS))
     contacts = [letter] + runs[0].events
-    normals = [R.normal(P, Q) for P, Q in runs[0].rays]
+    n0 = R.normal(*runs[0].rays[0])
+    orbit = R.orbit(R.oriented(letter, n0), r, N_REDUCTION)
+    # the runs' normals, each read first as a multiple of the orbit's there (the same primitive normal, else the gcd)
+    hints = [P.n for P in orbit[1:]] + [None] * len(runs[0].rays)
+    normals = [n0] + [R.normal(P, Q, n) for (P, Q), n in zip(runs[0].rays[1:], hints)]
     planes = ([R.oriented(L, n) for L, n in zip(contacts, normals)],
-              [R.plane(letter, p2, q2)] + [R.plane(e, P, Q) for e, (P, Q) in zip(runs[1].events, runs[1].rays[1:])])
-    return Datum(r, letter, (p, q), runs, normals, planes, R.orbit(planes[0][0], r, N_REDUCTION))
+              [R.plane(letter, p2, q2)] + [R.plane(e, P, Q, n) for e, (P, Q), n in
+                                           zip(runs[1].events, runs[1].rays[1:], hints)])
+    return Datum(r, letter, (p, q), runs, normals, planes, orbit)
 
 
 @quantity("section4_data")
@@ -763,7 +768,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
         same = adjugate and equal
         values = [sp.Rational(int(r0.p), int(r0.q)) for r0 in rates]
         integer = [R.cofactor(letter, r0) for r0 in rates]
-        scaled = [multiple(N_, cof.subs(r, v)) for N_, v in zip(integer, values)]
+        scaled = [multiple(N_, cof.xreplace({r: v})) for N_, v in zip(integer, values)]     # cof at r = v
         # for the kernel: K fixes e_m (m ≠ j); cof is K's cofactor matrix (K^T cof = det K · I, det K given) and the
         # engine's; at each r₀ the integer matrix is k·cof(r₀) (an identity modulo r − r₀) with k > 0
         grounds = identity_facts(*[(ok, [K, sp.eye(3).col(m)], sp.eye(3).col(m))

@@ -95,6 +95,11 @@ def _rational_function(e, gens: list) -> dict:
             return {"num": polynomial_terms(e, gens), "den": [["1", [0] * len(gens)]]}
         except _NotPolynomial:
             pass
+    if gens and _expanded_over_q(e):   # together clears the denominators: the terms of L·e over L
+        try:
+            return _cleared(e, gens)
+        except _NotPolynomial:
+            pass
     n, d = sp.fraction(sp.together(e))
     def terms(x):
         if not gens:
@@ -106,6 +111,33 @@ def _rational_function(e, gens: list) -> dict:
         P = sp.Poly(sp.expand(x), *gens, domain="QQ")
         return sorted([rational(c), list(m)] for m, c in P.terms())
     return {"num": terms(n), "den": terms(d)}
+
+
+def _expanded_over_q(e) -> bool:
+    """e is a sum of terms c·m (or one term), c rational and m a product of natural powers of
+    symbols and function atoms: a polynomial over Q written expanded (distinct monomials)."""
+    for t in sp.Add.make_args(e):
+        c, m = t.as_coeff_Mul()
+        if not c.is_Rational:
+            return False
+        for f in sp.Mul.make_args(m):
+            b, x = f.as_base_exp()
+            if not ((b.is_Symbol or isinstance(b, sp.Function)) and x.is_Integer and x > 0) and f != 1:
+                return False
+    return True
+
+
+def _cleared(e, gens: list) -> dict:
+    """What ``sp.fraction(sp.together(e))`` gives for an expanded polynomial e over Q, as terms:
+    together takes out the gcd of the terms, G/L times a monomial (G the gcd of the numerators
+    and L the lcm of the denominators of the coefficients, G/L in lowest terms), and leaves a
+    sum with integer coefficients; so the numerator is L·e and the denominator L."""
+    P = _mpoly(e, gens)
+    L = flint.fmpz(1)
+    for c in P.coeffs():
+        L = L.lcm(c.q)
+    zeros = [0] * len(gens)
+    return {"num": _terms(P * L, len(gens)), "den": [[rational(flint.fmpq(L)), zeros]]}
 
 
 def _integral(e) -> bool:
@@ -139,6 +171,11 @@ def polynomial_terms(x, gens: list) -> list:
     0), multiplied out in flint's fmpq_mpoly instead of SymPy's expand.  The terms of a polynomial
     are unique, so both give the same list.  _NotPolynomial for anything but rationals, ``gens``,
     sums, products and powers with a natural exponent (the caller then asks SymPy)."""
+    return _terms(_mpoly(x, gens), len(gens))
+
+
+def _mpoly(x, gens: list):
+    """x as an fmpq_mpoly in ``gens`` (:func:`polynomial_terms`; _NotPolynomial otherwise)."""
     ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "lex")
     index = dict(zip(gens, ctx.gens()))
 
@@ -160,8 +197,13 @@ def polynomial_terms(x, gens: list) -> list:
     P = walk(sp.sympify(x))
     if not isinstance(P, flint.fmpq_mpoly):
         P = ctx.from_dict({(0,) * len(gens): P})
+    return P
+
+
+def _terms(P, n: int) -> list:
+    """The terms of the fmpq_mpoly P in n generators as :func:`polynomial_terms` lists them."""
     if P == 0:
-        return [["0", [0] * len(gens)]]
+        return [["0", [0] * n]]
     return sorted([rational(c), [int(k) for k in m]] for m, c in zip(P.monoms(), P.coeffs()))
 
 

@@ -162,23 +162,44 @@ def oriented(letter: str, n) -> Plane:
     return Plane(letter, n if s > 0 else (-n[0], -n[1], -n[2]))
 
 
-def normal(p, q) -> tuple:
+def normal(p, q, candidate: tuple | None = None) -> tuple:
     """The primitive integer vector positively proportional to p ∧ q (p, q rational):
-    p and q are first scaled to integer vectors by positive factors (integer ones are)."""
+    p and q are first scaled to integer vectors by positive factors (integer ones are).
+    ``candidate``: a primitive integer vector, perhaps ±the answer (e.g. the normal of the
+    reduction's plane there): when the integer p ∧ q is k·candidate for an integer k ≠ 0, the
+    answer is sign(k)·candidate (the primitive vector positively proportional to a vector is
+    unique), read with one division instead of the gcd of long entries; otherwise, by the gcd."""
     fmpz = flint.fmpz
     if type(p[0]) is fmpz and type(p[1]) is fmpz and type(p[2]) is fmpz and \
             type(q[0]) is fmpz and type(q[1]) is fmpz and type(q[2]) is fmpz:
-        return primitive(cross(p, q))
+        m = cross(p, q)
+        if candidate is not None:
+            k = _quotient(m, candidate)
+            if k is not None:
+                return candidate if k > 0 else (-candidate[0], -candidate[1], -candidate[2])
+        return primitive(m)
     return primitive(cross(integral(p), integral(q)))
 
 
-def plane(letter: str, p, q) -> Plane:
+def _quotient(m: tuple, c: tuple):
+    """The integer k ≠ 0 with m = k·c (integer vectors), or None."""
+    for t in range(3):
+        if c[t] != 0:
+            k, rest = divmod(m[t], c[t])
+            if rest != 0 or k == 0:
+                return None
+            return k if all(m[s] == k * c[s] for s in range(3) if s != t) else None
+    return None
+
+
+def plane(letter: str, p, q, candidate: tuple | None = None) -> Plane:
     """The reduction state of a physical state (p, q) right after a collision of
-    type ``letter`` (p_i = 0, q_i > 0): P = Span(p, q), normal p ∧ q."""
+    type ``letter`` (p_i = 0, q_i > 0): P = Span(p, q), normal p ∧ q (``candidate``:
+    as in :func:`normal`)."""
     i = INDEX[letter]
     if p[i] != 0 or sign(q[i]) <= 0:
         raise ValueError(f"not a state right after a collision {letter}: need p_{i + 1} = 0 < q_{i + 1}")
-    return oriented(letter, normal(p, q))
+    return oriented(letter, normal(p, q, candidate))
 
 
 def position(P: Plane) -> tuple:
@@ -538,6 +559,88 @@ def trig_step(T: Angles, r) -> Angles:
     k0, k1, k2 = collide(j, T.q(), arb(r))
     d = k0 * x0 + k1 * x1 + k2 * x2
     return angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
+
+
+def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
+    """Along an orbit of Planes: at how many steps P → P1 the trigonometric step
+    (:func:`trig_step`) from the angles of P gives P1's contact and balls of cos, sin of θ, φ
+    overlapping P1's (:func:`angles` at ``prec`` bits), and at how many a sign was
+    undecided.  The same ball operations as :func:`trig_step` and :func:`angles`, in one
+    precision context and with the balls of r, −r and (1 + r)/2 formed once (each state's
+    angles are computed once: they end one step and start the next)."""
+    agree = undecided = 0
+    arb, fmpz = flint.arb, flint.fmpz
+    with precision(prec):
+        rr = arb(r)
+        neg, h = -rr, (1 + rr) / 2
+        last = None
+        for P, P1 in zip(planes, planes[1:]):
+            try:
+                if last is None or last[0] is not P:
+                    last = (P, _angles(P, fmpz))
+                T = last[1]
+                X = _angles(P1, fmpz)
+                last = (P1, X)
+                agree += _trig_agrees(T, X, P1.letter, neg, h, arb)
+            except Undecided:
+                undecided += 1
+    return agree, undecided
+
+
+def _angles(P: Plane, fmpz) -> Angles:
+    """:func:`angles` at the working precision."""
+    n = P.n
+    if type(n[0]) is fmpz and type(n[1]) is fmpz and type(n[2]) is fmpz:
+        return _angles_orthogonal(P.letter, *_position_tangent(P.letter, n))
+    return angles_of(P.letter, position(P), tangent(P))
+
+
+def _angles_orthogonal(letter: str, p, w) -> Angles:
+    """:func:`angles_of` for integer p and w with w · p = 0 (the position and tangent of
+    :func:`_position_tangent`: p = ±(n ∧ e_i) and w = |n|² e_i − n_i n are ⊥): the tangential
+    part |p|² w − (w · p) p is |p|² w, the same integers; the same balls from there."""
+    arb = flint.arb
+    p0, p1, p2 = p
+    q0, q1, q2 = w
+    pp = p0 * p0 + p1 * p1 + p2 * p2
+    w0, w1, w2 = arb(pp * q0), arb(pp * q1), arb(pp * q2)
+    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
+    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
+    ct, st = (c * p1, c * p2) if letter == "a" else (c * p2, c * p0) if letter == "b" else (c * p0, c * p1)
+    e0, e1, e2 = e_theta(letter, ct, st)
+    return Angles(letter, ct, st, (d * w0) * e0 + (d * w1) * e1 + (d * w2) * e2, d * (w0, w1, w2)[INDEX[letter]])
+
+
+def _trig_agrees(T: Angles, X: Angles, letter: str, neg, h, arb) -> bool:
+    """:func:`trig_step` from T (with the balls −r and (1 + r)/2 given), compared with X:
+    the same contact and every ball overlapping."""
+    cp = T.cp
+    if cp > 0:
+        s = 1
+    elif cp < 0:
+        s = -1
+    elif cp.is_zero():
+        raise Corner("cos φ = 0")
+    else:
+        raise Undecided(f"sign of {cp} undecided")
+    j, p1 = CASES[(T.letter, s)]
+    if j != letter:
+        return False
+    ct, st, sp = T.ct, T.st, T.sp
+    x0, x1, x2 = p1(ct, st, cp, sp)
+    x0, x1, x2 = arb(x0), arb(x1), arb(x2)
+    c = 1 / (x0 * x0 + x1 * x1 + x2 * x2).sqrt()
+    x0, x1, x2 = c * x0, c * x1, c * x2
+    q1, q2, q3 = Q0[T.letter](ct, st, cp, sp)
+    if j == "a":
+        k0, k1, k2 = neg * q1, q2 + h * q1, q3
+    elif j == "b":
+        k0, k1, k2 = q1 + h * q2, neg * q2, q3 + h * q2
+    else:
+        k0, k1, k2 = q1, q2 + h * q3, neg * q3
+    d = k0 * x0 + k1 * x1 + k2 * x2
+    Y = angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
+    return Y.ct.overlaps(X.ct) and Y.st.overlaps(X.st) and Y.cp.overlaps(X.cp) and Y.sp.overlaps(X.sp)
 
 
 # --- printed vector formulas ---------------------------------------------------

@@ -84,6 +84,29 @@ def test_a_fraction_is_left_to_together(e):
     assert not facts._integral(e)
 
 
+@settings(max_examples=300, deadline=None)
+@given(exprs)
+def test_an_expanded_polynomial_over_q_is_l_times_itself_over_l(e):
+    """For a polynomial over Q written expanded, rational_function's shortcut (the terms of L·e
+    over L, L the lcm of the denominators) is what SymPy's together and fraction give; an
+    unexpanded one is left to together (whose numerator need not be L·e: (r+1)²/2 − (r−1)²/2)."""
+    g = sp.expand(e)
+    assert facts._expanded_over_q(g)
+    n, d = sp.fraction(sp.together(g))
+    assert facts._rational_function(g, GENS) == {"num": sympy_terms(n, GENS), "den": sympy_terms(d, GENS)}
+    h = (r + 1) ** 2 / 2 - (r - 1) ** 2 / 2
+    assert not facts._expanded_over_q(h) and sp.fraction(sp.together(h))[1] == 2 and sp.expand(h) == 2 * r
+
+
+@pytest.mark.parametrize("e", [x / 2 + sp.cos(th) ** 2 * y / 6, -x * r / 4, sp.Rational(3, 2),
+                               sp.Rational(-5, 6) * x ** 3 - y / 10, 2 * x * y / 3 + 4 * x / 9])
+def test_expanded_polynomials_over_q(e):
+    """Content, common monomials and signs: the same numerator and denominator as together's."""
+    n, d = sp.fraction(sp.together(e))
+    assert facts._expanded_over_q(e)
+    assert facts._rational_function(e, GENS) == {"num": sympy_terms(n, GENS), "den": sympy_terms(d, GENS)}
+
+
 @settings(max_examples=200, deadline=None)
 @given(exprs, st.sampled_from([x, th, r * sp.cos(x), sp.Dummy() * y, sp.sin(y) * y, sp.sqrt(x), sp.cos(x ** 2)]))
 def test_one_walk_finds_the_atoms(e, extra):

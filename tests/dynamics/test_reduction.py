@@ -203,6 +203,45 @@ def test_trigonometric_step_on_an_exact_state():
     assert all(a.overlaps(b) for a, b in ((T1.ct, X.ct), (T1.cp, X.cp)))
 
 
+def _trig_agreement_step_by_step(planes, r, prec):
+    """What S7.2 compared before trig_agreement: trig_step from angles(P) against angles(P1), pair by pair."""
+    agree = undecided = 0
+    for P, P1 in zip(planes, planes[1:]):
+        try:
+            with precision(prec):
+                T, X = R.trig_step(R.angles(P), r), R.angles(P1)
+            agree += T.letter == P1.letter and all(a.overlaps(b) for a, b in
+                                                   ((T.ct, X.ct), (T.st, X.st), (T.cp, X.cp), (T.sp, X.sp)))
+        except sim.Undecided:
+            undecided += 1
+    return agree, undecided
+
+
+@pytest.mark.parametrize("prec", [128, 4])
+def test_trig_agreement_is_the_step_by_step_comparison(prec):
+    """trig_agreement counts what trig_step and angles give pair by pair: on exact orbits (all
+    agree at 128 bits; at 4 bits signs go undecided), and on orbits with planes swapped (some
+    steps then disagree)."""
+    rng, seen = random.Random(7), set()
+    for r0 in (Q(1, 10), Q(1, 37), Q(50, 99)):
+        orbits = []
+        for letter in LETTERS:
+            n = [rng.randint(-30, 30) for _ in range(3)]
+            try:
+                P = R.canonical(letter, n)
+                R.next_letter(P)
+            except (R.Corner, ValueError):
+                continue
+            planes = R.orbit(P, r0, 120)
+            orbits += [planes, planes[:40:2] + planes[40:]]
+        for planes in orbits:
+            got = R.trig_agreement(planes, r0, prec)
+            assert got == _trig_agreement_step_by_step(planes, r0, prec)
+            seen.add((got[0] + got[1] == len(planes) - 1, got[1] > 0))
+    assert (False, False) in seen or (False, True) in seen     # some disagreement was counted
+    assert (True, prec < 64) in seen
+
+
 def test_admissible_words_and_blocks():
     """The windows the proofs allow are the words with no letter twice in a row and no aca, cac."""
     allowed = RC.transitions(CTX.get("reduction_cones"))
@@ -349,6 +388,14 @@ def test_angles_of_an_integer_normal_is_the_generic_one(letter, n):
         a, b = R.angles(P), R.angles_of(letter, *want)
     assert [z.mid().str(40) + z.rad().str(5) for z in (a.ct, a.st, a.cp, a.sp)] == \
         [z.mid().str(40) + z.rad().str(5) for z in (b.ct, b.st, b.cp, b.sp)]
+    with precision(128):
+        c = R._angles_orthogonal(letter, *want)         # w · p = 0 read from the construction
+    assert [_bits(z) for z in (c.ct, c.st, c.cp, c.sp)] == [_bits(z) for z in (b.ct, b.st, b.cp, b.sp)]
+
+
+def _bits(z: flint.arb) -> tuple:
+    """A ball bit for bit: its midpoint and radius as (mantissa, exponent)."""
+    return z.mid().man_exp(), z.rad().man_exp()
 
 
 @settings(max_examples=100, deadline=None)
@@ -408,3 +455,27 @@ def test_vectorial_ray_is_the_vectorial_step_up_to_a_positive_factor(letter, u, 
     assert j2 == j and ray == tuple(2 * r0.q * z for z in ut)
     for v, w in ((ray, ut), (ut, u), (u, tuple(-z for z in u)), (u, (0, 0, 0)), ((0, 0, 0), u), (u, u)):
         assert R.same_ray(v, w) == (R.cross(v, w) == (0, 0, 0) and R.dot(v, w) > 0)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.tuples(*[st.integers(-10 ** 12, 10 ** 12)] * 2), st.tuples(*[st.integers(-10 ** 12, 10 ** 12)] * 2),
+       st.integers(1, 10 ** 6), st.tuples(*[st.integers(-4, 4)] * 3))
+def test_normal_with_a_candidate_is_the_normal(p, q, q1, other):
+    """normal(p, q, candidate) and plane(..., candidate) are normal(p, q) and plane(...) whatever
+    the primitive candidate: the answer, its opposite, another vector, one with zeros."""
+    p, q = (flint.fmpz(0),) + tuple(map(flint.fmpz, p)), (flint.fmpz(q1),) + tuple(map(flint.fmpz, q))
+    if not any(R.cross(p, q)):
+        return
+    want = R.normal(p, q)
+    candidates = [want, tuple(-z for z in want), (flint.fmpz(0), flint.fmpz(0), flint.fmpz(1))]
+    if any(other):
+        candidates.append(R.primitive(tuple(map(flint.fmpz, other))))
+    for c in candidates:
+        assert R.normal(p, q, c) == want
+        try:
+            P = R.plane("a", p, q)
+        except R.Corner:
+            with pytest.raises(R.Corner):
+                R.plane("a", p, q, c)
+            continue
+        assert R.plane("a", p, q, c) == P
