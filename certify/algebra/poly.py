@@ -91,8 +91,9 @@ def _flint_tree(e: sp.Expr, var) -> flint.fmpq_poly | None:
     if e.is_Symbol:
         return flint.fmpq_poly([0, 1]) if e == var else None
     if e.is_Add or e.is_Mul:
-        parts = [_flint_tree(a, var) for a in e.args]
-        if any(q is None for q in parts):
+        found = [_flint_tree(a, var) for a in e.args]
+        parts = [q for q in found if q is not None]
+        if len(parts) < len(found):
             return None
         return reduce(lambda a, b: a + b, parts) if e.is_Add else reduce(lambda a, b: a * b, parts)
     if e.is_Pow and e.exp.is_Integer and e.exp >= 0:

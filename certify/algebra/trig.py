@@ -498,7 +498,7 @@ def _flint_factor_list(g) -> tuple | None:
         c, m = t.as_coeff_Mul()
         if not c.is_Integer:
             return None
-        powers = {}
+        powers: dict = {}
         for f in sp.Mul.make_args(m):
             b, e = f.as_base_exp()
             if not (b.is_Symbol and e.is_Integer and e > 0):
