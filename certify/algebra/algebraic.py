@@ -27,19 +27,7 @@ from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_count
 
 _ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
 caches.register(_ISOLATED.clear)
-_KEYS: dict = {}                 # id of a polynomial -> (it, poly_key of it)
-caches.register(_KEYS.clear)
-
-
-def _key_of(p) -> tuple:
-    """poly_key(p), memoised by identity (the factors of a spectrum's critical polynomials
-    are the same objects in every table)."""
-    entry = _KEYS.get(id(p))
-    if entry is None or entry[0] is not p:
-        if len(_KEYS) > 20000:
-            _KEYS.clear()
-        entry = _KEYS[id(p)] = (p, poly_key(p))
-    return entry[1]
+_key_of = caches.by_identity(poly_key)   # a spectrum's critical factors: the same objects in every table
 
 
 def _sign(a) -> int:

@@ -355,19 +355,11 @@ def _eval_form(form, R, L) -> flint.arb:
     return total / d
 
 
-_FORMS: dict = {}                # id of a list of terms -> (it, its Horner form)
-caches.register(_FORMS.clear)
-
-
+@caches.by_identity
 def _form_of(terms) -> tuple:
     """:func:`_horner_form` of a list of terms, memoised by identity (a condition and its
     twin at the other fixed point share the lists of N₀ and D₀)."""
-    entry = _FORMS.get(id(terms))
-    if entry is None or entry[0] is not terms:
-        if len(_FORMS) > 20000:
-            _FORMS.clear()
-        entry = _FORMS[id(terms)] = (terms, _horner_form(terms))
-    return entry[1]
+    return _horner_form(terms)
 
 
 def _forms(cond: Condition) -> dict:

@@ -40,31 +40,24 @@ def ring_terms_data(terms) -> list:
     return sorted([rational(c), [int(i), int(j)]] for c, i, j in terms)
 
 
-_TERMS_DATA: dict = {}           # id of a polynomial or of its list of terms -> (it, ring_terms_data of it)
-caches.register(_TERMS_DATA.clear)
-
-
-def _data_of(obj, make) -> list:
-    """``make()`` for the object ``obj`` (a spectrum's cp, a condition's terms: the same
-    objects in every query of a table), memoised by identity; the lists are shared by the
-    records that hold them (a record is never modified)."""
-    entry = _TERMS_DATA.get(id(obj))
-    if entry is None or entry[0] is not obj:
-        if len(_TERMS_DATA) > 20000:
-            _TERMS_DATA.clear()
-        entry = _TERMS_DATA[id(obj)] = (obj, make())
-    return entry[1]
-
-
-def _cp_data(spectrum) -> list:
-    """The terms of a spectrum's cp as a record holds them."""
+@caches.by_identity
+def _cp_data(ring_cp) -> list:
+    """The terms of a spectrum's cp (``spectrum.ring_cp``: the same object in every query of a
+    table) as a record holds them; the list is shared by the records that hold it (a record is
+    never modified)."""
     from .poly import ring_terms
-    return _data_of(spectrum.ring_cp, lambda: ring_terms_data(ring_terms(spectrum.ring_cp)))
+    return ring_terms_data(ring_terms(ring_cp))
+
+
+@caches.by_identity
+def _terms_data(terms) -> list:
+    """:func:`ring_terms_data` of a condition's terms, memoised by identity (shared as above)."""
+    return ring_terms_data(terms)
 
 
 def _parts_data(cond) -> dict:
     """The non-zero parts of a condition (N0, N1, D0, D1, delta) as a record holds them."""
-    return {k: _data_of(v, lambda v=v: ring_terms_data(v)) for k, v in cond.terms.items() if v}
+    return {k: _terms_data(v) for k, v in cond.terms.items() if v}
 
 
 _CIRCLE_ARGS = ("θ", "φ")
@@ -347,7 +340,7 @@ def cell_branches(answer, cell) -> dict:
     if cell.table is None:
         raise ValueError("a cell outside a sign table")
     spectrum, cond = cell.table.source
-    return {"kind": "sign_table", "cp": _cp_data(spectrum), "parts": _parts_data(cond),
+    return {"kind": "sign_table", "cp": _cp_data(spectrum.ring_cp), "parts": _parts_data(cond),
             "ends": [number_of(cell.lo), number_of(cell.hi)], "samples": [rational(cell.sample)],
             "signs": [["?"] * len(answer)]}
 
@@ -379,7 +372,7 @@ def sign_query(result, table, branch, lo=None, hi=None, include_points=True):
         if branch < len(row):
             row[branch] = _sign_code(c.signs[branch])
         rows.append(row)
-    data = {"kind": "sign_table", "cp": _cp_data(spectrum), "parts": _parts_data(cond),
+    data = {"kind": "sign_table", "cp": _cp_data(spectrum.ring_cp), "parts": _parts_data(cond),
             "ends": [number_of(cells[0].lo)] + [number_of(c.hi) for c in cells],
             "samples": [rational(c.sample) for c in cells], "signs": rows}
     return {"kind": "signs_query", "table": data, "branch": int(branch),
@@ -463,7 +456,7 @@ def branch_signs(signs, spectrum, cond, rc, only=None) -> dict:
     first, a double root twice): the kernel isolates them in Q(rc)[λ] and signs g exactly."""
     if signs is None:
         raise ValueError("the branches at this r were not isolated")
-    return {"kind": "branch_signs_at", "cp": _cp_data(spectrum), "parts": _parts_data(cond), "r": number_of(rc),
+    return {"kind": "branch_signs_at", "cp": _cp_data(spectrum.ring_cp), "parts": _parts_data(cond), "r": number_of(rc),
             "signs": _point_claims(signs, only)}
 
 
