@@ -103,16 +103,16 @@ MUTANTS = [
            "if new_top > BIG or", "if new_top >= BIG or", survives=True),
     # ---- trapping
     Mutant("κ without its R|β| term", "trapping", TRAP,
-           "kappa = norm_a / den + R * _norm(beta) / den", "kappa = norm_a / den", listed=True),
+           "kappa = norm_a / den + R * form.norm_beta / den", "kappa = norm_a / den", listed=True),
     Mutant("the contact walls dropped", "trapping", TRAP,
            ',\n                Wall(f"contact {k + 1} ({letters[k + 1]})", row(k, i, sigma))]', "]",
            listed=True, survives=True),
     Mutant("R < ρ tested at the ball's midpoint", "trapping", TRAP,
            "if not R < rho:", "if not R.mid() < rho:", listed=True),
     Mutant("the walls' ρ|Tᵀℓ| term with the wrong sign", "trapping", TRAP,
-           "low = flint.arb(_dot(w.row, c)) - rho", "low = flint.arb(_dot(w.row, c)) + rho"),
+           "low = value - rho", "low = value + rho"),
     Mutant("the denominator α + |β|ρ", "trapping", TRAP,
-           "den = flint.arb(alpha) - rho * _norm(beta)", "den = flint.arb(alpha) + rho * _norm(beta)"),
+           "den = form.alpha - rho * form.norm_beta", "den = form.alpha + rho * form.norm_beta"),
     Mutant("R without its ‖A‖ρ term", "trapping", TRAP,
            "R = (norm_g + norm_a * rho) / den", "R = norm_g / den"),
     Mutant("‖A‖ by half the Frobenius norm squared, no root term", "trapping", TRAP,
@@ -128,8 +128,9 @@ MUTANTS = [
 
 def copy_tree(dest: Path) -> None:
     ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".hypothesis")
-    for name in ("certify", "tests"):
-        shutil.copytree(ROOT / name, dest / name, ignore=ignore)
+    for name in ("certify", "certify_kernel", "proofs", "tests"):     # the tests' conftest loads proofs and the kernel
+        if (ROOT / name).exists():
+            shutil.copytree(ROOT / name, dest / name, ignore=ignore)
     for name in ("pyproject.toml", "conftest.py"):
         if (ROOT / name).exists():
             shutil.copy2(ROOT / name, dest / name)

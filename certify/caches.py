@@ -39,6 +39,25 @@ def reset() -> None:
         clear()
 
 
+def by_identity(func: Callable, limit: int = 20000) -> Callable:
+    """``func(obj)`` memoised by the identity of ``obj`` until :func:`reset` (its memo registered
+    here), for objects that are the same in many queries of a run and whose hash is costly or
+    missing (a polynomial, a list of terms).  ``obj`` is kept alive beside its value, so its id
+    is not reused while the entry lasts; past ``limit`` entries the memo starts again."""
+    memo: dict = {}
+    register(memo.clear)
+
+    @functools.wraps(func)
+    def inner(obj):
+        entry = memo.get(id(obj))
+        if entry is None or entry[0] is not obj:
+            if len(memo) > limit:
+                memo.clear()
+            entry = memo[id(obj)] = (obj, func(obj))
+        return entry[1]
+    return inner
+
+
 def for_a_run(func: Callable) -> Callable:
     """``func`` memoised until :func:`reset` (its memo registered here): for pure steps that
     several callers of one run take on the same arguments.  An unhashable argument is

@@ -38,12 +38,39 @@ class Recording:
 
     def add(self, ob: dict) -> str:
         """The id of ``ob`` (a new one if it was not recorded before)."""
-        key = json.dumps(ob, sort_keys=True, ensure_ascii=False)
+        key = _key(ob)
         if key not in self.by_key:
             self.by_key[key] = f"{self.prefix}:{len(self.items) + 1}"
             self.items.append({"id": self.by_key[key], **ob})
             self.by_id[self.by_key[key]] = self.items[-1]
         return self.by_key[key]
+
+
+def _key(ob: dict) -> str:
+    """A text equal for two obligations iff their contents are: their JSON, where the
+    polynomials of a sign table ("cp", "parts": the same list objects in every query of a
+    table) are written once per object (:func:`_text`)."""
+    if "cp" not in ob and "parts" not in ob:
+        return json.dumps(ob, sort_keys=True, ensure_ascii=False)
+    rest = {k: v for k, v in ob.items() if k not in ("cp", "parts")}
+    parts = ob.get("parts")
+    return json.dumps([json.dumps(rest, sort_keys=True, ensure_ascii=False), _text(ob.get("cp")),
+                       sorted((k, _text(v)) for k, v in parts.items()) if isinstance(parts, dict) else _text(parts)])
+
+
+_TEXTS: dict = {}                # id of a list -> (it, its JSON)
+
+
+def _text(value) -> str:
+    """json.dumps of a list, memoised by identity (a list in a record is never modified)."""
+    if not isinstance(value, list):
+        return json.dumps(value, sort_keys=True, ensure_ascii=False)
+    entry = _TEXTS.get(id(value))
+    if entry is None or entry[0] is not value:
+        if len(_TEXTS) > 20000:
+            _TEXTS.clear()
+        entry = _TEXTS[id(value)] = (value, json.dumps(value, sort_keys=True, ensure_ascii=False))
+    return entry[1]
 
 
 _ACTIVE: list[Recording] = []
@@ -246,6 +273,12 @@ def fact(build: Callable, piece: Callable | None = None) -> Callable:
             return answer
         return inner
     return wrap
+
+
+def recording_now() -> bool:
+    """Whether a deciding function called here would record its fact (a certificate is
+    being made and no :func:`quiet` block is open)."""
+    return bool(_ACTIVE) and not _ACTIVE[-1].depth
 
 
 def silent(func: Callable) -> Callable:

@@ -60,10 +60,10 @@ from certify.run import (
     Check,
     certificate,
     conclude,
-    first_member,
     gathered,
     overridden,
     product_fact,
+    read_first_member,
     take,
     unsupported_fact,
 )
@@ -119,12 +119,15 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
     ev = [f"w = {word}; M_w = `{show(cand.M.tolist())}`", f"cp(M_w) = `{show(sp.collect(cp, lam))}`",
           f"q(0) = (-1, u, v), u = q_2(0) = `{show(sp.factor(u_num))}` / `{show(sp.factor(u_den))}`"]
     # which basic quantity vanishes at r1: resultants with cp, and the exact Gröbner route for u
+    # a - d and Δ in the engine's ring (the same polynomials as SymPy's expansions, without them)
+    A, B, C, D = cand.abcd_ring
     quantities = {"u = q_2(0) (numerator)": u_num, "u (denominator)": u_den,
                   "v = q_3(0) (numerator)": sp.fraction(sp.cancel(cand.q0[2].as_expr()))[0],
-                  "a - d": sp.expand(a - d), "b": b, "c": c, "Δ = (a-d)² + 4bc": sp.expand((a - d) ** 2 + 4 * b * c)}
+                  "a - d": A - D, "b": B, "c": C, "Δ = (a-d)² + 4bc": (A - D) ** 2 + 4 * B * C}
     hits = []
     for name, g in quantities.items():
-        R = resultant_lambda(sp.expand(g), cp)
+        R = resultant_lambda(g if name in ("a - d", "b", "c", "Δ = (a-d)² + 4bc") else sp.expand(g),
+                             cand.spectrum.ring_cp)
         if not R.is_zero() and divides(quad, R):
             hits.append(name)
         ev.append(f"Res_λ({name}, cp) = `{show_factored_int(R)}`")
@@ -464,22 +467,21 @@ def reading_counts(words: list[str], pattern: str) -> list[tuple[str, int, int]]
     """For each reading: how many of ``words`` (classes of rotations and mirror) contain
     ``pattern`` with the mirror (some orientation does), and how many oriented patterns
     do without it (the word and its mirror counted apart)."""
+    oriented = [orientations(w) for w in words]          # each word's orientations, once
     out = []
     for name, reads in READINGS.items():
-        with_mirror = sum(any(reads(v, pattern) for v in orientations(w)) for w in words)
-        without = sum(reads(v, pattern) for w in words for v in orientations(w))
-        out.append((name, with_mirror, without))
+        hits = [[bool(reads(v, pattern)) for v in vs] for vs in oriented]
+        out.append((name, sum(any(h) for h in hits), sum(sum(h) for h in hits)))
     return out
 
 
 def committed_census() -> dict | None:
     """The summary "census" of reports/census.json of the source checkout (``certify census``),
-    or None; its per-word records are not read (:func:`certify.run.files.first_member`)."""
+    or None; its per-word records are not read (:func:`certify.run.files.read_first_member`)."""
     from pathlib import Path
     try:
-        text = (Path(__file__).resolve().parents[1] / "reports" / "census.json").read_text(encoding="utf-8")
-        return first_member(text, "census")
-    except (OSError, ValueError):
+        return read_first_member(Path(__file__).resolve().parents[1] / "reports" / "census.json", "census")
+    except (KeyError, ValueError):
         return None
 
 

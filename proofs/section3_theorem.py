@@ -58,6 +58,7 @@ from certify.algebra import (
     to_fmpq,
     to_fmpq_poly,
     to_fmpz_poly,
+    to_ring,
     u,
     unique_root,
     v,
@@ -82,6 +83,7 @@ from certify.run import (
     digits_check,
     eliminant_check,
     fact_ids,
+    for_a_run,
     gathered,
     identity_facts,
     identity_modulo_facts,
@@ -181,9 +183,38 @@ def r1_of(printed) -> Algebraic:
     return Algebraic.surd(*printed)
 
 
+@for_a_run
 def fixed_point(a, b, c, d) -> FixedPoint:
     """The fixed point x₊ of the printed f(x) = (ax + b)/(cx + d)."""
     return FixedPoint(parse(a), parse(b), parse(c), parse(d))
+
+
+def field_matrix(K) -> list[list]:
+    """A matrix of rational functions as rows of elements of Q(λ, r, ...) (canonical: equal
+    entries are equal elements)."""
+    return [[to_field(K[i, j]) for j in range(K.cols)] for i in range(K.rows)]
+
+
+def field_det(F: list[list]):
+    """The determinant of a 3×3 matrix of elements of Q(λ, r, ...) (rows), by cofactors."""
+    return (F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) - F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0])
+            + F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]))
+
+
+def field_product(factors) -> list[list]:
+    """The product of the matrices ``factors`` (left to right), computed in Q(λ, r, ...)."""
+    out = field_matrix(factors[0])
+    for K in factors[1:]:
+        Kf = field_matrix(K)
+        out = [[sum((row[k] * Kf[k][j] for k in range(len(Kf))), to_field(0)) for j in range(len(Kf[0]))]
+               for row in out]
+    return out
+
+
+@for_a_run
+def cancelled(e: sp.Expr) -> sp.Expr:
+    """sp.cancel(e), memoised for the run (the same quotients recur in several claims)."""
+    return sp.cancel(e)
 
 
 def printed_uv(U, V):
@@ -200,15 +231,16 @@ def printed_uv(U, V):
 def matrix_of_ababcb(M, M_text):
     """The product of the collision matrices in time order a, b, a, b, c, b."""
     printed = sp.Matrix(parse(M_text))
-    direct = (B_ * C_ * B_ * A_ * B_ * A_).applyfunc(sp.factor)
     word = [B_, C_, B_, A_, B_, A_]
+    direct = field_product(word)
+    computed = field_matrix(M)
     checks = []
     for i in range(3):
         for j in range(3):
-            ok = sp.simplify(M[i, j] - printed[i, j]) == 0
+            ok = computed[i][j] == to_field(printed[i, j])      # equal in Q(r): the difference is 0
             checks.append(Check(f"entry ({i + 1},{j + 1}) as printed", ok, [f"computed `{show(M[i, j])}`"],
                                 obligations=product_fact(ok, word, printed, 3 * i + j)))
-    same = (direct - M).applyfunc(sp.simplify) == sp.zeros(3, 3)
+    same = direct == computed
     checks.append(Check("word_matrix('ababcb') is the product BCBABA", same,
                         obligations=product_fact(same, word, M)))
     return conclude(checks, note="l. 259 has an unbalanced parenthesis, `(r^3 - r^2 + 7r + 9))/32`; read without it.")
@@ -242,9 +274,9 @@ def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
     positive eigenvalue certified on the branch table: the largest eigenvalue is > 0
     on ]0,1[.  The paper's argument, cp(0) = -det M < 0 and cp(λ) → +∞, rests on
     cp(0) = -det M, which holds for every 3×3 matrix: evidence, not a check."""
-    det = sp.factor(M.det())
+    det = sp.factor(field_det(field_matrix(M)).as_expr())
     T = spectrum.table("λ", lam, 0, 1)
-    as_printed = sp.expand(det - parse(det_text)) == 0
+    as_printed = to_field(det) == to_field(parse(det_text))
     printed_det = determinant_fact(as_printed, M, parse(det_text))
     ivs = sign_intervals(to_fmpq_poly(det), 0, 1)
     with gathered(again=True) as reading:        # the printed sign and range, read on the sign intervals
@@ -263,11 +295,16 @@ def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
 
 def cardano(cp):
     """(q/2)² + (p/3)³ for the depressed cubic t³ + pt + q of the monic cubic cp in λ."""
-    c = sp.Poly(cp, lam).all_coeffs()
-    a2, a1, a0 = [ci / c[0] for ci in c[1:]]
-    p = a1 - a2 ** 2 / 3
-    q = 2 * a2 ** 3 / 27 - a2 * a1 / 3 + a0
-    return sp.expand((q / 2) ** 2 + (p / 3) ** 3)
+    P = to_ring(cp)
+    L = P.ring.gens[0]                      # λ, the first generator of the ring
+    c = [P.coeff_wrt(L, k) for k in range(P.degree(L), -1, -1)]
+    if len(c) != 4 or not c[0].is_ground:
+        raise ValueError("cp is not a cubic in λ with a constant leading coefficient")
+    a2, a1, a0 = [ci * (1 / c[0].LC) for ci in c[1:]]
+    third, half = sp.Rational(1, 3), sp.Rational(1, 2)
+    p = a1 - a2 ** 2 * third
+    q = a2 ** 3 * sp.Rational(2, 27) - a2 * a1 * third + a0
+    return ((q * half) ** 2 + (p * third) ** 3).as_expr()     # expanded: the sparse polynomial's terms
 
 
 @certificate("T4", "l. 340-349", "Δ_cp = -(1/1811939328)(r-1)^4(r+1)^6(3r^2-14r+3)^2 P0(r), and three real "
@@ -284,17 +321,18 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     and its truth, for each sign of Δ_cp, compared with that of Disc > 0."""
     delta = parse(delta_text.replace("P0", f"({P0_text})"))
     disc = sp.discriminant(cp, lam)
-    ratio = sp.cancel(disc / delta) if delta != 0 else None
+    ratio = (to_field(disc) / to_field(delta)).as_expr() if delta != 0 else None   # canceled
     card = cardano(cp)
+    card_same = to_field(card) == to_field(delta)
     constant = ratio is not None and ratio.is_number and ratio != 0
     condition = statements.relation(three_real_when, {"Δ_cp": DELTA})
     three_real = {s: constant and int(sp.sign(ratio)) * s > 0 for s in (-1, 0, 1)}   # Disc = ratio·Δ_cp > 0
-    flint_same = same_up_to_constant(discriminant_lambda(cp), to_fmpz_poly(sp.factor(delta)))
+    flint_same = same_up_to_constant(discriminant_lambda(cp), to_fmpz_poly(delta))
     return conclude([
         Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
               obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional")),
-        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", sp.expand(card - delta) == 0,
-              obligations=identity_facts((sp.expand(card - delta) == 0, card, delta))),
+        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", card_same,
+              obligations=identity_facts((card_same, card, delta))),
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
               [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
@@ -427,7 +465,8 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
 def eigenvector_components(M, U, V):
     """Substitute q(0) = (-1, u, v) into rows 1 and 2 of M q - λ q: zero in Q(r, λ)."""
     q0 = sp.Matrix([-1, parse(U), parse(V)])
-    res = (M * q0 - lam * q0).applyfunc(sp.cancel)
+    Mf, qf = field_matrix(M), [to_field(e) for e in q0]
+    res = [sum((Mf[i][j] * qf[j] for j in range(3)), -to_field(lam) * qf[i]) for i in range(3)]   # in Q(λ, r)
     cpM = characteristic_polynomial(M)
     third = reduce_mod(res[2], cpM)
     return conclude([
@@ -460,9 +499,11 @@ def position_map_of_ababcb(candidate, a, b, c, d):
     minors = {f"{names[i]}{names[j]}": reduce_mod(P[i] * comp[j] - P[j] * comp[i], cp)
               for i in range(4) for j in range(i + 1, 4)}
     word = "".join(s.letter for s in steps)
-    factor = sp.cancel(P[2].as_expr() / comp[2].as_expr())
+    ratio = P[2] / comp[2]
+    constant = ratio.numer.is_ground and ratio.denom.is_ground
+    factor = ratio.as_expr() if constant else sp.cancel(P[2].as_expr() / comp[2].as_expr())
     p1 = steps[-1].position(0)
-    scaled = (sp.expand(P[2].as_expr() - factor * comp[2].as_expr()) == 0, P[2].as_expr(), factor * comp[2].as_expr())
+    scaled = (P[2] == to_field(factor) * comp[2], P[2].as_expr(), factor * comp[2].as_expr())
     return conclude([
         Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", p1 != 0,
               obligations=identity_facts((p1 == 0, p1.as_expr(), sp.Integer(0)))),
@@ -630,7 +671,7 @@ def fixed_point_tables(spectrum, a, b, c, d, lo, hi):
     """Sign tables of x₊ and x₋ = (a-d)/c - x₊ (x real only where Δ ≥ 0)."""
     fp = fixed_point(a, b, c, d)
     xp = spectrum.table("x₊", x, lo, hi, fp)
-    xm = spectrum.table("x₋", sp.cancel((parse(a) - parse(d)) / parse(c)) - x, lo, hi, fp)
+    xm = spectrum.table("x₋", cancelled((parse(a) - parse(d)) / parse(c)) - x, lo, hi, fp)
     return fp, xp, xm
 
 
@@ -641,7 +682,7 @@ def fixed_point_signs_at(spectrum, fp, rc, branch) -> set:
         pt = spectrum.sign_at_point(Condition.of("(a-d)/c", (fp.a - fp.d) / fp.c), rc)
         return {pt[branch] if pt else "?"}
     out = set()
-    for name, g in (("x₊", x), ("x₋", sp.cancel((fp.a - fp.d) / fp.c) - x)):
+    for name, g in (("x₊", x), ("x₋", cancelled((fp.a - fp.d) / fp.c) - x)):
         pt = spectrum.sign_at_point(Condition.of(name, g, fp), rc)
         out.add(pt[branch] if pt else "?")
     return out
@@ -702,7 +743,7 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
                                      cells_negative and len(zeros) == 1 and zeros[0] == Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
                                      corrects=printed[4], obligations=list(facts_zeros))]
     for z in zeros:
-        x0 = sp.cancel((fp.a - fp.d) / (2 * fp.c))
+        x0 = cancelled((fp.a - fp.d) / (2 * fp.c))
         sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), z)
         tc = spectrum.sign_at_point(Condition.of("t_c - t_a", x0 / (-parse(V)) - 1), z)
         sv = spectrum.sign_at_point(Condition.of("v", parse(V)), z)
@@ -821,7 +862,7 @@ def velocity_inequalities(spectrum, velocities, U, V, inequality):
     qs = velocities_of(WORD)
     checks = []
     for name, (k, i, text) in velocities.items():
-        same = sp.expand(qs[k][i] - parse(text)) == 0
+        same = to_field(qs[k][i]) == to_field(parse(text))
         T = spectrum.table(name, parse(text).subs(printed_uv(U, V)), 0, 1)
         up, low = T.signs(UPPER, lo, hi), T.signs(LOWER, lo, hi)
         ok = st.relation.holds_on(Q_VELOCITY, up) and st.relation.holds_on(Q_VELOCITY, low)
@@ -832,6 +873,7 @@ def velocity_inequalities(spectrum, velocities, U, V, inequality):
     return conclude(checks)
 
 
+@for_a_run
 def velocities_of(word):
     """q(t_0), ..., q(t_n) for q(0) = (-1, u, v) with u, v free."""
     return velocities(word, sp.Matrix([-1, u, v]))
@@ -918,13 +960,20 @@ def read_q(text: str) -> sp.Expr:
     return sp.sympify(t, locals={"a": A, "c": C, "d": D, "xp": xp, "xm": xm})
 
 
+@for_a_run
+def modulus_ratio(e: sp.Expr) -> tuple:
+    """(P, Q, κ) with e = P/Q canceled and κ = (P² - Q²)/((a + d)·s) canceled (a Möbius map's
+    a, d and s = √Δ, :func:`mobius_symbols`)."""
+    A, B, C, D, s, xp, xm = mobius_symbols()
+    num, den = sp.fraction(sp.cancel(sp.together(e)))
+    return num, den, sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+
+
 def modulus_sign_factor(e: sp.Expr) -> int | None:
     """k with sign(|e| - 1) = k·sign(a + d) for every Möbius map with real fixed points
     (s > 0), when e = P/Q and P² - Q² = (a+d)·s·(a nonzero constant k·κ); None otherwise.
     As |e| > 1 iff P² > Q², this reads the sign of |e| - 1 off the sign of a + d."""
-    A, B, C, D, s, xp, xm = mobius_symbols()
-    num, den = sp.fraction(sp.cancel(sp.together(e)))
-    ratio = sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+    num, den, ratio = modulus_ratio(e)
     return int(sp.sign(ratio)) if ratio.is_number and ratio != 0 else None
 
 
@@ -932,8 +981,7 @@ def modulus_facts(e: sp.Expr) -> list[str]:
     """For the kernel: the identity :func:`modulus_sign_factor` reads k from, P² - Q² =
     κ·(a + d)·s with the constant κ it found (nothing when it found none)."""
     A, B, C, D, s, xp, xm = mobius_symbols()
-    num, den = sp.fraction(sp.cancel(sp.together(e)))
-    ratio = sp.cancel((num ** 2 - den ** 2) / ((A + D) * s))
+    num, den, ratio = modulus_ratio(e)
     if not (ratio.is_number and ratio != 0):
         return []
     lhs, rhs = num ** 2 - den ** 2, ratio * (A + D) * s

@@ -622,7 +622,8 @@ class Datum:
 
     r: flint.fmpq
     letter: str
-    runs: tuple          # (run from (p, q), run from (αp, βq + γp))
+    start: tuple         # (p, q) of the first run
+    runs: tuple          # (run from (p, q), run from (αp, βq + γp)), exact, on the directions of p and q (sim.Rays)
     normals: list        # run 1: p ∧ q (primitive, orientation kept) at its start and after each collision
     planes: tuple        # per run: the Plane of (p, q) at its start and after each collision
     orbit: list          # Planes: the reduction from P(0)
@@ -644,12 +645,17 @@ def datum(rng: random.Random) -> Datum:
     al, be, ga = rational(rng), rational(rng), rng.choice((1, -1)) * rational(rng) / 100
     p2 = tuple(al * z for z in p)
     q2 = tuple(be * qk + ga * pk for qk, pk in zip(q, p))
-    runs = (sim.follow(p, q, r, N_COLLISIONS), sim.follow(p2, q2, r, N_COLLISIONS))
+    runs = (sim.follow_rays(p, q, r, N_COLLISIONS), sim.follow_rays(p2, q2, r, N_COLLISIONS))
     contacts = [letter] + runs[0].events
-    normals = [R.normal(s.p, s.q) for s in runs[0].states]
-    planes = ([R.canonical(L, n) for L, n in zip(contacts, normals)],
-              [R.plane(letter, p2, q2)] + [R.plane(e, s.p, s.q) for e, s in zip(runs[1].events, runs[1].states[1:])])
-    return Datum(r, letter, runs, normals, planes, R.orbit(planes[0][0], r, N_REDUCTION))
+    n0 = R.normal(*runs[0].rays[0])
+    orbit = R.orbit(R.oriented(letter, n0), r, N_REDUCTION)
+    # the runs' normals, each read first as a multiple of the orbit's there (the same primitive normal, else the gcd)
+    hints = [P.n for P in orbit[1:]] + [None] * len(runs[0].rays)
+    normals = [n0] + [R.normal(P, Q, n) for (P, Q), n in zip(runs[0].rays[1:], hints)]
+    planes = ([R.oriented(L, n) for L, n in zip(contacts, normals)],
+              [R.plane(letter, p2, q2)] + [R.plane(e, P, Q, n) for e, (P, Q), n in
+                                           zip(runs[1].events, runs[1].rays[1:], hints)])
+    return Datum(r, letter, (p, q), runs, normals, planes, orbit)
 
 
 @quantity("section4_data")
@@ -668,10 +674,11 @@ def growth(data: list[Datum]) -> list[str]:
     if not long_runs:
         return []
     d = long_runs[0]
+    run = sim.follow(*d.start, d.r, N_COLLISIONS)        # the physical states themselves, with t
     rows = ["| collisions | bits of p, q (physical, exact) | bits of t | bits of the normal n (projective) |",
             "|---:|---:|---:|---:|"]
     for k in (1, 10, 50, 100, 200):
-        s = d.runs[0].states[k]
+        s = run.states[k]
         rows.append(f"| {k} | {max(bits(z) for z in s.p + s.q)} | {bits(s.t)} | {d.orbit[k].bits} |")
     return [f"Growth of the exact numbers along one run (r = {d.r}):", "\n".join(rows)]
 
@@ -761,7 +768,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
         same = adjugate and equal
         values = [sp.Rational(int(r0.p), int(r0.q)) for r0 in rates]
         integer = [R.cofactor(letter, r0) for r0 in rates]
-        scaled = [multiple(N_, cof.subs(r, v)) for N_, v in zip(integer, values)]
+        scaled = [multiple(N_, cof.xreplace({r: v})) for N_, v in zip(integer, values)]     # cof at r = v
         # for the kernel: K fixes e_m (m ≠ j); cof is K's cofactor matrix (K^T cof = det K · I, det K given) and the
         # engine's; at each r₀ the integer matrix is k·cof(r₀) (an identity modulo r − r₀) with k > 0
         grounds = identity_facts(*[(ok, [K, sp.eye(3).col(m)], sp.eye(3).col(m))

@@ -12,12 +12,11 @@ from __future__ import annotations
 
 import sympy as sp
 
-from certify.algebra import precision, r, statements
+from certify.algebra import r, statements
 from certify.algebra import trig as T
 from certify.dynamics import INDEX, LETTERS
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
-from certify.dynamics import simulate as sim
 from certify.run import (
     ERRATUM,
     MISPRINT,
@@ -218,25 +217,6 @@ def engine_is_printed(printed: dict) -> list[Check]:
     return checks
 
 
-def trig_agrees(P: R.Plane, P1: R.Plane, r, prec: int = 128, last: list | None = None) -> bool:
-    """The trigonometric step from (θ, φ) of the physical state P gives the contact of
-    the next physical state P1 and balls of cos, sin of θ, φ overlapping P1's.  (θ, φ
-    are functions of the contact and the plane: p ∝ n ∧ e_i, q̂ ∝ |n|² e_i − n_i n.)
-    ``last``: [state, its angles at ``prec``] from the previous call along the orbit,
-    where P1 was this call's P (each state ends one step and starts the next), or
-    [None, None]; updated here."""
-    last = [None, None] if last is None else last
-
-    def angles(Q: R.Plane) -> R.Angles:
-        if last[0] is not Q:
-            last[1], last[0] = R.angles(Q), Q
-        return last[1]
-    with precision(prec):
-        T, X = R.trig_step(angles(P), r), angles(P1)
-    return T.letter == P1.letter and all(a.overlaps(b) for a, b in
-                                         ((T.ct, X.ct), (T.st, X.st), (T.cp, X.cp), (T.sp, X.sp)))
-
-
 def case_is_the_map(key: str, spec: str, p0, q0) -> Check:
     """One printed case (contact i, sign of cos φ) for every θ ∈ ]0,π/2[ and φ in its range:
     the printed step of S7.1 (next pair = the gap the ray closes, p(t1) its hit point in
@@ -287,13 +267,9 @@ def trigonometric_map_agrees_with_dynamics(section4_data, reduction_cones, **pri
     compared = agree = undecided = 0
     if all(c.holds for c in checks[:3]):
         for d in section4_data:
-            last = [None, None]
-            for P, P1 in zip(d.planes[0], d.planes[0][1:]):
-                compared += 1
-                try:
-                    agree += trig_agrees(P, P1, d.r, last=last)
-                except sim.Undecided:
-                    undecided += 1
+            steps = R.trig_agreement(d.planes[0], d.r)      # (agree, undecided) along the run
+            compared += len(d.planes[0]) - 1
+            agree, undecided = agree + steps[0], undecided + steps[1]
     evidence = [supporting(f"at {compared} collisions of {len(section4_data)} exact runs the six cases give the next "
                            f"contact and (θ, φ) (balls overlapping): {agree} agree, {undecided} undecided.")]
     return conclude(checks, evidence=evidence)
@@ -464,9 +440,9 @@ def tally_runs(section4_data, orientation, to_b, to_c) -> str:
             oriented[0] += 1
             oriented[1] += u[t[L]] > 0
             key = f"a→{L1}" if L == "a" else "relabelled"
-            ut = formulas[L1](u, d.r) if L == "a" else R.vectorial_step(L, u, d.r)[1]
+            ut = formulas[L1](u, d.r) if L == "a" else R.vectorial_ray(L, u, d.r)[1]     # up to a factor > 0
             tally[key][0] += 1
-            tally[key][1] += R.cross(ut, u1) == (0, 0, 0) and R.dot(ut, u1) > 0
+            tally[key][1] += R.same_ray(ut, u1)
     return (f"on the exact runs, the orientation holds at {oriented[1]} of {oriented[0]} states, and the printed or "
             "relabelled formula gives a positive multiple of p(k+1) ∧ q(k+1) at " +
             ", ".join(f"{v[1]} of {v[0]} collisions {k}" for k, v in tally.items()) + ".")

@@ -45,3 +45,20 @@ def test_a_type_error_inside_is_not_taken_for_an_unhashable_argument():
     except TypeError:
         return
     raise AssertionError("the TypeError of the function was swallowed")
+
+
+def test_a_memo_by_identity_tells_equal_objects_apart_and_is_forgotten_by_reset():
+    calls = []
+
+    @caches.by_identity
+    def total(terms):
+        calls.append(terms)
+        return sum(terms)
+
+    a, b = [1, 2], [1, 2]
+    assert total(a) == total(a) == 3 and calls == [a]
+    assert total(b) == 3 and len(calls) == 2 and calls[1] is b        # equal, not the same object
+    a.append(4)
+    assert total(a) == 3                                               # the object's first value: lists given are never modified
+    caches.reset()
+    assert total(a) == 7 and len(calls) == 3

@@ -27,6 +27,7 @@ from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_count
 
 _ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
 caches.register(_ISOLATED.clear)
+_key_of = caches.by_identity(poly_key)   # a spectrum's critical factors: the same objects in every table
 
 
 def _sign(a) -> int:
@@ -72,7 +73,7 @@ class Algebraic:
         digits are the correctly rounded decimal of the exact value; the interval
         printed by ``repr`` is only as narrow as the last refinement."""
         p = primitive(flint.fmpq_poly(p)) if not isinstance(p, flint.fmpz_poly) else p
-        key = (poly_key(p), None if a is None else str(a), None if b is None else str(b))
+        key = (_key_of(p), None if a is None else str(a), None if b is None else str(b))
         made = _ISOLATED.get(key)
         if made is None:
             made = _ISOLATED[key] = [cls(p, lo, hi) for lo, hi in isolate(p, a, b)]
@@ -231,6 +232,11 @@ class Algebraic:
             return -1
         if other.hi <= self.lo:
             return 1
+        if self.p is other.p or self.p == other.p:
+            # one polynomial, nested isolating intervals (a copy refined apart from its original):
+            # the inner one's root lies in the outer interval, which isolates one root of p
+            if self.lo <= other.lo and other.hi <= self.hi or other.lo <= self.lo and self.hi <= other.hi:
+                return 0
         g = self.p.gcd(other.p)
         # certified balls first (python-flint root isolation, ends checked exactly)
         for prec in (64, 256):

@@ -31,7 +31,7 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
-from certify.obligations import asserting, fact, silent
+from certify.obligations import asserting, fact, recording_now, silent
 
 from . import facts
 from . import numberfield as nf
@@ -80,7 +80,7 @@ class FixedPoint:
     c: sp.Expr
     d: sp.Expr
 
-    @property
+    @cached_property
     def delta(self) -> sp.Expr:
         return sp.expand((self.a - self.d) ** 2 + 4 * self.b * self.c)
 
@@ -196,11 +196,13 @@ class Condition:
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
     _forms: dict | None = None             # the Horner forms of the parts (_forms), made on first use
 
-    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None):
+    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None, terms: dict | None = None):
         self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
         self._lrq = lrq
         self.degenerate = []
-        if lrq is None:
+        if terms is not None:                  # the terms of lrq, known to the caller (a twin's)
+            self.terms = terms
+        elif lrq is None:
             self.terms = {k: ring_terms(p) for k, p in
                           (("N0", N[0]), ("N1", N[1]), ("D0", D[0]), ("D1", D[1]), ("delta", delta or RING.zero))}
         else:
@@ -353,10 +355,17 @@ def _eval_form(form, R, L) -> flint.arb:
     return total / d
 
 
+@caches.by_identity
+def _form_of(terms) -> tuple:
+    """:func:`_horner_form` of a list of terms, memoised by identity (a condition and its
+    twin at the other fixed point share the lists of N₀ and D₀)."""
+    return _horner_form(terms)
+
+
 def _forms(cond: Condition) -> dict:
     forms = getattr(cond, "_forms", None)
     if forms is None:
-        forms = cond._forms = {k: _horner_form(ts) for k, ts in cond.terms.items()
+        forms = cond._forms = {k: _form_of(ts) for k, ts in cond.terms.items()
                                if k != "delta" or cond.delta is None}
         if cond.delta is not None:           # every condition with x shares its Δ: one form
             entry = _delta_entry(cond.delta)
@@ -478,6 +487,10 @@ class SignTable:
         self.source: tuple | None = None        # (spectrum, condition): what the kernel re-derives
         self._points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
 
+    def has_point(self, k: int) -> bool:
+        """Whether the signs at the k-th critical value are computed already."""
+        return k in self._points._done
+
     @property
     @fact(facts.table_points)
     def points(self) -> Lazy:
@@ -595,6 +608,7 @@ class Spectrum:
         self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
         self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
         self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
+        self._checked = {}                 # id of a factor -> it, once its real roots were counted both ways
         self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
 
     @cached_property
@@ -647,7 +661,7 @@ class Spectrum:
         for H, R in bucket:
             if H == G:
                 return R
-        if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and not any(es for _er, _el, es in G.monoms()):
+        if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and G.degrees()[2] == 0:          # free of s
             R = _norm_modulo(_lambda_coefficients(G), self._cp_coeffs)
         else:
             R = mpoly_to_univariate(G.resultant(self.mpoly_cp, "lam"))
@@ -688,7 +702,9 @@ class Spectrum:
         lo, hi = _alg(lo), _alg(hi)
         roots = []
         for f in {k: f for p in polys for f, k in self._factors(p)}.values():
-            checked_real_root_count(f)          # Sturm and python-flint agree (memoised per factor)
+            if self._checked.get(id(f)) is not f:     # Sturm and python-flint agree (once per factor)
+                checked_real_root_count(f)
+                self._checked[id(f)] = f
             roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
         return sorted_numbers(roots)
 
@@ -815,6 +831,21 @@ class Spectrum:
         return [self._undecided_sign(cond, rc, k, roots[k], 2 * quick, maxprec) if sg == UNDECIDED else sg
                 for k, sg in enumerate(out)]
 
+    @silent
+    def sign_on_branch_at(self, cond: Condition, rc: Algebraic, k: int, maxprec: int = 1024):
+        """``sign_at_point(cond, rc)[k]`` computed for the branch k alone (the same sign: balls
+        decide a sign only where it is proven, and the exact tests are those of branch k);
+        UNDECIDED when the branches cannot be isolated (sign_at_point's None), NO_BRANCH when
+        there are fewer than k + 1."""
+        roots = self.branches_at(rc)
+        if roots is None:
+            return UNDECIDED
+        if k >= len(roots):
+            return NO_BRANCH
+        quick = min(256, maxprec)
+        sg = decide(lambda p: _sign_ball(cond, rc.arb(p), roots[k](p)), 128, quick)
+        return self._undecided_sign(cond, rc, k, roots[k], 2 * quick, maxprec) if sg == UNDECIDED else sg
+
     def _undecided_sign(self, cond: Condition, rc: Algebraic, k: int, ball, prec: int, maxprec: int):
         """The sign of g on branch k at rc where balls of < ``prec`` bits did not decide it: the
         exact zero test (:meth:`_exact_sign`), then balls of ``prec`` to ``maxprec`` bits where
@@ -852,6 +883,8 @@ class Spectrum:
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
         None when undecided.  ``M``: the norm as :func:`norm_mpoly` makes it, when known."""
         P0, P1 = P
+        if not P1:                     # the norm is (a positive multiple of) P₀²: the zeros of P₀
+            return self.vanishes_at(P0, rc, k)
         if not self.vanishes_at(self._norm_of(P0, P1, delta, M), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
@@ -1035,36 +1068,40 @@ def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
 def _norm_modulo(g: list, cp: list) -> flint.fmpz_poly:
     """Res_λ(cp, g) for cp monic in λ up to a constant factor (cp's leading coefficient a
     non-zero integer c): the determinant of multiplication by g on Q[r][λ]/(cp) in the
-    basis 1, λ, ..., λ^{n-1}, which is Π g(λ_i) over the roots λ_i of cp, times c^{-m}
-    for some m (a non-zero rational multiple of the resultant: the same zeros in r).
-    Univariate python-flint arithmetic, no Sylvester matrix."""
+    basis 1, λ, ..., λ^{n-1}, which is Π g(λ_i) over the roots λ_i of cp (cp/c monic: the
+    reduction over Q[r], no power of c accumulates in the coefficients), returned as the
+    numerator of that determinant (a non-zero rational multiple of the resultant: the same
+    zeros in r).  Univariate python-flint arithmetic, no Sylvester matrix."""
     n = len(cp) - 1
-    lead = cp[n]
+    lead = flint.fmpq(int(cp[n][0]))
+    monic = [flint.fmpq_poly(c) / lead for c in cp[:n]]
+    zero = flint.fmpq_poly(0)
 
     def reduce(h):
-        h = list(h) + [flint.fmpz_poly(0)] * max(0, n - len(h))
-        for k in range(len(h) - 1, n - 1, -1):          # lead·h ≡ ..., keeping integer coefficients
+        h = list(h) + [zero] * max(0, n - len(h))
+        for k in range(len(h) - 1, n - 1, -1):          # λ^k ≡ -Σ monic[i] λ^(k-n+i)
             t = h[k]
             if t.is_zero():
                 continue
-            h = [hi * lead for hi in h]
             for i in range(n):
-                h[k - n + i] -= t * cp[i]
-            h[k] = flint.fmpz_poly(0)
+                h[k - n + i] -= t * monic[i]
+            h[k] = zero
         return h[:n]
 
-    cols = [reduce(g)]
+    cols = [reduce([flint.fmpq_poly(c) for c in g])]
     for _ in range(n - 1):
-        cols.append(reduce([flint.fmpz_poly(0)] + cols[-1]))
+        cols.append(reduce([zero] + cols[-1]))
     A = [[cols[j][i] for j in range(n)] for i in range(n)]
     if n == 1:
-        return A[0][0]
-    if n == 2:
-        return A[0][0] * A[1][1] - A[0][1] * A[1][0]
-    if n == 3:
+        det = A[0][0]
+    elif n == 2:
+        det = A[0][0] * A[1][1] - A[0][1] * A[1][0]
+    elif n == 3:
         (a, b, c), (d, e, f), (p, q, t) = A
-        return a * (e * t - f * q) - b * (d * t - f * p) + c * (d * q - e * p)
-    raise ValueError("multiplication determinant implemented for degree ≤ 3")
+        det = a * (e * t - f * q) - b * (d * t - f * p) + c * (d * q - e * p)
+    else:
+        raise ValueError("multiplication determinant implemented for degree ≤ 3")
+    return det.numer()
 
 
 def _root_ball(sqf, rc, k, isolated=None):
@@ -1142,6 +1179,8 @@ def _apart(a: Algebraic, b: Algebraic) -> bool:
 def less(a, b) -> bool:
     """a < b, exact: from the isolating intervals where they are apart (an exact comparison
     would then refine nothing either), else by the exact comparison."""
+    if _itself(a, b):
+        return False
     if isinstance(a, Algebraic) and isinstance(b, Algebraic):
         if _apart(a, b):
             return True
@@ -1150,8 +1189,16 @@ def less(a, b) -> bool:
     return a < b
 
 
+def _itself(a, b) -> bool:
+    """a and b are one object, where no comparison would be recorded (the answer is then
+    read off without one: a = a)."""
+    return a is b and not recording_now()
+
+
 def at_most(a, b) -> bool:
     """a ≤ b, exact (as :func:`less`)."""
+    if _itself(a, b):
+        return True
     if isinstance(a, Algebraic) and isinstance(b, Algebraic):
         if _apart(a, b):
             return True
@@ -1162,6 +1209,8 @@ def at_most(a, b) -> bool:
 
 def same(a, b) -> bool:
     """a = b, exact (as :func:`less`)."""
+    if _itself(a, b):
+        return True
     if isinstance(a, Algebraic) and isinstance(b, Algebraic) and (_apart(a, b) or _apart(b, a)):
         return False
     return a == b

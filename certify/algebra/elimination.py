@@ -56,8 +56,9 @@ def show_factored_int(p: flint.fmpz_poly) -> str:
 
 
 def groebner_eliminant(g, cp) -> flint.fmpz_poly:
-    """The generator of ⟨g, cp⟩ ∩ Q[r] from a reduced lex Gröbner basis (λ > r)."""
-    G = sp.groebner([sp.expand(expr(g)), sp.expand(expr(cp))], lam, r, order="lex")
+    """The generator of ⟨g, cp⟩ ∩ Q[r] from a reduced lex Gröbner basis (λ > r); by SymPy's
+    F5B (the reduced basis is unique: Buchberger's algorithm gives the same, slower)."""
+    G = sp.groebner([sp.expand(expr(g)), sp.expand(expr(cp))], lam, r, order="lex", method="f5b")
     free = [p for p in G.exprs if not p.has(lam)]
     if len(free) != 1:
         raise ArithmeticError(f"expected one λ-free basis element, found {len(free)}")

@@ -10,6 +10,7 @@ import flint
 import sympy as sp
 
 from certify import caches
+from certify.obligations import recording_now
 
 
 def rational(q) -> str:
@@ -39,6 +40,26 @@ def ring_terms_data(terms) -> list:
     return sorted([rational(c), [int(i), int(j)]] for c, i, j in terms)
 
 
+@caches.by_identity
+def _cp_data(ring_cp) -> list:
+    """The terms of a spectrum's cp (``spectrum.ring_cp``: the same object in every query of a
+    table) as a record holds them; the list is shared by the records that hold it (a record is
+    never modified)."""
+    from .poly import ring_terms
+    return ring_terms_data(ring_terms(ring_cp))
+
+
+@caches.by_identity
+def _terms_data(terms) -> list:
+    """:func:`ring_terms_data` of a condition's terms, memoised by identity (shared as above)."""
+    return ring_terms_data(terms)
+
+
+def _parts_data(cond) -> dict:
+    """The non-zero parts of a condition (N0, N1, D0, D1, delta) as a record holds them."""
+    return {k: _terms_data(v) for k, v in cond.terms.items() if v}
+
+
 _CIRCLE_ARGS = ("θ", "φ")
 
 
@@ -61,13 +82,141 @@ caches.register(_RATIONAL_FUNCTIONS.clear)
 
 
 def _rational_function(e, gens: list) -> dict:
-    n, d = sp.fraction(sp.together(sp.sympify(e)))
+    e = sp.sympify(e)
+    if gens and _integral(e):        # together leaves it whole over 1: the terms of e itself
+        try:
+            return {"num": polynomial_terms(e, gens), "den": [["1", [0] * len(gens)]]}
+        except _NotPolynomial:
+            pass
+    if gens and _expanded_over_q(e):   # together clears the denominators: the terms of L·e over L
+        try:
+            return _cleared(e, gens)
+        except _NotPolynomial:
+            pass
+    n, d = sp.fraction(sp.together(e))
     def terms(x):
         if not gens:
             return [[rational(sp.Rational(x)), []]] if x != 0 else []
+        try:
+            return polynomial_terms(x, gens)
+        except _NotPolynomial:
+            pass
         P = sp.Poly(sp.expand(x), *gens, domain="QQ")
         return sorted([rational(c), list(m)] for m, c in P.terms())
     return {"num": terms(n), "den": terms(d)}
+
+
+def _expanded_over_q(e) -> bool:
+    """e is a sum of terms c·m (or one term), c rational and m a product of natural powers of
+    symbols and function atoms: a polynomial over Q written expanded (distinct monomials)."""
+    for t in sp.Add.make_args(e):
+        c, m = t.as_coeff_Mul()
+        if not c.is_Rational:
+            return False
+        for f in sp.Mul.make_args(m):
+            b, x = f.as_base_exp()
+            if not ((b.is_Symbol or isinstance(b, sp.Function)) and x.is_Integer and x > 0) and f != 1:
+                return False
+    return True
+
+
+def _cleared(e, gens: list) -> dict:
+    """What ``sp.fraction(sp.together(e))`` gives for an expanded polynomial e over Q, as terms:
+    together takes out the gcd of the terms, G/L times a monomial (G the gcd of the numerators
+    and L the lcm of the denominators of the coefficients, G/L in lowest terms), and leaves a
+    sum with integer coefficients; so the numerator is L·e and the denominator L."""
+    P = _mpoly(e, gens)
+    L = flint.fmpz(1)
+    for c in P.coeffs():
+        L = L.lcm(c.q)
+    zeros = [0] * len(gens)
+    return {"num": _terms(P * L, len(gens)), "den": [[rational(flint.fmpq(L)), zeros]]}
+
+
+def _integral(e) -> bool:
+    """e is written with integers, symbols, function atoms, sums, products and natural powers
+    only (no fraction anywhere): ``sp.fraction(sp.together(e))`` is then (e, 1), up to the
+    grouping of its terms."""
+    todo = [e]
+    while todo:
+        x = todo.pop()
+        if x.is_Rational:
+            if not x.is_Integer:
+                return False
+        elif x.is_Pow:
+            if not (x.exp.is_Integer and x.exp >= 0):
+                return False
+            todo.append(x.base)
+        elif x.is_Add or x.is_Mul:
+            todo.extend(x.args)
+        elif not (x.is_Symbol or isinstance(x, sp.Function)):
+            return False
+    return True
+
+
+class _NotPolynomial(ValueError):
+    """Not a sum of products of rationals, ``gens`` and their powers, as read by :func:`polynomial_terms`."""
+
+
+def polynomial_terms(x, gens: list) -> list:
+    """The terms of the polynomial x in ``gens`` over Q as [["p/q", exponents], ...], sorted: what
+    ``sp.Poly(sp.expand(x), *gens, domain="QQ").terms()`` gives (the zero polynomial as one term
+    0), multiplied out in flint's fmpq_mpoly instead of SymPy's expand.  The terms of a polynomial
+    are unique, so both give the same list.  _NotPolynomial for anything but rationals, ``gens``,
+    sums, products and powers with a natural exponent (the caller then asks SymPy)."""
+    return _terms(_mpoly(x, gens), len(gens))
+
+
+def _mpoly(x, gens: list):
+    """x as an fmpq_mpoly in ``gens`` (:func:`polynomial_terms`; _NotPolynomial otherwise)."""
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "lex")
+    index = dict(zip(gens, ctx.gens()))
+
+    def walk(e):
+        found = index.get(e)
+        if found is not None:
+            return found
+        if e.is_Rational:
+            return flint.fmpq(int(e.p), int(e.q))
+        if e.is_Add or e.is_Mul:
+            args = [walk(a) for a in e.args]
+            out = args[0]
+            for a in args[1:]:
+                out = out + a if e.is_Add else out * a
+            return out
+        if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+            return walk(e.base) ** int(e.exp)
+        raise _NotPolynomial(f"{e} is not read as a polynomial")
+    P = walk(sp.sympify(x))
+    if not isinstance(P, flint.fmpq_mpoly):
+        P = ctx.from_dict({(0,) * len(gens): P})
+    return P
+
+
+def _terms(P, n: int) -> list:
+    """The terms of the fmpq_mpoly P in n generators as :func:`polynomial_terms` lists them."""
+    if P == 0:
+        return [["0", [0] * n]]
+    return sorted([rational(c), [int(k) for k in m]] for m, c in zip(P.monoms(), P.coeffs()))
+
+
+def _atoms(e) -> tuple[set, set, set]:
+    """``e.atoms(sp.Function)``, ``e.atoms(sp.Pow)`` and the bare symbols of e (not Dummy) that
+    occur outside its function atoms (the free symbols of e with each function atom replaced by
+    a Dummy), in one walk of e in preorder (the order in which atoms() fills its sets)."""
+    functions, powers, bare = set(), set(), set()
+    todo = [(e, False)]
+    while todo:
+        x, inside = todo.pop()
+        if isinstance(x, sp.Function):
+            functions.add(x)
+            inside = True
+        elif x.is_Pow:
+            powers.add(x)
+        elif x.is_Symbol and not inside and not isinstance(x, sp.Dummy):
+            bare.add(x)
+        todo.extend((a, inside) for a in reversed(x.args))
+    return functions, powers, bare
 
 
 def generators(*exprs) -> tuple[list, list]:
@@ -76,15 +225,15 @@ def generators(*exprs) -> tuple[list, list]:
     square root, ...) or a symbol occurs both alone and inside cos, sin."""
     trig, symbols = set(), set()
     for e in map(sp.sympify, exprs):
-        for f in e.atoms(sp.Function):
+        functions, powers, bare = _atoms(e)
+        for f in functions:
             if f.func not in (sp.cos, sp.sin) or not f.args[0].is_Symbol:
                 raise ValueError(f"the function {f} is outside Q[variables, cos, sin]")
             trig.add(f.args[0])
-        for p in e.atoms(sp.Pow):
+        for p in powers:
             if not p.exp.is_Integer:
                 raise ValueError(f"a non-integer power {p}")
-        bare = e.subs({f: sp.Dummy() for f in e.atoms(sp.Function)})
-        symbols |= {x for x in bare.free_symbols if not isinstance(x, sp.Dummy)}
+        symbols |= bare
     if symbols & trig:
         raise ValueError("a symbol occurs both alone and inside cos, sin")
     # the engine's own names for cos θ, sin θ (certify.algebra.trig): the symbols cosX, sinX
@@ -124,6 +273,23 @@ def number_of(a) -> dict | str:
         return rational(a)
     if a.is_rational:
         return rational(a.lo)
+    if recording_now():
+        # outside a fact's builder the comparisons made here are facts of the certificate
+        # (compare_rational records them): made every time
+        return _dyadic(a)
+    key = a.key()                    # equal keys, equal numbers: the same record (memoised)
+    found = _NUMBERS.get(key)
+    if found is None:
+        found = _NUMBERS[key] = _dyadic(a)
+    return dict(found, poly=list(found["poly"])) if isinstance(found, dict) else found
+
+
+_NUMBERS: dict = {}              # key of an Algebraic -> its record by number_of
+caches.register(_NUMBERS.clear)
+
+
+def _dyadic(a) -> dict | str:
+    """:func:`number_of` of an irrational-looking Algebraic, computed."""
     from .poly import Q
     from .sturm import count_roots
     b = copy.copy(a)
@@ -174,9 +340,7 @@ def cell_branches(answer, cell) -> dict:
     if cell.table is None:
         raise ValueError("a cell outside a sign table")
     spectrum, cond = cell.table.source
-    from .poly import ring_terms
-    return {"kind": "sign_table", "cp": ring_terms_data(ring_terms(spectrum.ring_cp)),
-            "parts": {k: ring_terms_data(v) for k, v in cond.terms.items() if v},
+    return {"kind": "sign_table", "cp": _cp_data(spectrum.ring_cp), "parts": _parts_data(cond),
             "ends": [number_of(cell.lo), number_of(cell.hi)], "samples": [rational(cell.sample)],
             "signs": [["?"] * len(answer)]}
 
@@ -208,9 +372,7 @@ def sign_query(result, table, branch, lo=None, hi=None, include_points=True):
         if branch < len(row):
             row[branch] = _sign_code(c.signs[branch])
         rows.append(row)
-    from .poly import ring_terms
-    data = {"kind": "sign_table", "cp": ring_terms_data(ring_terms(spectrum.ring_cp)),
-            "parts": {k: ring_terms_data(v) for k, v in cond.terms.items() if v},
+    data = {"kind": "sign_table", "cp": _cp_data(spectrum.ring_cp), "parts": _parts_data(cond),
             "ends": [number_of(cells[0].lo)] + [number_of(c.hi) for c in cells],
             "samples": [rational(c.sample) for c in cells], "signs": rows}
     return {"kind": "signs_query", "table": data, "branch": int(branch),
@@ -292,11 +454,9 @@ def _point_claims(signs, only=None) -> list:
 def branch_signs(signs, spectrum, cond, rc, only=None) -> dict:
     """The signs of a condition on the real branches of cp at the algebraic r = rc (largest
     first, a double root twice): the kernel isolates them in Q(rc)[λ] and signs g exactly."""
-    from .poly import ring_terms
     if signs is None:
         raise ValueError("the branches at this r were not isolated")
-    return {"kind": "branch_signs_at", "cp": ring_terms_data(ring_terms(spectrum.ring_cp)),
-            "parts": {k: ring_terms_data(v) for k, v in cond.terms.items() if v}, "r": number_of(rc),
+    return {"kind": "branch_signs_at", "cp": _cp_data(spectrum.ring_cp), "parts": _parts_data(cond), "r": number_of(rc),
             "signs": _point_claims(signs, only)}
 
 

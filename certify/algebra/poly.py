@@ -35,9 +35,22 @@ NAMES = {"r": r, "λ": lam, "lam": lam, "lambda": lam, "la": lam, "x": x, "u": u
 
 def parse(text: str, names: dict | None = None) -> sp.Expr:
     """A formula transcribed from the paper, as a SymPy expression (exact); ``names``
-    adds local names (functions, vectors) to the paper's (see :mod:`certify.algebra.trig`)."""
+    adds local names (functions, vectors) to the paper's (see :mod:`certify.algebra.trig`).
+    With the paper's names only, memoised for the run (the same formula is read by many
+    claims; a SymPy expression is immutable)."""
+    if names:
+        return _parse(text, names)
+    return _parse_paper(text)
+
+
+def _parse(text: str, names: dict | None) -> sp.Expr:
     text = text.replace("λ", "lam").replace("^", "**").replace("−", "-")
     return sp.sympify(text, locals={**NAMES, **names} if names else NAMES, rational=True)
+
+
+@caches.for_a_run
+def _parse_paper(text: str) -> sp.Expr:
+    return _parse(text, None)
 
 
 def expr(e) -> sp.Expr:
@@ -60,9 +73,33 @@ def to_fmpq(a) -> flint.fmpq:
 
 
 def to_fmpq_poly(e, var=r) -> flint.fmpq_poly:
-    """A univariate polynomial with rational coefficients as ``fmpq_poly``."""
-    coeffs = sp.Poly(expr(e), var).all_coeffs()[::-1]
+    """A univariate polynomial with rational coefficients as ``fmpq_poly`` (a product or
+    power of polynomials multiplied out by python-flint, not expanded by SymPy)."""
+    e = expr(e)
+    p = _flint_tree(e, var)
+    if p is not None:
+        return p
+    coeffs = sp.Poly(e, var).all_coeffs()[::-1]
     return flint.fmpq_poly([flint.fmpq(int(sp.numer(c)), int(sp.denom(c))) for c in coeffs])
+
+
+def _flint_tree(e: sp.Expr, var) -> flint.fmpq_poly | None:
+    """``e`` built from rationals and ``var`` by +, × and natural powers, as ``fmpq_poly``;
+    None for anything else (another symbol, a fraction of polynomials, a function)."""
+    if e.is_Rational:
+        return flint.fmpq_poly([flint.fmpq(int(e.p), int(e.q))])
+    if e.is_Symbol:
+        return flint.fmpq_poly([0, 1]) if e == var else None
+    if e.is_Add or e.is_Mul:
+        found = [_flint_tree(a, var) for a in e.args]
+        parts = [q for q in found if q is not None]
+        if len(parts) < len(found):
+            return None
+        return reduce(lambda a, b: a + b, parts) if e.is_Add else reduce(lambda a, b: a * b, parts)
+    if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+        base = _flint_tree(e.base, var)
+        return None if base is None else base ** int(e.exp)
+    return None
 
 
 def primitive(p) -> flint.fmpz_poly:
@@ -74,8 +111,7 @@ def primitive(p) -> flint.fmpz_poly:
         q = flint.fmpq_poly(p).numer()
     if q.is_zero():
         return q
-    g = q.content()
-    q = flint.fmpz_poly([c // g for c in q.coeffs()])
+    q = q / q.content()                 # exact division (python-flint)
     if q.leading_coefficient() < 0:
         q = -q
     return q
@@ -183,7 +219,11 @@ def to_mpoly(e) -> flint.fmpz_mpoly:
     of denominators (a positive constant multiple, so signs are kept)."""
     if isinstance(e, PolyElement):
         return ring_to_mpoly(e)
-    P = sp.Poly(expr(e), r, lam, s)
+    e = expr(e)
+    pair = _ring_pair(e)          # multiplied out in RING; SymPy's Poly only for what that does not read
+    if pair is not None and pair[1].is_ground and not any(m[2] or m[3] or m[4] for m in pair[0].monoms()):
+        return ring_to_mpoly(pair[0] * (1 / pair[1].LC))
+    P = sp.Poly(e, r, lam, s)
     den = _lcm([int(sp.denom(c)) for c in P.coeffs()] or [1])
     terms = {m: int(c * int(den)) for m, c in P.terms()}
     return MCTX.from_dict(terms)
@@ -219,7 +259,55 @@ def to_field(e) -> FracElement:
         return e
     if isinstance(e, PolyElement):
         return FIELD(e)
-    return FIELD.from_expr(expr(e))
+    return _field_of(e if isinstance(e, (str, sp.Basic)) else expr(e))
+
+
+@caches.for_a_run
+def _field_of(e) -> FracElement:
+    """:func:`to_field` of a text or SymPy expression, memoised for the run (the same
+    formulas and matrix entries are converted by many claims)."""
+    e = expr(e)
+    pair = _ring_pair(e)
+    if pair is None:
+        return FIELD.from_expr(e)
+    return FIELD.new(*pair)          # one cancellation: the canonical element, as from_expr gives it
+
+
+_RING_GENS = dict(zip(FIELD.symbols, RING.gens))
+
+
+def _ring_pair(e: sp.Expr) -> tuple[PolyElement, PolyElement] | None:
+    """``e`` built from rationals and the field's symbols by +, ×, integer powers, as
+    (numerator, denominator) in RING, not canceled; None for anything else."""
+    if e.is_Rational:
+        return RING(sp.QQ(int(e.p), int(e.q))), RING.one
+    if e.is_Symbol:
+        g = _RING_GENS.get(e)
+        return None if g is None else (g, RING.one)
+    if e.is_Add or e.is_Mul:
+        num, den = (RING.zero if e.is_Add else RING.one), RING.one
+        for a in e.args:
+            pa = _ring_pair(a)
+            if pa is None:
+                return None
+            n, d = pa
+            if e.is_Mul:
+                num, den = num * n, den * d
+            elif d == den:
+                num = num + n
+            else:
+                num, den = num * d + n * den, den * d
+        return num, den
+    if e.is_Pow and e.exp.is_Integer:
+        pb = _ring_pair(e.base)
+        if pb is None:
+            return None
+        k = int(e.exp)
+        n, d = pb if k >= 0 else pb[::-1]
+        if d == 0:
+            return None                 # 0 to a negative power: left to from_expr's error
+        return n ** abs(k), d ** abs(k)
+    return None
 
 
 def to_ring(e) -> PolyElement:

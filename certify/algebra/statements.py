@@ -43,7 +43,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from certify import obligations
+from certify import caches, obligations
 from certify.errors import StatementError  # raised here, caught by the runner: the ground floor's
 
 from .algebraic import Algebraic
@@ -121,7 +121,7 @@ class Names:
         if re.search(r"[√|]", t):
             raise StatementError(f"{text.strip()!r}: unbalanced |…| or a √ without its argument")
         try:
-            e = sp.sympify(t, locals={"r": R_SYMBOL, "sqrt": sp.sqrt, "Abs": sp.Abs, **self._locals}, rational=True)
+            e = _member(t, tuple(self._locals.items()))
         except (sp.SympifyError, SyntaxError, TypeError, NameError, AttributeError, ValueError) as exc:
             raise StatementError(f"{text.strip()!r} is not an expression ({exc.__class__.__name__})") from None
         if not isinstance(e, sp.Expr) or isinstance(e, (sp.Rel, sp.logic.boolalg.BooleanFunction,
@@ -235,6 +235,13 @@ def relation(text: str, names: dict | None = None, subject: str | None = None) -
     """A claim (no range) as a :class:`Relation`: a chain, a comparative phrase or a
     sign word; ``subject`` names the quantity a phrase without a subject is about."""
     return _reading(text, _relation, text, names, subject)
+
+
+@caches.for_a_run
+def _member(t: str, names: tuple) -> sp.Expr:
+    """``t`` read by SymPy with r, sqrt, Abs and the declared ``names`` (pairs), memoised for
+    the run (the same members recur in many statements)."""
+    return sp.sympify(t, locals={"r": R_SYMBOL, "sqrt": sp.sqrt, "Abs": sp.Abs, **dict(names)}, rational=True)
 
 
 def _reading(text, fn, *args):

@@ -32,9 +32,8 @@ from .balls import ordered, precision
 from .poly import Q, poly_key, to_fmpq
 
 _SEQUENCES: dict = {}            # the coefficients of p -> its Sturm sequence (memoised)
-_BALL_POLYS: dict = {}           # id of a sequence member -> (member, its arb_poly)
 caches.register(_SEQUENCES.clear)
-caches.register(_BALL_POLYS.clear)
+_ball_poly = caches.by_identity(flint.arb_poly, limit=4096)     # a sequence member as a ball polynomial
 
 
 def sturm_sequence(p) -> list[flint.fmpq_poly]:
@@ -88,13 +87,8 @@ def sign_at_rational(p: flint.fmpq_poly, a: flint.fmpq) -> int:
     """The sign of p(a), exact: a ball evaluation when it excludes 0 (cheap for the
     long rationals of bisection), else the exact rational value."""
     if p.degree() > 8:
-        entry = _BALL_POLYS.get(id(p))
-        if entry is None or entry[0] is not p:
-            if len(_BALL_POLYS) > 4096:
-                _BALL_POLYS.clear()
-            entry = _BALL_POLYS[id(p)] = (p, flint.arb_poly(p))
         with precision(128):
-            v = entry[1](flint.arb(a))
+            v = _ball_poly(p)(flint.arb(a))
         if v > 0:
             return 1
         if v < 0:
@@ -109,19 +103,17 @@ def sign_changes(seq, a) -> int:
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
 
-_AT_INFINITY: dict[int, tuple[object, dict[int, int]]] = {}  # id of a sequence -> (sequence, {±1: sign changes})
-caches.register(_AT_INFINITY.clear)
+@caches.by_identity
+def _at_infinity(seq) -> dict[int, int]:
+    """{±1: the sign changes of the sequence ``seq`` at ±∞}, filled as asked."""
+    return {}
 
 
 def _sign_changes_at_infinity(seq, sign: int) -> int:
-    entry = _AT_INFINITY.get(id(seq))
-    if entry is None or entry[0] is not seq:
-        if len(_AT_INFINITY) > 20000:
-            _AT_INFINITY.clear()
-        entry = _AT_INFINITY[id(seq)] = (seq, {})
-    if sign not in entry[1]:
-        entry[1][sign] = _changes_at_infinity(seq, sign)
-    return entry[1][sign]
+    known = _at_infinity(seq)
+    if sign not in known:
+        known[sign] = _changes_at_infinity(seq, sign)
+    return known[sign]
 
 
 def _changes_at_infinity(seq, sign: int) -> int:

@@ -29,10 +29,12 @@ root in ]0, 1[ (Sturm).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, cmp_to_key
 
 import flint
 import sympy as sp
+from sympy.core.mul import _keep_coeff
+from sympy.polys.polyutils import _sort_gens
 
 from certify import caches
 from certify.obligations import fact
@@ -146,11 +148,99 @@ def _field(gens: tuple, order: str = "grevlex"):
 
 
 def _lowest_terms(E):
-    """E in lowest terms in Q(cθ, sθ, cφ, sφ, ...): numerator and denominator as ring elements."""
+    """E in lowest terms in Q(cθ, sθ, cφ, sφ, ...): numerator and denominator as ring elements
+    (those of SymPy's field, computed by python-flint when E is a rational function of its
+    symbols: :func:`_flint_lowest_terms`)."""
     E = sp.sympify(E)
-    K, _ = _field(_gens(E))
+    gens = _gens(E)
+    K, _ = _field(gens)
+    found = _flint_lowest_terms(E, gens)
+    if found is not None:
+        ring = K.ring
+        return ring.from_dict(found[0]), ring.from_dict(found[1])
     f = K.from_expr(E)
     return f.numer, f.denom
+
+
+def _flint_lowest_terms(E, gens: tuple) -> tuple[dict, dict] | None:
+    """The numerator and denominator SymPy's field Q(gens) gives E, as {exponents: fmpq}, from
+    :func:`_flint_fraction` in grevlex (the order of the field's ring); None when E is not a
+    rational function of the gens.  The field inverts without normalising: for E = b^(−k) its
+    numerator and denominator are d^k, n^k from b's n, d (the sign of the denominator as it falls)."""
+    if E.is_Pow and E.exp.is_Integer and E.exp < 0:
+        found = _flint_fraction(E.base, gens, "degrevlex")
+        if found is None or found[0] == 0:
+            return None
+        k = -int(E.exp)
+        found = found[1] ** k, found[0] ** k
+    else:
+        found = _flint_fraction(E, gens, "degrevlex")
+    if found is None:
+        return None
+    n, d = found
+    return dict(zip(n.monoms(), n.coeffs())), dict(zip(d.monoms(), d.coeffs()))
+
+
+def _flint_fraction(E, gens: tuple, order: str):
+    """E = n/d in lowest terms as fmpq_mpoly in ``gens`` (ordered by ``order``), in the unique
+    normal form SymPy's cancellations keep (PolyElement.cancel, dmp_cancel): n, d with integer
+    coefficients, their contents coprime, the leading coefficient of d > 0 in that order (n = 0:
+    d = 1).  E's fraction is multiplied out and divided by the gcd once.  None when E is not
+    built from the gens and rationals by +, ·, integer powers (or divides by 0)."""
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), order)
+    index = dict(zip(gens, ctx.gens()))
+    one = ctx.from_dict({(0,) * len(gens): 1})
+
+    def walk(e):
+        found = index.get(e)
+        if found is not None:
+            return found, one
+        if e.is_Rational:
+            return ctx.from_dict({(0,) * len(gens): flint.fmpq(int(e.p), int(e.q))}), one
+        if e.is_Add or e.is_Mul:
+            n, d = walk(e.args[0])
+            for a in e.args[1:]:
+                n2, d2 = walk(a)
+                if e.is_Mul:
+                    n, d = n * n2, d * d2
+                elif d == d2:
+                    n = n + n2
+                else:
+                    n, d = n * d2 + n2 * d, d * d2
+            return n, d
+        if e.is_Pow and e.exp.is_Integer:
+            n, d = walk(e.base)
+            k = int(e.exp)
+            if k < 0:
+                if n == 0:
+                    raise ZeroDivisionError
+                n, d, k = d, n, -k
+            return n ** k, d ** k
+        raise ValueError("not a rational function of the gens")
+    try:
+        n, d = walk(E)
+    except (ValueError, ZeroDivisionError):
+        return None
+    if n == 0:
+        return n, one
+    g = n.gcd(d)
+    n, d = n / g, d / g
+    den = flint.fmpz(1)
+    for c in n.coeffs() + d.coeffs():
+        den = den.lcm(c.q)
+    n, d = n * den, d * den
+    content = flint.fmpz(0)
+    for c in n.coeffs() + d.coeffs():
+        content = content.gcd(c.p)
+    if d.leading_coefficient() < 0:
+        content = -content
+    return n / content, d / content
+
+
+def _expr(P, gens: tuple) -> sp.Expr:
+    """The fmpq_mpoly P in ``gens`` as a SymPy expression (the sum of its terms, as Poly.as_expr)."""
+    return sp.Add(*[sp.Rational(int(c.p), int(c.q)) * sp.Mul(*[x ** e for x, e in zip(gens, m) if e])
+                    for m, c in zip(P.monoms(), P.coeffs())])
 
 
 @caches.for_a_run
@@ -382,9 +472,89 @@ def _rewrite(f, k: int):
 
 @caches.for_a_run
 def _factor_list(g) -> tuple:
-    """sp.factor_list(g) as (constant, ((factor, multiplicity), ...)), memoised like :func:`_rewrite`."""
+    """sp.factor_list(g) as (constant, ((factor, multiplicity), ...)), memoised like :func:`_rewrite`;
+    by python-flint for a sum with integer coefficients (:func:`_flint_factor_list`)."""
+    found = _flint_factor_list(g)
+    if found is not None:
+        return found
     c, factors = sp.factor_list(g)
     return c, tuple(factors)
+
+
+def _flint_factor_list(g) -> tuple | None:
+    """What :func:`_factor_list` returns from SymPy, for a sum g of terms c·x^e (c an integer, x
+    symbols, e natural), the irreducible factors found by python-flint's fmpz_mpoly; None for
+    anything else.  SymPy's factor_list first writes g as ``together`` does: the integer content,
+    the symbols common to every term (each a factor (x, min e) of its own polynomial in x alone)
+    and the rest, one polynomial in its own symbols (_sort_gens: SymPy's order); its factors,
+    primitive with a positive leading coefficient in lex order, are unique.  All are sorted by
+    SymPy's key (length of the dense representation, number of generators, multiplicity, domain,
+    the representation; ties, among the common symbols, in the order of together's product), and
+    the constant is what remains."""
+    if not g.is_Add:
+        return None
+    terms = []
+    for t in g.args:
+        c, m = t.as_coeff_Mul()
+        if not c.is_Integer:
+            return None
+        powers: dict = {}
+        for f in sp.Mul.make_args(m):
+            b, e = f.as_base_exp()
+            if not (b.is_Symbol and e.is_Integer and e > 0):
+                if f == 1:
+                    continue
+                return None
+            powers[b] = powers.get(b, 0) + int(e)
+        terms.append((int(c), powers))
+    symbols = set().union(*(p.keys() for _, p in terms))
+    common = {x: min(p.get(x, 0) for _, p in terms) for x in symbols}
+    common = {x: e for x, e in common.items() if e > 0}
+    gens = _sort_gens([x for x in symbols if any(p.get(x, 0) > common.get(x, 0) for _, p in terms)])
+    ctx = flint.fmpz_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "lex")
+    rest = ctx.from_dict({tuple(p.get(x, 0) - common.get(x, 0) for x in gens): c for c, p in terms})
+    content, found = rest.factor()
+    # the common symbols as together's product holds them (Basic.compare): SymPy's sort is stable
+    order = sorted(common, key=cmp_to_key(lambda a, b: sp.Basic.compare(a ** common[a], b ** common[b])))
+    keyed = [((2, 1, common[x], [1, 0]), x, common[x]) for x in order]
+    for f, k in found:
+        if f.leading_coefficient() < 0:
+            f, content = -f, content * (-1) ** k
+        d = f.to_dict()
+        rep = _dense(d, len(gens))
+        expr = sp.Add(*[sp.Integer(int(c)) * sp.Mul(*[x ** e for x, e in zip(gens, m) if e]) for m, c in d.items()])
+        keyed.append(((len(rep), len(gens), int(k), rep), expr, int(k)))
+    keyed.sort(key=lambda item: item[0])
+    return sp.Integer(int(content)), tuple((f, k) for _, f, k in keyed)
+
+
+def _dense(d: dict, n: int) -> list:
+    """The dense recursive representation (SymPy's DMP, ``Poly.rep.to_list()``) of the polynomial
+    {exponents: coefficient} in n generators: coefficients by falling powers of the first one,
+    each in the others; the zero polynomial is [] wrapped n − 1 times."""
+    if not d:
+        z: list = []
+        for _ in range(n - 1):
+            z = [z]
+        return z
+    top = max(m[0] for m in d)
+    if n == 1:
+        out = [0] * (top + 1)
+        for m, c in d.items():
+            out[top - m[0]] = int(c)
+        return out
+    parts: dict = {}
+    for m, c in d.items():
+        parts.setdefault(m[0], {})[m[1:]] = c
+    return [_dense(parts.get(top - k, {}), n - 1) for k in range(top + 1)]
+
+
+def _factored(g) -> sp.Expr:
+    """sp.factor(g) for a polynomial g, rebuilt as SymPy's factor builds it (the constant kept
+    before the product of the factors' powers) from the memoised :func:`_factor_list`, not
+    factored a second time."""
+    c, factors = _factor_list(g)
+    return _keep_coeff(sp.sympify(c), sp.Mul(*[f**m for f, m in factors]))
 
 
 @caches.for_a_run
@@ -424,8 +594,8 @@ def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
             s *= fs**m
             why.append(f"`{show(f)}` {'>' if fs > 0 else '<'} 0")
         else:
-            return s, [f"`{show(sp.factor(g))}`: " + ", ".join(why or ["constant"])]
-    return None, [f"`{show(sp.factor(p))}`: " + undecided[0]]
+            return s, [f"`{show(_factored(g))}`: " + ", ".join(why or ["constant"])]
+    return None, [f"`{show(_factored(_rewrite(p, 0)))}`: " + undecided[0]]     # p expanded, factored above
 
 
 def _sign_facts(answer, E, H: Signs):
@@ -501,9 +671,43 @@ def _has_sign_facts(res, target, expected, H, witness=None) -> list:
     return out + [signed_fact(W, H)]
 
 
+def cancel(E) -> sp.Expr:
+    """sp.cancel(E), by :func:`_flint_cancel` for a rational function of its symbols."""
+    found = _flint_cancel(E)
+    return found if found is not None else sp.cancel(E)
+
+
+@caches.for_a_run
+def _ratio(x, y) -> sp.Expr:
+    """x / y in lowest terms (memoised for a run: a proportionality and its fact read the same ratios):
+    sp.cancel's expression, by :func:`_flint_cancel` for a rational function of its symbols."""
+    return cancel(x / y)
+
+
+def _flint_cancel(E) -> sp.Expr | None:
+    """sp.cancel(E) for a rational function E of its symbols: SymPy writes E = p/q, cancels in
+    Poly over its symbols (_sort_gens: SymPy's order, lex) to the normal form of
+    :func:`_flint_fraction` and returns P/Q as expressions; None for anything else."""
+    E = sp.sympify(E)
+    if E.is_Number:
+        return None
+    gens = tuple(_sort_gens(E.free_symbols))
+    found = _flint_fraction(E, gens, "lex")
+    if found is None:
+        return None
+    n, d = found
+    return 1 * (_expr(n, gens) / _expr(d, gens))
+
+
+def _ratios(v, w):
+    """The ratios v_i / w_i where w_i ≢ 0 on the circles, in order, computed as they are asked for."""
+    for x, y in zip(v, w):
+        if normal_form(fraction(y)[0]) != 0:
+            yield _ratio(x, y)
+
+
 def _proportional_facts(res, v, w, H, ratio=None) -> list:
-    candidates = ([ratio] if ratio is not None
-                  else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0])
+    candidates = [ratio] if ratio is not None else _ratios(v, w)
     for k in candidates:
         if sign(k, H)[0] == 1:
             return [signed_fact(k, H), facts.identity(bool(equal(v, k * w)), v, k * w)]
@@ -531,15 +735,16 @@ def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
 def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
     """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
     component i where that quotient has a sign by inspection; then v − k w ≡ 0."""
-    candidates = ([ratio] if ratio is not None
-                  else [sp.cancel(x / y) for x, y in zip(v, w) if normal_form(fraction(y)[0]) != 0])
-    for k in candidates:
+    candidates = [ratio] if ratio is not None else _ratios(v, w)
+    seen = []
+    for k in candidates:          # the first ratio with a proved positive sign: the later ones are not formed
+        seen.append(k)
         s, why = sign(k, H)
         if s == 1:
             same = equal(v, k * w)
             return Result(same.holds, [f"ratio k = `{show(sp.factor(k))}` > 0 under {H.describe()}: " + "; ".join(why),
                                        "v − k w ≡ 0: " + ("yes" if same else "no")] + same.evidence)
-    tried = ", ".join(show(sp.factor(k)) for k in candidates)
+    tried = ", ".join(show(sp.factor(k)) for k in seen)
     return Result(False, [f"no ratio with a proved positive sign among {tried}"])
 
 

@@ -202,11 +202,11 @@ def step(contact: str, sign: int, K: dict) -> Step:
         return out
     j, k = closing[0], opening[0]
     t = p[j] / -w[j]
-    p1 = (p + t * w).applyfunc(sp.cancel)
+    p1 = (p + t * w).applyfunc(T.cancel)            # T.cancel: sp.cancel's expressions
     Kj = K[LETTERS[j]]
     q1 = Kj * w
-    rho = sp.cancel(p.cross(w).dot(N) / N.dot(N))
-    u = p1.cross(q1).applyfunc(sp.cancel)
+    rho = T.cancel(p.cross(w).dot(N) / N.dot(N))
+    u = p1.cross(q1).applyfunc(T.cancel)
     cof = Kj.adjugate().T
     Cj = cone(LETTERS[j])
     tj, mj = R.ORIENTATION[LETTERS[j]], third(LETTERS[j])

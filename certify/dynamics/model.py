@@ -15,7 +15,7 @@ import flint
 import sympy as sp
 from sympy.core.mul import _keep_coeff
 
-from certify.algebra.poly import RING, from_flint, lam, primitive, r
+from certify.algebra.poly import RING, from_flint, lam, primitive, r, to_ring
 from certify.errors import UsageError
 
 LETTERS = "abc"
@@ -34,6 +34,21 @@ def collide(letter: str, q, rr=r) -> tuple:
         return (q1 + h * q2, -rr * q2, q3 + h * q2)
     if letter == "c":
         return (q1, q2 + h * q3, -rr * q3)
+    raise ValueError(f"unknown collision {letter!r}")
+
+
+def collide_integral(letter: str, q, rr) -> tuple:
+    """2d·K q for a rational r = m/d (d > 0): the positive multiple of :func:`collide` whose
+    matrix has the integer entries −2m (for −r), 2d (for 1) and m + d (for h); integer q
+    stay integer."""
+    m, d = rr.p, rr.q
+    q1, q2, q3 = q
+    if letter == "a":
+        return (-2 * m * q1, 2 * d * q2 + (m + d) * q1, 2 * d * q3)
+    if letter == "b":
+        return (2 * d * q1 + (m + d) * q2, -2 * m * q2, 2 * d * q3 + (m + d) * q2)
+    if letter == "c":
+        return (2 * d * q1, 2 * d * q2 + (m + d) * q3, -2 * m * q3)
     raise ValueError(f"unknown collision {letter!r}")
 
 
@@ -192,6 +207,16 @@ def charpoly_coefficients(M) -> list:
 
 
 def characteristic_polynomial(M: sp.Matrix) -> sp.Expr:
-    """cp(M) = det(λI - M), expanded in λ and r (SymPy's charpoly, on polynomials
-    rather than on the expressions of det)."""
+    """cp(M) = det(λI - M), expanded in λ and r: for a 3×3 matrix of polynomials in the
+    paper's variables, the determinant by cofactors in the sparse ring Q[λ, r, ...] (its
+    terms are the expanded expression); SymPy's charpoly otherwise."""
+    if M.shape == (3, 3):
+        try:
+            L = [[to_ring(lam if i == j else 0) - to_ring(M[i, j]) for j in range(3)] for i in range(3)]
+        except ValueError:
+            L = None
+        if L is not None:
+            return (L[0][0] * (L[1][1] * L[2][2] - L[1][2] * L[2][1])
+                    - L[0][1] * (L[1][0] * L[2][2] - L[1][2] * L[2][0])
+                    + L[0][2] * (L[1][0] * L[2][1] - L[1][1] * L[2][0])).as_expr()
     return sp.expand(M.charpoly(lam).as_expr())

@@ -38,7 +38,7 @@ from certify import caches
 from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 
-from .model import INDEX, LETTERS, collide
+from .model import INDEX, LETTERS, collide, collide_integral
 from .simulate import Undecided, sign
 
 ORIENTATION = {"a": 1, "b": 2, "c": 0}       # t with e_t · u(k) ≥ 0 (l. 950)
@@ -151,26 +151,55 @@ class Plane:
 
 def canonical(letter: str, n) -> Plane:
     """The Plane with contact ``letter`` and normal ∝ n (orientation e_t · n > 0)."""
-    n = primitive(n)
+    return oriented(letter, primitive(n))
+
+
+def oriented(letter: str, n) -> Plane:
+    """:func:`canonical` for a primitive integer n (±n is the Plane's normal)."""
     s = sign(n[ORIENTATION[letter]])
     if s == 0:
         raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")
     return Plane(letter, n if s > 0 else (-n[0], -n[1], -n[2]))
 
 
-def normal(p, q) -> tuple:
+def normal(p, q, candidate: tuple | None = None) -> tuple:
     """The primitive integer vector positively proportional to p ∧ q (p, q rational):
-    p and q are first scaled to integer vectors by positive factors."""
+    p and q are first scaled to integer vectors by positive factors (integer ones are).
+    ``candidate``: a primitive integer vector, perhaps ±the answer (e.g. the normal of the
+    reduction's plane there): when the integer p ∧ q is k·candidate for an integer k ≠ 0, the
+    answer is sign(k)·candidate (the primitive vector positively proportional to a vector is
+    unique), read with one division instead of the gcd of long entries; otherwise, by the gcd."""
+    fmpz = flint.fmpz
+    if type(p[0]) is fmpz and type(p[1]) is fmpz and type(p[2]) is fmpz and \
+            type(q[0]) is fmpz and type(q[1]) is fmpz and type(q[2]) is fmpz:
+        m = cross(p, q)
+        if candidate is not None:
+            k = _quotient(m, candidate)
+            if k is not None:
+                return candidate if k > 0 else (-candidate[0], -candidate[1], -candidate[2])
+        return primitive(m)
     return primitive(cross(integral(p), integral(q)))
 
 
-def plane(letter: str, p, q) -> Plane:
+def _quotient(m: tuple, c: tuple):
+    """The integer k ≠ 0 with m = k·c (integer vectors), or None."""
+    for t in range(3):
+        if c[t] != 0:
+            k, rest = divmod(m[t], c[t])
+            if rest != 0 or k == 0:
+                return None
+            return k if all(m[s] == k * c[s] for s in range(3) if s != t) else None
+    return None
+
+
+def plane(letter: str, p, q, candidate: tuple | None = None) -> Plane:
     """The reduction state of a physical state (p, q) right after a collision of
-    type ``letter`` (p_i = 0, q_i > 0): P = Span(p, q), normal p ∧ q."""
+    type ``letter`` (p_i = 0, q_i > 0): P = Span(p, q), normal p ∧ q (``candidate``:
+    as in :func:`normal`)."""
     i = INDEX[letter]
     if p[i] != 0 or sign(q[i]) <= 0:
         raise ValueError(f"not a state right after a collision {letter}: need p_{i + 1} = 0 < q_{i + 1}")
-    return canonical(letter, normal(p, q))
+    return oriented(letter, normal(p, q, candidate))
 
 
 def position(P: Plane) -> tuple:
@@ -230,11 +259,26 @@ def step(P: Plane, r, rows: dict | None = None) -> Plane:
 
 
 def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
-    """P and its first n images (fewer if a corner is met and stop_at_corner)."""
+    """P and its first n images (fewer if a corner is met and stop_at_corner).
+
+    After the first step every normal is primitive, and then the content g of m = M n (M the
+    integer rows of cof(K_j)) divides det M: adj(M) m = det(M) n, so g divides det(M)·n_k for
+    every k, and n is primitive.  So g = gcd(det M, m_1, m_2, m_3): gcds of the long entries
+    with a short number, the same primitive normal as :func:`canonical`'s."""
     out, rows = [P], cofactors(r)
-    for _ in range(n):
+    dets = {L: _det(rows[L]) for L in LETTERS}
+    fmpz = flint.fmpz
+    for k in range(n):
         try:
-            out.append(step(out[-1], r, rows))
+            Q = out[-1]
+            m = Q.n
+            if k == 0 or not (type(m[0]) is fmpz and type(m[1]) is fmpz and type(m[2]) is fmpz):
+                out.append(step(Q, r, rows))
+                continue
+            j = _next_letter_exact(Q.letter, INDEX[Q.letter], m)
+            m = apply(rows[j], m)
+            g = dets[j].gcd(m[0]).gcd(m[1]).gcd(m[2])
+            out.append(oriented(j, m if g == 1 else (m[0] // g, m[1] // g, m[2] // g)))
         except Corner:
             if not stop_at_corner:
                 raise
@@ -242,22 +286,45 @@ def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
     return out
 
 
+def _det(rows: tuple):
+    """The determinant of a 3×3 matrix given by its rows."""
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+
+
 def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:
     """The next n collision letters from P, and the final Plane, without keeping the
     orbit: the normal is made primitive only every ``reduce_every`` steps (its gcd
     is small, and the sign tests do not need it).  Stops early at a corner."""
     letters, rows = [], cofactors(r)
+    fmpz = flint.fmpz
+    if not all(type(z) is fmpz for z in P.n):
+        try:
+            for k in range(n):
+                j = next_letter(P)
+                m = apply(rows[j], P.n)
+                if m[ORIENTATION[j]] < 0:
+                    m = tuple(-z for z in m)
+                P = canonical(j, m) if k % reduce_every == 0 else Plane(j, m)
+                letters.append(j)
+        except Corner:
+            pass
+        return "".join(letters), canonical(P.letter, P.n)
+    # the same steps on (letter, normal) without a Plane per step (integer normals stay integer)
+    L, m = P.letter, P.n
     try:
         for k in range(n):
-            j = next_letter(P)
-            m = apply(rows[j], P.n)
-            if m[ORIENTATION[j]] < 0:
-                m = tuple(-z for z in m)
-            P = canonical(j, m) if k % reduce_every == 0 else Plane(j, m)
+            j = _next_letter_exact(L, INDEX[L], m)
+            m2 = apply(rows[j], m)
+            if m2[ORIENTATION[j]] < 0:
+                m2 = (-m2[0], -m2[1], -m2[2])
+            if k % reduce_every == 0:
+                m2 = canonical(j, m2).n          # a Corner here keeps (L, m), as the Plane path does
+            L, m = j, m2
             letters.append(j)
     except Corner:
         pass
-    return "".join(letters), canonical(P.letter, P.n)
+    return "".join(letters), canonical(L, m)
 
 
 def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]:
@@ -267,20 +334,59 @@ def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]
     last contact, a ball vector containing a positive multiple of the last oriented normal).
     Every letter is proven by the balls (:func:`next_letter`); the run stops at the first
     sign they cannot decide, or at a corner."""
-    letters = []
+    letters, rows = [], cofactors(r)
+    rows = [rows[L] for L in LETTERS]
     with precision(prec):
         m = tuple(flint.arb(z) for z in n)
-        L = letter
+        i = INDEX[letter]
         try:
             for _ in range(count):
-                L2 = next_letter(Plane(L, m))
-                m2 = cofactor_apply(L2, r, m)
-                top = max(abs(z).upper() for z in m2) * sign(m2[ORIENTATION[L2]])     # oriented: e_t · n > 0
-                L, m = L2, tuple(z / top for z in m2)
-                letters.append(L)
-        except (Undecided, Corner):
+                j = _next_index_ball(i, m)
+                if j < 0:
+                    break
+                x, y, z = apply(rows[j], m)
+                top = max(abs(x).upper(), abs(y).upper(), abs(z).upper()) * sign((x, y, z)[_ORIENTATION[j]])
+                i, m = j, (x / top, y / top, z / top)          # oriented: e_t · n > 0, max |n_k| ≈ 1
+                letters.append(LETTERS[j])
+        except Undecided:
             pass
-    return "".join(letters), L, m
+    return "".join(letters), LETTERS[i], m
+
+
+_ORIENTATION = tuple(ORIENTATION[L] for L in LETTERS)
+_NEXT = ((1, 2), (2, 0), (0, 1))     # (j, k) = (i + 1, i + 2) mod 3
+
+
+def _next_index_ball(i: int, n: tuple) -> int:
+    """The index of :func:`_next_letter_ball` (i's letter, n), or -1 where it raises
+    (Undecided or Corner: the run stops), from the same ball products and comparisons:
+    n_k and n_j of opposite decided signs, then n_i n_j and n_i n_k, exactly one > 0 and
+    both decided."""
+    j, k = _NEXT[i]
+    a, b, c = n[i], n[j], n[k]
+    if not ((c > 0 and b < 0) or (c < 0 and b > 0)):
+        return -1
+    pj, pk = a * b, a * c
+    if pj > 0 and pk < 0:
+        return j
+    if pj < 0 and pk > 0:
+        return k
+    return -1
+
+
+def _next_letter_ball(letter: str, n: tuple) -> str:
+    """:func:`next_letter` for a ball normal n (the same sign decisions, without building
+    the Plane): the position inside the face (:func:`position`: n ∧ e_i has the entries n_k
+    at j and −n_j at k, j, k = i+1, i+2, exact copies of the balls), then the one closing letter."""
+    i = INDEX[letter]
+    j, k = (i + 1) % 3, (i + 2) % 3
+    sk = sign(n[k])
+    if sk == 0 or sign(n[j]) != -sk:
+        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
+    closing = [L for L in LETTERS if L != letter and sign(n[i] * n[INDEX[L]]) > 0]
+    if len(closing) != 1:
+        raise Corner(f"cos φ = 0 at {Plane(letter, n)}: the orbit heads for a corner")
+    return closing[0]
 
 
 def ball_word(P: Plane, r, n: int, prec: int) -> str:
@@ -310,6 +416,30 @@ def vectorial_step(letter: str, u, r) -> tuple[str, tuple]:
     other = LETTERS[(i + 2) % 3]
     j = succ if s > 0 else other
     return j, trilinear(letter, j, u, r)
+
+
+def vectorial_ray(letter: str, u, r) -> tuple[str, tuple]:
+    """:func:`vectorial_step` up to a positive factor, in integers for an integer u and a
+    rational r = m/d: K_j occurs once in the trilinear formula, and 2d·K_j
+    (:func:`certify.dynamics.model.collide_integral`) in its place multiplies ũ(1) by 2d > 0."""
+    i = INDEX[letter]
+    s = sign(u[i])
+    if s == 0:
+        raise Corner("cos φ = 0: the orbit heads for a corner")
+    j = LETTERS[(i + 1) % 3] if s > 0 else LETTERS[(i + 2) % 3]
+    p1 = cross(u, E[INDEX[j]])
+    q0 = cross(u, cross(E[i], u))
+    return j, cross(p1, collide_integral(j, q0, r))
+
+
+def same_ray(v, w) -> bool:
+    """v = k w for some k > 0 (exact; False when w = 0): v ∧ w = 0 and v · w > 0, read from
+    one non-zero entry w_k of w (v_k w_k > 0 and v_j w_k = v_k w_j for every j)."""
+    for k in range(3):
+        if w[k] != 0:
+            vk, wk = v[k], w[k]
+            return (vk > 0) == (wk > 0) and vk != 0 and all(v[m] * wk == vk * w[m] for m in range(3) if m != k)
+    return False
 
 
 def trilinear(letter: str, j: str, u, r) -> tuple:
@@ -372,18 +502,46 @@ def angles_of(letter: str, p, q) -> Angles:
     the unit tangential part of q gives sin φ = q̂_i and cos φ = q̂ · e_θ.  The
     tangential part |p|² q − (q · p) p is formed before rounding (exactly, when p and q
     are exact: near a collapse q is almost radial and rounding first would cancel)."""
-    pp, qp = dot(p, p), dot(q, p)
-    w = tuple(pp * qk - qp * pk for qk, pk in zip(q, p))
-    p, w = (tuple(flint.arb(z) for z in v) for v in (p, w))
-    ph, wh = scale(1 / norm(p), p), scale(1 / norm(w), w)
-    ct, st = {"a": (ph[1], ph[2]), "b": (ph[2], ph[0]), "c": (ph[0], ph[1])}[letter]
-    return Angles(letter, ct, st, dot(wh, e_theta(letter, ct, st)), wh[INDEX[letter]])
+    # dot, scale and norm written out (this runs ~10^5 times in S7.2), the same operations in the same order
+    arb = flint.arb
+    p0, p1, p2 = p
+    q0, q1, q2 = q
+    pp, qp = p0 * p0 + p1 * p1 + p2 * p2, q0 * p0 + q1 * p1 + q2 * p2
+    w0, w1, w2 = arb(pp * q0 - qp * p0), arb(pp * q1 - qp * p1), arb(pp * q2 - qp * p2)
+    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
+    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
+    ph, wh = (c * p0, c * p1, c * p2), (d * w0, d * w1, d * w2)
+    ct, st = (ph[1], ph[2]) if letter == "a" else (ph[2], ph[0]) if letter == "b" else (ph[0], ph[1])
+    e0, e1, e2 = e_theta(letter, ct, st)
+    return Angles(letter, ct, st, wh[0] * e0 + wh[1] * e1 + wh[2] * e2, wh[INDEX[letter]])
 
 
 def angles(P: Plane, prec: int | None = None) -> Angles:
     """The trigonometric representation of a Plane (balls at ``prec`` bits)."""
     with precision(prec):
+        n = P.n
+        if type(n[0]) is flint.fmpz and type(n[1]) is flint.fmpz and type(n[2]) is flint.fmpz:
+            return angles_of(P.letter, *_position_tangent(P.letter, n))
         return angles_of(P.letter, position(P), tangent(P))
+
+
+def _position_tangent(letter: str, n: tuple) -> tuple[tuple, tuple]:
+    """:func:`position` and :func:`tangent` of an integer normal n, written out: n ∧ e_i has
+    the entries 0 at i, n_k at j and −n_j at k (j, k = i+1, i+2 mod 3); the same values."""
+    i = INDEX[letter]
+    j, k = (i + 1) % 3, (i + 2) % 3
+    p = [0, 0, 0]
+    p[j], p[k] = n[k], -n[j]
+    s, t = (p[j] > 0) - (p[j] < 0), (p[k] > 0) - (p[k] < 0)
+    if s != t or s == 0:
+        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
+    if s < 0:
+        p[j], p[k] = -p[j], -p[k]
+    n0, n1, n2 = n
+    ni = n[i]
+    w = [-ni * n0, -ni * n1, -ni * n2]
+    w[i] = n0 * n0 + n1 * n1 + n2 * n2 - ni * ni
+    return tuple(p), tuple(w)
 
 
 def trig_step(T: Angles, r) -> Angles:
@@ -393,11 +551,96 @@ def trig_step(T: Angles, r) -> Angles:
     if s == 0:
         raise Corner("cos φ = 0")
     j, p1 = CASES[(T.letter, s)]
-    p1 = p1(T.ct, T.st, T.cp, T.sp)
-    p1 = tuple(flint.arb(z) for z in p1)
-    p1 = scale(1 / norm(p1), p1)
-    Kq = collide(j, T.q(), flint.arb(r))
-    return angles_of(j, p1, tuple(k - dot(Kq, p1) * z for k, z in zip(Kq, p1)))
+    arb = flint.arb
+    x0, x1, x2 = p1(T.ct, T.st, T.cp, T.sp)
+    x0, x1, x2 = arb(x0), arb(x1), arb(x2)
+    c = 1 / (x0 * x0 + x1 * x1 + x2 * x2).sqrt()
+    x0, x1, x2 = c * x0, c * x1, c * x2
+    k0, k1, k2 = collide(j, T.q(), arb(r))
+    d = k0 * x0 + k1 * x1 + k2 * x2
+    return angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
+
+
+def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
+    """Along an orbit of Planes: at how many steps P → P1 the trigonometric step
+    (:func:`trig_step`) from the angles of P gives P1's contact and balls of cos, sin of θ, φ
+    overlapping P1's (:func:`angles` at ``prec`` bits), and at how many a sign was
+    undecided.  The same ball operations as :func:`trig_step` and :func:`angles`, in one
+    precision context and with the balls of r, −r and (1 + r)/2 formed once (each state's
+    angles are computed once: they end one step and start the next)."""
+    agree = undecided = 0
+    arb, fmpz = flint.arb, flint.fmpz
+    with precision(prec):
+        rr = arb(r)
+        neg, h = -rr, (1 + rr) / 2
+        last = None
+        for P, P1 in zip(planes, planes[1:]):
+            try:
+                if last is None or last[0] is not P:
+                    last = (P, _angles(P, fmpz))
+                T = last[1]
+                X = _angles(P1, fmpz)
+                last = (P1, X)
+                agree += _trig_agrees(T, X, P1.letter, neg, h, arb)
+            except Undecided:
+                undecided += 1
+    return agree, undecided
+
+
+def _angles(P: Plane, fmpz) -> Angles:
+    """:func:`angles` at the working precision."""
+    n = P.n
+    if type(n[0]) is fmpz and type(n[1]) is fmpz and type(n[2]) is fmpz:
+        return _angles_orthogonal(P.letter, *_position_tangent(P.letter, n))
+    return angles_of(P.letter, position(P), tangent(P))
+
+
+def _angles_orthogonal(letter: str, p, w) -> Angles:
+    """:func:`angles_of` for integer p and w with w · p = 0 (the position and tangent of
+    :func:`_position_tangent`: p = ±(n ∧ e_i) and w = |n|² e_i − n_i n are ⊥): the tangential
+    part |p|² w − (w · p) p is |p|² w, the same integers; the same balls from there."""
+    arb = flint.arb
+    p0, p1, p2 = p
+    q0, q1, q2 = w
+    pp = p0 * p0 + p1 * p1 + p2 * p2
+    w0, w1, w2 = arb(pp * q0), arb(pp * q1), arb(pp * q2)
+    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
+    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
+    ct, st = (c * p1, c * p2) if letter == "a" else (c * p2, c * p0) if letter == "b" else (c * p0, c * p1)
+    e0, e1, e2 = e_theta(letter, ct, st)
+    return Angles(letter, ct, st, (d * w0) * e0 + (d * w1) * e1 + (d * w2) * e2, d * (w0, w1, w2)[INDEX[letter]])
+
+
+def _trig_agrees(T: Angles, X: Angles, letter: str, neg, h, arb) -> bool:
+    """:func:`trig_step` from T (with the balls −r and (1 + r)/2 given), compared with X:
+    the same contact and every ball overlapping."""
+    cp = T.cp
+    if cp > 0:
+        s = 1
+    elif cp < 0:
+        s = -1
+    elif cp.is_zero():
+        raise Corner("cos φ = 0")
+    else:
+        raise Undecided(f"sign of {cp} undecided")
+    j, p1 = CASES[(T.letter, s)]
+    if j != letter:
+        return False
+    ct, st, sp = T.ct, T.st, T.sp
+    x0, x1, x2 = p1(ct, st, cp, sp)
+    x0, x1, x2 = arb(x0), arb(x1), arb(x2)
+    c = 1 / (x0 * x0 + x1 * x1 + x2 * x2).sqrt()
+    x0, x1, x2 = c * x0, c * x1, c * x2
+    q1, q2, q3 = Q0[T.letter](ct, st, cp, sp)
+    if j == "a":
+        k0, k1, k2 = neg * q1, q2 + h * q1, q3
+    elif j == "b":
+        k0, k1, k2 = q1 + h * q2, neg * q2, q3 + h * q2
+    else:
+        k0, k1, k2 = q1, q2 + h * q3, neg * q3
+    d = k0 * x0 + k1 * x1 + k2 * x2
+    Y = angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
+    return Y.ct.overlaps(X.ct) and Y.st.overlaps(X.st) and Y.cp.overlaps(X.cp) and Y.sp.overlaps(X.sp)
 
 
 # --- printed vector formulas ---------------------------------------------------

@@ -291,6 +291,92 @@ def _follow_exact(p: tuple, q: tuple, r: flint.fmpq, n: int) -> Run:
     return out
 
 
+@dataclass
+class Rays:
+    """An exact run kept up to positive factors: the collisions (``events``, as in
+    :class:`Run`), and after each integer vectors (P, Q) positively proportional to p and
+    q, P primitive (``rays[0]`` for the initial state, both primitive); ``stop`` and ``reason``
+    as in :class:`Run`.  What depends on the directions of p and q only (the collisions,
+    the plane Span(p, q) and its orientation) is read here as on the exact run."""
+
+    events: list[str] = field(default_factory=list)
+    rays: list[tuple] = field(default_factory=list)
+    stop: str = "n"
+    reason: str = ""
+
+    @property
+    def word(self) -> str:
+        return "".join(e if len(e) == 1 else f"[{e}]" for e in self.events)
+
+
+def _ray(v) -> tuple:
+    """The primitive integer vector positively proportional to the integer vector v (v = 0 kept)."""
+    g = v[0].gcd(v[1]).gcd(v[2])
+    return v if g == 1 or g == 0 else (v[0] // g, v[1] // g, v[2] // g)
+
+
+def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
+    """:func:`follow` for exact p0, q0 and r (at most n collisions), on the directions of
+    p and q: the same collisions, stop and reason, exactly, without forming p, q or t.
+
+    Proof that the run is the same.  Put p = αP, q = βQ (α, β > 0, P, Q integer).  A pair
+    approaches iff Q_i < 0; its time is t_i = p_i/(−q_i) = (α/β)·P_i/(−Q_i), so the times
+    compare (ties included) as the integers P_i(−Q_j) and P_j(−Q_i), and t = 0 iff P_i = 0:
+    the next collisions, and the meeting test of :func:`meeting` (signs of P, Q and of t),
+    are those of the run.  Then p + t q = (α/(−Q_i))((−Q_i)P + P_i Q), with the closed gaps 0,
+    and K q = (β/(2d)) (2d K) Q for r = m/d, where 2d K has the integer entries −2m, 2d,
+    m + d: positive multiples of the new p and q.  P is made primitive at every step (it
+    would grow quadratically), Q never (its content grows by at most 2d a step; the gcds
+    cost more than the longer products).  (A test runs both.)"""
+    m, d = r.p, r.q
+    neg, one, h = -2 * m, 2 * d, m + d           # 2d·(−r), 2d·1, 2d·(1 + r)/2
+    zero = flint.fmpz(0)
+    P, Q = _ray(integral_vector(p0)), _ray(integral_vector(q0))
+    out = Rays(rays=[(P, Q)])
+    events, rays = out.events, out.rays
+    for _ in range(n):
+        times = [(L, P[i], -Q[i]) for i, L in enumerate(LETTERS) if Q[i] < 0]
+        if not times:
+            out.stop = "free"
+            return out
+        letters, num, den = times[0]
+        if len(times) > 1:
+            for _L, n1, d1 in times[1:]:
+                if n1 * den < num * d1:
+                    num, den = n1, d1
+            letters = "".join(L for L, n1, d1 in times if n1 * den == num * d1)
+        closed = [i for i, L in enumerate(LETTERS)
+                  if L in letters or (Q[i] >= 0 and P[i] == 0 and (Q[i] == 0 or num == 0))]
+        if 1 in closed and len(closed) > 1:
+            exc = MultipleCollision(range(min(closed) + 1, max(closed) + 3), None)
+            out.stop, out.reason = "multiple", str(exc)
+            return out
+        P = [den * P[0] + num * Q[0], den * P[1] + num * Q[1], den * P[2] + num * Q[2]]
+        q1, q2, q3 = Q
+        for L in letters:
+            if L == "a":
+                P[0] = zero
+                q1, q2, q3 = neg * q1, one * q2 + h * q1, one * q3
+            elif L == "b":
+                P[1] = zero
+                q1, q2, q3 = one * q1 + h * q2, neg * q2, one * q3 + h * q2
+            else:
+                P[2] = zero
+                q1, q2, q3 = one * q1, one * q2 + h * q3, neg * q3
+        P, Q = _ray(P), (q1, q2, q3)
+        events.append(letters)
+        rays.append((P, Q))
+    return out
+
+
+def integral_vector(v: Sequence) -> tuple:
+    """A positive multiple of the rational vector v with integer (fmpz) entries."""
+    den = flint.fmpz(1)
+    for z in v:
+        den = den.lcm(flint.fmpq(z).q)
+    return tuple((flint.fmpq(z) * den).p for z in v)
+
+
 def run_certified(datum: Callable[[int], tuple], n: int, prec: int = 128,
                   maxprec: int = 1 << 15, until: Callable[[Run], bool] | None = None
                   ) -> tuple[Run, int]:

@@ -29,6 +29,7 @@ from certify.algebra.poly import (
     LR_R,
     LRCTX,
     LRQCTX,
+    RING,
     Frac,
     field_to_frac,
     flint_poly_to_frac,
@@ -177,10 +178,21 @@ def check_position_map(steps, abcd, cp):
 
 
 def velocities(word: str, q0: sp.Matrix) -> list[sp.Matrix]:
-    """q(t_0), q(t_1), ..., q(t_n) for a symbolic q(0) (no eigenvalue needed)."""
+    """q(t_0), q(t_1), ..., q(t_n) for a symbolic q(0) (no eigenvalue needed), expanded.
+    A polynomial q(0) in the paper's variables is multiplied in the sparse ring (the same
+    expanded expressions, without SymPy's expand)."""
     out = [sp.Matrix(q0)]
+    try:
+        q = [to_ring(e) for e in out[0]]
+    except (ValueError, sp.PolynomialError, sp.polys.polyerrors.CoercionFailed):
+        q = None
     for letter in check_word(word):
-        out.append((collision_matrix(letter) * out[-1]).applyfunc(sp.expand))
+        if q is None:
+            out.append((collision_matrix(letter) * out[-1]).applyfunc(sp.expand))
+            continue
+        K = [[to_ring(k) for k in collision_matrix(letter).row(i)] for i in range(3)]
+        q = [sum((K[i][j] * q[j] for j in range(3)), RING.zero) for i in range(3)]
+        out.append(sp.Matrix([p.as_expr() for p in q]))
     return out
 
 

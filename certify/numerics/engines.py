@@ -184,6 +184,7 @@ class _Product:
         self.done = []
         self.steps = 0
         self.base = n0
+        self._column, self._of = None, None
 
     def times(self, j):
         return self.mats[j] * self.P
@@ -205,6 +206,15 @@ class _Product:
         self.base = n0
         return self.evaluate(self.P, n0, prec)
 
+    def value(self, P):
+        """:meth:`evaluate` of P at the base (the base's column built once a base: a column
+        of balls is copied exactly, whatever the precision)."""
+        if self._of is not self.base:
+            n0 = self.base
+            self._column, self._of = flint.arb_mat([[n0[0]], [n0[1]], [n0[2]]]), n0
+        v = flint.arb_mat(P) * self._column
+        return (v[0, 0], v[1, 0], v[2, 0])
+
     @staticmethod
     def evaluate(P, n0, prec):
         """A ball vector containing P n0: P rounded to arb at the working precision
@@ -220,8 +230,26 @@ def _initial_ball(theta0, phi0, letter, normal):
     return rules.initial_normal(flint.arb(theta0), flint.arb(phi0), letter, flint.arb.cos, flint.arb.sin)
 
 
+_NEXT = ((1, 2), (2, 0), (0, 1))     # (j, k) = (i + 1, i + 2) mod 3
+
+
+def _ball_classify(i: int, n) -> tuple[int, int]:
+    """:func:`.rules.classify` of a ball normal (signs by :func:`.rules.ball_sign`, zero
+    bounds), the same answer: the usual state (finite, n_j > 0 > n_k and n_i decided:
+    no break, the next contact j or k) read from three comparisons; any other by
+    ``rules.classify`` itself."""
+    j, k = _NEXT[i]
+    a, b, c = n[i], n[j], n[k]
+    if b > 0 and c < 0 and a.is_finite() and b.is_finite() and c.is_finite():
+        if a > 0:
+            return rules.COMPLETED, j
+        if a < 0:
+            return rules.COMPLETED, k
+    return rules.classify(i, n, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
+
+
 def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, normal=None, start_bits=BALL_START,
-                stop: dict | None = None):
+                stop: dict | None = None, every: bool = True):
     """The certified orbit, state by state: yields ``(k, j, n, bits)`` for the state right
     after collision k (k = 0: the datum, at contact ``letter``), j its contact's index and
     n a ball vector containing a positive multiple of the reduction's normal (oriented,
@@ -230,7 +258,8 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
     digits, default :data:`BALL_CAP_DPS`).  Every collision choice is proven by the balls.
     Ends after ``collisions`` collisions or at the first choice the cap cannot decide;
     ``stop``, when given, receives the break code and the precision (``stop["code"]``,
-    ``stop["bits"]``)."""
+    ``stop["bits"]``).  ``every=False``: only the last state is yielded (the same state,
+    computed without a yield and a precision context a collision)."""
     cap = int((dps or BALL_CAP_DPS) * BITS_PER_DIGIT) + 1
     prec = min(start_bits, cap)
     with precision(prec):
@@ -247,27 +276,38 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
             prod.rebase(_initial_ball(theta0, phi0, letter, normal), prec)
             return prod.evaluate(P, prod.base, prec)
 
-    yield 0, i, n, prec
+    last = (0, i, n, prec)
+    if every:
+        yield last
     while done < collisions:
-        with precision(prec):
-            code, j = rules.classify(i, n, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
-        if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
-            n = more(prod.P)
-            continue
+        bits, before = prec, done
+        with precision(prec):          # one context a collision, or (every=False) a precision
+            while done < collisions and prec == bits:
+                code, j = _ball_classify(i, n)
+                if code in (rules.UNDECIDED, rules.SHORT_STEP) and prec < cap:
+                    n, code = more(prod.P), 0    # a new precision: a new context
+                    continue
+                if code:
+                    break
+                P = prod.times(j)
+                m = prod.value(P)
+                t = (j + 1) % 3
+                while not (m[t] > 0 or m[t] < 0) and prec < cap:     # the orientation undecided
+                    m = more(P)
+                if m[t] < 0:
+                    P, m = -P, tuple(-z for z in m)
+                prod.push(P, m)
+                n = m
+                i, done = j, done + 1
+                last = (done, j, n, prec)
+                if every:
+                    break
         if code:
             break
-        P = prod.times(j)
-        with precision(prec):
-            m = prod.evaluate(P, prod.base, prec)
-        t = (j + 1) % 3
-        while not (m[t] > 0 or m[t] < 0) and prec < cap:     # the orientation undecided
-            m = more(P)
-        if m[t] < 0:
-            P, m = -P, tuple(-z for z in m)
-        prod.push(P, m)
-        n = m
-        i, done = j, done + 1
-        yield done, j, n, prec
+        if every and done > before:
+            yield last
+    if not every:
+        yield last
     if stop is not None:
         stop.update(code=code, bits=prec)
 

@@ -38,13 +38,18 @@ MAX_INTERVALS = 20    # at most this many intervals at PIECE_GAP: "a finite unio
 def clusters(values, gap: float = GAP) -> list[tuple[float, float, int]]:
     """The finite values sorted and cut wherever two consecutive ones differ by more than
     ``gap``: [(lo, hi, count), ...] in increasing order."""
+    v, starts, ends = _cuts(values, gap)
+    return [(float(v[s]), float(v[e]), int(e - s + 1)) for s, e in zip(starts, ends)]
+
+
+def _cuts(values, gap: float):
+    """(the finite values sorted, the index of each cluster's first value, of its last)."""
     v = np.sort(np.asarray(values, float).ravel())
     v = v[np.isfinite(v)]
     if v.size == 0:
-        return []
+        return v, np.zeros(0, int), np.zeros(0, int)
     cut = np.flatnonzero(np.diff(v) > gap)
-    starts, ends = np.r_[0, cut + 1], np.r_[cut, v.size - 1]
-    return [(float(v[s]), float(v[e]), int(e - s + 1)) for s, e in zip(starts, ends)]
+    return v, np.r_[0, cut + 1], np.r_[cut, v.size - 1]
 
 
 @dataclass(frozen=True)
@@ -83,12 +88,13 @@ def coverage(values, bins: int = BINS) -> float:
 
 def omega(values, gap: float = GAP, point: float = POINT, max_pieces: int = MAX_PIECES) -> Omega:
     """The kind of ω-limit set the values suggest (module docstring)."""
-    cl = clusters(values, gap)
-    if not cl:
+    v, starts, ends = _cuts(values, gap)        # the clusters, as arrays (no list of them)
+    if starts.size == 0:
         return Omega("none", 0, 0.0, 0.0)
-    width = max(hi - lo for lo, hi, _ in cl)
-    kind = "points" if width < point else "pieces" if len(cl) <= max_pieces else "spread"
-    return Omega(kind, len(cl), float(width), coverage(values))
+    width = float(np.max(v[ends] - v[starts]))  # the same doubles as max(hi − lo) over clusters()
+    count = int(starts.size)
+    kind = "points" if width < point else "pieces" if count <= max_pieces else "spread"
+    return Omega(kind, count, width, coverage(values))
 
 
 def accumulation_points(data: FigureData, k: int, gap: float = GAP, point: float = POINT) -> int | None:

@@ -86,10 +86,12 @@ def upper_threshold(n: int, dps: int | None = None):
         f = lambda x: q2_of_dominant(n, x)   # noqa: E731
         lo_c, hi_c = (0.12, 0.32) if n > 6 else (0.05, 0.8)
         xs = [rc + mpmath.mpf(lo_c + (hi_c - lo_c) * k / 40) / n ** 2 for k in range(41)]
-        vals = [f(x) for x in xs]
-        for a, b, fa, fb in zip(xs, xs[1:], vals, vals[1:]):
+        a, fa = xs[0], f(xs[0])
+        for b in xs[1:]:                     # the first cell where q_2(0) changes sign (f up to it only)
+            fb = f(b)
             if fa * fb < 0:
                 return mpmath.findroot(f, (a, b), solver="illinois")
+            a, fa = b, fb
     raise ArithmeticError(f"no root of q_2(0) found for n = {n}")
 
 

@@ -321,35 +321,59 @@ def frame(N, c, t: int) -> tuple[tuple, str]:
 
 
 # ------------------------------------------------------------------ the certificate
-def check(word: str, r, c: tuple, T: tuple, rho: flint.fmpq, pair: str = "given", P: list | None = None) -> Trap | str:
-    """The certificate of the module docstring for U = {c + T u : |u| ≤ ρ}: a Trap when
-    every wall and both inequalities (R < ρ, κ < 1) are proved in arb, else the reason."""
+@dataclass(frozen=True)
+class Shape:
+    """What :func:`check` reads of U = {c + T u : |u| ≤ ρ} that does not depend on ρ, as
+    balls at :data:`PREC`: each wall's value at the centre and its slope (the norm of its
+    row on the frame), the return map's α and the norms of β, g_0 and A, and the frame's
+    σ_max and |det| (on the free coordinates); computed once for the radii tried."""
+
+    walls: tuple             # (name, ℓ(c), ‖ℓ T‖)
+    alpha: flint.arb
+    norm_beta: flint.arb
+    norm_g: flint.arb
+    norm_a: flint.arb
+    sv: flint.arb
+    dt: flint.arb
+
+
+def shape(word: str, c: tuple, T: tuple, P: list) -> Shape:
+    """The :class:`Shape` of the ellipse with centre c and frame T for the word (P: its products)."""
     t = ORIENTATION[word[-1]]
-    P = P or products(word, r)
-    N = P[-1]
     with precision(PREC):
-        for w in walls(word, P):
-            low = flint.arb(_dot(w.row, c)) - rho * _norm([_dot(w.row, col) for col in T])
+        ws = tuple((w.name, flint.arb(_dot(w.row, c)), _norm([_dot(w.row, col) for col in T])) for w in walls(word, P))
+        g0, A, alpha, beta = _return_map(P[-1], c, T, t)
+        f = _free(t)
+        Tf = tuple(tuple(T[j][k] for j in range(2)) for k in f)
+        return Shape(ws, flint.arb(alpha), _norm(beta), _norm(g0), _spectral(A), _spectral(Tf),
+                     abs(flint.arb(Tf[0][0] * Tf[1][1] - Tf[0][1] * Tf[1][0])))
+
+
+def check(word: str, r, c: tuple, T: tuple, rho: flint.fmpq, pair: str = "given", P: list | None = None,
+          form: Shape | None = None) -> Trap | str:
+    """The certificate of the module docstring for U = {c + T u : |u| ≤ ρ}: a Trap when
+    every wall and both inequalities (R < ρ, κ < 1) are proved in arb, else the reason.
+    ``form``: its :class:`Shape` (of c and T), when the caller has it."""
+    form = form or shape(word, c, T, P or products(word, r))
+    with precision(PREC):
+        for name, value, slope in form.walls:
+            low = value - rho * slope
             if not low > 0:
-                return f"the wall '{w.name}' is not proved positive on U"
-        g0, A, alpha, beta = _return_map(N, c, T, t)
-        den = flint.arb(alpha) - rho * _norm(beta)
+                return f"the wall '{name}' is not proved positive on U"
+        den = form.alpha - rho * form.norm_beta
         if not den > 0:                                    # the wall at the return, again: R and κ need it
             return "the return's denominator α - |β|ρ is not proved positive"
-        norm_a, norm_g = _spectral(A), _norm(g0)
+        norm_a, norm_g, alpha = form.norm_a, form.norm_g, form.alpha
         R = (norm_g + norm_a * rho) / den
-        kappa = norm_a / den + R * _norm(beta) / den
+        kappa = norm_a / den + R * form.norm_beta / den
         if not R < rho:
             return f"F(U) ⊂ U is not proved (image radius ≤ {R.str(5)} against ρ = {flint.arb(rho).str(5)})"
         if not kappa < 1:
             return f"the contraction κ < 1 is not proved (κ ≤ {kappa.str(5)})"
-        f = _free(t)
-        Tf = tuple(tuple(T[j][k] for j in range(2)) for k in f)
-        sv = _spectral(Tf)
-        dt = abs(flint.arb(Tf[0][0] * Tf[1][1] - Tf[0][1] * Tf[1][0]))
+        sv, dt = form.sv, form.dt
         inner = rho * dt / sv                              # σ_min(T) = |det T| / σ_max(T)
         return Trap(word, flint.fmpq(r), tuple(c), tuple(T), rho, _upper(kappa), _upper(R / rho),
-                    _upper(norm_g / flint.arb(alpha) / (1 - kappa)), max(_lower(inner), flint.fmpq(0)),
+                    _upper(norm_g / alpha / (1 - kappa)), max(_lower(inner), flint.fmpq(0)),
                     _upper(rho * sv), pair)
 
 
@@ -378,9 +402,9 @@ def attempt(word: str, r, centre: tuple | None = None) -> Trap | str:
         slopes = [(w, _norm([_dot(w.row, col) for col in T])) for w in walls(word, P)]
         rho0 = min(flint.arb(_dot(w.row, c)) / s for w, s in slopes if s > 0)
         rho, bad = _dyadic(rho0 * flint.arb(SHRINK)), _dyadic(rho0)
-    why = "no radius tried"
+    why, form = "no radius tried", shape(word, c, T, P)
     for _ in range(TRIES):
-        found = check(word, r, c, T, rho, pair, P)
+        found = check(word, r, c, T, rho, pair, P, form)
         if isinstance(found, Trap):
             return _largest(found, bad, P)
         why, bad, rho = found, rho, rho * SHRINK
@@ -389,10 +413,11 @@ def attempt(word: str, r, centre: tuple | None = None) -> Trap | str:
 
 def _largest(good: Trap, bad: flint.fmpq, P: list, steps: int = BISECTIONS) -> Trap:
     """A larger certified radius between good.radius and a refused one, by bisection."""
+    form = shape(good.word, good.centre, good.frame, P)
     for _ in range(steps):
         mid = (good.radius + bad) / 2
         mid = flint.fmpq((mid.p * 2 ** FRAME_BITS) // mid.q, 2 ** FRAME_BITS)
-        found = check(good.word, good.r, good.centre, good.frame, mid, good.pair, P)
+        found = check(good.word, good.r, good.centre, good.frame, mid, good.pair, P, form)
         if isinstance(found, Trap):
             good = found
         else:

@@ -26,6 +26,7 @@ from certify.algebra.branches import (
     X_PLUS,
     Condition,
     Spectrum,
+    less,
     same,
     simplest_between,
     strictly_between,
@@ -43,7 +44,7 @@ from certify.algebra.poly import (
 from certify.dynamics.systems import FOUR, System, run_in
 from certify.dynamics.words import Candidate
 from certify.errors import UNDECIDED
-from certify.obligations import fact
+from certify.obligations import fact, recording_now
 
 NO_X = "—"                   # the label of the only "fixed point" of a two-gap system (no x)
 
@@ -110,6 +111,15 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
         delta, c = fp.delta, fp.c
     N0, N1, D0 = (divmod(e, C)[1] for e in (N0, N1, D0))
     return Condition(req.name, None, None, delta, c, lrq=(N0, N1, D0))
+
+
+def _twin(cond: Condition, name: str) -> Condition:
+    """The condition of the same requirement at the other fixed point (σ → -σ): the
+    polynomials of :func:`condition` with N₁ negated (the products and remainders of N₀,
+    σN₁, D₀ are linear in σ); the terms of N₀, D₀ and Δ shared, those of N₁ negated."""
+    N0, N1, D0 = cond._lrq
+    terms = dict(cond.terms, N1=[(-c, i, j) for c, i, j in cond.terms["N1"]])     # the terms of -N₁
+    return Condition(name, None, None, cond.delta, cond.c, lrq=(N0, -N1, D0), terms=terms)
 
 
 def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:
@@ -201,9 +211,16 @@ def sign_in_cell(T, branch: int, lo, hi):
 
 def _sign_at_facts(answer, T, rc, branch):
     """For the kernel: a point of a cell has the cell's sign (the cell's signs query and rc
-    inside it); at a critical value, the table's signs there (re-derived in Q(rc)[λ])."""
-    if any(same(c, rc) for c in T.critical):
-        return facts.table_point(answer, T, rc, branch)
+    inside it); at a critical value, the table's sign there on ``branch`` (re-derived in
+    Q(rc)[λ]; the others are not claimed, so not computed unless the table holds them)."""
+    k = next((i for i, c in enumerate(T.critical) if same(c, rc)), None)
+    if k is not None:
+        if T.has_point(k) or T.source is None:
+            return facts.table_point(answer, T, rc, branch)
+        spec, cond = T.source
+        roots = spec.branches_at(rc)
+        signs = None if roots is None else [answer if i == branch else UNDECIDED for i in range(len(roots))]
+        return facts.branch_signs(signs, spec, cond, rc, only=branch)
     cell = next(c for c in T.cells if c.lo < rc < c.hi)
     return [facts.sign_query([answer], T, branch, cell.lo, cell.hi, include_points=False),
             facts.compare(1, rc, cell.lo), facts.compare(-1, rc, cell.hi)]
@@ -215,6 +232,11 @@ def table_sign_at(T, rc: Algebraic, branch: int):
     T's critical values, else the sign of the cell holding rc."""
     for k, c in enumerate(T.critical):
         if same(c, rc):
+            if not T.has_point(k) and T.source is not None:
+                # the entry T.points[k] would hold on this branch, for this branch alone
+                # (Spectrum.sign_on_branch_at; UNDECIDED where the branches are not isolated)
+                spec, cond = T.source
+                return spec.sign_on_branch_at(cond, rc, branch)
             pt = T.points[k]
             if pt is None:
                 return UNDECIDED
@@ -261,7 +283,7 @@ class Analysis:
         self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd_ring or cand.abcd, self.spec.ring_cp)} \
             if cand.abcd is not None else {NO_X: None}
         self.tables = {}
-        self._twins: dict = {}          # id of a requirement with x -> (it, its first Condition)
+        self._twins: dict = {}          # id of a requirement with x -> (it, its first Condition, its x)
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
         self.regions = [Region(k, f, [], [], []) for k in range(nb) for f in self.fps]
@@ -285,15 +307,17 @@ class Analysis:
             return None
         key = (req.name, fname if req.has_x else "", tuple(_key(e) for e in hull))
         if key not in self.tables:
-            cond = condition(req, self.spec.lrq_cp, self.fps[fname] if req.has_x else None)
-            if req.has_x:
-                # x₊ and x₋ differ only in the sign of N₁ (σ): the norms N₀² - N₁²Δ, D₀, Δ and c
-                # are the same polynomials, computed once for the requirement
-                twin = self._twins.get(id(req))
-                if twin is not None and twin[0] is req:
-                    cond.share_norms(twin[1])
-                else:
-                    self._twins[id(req)] = (req, cond)
+            twin = self._twins.get(id(req)) if req.has_x else None
+            if twin is not None and twin[0] is req:
+                # x₊ and x₋ differ only in the sign of N₁ (σ): N₀, D₀ and the norms N₀² - N₁²Δ,
+                # D₀, Δ and c are the same polynomials, computed once for the requirement
+                cond = _twin(twin[1], req.name) if twin[2] != fname else \
+                    condition(req, self.spec.lrq_cp, self.fps[fname])
+                cond.share_norms(twin[1])
+            else:
+                cond = condition(req, self.spec.lrq_cp, self.fps[fname] if req.has_x else None)
+                if req.has_x:
+                    self._twins[id(req)] = (req, cond, fname)
             self.tables[key] = self.spec.sign_table(cond, *hull)
         return self.tables[key]
 
@@ -330,13 +354,15 @@ class Analysis:
     def _split(self, R: Region, p_list, req: Requirement, T):
         """Each piece cut at the critical values of T, with the status of req on each
         part: "holds", "fails" or "undecided" (and a reason at points)."""
+        exact = recording_now()
         for p in p_list:
             if p.is_point:
                 yield self._point(R, p, req, T)
                 continue
             # exact comparisons (not read off the intervals): outside a deciding function each
-            # one is an obligation of the certificate being made (Algebraic._cmp records it)
-            cuts = [c for c in T.critical if p.lo < c < p.hi]
+            # one is an obligation of the certificate being made (Algebraic._cmp records it);
+            # where none is made, the same answers read off the intervals first (branches.less)
+            cuts = [c for c in T.critical if (p.lo < c < p.hi if exact else less(p.lo, c) and less(c, p.hi))]
             ends = [p.lo] + cuts + [p.hi]
             for a, b in zip(ends, ends[1:]):
                 ok = _meets(sign_in_cell(T, R.branch, a, b), req.sign)
@@ -350,7 +376,8 @@ class Analysis:
     def _point(self, R: Region, p: Piece, req: Requirement, T):
         rc, k = p.lo, R.branch
         with_x = p.x_value is not None and req.has_x
-        sg = self._sign_with_x(req, rc, k, p.x_value) if with_x else table_sign_at(T, rc, k)
+        sg = self._sign_with_x(req, rc, k, p.x_value) if with_x else \
+            table_sign_at(T, rc, k)
         ok = _meets(sg, req.sign)
         if ok != UNDECIDED:
             return p, "holds" if ok else "fails", "" if ok else \
@@ -378,8 +405,7 @@ class Analysis:
                     continue
                 if vanishes_on_branch(self.spec, cond.N[0], rc, k):
                     return p, "fails", f"{req.name} vanishes there (exact, other rows of the eigen-equation)"
-                sg = self.spec.sign_at_point(cond, rc)
-                ok = UNDECIDED if sg is None else _meets(sg[k] if k < len(sg) else NO_BRANCH, req.sign)
+                ok = _meets(self._sign_on(cond, rc, k), req.sign)
                 if ok != UNDECIDED:
                     return p, "holds" if ok else "fails", "" if ok else \
                         f"{req.name} has the wrong sign (other rows of the eigen-equation)"
@@ -394,8 +420,15 @@ class Analysis:
         return condition(req, self.spec.lrq_cp, x_value=p.x_value if req.has_x else None)
 
     def _sign_with_x(self, req, rc, k, xv):
-        sg = self.spec.sign_at_point(condition(req, self.spec.lrq_cp, x_value=xv), rc)
-        return UNDECIDED if sg is None else (sg[k] if k < len(sg) else NO_BRANCH)
+        return self._sign_on(condition(req, self.spec.lrq_cp, x_value=xv), rc, k)
+
+    def _sign_on(self, cond, rc, k):
+        """The sign of cond on branch k at rc (UNDECIDED where the branches are not isolated):
+        from every branch's signs where a certificate records them, else from branch k's."""
+        if recording_now():
+            sg = self.spec.sign_at_point(cond, rc)
+            return UNDECIDED if sg is None else (sg[k] if k < len(sg) else NO_BRANCH)
+        return self.spec.sign_on_branch_at(cond, rc, k)
 def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: System = FOUR,
                         previous: str | None = None) -> tuple[list[Requirement], list]:
     """The candidate of ``word`` realises its first m collisions, strictly, iff

@@ -45,7 +45,9 @@ from pathlib import Path
 
 import flint
 import sympy as sp
+from sympy.polys.matrices import DomainMatrix
 
+from certify import caches
 from certify.algebra import Algebraic, checked_real_root_count, ends, flint_real_roots, precision, sign_at, sturm_count
 from certify.algebra.poly import parse, show, to_fmpq, to_fmpz_poly
 from certify.dynamics import island, reduction
@@ -82,9 +84,23 @@ class Claims:
 
 @dataclass
 class Step:
+    """One step: its name, whether it holds, and its evidence, written when first read
+    (``text``: the string, or a function of no argument that writes it; the verdict never
+    waits for it, and most callers, ``certify identify`` and ``certify all``, never read it)."""
+
     name: str
     holds: bool
-    evidence: str
+    text: object = ""
+
+    @property
+    def evidence(self) -> str:
+        if callable(self.text):
+            self.text = self.text()
+        return str(self.text)
+
+    def __getstate__(self) -> dict:
+        """Pickled with its evidence written (a function that writes it is not picklable)."""
+        return {"name": self.name, "holds": self.holds, "text": self.evidence}
 
 
 @dataclass
@@ -118,14 +134,20 @@ def interval_sign(expr) -> int:
     (no root of its numerator or denominator in the interval, counted by Sturm and
     python-flint's isolation), ValueError otherwise."""
     num, den = sp.fraction(sp.cancel(sp.together(expr)))
+    return fraction_sign(_fmpq_poly(num), _fmpq_poly(den), lambda k: (num, den, expr)[k])
+
+
+def fraction_sign(num: flint.fmpq_poly, den: flint.fmpq_poly, name=None) -> int:
+    """The sign of num/den on ]3−2√2, 1[ (:func:`interval_sign`): ±1 when neither has a root
+    inside (:func:`roots_inside`), their signs at r = 1/2; ValueError otherwise.  ``name(k)``:
+    what the error names (k = 0, 1: num, den; 2: the fraction)."""
     s = 1
-    for f in (num, den):
-        P = _fmpq_poly(f)
+    for k, P in enumerate((num, den)):
         if P.degree() > 0 and roots_inside(P) != 0:
-            raise ValueError(f"{f} changes sign on ]3−2√2, 1[")
+            raise ValueError(f"{name(k) if name else P} changes sign on ]3−2√2, 1[")
         s *= (P(flint.fmpq(1, 2)) > 0) - (P(flint.fmpq(1, 2)) < 0)
     if s == 0:
-        raise ValueError(f"{expr} vanishes on ]3−2√2, 1[")
+        raise ValueError(f"{name(2) if name else (num, den)} vanishes on ]3−2√2, 1[")
     return s
 
 
@@ -160,6 +182,86 @@ def sign_of(expr, symbolic: bool) -> int:
     return 1 if expr > 0 else -1
 
 
+# --- exact arithmetic over Q (r rational) or Q(r) (r the symbol) -------------------
+#
+# The steps decide in the field of the coefficients: Q (python-flint's fmpq) at a rational
+# r, Q(r) (SymPy's field of fractions in r, its elements kept cancelled) for the symbol r.
+# A linear form a·u + b·v + c is the triple (a, b, c); a matrix, the tuple of its rows.
+# SymPy expressions are read in once (the law's matrices, the claims) and written out
+# only for the evidence.
+
+class Coefficients:
+    """The field of the forms' coefficients (Q at a rational r, Q(r) for the symbol r) and
+    the sign of its elements: exact at a rational r, certified on ]3−2√2, 1[ for the symbol
+    (:func:`fraction_sign`), as :func:`sign_of` decides them."""
+
+    def __init__(self, symbolic: bool):
+        self.symbolic = symbolic
+        self.K = sp.QQ.frac_field(R_SYMBOL) if symbolic else sp.QQ
+
+    def of(self, expr):
+        """A SymPy constant (free of u, v) as an element."""
+        return self.K.from_sympy(sp.sympify(expr))
+
+    def to_sympy(self, x):
+        return self.K.to_sympy(x)
+
+    def sign(self, x) -> int:
+        if x == 0:
+            return 0
+        if not self.symbolic:
+            return 1 if x > 0 else -1
+        num, den = _poly_in_r(x.numer), _poly_in_r(x.denom)
+        if num.degree() <= 0 and den.degree() <= 0:
+            return 1 if num[0] * den[0] > 0 else -1
+        return fraction_sign(num, den, lambda k: (x.numer.as_expr(), x.denom.as_expr(), self.to_sympy(x))[k])
+
+    def linear(self, expr) -> tuple:
+        """The form (a, b, c) of a SymPy expression a·u + b·v + c; ValueError when it is not linear."""
+        P = sp.Poly(sp.expand(expr), u, v, domain=self.K)
+        if P.total_degree() > 1:
+            raise ValueError(f"{expr} is not a linear form in (u, v)")
+        d = P.as_dict(native=True)
+        zero = self.K.zero
+        return (d.get((1, 0), zero), d.get((0, 1), zero), d.get((0, 0), zero))
+
+    def expr(self, form: tuple):
+        """The SymPy expression of a form (as SymPy's Poly.as_expr writes it)."""
+        return sp.Add(*[sp.Mul(self.to_sympy(z), x) for z, x in zip(form, (u, v, sp.Integer(1))) if z != 0])
+
+
+def _poly_in_r(p) -> flint.fmpq_poly:
+    """A polynomial of SymPy's ring Q[r] (its coefficients fmpq or integers) as an fmpq_poly."""
+    coeffs = [flint.fmpq(0)] * (p.degree() + 1) if p else []
+    for (k,), c in p.terms():
+        coeffs[k] = flint.fmpq(c)
+    return flint.fmpq_poly(coeffs)
+
+
+def law_matrix(law, letter: str, r, F: Coefficients) -> tuple:
+    """The rows of the matrix of the collision ``letter`` of ``law`` over F (:func:`matrix`)."""
+    cols = [law(letter, e, r) for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+    return tuple(tuple(F.of(cols[j][i]) for j in range(3)) for i in range(3))
+
+
+def cof_rows(K: tuple) -> tuple:
+    """The rows of cof(K) = det(K) K^{-T} (:func:`cof`): its column m is K e_{m+1} ∧ K e_{m+2}
+    (:func:`reduction.cofactor_columns`)."""
+    cols = [tuple(row[j] for row in K) for j in range(3)]
+    c = [reduction.cross(cols[(m + 1) % 3], cols[(m + 2) % 3]) for m in range(3)]
+    return tuple(tuple(c[m][i] for m in range(3)) for i in range(3))
+
+
+def mat_mul(X: tuple, Y: tuple) -> tuple:
+    """The product of two 3×3 matrices given by their rows."""
+    return tuple(tuple(row[0] * Y[0][j] + row[1] * Y[1][j] + row[2] * Y[2][j] for j in range(3)) for row in X)
+
+
+def sympy_matrix(X: tuple, F: Coefficients) -> sp.Matrix:
+    """The matrix with these rows (elements of F) in SymPy, for the evidence."""
+    return sp.Matrix([[F.to_sympy(x) for x in row] for row in X])
+
+
 # --- (a) the commuting collisions --------------------------------------------------
 
 def matrix(law, letter: str, r) -> sp.Matrix:
@@ -176,17 +278,18 @@ def cof(K: sp.Matrix) -> sp.Matrix:
 def commuting_step(r, claims: Claims) -> Step:
     """K_a K_c = K_c K_a, and the same for the law on the four velocities (written
     independently, :func:`model.collide_particles`): a and c act on disjoint pairs."""
-    Ka, Kc = matrix(claims.law, "a", r), matrix(claims.law, "c", r)
-    D = (Ka * Kc - Kc * Ka).applyfunc(sp.simplify)
+    F = Coefficients(not r.is_Rational)
+    Ka, Kc = law_matrix(claims.law, "a", r, F), law_matrix(claims.law, "c", r, F)
+    D = tuple(tuple(x - y for x, y in zip(p, q)) for p, q in zip(mat_mul(Ka, Kc), mat_mul(Kc, Ka)))
     w = sp.symbols("w1:5")
     ac = collide_particles("c", collide_particles("a", w, r), r)
     ca = collide_particles("a", collide_particles("c", w, r), r)
     particles = all(sp.expand(x - y) == 0 for x, y in zip(ac, ca))
-    ok = D.is_zero_matrix and particles
+    ok = all(x == 0 for row in D for x in row) and particles
     return Step("(a) K_a K_c = K_c K_a", bool(ok),
-                f"K_a K_c − K_c K_a = {D.tolist()} (exact); on the four velocities the law gives a∘c = c∘a: "
-                f"{particles} (a acts on the pair 1-2, c on 3-4); the double collision [ac] acts by K_a K_c, "
-                "and cof(K_a K_c) = cof(K_a) cof(K_c)"
+                lambda: f"K_a K_c − K_c K_a = {sympy_matrix(D, F).applyfunc(sp.simplify).tolist()} (exact); on the "
+                f"four velocities the law gives a∘c = c∘a: {particles} (a acts on the pair 1-2, c on 3-4); the double "
+                "collision [ac] acts by K_a K_c, and cof(K_a K_c) = cof(K_a) cof(K_c)"
                 + ("" if ok else ": the collisions do not commute, the tie v = 0 has no single map"))
 
 
@@ -199,28 +302,35 @@ class NeedSign(Exception):
         self.key = key
 
 
+def _key(form: tuple, F: Coefficients):
+    """(sign factor, key) with form = factor · key, key the monic form (its first nonzero
+    coefficient among those of u, v, 1 equal to 1); None key for a constant."""
+    a, b, c = form
+    if a == 0 and b == 0:
+        return F.sign(c), None
+    lc = a if a != 0 else b
+    return F.sign(lc), (a / lc, b / lc, c / lc)
+
+
 def form_key(expr, symbolic: bool):
     """(sign factor, key) with expr = factor · key, key the monic linear form (first
-    coefficient in u, v, 1 equal to 1) over Q(r); None key for a constant."""
-    expr = sp.expand(expr)
-    P = sp.Poly(expr, u, v, domain=sp.QQ.frac_field(R_SYMBOL) if symbolic else sp.QQ)
-    if P.is_zero:
-        return 0, None
-    if P.total_degree() == 0:
-        return sign_of(P.as_expr(), symbolic), None
-    lc = P.coeffs()[0]
-    return sign_of(P.domain.to_sympy(lc), symbolic), P.monic()
+    coefficient in u, v, 1 equal to 1) over Q(r), as a triple (a, b, c) of coefficients
+    of u, v, 1; None key for a constant."""
+    F = Coefficients(symbolic)
+    return _key(F.linear(expr), F)
 
 
 class Form:
     """A linear form in (u, v) whose comparisons with 0 are answered by the branch
     assignment (so that the reduction's own rules can run on it)."""
 
-    def __init__(self, expr, oracle):
-        self.expr, self.oracle = expr, oracle
+    def __init__(self, form: tuple, oracle):
+        self.form, self.oracle, self._sign = form, oracle, None
 
     def sign(self) -> int:
-        return self.oracle.sign(self.expr)
+        if self._sign is None:
+            self._sign = self.oracle.sign(self.form)
+        return self._sign
 
     def __gt__(self, other):
         return self.sign() > 0
@@ -230,11 +340,11 @@ class Form:
 
 
 class Oracle:
-    def __init__(self, assignment: dict, symbolic: bool):
-        self.assignment, self.symbolic = assignment, symbolic
+    def __init__(self, assignment: dict, F: Coefficients):
+        self.assignment, self.F = assignment, F
 
-    def sign(self, expr) -> int:
-        factor, key = form_key(expr, self.symbolic)
+    def sign(self, form: tuple) -> int:
+        factor, key = _key(form, self.F)
         if key is None:
             return factor
         if key not in self.assignment:
@@ -242,19 +352,26 @@ class Oracle:
         return factor * self.assignment[key]
 
 
+def _apply(rows: tuple, m: tuple) -> tuple:
+    """The matrix with these rows (field elements) times the vector of forms m."""
+    return tuple(tuple(row[0] * m[0][t] + row[1] * m[1][t] + row[2] * m[2][t] for t in range(3)) for row in rows)
+
+
 def walk(n: tuple, cofs: dict, oracle: Oracle) -> str:
     """From the state n at b, the letters up to the return to b (at most 3), by the
     reduction's rules: the orientation e_t · n > 0 of :func:`reduction.canonical` and the
     face / next-letter rule of ``reduction._next_letter_exact``; the landing at b must lie
-    inside its face (the same face rule, its next-letter part set aside).  Corner → "corner"."""
+    inside its face (the same face rule, its next-letter part set aside).  Corner → "corner".
+    n: three forms; cofs: letter → the rows of cof(K), field elements."""
     letter, m, letters = "b", _orient("b", n, oracle), ""
     try:
         for _ in range(3):
             j = reduction._next_letter_exact(letter, INDEX[letter], tuple(Form(z, oracle) for z in m))
-            m = _orient(j, cofs[j] * sp.Matrix(m), oracle)
+            m = _orient(j, _apply(cofs[j], m), oracle)
             letter, letters = j, letters + j
             if j == "b":
-                one = Form(sp.Integer(1), oracle)
+                K = oracle.F.K
+                one = Form((K.zero, K.zero, K.one), oracle)
                 reduction._next_letter_exact("b", INDEX["b"], (Form(m[0], oracle), one, Form(m[2], oracle)))
                 break
     except Corner:
@@ -266,59 +383,70 @@ def _orient(letter: str, m, oracle: Oracle) -> tuple:
     s = oracle.sign(m[ORIENTATION[letter]])
     if s == 0:
         raise Corner("e_t · n = 0")
-    return tuple(sp.expand(z * s) for z in m)
+    return m if s > 0 else tuple(tuple(-x for x in z) for z in m)
 
 
 def explore(n: tuple, cofs: dict, symbolic: bool) -> list[tuple[dict, str]]:
-    """Every leaf of the sign branching: (assignment key → sign, outcome word)."""
+    """Every leaf of the sign branching: (assignment key → sign, outcome word).  n: the
+    normal at b (SymPy expressions linear in u, v); cofs: letter → cof(K) (SymPy matrices)."""
+    F = Coefficients(symbolic)
+    rows = {L: tuple(tuple(F.of(K[i, k]) for k in range(3)) for i in range(3)) for L, K in cofs.items()}
+    return branches(tuple(F.linear(z) for z in n), rows, F)
+
+
+def branches(forms: tuple, rows: dict, F: Coefficients) -> list[tuple[dict, str]]:
+    """:func:`explore` on the forms of n and the rows of the cofactors over F."""
     leaves, stack = [], [{}]
     while stack:
         a = stack.pop()
         try:
-            leaves.append((a, walk(n, cofs, Oracle(a, symbolic))))
+            leaves.append((a, walk(forms, rows, Oracle(a, F))))
         except NeedSign as need:
-            stack.extend(b for b in ({**a, need.key: s} for s in (1, -1, 0)) if feasible(b, symbolic))
+            stack.extend(b for b in ({**a, need.key: s} for s in (1, -1, 0)) if feasible(b, F))
             continue
         except Corner:
             leaves.append((a, "|corner"))
     return leaves
 
 
-def feasible(assignment: dict, symbolic: bool) -> bool:
+def feasible(assignment: dict, F: Coefficients) -> bool:
     """Whether some (u, v) gives every form of the assignment its sign: Fourier–Motzkin
     elimination of u, then v, exact (each coefficient's sign proved, on the interval for the
     symbol r); strict inequalities combine into strict ones, equalities are substituted."""
-    cons = [(sp.expand(s * k.as_expr()), s == 0) for k, s in assignment.items()]
-    cons = [(k.as_expr(), True) if z else (e, False) for (e, z), k in zip(cons, assignment)]
-    for var in (u, v):
-        coeff = [sp.cancel(sp.diff(e, var)) for e, _ in cons]
-        eq = next((i for i, (c, (_, z)) in enumerate(zip(coeff, cons)) if z and c != 0), None)
-        if eq is not None:
-            e, a = cons[eq][0], coeff[eq]
-            value = sp.cancel(var - e / a)
-            cons = [(sp.expand(sp.cancel(f.subs(var, value))), z) for i, (f, z) in enumerate(cons) if i != eq]
+    cons = [(k, True) if s == 0 else (tuple(s * z for z in k), False) for k, s in assignment.items()]
+    for var in (0, 1):
+        eq = next((i for i, (e, z) in enumerate(cons) if z and e[var] != 0), None)
+        if eq is not None:                          # var = −(the rest of e)/a: f − (f_var/a)·e
+            e = cons[eq][0]
+            a = e[var]
+            cons = [(_minus(f, f[var] / a, e), z) for i, (f, z) in enumerate(cons) if i != eq]
             continue
         keep, low, up = [], [], []
-        for (e, z), a in zip(cons, coeff):
+        for e, z in cons:
+            a = e[var]
             if a == 0:
                 keep.append((e, z))
             else:                                   # a·var + rest > 0: var > −rest/a when a > 0
-                bound = sp.cancel(-(e - a * var) / a)
-                (low if sign_of(a, symbolic) > 0 else up).append(bound)
-        cons = keep + [(sp.expand(sp.cancel(U - L)), False) for L in low for U in up]
-    for e, z in cons:
-        e = sp.cancel(e)
-        if z and e != 0:
+                bound = tuple(-x / a for x in e)    # its var coefficient −1, the same in every bound
+                (low if F.sign(a) > 0 else up).append(bound)
+        cons = keep + [(tuple(x - y for x, y in zip(U, L)), False) for L in low for U in up]
+    for (_, _, c), z in cons:
+        if z and c != 0:
             return False
-        if not z and sign_of(e, symbolic) <= 0:
+        if not z and F.sign(c) <= 0:
             return False
     return True
 
 
+def _minus(f: tuple, t, e: tuple) -> tuple:
+    """f − t·e."""
+    return tuple(x - t * y for x, y in zip(f, e))
+
+
 def region_step(r, claims: Claims, symbolic: bool) -> Step:
-    cofs = {L: cof(matrix(claims.law, L, r)) for L in "abc"}
-    n = island.normal(u, v)
-    leaves = explore(n, cofs, symbolic)
+    F = Coefficients(symbolic)
+    rows = {L: cof_rows(law_matrix(claims.law, L, r, F)) for L in "abc"}
+    leaves = branches(tuple(F.linear(z) for z in island.normal(u, v)), rows, F)
     walls = [form_key(w, symbolic) for w in claims.walls(r)]
     side = form_key(v, symbolic)
     sides = {claims.words[1]: 1, claims.words[0]: -1}          # cab on v > 0, acb on v < 0
@@ -327,61 +455,77 @@ def region_step(r, claims: Claims, symbolic: bool) -> Step:
     for a, w in success:
         need = [(k, s) for s, k in walls] + [(side[1], side[0] * sides[w])]
         if any(a.get(k) != s for k, s in need):
-            bad.append(f"the leaf {w} misses a wall: {_show(a)}")
+            bad.append(f"the leaf {w} misses a wall: {_show(a, symbolic)}")
     for a, w in leaves:
         if w in sides:
             continue
         contradicts = any(k in a and a[k] != s for s, k in walls) or a.get(side[1]) == 0
         if not contradicts:
-            bad.append(f"the leaf {w or '(none)'} meets the claimed R: {_show(a)}")
+            bad.append(f"the leaf {w or '(none)'} meets the claimed R: {_show(a, symbolic)}")
     found = sorted({w for _, w in success})
     if found != sorted(sides):
         bad.append(f"the words through R are {found}, not {sorted(sides)}")
     keys = {k for a, _ in leaves for k in a}
-    text = (f"{len(leaves)} leaves of the sign branching on {len(keys)} linear forms in (u, v), from n = (u−1, v, u+1) "
-            f"at b by the reduction's orientation, face and next-letter rules; the leaves through ac/ca then b: "
-            + "; ".join(f"{w}: {_show(a)}" for a, w in success)
-            + f"; walls claimed: {', '.join(str(sp.factor(w)) + ' > 0' for w in claims.walls(r))}; "
-            "the tie v = 0 stops the rules (cos φ = 0): the double collision [ac], one map by (a)")
+
+    def evidence() -> str:
+        text = (f"{len(leaves)} leaves of the sign branching on {len(keys)} linear forms in (u, v), from n = "
+                "(u−1, v, u+1) at b by the reduction's orientation, face and next-letter rules; the leaves through "
+                "ac/ca then b: " + "; ".join(f"{w}: {_show(a, symbolic)}" for a, w in success)
+                + f"; walls claimed: {', '.join(str(sp.factor(w)) + ' > 0' for w in claims.walls(r))}; "
+                "the tie v = 0 stops the rules (cos φ = 0): the double collision [ac], one map by (a)")
+        return text + ("" if not bad else "; REFUSED: " + "; ".join(bad[:3]))
     return Step("(b) the branch region R = {|u| < 1, |u − (1+r)v/2| < 1}, from the reduction's sign rules",
-                not bad, text + ("" if not bad else "; REFUSED: " + "; ".join(bad[:3])))
+                not bad, evidence)
 
 
-def _show(a: dict) -> str:
-    return ", ".join(f"{sp.factor(k.as_expr())} {'>' if s > 0 else '<' if s < 0 else '='} 0" for k, s in a.items())
+def _show(a: dict, symbolic: bool) -> str:
+    F = Coefficients(symbolic)
+    return ", ".join(f"{sp.factor(F.expr(k))} {'>' if s > 0 else '<' if s < 0 else '='} 0" for k, s in a.items())
 
 
 # --- (c) the linear map -------------------------------------------------------------
 
-def derived_A(r, claims: Claims) -> tuple[sp.Matrix | None, str]:
-    """A in the chart from cof(K_b) cof(K_a) cof(K_c) (and the other order), or None with why."""
-    K = {L: cof(matrix(claims.law, L, r)) for L in "abc"}
-    M_cab, M_acb = K["b"] * K["a"] * K["c"], K["b"] * K["c"] * K["a"]
-    if not (M_cab - M_acb).applyfunc(sp.simplify).is_zero_matrix:
+def derived_A(r, claims: Claims, F: Coefficients | None = None) -> tuple[tuple | None, object]:
+    """A in the chart (its rows over F) from cof(K_b) cof(K_a) cof(K_c) (and the other order),
+    or None; with why (a string, or a function of no argument that writes it: :func:`_written`)."""
+    F = F or Coefficients(not r.is_Rational)
+    K = {L: cof_rows(law_matrix(claims.law, L, r, F)) for L in "abc"}
+    M_cab, M_acb = mat_mul(K["b"], mat_mul(K["a"], K["c"])), mat_mul(K["b"], mat_mul(K["c"], K["a"]))
+    if M_cab != M_acb:
         return None, "cof(K_b)cof(K_a)cof(K_c) ≠ cof(K_b)cof(K_c)cof(K_a): two maps on the two sides"
-    m = [sp.expand(z) for z in M_cab * sp.Matrix(island.normal(u, v))]
-    d = sp.cancel(m[2] - m[0])
-    if d.has(u) or d.has(v):
-        return None, f"n_z − n_x ↦ {d}: the map is projective, not linear, in the chart"
-    U, V = sp.expand(sp.cancel((m[0] + m[2]) / d)), sp.expand(sp.cancel(2 * m[1] / d))
-    rows = [[sp.cancel(sp.Poly(w, u, v).coeff_monomial(x)) for x in (u, v)] for w in (U, V)]
-    consts = [sp.Poly(w, u, v).coeff_monomial(1) for w in (U, V)]
-    if any(c != 0 for c in consts):
-        return None, f"the image has a constant part {consts}: affine, not linear"
-    return sp.Matrix(rows), f"n_z − n_x ↦ {sp.factor(d)}·(n_z − n_x)/2; M = cof(K_b)cof(K_a)cof(K_c)"
+    m = _apply(M_cab, tuple(F.linear(z) for z in island.normal(u, v)))
+    d = tuple(x - y for x, y in zip(m[2], m[0]))
+    if d[0] != 0 or d[1] != 0 or d[2] == 0:
+        return None, f"n_z − n_x ↦ {sp.cancel(F.expr(d))}: the map is projective, not linear, in the chart"
+    U, V = tuple((x + y) / d[2] for x, y in zip(m[0], m[2])), tuple(2 * y / d[2] for y in m[1])
+    if U[2] != 0 or V[2] != 0:
+        return None, f"the image has a constant part {[F.to_sympy(U[2]), F.to_sympy(V[2])]}: affine, not linear"
+    return (U[:2], V[:2]), lambda: (f"n_z − n_x ↦ {sp.factor(F.to_sympy(d[2]))}·(n_z − n_x)/2; "
+                                    "M = cof(K_b)cof(K_a)cof(K_c)")
+
+
+def _written(text) -> str:
+    """A text given as a string or as a function of no argument that writes it."""
+    return text() if callable(text) else text
 
 
 def map_step(r, claims: Claims, symbolic: bool) -> tuple[Step, sp.Matrix | None]:
-    A, why = derived_A(r, claims)
-    claimed = sp.Matrix([[sp.sympify(z) for z in row] for row in claims.A(r)])
-    ok = A is not None and (A - claimed).applyfunc(sp.cancel).is_zero_matrix
-    det = sp.cancel(A.det()) if A is not None else None
-    tr = sp.factor(A.trace()) if A is not None else None
-    ok = ok and det == 1 and sp.cancel(tr + (1 - r) ** 2 / (2 * r)) == 0
+    F = Coefficients(symbolic)
+    AF, why = derived_A(r, claims, F)
+    claimed = tuple(tuple(F.of(z) for z in row) for row in claims.A(r))
+    A = sympy_matrix(AF, F) if AF is not None else None
+    ok = AF is not None and AF == claimed
+    det = AF[0][0] * AF[1][1] - AF[0][1] * AF[1][0] if AF is not None else None
+    ok = ok and det == 1 and AF[0][0] + AF[1][1] + F.of((1 - r) ** 2 / (2 * r)) == 0
     if A is not None and not symbolic:
         ok = ok and _matches_reduction(A, r)
-    text = (f"{why}; derived A = {A.applyfunc(sp.factor).tolist() if A is not None else None}, "
-            f"claimed {claimed.tolist()}; det A = {det}, tr A = {tr}")
+
+    def text() -> str:
+        claimed_A = sp.Matrix([[sp.sympify(z) for z in row] for row in claims.A(r)])
+        if A is None:
+            return f"{_written(why)}; derived A = None, claimed {claimed_A.tolist()}; det A = None, tr A = None"
+        return (f"{_written(why)}; derived A = {A.applyfunc(sp.factor).tolist()}, claimed {claimed_A.tolist()}; "
+                f"det A = {F.to_sympy(det)}, tr A = {sp.factor(A.trace())}")
     return Step("(c) on R the b-to-b map is A(r) in the chart, det A = 1, tr A = −(1−r)²/(2r)", bool(ok), text), A
 
 
@@ -405,16 +549,18 @@ def elliptic_step(r, A: sp.Matrix | None, symbolic: bool) -> tuple[Step, bool]:
     of det[e1, A e1] (no real eigenvector: det[w, Aw] never vanishes for w ≠ 0)."""
     if A is None:
         return Step("(c′) elliptic", False, "no linear map"), False
-    disc = sp.factor(A.trace() ** 2 - 4)
-    s = sign_of(disc, symbolic)
+    s = sign_of(A.trace() ** 2 - 4, symbolic)
     ell = s < 0
+    turn = sign_of(A[1, 0], symbolic) if ell else 0
     where = ("on ]3−2√2, 1[ (no root inside: Sturm and python-flint; negative at r = 1/2)" if symbolic
              else f"at r = {r}")
-    text = f"tr² A − 4 = {disc} {'<' if s < 0 else '>' if s > 0 else '='} 0 {where}"
-    if ell:
-        turn = sign_of(A[1, 0], symbolic)
-        text += (f"; det[e1, A e1] = {sp.factor(A[1, 0])} {'>' if turn > 0 else '<'} 0: A turns every state "
-                 f"{'counter' if turn > 0 else ''}clockwise in the (u, v) chart")
+
+    def text() -> str:
+        out = f"tr² A − 4 = {sp.factor(A.trace() ** 2 - 4)} {'<' if s < 0 else '>' if s > 0 else '='} 0 {where}"
+        if ell:
+            out += (f"; det[e1, A e1] = {sp.factor(A[1, 0])} {'>' if turn > 0 else '<'} 0: A turns every state "
+                    f"{'counter' if turn > 0 else ''}clockwise in the (u, v) chart")
+        return out
     if symbolic:
         return Step("(c′) A is elliptic on ]3−2√2, 1[ (r² − 6r + 1 < 0)", ell, text), ell
     name = "(c′) A is elliptic (r² − 6r + 1 < 0)" if ell else \
@@ -424,44 +570,66 @@ def elliptic_step(r, A: sp.Matrix | None, symbolic: bool) -> tuple[Step, bool]:
 
 # --- (d) the invariant form, (e) the island inside R --------------------------------
 
+def _quadratic(F: Coefficients, q) -> sp.Poly:
+    """A polynomial in (u, v) (a SymPy expression or Poly) as a Poly over F."""
+    return sp.Poly(q, u, v, domain=F.K)
+
+
+def _coefficient(P: sp.Poly, monomial: tuple, F: Coefficients):
+    return P.as_dict(native=True).get(monomial, F.K.zero)
+
+
+def _ellipse(claims: Claims, r, F: Coefficients) -> tuple:
+    """(Q as a Poly over F, α, β, γ: its coefficients of u², uv, v², elements of F)."""
+    Q = _quadratic(F, claims.Q(u, v, r))
+    return (Q,) + tuple(_coefficient(Q, m, F) for m in ((2, 0), (1, 1), (0, 2)))
+
+
 def invariant_step(r, claims: Claims, symbolic: bool) -> Step:
-    A = sp.Matrix([[sp.sympify(z) for z in row] for row in claims.A(r)])
-    Q = sp.expand(claims.Q(u, v, r))
-    Au, Av = A * sp.Matrix([u, v])
-    diff = sp.cancel(sp.expand(claims.Q(Au, Av, r) - Q))
-    P = sp.Poly(Q, u, v)
-    al, be, ga = (P.coeff_monomial(m) for m in (u ** 2, u * v, v ** 2))
-    pos = sign_of(al, symbolic) > 0 and sign_of(4 * al * ga - be ** 2, symbolic) > 0
-    x, y, z = sp.symbols("x y z")
-    G = sp.expand(x * Au ** 2 + y * Au * Av + z * Av ** 2 - x * u ** 2 - y * u * v - z * v ** 2)
-    eqs = [sp.cancel(c) for c in sp.Poly(G, u, v).coeffs()]
-    dim = 3 - sp.Matrix([[sp.diff(e, w) for w in (x, y, z)] for e in eqs]).rank(simplify=True)
-    ok = diff == 0 and pos and dim == 1
+    F = Coefficients(symbolic)
+    A = tuple(tuple(F.of(z) for z in row) for row in claims.A(r))
+    Q, al, be, ga = _ellipse(claims, r, F)
+    Au, Av = (_quadratic(F, sp.Poly.from_dict({(1, 0): a, (0, 1): b}, u, v, domain=F.K)) for a, b in A)
+    diff = _quadratic(F, claims.Q(Au, Av, r)) - Q
+    pos = F.sign(al) > 0 and F.sign(4 * al * ga - be ** 2) > 0
+    # x Au² + y Au Av + z Av² − (x u² + y uv + z v²) = 0: a linear system in (x, y, z)
+    images = [Au * Au - _quadratic(F, u * u), Au * Av - _quadratic(F, u * v), Av * Av - _quadratic(F, v * v)]
+    system = [[_coefficient(g, m, F) for g in images] for m in ((2, 0), (1, 1), (0, 2))]
+    dim = 3 - DomainMatrix(system, (3, 3), F.K).rank()
+    ok = diff.is_zero and pos and dim == 1
     return Step("(d) Q∘A = Q, Q positive definite, and Q spans the A-invariant quadratic forms", bool(ok),
-                f"Q = {sp.factor(Q)}; Q∘A − Q = {diff}; α = {al} > 0, 4αγ − β² = {sp.factor(4 * al * ga - be ** 2)}"
-                f" {'> 0' if pos else '≯ 0'}; invariant forms: a space of dimension {dim}")
+                lambda: f"Q = {sp.factor(Q.as_expr())}; Q∘A − Q = {sp.cancel(diff.as_expr())}; α = {F.to_sympy(al)} "
+                f"> 0, 4αγ − β² = {sp.factor(F.to_sympy(4 * al * ga - be ** 2))} {'> 0' if pos else '≯ 0'}; "
+                f"invariant forms: a space of dimension {dim}")
 
 
 def island_step(r, claims: Claims, symbolic: bool) -> Step:
-    Q = sp.expand(claims.Q(u, v, r))
-    P = sp.Poly(Q, u, v)
-    al, be, ga = (P.coeff_monomial(m) for m in (u ** 2, u * v, v ** 2))
-    level = sp.cancel((4 * al * ga - be ** 2) / (4 * ga))
-    identity = sp.cancel(sp.expand(4 * ga * Q - (2 * ga * v + be * u) ** 2 - (4 * al * ga - be ** 2) * u ** 2))
-    claimed = sp.cancel(sp.sympify(claims.c_max(r)))
-    A = sp.Matrix([[sp.sympify(z) for z in row] for row in claims.A(r)])
-    first = sp.expand((A * sp.Matrix([u, v]))[0])
+    F = Coefficients(symbolic)
+    Q, al, be, ga = _ellipse(claims, r, F)
+    if ga == 0:
+        return Step("(e) the island U_r = {Q < c_max} lies in R, c_max the largest such level", False,
+                    "γ = 0: Q is not positive definite")
+    level = (4 * al * ga - be ** 2) / (4 * ga)
+    square = sp.Poly.from_dict({(1, 0): be, (0, 1): 2 * ga}, u, v, domain=F.K)        # 2γv + βu
+    identity = Q.mul_ground(4 * ga) - square * square - sp.Poly.from_dict({(2, 0): 4 * al * ga - be ** 2}, u, v,
+                                                                            domain=F.K)
+    claimed = F.of(claims.c_max(r))
+    a, b = (F.of(z) for z in claims.A(r)[0])
+    first = (a, b, F.K.zero)
     walls = {form_key(w, symbolic)[1] for w in claims.walls(r)}
-    expect = {form_key(w, symbolic)[1] for w in (1 - u, 1 + u, 1 - first, 1 + first)}
-    touch = sp.cancel(claims.Q(1, -be / (2 * ga), r) - level)      # Q = c_max at u = 1: the wall is touched
-    ok = (identity == 0 and sp.cancel(level - claimed) == 0 and sign_of(ga, symbolic) > 0
-          and sign_of(level, symbolic) > 0 and walls == expect and touch == 0)
+    one, zero = F.K.one, F.K.zero
+    expect = {_key(w, F)[1] for w in ((-one, zero, one), (one, zero, one), (-a, -b, one), (a, b, one))}
+    x = -be / (2 * ga)                           # Q = c_max at (1, x): the wall u = 1 is touched
+    touch = sum((c * x ** j for (i, j), c in Q.as_dict(native=True).items()), start=zero) - level
+    ok = (identity.is_zero and level == claimed and F.sign(ga) > 0
+          and F.sign(level) > 0 and walls == expect and touch == 0)
     return Step("(e) the island U_r = {Q < c_max} lies in R, c_max the largest such level", bool(ok),
-                f"4γQ = (2γv + βu)² + (4αγ − β²)u² (identity: remainder {identity}), so u² ≤ Q/c_max with "
-                f"c_max = (4αγ − β²)/(4γ) = {sp.factor(level)} (claimed {sp.factor(claimed)}); γ = {ga} > 0; the "
-                f"second wall is |first coordinate of A| = |{first}| < 1, which Q∘A = Q gives; "
-                f"the walls of R are 1 ± u, 1 ± A₁(u, v): {walls == expect}; "
-                f"Q(1, −β/2γ) − c_max = {touch} (touches u = 1)")
+                lambda: f"4γQ = (2γv + βu)² + (4αγ − β²)u² (identity: remainder {identity.as_expr()}), so u² ≤ "
+                f"Q/c_max with c_max = (4αγ − β²)/(4γ) = {sp.factor(F.to_sympy(level))} (claimed "
+                f"{sp.factor(F.to_sympy(claimed))}); γ = {F.to_sympy(ga)} > 0; the second wall is |first coordinate of "
+                f"A| = |{sp.expand(F.expr(first))}| < 1, which Q∘A = Q gives; the walls of R are 1 ± u, 1 ± A₁(u, v): "
+                f"{walls == expect}; "
+                f"Q(1, −β/2γ) − c_max = {F.to_sympy(touch)} (touches u = 1)")
 
 
 # --- (f) not a root of unity ---------------------------------------------------------
@@ -506,11 +674,17 @@ def symbolic_irrational_step() -> Step:
 # --- the theorem -----------------------------------------------------------------
 
 def theorem(r, claims: Claims | None = None) -> Theorem:
-    """The island theorem at a rational r in ]0, 1[, every step proved exactly (module docstring)."""
-    claims = claims or Claims()
+    """The island theorem at a rational r in ]0, 1[, every step proved exactly (module docstring);
+    with the default claims once per run and r (:func:`certify.caches.for_a_run`: ``certify
+    identify`` asks at every r it classifies, ``certify all`` at the r of N2, N5, N6 and N7.1)."""
     rq = to_fmpq(r)
     if not 0 < rq < 1:
         raise ValueError(f"r = {rq} is not in ]0, 1[")
+    return _theorem(rq) if claims is None else prove(rq, claims)
+
+
+def prove(rq: flint.fmpq, claims: Claims) -> Theorem:
+    """The steps of :func:`theorem` at r = rq about ``claims``."""
     rs = sp.Rational(int(rq.p), int(rq.q))
     T = Theorem(rq)
     T.steps.append(commuting_step(rs, claims))
@@ -526,6 +700,11 @@ def theorem(r, claims: Claims | None = None) -> Theorem:
         c = sp.cancel(sp.sympify(claims.c_max(rs)))
         T.c_max = flint.fmpq(int(sp.numer(c)), int(sp.denom(c)))
     return T
+
+
+@caches.for_a_run
+def _theorem(rq: flint.fmpq) -> Theorem:
+    return prove(rq, Claims())
 
 
 @cache
@@ -738,10 +917,11 @@ def island_fraction(r, depth: int = 8, prec: int = 64) -> tuple[flint.fmpq, flin
     inside, undecided = flint.fmpq(0), flint.fmpq(0)
     boxes = [(flint.fmpq(0), flint.fmpq(1), flint.fmpq(0), flint.fmpq(1))]
     with precision(prec):
+        sides = Sides(rq)
         for level in range(depth + 1):
             nxt = []
             for box in boxes:
-                s = box_sign(box, rq)
+                s = box_sign(box, rq, sides)
                 area = (box[1] - box[0]) * (box[3] - box[2])
                 if s > 0:
                     inside += area
@@ -760,7 +940,53 @@ def _split(box):
     return [(s0, sm, t0, tm), (sm, s1, t0, tm), (s0, sm, tm, t1), (sm, s1, tm, t1)]
 
 
-def box_sign(box, r: flint.fmpq) -> int:
+class Sides:
+    """What :func:`box_sign` reads at the sides of the boxes, at r and the working precision,
+    each computed once: the exact ends of the balls tan(θ − π/4) and w = 1/(sin θ + cos θ) at
+    θ = πs/2 (:meth:`at_s`), of cot φ at φ = πt (:meth:`at_t`); r and c_max as balls."""
+
+    def __init__(self, r: flint.fmpq):
+        self.r, self.pi = r, flint.arb.pi()
+        self.R, self.c = flint.arb(r), flint.arb(island.c_max(r))
+        self.K = 1 + self.R                                   # 1 + r and −(1 + r), as box_sign forms them
+        self.minus_K = -(1 + self.R)
+        self.w_min = _lower(1 / flint.arb(2).sqrt())          # w at θ = π/4
+        self.s, self.t, self.pairs = {}, {}, {}
+
+    def at_s(self, s: flint.fmpq) -> tuple:
+        """(lower, upper end of tan(θ − π/4), lower, upper end of w(θ)) at θ = πs/2."""
+        key = (s.p, s.q)                  # python-flint hashes an fmpq slowly, an fmpz fast
+        got = self.s.get(key)
+        if got is None:
+            th = s * self.pi / 2
+            got = self.s[key] = ends((th - self.pi / 4).tan()) + ends(1 / (th.sin() + th.cos()))
+        return got
+
+    def at_pair(self, s0: flint.fmpq, s1: flint.fmpq) -> tuple:
+        """((x, 2x·x, (1+r)x) for x the ball of u's lower end at s0, the same for its upper end
+        at s1, the lower and upper end of w on [s0, s1]: its minimum w(π/4) when π/4 is in the
+        interval) for the boxes of columns [s0, s1], once a pair and working precision."""
+        key = (s0.p, s0.q, s1.p, s1.q, flint.ctx.prec)
+        got = self.pairs.get(key)
+        if got is None:
+            (ua, _, w0_lo, w0_hi), (_, ub, w1_lo, w1_hi) = self.at_s(s0), self.at_s(s1)
+            w_lo = self.w_min if s0 <= flint.fmpq(1, 2) <= s1 else min(w0_lo, w1_lo)
+            ua, ub = flint.arb(ua), flint.arb(ub)
+            got = self.pairs[key] = ((ua, 2 * ua * ua, self.K * ua), (ub, 2 * ub * ub, self.K * ub),
+                                     w_lo, max(w0_hi, w1_hi))
+        return got
+
+    def at_t(self, t: flint.fmpq) -> tuple:
+        """(lower, upper end of cot φ) at φ = πt."""
+        key = (t.p, t.q)
+        got = self.t.get(key)
+        if got is None:
+            ph = t * self.pi
+            got = self.t[key] = ends(ph.cos() / ph.sin())
+        return got
+
+
+def box_sign(box, r: flint.fmpq, sides: Sides | None = None) -> int:
     """+1 when the whole box is in U_r, −1 when none of it is, 0 undecided: the chart of
     the box enclosed in a rectangle [u] × [v] by monotonicity, then Q bounded on it exactly
     as balls.  At b, n = p ∧ q = (−cos θ sin φ, cos φ, sin θ sin φ) (reduction.Angles), so
@@ -772,24 +998,21 @@ def box_sign(box, r: flint.fmpq) -> int:
     s0, s1, t0, t1 = box
     if t0 == 0 or t1 == 1:
         return box_sign_balls(box, r)
-    pi = flint.arb.pi()
-    th0, th1 = s0 * pi / 2, s1 * pi / 2
-    ph0, ph1 = t0 * pi, t1 * pi
-    ua, ub = _lower((th0 - pi / 4).tan()), _upper((th1 - pi / 4).tan())
-    w = [1 / (x.sin() + x.cos()) for x in (th0, th1)]
-    w_hi = max(_upper(w[0]), _upper(w[1]))
-    w_lo = _lower(1 / flint.arb(2).sqrt()) if s0 <= flint.fmpq(1, 2) <= s1 else min(_lower(w[0]), _lower(w[1]))
-    c_lo, c_hi = _lower(ph1.cos() / ph1.sin()), _upper(ph0.cos() / ph0.sin())
+    sides = sides if sides is not None and sides.r == r else Sides(r)
+    (ua, Aa, Ba), (ub, Ab, Bb), w_lo, w_hi = sides.at_pair(s0, s1)
+    c_lo, c_hi = sides.at_t(t1)[0], sides.at_t(t0)[1]
     va, vb = 2 * min(c_lo * w_lo, c_lo * w_hi), 2 * max(c_hi * w_lo, c_hi * w_hi)
-    ua, ub, va, vb = (flint.arb(x) for x in (ua, ub, va, vb))
-    R, c = flint.arb(r), flint.arb(island.c_max(r))
-    corners = [island.quadratic_form(x, y, R) for x in (ua, ub) for y in (va, vb)]
-    if all(c - q > 0 for q in corners):
+    va, vb = flint.arb(va), flint.arb(vb)
+    R, c = sides.R, sides.c
+    Ca, Cb = R * va * va, R * vb * vb
+    # Q at the corners, island.quadratic_form(x, y, R) = (2x·x − (1+R)x·y) + R y·y, operation for operation
+    if all(c - ((A - B * y) + C) > 0 for A, B in ((Aa, Ba), (Ab, Bb)) for y, C in ((va, Ca), (vb, Cb))):
         return 1
     if ua <= 0 <= ub and va <= 0 <= vb:
         return 0
-    edges = [_edge_min(R, -(1 + R) * x, 2 * x * x, va, vb) for x in (ua, ub)] + \
-            [_edge_min(flint.arb(2), -(1 + R) * y, R * y * y, ua, ub) for y in (va, vb)]
+    minus = sides.minus_K
+    edges = [_edge_min(R, minus * x, A, va, vb) for x, A in ((ua, Aa), (ub, Ab))] + \
+            [_edge_min(flint.arb(2), minus * y, C, ua, ub) for y, C in ((va, Ca), (vb, Cb))]
     return -1 if all(e - c > 0 for e in edges) else 0
 
 

@@ -13,6 +13,7 @@ and progress on a terminal.  It imports every layer below it.
 - :mod:`.identify`, :mod:`.section5_orbits`: the periodic words of simulated orbits, certified;
   the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
+from certify.caches import for_a_run  # the memo of a run, for the proofs' shared steps
 from certify.obligations import captured, facts_of, gathered, replaying, take
 
 from . import checks, files, plots, progress, report, runner, saving
@@ -36,7 +37,7 @@ from .checks import (
                      sign_intervals_facts,
                      unsupported_fact,
 )
-from .files import first_member, load_findings
+from .files import first_member, load_findings, read_first_member
 from .island_figures import report_figure as island_figure
 from .plots import omega_figure, section5_figure, section5_name, sign_chart, spectrum_figures
 from .runner import (
@@ -81,14 +82,15 @@ __all__ = [
     "determinant_fact", "kept_facts", "sign_intervals_facts", "unsupported_fact",
     "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
     "replaying", "gathered", "take", "captured", "facts_of",
-    "first_member", "load_findings", "committed_windows", "island_figure", "explanations", "save_figure",
+    "first_member", "read_first_member", "load_findings",
+    "committed_windows", "island_figure", "explanations", "save_figure",
     "omega_figure", "section5_figure", "section5_name", "sign_chart",
     "spectrum_figures",
     "CERTIFICATES", "EXPLANATION", "ERRATUM", "ERRATUM_KINDS", "FAIL", "FALSE_STATEMENT", "MISPRINT", "REFUTED_REMARK",
     "OBSERVED",
     "PASS", "STATUSES", "Certificate", "Check", "Context",
     "Mutant", "Outcome", "altered", "certificate", "committed", "conclude", "load_all", "observe", "quantity",
-    "reset_caches",
+    "reset_caches", "for_a_run",
     "run_selected",
     "run_certificate", "select", "overridden", "replaced", "reworded", "unread",
 ]

@@ -19,7 +19,7 @@ from pathlib import Path
 
 from certify.patterns import census, compact, island_theorem
 
-from .files import REPORTS, first_member, read_text_or_none, write_atomic
+from .files import REPORTS, read_first_member, read_text_or_none, write_atomic
 
 WINDOW = 64                  # jobs in flight at once (an interruption loses at most these)
 
@@ -204,7 +204,7 @@ def committed_windows(path=None) -> tuple[dict, dict] | None:
     """The attracting windows of the committed census ({word: [{"lo", "hi", ...}]}, as
     census.json holds them) and the compact form of each of their words (:func:`compact`,
     as the census records it), or None without a census file.  Only the file's summary is
-    decoded (:func:`.files.first_member`: not the megabytes of word records), once per
+    decoded (:func:`.files.read_first_member`: the megabytes of word records are not even read), once per
     version of the file (its size and time of change)."""
     path = Path(path or REPORTS / "census.json")
     try:
@@ -217,10 +217,10 @@ def committed_windows(path=None) -> tuple[dict, dict] | None:
 
 @lru_cache(maxsize=4)
 def _windows_of(path: str, size: int, mtime_ns: int) -> tuple[dict, dict] | None:
-    text = read_text_or_none(path)
-    if text is None:
+    summary = read_first_member(path, "census")
+    if summary is None:
         return None
-    windows = first_member(text, "census")["reduction"].get("attracting_windows", {})
+    windows = summary["reduction"].get("attracting_windows", {})
     return windows, {word: compact(word) for word in windows}
 
 

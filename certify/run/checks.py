@@ -16,10 +16,10 @@ from certify.algebra import (
     facts,
     from_flint,
     parse,
-    r,
     rational_between,
     same_up_to_constant,
     show_factored_int,
+    to_fmpq_poly,
     to_fmpz_poly,
 )
 from certify.algebra import trig as T
@@ -59,10 +59,12 @@ def eliminant_check(name: str, g, cp, printed_product: str) -> list[Check]:
     resultant route's fact; the second check names the latter."""
     E = eliminate(g, cp)
     printed = parse(printed_product)
-    P = to_fmpz_poly(printed)
+    Pq = to_fmpq_poly(printed)
+    P = to_fmpz_poly(Pq)
     same = same_up_to_constant(E.groebner, P)
     res = fact_ids(lambda: facts.resultant(E.agree and same, g, cp, printed, "same_factors"))
-    k = sp.Poly(printed, r).LC() / sp.Integer(int(E.groebner.coeffs()[-1]))   # the constant, leading terms
+    lc = Pq.coeffs()[-1]                     # the constant, leading terms
+    k = sp.Rational(int(lc.p), int(lc.q)) / sp.Integer(int(E.groebner.coeffs()[-1]))
     eliminant = identity_facts((same, k * from_flint(E.groebner), printed))
     groebner = Check(f"Gröbner basis of {{{name}, cp(M)}} (lex λ > r) eliminates to the printed polynomial", same,
                      E.evidence() + [f"printed: `{show_factored_int(P)}`"], obligations=eliminant + res)

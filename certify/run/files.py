@@ -79,6 +79,54 @@ def first_member(text: str, key: str):
     return json.loads(text)[key]
 
 
+_MISSING = object()
+
+
+def read_first_member(path, key: str, chunk: int = 1 << 16):
+    """:func:`first_member` of the text of ``path``, reading only as much of the file as
+    that member needs when it is the object's first (reports/census.json: its 33 kB
+    summary, not the 97 MB after it); the whole file otherwise.  None when the file does
+    not exist or cannot be read (as :func:`read_text_or_none`; a defect after the member
+    is not read)."""
+    import codecs
+    decoder = codecs.getincrementaldecoder("utf-8")()
+    parts: list[str] = []
+    try:
+        with open(path, "rb") as f:
+            while True:
+                raw = f.read(chunk)
+                parts.append(decoder.decode(raw, final=not raw))
+                if not raw:
+                    break
+                found = _complete_first_member("".join(parts), key)
+                if found is not _MISSING:
+                    return found
+                chunk *= 2
+    except (OSError, UnicodeDecodeError):
+        return None
+    return first_member("".join(parts), key)
+
+
+def _complete_first_member(text: str, key: str):
+    """The value of the first member of the JSON object that ``text`` begins, when it is
+    named ``key`` and ends inside ``text`` with a character after it; else _MISSING."""
+    import json
+    decoder, ws = json.JSONDecoder(), re.compile(r"[ \t\n\r]*")
+    try:
+        i = ws.match(text, 0).end()
+        if text[i:i + 1] != "{":
+            return _MISSING
+        name, i = decoder.raw_decode(text, ws.match(text, i + 1).end())
+        i = ws.match(text, i).end()
+        if name != key or text[i:i + 1] != ":":
+            return _MISSING
+        value, i = decoder.raw_decode(text, ws.match(text, i + 1).end())
+    except ValueError:
+        return _MISSING
+    i = ws.match(text, i).end()
+    return value if text[i:i + 1] in (",", "}") else _MISSING
+
+
 def load_findings(name: str, directory=REPORTS) -> dict | None:
     """The committed findings ``directory/name`` (``numerics-paper.json``, ``numerics-n4.json``,
     which ``certify figures`` writes), or None when they are absent or unreadable."""

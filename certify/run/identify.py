@@ -41,6 +41,7 @@ from functools import cache
 
 import flint
 
+from certify import caches, obligations
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.balls import precision
 from certify.algebra.branches import BRANCH_NAMES
@@ -115,17 +116,30 @@ def orbit_analysis(normal: str) -> OrbitResult:
     return analyse(normal)
 
 
+orbits_at = obligations.replaying(orbit_at)
+"""``orbit_at`` once per (normal form, r) in a recording, its facts recorded again at every call
+(Section 5's explanations decide a committed word, then verify re-decides it: one computation)."""
+
+
 @cache
 def decided(normal: str, r: flint.fmpq):
     """``orbit_at``: the periodic orbit of the word at r, decided exactly (the feasible
     branch, else None), once per (word, r)."""
-    return next((x for x in orbit_at(normal, r) if x.feasible), None)
+    return next((x for x in orbits_at(normal, r) if x.feasible), None)
 
 
 @cache
 def trap_of(word: str, r: flint.fmpq) -> trapping.Trap | str:
     """The certified trapping ellipse of the rotation ``word`` at r, or the reason why none."""
     return trapping.attempt(word, r)
+
+
+@caches.for_a_run
+def recheck(word: str, r: flint.fmpq, centre: tuple, frame: tuple, radius: flint.fmpq, pair: str):
+    """The trapping ellipse (centre, frame, radius) of the rotation ``word`` at r re-certified
+    from its exact data (:func:`trapping.check`, the second route), once per run: every orbit
+    of the grid that follows the word at r asks for the same."""
+    return trapping.check(word, r, centre, frame, radius, pair)
 
 
 def window_at(res: OrbitResult, r: Algebraic) -> tuple[dict | None, str]:
@@ -172,7 +186,7 @@ def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tupl
     second route's balls wrap, about a bit per collision: minutes) the state is the first
     route's (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
     if k > VERIFY_MAX:
-        for done, j, n, bits in engines.ball_states(r, theta0, phi0, k):
+        for done, j, n, bits in engines.ball_states(r, theta0, phi0, k, every=False):   # the last state
             if done == k:
                 return LETTERS[j], n, bits
         return f"the certified orbit stopped undecided before collision {k}"
@@ -206,7 +220,7 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
         U = trap_of(word, r)
         if isinstance(U, str):
             return f"no certified trapping ellipse for {word} at r = {r}: {U}"
-        U = trapping.check(word, r, U.centre, U.frame, U.radius, U.pair)
+        U = recheck(word, r, U.centre, U.frame, U.radius, U.pair)
         if isinstance(U, str):
             return f"the trapping ellipse of {word} is not re-certified: {U}"
     state = _state(r, theta0, phi0, k)

@@ -198,7 +198,7 @@ def decide(entry: dict, word: dict) -> tuple[bool, str, list[str]]:
     w, k, n = word["word"], word["count"], entry["orbits"]
     try:
         normal = read(w)[0]
-        points = orbit_at(normal, r)
+        points = ident.orbits_at(normal, r)
     except UsageError as exc:             # a word the grammar refuses: the finding cannot stand
         return False, (f"{EXPLANATION} at r = {entry['r']}, {k} of {n} orbits settle on {w}: "
                        f"cannot be decided ({exc})"), []

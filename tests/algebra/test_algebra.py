@@ -786,3 +786,21 @@ def test_isolate_with_one_end_omitted_beyond_the_roots():
     p = flint.fmpq_poly([-1, 0, 1])
     assert isolate(p, None, fq(-5)) == [] and isolate(p, fq(5), None) == []
     assert len(isolate(p, None, fq(0))) == 1 and len(isolate(p, fq(0), None)) == 1
+
+
+def test_one_polynomial_nested_intervals_are_one_number_and_others_are_not():
+    # Algebraic._cmp: a copy refined apart from its original is equal to it; the other roots
+    # of the same polynomial (disjoint or overlapping intervals) are not
+    import copy
+
+    import flint
+
+    from certify.algebra.algebraic import Algebraic
+    p = flint.fmpq_poly([-2, 0, 0, 1]) * flint.fmpq_poly([-3, 0, 1])     # ∛2 ≈ 1.26, ±√3
+    lo, mid, hi = Algebraic.roots(p)
+    inner = copy.copy(mid).refine(flint.fmpq(1, 2 ** 30))
+    assert inner == mid and mid == inner and not inner < mid and not mid < inner
+    # overlapping, not nested: decided as before (the same root, then another one)
+    same, other = Algebraic(p, flint.fmpq(5, 4), flint.fmpq(3, 2)), Algebraic(p, flint.fmpq(13, 10), 2)
+    assert same == mid and other != mid and other == hi and mid < other
+    assert lo < mid < hi and hi > inner

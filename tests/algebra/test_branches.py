@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from certify.algebra import numberfield as nf
 from certify.algebra.algebraic import Algebraic
-from certify.algebra.branches import Condition, FixedPoint, Spectrum
+from certify.algebra.branches import NO_BRANCH, Condition, FixedPoint, Spectrum
 from certify.algebra.elimination import Elimination, eliminate
 from certify.algebra.poly import from_flint, lam, r, x
 from certify.errors import UNDECIDED
@@ -916,3 +916,20 @@ def test_ball_values_of_h_at_r_and_lambda_contain_the_exact_value():
             # the exact value minus the ball's centre, exactly, within the radius
             assert abs(exact - v.real.mid().fmpq()) <= v.real.rad().fmpq() and v.imag.contains(0)
         assert v.real.rad().fmpq() < Q(1, 2**150)
+
+
+def test_sign_on_branch_at_is_the_branchs_entry_of_sign_at_point():
+    # the point signs computed for one branch alone (Spectrum.sign_on_branch_at) are the
+    # entries of sign_at_point: signs None (x not real: Δ < 0 on branch 0 for r > 1/9), at
+    # Δ = 0 (r = 1/9 on branch 0, x₊ = -1/3 there: undecided for x + 1/3), and a missing
+    # branch past the last one
+    S = Spectrum(SQRT)
+    fp = FixedPoint(lam, -r, sp.Integer(1), sp.Integer(1))
+    for name, g in (("x", x), ("x + 1/3", x + sp.Rational(1, 3)), ("λ - 1/3", lam - sp.Rational(1, 3))):
+        cond = Condition.of(name, g, fp)
+        for rc in (Algebraic.rational(Q(1, 9)), Algebraic.rational(Q(1, 4)), Algebraic.rational(Q(1, 16))):
+            full = list(S.sign_at_point(cond, rc))
+            assert [S.sign_on_branch_at(cond, rc, k) for k in range(len(full))] == full
+            assert S.sign_on_branch_at(cond, rc, len(full)) == NO_BRANCH
+    assert S.sign_on_branch_at(Condition.of("x", x, fp), Algebraic.rational(Q(1, 9)), 0) == -1
+    assert S.sign_on_branch_at(Condition.of("x", x, fp), Algebraic.rational(Q(1, 4)), 0) is None

@@ -15,7 +15,7 @@ from certify.algebra.poly import r
 from certify.dynamics import cones as RC
 from certify.dynamics import reduction as R
 from certify.dynamics import simulate as sim
-from certify.dynamics.model import INDEX, LETTERS, collision_matrix
+from certify.dynamics.model import INDEX, LETTERS, collide, collide_integral, collision_matrix
 from certify.run.runner import CERTIFICATES, FAIL, PASS, Context, altered, run_certificate
 from proofs import section4_1_reduction_theorem as S41
 from proofs import section4_2_final_expressions as S42
@@ -203,6 +203,45 @@ def test_trigonometric_step_on_an_exact_state():
     assert all(a.overlaps(b) for a, b in ((T1.ct, X.ct), (T1.cp, X.cp)))
 
 
+def _trig_agreement_step_by_step(planes, r, prec):
+    """What S7.2 compared before trig_agreement: trig_step from angles(P) against angles(P1), pair by pair."""
+    agree = undecided = 0
+    for P, P1 in zip(planes, planes[1:]):
+        try:
+            with precision(prec):
+                T, X = R.trig_step(R.angles(P), r), R.angles(P1)
+            agree += T.letter == P1.letter and all(a.overlaps(b) for a, b in
+                                                   ((T.ct, X.ct), (T.st, X.st), (T.cp, X.cp), (T.sp, X.sp)))
+        except sim.Undecided:
+            undecided += 1
+    return agree, undecided
+
+
+@pytest.mark.parametrize("prec", [128, 4])
+def test_trig_agreement_is_the_step_by_step_comparison(prec):
+    """trig_agreement counts what trig_step and angles give pair by pair: on exact orbits (all
+    agree at 128 bits; at 4 bits signs go undecided), and on orbits with planes swapped (some
+    steps then disagree)."""
+    rng, seen = random.Random(7), set()
+    for r0 in (Q(1, 10), Q(1, 37), Q(50, 99)):
+        orbits = []
+        for letter in LETTERS:
+            n = [rng.randint(-30, 30) for _ in range(3)]
+            try:
+                P = R.canonical(letter, n)
+                R.next_letter(P)
+            except (R.Corner, ValueError):
+                continue
+            planes = R.orbit(P, r0, 120)
+            orbits += [planes, planes[:40:2] + planes[40:]]
+        for planes in orbits:
+            got = R.trig_agreement(planes, r0, prec)
+            assert got == _trig_agreement_step_by_step(planes, r0, prec)
+            seen.add((got[0] + got[1] == len(planes) - 1, got[1] > 0))
+    assert (False, False) in seen or (False, True) in seen     # some disagreement was counted
+    assert (True, prec < 64) in seen
+
+
 def test_admissible_words_and_blocks():
     """The windows the proofs allow are the words with no letter twice in a row and no aca, cac."""
     allowed = RC.transitions(CTX.get("reduction_cones"))
@@ -308,3 +347,135 @@ def test_ball_run_follows_the_exact_orbit_and_encloses_its_oriented_normal():
     for k in range(3):
         assert (n[k] / n[t]).contains(flint.fmpq(last.n[k], last.n[t]))
     assert len(R.ball_run("b", P.n, r, 60, 16)[0]) < 60          # too few bits: stops at an undecided sign
+
+
+def _decided(f, *args):
+    try:
+        return f(*args)
+    except (R.Corner, sim.Undecided):
+        return "refused"
+
+
+def test_the_ball_next_letter_decides_as_next_letter():
+    """ball_run's _next_letter_ball against next_letter on a Plane of the same balls: the same
+    letter, or both refusing (a corner, or a sign the balls do not decide), on balls that
+    straddle 0, exact zeros and decided entries of every sign, at every contact."""
+    rng = random.Random(3)
+    choices = [flint.arb(0), flint.arb(0, 1), flint.arb(1, Q(1, 2)), flint.arb(-2, Q(1, 3)), flint.arb(3),
+               flint.arb(-1)]
+    with precision(64):
+        for _ in range(400):
+            letter = rng.choice(LETTERS)
+            n = tuple(rng.choice(choices) * rng.choice((1, 2)) for _ in range(3))
+            plane = _decided(lambda: R.next_letter(R.Plane(letter, n)))       # noqa: B023
+            assert _decided(R._next_letter_ball, letter, n) == plane, (letter, n)
+@settings(max_examples=200, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-3, 3) | st.integers(-10 ** 40, 10 ** 40)] * 3))
+def test_angles_of_an_integer_normal_is_the_generic_one(letter, n):
+    """angles() of an integer normal takes _position_tangent: the position and tangent of
+    position() and tangent() (Corner alike), hence the same balls."""
+    n = tuple(flint.fmpz(z) for z in n)
+    assume_nonzero = any(n)
+    P = R.Plane(letter, n)
+    try:
+        want = (R.position(P), R.tangent(P))
+    except R.Corner:
+        with pytest.raises(R.Corner):
+            R._position_tangent(letter, n)
+        return
+    assert assume_nonzero and R._position_tangent(letter, n) == want
+    with precision(128):
+        a, b = R.angles(P), R.angles_of(letter, *want)
+    assert [z.mid().str(40) + z.rad().str(5) for z in (a.ct, a.st, a.cp, a.sp)] == \
+        [z.mid().str(40) + z.rad().str(5) for z in (b.ct, b.st, b.cp, b.sp)]
+    with precision(128):
+        c = R._angles_orthogonal(letter, *want)         # w · p = 0 read from the construction
+    assert [_bits(z) for z in (c.ct, c.st, c.cp, c.sp)] == [_bits(z) for z in (b.ct, b.st, b.cp, b.sp)]
+
+
+def _bits(z: flint.arb) -> tuple:
+    """A ball bit for bit: its midpoint and radius as (mantissa, exponent)."""
+    return z.mid().man_exp(), z.rad().man_exp()
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-60, 60)] * 3), st.integers(1, 99), st.integers(1, 3))
+def test_orbit_is_step_after_step(letter, n, k, c):
+    """orbit() (the content of each new normal read off det M) is step() applied again and again
+    from canonical(P), a corner included; a start normal that is not primitive (c > 1) too."""
+    r0 = flint.fmpq(k, 100)
+    try:
+        P = R.canonical(letter, n)
+    except (R.Corner, ValueError):
+        return
+    start = R.Plane(letter, tuple(c * z for z in P.n))
+    want, rows = [start], R.cofactors(r0)
+    for _ in range(40):
+        try:
+            want.append(R.step(want[-1], r0, rows))
+        except R.Corner:
+            break
+    assert R.orbit(start, r0, 40) == want
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-30, 30)] * 3), st.integers(1, 99),
+       st.sampled_from([1, 2, 5, 64]))
+def test_word_of_on_integers_is_the_plane_path(letter, n, k, every):
+    """word_of on an integer normal (no Plane per step) gives the letters and the end of the
+    Plane path (taken for a rational normal), a corner included."""
+    r0 = flint.fmpq(k, 100)
+    exact = R.Plane(letter, tuple(flint.fmpz(z) for z in n))
+    plane = R.Plane(letter, tuple(flint.fmpq(z) for z in n))
+    try:
+        want = R.word_of(plane, r0, 60, every)
+    except (R.Corner, ValueError) as exc:
+        with pytest.raises(type(exc)):
+            R.word_of(exact, r0, 60, every)
+        return
+    assert R.word_of(exact, r0, 60, every) == want
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-10 ** 30, 10 ** 30) | st.integers(-3, 3)] * 3),
+       st.integers(1, 99), st.integers(1, 99))
+def test_vectorial_ray_is_the_vectorial_step_up_to_a_positive_factor(letter, u, m, d):
+    """collide_integral is 2d·collide; vectorial_ray gives the contact of vectorial_step and a
+    positive multiple of its ũ(1) (or the same Corner); same_ray is v ∧ w = 0 and v · w > 0."""
+    r0 = flint.fmpq(m, d)
+    u = tuple(flint.fmpz(z) for z in u)
+    assert collide_integral(letter, u, r0) == tuple(2 * r0.q * z for z in collide(letter, u, r0))
+    try:
+        j, ut = R.vectorial_step(letter, u, r0)
+    except R.Corner:
+        with pytest.raises(R.Corner):
+            R.vectorial_ray(letter, u, r0)
+        return
+    j2, ray = R.vectorial_ray(letter, u, r0)
+    assert j2 == j and ray == tuple(2 * r0.q * z for z in ut)
+    for v, w in ((ray, ut), (ut, u), (u, tuple(-z for z in u)), (u, (0, 0, 0)), ((0, 0, 0), u), (u, u)):
+        assert R.same_ray(v, w) == (R.cross(v, w) == (0, 0, 0) and R.dot(v, w) > 0)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.tuples(*[st.integers(-10 ** 12, 10 ** 12)] * 2), st.tuples(*[st.integers(-10 ** 12, 10 ** 12)] * 2),
+       st.integers(1, 10 ** 6), st.tuples(*[st.integers(-4, 4)] * 3))
+def test_normal_with_a_candidate_is_the_normal(p, q, q1, other):
+    """normal(p, q, candidate) and plane(..., candidate) are normal(p, q) and plane(...) whatever
+    the primitive candidate: the answer, its opposite, another vector, one with zeros."""
+    p, q = (flint.fmpz(0),) + tuple(map(flint.fmpz, p)), (flint.fmpz(q1),) + tuple(map(flint.fmpz, q))
+    if not any(R.cross(p, q)):
+        return
+    want = R.normal(p, q)
+    candidates = [want, tuple(-z for z in want), (flint.fmpz(0), flint.fmpz(0), flint.fmpz(1))]
+    if any(other):
+        candidates.append(R.primitive(tuple(map(flint.fmpz, other))))
+    for c in candidates:
+        assert R.normal(p, q, c) == want
+        try:
+            P = R.plane("a", p, q)
+        except R.Corner:
+            with pytest.raises(R.Corner):
+                R.plane("a", p, q, c)
+            continue
+        assert R.plane("a", p, q, c) == P

@@ -77,6 +77,33 @@ def test_inlined_exact_run_is_the_generic_one(p, q, r0):
     assert (fast.events, fast.states, fast.stop, fast.reason) == (slow.events, slow.states, slow.stop, slow.reason)
 
 
+def positive_multiple(V, v) -> bool:
+    """V = k v for some k > 0 (or both zero), exactly."""
+    if all(z == 0 for z in v):
+        return all(z == 0 for z in V)
+    return all(a * w == b * z for a, z in zip(V, v) for b, w in zip(V, v)) and \
+        sum(a * z for a, z in zip(V, v)) > 0
+
+
+@settings(max_examples=200)
+@given(st.tuples(small.map(abs), small.map(abs), small.map(abs)), st.tuples(small, small, small), restitution,
+       st.tuples(positive, positive).filter(lambda s: s[0] > 0 and s[1] > 0))
+def test_run_on_rays_is_the_exact_run(p, q, r0, scale):
+    """follow_rays, on integer directions of p and q, has the events, stop and reason of
+    the exact run, and at every collision positive multiples of its p and q (ties, contacts
+    and multiple collisions are frequent with small entries; the data scaled by positive
+    factors give the same rays)."""
+    exact = sim.follow(p, q, r0, 30)
+    for a, b in ((p, q), (tuple(scale[0] * z for z in p), tuple(scale[1] * z for z in q))):
+        rays = sim.follow_rays(a, b, r0, 30)
+        assert (rays.events, rays.stop, rays.reason, rays.word) == (exact.events, exact.stop, exact.reason, exact.word)
+        assert len(rays.rays) == len(exact.states)
+        for (P, Q_), s in zip(rays.rays, exact.states):
+            assert positive_multiple(P, s.p) and positive_multiple(Q_, s.q)
+    if exact.states[-1].p != (0, 0, 0):
+        assert rays.rays[-1][0][0].gcd(rays.rays[-1][0][1]).gcd(rays.rays[-1][0][2]) == 1   # P primitive
+
+
 def test_simultaneous_a_and_c_exact():
     """a and c at exactly the same time: one event "ac" (A and C commute, l. 240)."""
     p, q = sim.exact([1, 1, 2]), sim.exact([-1, 1, -2])

@@ -270,3 +270,16 @@ def test_ball_sign_decides_the_centre_itself(complex_trap):
     for bits in (53, 128, 256):
         with precision(bits):
             assert complex_trap.ball_sign(tuple(flint.arb(z) for z in complex_trap.centre)) == 1, bits
+
+
+def test_a_shape_computed_once_serves_every_radius(complex_trap):
+    """check with the Shape of (centre, frame) given, as attempt and the bisection pass it, says
+    what check says computing it: the same Trap, the same refusal, at radii on both sides."""
+    T = complex_trap
+    P = products(COMPLEX, T.r)
+    form = trapping.shape(COMPLEX, T.centre, T.frame, P)
+    for rho in (T.radius / 7, T.radius, T.radius * Q(21, 20), 4 * T.radius):
+        given = check(COMPLEX, T.r, T.centre, T.frame, rho, T.pair, P, form)
+        fresh = check(COMPLEX, T.r, T.centre, T.frame, rho, T.pair)
+        assert given == fresh
+    assert isinstance(check(COMPLEX, T.r, T.centre, T.frame, T.radius, T.pair, P, form), Trap)

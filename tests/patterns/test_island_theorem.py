@@ -301,3 +301,53 @@ def test_window_ends_that_are_resonances():
     found = {(w, side): pq for w, side, _d, pq in it.window_resonances(windows, 12)}
     assert found == {("w1", "hi"): (1, 3), ("w2", "hi"): (1, 2), ("w3", "hi"): (1, 4)}
     assert it.algebraic_of(windows["w1"][0]["hi"]) == Algebraic.surd(2, -1, 3)
+
+
+def test_box_sign_with_the_sides_of_a_run_is_box_sign_alone():
+    """island_fraction's shared Sides (the balls at the boxes' sides, computed once a side) give
+    every box the sign box_sign gives it computing them; a Sides of another r is not used."""
+    r = flint.fmpq(3, 10)
+    with it.precision(64):
+        sides, other = it.Sides(r), it.Sides(flint.fmpq(1, 2))
+        for i in range(32):
+            for j in range(1, 31):
+                box = (flint.fmpq(i, 32), flint.fmpq(i + 1, 32), flint.fmpq(j, 32), flint.fmpq(j + 1, 32))
+                alone = it.box_sign(box, r)
+                assert it.box_sign(box, r, sides) == alone == it.box_sign(box, r, other)
+
+
+def test_the_theorem_is_proved_once_a_run():
+    """theorem(r) with the default claims is kept until the caches are emptied
+    (caches.for_a_run), then proved again with the same verdicts; other claims never kept."""
+    from certify import caches
+    r = flint.fmpq(2, 5)
+    T = it.theorem(r)
+    assert it.theorem(r) is T and it.theorem(r, it.Claims()) is not T
+    caches.reset()
+    U = it.theorem(r)
+    assert U is not T and [(s.name, s.holds, s.evidence) for s in U.steps] == \
+        [(s.name, s.holds, s.evidence) for s in T.steps]
+
+
+def test_signs_on_the_interval_from_the_field_and_from_sympy():
+    """The sign of an element of Q(r) on ]3−2√2, 1[ (Coefficients, from its numerator and
+    denominator) is interval_sign's of the same rational function; a change of sign inside
+    is refused by both."""
+    F = it.Coefficients(True)
+    rs = it.R_SYMBOL
+    for e in ((1 + rs) / (2 * rs), -(rs ** 2 - 6 * rs + 1) / (4 * rs), (rs - 2) * (rs + 3) / (rs ** 2 + 1), rs / 7):
+        assert F.sign(F.of(e)) == it.interval_sign(e)
+    for e in (rs - sp.Rational(1, 2), (rs - sp.Rational(1, 3)) / (rs + 1)):
+        with pytest.raises(ValueError):
+            F.sign(F.of(e))
+        with pytest.raises(ValueError):
+            it.interval_sign(e)
+
+
+def test_a_theorem_crosses_process_boundaries_with_its_evidence():
+    """A Theorem pickles (a worker may return one) with every step's evidence written."""
+    import pickle
+    T = it.prove(flint.fmpq(7, 10), it.Claims())
+    U = pickle.loads(pickle.dumps(T))
+    assert [(s.name, s.holds, s.evidence) for s in U.steps] == [(s.name, s.holds, s.evidence) for s in T.steps]
+    assert U.quasi_periodic and U.c_max == T.c_max
