@@ -1,6 +1,6 @@
 """The speed targets of issue 26: the engine against a plain SymPy script, in one sitting.
 
-    python benchmarks/bench_targets.py [--repeat N] [--long]
+    python benchmarks/bench_targets.py [--repeat N] [--long] [--all]
 
 The yardstick (:func:`algebra`) is a plain SymPy script doing the core of ``certify
 pattern``'s algebra on a word: M_w = K_{c_L} ··· K_{c_1} (expanded after each letter),
@@ -8,7 +8,8 @@ cp = det(λI - M_w), disc_λ cp factored over Q and the real roots of its factor
 (SymPy's isolation), the left eigenvector n* of M_w by Cramer's rule, and Res_λ(numerator
 of n*_x, cp) with its real roots in ]0, 1[; nothing of the engine but the word reader.
 For each target (``certify orbit`` on the 38-letter word, ``certify pattern
-(ab)^6(cb)^6``; with ``--long`` also ``orbit`` on the 122-letter attractor of r = 0.173):
+(ab)^6(cb)^6``; with ``--long`` also ``orbit`` on the 122-letter attractor of r = 0.173; with
+``--all`` also the whole ``python -m certify all`` against the script on the 38-letter word):
 the median seconds of the script and of the engine's analysis (in process, the engine's caches
 (:func:`certify.run.runner.reset_caches`) and SymPy's emptied before each run), and their ratio.  Run the copy
 of this file in another checkout to time that checkout's engine (the script imports the
@@ -86,12 +87,21 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--long", action="store_true", help="also orbit on the 122-letter word (minutes)")
+    ap.add_argument("--all", action="store_true", help="also the whole `python -m certify all` (fresh processes, "
+                    "benchmarks/bench.py's time_command) against the script on the 38-letter word")
     args = ap.parse_args(argv)
+    scripts = {}
     for kind, word in TARGETS + ((LONG,) if args.long else ()):
-        ref = median_seconds(lambda w=word: algebra(w), args.repeat)
+        ref = scripts[word] = median_seconds(lambda w=word: algebra(w), args.repeat)
         eng = median_seconds(lambda k=kind, w=word: engine(k, w), args.repeat)
         print(f"{kind} {word}: script {ref:.2f} s, engine {eng:.2f} s, ratio {eng / ref:.2f} "
               f"(medians of {args.repeat})", flush=True)
+    if args.all:
+        from benchmarks.bench import time_command
+        ref = scripts[TARGETS[0][1]]
+        eng = statistics.median(time_command(args.repeat))
+        print(f"certify all (whole command): {eng:.2f} s, ratio {eng / ref:.2f} to the script on "
+              f"{TARGETS[0][1]} ({ref:.2f} s; medians of {args.repeat})", flush=True)
     return 0
 
 

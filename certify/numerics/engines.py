@@ -33,7 +33,7 @@ import numpy as np
 
 from certify.algebra.balls import precision
 
-from . import kernel, rules
+from . import rules
 
 ENGINES = ("float64", "mp", "ball")
 MP_DPS = 30                    # default digits of the mp engine
@@ -70,6 +70,7 @@ def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(
                   normal=None, strict=False) -> OrbitResult:
     """One orbit on the float64 kernel (``trace`` when the word or checkpoints are
     asked); ``strict``: stop at the certified horizon (break 5)."""
+    from . import kernel  # numba, imported where the float64 engine first runs, not at every command's start
     rows = np.array(rules.float_rows(r)).reshape(27)           # the kernel's flat layout
     n0 = np.array(normal if normal is not None else rules.initial_normal(theta0, phi0, letter), dtype=float)
     i0 = rules.INDEX[letter]

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import engines, kernel, rules
+from . import engines, rules
 
 KEYS = ("r", "theta0", "phi0", "phi", "breaks", "collisions", "certified")
 
@@ -137,6 +137,7 @@ def _float64(r, theta0, phi0, collisions, keep, strict, progress):
     breaks = np.zeros((n_r, n_o), dtype=np.int8)
     counts = np.zeros((n_r, n_o), dtype=np.int64)
     certified = np.zeros((n_r, n_o), dtype=np.int64)
+    from . import kernel  # numba, imported where the float64 engine first runs
     # batches, for the progress bar; each batch is one parallel call
     per = max(1, min(n_r, (1 << 22) // max(1, n_o * max(collisions, 1))))
     for lo in range(0, n_r, per):
