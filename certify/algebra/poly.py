@@ -276,21 +276,21 @@ def _field_of(e) -> FracElement:
 _RING_GENS = dict(zip(FIELD.symbols, RING.gens))
 
 
-def _ring_pair(e: sp.Expr) -> tuple[PolyElement, PolyElement] | None:
-    """``e`` built from rationals and the field's symbols by +, ×, integer powers, as
-    (numerator, denominator) in RING, not canceled; None for anything else."""
+def fraction_tree(e: sp.Expr, leaf, rational):
+    """``e`` built from rationals and leaves by +, ×, integer powers, as (numerator, denominator),
+    not canceled, in the ring where ``leaf(symbol)`` (None: not a leaf) and ``rational(q)`` (q a
+    SymPy Rational) live; None for anything else, or for 0 to a negative power."""
+    g = leaf(e)
+    if g is not None:
+        return g, rational(sp.S.One)
     if e.is_Rational:
-        return RING(sp.QQ(int(e.p), int(e.q))), RING.one
-    if e.is_Symbol:
-        g = _RING_GENS.get(e)
-        return None if g is None else (g, RING.one)
+        return rational(e), rational(sp.S.One)
     if e.is_Add or e.is_Mul:
-        num, den = (RING.zero if e.is_Add else RING.one), RING.one
-        for a in e.args:
-            pa = _ring_pair(a)
-            if pa is None:
-                return None
-            n, d = pa
+        pairs = [fraction_tree(a, leaf, rational) for a in e.args]
+        if any(pa is None for pa in pairs):
+            return None
+        num, den = pairs[0]
+        for n, d in pairs[1:]:
             if e.is_Mul:
                 num, den = num * n, den * d
             elif d == den:
@@ -299,15 +299,21 @@ def _ring_pair(e: sp.Expr) -> tuple[PolyElement, PolyElement] | None:
                 num, den = num * d + n * den, den * d
         return num, den
     if e.is_Pow and e.exp.is_Integer:
-        pb = _ring_pair(e.base)
+        pb = fraction_tree(e.base, leaf, rational)
         if pb is None:
             return None
         k = int(e.exp)
         n, d = pb if k >= 0 else pb[::-1]
         if d == 0:
-            return None                 # 0 to a negative power: left to from_expr's error
+            return None
         return n ** abs(k), d ** abs(k)
     return None
+
+
+def _ring_pair(e: sp.Expr) -> tuple[PolyElement, PolyElement] | None:
+    """``e`` built from rationals and the field's symbols by +, ×, integer powers, as
+    (numerator, denominator) in RING, not canceled (:func:`fraction_tree`); None otherwise."""
+    return fraction_tree(e, _RING_GENS.get, lambda q: RING(sp.QQ(int(q.p), int(q.q))))
 
 
 def to_ring(e) -> PolyElement:

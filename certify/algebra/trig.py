@@ -40,7 +40,7 @@ from certify import caches
 from certify.obligations import fact
 
 from . import facts
-from .poly import lam, r
+from .poly import fraction_tree, lam, r
 from .poly import parse as parse_paper
 from .sturm import count_roots
 
@@ -190,37 +190,10 @@ def _flint_fraction(E, gens: tuple, order: str):
     ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), order)
     index = dict(zip(gens, ctx.gens()))
     one = ctx.from_dict({(0,) * len(gens): 1})
-
-    def walk(e):
-        found = index.get(e)
-        if found is not None:
-            return found, one
-        if e.is_Rational:
-            return ctx.from_dict({(0,) * len(gens): flint.fmpq(int(e.p), int(e.q))}), one
-        if e.is_Add or e.is_Mul:
-            n, d = walk(e.args[0])
-            for a in e.args[1:]:
-                n2, d2 = walk(a)
-                if e.is_Mul:
-                    n, d = n * n2, d * d2
-                elif d == d2:
-                    n = n + n2
-                else:
-                    n, d = n * d2 + n2 * d, d * d2
-            return n, d
-        if e.is_Pow and e.exp.is_Integer:
-            n, d = walk(e.base)
-            k = int(e.exp)
-            if k < 0:
-                if n == 0:
-                    raise ZeroDivisionError
-                n, d, k = d, n, -k
-            return n ** k, d ** k
-        raise ValueError("not a rational function of the gens")
-    try:
-        n, d = walk(E)
-    except (ValueError, ZeroDivisionError):
+    found = fraction_tree(E, index.get, lambda q: ctx.from_dict({(0,) * len(gens): flint.fmpq(int(q.p), int(q.q))}))
+    if found is None:
         return None
+    n, d = found
     if n == 0:
         return n, one
     g = n.gcd(d)

@@ -53,3 +53,14 @@ def test_to_mpoly_is_polys(text):
     for c in P.coeffs():
         den = sp.ilcm(den, sp.denom(c))
     assert to_mpoly(parse(text)) == MCTX.from_dict({m: int(c * den) for m, c in P.terms()})
+
+
+def test_fraction_tree_is_the_fraction_and_refuses_what_it_cannot_read():
+    leaf = {r: flint.fmpq_poly([0, 1])}.get
+    rational = lambda q: flint.fmpq_poly([flint.fmpq(int(q.p), int(q.q))])   # noqa: E731
+    n, d = poly.fraction_tree((r + sp.Rational(1, 2)) ** 2 / (r - 1) - 3, leaf, rational)
+    x = flint.fmpq_poly([0, 1])
+    assert n * (x - 1) == ((x + flint.fmpq(1, 2)) ** 2 - 3 * (x - 1)) * d          # n/d = (x + 1/2)²/(x − 1) − 3
+    assert poly.fraction_tree(sp.Pow(r - r, -1, evaluate=False), leaf, rational) is None    # 0 to a negative power
+    assert poly.fraction_tree(sp.sqrt(r), leaf, rational) is None
+    assert poly.fraction_tree(lam + 1, leaf, rational) is None                               # not a leaf
