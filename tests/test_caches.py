@@ -59,6 +59,6 @@ def test_a_memo_by_identity_tells_equal_objects_apart_and_is_forgotten_by_reset(
     assert total(a) == total(a) == 3 and calls == [a]
     assert total(b) == 3 and len(calls) == 2 and calls[1] is b        # equal, not the same object
     a.append(4)
-    assert total(a) == 3                                               # the object's first value: lists given are never modified
+    assert total(a) == 3          # the first value of the object: a list given is never modified
     caches.reset()
     assert total(a) == 7 and len(calls) == 3
