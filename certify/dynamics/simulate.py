@@ -34,7 +34,7 @@ from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 from certify.errors import Undecided
 
-from .model import INDEX, LETTERS, collide
+from .model import INDEX, LETTERS, collide, collide_integral
 
 
 class MultipleCollision(ArithmeticError):
@@ -325,11 +325,9 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
     the next collisions, and the meeting test of :func:`meeting` (signs of P, Q and of t),
     are those of the run.  Then p + t q = (α/(−Q_i))((−Q_i)P + P_i Q), with the closed gaps 0,
     and K q = (β/(2d)) (2d K) Q for r = m/d, where 2d K has the integer entries −2m, 2d,
-    m + d: positive multiples of the new p and q.  P is made primitive at every step (it
+    m + d (:func:`certify.dynamics.model.collide_integral`): positive multiples of the new p and q.  P is made primitive at every step (it
     would grow quadratically), Q never (its content grows by at most 2d a step; the gcds
     cost more than the longer products).  (A test runs both.)"""
-    m, d = r.p, r.q
-    neg, one, h = -2 * m, 2 * d, m + d           # 2d·(−r), 2d·1, 2d·(1 + r)/2
     zero = flint.fmpz(0)
     P, Q = _ray(integral_vector(p0)), _ray(integral_vector(q0))
     out = Rays(rays=[(P, Q)])
@@ -352,18 +350,10 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
             out.stop, out.reason = "multiple", str(exc)
             return out
         P = [den * P[0] + num * Q[0], den * P[1] + num * Q[1], den * P[2] + num * Q[2]]
-        q1, q2, q3 = Q
         for L in letters:
-            if L == "a":
-                P[0] = zero
-                q1, q2, q3 = neg * q1, one * q2 + h * q1, one * q3
-            elif L == "b":
-                P[1] = zero
-                q1, q2, q3 = one * q1 + h * q2, neg * q2, one * q3 + h * q2
-            else:
-                P[2] = zero
-                q1, q2, q3 = one * q1, one * q2 + h * q3, neg * q3
-        P, Q = _ray(P), (q1, q2, q3)
+            P[INDEX[L]] = zero
+            Q = collide_integral(L, Q, r)            # 2d·K Q: a positive multiple of K q
+        P = _ray(P)
         events.append(letters)
         rays.append((P, Q))
     return out
