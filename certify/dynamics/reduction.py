@@ -358,8 +358,9 @@ _NEXT = ((1, 2), (2, 0), (0, 1))     # (j, k) = (i + 1, i + 2) mod 3
 
 
 def _next_index_ball(i: int, n: tuple) -> int:
-    """The index of :func:`_next_letter_ball` (i's letter, n), or -1 where it raises
-    (Undecided or Corner: the run stops), from the same ball products and comparisons:
+    """The index of :func:`next_letter` of the Plane (i's letter, n) for a ball normal n, or -1
+    where it raises (Undecided or Corner: the run stops), from the same ball products and
+    comparisons (n ∧ e_i has the entries n_k at j and −n_j at k, exact copies of the balls):
     n_k and n_j of opposite decided signs, then n_i n_j and n_i n_k, exactly one > 0 and
     both decided."""
     j, k = _NEXT[i]
@@ -372,21 +373,6 @@ def _next_index_ball(i: int, n: tuple) -> int:
     if pj < 0 and pk > 0:
         return k
     return -1
-
-
-def _next_letter_ball(letter: str, n: tuple) -> str:
-    """:func:`next_letter` for a ball normal n (the same sign decisions, without building
-    the Plane): the position inside the face (:func:`position`: n ∧ e_i has the entries n_k
-    at j and −n_j at k, j, k = i+1, i+2, exact copies of the balls), then the one closing letter."""
-    i = INDEX[letter]
-    j, k = (i + 1) % 3, (i + 2) % 3
-    sk = sign(n[k])
-    if sk == 0 or sign(n[j]) != -sk:
-        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
-    closing = [L for L in LETTERS if L != letter and sign(n[i] * n[INDEX[L]]) > 0]
-    if len(closing) != 1:
-        raise Corner(f"cos φ = 0 at {Plane(letter, n)}: the orbit heads for a corner")
-    return closing[0]
 
 
 def ball_word(P: Plane, r, n: int, prec: int) -> str:

@@ -325,9 +325,10 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
     the next collisions, and the meeting test of :func:`meeting` (signs of P, Q and of t),
     are those of the run.  Then p + t q = (α/(−Q_i))((−Q_i)P + P_i Q), with the closed gaps 0,
     and K q = (β/(2d)) (2d K) Q for r = m/d, where 2d K has the integer entries −2m, 2d,
-    m + d (:func:`certify.dynamics.model.collide_integral`): positive multiples of the new p and q.  P is made primitive at every step (it
-    would grow quadratically), Q never (its content grows by at most 2d a step; the gcds
-    cost more than the longer products).  (A test runs both.)"""
+    m + d (:func:`certify.dynamics.model.collide_integral`): positive multiples of the new p
+    and q.  P is made primitive at every step (it would grow quadratically), Q never (its
+    content grows by at most 2d a step; the gcds cost more than the longer products).  (A test
+    runs both.)"""
     zero = flint.fmpz(0)
     P, Q = _ray(integral_vector(p0)), _ray(integral_vector(q0))
     out = Rays(rays=[(P, Q)])

@@ -1,7 +1,7 @@
 """reduction.ball_run (identify's second route) against the loop it replaced.
 
 ``_next_index_ball`` reads the next contact from the same ball products and comparisons
-as ``_next_letter_ball`` (and stops where that raises); ball_run gives the same letters,
+as :func:`next_letter` on a Plane (and stops where that raises); ball_run gives the same letters,
 last contact and balls as :func:`_reference_run` (the replaced loop, kept here), on orbits
 that run to the end and orbits that stop at an undecided sign (too few bits), at a
 corner, or at an exact zero.
@@ -24,7 +24,7 @@ def _reference_run(letter, n, r, count, prec):
         L = letter
         try:
             for _ in range(count):
-                L2 = R._next_letter_ball(L, m)
+                L2 = R.next_letter(R.Plane(L, m))
                 m2 = R.apply(rows[L2], m)
                 top = max(abs(z).upper() for z in m2) * R.sign(m2[R.ORIENTATION[L2]])
                 L, m = L2, tuple(z / top for z in m2)
@@ -69,13 +69,13 @@ def _balls():
         yield rng.choice("abc"), tuple(rng.choice(kinds)() for _ in range(3))
 
 
-def test_next_index_ball_is_next_letter_ball():
-    """The same letter, or a stop (-1) exactly where _next_letter_ball raises."""
+def test_next_index_ball_is_next_letter():
+    """The same letter, or a stop (-1) exactly where next_letter raises."""
     seen = set()
     with precision(64):
         for letter, n in _balls():
             try:
-                want = R.INDEX[R._next_letter_ball(letter, n)]
+                want = R.INDEX[R.next_letter(R.Plane(letter, n))]
             except (Undecided, R.Corner) as exc:
                 want = -1
                 seen.add(type(exc))
