@@ -189,6 +189,13 @@ def charpoly_ring(M):
     return RING.from_dict(terms)
 
 
+def det3(rows):
+    """The determinant of a 3×3 matrix given by its rows, by cofactors along the first row
+    (entries in any ring: integers, python-flint or SymPy polynomials)."""
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+
+
 def charpoly_coefficients(M) -> list:
     """The coefficients of det(λI - M), highest power of λ first, as python-flint
     polynomials in r (M a 2x2 or 3x3 matrix of them)."""
@@ -198,7 +205,7 @@ def charpoly_coefficients(M) -> list:
         coeffs = [one, -(M[0][0] + M[1][1]), M[0][0] * M[1][1] - M[0][1] * M[1][0]]
     elif n == 3:
         (a, b, c), (d, e, f), (g, h, i) = M
-        det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+        det = det3(M)
         minors = (a * e - b * d) + (a * i - c * g) + (e * i - f * h)
         coeffs = [one, -(a + e + i), minors, -det]
     else:
@@ -216,7 +223,5 @@ def characteristic_polynomial(M: sp.Matrix) -> sp.Expr:
         except ValueError:
             L = None
         if L is not None:
-            return (L[0][0] * (L[1][1] * L[2][2] - L[1][2] * L[2][1])
-                    - L[0][1] * (L[1][0] * L[2][2] - L[1][2] * L[2][0])
-                    + L[0][2] * (L[1][0] * L[2][1] - L[1][1] * L[2][0])).as_expr()
+            return det3(L).as_expr()
     return sp.expand(M.charpoly(lam).as_expr())

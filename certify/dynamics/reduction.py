@@ -38,7 +38,7 @@ from certify import caches
 from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 
-from .model import INDEX, LETTERS, collide, collide_integral
+from .model import INDEX, LETTERS, collide, collide_integral, det3
 from .simulate import Undecided, sign
 
 ORIENTATION = {"a": 1, "b": 2, "c": 0}       # t with e_t · u(k) ≥ 0 (l. 950)
@@ -266,7 +266,7 @@ def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
     every k, and n is primitive.  So g = gcd(det M, m_1, m_2, m_3): gcds of the long entries
     with a short number, the same primitive normal as :func:`canonical`'s."""
     out, rows = [P], cofactors(r)
-    dets = {L: _det(rows[L]) for L in LETTERS}
+    dets = {L: det3(rows[L]) for L in LETTERS}
     fmpz = flint.fmpz
     for k in range(n):
         try:
@@ -284,12 +284,6 @@ def orbit(P: Plane, r, n: int, stop_at_corner: bool = True) -> list[Plane]:
                 raise
             break
     return out
-
-
-def _det(rows: tuple):
-    """The determinant of a 3×3 matrix given by its rows."""
-    (a, b, c), (d, e, f), (g, h, i) = rows
-    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
 
 
 def word_of(P: Plane, r, n: int, reduce_every: int = 64) -> tuple[str, Plane]:

@@ -253,7 +253,8 @@ def cof_rows(K: tuple) -> tuple:
 
 
 def mat_mul(X: tuple, Y: tuple) -> tuple:
-    """The product of two 3×3 matrices given by their rows."""
+    """The product of two 3×3 matrices given by their rows (also: rows of field elements times
+    a vector of three forms, each form a row of its coefficients)."""
     return tuple(tuple(row[0] * Y[0][j] + row[1] * Y[1][j] + row[2] * Y[2][j] for j in range(3)) for row in X)
 
 
@@ -352,11 +353,6 @@ class Oracle:
         return factor * self.assignment[key]
 
 
-def _apply(rows: tuple, m: tuple) -> tuple:
-    """The matrix with these rows (field elements) times the vector of forms m."""
-    return tuple(tuple(row[0] * m[0][t] + row[1] * m[1][t] + row[2] * m[2][t] for t in range(3)) for row in rows)
-
-
 def walk(n: tuple, cofs: dict, oracle: Oracle) -> str:
     """From the state n at b, the letters up to the return to b (at most 3), by the
     reduction's rules: the orientation e_t · n > 0 of :func:`reduction.canonical` and the
@@ -367,7 +363,7 @@ def walk(n: tuple, cofs: dict, oracle: Oracle) -> str:
     try:
         for _ in range(3):
             j = reduction._next_letter_exact(letter, INDEX[letter], tuple(Form(z, oracle) for z in m))
-            m = _orient(j, _apply(cofs[j], m), oracle)
+            m = _orient(j, mat_mul(cofs[j], m), oracle)
             letter, letters = j, letters + j
             if j == "b":
                 K = oracle.F.K
@@ -493,7 +489,7 @@ def derived_A(r, claims: Claims, F: Coefficients | None = None) -> tuple[tuple |
     M_cab, M_acb = mat_mul(K["b"], mat_mul(K["a"], K["c"])), mat_mul(K["b"], mat_mul(K["c"], K["a"]))
     if M_cab != M_acb:
         return None, "cof(K_b)cof(K_a)cof(K_c) ≠ cof(K_b)cof(K_c)cof(K_a): two maps on the two sides"
-    m = _apply(M_cab, tuple(F.linear(z) for z in island.normal(u, v)))
+    m = mat_mul(M_cab, tuple(F.linear(z) for z in island.normal(u, v)))
     d = tuple(x - y for x, y in zip(m[2], m[0]))
     if d[0] != 0 or d[1] != 0 or d[2] == 0:
         return None, f"n_z − n_x ↦ {sp.cancel(F.expr(d))}: the map is projective, not linear, in the chart"
