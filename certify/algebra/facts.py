@@ -169,28 +169,14 @@ def polynomial_terms(x, gens: list) -> list:
 
 def _mpoly(x, gens: list):
     """x as an fmpq_mpoly in ``gens`` (:func:`polynomial_terms`; _NotPolynomial otherwise)."""
+    from .poly import fraction_tree
     ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "lex")
-    index = dict(zip(gens, ctx.gens()))
-
-    def walk(e):
-        found = index.get(e)
-        if found is not None:
-            return found
-        if e.is_Rational:
-            return flint.fmpq(int(e.p), int(e.q))
-        if e.is_Add or e.is_Mul:
-            args = [walk(a) for a in e.args]
-            out = args[0]
-            for a in args[1:]:
-                out = out + a if e.is_Add else out * a
-            return out
-        if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
-            return walk(e.base) ** int(e.exp)
-        raise _NotPolynomial(f"{e} is not read as a polynomial")
-    P = walk(sp.sympify(x))
-    if not isinstance(P, flint.fmpq_mpoly):
-        P = ctx.from_dict({(0,) * len(gens): P})
-    return P
+    zeros = (0,) * len(gens)
+    found = fraction_tree(sp.sympify(x), dict(zip(gens, ctx.gens())).get,
+                          lambda q: ctx.from_dict({zeros: flint.fmpq(int(q.p), int(q.q))}))
+    if found is None or found[1].total_degree() > 0:
+        raise _NotPolynomial(f"{x} is not read as a polynomial")
+    return found[0] / found[1].coeffs()[0]
 
 
 def _terms(P, n: int) -> list:
