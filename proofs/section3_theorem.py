@@ -67,7 +67,15 @@ from certify.algebra import (
 from certify.dynamics import A as A_
 from certify.dynamics import B as B_
 from certify.dynamics import C as C_
-from certify.dynamics import candidate, characteristic_polynomial, check_word, fixed_point_ball, reduce_mod, velocities
+from certify.dynamics import (
+    candidate,
+    characteristic_polynomial,
+    check_word,
+    det3,
+    fixed_point_ball,
+    reduce_mod,
+    velocities,
+)
 from certify.dynamics import simulate as sim
 from certify.patterns import Analysis, fmt, prefix_requirements
 from certify.run import (
@@ -195,12 +203,6 @@ def field_matrix(K) -> list[list]:
     return [[to_field(K[i, j]) for j in range(K.cols)] for i in range(K.rows)]
 
 
-def field_det(F: list[list]):
-    """The determinant of a 3×3 matrix of elements of Q(λ, r, ...) (rows), by cofactors."""
-    return (F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) - F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0])
-            + F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]))
-
-
 def field_product(factors) -> list[list]:
     """The product of the matrices ``factors`` (left to right), computed in Q(λ, r, ...)."""
     out = field_matrix(factors[0])
@@ -274,7 +276,7 @@ def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
     positive eigenvalue certified on the branch table: the largest eigenvalue is > 0
     on ]0,1[.  The paper's argument, cp(0) = -det M < 0 and cp(λ) → +∞, rests on
     cp(0) = -det M, which holds for every 3×3 matrix: evidence, not a check."""
-    det = sp.factor(field_det(field_matrix(M)).as_expr())
+    det = sp.factor(det3(field_matrix(M)).as_expr())     # by cofactors in Q(λ, r, ...)
     T = spectrum.table("λ", lam, 0, 1)
     as_printed = to_field(det) == to_field(parse(det_text))
     printed_det = determinant_fact(as_printed, M, parse(det_text))

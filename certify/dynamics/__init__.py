@@ -22,6 +22,7 @@ from .model import (
                     collide,
                     collide_particles,
                     collision_matrix,
+                    det3,
                     word_matrix,
 )
 from .simulate import MultipleCollision, Undecided
@@ -40,7 +41,7 @@ from .words import (
 __all__ = [
     "cones", "particles", "reduction", "simulate",
     "INDEX", "LETTERS", "A", "B", "C", "characteristic_polynomial", "check_word", "collide",
-    "collide_particles", "collision_matrix", "word_matrix",
+    "collide_particles", "collision_matrix", "det3", "word_matrix",
     "MultipleCollision", "Undecided",
     "Candidate", "candidate", "check_position_map", "eigenvector", "fixed_point_ball", "position_map",
     "reduce_mod", "run_word", "velocities",
