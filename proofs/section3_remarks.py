@@ -115,19 +115,17 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
     cand = candidate(word)
     cp = cand.cp
     u_num, u_den = sp.fraction(sp.cancel(cand.q0[1].as_expr()))
-    a, b, c, d = cand.abcd
     ev = [f"w = {word}; M_w = `{show(cand.M.tolist())}`", f"cp(M_w) = `{show(sp.collect(cp, lam))}`",
           f"q(0) = (-1, u, v), u = q_2(0) = `{show(sp.factor(u_num))}` / `{show(sp.factor(u_den))}`"]
     # which basic quantity vanishes at r1: resultants with cp, and the exact Gröbner route for u
     # a - d and Δ in the engine's ring (the same polynomials as SymPy's expansions, without them)
     A, B, C, D = cand.abcd_ring
-    quantities = {"u = q_2(0) (numerator)": u_num, "u (denominator)": u_den,
-                  "v = q_3(0) (numerator)": sp.fraction(sp.cancel(cand.q0[2].as_expr()))[0],
+    quantities = {"u = q_2(0) (numerator)": sp.expand(u_num), "u (denominator)": sp.expand(u_den),
+                  "v = q_3(0) (numerator)": sp.expand(sp.fraction(sp.cancel(cand.q0[2].as_expr()))[0]),
                   "a - d": A - D, "b": B, "c": C, "Δ = (a-d)² + 4bc": (A - D) ** 2 + 4 * B * C}
     hits = []
     for name, g in quantities.items():
-        R = resultant_lambda(g if name in ("a - d", "b", "c", "Δ = (a-d)² + 4bc") else sp.expand(g),
-                             cand.spectrum.ring_cp)
+        R = resultant_lambda(g, cand.spectrum.ring_cp)
         if not R.is_zero() and divides(quad, R):
             hits.append(name)
         ev.append(f"Res_λ({name}, cp) = `{show_factored_int(R)}`")
