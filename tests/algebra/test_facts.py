@@ -6,6 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from certify.algebra import facts
+from tests.expressions import expressions
 
 x, y, r, th = sp.symbols("x y r θ")
 GENS = [r, x, y, sp.cos(th), sp.sin(th)]
@@ -17,11 +18,7 @@ def sympy_terms(e, gens):
     return sorted([facts.rational(c), list(m)] for m, c in P.terms())
 
 
-atoms = st.sampled_from(GENS + [sp.Rational(1, 2), sp.Rational(-3, 7), sp.Integer(0), sp.Integer(2)])
-exprs = st.recursive(atoms, lambda sub: st.one_of(
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Add(*a)),
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Mul(*a)),
-    st.tuples(sub, st.integers(0, 3)).map(lambda a: a[0] ** a[1])), max_leaves=12)
+exprs = expressions(GENS + [sp.Rational(1, 2), sp.Rational(-3, 7), sp.Integer(0), sp.Integer(2)])
 
 
 @settings(max_examples=200, deadline=None)
@@ -62,11 +59,7 @@ def test_bare_symbols_are_those_outside_functions(e, extra):
     assert facts._atoms(e)[2] == bare_by_subs(e)
 
 
-integers = st.sampled_from(GENS + [sp.Integer(-2), sp.Integer(0), sp.Integer(1), sp.Integer(3)])
-integral_exprs = st.recursive(integers, lambda sub: st.one_of(
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Add(*a)),
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Mul(*a)),
-    st.tuples(sub, st.integers(0, 3)).map(lambda a: a[0] ** a[1])), max_leaves=12)
+integral_exprs = expressions(GENS + [sp.Integer(-2), sp.Integer(0), sp.Integer(1), sp.Integer(3)])
 
 
 @settings(max_examples=200, deadline=None)

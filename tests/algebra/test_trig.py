@@ -2,16 +2,13 @@
 strings of the certificates must not change)."""
 import sympy as sp
 from hypothesis import given, settings
-from hypothesis import strategies as st
 
 from certify.algebra import trig as T
+from tests.expressions import expressions
 
 x, y, r = sp.symbols("x y r")
-atoms = st.sampled_from([x, y, r, T.cθ, T.sφ, sp.Rational(1, 2), sp.Rational(-3, 7), sp.Integer(2), sp.Integer(-1)])
-polys = st.recursive(atoms, lambda sub: st.one_of(
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Add(*a)),
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Mul(*a)),
-    st.tuples(sub, st.integers(1, 3)).map(lambda a: a[0] ** a[1])), max_leaves=10)
+atoms = [x, y, r, T.cθ, T.sφ, sp.Rational(1, 2), sp.Rational(-3, 7), sp.Integer(2), sp.Integer(-1)]
+polys = expressions(atoms, (1, 3), max_leaves=10)
 
 
 @settings(max_examples=150, deadline=None)
@@ -32,11 +29,7 @@ def test_undecided_sign_shows_sympys_factor():
     assert s is None and why[0].startswith(f"`{T.show(sp.factor(p))}`: ")
 
 
-int_atoms = st.sampled_from([x, y, r, T.cθ, T.sφ, sp.Integer(2), sp.Integer(-1), sp.Integer(3)])
-int_polys = st.recursive(int_atoms, lambda sub: st.one_of(
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Add(*a)),
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Mul(*a)),
-    st.tuples(sub, st.integers(1, 3)).map(lambda a: a[0] ** a[1])), max_leaves=12)
+int_polys = expressions([x, y, r, T.cθ, T.sφ, sp.Integer(2), sp.Integer(-1), sp.Integer(3)], (1, 3))
 
 
 def _same_as_sympy(g):
@@ -81,11 +74,7 @@ def test_flint_factor_list_on_the_step_lemmas():
         _same_as_sympy(g)
 
 
-fractions = st.recursive(atoms, lambda sub: st.one_of(
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Add(*a)),
-    st.lists(sub, min_size=2, max_size=3).map(lambda a: sp.Mul(*a)),
-    st.tuples(sub, st.integers(-2, 3)).map(lambda a: a[0] ** a[1] if a[0] != 0 or a[1] > 0 else a[0])),
-    max_leaves=12)
+fractions = expressions(atoms, (-2, 3))
 
 
 def _same_lowest_terms(E):
