@@ -201,21 +201,27 @@ class State:
 
 
 @dataclass
-class Run:
-    """An orbit: the collisions (``events``, "ac" for a simultaneous pair) and
-    the states right after each (``states[0]`` is the initial state).  ``stop`` says
-    why it ended: "n" (all requested collisions), "free" (no pair approaches),
-    "undecided" (a ball comparison failed: raise the precision) or "multiple" (three
-    or four particles meet, see :class:`MultipleCollision`; ``reason`` says which)."""
+class Collisions:
+    """The collisions of a run (``events``, "ac" for a simultaneous pair) and why it ended
+    (``stop``: "n" all requested collisions, "free" no pair approaches, "undecided" a ball
+    comparison failed: raise the precision, or "multiple" three or four particles meet, see
+    :class:`MultipleCollision`; ``reason`` says which)."""
 
     events: list[str] = field(default_factory=list)
-    states: list[State] = field(default_factory=list)
     stop: str = "n"
     reason: str = ""
 
     @property
     def word(self) -> str:
         return "".join(e if len(e) == 1 else f"[{e}]" for e in self.events)
+
+
+@dataclass
+class Run(Collisions):
+    """An orbit: its :class:`Collisions` and the states right after each (``states[0]`` is
+    the initial state)."""
+
+    states: list[State] = field(default_factory=list)
 
 
 def follow(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
@@ -292,21 +298,13 @@ def _follow_exact(p: tuple, q: tuple, r: flint.fmpq, n: int) -> Run:
 
 
 @dataclass
-class Rays:
-    """An exact run kept up to positive factors: the collisions (``events``, as in
-    :class:`Run`), and after each integer vectors (P, Q) positively proportional to p and
-    q, P primitive (``rays[0]`` for the initial state, both primitive); ``stop`` and ``reason``
-    as in :class:`Run`.  What depends on the directions of p and q only (the collisions,
-    the plane Span(p, q) and its orientation) is read here as on the exact run."""
+class Rays(Collisions):
+    """An exact run kept up to positive factors: its :class:`Collisions`, and after each
+    integer vectors (P, Q) positively proportional to p and q, P primitive (``rays[0]`` for
+    the initial state, both primitive).  What depends on the directions of p and q only (the
+    collisions, the plane Span(p, q) and its orientation) is read here as on the exact run."""
 
-    events: list[str] = field(default_factory=list)
     rays: list[tuple] = field(default_factory=list)
-    stop: str = "n"
-    reason: str = ""
-
-    @property
-    def word(self) -> str:
-        return "".join(e if len(e) == 1 else f"[{e}]" for e in self.events)
 
 
 def _ray(v) -> tuple:
