@@ -57,10 +57,18 @@ def number(text) -> float:
     return float(eval(t, {"__builtins__": {}}, {}))  # digits and * ** only (checked above)
 
 
-@quantity("section5_preview")
-def section5_preview():
+@quantity("float64_engine")
+def float64_engine():
+    """The float64 engine started (numba imported, its compiled sweep loaded: about 0.5 s, once
+    per process).  What needs it runs in one process: the preview runs below and N4's probe."""
+    F.load_float64()
+    return "float64"
+
+
+@quantity("section5_preview", needs=("float64_engine",))
+def section5_preview(float64_engine):
     """The preview runs of Figures 5.1-5.8 (float64), one run per figure (magnifications reuse 5.2)."""
-    return {fig: F.compute(fig, "preview") for fig in F.SPECS}
+    return {fig: F.compute(fig, "preview", engine=float64_engine) for fig in F.SPECS}
 
 
 def paper_note(key: str, render) -> str:
@@ -271,8 +279,8 @@ PRINTED_N4 = dict(r_below="0.078", n_from="6", accumulate_above="7-4\\sqrt{3}")
              "For r below 0.078 the program cannot detect (ab)^n(cb)^n for n ≥ 6 (the dominant eigenvector of "
              "J(BA)^n has a component below the computer precision); the windows should exist for every n ≥ 2, "
              "accumulating above 7-4√3.", printed=PRINTED_N4,
-             expect="OBSERVED, disagrees")
-def below_0078(r_below, n_from, accumulate_above):
+             needs=("float64_engine",), expect="OBSERVED, disagrees")
+def below_0078(float64_engine, r_below, n_from, accumulate_above):
     """Our float64 engine at r just below r_max(n) for n = n_from..n_from+4 (8 orbits, 10^4
     collisions); the smallest component of the dominant eigenvector of M_w (mpmath); the
     committed mp search of ``certify figures --n4``."""
@@ -286,7 +294,7 @@ def below_0078(r_below, n_from, accumulate_above):
     for n in missing:
         th[n] = float(F.upper_threshold(n, 20))
     rs = [th[n] - 0.05 * (th[n] - th[n + 1]) for n in range(n0, n0 + 5)]
-    d = F.probe(rs)
+    d = F.probe(rs, engine=float64_engine)
     seen = {n: F.accumulation_points(d, int(np.argmin(np.abs(d.r - r)))) for n, r in zip(range(n0, n0 + 5), rs)}
     followed = [n for n in seen if seen[n] == 2 * n]
     checks.append(Check(f"a float64 program cannot follow (ab)^n(cb)^n for n ≥ {n_from} below r = {r_below}",

@@ -51,7 +51,7 @@ from .limits import (
                           widest_orbit,
                           window_counts,
 )
-from .orbits import Orbits, grid, iterate, paper_grid
+from .orbits import Orbits, grid, iterate, load_float64, paper_grid
 from .rules import BREAKS, COMPLETED, CORNER, HORIZON, NONFINITE, SHORT_STEP, UNDECIDED, phi_at_b
 from .thresholds import N_LINES, R_CRIT, digits_for, min_component, r_exist, r_max, red_lines, upper_threshold
 
@@ -65,7 +65,7 @@ __all__ = [
     "BINS", "FEW", "GAP", "MAX_INTERVALS", "MAX_PIECES", "PIECE_GAP", "PIXEL", "POINT", "Omega", "accumulation_points",
     "clusters", "coverage", "dominant_count", "fraction", "omega", "orbit_widths", "per_orbit", "per_r", "stripe_scan",
     "widest_orbit", "window_counts",
-    "Orbits", "grid", "iterate", "paper_grid",
+    "Orbits", "grid", "iterate", "load_float64", "paper_grid",
     "BREAKS", "COMPLETED", "UNDECIDED", "SHORT_STEP", "CORNER", "NONFINITE", "HORIZON", "phi_at_b",
     "N_LINES", "R_CRIT", "digits_for", "min_component", "r_exist", "r_max", "red_lines", "upper_threshold",
 ]

@@ -35,6 +35,13 @@ def paper_grid() -> tuple[np.ndarray, np.ndarray]:
     return theta0, phi0
 
 
+def load_float64() -> None:
+    """Start the float64 engine in this process: numba imported and the compiled sweep
+    loaded from its cache (about 0.5 s, paid once per process; a one-collision orbit)."""
+    theta0, phi0 = paper_grid()
+    iterate([0.5], theta0[:1], phi0[:1], collisions=1, keep=1)
+
+
 def grid(count: int) -> tuple[np.ndarray, np.ndarray]:
     """``count`` initial data, the tool's grid: the first ``count`` of :func:`paper_grid`
     when at most 8; beyond, the eight and then, level by level, the same two θ0 times the

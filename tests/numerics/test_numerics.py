@@ -292,3 +292,9 @@ def test_the_grid_beyond_eight_is_a_superset_of_the_eight_without_corners():
         t, p = numerics.grid(n)
         assert len(t) == n and list(t[:8]) == list(THETA) and list(p[:8]) == list(PHI)
         assert len(set(zip(t, p))) == n and all(abs(math.cos(x)) > 1e-6 for x in p)
+
+
+def test_load_float64_loads_the_compiled_sweep():
+    from certify.numerics import kernel, load_float64
+    load_float64()
+    assert kernel.sweep.signatures           # compiled (or loaded from numba's cache) in this process

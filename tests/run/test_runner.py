@@ -131,3 +131,12 @@ def test_digit_count_and_eliminant_checks_can_fail():
     good, agree = eliminant_check("λ - r", lam - parse("r"), cp, "r*(r - 1)")
     assert good.holds and agree.holds
     assert not eliminant_check("λ - r", lam - parse("r"), cp, "r*(r - 2)")[0].holds
+
+
+def test_the_float64_engine_starts_in_one_unit():
+    """numba's start-up (about 0.5 s a process) is a shared quantity: the certificates that run
+    the float64 engine (N2-N7's preview runs, N4's probe) are one unit, so one worker pays it."""
+    with_engine = [unit for unit in runner.units(runner.select())
+                   if any("float64_engine" in c.needs or "section5_preview" in c.needs for c in unit)]
+    assert len(with_engine) == 1
+    assert {"N2", "N4"} <= {c.id for c in with_engine[0]}
