@@ -20,6 +20,7 @@ from certify.errors import UsageError
 
 LETTERS = "abc"
 INDEX = {"a": 0, "b": 1, "c": 2}          # the component p_i that vanishes at the collision
+NEXT = ((1, 2), (2, 0), (0, 1))      # the other two indices of a contact i: (i + 1, i + 2) mod 3
 
 
 def collide(letter: str, q, rr=r) -> tuple:

@@ -38,7 +38,7 @@ from certify import caches
 from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 
-from .model import INDEX, LETTERS, collide, collide_integral, det3
+from .model import INDEX, LETTERS, NEXT, collide, collide_integral, det3
 from .simulate import Undecided, sign
 
 ORIENTATION = {"a": 1, "b": 2, "c": 0}       # t with e_t · u(k) ≥ 0 (l. 950)
@@ -348,7 +348,6 @@ def ball_run(letter: str, n, r, count: int, prec: int) -> tuple[str, str, tuple]
 
 
 _ORIENTATION = tuple(ORIENTATION[L] for L in LETTERS)
-_NEXT = ((1, 2), (2, 0), (0, 1))     # (j, k) = (i + 1, i + 2) mod 3
 
 
 def _next_index_ball(i: int, n: tuple) -> int:
@@ -357,7 +356,7 @@ def _next_index_ball(i: int, n: tuple) -> int:
     comparisons (n ∧ e_i has the entries n_k at j and −n_j at k, exact copies of the balls):
     n_k and n_j of opposite decided signs, then n_i n_j and n_i n_k, exactly one > 0 and
     both decided."""
-    j, k = _NEXT[i]
+    j, k = NEXT[i]
     a, b, c = n[i], n[j], n[k]
     if not ((c > 0 and b < 0) or (c < 0 and b > 0)):
         return -1

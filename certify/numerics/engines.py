@@ -32,6 +32,7 @@ import mpmath
 import numpy as np
 
 from certify.algebra.balls import precision
+from certify.dynamics.model import NEXT
 
 from . import rules
 
@@ -231,15 +232,12 @@ def _initial_ball(theta0, phi0, letter, normal):
     return rules.initial_normal(flint.arb(theta0), flint.arb(phi0), letter, flint.arb.cos, flint.arb.sin)
 
 
-_NEXT = ((1, 2), (2, 0), (0, 1))     # (j, k) = (i + 1, i + 2) mod 3
-
-
 def _ball_classify(i: int, n) -> tuple[int, int]:
     """:func:`.rules.classify` of a ball normal (signs by :func:`.rules.ball_sign`, zero
     bounds), the same answer: the usual state (finite, n_j > 0 > n_k and n_i decided:
     no break, the next contact j or k) read from three comparisons; any other by
     ``rules.classify`` itself."""
-    j, k = _NEXT[i]
+    j, k = NEXT[i]
     a, b, c = n[i], n[j], n[k]
     if b > 0 and c < 0 and a.is_finite() and b.is_finite() and c.is_finite():
         if a > 0:
