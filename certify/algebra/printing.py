@@ -229,7 +229,8 @@ def sympy_fraction(numer, denom) -> tuple:
     PolyRing), as ((N, n), (D, d)), numerator N/n and denominator D/d with N, D in
     fmpz_mpoly over (r, λ): what SymPy's cancel makes of the quotient, coprime integer
     polynomials, contents coprime, the denominator's leading coefficient (lex in r, λ)
-    positive; a constant denominator is divided into the numerator (rational coefficients)."""
+    positive; a constant denominator q is divided into a numerator of several terms
+    (rational coefficients, denominator 1), but not into a single term."""
     (N, LN), (D, LD) = _rl_integer(numer), _rl_integer(denom)
     if N.is_zero():
         return (N, 1), (RL.from_dict({(0, 0): 1}), 1)
@@ -243,6 +244,8 @@ def sympy_fraction(numer, denom) -> tuple:
     A, B = A // g, B // g
     if Dp.total_degree() <= 0:
         lead = int(Dp.leading_coefficient())              # ±1
+        if len(Np) == 1:                                  # c·monomial/q is a product: (c·monomial, q)
+            return (Np * (A * lead), 1), (RL.from_dict({(0, 0): B}), 1)
         return (Np * (A * lead), B), (RL.from_dict({(0, 0): 1}), 1)
     num, den = Np * A, Dp * B
     if den.leading_coefficient() < 0:
