@@ -88,14 +88,15 @@ def _add(items: list[str]) -> str:
     return ("" if sign == "+" else sign) + " ".join(out)
 
 
-def expanded(names: tuple, terms: list, order: str = "lex") -> str:
+def expanded(names: tuple, terms: list, order: str | None = "lex") -> str:
     """sstr(p, order="lex") of the expanded polynomial (``order=None``: ``str(p)``, SymPy's
     default order, the same text but for the special case of :func:`_default_order`)."""
     if not terms:
         return "0"
     ordered = _lex(terms) if order == "lex" else _default_order(terms, names)
     if len(ordered) == 1:
-        return _term(*ordered[0], names)
+        c, e = ordered[0]
+        return _term(c, e, names)
     return _add([_term(c, e, names) for c, e in ordered])
 
 

@@ -75,6 +75,7 @@ line on stderr, never as a traceback (set ``CERTIFY_DEBUG=1`` to see one).
 """
 from __future__ import annotations
 
+import gc
 import importlib
 import os
 import sys
@@ -125,6 +126,16 @@ def describe(exc: BaseException) -> str:
             name = where.filename
         text += f" (at {name}:{where.lineno})"
     return text
+
+
+def run() -> None:
+    """The program (``python -m certify``, the ``certify`` script): :func:`main`, then exit
+    without the interpreter's last garbage collections over everything the command built
+    (``gc.freeze()``: 0.15 s after the analysis of (ab)^6(cb)^6, a tenth of the command;
+    the atexit handlers still run, and every file is written and closed by then)."""
+    code = main()
+    gc.freeze()
+    raise SystemExit(code)
 
 
 def main(argv=None) -> int:
