@@ -222,13 +222,23 @@ def notation(text: str) -> str:
 def show_factored(p) -> str:
     """:func:`show` of ``sp.factor(p)`` for a polynomial in r over Q (fmpz_poly or fmpq_poly;
     ``certify.dynamics.model.factor_flint(p)`` is that expression), written directly by
-    python-flint's factorisation (:func:`.printing.factored_univariate`)."""
+    python-flint's factorisation (:func:`.printing.factored_univariate`).
+
+    >>> show_factored(flint.fmpq_poly([-1, 0, 1]) * flint.fmpq_poly([1, 1]) / 4)     # (r² - 1)(r + 1)/4
+    '(r - 1)(r + 1)^2/4'
+    >>> show_factored(flint.fmpq_poly([-1, 10, -1]))                                  # -(r² - 10r + 1)
+    '-r^2 + 10r - 1'
+    """
     return notation(printing.factored_univariate(p))
 
 
 def show_collected(p: PolyElement, var: str = "λ") -> str:
     """:func:`show` of ``sp.collect(p, var)`` for a polynomial of the engine's ring, written
-    directly (:func:`.printing.collected`)."""
+    directly (:func:`.printing.collected`).
+
+    >>> show_collected(to_ring("lam^2 - (r^2 + 1)*lam - r/2 + 3"))
+    '-r/2 + λ^2 + λ(-r^2 - 1) + 3'
+    """
     names, terms = printing.ring_terms(p)
     return notation(printing.collected(names, terms, var) if var in names else printing.expanded(names, terms))
 

@@ -90,7 +90,12 @@ def _add(items: list[str]) -> str:
 
 def expanded(names: tuple, terms: list, order: str | None = "lex") -> str:
     """sstr(p, order="lex") of the expanded polynomial (``order=None``: ``str(p)``, SymPy's
-    default order, the same text but for the special case of :func:`_default_order`)."""
+    default order, the same text but for the special case of :func:`_default_order`).
+
+    >>> from fractions import Fraction as F
+    >>> expanded(("r", "λ"), [(F(1), (0, 0)), (F(-3, 4), (1, 1)), (F(-2), (2, 0))])
+    '-2*r**2 - 3*r*λ/4 + 1'
+    """
     if not terms:
         return "0"
     ordered = _lex(terms) if order == "lex" else _default_order(terms, names)
