@@ -60,14 +60,15 @@ def time_runs(repeat: int, jobs: int) -> list[dict]:
     return runs
 
 
-def time_command(repeat: int) -> list[float]:
-    """Wall seconds of ``python -m certify all --out TMP`` (a fresh process each time)."""
+def time_command(repeat: int, args: list[str] | None = None) -> list[float]:
+    """Wall seconds of ``python -m certify all --out TMP`` (or of ``python -m certify ARGS``),
+    a fresh process each time."""
     seconds = []
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     for _ in range(repeat):
         with tempfile.TemporaryDirectory() as out:
             start = time.perf_counter()
-            subprocess.run([sys.executable, "-m", "certify", "all", "--out", out], cwd=ROOT, env=env,
+            subprocess.run([sys.executable, "-m", "certify", *(args or ["all", "--out", out])], cwd=ROOT, env=env,
                            check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
             seconds.append(time.perf_counter() - start)
     return seconds

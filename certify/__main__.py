@@ -1,5 +1,5 @@
 """``python -m certify COMMAND``: see :mod:`certify.cli`."""
-from certify.cli import main
+from certify.cli import run
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run()

@@ -20,6 +20,8 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 
+from . import printing
+
 Q = flint.fmpq                 # an exact rational: Q(3, 7), Q(1, 2) (the one name of python-flint's fmpq)
 
 r, lam, x, u, v, s = sp.symbols("r λ x u v s")
@@ -196,17 +198,49 @@ def _show_integer_poly(p: flint.fmpz_poly) -> str:
 
 
 def show(e) -> str:
-    """A polynomial in the paper's notation (``r^2 - 10r + 1``) for reports."""
+    """A polynomial in the paper's notation (``r^2 - 10r + 1``) for reports: SymPy's
+    ``sstr(e, order="lex")`` with ``^`` for ``**`` and no ``*`` (a polynomial of the engine's
+    ring written directly, :mod:`.printing`, the very text)."""
     if isinstance(e, flint.fmpq_poly) and e.denom() == 1:
         e = e.numer()
     if isinstance(e, flint.fmpz_poly):
         return _show_integer_poly(e)
     if isinstance(e, flint.fmpq_poly):
         e = from_flint(e)
+    if isinstance(e, PolyElement) and e.ring is RING:
+        return notation(printing.expanded(*printing.ring_terms(e)))
     if isinstance(e, (PolyElement, FracElement)):
         e = e.as_expr()
-    text = sp.sstr(sp.sympify(e), order="lex")
+    return notation(sp.sstr(sp.sympify(e), order="lex"))
+
+
+def notation(text: str) -> str:
+    """SymPy's printed text in the paper's notation: ``^`` for ``**``, no ``*``."""
     return text.replace("**", "^").replace("*", "")
+
+
+def show_factored(p) -> str:
+    """:func:`show` of ``sp.factor(p)`` for a polynomial in r over Q (fmpz_poly or fmpq_poly;
+    ``certify.dynamics.model.factor_flint(p)`` is that expression), written directly by
+    python-flint's factorisation (:func:`.printing.factored_univariate`).
+
+    >>> show_factored(flint.fmpq_poly([-1, 0, 1]) * flint.fmpq_poly([1, 1]) / 4)     # (r² - 1)(r + 1)/4
+    '(r - 1)(r + 1)^2/4'
+    >>> show_factored(flint.fmpq_poly([-1, 10, -1]))                                  # -(r² - 10r + 1)
+    '-r^2 + 10r - 1'
+    """
+    return notation(printing.factored_univariate(p))
+
+
+def show_collected(p: PolyElement, var: str = "λ") -> str:
+    """:func:`show` of ``sp.collect(p, var)`` for a polynomial of the engine's ring, written
+    directly (:func:`.printing.collected`).
+
+    >>> show_collected(to_ring("lam^2 - (r^2 + 1)*lam - r/2 + 3"))
+    '-r/2 + λ^2 + λ(-r^2 - 1) + 3'
+    """
+    names, terms = printing.ring_terms(p)
+    return notation(printing.collected(names, terms, var) if var in names else printing.expanded(names, terms))
 
 
 # --- polynomials in (r, λ, s) on fmpz_mpoly: resultants and discriminants -------

@@ -7,10 +7,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from certify.dynamics import particles
 from certify.errors import UsageError
-from certify.run import progress
-from certify.run.files import ensure_writable
 
 from .options import DEFAULT_OUT, add_command, add_jobs, number, positive_int, r_range, r_value, restitution, say
 
@@ -35,7 +32,8 @@ def cmd_census(args) -> int:
     import signal
 
     from certify.run import census_report as census
-    from certify.run import executors
+    from certify.run import executors, progress
+    from certify.run.files import ensure_writable
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     if args.max_length > MAX_CENSUS_LENGTH:
         raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} ({CENSUS_COST}; the words "
@@ -87,6 +85,7 @@ def cmd_orbit(args) -> int:
     (exit 2), raised before any work."""
     from certify.patterns import check_range, read
     from certify.patterns.reduction_orbits import analyse as analyse_orbit
+    from certify.run import progress
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     if args.trap is not None:
@@ -141,6 +140,8 @@ def cmd_particles(args) -> int:
     """Simulate the four particles exactly; one line per collision, then why it stopped."""
     if args.digits > MAX_DIGITS:
         raise UsageError(f"--digits is at most {MAX_DIGITS} (--exact prints the full fractions)")
+    from certify.dynamics import particles
+    from certify.run import progress
     history = particles.evolve(args.x, args.v, args.r, args.collisions, progress=progress.Bar("collision"))
     for line in particles.report_lines(history, digits=args.digits, full=args.exact):
         print(line)

@@ -11,9 +11,8 @@ import sys
 from fractions import Fraction
 from pathlib import Path
 
+from certify.cores import default_jobs
 from certify.errors import UsageError
-from certify.run import runner
-from certify.run.files import ensure_writable
 
 DEFAULT_OUT = Path("reports")
 
@@ -138,11 +137,12 @@ restitution = _typed(r_value)                  # --r, --trap
 
 def add_jobs(p) -> None:
     """The --jobs option of the commands that run certificates."""
-    p.add_argument("--jobs", type=positive_int, default=runner.default_jobs(), metavar="N",
+    p.add_argument("--jobs", type=positive_int, default=default_jobs(), metavar="N",
                    help="worker processes (default: all cores, here %(default)s; 1: one after another)")
 
 def prepare_output(out: Path) -> Path:
     """Check that ``out`` and ``out/figures`` can be written, before any work."""
+    from certify.run.files import ensure_writable
     ensure_writable(out)
     ensure_writable(out / "figures")
     return out

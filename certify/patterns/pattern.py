@@ -36,8 +36,10 @@ from pathlib import Path
 
 import flint
 import sympy as sp
+from sympy.polys.fields import FracElement
 from sympy.polys.rings import PolyElement
 
+from certify.algebra import printing
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import BRANCH_NAMES, X_MINUS, X_PLUS
 from certify.algebra.poly import (
@@ -45,15 +47,17 @@ from certify.algebra.poly import (
     RING,
     Lf,
     Q,
-    lam,
     lr_to_ring,
     mpoly_to_univariate,
+    notation,
     ring_to_lrq,
     show,
+    show_collected,
+    show_factored,
     to_field,
     to_ring,
 )
-from certify.dynamics.model import factor_flint, factor_lr
+from certify.dynamics.model import factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
 
@@ -337,7 +341,6 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     normal, system_name, why = read(word)
     system = BY_NAME[system_name]
     cand = candidate_in(system_name, normal)
-    cp = cand.cp
     an = Analysis(cand, lo, hi)
     n = len(normal)
     reqs, steps = prefix_requirements(normal, n, cand.q0, cand.steps, cand.q0_other, system=system)
@@ -377,9 +380,9 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     undecided = sorted({f"{BRANCH_NAMES[R.branch]} {R.fixed_point} at {_short(rc)}: {why_}"
                         for R in an.regions for rc, why_ in R.undecided})
     def printed():
-        M = [[show(e) for e in row] for row in cand.M.tolist()]
-        return M, show(factor_flint(discriminant(cand.spectrum))), datum(cand)
-    res = PatternResult(word, normal, system_name, why, (lo, hi), lambda: show(sp.collect(cp, lam)),
+        M = [[show_factored(e) for e in row] for row in cand.Mq]          # = show(factor_flint(e)), cand.M's entries
+        return M, show_factored(discriminant(cand.spectrum)), datum(cand)
+    res = PatternResult(word, normal, system_name, why, (lo, hi), lambda: show_collected(cand.spectrum.ring_cp, "λ"),
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
                         undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None)
     res.verdict = verdict(res)
@@ -403,19 +406,49 @@ def _cond(q: Requirement) -> str:
     return f"{q.name} {'>' if q.sign > 0 else '<'} 0"
 
 
+LONG = 3000          # a numerator or denominator of the datum printed longer than this is not factored
+
+
+def _fraction_text(e) -> str:
+    """``(num) / (den)``: SymPy's cancelled fraction of e, each side factored (sp.factor) when
+    printed shorter than :data:`LONG`, else expanded; the SymPy route (the reference of
+    :func:`_fraction_text_lr`, and for what is not a fraction in r, λ alone)."""
+    e = e.as_expr() if hasattr(e, "as_expr") else e
+    num, den = sp.fraction(sp.cancel(e))
+    return (f"({show(factor_lr(num) if len(str(num)) < LONG else num)}) / "
+            f"({show(factor_lr(den) if len(str(den)) < LONG else den)})")
+
+
+def _fraction_text_lr(e: FracElement) -> str:
+    """:func:`_fraction_text` of an element of Q(λ, r), the same text written from python-flint
+    (the cancelled fraction, its factorisation and the lengths by :mod:`certify.algebra.printing`)."""
+    sides = []
+    for F, d in printing.sympy_fraction(e.numer, e.denom):
+        names, terms = printing.mpoly_terms(F, d)
+        short = len(printing.expanded(names, terms, order=None)) < LONG          # len(str(side))
+        sides.append(notation(printing.factored_mpoly(F, d) if short else printing.expanded(names, terms)))
+    return f"({sides[0]}) / ({sides[1]})"
+
+
+def fraction_text(e) -> str:
+    """The text of a formula of the datum: :func:`_fraction_text_lr` for an element of
+    Q(λ, r), :func:`_fraction_text` (SymPy) for anything else."""
+    if isinstance(e, FracElement):
+        try:
+            return _fraction_text_lr(e)
+        except ValueError:                    # another variable than r, λ
+            pass
+    return _fraction_text(e)
+
+
 def datum(cand) -> dict:
     """The formulas of the datum: u, v (q(0) = (-1, u, v)) and x± (four particles)."""
-    def fmt(e):
-        e = e.as_expr() if hasattr(e, "as_expr") else e
-        num, den = sp.fraction(sp.cancel(e))
-        return _cap(f"({show(factor_lr(num) if len(str(num)) < 3000 else num)}) / "
-                    f"({show(factor_lr(den) if len(str(den)) < 3000 else den)})")
+    fmt = lambda e: _cap(fraction_text(e))
     out = {"q(0)": "(-1, u" + (", v)" if len(cand.q0) == 3 else ")"), "u": fmt(cand.q0[1])}
     if len(cand.q0) == 3:
         out["v"] = fmt(cand.q0[2])
-        a, b, c, d = cand.abcd
         out["p(0)"] = "(1, 0, x), x = x± = (a - d ± √((a-d)² + 4bc))/(2c), f(x) = (ax + b)/(cx + d)"
-        for k, e in zip("abcd", (a, b, c, d)):
+        for k, e in zip("abcd", cand.abcd_ring or cand.abcd):       # the same polynomials, the ring's printed directly
             out[k] = _cap(show(e))
     else:
         out["p(0)"] = "(1, 0)"

@@ -93,7 +93,6 @@ from functools import cached_property
 from pathlib import Path
 
 import flint
-import sympy as sp
 
 from certify.algebra.algebraic import Algebraic, sign_at
 from certify.algebra.branches import BRANCH_NAMES
@@ -105,9 +104,9 @@ from certify.algebra.poly import (
     Frac,
     flint_poly_to_frac,
     frac_to_field,
-    lam,
     lr_to_ring,
     show,
+    show_collected,
 )
 from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ORIENTATION, cofactor, cofactor_columns
@@ -544,8 +543,8 @@ def analyse(word: str, lo=0, hi=1, self_similar: bool | None = None, progress=No
         out = {name: _cap(_factored(divmod(N[k], C)[1], den)) for name, k in (("n_1", 0), ("n_2", 1))}
         out["n*"] = "(n_1, n_2, 1), λ a root of cp (the formulas reduced modulo cp)"
         return out
-    res = OrbitResult(word, normal, system_name, why, (lo, hi), show(sp.collect(cand.cp, lam)), conditions, regions,
-                      sorted(undecided), pat, not_computed=not_computed, formulas=formulas)
+    res = OrbitResult(word, normal, system_name, why, (lo, hi), show_collected(cand.spectrum.ring_cp), conditions,
+                      regions, sorted(undecided), pat, not_computed=not_computed, formulas=formulas)
     res.verdict, res.physics = verdict(res), physics(res)
     res.seconds = time.perf_counter() - start
     return res

@@ -22,21 +22,13 @@ possibly undecided, and not the same bytes).
 from __future__ import annotations
 
 import multiprocessing
-import os
 from concurrent.futures import Executor, Future, ProcessPoolExecutor
 from contextlib import contextmanager
 
+from certify.cores import default_jobs  # noqa: F401  (executors.default_jobs, as before)
 from certify.errors import UsageError
 
 CONNECT_TIMEOUT = 10          # seconds to reach a scheduler
-
-
-def default_jobs() -> int:
-    """The cores this process may use."""
-    try:
-        return max(len(os.sched_getaffinity(0)), 1)
-    except AttributeError:  # not on Linux
-        return os.cpu_count() or 1
 
 
 class Serial(Executor):

@@ -247,6 +247,31 @@ def test_help_exits_0(capsys):
     assert "exit codes" in capsys.readouterr().out
 
 
+def test_the_table_of_commands_is_what_the_topics_register():
+    """Each command runs with its topic's module alone (cli.COMMANDS): the table names every
+    command of the whole parser with the topic that registers it, and the parser built for one
+    command holds its topic's commands."""
+    import argparse
+
+    def names(parser):
+        sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+        return {name: p.get_default("func").__module__.rsplit(".", 1)[1] for name, p in sub.choices.items()}
+    everything = names(cli.build_parser())
+    assert everything == cli.COMMANDS
+    for command, topic in cli.COMMANDS.items():
+        assert names(cli.build_parser(command)) == {c: t for c, t in everything.items() if t == topic}
+
+
+def test_pattern_loads_neither_the_runner_nor_numpy():
+    """`certify pattern` imports what it needs (SymPy, python-flint, the exact layers), not
+    certify.run, numpy or matplotlib (a fresh interpreter)."""
+    code = ("import sys; from certify.cli import main; code = main(['pattern', 'abcab', '--json']); "
+            "print(code, sorted(m for m in ('certify.run', 'numpy', 'matplotlib', 'tqdm') if m in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                          capture_output=True, text=True, timeout=120)
+    assert done.stdout.splitlines()[-1] == "0 []", done.stderr
+
+
 # --------------------------------------------------------------------------
 # Progress
 
