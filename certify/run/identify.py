@@ -181,10 +181,11 @@ def elliptic(r: flint.fmpq) -> bool:
 # ------------------------------------------------------------------ the second route
 def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tuple, int] | str:
     """The state after collision k from the datum by :func:`ball_run` (contact, oriented
-    ball normal, bits), the precision raised from VERIFY_START along the rungs VERIFY_START·2^m
-    (:func:`next_precision`) until all k collisions are decided; a reason when VERIFY_CAP does not suffice.  Beyond VERIFY_MAX collisions (the
-    second route's balls wrap, about a bit per collision: minutes) the state is the first
-    route's (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
+    ball normal, bits), the precision raised from VERIFY_START along the rungs
+    VERIFY_START·2^m (:func:`next_precision`) until all k collisions are decided; a reason
+    when VERIFY_CAP does not suffice.  Beyond VERIFY_MAX collisions (the second route's
+    balls wrap, about a bit per collision: minutes) the state is the first route's
+    (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
     if k > VERIFY_MAX:
         for done, j, n, bits in engines.ball_states(r, theta0, phi0, k, every=False):   # the last state
             if done == k:

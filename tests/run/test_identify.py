@@ -203,8 +203,9 @@ def test_the_ladder_jumps_to_the_rung_that_doubling_reaches():
     the same contact and a state overlapping it (and on fewer runs)."""
     theta0, phi0 = grid(2)
     r = flint.fmpq(4, 5)
+    t, p = float(theta0[0]), float(phi0[0])
     for k in (150, 700, 2300):
-        got, want = ident._state(r, float(theta0[0]), float(phi0[0]), k), _plain_ladder(r, float(theta0[0]), float(phi0[0]), k)
+        got, want = ident._state(r, t, p, k), _plain_ladder(r, t, p, k)
         assert got[0] == want[0] and got[2] == want[2]
         assert all((got[1][i] / got[1][1]).overlaps(want[1][i] / want[1][1]) for i in (0, 2))   # one direction
     assert want[2] == 2048
