@@ -291,7 +291,13 @@ def test_the_walls_given_to_shape_and_the_exact_dot_are_the_computed_ones(comple
     T = complex_trap
     P = products(COMPLEX, T.r)
     forms = trapping.walls(COMPLEX, P)
-    assert trapping.shape(COMPLEX, T.centre, T.frame, P, forms) == trapping.shape(COMPLEX, T.centre, T.frame, P)
+    def exact(x):                 # a ball as its midpoint and radius (== on balls is "certainly equal")
+        if isinstance(x, flint.arb):
+            return x.mid().fmpq(), x.rad().fmpq()
+        return tuple(exact(y) for y in x) if isinstance(x, tuple) else x
+    given, fresh = trapping.shape(COMPLEX, T.centre, T.frame, P, forms), trapping.shape(COMPLEX, T.centre, T.frame, P)
+    assert [exact(getattr(given, k)) for k in given.__dataclass_fields__] == \
+        [exact(getattr(fresh, k)) for k in fresh.__dataclass_fields__]
     for w in forms:
         for v in (T.centre, *T.frame):
             assert trapping._dot(w.row, v) == sum((x * y for x, y in zip(w.row, v)), Q(0))
