@@ -303,14 +303,41 @@ class NeedSign(Exception):
         self.key = key
 
 
+class Key(tuple):
+    """A monic form (a, b, c), the key of a sign in an assignment: a tuple whose hash, taken
+    once, is that of its coefficients' numerators and denominators when they are rationals
+    (python-flint hashes an fmpq through a Fraction, slowly; the branching looks keys up
+    thousands of times), else the tuple's.  Equal keys have equal hashes (an fmpq is
+    reduced), so keys compare and look up as the tuples do among keys."""
+
+    _hash: int
+
+    def __new__(cls, items):
+        self = super().__new__(cls, items)
+        try:
+            self._hash = hash(tuple((z.p, z.q) for z in self))
+        except AttributeError:                  # Q(r) for the symbol r: SymPy's field elements
+            self._hash = tuple.__hash__(self)
+        return self
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def __eq__(self, other) -> bool:
+        return tuple.__eq__(self, other)
+
+    def __ne__(self, other) -> bool:
+        return tuple.__ne__(self, other)
+
+
 def _key(form: tuple, F: Coefficients):
     """(sign factor, key) with form = factor · key, key the monic form (its first nonzero
-    coefficient among those of u, v, 1 equal to 1); None key for a constant."""
+    coefficient among those of u, v, 1 equal to 1, a :class:`Key`); None key for a constant."""
     a, b, c = form
     if a == 0 and b == 0:
         return F.sign(c), None
     lc = a if a != 0 else b
-    return F.sign(lc), (a / lc, b / lc, c / lc)
+    return F.sign(lc), Key((a / lc, b / lc, c / lc))
 
 
 def form_key(expr, symbolic: bool):
