@@ -94,13 +94,12 @@ def screened_sign(n: int, r) -> int | None:
     import flint
     import mpmath
 
+    from certify.algebra.balls import precision
     from certify.dynamics import collide
     dps = mpmath.mp.dps
     man, exp = mpmath.mpf(r).man_exp
     x = flint.fmpq(int(man)) * flint.fmpq(2) ** int(exp)          # the mpmath number, exactly
-    old = flint.ctx.prec
-    flint.ctx.prec = 4 * dps + 16 * n
-    try:
+    with precision(4 * dps + 16 * n):
         ball = flint.arb(x)
         K = {}
         for L in "abc":
@@ -116,8 +115,6 @@ def screened_sign(n: int, r) -> int | None:
         if not abs(q) > flint.arb(10) ** (SCREEN_MARGIN - dps):
             return None
         return 1 if q > 0 else -1
-    finally:
-        flint.ctx.prec = old
 
 
 def upper_threshold(n: int, dps: int | None = None):
