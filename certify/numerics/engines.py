@@ -81,7 +81,7 @@ def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(
         normals = np.zeros((collisions, 3))
         errs = np.zeros((collisions, 3))
         code, done, cert = kernel.trace(i0, n0, rows, *constants, collisions, strict, letters, normals, errs)
-        b = [rules.phi_of(1, normals[c]) for c in range(done) if letters[c] == 1]
+        b = [rules.phi_of(1, normals[c]) for c in range(done) if letters[c] == 1] if keep else []   # the kept φ
         cps = {c: (int(letters[c - 1]), tuple(normals[c - 1])) for c in checkpoints if 0 < c <= done}
         return OrbitResult(int(code), int(done), _ring_to_phi(b, keep),
                            "".join(rules.LETTERS[x] for x in letters[:done]) if word else "", cps,

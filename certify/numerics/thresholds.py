@@ -47,15 +47,16 @@ def red_lines() -> dict[str, float]:
 
 
 def word_matrix_mp(word: str, r):
-    """M_w = K_{c_n} ... K_{c_1} at an mpmath r (the printed A, B, C: ``model.collide``)."""
+    """M_w = K_{c_n} ... K_{c_1} at an mpmath r (the printed A, B, C: ``model.collide``), its
+    columns pushed through the letters one by one."""
     import mpmath
 
     from certify.dynamics import collide
-    M = mpmath.eye(3)
+    one, zero = mpmath.mpf(1), mpmath.mpf(0)
+    cols = [(one, zero, zero), (zero, one, zero), (zero, zero, one)]
     for letter in word:
-        cols = [collide(letter, tuple(M[i, j] for i in range(3)), r) for j in range(3)]
-        M = mpmath.matrix([[cols[j][i] for j in range(3)] for i in range(3)])
-    return M
+        cols = [collide(letter, c, r) for c in cols]
+    return mpmath.matrix([[cols[j][i] for j in range(3)] for i in range(3)])
 
 
 def q2_of_dominant(n: int, r) -> float:
@@ -73,26 +74,80 @@ def digits_for(n: int) -> int:
     return 40 + (3 * n) // 2
 
 
+SCREEN_MARGIN = 4        # digits: a screened sign is kept when |q_2(0)/(−q_1(0))| > 10^(margin − dps)
+
+
+def screened_sign(n: int, r) -> int | None:
+    """The sign of :func:`q2_of_dominant` at the mpmath number r as the mpmath evaluation at
+    the current precision gives it, read from python-flint's certified enclosure of the
+    dominant eigenvector (``acb_mat.eig``, about ten times faster) when it is far from 0:
+    the ball excludes 0 and its modulus exceeds 10^(SCREEN_MARGIN − dps), where the mpmath
+    value, accurate to about 10^-dps (relative to the largest component, q_1), has the same
+    sign.  None otherwise (too close to 0, or the eigenvalues not isolated): ask mpmath.
+
+    >>> import mpmath
+    >>> with mpmath.workdps(20):
+    ...     x = 7 - 4 * mpmath.sqrt(3) + mpmath.mpf(0.2) / 36
+    ...     screened_sign(6, x), int(mpmath.sign(q2_of_dominant(6, x)))
+    (1, 1)
+    """
+    import flint
+    import mpmath
+
+    from certify.algebra.balls import precision
+    from certify.dynamics import collide
+    dps = mpmath.mp.dps
+    man, exp = mpmath.mpf(r).man_exp
+    x = flint.fmpq(int(man)) * flint.fmpq(2) ** int(exp)          # the mpmath number, exactly
+    with precision(4 * dps + 16 * n):
+        ball = flint.arb(x)
+        K = {}
+        for L in "abc":
+            cols = [collide(L, e, ball) for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+            K[L] = flint.arb_mat([[cols[j][i] for j in range(3)] for i in range(3)])
+        M = (K["b"] * K["c"]) ** n * (K["b"] * K["a"]) ** n          # M_w, w = (ab)^n(cb)^n
+        try:
+            E, V = flint.acb_mat(M).eig(right=True)
+        except ValueError:
+            return None
+        k = max(range(3), key=lambda i: abs(E[i]).mid())
+        q = (V[1, k] / (-V[0, k])).real
+        if not abs(q) > flint.arb(10) ** (SCREEN_MARGIN - dps):
+            return None
+        return 1 if q > 0 else -1
+
+
 def upper_threshold(n: int, dps: int | None = None):
     """The upper threshold r_max(n) of (ab)^n(cb)^n, numerically (mpmath, ``dps`` digits):
     the root of q_2(0) = 0 (dominant eigenvector, CLAIMS L6) in ]R_CRIT + 0.12/n², R_CRIT + 0.32/n²[
     (r_max(n) − R_CRIT ≈ 0.2/n², found by a scan of 40 cells and the Illinois method).
     For n = 2..6 it gives the five thresholds printed in L4.  ``dps``: default
-    :func:`digits_for` (the eigenvector's smallest component is about 10^-1.13n).  Returns
-    an mpmath number."""
+    :func:`digits_for` (the eigenvector's smallest component is about 10^-1.13n).  The scan
+    reads only signs, screened (:func:`screened_sign`; mpmath where the screen does not
+    decide): the same first cell, and the same root (``findroot`` evaluates q_2 itself).
+    Returns an mpmath number."""
     import mpmath
     with mpmath.workdps(dps or digits_for(n)):
         rc = 7 - 4 * mpmath.sqrt(3)
         f = lambda x: q2_of_dominant(n, x)   # noqa: E731
         lo_c, hi_c = (0.12, 0.32) if n > 6 else (0.05, 0.8)
         xs = [rc + mpmath.mpf(lo_c + (hi_c - lo_c) * k / 40) / n ** 2 for k in range(41)]
-        a, fa = xs[0], f(xs[0])
-        for b in xs[1:]:                     # the first cell where q_2(0) changes sign (f up to it only)
-            fb = f(b)
-            if fa * fb < 0:
+        a, sa = xs[0], scan_sign(n, xs[0])
+        for b in xs[1:]:                     # the first cell where q_2(0) changes sign (signs up to it only)
+            sb = scan_sign(n, b)
+            if sa * sb < 0:
                 return mpmath.findroot(f, (a, b), solver="illinois")
-            a, fa = b, fb
+            a, sa = b, sb
     raise ArithmeticError(f"no root of q_2(0) found for n = {n}")
+
+
+def scan_sign(n: int, r) -> int:
+    """The sign of the mpmath :func:`q2_of_dominant` at r: screened, else computed."""
+    s = screened_sign(n, r)
+    if s is None:
+        v = q2_of_dominant(n, r)
+        s = (v > 0) - (v < 0)
+    return s
 
 
 def min_component(n: int, r, dps: int | None = None) -> float:

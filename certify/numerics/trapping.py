@@ -238,6 +238,9 @@ def walls(word: str, P: list) -> list[Wall]:
 
 
 def _dot(a, b):
+    """a · b, exact (rationals: the order of the terms does not matter)."""
+    if len(a) == 3:
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
     return sum((x * y for x, y in zip(a, b)), flint.fmpq(0))
 
 
@@ -337,11 +340,13 @@ class Shape:
     dt: flint.arb
 
 
-def shape(word: str, c: tuple, T: tuple, P: list) -> Shape:
-    """The :class:`Shape` of the ellipse with centre c and frame T for the word (P: its products)."""
+def shape(word: str, c: tuple, T: tuple, P: list, forms: list | None = None) -> Shape:
+    """The :class:`Shape` of the ellipse with centre c and frame T for the word (P: its
+    products; ``forms``: its :func:`walls`, when the caller has them)."""
     t = ORIENTATION[word[-1]]
     with precision(PREC):
-        ws = tuple((w.name, flint.arb(_dot(w.row, c)), _norm([_dot(w.row, col) for col in T])) for w in walls(word, P))
+        ws = tuple((w.name, flint.arb(_dot(w.row, c)), _norm([_dot(w.row, col) for col in T]))
+                   for w in (forms or walls(word, P)))
         g0, A, alpha, beta = _return_map(P[-1], c, T, t)
         f = _free(t)
         Tf = tuple(tuple(T[j][k] for j in range(2)) for k in f)
@@ -393,27 +398,30 @@ def attempt(word: str, r, centre: tuple | None = None) -> Trap | str:
     if isinstance(c, str):
         return c
     c = tuple(flint.fmpq(z) / flint.fmpq(c[t]) for z in c)
-    for w in walls(word, P):
+    forms = walls(word, P)
+    for w in forms:
         if _dot(w.row, c) <= 0:
             return (f"the dominant eigen-normal of N_w does not realise {word} at r = {r} ({w.name} fails): "
                     "no periodic orbit with this word attracts there")
     with precision(PREC):
         T, pair = frame(P[-1], c, t)
-        slopes = [(w, _norm([_dot(w.row, col) for col in T])) for w in walls(word, P)]
-        rho0 = min(flint.arb(_dot(w.row, c)) / s for w, s in slopes if s > 0)
+    form = shape(word, c, T, P, forms)               # each wall's value at c and slope on T
+    with precision(PREC):
+        rho0 = min(value / slope for _name, value, slope in form.walls if slope > 0)
         rho, bad = _dyadic(rho0 * flint.arb(SHRINK)), _dyadic(rho0)
-    why, form = "no radius tried", shape(word, c, T, P)
+    why = "no radius tried"
     for _ in range(TRIES):
         found = check(word, r, c, T, rho, pair, P, form)
         if isinstance(found, Trap):
-            return _largest(found, bad, P)
+            return _largest(found, bad, P, form)
         why, bad, rho = found, rho, rho * SHRINK
     return f"no trapping ellipse found down to ρ = {_dec(rho)}: {why}"
 
 
-def _largest(good: Trap, bad: flint.fmpq, P: list, steps: int = BISECTIONS) -> Trap:
-    """A larger certified radius between good.radius and a refused one, by bisection."""
-    form = shape(good.word, good.centre, good.frame, P)
+def _largest(good: Trap, bad: flint.fmpq, P: list, form: Shape | None = None, steps: int = BISECTIONS) -> Trap:
+    """A larger certified radius between good.radius and a refused one, by bisection
+    (``form``: the :class:`Shape` of good's centre and frame, when the caller has it)."""
+    form = form or shape(good.word, good.centre, good.frame, P)
     for _ in range(steps):
         mid = (good.radius + bad) / 2
         mid = flint.fmpq((mid.p * 2 ** FRAME_BITS) // mid.q, 2 ** FRAME_BITS)

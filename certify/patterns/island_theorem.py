@@ -303,14 +303,41 @@ class NeedSign(Exception):
         self.key = key
 
 
+class Key(tuple):
+    """A monic form (a, b, c), the key of a sign in an assignment: a tuple whose hash, taken
+    once, is that of its coefficients' numerators and denominators when they are rationals
+    (python-flint hashes an fmpq through a Fraction, slowly; the branching looks keys up
+    thousands of times), else the tuple's.  Equal keys have equal hashes (an fmpq is
+    reduced), so keys compare and look up as the tuples do among keys."""
+
+    _hash: int
+
+    def __new__(cls, items):
+        self = super().__new__(cls, items)
+        try:
+            self._hash = hash(tuple((z.p, z.q) for z in self))
+        except AttributeError:                  # Q(r) for the symbol r: SymPy's field elements
+            self._hash = tuple.__hash__(self)
+        return self
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def __eq__(self, other) -> bool:
+        return tuple.__eq__(self, other)
+
+    def __ne__(self, other) -> bool:
+        return tuple.__ne__(self, other)
+
+
 def _key(form: tuple, F: Coefficients):
     """(sign factor, key) with form = factor · key, key the monic form (its first nonzero
-    coefficient among those of u, v, 1 equal to 1); None key for a constant."""
+    coefficient among those of u, v, 1 equal to 1, a :class:`Key`); None key for a constant."""
     a, b, c = form
     if a == 0 and b == 0:
         return F.sign(c), None
     lc = a if a != 0 else b
-    return F.sign(lc), (a / lc, b / lc, c / lc)
+    return F.sign(lc), Key((a / lc, b / lc, c / lc))
 
 
 def form_key(expr, symbolic: bool):
@@ -989,11 +1016,14 @@ def box_sign(box, r: flint.fmpq, sides: Sides | None = None) -> int:
     u = tan(θ − π/4), increasing in θ, and v = 2 cot φ · w(θ) with w = 1/(sin θ + cos θ) > 0,
     cot φ decreasing, w smallest at θ = π/4 and largest at an end.  Q is convex (positive
     definite): its maximum on the rectangle is at a corner, its minimum at the origin or
-    on an edge (a quadratic in one variable, minimised in closed form).  Boxes touching
-    φ = 0 or π (v unbounded) go to :func:`box_sign_balls`."""
+    on an edge (a quadratic in one variable, minimised in closed form); each bound is
+    computed only when the previous ones have not decided.  Boxes touching φ = 0 or π
+    (v unbounded) are undecided: the chart's denominator n_z − n_x = sin φ (sin θ + cos θ)
+    vanishes on their side, so :func:`box_sign_balls`, whose ball of it contains that 0,
+    says 0 there too (a test)."""
     s0, s1, t0, t1 = box
     if t0 == 0 or t1 == 1:
-        return box_sign_balls(box, r)
+        return 0
     sides = sides if sides is not None and sides.r == r else Sides(r)
     (ua, Aa, Ba), (ub, Ab, Bb), w_lo, w_hi = sides.at_pair(s0, s1)
     c_lo, c_hi = sides.at_t(t1)[0], sides.at_t(t0)[1]
@@ -1002,14 +1032,17 @@ def box_sign(box, r: flint.fmpq, sides: Sides | None = None) -> int:
     R, c = sides.R, sides.c
     Ca, Cb = R * va * va, R * vb * vb
     # Q at the corners, island.quadratic_form(x, y, R) = (2x·x − (1+R)x·y) + R y·y, operation for operation
-    if all(c - ((A - B * y) + C) > 0 for A, B in ((Aa, Ba), (Ab, Bb)) for y, C in ((va, Ca), (vb, Cb))):
+    if (c - ((Aa - Ba * va) + Ca) > 0 and c - ((Aa - Ba * vb) + Cb) > 0
+            and c - ((Ab - Bb * va) + Ca) > 0 and c - ((Ab - Bb * vb) + Cb) > 0):
         return 1
     if ua <= 0 <= ub and va <= 0 <= vb:
         return 0
-    minus = sides.minus_K
-    edges = [_edge_min(R, minus * x, A, va, vb) for x, A in ((ua, Aa), (ub, Ab))] + \
-            [_edge_min(flint.arb(2), minus * y, C, ua, ub) for y, C in ((va, Ca), (vb, Cb))]
-    return -1 if all(e - c > 0 for e in edges) else 0
+    minus = sides.minus_K                    # the edges u = ua, ub, then v = va, vb
+    if _edge_min(R, minus * ua, Aa, va, vb) - c > 0 and _edge_min(R, minus * ub, Ab, va, vb) - c > 0:
+        two = flint.arb(2)
+        if _edge_min(two, minus * va, Ca, ua, ub) - c > 0 and _edge_min(two, minus * vb, Cb, ua, ub) - c > 0:
+            return -1
+    return 0
 
 
 def _lower(z: flint.arb) -> flint.fmpq:

@@ -20,7 +20,7 @@ For each r (an exact rational: 0.3 is 3/10) and initial datum (θ0, φ0) at the 
 
 Each proof is checked again before it is reported (:func:`verify`), by a second route to
 the state: the reduction's own ball steps (:func:`certify.dynamics.reduction.ball_run`,
-precision doubled until every sign is decided; up to :data:`VERIFY_MAX` collisions, beyond
+precision raised by powers of 2 until every sign is decided; up to :data:`VERIFY_MAX` collisions, beyond
 which the first route's state is used), the island's sign recomputed from Q and c_max,
 the trapping ellipse re-certified from its exact data (:func:`trapping.check`) and the
 word re-decided by ``orbit_at``.  A word is "certified" only in the second class;
@@ -64,7 +64,7 @@ COLLISIONS = 100_000       # default length of the float64 run (and of the rigor
 WINDOW_MAX = 24            # the window over ]0, 1[ only for words up to this length
 MAX_ANALYSED = 1000        # longer observed periods are not analysed (orbit_at, the trap)
 SHOWN = 200                # an island orbit's observed quasi-period is shown up to this length
-VERIFY_START = 128         # bits of the second route's balls, doubled up to VERIFY_CAP
+VERIFY_START = 128         # bits of the second route's balls, raised by powers of 2 up to VERIFY_CAP
 VERIFY_CAP = 1 << 16
 VERIFY_MAX = 20_000        # the second route re-runs at most this many collisions (beyond: the first route)
 REFUSALS = 3               # a kind of proof refused this often by the second route is dropped
@@ -181,10 +181,11 @@ def elliptic(r: flint.fmpq) -> bool:
 # ------------------------------------------------------------------ the second route
 def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tuple, int] | str:
     """The state after collision k from the datum by :func:`ball_run` (contact, oriented
-    ball normal, bits), precision doubled from VERIFY_START until all k collisions are
-    decided; a reason when VERIFY_CAP does not suffice.  Beyond VERIFY_MAX collisions (the
-    second route's balls wrap, about a bit per collision: minutes) the state is the first
-    route's (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
+    ball normal, bits), the precision raised from VERIFY_START along the rungs
+    VERIFY_START·2^m (:func:`next_precision`) until all k collisions are decided; a reason
+    when VERIFY_CAP does not suffice.  Beyond VERIFY_MAX collisions (the second route's
+    balls wrap, about a bit per collision: minutes) the state is the first route's
+    (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
     if k > VERIFY_MAX:
         for done, j, n, bits in engines.ball_states(r, theta0, phi0, k, every=False):   # the last state
             if done == k:
@@ -199,7 +200,22 @@ def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tupl
             return last, n, prec
         if prec >= VERIFY_CAP:
             return f"the second route lost precision at collision {len(letters) + 1} ({prec} bits)"
-        prec *= 2
+        prec = next_precision(prec, len(letters), k)
+
+
+def next_precision(prec: int, reached: int, k: int) -> int:
+    """The next rung of the ladder VERIFY_START·2^m after a run at ``prec`` bits decided
+    ``reached`` < k collisions: doubled at least once, and as often as the run's rate
+    (collisions per bit, taken 1/16 higher: the balls lose about a bit per collision, a few
+    per cent less at higher precision) says is needed to reach k, up to VERIFY_CAP; only
+    doubled when the run stopped early, before prec/2 collisions (no rate to go by).
+    Skipping rungs that would fail changes nothing (the rung that succeeds is the same); a
+    rung too low fails and the ladder goes on from there; a rung too high decides the same
+    signs with narrower balls."""
+    rung = 2 * prec
+    while reached * 2 >= prec and rung < VERIFY_CAP and 17 * rung * reached < 16 * k * prec:
+        rung *= 2
+    return min(rung, VERIFY_CAP)
 
 
 def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = None) -> str | None:

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import flint
 import numpy as np
 
 from certify.dynamics import island
@@ -22,6 +23,8 @@ from certify.patterns import island_theorem as it
 from . import census_report, files, saving
 
 LOWER = 3 - 2 * math.sqrt(2)
+FLOAT_WIDTH = flint.fmpq(1, 2 ** 72)   # a resonance's interval refined (Sturm) below this before float(): the
+# same float (its 20 digits), without float()'s own refinement, a bisection and a decimal rounding a bit
 
 
 def b_section_points(r: float, collisions: int = 3000, count: int = 8) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -89,7 +92,7 @@ def census_windows(path: Path | None = None) -> list[tuple[str, float, float]]:
 def rotation_data(Q: int = 12, windows=None) -> tuple[list, list]:
     """What :func:`rotation_axes` draws: the resonances (label, r as a float, p/q) with q ≤ Q,
     and the attracting windows (word, lo, hi) above 3−2√2 (the committed census by default)."""
-    marks = [(f"{s.p}/{s.q}", float(s.r), s.p / s.q) for s in it.resonances(Q)]
+    marks = [(f"{s.p}/{s.q}", float(s.r.refine(FLOAT_WIDTH)), s.p / s.q) for s in it.resonances(Q)]
     shown = [(w, lo, hi) for w, lo, hi in (windows if windows is not None else census_windows()) if hi > LOWER]
     return marks, shown
 

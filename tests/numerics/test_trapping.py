@@ -283,3 +283,21 @@ def test_a_shape_computed_once_serves_every_radius(complex_trap):
         fresh = check(COMPLEX, T.r, T.centre, T.frame, rho, T.pair)
         assert given == fresh
     assert isinstance(check(COMPLEX, T.r, T.centre, T.frame, T.radius, T.pair, P, form), Trap)
+
+
+def test_the_walls_given_to_shape_and_the_exact_dot_are_the_computed_ones(complex_trap):
+    """shape with the walls given (as attempt passes them) is shape computing them, and the
+    three-term _dot is the sum over the pairs (exact: the order does not matter)."""
+    T = complex_trap
+    P = products(COMPLEX, T.r)
+    forms = trapping.walls(COMPLEX, P)
+    def exact(x):                 # a ball as its midpoint and radius (== on balls is "certainly equal")
+        if isinstance(x, flint.arb):
+            return x.mid().fmpq(), x.rad().fmpq()
+        return tuple(exact(y) for y in x) if isinstance(x, tuple) else x
+    given, fresh = trapping.shape(COMPLEX, T.centre, T.frame, P, forms), trapping.shape(COMPLEX, T.centre, T.frame, P)
+    assert [exact(getattr(given, k)) for k in given.__dataclass_fields__] == \
+        [exact(getattr(fresh, k)) for k in fresh.__dataclass_fields__]
+    for w in forms:
+        for v in (T.centre, *T.frame):
+            assert trapping._dot(w.row, v) == sum((x * y for x, y in zip(w.row, v)), Q(0))

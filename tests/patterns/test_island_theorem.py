@@ -351,3 +351,16 @@ def test_a_theorem_crosses_process_boundaries_with_its_evidence():
     U = pickle.loads(pickle.dumps(T))
     assert [(s.name, s.holds, s.evidence) for s in U.steps] == [(s.name, s.holds, s.evidence) for s in T.steps]
     assert U.quasi_periodic and U.c_max == T.c_max
+
+
+def test_a_key_hashes_as_its_rationals_and_equals_as_its_tuple():
+    """Key (the branching's dict key) hashed from its coefficients' numerators and
+    denominators: equal keys hash alike, whatever the fmpq were made from; unequal keys
+    differ; over Q(r) it is the tuple's hash."""
+    q = flint.fmpq
+    a, b = it.Key((q(1), q(2, 4), q(-3, 6))), it.Key((q(1), q(1, 2), q(-1, 2)))
+    assert a == b and hash(a) == hash(b) and {a: 1}[b] == 1
+    assert it.Key((q(1), q(1, 3), q(0))) != a and (q(1), q(1, 2), q(-1, 2)) == a
+    F = it.Coefficients(True)
+    x, y = it.form_key(it.u + it.R_SYMBOL * it.v, True)[1], it.form_key(2 * it.u + 2 * it.R_SYMBOL * it.v, True)[1]
+    assert x == y and hash(x) == hash(y) and hash(x) == tuple.__hash__(x) and F.symbolic

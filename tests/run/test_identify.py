@@ -181,3 +181,40 @@ def test_windows_adds_the_attracting_window_of_short_words_only_when_asked():
     assert x.cls == ident.ATTRACTING and x.window["pair"] == "complex" and x.window["hi"]["exact"] == "1"
     assert Fraction(x.window["lo"]["interval"][1]) < Fraction(3, 10)
     assert ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 5000).window is None
+
+
+def _plain_ladder(r, theta0, phi0, k):
+    """The second route's ladder without jumps: VERIFY_START doubled until all k collisions are decided."""
+    from certify.algebra.balls import precision
+    from certify.dynamics.reduction import ball_run
+    prec = ident.VERIFY_START
+    while True:
+        with precision(prec):
+            n0 = ident.rules.initial_normal(flint.arb(theta0), flint.arb(phi0), "b", flint.arb.cos, flint.arb.sin)
+        letters, last, n = ball_run("b", n0, r, k, prec)
+        if len(letters) == k:
+            return last, n, prec
+        prec *= 2
+
+
+def test_the_ladder_jumps_to_the_rung_that_doubling_reaches():
+    """At r = 4/5 the balls lose about a bit per collision: 2300 collisions need 2048 bits.
+    The jumps of next_precision land on the rung the plain doubling ladder stops at, with
+    the same contact and a state overlapping it (and on fewer runs)."""
+    theta0, phi0 = grid(2)
+    r = flint.fmpq(4, 5)
+    t, p = float(theta0[0]), float(phi0[0])
+    for k in (150, 700, 2300):
+        got, want = ident._state(r, t, p, k), _plain_ladder(r, t, p, k)
+        assert got[0] == want[0] and got[2] == want[2]
+        assert all((got[1][i] / got[1][1]).overlaps(want[1][i] / want[1][1]) for i in (0, 2))   # one direction
+    assert want[2] == 2048
+
+
+def test_next_precision_doubles_at_least_once_and_never_passes_the_cap():
+    assert ident.next_precision(128, 171, 4511) == 4096        # 171 collisions at 128 bits: 4511 need 4096
+    assert ident.next_precision(128, 171, 2386) == 2048
+    assert ident.next_precision(128, 171, 700) == 512           # 684 predicted at 512, and 1/16 more
+    assert ident.next_precision(128, 127, 130) == 256           # at least one rung up
+    assert ident.next_precision(256, 3, 5000) == 512             # stopped early: no rate, one rung
+    assert ident.next_precision(128, 100, 10 ** 9) == ident.VERIFY_CAP

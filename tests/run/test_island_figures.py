@@ -26,3 +26,17 @@ def test_b_section_points_of_an_orbit_in_the_island_stay_inside():
     inside = [np.all(F.island_share(th, ph, 0.3) > 0) for th, ph in pts if len(th)]
     assert any(inside)
     assert 0 < F.island_share(np.array([math.pi / 4]), np.array([math.pi / 2]), 0.3)[0]
+
+
+def test_the_resonances_drawn_are_the_floats_of_their_20_digits():
+    """rotation_data refines each resonance's interval before float(): the floats are those of
+    the unrefined resonances (float() rounds their 20 digits), and each lies in its interval."""
+    from certify.patterns import island_theorem as it
+    it.resonances_of_q.cache_clear()
+    plain = [float(s.r) for s in it.resonances(8)]
+    it.resonances_of_q.cache_clear()
+    marks, _ = F.rotation_data(8, windows=[])
+    assert [x for _label, x, _rho in marks] == plain and len(plain) >= 5
+    for s, (_label, x, _rho) in zip(it.resonances(8), marks):
+        assert s.r.hi - s.r.lo <= F.FLOAT_WIDTH and abs(x - float(s.r.lo)) <= 2 * math.ulp(x)
+    it.resonances_of_q.cache_clear()
