@@ -45,7 +45,7 @@ from .poly import (
     Xf,
     coefficients_in,
     expr,
-    irreducible_factors,
+    irreducible_factors_knowing,
     lam,
     lr_to_ring,
     mpoly_to_ring,
@@ -610,6 +610,8 @@ class Spectrum:
         self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
         self._checked = {}                 # id of a factor -> it, once its real roots were counted both ways
         self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
+        self._known: list = []             # the irreducible factors met so far (of disc cp, resultants)
+        self._texts: dict = {}             # id of a known factor -> its text
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -710,10 +712,17 @@ class Spectrum:
 
     def _factors(self, p) -> list:
         """(factor, its text) for the irreducible factors of p, memoised by the identity of p
-        (the discriminant and the cached resultants are the same objects in every table)."""
+        (the discriminant and the cached resultants are the same objects in every table).
+        The factors found in this spectrum before (of disc cp, of earlier resultants: the
+        same few recur, to high powers) are divided out first and only the cofactor is
+        factored (:func:`poly.irreducible_factors_knowing`): the same factors."""
         entry = self._factor_ids.get(id(p))
         if entry is None or entry[0] is not p:
-            entry = self._factor_ids[id(p)] = (p, [(f, str(f)) for f, _m in irreducible_factors(p)])
+            factors, new = irreducible_factors_knowing(p, self._known)
+            for f in new:
+                self._known.append(f)
+                self._texts[id(f)] = str(f)
+            entry = self._factor_ids[id(p)] = (p, [(f, self._texts[id(f)]) for f, _m in factors])
         return entry[1]
 
     def table(self, name: str, g, lo, hi, fixed_point: FixedPoint | None = None) -> SignTable:
