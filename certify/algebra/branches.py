@@ -946,11 +946,16 @@ class Spectrum:
                 single = self._single_common_root(h, rc)
                 if single is not None:
                     return single
-        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
+        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m, make_monic=False)
         if len(G) == 1:
             return False
         if len(G) == 2 or len(G) == 3 and nf.squarefree_quadratic(G, m):
-            return lambda prec: nf.real_roots(G, rc, prec)     # squarefree already: no inverse in Q(rc)
+            # squarefree already: its roots enclosed as it comes (no inverse in Q(rc)), and, where
+            # those enclosures leave the zero test undecided, those of the monic gcd (an inverse)
+            def roots(prec):
+                return nf.real_roots(G, rc, prec)
+            roots.fallback = lambda: _monic_roots(G, m, rc)   # type: ignore[attr-defined]
+            return roots
         G, _ = nf.squarefree(nf.monic(G, m), m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
@@ -1048,17 +1053,18 @@ class Spectrum:
         branches = self.branches_at(rc)
         if branches is None or branch >= len(branches):
             raise Undecided("branch not isolated at this point")
-        prec = 128
-        while prec <= maxprec:
-            zeros = G(prec)
-            balls = [b(prec) for b in branches]
-            if zeros is not None:
-                mine = balls[branch]
-                others = [b for k, b in enumerate(balls) if k != branch and not b.overlaps(mine)]
-                hit = [z for z in zeros if z.overlaps(mine)]
-                if all(not z.overlaps(o) for z in hit for o in others):
-                    return bool(hit)
-            prec *= 2
+        for zeros_at in _zero_routes(G):
+            prec = 128
+            while prec <= maxprec:
+                zeros = zeros_at(prec)
+                balls = [b(prec) for b in branches]
+                if zeros is not None:
+                    mine = balls[branch]
+                    others = [b for k, b in enumerate(balls) if k != branch and not b.overlaps(mine)]
+                    hit = [z for z in zeros if z.overlaps(mine)]
+                    if all(not z.overlaps(o) for z in hit for o in others):
+                        return bool(hit)
+                prec *= 2
         raise Undecided("zero test undecided")
 
 
@@ -1140,6 +1146,22 @@ def _root_ball(sqf, rc, k, isolated=None):
             raise Undecided("the real roots could not be isolated")
         return isolated[max(known)][k]
     return ball
+
+
+def _zero_routes(G):
+    """The enclosures of the common roots (prec -> balls) to try in turn: G itself, then, for
+    a gcd taken as it comes, those of the monic gcd (made once, on first need)."""
+    yield G
+    if getattr(G, "fallback", None) is not None:
+        if getattr(G, "monic", None) is None:
+            G.monic = G.fallback()
+        yield G.monic
+
+
+def _monic_roots(G, m, rc):
+    """prec -> the real roots of G ∈ Q(rc)[λ] (squarefree), enclosed from G made monic."""
+    M = nf.monic(G, m)
+    return lambda prec: nf.real_roots(M, rc, prec)
 
 
 def _conjugate_pair(roots, i: int, j: int) -> bool:

@@ -13,8 +13,8 @@ from fractions import Fraction
 from functools import reduce
 
 import flint
-from flint.utils.flint_exceptions import DomainError
 import sympy as sp
+from flint.utils.flint_exceptions import DomainError
 from sympy.polys.fields import FracElement, field
 from sympy.polys.orderings import lex
 from sympy.polys.rings import PolyElement
