@@ -45,6 +45,7 @@ from .poly import (
     Xf,
     coefficients_in,
     expr,
+    factor_order,
     irreducible_factors_knowing,
     lam,
     lr_to_ring,
@@ -196,9 +197,11 @@ class Condition:
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
     _forms: dict | None = None             # the Horner forms of the parts (_forms), made on first use
 
-    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None, terms: dict | None = None):
+    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None, terms: dict | None = None,
+                 split: tuple | None = None):
         self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
         self._lrq = lrq
+        self.split = split                     # (g, Q): N₀² - N₁²Δ ≡ 4c·g²·Q modulo cp (fmpq_mpoly in (λ, r))
         self.degenerate = []
         if terms is not None:                  # the terms of lrq, known to the caller (a twin's)
             self.terms = terms
@@ -252,12 +255,15 @@ class Condition:
 
     def share_norms(self, twin: Condition) -> None:
         """Take the norms of ``twin``, a condition with the same N₀, D₀, Δ, c and N₁ up to
-        its sign (the other fixed point): the same polynomials N₀² - N₁²Δ, D₀, Δ, c."""
-        self._norms = twin.labelled_norms()
+        its sign (the other fixed point): the same polynomials N₀² - N₁²Δ, D₀, Δ, c (and the
+        same parts of the first, :meth:`critical_norms`), made once, when first asked for."""
+        self._twin = twin
 
     def labelled_norms(self) -> list:
         """The norms with what they come from: "N", "D", "delta", "c", as primitive
         integer ``fmpz_mpoly`` in (r, λ, s) (positive multiples: the same zeros); memoised."""
+        if getattr(self, "_norms", None) is None and getattr(self, "_twin", None) is not None:
+            self._norms = self._twin.labelled_norms()
         if getattr(self, "_norms", None) is None:
             out = []
             if self._lrq is None:
@@ -273,6 +279,25 @@ class Condition:
             self._norms = [(label, p) for label, p in out if not p.is_constant()]
         return self._norms
 
+
+    def critical_norms(self, cp_monic: bool) -> list:
+        """What the critical values are read from: :meth:`labelled_norms`, but where the
+        condition carries its ``split`` and cp has a constant leading coefficient in λ
+        (``cp_monic``), the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q is given by its parts
+        ("N", [c, g, Q], not made then).  Res_λ(cp, ·) = lc^k Π ·(λ_i) is then multiplicative
+        and blind to multiples of cp: the irreducible factors of the norm's resultant are
+        those of the parts' resultants together.  Entries (label, polynomial or list of them)."""
+        if self.split is None or not cp_monic or self._lrq is None or self._lrq[1].is_zero():
+            return self.labelled_norms()
+        if getattr(self, "_twin", None) is not None:
+            return self._twin.critical_norms(cp_monic)
+        if getattr(self, "_critical", None) is None:
+            parts = [_integer_delta(self.c)[0]] + [_lrq_to_mpoly(q)[0] for q in self.split]
+            out = [("N", [p for p in parts if p.is_zero() or not p.is_constant()])]    # 0: a norm ≡ 0 modulo cp
+            out.append(("D", _lrq_to_mpoly(self._lrq[2])[0]))
+            out += [("delta", _integer_delta(self.delta)[0]), ("c", _integer_delta(self.c)[0])]
+            self._critical = [(label, p) for label, p in out if isinstance(p, list) or not p.is_constant()]
+        return self._critical
 
     def numerator_norm(self):
         """N₀² - N₁²Δ as :meth:`labelled_norms` holds it (the very polynomial :func:`norm_mpoly`
@@ -694,16 +719,24 @@ class Spectrum:
         """The critical values in ]lo, hi[, increasing: the polynomials are factored
         over Q (python-flint) and each irreducible factor's real roots isolated by
         Sturm sequences, their number checked against python-flint's isolation."""
-        polys = [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])
-        for label, e in (cond.labelled_norms() if cond is not None else []):
+        factor_lists = [self._factors(p) for p in [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])]
+        for label, e in (cond.critical_norms(self.lc.degree() <= 0) if cond is not None else []):
+            assert cond is not None
+            if isinstance(e, list):               # the parts of the numerator's norm
+                Rs = [self._resultant_of(p) for p in e]
+                if not any(R.is_zero() for R in Rs):
+                    factor_lists.append(_union(self._factors(R) for R in Rs))
+                    continue
+                e = next((p for lab, p in cond.labelled_norms() if lab == label), None)   # ≡ 0 on a branch
+                if e is None:
+                    continue
             R = self._resultant_of(e)
             if R.is_zero():
-                assert cond is not None  # e is one of cond's norms
                 R = self._resultant_off_common_factor(mpoly_to_ring(e), cond, label)
-            polys.append(R)
+            factor_lists.append(self._factors(R))
         lo, hi = _alg(lo), _alg(hi)
         roots = []
-        for f in {k: f for p in polys for f, k in self._factors(p)}.values():
+        for f in {k: f for fl in factor_lists for f, k in fl}.values():
             if self._checked.get(id(f)) is not f:     # Sturm and python-flint agree (once per factor)
                 checked_real_root_count(f)
                 self._checked[id(f)] = f
@@ -1066,6 +1099,14 @@ class Spectrum:
                         return bool(hit)
                 prec *= 2
         raise Undecided("zero test undecided")
+
+
+def _union(factor_lists) -> list:
+    """The (factor, text) pairs of several lists of :meth:`Spectrum._factors`, each once, in
+    the order of :func:`poly.irreducible_factors` (by degree, then coefficients): the list
+    the product of those polynomials would have."""
+    seen = {k: f for fl in factor_lists for f, k in fl}
+    return sorted(((f, k) for k, f in seen.items()), key=lambda fk: factor_order((fk[0], 1)))
 
 
 def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:

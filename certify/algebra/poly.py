@@ -164,7 +164,7 @@ def poly_key(p) -> tuple:
     return tuple(int(c) for c in p.numer().coeffs()), int(p.denom())
 
 
-def _factor_key(fm) -> tuple:
+def factor_order(fm) -> tuple:
     """The order of :func:`irreducible_factors`: by degree, then coefficients."""
     return fm[0].degree(), [int(c) for c in fm[0].coeffs()]
 
@@ -181,7 +181,7 @@ def irreducible_factors(p: flint.fmpz_poly) -> list[tuple[flint.fmpz_poly, int]]
     if out is None:
         _, factors = p.factor()
         out = [(primitive(f), m) for f, m in factors if f.degree() > 0]
-        out = _FACTORS[key] = sorted(out, key=_factor_key)
+        out = _FACTORS[key] = sorted(out, key=factor_order)
         if len(_FACTORS) > 20000:
             _FACTORS.clear()
     return list(out)
@@ -247,7 +247,7 @@ def irreducible_factors_knowing(p: flint.fmpz_poly, known: list) -> tuple[list, 
     except DomainError:
         return _factored(p, known)
     new = _factored(rest, [])[0] if rest.degree() > 0 else []
-    return sorted(found + new, key=_factor_key), [f for f, _m in new]
+    return sorted(found + new, key=factor_order), [f for f, _m in new]
 
 
 def _factored(p: flint.fmpz_poly, known: list) -> tuple[list, list]:
@@ -259,7 +259,7 @@ def _factored(p: flint.fmpz_poly, known: list) -> tuple[list, list]:
         if f.degree() > 0:
             f = primitive(f)
             out.append((next((k for k in known if k == f), f), m))
-    out.sort(key=_factor_key)
+    out.sort(key=factor_order)
     return out, [f for f, _m in out if not any(f is k for k in known)]
 
 

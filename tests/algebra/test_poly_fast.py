@@ -81,7 +81,7 @@ _RECURRING = [[0, 1], [1, 1], [-1, 1], [1, -10, 1], [1, -6, 1], [1, -12, -10, -1
 def _flint_factors(p):
     """python-flint's full factorisation, as irreducible_factors gives it (no memo)."""
     _, fs = p.factor()
-    return sorted([(poly.primitive(f), m) for f, m in fs if f.degree() > 0], key=poly._factor_key)
+    return sorted([(poly.primitive(f), m) for f, m in fs if f.degree() > 0], key=poly.factor_order)
 
 
 @st.composite
