@@ -201,7 +201,8 @@ class Condition:
                  split: tuple | None = None):
         self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
         self._lrq = lrq
-        self.split = split                     # (g, Q): N₀² - N₁²Δ ≡ 4c·g²·Q modulo cp (fmpq_mpoly in (λ, r))
+        # ((g, Q), (d₀, d₁)): N₀² - N₁²Δ ≡ 4c·g²·Q and D₀ ≡ 2c·d₀d₁ modulo cp (fmpq_mpoly in (λ, r))
+        self.split = split
         self.degenerate = []
         if terms is not None:                  # the terms of lrq, known to the caller (a twin's)
             self.terms = terms
@@ -283,19 +284,21 @@ class Condition:
     def critical_norms(self, cp_monic: bool) -> list:
         """What the critical values are read from: :meth:`labelled_norms`, but where the
         condition carries its ``split`` and cp has a constant leading coefficient in λ
-        (``cp_monic``), the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q is given by its parts
-        ("N", [c, g, Q], not made then).  Res_λ(cp, ·) = lc^k Π ·(λ_i) is then multiplicative
-        and blind to multiples of cp: the irreducible factors of the norm's resultant are
-        those of the parts' resultants together.  Entries (label, polynomial or list of them)."""
+        (``cp_monic``), the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q and the denominator
+        D₀ ≡ 2c·d₀d₁ are given by their parts ("N", [c, g, Q]; "D", [c, d₀, d₁]; the norm not
+        made then).  Res_λ(cp, ·) = lc^k Π ·(λ_i) is then multiplicative and blind to
+        multiples of cp: the irreducible factors of a resultant are those of the parts'
+        resultants together.  Entries (label, polynomial or list of them)."""
         if self.split is None or not cp_monic or self._lrq is None or self._lrq[1].is_zero():
             return self.labelled_norms()
         if getattr(self, "_twin", None) is not None:
             return self._twin.critical_norms(cp_monic)
         if getattr(self, "_critical", None) is None:
-            parts = [_integer_delta(self.c)[0]] + [_lrq_to_mpoly(q)[0] for q in self.split]
-            out = [("N", [p for p in parts if p.is_zero() or not p.is_constant()])]    # 0: a norm ≡ 0 modulo cp
-            out.append(("D", _lrq_to_mpoly(self._lrq[2])[0]))
-            out += [("delta", _integer_delta(self.delta)[0]), ("c", _integer_delta(self.c)[0])]
+            c = _integer_delta(self.c)[0]
+            out = [(label, [p for p in [c] + [_lrq_to_mpoly(q)[0] for q in qs]
+                            if p.is_zero() or not p.is_constant()])           # 0: the whole ≡ 0 modulo cp
+                   for label, qs in zip("ND", self.split)]
+            out += [("delta", _integer_delta(self.delta)[0]), ("c", c)]
             self._critical = [(label, p) for label, p in out if isinstance(p, list) or not p.is_constant()]
         return self._critical
 

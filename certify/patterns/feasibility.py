@@ -92,15 +92,15 @@ def fixed_point_data(abcd, cp) -> list[FixedPointData]:
 
 
 def _norm_split(n0, d0, n1, d1, A, c, b, C) -> tuple:
-    """(g, Q) with N₀² - N₁²Δ ≡ 4c·g²·Q modulo cp, for N₀ = 2c n₀d₁ + A n₁d₀, N₁ = ±n₁d₀
-    (:func:`condition`, A = a - d): with Δ = A² + 4bc, N₀² - N₁²Δ = 4c(c n₀²d₁² + A n₀n₁d₀d₁
-    - b n₁²d₀²), and with g = gcd(d₀, d₁), d₀ = g e₀, d₁ = g e₁, the bracket is
-    g²(c n₀²e₁² + A n₀n₁e₀e₁ - b n₁²e₀²) = g²Q (fmpq_mpoly in (λ, r), reduced modulo cp).
-    The same for both fixed points (Q does not depend on the sign of √Δ)."""
+    """((g, Q), (d₀, d₁)) with N₀² - N₁²Δ ≡ 4c·g²·Q and D₀ ≡ 2c·d₀d₁ modulo cp, for N₀ =
+    2c n₀d₁ + A n₁d₀, N₁ = ±n₁d₀, D₀ = 2c d₀d₁ (:func:`condition`, A = a - d): with Δ = A² + 4bc,
+    N₀² - N₁²Δ = 4c(c n₀²d₁² + A n₀n₁d₀d₁ - b n₁²d₀²), and with g = gcd(d₀, d₁), d₀ = g e₀,
+    d₁ = g e₁, the bracket is g²(c n₀²e₁² + A n₀n₁e₀e₁ - b n₁²e₀²) = g²Q (fmpq_mpoly in (λ, r),
+    reduced modulo cp).  The same for both fixed points (nothing depends on the sign of √Δ)."""
     g = d0.gcd(d1)
     e0, e1 = divmod(d0, g)[0], divmod(d1, g)[0]
     Q = c * n0 * n0 * e1 * e1 + A * n0 * n1 * e0 * e1 - b * n1 * n1 * e0 * e0
-    return divmod(g, C)[1], divmod(Q, C)[1]
+    return (divmod(g, C)[1], divmod(Q, C)[1]), (divmod(d0, C)[1], divmod(d1, C)[1])
 
 
 def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=None) -> Condition:

@@ -108,8 +108,9 @@ def test_the_split_norm_gives_the_critical_values_of_the_norm(word):
             S1, S2 = Spectrum(c.cp, c.spectrum.ring_cp), Spectrum(c.cp, c.spectrum.ring_cp)
             assert cond.split is not None and bare.split is None
             assert S1.critical_values(cond, 0, 1) == S2.critical_values(bare, 0, 1)
-            Rc, Rg, RQ = (S1.resultant(p) for p in [_integer_delta(cond.c)[0]] +
-                          [_lrq_to_mpoly(x)[0] for x in cond.split])
+            Rc, Rg, RQ, R0, R1 = (S1.resultant(p) for p in [_integer_delta(cond.c)[0]] +
+                                  [_lrq_to_mpoly(x)[0] for x in cond.split[0] + cond.split[1]])
+            assert primitive(Rc * R0 * R1) == S2.resultant(dict(bare.labelled_norms())["D"])
             if not any(R.is_zero() for R in (Rc, Rg, RQ)):
                 norm = dict(bare.labelled_norms())["N"]
                 assert primitive(Rc * Rg * Rg * RQ) == S2.resultant(norm)
