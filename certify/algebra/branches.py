@@ -294,13 +294,23 @@ class Condition:
         if getattr(self, "_twin", None) is not None:
             return self._twin.critical_norms(cp_monic)
         if getattr(self, "_critical", None) is None:
-            c = _integer_delta(self.c)[0]
-            out = [(label, [p for p in [c] + [_lrq_to_mpoly(q)[0] for q in qs]
-                            if p.is_zero() or not p.is_constant()])           # 0: the whole ≡ 0 modulo cp
-                   for label, qs in zip("ND", self.split)]
+            c, parts = self.split_parts()
+            out = [(label, [p for p in [c] + list(qs) if p.is_zero() or not p.is_constant()])   # 0: ≡ 0 modulo cp
+                   for label, qs in zip("ND", parts)]
             out += [("delta", _integer_delta(self.delta)[0]), ("c", c)]
             self._critical = [(label, p) for label, p in out if isinstance(p, list) or not p.is_constant()]
         return self._critical
+
+    def split_parts(self) -> tuple:
+        """(c, ((g, Q), (d₀, d₁))): the ``split`` as integer ``fmpz_mpoly`` in (r, λ, s) (positive
+        multiples), c that of the label "c"; memoised (a twin's are the same)."""
+        if getattr(self, "_twin", None) is not None:
+            return self._twin.split_parts()
+        if getattr(self, "_parts", None) is None:
+            assert self.split is not None
+            self._parts = (_integer_delta(self.c)[0], tuple(tuple(_lrq_to_mpoly(q)[0] for q in qs)
+                                                            for qs in self.split))
+        return self._parts
 
     def numerator_norm(self):
         """N₀² - N₁²Δ as :meth:`labelled_norms` holds it (the very polynomial :func:`norm_mpoly`
@@ -916,21 +926,33 @@ class Spectrum:
                 return 0
             return UNDECIDED
         if not self.vanishes_at(cond.delta, rc, k):
-            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball, cond.numerator_norm()) and \
+            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball, cond.numerator_norm(),
+                                    self._split_norm_resultant(cond)) and \
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
             return UNDECIDED
         return decide(lambda p: _sign_ball(cond, rc.arb(p), ball(p), delta_is_zero=True), 128, maxprec)
 
-    def _root_with_sqrt(self, P, delta, rc, k, ball, M=None, maxprec: int = 1024):
+    def _split_norm_resultant(self, cond: Condition):
+        """Res_λ(cp, N₀² - N₁²Δ) (primitive, :meth:`resultant`'s polynomial) as the product of
+        the resultants of its split, Res(c)·Res(g)²·Res(Q) (:meth:`Condition.critical_norms`:
+        the same polynomial, their resultants known from the table); None without a split."""
+        if cond.split is None or self.lc.degree() > 0 or cond._lrq is None or cond._lrq[1].is_zero():
+            return None
+        c, ((g, Q), _d) = cond.split_parts()
+        Rg = self.resultant(g)
+        return primitive(self.resultant(c) * Rg * Rg * self.resultant(Q))
+
+    def _root_with_sqrt(self, P, delta, rc, k, ball, M=None, R=None, maxprec: int = 1024):
         """Whether P₀ + P₁√Δ vanishes on branch k at rc, where Δ > 0: exactly when the
         norm P₀² - P₁²Δ vanishes (exact test) and P₀ = -P₁√Δ, that is P₁ = 0 (then
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
-        None when undecided.  ``M``: the norm as :func:`norm_mpoly` makes it, when known."""
+        None when undecided.  ``M``: the norm as :func:`norm_mpoly` makes it, when known;
+        ``R`` its resultant, when known."""
         P0, P1 = P
         if not P1:                     # the norm is (a positive multiple of) P₀²: the zeros of P₀
             return self.vanishes_at(P0, rc, k)
-        if not self.vanishes_at(self._norm_of(P0, P1, delta, M), rc, k):
+        if not self.vanishes_at(self._norm_of(P0, P1, delta, M, R), rc, k):
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -995,17 +1017,19 @@ class Spectrum:
         G, _ = nf.squarefree(nf.monic(G, m), m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
-    def _norm_of(self, P0, P1, delta, M=None):
+    def _norm_of(self, P0, P1, delta, M=None, R=None):
         """:func:`norm` of P₀ + P₁√Δ, memoised by the identity of the three (the same object
         for the same parts: the exact tests at other points find their work done); ``M``
-        that norm as :func:`norm_mpoly` makes it, when the caller holds it already."""
+        that norm as :func:`norm_mpoly` makes it, when the caller holds it already, ``R`` its
+        resultant (:meth:`_split_norm_resultant`)."""
         key = (id(P0), id(P1), id(delta))
         entry = self._norms.get(key)
         if entry is None or entry[0] is not P0 or entry[1] is not P1 or entry[2] is not delta:
             M = norm_mpoly(P0, P1, delta) if M is None else M
             h = mpoly_to_ring(M)
             if self.lc.degree() <= 0:        # its resultant from M itself (no conversion back)
-                self._resultant_ids[h] = (h, self.resultant(M))     # keyed as _resultant_of keys a ring element
+                R = self.resultant(M) if R is None else R
+                self._resultant_ids[h] = (h, R)     # keyed as _resultant_of keys a ring element
             entry = self._norms[key] = (P0, P1, delta, h)
         return entry[3]
 

@@ -111,6 +111,8 @@ def test_the_split_norm_gives_the_critical_values_of_the_norm(word):
             Rc, Rg, RQ, R0, R1 = (S1.resultant(p) for p in [_integer_delta(cond.c)[0]] +
                                   [_lrq_to_mpoly(x)[0] for x in cond.split[0] + cond.split[1]])
             assert primitive(Rc * R0 * R1) == S2.resultant(dict(bare.labelled_norms())["D"])
+            # the exact zero test's resultant of the norm, from the split (Spectrum._split_norm_resultant)
+            assert S1._split_norm_resultant(cond) == S2.resultant(dict(bare.labelled_norms())["N"])
             if not any(R.is_zero() for R in (Rc, Rg, RQ)):
                 norm = dict(bare.labelled_norms())["N"]
                 assert primitive(Rc * Rg * Rg * RQ) == S2.resultant(norm)
