@@ -646,7 +646,7 @@ class Spectrum:
         self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
         self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
         self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
-        self._checked = {}                 # id of a factor -> it, once its real roots were counted both ways
+        self._checked = {}                 # id of a factor -> (it, its real roots counted both ways)
         self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
         self._known: list = []             # the irreducible factors met so far (of disc cp, resultants)
         self._texts: dict = {}             # id of a known factor -> its text
@@ -735,7 +735,7 @@ class Spectrum:
         factor_lists = [self._factors(p) for p in [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])]
         for label, e in (cond.critical_norms(self.lc.degree() <= 0) if cond is not None else []):
             assert cond is not None
-            if isinstance(e, list):               # the parts of the numerator's norm
+            if isinstance(e, list):               # the parts of a split norm (N) or denominator (D)
                 Rs = [self._resultant_of(p) for p in e]
                 if not any(R.is_zero() for R in Rs):
                     factor_lists.append(_union(self._factors(R) for R in Rs))
@@ -750,10 +750,11 @@ class Spectrum:
         lo, hi = _alg(lo), _alg(hi)
         roots = []
         for f in {k: f for fl in factor_lists for f, k in fl}.values():
-            if self._checked.get(id(f)) is not f:     # Sturm and python-flint agree (once per factor)
-                checked_real_root_count(f)
-                self._checked[id(f)] = f
-            roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
+            entry = self._checked.get(id(f))
+            if entry is None or entry[0] is not f:     # Sturm and python-flint agree (once per factor)
+                entry = self._checked[id(f)] = (f, checked_real_root_count(f))
+            if entry[1]:                               # no real root (both routes): none to isolate
+                roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
         return sorted_numbers(roots)
 
     def _factors(self, p) -> list:
