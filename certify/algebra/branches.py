@@ -927,8 +927,9 @@ class Spectrum:
                 return 0
             return UNDECIDED
         if not self.vanishes_at(cond.delta, rc, k):
-            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball, cond.numerator_norm(),
-                                    self._split_norm_resultant(cond)) and \
+            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball,
+                                    lambda: (cond.numerator_norm(), self._split_norm_resultant(cond)),
+                                    None if recording_now() else self._split_ring_parts(cond)) and \
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
             return UNDECIDED
@@ -944,16 +945,38 @@ class Spectrum:
         Rg = self.resultant(g)
         return primitive(self.resultant(c) * Rg * Rg * self.resultant(Q))
 
-    def _root_with_sqrt(self, P, delta, rc, k, ball, M=None, R=None, maxprec: int = 1024):
+    def _split_ring_parts(self, cond: Condition):
+        """c, g, Q of the split of the numerator's norm (N₀² - N₁²Δ ≡ 4c·g²·Q modulo cp) as
+        elements of the engine's ring, or None without a split."""
+        if cond.split is None or cond._lrq is None or cond._lrq[1].is_zero():
+            return None
+        parts = getattr(cond, "_ring_parts", None)
+        if parts is None:
+            parts = cond._ring_parts = [cond.c] + [lr_to_ring(q) for q in cond.split[0]]
+        return parts
+
+    def _root_with_sqrt(self, P, delta, rc, k, ball, norm=None, parts=None, maxprec: int = 1024):
         """Whether P₀ + P₁√Δ vanishes on branch k at rc, where Δ > 0: exactly when the
         norm P₀² - P₁²Δ vanishes (exact test) and P₀ = -P₁√Δ, that is P₁ = 0 (then
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
-        None when undecided.  ``M``: the norm as :func:`norm_mpoly` makes it, when known;
-        ``R`` its resultant, when known."""
+        None when undecided.  ``norm``: () -> (the norm as :func:`norm_mpoly` makes it, its
+        resultant), when the caller knows them.  ``parts``: c, g, Q with P₀² - P₁²Δ ≡ 4c·g²·Q
+        modulo cp (:meth:`Condition.critical_norms`): at r = rc and a root λ of cp the norm
+        vanishes iff one of them does, smaller polynomials to test (the norm itself where
+        one of those tests is undecided)."""
         P0, P1 = P
         if not P1:                     # the norm is (a positive multiple of) P₀²: the zeros of P₀
             return self.vanishes_at(P0, rc, k)
-        if not self.vanishes_at(self._norm_of(P0, P1, delta, M, R), rc, k):
+        zero = None
+        if parts is not None:
+            try:
+                zero = any(self.vanishes_at(h, rc, k) for h in parts)
+            except Undecided:
+                zero = None
+        if zero is None:
+            M, R = norm() if norm is not None else (None, None)
+            zero = self.vanishes_at(self._norm_of(P0, P1, delta, M, R), rc, k)
+        if not zero:
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True

@@ -122,6 +122,35 @@ def test_the_split_norm_gives_the_critical_values_of_the_norm(word):
     assert split and (plain or word != "acb")
 
 
+def test_the_norm_vanishes_where_a_part_of_its_split_does():
+    """The exact zero test of the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q (Spectrum._root_with_sqrt
+    without a recording) tests c, g and Q: at every critical value of every condition with x,
+    on every branch, some part vanishes exactly where the norm does (the norm's own test on a
+    fresh Spectrum), over a few words, and both answers occur."""
+    from certify.algebra.branches import Spectrum
+    from certify.algebra.poly import mpoly_to_ring
+    from certify.dynamics.systems import candidate_in
+    from certify.patterns.feasibility import condition, fixed_point_data
+    from certify.patterns.periodic import read
+    answers = []
+    for word in ("ababcbcb", "acb", "ababcb", "abcbacbcab", "(ab)^3(cb)^3"):
+        normal = read(word)[0]
+        c = candidate_in("four", normal)
+        reqs, _ = prefix_requirements(normal, len(normal), c.q0, c.steps, c.q0_other)
+        for q in [q for q in reqs if q.has_x]:
+            for f in fixed_point_data(c.abcd_ring, c.spectrum.ring_cp):
+                cond = condition(q, c.spectrum.lrq_cp, f)
+                S1, S2 = Spectrum(c.cp, c.spectrum.ring_cp), Spectrum(c.cp, c.spectrum.ring_cp)
+                parts = S1._split_ring_parts(cond)
+                norm = mpoly_to_ring(cond.numerator_norm())
+                for rc in S1.critical_values(cond, 0, 1):
+                    for k in range(len(S1.branches_at(rc) or [])):
+                        answers.append((word, any(S1.vanishes_at(h, rc, k) for h in parts),
+                                        S2.vanishes_at(norm, rc, k)))
+    assert [a for a in answers if a[1] != a[2]] == []
+    assert {a[1] for a in answers} == {True, False}
+
+
 @pytest.mark.parametrize("word", ["ababacbabacb", "abcb"])
 def test_the_route_without_a_recording_certifies_the_same_sets(monkeypatch, word):
     # without a certificate being recorded, points are signed on the branch read only
