@@ -196,6 +196,7 @@ class Condition:
     _cache: dict = {}
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
     _forms: dict | None = None             # the Horner forms of the parts (_forms), made on first use
+    _ring_parts: list | None = None        # c, g, Q of the split in the engine's ring (Spectrum._split_ring_parts)
 
     def __init__(self, name, N, D, delta, c, lrq: tuple | None = None, terms: dict | None = None,
                  split: tuple | None = None):
@@ -950,7 +951,7 @@ class Spectrum:
         elements of the engine's ring, or None without a split."""
         if cond.split is None or cond._lrq is None or cond._lrq[1].is_zero():
             return None
-        parts = getattr(cond, "_ring_parts", None)
+        parts = cond._ring_parts
         if parts is None:
             parts = cond._ring_parts = [cond.c] + [lr_to_ring(q) for q in cond.split[0]]
         return parts
