@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
+from certify import caches
 from certify.algebra import facts
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import (
@@ -103,6 +104,11 @@ def _norm_split(n0, d0, n1, d1, A, c, b, C) -> tuple:
     return (divmod(g, C)[1], divmod(Q, C)[1]), (divmod(d0, C)[1], divmod(d1, C)[1])
 
 
+# ring_to_lrq memoised by identity: a requirement's parts and a fixed point's a - d, b, c are
+# converted once, not for every table and point (the flint polynomials are never changed in place)
+_lrq = caches.by_identity(ring_to_lrq)
+
+
 def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=None) -> Condition:
     """The engine's Condition for g = G0 + x G1, numerator and denominator reduced
     modulo cp, x the fixed point ``fp`` (x = (A + σ√Δ)/(2c), A = a - d) or the
@@ -110,7 +116,7 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
     (fmpq_mpoly in λ, r): the same polynomials as in SymPy's ring."""
     C = cp if isinstance(cp, flint.fmpq_mpoly) else ring_to_lrq(to_ring(cp))
     G0, G1 = req.G
-    n0, d0, n1, d1 = (ring_to_lrq(e) for e in (G0.numer, G0.denom, G1.numer, G1.denom))
+    n0, d0, n1, d1 = (_lrq(e) for e in (G0.numer, G0.denom, G1.numer, G1.denom))
     zero = n0 - n0
     delta = c = split = None
     if not req.has_x:
@@ -121,11 +127,11 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
         N0, N1, D0 = n0 * d1 * xd + n1 * d0 * xn, zero, d0 * d1 * xd
     else:                                                   # g = (n0 d1 + x n1 d0)/(d0 d1)
         assert fp is not None, "a condition with x needs its fixed point or x_value"
-        A, cc = ring_to_lrq(fp.amd), ring_to_lrq(fp.c)
+        A, cc = _lrq(fp.amd), _lrq(fp.c)
         N0, N1, D0 = 2 * cc * n0 * d1 + A * n1 * d0, fp.sigma * n1 * d0, 2 * cc * d0 * d1
         delta, c = fp.delta, fp.c
         if fp.b is not None and not n1.is_zero():
-            split = _norm_split(n0, d0, n1, d1, A, cc, ring_to_lrq(fp.b), C)
+            split = _norm_split(n0, d0, n1, d1, A, cc, _lrq(fp.b), C)
     N0, N1, D0 = (divmod(e, C)[1] for e in (N0, N1, D0))
     return Condition(req.name, None, None, delta, c, lrq=(N0, N1, D0), split=split)
 
