@@ -281,7 +281,6 @@ class Condition:
             self._norms = [(label, p) for label, p in out if not p.is_constant()]
         return self._norms
 
-
     def critical_norms(self, cp_monic: bool) -> list:
         """What the critical values are read from: :meth:`labelled_norms`, but where the
         condition carries its ``split`` and cp has a constant leading coefficient in λ
@@ -754,7 +753,7 @@ class Spectrum:
             entry = self._checked.get(id(f))
             if entry is None or entry[0] is not f:     # Sturm and python-flint agree (once per factor)
                 entry = self._checked[id(f)] = (f, checked_real_root_count(f))
-            if entry[1]:                               # no real root (both routes): none to isolate
+            if entry[1]:                               # without real roots (both routes): none to isolate
                 roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
         return sorted_numbers(roots)
 
