@@ -45,7 +45,8 @@ from .poly import (
     Xf,
     coefficients_in,
     expr,
-    irreducible_factors,
+    factor_order,
+    irreducible_factors_knowing,
     lam,
     lr_to_ring,
     mpoly_to_ring,
@@ -195,10 +196,14 @@ class Condition:
     _cache: dict = {}
     degenerate: list[tuple[str, object]]   # (label, norm): norms ≡ 0 on whole branches (_resultant_off_common_factor)
     _forms: dict | None = None             # the Horner forms of the parts (_forms), made on first use
+    _ring_parts: list | None = None        # c, g, Q of the split in the engine's ring (Spectrum._split_ring_parts)
 
-    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None, terms: dict | None = None):
+    def __init__(self, name, N, D, delta, c, lrq: tuple | None = None, terms: dict | None = None,
+                 split: tuple | None = None):
         self.name, self._N, self._D, self.delta, self.c = name, N, D, delta, c
         self._lrq = lrq
+        # ((g, Q), (d₀, d₁)): N₀² - N₁²Δ ≡ 4c·g²·Q and D₀ ≡ 2c·d₀d₁ modulo cp (fmpq_mpoly in (λ, r))
+        self.split = split
         self.degenerate = []
         if terms is not None:                  # the terms of lrq, known to the caller (a twin's)
             self.terms = terms
@@ -252,12 +257,15 @@ class Condition:
 
     def share_norms(self, twin: Condition) -> None:
         """Take the norms of ``twin``, a condition with the same N₀, D₀, Δ, c and N₁ up to
-        its sign (the other fixed point): the same polynomials N₀² - N₁²Δ, D₀, Δ, c."""
-        self._norms = twin.labelled_norms()
+        its sign (the other fixed point): the same polynomials N₀² - N₁²Δ, D₀, Δ, c (and the
+        same parts of the first, :meth:`critical_norms`), made once, when first asked for."""
+        self._twin = twin
 
     def labelled_norms(self) -> list:
         """The norms with what they come from: "N", "D", "delta", "c", as primitive
         integer ``fmpz_mpoly`` in (r, λ, s) (positive multiples: the same zeros); memoised."""
+        if getattr(self, "_norms", None) is None and getattr(self, "_twin", None) is not None:
+            self._norms = self._twin.labelled_norms()
         if getattr(self, "_norms", None) is None:
             out = []
             if self._lrq is None:
@@ -273,6 +281,36 @@ class Condition:
             self._norms = [(label, p) for label, p in out if not p.is_constant()]
         return self._norms
 
+    def critical_norms(self, cp_monic: bool) -> list:
+        """What the critical values are read from: :meth:`labelled_norms`, but where the
+        condition carries its ``split`` and cp has a constant leading coefficient in λ
+        (``cp_monic``), the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q and the denominator
+        D₀ ≡ 2c·d₀d₁ are given by their parts ("N", [c, g, Q]; "D", [c, d₀, d₁]; the norm not
+        made then).  Res_λ(cp, ·) = lc^k Π ·(λ_i) is then multiplicative and blind to
+        multiples of cp: the irreducible factors of a resultant are those of the parts'
+        resultants together.  Entries (label, polynomial or list of them)."""
+        if self.split is None or not cp_monic or self._lrq is None or self._lrq[1].is_zero():
+            return self.labelled_norms()
+        if getattr(self, "_twin", None) is not None:
+            return self._twin.critical_norms(cp_monic)
+        if getattr(self, "_critical", None) is None:
+            c, parts = self.split_parts()
+            out = [(label, [p for p in [c] + list(qs) if p.is_zero() or not p.is_constant()])   # 0: ≡ 0 modulo cp
+                   for label, qs in zip("ND", parts)]
+            out += [("delta", _integer_delta(self.delta)[0]), ("c", c)]
+            self._critical = [(label, p) for label, p in out if isinstance(p, list) or not p.is_constant()]
+        return self._critical
+
+    def split_parts(self) -> tuple:
+        """(c, ((g, Q), (d₀, d₁))): the ``split`` as integer ``fmpz_mpoly`` in (r, λ, s) (positive
+        multiples), c that of the label "c"; memoised (a twin's are the same)."""
+        if getattr(self, "_twin", None) is not None:
+            return self._twin.split_parts()
+        if getattr(self, "_parts", None) is None:
+            assert self.split is not None
+            self._parts = (_integer_delta(self.c)[0], tuple(tuple(_lrq_to_mpoly(q)[0] for q in qs)
+                                                            for qs in self.split))
+        return self._parts
 
     def numerator_norm(self):
         """N₀² - N₁²Δ as :meth:`labelled_norms` holds it (the very polynomial :func:`norm_mpoly`
@@ -608,8 +646,10 @@ class Spectrum:
         self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
         self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
         self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
-        self._checked = {}                 # id of a factor -> it, once its real roots were counted both ways
+        self._checked = {}                 # id of a factor -> (it, its real roots counted both ways)
         self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
+        self._known: list = []             # the irreducible factors met so far (of disc cp, resultants)
+        self._texts: dict = {}             # id of a known factor -> its text
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -692,28 +732,44 @@ class Spectrum:
         """The critical values in ]lo, hi[, increasing: the polynomials are factored
         over Q (python-flint) and each irreducible factor's real roots isolated by
         Sturm sequences, their number checked against python-flint's isolation."""
-        polys = [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])
-        for label, e in (cond.labelled_norms() if cond is not None else []):
+        factor_lists = [self._factors(p) for p in [self.disc] + ([self.lc] if self.lc.degree() > 0 else [])]
+        for label, e in (cond.critical_norms(self.lc.degree() <= 0) if cond is not None else []):
+            assert cond is not None
+            if isinstance(e, list):               # the parts of a split norm (N) or denominator (D)
+                Rs = [self._resultant_of(p) for p in e]
+                if not any(R.is_zero() for R in Rs):
+                    factor_lists.append(_union(self._factors(R) for R in Rs))
+                    continue
+                e = next((p for lab, p in cond.labelled_norms() if lab == label), None)   # ≡ 0 on a branch
+                if e is None:
+                    continue
             R = self._resultant_of(e)
             if R.is_zero():
-                assert cond is not None  # e is one of cond's norms
                 R = self._resultant_off_common_factor(mpoly_to_ring(e), cond, label)
-            polys.append(R)
+            factor_lists.append(self._factors(R))
         lo, hi = _alg(lo), _alg(hi)
         roots = []
-        for f in {k: f for p in polys for f, k in self._factors(p)}.values():
-            if self._checked.get(id(f)) is not f:     # Sturm and python-flint agree (once per factor)
-                checked_real_root_count(f)
-                self._checked[id(f)] = f
-            roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
+        for f in {k: f for fl in factor_lists for f, k in fl}.values():
+            entry = self._checked.get(id(f))
+            if entry is None or entry[0] is not f:     # Sturm and python-flint agree (once per factor)
+                entry = self._checked[id(f)] = (f, checked_real_root_count(f))
+            if entry[1]:                               # without real roots (both routes): none to isolate
+                roots += [a for a in Algebraic.roots(f, lo.lo, hi.hi) if strictly_between(lo, a, hi)]
         return sorted_numbers(roots)
 
     def _factors(self, p) -> list:
         """(factor, its text) for the irreducible factors of p, memoised by the identity of p
-        (the discriminant and the cached resultants are the same objects in every table)."""
+        (the discriminant and the cached resultants are the same objects in every table).
+        The factors found in this spectrum before (of disc cp, of earlier resultants: the
+        same few recur, to high powers) are divided out first and only the cofactor is
+        factored (:func:`poly.irreducible_factors_knowing`): the same factors."""
         entry = self._factor_ids.get(id(p))
         if entry is None or entry[0] is not p:
-            entry = self._factor_ids[id(p)] = (p, [(f, str(f)) for f, _m in irreducible_factors(p)])
+            factors, new = irreducible_factors_knowing(p, self._known)
+            for f in new:
+                self._known.append(f)
+                self._texts[id(f)] = str(f)
+            entry = self._factor_ids[id(p)] = (p, [(f, self._texts[id(f)]) for f, _m in factors])
         return entry[1]
 
     def table(self, name: str, g, lo, hi, fixed_point: FixedPoint | None = None) -> SignTable:
@@ -871,21 +927,56 @@ class Spectrum:
                 return 0
             return UNDECIDED
         if not self.vanishes_at(cond.delta, rc, k):
-            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball, cond.numerator_norm()) and \
+            if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball,
+                                    lambda: (cond.numerator_norm(), self._split_norm_resultant(cond)),
+                                    None if recording_now() else self._split_ring_parts(cond)) and \
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
             return UNDECIDED
         return decide(lambda p: _sign_ball(cond, rc.arb(p), ball(p), delta_is_zero=True), 128, maxprec)
 
-    def _root_with_sqrt(self, P, delta, rc, k, ball, M=None, maxprec: int = 1024):
+    def _split_norm_resultant(self, cond: Condition):
+        """Res_λ(cp, N₀² - N₁²Δ) (primitive, :meth:`resultant`'s polynomial) as the product of
+        the resultants of its split, Res(c)·Res(g)²·Res(Q) (:meth:`Condition.critical_norms`:
+        the same polynomial, their resultants known from the table); None without a split."""
+        if cond.split is None or self.lc.degree() > 0 or cond._lrq is None or cond._lrq[1].is_zero():
+            return None
+        c, ((g, Q), _d) = cond.split_parts()
+        Rg = self.resultant(g)
+        return primitive(self.resultant(c) * Rg * Rg * self.resultant(Q))
+
+    def _split_ring_parts(self, cond: Condition):
+        """c, g, Q of the split of the numerator's norm (N₀² - N₁²Δ ≡ 4c·g²·Q modulo cp) as
+        elements of the engine's ring, or None without a split."""
+        if cond.split is None or cond._lrq is None or cond._lrq[1].is_zero():
+            return None
+        parts = cond._ring_parts
+        if parts is None:
+            parts = cond._ring_parts = [cond.c] + [lr_to_ring(q) for q in cond.split[0]]
+        return parts
+
+    def _root_with_sqrt(self, P, delta, rc, k, ball, norm=None, parts=None, maxprec: int = 1024):
         """Whether P₀ + P₁√Δ vanishes on branch k at rc, where Δ > 0: exactly when the
         norm P₀² - P₁²Δ vanishes (exact test) and P₀ = -P₁√Δ, that is P₁ = 0 (then
         P₀ = 0 too) or P₀, P₁ of opposite signs (balls; both are non-zero then).
-        None when undecided.  ``M``: the norm as :func:`norm_mpoly` makes it, when known."""
+        None when undecided.  ``norm``: () -> (the norm as :func:`norm_mpoly` makes it, its
+        resultant), when the caller knows them.  ``parts``: c, g, Q with P₀² - P₁²Δ ≡ 4c·g²·Q
+        modulo cp (:meth:`Condition.critical_norms`): at r = rc and a root λ of cp the norm
+        vanishes iff one of them does, smaller polynomials to test (the norm itself where
+        one of those tests is undecided)."""
         P0, P1 = P
         if not P1:                     # the norm is (a positive multiple of) P₀²: the zeros of P₀
             return self.vanishes_at(P0, rc, k)
-        if not self.vanishes_at(self._norm_of(P0, P1, delta, M), rc, k):
+        zero = None
+        if parts is not None:
+            try:
+                zero = any(self.vanishes_at(h, rc, k) for h in parts)
+            except Undecided:
+                zero = None
+        if zero is None:
+            M, R = norm() if norm is not None else (None, None)
+            zero = self.vanishes_at(self._norm_of(P0, P1, delta, M, R), rc, k)
+        if not zero:
             return False
         if not P1 or self.vanishes_at(P1, rc, k):
             return True
@@ -937,25 +1028,32 @@ class Spectrum:
                 single = self._single_common_root(h, rc)
                 if single is not None:
                     return single
-        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m)
+        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m, make_monic=False)
         if len(G) == 1:
             return False
         if len(G) == 2 or len(G) == 3 and nf.squarefree_quadratic(G, m):
-            return lambda prec: nf.real_roots(G, rc, prec)     # squarefree already: no inverse in Q(rc)
+            # squarefree already: its roots enclosed as it comes (no inverse in Q(rc)), and, where
+            # those enclosures leave the zero test undecided, those of the monic gcd (an inverse)
+            def roots(prec):
+                return nf.real_roots(G, rc, prec)
+            roots.fallback = lambda: _monic_roots(G, m, rc)   # type: ignore[attr-defined]
+            return roots
         G, _ = nf.squarefree(nf.monic(G, m), m)
         return lambda prec: nf.real_roots(G, rc, prec)
 
-    def _norm_of(self, P0, P1, delta, M=None):
+    def _norm_of(self, P0, P1, delta, M=None, R=None):
         """:func:`norm` of P₀ + P₁√Δ, memoised by the identity of the three (the same object
         for the same parts: the exact tests at other points find their work done); ``M``
-        that norm as :func:`norm_mpoly` makes it, when the caller holds it already."""
+        that norm as :func:`norm_mpoly` makes it, when the caller holds it already, ``R`` its
+        resultant (:meth:`_split_norm_resultant`)."""
         key = (id(P0), id(P1), id(delta))
         entry = self._norms.get(key)
         if entry is None or entry[0] is not P0 or entry[1] is not P1 or entry[2] is not delta:
             M = norm_mpoly(P0, P1, delta) if M is None else M
             h = mpoly_to_ring(M)
             if self.lc.degree() <= 0:        # its resultant from M itself (no conversion back)
-                self._resultant_ids[h] = (h, self.resultant(M))     # keyed as _resultant_of keys a ring element
+                R = self.resultant(M) if R is None else R
+                self._resultant_ids[h] = (h, R)     # keyed as _resultant_of keys a ring element
             entry = self._norms[key] = (P0, P1, delta, h)
         return entry[3]
 
@@ -1039,18 +1137,27 @@ class Spectrum:
         branches = self.branches_at(rc)
         if branches is None or branch >= len(branches):
             raise Undecided("branch not isolated at this point")
-        prec = 128
-        while prec <= maxprec:
-            zeros = G(prec)
-            balls = [b(prec) for b in branches]
-            if zeros is not None:
-                mine = balls[branch]
-                others = [b for k, b in enumerate(balls) if k != branch and not b.overlaps(mine)]
-                hit = [z for z in zeros if z.overlaps(mine)]
-                if all(not z.overlaps(o) for z in hit for o in others):
-                    return bool(hit)
-            prec *= 2
+        for zeros_at in _zero_routes(G):
+            prec = 128
+            while prec <= maxprec:
+                zeros = zeros_at(prec)
+                balls = [b(prec) for b in branches]
+                if zeros is not None:
+                    mine = balls[branch]
+                    others = [b for k, b in enumerate(balls) if k != branch and not b.overlaps(mine)]
+                    hit = [z for z in zeros if z.overlaps(mine)]
+                    if all(not z.overlaps(o) for z in hit for o in others):
+                        return bool(hit)
+                prec *= 2
         raise Undecided("zero test undecided")
+
+
+def _union(factor_lists) -> list:
+    """The (factor, text) pairs of several lists of :meth:`Spectrum._factors`, each once, in
+    the order of :func:`poly.irreducible_factors` (by degree, then coefficients): the list
+    the product of those polynomials would have."""
+    seen = {k: f for fl in factor_lists for f, k in fl}
+    return sorted(((f, k) for k, f in seen.items()), key=lambda fk: factor_order((fk[0], 1)))
 
 
 def _lambda_coefficients(G: flint.fmpz_mpoly) -> list[flint.fmpz_poly]:
@@ -1131,6 +1238,22 @@ def _root_ball(sqf, rc, k, isolated=None):
             raise Undecided("the real roots could not be isolated")
         return isolated[max(known)][k]
     return ball
+
+
+def _zero_routes(G):
+    """The enclosures of the common roots (prec -> balls) to try in turn: G itself, then, for
+    a gcd taken as it comes, those of the monic gcd (made once, on first need)."""
+    yield G
+    if getattr(G, "fallback", None) is not None:
+        if getattr(G, "monic", None) is None:
+            G.monic = G.fallback()
+        yield G.monic
+
+
+def _monic_roots(G, m, rc):
+    """prec -> the real roots of G ∈ Q(rc)[λ] (squarefree), enclosed from G made monic."""
+    M = nf.monic(G, m)
+    return lambda prec: nf.real_roots(M, rc, prec)
 
 
 def _conjugate_pair(roots, i: int, j: int) -> bool:

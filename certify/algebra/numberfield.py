@@ -67,13 +67,14 @@ def monic(p, m):
     return [reduce(c * inv, m) for c in p]
 
 
-def gcd(f, g, m) -> list[flint.fmpq_poly]:
+def gcd(f, g, m, make_monic: bool = True) -> list[flint.fmpq_poly]:
     """The monic gcd in Q(α)[λ] (m irreducible, so Q(α) is a field).  Euclid by
     pseudo-remainders (f <- lc(g) f - lc(f) λ^k g: no inverse in Q(α), which costs an
     extended gcd in Q[r] each), each remainder scaled by a rational to keep its
     numbers small; one inverse at the end, none when the gcd is a constant (1).  (Without
     that inverse the roots are the same, but their enclosures from a non-monic gcd left a zero
-    test undecided on r = 0.173's 122-letter attractor.)"""
+    test undecided on r = 0.173's 122-letter attractor.)  ``make_monic=False``: that gcd
+    before the inverse (a multiple of the monic one by a unit of Q(α): the same roots)."""
     f, g = _strip(f), _strip(g)
     while g:
         a = g[0]
@@ -89,7 +90,7 @@ def gcd(f, g, m) -> list[flint.fmpq_poly]:
         return f
     if len(f) == 1:
         return [flint.fmpq_poly(1)]
-    return monic(f, m)
+    return monic(f, m) if make_monic else f
 
 
 def squarefree_quadratic(f, m) -> bool:

@@ -14,6 +14,7 @@ from functools import reduce
 
 import flint
 import sympy as sp
+from flint.utils.flint_exceptions import DomainError
 from sympy.polys.fields import FracElement, field
 from sympy.polys.orderings import lex
 from sympy.polys.rings import PolyElement
@@ -165,6 +166,11 @@ def poly_key(p) -> tuple:
     return tuple(int(c) for c in p.numer().coeffs()), int(p.denom())
 
 
+def factor_order(fm) -> tuple:
+    """The order of :func:`irreducible_factors`: by degree, then coefficients."""
+    return fm[0].degree(), [int(c) for c in fm[0].coeffs()]
+
+
 _FACTORS: dict = {}              # coefficients of p -> its irreducible factors
 caches.register(_FACTORS.clear)
 
@@ -177,10 +183,86 @@ def irreducible_factors(p: flint.fmpz_poly) -> list[tuple[flint.fmpz_poly, int]]
     if out is None:
         _, factors = p.factor()
         out = [(primitive(f), m) for f, m in factors if f.degree() > 0]
-        out = _FACTORS[key] = sorted(out, key=lambda fm: (fm[0].degree(), [int(c) for c in fm[0].coeffs()]))
+        out = _FACTORS[key] = sorted(out, key=factor_order)
         if len(_FACTORS) > 20000:
             _FACTORS.clear()
     return list(out)
+
+
+_PRIME = 2 ** 61 - 1             # a word-size prime for the trial divisions of irreducible_factors_knowing
+
+
+@caches.by_identity
+def _mod_prime(f: flint.fmpz_poly) -> flint.nmod_poly:
+    """f modulo the prime, memoised by identity (the known factors of a spectrum recur)."""
+    return flint.nmod_poly(f.coeffs(), _PRIME)
+
+
+def _multiplicity_mod_prime(pm, fm) -> tuple:
+    """(m, pm / fm^m): the largest m with fm^m | pm in GF(p)[r] (nmod_poly), by divisions by
+    fm, fm², fm⁴, ... and back down (about 2 log₂ m divisions, not m)."""
+    q, rem = divmod(pm, fm)
+    if not rem.is_zero():
+        return 0, pm
+    pm, m = q, 1
+    powers = [(fm, 1)]
+    while 2 * powers[-1][0].degree() <= pm.degree():
+        powers.append((powers[-1][0] * powers[-1][0], 2 * powers[-1][1]))
+    for pw, s in reversed(powers):
+        while pm.degree() >= pw.degree():
+            q, rem = divmod(pm, pw)
+            if not rem.is_zero():
+                break
+            pm, m = q, m + s
+    return m, pm
+
+
+def irreducible_factors_knowing(p: flint.fmpz_poly, known: list) -> tuple[list, list]:
+    """:func:`irreducible_factors` of ``p`` (the same factors, multiplicities and order) when
+    ``known`` lists irreducible primitive polynomials (from python-flint's factorisations of
+    other polynomials).  The multiplicity m_f of each known f is first read modulo a prime
+    (an upper bound of the true one: f^m | p over Z gives it modulo the prime), then f^m_f
+    is divided out of p exactly over Z (python-flint's exact division; where one is not
+    exact the bound was too high, and p is factored whole instead).  When every division
+    is exact, m_f is the true multiplicity (f^m_f | p), and by unique factorisation in Z[r]
+    the factors of p are the known f with m_f > 0 and those of the cofactor, the only
+    polynomial python-flint factors.  Returns (factors, the factors not known before).
+
+    >>> r2 = flint.fmpz_poly([1, -10, 1])                   # r² - 10r + 1
+    >>> p = flint.fmpz_poly([0, 1]) ** 3 * r2 ** 2 * flint.fmpz_poly([-2, 0, 1])
+    >>> irreducible_factors_knowing(p, [flint.fmpz_poly([0, 1]), r2]) == (irreducible_factors(p),
+    ...                                                                    [flint.fmpz_poly([-2, 0, 1])])
+    True"""
+    pm = flint.nmod_poly(p.coeffs(), _PRIME)
+    found = []
+    for f in known:
+        fm = _mod_prime(f)
+        if fm.degree() != f.degree() or fm.degree() > pm.degree():
+            continue                         # (a leading coefficient divisible by the prime: not stripped)
+        m, pm = _multiplicity_mod_prime(pm, fm)
+        if m:
+            found.append((f, m))
+    rest = p
+    try:
+        for f, m in found:
+            rest = rest / f ** m             # exact division, or DomainError
+    except DomainError:
+        return _factored(p, known)
+    new = _factored(rest, [])[0] if rest.degree() > 0 else []
+    return sorted(found + new, key=factor_order), [f for f, _m in new]
+
+
+def _factored(p: flint.fmpz_poly, known: list) -> tuple[list, list]:
+    """(python-flint's factors of p, primitive, sorted, each the very object of ``known``
+    where it is one of them; the others)."""
+    _, factors = p.factor()
+    out = []
+    for f, m in factors:
+        if f.degree() > 0:
+            f = primitive(f)
+            out.append((next((k for k in known if k == f), f), m))
+    out.sort(key=factor_order)
+    return out, [f for f, _m in out if not any(f is k for k in known)]
 
 
 def _show_integer_poly(p: flint.fmpz_poly) -> str:

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
+from certify import caches
 from certify.algebra import facts
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import (
@@ -79,6 +80,7 @@ class FixedPointData:
     amd: object                 # polynomials of the engine's ring
     c: object
     delta: object
+    b: object = None            # b modulo cp (the split of the numerator's norm, :func:`_norm_split`)
 
 
 def fixed_point_data(abcd, cp) -> list[FixedPointData]:
@@ -86,7 +88,25 @@ def fixed_point_data(abcd, cp) -> list[FixedPointData]:
     amd = mod_cp(a - d, cp)
     delta = mod_cp((a - d) ** 2 + 4 * b * c, cp)
     cc = mod_cp(c, cp)
-    return [FixedPointData(X_PLUS, 1, amd, cc, delta), FixedPointData(X_MINUS, -1, amd, cc, delta)]
+    bb = mod_cp(b, cp)
+    return [FixedPointData(X_PLUS, 1, amd, cc, delta, bb), FixedPointData(X_MINUS, -1, amd, cc, delta, bb)]
+
+
+def _norm_split(n0, d0, n1, d1, A, c, b, C) -> tuple:
+    """((g, Q), (d₀, d₁)) with N₀² - N₁²Δ ≡ 4c·g²·Q and D₀ ≡ 2c·d₀d₁ modulo cp, for N₀ =
+    2c n₀d₁ + A n₁d₀, N₁ = ±n₁d₀, D₀ = 2c d₀d₁ (:func:`condition`, A = a - d): with Δ = A² + 4bc,
+    N₀² - N₁²Δ = 4c(c n₀²d₁² + A n₀n₁d₀d₁ - b n₁²d₀²), and with g = gcd(d₀, d₁), d₀ = g e₀,
+    d₁ = g e₁, the bracket is g²(c n₀²e₁² + A n₀n₁e₀e₁ - b n₁²e₀²) = g²Q (fmpq_mpoly in (λ, r),
+    reduced modulo cp).  The same for both fixed points (nothing depends on the sign of √Δ)."""
+    g = d0.gcd(d1)
+    e0, e1 = divmod(d0, g)[0], divmod(d1, g)[0]
+    Q = c * n0 * n0 * e1 * e1 + A * n0 * n1 * e0 * e1 - b * n1 * n1 * e0 * e0
+    return (divmod(g, C)[1], divmod(Q, C)[1]), (divmod(d0, C)[1], divmod(d1, C)[1])
+
+
+# ring_to_lrq memoised by identity: a requirement's parts and a fixed point's a - d, b, c are
+# converted once, not for every table and point (the flint polynomials are never changed in place)
+_lrq = caches.by_identity(ring_to_lrq)
 
 
 def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=None) -> Condition:
@@ -96,9 +116,9 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
     (fmpq_mpoly in λ, r): the same polynomials as in SymPy's ring."""
     C = cp if isinstance(cp, flint.fmpq_mpoly) else ring_to_lrq(to_ring(cp))
     G0, G1 = req.G
-    n0, d0, n1, d1 = (ring_to_lrq(e) for e in (G0.numer, G0.denom, G1.numer, G1.denom))
+    n0, d0, n1, d1 = (_lrq(e) for e in (G0.numer, G0.denom, G1.numer, G1.denom))
     zero = n0 - n0
-    delta = c = None
+    delta = c = split = None
     if not req.has_x:
         N0, N1, D0 = n0, zero, d0
     elif x_value is not None:                               # x = X0/X1
@@ -106,11 +126,14 @@ def condition(req: Requirement, cp, fp: FixedPointData | None = None, x_value=No
         xn, xd = ring_to_lrq(X.numer), ring_to_lrq(X.denom)
         N0, N1, D0 = n0 * d1 * xd + n1 * d0 * xn, zero, d0 * d1 * xd
     else:                                                   # g = (n0 d1 + x n1 d0)/(d0 d1)
-        A, cc = ring_to_lrq(fp.amd), ring_to_lrq(fp.c)
+        assert fp is not None, "a condition with x needs its fixed point or x_value"
+        A, cc = _lrq(fp.amd), _lrq(fp.c)
         N0, N1, D0 = 2 * cc * n0 * d1 + A * n1 * d0, fp.sigma * n1 * d0, 2 * cc * d0 * d1
         delta, c = fp.delta, fp.c
+        if fp.b is not None and not n1.is_zero():
+            split = _norm_split(n0, d0, n1, d1, A, cc, _lrq(fp.b), C)
     N0, N1, D0 = (divmod(e, C)[1] for e in (N0, N1, D0))
-    return Condition(req.name, None, None, delta, c, lrq=(N0, N1, D0))
+    return Condition(req.name, None, None, delta, c, lrq=(N0, N1, D0), split=split)
 
 
 def _twin(cond: Condition, name: str) -> Condition:
@@ -119,7 +142,7 @@ def _twin(cond: Condition, name: str) -> Condition:
     σN₁, D₀ are linear in σ); the terms of N₀, D₀ and Δ shared, those of N₁ negated."""
     N0, N1, D0 = cond._lrq
     terms = dict(cond.terms, N1=[(-c, i, j) for c, i, j in cond.terms["N1"]])     # the terms of -N₁
-    return Condition(name, None, None, cond.delta, cond.c, lrq=(N0, -N1, D0), terms=terms)
+    return Condition(name, None, None, cond.delta, cond.c, lrq=(N0, -N1, D0), terms=terms, split=cond.split)
 
 
 def vanishes_on_branch(spec: Spectrum, g, rc: Algebraic, branch: int) -> bool:

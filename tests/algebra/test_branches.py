@@ -852,6 +852,63 @@ def test_exact_zero_tests_agree_with_the_gcd_in_the_number_field(monkeypatch):
     assert {a for a, _ in answers} == {True, False}
 
 
+def test_the_gcd_as_it_comes_and_the_monic_gcd_give_the_same_zero_tests(monkeypatch):
+    """Route 3 of _common_roots encloses the roots of the gcd in Q(rc)[λ] as it comes (no inverse
+    in Q(rc)), and those of the monic gcd only where these leave the test undecided.  With the
+    resultant hidden (every test goes to the gcd), three spectra agree on every zero test of the
+    conditions with √Δ of (ab)^2(cb)^2 at the critical values of their tables: the plain one,
+    one whose enclosures of a gcd as it comes always fail (the monic gcd decides every test
+    then), and one without the monic fallback (what the gcd as it comes decides alone must
+    be the same; where it decides nothing the test is Undecided, never another answer)."""
+    from certify.algebra import numberfield as nf
+    from certify.algebra.poly import mpoly_to_ring
+    from certify.dynamics.systems import candidate_in
+    from certify.errors import Undecided
+    from certify.patterns.feasibility import condition, fixed_point_data, prefix_requirements
+    cand = candidate_in("four", "ababcbcb")
+    base = cand.spectrum
+    plain, monic_only, raw_only = (Spectrum(base.cp, base.ring_cp) for _ in range(3))
+    for spec in (plain, monic_only, raw_only):
+        monkeypatch.setattr(spec, "resultant", lambda g: flint.fmpz_poly(0))
+    real_roots, used = nf.real_roots, []
+
+    def common_roots(spec, mode):
+        own = spec._common_roots
+
+        def patched(h, rc):
+            G = own(h, rc)
+            if callable(G) and getattr(G, "fallback", None) is not None:
+                if mode == "monic":
+                    def failing(prec):
+                        used.append(prec)
+                        return None
+                    failing.fallback = G.fallback
+                    return failing
+                G.fallback = None
+            return G
+        return patched
+    monkeypatch.setattr(monic_only, "_common_roots", common_roots(monic_only, "monic"))
+    monkeypatch.setattr(raw_only, "_common_roots", common_roots(raw_only, "raw"))
+    reqs, _ = prefix_requirements("ababcbcb", 8, cand.q0, cand.steps, cand.q0_other)
+    fps = fixed_point_data(cand.abcd_ring, base.ring_cp)
+    conds = [condition(req, base.lrq_cp, fp) for req in reqs if req.has_x for fp in fps]
+    answers = []
+    for cond in conds:
+        hs = [cond.N[0], cond.D[0]] + [mpoly_to_ring(e) for e in cond.norms()]
+        for rc in base.critical_values(cond, 0, 1):
+            for k in range(len(base.branches_at(rc) or [])):
+                for h in hs:
+                    if h:
+                        a, b = plain.vanishes_at(h, rc, k), monic_only.vanishes_at(h, rc, k)
+                        try:
+                            c = raw_only.vanishes_at(h, rc, k)
+                        except Undecided:
+                            c = a
+                        answers.append((a, b, c))
+    assert answers and all(a == b == c for a, b, c in answers)
+    assert used and nf.real_roots is real_roots
+
+
 # --- the fast paths of the sign tables (speed of `certify pattern`) agree with the plain ones
 def test_horner_form_encloses_the_exact_value():
     """The Horner form of a condition's terms, evaluated at balls around rational r, λ,

@@ -64,3 +64,70 @@ def test_fraction_tree_is_the_fraction_and_refuses_what_it_cannot_read():
     assert poly.fraction_tree(sp.Pow(r - r, -1, evaluate=False), leaf, rational) is None    # 0 to a negative power
     assert poly.fraction_tree(sp.sqrt(r), leaf, rational) is None
     assert poly.fraction_tree(lam + 1, leaf, rational) is None                               # not a leaf
+
+
+# --- irreducible_factors_knowing: known factors divided out, the rest factored -----------
+
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from certify.algebra.poly import irreducible_factors_knowing  # noqa: E402
+
+_SETTINGS = dict(deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+# the factors that recur in the resultants of (ab)^n(cb)^n, and a few others
+_RECURRING = [[0, 1], [1, 1], [-1, 1], [1, -10, 1], [1, -6, 1], [1, -12, -10, -12, 1], [-2, 0, 1], [3, 2], [1, 0, 0, 1]]
+
+
+def _flint_factors(p):
+    """python-flint's full factorisation, as irreducible_factors gives it (no memo)."""
+    _, fs = p.factor()
+    return sorted([(poly.primitive(f), m) for f, m in fs if f.degree() > 0], key=poly.factor_order)
+
+
+@st.composite
+def _products(draw):
+    """A product of powers of recurring and random polynomials, and a list of 'known' ones:
+    the irreducible factors of some of them (as a spectrum learns them), in any order."""
+    pieces = draw(st.lists(st.one_of(st.sampled_from(_RECURRING),
+                                     st.lists(st.integers(-9, 9), min_size=2, max_size=6)), min_size=1, max_size=6))
+    exps = draw(st.lists(st.integers(1, 40), min_size=len(pieces), max_size=len(pieces)))
+    p = flint.fmpz_poly([draw(st.integers(-6, 6).filter(bool))])
+    for c, e in zip(pieces, exps):
+        f = flint.fmpz_poly(c)
+        if f.degree() > 0:
+            p *= f ** e
+    seen = [f for c in draw(st.lists(st.sampled_from(pieces))) for f, _m in _flint_factors(flint.fmpz_poly(c))]
+    known = list({str(f): f for f in draw(st.permutations(seen))}.values())
+    return p, known
+
+
+@settings(max_examples=150, **_SETTINGS)
+@given(_products())
+def test_known_factors_give_flint_factorisation(case):
+    """The factors, multiplicities and order of python-flint's full factorisation, whatever is
+    known; the new factors are exactly those not known, and the known ones are returned as
+    the very objects given."""
+    p, known = case
+    got, new = irreducible_factors_knowing(p, known)
+    assert got == _flint_factors(p)
+    assert [str(f) for f in new] == [str(f) for f, _m in got if f not in known]
+    for f, _m in got:
+        assert f not in known or any(f is k for k in known)
+
+
+def test_a_known_factor_that_is_not_irreducible_is_caught_by_the_comparison():
+    """The shortcut trusts that the known factors are irreducible: given a reducible one it
+    returns a factorisation that python-flint's disagrees with (what the test above checks)."""
+    r1, r2 = flint.fmpz_poly([-1, 1]), flint.fmpz_poly([1, 1])
+    p = r1 ** 3 * r2 ** 2
+    got, _new = irreducible_factors_knowing(p, [r1 * r2])
+    assert got != _flint_factors(p)
+
+
+def test_a_multiplicity_too_high_modulo_the_prime_falls_back_to_the_full_factorisation():
+    """r - (2^61 - 1) ≡ r modulo the prime: r seems to divide it, the exact division refuses,
+    and the whole polynomial is factored (the right answer, r not among the factors)."""
+    big = flint.fmpz_poly([-(2 ** 61 - 1), 1])
+    p = big ** 2 * flint.fmpz_poly([1, -10, 1])
+    got, new = irreducible_factors_knowing(p, [flint.fmpz_poly([0, 1])])
+    assert got == _flint_factors(p) and flint.fmpz_poly([0, 1]) not in [f for f, _m in got]

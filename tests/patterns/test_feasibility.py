@@ -84,6 +84,73 @@ def test_numerator_norm_of_the_conditions_with_x():
                 assert M == norm_mpoly(*cond.N, cond.delta)
 
 
+@pytest.mark.parametrize("word", ["ababcbcb", "acb", "abacbc", "(ab)^3(cb)^3"])
+def test_the_split_norm_gives_the_critical_values_of_the_norm(word):
+    """condition() splits the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q modulo cp; the critical
+    values read from the parts c, g, Q (Condition.critical_norms) are those read from the norm
+    itself: for every requirement with x and both fixed points, a fresh Spectrum given the
+    condition without its split finds the same critical values over ]0, 1[, and where no
+    part's resultant vanishes, Res(norm) ∝ Res(c)·Res(g)²·Res(Q).  (acb: Q ≡ 0 modulo cp,
+    the norm's resultant vanishes: the degenerate route of the norm itself.)"""
+    from certify.algebra.branches import Condition, Spectrum, _integer_delta, _lrq_to_mpoly
+    from certify.algebra.poly import primitive
+    from certify.dynamics.systems import candidate_in
+    from certify.patterns.feasibility import condition, fixed_point_data
+    from certify.patterns.periodic import read
+    normal = read(word)[0]
+    c = candidate_in("four", normal)
+    reqs, _ = prefix_requirements(normal, len(normal), c.q0, c.steps, c.q0_other)
+    split = plain = 0
+    for q in [q for q in reqs if q.has_x]:
+        for f in fixed_point_data(c.abcd_ring, c.spectrum.ring_cp):
+            cond = condition(q, c.spectrum.lrq_cp, f)
+            bare = Condition(cond.name, None, None, cond.delta, cond.c, lrq=cond._lrq)
+            S1, S2 = Spectrum(c.cp, c.spectrum.ring_cp), Spectrum(c.cp, c.spectrum.ring_cp)
+            assert cond.split is not None and bare.split is None
+            assert S1.critical_values(cond, 0, 1) == S2.critical_values(bare, 0, 1)
+            Rc, Rg, RQ, R0, R1 = (S1.resultant(p) for p in [_integer_delta(cond.c)[0]] +
+                                  [_lrq_to_mpoly(x)[0] for x in cond.split[0] + cond.split[1]])
+            assert primitive(Rc * R0 * R1) == S2.resultant(dict(bare.labelled_norms())["D"])
+            # the exact zero test's resultant of the norm, from the split (Spectrum._split_norm_resultant)
+            assert S1._split_norm_resultant(cond) == S2.resultant(dict(bare.labelled_norms())["N"])
+            if not any(R.is_zero() for R in (Rc, Rg, RQ)):
+                norm = dict(bare.labelled_norms())["N"]
+                assert primitive(Rc * Rg * Rg * RQ) == S2.resultant(norm)
+                split += 1
+            else:
+                plain += 1
+    assert split and (plain or word != "acb")
+
+
+def test_the_norm_vanishes_where_a_part_of_its_split_does():
+    """The exact zero test of the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q (Spectrum._root_with_sqrt
+    without a recording) tests c, g and Q: at every critical value of every condition with x,
+    on every branch, some part vanishes exactly where the norm does (the norm's own test on a
+    fresh Spectrum), over a few words, and both answers occur."""
+    from certify.algebra.branches import Spectrum
+    from certify.algebra.poly import mpoly_to_ring
+    from certify.dynamics.systems import candidate_in
+    from certify.patterns.feasibility import condition, fixed_point_data
+    from certify.patterns.periodic import read
+    answers = []
+    for word in ("ababcbcb", "acb", "ababcb", "abcbacbcab", "(ab)^3(cb)^3"):
+        normal = read(word)[0]
+        c = candidate_in("four", normal)
+        reqs, _ = prefix_requirements(normal, len(normal), c.q0, c.steps, c.q0_other)
+        for q in [q for q in reqs if q.has_x]:
+            for f in fixed_point_data(c.abcd_ring, c.spectrum.ring_cp):
+                cond = condition(q, c.spectrum.lrq_cp, f)
+                S1, S2 = Spectrum(c.cp, c.spectrum.ring_cp), Spectrum(c.cp, c.spectrum.ring_cp)
+                parts = S1._split_ring_parts(cond)
+                norm = mpoly_to_ring(cond.numerator_norm())
+                for rc in S1.critical_values(cond, 0, 1):
+                    for k in range(len(S1.branches_at(rc) or [])):
+                        answers.append((word, any(S1.vanishes_at(h, rc, k) for h in parts),
+                                        S2.vanishes_at(norm, rc, k)))
+    assert [a for a in answers if a[1] != a[2]] == []
+    assert {a[1] for a in answers} == {True, False}
+
+
 @pytest.mark.parametrize("word", ["ababacbabacb", "abcb"])
 def test_the_route_without_a_recording_certifies_the_same_sets(monkeypatch, word):
     # without a certificate being recorded, points are signed on the branch read only
