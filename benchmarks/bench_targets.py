@@ -1,6 +1,7 @@
 """The speed targets of issue 26: the engine against a plain SymPy script, in one sitting.
 
     python benchmarks/bench_targets.py [--repeat N] [--long] [--all]
+    python -m certify bench --targets [--repeat N] [--long]      (= --all: also writes reports/BENCH.md)
 
 The yardstick (:func:`algebra`) is a plain SymPy script doing the core of ``certify
 pattern``'s algebra on a word: M_w = K_{c_L} ··· K_{c_1} (expanded after each letter),
@@ -33,6 +34,7 @@ if str(ROOT) not in sys.path:  # run as a script from a source checkout
     sys.path.insert(0, str(ROOT))
 
 from certify.patterns.periodic import read  # noqa: E402
+from certify.run import files  # noqa: E402
 
 TARGETS = (("orbit", "abacbabcbabcbabcabacbcabcbabcbabcbacbc"), ("pattern", "(ab)^6(cb)^6"))
 LONG = ("orbit", "(abacbc)^5a(bcabac)^4bc(ab)^2(cbcaba)^5c(bacbca)^4ba(cb)^2")     # r = 0.173's attractor
@@ -86,31 +88,45 @@ def median_seconds(f, repeat: int) -> float:
     return statistics.median(times)
 
 
+TARGET_RATIOS = {"orbit": 1.2, "pattern": 0.6, "all": 3.0}      # issue 26's ceilings (ratios to the script)
+
+
 def main(argv=None) -> int:
+    """Time the targets, print one line each; with ``--all`` (``certify bench --targets``) also
+    write the section "targets (issue 26)" of reports/BENCH.md."""
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--long", action="store_true", help="also orbit on the 122-letter word (minutes)")
     ap.add_argument("--all", action="store_true", help="also the whole `python -m certify all` (fresh processes, "
-                    "benchmarks/bench.py's time_command) against the script on the 38-letter word")
+                    "benchmarks/bench.py's time_command) against the script on the 38-letter word; writes BENCH.md")
     args = ap.parse_args(argv)
-    scripts = {}
+    from benchmarks.bench import BENCH, machine, time_command
+    scripts, rows = {}, []
+
+    def row(what: str, eng: float, ref: float, yardstick: str, target: float | None) -> None:
+        met = "" if target is None else ("met" if eng / ref <= target else "**not met**") + f" (≤ {target}×)"
+        rows.append(f"| {what} | {eng:.2f} | {yardstick} | {ref:.2f} | {eng / ref:.2f}× | {met} |")
+        print(f"{what}: {eng:.2f} s, ratio {eng / ref:.2f} to the script on {yardstick} ({ref:.2f} s; medians of "
+              f"{args.repeat})", flush=True)
     for kind, word in TARGETS + ((LONG,) if args.long else ()):
         ref = scripts[word] = median_seconds(lambda w=word: algebra(w), args.repeat)
         eng = median_seconds(lambda k=kind, w=word: engine(k, w), args.repeat)
-        print(f"{kind} {word}: script {ref:.2f} s, engine {eng:.2f} s, ratio {eng / ref:.2f} "
-              f"(medians of {args.repeat})", flush=True)
-    from benchmarks.bench import time_command
-    pattern_word = next(w for kind, w in TARGETS if kind == "pattern")
+        row(f"`{kind}` {word}, analysis in process", eng, ref, word,
+            TARGET_RATIOS["orbit"] if (kind, word) == TARGETS[0] else None)
+    long_word, pattern_word = TARGETS[0][1], TARGETS[1][1]
     eng = statistics.median(time_command(args.repeat, ["pattern", pattern_word]))
-    ref, own = scripts[TARGETS[0][1]], scripts[pattern_word]
-    print(f"certify pattern {pattern_word} (whole command): {eng:.2f} s, ratio {eng / ref:.2f} to the script on "
-          f"{TARGETS[0][1]} ({ref:.2f} s), {eng / own:.2f} to the script on {pattern_word} ({own:.2f} s; "
-          f"medians of {args.repeat})", flush=True)
+    command = f"`certify pattern {pattern_word}`, whole command"
+    row(command, eng, scripts[long_word], long_word, TARGET_RATIOS["pattern"])
+    row(command, eng, scripts[pattern_word], pattern_word, None)
     if args.all:
-        ref = scripts[TARGETS[0][1]]
         eng = statistics.median(time_command(args.repeat))
-        print(f"certify all (whole command): {eng:.2f} s, ratio {eng / ref:.2f} to the script on "
-              f"{TARGETS[0][1]} ({ref:.2f} s; medians of {args.repeat})", flush=True)
+        row("`certify all`, whole command", eng, scripts[long_word], long_word, TARGET_RATIOS["all"])
+        table = ["| target | s | the script on | script s | ratio | issue 26 |", "|---|---:|---|---:|---:|---|"]
+        files.write_section(BENCH, "targets (issue 26)", "\n".join([
+            f"Measured by `python -m certify bench --targets --repeat {args.repeat}` on {machine()}, in one run: "
+            "each target against a plain SymPy script of `pattern`'s algebra (benchmarks/bench_targets.py), "
+            "medians; engines from cold caches, whole commands in fresh processes.", "", *table, *rows]))
+        print(f"wrote {BENCH} (section 'targets (issue 26)')")
     return 0
 
 

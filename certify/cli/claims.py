@@ -196,9 +196,12 @@ def load_bench(name: str = "bench"):
 
 def cmd_bench(args) -> int:
     """Time the whole run (benchmarks/bench.py), or with --reduction the exact
-    simulator and reduction map against bit growth (benchmarks/bench_reduction.py)."""
+    simulator and reduction map against bit growth (benchmarks/bench_reduction.py), or with
+    --targets issue 26's targets against the plain script (benchmarks/bench_targets.py)."""
     if args.numerics:
         return load_bench("bench_numerics").main(["--quick"] * args.quick)
+    if args.targets:
+        return load_bench("bench_targets").main(["--all", "--repeat", str(args.repeat)] + ["--long"] * args.long)
     if args.reduction:
         return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
     if args.patterns:      # pattern (ab)^n(cb)^n for n = 2..12, then the census for L = 8..16
@@ -244,12 +247,17 @@ def register(commands) -> None:
     p = add_command(commands, "bench", cmd_bench, help="time the whole run",
                     description="Time `certify all` (benchmarks/bench.py: serial, on every core, and the whole "
                     "command; writes reports/BENCH.md), or instead the exact simulator and reduction map "
-                    "(--reduction), the numerical engines (--numerics), or pattern and the census (--patterns).")
+                    "(--reduction), the numerical engines (--numerics), pattern and the census (--patterns), "
+                    "or issue 26's targets against a plain SymPy script (--targets).")
     p.add_argument("--repeat", type=positive_int, default=5, metavar="N",
                    help="number of runs (default: 5)")
     p.add_argument("--reduction", action="store_true",
                    help="time the exact simulator and reduction map instead (benchmarks/bench_reduction.py)")
-    p.add_argument("--long", action="store_true", help="with --reduction: also 10^4 collisions, 10^5 steps")
+    p.add_argument("--long", action="store_true", help="with --reduction: also 10^4 collisions, 10^5 steps; with "
+                   "--targets: also `orbit` on the 122-letter word")
+    p.add_argument("--targets", action="store_true",
+                   help="time issue 26's targets (orbit, pattern and all against a plain SymPy script, in one run; "
+                   "benchmarks/bench_targets.py) instead, and write them to reports/BENCH.md")
     p.add_argument("--patterns", action="store_true",
                    help="time `pattern (ab)^n(cb)^n` for n = 2..12 and the census for L = 8..16 instead "
                         "(benchmarks/bench_patterns.py, bench_census.py; about an hour)")
