@@ -224,7 +224,9 @@ def irreducible_factors_knowing(p: flint.fmpz_poly, known: list) -> tuple[list, 
     (an upper bound of the true one: f^m | p over Z gives it modulo the prime), then f^m_f
     is divided out of p exactly over Z (python-flint's exact division; where one is not
     exact the bound was too high, and p is factored whole instead).  When every division
-    is exact, m_f is the true multiplicity (f^m_f | p), and by unique factorisation in Z[r]
+    is exact, m_f is the true multiplicity (by induction along ``known``: the earlier ones
+    took out exactly their own powers, so f's count modulo the prime is still at least its
+    true one, and at most, f^m_f dividing p), and by unique factorisation in Z[r]
     the factors of p are the known f with m_f > 0 and those of the cofactor, the only
     polynomial python-flint factors.  Returns (factors, the factors not known before).
 
