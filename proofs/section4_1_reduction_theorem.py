@@ -30,6 +30,7 @@ q_i > 0 (the pair separates), and a second datum (α p, β q + γ p) spanning th
 from __future__ import annotations
 
 import random
+import re
 from dataclasses import dataclass
 
 import flint
@@ -841,8 +842,13 @@ def reduction_scan() -> list[ScanOrbit]:
 
 
 def occurrences(words, pattern: str) -> int:
-    """Occurrences of ``pattern`` as consecutive collisions (overlaps counted)."""
-    return sum(sum(w.startswith(pattern, k) for k in range(len(w))) for w in words)
+    """Occurrences of ``pattern`` as consecutive collisions (overlaps counted): the positions k
+    of a word w with w.startswith(pattern, k), found by a lookahead (which matches the empty
+    text at every k, the end of w included: not counted for an empty pattern)."""
+    if not pattern:
+        return sum(map(len, words))
+    ahead = re.compile(f"(?={re.escape(pattern)})")
+    return sum(len(ahead.findall(w)) for w in words)
 
 
 # ---------------------------------------------------------------- S11

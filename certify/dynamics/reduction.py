@@ -406,9 +406,24 @@ def vectorial_ray(letter: str, u, r) -> tuple[str, tuple]:
     if s == 0:
         raise Corner("cos φ = 0: the orbit heads for a corner")
     j = LETTERS[(i + 1) % 3] if s > 0 else LETTERS[(i + 2) % 3]
-    p1 = cross(u, E[INDEX[j]])
-    q0 = cross(u, cross(E[i], u))
-    return j, cross(p1, collide_integral(j, q0, r))
+    return j, cross(_wedge_unit(u, INDEX[j]), collide_integral(j, _around(u, i), r))
+
+
+def _wedge_unit(u, j: int) -> tuple:
+    """u ∧ e_j, written out: the same integers as ``cross(u, E[j])``."""
+    u0, u1, u2 = u
+    zero = u0 - u0
+    return (zero, u2, -u1) if j == 0 else (-u2, zero, u0) if j == 1 else (u1, -u0, zero)
+
+
+def _around(u, i: int) -> tuple:
+    """u ∧ (e_i ∧ u) = |u|² e_i − u_i u, written out: the same integers as
+    ``cross(u, cross(E[i], u))`` (the double cross product expanded)."""
+    u0, u1, u2 = u
+    ui = u[i]
+    out = [-ui * u0, -ui * u1, -ui * u2]
+    out[i] = u0 * u0 + u1 * u1 + u2 * u2 - ui * ui
+    return tuple(out)
 
 
 def same_ray(v, w) -> bool:
@@ -417,7 +432,10 @@ def same_ray(v, w) -> bool:
     for k in range(3):
         if w[k] != 0:
             vk, wk = v[k], w[k]
-            return (vk > 0) == (wk > 0) and vk != 0 and all(v[m] * wk == vk * w[m] for m in range(3) if m != k)
+            if (vk > 0) != (wk > 0) or vk == 0:
+                return False
+            j, m = (k + 1) % 3, (k + 2) % 3
+            return v[j] * wk == vk * w[j] and v[m] * wk == vk * w[m]
     return False
 
 
