@@ -564,7 +564,8 @@ def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
     overlapping P1's (:func:`angles` at ``prec`` bits), and at how many a sign was
     undecided.  The same ball operations as :func:`trig_step` and :func:`angles`, in one
     precision context and with the balls of r, −r and (1 + r)/2 formed once (each state's
-    angles are computed once: they end one step and start the next)."""
+    angles are computed once: they end one step and start the next), the angles kept as
+    tuples (letter, cos θ, sin θ, cos φ, sin φ) rather than :class:`Angles`."""
     agree = undecided = 0
     arb, fmpz = flint.arb, flint.fmpz
     with precision(prec):
@@ -574,9 +575,9 @@ def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
         for P, P1 in zip(planes, planes[1:]):
             try:
                 if last is None or last[0] is not P:
-                    last = (P, _angles(P, fmpz))
+                    last = (P, _angles(P, fmpz, arb))
                 T = last[1]
-                X = _angles(P1, fmpz)
+                X = _angles(P1, fmpz, arb)
                 last = (P1, X)
                 agree += _trig_agrees(T, X, P1.letter, neg, h, arb)
             except Undecided:
@@ -584,12 +585,36 @@ def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
     return agree, undecided
 
 
-def _angles(P: Plane, fmpz) -> Angles:
-    """:func:`angles` at the working precision."""
-    n = P.n
-    if type(n[0]) is fmpz and type(n[1]) is fmpz and type(n[2]) is fmpz:
-        return _angles_orthogonal(P.letter, *_position_tangent(P.letter, n))
-    return angles_of(P.letter, position(P), tangent(P))
+def _angles(P: Plane, fmpz, arb) -> tuple:
+    """:func:`angles` at the working precision, as (letter, cos θ, sin θ, cos φ, sin φ): for an
+    integer normal, :func:`_position_tangent` then :func:`_angles_orthogonal`, written out
+    (the same integers and the same ball operations, in the same order)."""
+    letter, n = P.letter, P.n
+    n0, n1, n2 = n
+    if not (type(n0) is fmpz and type(n1) is fmpz and type(n2) is fmpz):
+        A = angles_of(letter, position(P), tangent(P))
+        return letter, A.ct, A.st, A.cp, A.sp
+    i = INDEX[letter]
+    j, k = NEXT[i]
+    p = [0, 0, 0]
+    p[j], p[k] = n[k], -n[j]
+    s, t = (p[j] > 0) - (p[j] < 0), (p[k] > 0) - (p[k] < 0)
+    if s != t or s == 0:
+        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
+    if s < 0:
+        p[j], p[k] = -p[j], -p[k]
+    ni = n[i]
+    w = [-ni * n0, -ni * n1, -ni * n2]
+    w[i] = n0 * n0 + n1 * n1 + n2 * n2 - ni * ni
+    p0, p1, p2 = p
+    q0, q1, q2 = w
+    pp = p0 * p0 + p1 * p1 + p2 * p2
+    w0, w1, w2 = arb(pp * q0), arb(pp * q1), arb(pp * q2)
+    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
+    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
+    ct, st = (c * p1, c * p2) if i == 0 else (c * p2, c * p0) if i == 1 else (c * p0, c * p1)
+    e0, e1, e2 = Q0[letter](ct, st, 1, 0)               # e_theta
+    return letter, ct, st, (d * w0) * e0 + (d * w1) * e1 + (d * w2) * e2, d * (w0, w1, w2)[i]
 
 
 def _angles_orthogonal(letter: str, p, w) -> Angles:
@@ -608,10 +633,11 @@ def _angles_orthogonal(letter: str, p, w) -> Angles:
     return Angles(letter, ct, st, (d * w0) * e0 + (d * w1) * e1 + (d * w2) * e2, d * (w0, w1, w2)[INDEX[letter]])
 
 
-def _trig_agrees(T: Angles, X: Angles, letter: str, neg, h, arb) -> bool:
-    """:func:`trig_step` from T (with the balls −r and (1 + r)/2 given), compared with X:
-    the same contact and every ball overlapping."""
-    cp = T.cp
+def _trig_agrees(T: tuple, X: tuple, letter: str, neg, h, arb) -> bool:
+    """:func:`trig_step` from the angles T (with the balls −r and (1 + r)/2 given), compared with
+    the angles X (tuples of :func:`_angles`): the same contact and every ball overlapping.  The
+    angles of the step are :func:`angles_of`'s, written out (the same ball operations)."""
+    letter0, ct, st, cp, sp = T
     if cp > 0:
         s = 1
     elif cp < 0:
@@ -620,15 +646,14 @@ def _trig_agrees(T: Angles, X: Angles, letter: str, neg, h, arb) -> bool:
         raise Corner("cos φ = 0")
     else:
         raise Undecided(f"sign of {cp} undecided")
-    j, p1 = CASES[(T.letter, s)]
+    j, p1 = CASES[(letter0, s)]
     if j != letter:
         return False
-    ct, st, sp = T.ct, T.st, T.sp
     x0, x1, x2 = p1(ct, st, cp, sp)
     x0, x1, x2 = arb(x0), arb(x1), arb(x2)
     c = 1 / (x0 * x0 + x1 * x1 + x2 * x2).sqrt()
     x0, x1, x2 = c * x0, c * x1, c * x2
-    q1, q2, q3 = Q0[T.letter](ct, st, cp, sp)
+    q1, q2, q3 = Q0[letter0](ct, st, cp, sp)
     if j == "a":
         k0, k1, k2 = neg * q1, q2 + h * q1, q3
     elif j == "b":
@@ -636,8 +661,19 @@ def _trig_agrees(T: Angles, X: Angles, letter: str, neg, h, arb) -> bool:
     else:
         k0, k1, k2 = q1, q2 + h * q3, neg * q3
     d = k0 * x0 + k1 * x1 + k2 * x2
-    Y = angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
-    return Y.ct.overlaps(X.ct) and Y.st.overlaps(X.st) and Y.cp.overlaps(X.cp) and Y.sp.overlaps(X.sp)
+    # angles_of(j, (x0, x1, x2), (k0 − d x0, k1 − d x1, k2 − d x2))
+    p0, p1, p2 = x0, x1, x2
+    q0, q1, q2 = k0 - d * x0, k1 - d * x1, k2 - d * x2
+    pp, qp = p0 * p0 + p1 * p1 + p2 * p2, q0 * p0 + q1 * p1 + q2 * p2
+    w0, w1, w2 = arb(pp * q0 - qp * p0), arb(pp * q1 - qp * p1), arb(pp * q2 - qp * p2)
+    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
+    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
+    wh0, wh1, wh2 = d * w0, d * w1, d * w2
+    i = INDEX[j]
+    yct, yst = (c * p1, c * p2) if i == 0 else (c * p2, c * p0) if i == 1 else (c * p0, c * p1)
+    e0, e1, e2 = Q0[j](yct, yst, 1, 0)                   # e_theta
+    ycp, ysp = wh0 * e0 + wh1 * e1 + wh2 * e2, (wh0, wh1, wh2)[i]
+    return yct.overlaps(X[1]) and yst.overlaps(X[2]) and ycp.overlaps(X[3]) and ysp.overlaps(X[4])
 
 
 # --- printed vector formulas ---------------------------------------------------
