@@ -156,7 +156,13 @@ def canonical(letter: str, n) -> Plane:
 
 def oriented(letter: str, n) -> Plane:
     """:func:`canonical` for a primitive integer n (±n is the Plane's normal)."""
-    s = sign(n[ORIENTATION[letter]])
+    z = n[ORIENTATION[letter]]
+    if type(z) is flint.fmpz:        # sign(z), read directly
+        if z > 0:
+            return Plane(letter, n)
+        if z < 0:
+            return Plane(letter, (-n[0], -n[1], -n[2]))
+    s = sign(z)
     if s == 0:
         raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")
     return Plane(letter, n if s > 0 else (-n[0], -n[1], -n[2]))
@@ -188,7 +194,8 @@ def _quotient(m: tuple, c: tuple):
             k, rest = divmod(m[t], c[t])
             if rest != 0 or k == 0:
                 return None
-            return k if all(m[s] == k * c[s] for s in range(3) if s != t) else None
+            u, v = (t + 1) % 3, (t + 2) % 3
+            return k if m[u] == k * c[u] and m[v] == k * c[v] else None
     return None
 
 
