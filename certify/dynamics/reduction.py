@@ -686,24 +686,28 @@ def _trig_agrees(T: tuple, X: tuple, letter: str, neg, h, arb) -> bool:
 # --- printed vector formulas ---------------------------------------------------
 
 class _Matrix:
-    """A, B or C at r acting by ``K*v`` (for :func:`formula`)."""
+    """A, B or C at r acting by ``K*v`` (for :func:`formula`); with ``integral``, 2d·K for a
+    rational r = m/d (:func:`certify.dynamics.model.collide_integral`)."""
 
-    def __init__(self, letter: str, r):
-        self.letter, self.r = letter, r
+    def __init__(self, letter: str, r, integral: bool = False):
+        self.letter, self.r, self.act = letter, r, collide_integral if integral else collide
 
     def __mul__(self, v):
-        return collide(self.letter, v, self.r)
+        return self.act(self.letter, v, self.r)
 
 
-def formula(text: str):
+def formula(text: str, integral: bool = False):
     """A printed vector formula as transcribed in ``proofs/section4_*.py``,
     e.g. "cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))" (l. 976), as a function
     (u, r) ↦ vector in the ring of u (exact on rationals).  The brackets of the print
-    are kept: ∧ is not associative (l. 989)."""
+    are kept: ∧ is not associative (l. 989).  With ``integral`` (a rational r = m/d), each
+    K acts as 2d·K: integer u gives integer vectors, and the value is (2d)^k times the
+    formula's when K is applied k times, a positive multiple (∧, · and K v are linear in
+    each argument)."""
     code = compile(text, "<printed formula>", "eval")
 
     def evaluate(u, r):
         names = {"cross": cross, "dot": dot, "u0": tuple(u), "ex": E[0], "ey": E[1], "ez": E[2],
-                 **{L.upper(): _Matrix(L, r) for L in LETTERS}}
+                 **{L.upper(): _Matrix(L, r, integral) for L in LETTERS}}
         return tuple(eval(code, {"__builtins__": {}}, names))
     return evaluate

@@ -480,3 +480,67 @@ def test_normal_with_a_candidate_is_the_normal(p, q, q1, other):
                 R.plane("a", p, q, c)
             continue
         assert R.plane("a", p, q, c) == P
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.tuples(*[st.integers(-10 ** 20, 10 ** 20)] * 3), st.integers(1, 99), st.integers(1, 99),
+       st.sampled_from([S42.TRILINEAR_B, S42.TRILINEAR_C, S42.TRILINEAR_C_CORRECTED,
+                        "cross(B*u0, C*cross(u0, ey))", "A*(B*(C*u0))", "cross(ex, u0)"]))
+def test_integral_formula_is_a_positive_multiple(u, m, d, text):
+    """formula(text, integral=True) is (2d)^k times formula(text), k the number of matrices
+    applied: the same ray, in integers (what tally_runs compares)."""
+    r0, u = Q(m, d), tuple(flint.fmpz(z) for z in u)
+    exact, scaled = R.formula(text)(u, r0), R.formula(text, integral=True)(u, r0)
+    k = sum(text.count(f"{L}*") for L in "ABC")
+    assert all(type(z) is flint.fmpz for z in scaled)
+    assert scaled == tuple((2 * r0.q) ** k * z for z in exact)       # r0 = m/d in lowest terms
+
+
+def _occurrences(words, pattern):
+    return sum(sum(w.startswith(pattern, k) for k in range(len(w))) for w in words)
+
+
+def _parses(word, blocks):
+    k = 0
+    while k < len(word):
+        nxt = [B for B in blocks if word.startswith(B, k)]
+        if not nxt:
+            return any(B.startswith(word[k:]) for B in blocks)
+        k += len(nxt[0])
+    return True
+
+
+def _window_holds(words, ks):
+    seen = good = 0
+    for w in words:
+        for k, L in enumerate(w):
+            if L == "b" and k + max(ks) < len(w):
+                seen += 1
+                good += any(w[k + m] == "b" for m in ks)
+    return seen, good
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.text("abc", max_size=40), max_size=4), st.text("abc", max_size=3),
+       st.lists(st.sampled_from(["ab", "cb", "acb", "cab", "a", "b", "ba", "abc", "c"]), max_size=5, unique=True),
+       st.sets(st.integers(1, 4), min_size=1))
+def test_word_counts_are_the_letter_by_letter_ones(words, pattern, blocks, ks):
+    """occurrences (S9.2), parses and window_holds (S10), by regular expressions and str.find, count
+    what the letter-by-letter definitions count (overlaps, the first block that fits, short words)."""
+    assert S41.occurrences(words, pattern) == _occurrences(words, pattern)
+    assert [S43.parses(w, blocks) for w in words] == [_parses(w, blocks) for w in words]
+    assert S43.window_holds(words, ks) == _window_holds(words, ks)
+
+
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-50, 50)] * 3))
+def test_oriented_reads_the_sign_of_an_integer_entry(letter, n):
+    """oriented on fmpz entries (the sign read directly) is oriented on fmpq entries (by sim.sign)."""
+    t = R.ORIENTATION[letter]
+    zs, qs = tuple(map(flint.fmpz, n)), tuple(map(Q, n))
+    if n[t] == 0:
+        for v in (zs, qs):
+            with pytest.raises(R.Corner):
+                R.oriented(letter, v)
+        return
+    P, P2 = R.oriented(letter, zs), R.oriented(letter, qs)
+    assert P.letter == P2.letter == letter and P.n[t] > 0 and tuple(map(Q, P.n)) == P2.n
