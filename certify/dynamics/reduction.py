@@ -568,11 +568,13 @@ def trig_step(T: Angles, r) -> Angles:
 def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
     """Along an orbit of Planes: at how many steps P → P1 the trigonometric step
     (:func:`trig_step`) from the angles of P gives P1's contact and balls of cos, sin of θ, φ
-    overlapping P1's (:func:`angles` at ``prec`` bits), and at how many a sign was
-    undecided.  The same ball operations as :func:`trig_step` and :func:`angles`, in one
-    precision context and with the balls of r, −r and (1 + r)/2 formed once (each state's
-    angles are computed once: they end one step and start the next), the angles kept as
-    tuples (letter, cos θ, sin θ, cos φ, sin φ) rather than :class:`Angles`."""
+    overlapping P1's, and at how many a sign was undecided.  The angles of a state are balls
+    at ``prec`` bits of the exact ones, from their closed forms for an integer normal
+    (:func:`closed_angles`; the same numbers as :func:`angles`), computed once (they end one
+    step and start the next) and kept as tuples (letter, cos θ, sin θ, cos φ, sin φ); the step
+    is :func:`trig_step`'s ball operations, written out, in one precision context and with the
+    balls of r, −r and (1 + r)/2 formed once.  Balls of the true values overlap: a step that
+    does not agree is one where the six cases do not give the next state."""
     agree = undecided = 0
     arb, fmpz = flint.arb, flint.fmpz
     with precision(prec):
@@ -593,35 +595,34 @@ def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
 
 
 def _angles(P: Plane, fmpz, arb) -> tuple:
-    """:func:`angles` at the working precision, as (letter, cos θ, sin θ, cos φ, sin φ): for an
-    integer normal, :func:`_position_tangent` then :func:`_angles_orthogonal`, written out
-    (the same integers and the same ball operations, in the same order)."""
-    letter, n = P.letter, P.n
-    n0, n1, n2 = n
-    if not (type(n0) is fmpz and type(n1) is fmpz and type(n2) is fmpz):
-        A = angles_of(letter, position(P), tangent(P))
-        return letter, A.ct, A.st, A.cp, A.sp
+    """The angles of P at the working precision, as (letter, cos θ, sin θ, cos φ, sin φ): for an
+    integer normal n from their closed forms (:func:`closed_angles`), else :func:`angles`'s."""
+    n = P.n
+    if type(n[0]) is fmpz and type(n[1]) is fmpz and type(n[2]) is fmpz:
+        return closed_angles(P.letter, n, arb)
+    A = angles_of(P.letter, position(P), tangent(P))
+    return P.letter, A.ct, A.st, A.cp, A.sp
+
+
+def closed_angles(letter: str, n: tuple, arb=flint.arb) -> tuple:
+    """(letter, cos θ, sin θ, cos φ, sin φ) of the Plane (letter, n), n an integer normal, as balls
+    of the exact values: with j, k = i+1, i+2 (mod 3), the position p = ε(n ∧ e_i) has p_j = εn_k,
+    p_k = −εn_j (ε = ±1 making both > 0, else Corner), so cos θ = p_j/√s, sin θ = p_k/√s with
+    s = n_j² + n_k²; the tangent w = |n|² e_i − n_i n has |w|² = |n|² s, sin φ = w_i/|w| = √s/|n|
+    and cos φ = (w/|w|)·e_θ = n_i (n_j p_k − n_k p_j)/(|n| s) = −ε n_i/|n|.  The same numbers
+    as :func:`angles` (tests/dynamics/test_reduction.py), from two square roots of integers."""
     i = INDEX[letter]
     j, k = NEXT[i]
-    p = [0, 0, 0]
-    p[j], p[k] = n[k], -n[j]
-    s, t = (p[j] > 0) - (p[j] < 0), (p[k] > 0) - (p[k] < 0)
-    if s != t or s == 0:
+    nj, nk = n[j], n[k]
+    if nk > 0 and nj < 0:
+        pj, pk, ni = nk, -nj, -n[i]          # ε = 1
+    elif nk < 0 and nj > 0:
+        pj, pk, ni = -nk, nj, n[i]           # ε = −1
+    else:
         raise Corner(f"the plane {n} meets the face {letter} outside its interior")
-    if s < 0:
-        p[j], p[k] = -p[j], -p[k]
-    ni = n[i]
-    w = [-ni * n0, -ni * n1, -ni * n2]
-    w[i] = n0 * n0 + n1 * n1 + n2 * n2 - ni * ni
-    p0, p1, p2 = p
-    q0, q1, q2 = w
-    pp = p0 * p0 + p1 * p1 + p2 * p2
-    w0, w1, w2 = arb(pp * q0), arb(pp * q1), arb(pp * q2)
-    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
-    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
-    ct, st = (c * p1, c * p2) if i == 0 else (c * p2, c * p0) if i == 1 else (c * p0, c * p1)
-    e0, e1, e2 = Q0[letter](ct, st, 1, 0)               # e_theta
-    return letter, ct, st, (d * w0) * e0 + (d * w1) * e1 + (d * w2) * e2, d * (w0, w1, w2)[i]
+    s = nj * nj + nk * nk
+    root_s, root_nn = arb(s).sqrt(), arb(s + n[i] * n[i]).sqrt()
+    return letter, arb(pj) / root_s, arb(pk) / root_s, arb(ni) / root_nn, root_s / root_nn
 
 
 def _angles_orthogonal(letter: str, p, w) -> Angles:

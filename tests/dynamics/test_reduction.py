@@ -203,13 +203,16 @@ def test_trigonometric_step_on_an_exact_state():
     assert all(a.overlaps(b) for a, b in ((T1.ct, X.ct), (T1.cp, X.cp)))
 
 
-def _trig_agreement_step_by_step(planes, r, prec):
-    """What S7.2 compared before trig_agreement: trig_step from angles(P) against angles(P1), pair by pair."""
+def _trig_agreement_step_by_step(planes, r, prec, closed=False):
+    """What S7.2 compared before trig_agreement: trig_step from angles(P) against angles(P1), pair
+    by pair (with ``closed``, the angles of closed_angles)."""
+    def angles(P):
+        return R.Angles(*R.closed_angles(P.letter, P.n)) if closed else R.angles(P)
     agree = undecided = 0
     for P, P1 in zip(planes, planes[1:]):
         try:
             with precision(prec):
-                T, X = R.trig_step(R.angles(P), r), R.angles(P1)
+                T, X = R.trig_step(angles(P), r), angles(P1)
             agree += T.letter == P1.letter and all(a.overlaps(b) for a, b in
                                                    ((T.ct, X.ct), (T.st, X.st), (T.cp, X.cp), (T.sp, X.sp)))
         except sim.Undecided:
@@ -217,11 +220,12 @@ def _trig_agreement_step_by_step(planes, r, prec):
     return agree, undecided
 
 
-@pytest.mark.parametrize("prec", [128, 4])
+@pytest.mark.parametrize("prec", [128, 2])
 def test_trig_agreement_is_the_step_by_step_comparison(prec):
-    """trig_agreement counts what trig_step and angles give pair by pair: on exact orbits (all
-    agree at 128 bits; at 4 bits signs go undecided), and on orbits with planes swapped (some
-    steps then disagree)."""
+    """trig_agreement counts what trig_step gives pair by pair from the closed-form angles (at any
+    precision: the same ball operations; at 2 bits signs go undecided), and at 128 bits what it gives
+    from angles(): on exact orbits (all agree), and on orbits with planes swapped (some steps then
+    disagree)."""
     rng, seen = random.Random(7), set()
     for r0 in (Q(1, 10), Q(1, 37), Q(50, 99)):
         orbits = []
@@ -236,10 +240,35 @@ def test_trig_agreement_is_the_step_by_step_comparison(prec):
             orbits += [planes, planes[:40:2] + planes[40:]]
         for planes in orbits:
             got = R.trig_agreement(planes, r0, prec)
-            assert got == _trig_agreement_step_by_step(planes, r0, prec)
+            assert got == _trig_agreement_step_by_step(planes, r0, prec, closed=True)
+            if prec >= 64:
+                assert got == _trig_agreement_step_by_step(planes, r0, prec)
             seen.add((got[0] + got[1] == len(planes) - 1, got[1] > 0))
     assert (False, False) in seen or (False, True) in seen     # some disagreement was counted
     assert (True, prec < 64) in seen
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-10 ** 40, 10 ** 40) | st.integers(-3, 3)] * 3))
+def test_closed_angles_are_the_angles(letter, n):
+    """closed_angles are balls of the numbers angles() encloses (overlapping at 128 bits, within
+    2^-400 at 512 bits), or the same Corner."""
+    n = tuple(map(flint.fmpz, n))
+    P = R.Plane(letter, n)
+    try:
+        A = R.angles(P, 512)
+    except R.Corner:
+        with pytest.raises(R.Corner):
+            R.closed_angles(letter, n)
+        return
+    for prec in (128, 512):
+        with precision(prec):
+            A, C = R.angles(P), R.closed_angles(letter, n)
+        assert C[0] == letter
+        for a, c in zip((A.ct, A.st, A.cp, A.sp), C[1:]):
+            assert a.overlaps(c)
+            if prec == 512:
+                assert abs(a.mid() - c.mid()) < flint.arb(2) ** -400
 
 
 def test_admissible_words_and_blocks():
