@@ -550,7 +550,8 @@ def _position_tangent(letter: str, n: tuple) -> tuple[tuple, tuple]:
 
 def trig_step(T: Angles, r) -> Angles:
     """One step of the paper's six cases: the sign of cos φ picks the case, p(t1) is
-    the printed vector normalised, q(t1) = Kq(0) − (Kq(0)·p(t1)) p(t1), normalised."""
+    the printed vector normalised, q(t1) = Kq(0) − (Kq(0)·p(t1)) p(t1), normalised; θ', φ'
+    read from them (:func:`_step_angles`)."""
     s = sign(T.cp)
     if s == 0:
         raise Corner("cos φ = 0")
@@ -562,7 +563,19 @@ def trig_step(T: Angles, r) -> Angles:
     x0, x1, x2 = c * x0, c * x1, c * x2
     k0, k1, k2 = collide(j, T.q(), arb(r))
     d = k0 * x0 + k1 * x1 + k2 * x2
-    return angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
+    return Angles(j, *_step_angles(j, x0, x1, x2, k0 - d * x0, k1 - d * x1, k2 - d * x2))
+
+
+def _step_angles(letter: str, x0, x1, x2, w0, w1, w2) -> tuple:
+    """(cos θ, sin θ, cos φ, sin φ) at the contact ``letter`` from the unit position x and a
+    tangent w ⊥ x (balls): cos θ, sin θ are x's free components, and with ŵ = w/|w|,
+    cos φ = ŵ·e_θ, sin φ = ŵ_i (as :func:`angles_of`, which normalises x and projects w again)."""
+    e = 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
+    i = INDEX[letter]
+    ct, st = (x1, x2) if i == 0 else (x2, x0) if i == 1 else (x0, x1)
+    e0, e1, e2 = Q0[letter](ct, st, 1, 0)               # e_theta
+    w0, w1, w2 = e * w0, e * w1, e * w2
+    return ct, st, w0 * e0 + w1 * e1 + w2 * e2, (w0, w1, w2)[i]
 
 
 def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
@@ -643,8 +656,7 @@ def _angles_orthogonal(letter: str, p, w) -> Angles:
 
 def _trig_agrees(T: tuple, X: tuple, letter: str, neg, h, arb) -> bool:
     """:func:`trig_step` from the angles T (with the balls −r and (1 + r)/2 given), compared with
-    the angles X (tuples of :func:`_angles`): the same contact and every ball overlapping.  The
-    angles of the step are :func:`angles_of`'s, written out (the same ball operations)."""
+    the angles X (tuples of :func:`_angles`): the same contact and every ball overlapping."""
     letter0, ct, st, cp, sp = T
     if cp > 0:
         s = 1
@@ -669,18 +681,7 @@ def _trig_agrees(T: tuple, X: tuple, letter: str, neg, h, arb) -> bool:
     else:
         k0, k1, k2 = q1, q2 + h * q3, neg * q3
     d = k0 * x0 + k1 * x1 + k2 * x2
-    # angles_of(j, (x0, x1, x2), (k0 − d x0, k1 − d x1, k2 − d x2))
-    p0, p1, p2 = x0, x1, x2
-    q0, q1, q2 = k0 - d * x0, k1 - d * x1, k2 - d * x2
-    pp, qp = p0 * p0 + p1 * p1 + p2 * p2, q0 * p0 + q1 * p1 + q2 * p2
-    w0, w1, w2 = arb(pp * q0 - qp * p0), arb(pp * q1 - qp * p1), arb(pp * q2 - qp * p2)
-    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
-    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
-    wh0, wh1, wh2 = d * w0, d * w1, d * w2
-    i = INDEX[j]
-    yct, yst = (c * p1, c * p2) if i == 0 else (c * p2, c * p0) if i == 1 else (c * p0, c * p1)
-    e0, e1, e2 = Q0[j](yct, yst, 1, 0)                   # e_theta
-    ycp, ysp = wh0 * e0 + wh1 * e1 + wh2 * e2, (wh0, wh1, wh2)[i]
+    yct, yst, ycp, ysp = _step_angles(j, x0, x1, x2, k0 - d * x0, k1 - d * x1, k2 - d * x2)
     return yct.overlaps(X[1]) and yst.overlaps(X[2]) and ycp.overlaps(X[3]) and ysp.overlaps(X[4])
 
 
