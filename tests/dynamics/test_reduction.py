@@ -573,3 +573,24 @@ def test_oriented_reads_the_sign_of_an_integer_entry(letter, n):
         return
     P, P2 = R.oriented(letter, zs), R.oriented(letter, qs)
     assert P.letter == P2.letter == letter and P.n[t] > 0 and tuple(map(Q, P.n)) == P2.n
+
+
+@pytest.mark.parametrize("A, B, C", [(S41.A_PRINTED, S41.B_PRINTED, S41.C_PRINTED),
+                                     (S41.A_PRINTED.replace("[(1+r)/2, 1, 0]", "[(1+3*r)/3, 1, 0]"),
+                                      S41.B_PRINTED.replace("[[1, (1+r)/2, 0]", "[[2, (1+r)/2, 0]"),
+                                      S41.C_PRINTED.replace("[0, 0, -r]", "[0, 1/(1+r), -r]"))])
+def test_multiples_at_the_rates_are_multiple(A, B, C):
+    """S6's multiples (cof evaluated in fmpq at every rate) are multiple() of cof.xreplace, rate by
+    rate: k > 0 where the engine's integer matrix is k·cof, None elsewhere (a mutated print; an
+    entry that is not a polynomial in r goes to multiple itself)."""
+    rates = sorted({Q(1, 3), Q(1, 10), Q(2, 7), Q(50, 99)})
+    for letter, text in zip(LETTERS, (A, B, C)):
+        cof = S41.matrix(text).adjugate().T
+        for K in (letter, "abc"[(INDEX[letter] + 1) % 3]):        # the matching integer matrices, and others
+            integer = [R.cofactor(K, r0) for r0 in rates]
+            want = [S41.multiple(N_, cof.xreplace({r: sp.Rational(int(v.p), int(v.q))}))
+                    for N_, v in zip(integer, rates)]
+            got = S41.multiples(integer, cof, rates)
+            assert got == want and [type(k) for k in got] == [type(k) for k in want]
+            if A == S41.A_PRINTED and K == letter:
+                assert all(k is not None and k > 0 for k in got)
