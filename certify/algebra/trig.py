@@ -106,10 +106,24 @@ def chain(text: str, **names) -> list:
 
 
 def show(e) -> str:
-    """A formula for reports: ``-r cosφ^2 sinθ``; vectors as ``(a, b, c)``."""
+    """A formula for reports: ``-r cosφ^2 sinθ``; vectors as ``(a, b, c)``.  The text of a SymPy
+    expression is kept for a run (evidence shows the same factors again and again)."""
     if isinstance(e, sp.MatrixBase):
         return "(" + ", ".join(show(c) for c in e) + ")"
+    if not isinstance(e, sp.Basic):
+        return _show(e)
+    found = _SHOWN.get(e)
+    if found is None:
+        found = _SHOWN[e] = _show(e)
+    return found
+
+
+def _show(e) -> str:
     return sp.sstr(sp.sympify(e), order="grlex").replace("**", "^").replace("*", " ")
+
+
+_SHOWN: dict = {}               # expression -> its text (equal expressions print alike)
+caches.register(_SHOWN.clear)
 
 
 def short(e, limit: int = 160) -> str:
