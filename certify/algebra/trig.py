@@ -601,8 +601,10 @@ def sign(E, H: Signs) -> tuple[int | None, list[str]]:
     return (sn * sd if sn and sd else None), why
 
 
+@caches.for_a_run
 def _factor_data(f, H: Signs) -> dict | None:
-    """How one factor's sign is proved (:func:`_factor_sign`), as data for the kernel."""
+    """How one factor's sign is proved (:func:`_factor_sign`), as data for the kernel (memoised
+    for a run, like :func:`_factor_sign`; its readers copy it)."""
     syms = sp.sympify(f).free_symbols
     if syms == {r}:
         fs = _factor_sign(f, H)
@@ -617,8 +619,11 @@ def _factor_data(f, H: Signs) -> dict | None:
     return None
 
 
+@caches.for_a_run
 def _poly_data(p, H: Signs) -> dict | None:
-    """:func:`_poly_sign` as data: the rewritten form, its constant and factors with their proofs."""
+    """:func:`_poly_sign` as data: the rewritten form, its constant and factors with their proofs
+    (memoised for a run: a sign's obligation is built again for each check that reads it;
+    :func:`certify.algebra.facts.signed` reads it without changing it)."""
     if p == 0:
         return None
     for g in _rewrites(p):

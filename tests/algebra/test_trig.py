@@ -182,3 +182,19 @@ def test_show_kept_for_a_run_is_the_text(e):
     assert T.show(e) == want and T.show(e) == want
     assert T.show(sp.Matrix([e, 1, e])) == f"({want}, 1, {want})"
     assert T.show(3) == "3" and T.show(sp.Rational(-3, 7)) == "-3/7"
+
+
+def test_sign_records_kept_for_a_run_are_not_changed_by_their_readers():
+    """signed_fact reads the memoised _poly_data/_factor_data without changing them: the record of
+    a sign is the same the first time, the next ones, and after the caches' reset."""
+    import copy
+
+    from certify import caches
+    H = T.hypotheses(1)
+    for E in [T.cθ * T.sφ + T.cφ, (1 + T.cφ ** 2) / (T.sθ * (T.cθ ** 2 + T.sθ ** 2)), -T.sφ ** 3 * T.cθ]:
+        n, d = T.fraction(E)
+        first = T.signed_fact(E, H)
+        data = copy.deepcopy(T._poly_data(n, H))
+        assert T.signed_fact(E, H) == first and T._poly_data(n, H) == data
+        caches.reset()
+        assert T.signed_fact(E, H) == first
