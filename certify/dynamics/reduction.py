@@ -249,13 +249,13 @@ def _next_letter_exact(letter: str, i: int, n: tuple) -> str:
     read once): with j, k = i+1, i+2 (mod 3), n ∧ e_i has the entries s_k at j and −s_j
     at k, so p lies inside the face iff s_k = −s_j ≠ 0 (:func:`position`); then
     n_i n_j > 0 for exactly one of j, k when s_i ≠ 0, and for none when s_i = 0."""
-    s = [(z > 0) - (z < 0) for z in n]
-    j, k = (i + 1) % 3, (i + 2) % 3
-    if s[j] == 0 or s[k] != -s[j]:
+    j, k = NEXT[i]
+    a, b, c = n[i], n[j], n[k]
+    if not ((b > 0 and c < 0) or (b < 0 and c > 0)):
         raise Corner(f"the plane {n} meets the face {letter} outside its interior")
-    if s[i] == 0:
+    if a == 0:
         raise Corner(f"cos φ = 0 at {Plane(letter, n)}: the orbit heads for a corner")
-    return LETTERS[j] if s[i] == s[j] else LETTERS[k]
+    return LETTERS[j] if (a > 0) == (b > 0) else LETTERS[k]
 
 
 def step(P: Plane, r, rows: dict | None = None) -> Plane:

@@ -594,3 +594,19 @@ def test_multiples_at_the_rates_are_multiple(A, B, C):
             assert got == want and [type(k) for k in got] == [type(k) for k in want]
             if A == S41.A_PRINTED and K == letter:
                 assert all(k is not None and k > 0 for k in got)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-3, 3) | st.integers(-10 ** 30, 10 ** 30)] * 3))
+def test_next_letter_of_an_integer_normal_is_the_generic_one(letter, n):
+    """next_letter on fmpz entries (the signs read once, _next_letter_exact) gives the letter, or
+    the Corner with the same message, that the generic path gives on the same normal in fmpq."""
+    zs, qs = tuple(map(flint.fmpz, n)), tuple(map(Q, n))
+    try:
+        want = R.next_letter(R.Plane(letter, qs))
+    except R.Corner as exc:
+        with pytest.raises(R.Corner) as got:
+            R.next_letter(R.Plane(letter, zs))
+        assert ("interior" in str(got.value)) == ("interior" in str(exc))      # the same kind of corner
+        return
+    assert R.next_letter(R.Plane(letter, zs)) == want
