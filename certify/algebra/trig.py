@@ -566,7 +566,19 @@ def _factor_sign(f, H: Signs) -> int | None:
 
 def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
     """Strict sign of a polynomial from its factors (even powers need a known factor
-    sign), the polynomial taken as written or rewritten with the circle relations."""
+    sign), the polynomial taken as written or rewritten with the circle relations
+    (:func:`_poly_sign_kept`, memoised for a run; the reasons as a fresh list)."""
+    s, why = _poly_sign_kept(p, H)
+    return s, list(why)
+
+
+@caches.for_a_run
+def _poly_sign_kept(p, H: Signs) -> tuple[int | None, tuple[str, ...]]:
+    s, why = _poly_sign_of(p, H)
+    return s, tuple(why)
+
+
+def _poly_sign_of(p, H: Signs) -> tuple[int | None, list[str]]:
     if p == 0:
         return None, ["`0`: no strict sign"]
     undecided = []
