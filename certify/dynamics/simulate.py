@@ -346,11 +346,12 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
             out.stop = "free"
             return out
         letters, num, den = times[0]
-        if len(times) > 1:
-            for _L, n1, d1 in times[1:]:
-                if n1 * den < num * d1:
-                    num, den = n1, d1
-            letters = "".join(L for L, n1, d1 in times if n1 * den == num * d1)
+        for L, n1, d1 in times[1:]:              # the smallest time, and every pair that ties with it
+            left, right = n1 * den, num * d1
+            if left < right:
+                letters, num, den = L, n1, d1
+            elif left == right:
+                letters += L
         closed = [i for i, L in enumerate(LETTERS)
                   if L in letters or (Q[i] >= 0 and P[i] == 0 and (Q[i] == 0 or num == 0))]
         if 1 in closed and len(closed) > 1:
