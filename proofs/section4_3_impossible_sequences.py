@@ -304,7 +304,8 @@ def parses(word: str, blocks: list[str]) -> bool:
     end with b and contain one b, so the cut is unique)."""
     # from k = 0, the first block (in the order given) that starts at k, again and again: an
     # atomic alternation repeated possessively (no other choice is ever tried)
-    k = re.match("(?>" + "|".join(map(re.escape, blocks)) + ")*+", word).end() if blocks else 0
+    found = re.match("(?>" + "|".join(map(re.escape, blocks)) + ")*+", word) if blocks else None
+    k = found.end() if found else 0         # (the repetition matches, at worst the empty text)
     return k == len(word) or any(B.startswith(word[k:]) for B in blocks)
 
 
