@@ -149,6 +149,15 @@ class Plane:
         return max(int(z).bit_length() for z in self.n)
 
 
+def _plane(letter: str, n: tuple, new=object.__new__, put=object.__setattr__) -> Plane:
+    """Plane(letter, n), made as the frozen dataclass's __init__ makes it (its two fields set by
+    object.__setattr__), without the call of __init__: the planes of the runs and orbits are many."""
+    P = new(Plane)
+    put(P, "letter", letter)
+    put(P, "n", n)
+    return P
+
+
 def canonical(letter: str, n) -> Plane:
     """The Plane with contact ``letter`` and normal ∝ n (orientation e_t · n > 0)."""
     return oriented(letter, primitive(n))
@@ -159,9 +168,9 @@ def oriented(letter: str, n) -> Plane:
     z = n[ORIENTATION[letter]]
     if type(z) is flint.fmpz:        # sign(z), read directly
         if z > 0:
-            return Plane(letter, n)
+            return _plane(letter, n)
         if z < 0:
-            return Plane(letter, (-n[0], -n[1], -n[2]))
+            return _plane(letter, (-n[0], -n[1], -n[2]))
     s = sign(z)
     if s == 0:
         raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")

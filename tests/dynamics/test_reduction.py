@@ -1,7 +1,9 @@
 """Section 4 on the dynamics: the reduction map (certify.dynamics.reduction) and the
 certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/section4_*.py); their mutants and
 statuses as printed are in tests/proofs/test_mutants.py."""
+import dataclasses
 import itertools
+import pickle
 import random
 
 import flint
@@ -573,6 +575,11 @@ def test_oriented_reads_the_sign_of_an_integer_entry(letter, n):
         return
     P, P2 = R.oriented(letter, zs), R.oriented(letter, qs)
     assert P.letter == P2.letter == letter and P.n[t] > 0 and tuple(map(Q, P.n)) == P2.n
+    made = R.Plane(P.letter, P.n)             # the dataclass's own construction, as _plane imitates it
+    assert P == made and hash(P) == hash(made) and repr(P) == repr(made) and vars(P) == vars(made)
+    assert pickle.loads(pickle.dumps(P)) == made
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        P.n = zs
 
 
 @pytest.mark.parametrize("A, B, C", [(S41.A_PRINTED, S41.B_PRINTED, S41.C_PRINTED),
