@@ -30,6 +30,7 @@ q_i > 0 (the pair separates), and a second datum (α p, β q + γ p) spanning th
 from __future__ import annotations
 
 import random
+import re
 from dataclasses import dataclass
 
 import flint
@@ -732,6 +733,34 @@ def multiple(rows, M: sp.Matrix):
     return k if k > 0 else None
 
 
+def multiples(rows: list, M: sp.Matrix, rates: list) -> list:
+    """[multiple(rows[m], M at r = rates[m])]: with M's entries polynomials in r over Q, each
+    evaluated exactly at the rational rates (fmpq_poly), the ratios compared in fmpq, k returned
+    as the SymPy Rational :func:`multiple` gives; by :func:`multiple` for any other M."""
+    try:
+        polys = [flint.fmpq_poly([flint.fmpq(int(c.p), int(c.q)) for c in sp.Poly(e, r, domain="QQ").all_coeffs()[::-1]])
+                 for e in M]
+    except (sp.PolynomialError, sp.CoercionFailed, sp.GeneratorsNeeded):
+        return [multiple(N_, M.xreplace({r: sp.Rational(int(v.p), int(v.q))})) for N_, v in zip(rows, rates)]
+    return [_multiple_at(N_, [P(v) for P in polys]) for N_, v in zip(rows, rates)]
+
+
+def _multiple_at(rows, values: list):
+    """:func:`multiple` for the values of M (fmpq, row by row) at one rate."""
+    k = None
+    for a, b in zip((z for row in rows for z in row), values):
+        if b == 0:
+            if a != 0:
+                return None
+            continue
+        ratio = flint.fmpq(a) / b
+        if k is None:
+            k = ratio
+        elif ratio != k:
+            return None
+    return sp.Rational(int(k.p), int(k.q)) if k is not None and k > 0 else None
+
+
 @certificate("S6", "l. 839-868",
              "Theorem 4.1: two trajectories with the same contact and Span(p(0),q(0)) = Span(p'(0),q'(0)) have "
              "the same plane Span(p(k),q(k)) at every collision k (and so the same collision types).",
@@ -768,7 +797,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
         same = adjugate and equal
         values = [sp.Rational(int(r0.p), int(r0.q)) for r0 in rates]
         integer = [R.cofactor(letter, r0) for r0 in rates]
-        scaled = [multiple(N_, cof.xreplace({r: v})) for N_, v in zip(integer, values)]     # cof at r = v
+        scaled = multiples(integer, cof, rates)     # k with N_ = k·cof at r = v
         # for the kernel: K fixes e_m (m ≠ j); cof is K's cofactor matrix (K^T cof = det K · I, det K given) and the
         # engine's; at each r₀ the integer matrix is k·cof(r₀) (an identity modulo r − r₀) with k > 0
         grounds = identity_facts(*[(ok, [K, sp.eye(3).col(m)], sp.eye(3).col(m))
@@ -841,8 +870,13 @@ def reduction_scan() -> list[ScanOrbit]:
 
 
 def occurrences(words, pattern: str) -> int:
-    """Occurrences of ``pattern`` as consecutive collisions (overlaps counted)."""
-    return sum(sum(w.startswith(pattern, k) for k in range(len(w))) for w in words)
+    """Occurrences of ``pattern`` as consecutive collisions (overlaps counted): the positions k
+    of a word w with w.startswith(pattern, k), found by a lookahead (which matches the empty
+    text at every k, the end of w included: not counted for an empty pattern)."""
+    if not pattern:
+        return sum(map(len, words))
+    ahead = re.compile(f"(?={re.escape(pattern)})")
+    return sum(len(ahead.findall(w)) for w in words)
 
 
 # ---------------------------------------------------------------- S11

@@ -431,7 +431,7 @@ def tally_runs(section4_data, orientation, to_b, to_c) -> str:
     """At each collision k of the exact runs: ũ(k+1) from u(k) = p(k) ∧ q(k) against
     p(k+1) ∧ q(k+1), and the orientation of u(k)."""
     t = {c: [k for k in range(3) if e[k]][0] for c, e in orientation_axes(orientation).items()}
-    formulas = {"b": R.formula(to_b), "c": R.formula(to_c)}
+    formulas = {"b": R.formula(to_b, integral=True), "c": R.formula(to_c, integral=True)}    # up to a factor > 0
     tally = {"a→b": [0, 0], "a→c": [0, 0], "relabelled": [0, 0]}
     oriented = [0, 0]
     for d in section4_data:

@@ -11,6 +11,8 @@ states are :mod:`certify.dynamics.cones`.
 """
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
 from certify.algebra import statements
@@ -286,24 +288,25 @@ def offsets(text: str) -> set[int]:
 def window_holds(words, ks: set[int]) -> tuple[int, int]:
     """(b's with a full look-ahead, those followed by b at one of the offsets ks)."""
     seen = good = 0
+    top = max(ks)
     for w in words:
-        for k, L in enumerate(w):
-            if L == "b" and k + max(ks) < len(w):
-                seen += 1
-                good += any(w[k + m] == "b" for m in ks)
+        end = len(w) - top                 # the b's at k with k + max(ks) < len(w)
+        k = w.find("b", 0, end) if end > 0 else -1
+        while k >= 0:
+            seen += 1
+            good += any(w[k + m] == "b" for m in ks)
+            k = w.find("b", k + 1, end)
     return seen, good
 
 
 def parses(word: str, blocks: list[str]) -> bool:
     """word is a concatenation of blocks, the last one possibly cut short (blocks
     end with b and contain one b, so the cut is unique)."""
-    k = 0
-    while k < len(word):
-        nxt = [B for B in blocks if word.startswith(B, k)]
-        if not nxt:
-            return any(B.startswith(word[k:]) for B in blocks)
-        k += len(nxt[0])
-    return True
+    # from k = 0, the first block (in the order given) that starts at k, again and again: an
+    # atomic alternation repeated possessively (no other choice is ever tried)
+    found = re.match("(?>" + "|".join(map(re.escape, blocks)) + ")*+", word) if blocks else None
+    k = found.end() if found else 0         # (the repetition matches, at worst the empty text)
+    return k == len(word) or any(B.startswith(word[k:]) for B in blocks)
 
 
 @certificate("S10", "l. 1037-1051",

@@ -106,10 +106,24 @@ def chain(text: str, **names) -> list:
 
 
 def show(e) -> str:
-    """A formula for reports: ``-r cosφ^2 sinθ``; vectors as ``(a, b, c)``."""
+    """A formula for reports: ``-r cosφ^2 sinθ``; vectors as ``(a, b, c)``.  The text of a SymPy
+    expression is kept for a run (evidence shows the same factors again and again)."""
     if isinstance(e, sp.MatrixBase):
         return "(" + ", ".join(show(c) for c in e) + ")"
+    if not isinstance(e, sp.Basic):
+        return _show(e)
+    found = _SHOWN.get(e)
+    if found is None:
+        found = _SHOWN[e] = _show(e)
+    return found
+
+
+def _show(e) -> str:
     return sp.sstr(sp.sympify(e), order="grlex").replace("**", "^").replace("*", " ")
+
+
+_SHOWN: dict = {}               # expression -> its text (equal expressions print alike)
+caches.register(_SHOWN.clear)
 
 
 def short(e, limit: int = 160) -> str:
@@ -552,7 +566,19 @@ def _factor_sign(f, H: Signs) -> int | None:
 
 def _poly_sign(p, H: Signs) -> tuple[int | None, list[str]]:
     """Strict sign of a polynomial from its factors (even powers need a known factor
-    sign), the polynomial taken as written or rewritten with the circle relations."""
+    sign), the polynomial taken as written or rewritten with the circle relations
+    (:func:`_poly_sign_kept`, memoised for a run; the reasons as a fresh list)."""
+    s, why = _poly_sign_kept(p, H)
+    return s, list(why)
+
+
+@caches.for_a_run
+def _poly_sign_kept(p, H: Signs) -> tuple[int | None, tuple[str, ...]]:
+    s, why = _poly_sign_of(p, H)
+    return s, tuple(why)
+
+
+def _poly_sign_of(p, H: Signs) -> tuple[int | None, list[str]]:
     if p == 0:
         return None, ["`0`: no strict sign"]
     undecided = []
@@ -587,8 +613,10 @@ def sign(E, H: Signs) -> tuple[int | None, list[str]]:
     return (sn * sd if sn and sd else None), why
 
 
+@caches.for_a_run
 def _factor_data(f, H: Signs) -> dict | None:
-    """How one factor's sign is proved (:func:`_factor_sign`), as data for the kernel."""
+    """How one factor's sign is proved (:func:`_factor_sign`), as data for the kernel (memoised
+    for a run, like :func:`_factor_sign`; its readers copy it)."""
     syms = sp.sympify(f).free_symbols
     if syms == {r}:
         fs = _factor_sign(f, H)
@@ -603,8 +631,11 @@ def _factor_data(f, H: Signs) -> dict | None:
     return None
 
 
+@caches.for_a_run
 def _poly_data(p, H: Signs) -> dict | None:
-    """:func:`_poly_sign` as data: the rewritten form, its constant and factors with their proofs."""
+    """:func:`_poly_sign` as data: the rewritten form, its constant and factors with their proofs
+    (memoised for a run: a sign's obligation is built again for each check that reads it;
+    :func:`certify.algebra.facts.signed` reads it without changing it)."""
     if p == 0:
         return None
     for g in _rewrites(p):

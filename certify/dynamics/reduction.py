@@ -149,6 +149,15 @@ class Plane:
         return max(int(z).bit_length() for z in self.n)
 
 
+def _plane(letter: str, n: tuple, new=object.__new__, put=object.__setattr__) -> Plane:
+    """Plane(letter, n), made as the frozen dataclass's __init__ makes it (its two fields set by
+    object.__setattr__), without the call of __init__: the planes of the runs and orbits are many."""
+    P = new(Plane)
+    put(P, "letter", letter)
+    put(P, "n", n)
+    return P
+
+
 def canonical(letter: str, n) -> Plane:
     """The Plane with contact ``letter`` and normal ∝ n (orientation e_t · n > 0)."""
     return oriented(letter, primitive(n))
@@ -156,7 +165,13 @@ def canonical(letter: str, n) -> Plane:
 
 def oriented(letter: str, n) -> Plane:
     """:func:`canonical` for a primitive integer n (±n is the Plane's normal)."""
-    s = sign(n[ORIENTATION[letter]])
+    z = n[ORIENTATION[letter]]
+    if type(z) is flint.fmpz:        # sign(z), read directly
+        if z > 0:
+            return _plane(letter, n)
+        if z < 0:
+            return _plane(letter, (-n[0], -n[1], -n[2]))
+    s = sign(z)
     if s == 0:
         raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")
     return Plane(letter, n if s > 0 else (-n[0], -n[1], -n[2]))
@@ -188,7 +203,8 @@ def _quotient(m: tuple, c: tuple):
             k, rest = divmod(m[t], c[t])
             if rest != 0 or k == 0:
                 return None
-            return k if all(m[s] == k * c[s] for s in range(3) if s != t) else None
+            u, v = (t + 1) % 3, (t + 2) % 3
+            return k if m[u] == k * c[u] and m[v] == k * c[v] else None
     return None
 
 
@@ -242,13 +258,13 @@ def _next_letter_exact(letter: str, i: int, n: tuple) -> str:
     read once): with j, k = i+1, i+2 (mod 3), n ∧ e_i has the entries s_k at j and −s_j
     at k, so p lies inside the face iff s_k = −s_j ≠ 0 (:func:`position`); then
     n_i n_j > 0 for exactly one of j, k when s_i ≠ 0, and for none when s_i = 0."""
-    s = [(z > 0) - (z < 0) for z in n]
-    j, k = (i + 1) % 3, (i + 2) % 3
-    if s[j] == 0 or s[k] != -s[j]:
+    j, k = NEXT[i]
+    a, b, c = n[i], n[j], n[k]
+    if not ((b > 0 and c < 0) or (b < 0 and c > 0)):
         raise Corner(f"the plane {n} meets the face {letter} outside its interior")
-    if s[i] == 0:
+    if a == 0:
         raise Corner(f"cos φ = 0 at {Plane(letter, n)}: the orbit heads for a corner")
-    return LETTERS[j] if s[i] == s[j] else LETTERS[k]
+    return LETTERS[j] if (a > 0) == (b > 0) else LETTERS[k]
 
 
 def step(P: Plane, r, rows: dict | None = None) -> Plane:
@@ -406,9 +422,24 @@ def vectorial_ray(letter: str, u, r) -> tuple[str, tuple]:
     if s == 0:
         raise Corner("cos φ = 0: the orbit heads for a corner")
     j = LETTERS[(i + 1) % 3] if s > 0 else LETTERS[(i + 2) % 3]
-    p1 = cross(u, E[INDEX[j]])
-    q0 = cross(u, cross(E[i], u))
-    return j, cross(p1, collide_integral(j, q0, r))
+    return j, cross(_wedge_unit(u, INDEX[j]), collide_integral(j, _around(u, i), r))
+
+
+def _wedge_unit(u, j: int) -> tuple:
+    """u ∧ e_j, written out: the same integers as ``cross(u, E[j])``."""
+    u0, u1, u2 = u
+    zero = u0 - u0
+    return (zero, u2, -u1) if j == 0 else (-u2, zero, u0) if j == 1 else (u1, -u0, zero)
+
+
+def _around(u, i: int) -> tuple:
+    """u ∧ (e_i ∧ u) = |u|² e_i − u_i u, written out: the same integers as
+    ``cross(u, cross(E[i], u))`` (the double cross product expanded)."""
+    u0, u1, u2 = u
+    ui = u[i]
+    out = [-ui * u0, -ui * u1, -ui * u2]
+    out[i] = u0 * u0 + u1 * u1 + u2 * u2 - ui * ui
+    return tuple(out)
 
 
 def same_ray(v, w) -> bool:
@@ -417,7 +448,10 @@ def same_ray(v, w) -> bool:
     for k in range(3):
         if w[k] != 0:
             vk, wk = v[k], w[k]
-            return (vk > 0) == (wk > 0) and vk != 0 and all(v[m] * wk == vk * w[m] for m in range(3) if m != k)
+            if (vk > 0) != (wk > 0) or vk == 0:
+                return False
+            j, m = (k + 1) % 3, (k + 2) % 3
+            return v[j] * wk == vk * w[j] and v[m] * wk == vk * w[m]
     return False
 
 
@@ -525,7 +559,8 @@ def _position_tangent(letter: str, n: tuple) -> tuple[tuple, tuple]:
 
 def trig_step(T: Angles, r) -> Angles:
     """One step of the paper's six cases: the sign of cos φ picks the case, p(t1) is
-    the printed vector normalised, q(t1) = Kq(0) − (Kq(0)·p(t1)) p(t1), normalised."""
+    the printed vector normalised, q(t1) = Kq(0) − (Kq(0)·p(t1)) p(t1), normalised; θ', φ'
+    read from them (:func:`_step_angles`)."""
     s = sign(T.cp)
     if s == 0:
         raise Corner("cos φ = 0")
@@ -537,16 +572,31 @@ def trig_step(T: Angles, r) -> Angles:
     x0, x1, x2 = c * x0, c * x1, c * x2
     k0, k1, k2 = collide(j, T.q(), arb(r))
     d = k0 * x0 + k1 * x1 + k2 * x2
-    return angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
+    return Angles(j, *_step_angles(j, x0, x1, x2, k0 - d * x0, k1 - d * x1, k2 - d * x2))
+
+
+def _step_angles(letter: str, x0, x1, x2, w0, w1, w2) -> tuple:
+    """(cos θ, sin θ, cos φ, sin φ) at the contact ``letter`` from the unit position x and a
+    tangent w ⊥ x (balls): cos θ, sin θ are x's free components, and with ŵ = w/|w|,
+    cos φ = ŵ·e_θ, sin φ = ŵ_i (as :func:`angles_of`, which normalises x and projects w again)."""
+    e = 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
+    i = INDEX[letter]
+    ct, st = (x1, x2) if i == 0 else (x2, x0) if i == 1 else (x0, x1)
+    e0, e1, e2 = Q0[letter](ct, st, 1, 0)               # e_theta
+    w0, w1, w2 = e * w0, e * w1, e * w2
+    return ct, st, w0 * e0 + w1 * e1 + w2 * e2, (w0, w1, w2)[i]
 
 
 def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
     """Along an orbit of Planes: at how many steps P → P1 the trigonometric step
     (:func:`trig_step`) from the angles of P gives P1's contact and balls of cos, sin of θ, φ
-    overlapping P1's (:func:`angles` at ``prec`` bits), and at how many a sign was
-    undecided.  The same ball operations as :func:`trig_step` and :func:`angles`, in one
-    precision context and with the balls of r, −r and (1 + r)/2 formed once (each state's
-    angles are computed once: they end one step and start the next)."""
+    overlapping P1's, and at how many a sign was undecided.  The angles of a state are balls
+    at ``prec`` bits of the exact ones, from their closed forms for an integer normal
+    (:func:`closed_angles`; the same numbers as :func:`angles`), computed once (they end one
+    step and start the next) and kept as tuples (letter, cos θ, sin θ, cos φ, sin φ); the step
+    is :func:`trig_step`'s ball operations, written out, in one precision context and with the
+    balls of r, −r and (1 + r)/2 formed once.  Balls of the true values overlap: a step that
+    does not agree is one where the six cases do not give the next state."""
     agree = undecided = 0
     arb, fmpz = flint.arb, flint.fmpz
     with precision(prec):
@@ -556,9 +606,9 @@ def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
         for P, P1 in zip(planes, planes[1:]):
             try:
                 if last is None or last[0] is not P:
-                    last = (P, _angles(P, fmpz))
+                    last = (P, _angles(P, fmpz, arb))
                 T = last[1]
-                X = _angles(P1, fmpz)
+                X = _angles(P1, fmpz, arb)
                 last = (P1, X)
                 agree += _trig_agrees(T, X, P1.letter, neg, h, arb)
             except Undecided:
@@ -566,12 +616,35 @@ def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
     return agree, undecided
 
 
-def _angles(P: Plane, fmpz) -> Angles:
-    """:func:`angles` at the working precision."""
+def _angles(P: Plane, fmpz, arb) -> tuple:
+    """The angles of P at the working precision, as (letter, cos θ, sin θ, cos φ, sin φ): for an
+    integer normal n from their closed forms (:func:`closed_angles`), else :func:`angles`'s."""
     n = P.n
     if type(n[0]) is fmpz and type(n[1]) is fmpz and type(n[2]) is fmpz:
-        return _angles_orthogonal(P.letter, *_position_tangent(P.letter, n))
-    return angles_of(P.letter, position(P), tangent(P))
+        return closed_angles(P.letter, n, arb)
+    A = angles_of(P.letter, position(P), tangent(P))
+    return P.letter, A.ct, A.st, A.cp, A.sp
+
+
+def closed_angles(letter: str, n: tuple, arb=flint.arb) -> tuple:
+    """(letter, cos θ, sin θ, cos φ, sin φ) of the Plane (letter, n), n an integer normal, as balls
+    of the exact values: with j, k = i+1, i+2 (mod 3), the position p = ε(n ∧ e_i) has p_j = εn_k,
+    p_k = −εn_j (ε = ±1 making both > 0, else Corner), so cos θ = p_j/√s, sin θ = p_k/√s with
+    s = n_j² + n_k²; the tangent w = |n|² e_i − n_i n has |w|² = |n|² s, sin φ = w_i/|w| = √s/|n|
+    and cos φ = (w/|w|)·e_θ = n_i (n_j p_k − n_k p_j)/(|n| s) = −ε n_i/|n|.  The same numbers
+    as :func:`angles` (tests/dynamics/test_reduction.py), from two square roots of integers."""
+    i = INDEX[letter]
+    j, k = NEXT[i]
+    nj, nk = n[j], n[k]
+    if nk > 0 and nj < 0:
+        pj, pk, ni = nk, -nj, -n[i]          # ε = 1
+    elif nk < 0 and nj > 0:
+        pj, pk, ni = -nk, nj, n[i]           # ε = −1
+    else:
+        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
+    s = nj * nj + nk * nk
+    root_s, root_nn = arb(s).sqrt(), arb(s + n[i] * n[i]).sqrt()
+    return letter, arb(pj) / root_s, arb(pk) / root_s, arb(ni) / root_nn, root_s / root_nn
 
 
 def _angles_orthogonal(letter: str, p, w) -> Angles:
@@ -590,10 +663,10 @@ def _angles_orthogonal(letter: str, p, w) -> Angles:
     return Angles(letter, ct, st, (d * w0) * e0 + (d * w1) * e1 + (d * w2) * e2, d * (w0, w1, w2)[INDEX[letter]])
 
 
-def _trig_agrees(T: Angles, X: Angles, letter: str, neg, h, arb) -> bool:
-    """:func:`trig_step` from T (with the balls −r and (1 + r)/2 given), compared with X:
-    the same contact and every ball overlapping."""
-    cp = T.cp
+def _trig_agrees(T: tuple, X: tuple, letter: str, neg, h, arb) -> bool:
+    """:func:`trig_step` from the angles T (with the balls −r and (1 + r)/2 given), compared with
+    the angles X (tuples of :func:`_angles`): the same contact and every ball overlapping."""
+    letter0, ct, st, cp, sp = T
     if cp > 0:
         s = 1
     elif cp < 0:
@@ -602,15 +675,14 @@ def _trig_agrees(T: Angles, X: Angles, letter: str, neg, h, arb) -> bool:
         raise Corner("cos φ = 0")
     else:
         raise Undecided(f"sign of {cp} undecided")
-    j, p1 = CASES[(T.letter, s)]
+    j, p1 = CASES[(letter0, s)]
     if j != letter:
         return False
-    ct, st, sp = T.ct, T.st, T.sp
     x0, x1, x2 = p1(ct, st, cp, sp)
     x0, x1, x2 = arb(x0), arb(x1), arb(x2)
     c = 1 / (x0 * x0 + x1 * x1 + x2 * x2).sqrt()
     x0, x1, x2 = c * x0, c * x1, c * x2
-    q1, q2, q3 = Q0[T.letter](ct, st, cp, sp)
+    q1, q2, q3 = Q0[letter0](ct, st, cp, sp)
     if j == "a":
         k0, k1, k2 = neg * q1, q2 + h * q1, q3
     elif j == "b":
@@ -618,31 +690,35 @@ def _trig_agrees(T: Angles, X: Angles, letter: str, neg, h, arb) -> bool:
     else:
         k0, k1, k2 = q1, q2 + h * q3, neg * q3
     d = k0 * x0 + k1 * x1 + k2 * x2
-    Y = angles_of(j, (x0, x1, x2), (k0 - d * x0, k1 - d * x1, k2 - d * x2))
-    return Y.ct.overlaps(X.ct) and Y.st.overlaps(X.st) and Y.cp.overlaps(X.cp) and Y.sp.overlaps(X.sp)
+    yct, yst, ycp, ysp = _step_angles(j, x0, x1, x2, k0 - d * x0, k1 - d * x1, k2 - d * x2)
+    return yct.overlaps(X[1]) and yst.overlaps(X[2]) and ycp.overlaps(X[3]) and ysp.overlaps(X[4])
 
 
 # --- printed vector formulas ---------------------------------------------------
 
 class _Matrix:
-    """A, B or C at r acting by ``K*v`` (for :func:`formula`)."""
+    """A, B or C at r acting by ``K*v`` (for :func:`formula`); with ``integral``, 2d·K for a
+    rational r = m/d (:func:`certify.dynamics.model.collide_integral`)."""
 
-    def __init__(self, letter: str, r):
-        self.letter, self.r = letter, r
+    def __init__(self, letter: str, r, integral: bool = False):
+        self.letter, self.r, self.act = letter, r, collide_integral if integral else collide
 
     def __mul__(self, v):
-        return collide(self.letter, v, self.r)
+        return self.act(self.letter, v, self.r)
 
 
-def formula(text: str):
+def formula(text: str, integral: bool = False):
     """A printed vector formula as transcribed in ``proofs/section4_*.py``,
     e.g. "cross(cross(u0, ey), B*cross(u0, cross(ex, u0)))" (l. 976), as a function
     (u, r) ↦ vector in the ring of u (exact on rationals).  The brackets of the print
-    are kept: ∧ is not associative (l. 989)."""
+    are kept: ∧ is not associative (l. 989).  With ``integral`` (a rational r = m/d), each
+    K acts as 2d·K: integer u gives integer vectors, and the value is (2d)^k times the
+    formula's when K is applied k times, a positive multiple (∧, · and K v are linear in
+    each argument)."""
     code = compile(text, "<printed formula>", "eval")
 
     def evaluate(u, r):
         names = {"cross": cross, "dot": dot, "u0": tuple(u), "ex": E[0], "ey": E[1], "ez": E[2],
-                 **{L.upper(): _Matrix(L, r) for L in LETTERS}}
+                 **{L.upper(): _Matrix(L, r, integral) for L in LETTERS}}
         return tuple(eval(code, {"__builtins__": {}}, names))
     return evaluate

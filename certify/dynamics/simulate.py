@@ -34,7 +34,7 @@ from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 from certify.errors import Undecided
 
-from .model import INDEX, LETTERS, collide, collide_integral
+from .model import INDEX, LETTERS, collide
 
 
 class MultipleCollision(ArithmeticError):
@@ -331,28 +331,47 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
     P, Q = _ray(integral_vector(p0)), _ray(integral_vector(q0))
     out = Rays(rays=[(P, Q)])
     events, rays = out.events, out.rays
+    m, d = r.p, r.q
+    neg, two, h = -2 * m, 2 * d, m + d          # the entries of 2d·K, formed once (collide_integral)
     for _ in range(n):
-        times = [(L, P[i], -Q[i]) for i, L in enumerate(LETTERS) if Q[i] < 0]
+        Q0, Q1, Q2 = Q
+        times = []                               # the approaching pairs: (letter, P_i, −Q_i)
+        if Q0 < 0:
+            times.append(("a", P[0], -Q0))
+        if Q1 < 0:
+            times.append(("b", P[1], -Q1))
+        if Q2 < 0:
+            times.append(("c", P[2], -Q2))
         if not times:
             out.stop = "free"
             return out
         letters, num, den = times[0]
-        if len(times) > 1:
-            for _L, n1, d1 in times[1:]:
-                if n1 * den < num * d1:
-                    num, den = n1, d1
-            letters = "".join(L for L, n1, d1 in times if n1 * den == num * d1)
+        for L, n1, d1 in times[1:]:              # the smallest time, and every pair that ties with it
+            left, right = n1 * den, num * d1
+            if left < right:
+                letters, num, den = L, n1, d1
+            elif left == right:
+                letters += L
         closed = [i for i, L in enumerate(LETTERS)
                   if L in letters or (Q[i] >= 0 and P[i] == 0 and (Q[i] == 0 or num == 0))]
         if 1 in closed and len(closed) > 1:
             exc = MultipleCollision(range(min(closed) + 1, max(closed) + 3), None)
             out.stop, out.reason = "multiple", str(exc)
             return out
-        P = [den * P[0] + num * Q[0], den * P[1] + num * Q[1], den * P[2] + num * Q[2]]
-        for L in letters:
-            P[INDEX[L]] = zero
-            Q = collide_integral(L, Q, r)            # 2d·K Q: a positive multiple of K q
-        P = _ray(P)
+        # (−Q_i)P + P_i Q, the gaps that close set to 0 (they are 0), then 2d·K Q for each collision
+        P0 = zero if "a" in letters else den * P[0] + num * Q0
+        P1 = zero if "b" in letters else den * P[1] + num * Q1
+        P2 = zero if "c" in letters else den * P[2] + num * Q2
+        for L in letters:                        # collide_integral(L, Q, r), written out
+            if L == "a":
+                Q0, Q1, Q2 = neg * Q0, two * Q1 + h * Q0, two * Q2
+            elif L == "b":
+                Q0, Q1, Q2 = two * Q0 + h * Q1, neg * Q1, two * Q2 + h * Q1
+            else:
+                Q0, Q1, Q2 = two * Q0, two * Q1 + h * Q2, neg * Q2
+        Q = (Q0, Q1, Q2)
+        g = P0.gcd(P1).gcd(P2)                   # _ray, written out
+        P = (P0, P1, P2) if g == 1 or g == 0 else (P0 // g, P1 // g, P2 // g)
         events.append(letters)
         rays.append((P, Q))
     return out

@@ -171,3 +171,30 @@ def test_cancel_on_the_step_lemmas():
     assert len(seen) >= 6 * 7
     for E in seen:
         assert T.cancel(E) == sp.cancel(E) and T.show(T.cancel(E)) == T.show(sp.cancel(E))
+
+
+@settings(max_examples=200, deadline=None)
+@given(expressions([T.cθ, T.sθ, T.cφ, T.sφ, sp.Symbol("r"), sp.Rational(1, 2), sp.Integer(-3)], exponents=(-2, 3)))
+def test_show_kept_for_a_run_is_the_text(e):
+    """show's memo gives SymPy's text for the expression, the first time and the next ones, for a
+    scalar and inside a vector; a Python number is shown as SymPy shows it."""
+    want = sp.sstr(e, order="grlex").replace("**", "^").replace("*", " ")
+    assert T.show(e) == want and T.show(e) == want
+    assert T.show(sp.Matrix([e, 1, e])) == f"({want}, 1, {want})"
+    assert T.show(3) == "3" and T.show(sp.Rational(-3, 7)) == "-3/7"
+
+
+def test_sign_records_kept_for_a_run_are_not_changed_by_their_readers():
+    """signed_fact reads the memoised _poly_data/_factor_data without changing them: the record of
+    a sign is the same the first time, the next ones, and after the caches' reset."""
+    import copy
+
+    from certify import caches
+    H = T.hypotheses(1)
+    for E in [T.cθ * T.sφ + T.cφ, (1 + T.cφ ** 2) / (T.sθ * (T.cθ ** 2 + T.sθ ** 2)), -T.sφ ** 3 * T.cθ]:
+        n, d = T.fraction(E)
+        first = T.signed_fact(E, H)
+        data = copy.deepcopy(T._poly_data(n, H))
+        assert T.signed_fact(E, H) == first and T._poly_data(n, H) == data
+        caches.reset()
+        assert T.signed_fact(E, H) == first
