@@ -103,21 +103,24 @@ def main(argv=None) -> int:
     from benchmarks.bench import BENCH, machine, time_command
     scripts, rows = {}, []
 
-    def row(what: str, eng: float, ref: float, yardstick: str, target: float | None) -> None:
-        met = "" if target is None else ("met" if eng / ref <= target else "**not met**") + f" (≤ {target}×)"
+    def row(what: str, eng: float, ref: float, yardstick: str, target: float | None, reading: str = "") -> None:
+        met = "" if target is None else ("met" if eng / ref <= target else "**not met**") + f" (≤ {target}×{reading})"
         rows.append(f"| {what} | {eng:.2f} | {yardstick} | {ref:.2f} | {eng / ref:.2f}× | {met} |")
         print(f"{what}: {eng:.2f} s, ratio {eng / ref:.2f} to the script on {yardstick} ({ref:.2f} s; medians of "
               f"{args.repeat})", flush=True)
     for kind, word in TARGETS + ((LONG,) if args.long else ()):
         ref = scripts[word] = median_seconds(lambda w=word: algebra(w), args.repeat)
         eng = median_seconds(lambda k=kind, w=word: engine(k, w), args.repeat)
-        row(f"`{kind}` {word}, analysis in process", eng, ref, word,
-            TARGET_RATIOS["orbit"] if (kind, word) == TARGETS[0] else None)
+        if (kind, word) == TARGETS[1]:     # the yardstick is the script on the long word (below)
+            row(f"`{kind}` {word}, analysis in process", eng, ref, word, TARGET_RATIOS[kind], ", a stricter reading")
+        else:
+            row(f"`{kind}` {word}, analysis in process", eng, ref, word,
+                TARGET_RATIOS["orbit"] if (kind, word) == TARGETS[0] else None)
     long_word, pattern_word = TARGETS[0][1], TARGETS[1][1]
     eng = statistics.median(time_command(args.repeat, ["pattern", pattern_word]))
     command = f"`certify pattern {pattern_word}`, whole command"
     row(command, eng, scripts[long_word], long_word, TARGET_RATIOS["pattern"])
-    row(command, eng, scripts[pattern_word], pattern_word, None)
+    row(command, eng, scripts[pattern_word], pattern_word, TARGET_RATIOS["pattern"], ", a stricter reading")
     if args.all:
         eng = statistics.median(time_command(args.repeat))
         row("`certify all`, whole command", eng, scripts[long_word], long_word, TARGET_RATIOS["all"])

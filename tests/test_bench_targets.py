@@ -29,5 +29,6 @@ def test_targets_are_timed_and_written(monkeypatch, tmp_path, capsys):
     assert len(rows) == 5
     assert "| 1.10× | met (≤ 1.2×) |" in rows[0]
     assert "| 0.55× | met (≤ 0.6×) |" in rows[2]                                # pattern: 1.1 / 2.0
-    assert "| 1.10× |  |" in rows[3]                                              # pattern / its own word's script
+    assert "| 0.50× | met (≤ 0.6×, a stricter reading) |" in rows[1]              # in process / its own word's script
+    assert "| 1.10× | **not met** (≤ 0.6×, a stricter reading) |" in rows[3]     # whole command / its own word's
     assert "| 3.50× | **not met** (≤ 3.0×) |" in rows[4]                          # all: 7.0 / 2.0
