@@ -647,22 +647,6 @@ def closed_angles(letter: str, n: tuple, arb=flint.arb) -> tuple:
     return letter, arb(pj) / root_s, arb(pk) / root_s, arb(ni) / root_nn, root_s / root_nn
 
 
-def _angles_orthogonal(letter: str, p, w) -> Angles:
-    """:func:`angles_of` for integer p and w with w · p = 0 (the position and tangent of
-    :func:`_position_tangent`: p = ±(n ∧ e_i) and w = |n|² e_i − n_i n are ⊥): the tangential
-    part |p|² w − (w · p) p is |p|² w, the same integers; the same balls from there."""
-    arb = flint.arb
-    p0, p1, p2 = p
-    q0, q1, q2 = w
-    pp = p0 * p0 + p1 * p1 + p2 * p2
-    w0, w1, w2 = arb(pp * q0), arb(pp * q1), arb(pp * q2)
-    p0, p1, p2 = arb(p0), arb(p1), arb(p2)
-    c, d = 1 / (p0 * p0 + p1 * p1 + p2 * p2).sqrt(), 1 / (w0 * w0 + w1 * w1 + w2 * w2).sqrt()
-    ct, st = (c * p1, c * p2) if letter == "a" else (c * p2, c * p0) if letter == "b" else (c * p0, c * p1)
-    e0, e1, e2 = e_theta(letter, ct, st)
-    return Angles(letter, ct, st, (d * w0) * e0 + (d * w1) * e1 + (d * w2) * e2, d * (w0, w1, w2)[INDEX[letter]])
-
-
 def _trig_agrees(T: tuple, X: tuple, letter: str, neg, h, arb) -> bool:
     """:func:`trig_step` from the angles T (with the balls −r and (1 + r)/2 given), compared with
     the angles X (tuples of :func:`_angles`): the same contact and every ball overlapping."""
