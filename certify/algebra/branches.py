@@ -172,8 +172,9 @@ def _split_sqrt(P, delta):
 
 def _lrq_terms(q) -> list[tuple[flint.fmpq, int, int]]:
     """:func:`poly.ring_terms` of an fmpq_mpoly in (λ, r) (lex, λ first: the same terms in
-    the same order as those of the equal element of the engine's ring)."""
-    return [(c, er, el) for (el, er), c in q.to_dict().items()]
+    the same order as those of the equal element of the engine's ring; read off its monomials
+    and coefficients, in order, without the dict to_dict builds from them)."""
+    return [(c, er, el) for (el, er), c in zip(q.monoms(), q.coeffs())]
 
 
 def _lrq_to_mpoly(q) -> tuple:

@@ -1011,3 +1011,15 @@ def test_sign_on_branch_at_is_the_branchs_entry_of_sign_at_point():
             assert S.sign_on_branch_at(cond, rc, len(full)) == NO_BRANCH
     assert S.sign_on_branch_at(Condition.of("x", x, fp), Algebraic.rational(Q(1, 9)), 0) == -1
     assert S.sign_on_branch_at(Condition.of("x", x, fp), Algebraic.rational(Q(1, 4)), 0) is None
+
+
+def test_lrq_terms_are_the_ring_terms_in_order():
+    # a Condition built from fmpq_mpoly reads its terms with _lrq_terms (monomials and
+    # coefficients read in order): the terms, in the order, of the equal element of the ring
+    from certify.algebra.branches import _lrq_terms
+    from certify.algebra.poly import ring_terms, ring_to_lrq, to_ring
+    for e in (lam ** 3 * r ** 2 - sp.Rational(3, 7) * lam * r ** 5 + 2 * r - sp.Rational(1, 9),
+              (lam - r) ** 4 * (2 * lam + 3 * r ** 2 - 1), sp.Integer(5), sp.Integer(0)):
+        p = to_ring(e)
+        q = ring_to_lrq(p)
+        assert _lrq_terms(q) == ring_terms(p) == [(c, er, el) for (el, er), c in q.to_dict().items()]
