@@ -649,11 +649,13 @@ def lr_to_ring(p, scale=1) -> PolyElement:
     dom = RING.domain
     # SymPy's QQ over python-flint holds fmpq itself: build them directly (no domain dispatch)
     conv = flint.fmpq if dom.dtype is flint.fmpq else dom
+    # the terms read off monoms() and coeffs() (to_dict's items, in its order, without its
+    # Python loop over the terms)
     if scale == 1:
-        d = {(el, er, 0, 0, 0, 0): conv(c) for (el, er), c in p.to_dict().items()}
+        d = {(el, er, 0, 0, 0, 0): conv(c) for (el, er), c in zip(p.monoms(), p.coeffs())}
     else:
         s = flint.fmpq(scale)
-        d = {(el, er, 0, 0, 0, 0): conv(flint.fmpq(c) / s) for (el, er), c in p.to_dict().items()}
+        d = {(el, er, 0, 0, 0, 0): conv(flint.fmpq(c) / s) for (el, er), c in zip(p.monoms(), p.coeffs())}
     return RING.zero.new(d)
 
 

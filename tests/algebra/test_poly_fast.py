@@ -151,3 +151,16 @@ def test_frac_sum_is_the_canonical_sum():
             full = Frac(A.num * B.den + B.num * A.den, A.den * B.den)      # the full gcd
             assert (S.num, S.den) == (full.num, full.den), (a, b)
             assert frac_to_field(S) == to_field(a) + to_field(b)
+
+
+def test_lr_to_ring_keeps_the_terms_in_order():
+    # lr_to_ring reads the terms off monoms() and coeffs(): the element to_dict's items give,
+    # term for term in the same order (fmpz_mpoly and fmpq_mpoly, with and without a scale)
+    from certify.algebra.poly import LRCTX, LRQCTX, RING, lr_to_ring
+    zq = LRQCTX.from_dict({(3, 1): flint.fmpq(-2, 7), (1, 5): 3, (0, 0): flint.fmpq(1, 9), (0, 2): 4})
+    zz = LRCTX.from_dict({(4, 0): 5, (2, 3): -6, (0, 1): 1})
+    for p in (zq, zz, zq - zq):
+        for scale in (1, 6):
+            got = lr_to_ring(p, scale)
+            want = {(el, er, 0, 0, 0, 0): flint.fmpq(c) / scale for (el, er), c in p.to_dict().items()}
+            assert got == RING.zero.new(want) and list(got.items()) == list(want.items())
