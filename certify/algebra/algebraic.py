@@ -188,9 +188,11 @@ class Algebraic:
         """The number rounded to n significant digits, from a certified enclosure:
         the interval is refined until both of its ends round alike."""
         for k in itertools.count():
-            a, b = _fmt(self.lo, n), _fmt(self.hi, n)
-            if a == b:
-                return a
+            # the ends' roundings compared as rationals (equal roundings, equal texts; the text,
+            # a SymPy Float's, made once at the end)
+            a = _rounded(self.lo, n)
+            if a == _rounded(self.hi, n):
+                return _fmt(self.lo, n)
             if k == 100 and self.minimal_polynomial().degree() == 1:
                 # a rational number (possibly a rounding tie): make it exact
                 c = self.p.coeffs()
@@ -433,18 +435,30 @@ def _dec(n: int, k: int) -> str:
     return f"{sign}{n // 10 ** k}.{str(n % 10 ** k).zfill(k)}"
 
 
-def _fmt(q: flint.fmpq, n: int) -> str:
-    """The rational q correctly rounded (half to even) to n significant digits."""
+def _rounded(q: flint.fmpq, n: int) -> tuple[int, int]:
+    """The rational q correctly rounded (half to even) to n significant digits, as
+    (d, e) with the value d·10^e (0 as (0, 0)); equal values give equal pairs."""
     f = Fraction(int(q.p), int(q.q))
     if f == 0:
-        return str(sp.Float(0, n))
+        return 0, 0
     e = len(str(abs(f.numerator))) - len(str(f.denominator))
     while Fraction(10) ** e > abs(f):
         e -= 1
     while Fraction(10) ** (e + 1) <= abs(f):
         e += 1
     d = round(f / Fraction(10) ** (e - n + 1))          # exact integer rounding
-    return str(sp.Float(sp.Rational(d) * sp.Rational(10) ** (e - n + 1), n))
+    e = e - n + 1
+    while d % 10 == 0:                                  # 9.99… rounded up to 10.0: one value, one pair
+        d, e = d // 10, e + 1
+    return d, e
+
+
+def _fmt(q: flint.fmpq, n: int) -> str:
+    """The rational q correctly rounded (half to even) to n significant digits."""
+    d, e = _rounded(q, n)
+    if d == 0:
+        return str(sp.Float(0, n))
+    return str(sp.Float(sp.Rational(d) * sp.Rational(10) ** e, n))
 
 
 @fact(facts.sign_at)

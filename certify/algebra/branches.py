@@ -172,8 +172,9 @@ def _split_sqrt(P, delta):
 
 def _lrq_terms(q) -> list[tuple[flint.fmpq, int, int]]:
     """:func:`poly.ring_terms` of an fmpq_mpoly in (λ, r) (lex, λ first: the same terms in
-    the same order as those of the equal element of the engine's ring)."""
-    return [(c, er, el) for (el, er), c in q.to_dict().items()]
+    the same order as those of the equal element of the engine's ring; read off its monomials
+    and coefficients, in order, without the dict to_dict builds from them)."""
+    return [(c, er, el) for (el, er), c in zip(q.monoms(), q.coeffs())]
 
 
 def _lrq_to_mpoly(q) -> tuple:
@@ -641,7 +642,8 @@ class Spectrum:
         self._tables = {}
         self._branches = {}
         self._eigenvalues = {}
-        self._common = {}                  # (h or id of h, key of rc) -> (h, common roots of cp and h there)
+        self._common = {}                  # (h or id of h, key of rc) -> (h, common roots of cp and h there,
+        #                                    (branch, maxprec) -> whether h vanishes on it)
         self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
         self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
         self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
@@ -650,6 +652,7 @@ class Spectrum:
         self._factor_ids = {}              # id of a polynomial in r -> (it, its irreducible factors)
         self._known: list = []             # the irreducible factors met so far (of disc cp, resultants)
         self._texts: dict = {}             # id of a known factor -> its text
+        self._branch_signs: dict = {}      # (id of a condition, key of rc, k, maxprec) -> (it, its sign there)
 
     @cached_property
     def cp(self) -> sp.Expr:
@@ -892,7 +895,17 @@ class Spectrum:
         """``sign_at_point(cond, rc)[k]`` computed for the branch k alone (the same sign: balls
         decide a sign only where it is proven, and the exact tests are those of branch k);
         UNDECIDED when the branches cannot be isolated (sign_at_point's None), NO_BRANCH when
-        there are fewer than k + 1."""
+        there are fewer than k + 1.  Computed once per condition, point and branch (a point
+        of several regions, or of the two fixed points' regions, asks again; an exact answer)."""
+        key = (id(cond), rc.key(), k, maxprec)
+        entry = self._branch_signs.get(key)
+        if entry is not None and entry[0] is cond:
+            return entry[1]
+        sg = self._sign_on_branch_at(cond, rc, k, maxprec)
+        self._branch_signs[key] = (cond, sg)
+        return sg
+
+    def _sign_on_branch_at(self, cond: Condition, rc: Algebraic, k: int, maxprec: int):
         roots = self.branches_at(rc)
         if roots is None:
             return UNDECIDED
@@ -1130,10 +1143,17 @@ class Spectrum:
         key = (h if content else id(h), rc.key())
         entry = self._common.get(key)
         if entry is None or not content and entry[0] is not h:
-            entry = self._common[key] = (h, self._common_roots(h, rc))
-        G = entry[1]
+            entry = self._common[key] = (h, self._common_roots(h, rc), {})
+        G, known = entry[1], entry[2]
         if G is True or G is False:
             return G
+        if (branch, maxprec) not in known:        # the balls' answer, once per branch
+            known[branch, maxprec] = self._vanishes_on(G, rc, branch, maxprec)
+        return known[branch, maxprec]
+
+    def _vanishes_on(self, G, rc: Algebraic, branch: int, maxprec: int) -> bool:
+        """Whether branch ``branch`` at rc is one of the common roots G (:meth:`_common_roots`'
+        balls), by disjoint certified balls; Undecided when they do not separate."""
         branches = self.branches_at(rc)
         if branches is None or branch >= len(branches):
             raise Undecided("branch not isolated at this point")

@@ -549,7 +549,7 @@ class Frac:
             return self
         if self.den == g.den:
             return Frac(self.num + g.num, self.den)
-        return Frac(self.num * g.den + g.num * self.den, self.den * g.den)
+        return _sum(self, g)
 
     __radd__ = __add__
 
@@ -587,6 +587,27 @@ class Frac:
 
     def __rtruediv__(self, g):
         return Frac.of(g) * self.inverse()
+
+
+def _sum(a: Frac, b: Frac) -> Frac:
+    """a + b for canonical a = n₁/d₁, b = n₂/d₂ with d₁ ≠ d₂, in canonical form, without the gcd
+    of the whole numerator and denominator (Henrici): with h = gcd(d₁, d₂), d₁ = h e₁,
+    d₂ = h e₂, t = n₁e₂ + n₂e₁ is coprime to e₁e₂ (t ≡ n₁e₂ mod e₁, gcd(n₁, e₁) = gcd(e₂, e₁) = 1;
+    Z[λ, r] is a UFD, contents included), so gcd(t, h·e₁e₂) = gcd(t, h) = k and the sum is
+    (t/k)/(e₁e₂·h/k): the pair the full gcd gives (coprime, the sign of den fixed)."""
+    h = a.den.gcd(b.den)
+    e1, e2 = (a.den, b.den) if h.is_one() else (a.den / h, b.den / h)
+    t = a.num * e2 + b.num * e1
+    if t.is_zero():
+        return Frac(_LR_ZERO)
+    if not h.is_one():
+        k = t.gcd(h)
+        if not k.is_one():
+            t, h = t / k, h / k
+    den = e1 * e2 * h
+    if den.leading_coefficient() < 0:
+        t, den = -t, -den
+    return Frac(t, den, True)
 
 
 def _lr_from_ring(p: PolyElement):
@@ -628,11 +649,13 @@ def lr_to_ring(p, scale=1) -> PolyElement:
     dom = RING.domain
     # SymPy's QQ over python-flint holds fmpq itself: build them directly (no domain dispatch)
     conv = flint.fmpq if dom.dtype is flint.fmpq else dom
+    # the terms read off monoms() and coeffs() (to_dict's items, in its order, without its
+    # Python loop over the terms)
     if scale == 1:
-        d = {(el, er, 0, 0, 0, 0): conv(c) for (el, er), c in p.to_dict().items()}
+        d = {(el, er, 0, 0, 0, 0): conv(c) for (el, er), c in zip(p.monoms(), p.coeffs())}
     else:
         s = flint.fmpq(scale)
-        d = {(el, er, 0, 0, 0, 0): conv(flint.fmpq(c) / s) for (el, er), c in p.to_dict().items()}
+        d = {(el, er, 0, 0, 0, 0): conv(flint.fmpq(c) / s) for (el, er), c in zip(p.monoms(), p.coeffs())}
     return RING.zero.new(d)
 
 

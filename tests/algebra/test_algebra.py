@@ -532,6 +532,26 @@ def test_digits_examples():
     assert float(Algebraic.surd(0, Q(1, 10 ** 30), 2)) == pytest.approx(2 ** 0.5 * 1e-30, rel=1e-15)
 
 
+
+def test_digits_compares_roundings_not_texts():
+    # digits stops when both ends round to one value (_rounded), then prints it (_fmt): the
+    # roundings are equal exactly when the texts are, across a power of ten (9.99… and 10.0
+    # are one value), ties (half to even), signs and zero
+    from certify.algebra.algebraic import _fmt, _rounded
+    cases = [(Q(99999996, 10 ** 7), Q(10)), (Q(99999994, 10 ** 7), Q(10)), (Q(1255, 1000), Q(1265, 1000)),
+             (Q(125, 100), Q(1251, 1000)), (Q(-1255, 1000), Q(-125, 100)), (Q(0), Q(1, 10 ** 30)),
+             (Q(1, 8), Q(3, 24)), (Q(12345678, 10 ** 9), Q(123456781, 10 ** 10))]
+    for n in (2, 3, 6):
+        for a, b in cases:
+            assert (_rounded(a, n) == _rounded(b, n)) == (_fmt(a, n) == _fmt(b, n)), (a, b, n)
+    assert _rounded(Q(99999996, 10 ** 7), 6) == _rounded(Q(10), 6) == (1, 1)
+    # the text digits returns is that of both ends of the refined interval
+    for beta in (Algebraic.surd(Q(251, 200), -Q(1, 10 ** 12), 2), Algebraic.surd(10, -Q(1, 10 ** 9), 2)):
+        for n in (3, 6, 10):
+            t = beta.digits(n)
+            assert t == _fmt(beta.lo, n) == _fmt(beta.hi, n)
+
+
 # --- 5. sign_at ----------------------------------------------------------------------
 
 @settings(max_examples=60, **SETTINGS)

@@ -376,6 +376,27 @@ def test_vanishes_at_rational_point():
         S.vanishes_at(lam - 2 * r, q, 2)
 
 
+
+def test_point_answers_kept_per_condition_point_and_branch():
+    # sign_on_branch_at and vanishes_at keep their answers (per condition / polynomial, point
+    # and branch): asked again in any order, for another condition at the same point, they
+    # are a fresh spectrum's answers
+    fp = FixedPoint(lam, -r, sp.Integer(1), sp.Integer(1))
+    conds = [Condition.of(name, g, fp) for name, g in
+             (("x", x), ("x + 1/3", x + sp.Rational(1, 3)), ("λ - 1/3", lam - sp.Rational(1, 3)))]
+    pts = [Algebraic.rational(Q(1, 9)), Algebraic.rational(Q(1, 4)), Algebraic.surd(3, -2, 2)]
+    S = Spectrum(SQRT)
+    for order in ((0, 1), (1, 0), (0, 1)):
+        for cond in conds:
+            for rc in pts:
+                for k in order:
+                    assert S.sign_on_branch_at(cond, rc, k) == Spectrum(SQRT).sign_on_branch_at(cond, rc, k)
+    q = Algebraic.rational(Q(1, 4))
+    for h in (lam - 2 * r, lam + 2 * r):
+        for k in (1, 0, 1, 0):
+            assert S.vanishes_at(h, q, k) == Spectrum(SQRT).vanishes_at(h, q, k) == \
+                ((k == 0) == (h == lam - 2 * r))
+
 def test_vanishes_at_irrational_point():
     # α = 3 - 2√2 = (√2 - 1)² ≈ 0.1716: the branches ±√α = ±(√2 - 1) = ±(1 - α)/2 lie in Q(α)
     S = Spectrum(SQRT)
@@ -990,3 +1011,15 @@ def test_sign_on_branch_at_is_the_branchs_entry_of_sign_at_point():
             assert S.sign_on_branch_at(cond, rc, len(full)) == NO_BRANCH
     assert S.sign_on_branch_at(Condition.of("x", x, fp), Algebraic.rational(Q(1, 9)), 0) == -1
     assert S.sign_on_branch_at(Condition.of("x", x, fp), Algebraic.rational(Q(1, 4)), 0) is None
+
+
+def test_lrq_terms_are_the_ring_terms_in_order():
+    # a Condition built from fmpq_mpoly reads its terms with _lrq_terms (monomials and
+    # coefficients read in order): the terms, in the order, of the equal element of the ring
+    from certify.algebra.branches import _lrq_terms
+    from certify.algebra.poly import ring_terms, ring_to_lrq, to_ring
+    for e in (lam ** 3 * r ** 2 - sp.Rational(3, 7) * lam * r ** 5 + 2 * r - sp.Rational(1, 9),
+              (lam - r) ** 4 * (2 * lam + 3 * r ** 2 - 1), sp.Integer(5), sp.Integer(0)):
+        p = to_ring(e)
+        q = ring_to_lrq(p)
+        assert _lrq_terms(q) == ring_terms(p) == [(c, er, el) for (el, er), c in q.to_dict().items()]

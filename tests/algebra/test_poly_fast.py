@@ -131,3 +131,36 @@ def test_a_multiplicity_too_high_modulo_the_prime_falls_back_to_the_full_factori
     p = big ** 2 * flint.fmpz_poly([1, -10, 1])
     got, new = irreducible_factors_knowing(p, [flint.fmpz_poly([0, 1])])
     assert got == _flint_factors(p) and flint.fmpz_poly([0, 1]) not in [f for f, _m in got]
+
+
+def test_frac_sum_is_the_canonical_sum():
+    # Frac + Frac with different denominators (poly._sum: the gcd of the numerator with
+    # gcd(d₁, d₂) only) gives the canonical pair the full gcd gives, and SymPy's sum in FIELD:
+    # denominators coprime, sharing factors (also with a content and a sign), sums that
+    # cancel a shared factor, and a sum that is 0
+    from certify.algebra.poly import Frac, field_to_frac, frac_to_field
+    d = [lam - r, 2 * lam + r ** 2, -(3 * r - 1), (lam - r) ** 2 * (6 * r + 2), lam * r + 1]
+    es = [(1 + r) / d[0], lam / d[1], (lam - 2) / (d[0] * d[2]), 1 / d[3], (r - lam) / (d[0] * d[1]),
+          lam ** 2 / (d[4] * d[2]), -(1 + r) / d[0], (2 * r - 1) / (d[3] * d[4]), sp.Rational(5, 6) * lam,
+          1 / d[0], (-1 - r) / (d[0] * (lam + 1)),                # their sum 1/(λ + 1): λ - r cancels
+          1 / (2 * d[0]), (-1 - r) / (2 * d[0] * (lam + 1))]       # the same with a content 2
+    for a in es:
+        for b in es:
+            A, B = field_to_frac(to_field(a)), field_to_frac(to_field(b))
+            S = A + B
+            full = Frac(A.num * B.den + B.num * A.den, A.den * B.den)      # the full gcd
+            assert (S.num, S.den) == (full.num, full.den), (a, b)
+            assert frac_to_field(S) == to_field(a) + to_field(b)
+
+
+def test_lr_to_ring_keeps_the_terms_in_order():
+    # lr_to_ring reads the terms off monoms() and coeffs(): the element to_dict's items give,
+    # term for term in the same order (fmpz_mpoly and fmpq_mpoly, with and without a scale)
+    from certify.algebra.poly import LRCTX, LRQCTX, RING, lr_to_ring
+    zq = LRQCTX.from_dict({(3, 1): flint.fmpq(-2, 7), (1, 5): 3, (0, 0): flint.fmpq(1, 9), (0, 2): 4})
+    zz = LRCTX.from_dict({(4, 0): 5, (2, 3): -6, (0, 1): 1})
+    for p in (zq, zz, zq - zq):
+        for scale in (1, 6):
+            got = lr_to_ring(p, scale)
+            want = {(el, er, 0, 0, 0, 0): flint.fmpq(c) / scale for (el, er), c in p.to_dict().items()}
+            assert got == RING.zero.new(want) and list(got.items()) == list(want.items())
