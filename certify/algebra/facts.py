@@ -8,8 +8,6 @@ from fractions import Fraction
 
 import flint
 import sympy as sp
-from sympy.core.exprtools import gcd_terms
-from sympy.utilities.iterables import iterable
 
 from certify import caches
 from certify.obligations import recording_now
@@ -95,7 +93,7 @@ def _rational_function(e, gens: list) -> dict:
             return _cleared(e, gens)
         except _NotPolynomial:
             pass
-    n, d = sp.fraction(together(e))
+    n, d = sp.fraction(sp.together(e))
     def terms(x):
         if not gens:
             return [[rational(sp.Rational(x)), []]] if x != 0 else []
@@ -106,38 +104,6 @@ def _rational_function(e, gens: list) -> dict:
         P = sp.Poly(sp.expand(x), *gens, domain="QQ")
         return sorted([rational(c), list(m)] for m, c in P.terms())
     return {"num": terms(n), "den": terms(d)}
-
-
-def together(e):
-    """``sp.together(e)`` (not deep, over a common denominator): SymPy's own recursion
-    (sympy.polys.rationaltools.together: an Add is gcd_terms of its arguments put together, a
-    power its base's to the same exponent, any other compound its arguments') with every
-    subexpression's result memoised for a run: the identities of a certificate repeat their
-    sums (the same gcd_terms on equal arguments, equal results)."""
-    return _together(sp.sympify(e))
-
-
-def _together(x):
-    if not isinstance(x, sp.Basic):
-        if iterable(x):
-            return x.__class__([_together(y) for y in x])
-        return x
-    if x.is_Atom or x.is_Function:
-        return x
-    found = _TOGETHER.get(x)
-    if found is None:
-        if x.is_Add:
-            found = gcd_terms(list(map(_together, sp.Add.make_args(x))), fraction=True)
-        elif x.is_Pow:
-            found = x.func(_together(x.base), x.exp)
-        else:
-            found = x.func(*[_together(y) for y in x.args])
-        _TOGETHER[x] = found
-    return found
-
-
-_TOGETHER: dict = {}
-caches.register(_TOGETHER.clear)
 
 
 def _expanded_over_q(e) -> bool:

@@ -149,20 +149,3 @@ def test_a_table_with_the_same_polynomials_is_one_record_whichever_lists_hold_th
     assert rec.add({**table(), "parts": {"N0": [["-1", [1, 0]]], "D0": [["1", [0, 0]]]}}) == "X:4"
     assert rec.add({"kind": "compare", "a": "1/2", "b": "1/3", "sign": 1}) == "X:5"
     assert [ob["id"] for ob in rec.items] == ["X:1", "X:2", "X:3", "X:4", "X:5"]
-
-
-fractions = expressions(GENS + [sp.Rational(1, 2), sp.Rational(-3, 7), sp.Integer(2), x + r / 2, 1 / (x + y)],
-                        exponents=(-2, 3))
-
-
-@settings(max_examples=300, deadline=None)
-@given(st.lists(fractions, min_size=1, max_size=3))
-def test_together_is_sympys_with_a_memo(es):
-    """facts.together, memoised by subexpression, is sp.together expression for expression (srepr:
-    the same tree, hence the same numerator and denominator recorded), on sums sharing subexpressions
-    with the ones put together before; and after the caches' reset."""
-    from certify import caches
-    for e in es + [sp.Add(*es), sp.Mul(*es), sp.Add(*es) ** -1] + es:
-        assert sp.srepr(facts.together(e)) == sp.srepr(sp.together(e))
-    caches.reset()
-    assert sp.srepr(facts.together(es[0])) == sp.srepr(sp.together(es[0]))
