@@ -114,6 +114,7 @@ def clear_progress() -> None:
     if progress is not None:
         progress.clear()
 
+
 def describe(exc: BaseException) -> str:
     """An unexpected exception in one line: type, message, and where it was raised."""
     text = f"{type(exc).__name__}: {' '.join(str(exc).split())}"

@@ -125,9 +125,9 @@ def test_a_known_factor_that_is_not_irreducible_is_caught_by_the_comparison():
 
 
 def test_a_multiplicity_too_high_modulo_the_prime_falls_back_to_the_full_factorisation():
-    """r - (2^61 - 1) ≡ r modulo the prime: r seems to divide it, the exact division refuses,
-    and the whole polynomial is factored (the right answer, r not among the factors)."""
-    big = flint.fmpz_poly([-(2 ** 61 - 1), 1])
+    """r - p ≡ r modulo the prime p of the shortcut: r seems to divide it, the exact division
+    refuses, and the whole polynomial is factored (the right answer, r not among the factors)."""
+    big = flint.fmpz_poly([-poly._PRIME, 1])
     p = big ** 2 * flint.fmpz_poly([1, -10, 1])
     got, new = irreducible_factors_knowing(p, [flint.fmpz_poly([0, 1])])
     assert got == _flint_factors(p) and flint.fmpz_poly([0, 1]) not in [f for f, _m in got]
