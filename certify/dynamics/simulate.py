@@ -34,7 +34,7 @@ from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 from certify.errors import Undecided
 
-from .model import INDEX, LETTERS, collide
+from .model import INDEX, LETTERS, collide, collide_integral
 
 
 class MultipleCollision(ArithmeticError):
@@ -331,8 +331,6 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
     P, Q = _ray(integral_vector(p0)), _ray(integral_vector(q0))
     out = Rays(rays=[(P, Q)])
     events, rays = out.events, out.rays
-    m, d = r.p, r.q
-    neg, two, h = -2 * m, 2 * d, m + d          # the entries of 2d·K, formed once (collide_integral)
     for _ in range(n):
         Q0, Q1, Q2 = Q
         times = []                               # the approaching pairs: (letter, P_i, −Q_i)
@@ -359,19 +357,9 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
             out.stop, out.reason = "multiple", str(exc)
             return out
         # (−Q_i)P + P_i Q, the gaps that close set to 0 (they are 0), then 2d·K Q for each collision
-        P0 = zero if "a" in letters else den * P[0] + num * Q0
-        P1 = zero if "b" in letters else den * P[1] + num * Q1
-        P2 = zero if "c" in letters else den * P[2] + num * Q2
-        for L in letters:                        # collide_integral(L, Q, r), written out
-            if L == "a":
-                Q0, Q1, Q2 = neg * Q0, two * Q1 + h * Q0, two * Q2
-            elif L == "b":
-                Q0, Q1, Q2 = two * Q0 + h * Q1, neg * Q1, two * Q2 + h * Q1
-            else:
-                Q0, Q1, Q2 = two * Q0, two * Q1 + h * Q2, neg * Q2
-        Q = (Q0, Q1, Q2)
-        g = P0.gcd(P1).gcd(P2)                   # _ray, written out
-        P = (P0, P1, P2) if g == 1 or g == 0 else (P0 // g, P1 // g, P2 // g)
+        P = _ray(tuple(zero if L in letters else den * P[i] + num * Q[i] for i, L in enumerate(LETTERS)))
+        for L in letters:
+            Q = collide_integral(L, Q, r)
         events.append(letters)
         rays.append((P, Q))
     return out
