@@ -422,24 +422,7 @@ def vectorial_ray(letter: str, u, r) -> tuple[str, tuple]:
     if s == 0:
         raise Corner("cos φ = 0: the orbit heads for a corner")
     j = LETTERS[(i + 1) % 3] if s > 0 else LETTERS[(i + 2) % 3]
-    return j, cross(_wedge_unit(u, INDEX[j]), collide_integral(j, _around(u, i), r))
-
-
-def _wedge_unit(u, j: int) -> tuple:
-    """u ∧ e_j, written out: the same integers as ``cross(u, E[j])``."""
-    u0, u1, u2 = u
-    zero = u0 - u0
-    return (zero, u2, -u1) if j == 0 else (-u2, zero, u0) if j == 1 else (u1, -u0, zero)
-
-
-def _around(u, i: int) -> tuple:
-    """u ∧ (e_i ∧ u) = |u|² e_i − u_i u, written out: the same integers as
-    ``cross(u, cross(E[i], u))`` (the double cross product expanded)."""
-    u0, u1, u2 = u
-    ui = u[i]
-    out = [-ui * u0, -ui * u1, -ui * u2]
-    out[i] = u0 * u0 + u1 * u1 + u2 * u2 - ui * ui
-    return tuple(out)
+    return j, cross(cross(u, E[INDEX[j]]), collide_integral(j, cross(u, cross(E[i], u)), r))
 
 
 def same_ray(v, w) -> bool:
@@ -593,15 +576,13 @@ def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
     overlapping P1's, and at how many a sign was undecided.  The angles of a state are balls
     at ``prec`` bits of the exact ones, from their closed forms for an integer normal
     (:func:`closed_angles`; the same numbers as :func:`angles`), computed once (they end one
-    step and start the next) and kept as tuples (letter, cos θ, sin θ, cos φ, sin φ); the step
-    is :func:`trig_step`'s ball operations, written out, in one precision context and with the
-    balls of r, −r and (1 + r)/2 formed once.  Balls of the true values overlap: a step that
-    does not agree is one where the six cases do not give the next state."""
+    step and start the next); the step is :func:`trig_step`, in one precision context.  Balls
+    of the true values overlap: a step that does not agree is one where the six cases do not
+    give the next state."""
     agree = undecided = 0
     arb, fmpz = flint.arb, flint.fmpz
     with precision(prec):
         rr = arb(r)
-        neg, h = -rr, (1 + rr) / 2
         last = None
         for P, P1 in zip(planes, planes[1:]):
             try:
@@ -610,7 +591,9 @@ def trig_agreement(planes: list, r, prec: int = 128) -> tuple[int, int]:
                 T = last[1]
                 X = _angles(P1, fmpz, arb)
                 last = (P1, X)
-                agree += _trig_agrees(T, X, P1.letter, neg, h, arb)
+                Y = trig_step(Angles(*T), rr)
+                agree += Y.letter == P1.letter and Y.ct.overlaps(X[1]) and Y.st.overlaps(X[2]) and \
+                    Y.cp.overlaps(X[3]) and Y.sp.overlaps(X[4])
             except Undecided:
                 undecided += 1
     return agree, undecided
@@ -645,37 +628,6 @@ def closed_angles(letter: str, n: tuple, arb=flint.arb) -> tuple:
     s = nj * nj + nk * nk
     root_s, root_nn = arb(s).sqrt(), arb(s + n[i] * n[i]).sqrt()
     return letter, arb(pj) / root_s, arb(pk) / root_s, arb(ni) / root_nn, root_s / root_nn
-
-
-def _trig_agrees(T: tuple, X: tuple, letter: str, neg, h, arb) -> bool:
-    """:func:`trig_step` from the angles T (with the balls −r and (1 + r)/2 given), compared with
-    the angles X (tuples of :func:`_angles`): the same contact and every ball overlapping."""
-    letter0, ct, st, cp, sp = T
-    if cp > 0:
-        s = 1
-    elif cp < 0:
-        s = -1
-    elif cp.is_zero():
-        raise Corner("cos φ = 0")
-    else:
-        raise Undecided(f"sign of {cp} undecided")
-    j, p1 = CASES[(letter0, s)]
-    if j != letter:
-        return False
-    x0, x1, x2 = p1(ct, st, cp, sp)
-    x0, x1, x2 = arb(x0), arb(x1), arb(x2)
-    c = 1 / (x0 * x0 + x1 * x1 + x2 * x2).sqrt()
-    x0, x1, x2 = c * x0, c * x1, c * x2
-    q1, q2, q3 = Q0[letter0](ct, st, cp, sp)
-    if j == "a":
-        k0, k1, k2 = neg * q1, q2 + h * q1, q3
-    elif j == "b":
-        k0, k1, k2 = q1 + h * q2, neg * q2, q3 + h * q2
-    else:
-        k0, k1, k2 = q1, q2 + h * q3, neg * q3
-    d = k0 * x0 + k1 * x1 + k2 * x2
-    yct, yst, ycp, ysp = _step_angles(j, x0, x1, x2, k0 - d * x0, k1 - d * x1, k2 - d * x2)
-    return yct.overlaps(X[1]) and yst.overlaps(X[2]) and ycp.overlaps(X[3]) and ysp.overlaps(X[4])
 
 
 # --- printed vector formulas ---------------------------------------------------
