@@ -515,29 +515,7 @@ def angles_of(letter: str, p, q) -> Angles:
 def angles(P: Plane, prec: int | None = None) -> Angles:
     """The trigonometric representation of a Plane (balls at ``prec`` bits)."""
     with precision(prec):
-        n = P.n
-        if type(n[0]) is flint.fmpz and type(n[1]) is flint.fmpz and type(n[2]) is flint.fmpz:
-            return angles_of(P.letter, *_position_tangent(P.letter, n))
         return angles_of(P.letter, position(P), tangent(P))
-
-
-def _position_tangent(letter: str, n: tuple) -> tuple[tuple, tuple]:
-    """:func:`position` and :func:`tangent` of an integer normal n, written out: n ∧ e_i has
-    the entries 0 at i, n_k at j and −n_j at k (j, k = i+1, i+2 mod 3); the same values."""
-    i = INDEX[letter]
-    j, k = (i + 1) % 3, (i + 2) % 3
-    p = [0, 0, 0]
-    p[j], p[k] = n[k], -n[j]
-    s, t = (p[j] > 0) - (p[j] < 0), (p[k] > 0) - (p[k] < 0)
-    if s != t or s == 0:
-        raise Corner(f"the plane {n} meets the face {letter} outside its interior")
-    if s < 0:
-        p[j], p[k] = -p[j], -p[k]
-    n0, n1, n2 = n
-    ni = n[i]
-    w = [-ni * n0, -ni * n1, -ni * n2]
-    w[i] = n0 * n0 + n1 * n1 + n2 * n2 - ni * ni
-    return tuple(p), tuple(w)
 
 
 def trig_step(T: Angles, r) -> Angles:

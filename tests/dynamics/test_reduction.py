@@ -401,25 +401,6 @@ def test_the_ball_next_letter_decides_as_next_letter():
             plane = _decided(lambda: R.next_letter(R.Plane(letter, n)))       # noqa: B023
             k = R._next_index_ball(R.INDEX[letter], n)
             assert (LETTERS[k] if k >= 0 else "refused") == plane, (letter, n)
-@settings(max_examples=200, deadline=None)
-@given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-3, 3) | st.integers(-10 ** 40, 10 ** 40)] * 3))
-def test_angles_of_an_integer_normal_is_the_generic_one(letter, n):
-    """angles() of an integer normal takes _position_tangent: the position and tangent of
-    position() and tangent() (Corner alike), hence the same balls."""
-    n = tuple(flint.fmpz(z) for z in n)
-    assume_nonzero = any(n)
-    P = R.Plane(letter, n)
-    try:
-        want = (R.position(P), R.tangent(P))
-    except R.Corner:
-        with pytest.raises(R.Corner):
-            R._position_tangent(letter, n)
-        return
-    assert assume_nonzero and R._position_tangent(letter, n) == want
-    with precision(128):
-        a, b = R.angles(P), R.angles_of(letter, *want)
-    assert [z.mid().str(40) + z.rad().str(5) for z in (a.ct, a.st, a.cp, a.sp)] == \
-        [z.mid().str(40) + z.rad().str(5) for z in (b.ct, b.st, b.cp, b.sp)]
 
 
 @settings(max_examples=100, deadline=None)
