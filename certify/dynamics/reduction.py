@@ -149,15 +149,6 @@ class Plane:
         return max(int(z).bit_length() for z in self.n)
 
 
-def _plane(letter: str, n: tuple, new=object.__new__, put=object.__setattr__) -> Plane:
-    """Plane(letter, n), made as the frozen dataclass's __init__ makes it (its two fields set by
-    object.__setattr__), without the call of __init__: the planes of the runs and orbits are many."""
-    P = new(Plane)
-    put(P, "letter", letter)
-    put(P, "n", n)
-    return P
-
-
 def canonical(letter: str, n) -> Plane:
     """The Plane with contact ``letter`` and normal ∝ n (orientation e_t · n > 0)."""
     return oriented(letter, primitive(n))
@@ -165,13 +156,7 @@ def canonical(letter: str, n) -> Plane:
 
 def oriented(letter: str, n) -> Plane:
     """:func:`canonical` for a primitive integer n (±n is the Plane's normal)."""
-    z = n[ORIENTATION[letter]]
-    if type(z) is flint.fmpz:        # sign(z), read directly
-        if z > 0:
-            return _plane(letter, n)
-        if z < 0:
-            return _plane(letter, (-n[0], -n[1], -n[2]))
-    s = sign(z)
+    s = sign(n[ORIENTATION[letter]])
     if s == 0:
         raise Corner(f"e_t · n = 0 at contact {letter}: the position is a corner")
     return Plane(letter, n if s > 0 else (-n[0], -n[1], -n[2]))

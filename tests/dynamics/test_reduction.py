@@ -1,9 +1,7 @@
 """Section 4 on the dynamics: the reduction map (certify.dynamics.reduction) and the
 certificates S6, S7.2, S8.2, S9.2, S10, S11 (proofs/section4_*.py); their mutants and
 statuses as printed are in tests/proofs/test_mutants.py."""
-import dataclasses
 import itertools
-import pickle
 import random
 
 import flint
@@ -538,7 +536,7 @@ def test_word_counts_are_the_letter_by_letter_ones(words, pattern, blocks, ks):
 
 @given(st.sampled_from(LETTERS), st.tuples(*[st.integers(-50, 50)] * 3))
 def test_oriented_reads_the_sign_of_an_integer_entry(letter, n):
-    """oriented on fmpz entries (the sign read directly) is oriented on fmpq entries (by sim.sign)."""
+    """oriented on fmpz entries is oriented on fmpq entries: the orientation e_t · n > 0 (a corner alike)."""
     t = R.ORIENTATION[letter]
     zs, qs = tuple(map(flint.fmpz, n)), tuple(map(Q, n))
     if n[t] == 0:
@@ -548,11 +546,6 @@ def test_oriented_reads_the_sign_of_an_integer_entry(letter, n):
         return
     P, P2 = R.oriented(letter, zs), R.oriented(letter, qs)
     assert P.letter == P2.letter == letter and P.n[t] > 0 and tuple(map(Q, P.n)) == P2.n
-    made = R.Plane(P.letter, P.n)             # the dataclass's own construction, as _plane imitates it
-    assert P == made and hash(P) == hash(made) and repr(P) == repr(made) and vars(P) == vars(made)
-    assert pickle.loads(pickle.dumps(P)) == made
-    with pytest.raises(dataclasses.FrozenInstanceError):
-        P.n = zs
 
 
 @pytest.mark.parametrize("A, B, C", [(S41.A_PRINTED, S41.B_PRINTED, S41.C_PRINTED),
