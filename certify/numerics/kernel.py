@@ -24,14 +24,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import config, njit, prange
-
-# The runner forks its workers (certify all, bench): GNU OpenMP, numba's usual threading layer
-# here, does not survive a fork once used ("fork() called from a process already using GNU
-# OpenMP": the child dies).  Unless the user chose a layer, take a fork-safe one (tbb, or
-# numba's own workqueue): the same iterations, scheduled otherwise, the same results.
-if config.THREADING_LAYER == "default":
-    config.THREADING_LAYER = "forksafe"
+from numba import njit, prange
 
 BIG = 2.0 ** 256
 SMALL = 2.0 ** -256
