@@ -1,90 +1,120 @@
-"""certify_kernel: re-checks reports/certificates.json with the Python standard library alone.
+"""certify_kernel: checks the paper's statements, written as data, with the standard library alone.
 
-A certificate lists its obligations (facts over Z and Q: polynomial identities, root counts,
-algebraic numbers, signs, digits, sign tables of eigenvalue branches) and its sub-claims, each
-naming the obligations it rests on and how they give it (its derivation).  :func:`verify_certificate`
-checks every obligation with :mod:`certify_kernel.checks` and every derivation with
-:mod:`certify_kernel.derive` (its conclusion must be the sub-claim's verdict); a sub-claim is
-*independently verified* when it names at least one obligation and every one it names is
-verified (and its derivation, if any, checked).  The schema is in docs/verify.md and
-certify_kernel/certificates.schema.json.
+The statements (statements/*.txt, :mod:`certify_kernel.statements`) are the paper's claims in a
+small language, each with its line and the verdict the tool gives it (holds, refuted by its
+correction, corrects a refuted one); the kernel builds every object they name from its own
+definitions (:mod:`certify_kernel.evaluate`) and decides each statement exactly.  From
+reports/certificates.json, written by the engine, it reads only the engine's verdicts (which
+must be the statement file's) and *witnesses*: data that make a decision cheaper or possible
+(a factorisation whose signs are read by inspection), each checked against the kernel's own
+objects.  A statement is *verified* when the kernel's decision is its verdict; a certificate's
+status (PASS, ERRATUM, OBSERVED) is computed from its statements' verdicts and must be the
+engine's.  docs/verify.md says how to read the files.
 """
 from __future__ import annotations
 
 import json
 
-from .checks import CHECKERS, Failed, Unsupported
-from .derive import concludes
+from .evaluate import Context, NotVerified, truth
+from .language import Syntax, parse
+from .statements import Paper, read
+from .values import Undefined, declare, declare_angle
 
-FORMAT = "certify-certificates/1"
+FORMAT = "certify-certificates/2"
 
 
 def load(path: str) -> dict:
     """The certificates file, read as JSON (no code is evaluated)."""
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
-    if data.get("format") != FORMAT:
+    if not isinstance(data, dict) or data.get("format") != FORMAT or not isinstance(data.get("certificates"), list):
         raise ValueError(f"{path}: not a certificates file of format {FORMAT}")
+    for c in data["certificates"]:
+        if not isinstance(c, dict) or not isinstance(c.get("id"), str) or not isinstance(c.get("statements"), dict):
+            raise ValueError(f"{path}: a certificate without an id or statements")
     return data
 
 
-def verify_certificate(cert: dict) -> dict:
-    """Check every obligation of one certificate, in order (a sign table before the queries
-    that read it), then every sub-claim's references and derivation.  Returns {"id", "ok",
-    "failure", "subclaims", "verified", "derived", "unsupported": {obligation id: reason}}."""
-    obligations = {ob["id"]: ob for ob in cert["obligations"]}
-    env: dict = {"obligations": obligations, "verified": set()}
-    unsupported: dict = {}
-    out = {"id": cert["id"], "status": cert.get("status", ""), "ok": True, "failure": "", "unsupported": unsupported}
-    if len(obligations) != len(cert["obligations"]):
-        return {**out, "ok": False, "failure": "two obligations share an id"}
-    for ob in cert["obligations"]:
-        checker = CHECKERS.get(ob.get("kind"))
-        try:
-            if checker is None:
-                raise Failed(f"unknown kind {ob.get('kind')!r}")
-            checker(ob, env)
-            env["verified"].add(ob["id"])
-        except Unsupported as exc:
-            unsupported[ob["id"]] = str(exc)
-        except Exception as exc:     # a false obligation, or a malformed one
-            return {**out, "ok": False, "failure": f"obligation {ob['id']} ({ob.get('kind')}): {_why(exc)}"}
-    counted = verified = derived = 0
-    for k, sub in enumerate(cert["subclaims"]):
-        names, where = sub.get("obligations", []), f"sub-claim {k + 1} ({sub['statement'][:60]})"
-        missing = [i for i in names if i not in obligations]
-        if missing:
-            return {**out, "ok": False, "failure": f"{where} names the missing obligation {missing[0]}"}
-        got = None
-        try:
-            got = None if sub.get("derivation") is None else concludes(sub["derivation"], set(names), env)
-        except Unsupported:
-            pass
-        except Exception as exc:        # a derivation that does not give the statement, or malformed
-            return {**out, "ok": False, "failure": f"{where}: its derivation: {_why(exc)}"}
-        if got is not None and got != sub["holds"]:
-            return {**out, "ok": False, "failure": f"{where} says holds = {str(sub['holds']).lower()}, "
-                    f"its derivation concludes {str(got).lower()}"}
-        if not sub.get("counts", True):
-            continue
-        counted += 1
-        if names and not sub.get("uncovered") and all(i in env["verified"] for i in names):
-            verified += 1
-            derived += got is not None
-    return {**out, "subclaims": counted, "verified": verified, "derived": derived}
+def prepare(paper: Paper) -> None:
+    """Declare the variables and angles of the statement files (before anything is evaluated)."""
+    for name in paper.vars:
+        declare(name)
+    for name in paper.angles:
+        declare_angle(name)
 
 
-def _why(exc: Exception) -> str:
-    return str(exc) if isinstance(exc, Failed) else f"malformed ({type(exc).__name__}: {exc})"
+def status_of(statements: list) -> str:
+    """PASS when every printed statement holds, ERRATUM when some is refuted and has its
+    correction, OBSERVED for numerical observations (the verdicts of the statement file)."""
+    if statements and all(s.verdict == "observed" for s in statements):
+        return "OBSERVED"
+    return "ERRATUM" if any(s.verdict == "refuted" for s in statements) else "PASS"
+
+
+def check_statement(s, lets: dict, witnesses=None) -> tuple[bool, str]:
+    """(verified, why not).  Raises ValueError when the kernel's decision contradicts the verdict
+    or the statement is not a formula of the language."""
+    if s.verdict == "observed":
+        return False, "an observation"
+    if s.unformalised:
+        return False, f"not formalised: {s.unformalised}"
+    ctx = Context(lets, witnesses)
+    try:
+        got = truth(parse(s.formula), ctx)
+    except NotVerified as exc:
+        return False, str(exc)
+    except (Syntax, Undefined, ZeroDivisionError) as exc:
+        raise ValueError(f"{s.id} ({s.where}): {exc}") from None
+    want = s.verdict != "refuted"
+    if got != want:
+        at = f" (at r = {ctx.counterexample})" if not got and getattr(ctx, "counterexample", None) else ""
+        raise ValueError(f"{s.id}: the statement file says it {'holds' if want else 'is refuted'}; "
+                         f"the kernel finds it {'true' if got else 'false'}{at}")
+    return True, ""
+
+
+def verify_certificate(cert, engine: dict | None, lets: dict) -> dict:
+    """Check one certificate of the statement files against its entry of certificates.json."""
+    out = {"id": cert.id, "status": status_of(cert.statements), "ok": True, "failure": "",
+           "statements": [], "counted": 0, "verified": 0}
+    if engine is None:
+        return {**out, "ok": False, "failure": "certificates.json has no entry for it"}
+    if engine.get("status") != out["status"]:
+        return {**out, "ok": False, "failure": f"the run says {engine.get('status')}, its statements' verdicts "
+                f"make it {out['status']}"}
+    mine = {s.id for s in cert.statements}
+    theirs = set(engine["statements"])
+    if mine != theirs:
+        extra = sorted(theirs - mine) or sorted(mine - theirs)
+        return {**out, "ok": False, "failure": f"statement {extra[0]}: not in both certificates.json and the "
+                "statement file"}
+    for s in cert.statements:
+        rec = engine["statements"][s.id]
+        verdict = {"holds": "holds", "corrects": "holds", "refuted": "refuted", "observed": "observed"}[s.verdict]
+        if not isinstance(rec, dict) or rec.get("verdict") != verdict:
+            return {**out, "ok": False, "failure": f"statement {s.id}: the run's verdict "
+                    f"{rec.get('verdict') if isinstance(rec, dict) else rec!r} is not the statement file's {verdict}"}
+        try:
+            ok, why = check_statement(s, lets, rec.get("witness"))
+        except ValueError as exc:
+            return {**out, "ok": False, "failure": str(exc)}
+        out["statements"].append((s.id, ok, why))
+        if s.verdict != "observed":
+            out["counted"] += 1
+            out["verified"] += ok
+    return out
 
 
 def line(result: dict) -> str:
-    """One line per certificate: verified (how many sub-claims, with a derivation), or the first failure."""
+    """One line per certificate: its status and how many of its statements the kernel verified."""
     if not result["ok"]:
         return f"{result['id']}: FAILED: {result['failure']}"
-    n, k, d = result["subclaims"], result["verified"], result["derived"]
-    word = "independently verified" if n and k == n else "obligations hold"
-    return f"{result['id']}: {word} ({k}/{n} sub-claims independently verified, {d} with a derivation checked)"
+    n, k = result["counted"], result["verified"]
+    if not n:
+        return f"{result['id']}: {result['status']} (an observation: nothing to verify)"
+    missing = [f"{i} ({why})" for i, ok, why in result["statements"] if not ok]
+    return f"{result['id']}: {result['status']}, {k}/{n} statements verified" + \
+        (f"; not verified: {', '.join(missing)}" if missing else "")
 
 
-__all__ = ["FORMAT", "load", "verify_certificate", "line", "Failed", "Unsupported", "json"]
+__all__ = ["FORMAT", "load", "read", "prepare", "status_of", "check_statement", "verify_certificate", "line"]

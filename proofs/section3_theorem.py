@@ -93,6 +93,7 @@ from certify.run import (
     fact_ids,
     for_a_run,
     gathered,
+    named,
     identity_facts,
     identity_modulo_facts,
     overridden,
@@ -241,7 +242,7 @@ def matrix_of_ababcb(M, M_text):
         for j in range(3):
             ok = computed[i][j] == to_field(printed[i, j])      # equal in Q(r): the difference is 0
             checks.append(Check(f"entry ({i + 1},{j + 1}) as printed", ok, [f"computed `{show(M[i, j])}`"],
-                                obligations=product_fact(ok, word, printed, 3 * i + j)))
+                                obligations=product_fact(ok, word, printed, 3 * i + j), ref=f"T1.{3 * i + j + 1}"))
     same = direct == computed
     checks.append(Check("word_matrix('ababcb') is the product BCBABA", same,
                         obligations=product_fact(same, word, M)))
@@ -353,10 +354,10 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
 def P0_has_one_root(cp, P0_text, count, digits):
     """Sturm count and python-flint count; the digits certified by an isolating interval."""
     roots, nf = roots_in_unit_interval(P0_text)
-    checks = [Check("P0 divides Disc_λ(cp)", discriminant_lambda(cp) % to_fmpz_poly(parse(P0_text)) == 0),
-              count_check("P0", roots, nf, count)]
+    checks = [Check("P0 divides Disc_λ(cp)", discriminant_lambda(cp) % to_fmpz_poly(parse(P0_text)) == 0, ref="T5.1"),
+              named("T5.2", count_check("P0", roots, nf, count))]
     if roots:
-        checks.append(digits_check("r*", roots[0], digits))
+        checks.append(named("T5.3", digits_check("r*", roots[0], digits)))
     return conclude(checks)
 
 

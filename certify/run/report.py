@@ -21,7 +21,9 @@ import re
 from pathlib import Path
 from urllib.parse import quote
 
-from certify.run.files import write_atomic
+from certify_kernel.statements import read as read_statements
+
+from certify.run.files import CHECKOUT, write_atomic
 from certify.run.runner import (
     ERRATUM,
     ERRATUM_KINDS,
@@ -454,7 +456,7 @@ def _checks(title: str, checks, shown: set | None = None) -> str:
         role = _role(check)
         evidence = [str(e) for e in check.evidence]
         repeated = bool(evidence) and all(e in shown for e in evidence)
-        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(check.statement)}{role}"
+        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(text_of(check))}{role}"
                              + (f" {SAME}" if repeated else "")))
         if not repeated:
             items += [_bullet(e if e not in shown else f"{_first_line(e)} {SAME}", indent=2) for e in evidence]
@@ -539,32 +541,65 @@ def render_json(results) -> str:
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
-CERTIFICATES_FORMAT = "certify-certificates/1"   # certify_kernel.FORMAT: docs/verify.md
-UNCOVERED = "no fact of the obligation language was recorded for this check"
+CERTIFICATES_FORMAT = "certify-certificates/2"   # certify_kernel.FORMAT: docs/verify.md
+WITNESS_KINDS = ("signed",)                       # the facts the kernel reads as witnesses (certify_kernel.signs)
+_STATEMENTS: dict = {}
 
 
-def _subclaim(role: str, check) -> dict:
-    data = {"role": role, "statement": " ".join(str(check.statement).split()), "holds": holds(check),
-            "counts": bool(check.counts),
-            "obligations": sorted(set(check.obligations or []), key=lambda i: int(i.rsplit(":", 1)[1]))}
-    if not data["obligations"]:
-        data["uncovered"] = UNCOVERED
-    if getattr(check, "derivation", None):
-        data["derivation"] = check.derivation
-    return data
+def paper_statements(directory=None) -> dict:
+    """The statement files (statements/*.txt, docs/statements.md) read once: id -> statement."""
+    key = str(directory or CHECKOUT / "statements")
+    if key not in _STATEMENTS:
+        paper = read_statements(key)
+        _STATEMENTS[key] = {s.id: s for c in paper.certificates for s in c.statements}
+    return _STATEMENTS[key]
+
+
+def text_of(check) -> str:
+    """What the report prints for a check: the text of its formal statement (with its id) when it
+    decides one, else its own statement."""
+    ref = getattr(check, "ref", "")
+    if ref:
+        s = paper_statements().get(ref)
+        if s is None:
+            raise KeyError(f"the check names the statement {ref}, which statements/ does not have")
+        return f"{ref}: {s.text}"
+    return str(check.statement)
+
+
+def _statements_of(outcome) -> dict:
+    """ref -> {"verdict", "witness"}: the run's verdict on each formal statement its checks decide
+    (holds when every check naming it holds), with the witnesses among their facts."""
+    facts = {ob["id"]: ob for ob in getattr(outcome, "obligations", [])}
+    out: dict = {}
+    for check in list(outcome.printed) + list(outcome.corrected):
+        if not getattr(check, "ref", ""):
+            continue
+        entry = out.setdefault(check.ref, {"verdict": "holds", "witness": []})
+        if not holds(check):
+            entry["verdict"] = "refuted"
+        for i in check.obligations or []:
+            ob = facts.get(i)
+            if ob is not None and ob.get("kind") in WITNESS_KINDS and ob not in entry["witness"]:
+                entry["witness"].append({k: v for k, v in ob.items() if k != "id"})
+    if outcome.status == OBSERVED:
+        for entry in out.values():
+            entry["verdict"] = "observed"
+    for entry in out.values():
+        if not entry["witness"]:
+            del entry["witness"]
+    return out
 
 
 def render_certificates(results) -> str:
-    """The text of certificates.json: for each certificate its obligations (the facts the
-    engine recorded, certify.obligations) and its sub-claims, each naming the obligations its
-    verdict was computed from; one certificate per line, deterministic like report.json."""
+    """The text of certificates.json: for each certificate its status and, for each formal
+    statement its checks decide, the run's verdict and the witnesses the kernel may read (never
+    the objects: the kernel builds those from statements/); one certificate per line,
+    deterministic like report.json."""
     head = {"format": CERTIFICATES_FORMAT, "paper": VERSION, "schema": "docs/verify.md"}
     lines = []
     for cert, outcome in results:
-        subs = [_subclaim("printed", c) for c in outcome.printed] + \
-            [_subclaim("corrected", c) for c in outcome.corrected]
-        lines.append(json.dumps({"id": cert.id, "status": outcome.status, "subclaims": subs,
-                                 "obligations": list(outcome.obligations)},
+        lines.append(json.dumps({"id": cert.id, "status": outcome.status, "statements": _statements_of(outcome)},
                                 ensure_ascii=False, separators=(",", ":"), sort_keys=True))
     text = json.dumps(head, ensure_ascii=False)[:-1] + ', "certificates": [\n' + ",\n".join(lines) + "\n]}\n"
     return text

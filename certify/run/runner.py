@@ -41,9 +41,11 @@ class Check:
     consistency check, one that holds by construction of the engine (the word it
     applied is the word it was given, cp(0) = -det M for every matrix): it must hold,
     or the certificate FAILs, but it is not evidence for the printed claim.
-    ``obligations``: the ids of the facts its verdict was computed from; ``derivation``: how
-    they give it, for the independent kernel (docs/verify.md; made from the pieces the deciding
-    functions recorded, :func:`certify.obligations.derivation`)."""
+    ``ref``: the id of the formal statement (statements/*.txt, docs/statements.md) this check
+    decides: the report prints that statement's text, and certificates.json gives the kernel the
+    check's verdict on it with its witnesses.  ``obligations``: the ids of the facts its verdict
+    was computed from (the witnesses among them go to certificates.json); ``derivation``: how
+    they give it (:func:`certify.obligations.derivation`)."""
 
     statement: str
     holds: bool
@@ -52,6 +54,7 @@ class Check:
     counts: bool = True
     obligations: list[str] | None = None
     derivation: dict | None = None
+    ref: str = ""
 
     def __post_init__(self):
         free = self.obligations is None
@@ -61,6 +64,13 @@ class Check:
             self.obligations = obligations.take(own)
         if self.derivation is None:
             self.obligations, self.derivation = obligations.derivation(self.obligations, holds(self), free)
+
+
+def named(ref: str, check: Check) -> Check:
+    """``check`` deciding the formal statement ``ref`` (a check made by a helper such as
+    :func:`certify.run.checks.count_check`)."""
+    check.ref = ref
+    return check
 
 
 # The kinds of erratum, the first column a referee reads in the Errata.
@@ -390,7 +400,7 @@ def plain(outcome: Outcome) -> Outcome:
     bools.  That is all a report needs, and it crosses process boundaries (pickle)."""
     def check(c: Check) -> Check:
         return Check(str(c.statement), holds(c), [str(e) for e in c.evidence],
-                     corrected_statement(c) or None, c.counts, list(c.obligations or []), c.derivation)
+                     corrected_statement(c) or None, c.counts, list(c.obligations or []), c.derivation, c.ref)
     return Outcome(outcome.status, [check(c) for c in outcome.printed],
                    [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
                    [str(f) for f in outcome.figures], str(outcome.note), str(outcome.kind),
