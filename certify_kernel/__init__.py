@@ -14,6 +14,8 @@ engine's.  docs/verify.md says how to read the files.
 from __future__ import annotations
 
 import json
+import multiprocessing
+import os
 
 from .evaluate import Context, NotVerified, truth
 from .language import Syntax, parse
@@ -105,6 +107,36 @@ def verify_certificate(cert, engine: dict | None, lets: dict) -> dict:
     return out
 
 
+_WORK: dict = {}
+
+
+def _one(k: int) -> dict:
+    cert = _WORK["certs"][k]
+    return verify_certificate(cert, _WORK["engine"].get(cert.id), _WORK["lets"])
+
+
+def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None) -> list[dict]:
+    """The results of :func:`verify_certificate` for the certificates of the statement files (those
+    named by ``ids``), in their order; on ``jobs`` processes (fork), the heaviest first."""
+    prepare(paper)
+    certs = [c for c in paper.certificates if ids is None or c.id in ids]
+    engine = {c["id"]: c for c in data["certificates"]}
+    _WORK.update(certs=certs, engine=engine, lets=paper.lets)
+    order = sorted(range(len(certs)), key=lambda k: -len(json.dumps(engine.get(certs[k].id, ""))))
+    if jobs > 1 and len(certs) > 1 and hasattr(os, "fork"):
+        with multiprocessing.get_context("fork").Pool(jobs) as pool:
+            done = dict(zip(order, pool.map(_one, order, chunksize=1)))
+    else:
+        done = {k: _one(k) for k in order}
+    return [done[k] for k in range(len(certs))]
+
+
+def counts(results: list[dict]) -> tuple[int, int]:
+    """(K, N): of the N statements of the PASS and ERRATUM certificates, the K verified."""
+    proved = [r for r in results if r["ok"] and r["status"] in ("PASS", "ERRATUM")]
+    return sum(r["verified"] for r in proved), sum(r["counted"] for r in proved)
+
+
 def line(result: dict) -> str:
     """One line per certificate: its status and how many of its statements the kernel verified."""
     if not result["ok"]:
@@ -117,4 +149,5 @@ def line(result: dict) -> str:
         (f"; not verified: {', '.join(missing)}" if missing else "")
 
 
-__all__ = ["FORMAT", "load", "read", "prepare", "status_of", "check_statement", "verify_certificate", "line"]
+__all__ = ["FORMAT", "load", "read", "prepare", "status_of", "check_statement", "verify_certificate", "verify_all",
+           "counts", "line"]

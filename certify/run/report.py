@@ -23,6 +23,7 @@ from urllib.parse import quote
 
 from certify_kernel.statements import read as read_statements
 
+from certify.run import verification
 from certify.run.files import CHECKOUT, write_atomic
 from certify.run.runner import (
     ERRATUM,
@@ -291,7 +292,7 @@ def _by_part(results) -> list[tuple[str, list]]:
     return list(groups.items())
 
 
-def _summary(results) -> str:
+def _summary(results, kernel=None) -> str:
     n = counts(results)
     against = disagreements(results)
     rows = [f"| {s} | {n[s]} |" for s in n]
@@ -304,7 +305,7 @@ def _summary(results) -> str:
         lines += ["", "Failing: " + ", ".join(_link(c) for c in failing) + "."]
     if errata_line(results):
         lines += ["", errata_line(results) + "; see [Errata](#errata)."]
-    lines += ["", kernel_line(results)]
+    lines += ["", kernel_line(kernel)]
     return "\n".join(lines)
 
 
@@ -393,45 +394,23 @@ def _errata(results) -> str:
     return "\n\n".join(parts)
 
 
-def kernel_coverage(outcome) -> tuple[int, int]:
-    """(k, n): of the n sub-claims of a certificate that count, the k that name obligations of
-    the independent kernel's language only (certificates.json; ``certify verify`` re-checks them)."""
-    return len(_kernel_subclaims(outcome)), sum(1 for c in list(outcome.printed) + list(outcome.corrected) if c.counts)
+def kernel_line(kernel) -> str:
+    """The summary's line on the independent kernel (reports/kernel.json)."""
+    if not kernel:
+        return "Independent kernel: not run (`python -m certify verify`, docs/verify.md)."
+    failed = sorted(i for i, r in kernel["certificates"].items() if not r["ok"])
+    k, n = kernel["verified"], kernel["statements"]
+    return (f"Independent kernel (`python -m certify verify`, docs/verify.md): **{k}/{n} statements verified**: "
+            f"of the {n} formal statements of the PASS and ERRATUM certificates (statements/*.txt, the paper's "
+            f"claims written as data), the kernel decides {k} exactly with its own definitions and the Python "
+            "standard library alone, each as the verdict the report gives it; each statement's line below says "
+            "whether it is verified and, if not, why." + (f"  **The kernel rejects {', '.join(failed)}.**" if failed
+                                                          else ""))
 
 
-def _kernel_subclaims(outcome) -> list:
-    """The sub-claims that count and name obligations of the kernel's language only."""
-    kinds = {ob["id"]: ob.get("kind") for ob in getattr(outcome, "obligations", [])}
-    subs = [c for c in list(outcome.printed) + list(outcome.corrected) if c.counts]
-    return [c for c in subs if c.obligations and all(kinds.get(i) not in (None, "unsupported") for i in c.obligations)]
-
-
-def kernel_cell(outcome) -> str:
-    """The table's "Kernel" column: "independently verified" or "k/n sub-claims"; "—" for an observation."""
-    if outcome.status not in (PASS, ERRATUM):
-        return "—"
-    k, n = kernel_coverage(outcome)
-    return "independently verified" if n and k == n else f"{k}/{n} sub-claims"
-
-
-def kernel_line(results) -> str:
-    """The summary's line on the independent kernel."""
-    proved = [o for _, o in results if o.status in (PASS, ERRATUM)]
-    k = sum(kernel_coverage(o)[0] for o in proved)
-    n = sum(kernel_coverage(o)[1] for o in proved)
-    whole = sum(1 for o in proved if kernel_coverage(o)[1] and kernel_coverage(o)[0] == kernel_coverage(o)[1])
-    derived = sum(1 for o in proved for c in _kernel_subclaims(o) if c.derivation)
-    pct = f" ({100 * k / n:.0f}%)" if n else ""
-    return (f"Independent kernel (`python -m certify verify`, docs/verify.md): {k} of the {n} sub-claims of "
-            f"the PASS and ERRATUM certificates{pct} rest on obligations in reports/certificates.json that "
-            f"it re-checks with the Python standard library alone, {derived} of them with a derivation (how "
-            f"the obligations give the statement) that it checks too; {whole} of {len(proved)} certificates "
-            "are independently verified whole.")
-
-
-def _table(results) -> str:
+def _table(results, kernel=None) -> str:
     rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {status_label(outcome)} | "
-            f"{kernel_cell(outcome)} |" for cert, outcome in results]
+            f"{verification.cell(kernel, cert.id)} |" for cert, outcome in results]
     return "\n".join(["## All certificates", "", "| Id | Paper | Statement | Status | Kernel |",
                       "|---|---|---|---|---|", *rows])
 
@@ -447,7 +426,17 @@ def _role(check) -> str:
     return " *(consistency check of the engine, not evidence)*"
 
 
-def _checks(title: str, checks, shown: set | None = None) -> str:
+def _verified(kernel, cert_id: str, check) -> str:
+    """What the kernel says of a check's formal statement, for its line in the report."""
+    if not getattr(check, "ref", "") or kernel is None:
+        return ""
+    why = verification.why_not(kernel, cert_id, check.ref)
+    if why is None:
+        return ""
+    return " · *kernel: verified*" if why == "" else f" · *kernel: not verified ({_one_line(why)})*"
+
+
+def _checks(title: str, checks, shown: set | None = None, kernel=None, cert_id: str = "") -> str:
     """The checks with their evidence; an evidence fragment already in ``shown`` (the
     same sign table under "As printed" and "Corrected") is not repeated."""
     shown = set() if shown is None else shown
@@ -456,7 +445,7 @@ def _checks(title: str, checks, shown: set | None = None) -> str:
         role = _role(check)
         evidence = [str(e) for e in check.evidence]
         repeated = bool(evidence) and all(e in shown for e in evidence)
-        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(text_of(check))}{role}"
+        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(text_of(check))}{role}{_verified(kernel, cert_id, check)}"
                              + (f" {SAME}" if repeated else "")))
         if not repeated:
             items += [_bullet(e if e not in shown else f"{_first_line(e)} {SAME}", indent=2) for e in evidence]
@@ -464,7 +453,7 @@ def _checks(title: str, checks, shown: set | None = None) -> str:
     return f"**{title}**\n\n" + "\n".join(items)
 
 
-def _section(cert, outcome) -> str:
+def _section(cert, outcome, kernel=None) -> str:
     """Everything about one certificate: verdicts, note, evidence, figures."""
     printed = "as printed: " if outcome.status != PASS else ""
     label = status_label(outcome)
@@ -477,9 +466,9 @@ def _section(cert, outcome) -> str:
         parts.append(f"**Erratum ({outcome.kind}):** {_one_line(outcome.misprint)}")
     shown: set = set()
     if outcome.printed:
-        parts.append(_checks("As printed", outcome.printed, shown))
+        parts.append(_checks("As printed", outcome.printed, shown, kernel, cert.id))
     if outcome.corrected:
-        parts.append(_checks("Corrected (certified)", outcome.corrected, shown))
+        parts.append(_checks("Corrected (certified)", outcome.corrected, shown, kernel, cert.id))
     if str(outcome.note).strip():
         parts.append("**Note.** " + _fragment(outcome.note))
     if outcome.evidence:
@@ -488,14 +477,15 @@ def _section(cert, outcome) -> str:
     return "\n\n".join(parts)
 
 
-def render_markdown(results) -> str:
+def render_markdown(results, kernel=None) -> str:
     """The text of REPORT.md: head, contents, summary, errata, table, then the
-    certificates part by part, and a last line that closes the report."""
-    parts = [_head(results), _contents(results), _summary(results), _disagreements(results), _errata(results),
-             _table(results)]
+    certificates part by part, and a last line that closes the report; ``kernel``: the
+    independent kernel's results (reports/kernel.json, :mod:`certify.run.verification`)."""
+    parts = [_head(results), _contents(results), _summary(results, kernel), _disagreements(results),
+             _errata(results), _table(results, kernel)]
     for part, members in _by_part(results):
         parts.append(f'## <a id="{part_anchor(part)}"></a>{part}')
-        parts += [_section(cert, outcome) for cert, outcome in members]
+        parts += [_section(cert, outcome, kernel) for cert, outcome in members]
     return "\n\n".join(parts + [END]) + "\n"
 
 
@@ -615,16 +605,18 @@ def render_timings(timings: dict) -> str:
 # --------------------------------------------------------------------------
 # Writing, and comparing with a committed report
 
-def write_report(results, timings: dict, out_dir) -> str:
-    """Write REPORT.md, report.json, certificates.json and timings.json into ``out_dir``.
+def write_report(results, timings: dict, out_dir, kernel: bool = True, jobs: int = 2) -> str:
+    """Write REPORT.md, report.json, certificates.json, kernel.json and timings.json into ``out_dir``.
 
-    All texts are rendered before anything is written, and each file is
+    All texts are rendered before anything is written (the kernel's results read back from
+    kernel.json, or decided now: :func:`certify.run.verification.results_for`), and each file is
     replaced atomically; REPORT.md comes last.  Returns the text of REPORT.md.
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    markdown, data, times = render_markdown(results), render_json(results), render_timings(timings)
     certificates = render_certificates(results)
+    verdicts = verification.results_for(certificates, out, jobs) if kernel else None
+    markdown, data, times = render_markdown(results, verdicts), render_json(results), render_timings(timings)
     write_atomic(out / "report.json", data)
     write_atomic(out / "certificates.json", certificates)
     write_atomic(out / "timings.json", times)
