@@ -115,19 +115,27 @@ def _one(k: int) -> dict:
     return verify_certificate(cert, _WORK["engine"].get(cert.id), _WORK["lets"])
 
 
-def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None) -> list[dict]:
+def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None, tick=None) -> list[dict]:
     """The results of :func:`verify_certificate` for the certificates of the statement files (those
-    named by ``ids``), in their order; on ``jobs`` processes (fork), the heaviest first."""
+    named by ``ids``), in their order; on ``jobs`` processes (fork), the heaviest first; ``tick(k,
+    n, id)`` after each (a progress bar)."""
     prepare(paper)
     certs = [c for c in paper.certificates if ids is None or c.id in ids]
     engine = {c["id"]: c for c in data["certificates"]}
     _WORK.update(certs=certs, engine=engine, lets=paper.lets)
     order = sorted(range(len(certs)), key=lambda k: -len(json.dumps(engine.get(certs[k].id, ""))))
+    done: dict = {}
     if jobs > 1 and len(certs) > 1 and hasattr(os, "fork"):
         with multiprocessing.get_context("fork").Pool(jobs) as pool:
-            done = dict(zip(order, pool.map(_one, order, chunksize=1)))
+            for r in pool.imap_unordered(_one, order, chunksize=1):
+                done[next(k for k in order if certs[k].id == r["id"])] = r
+                if tick:
+                    tick(len(done), len(certs), r["id"])
     else:
-        done = {k: _one(k) for k in order}
+        for k in order:
+            done[k] = _one(k)
+            if tick:
+                tick(len(done), len(certs), certs[k].id)
     return [done[k] for k in range(len(certs))]
 
 

@@ -84,8 +84,9 @@ def cmd_all(args) -> int:
     out = prepare_output(args.out)
     committed = read_text_or_none(out / "REPORT.md")
     committed_certificates = read_text_or_none(out / "certificates.json")
+    committed_kernel = read_text_or_none(out / "kernel.json")
     results, timings = execute(None, out, args.jobs)
-    markdown = report.write_report(results, timings, out)
+    markdown = report.write_report(results, timings, out, jobs=args.jobs)
     saving.prune(out / "figures", keep={name for _, o in results for name in o.figures})
     warn_missing_figures(results, out)
     code = finish(results)
@@ -94,6 +95,8 @@ def cmd_all(args) -> int:
         stale = report.changed_parts(committed, markdown)
         if committed_certificates != read_text_or_none(out / "certificates.json") and stale != ["missing"]:
             stale = stale + ["certificates.json"]
+        if committed_kernel != read_text_or_none(out / "kernel.json") and stale != ["missing"]:
+            stale = stale + ["kernel.json"]
         if stale == ["missing"]:
             say(f"{out / 'REPORT.md'} was missing: generated it now, commit it")
         elif stale:
@@ -155,7 +158,7 @@ def cmd_run(args) -> int:
     results, timings = execute(args.ids, out, args.jobs)
     print_results(results)
     if out is not None:
-        report.write_report(results, timings, out)
+        report.write_report(results, timings, out, jobs=args.jobs)
         warn_missing_figures(results, out)
     code = finish(results)
     if out is not None:

@@ -16,6 +16,7 @@ from pathlib import Path
 import certify_kernel
 from certify_kernel.statements import DEFAULT as STATEMENTS
 
+from certify.run import progress
 from certify.run.files import read_text_or_none, write_atomic
 
 KERNEL = Path(certify_kernel.__file__).resolve().parent
@@ -34,7 +35,7 @@ def decide(certificates_text: str, jobs: int = 2, statements: Path = STATEMENTS)
     data = json.loads(certificates_text)
     paper = certify_kernel.read(statements)
     ids = {c["id"] for c in data["certificates"]}
-    results = certify_kernel.verify_all(data, paper, jobs, ids)
+    results = certify_kernel.verify_all(data, paper, jobs, ids, tick=progress.Bar("certificate"))
     k, n = certify_kernel.counts(results)
     return {"digest": digest(certificates_text, statements), "verified": k, "statements": n,
             "certificates": {r["id"]: {"status": r["status"], "ok": r["ok"], "failure": r["failure"],
