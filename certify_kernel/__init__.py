@@ -17,6 +17,7 @@ import json
 import multiprocessing
 import os
 
+from . import particles  # noqa: F401  (registers datum() and the predicates of the dynamics)
 from .evaluate import Context, NotVerified, truth
 from .language import Syntax, parse
 from .statements import Paper, read
