@@ -2,12 +2,12 @@
 (T25.2, statements/3_simulation.txt).
 
 The state between two collisions is the gaps p = (p_1, p_2, p_3) ≥ 0 and the relative velocities
-q = (q_1, q_2, q_3), q_k = v_{k+1} − v_k (l. 140-170): in free flight p(t) = p + t·q, and the pair k
-(a, b, c for k = 1, 2, 3) collides when p_k reaches 0 with q_k < 0, at t_k = −p_k/q_k; the next
-collision is the pair whose t_k is the smallest, which must be smaller than every other (else the
-collision is multiple and the dynamics stops being defined); then p_k = 0 and q ↦ K q, K the
-kernel's collision matrix (:func:`certify_kernel.evaluate.collision`).  No pair with q_k < 0: the
-particles separate, no collision ever comes.
+q = (q_1, q_2, q_3), q_k = v_{k+1} − v_k (l. 195-198): in free flight p(t) = p + t·q (l. 154-157),
+and the pair k (a, b, c for k = 1, 2, 3) collides when p_k reaches 0 with q_k < 0, at t_k = −p_k/q_k;
+the next collision is the pair whose t_k is the smallest, which must be smaller than every other (a
+tie, a multiple collision, is not followed: the run stops there); then p_k = 0 and q ↦ K q, K the
+kernel's collision matrix (l. 159-163, :func:`certify_kernel.evaluate.collision`).  No pair with
+q_k < 0: the particles separate, no collision ever comes.
 
 The datum of Theorem 3.1 lies in the field Q(λ, √Δ), λ a real root of cp(r₀, λ) at a rational r₀
 and Δ = (a − d)² + 4bc: every number is an exact element α + β√Δ, α, β polynomials in λ reduced

@@ -429,11 +429,12 @@ def _role(check) -> str:
 
 
 def _verified(kernel, cert_id: str, check) -> str:
-    """What the kernel says of a check's formal statement, for its line in the report."""
+    """What the kernel says of a check's formal statement, for its line in the report (nothing for
+    an observation: the kernel has nothing to verify there)."""
     if not getattr(check, "ref", "") or kernel is None:
         return ""
     why = verification.why_not(kernel, cert_id, check.ref)
-    if why is None:
+    if why is None or why == "an observation":
         return ""
     return " · *kernel: verified*" if why == "" else f" · *kernel: not verified ({_one_line(why)})*"
 
