@@ -391,6 +391,34 @@ def race(ti, tj, li: str, lj: str) -> dict:
     }
 
 
+MU, NU, TAU = sp.symbols("μ ν τ")
+LO, HI = -cφ / TAN, TAN * cφ      # l. 628: the values of λ where t_c and t_b change sign
+
+
+def at_lambda(e, value):
+    return e.subs(lam, value)
+
+
+def ranges(ti, tj, s: int) -> list[T.Result]:
+    """The case analysis in λ as the formal statements S2.10, S2.11, S2.14 read it
+    (statements/4_reduction.txt), each sign with its witness: ti = 1/(tanθ cos φ − λ), tj =
+    1/(−cos φ/tanθ − λ) (second forms); for cos φ > 0 (s = 1) λ = LO − ν (both positive, tj > ti),
+    λ = (LO + HI ν)/(1 + ν) between LO and HI (ti > 0 > tj), λ = HI + ν (both negative) and the
+    ends; for cos φ < 0 the mirror (ν > 0)."""
+    H, Hn = T.hypotheses(s), T.hypotheses(s).assume(NU, 1)
+    if s > 0:
+        mid = (LO + HI * NU) / (1 + NU)
+        return [T.has_sign(HI - LO, 1, H), T.has_sign(at_lambda(ti, LO), 1, H), T.has_sign(at_lambda(tj, HI), -1, H),
+                T.has_sign(at_lambda(ti, LO - NU), 1, Hn), T.has_sign(at_lambda(tj - ti, LO - NU), 1, Hn),
+                T.has_sign(at_lambda(ti, mid), 1, Hn), T.has_sign(at_lambda(tj, mid), -1, Hn),
+                T.has_sign(at_lambda(ti, HI + NU), -1, Hn), T.has_sign(at_lambda(tj, HI + NU), -1, Hn)]
+    mid = (HI + LO * NU) / (1 + NU)
+    return [T.has_sign(LO - HI, 1, H), T.has_sign(at_lambda(tj, HI), 1, H), T.has_sign(at_lambda(ti, LO), -1, H),
+            T.has_sign(at_lambda(tj, HI - NU), 1, Hn), T.has_sign(at_lambda(ti - tj, HI - NU), 1, Hn),
+            T.has_sign(at_lambda(tj, mid), 1, Hn), T.has_sign(at_lambda(ti, mid), -1, Hn),
+            T.has_sign(at_lambda(ti, LO + NU), -1, Hn), T.has_sign(at_lambda(tj, LO + NU), -1, Hn)]
+
+
 def witness_point(ti, tj, cos_phi: int) -> tuple[bool, str]:
     """A rational point with cos φ of the given sign where both times are positive."""
     pt = T.point("1/2", "1/2" if cos_phi > 0 else "2", λ=-2)
@@ -425,17 +453,28 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
     TB, TC, TCB, TAB = (T.chain(x) for x in (t_b, t_c, t_c_bc, t_a_bc))
     R = race(TB[0], TC[0], "b", "c")
     ok_pt, pt_ev = witness_point(TB[0], TC[0], 1)
-    b_first = [R["i<0 ⇒ λ"], R["λ ⇒ λ2"], R["⇒ j<0"], R["order+"]]
-    c_first = [R["j<0 ⇒ λ2"], R["λ2 ⇒ λ"], R["⇒ i<0"], R["order−"]]
+    b_first = [R["i<0 ⇒ λ"], R["λ ⇒ λ2"], R["⇒ j<0"], R["order+"]] + ranges(TB[1], TC[1], 1)
+    c_first = [R["j<0 ⇒ λ2"], R["λ2 ⇒ λ"], R["⇒ i<0"], R["order−"]] + ranges(TB[1], TC[1], -1)
+    # the signs as the formal statements S2.4-S2.9 read them (parametrised λ), each with its witness
+    pos, neg = T.hypotheses(1), T.hypotheses(-1)
+    K = cφ * (TAN + 1 / TAN) * MU * NU
+    signs = {"S2.4": [T.has_sign(K, 1, pos.assume(MU, 1).assume(NU, 1)), T.has_sign(K, -1, neg.assume(MU, 1).assume(NU, 1))],
+             "S2.5": [T.has_sign(HI, 1, pos), T.has_sign(HI - 1 / TAU - HI, 1, pos.assume(TAU, -1))],
+             "S2.6": [T.has_sign(LO - (HI + MU), -1, pos.assume(MU, 1))],
+             "S2.7": [T.has_sign(at_lambda(TC[1], LO + MU), -1, pos.assume(MU, 1))],
+             "S2.8": [T.has_sign(at_lambda(TB[1], LO - NU), 1, pos.assume(NU, 1)),
+                      T.has_sign(at_lambda(TC[1], LO - NU), 1, pos.assume(NU, 1)),
+                      T.has_sign(at_lambda(TC[1] - TB[1], LO - NU), 1, pos.assume(NU, 1))]}
     common = [
         named("S2.1", solves("t_b", TB, pa, qa, 1, "620")), named("S2.2", solves("t_c", TC, pa, qa, 2, "620")),
         named("S2.3", identity("l. 625: the printed t_c - t_b is the difference of the printed times", T.parse(difference),
                                TC[0] - TB[0])),
         named("S2.4", combined("l. 626: if t_b, t_c > 0 then sign(t_c - t_b) = sign(cos φ), as t_c - t_b = cos φ "
-                               "(tanθ + 1/tanθ) t_b t_c", [R["order+"], R["order−"]])),
-        named("S2.5", combined("l. 628: cos φ > 0 and t_b < 0 give 0 < tanθ cos φ < λ", [R["tan>0"], R["i<0 ⇒ λ"]])),
-        named("S2.6", combined("l. 628: then -cos φ/tanθ < λ", [R["λ ⇒ λ2"]])),
-        named("S2.7", combined("l. 628: and so t_c < 0", [R["⇒ j<0"]])),
+                               "(tanθ + 1/tanθ) t_b t_c", [R["order+"], R["order−"]] + signs["S2.4"])),
+        named("S2.5", combined("l. 628: cos φ > 0 and t_b < 0 give 0 < tanθ cos φ < λ",
+                               [R["tan>0"], R["i<0 ⇒ λ"]] + signs["S2.5"])),
+        named("S2.6", combined("l. 628: then -cos φ/tanθ < λ", [R["λ ⇒ λ2"]] + signs["S2.6"])),
+        named("S2.7", combined("l. 628: and so t_c < 0", [R["⇒ j<0"]] + signs["S2.7"])),
     ]
     conclusion = [named("S2.10", combined("l. 628: when cos φ > 0 the first collision after a, if any, is b "
                                           "(t_b < 0 ⇒ t_c < 0; t_b > 0 ⇒ t_c < 0 or t_c > t_b)", b_first)),
@@ -446,7 +485,10 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
     tie = T.is_zero((TCB[0] - TAB[0]).subs(cφ, 0))                  # cos φ = 0: t_c = t_a
     first = {1: True, -1: False, 0: False}                           # t_c strictly the smallest, by the sign of cos φ
     # l. 789, "iff": the three signs of cos φ, each with the printed condition read at that sign
-    proofs = {1: [RB[k] for k in ("i<0 ⇒ λ", "λ ⇒ λ2", "⇒ j<0", "order+")], -1: [RB["order−"], T.Result(ok2, [ev2])],
+    Hn = neg.assume(NU, 1)
+    proofs = {1: [RB[k] for k in ("i<0 ⇒ λ", "λ ⇒ λ2", "⇒ j<0", "order+")] + ranges(TCB[1], TAB[1], 1),
+              -1: [RB["order−"], T.Result(ok2, [ev2]), T.has_sign(at_lambda(TCB[1], HI - NU), 1, Hn),
+                   T.has_sign(at_lambda(TAB[1], HI - NU), 1, Hn), T.has_sign(at_lambda(TCB[1] - TAB[1], HI - NU), 1, Hn)],
               0: [tie]}
     condition = statements.relation(smallest_bc, {"cos(φ)": cφ, "sin(φ)": sφ})
     read = {s: condition.holds({cφ: s, sφ: 1}) for s in first}
@@ -469,10 +511,11 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
         point = [] if holds else fact_ids(lambda: {"kind": "unsupported", "reason": (
             "the hypotheses hold at a rational point (cos φ > 0, t_b, t_c > 0 there): the obligation language "
             "has no evaluation at a point")})
+        holds = holds and all(signs["S2.8"])      # and the signs the formal statement reads (S2.8, S2.9)
         return Check(f"{label}: cos φ > 0, t_b > 0, t_c > 0 ⇒ {text}", holds, R["order+"].evidence + (
             [] if holds else [f"false whenever its hypotheses hold, and they do hold: {pt_ev}" if ok_pt else
                               f"false whenever its hypotheses hold; NO witness that they hold: {pt_ev}"]),
-            obligations=take(facts_of(R["order+"])) + point)
+            obligations=take(facts_of(R["order+"], *signs["S2.8"])) + point)
     as_printed = named("S2.8", order_check("l. 628", order))
     corrected_order = named("S2.9", order_check("l. 628 corrected", statements.corrected(order, *ORDER_CORRECTION)))
     return concluded(common + [as_printed] + conclusion + bc, common + [corrected_order] + conclusion + bc,

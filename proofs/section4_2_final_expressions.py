@@ -156,8 +156,8 @@ def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
     if w.has(sp.sqrt):
         raise ValueError("the normalisation of p(t1) did not cancel")
     return [first,
-            result_check(f"{label}: the printed p(t1) ∝ `{V_text}` is a positive multiple of the point p(0) + t q(0) "
-                         f"where gap {k + 1} closes", T.positively_proportional(hit, V, H)),
+            combined(f"{label}: the printed p(t1) ∝ `{V_text}` is a positive multiple of the point p(0) + t q(0) "
+                     f"where gap {k + 1} closes", [T.positively_proportional(hit, V, H), T.has_sign(V.dot(hit), 1, H)]),
             combined(f"{label}: p(t1) lies on p_{k + 1} = 0 with its two other components > 0 (θ' ∈ ]0,π/2[)",
                      [T.is_zero(V[k])] + inside),
             combined(f"{label}: the printed radicand `{R_text}` is |p(t1)|², and it is > 0",
@@ -363,10 +363,10 @@ def vectorial_version(p0, q0, u0, ey_dot_u0, orientation, u0_wedge_ey, u0_wedge_
         combined(f"l. 949: e_y·u(0) = `{ey_dot_u0}` ≥ 0, and e_t·u(0) ≥ 0 with the printed convention t = ({orientation})",
                  [T.equal(T.E_Y.dot(u0), ey_u), T.has_sign(ey_u, 1, H), T.has_sign(axes["a"].dot(u0), 1, H)]),
         combined("l. 958-960: u(0) ∧ e_y is the printed vector, a positive multiple of p(1) when the next collision is b",
-                 [T.equal(u0.cross(T.E_Y), Wy), T.positively_proportional(Wy, p1b, pos)]
+                 [T.equal(u0.cross(T.E_Y), Wy), T.positively_proportional(Wy, p1b, pos), T.has_sign(Wy.dot(p1b), 1, pos)]
                  + [T.has_sign(w, 1, pos) for w in Wy if w != 0]),
         combined("l. 962-963: u(0) ∧ e_z is the printed vector, a positive multiple of p(1) when the next collision is c",
-                 [T.equal(u0.cross(T.E_Z), Wz), T.positively_proportional(Wz, p1c, neg)]
+                 [T.equal(u0.cross(T.E_Z), Wz), T.positively_proportional(Wz, p1c, neg), T.has_sign(Wz.dot(p1c), 1, neg)]
                  + [T.has_sign(w, 1, neg) for w in Wz if w != 0]),
         combined("l. 967-969: u(0) ∧ e_x is the printed vector, of orientation opposite to p(0); e_x ∧ u(0) ∝ p(0) > 0",
                  [T.equal(u0.cross(T.E_X), Wx), T.positively_proportional(-Wx, p0, H),
