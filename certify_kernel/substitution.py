@@ -10,8 +10,6 @@ circles the value does not depend on the representative: a polynomial of the ide
 """
 from __future__ import annotations
 
-from fractions import Fraction
-
 from .evaluate import FUNCTIONS, Matrix, value
 from .values import RF, Undefined
 
@@ -36,7 +34,7 @@ def _poly(p: dict, subs: dict) -> RF:
     out = RF.const(0)
     for outer, rest in groups.items():
         term = RF(rest)
-        for (i, v), e in zip(subs.items(), outer):
+        for v, e in zip(subs.values(), outer):
             if e:
                 term = term * v ** e
         out = out + term
