@@ -17,6 +17,7 @@ import json
 import multiprocessing
 import os
 
+from . import substitution  # noqa: F401  (registers at() in the language)
 from .evaluate import Context, NotVerified, truth
 from .language import Syntax, parse
 from .statements import Paper, read
