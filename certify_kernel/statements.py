@@ -77,6 +77,10 @@ def read(directory: Path | str = DEFAULT) -> Paper:
         raise FileError(f"no statement files (*.txt) in {directory}")
     for path in files:
         _read_file(path, paper)
+    clash = sorted(set(paper.lets) & (set(paper.vars) | set(paper.angles) | {"r", "λ", "A", "B", "C", "I", "e_x", "e_y",
+                                                                            "e_z", "π"}))
+    if clash:
+        raise FileError(f"{clash[0]} is both defined (let) and a variable or an object of the kernel")
     ids = [s.id for c in paper.certificates for s in c.statements]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
