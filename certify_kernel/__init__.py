@@ -17,7 +17,7 @@ import json
 import multiprocessing
 import os
 
-from . import substitution  # noqa: F401  (registers at() in the language)
+from . import particles, substitution  # noqa: F401  (they register datum(), the dynamics' predicates, at())
 from .evaluate import Context, NotVerified, truth
 from .language import Syntax, parse
 from .statements import Paper, read

@@ -1163,13 +1163,11 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
 # Ball enclosures cannot prove the identities q(t_6) = λ q(0) exactly (T9, T10 do so
 # algebraically); here they are checked as "the enclosures overlap and are tight"
 # (relative radius below 2^-TIGHT_BITS, decided exactly on the rational midpoints and
-# radii, not on floats), which a wrong formula fails by many orders of magnitude.
+# radii, not on floats), which a wrong formula fails by many orders of magnitude.  The
+# kernel decides the statements T25.2.1-T25.2.8 (statements/3_simulation.txt) by the exact
+# dynamics in Q(λ, √Δ) (certify_kernel/particles.py): every collision and identity exactly.
 PRINTED_T25_2 = dict(U=U_PRINTED, V=V_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, word="ababcb",
                      r="1/20", periods=20, perturbation="1/10^30")
-SIMULATOR = ("the particle simulator in ball arithmetic (certify.dynamics.simulate, python-flint arb: each collision "
-             "chosen by enclosures of the collision times): the kernel has no interval arithmetic")
-ENCLOSURES = ("ball arithmetic (python-flint arb): the enclosures of the state after k periods and of its "
-              "scaled initial value, from the simulator: the kernel has no interval arithmetic")
 MAX_PERIODS = 200                      # how long a perturbed orbit is followed at most
 TIGHT_BITS = 40                        # "tight": relative radius < 2^-40 (decided exactly)
 
@@ -1307,6 +1305,7 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
     checks, evidence = [], [f"r = {r0} (our choice in ]0, 5-2√6[); perturbation ε = {perturbation}; "
                             f"collision choices proven in ball arithmetic (python-flint arb)"]
     for name, datum in data.items():
+        first_ref = {"upper": 1, "lower": 4}[name]          # T25.2.1-3, T25.2.4-6
         run, prec = self_similar_run(datum, word, periods)
         ok_word = run.word == word * periods
         q_ok, p_ok, ev = scaling_checks(run, datum, word, periods, prec)
@@ -1319,12 +1318,11 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                           "(f'(x₊) = 1/q)".format(*(z.str(8, radius=False) for z in datum.mobius(256))))
         checks += [
             Check(f"{name} branch: the printed datum repeats {word} for {periods} periods (every collision proven)",
-                  ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else [],
-                  obligations=unsupported_fact(SIMULATOR)),
+                  ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else [], ref=f"T25.2.{first_ref}"),
             Check(f"{name} branch: q(t_{len(word)}k) = λ^k q(0), k = 1..{periods} (the enclosures overlap and have "
-                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok, obligations=unsupported_fact(ENCLOSURES)),
+                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok, ref=f"T25.2.{first_ref + 1}"),
             Check(f"{name} branch: p(t_{len(word)}k) = μ^k p(0), k = 1..{periods} (the same)", p_ok,
-                  obligations=unsupported_fact(ENCLOSURES)),
+                  ref=f"T25.2.{first_ref + 2}"),
         ]
     # instability: upper branch through the positions, lower branch through the velocities
     cases = [("upper", "x + ε", eps, (Q(0), Q(0), Q(0)), MAX_PERIODS),
@@ -1349,8 +1347,8 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                             f"ends with {run.events[first]} instead of {word[first % n]} (proven at {prec} bits)")
         if (name, what) in (("upper", "x + ε"), ("lower", "v + ε")):
             checks.append(Check(f"{name} branch: the datum with {what} (ε = {perturbation}) leaves the pattern "
-                                f"{word} after a bounded number of periods", first is not None,
-                                obligations=unsupported_fact(SIMULATOR)))
+                                f"{word} within {MAX_PERIODS} periods", first is not None,
+                                ref="T25.2.7" if name == "upper" else "T25.2.8"))
     return conclude(checks, evidence=evidence,
                     note="Instability is shown the way the paper argues it: on the upper branch through the positions "
                          "(x perturbed), on the lower branch through the velocities (q perturbed); the other two "

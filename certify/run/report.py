@@ -266,7 +266,9 @@ def main_results_line(results) -> str:
     island = [(c, o) for c, o in results if c.id == ISLAND_CLAIM]
     if island and island[0][1].status == PASS:
         text += (".  The suggestion of the abstract, that the orbits might be quasi-periodic, is proved for an island "
-                 f"of the reduction ({_link(ISLAND_CLAIM)})")
+                 f"of the reduction ({_link(ISLAND_CLAIM)}) at every rational r in ]3−2√2, 1[, wherever its rotation "
+                 "number is irrational; at the resonances, where it is rational (r = 2−√3: 1/3), the island's orbits "
+                 "are periodic")
     return text + ".  Where the paper errs, and what is certified instead: [Errata](#errata)."
 
 
@@ -427,11 +429,12 @@ def _role(check) -> str:
 
 
 def _verified(kernel, cert_id: str, check) -> str:
-    """What the kernel says of a check's formal statement, for its line in the report."""
+    """What the kernel says of a check's formal statement, for its line in the report (nothing for
+    an observation: the kernel has nothing to verify there)."""
     if not getattr(check, "ref", "") or kernel is None:
         return ""
     why = verification.why_not(kernel, cert_id, check.ref)
-    if why is None:
+    if why is None or why == "an observation":
         return ""
     return " · *kernel: verified*" if why == "" else f" · *kernel: not verified ({_one_line(why)})*"
 
