@@ -17,6 +17,7 @@ import json
 import multiprocessing
 import os
 
+from . import reduction  # noqa: F401  (registers windows(), concatenation(), endless())
 from .evaluate import Context, NotVerified, truth
 from .language import Syntax, parse
 from .statements import Paper, read

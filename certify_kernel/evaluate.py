@@ -537,7 +537,12 @@ def truth(t, ctx: Context) -> bool:
         return not divmod_(Q, P)[1]
     if kind == "call" and t[1] in ATOMS:
         raise Undefined(f"{t[1]}() is a property of r: inside forall or {{r in I : ...}}")
+    if kind == "call" and t[1] in PREDICATES:
+        return PREDICATES[t[1]](ctx, *t[2])
     raise Undefined("not a formula")
+
+
+PREDICATES: dict = {}   # name -> truth(ctx, *argument trees): closed properties defined by the kernel's modules
 
 
 def compare(op: str, a, b, b_tree=None) -> bool:

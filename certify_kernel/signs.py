@@ -23,7 +23,7 @@ def hypotheses(B) -> dict:
     hyp: dict = {}
     for name, iv in B.angles.items():
         if iv.angular:
-            lo, hi = (Fraction(0) if iv.lo is None else iv.lo), iv.hi
+            lo, hi = (iv.lo if isinstance(iv.lo, Fraction) else Fraction(0) if _zero(iv.lo) else None), iv.hi
             quadrants = {(Fraction(0), Fraction(1, 2)): (1, 1), (Fraction(1, 2), Fraction(1)): (-1, 1),
                          (Fraction(0), Fraction(1)): (None, 1)}
             if (lo, hi) not in quadrants:
@@ -43,9 +43,22 @@ def hypotheses(B) -> dict:
     return hyp
 
 
+def _zero(x) -> bool:
+    """The end 0 of an interval of an angle (read as a number, not as a multiple of π)."""
+    from .evaluate import order
+    return x is not None and not isinstance(x, str) and order(x, 0) == 0
+
+
+def _kernel_name(name: str) -> str:
+    """The kernel's name of a witness's variable: the engine writes cos θ as ``cosθ``."""
+    if name not in VARS and name[:3] in ("cos", "sin") and f"{name[:3]} {name[3:]}" in VARS:
+        return f"{name[:3]} {name[3:]}"
+    return name
+
+
 def _terms(data, names: list) -> dict:
     """Witness terms [[coef, [exps]], ...] over ``names`` as a polynomial over VARS."""
-    idx = [VARS.index(n) for n in names]
+    idx = [VARS.index(_kernel_name(n)) for n in names]
     out: dict = {}
     for coef, exps in data:
         key = [0] * len(VARS)
@@ -127,8 +140,8 @@ def sign_by_witness(E: RF, witnesses: list, hyp: dict, r_in_unit: bool) -> int |
             return _part_sign(w["num"], n, names, hyp, r_in_unit) * _part_sign(w["den"], d, names, hyp, r_in_unit)
         except (Undefined, KeyError, TypeError, ValueError):
             continue
-    form = _form_sign(reduce_circles(E.num, CIRCLES), hyp) * _form_sign(reduce_circles(E.den, CIRCLES), hyp)
-    return form or None
+    form = [_form_sign(p, hyp) or _form_sign(reduce_circles(p, CIRCLES), hyp) for p in (E.num, E.den)]
+    return form[0] * form[1] or None
 
 
 def by_inspection(B, body, ctx) -> bool:
