@@ -802,7 +802,9 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
     next depends on the plane only: on the six cones of states (certify.dynamics.cones)
     the particles, whatever the radial part of their velocity, collide next at the map's
     j or never.  By induction, two trajectories on one plane have the same collisions
-    while both last, and the same planes.  The exact runs of two data per plane, compared
+    while both last, and the same planes.  The printed route, for every state: the identity
+    (K_j e_r)·[p(1) ∧ q(1)] = 0 in the six cases (:func:`plane_identities`, S6.1-S6.6), so the
+    plane after the collision does not depend on the radial part.  The exact runs of two data per plane, compared
     collision by collision with each other and with the projective map, are supporting
     evidence."""
     checks, rates = [], sorted({d.r for d in section4_data} | {Q(1, 3)})
