@@ -140,8 +140,8 @@ def sign_by_witness(E: RF, witnesses: list, hyp: dict, r_in_unit: bool) -> int |
             return _part_sign(w["num"], n, names, hyp, r_in_unit) * _part_sign(w["den"], d, names, hyp, r_in_unit)
         except (Undefined, KeyError, TypeError, ValueError):
             continue
-    form = _form_sign(reduce_circles(E.num, CIRCLES), hyp) * _form_sign(reduce_circles(E.den, CIRCLES), hyp)
-    return form or None
+    form = [_form_sign(p, hyp) or _form_sign(reduce_circles(p, CIRCLES), hyp) for p in (E.num, E.den)]
+    return form[0] * form[1] or None
 
 
 def by_inspection(B, body, ctx) -> bool:

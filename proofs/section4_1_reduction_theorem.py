@@ -854,6 +854,28 @@ def _multiple_at(rows, values: list):
     return sp.Rational(int(k.p), int(k.q)) if k is not None and k > 0 else None
 
 
+CASES = (("a", "b", "S6.1"), ("a", "c", "S6.2"), ("b", "c", "S6.3"), ("b", "a", "S6.4"), ("c", "a", "S6.5"),
+         ("c", "b", "S6.6"))
+
+
+def plane_identities(K: dict) -> list[Check]:
+    """The proof's identity (K_j e_r)·[p(1) ∧ q(1)] = 0 (l. 672, 730, 812) in each of the six cases
+    (contact i, next j), for every state: e_r ∝ p(0) = e_i ∧ u, q(0) = u ∧ p(0) (l. 969-971), p(1)
+    in the printed direction u ∧ e_j (l. 958, 962, relabelled), q(1) = K_j q(0); so Span(p(1),
+    K_j q_λ(0)) does not depend on the radial part λ."""
+    u, out = RC.N, []
+    for i, j, ref in CASES:
+        p = RC.UNIT[INDEX[i]].cross(u)
+        q = u.cross(p)
+        Kj = K[j]
+        lhs = (Kj * p).dot(u.cross(RC.UNIT[INDEX[j]]).cross(Kj * q))
+        out.append(identity(f"case {i}{j}: ({j.upper()} e_r)·[p(1) ∧ q(1)] = 0 for every normal u (e_r ∝ e_{INDEX[i] + 1} "
+                            f"∧ u, p(1) ∝ u ∧ e_{INDEX[j] + 1}, q(1) = {j.upper()}(u ∧ e_r))", sp.Matrix([lhs]),
+                            sp.zeros(1, 1)))
+        out[-1].ref = ref
+    return out
+
+
 @certificate("S6", "l. 839-868",
              "Theorem 4.1: two trajectories with the same contact and Span(p(0),q(0)) = Span(p'(0),q'(0)) have "
              "the same plane Span(p(k),q(k)) at every collision k (and so the same collision types).",
@@ -873,7 +895,9 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
     next depends on the plane only: on the six cones of states (certify.dynamics.cones)
     the particles, whatever the radial part of their velocity, collide next at the map's
     j or never.  By induction, two trajectories on one plane have the same collisions
-    while both last, and the same planes.  The exact runs of two data per plane, compared
+    while both last, and the same planes.  The printed route, for every state: the identity
+    (K_j e_r)·[p(1) ∧ q(1)] = 0 in the six cases (:func:`plane_identities`, S6.1-S6.6), so the
+    plane after the collision does not depend on the radial part.  The exact runs of two data per plane, compared
     collision by collision with each other and with the projective map, are supporting
     evidence."""
     checks, rates = [], sorted({d.r for d in section4_data} | {Q(1, 3)})
@@ -911,6 +935,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                              f"engine − printed over Q(r): {'0' if same else show((engine - cof).applyfunc(sp.factor).tolist())}; "
                              f"integer multiples at {len(rates)} values of r: "
                              f"{sum(k is not None for k in scaled)} positive"], obligations=grounds))
+    checks += plane_identities({L: matrix(text) for L, text in zip(LETTERS, (A, B, C))})
     cones = printed_cones(reduction_cones, A, B, C)
     checks.append(Check("the next collision depends on the contact and the plane only: on each of the six cones of "
                         "states, whatever the radial part of the velocity, the particles collide next at the map's "
@@ -918,7 +943,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                         "lemmas with the printed A, B, C); by induction, two trajectories on one plane have the same "
                         "collision types while both last", RC.dynamics_is_proven(cones),
                         [f"{'✓' if c.motion.holds else '✗'} {c.label}: next {c.following}"
-                         for c in cones.values()], obligations=cone_facts(cones.values(), motion=True)))
+                         for c in cones.values()], obligations=cone_facts(cones.values(), motion=True), ref="S6.7"))
     compared = same = 0
     for d in section4_data:
         k = d.realised
@@ -973,6 +998,9 @@ def occurrences(words, pattern: str) -> int:
 
 
 # ---------------------------------------------------------------- S11
+STEP_REFS = {(L, s): f"S11.{2 * k + (1 if s > 0 else 2)}" for k, L in enumerate(LETTERS) for s in (1, -1)}
+
+
 PRINTED_S11 = dict(reduction="infinitely many collisions", realised="a prefix", A=A_PRINTED, B=B_PRINTED, C=C_PRINTED)
 
 
@@ -1004,18 +1032,23 @@ def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduct
     claim, extent = statements.count(reduction), statements.extent(realised)     # read whole; unread text fails
     cones = printed_cones(reduction_cones, A, B, C)
     checks = [lemma_check(c) for c in cones.values()]
+    for c, key in zip(checks, cones):
+        c.ref = STEP_REFS[key]
     closed = RC.map_is_proven(cones)
     checks.append(Check(f"every orbit of the reduction off the corners has {reduction}: the six cones hold every "
                         "state off the corners, and each step maps a cone into a cone of the next contact, or onto a "
-                        "corner (n'_j = 0)", closed and claim.infinite, obligations=cone_facts(cones.values())))
+                        "corner (n'_j = 0)", closed and claim.infinite, obligations=cone_facts(cones.values()),
+                        ref="S11.7"))
     checks += [check_of(c.motion) for c in cones.values()]
+    for c in checks[-6:]:
+        c.ref = "S11.8"
     prefix = RC.dynamics_is_proven(cones)
     runs = [(run, d) for d in section4_data for run in d.runs]
     separated = sum(run.stop == "free" for run, d in runs)
     checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence (for every datum, by "
                         "induction on the collisions)", prefix and (extent == "prefix" or separated == 0),
                         [f"{separated} exact runs end because the particles separate while the reduction goes on"],
-                        obligations=cone_facts(cones.values(), motion=True)))
+                        obligations=cone_facts(cones.values(), motion=True), ref="S11.8"))
     lengths = [len(o.word) for o in reduction_scan]
     realise = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)
     evidence = [supporting(f"{len(lengths)} exact orbits from random planes meet no corner in {sum(lengths)} "
