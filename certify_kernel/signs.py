@@ -38,9 +38,18 @@ def hypotheses(B) -> dict:
             hyp[VARS.index(name)] = 1
         elif iv.hi != POS and order(iv.hi, 0) <= 0:
             hyp[VARS.index(name)] = -1
-    if B.interval is not None:
+    if _in_unit(B):
         hyp[VARS.index("r")] = 1
     return hyp
+
+
+def _in_unit(B) -> bool:
+    """r's binder is an interval inside [0, 1]: r > 0 there, and a polynomial in r without root in
+    ]0, 1[ keeps its sign there."""
+    from .evaluate import NEG, POS, order
+    iv = B.interval
+    return iv is not None and iv.lo not in (NEG, POS) and iv.hi not in (NEG, POS) and order(iv.lo, 0) >= 0 \
+        and order(iv.hi, 1) <= 0
 
 
 def _zero(x) -> bool:
@@ -149,7 +158,9 @@ def by_inspection(B, body, ctx) -> bool:
     identities E = F), each sign shown by a witness (or by E's own terms)."""
     from .evaluate import NotVerified, arith, value
     hyp = hypotheses(B)
-    unit = B.interval is not None
+    unit = _in_unit(B)
+    if B.interval is not None and not unit:
+        raise Undefined("over several variables, r ranges in an interval inside [0, 1]")
     atoms, todo = [], [body]
     while todo:
         t = todo.pop()
