@@ -148,6 +148,10 @@ def collisions_separate(A, B, C, approaching, separating):
                              "the sign after (−sign) separating: "
                              + ", ".join("yes" if after.holds({Q_I: -s}) else "no" for s in allowed)],
                             obligations=take(reading) + identity_facts((row == expected, row, expected)), ref=ref))
+    checks.append(Check("therefore the particles cannot cross each other: the order x_1 ≤ x_2 ≤ x_3 ≤ x_4 holds for "
+                        "all times (by induction over the collisions: between two collisions p is affine in t, a gap "
+                        "closes only at a collision and reopens after it, by the three rows above)",
+                        all(c.holds for c in checks), ref="M3.4"))
     return conclude(checks)
 
 

@@ -341,6 +341,11 @@ def discriminant_of_cp(cp, spectrum, delta_text, P0_text, three_real_when):
     zeros = [b_ for _a, b_, _s in sign_intervals(dpoly, 0, 1)[:-1]]
     at_zeros = [next((k for k, rc in enumerate(T.critical) if rc == z), None) for z in zeros]
     double = bool(zeros) and all(k is not None and T.points[k] is not None and len(T.points[k]) == 3 for k in at_zeros)
+    # the sign of Δ_cp changes only where P0's does (l. 349: the other factors have even powers)
+    p0_ivs = sign_intervals(flint.fmpq_poly(to_fmpq_poly(parse(P0_text))), 0, 1)
+    d_ivs = sign_intervals(dpoly, 0, 1)
+    d_changes = [b_ for (_a, b_, s1), (_a2, _b2, s2) in zip(d_ivs, d_ivs[1:]) if s1 != s2]
+    p0_changes = [b_ for (_a, b_, s1), (_a2, _b2, s2) in zip(p0_ivs, p0_ivs[1:]) if s1 != s2]
     return conclude([
         Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
               obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional"), ref="T4.1"),
@@ -357,6 +362,10 @@ def discriminant_of_cp(cp, spectrum, delta_text, P0_text, three_real_when):
               double, [f"zeros of Δ_cp in ]0,1[: {', '.join(z.describe() for z in zeros)}"], ref="T4.4"),
         Check("on ]0,1[: one real eigenvalue on every cell where Δ_cp > 0",
               all(len(c.branches) == 1 for c in T.cells if sign_at[c.sample] > 0), ref="T4.5"),
+        Check("the sign of Δ_cp changes only where P0 changes sign (the other factors have even powers), on ]0,1[",
+              all(any(z == w for w in p0_changes) for z in d_changes),
+              [f"Δ_cp changes sign at {', '.join(z.describe() for z in d_changes)}; P0 at "
+               f"{', '.join(z.describe() for z in p0_changes)}"], ref="T4.6"),
         Check("flint's Disc_λ(cp) has the same factors", flint_same,
               obligations=resultant_fact(flint_same, cp, "d/dλ", delta, "proportional")),
     ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "
@@ -526,6 +535,11 @@ def position_map_of_ababcb(candidate, a, b, c, d):
     factor = ratio.as_expr() if constant else sp.cancel(P[2].as_expr() / comp[2].as_expr())
     p1 = steps[-1].position(0)
     scaled = (P[2] == to_field(factor) * comp[2], P[2].as_expr(), factor * comp[2].as_expr())
+    pa, pb, pc, pd = (parse(e) for e in (a, b, c, d))          # x± as printed at l. 384 (s = √Δ)
+    s_ = sp.Symbol("s")
+    xs = (pa - pd + s_) / (2 * pc)
+    fixed_points_ok = (sp.cancel((pa * x + pb) / (pc * x + pd) - x + (pc * x ** 2 + (pd - pa) * x - pb) / (pc * x + pd)) == 0
+                       and sp.cancel(pc * xs ** 2 + (pd - pa) * xs - pb - (s_ ** 2 - ((pa - pd) ** 2 + 4 * pb * pc)) / (4 * pc)) == 0)
     return conclude([
         Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", p1 != 0,
               obligations=identity_facts((p1 == 0, p1.as_expr(), sp.Integer(0))), ref="T10.1"),
@@ -538,6 +552,9 @@ def position_map_of_ababcb(candidate, a, b, c, d):
                                                        P[i].as_expr() * comp[j].as_expr(),
                                                        P[j].as_expr() * comp[i].as_expr())
                                                       for i in range(4) for j in range(i + 1, 4)]), ref="T10.2"),
+        Check("any fixed point of f is x± = (a-d ± √((a-d)^2+4bc))/(2c): f(x) - x = -(cx^2 + (d-a)x - b)/(cx+d), and "
+              "(a-d ± s)/(2c) is a root of cx^2 + (d-a)x - b exactly when s^2 = (a-d)^2+4bc", fixed_points_ok,
+              ref="T10.3"),
         Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
               "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
               bool(factor.is_Rational) and factor < 0 and scaled[0], obligations=identity_facts(scaled)),
