@@ -1083,25 +1083,42 @@ def f_prime_at_fixed_point() -> sp.Expr:
     return (A * D - B * C) / (C * xp + D) ** 2
 
 
+T24_Q_ONE = ("d^2 + 4*b*c", "(a - d)^2 + 4*b*c")     # l. 495: q = 1 where (a-d)^2 + 4bc = 0 (Step 2's Δ), not d^2 + 4bc
+
+
+def mobius_sum(text: str, a, b, c, d) -> sp.Expr:
+    """A printed expression in a, b, c, d (``d^2 + 4*b*c``) with the printed a, b, c, d put in."""
+    e = parse(text)
+    put = {sym: parse(v) for sym in e.free_symbols for n, v in zip("abcd", (a, b, c, d)) if sym.name == n}
+    if set(map(str, e.free_symbols)) - set("abcd"):
+        raise statements.StatementError(f"cannot read {text!r}: only a, b, c, d")
+    return e.subs(put)
+
+
 @certificate("T24", "l. 488-509", "Upper branch: |q| > 1 (fixed point of f repelling) below 5-2√6; lower branch: "
              "|q| < 1 but λ not dominant; q = (cx₊+d)/(cx₋+d) as displayed at l. 493.", needs=["spectrum"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED,
-                          q="(c x₊ + d)/(c x₋ + d)", upper="|q|>1", lower="|q|<1", stable_when="|q|<1"),
+                          q="(c x₊ + d)/(c x₋ + d)", upper="|q|>1", lower="|q|<1", stable_when="|q|<1",
+                          q_is_one="d^2 + 4*b*c"),
              expect=ERRATUM,
              mutants=[replaced("a", "1024*r^6", "-1024*r^6", "a coefficient of a"),
                       reworded("upper", "|q|>1", "|q|<1", "(|q|≥1 holds with q = f'(x₊): not an alteration that must fail)"),
                       reworded("lower", "|q|<1", "|q|>1"),
                       reworded("stable_when", "|q|<1", "|q|≤1"),
                       reworded("q", "(c x₊ + d)/(c x₋ + d)", "(c x₊ + d)/(c x₋ - d)"),
+                      replaced("q_is_one", "4*b*c", "4*b*c + 1", "another quantity for q = 1"),
                       unread("upper", "|q| > 2", "not a multiple of |q| - 1: not evaluated")])
-def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stable_when):
+def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stable_when, q_is_one):
     """For every Möbius map with real fixed points, |f'(x₊)| - 1 has the sign of -(a+d)
     (:func:`modulus_sign_factor`), and the printed q = (cx₊+d)/(cx₋+d) is 1/f'(x₊): its
     |q| - 1 has the sign of a+d.  The signs of Δ and a+d per branch are certified.  The
     sentences of l. 495-505 (x₊ stable iff |q| < 1; |q| > 1 on the upper branch, |q| < 1 on
     the lower) are read and evaluated with q as displayed at l. 493, then with the one
-    stated correction: q = (cx₋+d)/(cx₊+d) = f'(x₊), the displayed fraction inverted."""
+    stated correction: q = (cx₋+d)/(cx₊+d) = f'(x₊), the displayed fraction inverted.
+    l. 495 also says that q = 1 corresponds to d^2 + 4bc = 0: q = 1 iff √Δ = 0, Δ = (a-d)^2 + 4bc
+    (false as printed at r0 = (7-2√10)/3 on the upper branch, where Δ = 0 and d^2 + 4bc ≠ 0)."""
     rr1 = r1_of(r1)
+    r0 = Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10)
     fp = fixed_point(a, b, c, d)
     apd = spectrum.table("a+d", fp.a + fp.d, 0, rr1)
     real = spectrum.table("Δ", fp.delta, 0, 1)          # q real and √Δ > 0 where Δ > 0 (shared with T17)
@@ -1126,6 +1143,21 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
                     f"lower branch, r < 5-2√6: {lower}": on_branch(lower, LOWER)}
         return all(verdicts.values()), [f"with q = {q_text}, sign(|q| - 1) = {'+' if k > 0 else '−'}sign(a+d): "
                                         + "; ".join(f"{t}: {MARK[v]}" for t, v in verdicts.items())]
+
+    def q_one(text) -> Check:
+        """l. 495: the case q = 1 corresponds to E = 0 (E = ``text``): for every Möbius map q - 1 =
+        2√Δ/(a+d-√Δ), so the claim holds when E is Δ = (a-d)^2 + 4bc; and at r0 on the upper branch,
+        where Δ = 0 (q = 1), E vanishes too."""
+        A, B, C, D, s_, _xp, _xm = mobius_symbols()
+        generic = sp.cancel(parse(text).subs({sym: {"a": A, "b": B, "c": C, "d": D}[sym.name]
+                                              for sym in parse(text).free_symbols if sym.name in "abcd"})
+                            - ((A - D) ** 2 + 4 * B * C)) == 0
+        E = mobius_sum(text, a, b, c, d)
+        at_r0 = spectrum.vanishes_at(fp.delta, r0, UPPER) == spectrum.vanishes_at(E, r0, UPPER)
+        return Check(f"l. 495: the case q = 1 corresponds to {text} = 0 (q - 1 = 2√Δ/(a+d-√Δ) for every Möbius map: "
+                     "q = 1 iff Δ = (a-d)^2 + 4bc = 0; on the upper branch at r0 = (7-2√10)/3, Δ = 0)", generic and at_r0,
+                     [f"{text} is (a-d)^2 + 4bc: {MARK[generic]}; at r0 on the upper branch, Δ = 0 and {text} = 0 "
+                      f"alike: {MARK[at_r0]}"])
     sentence_text = f"x₊ stable iff {stable_when} (l. 495); {upper} on the upper branch and {lower} on the lower, r < 5-2√6 (l. 505)"
     with gathered(again=True) as facts_printed:
         ok, ev = sentences(q)
@@ -1135,38 +1167,57 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
            f"{MARK[real.holds(LOWER, 1, 0, rr1)]} (r < 5-2√6), so q is real and √Δ > 0",
            f"for every Möbius map, f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) and |f'(x₊)| - 1 has the sign of "
            f"{'a+d' if k_f == 1 else '-(a+d)'}"]
-    printed = [Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d, obligations=take(facts_printed),
-                     ref="T24.1")]
-    if ok:
-        return conclude(printed)
-    if T24_CORRECTION[0] not in q:
-        return conclude(printed + [Check(f"the stated correction {' → '.join(T24_CORRECTION)} applies to the "
-                                         f"printed q = {q}", False)])
-    q_fixed = q.replace(*T24_CORRECTION)
-    with gathered(again=True) as facts_fixed:
-        ok_fixed, ev_fixed = sentences(q_fixed)
-    is_fprime = sp.cancel(read_q(q_fixed) - f_prime_at_fixed_point()) == 0
-    facts_fixed += modulus_facts(read_q(q_fixed)) + modulus_facts(f_prime_at_fixed_point()) + \
-        identity_facts((is_fprime, read_q(q_fixed), f_prime_at_fixed_point()))
     with gathered(again=True) as facts_upper:
         upper_repels = k_f == -1 and apd.holds(UPPER, -1)
     with gathered(again=True) as facts_lower:
         lower_dominated = k_f == -1 and apd.holds(LOWER, 1) and all(lam_gap.holds(k, 1) for k in (UPPER, MIDDLE, LOWER))
-    corrected = [
-        Check(f"l. 493: q = {q_fixed}; with it, {sentence_text}", ok_fixed and is_fprime,
-              ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"], corrects=printed[0],
-              obligations=take(facts_fixed), ref="T24.2"),
+    A, B, C, D, s_, xp, xm = mobius_symbols()
+    two_forms = sp.cancel(C * xp + D - (A + D + s_) / 2) == 0 and sp.cancel(C * xm + D - (A + D - s_) / 2) == 0
+    minus_one = sp.cancel((A + D + s_) / (A + D - s_) + 1 - 2 * (A + D) / (A + D - s_)) == 0
+    printed = [
+        Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d, obligations=take(facts_printed), ref="T24.1"),
         Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)", upper_repels,
               obligations=take(facts_upper + modulus_facts(f_prime_at_fixed_point())), ref="T24.3"),
         Check("and on the lower branch a+d > 0 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: λ is not dominant "
               "(unstable in the velocities)", lower_dominated,
               obligations=take(facts_lower + modulus_facts(f_prime_at_fixed_point())), ref="T24.4"),
+        Check("l. 493: the two forms of q agree, cx± + d = (a+d ± √Δ)/2 for x± = (a-d ± √Δ)/(2c)", two_forms, ref="T24.5"),
+        named("T24.6", q_one(q_is_one)),
+        Check("which does not happen below 5-2√6: Δ > 0, so q ≠ 1, on the upper and lower branches",
+              real.holds(UPPER, 1, 0, rr1) and real.holds(LOWER, 1, 0, rr1), ref="T24.8"),
+        Check("l. 495: the case q = -1 corresponds to a+d = 0 (q + 1 = 2(a+d)/(a+d-√Δ))", minus_one, ref="T24.9"),
     ]
-    return conclude(printed, corrected, kind=MISPRINT, misprint="l. 493: q displayed as 1/f'(x₊), the fraction inverted",
-                    note="One misprint: the q displayed at l. 493, (cx₊+d)/(cx₋+d), is 1/f'(x₊). With q = f'(x₊) = "
+    if all(c.holds for c in printed):
+        return conclude(printed)
+    corrected, slips = [], []
+    if not printed[0].holds:
+        if T24_CORRECTION[0] not in q:
+            corrected.append(Check(f"the stated correction {' → '.join(T24_CORRECTION)} applies to the printed q = {q}",
+                                   False, corrects=printed[0]))
+        else:
+            q_fixed = q.replace(*T24_CORRECTION)
+            with gathered(again=True) as facts_fixed:
+                ok_fixed, ev_fixed = sentences(q_fixed)
+            is_fprime = sp.cancel(read_q(q_fixed) - f_prime_at_fixed_point()) == 0
+            facts_fixed += modulus_facts(read_q(q_fixed)) + modulus_facts(f_prime_at_fixed_point()) + \
+                identity_facts((is_fprime, read_q(q_fixed), f_prime_at_fixed_point()))
+            corrected.append(Check(f"l. 493: q = {q_fixed}; with it, {sentence_text}", ok_fixed and is_fprime,
+                                   ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"],
+                                   corrects=printed[0], obligations=take(facts_fixed), ref="T24.2"))
+        slips.append("l. 493: q displayed as 1/f'(x₊), the fraction inverted")
+    if not printed[4].holds:
+        fixed = q_is_one.replace(*T24_Q_ONE) if T24_Q_ONE[0] in q_is_one else None
+        fix = named("T24.7", q_one(fixed)) if fixed else \
+            Check(f"the stated correction {' → '.join(T24_Q_ONE)} applies to the printed {q_is_one}", False)
+        fix.corrects = printed[4]
+        corrected.append(fix)
+        slips.append("l. 495: d^2+4bc printed for (a-d)^2+4bc")
+    corrected += [c for c in printed if c.holds]
+    return conclude(printed, corrected, kind=MISPRINT, misprint="; ".join(slips),
+                    note="Two misprints: the q displayed at l. 493, (cx₊+d)/(cx₋+d), is 1/f'(x₊). With q = f'(x₊) = "
                     "(cx₋+d)/(cx₊+d), every sentence of l. 495-505 holds as printed, and the theorem's conclusion "
-                    "(instability on both branches) stands.")
-
+                    "(instability on both branches) stands. And q = 1 (l. 495) where (a-d)^2 + 4bc = 0 (Step 2's Δ), "
+                    "not d^2 + 4bc = 0; neither vanishes below 5-2√6 on the upper and lower branches.")
 
 
 # ---------------------------------------------------------------- Conclusion (l. 507-512): the theorem as a whole
