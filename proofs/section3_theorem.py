@@ -818,13 +818,15 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
     sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), r0)
     tc = spectrum.sign_at_point(Condition.of("t_c - t_a", x0 / (-parse(V)) - 1), r0)
     sv = spectrum.sign_at_point(Condition.of("v", parse(V)), r0)
+    su = spectrum.sign_at_point(Condition.of("u", parse(U)), r0)
     corrected.append(Check("above 5-2√6 a positive fixed point exists on the upper branch only at r0 = (7-2√10)/3: the "
                            "double fixed point x = (a-d)/(2c) > 0, from which (p(0) = (1,0,x), q(0) = (-1,u,v)) the first "
-                           "collision is c (v < 0 and t_c = x/(-v) < 1 = t_a), not a: no self-similar datum there",
-                           above_but_r0 and zeros == [r0] and bool(sx and tc and sv) and sx[UPPER] == 1
-                           and sv[UPPER] == -1 and tc[UPPER] == -1,
-                           [f"signs at r0 on the upper branch: x {sx and sx[UPPER]}, v {sv and sv[UPPER]}, "
-                            f"t_c - t_a {tc and tc[UPPER]}"], corrects=printed[5], ref="T17.8"))
+                           "collision is c (u > 0: b does not come first; v < 0 and t_c = x/(-v) < 1 = t_a), not a: no "
+                           "self-similar datum there",
+                           above_but_r0 and zeros == [r0] and bool(sx and tc and sv and su) and sx[UPPER] == 1
+                           and su[UPPER] == 1 and sv[UPPER] == -1 and tc[UPPER] == -1,
+                           [f"signs at r0 on the upper branch: x {sx and sx[UPPER]}, u {su and su[UPPER]}, "
+                            f"v {sv and sv[UPPER]}, t_c - t_a {tc and tc[UPPER]}"], corrects=printed[5], ref="T17.8"))
     return conclude(printed, corrected, kind=FALSE_STATEMENT,
                     misprint="l. 436: Δ < 0 'until r = 1' misses the zero of Δ at (7-2√10)/3",
                     note="The printed 'until r = 1' misses one point: at r = (7-2√10)/3 the upper "
