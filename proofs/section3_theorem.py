@@ -668,8 +668,9 @@ def sign_of_b(cp, spectrum, b, quartic, r1):
     checks += [
         Check("the quartic has no real root (Sturm and python-flint)",
               sturm_count(Q4) == 0 and len(flint_real_roots(Q4)) == 0, ref="T15.2"),
-        Check("b changes sign at 5-2√6 on one of the two lower branches (the middle one) and not on the upper one",
-              T.changes_at(MIDDLE, rr1) and T.keeps_sign_at(UPPER, rr1), ["sign table of b:\n\n" + T.markdown()],
+        Check("b changes sign at 5-2√6 on one of the two lower branches (the middle one), not on the lowest one nor on "
+              "the upper one", T.changes_at(MIDDLE, rr1) and T.keeps_sign_at(LOWER, rr1) and T.keeps_sign_at(UPPER, rr1),
+              ["sign table of b:\n\n" + T.markdown()],
               ref="T15.3"),
     ]
     return conclude(checks, figures=[fig], note="Precisely: b changes sign at 5-2√6 on the middle branch only; "
