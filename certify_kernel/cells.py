@@ -115,6 +115,11 @@ class Point:
                 self._roots[key] = (cpl, self._at.branches(cpl))
         return len(self._roots[key][1])
 
+    def distinct(self, cp: dict) -> int:
+        """The number of distinct real roots of cp(r₀, λ) (in a cell every root is simple)."""
+        n = self.branches(cp)
+        return n if self.cell else len(self._at.roots(in_lambda(cp))[1])
+
     def sign(self, cond: Condition, k: int | None):
         key = (cond.key, k)
         if key not in self._signs:

@@ -498,6 +498,7 @@ FUNCTIONS = {
     "roots": _roots, "root": _root, "count": _count,
     "cos": _trig("cos"), "sin": _trig("sin"), "tan": _trig("tan"),
     "sup": lambda ctx, S: _sup(ctx, S), "inf": lambda ctx, S: _inf(ctx, S),
+    "deg": lambda ctx, P: RF.const(len(_poly_r(value(P, ctx))) - 1),
     "numerator": lambda ctx, E: RF(value(E, ctx).num),
     "denominator": lambda ctx, E: RF(value(E, ctx).den),
 }
@@ -654,7 +655,8 @@ def _inf(ctx, S):
 
 # --------------------------------------------------------------------- binders
 
-ATOMS: dict = {}        # name -> (conditions(ctx, args) -> [Condition], truth(point, ctx, args) -> bool)
+ATOMS: dict = {}        # name -> (conditions(ctx, args) -> [Condition], value(point, ctx, args, conds)): a truth,
+                        # or a count compared with a number (nroots(P) = 3)
 
 
 class Binding:
@@ -762,6 +764,10 @@ def conditions(body, B: Binding, ctx: Context) -> dict:
             walk(t[1])
         elif t[0] == "cmp":
             for k, (op, a, b) in enumerate(zip(t[1], t[2], t[2][1:])):
+                if a[0] == "call" and a[1] in ATOMS:          # nroots(P) = 3: a count of the piece
+                    for j, c in enumerate(ATOMS[a[1]][0](ctx, a[2])):
+                        out[(id(a), j)] = c
+                    continue
                 for s in B.sigmas or (None,):
                     out[(id(t), k, s)] = _point_condition(a, b, ctx) or atom_condition(a, b, B, ctx, s)
         elif t[0] == "call" and t[1] in ATOMS:
@@ -920,6 +926,11 @@ def _truth_at(t, p, k, s, B, ctx, conds) -> bool:
         return not _truth_at(t[1], p, k, s, B, ctx, conds)
     if kind == "cmp":
         for j, op in enumerate(t[1]):
+            a = t[2][j]
+            if a[0] == "call" and a[1] in ATOMS:
+                if not compare(op, RF.const(_atom_at(a, p, ctx, conds)), value(t[2][j + 1], ctx)):
+                    return False
+                continue
             if t[2][j] == ("name", "r") and conds[(id(t), j, s)].cp is None and op in ("=", "≠") and \
                     isinstance(value(t[2][j + 1], ctx), Algebraic):
                 here = not p.cell and number(p.r0).compare(value(t[2][j + 1], ctx)) == 0
@@ -938,8 +949,35 @@ def _truth_at(t, p, k, s, B, ctx, conds) -> bool:
         if p.cell or p.left is None or p.right is None:
             return False
         c = conds[(id(t), 0, s)]
+        if c.cp is not None and k >= min(p.left.branches(c.cp), p.right.branches(c.cp)):
+            return False                         # the branch ends here: it has no sign on one side
         left, right = p.left.sign(c, k), p.right.sign(c, k)
         return left is not None and right is not None and left * right < 0
     if kind == "call" and t[1] in ATOMS:
-        return ATOMS[t[1]][1](p, ctx, t[2], [conds[(id(t), j)] for j in range(len(ATOMS[t[1]][0](ctx, t[2])))])
+        return _atom_at(t, p, ctx, conds)
     raise Undefined("not a formula")
+
+
+def _atom_at(t, p, ctx, conds):
+    """The value of an atom (:data:`ATOMS`) at a piece: a truth, or a count that a comparison reads."""
+    mine, j = [], 0
+    while (id(t), j) in conds:
+        mine, j = mine + [conds[(id(t), j)]], j + 1
+    return ATOMS[t[1]][1](p, ctx, t[2], mine)
+
+
+def _nroots_conditions(ctx, args) -> list:
+    """nroots(P): its cut points are those of P's branches (Res_λ(P, ∂P/∂λ) and lc_λ P, the
+    bounding polynomials of a condition on P's branches that is the constant 1)."""
+    if len(args) != 1:
+        raise Undefined("nroots(P): one polynomial in r and λ")
+    one = {(0, 0): Fraction(1)}
+    return [Condition(two(value(args[0], ctx)), one, one)]
+
+
+def _nroots(p, ctx, args, conds) -> int:
+    """nroots(P) = k: P(r, λ) has k distinct real roots λ at this r (a multiple root counted once)."""
+    return p.distinct(conds[0].cp)
+
+
+ATOMS["nroots"] = (_nroots_conditions, _nroots)
