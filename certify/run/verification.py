@@ -36,6 +36,9 @@ def decide(certificates_text: str, jobs: int = 2, statements: Path = STATEMENTS)
     paper = certify_kernel.read(statements)
     ids = {c["id"] for c in data["certificates"]}
     results = certify_kernel.verify_all(data, paper, jobs, ids, tick=progress.Bar("certificate"))
+    known = {c.id for c in paper.certificates}
+    results += [{"id": i, "status": "", "ok": False, "failure": "certificates.json has it, the statement files do not",
+                 "counted": 0, "verified": 0, "statements": []} for i in sorted(ids - known)]
     k, n = certify_kernel.counts(results)
     return {"digest": digest(certificates_text, statements), "verified": k, "statements": n,
             "certificates": {r["id"]: {"status": r["status"], "ok": r["ok"], "failure": r["failure"],
