@@ -1216,7 +1216,7 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
         corrected.append(fix)
         slips.append("l. 495: d^2+4bc printed for (a-d)^2+4bc")
     corrected += [c for c in printed if c.holds]
-    return conclude(printed, corrected, kind=MISPRINT, misprint="; ".join(slips),
+    return conclude(printed, corrected, kind=MISPRINT, misprint=tuple(slips),
                     note="Two misprints: the q displayed at l. 493, (cx₊+d)/(cx₋+d), is 1/f'(x₊). With q = f'(x₊) = "
                     "(cx₋+d)/(cx₊+d), every sentence of l. 495-505 holds as printed, and the theorem's conclusion "
                     "(instability on both branches) stands. And q = 1 (l. 495) where (a-d)^2 + 4bc = 0 (Step 2's Δ), "

@@ -125,7 +125,7 @@ def _under(results) -> dict[str, list[str]]:
         elif outcome.status == OBSERVED and outcome.agrees is False:
             lines.append("≠ does not agree with the paper: " + " ".join(outcome.reason.split()))
         elif outcome.status == ERRATUM:
-            lines.append(f"{outcome.kind}: " + " ".join(outcome.misprint.split()))
+            lines.append(f"{outcome.kind}: " + " ".join(report.misprint_text(outcome).split()))
             for printed, fixes in report.erratum_pairs(outcome):
                 lines.append("✗ as printed: " + " ".join(printed.statement.split()))
                 for fix in fixes:

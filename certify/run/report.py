@@ -188,15 +188,26 @@ def status_label(outcome) -> str:
     return f"{outcome.status}, {DISAGREES}" if disagrees else outcome.status
 
 
+def slips(outcome) -> list[str]:
+    """The slips of the paper an ERRATUM's false checks come from (``misprint``: one text, or a
+    tuple of them when one certificate meets several)."""
+    m = outcome.misprint
+    return [str(x) for x in m] if isinstance(m, (list, tuple)) else [str(m)] if m else []
+
+
+def misprint_text(outcome) -> str:
+    return "; ".join(slips(outcome))
+
+
 def misprints(results) -> list[tuple[str, str, list]]:
     """The distinct errors of the paper behind the errata, in the order met:
     ``(misprint, kind, [(cert, outcome), ...])``; certificates sharing one misprint
-    are grouped under it."""
+    are grouped under it, a certificate with several slips is under each."""
     groups: dict[str, tuple[str, list]] = {}
     for cert, outcome in results:
         if outcome.status == ERRATUM:
-            key = outcome.misprint or f"(not stated: {cert.id})"
-            groups.setdefault(key, (outcome.kind or "(kind not stated)", []))[1].append((cert, outcome))
+            for key in slips(outcome) or [f"(not stated: {cert.id})"]:
+                groups.setdefault(key, (outcome.kind or "(kind not stated)", []))[1].append((cert, outcome))
     return [(key, kind, members) for key, (kind, members) in groups.items()]
 
 
@@ -210,10 +221,10 @@ def errata_line(results) -> str:
     for kind in ERRATUM_KINDS + ("(kind not stated)",):
         mine = [g for g in groups if g[1] == kind]
         if mine:
-            certs = sum(len(g[2]) for g in mine)
+            certs = len({cert.id for g in mine for cert, _ in g[2]})
             parts.append(f"{len(mine)} {kind}{'s' if len(mine) != 1 else ''} (in {certs} certificate"
                          f"{'s' if certs != 1 else ''})")
-    n = sum(len(g[2]) for g in groups)
+    n = len({cert.id for g in groups for cert, _ in g[2]})
     return (f"{len(groups)} distinct error{'s' if len(groups) != 1 else ''} of the paper, in {n} certificate"
             f"{'s' if n != 1 else ''}: " + ", ".join(parts))
 
@@ -247,7 +258,7 @@ def main_results(results) -> list[tuple[str, bool, list]]:
     def stands(name, outcome):
         kind = name.split()[0].lower()
         return outcome.status == PASS or (outcome.status == ERRATUM and bool(
-            re.search(rf"({re.escape(name)}|the {kind}) holds", outcome.misprint or "")))
+            re.search(rf"({re.escape(name)}|the {kind}) holds", misprint_text(outcome))))
     return [(name, all(stands(name, o) for _, o in members), members) for name, members in found.items()]
 
 
@@ -466,7 +477,7 @@ def _section(cert, outcome, kernel=None) -> str:
     if outcome.status == OBSERVED and outcome.agrees is False:
         parts.append(f"**Does not agree with the paper:** {_one_line(outcome.reason)}")
     if outcome.status == ERRATUM:
-        parts.append(f"**Erratum ({outcome.kind}):** {_one_line(outcome.misprint)}")
+        parts.append(f"**Erratum ({outcome.kind}):** {_one_line(misprint_text(outcome))}")
     shown: set = set()
     if outcome.printed:
         parts.append(_checks("As printed", outcome.printed, shown, kernel, cert.id))
@@ -514,7 +525,7 @@ def certificate_data(cert, outcome) -> dict:
         "proof": {"module": cert.module, "function": getattr(cert.func, "__name__", "")},
         "part": part_of(cert.id),
         "status": outcome.status,
-        **({"erratum": {"kind": outcome.kind, "misprint": outcome.misprint}} if outcome.status == ERRATUM else {}),
+        **({"erratum": {"kind": outcome.kind, "misprint": misprint_text(outcome)}} if outcome.status == ERRATUM else {}),
         **({"agrees": outcome.agrees, "reason": outcome.reason} if outcome.status == OBSERVED else {}),
         "printed": [_check_data(c) for c in outcome.printed],
         "corrected": [_check_data(c) for c in outcome.corrected],

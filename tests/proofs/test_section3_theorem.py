@@ -27,10 +27,10 @@ def test_t24_with_the_two_stated_corrections_passes():
 
 def test_t24_erratum_is_two_misprints():
     o = outcome("T24")
-    assert o.status == ERRATUM and o.kind == "misprint" and "l. 493" in o.misprint and "l. 495" in o.misprint
+    assert o.status == ERRATUM and o.kind == "misprint" and [m[:6] for m in o.misprint] == ["l. 493", "l. 495"]
     assert len([c for c in o.printed if not c.holds]) == 2
     with_q = outcome("T24", **altered("T24", "q", "(c x₊ + d)/(c x₋ + d)", "(c x₋ + d)/(c x₊ + d)"))
-    assert with_q.status == ERRATUM and "l. 493" not in with_q.misprint
+    assert with_q.status == ERRATUM and [m[:6] for m in with_q.misprint] == ["l. 495"]
 
 
 def test_t16_with_the_stated_correction_passes():
