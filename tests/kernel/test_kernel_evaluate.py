@@ -13,6 +13,8 @@ from certify_kernel.evaluate import collision, equal, expand_word, word_matrix
 from certify_kernel.values import Undefined
 from tests.kernel.kernel_support import outcome, repository_statements, truth_of, value_of
 
+FALSE = "failed: Z9.1: the statement file says it holds; the kernel finds it false"
+
 
 def verified(formula: str, **kw) -> bool:
     return outcome(formula, **kw) == "verified"
@@ -21,7 +23,7 @@ def verified(formula: str, **kw) -> bool:
 def refuted(formula: str, **kw) -> bool:
     """The kernel finds the formula false: a statement that it holds fails, one that it is
     refuted is verified."""
-    return outcome(formula, **kw).startswith("failed: Z9.1: the statement file says it holds; the kernel finds it false") \
+    return outcome(formula, **kw).startswith(FALSE) \
         and outcome(formula, verdict="refuted", **kw) == "verified"
 
 
@@ -183,6 +185,9 @@ def test_a_pole_of_a_condition_is_undecided_and_named():
     got = outcome("forall r in ]0, 1[: 1/(r - 1/2) > 0 or r < 1/2")
     assert got == "not verified: undecided at r = ≈0.5000000000"
     assert outcome("forall r in ]0, 1[: 1/(r - 1/2) > 0 or r < 1/2", verdict="refuted").startswith("not verified")
+    for verdict in ("holds", "refuted"):       # the set is ]1/2, 1[ or ]1/2, 1[ ∪ {1/2}: undecided, whichever is said
+        assert outcome("{r in ]0, 1[ : 1/(r - 1/2) > 0} = ]1/2, 1[", verdict=verdict) == \
+            "not verified: undecided at r = ≈0.5000000000"
 
 
 @pytest.mark.parametrize("formula", [
@@ -231,6 +236,7 @@ CP3 = "(λ - r)*(λ^2 - r + 1/4)"          # roots r (simple) and ±√(r − 1/
     "forall r in ]0, 1[, x in fixed(1, r, 1, 0): x^2 - x - r = 0",
     "forall r in ]0, 1[, x in fixed(0, -1, 1, 0): not x > 0",             # x² = −1: not real
     "{r in ]0, 1[, x = xplus(1, r - 1/4, 1, 0) : x > 0} = ]0, 1[",
+    "{r in ]0, 1[, x = xplus(1, r - 1/2, 1, 0) : x > 0} = [1/4, 1[",        # Δ = 4r − 1: x real from 1/4 on
     "{r in ]0, 1[, λ = upper(λ^2 - r), x = xplus(λ, 1, 1, 0) : x > λ} = ]0, 1[",
     "{r in ]0, 1[ : changes(r^2 - r + 3/16)} = {1/4, 3/4}",
     "{r in ]0, 1[ : changes((r - 1/2)^2)} = {}",

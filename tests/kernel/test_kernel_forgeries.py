@@ -21,7 +21,7 @@ from certify_kernel.__main__ import main
 from certify_kernel.statements import DEFAULT as STATEMENTS
 from certify_kernel.statements import read
 from tests.kernel.kernel_support import honest_entry
-from tests.kernel.test_kernel_signs import BINDERS, E, TAMPERINGS, tampered, witness
+from tests.kernel.test_kernel_signs import BINDERS, TAMPERINGS, E, tampered, witness
 
 IDS = ["T1", "T5", "T17", "S2"]
 
@@ -98,7 +98,8 @@ STATEMENT_FORGERIES = {
         "3_theorem.txt", "T17.5  l. 437  refuted by T17.6", "T17.5  l. 437  holds", ["T17"], None),
     "a statement missing": ("3_theorem.txt", "T5.3  l. 350  holds  \"r* ≈ 0.11384\"\n      rstar ≈ 0.11384\n", "",
                             ["T5"], "T5: FAILED: statement T5.3: not in both certificates.json and the statement file"),
-    "a statement added": ("3_theorem.txt", "T5.3  l. 350", "T5.4  l. 350  holds  \"P0 ≠ 0\"\n      P0 ≠ 0\nT5.3  l. 350",
+    "a statement added": ("3_theorem.txt", "T5.3  l. 350",
+                          "T5.4  l. 350  holds  \"P0 ≠ 0\"\n      P0 ≠ 0\nT5.3  l. 350",
                           ["T5"], "T5: FAILED: statement T5.4: not in both certificates.json and the statement file"),
 }
 
@@ -198,7 +199,8 @@ Z8.2  l. 1  holds  "cos θ - sin θ > 0 (false at θ = π/3: terms of mixed sign
 '''
 
 
-@pytest.mark.parametrize("name", ["none", "factors that do not multiply to the form", "a form not congruent to the numerator",
+@pytest.mark.parametrize("name", ["none", "factors that do not multiply to the form",
+                                  "a form not congruent to the numerator",
                                   "a factor's form of mixed signs (its own terms)",
                                   "a factor's form not congruent to it"])
 def test_a_forged_witness_is_rejected_naming_the_statement(statements, tmp_path, capsys, name):
@@ -213,5 +215,6 @@ def test_a_forged_witness_is_rejected_naming_the_statement(statements, tmp_path,
     if name == "none":
         assert first == "Z8: PASS, 1/2 statements verified; not verified: Z8.2 (no witness shows the sign of an atom)"
     else:
-        assert first == "Z8: PASS, 0/2 statements verified; not verified: Z8.1 (no witness shows the sign of an atom), " \
+        assert first == "Z8: PASS, 0/2 statements verified; not verified: " \
+            "Z8.1 (no witness shows the sign of an atom), " \
             "Z8.2 (no witness shows the sign of an atom)"

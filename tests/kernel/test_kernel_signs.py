@@ -67,7 +67,8 @@ NO_WITNESS = "not verified: no witness shows the sign of an atom"
 
 def test_a_witness_that_checks_is_accepted():
     assert decided(witness()) == "verified"
-    assert decided(witness(), "< 0").startswith("failed: Z9.1: the statement file says it holds; the kernel finds it false")
+    assert decided(witness(), "< 0").startswith("failed: Z9.1: the statement file says it holds; the kernel finds "
+                                                "it false")
     assert outcome(f"{BINDERS}: {E} < 0", verdict="refuted", witnesses=[witness()]) == "verified"
 
 
@@ -87,6 +88,7 @@ def test_a_sign_by_inspection_of_terms_of_mixed_signs_is_refused():
     assert outcome(f"{BINDERS}: r - 1/2 > 0") == NO_WITNESS
     assert outcome("forall θ in ]0, π[, r in ]0, 1[: cos(θ) > 0") == NO_WITNESS            # cos θ of either sign
     assert outcome("forall θ in ]0, π[, r in ]0, 1[: cos(θ)^2 > 0") == NO_WITNESS          # 0 at π/2: not strict
+    assert outcome("forall θ in ]0, π[, r in ]0, 1[: cos(θ) + r > 0") == NO_WITNESS         # < 0 near θ = π
 
 
 def tampered(edit) -> dict:

@@ -50,7 +50,8 @@ def test_a_good_file(tmp_path):
     assert s4.unformalised == "the exact simulator" and not s4.formula
     assert s5.verdict == "observed" and not s5.printed and s1.printed and s2.printed and not s3.printed
     assert s1.where.endswith("1_test.txt:10")
-    assert certify_kernel.status_of(z1.statements) == "ERRATUM" and certify_kernel.status_of(z2.statements) == "OBSERVED"
+    assert certify_kernel.status_of(z1.statements) == "ERRATUM"
+    assert certify_kernel.status_of(z2.statements) == "OBSERVED"
 
 
 def test_files_are_read_in_name_order_and_share_their_definitions(tmp_path):
@@ -74,13 +75,15 @@ HEADER = 'certificate Z1  l. 1  "t"\n'
     ('Z1.1  l. 1  holds  "t"\n      r = r\n', "1_test.txt:1: the statement Z1.1 is not under its certificate"),
     (HEADER + 'Z2.1  l. 1  holds  "t"\n      r = r\n', "1_test.txt:2: the statement Z2.1 is not under its certificate"),
     (HEADER + 'Z1.1  l. 1  holds  "t"\n', "Z1.1 has no formal statement"),
-    (HEADER + 'Z1.1  l. 1  holds  "t"\n      r = r\nZ1.1  l. 2  holds  "u"\n      r = r\n', "two statements share the id Z1.1"),
+    (HEADER + 'Z1.1  l. 1  holds  "t"\n      r = r\nZ1.1  l. 2  holds  "u"\n      r = r\n',
+     "two statements share the id Z1.1"),
     (HEADER + 'Z1.1  l. 1  refuted by Z1.2  "t"\n      r = 1\n', "Z1.1 refuted Z1.2, but Z1.2 is not its correction"),
     (HEADER + 'Z1.1  l. 1  refuted by Z1.2  "t"\n      r = 1\nZ1.2  l. 1  holds  "u"\n      r = r\n',
      "Z1.2 is not its correction"),
     (HEADER + 'Z1.1  l. 1  refuted by Z1.2  "t"\n      r = 1\nZ1.2  l. 1  corrects Z1.3  "u"\n      r = r\n',
      "Z1.2 is not its correction"),
-    (HEADER + 'Z1.2  l. 1  corrects Z1.1  "u"\n      r = r\n', "Z1.2 corrects Z1.1, but Z1.1 is not its refuted statement"),
+    (HEADER + 'Z1.2  l. 1  corrects Z1.1  "u"\n      r = r\n',
+     "Z1.2 corrects Z1.1, but Z1.1 is not its refuted statement"),
     (HEADER + 'Z1.1  l. 1  proven  "t"\n      r = r\n', "1_test.txt:2: not a line of the statement format"),
     (HEADER + 'Z1.1  holds  "t"\n      r = r\n', "not a line of the statement format"),            # no line
     (HEADER + 'Z1.1  l. 1  holds  t\n      r = r\n', "not a line of the statement format"),           # no quotes

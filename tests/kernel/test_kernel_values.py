@@ -145,6 +145,13 @@ def test_bisection_keeps_the_root_and_compare_decides_equality():
     assert Algebraic([F(-2), F(0), F(1)], 1, 2).sign_of([F(-2), F(0), F(1)]) == 0
 
 
+def test_numbers_whose_polynomials_share_a_factor_are_told_apart():
+    """√2 (a root of x² − 2) and 29/20 as a root of (x² − 2)(x − 29/20): a common factor, two numbers."""
+    sqrt2 = Algebraic([F(-2), F(0), F(1)], 1, F(3, 2))
+    other = Algebraic([F(58, 20), F(-2), F(-29, 20), F(1)], F(142, 100), F(3, 2))
+    assert sqrt2.compare(other) < 0 and other.compare(Algebraic([F(-2), F(0), F(1)], 1, F(3, 2))) > 0
+
+
 def test_polynomial_helpers():
     assert gcd([F(-1), F(0), F(1)], [F(1), F(1)]) == [F(1), F(1)]
     assert squarefree([F(1), F(-2), F(1)]) == [F(-1), F(1)]
