@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -247,7 +248,7 @@ def copy_tree(dest: Path) -> None:
 
 
 def run(m: Mutant, tree: Path, timeout: int) -> tuple[str, float, str]:
-    """('killed' | 'survived' | 'timeout', seconds, the last line of pytest)."""
+    """('killed' | 'survived' | 'timeout', seconds, the test that failed first (pytest's FAILED line))."""
     target = tree / m.path
     original = target.read_text()
     if original.count(m.old) != 1:
@@ -259,7 +260,8 @@ def run(m: Mutant, tree: Path, timeout: int) -> tuple[str, float, str]:
     try:
         out = subprocess.run(cmd, cwd=tree, env=env, capture_output=True, text=True, timeout=timeout)
         verdict = "survived" if out.returncode == 0 else "killed"
-        last = (out.stdout.strip().splitlines() or [""])[-1]
+        last = next((re.match(r"\S+ (?:\S*/)?([^/\s]+?::[A-Za-z_0-9]+)", line).group(1)
+                     for line in out.stdout.splitlines() if re.match(r"(FAILED|ERROR) \S+::", line)), "")
     except subprocess.TimeoutExpired:
         verdict, last = "timeout", ""
     finally:
@@ -286,8 +288,8 @@ def main(argv=None) -> int:
             verdict, seconds, last = run(m, tree, args.timeout)
             expected = "survived" if m.survives else "killed"
             flag = "" if verdict == expected else "   <-- UNEXPECTED"
-            print(f"{verdict:8} {seconds:6.1f} s  [{m.group}] {m.name}{' (issue 25)' if m.listed else ''}{flag}",
-                  flush=True)
+            print(f"{verdict:8} {seconds:6.1f} s  [{m.group}] {m.name}{' (issue 25)' if m.listed else ''}{flag}"
+                  + (f"  (by {last})" if last else ""), flush=True)
             if verdict != expected:
                 bad.append(m.name)
     killed = len(chosen) - sum(m.survives for m in chosen)

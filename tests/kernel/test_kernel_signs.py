@@ -115,13 +115,17 @@ TAMPERINGS = {
     "the variables permuted": lambda w: w.__setitem__("vars", ["r", "sin θ", "cos θ", "cos φ"]),
     "a coefficient that is not a number": lambda w: w["num"].__setitem__("constant", "one"),
     "the factors missing": lambda w: w["num"].pop("factors"),
+    "a factorisation of another form (−n, consistent in itself)": lambda w: w["num"].update(
+        form=terms({k: -v for k, v in NUM.items()}), constant="-1"),
     "the denominator's part missing": lambda w: w.pop("den"),
 }
 
 
 @pytest.mark.parametrize("name", list(TAMPERINGS))
 def test_every_tampering_of_the_witness_is_rejected(name):
+    """Rejected whichever sign the statement claims: the witness shows no sign at all."""
     assert decided(tampered(TAMPERINGS[name])) == NO_WITNESS
+    assert decided(tampered(TAMPERINGS[name]), "< 0") == NO_WITNESS
 
 
 def test_a_witness_of_another_atom_is_passed_over_and_a_good_one_used():

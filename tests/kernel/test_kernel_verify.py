@@ -202,24 +202,31 @@ def test_only_checks_the_named_certificates(files, tmp_path, capsys):
     assert "Z2" not in out and out.splitlines()[-1].startswith("2 certificates, 0 failed")
 
 
+def bare(*args) -> subprocess.CompletedProcess:
+    """python3 -m certify_kernel ARGS in a bare Python: -I (no PYTHON* variables, no user site) and -S
+    (no site-packages at all: nothing installed is importable), the checkout alone on the path."""
+    code = ("import runpy, sys; sys.path.insert(0, sys.argv.pop(1)); "
+            "runpy.run_module('certify_kernel', run_name='__main__', alter_sys=True)")
+    return subprocess.run([sys.executable, "-I", "-S", "-c", code, str(ROOT), *map(str, args)], cwd=ROOT,
+                          capture_output=True, text=True, timeout=300)
+
+
 def test_the_command_in_a_bare_python(files, tmp_path):
-    """python3 -m certify_kernel as a referee runs it: -I (isolated: no site-packages, no user
-    site, no PYTHON* variables), from the repository root; its exit codes and its lines, both with
-    one process and with two."""
+    """The command as a referee runs it, with the standard library alone: its exit codes and its
+    lines, with one process and with two."""
     statements, _, data = files
     path = dump(data, tmp_path / "certificates.json")
     for jobs in ("1", "2"):
-        out = subprocess.run([sys.executable, "-I", "-m", "certify_kernel", str(path), "--statements", str(statements),
-                              "--jobs", jobs], cwd=ROOT, capture_output=True, text=True, timeout=300)
+        out = bare(path, "--statements", statements, "--jobs", jobs)
         assert out.returncode == 0, out.stdout + out.stderr
         assert "Z2: ERRATUM, 2/2 statements verified" in out.stdout and not out.stderr
     entry(data, "Z2")["statements"]["Z2.1"]["verdict"] = "holds"
-    out = subprocess.run([sys.executable, "-I", "-m", "certify_kernel", str(dump(data, path)), "--statements",
-                          str(statements), "--jobs", "2"], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    out = bare(dump(data, path), "--statements", statements, "--jobs", "2")
     assert out.returncode == 1 and "Z2: FAILED: statement Z2.1" in out.stdout and "Traceback" not in out.stderr
-    out = subprocess.run([sys.executable, "-I", "-m", "certify_kernel", str(tmp_path / "none.json")], cwd=ROOT,
-                         capture_output=True, text=True, timeout=300)
+    out = bare(tmp_path / "none.json")
     assert out.returncode == 2 and out.stderr.startswith("error: ") and "Traceback" not in out.stderr
+    out = subprocess.run([sys.executable, "-I", "-S", "-c", "import sympy"], capture_output=True, text=True)
+    assert out.returncode == 1, "a bare Python imports sympy: the test above proves nothing"
 
 
 def test_the_kernel_imports_nothing_but_the_standard_library():
