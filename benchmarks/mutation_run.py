@@ -185,7 +185,7 @@ MUTANTS = [
     Mutant("every branch and fixed point → some branch or fixed point", "kernel", EVAL,
            "return all(_truth_at(body, p, k, s, B, ctx, conds) for k in ks for s in sigmas)",
            "return any(_truth_at(body, p, k, s, B, ctx, conds) for k in ks for s in sigmas)"),
-    Mutant("r < r₀ decided by the sign of r₀'s polynomial (the bug this run found)", "kernel", EVAL,
+    Mutant("r < r₀ decided by the sign of r₀'s polynomial (the fault the tests found)", "kernel", EVAL,
            "g = number(p.r0).compare(value(t[2][j + 1], ctx))", "g = p.sign(conds[(id(t), j, s)], k)"),
     Mutant("changes(): one side compared with itself", "kernel", EVAL,
            "left, right = p.left.sign(c, k), p.right.sign(c, k)", "left, right = p.left.sign(c, k), p.left.sign(c, k)"),
