@@ -68,6 +68,8 @@ def check_statement(s, lets: dict, witnesses=None) -> tuple[bool, str]:
         return False, str(exc)
     except (Syntax, Undefined, ZeroDivisionError) as exc:
         raise ValueError(f"{s.id} ({s.where}): {exc}") from None
+    except (TypeError, AttributeError, IndexError, KeyError, RecursionError) as exc:     # a line, not a traceback
+        raise ValueError(f"{s.id} ({s.where}): the kernel cannot evaluate it ({type(exc).__name__}: {exc})") from None
     want = s.verdict != "refuted"
     if got != want:
         at = f" (at r = {ctx.counterexample})" if not got and getattr(ctx, "counterexample", None) else ""

@@ -150,7 +150,7 @@ def _sgn(x) -> int:
 def _between(a, b) -> Fraction:
     """The simplest rational strictly between two numbers (algebraic, or None for ∓∞)."""
     if a is None:
-        return Fraction(int(number(b).lo) - 1)
+        return Fraction(int(number(b).lo) - 1) if b is not None else Fraction(0)
     if b is None:
         return Fraction(int(number(a).hi) + 1)
     a, b = number(a), number(b)
@@ -208,8 +208,8 @@ def pieces(conds: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False
     """The pieces of the interval: its open cells (a rational sample each) and the cut points
     between them (and its ends when closed), in increasing order, each point knowing the cells
     beside it."""
-    if lo is not None and hi is not None and number(lo).compare(number(hi)) == 0:
-        if not (lo_closed and hi_closed):
+    if lo is not None and hi is not None and number(lo).compare(number(hi)) >= 0:
+        if not (lo_closed and hi_closed) or number(lo).compare(number(hi)) > 0:
             raise Undefined("an empty interval")
         return [Point(number(lo), cell=False)]
     cuts = cut_points(conds, lo, hi)

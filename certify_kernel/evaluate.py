@@ -783,8 +783,8 @@ def conditions(body, B: Binding, ctx: Context) -> dict:
 
 
 def _point_condition(a, b, ctx):
-    """r = r₀ (r₀ an algebraic number): the condition m(r), m r₀'s polynomial (so that r₀ is a cut
-    point); the piece is r₀ itself when its sign is 0 at a point piece holding r₀ (an exact test)."""
+    """r = r₀, r < r₀, ... (r₀ an algebraic number): the condition m(r), m r₀'s polynomial, so that r₀
+    is a cut point; the comparison itself is decided by comparing each piece with r₀ exactly."""
     if a != ("name", "r"):
         return None
     r0 = value(b, ctx)
@@ -931,13 +931,11 @@ def _truth_at(t, p, k, s, B, ctx, conds) -> bool:
                 if not compare(op, RF.const(_atom_at(a, p, ctx, conds)), value(t[2][j + 1], ctx)):
                     return False
                 continue
-            if t[2][j] == ("name", "r") and conds[(id(t), j, s)].cp is None and op in ("=", "≠") and \
-                    isinstance(value(t[2][j + 1], ctx), Algebraic):
-                here = not p.cell and number(p.r0).compare(value(t[2][j + 1], ctx)) == 0
-                if here != (op == "="):
-                    return False
-                continue
-            g = p.sign(conds[(id(t), j, s)], k)
+            if t[2][j] == ("name", "r") and conds[(id(t), j, s)].cp is None and \
+                    isinstance(value(t[2][j + 1], ctx), Algebraic):     # r op r₀: sign(r − r₀), not that of m(r)
+                g = number(p.r0).compare(value(t[2][j + 1], ctx))
+            else:
+                g = p.sign(conds[(id(t), j, s)], k)
             if g is None:
                 return False                     # x is not real: no statement about it holds
             if not {"<": g < 0, ">": g > 0, "≤": g <= 0, "≥": g >= 0, "=": g == 0, "≠": g != 0}.get(op, False):

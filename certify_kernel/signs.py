@@ -161,6 +161,8 @@ def by_inspection(B, body, ctx) -> bool:
     unit = _in_unit(B)
     if B.interval is not None and not unit:
         raise Undefined("over several variables, r ranges in an interval inside [0, 1]")
+    if any(iv.lo_closed or iv.hi_closed for iv in [*B.angles.values(), B.interval] if iv is not None):
+        raise Undefined("over several variables, every variable ranges in an open interval (strict signs)")
     atoms, todo = [], [body]
     while todo:
         t = todo.pop()
