@@ -29,7 +29,10 @@ FORMAT = "certify-certificates/2"
 def load(path: str) -> dict:
     """The certificates file, read as JSON (no code is evaluated)."""
     with open(path, encoding="utf-8") as f:
-        data = json.load(f)
+        try:
+            data = json.load(f)
+        except ValueError as exc:
+            raise ValueError(f"{path}: not JSON ({exc})") from None
     if not isinstance(data, dict) or data.get("format") != FORMAT or not isinstance(data.get("certificates"), list):
         raise ValueError(f"{path}: not a certificates file of format {FORMAT}")
     for c in data["certificates"]:

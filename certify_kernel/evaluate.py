@@ -678,7 +678,7 @@ def bind(binders, ctx: Context) -> Binding:
         elif name == "λ" and how in ("=", "in") and t[0] == "call" and t[1] in ("upper", "middle", "lower",
                                                                                   "roots", "branch"):
             B.cp = two(value(t[2][0], ctx))
-            B.branch = {"upper": 0, "middle": 1, "lower": "last", "roots": "all"}.get(t[1])
+            B.branch = {"upper": 0, "middle": "middle", "lower": "last", "roots": "all"}.get(t[1])
             if t[1] == "branch":
                 B.branch = _integer(value(t[2][1], ctx)) - 1
             if t[1] == "middle" and max(k[1] for k in B.cp) != 3:
@@ -908,8 +908,8 @@ def _branches(p, B: Binding):
     n, deg = p.branches(B.cp), max(k[1] for k in B.cp)
     if B.branch == "all":
         return list(range(n))
-    k = deg - 1 if B.branch == "last" else B.branch
-    if k >= n or B.branch in ("last", 1) and n < deg:
+    k = {"last": deg - 1, "middle": 1}.get(B.branch, B.branch)
+    if k >= n or B.branch in ("last", "middle") and n < deg:
         return False
     return [k]
 

@@ -12,6 +12,7 @@ import re
 
 _TOKEN = re.compile(r"""
     (?P<space>\s+)
+  | (?P<str>"[^"]*")
   | (?P<num>\d+(?:\.\d+)?)
   | (?P<name>[^\W\d]\w*[′']*)
   | (?P<op>implies|iff|and|or|not|forall|mod|in|given|∞|π|≤|≥|≠|≈|∧|·|√|⊆|−|<=|>=|!=|[-+*/^()\[\],:;<>=~{}|])
@@ -103,7 +104,7 @@ class Parser:
                     continue
                 return left
             self.next()
-            right = self.formula(bp - 1 if op == "^" else bp, brackets)     # ^ is right-associative
+            right = self.formula(bp - 1 if op in ("^", "implies") else bp, brackets)   # right-associative
             left = (op if op in ("and", "or", "implies", "iff") else "bin", *((left, right) if op in
                     ("and", "or", "implies", "iff") else (op, left, right)))
         return left
@@ -129,6 +130,8 @@ class Parser:
         kind, tok = self.next()
         if kind == "num":
             return ("num", tok)
+        if kind == "str":
+            return ("str", tok[1:-1])
         if kind == "name":
             if self.peek()[1] == "(":
                 self.next()

@@ -81,6 +81,9 @@ def read(directory: Path | str = DEFAULT) -> Paper:
                                                                             "e_z", "π"}))
     if clash:
         raise FileError(f"{clash[0]} is both defined (let) and a variable or an object of the kernel")
+    certs = [c.id for c in paper.certificates]
+    if len(set(certs)) != len(certs):
+        raise FileError(f"two certificates share the id {sorted(i for i in certs if certs.count(i) > 1)[0]}")
     ids = [s.id for c in paper.certificates for s in c.statements]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
