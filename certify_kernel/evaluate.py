@@ -17,8 +17,8 @@ from fractions import Fraction
 from . import cells
 from .cells import Condition, Undecided
 from .language import parse
-from .poly import bareiss, d_lambda, in_lambda, integer_primitive, interpolate_integers, squarefree
-from .sturm import Algebraic, count
+from .poly import bareiss, d_lambda, in_lambda, interpolate_integers, squarefree
+from .sturm import Algebraic
 from .values import (
     RF,
     VARS,
@@ -447,20 +447,20 @@ def _poly_r(P, name: str = "r") -> list:
     return univariate(P, next(iter(used)) if used else name)
 
 
-def _roots(ctx, P, I=None):
-    p, iv = _poly_r(value(P, ctx)), value(I, ctx) if I is not None else Interval(NEG, POS, False, False)
+def _roots(ctx, P, J=None):
+    p, iv = _poly_r(value(P, ctx)), value(J, ctx) if J is not None else Interval(NEG, POS, False, False)
     return roots_in(p, None if iv.lo == NEG else iv.lo, None if iv.hi == POS else iv.hi, iv.lo_closed, iv.hi_closed)
 
 
-def _root(ctx, P, I=None) -> Algebraic:
-    roots = _roots(ctx, P, I)
+def _root(ctx, P, J=None) -> Algebraic:
+    roots = _roots(ctx, P, J)
     if len(roots) != 1:
         raise Undefined(f"root(): {len(roots)} roots in the interval, not exactly one")
     return roots[0]
 
 
-def _count(ctx, P, I=None) -> RF:
-    return RF.const(len(_roots(ctx, P, I)))
+def _count(ctx, P, J=None) -> RF:
+    return RF.const(len(_roots(ctx, P, J)))
 
 
 def _word_arg(t) -> str:
@@ -763,7 +763,7 @@ def conditions(body, B: Binding, ctx: Context) -> dict:
         elif t[0] == "not":
             walk(t[1])
         elif t[0] == "cmp":
-            for k, (op, a, b) in enumerate(zip(t[1], t[2], t[2][1:])):
+            for k, (_op, a, b) in enumerate(zip(t[1], t[2], t[2][1:])):
                 if a[0] == "call" and a[1] in ATOMS:          # nroots(P) = 3: a count of the piece
                     for j, c in enumerate(ATOMS[a[1]][0](ctx, a[2])):
                         out[(id(a), j)] = c

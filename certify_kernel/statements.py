@@ -17,7 +17,8 @@ DEFAULT = Path(__file__).resolve().parent.parent / "statements"
 
 _HEADER = re.compile(r'^(?P<id>[A-Z]\d+(?:\.\d+)*)\s+(?P<line>l\.\s*[0-9][0-9\-–, ]*?)\s+'
                      r'(?P<verdict>holds|observed|refuted by [A-Z][\w.]*|corrects [A-Z][\w.]*)\s+"(?P<text>.*)"\s*$')
-_CERT = re.compile(r'^certificate\s+(?P<id>[A-Z]\d+(?:\.\d+)?)\s+(?P<line>l\.\s*[0-9][0-9\-–, ]*?)\s+"(?P<title>.*)"\s*$')
+_CERT = re.compile(r'^certificate\s+(?P<id>[A-Z]\d+(?:\.\d+)?)\s+(?P<line>l\.\s*[0-9][0-9\-–, ]*?)\s+'
+                   r'"(?P<title>.*)"\s*$')
 _LET = re.compile(r"^let\s+(?P<name>[^\W\d][\w′']*)\s*=\s*(?P<expr>.+)$")
 
 

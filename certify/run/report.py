@@ -21,8 +21,6 @@ import re
 from pathlib import Path
 from urllib.parse import quote
 
-from certify_kernel.statements import read as read_statements
-
 from certify.run import verification
 from certify.run.files import CHECKOUT, write_atomic
 from certify.run.runner import (
@@ -37,6 +35,7 @@ from certify.run.runner import (
     corrected_statement,
     holds,
 )
+from certify_kernel.statements import read as read_statements
 
 PAPER = ("T. Dolmaire and E. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
          "particles: asymmetric collision sequences and spherical billiard reduction*, "
@@ -459,7 +458,8 @@ def _checks(title: str, checks, shown: set | None = None, kernel=None, cert_id: 
         role = _role(check)
         evidence = [str(e) for e in check.evidence]
         repeated = bool(evidence) and all(e in shown for e in evidence)
-        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(text_of(check))}{role}{_verified(kernel, cert_id, check)}"
+        said = _verified(kernel, cert_id, check)
+        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(text_of(check))}{role}{said}"
                              + (f" {SAME}" if repeated else "")))
         if not repeated:
             items += [_bullet(e if e not in shown else f"{_first_line(e)} {SAME}", indent=2) for e in evidence]
@@ -525,7 +525,8 @@ def certificate_data(cert, outcome) -> dict:
         "proof": {"module": cert.module, "function": getattr(cert.func, "__name__", "")},
         "part": part_of(cert.id),
         "status": outcome.status,
-        **({"erratum": {"kind": outcome.kind, "misprint": misprint_text(outcome)}} if outcome.status == ERRATUM else {}),
+        **({"erratum": {"kind": outcome.kind, "misprint": misprint_text(outcome)}}
+           if outcome.status == ERRATUM else {}),
         **({"agrees": outcome.agrees, "reason": outcome.reason} if outcome.status == OBSERVED else {}),
         "printed": [_check_data(c) for c in outcome.printed],
         "corrected": [_check_data(c) for c in outcome.corrected],

@@ -14,10 +14,9 @@ import json
 from pathlib import Path
 
 import certify_kernel
-from certify_kernel.statements import DEFAULT as STATEMENTS
-
 from certify.run import progress
 from certify.run.files import read_text_or_none, write_atomic
+from certify_kernel.statements import DEFAULT as STATEMENTS
 
 KERNEL = Path(certify_kernel.__file__).resolve().parent
 
