@@ -12,6 +12,7 @@ import re
 
 _TOKEN = re.compile(r"""
     (?P<space>\s+)
+  | (?P<str>"[^"]*")
   | (?P<num>\d+(?:\.\d+)?)
   | (?P<name>[^\W\d]\w*[′']*)
   | (?P<op>implies|iff|and|or|not|forall|mod|in|given|∞|π|≤|≥|≠|≈|∧|·|√|⊆|−|<=|>=|!=|[-+*/^()\[\],:;<>=~{}|])
@@ -129,6 +130,8 @@ class Parser:
         kind, tok = self.next()
         if kind == "num":
             return ("num", tok)
+        if kind == "str":
+            return ("str", tok[1:-1])
         if kind == "name":
             if self.peek()[1] == "(":
                 self.next()
