@@ -44,6 +44,7 @@ the run itself in intervals (:func:`_ball_sign`), else exactly on the division-f
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import cached_property
 from math import ceil
 from math import gcd as igcd
 
@@ -310,15 +311,30 @@ class Candidate:
             q0 = [_neg(det), U]
         self.det, self.q0 = _brem(det, self.cp), [_brem(e, self.cp) for e in q0]
         self.cp_dict = _dict(self.cp)
-        self.run = self.run_of(self.word)
-        if g == 3:
-            (d, c), _, (b, a) = self.run.p[-1]
-            L1, L3 = _lcm(d.d, c.d), _lcm(b.d, a.d)
-            abcd = [_bmul(e.c, [_mul(_exact(L, e.d), L2)]) for e, L, L2 in ((a, L3, L1), (b, L3, L1),
-                                                                           (c, L1, L3), (d, L1, L3))]
-            h = _content(x for P in abcd for x in P)
-            self.abcd, self.scale = [[[y // h for y in x] for x in P] for P in abcd], _mul(L1, L3)
-        self.disc = [f for f, _ in _factors(norm([[i * a for a in c] for i, c in enumerate(self.cp)][1:], self.cp))]
+
+    @cached_property
+    def run(self) -> Run:
+        return self.run_of(self.word)
+
+    @cached_property
+    def position_map(self) -> tuple:
+        """(a, b, c, d) = L1·L3/h·(the coefficients of p_3(t_n) = b + xa, p_1(t_n) = d + xc), over
+        L3 = lcm(δ_a, δ_b), L1 = lcm(δ_c, δ_d), h the content; and L1·L3."""
+        (d, c), _, (b, a) = self.run.p[-1]
+        L1, L3 = _lcm(d.d, c.d), _lcm(b.d, a.d)
+        abcd = [_bmul(e.c, [_mul(_exact(L, e.d), L2)]) for e, L, L2 in ((a, L3, L1), (b, L3, L1), (c, L1, L3),
+                                                                       (d, L1, L3))]
+        h = _content(x for P in abcd for x in P)
+        return [[[y // h for y in x] for x in P] for P in abcd], _mul(L1, L3)
+
+    @property
+    def abcd(self) -> list:
+        return self.position_map[0]
+
+    @cached_property
+    def disc(self) -> list:
+        """The factors of disc cp = Res_Λ(cp, ∂cp/∂Λ) (where two branches meet)."""
+        return [f for f, _ in _factors(norm([[i * a for a in c] for i, c in enumerate(self.cp)][1:], self.cp))]
 
     def run_of(self, word: str) -> Run:
         if word not in self.runs:
@@ -328,7 +344,7 @@ class Candidate:
     def relabel(self, p: Point, k: int):
         """ε: x_s of (a, b, c, d) is x_{εs} of the division-free ones at p on branch k (the signs of
         L1·L3, 1 where it vanishes, and of s_n = Π q̃_i); None where s_n = 0."""
-        e = _sign(p, _cond(self, [self.scale]), k) or 1
+        e = _sign(p, _cond(self, [self.position_map[1]]), k) or 1
         for k_, letter in enumerate(self.word):
             e *= _sign(p, _cond(self, self.run.q[k_][GAP[letter]]), k)
         return e or None
@@ -364,7 +380,7 @@ class Req:
 
     def cond(self, cand, s, affine: bool = False):
         if (s, affine) not in self._conds:
-            abcd = getattr(cand, "abcd", None)
+            abcd = cand.abcd if self.G1 else None
             self._conds[(s, affine)] = _condition(cand, self.G0, self.G1, self.D, s, abcd, affine)
         return self._conds[(s, affine)]
 
@@ -803,14 +819,16 @@ def holds(p: Point, req: Req, cand, k: int, s) -> bool | None:
     if p.cell:
         g = _sign(p, cond, k)
     else:
-        valid = (len(req.D) > 1 or p.r0.sign_of(req.D[0]) != 0) and (not req.G1 or p.r0.sign_of(cand.scale) != 0)
+        valid = (len(req.D) > 1 or p.r0.sign_of(req.D[0]) != 0) and \
+            (not req.G1 or p.r0.sign_of(cand.position_map[1]) != 0)
         g = _enclosed(p, cond, k) if valid else 0
         if g == 0 and valid and req.G1 and _sign(p, _cond(cand, cand.abcd[2]), k) == 0:
             g = _affine(p, cand, k, cand.abcd, lambda: req.cond(cand, s, affine=True), req.G0, req.G1, req.D)
         elif g == 0 and (valid or req.free is None):
             g = _sign(p, cond, k)
         elif g == 0:
-            g = (_ball_sign(p, req, cand, k, s * (p.r0.sign_of(cand.scale) or 1)) if req.kind else 0) or Undecided
+            e = p.r0.sign_of(cand.position_map[1]) or 1
+            g = (_ball_sign(p, req, cand, k, e * s) if req.kind else 0) or Undecided
     if g is Undecided and req.free is not None and not p.cell:
         R = _reduced(cand, p)
         G0, G1, D = req.free(R)
@@ -1142,21 +1160,11 @@ def _next_truth(p, ctx, args, conds):
 
 
 def eigenvector(ctx, w) -> tuple:
-    """q(0) = (-1, u, v) (three particles, symmetric system: (-1, u)): rows 1 and 2 of
-    (M_w - λ) q = 0 by Cramer's rule, the kernel's M_w (l. 366), as rational functions of r, λ."""
-    text = _text(w)
-    system, word = read_word(text)
-    lam = RF.var("λ")
-    if system == "four":
-        from .evaluate import word_matrix
-        M = word_matrix(word)
-        A = [[M.rows[i][j] - (lam if i == j else RF.const(0)) for j in range(3)] for i in range(3)]
-        det = A[0][1] * A[1][2] - A[0][2] * A[1][1]
-        return (RF.const(-1), (A[0][0] * A[1][2] - A[0][2] * A[1][0]) / det,
-                (A[0][1] * A[1][0] - A[0][0] * A[1][1]) / det)
-    cand = candidate(text)                          # M' = 2ⁿM_w: M_w's entries over 2ⁿ
-    m11, m12 = (_rf(El([e], [2 ** len(word)]), 0) for e in cand.M[0])
-    return (RF.const(-1), (m11 - lam) / m12)
+    """q(0) = (-1, u, v) (two gaps: (-1, u)) of the candidate: rows 1 and 2 of (M_w - λ) q = 0 by
+    Cramer's rule (l. 366), as rational functions of r and λ (Λ = 2ⁿλ put back)."""
+    cand = candidate(_text(w))
+    det = _rf(El(cand.det, [1]), len(cand.word))
+    return (RF.const(-1),) + tuple(_rf(El(P, [1]), len(cand.word)) / det for P in cand.q0[1:])
 
 
 def register() -> None:
