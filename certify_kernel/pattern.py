@@ -278,7 +278,8 @@ class Run:
         self.q, self.p = [q], [P]
         for letter in word:
             i, K = GAP[letter], cand.K[letter]
-            t = [_emul(P[i][h], _inverse(q[i], cp), cp) for h in (0, 1)]              # p_i/q̃_i
+            w = _inverse(q[i], cp)
+            t = [_emul(P[i][h], w, cp) for h in (0, 1)]                                # p_i/q̃_i
             P = [tuple(_esub(P[j][h], _emul(t[h], El(q[j], [1]), cp), cp) for h in (0, 1)) for j in range(g)]
             P[i] = (zero, zero)
             q = [_sum([_bmul(q[j], [K[row][j]]) for j in range(g) if K[row][j]]) for row in range(g)]
