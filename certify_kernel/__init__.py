@@ -14,7 +14,10 @@ engine's.  docs/verify.md says how to read the files.
 from __future__ import annotations
 
 import json
+import multiprocessing
+import os
 
+from . import particles, pattern, reduction, substitution  # noqa: F401  (they register their functions and predicates)
 from .evaluate import Context, NotVerified, truth
 from .language import Syntax, parse
 from .statements import Paper, read
@@ -26,7 +29,10 @@ FORMAT = "certify-certificates/2"
 def load(path: str) -> dict:
     """The certificates file, read as JSON (no code is evaluated)."""
     with open(path, encoding="utf-8") as f:
-        data = json.load(f)
+        try:
+            data = json.load(f)
+        except ValueError as exc:
+            raise ValueError(f"{path}: not JSON ({exc})") from None
     if not isinstance(data, dict) or data.get("format") != FORMAT or not isinstance(data.get("certificates"), list):
         raise ValueError(f"{path}: not a certificates file of format {FORMAT}")
     for c in data["certificates"]:
@@ -65,6 +71,8 @@ def check_statement(s, lets: dict, witnesses=None) -> tuple[bool, str]:
         return False, str(exc)
     except (Syntax, Undefined, ZeroDivisionError) as exc:
         raise ValueError(f"{s.id} ({s.where}): {exc}") from None
+    except (TypeError, AttributeError, IndexError, KeyError, RecursionError) as exc:     # a line, not a traceback
+        raise ValueError(f"{s.id} ({s.where}): the kernel cannot evaluate it ({type(exc).__name__}: {exc})") from None
     want = s.verdict != "refuted"
     if got != want:
         at = f" (at r = {ctx.counterexample})" if not got and getattr(ctx, "counterexample", None) else ""
@@ -105,6 +113,44 @@ def verify_certificate(cert, engine: dict | None, lets: dict) -> dict:
     return out
 
 
+_WORK: dict = {}
+
+
+def _one(k: int) -> dict:
+    cert = _WORK["certs"][k]
+    return verify_certificate(cert, _WORK["engine"].get(cert.id), _WORK["lets"])
+
+
+def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None, tick=None) -> list[dict]:
+    """The results of :func:`verify_certificate` for the certificates of the statement files (those
+    named by ``ids``), in their order; on ``jobs`` processes (fork), the heaviest first; ``tick(k,
+    n, id)`` after each (a progress bar)."""
+    prepare(paper)
+    certs = [c for c in paper.certificates if ids is None or c.id in ids]
+    engine = {c["id"]: c for c in data["certificates"]}
+    _WORK.update(certs=certs, engine=engine, lets=paper.lets)
+    order = sorted(range(len(certs)), key=lambda k: -len(json.dumps(engine.get(certs[k].id, ""))))
+    done: dict = {}
+    if jobs > 1 and len(certs) > 1 and hasattr(os, "fork"):
+        with multiprocessing.get_context("fork").Pool(jobs) as pool:
+            for r in pool.imap_unordered(_one, order, chunksize=1):
+                done[next(k for k in order if certs[k].id == r["id"])] = r
+                if tick:
+                    tick(len(done), len(certs), r["id"])
+    else:
+        for k in order:
+            done[k] = _one(k)
+            if tick:
+                tick(len(done), len(certs), certs[k].id)
+    return [done[k] for k in range(len(certs))]
+
+
+def counts(results: list[dict]) -> tuple[int, int]:
+    """(K, N): of the N statements of the PASS and ERRATUM certificates, the K verified."""
+    proved = [r for r in results if r["ok"] and r["status"] in ("PASS", "ERRATUM")]
+    return sum(r["verified"] for r in proved), sum(r["counted"] for r in proved)
+
+
 def line(result: dict) -> str:
     """One line per certificate: its status and how many of its statements the kernel verified."""
     if not result["ok"]:
@@ -117,4 +163,5 @@ def line(result: dict) -> str:
         (f"; not verified: {', '.join(missing)}" if missing else "")
 
 
-__all__ = ["FORMAT", "load", "read", "prepare", "status_of", "check_statement", "verify_certificate", "line"]
+__all__ = ["FORMAT", "load", "read", "prepare", "status_of", "check_statement", "verify_certificate", "verify_all",
+           "counts", "line"]

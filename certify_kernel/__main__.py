@@ -9,22 +9,15 @@ file disagrees with the statement files, 2 on bad input.
 from __future__ import annotations
 
 import argparse
-import multiprocessing
 import os
 import sys
 import time
 
-from . import line, load, prepare, read, verify_certificate
+from . import counts, line, load, read, verify_all
 from .statements import DEFAULT as STATEMENTS
 from .statements import FileError
 
 DEFAULT = os.path.join("reports", "certificates.json")
-_WORK: dict = {}
-
-
-def _one(k: int) -> dict:
-    cert = _WORK["certs"][k]
-    return verify_certificate(cert, _WORK["engine"].get(cert.id), _WORK["lets"])
 
 
 def main(argv=None) -> int:
@@ -46,26 +39,16 @@ def main(argv=None) -> int:
     except (OSError, ValueError, FileError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    prepare(paper)
-    certs = paper.certificates
+    ids = None
     if args.only:
-        wanted = {i.upper() for i in args.only}
-        unknown = wanted - {c.id for c in certs}
+        ids = {i.upper() for i in args.only}
+        unknown = ids - {c.id for c in paper.certificates}
         if unknown:
             print(f"error: no certificate {', '.join(sorted(unknown))} in the statement files", file=sys.stderr)
             return 2
-        certs = [c for c in certs if c.id in wanted]
-    engine = {c["id"]: c for c in data["certificates"]}
-    stray = sorted(set(engine) - {c.id for c in paper.certificates})
-    _WORK.update(certs=certs, engine=engine, lets=paper.lets)
+    stray = sorted({c["id"] for c in data["certificates"]} - {c.id for c in paper.certificates})
     start = time.perf_counter()
-    order = sorted(range(len(certs)), key=lambda k: -len(str(engine.get(certs[k].id, ""))))
-    if args.jobs > 1 and len(certs) > 1 and hasattr(os, "fork"):
-        with multiprocessing.get_context("fork").Pool(args.jobs) as pool:
-            done = dict(zip(order, pool.map(_one, order, chunksize=1)))
-    else:
-        done = {k: _one(k) for k in order}
-    results = [done[k] for k in range(len(certs))]
+    results = verify_all(data, paper, args.jobs, ids)
     for r in results:
         print(line(r))
         if args.verbose:
@@ -74,8 +57,7 @@ def main(argv=None) -> int:
     for i in stray:
         print(f"{i}: FAILED: certificates.json has it, the statement files do not")
     failed = [r["id"] for r in results if not r["ok"]] + stray
-    proved = [r for r in results if r["ok"] and r["status"] in ("PASS", "ERRATUM")]
-    k, n = sum(r["verified"] for r in proved), sum(r["counted"] for r in proved)
+    k, n = counts(results)
     print(f"{len(results)} certificates, {len(failed)} failed ({time.perf_counter() - start:.1f} s); "
           f"{k}/{n} statements verified")
     return 1 if failed else 0

@@ -115,6 +115,11 @@ class Point:
                 self._roots[key] = (cpl, self._at.branches(cpl))
         return len(self._roots[key][1])
 
+    def distinct(self, cp: dict) -> int:
+        """The number of distinct real roots of cp(r₀, λ) (in a cell every root is simple)."""
+        n = self.branches(cp)
+        return n if self.cell else len(self._at.roots(in_lambda(cp))[1])
+
     def sign(self, cond: Condition, k: int | None):
         key = (cond.key, k)
         if key not in self._signs:
@@ -145,7 +150,7 @@ def _sgn(x) -> int:
 def _between(a, b) -> Fraction:
     """The simplest rational strictly between two numbers (algebraic, or None for ∓∞)."""
     if a is None:
-        return Fraction(int(number(b).lo) - 1)
+        return Fraction(int(number(b).lo) - 1) if b is not None else Fraction(0)
     if b is None:
         return Fraction(int(number(a).hi) + 1)
     a, b = number(a), number(b)
@@ -203,8 +208,8 @@ def pieces(conds: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False
     """The pieces of the interval: its open cells (a rational sample each) and the cut points
     between them (and its ends when closed), in increasing order, each point knowing the cells
     beside it."""
-    if lo is not None and hi is not None and number(lo).compare(number(hi)) == 0:
-        if not (lo_closed and hi_closed):
+    if lo is not None and hi is not None and number(lo).compare(number(hi)) >= 0:
+        if not (lo_closed and hi_closed) or number(lo).compare(number(hi)) > 0:
             raise Undefined("an empty interval")
         return [Point(number(lo), cell=False)]
     cuts = cut_points(conds, lo, hi)

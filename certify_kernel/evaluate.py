@@ -17,8 +17,8 @@ from fractions import Fraction
 from . import cells
 from .cells import Condition, Undecided
 from .language import parse
-from .poly import bareiss, d_lambda, in_lambda, integer_primitive, interpolate_integers, squarefree
-from .sturm import Algebraic, count
+from .poly import bareiss, d_lambda, in_lambda, interpolate_integers, squarefree
+from .sturm import Algebraic
 from .values import (
     RF,
     VARS,
@@ -447,20 +447,20 @@ def _poly_r(P, name: str = "r") -> list:
     return univariate(P, next(iter(used)) if used else name)
 
 
-def _roots(ctx, P, I=None):
-    p, iv = _poly_r(value(P, ctx)), value(I, ctx) if I is not None else Interval(NEG, POS, False, False)
+def _roots(ctx, P, J=None):
+    p, iv = _poly_r(value(P, ctx)), value(J, ctx) if J is not None else Interval(NEG, POS, False, False)
     return roots_in(p, None if iv.lo == NEG else iv.lo, None if iv.hi == POS else iv.hi, iv.lo_closed, iv.hi_closed)
 
 
-def _root(ctx, P, I=None) -> Algebraic:
-    roots = _roots(ctx, P, I)
+def _root(ctx, P, J=None) -> Algebraic:
+    roots = _roots(ctx, P, J)
     if len(roots) != 1:
         raise Undefined(f"root(): {len(roots)} roots in the interval, not exactly one")
     return roots[0]
 
 
-def _count(ctx, P, I=None) -> RF:
-    return RF.const(len(_roots(ctx, P, I)))
+def _count(ctx, P, J=None) -> RF:
+    return RF.const(len(_roots(ctx, P, J)))
 
 
 def _word_arg(t) -> str:
@@ -498,6 +498,7 @@ FUNCTIONS = {
     "roots": _roots, "root": _root, "count": _count,
     "cos": _trig("cos"), "sin": _trig("sin"), "tan": _trig("tan"),
     "sup": lambda ctx, S: _sup(ctx, S), "inf": lambda ctx, S: _inf(ctx, S),
+    "deg": lambda ctx, P: RF.const(len(_poly_r(value(P, ctx))) - 1),
     "numerator": lambda ctx, E: RF(value(E, ctx).num),
     "denominator": lambda ctx, E: RF(value(E, ctx).den),
 }
@@ -537,7 +538,12 @@ def truth(t, ctx: Context) -> bool:
         return not divmod_(Q, P)[1]
     if kind == "call" and t[1] in ATOMS:
         raise Undefined(f"{t[1]}() is a property of r: inside forall or {{r in I : ...}}")
+    if kind == "call" and t[1] in PREDICATES:
+        return PREDICATES[t[1]](ctx, *t[2])
     raise Undefined("not a formula")
+
+
+PREDICATES: dict = {}   # name -> truth(ctx, *argument trees): closed properties defined by the kernel's modules
 
 
 def compare(op: str, a, b, b_tree=None) -> bool:
@@ -649,7 +655,8 @@ def _inf(ctx, S):
 
 # --------------------------------------------------------------------- binders
 
-ATOMS: dict = {}        # name -> (conditions(ctx, args) -> [Condition], truth(point, ctx, args) -> bool)
+ATOMS: dict = {}        # name -> (conditions(ctx, args) -> [Condition], value(point, ctx, args, conds)): a truth,
+                        # or a count compared with a number (nroots(P) = 3)
 
 
 class Binding:
@@ -671,7 +678,7 @@ def bind(binders, ctx: Context) -> Binding:
         elif name == "λ" and how in ("=", "in") and t[0] == "call" and t[1] in ("upper", "middle", "lower",
                                                                                   "roots", "branch"):
             B.cp = two(value(t[2][0], ctx))
-            B.branch = {"upper": 0, "middle": 1, "lower": "last", "roots": "all"}.get(t[1])
+            B.branch = {"upper": 0, "middle": "middle", "lower": "last", "roots": "all"}.get(t[1])
             if t[1] == "branch":
                 B.branch = _integer(value(t[2][1], ctx)) - 1
             if t[1] == "middle" and max(k[1] for k in B.cp) != 3:
@@ -756,7 +763,11 @@ def conditions(body, B: Binding, ctx: Context) -> dict:
         elif t[0] == "not":
             walk(t[1])
         elif t[0] == "cmp":
-            for k, (op, a, b) in enumerate(zip(t[1], t[2], t[2][1:])):
+            for k, (_op, a, b) in enumerate(zip(t[1], t[2], t[2][1:])):
+                if a[0] == "call" and a[1] in ATOMS:          # nroots(P) = 3: a count of the piece
+                    for j, c in enumerate(ATOMS[a[1]][0](ctx, a[2])):
+                        out[(id(a), j)] = c
+                    continue
                 for s in B.sigmas or (None,):
                     out[(id(t), k, s)] = _point_condition(a, b, ctx) or atom_condition(a, b, B, ctx, s)
         elif t[0] == "call" and t[1] in ATOMS:
@@ -772,8 +783,8 @@ def conditions(body, B: Binding, ctx: Context) -> dict:
 
 
 def _point_condition(a, b, ctx):
-    """r = r₀ (r₀ an algebraic number): the condition m(r), m r₀'s polynomial (so that r₀ is a cut
-    point); the piece is r₀ itself when its sign is 0 at a point piece holding r₀ (an exact test)."""
+    """r = r₀, r < r₀, ... (r₀ an algebraic number): the condition m(r), m r₀'s polynomial, so that r₀
+    is a cut point; the comparison itself is decided by comparing each piece with r₀ exactly."""
     if a != ("name", "r"):
         return None
     r0 = value(b, ctx)
@@ -897,8 +908,8 @@ def _branches(p, B: Binding):
     n, deg = p.branches(B.cp), max(k[1] for k in B.cp)
     if B.branch == "all":
         return list(range(n))
-    k = deg - 1 if B.branch == "last" else B.branch
-    if k >= n or B.branch in ("last", 1) and n < deg:
+    k = {"last": deg - 1, "middle": 1}.get(B.branch, B.branch)
+    if k >= n or B.branch in ("last", "middle") and n < deg:
         return False
     return [k]
 
@@ -915,13 +926,16 @@ def _truth_at(t, p, k, s, B, ctx, conds) -> bool:
         return not _truth_at(t[1], p, k, s, B, ctx, conds)
     if kind == "cmp":
         for j, op in enumerate(t[1]):
-            if t[2][j] == ("name", "r") and conds[(id(t), j, s)].cp is None and op in ("=", "≠") and \
-                    isinstance(value(t[2][j + 1], ctx), Algebraic):
-                here = not p.cell and number(p.r0).compare(value(t[2][j + 1], ctx)) == 0
-                if here != (op == "="):
+            a = t[2][j]
+            if a[0] == "call" and a[1] in ATOMS:
+                if not compare(op, RF.const(_atom_at(a, p, ctx, conds)), value(t[2][j + 1], ctx)):
                     return False
                 continue
-            g = p.sign(conds[(id(t), j, s)], k)
+            if t[2][j] == ("name", "r") and conds[(id(t), j, s)].cp is None and \
+                    isinstance(value(t[2][j + 1], ctx), Algebraic):     # r op r₀: sign(r − r₀), not that of m(r)
+                g = number(p.r0).compare(value(t[2][j + 1], ctx))
+            else:
+                g = p.sign(conds[(id(t), j, s)], k)
             if g is None:
                 return False                     # x is not real: no statement about it holds
             if not {"<": g < 0, ">": g > 0, "≤": g <= 0, "≥": g >= 0, "=": g == 0, "≠": g != 0}.get(op, False):
@@ -933,13 +947,35 @@ def _truth_at(t, p, k, s, B, ctx, conds) -> bool:
         if p.cell or p.left is None or p.right is None:
             return False
         c = conds[(id(t), 0, s)]
+        if c.cp is not None and k >= min(p.left.branches(c.cp), p.right.branches(c.cp)):
+            return False                         # the branch ends here: it has no sign on one side
         left, right = p.left.sign(c, k), p.right.sign(c, k)
         return left is not None and right is not None and left * right < 0
     if kind == "call" and t[1] in ATOMS:
-        return ATOMS[t[1]][1](p, ctx, t[2], [conds[(id(t), j)] for j in range(len(ATOMS[t[1]][0](ctx, t[2])))])
+        return _atom_at(t, p, ctx, conds)
     raise Undefined("not a formula")
 
 
-from .pattern import register as _pattern  # noqa: E402  (the self-similar candidate's atoms, certify_kernel/pattern.py)
+def _atom_at(t, p, ctx, conds):
+    """The value of an atom (:data:`ATOMS`) at a piece: a truth, or a count that a comparison reads."""
+    mine, j = [], 0
+    while (id(t), j) in conds:
+        mine, j = mine + [conds[(id(t), j)]], j + 1
+    return ATOMS[t[1]][1](p, ctx, t[2], mine)
 
-_pattern()
+
+def _nroots_conditions(ctx, args) -> list:
+    """nroots(P): its cut points are those of P's branches (Res_λ(P, ∂P/∂λ) and lc_λ P, the
+    bounding polynomials of a condition on P's branches that is the constant 1)."""
+    if len(args) != 1:
+        raise Undefined("nroots(P): one polynomial in r and λ")
+    one = {(0, 0): Fraction(1)}
+    return [Condition(two(value(args[0], ctx)), one, one)]
+
+
+def _nroots(p, ctx, args, conds) -> int:
+    """nroots(P) = k: P(r, λ) has k distinct real roots λ at this r (a multiple root counted once)."""
+    return p.distinct(conds[0].cp)
+
+
+ATOMS["nroots"] = (_nroots_conditions, _nroots)

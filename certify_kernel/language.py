@@ -104,7 +104,7 @@ class Parser:
                     continue
                 return left
             self.next()
-            right = self.formula(bp - 1 if op == "^" else bp, brackets)     # ^ is right-associative
+            right = self.formula(bp - 1 if op in ("^", "implies") else bp, brackets)   # right-associative
             left = (op if op in ("and", "or", "implies", "iff") else "bin", *((left, right) if op in
                     ("and", "or", "implies", "iff") else (op, left, right)))
         return left

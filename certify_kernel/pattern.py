@@ -1,6 +1,7 @@
 """The self-similar candidate of a periodic collision word and where it realises the word (l. 265-321,
 441-516; the literature, l. 130-132, 1099-1130), decided exactly: the atoms datum, feasible, stable,
-realises, next and the functions eigenvector, posmap of the statement language (docs/statements.md).
+realises, next and the functions eigenvector, posmap of the statement language (docs/statements.md;
+the atom "datum" is named selfsimilar there).
 
 The candidate.  A word w = c_1 ··· c_n (four particles: a, b, c, the pairs 1-2, 2-3, 3-4; three
 particles: a, b; the symmetric system p_1 = p_3, q_1 = q_3 of l. 132: [ac], b) starts with the
@@ -49,6 +50,7 @@ from math import ceil
 from math import gcd as igcd
 
 from .cells import Condition, Point, Undecided, _between, _OrderKey
+from .evaluate import ATOMS, FUNCTIONS, Matrix, NotVerified, collision, expand_word
 from .poly import gcd as qgcd
 from .poly import integer_primitive, squarefree, value
 from .sturm import Algebraic
@@ -237,7 +239,6 @@ def _sum(items, add=_badd) -> list:
 def read_word(text: str) -> tuple[str, str]:
     """(system, letters) of a word as printed: (ab)^n powers, [ac] the simultaneous collision (letter
     s); a word without c is one of three particles."""
-    from .evaluate import expand_word
     letters = expand_word(text.replace("[ac]", "s"))
     system = "symmetric" if "[ac]" in text else "four" if "c" in letters else "three"
     allowed = {"symmetric": "sb", "four": "abc", "three": "ab"}[system]
@@ -248,7 +249,6 @@ def read_word(text: str) -> tuple[str, str]:
 
 def _matrices(system: str) -> dict:
     """2K for each letter, integer polynomials in r, from the kernel's collision matrices."""
-    from .evaluate import Matrix, collision
     A, B, C = collision(0), collision(1), collision(2)
 
     def ints(K, size):
@@ -541,7 +541,6 @@ def _factors(p: list) -> list:
     if len(p) > 1:
         sq = squarefree([Fraction(a) for a in p])
         if len(sq) - 1 > LARGEST:
-            from .evaluate import NotVerified
             raise NotVerified(f"a cut polynomial of degree {len(sq) - 1} that the witness's factors do not split")
         out.append(([int(a) for a in integer_primitive(sq)], 1 if len(sq) == len(p) else 2))
     return out
@@ -1061,7 +1060,6 @@ def _regions(ctx, text: str, stage: tuple, branches) -> list:
     if key not in _SETS:
         n = len(read_word(text)[1])
         if LONGEST and n > LONGEST:
-            from .evaluate import NotVerified
             raise NotVerified(f"{text} has {n} collisions: beyond the kernel's budget of {LONGEST}")
         cand = candidate(text)
         known = _SETS.get((text, ("feasible", None)))
@@ -1128,7 +1126,6 @@ def _stage_atom(stage: str):
 
 
 def _letters(text: str) -> str:
-    from .evaluate import expand_word
     return expand_word(text.replace("[ac]", "s"))
 
 
@@ -1168,16 +1165,6 @@ def eigenvector(ctx, w) -> tuple:
     return (RF.const(-1),) + tuple(_rf(El(P, [1]), len(cand.word)) / det for P in cand.q0[1:])
 
 
-def register() -> None:
-    """The atoms and functions of the statement language this module adds (docs/statements.md)."""
-    from .evaluate import ATOMS, FUNCTIONS
-    for name in ("datum", "feasible", "stable", "realises"):
-        ATOMS[name] = _stage_atom(name)
-    ATOMS["next"] = (_next_conditions, _next_truth)
-    FUNCTIONS["eigenvector"] = eigenvector
-    FUNCTIONS["posmap"] = posmap
-
-
 def posmap(ctx, w) -> RF:
     """f(x) = p_3(t_n)/p_1(t_n) of the candidate of a four-particle word (l. 270-280), a rational
     function of r, λ and the declared variable x (Λ = 2ⁿλ put back)."""
@@ -1197,3 +1184,10 @@ def _rf(e: El, n: int) -> RF:
     num = {(i, j) + (0,) * (k - 2): Fraction(a * 2 ** (n * j)) for j, c in enumerate(e.c) for i, a in enumerate(c) if a}
     den = {(i,) + (0,) * (k - 1): Fraction(a) for i, a in enumerate(e.d) if a}
     return RF(num, den)
+
+
+for _name, _stage in (("selfsimilar", "datum"), ("feasible", "feasible"), ("stable", "stable"),
+                      ("realises", "realises")):
+    ATOMS[_name] = _stage_atom(_stage)
+ATOMS["next"] = (_next_conditions, _next_truth)
+FUNCTIONS["eigenvector"], FUNCTIONS["posmap"] = eigenvector, posmap

@@ -23,7 +23,7 @@ def hypotheses(B) -> dict:
     hyp: dict = {}
     for name, iv in B.angles.items():
         if iv.angular:
-            lo, hi = (Fraction(0) if iv.lo is None else iv.lo), iv.hi
+            lo, hi = (iv.lo if isinstance(iv.lo, Fraction) else Fraction(0) if _zero(iv.lo) else None), iv.hi
             quadrants = {(Fraction(0), Fraction(1, 2)): (1, 1), (Fraction(1, 2), Fraction(1)): (-1, 1),
                          (Fraction(0), Fraction(1)): (None, 1)}
             if (lo, hi) not in quadrants:
@@ -38,14 +38,36 @@ def hypotheses(B) -> dict:
             hyp[VARS.index(name)] = 1
         elif iv.hi != POS and order(iv.hi, 0) <= 0:
             hyp[VARS.index(name)] = -1
-    if B.interval is not None:
+    if _in_unit(B):
         hyp[VARS.index("r")] = 1
     return hyp
 
 
+def _in_unit(B) -> bool:
+    """r's binder is an interval inside [0, 1]: r > 0 there, and a polynomial in r without root in
+    ]0, 1[ keeps its sign there."""
+    from .evaluate import NEG, POS, order
+    iv = B.interval
+    return iv is not None and iv.lo not in (NEG, POS) and iv.hi not in (NEG, POS) and order(iv.lo, 0) >= 0 \
+        and order(iv.hi, 1) <= 0
+
+
+def _zero(x) -> bool:
+    """The end 0 of an interval of an angle (read as a number, not as a multiple of π)."""
+    from .evaluate import order
+    return x is not None and not isinstance(x, str) and order(x, 0) == 0
+
+
+def _kernel_name(name: str) -> str:
+    """The kernel's name of a witness's variable: the engine writes cos θ as ``cosθ``."""
+    if name not in VARS and name[:3] in ("cos", "sin") and f"{name[:3]} {name[3:]}" in VARS:
+        return f"{name[:3]} {name[3:]}"
+    return name
+
+
 def _terms(data, names: list) -> dict:
     """Witness terms [[coef, [exps]], ...] over ``names`` as a polynomial over VARS."""
-    idx = [VARS.index(n) for n in names]
+    idx = [VARS.index(_kernel_name(n)) for n in names]
     out: dict = {}
     for coef, exps in data:
         key = [0] * len(VARS)
@@ -127,8 +149,8 @@ def sign_by_witness(E: RF, witnesses: list, hyp: dict, r_in_unit: bool) -> int |
             return _part_sign(w["num"], n, names, hyp, r_in_unit) * _part_sign(w["den"], d, names, hyp, r_in_unit)
         except (Undefined, KeyError, TypeError, ValueError):
             continue
-    form = _form_sign(reduce_circles(E.num, CIRCLES), hyp) * _form_sign(reduce_circles(E.den, CIRCLES), hyp)
-    return form or None
+    form = [_form_sign(p, hyp) or _form_sign(reduce_circles(p, CIRCLES), hyp) for p in (E.num, E.den)]
+    return form[0] * form[1] or None
 
 
 def by_inspection(B, body, ctx) -> bool:
@@ -136,7 +158,11 @@ def by_inspection(B, body, ctx) -> bool:
     identities E = F), each sign shown by a witness (or by E's own terms)."""
     from .evaluate import NotVerified, arith, value
     hyp = hypotheses(B)
-    unit = B.interval is not None
+    unit = _in_unit(B)
+    if B.interval is not None and not unit:
+        raise Undefined("over several variables, r ranges in an interval inside [0, 1]")
+    if any(iv.lo_closed or iv.hi_closed for iv in [*B.angles.values(), B.interval] if iv is not None):
+        raise Undefined("over several variables, every variable ranges in an open interval (strict signs)")
     atoms, todo = [], [body]
     while todo:
         t = todo.pop()

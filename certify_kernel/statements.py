@@ -17,7 +17,8 @@ DEFAULT = Path(__file__).resolve().parent.parent / "statements"
 
 _HEADER = re.compile(r'^(?P<id>[A-Z]\d+(?:\.\d+)*)\s+(?P<line>l\.\s*[0-9][0-9\-–, ]*?)\s+'
                      r'(?P<verdict>holds|observed|refuted by [A-Z][\w.]*|corrects [A-Z][\w.]*)\s+"(?P<text>.*)"\s*$')
-_CERT = re.compile(r'^certificate\s+(?P<id>[A-Z]\d+(?:\.\d+)?)\s+(?P<line>l\.\s*[0-9][0-9\-–, ]*?)\s+"(?P<title>.*)"\s*$')
+_CERT = re.compile(r'^certificate\s+(?P<id>[A-Z]\d+(?:\.\d+)?)\s+(?P<line>l\.\s*[0-9][0-9\-–, ]*?)\s+'
+                   r'"(?P<title>.*)"\s*$')
 _LET = re.compile(r"^let\s+(?P<name>[^\W\d][\w′']*)\s*=\s*(?P<expr>.+)$")
 
 
@@ -77,6 +78,13 @@ def read(directory: Path | str = DEFAULT) -> Paper:
         raise FileError(f"no statement files (*.txt) in {directory}")
     for path in files:
         _read_file(path, paper)
+    clash = sorted(set(paper.lets) & (set(paper.vars) | set(paper.angles) | {"r", "λ", "A", "B", "C", "I", "e_x", "e_y",
+                                                                            "e_z", "π"}))
+    if clash:
+        raise FileError(f"{clash[0]} is both defined (let) and a variable or an object of the kernel")
+    certs = [c.id for c in paper.certificates]
+    if len(set(certs)) != len(certs):
+        raise FileError(f"two certificates share the id {sorted(i for i in certs if certs.count(i) > 1)[0]}")
     ids = [s.id for c in paper.certificates for s in c.statements]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:

@@ -84,12 +84,12 @@ def law(letter: str) -> tuple[sp.Matrix, list]:
 def collision_law_gives_A_B_C(A, B, C):
     """Derive q' = K q from momentum conservation and restitution, compare with the print."""
     checks = []
-    for letter, text in zip(LETTERS, (A, B, C)):
+    for k, (letter, text) in enumerate(zip(LETTERS, (A, B, C))):
         K, decided = law(letter)
         same = same_matrix(K, matrix(text))
         checks.append(Check(f"the law for a collision of type {letter} gives the printed {letter.upper()}",
                             same, [f"derived: `{show(K.tolist())}`"],
-                            obligations=identity_facts(*decided, (same, K, matrix(text)))))
+                            obligations=identity_facts(*decided, (same, K, matrix(text))), ref=f"M1.{k + 1}"))
     same = [(same_matrix(law_matrix(k), collision_matrix(k)), law_matrix(k), collision_matrix(k)) for k in LETTERS]
     checks.append(Check("the engine's collision matrices are the ones the law gives", all(h for h, _, _ in same),
                         counts=False, obligations=identity_facts(*same)))
@@ -112,7 +112,7 @@ def a_and_c_commute(A, B, C, equality):
     facts = identity_facts((same, [K[letter] for letter in eq.lhs] or [sp.eye(3)],
                             [K[letter] for letter in eq.rhs] or [sp.eye(3)]))
     return conclude([Check(f"{equality} identically in r", same == eq.equal,
-                           [f"{eq.lhs} - {eq.rhs} = `{show(diff.tolist())}`"], obligations=facts)])
+                           [f"{eq.lhs} - {eq.rhs} = `{show(diff.tolist())}`"], obligations=facts, ref="M2.1")])
 
 
 Q_I = sp.Symbol("q_i")
@@ -139,6 +139,7 @@ def collisions_separate(A, B, C, approaching, separating):
     for letter, text in zip(LETTERS, (A, B, C)):
         K, i = matrix(text), INDEX[letter]
         row = K.row(i).applyfunc(sp.expand)
+        ref = f"M3.{i + 1}"
         expected = sp.Matrix([[-r if k == i else 0 for k in range(3)]])
         checks.append(Check(f"after {letter}: q_{i + 1}' = -r q_{i + 1}, so {approaching} before the collision gives "
                             f"{separating} after it (0 < r < 1)", row == expected and turns,
@@ -146,7 +147,11 @@ def collisions_separate(A, B, C, approaching, separating):
                              f"signs of q_i allowed before: {', '.join('+' if s > 0 else '−' for s in allowed)}; "
                              "the sign after (−sign) separating: "
                              + ", ".join("yes" if after.holds({Q_I: -s}) else "no" for s in allowed)],
-                            obligations=take(reading) + identity_facts((row == expected, row, expected))))
+                            obligations=take(reading) + identity_facts((row == expected, row, expected)), ref=ref))
+    checks.append(Check("therefore the particles cannot cross each other: the order x_1 ≤ x_2 ≤ x_3 ≤ x_4 holds for "
+                        "all times (by induction over the collisions: between two collisions p is affine in t, a gap "
+                        "closes only at a collision and reopens after it, by the three rows above)",
+                        all(c.holds for c in checks), ref="M3.4"))
     return conclude(checks)
 
 
@@ -173,7 +178,7 @@ def scaling_invariance(A, B, C, time_factor):
                  ((K * (be * q) - be * (K * q)).applyfunc(sp.expand) == sp.zeros(3, 1), K * (be * q), be * (K * q))]
         ok = all(holds for holds, _, _ in parts)
         checks.append(Check(f"collision {letter}: time ×α/β, p(t) ×α, K q ×β", ok,
-                            obligations=identity_facts(*parts)))
+                            obligations=identity_facts(*parts), ref=f"M4.{i + 1}"))
     runs = scaled_runs_agree(sp.sympify(time_factor, locals={"alpha": al, "beta": be}), al, be)
     return conclude(checks, evidence=[f"Supporting evidence, not proof: {runs.statement}: "
                                       f"{'yes' if runs.holds else 'NO'}, {runs.evidence[0]}."])

@@ -93,9 +93,9 @@ from certify.run import (
     fact_ids,
     for_a_run,
     gathered,
-    named,
     identity_facts,
     identity_modulo_facts,
+    named,
     overridden,
     product_fact,
     quantity,
@@ -246,7 +246,7 @@ def matrix_of_ababcb(M, M_text):
                                 obligations=product_fact(ok, word, printed, 3 * i + j), ref=f"T1.{3 * i + j + 1}"))
     same = direct == computed
     checks.append(Check("word_matrix('ababcb') is the product BCBABA", same,
-                        obligations=product_fact(same, word, M)))
+                        obligations=product_fact(same, word, M), ref="T1.10"))
     return conclude(checks, note="l. 259 has an unbalanced parenthesis, `(r^3 - r^2 + 7r + 9))/32`; read without it.")
 
 
@@ -263,7 +263,7 @@ def characteristic_polynomial_of_M(cp, cp_text):
     ok = diff == 0
     return conclude([Check("det(λI - M) - printed cp = 0", ok, [f"det(λI - M) = `{show(sp.collect(cp, lam))}`"],
                            obligations=determinant_fact(ok, lam * sp.eye(3) - sp.Matrix(parse(M_PRINTED)),
-                                                        parse(cp_text)))])
+                                                        parse(cp_text)), ref="T2.1")])
 
 
 @certificate("T3", "l. 340", "det M = r^6 > 0, hence a positive real eigenvalue for every r in ]0,1[.",
@@ -288,11 +288,12 @@ def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
         signs = sign.range.signs(ivs)
     signs_det = take(reading) + determinant_fact(True, M, det) + sign_intervals_facts(to_fmpq_poly(det), ivs)
     return conclude([
-        Check(f"det M = {det_text}", as_printed, [f"det M = `{show(det)}`"], obligations=printed_det),
+        Check(f"det M = {det_text}", as_printed, [f"det M = `{show(det)}`"], obligations=printed_det, ref="T3.1"),
         Check(f"det M is {det_sign} on ]0,1[", sign.relation.holds_on(DET, signs),
-              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"], obligations=signs_det),
+              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"], obligations=signs_det,
+              ref="T3.2"),
         Check("the largest real eigenvalue is positive on all of ]0,1[", T.holds(UPPER, 1),
-              ["sign of λ per branch:\n\n" + T.markdown()]),
+              ["sign of λ per branch:\n\n" + T.markdown()], ref="T3.3"),
     ], evidence=["the paper's argument (l. 340): cp(0) = det(-M) = -det M < 0 and cp(λ) → +∞ as λ → +∞, so cp has a "
                  "root λ > 0; cp(0) = -det M holds for every 3×3 matrix, so it is no check"])
 
@@ -312,13 +313,13 @@ def cardano(cp):
 
 
 @certificate("T4", "l. 340-349", "Δ_cp = -(1/1811939328)(r-1)^4(r+1)^6(3r^2-14r+3)^2 P0(r), and three real "
-             "roots iff Δ_cp < 0.", needs=["cp"], printed=dict(delta_text=DELTA_PRINTED, P0_text=P0_PRINTED,
+             "roots iff Δ_cp < 0.", needs=["cp", "spectrum"], printed=dict(delta_text=DELTA_PRINTED, P0_text=P0_PRINTED,
                                                              three_real_when="Δ_cp < 0"),
              expect=PASS,
              mutants=[replaced("three_real_when", "<", ">", "the direction of the condition"),
                       reworded("three_real_when", "<", "≤", "Δ_cp = 0 is a double root, not three"),
                       unread("three_real_when", "Δ_cp << 0", "not a relation")])
-def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
+def discriminant_of_cp(cp, spectrum, delta_text, P0_text, three_real_when):
     """The printed Δ_cp is -Disc_λ(cp)/108 = (q/2)² + (p/3)³ (Cardano's form for the
     depressed cubic), not the discriminant itself; with that normalisation, three
     distinct real eigenvalues iff Δ_cp < 0 (Disc > 0).  The printed condition is read
@@ -332,16 +333,40 @@ def discriminant_of_cp(cp, delta_text, P0_text, three_real_when):
     condition = statements.relation(three_real_when, {"Δ_cp": DELTA})
     three_real = {s: constant and int(sp.sign(ratio)) * s > 0 for s in (-1, 0, 1)}   # Disc = ratio·Δ_cp > 0
     flint_same = same_up_to_constant(discriminant_lambda(cp), to_fmpz_poly(delta))
+    # on ]0,1[: the number of real eigenvalues per cell of the spectrum (cut at the roots of Disc_λ(cp),
+    # where Δ_cp keeps its sign) against the sign of Δ_cp at the cell's sample; at the zeros of Δ_cp
+    # (critical values of the table) the eigenvalues with multiplicity (a double one and a simple one: 3)
+    T = spectrum.table("λ", lam, 0, 1)
+    dpoly = flint.fmpq_poly(to_fmpq_poly(delta))
+    sign_at = {c.sample: int(dpoly(c.sample) > 0) - int(dpoly(c.sample) < 0) for c in T.cells}
+    zeros = [b_ for _a, b_, _s in sign_intervals(dpoly, 0, 1)[:-1]]
+    at_zeros = [next((k for k, rc in enumerate(T.critical) if rc == z), None) for z in zeros]
+    double = bool(zeros) and all(k is not None and T.points[k] is not None and len(T.points[k]) == 3 for k in at_zeros)
+    # the sign of Δ_cp changes only where P0's does (l. 349: the other factors have even powers)
+    p0_ivs = sign_intervals(flint.fmpq_poly(to_fmpq_poly(parse(P0_text))), 0, 1)
+    d_ivs = sign_intervals(dpoly, 0, 1)
+    d_changes = [b_ for (_a, b_, s1), (_a2, _b2, s2) in zip(d_ivs, d_ivs[1:]) if s1 != s2]
+    p0_changes = [b_ for (_a, b_, s1), (_a2, _b2, s2) in zip(p0_ivs, p0_ivs[1:]) if s1 != s2]
     return conclude([
         Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
-              obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional")),
-        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention)", card_same,
-              obligations=identity_facts((card_same, card, delta))),
+              obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional"), ref="T4.1"),
+        Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention), Disc_λ(cp) = −108·Δ_cp",
+              card_same and ratio == -108, obligations=identity_facts((card_same, card, delta)), ref="T4.2"),
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
               [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
                + ", ".join("yes" if three_real[s] else "no" for s in (-1, 0, 1)) + "; the printed condition "
-               + ", ".join("yes" if condition.holds({DELTA: s}) else "no" for s in (-1, 0, 1))]),
+               + ", ".join("yes" if condition.holds({DELTA: s}) else "no" for s in (-1, 0, 1))], ref="T4.3"),
+        Check("on ]0,1[: three real eigenvalues on every cell where Δ_cp < 0",
+              all(len(c.branches) == 3 for c in T.cells if sign_at[c.sample] < 0), ref="T4.3"),
+        Check("on ]0,1[: where Δ_cp = 0, a double eigenvalue and a simple one (two distinct real eigenvalues)",
+              double, [f"zeros of Δ_cp in ]0,1[: {', '.join(z.describe() for z in zeros)}"], ref="T4.4"),
+        Check("on ]0,1[: one real eigenvalue on every cell where Δ_cp > 0",
+              all(len(c.branches) == 1 for c in T.cells if sign_at[c.sample] > 0), ref="T4.5"),
+        Check("the sign of Δ_cp changes only where P0 changes sign (the other factors have even powers), on ]0,1[",
+              all(any(z == w for w in p0_changes) for z in d_changes),
+              [f"Δ_cp changes sign at {', '.join(z.describe() for z in d_changes)}; P0 at "
+               f"{', '.join(z.describe() for z in p0_changes)}"], ref="T4.6"),
         Check("flint's Disc_λ(cp) has the same factors", flint_same,
               obligations=resultant_fact(flint_same, cp, "d/dλ", delta, "proportional")),
     ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "
@@ -387,11 +412,12 @@ def sign_of_delta(delta_text, P0_text, r0, below, above):
         st = statements.statement(text, {"Δ_cp": DELTA, "r*": rs})
         signs = st.range.signs(ivs)
         checks.append(Check(text, st.relation.holds_on(DELTA, signs),
-                            [f"signs of Δ_cp for {st.range}: {sign_word(signs)}"] + evidence))
+                            [f"signs of Δ_cp for {st.range}: {sign_word(signs)}"] + evidence,
+                            ref=f"T6.{len(checks) + 1}"))
         evidence = []
     return conclude(checks + [
         Check("in ]0,1[, Δ_cp vanishes only at r* and (7-2√10)/3", len(zeros) == 2 and zeros[0] == rs and zeros[1] == rz,
-              [f"zeros: {', '.join(z.describe() for z in zeros)}"]),
+              [f"zeros: {', '.join(z.describe() for z in zeros)}"], ref="T6.3"),
     ])
 
 
@@ -408,16 +434,17 @@ def repeated_eigenvalue(spectrum, quadratic, r0, digits, repeated):
     root is the double eigenvalue, whose sign is certified by ball arithmetic."""
     roots, nf = roots_in_unit_interval(quadratic)
     rz = Algebraic.surd(*r0)
-    checks = [count_check(quadratic, roots, nf, 1),
-              Check("the root is (7-2√10)/3", bool(roots) and roots[0] == rz)]
+    checks = [named("T7.1", count_check(quadratic, roots, nf, 1)),
+              Check("the root is (7-2√10)/3", bool(roots) and roots[0] == rz, ref="T7.2")]
     if roots:
-        checks.append(digits_check("(7-2√10)/3", roots[0], digits))
+        checks.append(named("T7.3", digits_check("(7-2√10)/3", roots[0], digits)))
         signs = spectrum.sign_at_point(Condition.of("λ", lam), roots[0])
         double = signs is not None and len(signs) == 3 and signs[1] == signs[2]
         sign = statements.relation(repeated, {"λ₀": DOUBLE}, subject="λ₀")
         checks.append(Check(f"there is a double eigenvalue λ₀ at r0, and it is {repeated}",
                             double and sign.holds_on(DOUBLE, {signs[1]}),
-                            [f"signs of the eigenvalues at r0, largest first (the double one listed twice): {signs}"]))
+                            [f"signs of the eigenvalues at r0, largest first (the double one listed twice): {signs}"],
+                            ref="T7.4"))
     return conclude(checks)
 
 
@@ -448,17 +475,18 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
     return conclude([
         Check("three distinct real eigenvalues exactly on ]0, r*[ (one real eigenvalue on ]r*, 1[ but a double "
               "one at (7-2√10)/3)", three and T.critical[0] == rs, ["number of real eigenvalues and sign of λ per cell:\n\n"
-                                                                     + T.markdown()]),
+                                                                     + T.markdown()], ref="T8.1"),
         Check("the upper branch exists on all of ]0,1[", all(len(c.branches) >= 1 for c in T.cells)
               and all(p is not None and len(p) >= 1 for p in T.points),
               ["true of every real cubic (odd degree): the check is that the table isolates it in every cell and at "
-               "every critical value"]),
+               "every critical value"], ref="T8.2"),
         Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
-                                                                             f"r* is {rs.describe()}"]),
+                                                                             f"r* is {rs.describe()}"], ref="T8.3"),
         Check(f"all three eigenvalues: {positive}", all_three,
-              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)], obligations=take(facts_three)),
+              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)], obligations=take(facts_three),
+              ref="T8.4"),
         Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
-              "(all positive there, ordered)", pos_rstar, obligations=take(facts_rstar)),
+              "(all positive there, ordered)", pos_rstar, obligations=take(facts_rstar), ref="T8.5"),
     ], figures=figs)
 
 
@@ -475,12 +503,12 @@ def eigenvector_components(M, U, V):
     third = reduce_mod(res[2], cpM)
     return conclude([
         Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0,
-              obligations=identity_facts((res[0] == 0, (M * q0)[0], lam * q0[0]))),
+              obligations=identity_facts((res[0] == 0, (M * q0)[0], lam * q0[0])), ref="T9.1"),
         Check("second component vanishes identically", res[1] == 0,
-              obligations=identity_facts((res[1] == 0, (M * q0)[1], lam * q0[1]))),
+              obligations=identity_facts((res[1] == 0, (M * q0)[1], lam * q0[1])), ref="T9.2"),
         Check("and the third vanishes modulo cp(M): q(0) is an eigenvector", third == 0,
               [f"third component reduced modulo cp: `{show(third)}`"],
-              obligations=identity_modulo_facts(cpM, (third == 0, (M * q0)[2], lam * q0[2]))),
+              obligations=identity_modulo_facts(cpM, (third == 0, (M * q0)[2], lam * q0[2])), ref="T9.3"),
     ])
 
 
@@ -508,9 +536,14 @@ def position_map_of_ababcb(candidate, a, b, c, d):
     factor = ratio.as_expr() if constant else sp.cancel(P[2].as_expr() / comp[2].as_expr())
     p1 = steps[-1].position(0)
     scaled = (P[2] == to_field(factor) * comp[2], P[2].as_expr(), factor * comp[2].as_expr())
+    pa, pb, pc, pd = (parse(e) for e in (a, b, c, d))          # x± as printed at l. 384 (s = √Δ)
+    s_ = sp.Symbol("s")
+    xs = (pa - pd + s_) / (2 * pc)
+    fixed_points_ok = (sp.cancel((pa * x + pb) / (pc * x + pd) - x + (pc * x ** 2 + (pd - pa) * x - pb) / (pc * x + pd)) == 0
+                       and sp.cancel(pc * xs ** 2 + (pd - pa) * xs - pb - (s_ ** 2 - ((pa - pd) ** 2 + 4 * pb * pc)) / (4 * pc)) == 0)
     return conclude([
         Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", p1 != 0,
-              obligations=identity_facts((p1 == 0, p1.as_expr(), sp.Integer(0)))),
+              obligations=identity_facts((p1 == 0, p1.as_expr(), sp.Integer(0))), ref="T10.1"),
         Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
@@ -519,7 +552,10 @@ def position_map_of_ababcb(candidate, a, b, c, d):
               obligations=identity_modulo_facts(cp, *[(minors[f"{names[i]}{names[j]}"] == 0,
                                                        P[i].as_expr() * comp[j].as_expr(),
                                                        P[j].as_expr() * comp[i].as_expr())
-                                                      for i in range(4) for j in range(i + 1, 4)])),
+                                                      for i in range(4) for j in range(i + 1, 4)]), ref="T10.2"),
+        Check("any fixed point of f is x± = (a-d ± √((a-d)^2+4bc))/(2c): f(x) - x = -(cx^2 + (d-a)x - b)/(cx+d), and "
+              "(a-d ± s)/(2c) is a root of cx^2 + (d-a)x - b exactly when s^2 = (a-d)^2+4bc", fixed_points_ok,
+              ref="T10.3"),
         Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
               "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
               bool(factor.is_Rational) and factor < 0 and scaled[0], obligations=identity_facts(scaled)),
@@ -536,16 +572,31 @@ def expansion_of_a_minus_d(a, d, amd):
     """a - d from the printed a and d, expanded, against the printed expansion."""
     diff = sp.expand(parse(a) - parse(d) - parse(amd))
     return conclude([Check("(a) - (d) - (printed a-d) = 0", diff == 0, [f"difference: `{show(diff)}`"],
-                           obligations=identity_facts((diff == 0, parse(a) - parse(d), parse(amd))))])
+                           obligations=identity_facts((diff == 0, parse(a) - parse(d), parse(amd))), ref="T11.1")])
 
 
 
-@certificate("T12", "l. 393-400", "Gröbner basis of {a-d, cp(M)}, lex λ>r, gives r^6(r-1)^4(r+1)^4(r^2-10r+1)P1(r).",
-             needs=["cp"], printed=dict(amd=AMD_PRINTED, P1_text=P1_PRINTED),
+@certificate("T12", "l. 393-401", "Gröbner basis of {a-d, cp(M)}, lex λ>r, gives r^6(r-1)^4(r+1)^4(r^2-10r+1)P1(r).",
+             needs=["cp"], printed=dict(amd=AMD_PRINTED, P1_text=P1_PRINTED, r1=R1_PRINTED, r1_digits="0.10102"),
              expect=PASS,
-             mutants=[replaced("P1_text", "35", "36", "a coefficient of P1")])
-def eliminant_of_a_minus_d(cp, amd, P1_text):
-    return conclude(eliminant_check("a-d", parse(amd), cp, f"r^6*(r-1)^4*(r+1)^4*(r^2-10*r+1)*({P1_text})"))
+             mutants=[replaced("P1_text", "35", "36", "a coefficient of P1"),
+                      overridden({"r1_digits": "0.10103"}, "a digit of r1")])
+def eliminant_of_a_minus_d(cp, amd, P1_text, r1, r1_digits):
+    """The eliminant both ways (l. 392-400), and its roots in ]0,1[: r1 = 5-2√6, the root of r^2-10r+1,
+    and those of P1 (l. 401)."""
+    product = to_fmpz_poly(parse(f"r^6*(r-1)^4*(r+1)^4*(r^2-10*r+1)*({P1_text})"))
+    quad = to_fmpz_poly(parse("r^2-10*r+1"))
+    inside = Algebraic.roots(product, 0, 1)
+    wanted = Algebraic.roots(quad * to_fmpz_poly(parse(P1_text)), 0, 1)
+    rr1, quad_roots = r1_of(r1), Algebraic.roots(quad, 0, 1)
+    checks = eliminant_check("a-d", parse(amd), cp, f"r^6*(r-1)^4*(r+1)^4*(r^2-10*r+1)*({P1_text})")
+    checks[0].ref = "T12.1"
+    checks += [Check("the printed polynomial has roots in ]0,1[ at r1 := 5-2√6 (the root of r^2-10r+1) and at the "
+                     "roots of P1", len(inside) == len(wanted) and all(x_ == y_ for x_, y_ in zip(inside, wanted))
+                     and len(quad_roots) == 1 and quad_roots[0] == rr1,
+                     [f"roots in ]0,1[: {', '.join(z.describe() for z in inside)}"], ref="T12.2"),
+               named("T12.2", digits_check("r1 = 5-2√6", rr1, r1_digits))]
+    return conclude(checks)
 
 
 @certificate("T13", "l. 401", "P1 has exactly three real roots, exactly one in ]0,1[, r2 ≈ 0.13145.",
@@ -561,11 +612,13 @@ def roots_of_P1(P1_text, real, inside, digits):
     checks = [Check(f"P1 has exactly {real} real roots (Sturm and python-flint)",
                     n_sturm == real and n_flint == real and len(all_roots) == real,
                     [f"Sturm {n_sturm}, python-flint {n_flint}; "
-                                                                  + "; ".join(a.describe() for a in all_roots)]),
-              count_check("P1", roots, nf, inside),
-              Check("the others are ≤ 0 and ≥ 1", len(all_roots) == 3 and all_roots[0] <= 0 and all_roots[2] >= 1)]
+                                                                  + "; ".join(a.describe() for a in all_roots)],
+                    ref="T13.1"),
+              named("T13.2", count_check("P1", roots, nf, inside)),
+              Check("the others are ≤ 0 and ≥ 1", len(all_roots) == 3 and all_roots[0] <= 0 and all_roots[2] >= 1,
+                    ref="T13.3")]
     if roots:
-        checks.append(digits_check("r2", roots[0], digits))
+        checks.append(named("T13.4", digits_check("r2", roots[0], digits)))
     return conclude(checks)
 
 
@@ -587,10 +640,12 @@ def sign_of_a_minus_d(spectrum, amd, r1, P1_text, at_r1, at_r2):
     fig = sign_chart(spectrum, T, "sign_a_minus_d.png", "certified sign of a − d on the branches of M",
                      marks={"5-2√6": rr1, "r2": rr2})
     return conclude([
-        Check(f"a-d changes sign at r1 on the {at_r1} branch", T.changes_at(k1, rr1), ["sign table of a-d:\n\n" + T.markdown()]),
-        Check(f"a-d changes sign at r2 on the {at_r2} branch", T.changes_at(k2, rr2)),
+        Check(f"a-d changes sign at r1 on the {at_r1} branch", T.changes_at(k1, rr1), ["sign table of a-d:\n\n" + T.markdown()],
+              ref="T14.1"),
+        Check(f"a-d changes sign at r2 on the {at_r2} branch", T.changes_at(k2, rr2), ref="T14.2"),
         Check("and nowhere else on any branch (other critical values keep every sign)",
-              all(T.keeps_sign_at(k, pt) for pt in T.critical for k in range(3) if (pt, k) not in ((rr1, k1), (rr2, k2)))),
+              all(T.keeps_sign_at(k, pt) for pt in T.critical for k in range(3) if (pt, k) not in ((rr1, k1), (rr2, k2))),
+              ref="T14.3"),
     ], figures=[fig])
 
 
@@ -610,11 +665,14 @@ def sign_of_b(cp, spectrum, b, quartic, r1):
     T = spectrum.table("b", parse(b), 0, 1)
     fig = sign_chart(spectrum, T, "sign_b.png", "certified sign of b on the branches of M", marks={"5-2√6": rr1})
     checks = eliminant_check("b", parse(b), cp, f"r^6*(r-1)^4*(r+1)^4*(r^2-10*r+1)*({quartic})")
+    checks[0].ref = "T15.1"
     checks += [
         Check("the quartic has no real root (Sturm and python-flint)",
-              sturm_count(Q4) == 0 and len(flint_real_roots(Q4)) == 0),
-        Check("b changes sign at 5-2√6 on one of the two lower branches (the middle one) and not on the upper one",
-              T.changes_at(MIDDLE, rr1) and T.keeps_sign_at(UPPER, rr1), ["sign table of b:\n\n" + T.markdown()]),
+              sturm_count(Q4) == 0 and len(flint_real_roots(Q4)) == 0, ref="T15.2"),
+        Check("b changes sign at 5-2√6 on one of the two lower branches (the middle one), not on the lowest one nor on "
+              "the upper one", T.changes_at(MIDDLE, rr1) and T.keeps_sign_at(LOWER, rr1) and T.keeps_sign_at(UPPER, rr1),
+              ["sign table of b:\n\n" + T.markdown()],
+              ref="T15.3"),
     ]
     return conclude(checks, figures=[fig], note="Precisely: b changes sign at 5-2√6 on the middle branch only; "
                                                 "on the lower branch b keeps its sign there.")
@@ -658,13 +716,14 @@ def sign_of_c(c, below, above):
         return Check(text, st.relation.holds_on(C_SIGN, signs), [f"signs of c for {st.range}: {sign_word(signs)}",
                                                                  *evidence], obligations=take(reading) + signs_c)
     printed = [Check("c/λ = (r^2-10r+1)·(positive on ]0,1[), so sign c = sign(r^2-10r+1) when λ > 0", ratio_pos,
-                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"], obligations=factored),
-               half(below),
-               half(above, [f"sign of c/λ on ]{a.short()}, {b_.short()}[: {'+' if sg > 0 else '−'}" for a, b_, sg in ivs])]
+                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"], obligations=factored, ref="T16.1"),
+               named("T16.2", half(below)),
+               named("T16.3", half(above, [f"sign of c/λ on ]{a.short()}, {b_.short()}[: {'+' if sg > 0 else '−'}"
+                                           for a, b_, sg in ivs]))]
     fixed = statements.corrected(above, *T16_CORRECTION)
     correction = half(fixed) if fixed else Check(f"the stated correction {' → '.join(T16_CORRECTION)} applies to "
                                                  f"the printed `{above}`", False)
-    correction.corrects = printed[2]
+    correction.corrects, correction.ref = printed[2], "T16.4"
     return conclude(printed, [correction, printed[0], printed[1]], kind=MISPRINT,
                     misprint="l. 433: c > 0 printed for c < 0 (r > 5-2√6)")
 
@@ -722,41 +781,54 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
     amd, bb, cc = (spectrum.table(n, g, 0, 1) for n, g in (("a-d", parse(a) - parse(d)), ("b", parse(b)), ("c", parse(c))))
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     D = spectrum.table("Δ", fp.delta, 0, 1)
+    r0 = Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10)
     with gathered() as facts_r2:
         at_r2 = spectrum.sign_at_point(Condition.of("Δ", fp.delta), rr2)
+        bc_r2 = spectrum.sign_at_point(Condition.of("bc", parse(b) * parse(c)), rr2)
+        amd_r2 = spectrum.vanishes_at(fp.a - fp.d, rr2, UPPER)
     with gathered() as facts_between:
         between, ev_between = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, rr2)
     with gathered() as facts_zeros:
         zeros = [rc for rc in D.critical if rr2 < rc and spectrum.vanishes_at(fp.delta, rc, UPPER)]
         cells_negative = D.signs(UPPER, rr2, 1, include_points=False) == {-1}
-    take(facts_r2 + facts_between + facts_zeros)       # they belong to the checks below, not the first one
+    with gathered() as facts_above:
+        above, ev_above = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, 1)
+        above_but_r0, _ev = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, 1, skip=(r0,))
+    take(facts_r2 + facts_between + facts_zeros + facts_above)   # they belong to the checks below, not the first one
     printed = [
         Check("a-d, b, c > 0 on the upper branch for r < 5-2√6",
-              all(T.holds(UPPER, 1, 0, rr1) for T in (amd, bb, cc))),
+              all(T.holds(UPPER, 1, 0, rr1) for T in (amd, bb, cc)), ref="T17.1"),
         Check("exactly one positive fixed point, x₊, for r < 5-2√6", xp.holds(UPPER, 1, 0, rr1) and xm.holds(UPPER, -1, 0, rr1),
-              ["x₊ on the branches:\n\n" + xp.markdown(), "x₋ on the branches:\n\n" + xm.markdown()]),
-        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between, obligations=list(facts_between)),
-        Check("at r2 the fixed points are not real (Δ < 0 on the upper branch)", at_r2 is not None and at_r2[0] == -1,
-              obligations=list(facts_r2)),
+              ["x₊ on the branches:\n\n" + xp.markdown(), "x₋ on the branches:\n\n" + xm.markdown()], ref="T17.2"),
+        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between, obligations=list(facts_between),
+              ref="T17.3"),
+        Check("at r2 the fixed points are not real: a-d = 0 and 4bc < 0, so Δ < 0 on the upper branch",
+              at_r2 is not None and at_r2[0] == -1 and amd_r2 and bc_r2 is not None and bc_r2[0] == -1,
+              obligations=list(facts_r2), ref="T17.4"),
         Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1", cells_negative and not zeros,
               ["Δ on the branches:\n\n" + D.markdown()] +
-              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros], obligations=list(facts_zeros)),
+              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros], obligations=list(facts_zeros),
+              ref="T17.5"),
+        Check("so that a positive fixed point on the upper branch can only exist up to r = 5-2√6", above, ev_above,
+              obligations=list(facts_above), ref="T17.7"),
     ]
     corrected = printed[:4] + [Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1, except at the one point "
                                      "r0 = (7-2√10)/3, where it vanishes",
-                                     cells_negative and len(zeros) == 1 and zeros[0] == Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10),
-                                     corrects=printed[4], obligations=list(facts_zeros))]
-    for z in zeros:
-        x0 = cancelled((fp.a - fp.d) / (2 * fp.c))
-        sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), z)
-        tc = spectrum.sign_at_point(Condition.of("t_c - t_a", x0 / (-parse(V)) - 1), z)
-        sv = spectrum.sign_at_point(Condition.of("v", parse(V)), z)
-        corrected.append(Check(f"at r ≈ {z.digits(8)} f has the double fixed point x = (a-d)/(2c) > 0 on the upper branch, "
-                               "but from p(0) = (1,0,x), q(0) = (-1,u,v) the first collision is c (v < 0 and "
-                               "t_c = x/(-v) < 1 = t_a), not a: no self-similar datum there",
-                               bool(sx and tc and sv) and sx[UPPER] == 1 and sv[UPPER] == -1 and tc[UPPER] == -1,
-                               [f"signs at that r on the upper branch: x {sx and sx[UPPER]}, v {sv and sv[UPPER]}, "
-                                f"t_c - t_a {tc and tc[UPPER]}"]))
+                                     cells_negative and len(zeros) == 1 and zeros[0] == r0,
+                                     corrects=printed[4], obligations=list(facts_zeros), ref="T17.6")]
+    x0 = cancelled((fp.a - fp.d) / (2 * fp.c))
+    sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), r0)
+    tc = spectrum.sign_at_point(Condition.of("t_c - t_a", x0 / (-parse(V)) - 1), r0)
+    sv = spectrum.sign_at_point(Condition.of("v", parse(V)), r0)
+    su = spectrum.sign_at_point(Condition.of("u", parse(U)), r0)
+    corrected.append(Check("above 5-2√6 a positive fixed point exists on the upper branch only at r0 = (7-2√10)/3: the "
+                           "double fixed point x = (a-d)/(2c) > 0, from which (p(0) = (1,0,x), q(0) = (-1,u,v)) the first "
+                           "collision is c (u > 0: b does not come first; v < 0 and t_c = x/(-v) < 1 = t_a), not a: no "
+                           "self-similar datum there",
+                           above_but_r0 and zeros == [r0] and bool(sx and tc and sv and su) and sx[UPPER] == 1
+                           and su[UPPER] == 1 and sv[UPPER] == -1 and tc[UPPER] == -1,
+                           [f"signs at r0 on the upper branch: x {sx and sx[UPPER]}, u {su and su[UPPER]}, "
+                            f"v {sv and sv[UPPER]}, t_c - t_a {tc and tc[UPPER]}"], corrects=printed[5], ref="T17.8"))
     return conclude(printed, corrected, kind=FALSE_STATEMENT,
                     misprint="l. 436: Δ < 0 'until r = 1' misses the zero of Δ at (7-2√10)/3",
                     note="The printed 'until r = 1' misses one point: at r = (7-2√10)/3 the upper "
@@ -777,20 +849,23 @@ def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
     cc = spectrum.table("c", parse(c), 0, 1)
     with gathered(again=True) as facts_away:
         away, ev = no_positive_fixed_point(spectrum, fp, xp, xm, MIDDLE, 0, rs, skip=(rr1,))
+        at_rs = fixed_point_signs_at(spectrum, fp, rs, MIDDLE)       # r*, where the middle branch meets the lower
+        away, ev = away and at_rs <= {-1, None}, ev + [f"at r*: {sign_word(at_rs)}"]
     with gathered(again=True) as facts_degenerate:
         degenerate = all(spectrum.vanishes_at(g, rr1, MIDDLE) for g in (fp.a, fp.b, fp.c, fp.d))
     take(facts_away + facts_degenerate)         # they belong to the first two checks below
     reasoning = [
         Check("the middle branch exists exactly on ]0, r*[ (and at r*)", all((len(cl.branches) >= 2) == (cl.hi <= rs) for cl in xp.cells)),
         Check("for r < 5-2√6: a-d < 0, bc < 0, c > 0 on the middle branch",
-              amd.holds(MIDDLE, -1, 0, rr1) and bc.holds(MIDDLE, -1, 0, rr1) and cc.holds(MIDDLE, 1, 0, rr1)),
+              amd.holds(MIDDLE, -1, 0, rr1) and bc.holds(MIDDLE, -1, 0, rr1) and cc.holds(MIDDLE, 1, 0, rr1), ref="T18.3"),
         Check("for 5-2√6 < r < r*: a-d > 0, bc < 0, c < 0 on the middle branch",
-              amd.holds(MIDDLE, 1, rr1, rs) and bc.holds(MIDDLE, -1, rr1, rs) and cc.holds(MIDDLE, -1, rr1, rs)),
+              amd.holds(MIDDLE, 1, rr1, rs) and bc.holds(MIDDLE, -1, rr1, rs) and cc.holds(MIDDLE, -1, rr1, rs),
+              ref="T18.4"),
     ]
     return conclude([Check("x₊ and x₋ are never positive on the middle branch wherever f is defined", away, ev,
-                           obligations=list(facts_away)),
+                           obligations=list(facts_away), ref="T18.1"),
                      Check("at r = 5-2√6 the printed f is undefined on the middle branch: a = b = c = d = 0 exactly",
-                           degenerate, obligations=list(facts_degenerate))] + reasoning,
+                           degenerate, obligations=list(facts_degenerate), ref="T18.2")] + reasoning,
                     note="At r = 5-2√6 on the middle branch a, b, c, d (and the numerators and denominators of u, v) "
                          "all vanish: the printed formulas define no datum there, so the claim holds vacuously at that point.")
 
@@ -804,9 +879,10 @@ def lower_branch_fixed_points(spectrum, a, b, c, d, r1):
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     amd, bb, cc = (spectrum.table(n, g, 0, 1) for n, g in (("a-d", parse(a) - parse(d)), ("b", parse(b)), ("c", parse(c))))
     return conclude([
-        Check("a-d, b, c > 0 on the lower branch for r < 5-2√6", all(T.holds(LOWER, 1, 0, rr1) for T in (amd, bb, cc))),
+        Check("a-d, b, c > 0 on the lower branch for r < 5-2√6", all(T.holds(LOWER, 1, 0, rr1) for T in (amd, bb, cc)),
+              ref="T19.1"),
         Check("x₊ > 0 > x₋ on the lower branch for r < 5-2√6", xp.holds(LOWER, 1, 0, rr1) and xm.holds(LOWER, -1, 0, rr1),
-              [f"x₊: {sign_word(xp.signs(LOWER, 0, rr1))}; x₋: {sign_word(xm.signs(LOWER, 0, rr1))}"]),
+              [f"x₊: {sign_word(xp.signs(LOWER, 0, rr1))}; x₋: {sign_word(xm.signs(LOWER, 0, rr1))}"], ref="T19.2"),
     ])
 
 
@@ -835,17 +911,21 @@ def sign_of_u(cp, spectrum, U, quintic, digits, r1, position):
         lambda f=f: facts.sign_at(int(f(1) > 0) - int(f(1) < 0), f, 1))])
     roots, nf = roots_in_unit_interval(quintic)
     T = spectrum.table("u", parse(U), 0, 1)
+    quad_roots = Algebraic.roots(to_fmpz_poly(parse("r^2-10*r+1")), 0, 1)
     checks = [Check("the eliminant's factors vanishing in ]0,1[ are r^2-10r+1 and the quintic",
                     wanted >= target and all(not Algebraic.roots(f, 0, 1) for f in others),
-                    E.evidence(), obligations=both_routes + no_root),
+                    E.evidence(), obligations=both_routes + no_root, ref="T20.1"),
               Check("both routes agree", E.agree, obligations=both_routes),
-              count_check("the quintic", roots, nf, 1)]
+              Check("the first factor, r^2-10r+1, only has one root in ]0,1[, 5-2√6",
+                    len(quad_roots) == 1 and quad_roots[0] == rr1, ref="T20.2"),
+              named("T20.3", count_check("the quintic", roots, nf, 1))]
     if roots:
-        checks += [digits_check("its root", roots[0], digits),
+        checks += [named("T20.4", digits_check("its root", roots[0], digits)),
                    Check(f"it is {position}", statements.relation(position, {"ρ": roots[0]}, subject="ρ").compare(),
-                         [f"its root is {roots[0].describe()}"])]
+                         [f"its root is {roots[0].describe()}"], ref="T20.5")]
     checks.append(Check("u > 0 on the upper and lower branches for r < 5-2√6",
-                        T.holds(UPPER, 1, 0, rr1) and T.holds(LOWER, 1, 0, rr1), ["sign table of u:\n\n" + T.markdown()]))
+                        T.holds(UPPER, 1, 0, rr1) and T.holds(LOWER, 1, 0, rr1), ["sign table of u:\n\n" + T.markdown()],
+                        ref="T20.6"))
     return conclude(checks)
 
 
@@ -865,7 +945,7 @@ def velocity_inequalities(spectrum, velocities, U, V, inequality):
     lo, hi = st.range.lo, st.range.hi
     qs = velocities_of(WORD)
     checks = []
-    for name, (k, i, text) in velocities.items():
+    for n, (name, (k, i, text)) in enumerate(velocities.items()):
         same = to_field(qs[k][i]) == to_field(parse(text))
         T = spectrum.table(name, parse(text).subs(printed_uv(U, V)), 0, 1)
         up, low = T.signs(UPPER, lo, hi), T.signs(LOWER, lo, hi)
@@ -873,7 +953,7 @@ def velocity_inequalities(spectrum, velocities, U, V, inequality):
         checks.append(Check(f"{name} = {text} is the dynamics, and {inequality} with q = {name} on the upper and "
                             "lower branches", same and ok,
                             [f"{name}: identity {'holds' if same else 'FAILS'}; for {st.range}, upper: "
-                             f"{sign_word(up)}, lower: {sign_word(low)}"]))
+                             f"{sign_word(up)}, lower: {sign_word(low)}"], ref=f"T21.{n + 1}"))
     return conclude(checks)
 
 
@@ -899,13 +979,14 @@ def distance_inequalities(candidate, p3t4, p1t5, a, b, c, d, U, V, r1):
     rr1 = r1_of(r1)
     fp = fixed_point(a, b, c, d)
     checks = []
-    for name, text, k, i in (("p3(t4)", p3t4, 3, 2), ("p1(t5)", p1t5, 4, 0)):
+    for ref, name, text, k, i in (("T22.1", "p3(t4)", p3t4, 3, 2), ("T22.2", "p1(t5)", p1t5, 4, 0)):
         same = reduce_mod(steps[k].position(i) - to_field(parse(text)), cp) == 0
         T = spectrum.table(name, parse(text), 0, 1, fp)
         ok = T.holds(UPPER, 1, 0, rr1) and T.holds(LOWER, 1, 0, rr1)
         checks.append(Check(f"{name} as printed is the dynamics (modulo cp) and is > 0 on the upper and lower branches "
                             "for r < 5-2√6 with x = x₊", same and ok,
-                            [f"{name}: identity {'holds' if same else 'FAILS'}", f"sign table of {name}:\n\n" + T.markdown()]))
+                            [f"{name}: identity {'holds' if same else 'FAILS'}", f"sign table of {name}:\n\n" + T.markdown()],
+                            ref=ref))
     qs = velocities_of(WORD)
     h = (1 + r) / 2
     concave = all(sp.expand(qs[k + 1][2] - qs[k][2] - (h * qs[k][1] if WORD[k] == "b" else 0)) == 0 for k in range(4))
@@ -913,7 +994,13 @@ def distance_inequalities(candidate, p3t4, p1t5, a, b, c, d, U, V, r1):
     neg = all(T.holds(UPPER, -1, 0, rr1) and T.holds(LOWER, -1, 0, rr1) for T in q2_before_b)
     checks.append(Check("q3 is non-increasing over the first four collisions (A keeps it, B adds (1+r)/2·q2 < 0), so "
                         "p3 is concave on [0, t4] and p3(t1), p3(t2), p3(t3) > 0 follow from x > 0 and p3(t4) > 0",
-                        concave and neg))
+                        concave and neg, ref="T22.3"))
+    # the conclusion itself, on the sign tables of p3(t1), p3(t2), p3(t3) with x = x₊
+    p3s = [spectrum.table(f"p3(t{k + 1})", steps[k].position(2).as_expr(), 0, 1, fp) for k in range(3)]
+    checks.append(Check("hence p3(t1), p3(t2), p3(t3) > 0 on the upper and lower branches for r < 5-2√6 with x = x₊",
+                        all(T.holds(UPPER, 1, 0, rr1) and T.holds(LOWER, 1, 0, rr1) for T in p3s),
+                        [f"p3(t{k + 1}): upper {sign_word(T.signs(UPPER, 0, rr1))}, lower {sign_word(T.signs(LOWER, 0, rr1))}"
+                         for k, T in enumerate(p3s)], ref="T22.4"))
     return conclude(checks)
 
 
@@ -929,16 +1016,18 @@ def distance_inequalities(candidate, p3t4, p1t5, a, b, c, d, U, V, r1):
 def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, degree, position):
     product = f"r^6*(r-1)^6*(r+1)^3*(r^2-10*r+1)*({P2_text})*({P3_text})"
     checks = eliminant_check("a+d", parse(a) + parse(d), cp, product)
+    checks[0].ref = "T23.1"
     checks.append(Check(f"the polynomial has degree {degree}", to_fmpz_poly(parse(product)).degree() == degree,
                         obligations=unsupported_fact("the degree of a polynomial, read off the printed product's "
-                                                     "expansion: the obligation language has no kind for a degree")))
-    for name, text, digits in (("P2", P2_text, d2), ("P3", P3_text, d3)):
+                                                     "expansion: the obligation language has no kind for a degree"),
+                        ref="T23.2"))
+    for n, (name, text, digits) in enumerate((("P2", P2_text, d2), ("P3", P3_text, d3))):
         roots, nf = roots_in_unit_interval(text)
-        checks.append(count_check(name, roots, nf, 1))
+        checks.append(named(f"T23.{3 * n + 3}", count_check(name, roots, nf, 1)))
         if roots:
-            checks += [digits_check(f"the root of {name}", roots[0], digits),
+            checks += [named(f"T23.{3 * n + 4}", digits_check(f"the root of {name}", roots[0], digits)),
                        Check(f"the root of {name} lies {position}",
-                             statements.relation(position, {"ρ": roots[0]}, subject="ρ").compare())]
+                             statements.relation(position, {"ρ": roots[0]}, subject="ρ").compare(), ref=f"T23.{3 * n + 5}")]
     return conclude(checks)
 
 
@@ -998,25 +1087,42 @@ def f_prime_at_fixed_point() -> sp.Expr:
     return (A * D - B * C) / (C * xp + D) ** 2
 
 
+T24_Q_ONE = ("d^2 + 4*b*c", "(a - d)^2 + 4*b*c")     # l. 495: q = 1 where (a-d)^2 + 4bc = 0 (Step 2's Δ), not d^2 + 4bc
+
+
+def mobius_sum(text: str, a, b, c, d) -> sp.Expr:
+    """A printed expression in a, b, c, d (``d^2 + 4*b*c``) with the printed a, b, c, d put in."""
+    e = parse(text)
+    put = {sym: parse(v) for sym in e.free_symbols for n, v in zip("abcd", (a, b, c, d)) if sym.name == n}
+    if set(map(str, e.free_symbols)) - set("abcd"):
+        raise statements.StatementError(f"cannot read {text!r}: only a, b, c, d")
+    return e.subs(put)
+
+
 @certificate("T24", "l. 488-509", "Upper branch: |q| > 1 (fixed point of f repelling) below 5-2√6; lower branch: "
              "|q| < 1 but λ not dominant; q = (cx₊+d)/(cx₋+d) as displayed at l. 493.", needs=["spectrum"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, r1=R1_PRINTED,
-                          q="(c x₊ + d)/(c x₋ + d)", upper="|q|>1", lower="|q|<1", stable_when="|q|<1"),
+                          q="(c x₊ + d)/(c x₋ + d)", upper="|q|>1", lower="|q|<1", stable_when="|q|<1",
+                          q_is_one="d^2 + 4*b*c"),
              expect=ERRATUM,
              mutants=[replaced("a", "1024*r^6", "-1024*r^6", "a coefficient of a"),
                       reworded("upper", "|q|>1", "|q|<1", "(|q|≥1 holds with q = f'(x₊): not an alteration that must fail)"),
                       reworded("lower", "|q|<1", "|q|>1"),
                       reworded("stable_when", "|q|<1", "|q|≤1"),
                       reworded("q", "(c x₊ + d)/(c x₋ + d)", "(c x₊ + d)/(c x₋ - d)"),
+                      replaced("q_is_one", "4*b*c", "4*b*c + 1", "another quantity for q = 1"),
                       unread("upper", "|q| > 2", "not a multiple of |q| - 1: not evaluated")])
-def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stable_when):
+def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stable_when, q_is_one):
     """For every Möbius map with real fixed points, |f'(x₊)| - 1 has the sign of -(a+d)
     (:func:`modulus_sign_factor`), and the printed q = (cx₊+d)/(cx₋+d) is 1/f'(x₊): its
     |q| - 1 has the sign of a+d.  The signs of Δ and a+d per branch are certified.  The
     sentences of l. 495-505 (x₊ stable iff |q| < 1; |q| > 1 on the upper branch, |q| < 1 on
     the lower) are read and evaluated with q as displayed at l. 493, then with the one
-    stated correction: q = (cx₋+d)/(cx₊+d) = f'(x₊), the displayed fraction inverted."""
+    stated correction: q = (cx₋+d)/(cx₊+d) = f'(x₊), the displayed fraction inverted.
+    l. 495 also says that q = 1 corresponds to d^2 + 4bc = 0: q = 1 iff √Δ = 0, Δ = (a-d)^2 + 4bc
+    (false as printed at r0 = (7-2√10)/3 on the upper branch, where Δ = 0 and d^2 + 4bc ≠ 0)."""
     rr1 = r1_of(r1)
+    r0 = Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10)
     fp = fixed_point(a, b, c, d)
     apd = spectrum.table("a+d", fp.a + fp.d, 0, rr1)
     real = spectrum.table("Δ", fp.delta, 0, 1)          # q real and √Δ > 0 where Δ > 0 (shared with T17)
@@ -1041,6 +1147,21 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
                     f"lower branch, r < 5-2√6: {lower}": on_branch(lower, LOWER)}
         return all(verdicts.values()), [f"with q = {q_text}, sign(|q| - 1) = {'+' if k > 0 else '−'}sign(a+d): "
                                         + "; ".join(f"{t}: {MARK[v]}" for t, v in verdicts.items())]
+
+    def q_one(text) -> Check:
+        """l. 495: the case q = 1 corresponds to E = 0 (E = ``text``): for every Möbius map q - 1 =
+        2√Δ/(a+d-√Δ), so the claim holds when E is Δ = (a-d)^2 + 4bc; and at r0 on the upper branch,
+        where Δ = 0 (q = 1), E vanishes too."""
+        A, B, C, D, s_, _xp, _xm = mobius_symbols()
+        generic = sp.cancel(parse(text).subs({sym: {"a": A, "b": B, "c": C, "d": D}[sym.name]
+                                              for sym in parse(text).free_symbols if sym.name in "abcd"})
+                            - ((A - D) ** 2 + 4 * B * C)) == 0
+        E = mobius_sum(text, a, b, c, d)
+        at_r0 = spectrum.vanishes_at(fp.delta, r0, UPPER) == spectrum.vanishes_at(E, r0, UPPER)
+        return Check(f"l. 495: the case q = 1 corresponds to {text} = 0 (q - 1 = 2√Δ/(a+d-√Δ) for every Möbius map: "
+                     "q = 1 iff Δ = (a-d)^2 + 4bc = 0; on the upper branch at r0 = (7-2√10)/3, Δ = 0)", generic and at_r0,
+                     [f"{text} is (a-d)^2 + 4bc: {MARK[generic]}; at r0 on the upper branch, Δ = 0 and {text} = 0 "
+                      f"alike: {MARK[at_r0]}"])
     sentence_text = f"x₊ stable iff {stable_when} (l. 495); {upper} on the upper branch and {lower} on the lower, r < 5-2√6 (l. 505)"
     with gathered(again=True) as facts_printed:
         ok, ev = sentences(q)
@@ -1050,37 +1171,57 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
            f"{MARK[real.holds(LOWER, 1, 0, rr1)]} (r < 5-2√6), so q is real and √Δ > 0",
            f"for every Möbius map, f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) and |f'(x₊)| - 1 has the sign of "
            f"{'a+d' if k_f == 1 else '-(a+d)'}"]
-    printed = [Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d, obligations=take(facts_printed))]
-    if ok:
-        return conclude(printed)
-    if T24_CORRECTION[0] not in q:
-        return conclude(printed + [Check(f"the stated correction {' → '.join(T24_CORRECTION)} applies to the "
-                                         f"printed q = {q}", False)])
-    q_fixed = q.replace(*T24_CORRECTION)
-    with gathered(again=True) as facts_fixed:
-        ok_fixed, ev_fixed = sentences(q_fixed)
-    is_fprime = sp.cancel(read_q(q_fixed) - f_prime_at_fixed_point()) == 0
-    facts_fixed += modulus_facts(read_q(q_fixed)) + modulus_facts(f_prime_at_fixed_point()) + \
-        identity_facts((is_fprime, read_q(q_fixed), f_prime_at_fixed_point()))
     with gathered(again=True) as facts_upper:
         upper_repels = k_f == -1 and apd.holds(UPPER, -1)
     with gathered(again=True) as facts_lower:
-        lower_dominated = k_f == -1 and apd.holds(LOWER, 1) and lam_gap.holds(UPPER, 1) and lam_gap.holds(LOWER, 1)
-    corrected = [
-        Check(f"l. 493: q = {q_fixed}; with it, {sentence_text}", ok_fixed and is_fprime,
-              ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"], corrects=printed[0],
-              obligations=take(facts_fixed)),
+        lower_dominated = k_f == -1 and apd.holds(LOWER, 1) and all(lam_gap.holds(k, 1) for k in (UPPER, MIDDLE, LOWER))
+    A, B, C, D, s_, xp, xm = mobius_symbols()
+    two_forms = sp.cancel(C * xp + D - (A + D + s_) / 2) == 0 and sp.cancel(C * xm + D - (A + D - s_) / 2) == 0
+    minus_one = sp.cancel((A + D + s_) / (A + D - s_) + 1 - 2 * (A + D) / (A + D - s_)) == 0
+    printed = [
+        Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d, obligations=take(facts_printed), ref="T24.1"),
         Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)", upper_repels,
-              obligations=take(facts_upper + modulus_facts(f_prime_at_fixed_point()))),
+              obligations=take(facts_upper + modulus_facts(f_prime_at_fixed_point())), ref="T24.3"),
         Check("and on the lower branch a+d > 0 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: λ is not dominant "
               "(unstable in the velocities)", lower_dominated,
-              obligations=take(facts_lower + modulus_facts(f_prime_at_fixed_point()))),
+              obligations=take(facts_lower + modulus_facts(f_prime_at_fixed_point())), ref="T24.4"),
+        Check("l. 493: the two forms of q agree, cx± + d = (a+d ± √Δ)/2 for x± = (a-d ± √Δ)/(2c)", two_forms, ref="T24.5"),
+        named("T24.6", q_one(q_is_one)),
+        Check("which does not happen below 5-2√6: Δ > 0, so q ≠ 1, on the upper and lower branches",
+              real.holds(UPPER, 1, 0, rr1) and real.holds(LOWER, 1, 0, rr1), ref="T24.8"),
+        Check("l. 495: the case q = -1 corresponds to a+d = 0 (q + 1 = 2(a+d)/(a+d-√Δ))", minus_one, ref="T24.9"),
     ]
-    return conclude(printed, corrected, kind=MISPRINT, misprint="l. 493: q displayed as 1/f'(x₊), the fraction inverted",
-                    note="One misprint: the q displayed at l. 493, (cx₊+d)/(cx₋+d), is 1/f'(x₊). With q = f'(x₊) = "
+    if all(c.holds for c in printed):
+        return conclude(printed)
+    corrected, slips = [], []
+    if not printed[0].holds:
+        if T24_CORRECTION[0] not in q:
+            corrected.append(Check(f"the stated correction {' → '.join(T24_CORRECTION)} applies to the printed q = {q}",
+                                   False, corrects=printed[0]))
+        else:
+            q_fixed = q.replace(*T24_CORRECTION)
+            with gathered(again=True) as facts_fixed:
+                ok_fixed, ev_fixed = sentences(q_fixed)
+            is_fprime = sp.cancel(read_q(q_fixed) - f_prime_at_fixed_point()) == 0
+            facts_fixed += modulus_facts(read_q(q_fixed)) + modulus_facts(f_prime_at_fixed_point()) + \
+                identity_facts((is_fprime, read_q(q_fixed), f_prime_at_fixed_point()))
+            corrected.append(Check(f"l. 493: q = {q_fixed}; with it, {sentence_text}", ok_fixed and is_fprime,
+                                   ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"],
+                                   corrects=printed[0], obligations=take(facts_fixed), ref="T24.2"))
+        slips.append("l. 493: q displayed as 1/f'(x₊), the fraction inverted")
+    if not printed[4].holds:
+        fixed = q_is_one.replace(*T24_Q_ONE) if T24_Q_ONE[0] in q_is_one else None
+        fix = named("T24.7", q_one(fixed)) if fixed else \
+            Check(f"the stated correction {' → '.join(T24_Q_ONE)} applies to the printed {q_is_one}", False)
+        fix.corrects = printed[4]
+        corrected.append(fix)
+        slips.append("l. 495: d^2+4bc printed for (a-d)^2+4bc")
+    corrected += [c for c in printed if c.holds]
+    return conclude(printed, corrected, kind=MISPRINT, misprint=tuple(slips),
+                    note="Two misprints: the q displayed at l. 493, (cx₊+d)/(cx₋+d), is 1/f'(x₊). With q = f'(x₊) = "
                     "(cx₋+d)/(cx₊+d), every sentence of l. 495-505 holds as printed, and the theorem's conclusion "
-                    "(instability on both branches) stands.")
-
+                    "(instability on both branches) stands. And q = 1 (l. 495) where (a-d)^2 + 4bc = 0 (Step 2's Δ), "
+                    "not d^2 + 4bc = 0; neither vanishes below 5-2√6 on the upper and lower branches.")
 
 
 # ---------------------------------------------------------------- Conclusion (l. 507-512): the theorem as a whole
@@ -1187,13 +1328,11 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, r1_digi
 # Ball enclosures cannot prove the identities q(t_6) = λ q(0) exactly (T9, T10 do so
 # algebraically); here they are checked as "the enclosures overlap and are tight"
 # (relative radius below 2^-TIGHT_BITS, decided exactly on the rational midpoints and
-# radii, not on floats), which a wrong formula fails by many orders of magnitude.
+# radii, not on floats), which a wrong formula fails by many orders of magnitude.  The
+# kernel decides the statements T25.2.1-T25.2.8 (statements/3_simulation.txt) by the exact
+# dynamics in Q(λ, √Δ) (certify_kernel/particles.py): every collision and identity exactly.
 PRINTED_T25_2 = dict(U=U_PRINTED, V=V_PRINTED, a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, word="ababcb",
                      r="1/20", periods=20, perturbation="1/10^30")
-SIMULATOR = ("the particle simulator in ball arithmetic (certify.dynamics.simulate, python-flint arb: each collision "
-             "chosen by enclosures of the collision times): the kernel has no interval arithmetic")
-ENCLOSURES = ("ball arithmetic (python-flint arb): the enclosures of the state after k periods and of its "
-              "scaled initial value, from the simulator: the kernel has no interval arithmetic")
 MAX_PERIODS = 200                      # how long a perturbed orbit is followed at most
 TIGHT_BITS = 40                        # "tight": relative radius < 2^-40 (decided exactly)
 
@@ -1331,6 +1470,7 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
     checks, evidence = [], [f"r = {r0} (our choice in ]0, 5-2√6[); perturbation ε = {perturbation}; "
                             f"collision choices proven in ball arithmetic (python-flint arb)"]
     for name, datum in data.items():
+        first_ref = {"upper": 1, "lower": 4}[name]          # T25.2.1-3, T25.2.4-6
         run, prec = self_similar_run(datum, word, periods)
         ok_word = run.word == word * periods
         q_ok, p_ok, ev = scaling_checks(run, datum, word, periods, prec)
@@ -1343,12 +1483,11 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                           "(f'(x₊) = 1/q)".format(*(z.str(8, radius=False) for z in datum.mobius(256))))
         checks += [
             Check(f"{name} branch: the printed datum repeats {word} for {periods} periods (every collision proven)",
-                  ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else [],
-                  obligations=unsupported_fact(SIMULATOR)),
+                  ok_word, [f"word: {run.word[:6 * periods]}"] if not ok_word else [], ref=f"T25.2.{first_ref}"),
             Check(f"{name} branch: q(t_{len(word)}k) = λ^k q(0), k = 1..{periods} (the enclosures overlap and have "
-                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok, obligations=unsupported_fact(ENCLOSURES)),
+                  f"relative radius < 2^-{TIGHT_BITS}, decided exactly)", q_ok, ref=f"T25.2.{first_ref + 1}"),
             Check(f"{name} branch: p(t_{len(word)}k) = μ^k p(0), k = 1..{periods} (the same)", p_ok,
-                  obligations=unsupported_fact(ENCLOSURES)),
+                  ref=f"T25.2.{first_ref + 2}"),
         ]
     # instability: upper branch through the positions, lower branch through the velocities
     cases = [("upper", "x + ε", eps, (Q(0), Q(0), Q(0)), MAX_PERIODS),
@@ -1373,8 +1512,8 @@ def ababcb_on_the_dynamics(U, V, a, b, c, d, word, r, periods, perturbation):
                             f"ends with {run.events[first]} instead of {word[first % n]} (proven at {prec} bits)")
         if (name, what) in (("upper", "x + ε"), ("lower", "v + ε")):
             checks.append(Check(f"{name} branch: the datum with {what} (ε = {perturbation}) leaves the pattern "
-                                f"{word} after a bounded number of periods", first is not None,
-                                obligations=unsupported_fact(SIMULATOR)))
+                                f"{word} within {MAX_PERIODS} periods", first is not None,
+                                ref="T25.2.7" if name == "upper" else "T25.2.8"))
     return conclude(checks, evidence=evidence,
                     note="Instability is shown the way the paper argues it: on the upper branch through the positions "
                          "(x perturbed), on the lower branch through the velocities (q perturbed); the other two "

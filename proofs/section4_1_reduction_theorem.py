@@ -59,6 +59,7 @@ from certify.run import (
     identity_facts,
     identity_modulo_facts,
     kept_facts,
+    named,
     overridden,
     quantity,
     replaced,
@@ -218,6 +219,9 @@ dot(C*er, (cos(φ)*cos(θ))*cross(p1, C*q0))
 AC_CORRECTION = {("cross_chain", 0): ("cos(θ), 0)", "cos(φ), 0)")}
 
 
+AC_CORRECTED_ROLES = ("colinear", "x 1=2", "first factor")     # the checks that read member 1 of the cross product
+
+
 # ---------------------------------------------------------------- as printed: case bc (l. 765-843)
 BC = dict(
     t_lambda="cos(θ)/(cos(φ)*sin(θ) - λ*cos(θ))",                               # l. 792
@@ -323,23 +327,24 @@ def tangent_bases(p0_a, e_x, e_theta_a, limit_0, limit_pi2, q_a_sum, q_a, p0_b, 
     pa, ex, eta = vec(p0_a), vec(e_x), vec(e_theta_a)
     pb, etb, ey = vec(p0_b), vec(e_theta_b), vec(e_y)
     frame = sp.Matrix.hstack(ex, pa, eta).T                 # rows e_x, p(0), e_θ
-    checks = [identity("l. 545: (e_x, p(0), e_θ) is orthonormal: its Gram matrix is I", frame * frame.T, sp.eye(3)),
-              identity("l. 545: det(e_x, p(0), e_θ) = +1 for every θ (direct)", frame.det(), 1)]
-    for angle, text in (("0", limit_0), ("π/2", limit_pi2)):
+    checks = [named("S1.1", identity("l. 545: (e_x, p(0), e_θ) is orthonormal: its Gram matrix is I", frame * frame.T,
+                                     sp.eye(3))),
+              named("S1.2", identity("l. 545: det(e_x, p(0), e_θ) = +1 for every θ (direct)", frame.det(), 1))]
+    for ref, angle, text in (("S1.3", "0", limit_0), ("S1.4", "π/2", limit_pi2)):
         L = T.parse(text)
         at = frame.xreplace(T.ANGLE[angle])
         same, det = (at - L).is_zero_matrix, L.det()
         checks.append(Check(f"l. 545: at θ = {angle} the basis is the printed {T.show(L.tolist())}, det = +1",
                             same and det == 1, [f"(e_x, p(0), e_θ) at θ = {angle}: "
                                                 f"`{T.show(at.tolist())}`, det {det}"],
-                            obligations=identity_facts((same, at, L)) + determinant_fact(det == 1, L, 1)))
-    checks.append(identity("l. 614: cos φ e_θ + sin φ e_x + λ e_r is the printed vector q(0) (e_r = p(0))",
-                           T.parse(q_a_sum, eθ=eta, ex=ex, er=pa), vec(q_a)))
+                            obligations=identity_facts((same, at, L)) + determinant_fact(det == 1, L, 1), ref=ref))
+    checks.append(named("S1.5", identity("l. 614: cos φ e_θ + sin φ e_x + λ e_r is the printed vector q(0) (e_r = p(0))",
+                                         T.parse(q_a_sum, eθ=eta, ex=ex, er=pa), vec(q_a))))
     frame_b = sp.Matrix.hstack(etb, ey, pb).T
-    checks += [identity("l. 775: the printed basis of contact b and p(0) are orthonormal: Gram matrix I",
-                        frame_b * frame_b.T, sp.eye(3)),
-               identity("l. 779: cos φ e_θ + sin φ e_y + λ e_r is the printed q_λ(0) of contact b (e_r = p(0))",
-                        T.parse(q_b_sum, eθ=etb, ey=ey, er=pb), vec(q_b))]
+    checks += [named("S1.6", identity("l. 775: the printed basis of contact b and p(0) are orthonormal: Gram matrix I",
+                                      frame_b * frame_b.T, sp.eye(3))),
+               named("S1.7", identity("l. 779: cos φ e_θ + sin φ e_y + λ e_r is the printed q_λ(0) of contact b "
+                                      "(e_r = p(0))", T.parse(q_b_sum, eθ=etb, ey=ey, er=pb), vec(q_b)))]
     return conclude(checks, note="e_r is p(0) (l. 617: 'e_r and p(0) are colinear'); the paper states no "
                     "orientation for the basis of contact b, and none is checked.")
 
@@ -386,6 +391,34 @@ def race(ti, tj, li: str, lj: str) -> dict:
     }
 
 
+MU, NU, TAU = sp.symbols("μ ν τ")
+LO, HI = -cφ / TAN, TAN * cφ      # l. 628: the values of λ where t_c and t_b change sign
+
+
+def at_lambda(e, value):
+    return e.subs(lam, value)
+
+
+def ranges(ti, tj, s: int) -> list[T.Result]:
+    """The case analysis in λ as the formal statements S2.10, S2.11, S2.14 read it
+    (statements/4_reduction.txt), each sign with its witness: ti = 1/(tanθ cos φ − λ), tj =
+    1/(−cos φ/tanθ − λ) (second forms); for cos φ > 0 (s = 1) λ = LO − ν (both positive, tj > ti),
+    λ = (LO + HI ν)/(1 + ν) between LO and HI (ti > 0 > tj), λ = HI + ν (both negative) and the
+    ends; for cos φ < 0 the mirror (ν > 0)."""
+    H, Hn = T.hypotheses(s), T.hypotheses(s).assume(NU, 1)
+    if s > 0:
+        mid = (LO + HI * NU) / (1 + NU)
+        return [T.has_sign(HI - LO, 1, H), T.has_sign(at_lambda(ti, LO), 1, H), T.has_sign(at_lambda(tj, HI), -1, H),
+                T.has_sign(at_lambda(ti, LO - NU), 1, Hn), T.has_sign(at_lambda(tj - ti, LO - NU), 1, Hn),
+                T.has_sign(at_lambda(ti, mid), 1, Hn), T.has_sign(at_lambda(tj, mid), -1, Hn),
+                T.has_sign(at_lambda(ti, HI + NU), -1, Hn), T.has_sign(at_lambda(tj, HI + NU), -1, Hn)]
+    mid = (HI + LO * NU) / (1 + NU)
+    return [T.has_sign(LO - HI, 1, H), T.has_sign(at_lambda(tj, HI), 1, H), T.has_sign(at_lambda(ti, LO), -1, H),
+            T.has_sign(at_lambda(tj, HI - NU), 1, Hn), T.has_sign(at_lambda(ti - tj, HI - NU), 1, Hn),
+            T.has_sign(at_lambda(tj, mid), 1, Hn), T.has_sign(at_lambda(ti, mid), -1, Hn),
+            T.has_sign(at_lambda(ti, LO + NU), -1, Hn), T.has_sign(at_lambda(tj, LO + NU), -1, Hn)]
+
+
 def witness_point(ti, tj, cos_phi: int) -> tuple[bool, str]:
     """A rational point with cos φ of the given sign where both times are positive."""
     pt = T.point("1/2", "1/2" if cos_phi > 0 else "2", λ=-2)
@@ -420,32 +453,52 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
     TB, TC, TCB, TAB = (T.chain(x) for x in (t_b, t_c, t_c_bc, t_a_bc))
     R = race(TB[0], TC[0], "b", "c")
     ok_pt, pt_ev = witness_point(TB[0], TC[0], 1)
-    b_first = [R["i<0 ⇒ λ"], R["λ ⇒ λ2"], R["⇒ j<0"], R["order+"]]
-    c_first = [R["j<0 ⇒ λ2"], R["λ2 ⇒ λ"], R["⇒ i<0"], R["order−"]]
+    b_first = [R["i<0 ⇒ λ"], R["λ ⇒ λ2"], R["⇒ j<0"], R["order+"]] + ranges(TB[1], TC[1], 1)
+    c_first = [R["j<0 ⇒ λ2"], R["λ2 ⇒ λ"], R["⇒ i<0"], R["order−"]] + ranges(TB[1], TC[1], -1)
+    # the signs as the formal statements S2.4-S2.9 read them (parametrised λ), each with its witness
+    pos, neg = T.hypotheses(1), T.hypotheses(-1)
+    K = cφ * (TAN + 1 / TAN) * MU * NU
+    signs = {"S2.4": [T.has_sign(K, 1, pos.assume(MU, 1).assume(NU, 1)), T.has_sign(K, -1, neg.assume(MU, 1).assume(NU, 1))],
+             "S2.5": [T.has_sign(HI, 1, pos), T.has_sign(HI - 1 / TAU - HI, 1, pos.assume(TAU, -1))],
+             "S2.6": [T.has_sign(LO - (HI + MU), -1, pos.assume(MU, 1))],
+             "S2.7": [T.has_sign(at_lambda(TC[1], LO + MU), -1, pos.assume(MU, 1))],
+             "S2.8": [T.has_sign(at_lambda(TB[1], LO - NU), 1, pos.assume(NU, 1)),
+                      T.has_sign(at_lambda(TC[1], LO - NU), 1, pos.assume(NU, 1)),
+                      T.has_sign(at_lambda(TC[1] - TB[1], LO - NU), 1, pos.assume(NU, 1))]}
     common = [
-        solves("t_b", TB, pa, qa, 1, "620"), solves("t_c", TC, pa, qa, 2, "620"),
-        identity("l. 625: the printed t_c - t_b is the difference of the printed times", T.parse(difference), TC[0] - TB[0]),
-        combined("l. 626: if t_b, t_c > 0 then sign(t_c - t_b) = sign(cos φ), as t_c - t_b = cos φ (tanθ + 1/tanθ) t_b t_c",
-                 [R["order+"], R["order−"]]),
-        combined("l. 628: cos φ > 0 and t_b < 0 give 0 < tanθ cos φ < λ", [R["tan>0"], R["i<0 ⇒ λ"]]),
-        combined("l. 628: then -cos φ/tanθ < λ", [R["λ ⇒ λ2"]]),
-        combined("l. 628: and so t_c < 0", [R["⇒ j<0"]]),
+        named("S2.1", solves("t_b", TB, pa, qa, 1, "620")), named("S2.2", solves("t_c", TC, pa, qa, 2, "620")),
+        named("S2.3", identity("l. 625: the printed t_c - t_b is the difference of the printed times", T.parse(difference),
+                               TC[0] - TB[0])),
+        named("S2.4", combined("l. 626: if t_b, t_c > 0 then sign(t_c - t_b) = sign(cos φ), as t_c - t_b = cos φ "
+                               "(tanθ + 1/tanθ) t_b t_c", [R["order+"], R["order−"]] + signs["S2.4"])),
+        named("S2.5", combined("l. 628: cos φ > 0 and t_b < 0 give 0 < tanθ cos φ < λ",
+                               [R["tan>0"], R["i<0 ⇒ λ"]] + signs["S2.5"])),
+        named("S2.6", combined("l. 628: then -cos φ/tanθ < λ", [R["λ ⇒ λ2"]] + signs["S2.6"])),
+        named("S2.7", combined("l. 628: and so t_c < 0", [R["⇒ j<0"]] + signs["S2.7"])),
     ]
-    conclusion = [combined("l. 628: when cos φ > 0 the first collision after a, if any, is b "
-                           "(t_b < 0 ⇒ t_c < 0; t_b > 0 ⇒ t_c < 0 or t_c > t_b)", b_first),
-                  combined("l. 629: when cos φ < 0 it is c (t_c < 0 ⇒ t_b < 0; both positive ⇒ t_c < t_b)", c_first)]
+    conclusion = [named("S2.10", combined("l. 628: when cos φ > 0 the first collision after a, if any, is b "
+                                          "(t_b < 0 ⇒ t_c < 0; t_b > 0 ⇒ t_c < 0 or t_c > t_b)", b_first)),
+                  named("S2.11", combined("l. 629: when cos φ < 0 it is c (t_c < 0 ⇒ t_b < 0; both positive ⇒ "
+                                          "t_c < t_b)", c_first))]
     RB = race(TCB[0], TAB[0], "c", "a")
     ok2, ev2 = witness_point(TCB[0], TAB[0], -1)
     tie = T.is_zero((TCB[0] - TAB[0]).subs(cφ, 0))                  # cos φ = 0: t_c = t_a
     first = {1: True, -1: False, 0: False}                           # t_c strictly the smallest, by the sign of cos φ
-    proofs = [RB[k] for k in ("i<0 ⇒ λ", "λ ⇒ λ2", "⇒ j<0", "order+", "order−")] + [T.Result(ok2, [ev2]), tie]
+    # l. 789, "iff": the three signs of cos φ, each with the printed condition read at that sign
+    Hn = neg.assume(NU, 1)
+    proofs = {1: [RB[k] for k in ("i<0 ⇒ λ", "λ ⇒ λ2", "⇒ j<0", "order+")] + ranges(TCB[1], TAB[1], 1),
+              -1: [RB["order−"], T.Result(ok2, [ev2]), T.has_sign(at_lambda(TCB[1], HI - NU), 1, Hn),
+                   T.has_sign(at_lambda(TAB[1], HI - NU), 1, Hn), T.has_sign(at_lambda(TCB[1] - TAB[1], HI - NU), 1, Hn)],
+              0: [tie]}
     condition = statements.relation(smallest_bc, {"cos(φ)": cφ, "sin(φ)": sφ})
     read = {s: condition.holds({cφ: s, sφ: 1}) for s in first}
-    bc = [solves("t_c", TCB, pb, qb, 2, "787"), solves("t_a", TAB, pb, qb, 0, "787"),
-          combined(f"l. 789: t_c is the smallest positive collision time iff {smallest_bc} (cos φ > 0: t_c < 0 ⇒ t_a < 0, "
-                   "both positive ⇒ t_c < t_a; cos φ < 0: both positive ⇒ t_a < t_c, which happens; cos φ = 0: "
-                   "t_c = t_a)", proofs + [T.Result(read == first, ["the printed condition for cos φ > 0, < 0, = 0: "
-                                                                     + ", ".join("yes" if read[s] else "no" for s in first)])])]
+    case = {1: "cos φ > 0: t_c < 0 ⇒ t_a < 0, both positive ⇒ t_c < t_a",
+            -1: "cos φ < 0: both positive ⇒ t_a < t_c, which happens", 0: "cos φ = 0: t_c = t_a"}
+    bc = [named("S2.12", solves("t_c", TCB, pb, qb, 2, "787")), named("S2.13", solves("t_a", TAB, pb, qb, 0, "787"))]
+    bc += [named(ref, combined(f"l. 789: t_c is the smallest positive collision time iff {smallest_bc}; {case[s]}",
+                               proofs[s] + [T.Result(read[s] == first[s], [
+                                   f"the printed condition at {case[s].split(':')[0]}: {'yes' if read[s] else 'no'}"])]))
+           for ref, s in (("S2.14", 1), ("S2.15", -1), ("S2.16", 0))]
     known = {T_C - T_B: 1} if R["order+"].holds else {}              # certified: t_c - t_b > 0
 
     def order_check(label, text):
@@ -458,12 +511,13 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
         point = [] if holds else fact_ids(lambda: {"kind": "unsupported", "reason": (
             "the hypotheses hold at a rational point (cos φ > 0, t_b, t_c > 0 there): the obligation language "
             "has no evaluation at a point")})
+        holds = holds and all(signs["S2.8"])      # and the signs the formal statement reads (S2.8, S2.9)
         return Check(f"{label}: cos φ > 0, t_b > 0, t_c > 0 ⇒ {text}", holds, R["order+"].evidence + (
             [] if holds else [f"false whenever its hypotheses hold, and they do hold: {pt_ev}" if ok_pt else
                               f"false whenever its hypotheses hold; NO witness that they hold: {pt_ev}"]),
-            obligations=take(facts_of(R["order+"])) + point)
-    as_printed = order_check("l. 628", order)
-    corrected_order = order_check("l. 628 corrected", statements.corrected(order, *ORDER_CORRECTION))
+            obligations=take(facts_of(R["order+"], *signs["S2.8"])) + point)
+    as_printed = named("S2.8", order_check("l. 628", order))
+    corrected_order = named("S2.9", order_check("l. 628 corrected", statements.corrected(order, *ORDER_CORRECTION)))
     return concluded(common + [as_printed] + conclusion + bc, common + [corrected_order] + conclusion + bc,
                      kind=MISPRINT, misprint="l. 628: 'smaller' printed for 'larger' (t_c and t_b when cos φ > 0)",
                     note="With 'smaller', c would come first and the conclusion 'the first collision is b' would not "
@@ -478,10 +532,28 @@ def with_member(text: str, index: int, member: str) -> str:
     return "\n= ".join(members)
 
 
-def reduction_case(chains: dict, p0_text: str, q_text: str, letter: str, lines: dict) -> list[Check]:
+# The roles of the checks of one case, in the order of the formal statements (statements/4_reduction.txt).
+ROLES = ("condition", "solves", "member 1", "p 1=2", "p 2=3", "linearity", "colinear", "x 1=2", "x 2=3", "x 3=4",
+         "first factor", "second factor", "e 1=2", "e 2=3", "matrices", "d 1=2", "d factors", "d 2=3", "d 3=4",
+         "d 4=5", "conclusion", "hence")
+
+
+def case_refs(certificate: str, roles=ROLES, corrected: tuple = ()) -> dict:
+    """role -> the id of its formal statement: numbered in the order of ``roles``; each role of
+    ``corrected`` is followed by its correction (role + "'")."""
+    out, k = {}, 0
+    for role in roles:
+        for name in (role, role + "'") if role in corrected else (role,):
+            k += 1
+            out[name] = f"{certificate}.{k}"
+    return out
+
+
+def reduction_case(chains: dict, p0_text: str, q_text: str, letter: str, lines: dict, refs: dict) -> list[Check]:
     """The printed computation of one case of Theorem 4.1 (contact, next collision ``letter``):
     the collision time, the chain for p_λ(1), the cross product, K e_r and the dot product,
-    every '=' separately; then the conclusion, computed directly."""
+    every '=' separately; then the conclusion, computed directly.  ``refs``: role -> the id of
+    the formal statement the check decides (:func:`case_refs`)."""
     k, K = INDEX[letter], SECTION2[letter.upper()]
     p0, q = vec(p0_text), vec(q_text)
     q0, tl = q.subs(lam, 0), T.parse(chains["t_lambda"])
@@ -489,50 +561,65 @@ def reduction_case(chains: dict, p0_text: str, q_text: str, letter: str, lines: 
     M, seen = recording_matrices()
     names = dict(M=M, er=p0, q0=q0, p1=p1, **SECTION2)
     P, X, KE, D = (T.chain(chains[n], **names) for n in ("p_chain", "cross_chain", "K_er_chain", "dot_chain"))
+    L = letter.upper()
+
+    def ref(role, check):
+        return named(refs[role], check) if role in refs else check
+
+    def chain_links(name, members, where, roles):
+        return [ref(role, c) for role, c in zip(roles, links(name, members, where))]
     checks = []
     if "condition" in chains:
-        checks.append(identity(f"l. {lines['t']}: the printed condition is p_{k + 1}(0) + t q_{k + 1}(0) = 0",
-                               T.parse(chains["condition"]), (p0 + t * q)[k]))
-    checks.append(identity(f"l. {lines['t']}: the printed t_λ solves it", (p0 + tl * q)[k], 0))
-    checks.append(identity(f"l. {lines['p']}: p(0) + t_λ q_λ(0) is member 1 of the chain for p_λ(1)", p0 + tl * q, P[0]))
-    checks += links("p_λ(1) for every λ", P, lines["p"])
-    checks.append(result_check(f"l. {lines['x']}: p(1) ∧ q(1) = p(1) ∧ {letter.upper()}q(0) is colinear to member 1, "
-                               f"`{T.members(chains['cross_chain'])[0]}`", T.parallel(p1.cross(K * q0), X[0])))
-    checks += links("cross product", X, lines["x"])
+        checks.append(ref("condition", identity(f"l. {lines['t']}: the printed condition is p_{k + 1}(0) + t q_{k + 1}(0) = 0",
+                                                T.parse(chains["condition"]), (p0 + t * q)[k])))
+    checks.append(ref("solves", identity(f"l. {lines['t']}: the printed t_λ solves it", (p0 + tl * q)[k], 0)))
+    checks.append(ref("member 1", identity(f"l. {lines['p']}: p(0) + t_λ q_λ(0) is member 1 of the chain for p_λ(1)",
+                                           p0 + tl * q, P[0])))
+    checks += chain_links("p_λ(1) for every λ", P, lines["p"], ("p 1=2", "p 2=3"))
+    normal = p1.cross(K * q0)
+    checks.append(ref("linearity", identity(f"l. {lines['lin']}: by linearity, q_λ(1)·[p(1) ∧ q(1)] = λ ({L} e_r)·[p(1) ∧ "
+                                            f"q(1)] (q_λ(1) = {L} q_λ(0))", (K * q).dot(normal), lam * (K * p0).dot(normal))))
+    checks.append(ref("colinear", result_check(f"l. {lines['x']}: p(1) ∧ q(1) = p(1) ∧ {L}q(0) is colinear to member 1, "
+                                               f"`{T.members(chains['cross_chain'])[0]}`", T.parallel(normal, X[0]))))
+    checks += chain_links("cross product", X, lines["x"], ("x 1=2", "x 2=3", "x 3=4"))
     fx = call_factors(chains["cross_chain"], "cross", names)
-    checks += [same_factors(f"l. {lines['x']}: the first factor of the cross product is the same in members 1-3",
-                            fx, [0, 1, 2], 0),
-               same_factors(f"l. {lines['x']}: the second factor {letter.upper()}q(0) = printed matrix × printed q(0) = "
-                            "printed vector (members 1-3)", fx, [0, 1, 2], 1)]
-    checks.append(identity(f"l. {lines['e']}: {letter.upper()} e_r is member 1 of its chain (e_r = p(0))", K * p0, KE[0]))
-    checks += links(f"{letter.upper()} e_r", KE, lines["e"])
-    checks += links(f"({letter.upper()} e_r)·[p(1) ∧ q(1)]", D, lines["d"])
+    checks += [ref("first factor", same_factors(f"l. {lines['x']}: the first factor of the cross product is the same in "
+                                                "members 1-3", fx, [0, 1, 2], 0)),
+               ref("second factor", same_factors(f"l. {lines['x']}: the second factor {L}q(0) = printed matrix × printed "
+                                                 "q(0) = printed vector (members 1-3)", fx, [0, 1, 2], 1))]
+    checks.append(identity(f"l. {lines['e']}: {L} e_r is member 1 of its chain (e_r = p(0))", K * p0, KE[0]))
+    checks += chain_links(f"{L} e_r", KE, lines["e"], ("e 1=2", "e 2=3"))
+    checks += chain_links(f"({L} e_r)·[p(1) ∧ q(1)]", D, lines["d"], ("d 1=2", "d 2=3", "d 3=4", "d 4=5"))
     fd = call_factors(chains["dot_chain"], "dot", names)
-    checks += [same_factors(f"l. {lines['d']}: member 2 of the dot product has the factors of member 1: "
-                            f"{letter.upper()} e_r", fd, [0, 1], 0),
-               same_factors(f"l. {lines['d']}: and the scaled p(1) ∧ q(1)", fd, [0, 1], 1)]
-    checks.append(matrices_are(letter, seen, f"{lines['x']}, {lines['e']}"))
+    checks += [ref("d factors", same_factors(f"l. {lines['d']}: member 2 of the dot product has the factors of member 1: "
+                                             f"{L} e_r", fd, [0, 1], 0)),
+               ref("d factors", same_factors(f"l. {lines['d']}: and the scaled p(1) ∧ q(1)", fd, [0, 1], 1))]
+    checks.append(ref("matrices", matrices_are(letter, seen, f"{lines['x']}, {lines['e']}")))
     return checks
 
 
-def reduction_conclusion(chains: dict, p0_text: str, q_text: str, letter: str) -> list[Check]:
+def reduction_conclusion(chains: dict, p0_text: str, q_text: str, letter: str, refs: dict) -> list[Check]:
     """(K e_r)·[p(1) ∧ q(1)] = 0, and directly: p_λ(1) ∧ K q_λ(0) ∥ p(1) ∧ K q(0) for every λ."""
     K = SECTION2[letter.upper()]
     p0, q = vec(p0_text), vec(q_text)
     n, d = T.fraction(T.parse(chains["t_lambda"]))
     pl = d * p0 + n * q                                  # d · p_λ(1): d ≢ 0 does not change the direction
     p1, q0 = pl.subs(lam, 0), q.subs(lam, 0)
-    return [identity(f"conclusion: ({letter.upper()} e_r)·[p(1) ∧ q(1)] = 0", (K * p0).dot(p1.cross(K * q0)), 0),
-            result_check("hence P_λ(1) = Span(p_λ(1), q_λ(1)) does not depend on λ: p_λ(1) ∧ q_λ(1) ∥ p(1) ∧ q(1) "
-                         "(p_λ(1) times the denominator of t_λ)", T.parallel(pl.cross(K * q), p1.cross(K * q0)))]
+    return [named(refs["conclusion"], identity(f"conclusion: ({letter.upper()} e_r)·[p(1) ∧ q(1)] = 0",
+                                               (K * p0).dot(p1.cross(K * q0)), 0)),
+            named(refs["hence"], result_check("hence P_λ(1) = Span(p_λ(1), q_λ(1)) does not depend on λ: p_λ(1) ∧ "
+                                              "q_λ(1) ∥ p(1) ∧ q(1) (p_λ(1) times the denominator of t_λ)",
+                                              T.parallel(pl.cross(K * q), p1.cross(K * q0))))]
 
 
-def certify_case(chains, p0, q, letter, lines, corrections=None, note="", misprint=""):
+def certify_case(chains, p0, q, letter, lines, refs, corrections=None, note="", misprint=""):
     """Printed checks; corrected checks = the same with the stated corrections (old text →
     new text in one member of a chain) applied.  A check that reads the same words in
     both names the member it was computed with, so that the errata show the change; a
-    stated correction whose old text is not in the printed member fails."""
-    printed = reduction_case(chains, p0, q, letter, lines) + reduction_conclusion(chains, p0, q, letter)
+    stated correction whose old text is not in the printed member fails.  A printed check
+    that the correction changes decides the formal statement of its role, the corrected
+    one that of its correction (role + "'"); the others decide the same statement twice."""
+    printed = reduction_case(chains, p0, q, letter, lines, refs) + reduction_conclusion(chains, p0, q, letter, refs)
     if not corrections:
         return concluded(printed, note=note)
     fixed, changed = dict(chains), []
@@ -544,12 +631,15 @@ def certify_case(chains, p0, q, letter, lines, corrections=None, note="", mispri
                                             f"of the printed chain, `{member}`", False)], note=note)
         fixed[name] = with_member(fixed[name], index, new_member)
         changed.append((index, member, new_member))
-    corrected = reduction_case(fixed, p0, q, letter, lines) + reduction_conclusion(fixed, p0, q, letter)
+    corrected = reduction_case(fixed, p0, q, letter, lines, refs) + reduction_conclusion(fixed, p0, q, letter, refs)
+    by_ref = {v: k for k, v in refs.items()}
     for wrong, fix in zip(printed, corrected):
         if not wrong.holds and wrong.statement == fix.statement:
             for index, member, new_member in changed:
                 wrong.statement += f", with member {index + 1} as printed, `{member}`"
                 fix.statement += f", with member {index + 1} corrected, `{new_member}`"
+        if not wrong.holds and by_ref.get(wrong.ref, "") + "'" in refs:
+            fix.ref = refs[by_ref[wrong.ref] + "'"]
     return concluded(printed, corrected, note=note, kind=MISPRINT, misprint=misprint)
 
 
@@ -561,7 +651,8 @@ def certify_case(chains, p0, q, letter, lines, corrections=None, note="", mispri
                       replaced("t_lambda", "- λ*cos(θ)", "+ λ*cos(θ)", "a sign of t_λ")])
 def case_ab(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations."""
-    return certify_case(chains, p0, q, "b", dict(t="641-645", p="649-656", x="676-682", e="686", d="690-701"))
+    return certify_case(chains, p0, q, "b", dict(t="641-645", p="649-656", lin="666-672", x="676-682", e="686",
+                                                 d="690-701"), case_refs("S3"))
 
 
 @certificate("S4", "l. 705-763", "Case ac: the printed t_λ; p_λ(1) = (1/(cosφ cosθ + λ sinθ))(-sinφ sinθ, cosφ, 0) "
@@ -571,7 +662,8 @@ def case_ab(p0, q, **chains):
              mutants=[replaced("K_er_chain", "-r*sin(θ))", "-r*cos(θ))", "C e_r with cos θ for sin θ")])
 def case_ac(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations; l. 734 (left) corrected."""
-    return certify_case(chains, p0, q, "c", dict(t="708-712", p="716-726", x="734-744", e="748", d="752-761"),
+    return certify_case(chains, p0, q, "c", dict(t="708-712", p="716-726", lin="728-731", x="734-744", e="748",
+                                                 d="752-761"), case_refs("S4", corrected=AC_CORRECTED_ROLES),
                         AC_CORRECTION, misprint="l. 734: cos θ printed for cos φ in p(1)",
                         note="l. 734 prints (-sinφ sinθ, cosθ, 0) ∧ (C q(0)) where p(1) ∝ "
                         "(-sinφ sinθ, cosφ, 0) (l. 722-726, and l. 735): a misprint; the rest of the "
@@ -585,7 +677,8 @@ def case_ac(p0, q, **chains):
              mutants=[replaced("dot_chain", "(sin(θ)^2 + cos(θ)^2) - r", "(sin(θ)^2 + cos(θ)^2) + r", "a sign of the dot product")])
 def case_bc(p0, q, **chains):
     """Identities in θ, φ, r, λ modulo the circle relations."""
-    return certify_case(chains, p0, q, "c", dict(t="790-792", p="796-808", x="816-826", e="830", d="834-843"))
+    return certify_case(chains, p0, q, "c", dict(t="790-792", p="796-808", lin="810-813", x="816-826", e="830",
+                                                 d="834-843"), case_refs("S5", ROLES[1:]))
 
 
 # ================================================================ Theorem 4.1, the spherical billiard reduction (l. 569-868): S6, on the dynamics and on cones
@@ -761,6 +854,28 @@ def _multiple_at(rows, values: list):
     return sp.Rational(int(k.p), int(k.q)) if k is not None and k > 0 else None
 
 
+CASES = (("a", "b", "S6.1"), ("a", "c", "S6.2"), ("b", "c", "S6.3"), ("b", "a", "S6.4"), ("c", "a", "S6.5"),
+         ("c", "b", "S6.6"))
+
+
+def plane_identities(K: dict) -> list[Check]:
+    """The proof's identity (K_j e_r)·[p(1) ∧ q(1)] = 0 (l. 672, 730, 812) in each of the six cases
+    (contact i, next j), for every state: e_r ∝ p(0) = e_i ∧ u, q(0) = u ∧ p(0) (l. 969-971), p(1)
+    in the printed direction u ∧ e_j (l. 958, 962, relabelled), q(1) = K_j q(0); so Span(p(1),
+    K_j q_λ(0)) does not depend on the radial part λ."""
+    u, out = RC.N, []
+    for i, j, ref in CASES:
+        p = RC.UNIT[INDEX[i]].cross(u)
+        q = u.cross(p)
+        Kj = K[j]
+        lhs = (Kj * p).dot(u.cross(RC.UNIT[INDEX[j]]).cross(Kj * q))
+        out.append(identity(f"case {i}{j}: ({j.upper()} e_r)·[p(1) ∧ q(1)] = 0 for every normal u (e_r ∝ e_{INDEX[i] + 1} "
+                            f"∧ u, p(1) ∝ u ∧ e_{INDEX[j] + 1}, q(1) = {j.upper()}(u ∧ e_r))", sp.Matrix([lhs]),
+                            sp.zeros(1, 1)))
+        out[-1].ref = ref
+    return out
+
+
 @certificate("S6", "l. 839-868",
              "Theorem 4.1: two trajectories with the same contact and Span(p(0),q(0)) = Span(p'(0),q'(0)) have "
              "the same plane Span(p(k),q(k)) at every collision k (and so the same collision types).",
@@ -780,7 +895,9 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
     next depends on the plane only: on the six cones of states (certify.dynamics.cones)
     the particles, whatever the radial part of their velocity, collide next at the map's
     j or never.  By induction, two trajectories on one plane have the same collisions
-    while both last, and the same planes.  The exact runs of two data per plane, compared
+    while both last, and the same planes.  The printed route, for every state: the identity
+    (K_j e_r)·[p(1) ∧ q(1)] = 0 in the six cases (:func:`plane_identities`, S6.1-S6.6), so the
+    plane after the collision does not depend on the radial part.  The exact runs of two data per plane, compared
     collision by collision with each other and with the projective map, are supporting
     evidence."""
     checks, rates = [], sorted({d.r for d in section4_data} | {Q(1, 3)})
@@ -818,6 +935,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                              f"engine − printed over Q(r): {'0' if same else show((engine - cof).applyfunc(sp.factor).tolist())}; "
                              f"integer multiples at {len(rates)} values of r: "
                              f"{sum(k is not None for k in scaled)} positive"], obligations=grounds))
+    checks += plane_identities({L: matrix(text) for L, text in zip(LETTERS, (A, B, C))})
     cones = printed_cones(reduction_cones, A, B, C)
     checks.append(Check("the next collision depends on the contact and the plane only: on each of the six cones of "
                         "states, whatever the radial part of the velocity, the particles collide next at the map's "
@@ -825,7 +943,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                         "lemmas with the printed A, B, C); by induction, two trajectories on one plane have the same "
                         "collision types while both last", RC.dynamics_is_proven(cones),
                         [f"{'✓' if c.motion.holds else '✗'} {c.label}: next {c.following}"
-                         for c in cones.values()], obligations=cone_facts(cones.values(), motion=True)))
+                         for c in cones.values()], obligations=cone_facts(cones.values(), motion=True), ref="S6.7"))
     compared = same = 0
     for d in section4_data:
         k = d.realised
@@ -880,6 +998,9 @@ def occurrences(words, pattern: str) -> int:
 
 
 # ---------------------------------------------------------------- S11
+STEP_REFS = {(L, s): f"S11.{2 * k + (1 if s > 0 else 2)}" for k, L in enumerate(LETTERS) for s in (1, -1)}
+
+
 PRINTED_S11 = dict(reduction="infinitely many collisions", realised="a prefix", A=A_PRINTED, B=B_PRINTED, C=C_PRINTED)
 
 
@@ -911,18 +1032,23 @@ def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduct
     claim, extent = statements.count(reduction), statements.extent(realised)     # read whole; unread text fails
     cones = printed_cones(reduction_cones, A, B, C)
     checks = [lemma_check(c) for c in cones.values()]
+    for c, key in zip(checks, cones):
+        c.ref = STEP_REFS[key]
     closed = RC.map_is_proven(cones)
     checks.append(Check(f"every orbit of the reduction off the corners has {reduction}: the six cones hold every "
                         "state off the corners, and each step maps a cone into a cone of the next contact, or onto a "
-                        "corner (n'_j = 0)", closed and claim.infinite, obligations=cone_facts(cones.values())))
+                        "corner (n'_j = 0)", closed and claim.infinite, obligations=cone_facts(cones.values()),
+                        ref="S11.7"))
     checks += [check_of(c.motion) for c in cones.values()]
+    for c in checks[-6:]:
+        c.ref = "S11.8"
     prefix = RC.dynamics_is_proven(cones)
     runs = [(run, d) for d in section4_data for run in d.runs]
     separated = sum(run.stop == "free" for run, d in runs)
     checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence (for every datum, by "
                         "induction on the collisions)", prefix and (extent == "prefix" or separated == 0),
                         [f"{separated} exact runs end because the particles separate while the reduction goes on"],
-                        obligations=cone_facts(cones.values(), motion=True)))
+                        obligations=cone_facts(cones.values(), motion=True), ref="S11.8"))
     lengths = [len(o.word) for o in reduction_scan]
     realise = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)
     evidence = [supporting(f"{len(lengths)} exact orbits from random planes meet no corner in {sum(lengths)} "

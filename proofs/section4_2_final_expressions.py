@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from certify.algebra import r, statements
+from certify.algebra import lam, r, statements
 from certify.algebra import trig as T
 from certify.dynamics import INDEX, LETTERS
 from certify.dynamics import cones as RC
@@ -32,6 +32,7 @@ from certify.run import (
     identity,
     identity_facts,
     kept_facts,
+    named,
     overridden,
     replaced,
     result_check,
@@ -155,8 +156,8 @@ def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
     if w.has(sp.sqrt):
         raise ValueError("the normalisation of p(t1) did not cancel")
     return [first,
-            result_check(f"{label}: the printed p(t1) ∝ `{V_text}` is a positive multiple of the point p(0) + t q(0) "
-                         f"where gap {k + 1} closes", T.positively_proportional(hit, V, H)),
+            combined(f"{label}: the printed p(t1) ∝ `{V_text}` is a positive multiple of the point p(0) + t q(0) "
+                     f"where gap {k + 1} closes", [T.positively_proportional(hit, V, H), T.has_sign(V.dot(hit), 1, H)]),
             combined(f"{label}: p(t1) lies on p_{k + 1} = 0 with its two other components > 0 (θ' ∈ ]0,π/2[)",
                      [T.is_zero(V[k])] + inside),
             combined(f"{label}: the printed radicand `{R_text}` is |p(t1)|², and it is > 0",
@@ -179,9 +180,10 @@ def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
 def trigonometric_version(p0_a, q0_a, p0_b, q0_b, p0_c, q0_c, q_t1, **cases):
     """Signs from the factors under θ ∈ ]0,π/2[, sin φ > 0, 0 < r < 1 and the sign of cos φ."""
     frames = {"a": (vec(p0_a), vec(q0_a)), "b": (vec(p0_b), vec(q0_b)), "c": (vec(p0_c), vec(q0_c))}
-    checks = [contact_frame(c, *frames[c]) for c in LETTERS]
-    for key, spec in cases.items():
-        checks += six_case(key, spec, *frames[CASE_KEYS[key][0]], q_t1)
+    checks = [named(f"S7.1.{k + 1}", contact_frame(c, *frames[c])) for k, c in enumerate(LETTERS)]
+    for n, key in enumerate(CASE_KEYS):       # five statements per case, S7.1.4-8 for the first
+        checks += [named(f"S7.1.{4 + 5 * n + m}", c)
+                   for m, c in enumerate(six_case(key, cases[key], *frames[CASE_KEYS[key][0]], q_t1))]
     return conclude(checks, note="The normalisation of q(t1) divides by a positive norm and changes no sign; it is "
                     "not expanded.  p(t1) is checked up to its normalisation, which is the printed square root.")
 
@@ -236,11 +238,40 @@ def case_is_the_map(key: str, spec: str, p0, q0) -> Check:
     H, K, i = T.hypotheses(s), SECTION2[letter], INDEX[contact]
     u0 = p0.cross(q0)
     rule = T.has_sign(u0[i] * u0[INDEX[j]], 1, H)
-    plane = T.positively_proportional(vec(V_text).cross(K * q0), K.adjugate().T * u0, H)
+    normal, image = vec(V_text).cross(K * q0), K.adjugate().T * u0
+    plane = T.positively_proportional(normal, image, H)
+    t = R.ORIENTATION[j]                                     # the positive multiple, as the formal statement reads it:
+    sides = [T.has_sign(normal[t], 1, H), T.has_sign(image[t], 1, H)]     # parallel, with e_t components > 0
     return Check(f"{label}: the printed step (S7.1) is the projective map's step for every θ, φ in the case: the "
                  f"next contact {j} (u_{i + 1} u_{INDEX[j] + 1} > 0, u = p(0) ∧ q(0)) and the plane, p(t1) ∧ "
-                 f"{letter}q(0) being a positive multiple of cof({letter}) u", rule.holds and plane.holds,
-                 [f"✓ {c.statement}" for c in steps] + [f"u = `{T.show(u0)}`"] + rule.evidence + plane.evidence)
+                 f"{letter}q(0) being a positive multiple of cof({letter}) u", rule.holds and plane.holds and all(sides),
+                 [f"✓ {c.statement}" for c in steps] + [f"u = `{T.show(u0)}`"] + rule.evidence + plane.evidence,
+                 obligations=take(facts_of(rule, plane, *sides)))
+
+
+def case_for_every_radial_part(key: str, spec: str, p0, q0) -> Check:
+    """One printed case for every radial part λ of the velocity (q_λ = q(0) + λ p(0)): the gap j
+    closes at t_j = 1/(λ_j - λ), λ_j = -q_j(0)/p_j(0); the printed gap k and the other one m have
+    λ_m < λ_k, and where both close (λ = λ_m - ν, ν > 0) t_k > 0 and t_m > t_k: the particles
+    collide next at k or never; after it they span K·P(0), p_λ(t_k) ∧ K q_λ ∥ cof(K) u."""
+    contact, s = CASE_KEYS[key]
+    pair, letter, _V, _R = (x.strip() for x in spec.split("|"))
+    j = PAIR.get(pair)
+    if j is None or letter not in SECTION2:
+        return Check(f"contact {contact}, {RANGE[s]}: the printed pair {pair} and matrix {letter}", False)
+    H, K, k = T.hypotheses(s), SECTION2[letter], INDEX[j]
+    m = 3 - INDEX[contact] - k
+    nu = sp.Symbol("ν")
+    q = q0 + lam * p0
+    t_, l_ = {g: -p0[g] / q[g] for g in (k, m)}, {g: -q0[g] / p0[g] for g in (k, m)}
+    at = {lam: l_[m] - nu}
+    parts = [T.equal(1 / t_[k], l_[k] - lam), T.equal(1 / t_[m], l_[m] - lam),
+             T.parallel((p0 + t_[k] * q).cross(K * q), K.adjugate().T * p0.cross(q0)),
+             T.has_sign(l_[k] - l_[m], 1, H), T.has_sign(t_[k].subs(at), 1, H.assume(nu, 1)),
+             T.has_sign((t_[m] - t_[k]).subs(at), 1, H.assume(nu, 1))]
+    return combined(f"contact {contact}, {RANGE[s]}, any radial part λ of the velocity: the gaps {k + 1}, {m + 1} close "
+                    f"at t = 1/(λ_j - λ), λ_{m + 1} < λ_{k + 1}, and where both close t_{k + 1} < t_{m + 1}: the particles "
+                    f"collide next at the printed {pair}, or never, and then span {letter}·P(0)", parts)
 
 
 @certificate("S7.2", "l. 877-929",
@@ -260,7 +291,10 @@ def trigonometric_map_agrees_with_dynamics(section4_data, reduction_cones, **pri
     balls (128 bits) against θ, φ of the exact state k+1."""
     checks = engine_is_printed(printed)
     frames = {c: (T.vector(printed[f"p0_{c}"]), T.vector(printed[f"q0_{c}"])) for c in LETTERS}
-    checks += [case_is_the_map(key, printed[key], *frames[c]) for key, (c, _s) in CASE_KEYS.items()]
+    checks += [named(f"S7.2.{n + 1}", case_is_the_map(key, printed[key], *frames[c]))
+               for n, (key, (c, _s)) in enumerate(CASE_KEYS.items())]
+    checks += [named(f"S7.2.{n + 7}", case_for_every_radial_part(key, printed[key], *frames[c]))
+               for n, (key, (c, _s)) in enumerate(CASE_KEYS.items())]
     checks.append(Check("the particles follow the projective map: on each of the six cones of states they collide "
                         "next at its contact, or never, and then span its plane (step and particle lemmas, S11)",
                         RC.dynamics_is_proven(reduction_cones), obligations=cone_facts(reduction_cones.values(), True)))
@@ -299,9 +333,11 @@ def trilinear(text: str, letter: str, u0, p1, q0, H: T.Signs, axis, tφ: str) ->
     normal = p1.cross(K * q0)
     prop = T.positively_proportional(u1, normal, H)
     orient = T.has_sign(axis.dot(normal), 1, H)
+    own = T.has_sign(axis.dot(u1), 1, H)       # with orient: parallel vectors with e_t components > 0 (the formal reading)
     ev = prop.evidence + orient.evidence + ([] if prop.holds else not_normal(u1, p1, H, tφ))
     return Check(f"l. 976-980: ũ(1) = `{text}` is a positive multiple of p(1) ∧ {letter}q(0), "
-                 f"the normal of P(1) with e_t·u(1) > 0 ({RANGE[H.sign(cφ)]})", prop.holds and orient.holds, ev)
+                 f"the normal of P(1) with e_t·u(1) > 0 ({RANGE[H.sign(cφ)]})", prop.holds and orient.holds and own.holds,
+                 ev, obligations=take(facts_of(prop, orient, own)))
 
 
 @certificate("S8.1", "l. 931-987",
@@ -327,18 +363,21 @@ def vectorial_version(p0, q0, u0, ey_dot_u0, orientation, u0_wedge_ey, u0_wedge_
         combined(f"l. 949: e_y·u(0) = `{ey_dot_u0}` ≥ 0, and e_t·u(0) ≥ 0 with the printed convention t = ({orientation})",
                  [T.equal(T.E_Y.dot(u0), ey_u), T.has_sign(ey_u, 1, H), T.has_sign(axes["a"].dot(u0), 1, H)]),
         combined("l. 958-960: u(0) ∧ e_y is the printed vector, a positive multiple of p(1) when the next collision is b",
-                 [T.equal(u0.cross(T.E_Y), Wy), T.positively_proportional(Wy, p1b, pos)]),
+                 [T.equal(u0.cross(T.E_Y), Wy), T.positively_proportional(Wy, p1b, pos), T.has_sign(Wy.dot(p1b), 1, pos)]
+                 + [T.has_sign(w, 1, pos) for w in Wy if w != 0]),
         combined("l. 962-963: u(0) ∧ e_z is the printed vector, a positive multiple of p(1) when the next collision is c",
-                 [T.equal(u0.cross(T.E_Z), Wz), T.positively_proportional(Wz, p1c, neg)]),
+                 [T.equal(u0.cross(T.E_Z), Wz), T.positively_proportional(Wz, p1c, neg), T.has_sign(Wz.dot(p1c), 1, neg)]
+                 + [T.has_sign(w, 1, neg) for w in Wz if w != 0]),
         combined("l. 967-969: u(0) ∧ e_x is the printed vector, of orientation opposite to p(0); e_x ∧ u(0) ∝ p(0) > 0",
                  [T.equal(u0.cross(T.E_X), Wx), T.positively_proportional(-Wx, p0, H),
                   T.positively_proportional(T.E_X.cross(u0), p0, H)]),
         combined("l. 971: u(0) ∧ p(0) is the printed vector, which is q(0)", [T.equal(u0.cross(p0), Wp), T.equal(Wp, q0)]),
         trilinear(trilinear_b, "B", u0, p1b, q0, pos, axes["b"], "1/2"),
     ]
-    printed_c = trilinear(trilinear_c, "C", u0, p1c, q0, neg, axes["c"], "2")
+    checks = [named(f"S8.1.{k + 1}", c) for k, c in enumerate(checks)]
+    printed_c = named("S8.1.8", trilinear(trilinear_c, "C", u0, p1c, q0, neg, axes["c"], "2"))
     fixed_c = statements.corrected(trilinear_c, *TRILINEAR_C_CORRECTION)
-    corrected_c = (trilinear(fixed_c, "C", u0, p1c, q0, neg, axes["c"], "2") if fixed_c else
+    corrected_c = (named("S8.1.9", trilinear(fixed_c, "C", u0, p1c, q0, neg, axes["c"], "2")) if fixed_c else
                    Check(f"the stated correction `{TRILINEAR_C_CORRECTION[0]}` → `{TRILINEAR_C_CORRECTION[1]}` "
                          f"applies to the printed `{trilinear_c}`", False))
     return concluded(checks + [printed_c], checks + [corrected_c], kind=MISPRINT, misprint=E_Y_FOR_E_Z,
@@ -358,6 +397,26 @@ def trilinear_on_cone(text: str | None, st: RC.Step) -> T.Result:
     u = tuple(RC.N)
     ut = R.formula(text)(u, r) if text else R.trilinear(st.contact, st.following, u, r)
     return T.positively_proportional(sp.Matrix(ut), st.normal, st.H)
+
+
+def trig_trilinear(text: str | None, contact: str, following: str, s: int, axes: dict) -> list[T.Result]:
+    """The formula ``text`` (the relabelled one when None) at u = p(0) ∧ q(0) of the contact's
+    printed frame (S7.1), for every radial part λ of the velocity (q_λ = q(0) + λ p(0)): parallel
+    to p_λ(t_j) ∧ K_j q_λ (t_j the time the gap j closes), and where the collision happens
+    (λ = λ_j - 1/τ, λ_j = -q_j(0)/p_j(0), τ = t_j > 0) both have a positive component t, the axis of
+    the contact j (``axes``, the printed convention)."""
+    p0, q0 = T.vector(CONTACT_P0[contact]), T.vector(CONTACT_Q0[contact])
+    q, u = q0 + lam * p0, p0.cross(q0)
+    i, j, K = INDEX[contact], INDEX[following], SECTION2[following.upper()]
+    if text:
+        ut = T.parse(text, u0=u, **UNIT, **SECTION2)
+    else:
+        ut = u.cross(sp.eye(3).col(j)).cross(K * u.cross(sp.eye(3).col(i).cross(u)))
+    tau = sp.Symbol("τ")
+    normal = (p0 + tau * q).cross(K * q).subs(lam, -q0[j] / p0[j] - 1 / tau)
+    t = [k for k in range(3) if axes[following][k]][0]
+    H = T.hypotheses(s).assume(tau, 1)
+    return [T.parallel(ut, (p0 - p0[j] / q[j] * q).cross(K * q)), T.has_sign(ut[t], 1, H), T.has_sign(normal[t], 1, H)]
 
 
 def not_normal_at(text: str, st: RC.Step) -> tuple[bool, str]:
@@ -389,42 +448,59 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
     the other contacts use the relabelled formula (:func:`certify.dynamics.reduction.trilinear`,
     "in a similar manner", l. 987).  A printed formula that fails is refuted at an exact
     state of its cone.  The exact runs are supporting evidence."""
-    axes = {c: [k for k in range(3) if e[k]][0] for c, e in orientation_axes(orientation).items()}
+    unit = orientation_axes(orientation)
+    axes = {c: [k for k in range(3) if e[k]][0] for c, e in unit.items()}
     cones = reduction_cones
     lemmas = RC.dynamics_is_proven(cones)
     orient = [T.has_sign(RC.N[axes[c]], 1, st.H) for (c, _s), st in cones.items()]
+    # the formal statements read the same in the printed frames (S7.1), for every radial part λ:
+    # e_t·(p(0) ∧ q_λ(0)) = sin θ sin φ > 0, and the formulas by trig_trilinear
+    frames = {c: (T.vector(CONTACT_P0[c]), T.vector(CONTACT_Q0[c])) for c in LETTERS}
+    trig_orient = [T.equal(unit[c].dot(p0.cross(q0 + lam * p0)), T.sθ * sφ) for c, (p0, q0) in frames.items()]
+    trig_orient.append(T.has_sign(T.sθ * sφ, 1, T.hypotheses()))
     a_b, a_c = cones[("a", 1)], cones[("a", -1)]
     on_b, on_c = trilinear_on_cone(to_b, a_b), trilinear_on_cone(to_c, a_c)
+    trig_b, trig_c = trig_trilinear(to_b, "a", "b", 1, unit), trig_trilinear(to_c, "a", "c", -1, unit)
     relabelled = [trilinear_on_cone(None, st) for st in cones.values()]
+    trig_relabelled = [x for c, f, s in (("b", "c", 1), ("b", "a", -1), ("c", "a", 1), ("c", "b", -1))
+                       for x in trig_trilinear(None, c, f, s, unit)]
     premise = "; with the step and particle lemmas on the six cones (S11)"
 
     def grounds(*results) -> list[str]:      # the lemmas on the cones, and the results read on them
         return cone_facts(cones.values(), motion=True) + take(facts_of(*results))
+
+    def evidence(results) -> list[str]:
+        return [e for x in results for e in x.evidence[:1]]
     printed = [Check(f"u(k) = p(k) ∧ q(k) = αρ n satisfies the orientation e_t · u(k) > 0 (t = {orientation}) on every "
-                     "cone of states", lemmas and all(orient), [e for o in orient for e in o.evidence[:1]]),
+                     "cone of states", lemmas and all(orient) and all(trig_orient), evidence(orient + trig_orient),
+                     obligations=take(facts_of(*orient, *trig_orient)), ref="S8.2.1"),
                Check(f"contact a, next b: `{to_b}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
-                     lemmas and a_b.following == "b" and on_b.holds, on_b.evidence, obligations=grounds(on_b)),
+                     lemmas and a_b.following == "b" and on_b.holds and all(trig_b), on_b.evidence + evidence(trig_b),
+                     obligations=grounds(on_b, *trig_b), ref="S8.2.2"),
                Check(f"contact a, next c: `{to_c}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
-                     lemmas and a_c.following == "c" and on_c.holds,
-                     on_c.evidence + ([] if on_c.holds else [not_normal_at(to_c, a_c)[1]]), obligations=grounds(on_c)),
+                     lemmas and a_c.following == "c" and on_c.holds and all(trig_c),
+                     on_c.evidence + evidence(trig_c) + ([] if on_c.holds else [not_normal_at(to_c, a_c)[1]]),
+                     obligations=grounds(on_c, *trig_c), ref="S8.2.3"),
                Check(f"every contact: the relabelled formula [u ∧ e_j] ∧ [K_j(u ∧ [e_i ∧ u])] ∝ p(1) ∧ q(1), "
-                     f"positively, for every state{premise}", lemmas and all(relabelled),
-                     [e for x in relabelled for e in x.evidence[:1]], obligations=grounds(*relabelled))]
+                     f"positively, for every state{premise}", lemmas and all(relabelled) and all(trig_relabelled),
+                     evidence(relabelled + trig_relabelled), obligations=grounds(*relabelled, *trig_relabelled),
+                     ref="S8.2.5")]
     corrected = []
     fixed = statements.corrected(to_c, *TRILINEAR_C_CORRECTION)     # the correction stated once, for S8.1 too
     if not printed[2].holds and fixed:
         on_fixed = trilinear_on_cone(fixed, a_c)
+        trig_fixed = trig_trilinear(fixed, "a", "c", -1, unit)
         refuted, witness = not_normal_at(to_c, a_c)
         corrected = [printed[0], printed[1],
                      Check(f"contact a, next c, with p(1) ∝ u(0) ∧ e_z (as in l. 962): `{fixed}` ∝ p(1) ∧ q(1), "
                            f"positively, for every state{premise}; the printed one is refuted at an exact state",
-                           lemmas and a_c.following == "c" and on_fixed.holds and refuted,
-                           on_fixed.evidence + [witness], corrects=printed[2],
-                           obligations=grounds(on_fixed) + fact_ids(lambda: {"kind": "unsupported", "reason": (
+                           lemmas and a_c.following == "c" and on_fixed.holds and all(trig_fixed) and refuted,
+                           on_fixed.evidence + evidence(trig_fixed) + [witness], corrects=printed[2],
+                           obligations=grounds(on_fixed, *trig_fixed) + fact_ids(lambda: {"kind": "unsupported", "reason": (
                                "the printed formula refuted at an exact state of the cone: the obligation language "
-                               "has no evaluation at a point")})), printed[3]]
-    evidence = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
-    return conclude(printed, corrected, evidence=evidence, kind=MISPRINT, misprint=E_Y_FOR_E_Z)
+                               "has no evaluation at a point")}), ref="S8.2.4"), printed[3]]
+    evidence_runs = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
+    return conclude(printed, corrected, evidence=evidence_runs, kind=MISPRINT, misprint=E_Y_FOR_E_Z)
 
 
 def tally_runs(section4_data, orientation, to_b, to_c) -> str:

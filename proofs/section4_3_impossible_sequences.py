@@ -132,6 +132,13 @@ def next_angle_sign(contact: str, letter: str, cos_phi: int, axis_index: int, fo
                      f"{'>' if cos_phi > 0 else '<'} 0: cos φ' {'>' if cos_phi > 0 else '<'} 0", [triple, value, sign])]
 
 
+def referring(ref: str, *checks: Check) -> list[Check]:
+    """The checks, each deciding the formal statement ``ref`` (statements/4_dynamics.txt)."""
+    for c in checks:
+        c.ref = ref
+    return list(checks)
+
+
 @certificate("S9.1", "l. 997-1035",
              "Proposition 4.4: no aca and no cac, by the printed argument: after a then c, q(k+1) ∝ Cq(k) - "
              "(Cq(k)·p(k))p(k) as printed, whose first component sin φ > 0 gives cos φ' < 0, so the next collision is b.",
@@ -157,22 +164,24 @@ def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read
     w = T.parse(q_next, Cq=C * qk, pk=pk)
     n = Pn.cross(C * qk)                                   # normal of P(k+1) = Span(p(k+1), C q(k))
     j = int(read_component) - 1
-    algebra = [identity("l. 1020: C q(k) (C of Section 2) is member 1", C * qk, CQ[0])] + links("C q(k)", CQ, "1020") + [
-        matrices_are("c", seen, "1020"),
-        identity("l. 1016, 1024: the printed Cq(k) - (Cq(k)·p(k))p(k) is member 1 of l. 1024-1031", w, PR[0]),
-        *links("the projection", PR, "1024-1031"),
-        result_check("l. 1012: p(k+1) ∝ the printed (sinθ sinφ, -cosφ, 0), a positive multiple of the hit point",
-                     T.positively_proportional(hit_point(pk, qk, 2), Pn, neg)),
-        identity(f"l. 1033: component {j + 1} of the printed vector is sin φ, and component {j + 1} of the form "
-                 f"`{form_c}` of q(k+1) is -sinθ' cosφ' (frame of contact c)", sp.Matrix([w[j], vec(form_c)[j]]),
-                 sp.Matrix([sφ, -sθ * cφ]))]
+    algebra = referring("S9.1.1", identity("l. 1020: C q(k) (C of Section 2) is member 1", C * qk, CQ[0])) + \
+        referring("S9.1.2", *links("C q(k)", CQ, "1020")) + \
+        referring("S9.1.3", matrices_are("c", seen, "1020")) + \
+        referring("S9.1.4", identity("l. 1016, 1024: the printed Cq(k) - (Cq(k)·p(k))p(k) is member 1 of l. 1024-1031",
+                                     w, PR[0])) + \
+        referring("S9.1.5", *links("the projection", PR, "1024-1031")) + \
+        referring("S9.1.6", result_check("l. 1012: p(k+1) ∝ the printed (sinθ sinφ, -cosφ, 0), a positive multiple of "
+                                         "the hit point", T.positively_proportional(hit_point(pk, qk, 2), Pn, neg))) + \
+        referring("S9.1.7", identity(f"l. 1033: component {j + 1} of the printed vector is sin φ, and component {j + 1} "
+                                     f"of the form `{form_c}` of q(k+1) is -sinθ' cosφ' (frame of contact c)",
+                                     sp.Matrix([w[j], vec(form_c)[j]]), sp.Matrix([sφ, -sθ * cφ])))
     in_plane = [T.is_zero(w.dot(Pn)), T.is_zero(w.dot(n))]
     pt = T.point("1/2", "2", r="1/3")
     vector_claim = Check("l. 1014-1016: q(k+1) is a positive multiple of the printed Cq(k) - (Cq(k)·p(k))p(k): it should "
                          "be orthogonal to p(k+1) and lie in P(k+1)", all(in_plane),
                          [f"·p(k+1): {'; '.join(in_plane[0].evidence)}", f"·(p(k+1) ∧ Cq(k)): {'; '.join(in_plane[1].evidence)}",
                           f"at cos θ = {pt[cθ]}, cos φ = {pt[cφ]}, r = 1/3: ·p(k+1) = {T.at(w.dot(Pn), pt)}, "
-                          f"·(p(k+1) ∧ Cq(k)) = {T.at(w.dot(n), pt)}"])
+                          f"·(p(k+1) ∧ Cq(k)) = {T.at(w.dot(n), pt)}"], ref="S9.1.8")
     w_true = C * qk - (C * qk).dot(Pn) / Pn.dot(Pn) * Pn
     true_first = T.has_sign(w_true[0], 1, neg)
     aca = next_angle_sign("a", "C", -1, 2, SIGN_C)
@@ -184,16 +193,16 @@ def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read
     # certified: cos φ' < 0 (aca[1]) and sin φ' > 0 (φ' ∈ ]0,π[ by definition); the printed conclusion read on them
     read = statements.relation(conclusion, {"cos(φ')": COS_NEXT, "sin(φ')": SIN_NEXT}).holds({COS_NEXT: -1, SIN_NEXT: 1})
     concl = Check(f"l. 1033-1034: {conclusion}, so c_(k+2) = b (no aca)", aca[1].holds and read and then_b[0].holds,
-                  aca[1].evidence)
+                  aca[1].evidence, ref="S9.1.9")
     projection = combined("corrected: q(k+1) ∝ Cq(k) - (Cq(k)·p(k+1))p(k+1)/|p(k+1)|², the projection on p(k+1)^⊥: "
                           "orthogonal to p(k+1), in P(k+1)", [T.is_zero(w_true.dot(Pn)), T.is_zero(w_true.dot(n))])
-    projection.corrects = vector_claim
+    projection.corrects, projection.ref = vector_claim, "S9.1.10"
     corrected = algebra + [
         projection,
         frame_lemma("c", CONTACT_P0["c"], CONTACT_Q0["c"]),
         *aca, then_b[0], concl,
-        result_check("its first component is > 0 as well (the printed reading of the sign gives the right answer for "
-                     "the right vector)", true_first),
+        *referring("S9.1.10", result_check("its first component is > 0 as well (the printed reading of the sign gives the "
+                                           "right answer for the right vector)", true_first)),
         frame_lemma("a", CONTACT_P0["a"], CONTACT_Q0["a"]),
         *cac, then_b[1],
         Check("no cac: after c then a, cos φ' > 0 and the next collision is b", all(cac) and then_b[1].holds,
@@ -247,13 +256,13 @@ def no_aca_cac_for_every_orbit(reduction_cones, reduction_scan, section4_data, a
     scan = [o.word for o in reduction_scan]
     physical = [run.word for d in section4_data for run in d.runs]
     checks, evidence = [], []
-    for text in (aca, cac):
+    for ref, text in (("S9.2.1", aca), ("S9.2.2", cac)):
         pair, excluded = implication(text)
         x, y = (pair + "??")[:2]
         cases = [c for c in reduction_cones.values() if c.contact == x and c.following == y]
         pattern = pair + excluded
         if len(cases) != 1:
-            checks.append(Check(f"{text}: no state of contact {x} has the next collision {y}", False))
+            checks.append(Check(f"{text}: no state of contact {x} has the next collision {y}", False, ref=ref))
             continue
         c = cases[0]
         res = c.excludes(excluded)
@@ -261,7 +270,7 @@ def no_aca_cac_for_every_orbit(reduction_cones, reduction_scan, section4_data, a
                             f"the next normal n' has n'_{INDEX[y] + 1} n'_{INDEX[excluded] + 1} < 0, so the collision "
                             f"after {y} is not {excluded} (for every orbit)", c.holds and res.holds,
                             [f"n' ∝ p' ∧ {y.upper()} w = `{T.show(c.normal)}`"] + res.evidence
-                            + ([] if c.holds else lemma_check(c).evidence)))
+                            + ([] if c.holds else lemma_check(c).evidence), ref=ref))
         evidence.append(supporting(
             f"{pattern} occurs {occurrences(scan, pattern)} times in {sum(map(len, scan))} collisions of {len(scan)} "
             f"exact reduction orbits and {occurrences(physical, pattern)} times in {sum(map(len, physical))} "
@@ -349,11 +358,11 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
     printed = [Check(f"{window}: every admissible window b… of length {max(ks) + 1} has b at the stated places (for "
                      "every orbit)", lemma and seen == good > 0,
                      [f"allowed after each proven step: {rules}", f"{good} of {seen}: {', '.join(starts_b)}"],
-                     obligations=grounds()),
+                     obligations=grounds(), ref="S10.1"),
                Check("b occurs infinitely often: every admissible window of length 3 contains b, and every orbit off "
                      "the corners has infinitely many collisions (the step lemma on the six cones, S11)",
                      lemma and all("b" in w for w in three), [f"{len(three)} windows: {', '.join(three)}"],
-                     obligations=grounds())]
+                     obligations=grounds(), ref="S10.2")]
     width = max(len(B) for B in blks)
     uncovered = [w for w in RC.admissible(width, allowed) if w[0] != "b" and not any(w.startswith(B) for B in blks)]
     induction = lemma and not uncovered and all(B.endswith("b") for B in blks)
@@ -367,12 +376,12 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
                     f"{', '.join(uncovered) or 'none'}; every block ends with b, and no letter follows itself"]
     leading_b = [w for w in scan if w.startswith("b")]
     printed.append(Check(f"every pattern is a concatenation of {', '.join(blks)}", induction and not first_b,
-                         witness + induction_ev, obligations=grounds()))
+                         witness + induction_ev, obligations=grounds(), ref="S10.3"))
     corrected = printed[:2] + [
         Check(f"c_1 c_2 …, without its first letter when that is b, is a concatenation of {', '.join(blks)}: each "
               "admissible window that does not start with b starts with a block, which ends with b, so the next "
               "letter is not b again (induction along the word)", induction, induction_ev, corrects=printed[2],
-              obligations=grounds())]
+              obligations=grounds(), ref="S10.4")]
     evidence = [supporting(f"{window} at {s_good} of {s_seen} collisions b of the scan ({len(scan)} exact orbits, "
                            f"{sum(map(len, scan))} collisions); {sum(parses(w, blks) for w in scan)} of {len(scan)} "
                            f"orbit words parse as printed, {len(leading_b)} start with b, e.g. "

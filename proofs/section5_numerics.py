@@ -18,10 +18,12 @@ from __future__ import annotations
 
 import math
 
+import flint
 import numpy as np
+import sympy as sp
 
 import certify.numerics as F
-from certify.algebra import Q, radical
+from certify.algebra import Algebraic, Q, radical
 from certify.numerics import BREAKS, paper_grid
 from certify.patterns import island_theorem as island
 from certify.run import (
@@ -111,14 +113,14 @@ def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
     theta0, phi0 = paper_grid()
     checks = [
         Check(f"the figures at the paper's resolution run to the {collisions}-th collision",
-              F.PAPER["collisions"] == number(collisions), [f"certify.numerics.figures.PAPER = {F.PAPER}"]),
-        Check(f"they keep the last {kept} b-collisions", F.PAPER["keep"] == number(kept)),
+              F.PAPER["collisions"] == number(collisions), [f"certify.numerics.figures.PAPER = {F.PAPER}"], ref="N1.1"),
+        Check(f"they keep the last {kept} b-collisions", F.PAPER["keep"] == number(kept), ref="N1.2"),
         Check(f"the orbits of a figure are a regular grid of {theta_values} values of θ0 × {phi_values} of φ0",
               len(set(np.round(theta0, 12))) == number(theta_values) and len(set(np.round(phi0, 12))) == number(phi_values)
               and len(theta0) == number(theta_values) * number(phi_values),
               [f"θ0 = {', '.join(f'{t:.6f}' for t in sorted(set(np.round(theta0, 6))))}, φ0 = "
                f"{', '.join(f'{t:.6f}' for t in sorted(set(np.round(phi0, 6))))} (paper_grid; the "
-               "paper does not print its grid)"]),
+               "paper does not print its grid)"], ref="N1.3"),
     ]
     # the φ the engine keeps is the φ of the printed velocity q(b_n)
     env = {"cos": math.cos, "sin": math.sin}
@@ -128,13 +130,13 @@ def setup(collisions, kept, theta_values, phi_values, velocity, breaks):
         q = tuple(eval(e, {"__builtins__": {}}, {**env, "theta": theta, "phi": phi}) for e in velocity)
         worst = max(worst, abs(F.phi_at_b(p, q) - phi))
     checks.append(Check(f"the angle the engine keeps is the φ of q(b_n) = ({', '.join(velocity)})", worst < 1e-12,
-                        [f"largest |φ_engine − φ| over {len(samples)} states: {worst:.1e}"]))
+                        [f"largest |φ_engine − φ| over {len(samples)} states: {worst:.1e}"], ref="N1.4"))
     names = list(BREAKS.values())
     rules = {"time": any("time step" in b for b in names), "cos": any("cos φ" in b for b in names)}
     printed_rules = [("time" if "collision times" in b else "cos" if "cos" in b else None) for b in breaks]
     checks.append(Check("the engine breaks on each printed rule: " + "; ".join(breaks),
                         all(k is not None and rules[k] for k in printed_rules),
-                        ["the engine's break codes: " + "; ".join(f"{c}: {b}" for c, b in BREAKS.items())]))
+                        ["the engine's break codes: " + "; ".join(f"{c}: {b}" for c, b in BREAKS.items())], ref="N1.5"))
     return observe(checks, note="The paper does not print its 8 initial data; the tool's grid of 8: θ0 ∈ {π/6, π/3}, "
                                 "φ0 ∈ {π/5, 2π/5, 3π/5, 4π/5} at contact b.")
 
@@ -183,29 +185,29 @@ def figure_5_1(section5_preview, lo, hi, step, count, windows_below, chaos_until
     checks = [
         Check(f"the printed grid is consistent: {lo} + k·{step}, k < {count}, ends at {hi}",
               abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and spec.count == count_ and spec.lo == lo_ and spec.hi == hi_,
-              [f"{lo} + ({count} − 1)·{step_:g} = {lo_ + (count_ - 1) * step_:.6f}"]),
+              [f"{lo} + ({count} − 1)·{step_:g} = {lo_ + (count_ - 1) * step_:.6f}"], ref="N2.1"),
         Check(f"windows of stability for r ≤ {windows_below}: the 8 orbits converge to finitely many points on a "
               f"good part (≥ 30 %) of the r values there, and on few (< 10 %) of those in [{below + 0.01:g}, {until:g}]",
               points_below[0] >= 0.3 and points_above[0] < 0.1,
               [f"finitely many points: {points_below[0]:.0%} of {points_below[1]} r in [{lo}, {windows_below}], "
-               f"{points_above[0]:.0%} of {points_above[1]} r in [{below + 0.01:g}, {chaos_until}]"]),
+               f"{points_above[0]:.0%} of {points_above[1]} r in [{below + 0.01:g}, {chaos_until}]"], ref="N2.2"),
         Check(f"apparent chaos up to r ≈ {chaos_until}: the orbits spread (more than {F.MAX_PIECES} clusters) for "
               f"most (≥ 70 %) r in [{below + 0.01:g}, {until:g}]", spread[0] >= 0.7,
-              [f"spread at {spread[0]:.0%} of {spread[1]} values of r"]),
+              [f"spread at {spread[0]:.0%} of {spread[1]} values of r"], ref="N2.3"),
         Check(f"discrete ω-limit sets near r = {discrete_near}: in [{near1 - 0.01:g}, {near1:g}] every orbit's points "
               f"lie in at most {F.MAX_PIECES} clusters narrower than a pixel (π/1000)", top[1] > 0 and top[0] == 1.0,
-              [f"{top[0]:.0%} of {top[1]} values of r"]),
+              [f"{top[0]:.0%} of {top[1]} values of r"], ref="N2.4"),
         Check(f"l. 1089: a short segment of breaks around {segment_at}: the engine breaks at some r of the "
               f"figure's range within {SEGMENT} of {seg:g}", on_segment.size > 0,
               [f"{breaks.size} breaks in the figure's range (its preview; probes of 11 r in [{lo}, {lo_ + 0.0025:g}] "
                f"and 11 r in [{seg - SEGMENT:g}, {seg + SEGMENT:g}], 10^4 collisions)"
-               + (f", at r in [{breaks.min():.5f}, {breaks.max():.5f}]" if breaks.size else "")]),
+               + (f", at r in [{breaks.min():.5f}, {breaks.max():.5f}]" if breaks.size else "")], ref="N2.5"),
         Check(f"l. 1090: the breaks accumulate close to r ≃ {breaks_near}: the engine breaks, in the figure's range "
               f"or just below it, and every break lies within {NEAR} of {breaks_near}",
               seen.size > 0 and bool(np.all(np.abs(seen - near_b) <= NEAR)),
               [f"just below the figure's range, 7 values of r in [{near_b - 0.0004:g}, {near_b - 0.0001:g}] "
                f"(7 − 4√3 ≈ 0.071797): {outside.size} breaks of 56 orbits"
-               + (f", at r ≤ {outside.max():.5f}" if outside.size else "")]),
+               + (f", at r ≤ {outside.max():.5f}" if outside.size else "")], ref="N2.6"),
     ]
     reason = (f"no break in the figure's range {lo} ≤ r ≤ {hi} (the paper's segment of breaks around {segment_at}, "
               "l. 1089, is not there); " + (f"the engine breaks only just below it, at r ≤ {outside.max():.4f} "
@@ -255,14 +257,15 @@ def figure_5_2(section5_preview, lo, hi, step, count, points, windows):
     probes = F.probe(F.n3_window_probes())
     stats = F.n3_stats(d, probes)
     checks = [Check(f"the printed grid is consistent: {lo} + k·{step}, k < {count}, ends at {hi}",
-                    abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and F.SPECS["5.2"].count == count_)]
-    for n, want, name in zip((2, 3, 4, 5), points, windows):
+                    abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and F.SPECS["5.2"].count == count_, ref="N3.1")]
+    for k, (n, want, name) in enumerate(zip((2, 3, 4, 5), points, windows)):
         s = stats[str(n)]
         checks.append(Check(f"{want} accumulation points in the {name} window (n = {n}, r in "
                             f"[{s['window'][0]:.5f}, {s['window'][1]:.5f}])",
                             s["count"] == int(number(want)),
                             [f"most frequent count {s['count']} at {s['shown_by']} of {s['of']} values of r; all counts "
-                             f"(count: values of r; none = not finitely many points): {s['counts']}"]))
+                             f"(count: values of r; none = not finitely many points): {s['counts']}"],
+                            ref=f"N3.{k + 2}"))
     note = paper_note("n3", lambda s: "; ".join(
         f"n = {n}: {v['count']} points at {v['shown_by']} of {v['of']} values of r" for n, v in s.items()) + ".") \
         + figure_links("5.2", "5.3a")
@@ -300,14 +303,14 @@ def below_0078(float64_engine, r_below, n_from, accumulate_above):
     checks.append(Check(f"a float64 program cannot follow (ab)^n(cb)^n for n ≥ {n_from} below r = {r_below}",
                         not followed,
                         ["our float64 engine (margin rule, rescaled normals), at r = r_max(n) − 5 % of the gap to "
-                         "r_max(n+1): " + ", ".join(f"n = {n}: {seen[n]} points" for n in seen)]))
+                         "r_max(n+1): " + ", ".join(f"n = {n}: {seen[n]} points" for n in seen)], ref="N4.1"))
     r6 = th[n0] - 0.05 * (th[n0] - th[n0 + 1])
     small = F.min_component(n0, r6)
     checks.append(Check(f"at n = {n_from} the dominant eigenvector has a component below the float64 precision "
                         f"(2^-52 ≈ 2.2e-16, relative to its largest)", small < 2.0 ** -52,
                         [f"min |e_i| / max |e_i| = {small:.2e} at r = {r6:.10f} (mpmath, {F.digits_for(n0)} digits; M_w with "
                          f"w = (ab)^{n0}(cb)^{n0}, whose dominant eigenvector is that of J(BA)^n up to the order "
-                         "of the product)"]))
+                         "of the product)"], ref="N4.2"))
     if committed:
         ns = [int(n) for n in committed["ns"]]
         found = [n for n in ns if committed["windows"][str(n)]["mp"]["found"]]
@@ -316,10 +319,11 @@ def below_0078(float64_engine, r_below, n_from, accumulate_above):
         rcrit = 7 - 4 * math.sqrt(3)
         checks.append(Check(f"the windows exist beyond n = {n_from}: with enough digits (mp engine) the orbits "
                             "converge to 2n points and follow (ab)^n(cb)^n for every n tried",
-                            found == ns, [f"n tried: {ns}; found: {found}; largest n: {committed['largest_n_mp']}"]))
+                            found == ns, [f"n tried: {ns}; found: {found}; largest n: {committed['largest_n_mp']}"],
+                            ref="N4.3"))
         checks.append(Check(f"they accumulate above {accumulate_above}: r_max(n) decreases to 7-4√3 ≈ {rcrit:.6f}, "
                             "staying above it", all(a > b > rcrit for a, b in zip(rmax, rmax[1:])),
-                            [", ".join(f"r_max({n}) = {r:.10f}" for n, r in zip(ns, rmax))]))
+                            [", ".join(f"r_max({n}) = {r:.10f}" for n, r in zip(ns, rmax))], ref="N4.4"))
         f64 = committed.get("largest_n_float64")
         ev.append(f"committed search (`certify figures --n4 {max(ns)}`): mp engine at "
                   f"40 + 1.5n digits, 2 orbits, max(10^4, 400n) collisions, r = r_max(n) − f (r_max(n) − r_max(n+1)) "
@@ -327,7 +331,9 @@ def below_0078(float64_engine, r_below, n_from, accumulate_above):
                   "dominant eigenvector: " + ", ".join(f"n = {n}: {c:.1e}" for n, c in zip(ns, below) if c))
     else:
         checks.append(Check("the windows exist beyond n = 6 (mp search)", False,
-                            ["no committed search: run `python -m certify figures --n4 NMAX`"]))
+                            ["no committed search: run `python -m certify figures --n4 NMAX`"], ref="N4.3"))
+        checks.append(Check(f"they accumulate above {accumulate_above} (mp search)", False,
+                            ["no committed search: run `python -m certify figures --n4 NMAX`"], ref="N4.4"))
     f64 = committed.get("largest_n_float64") if committed else None
     note = ("The thresholds r_max(n) for n > 6 are computed numerically (mpmath: the root of q_2(0) = 0 for the "
             "dominant eigenvector of M_w, CLAIMS L6; for n = 2..6 they reproduce the printed values of L4). "
@@ -375,12 +381,13 @@ def transitory(section5_preview, lo, hi, fig_lo, fig_hi, step, count, explained)
     counts = sorted({w.clusters for w in F.per_r(inside) if w.few_points})
     checks = [
         Check(f"the printed grid is consistent: {fig_lo} + k·{step}, k < {count}, ends at {fig_hi}",
-              abs(flo + (count_ - 1) * step_ - fhi) < 1e-9 and F.SPECS["5.4"].count == count_),
+              abs(flo + (count_ - 1) * step_ - fhi) < 1e-9 and F.SPECS["5.4"].count == count_, ref="N5.1"),
         Check(f"for most r in [{lo}, {hi}] (≥ 50 %) the orbits accumulate on finitely many points (at most "
               f"{F.FEW} clusters, each narrower than a pixel, π/1000)",
-              finite[0] >= 0.5, [f"{finite[0]:.0%} of {finite[1]} values of r; the numbers of points seen: {counts}"]),
+              finite[0] >= 0.5, [f"{finite[0]:.0%} of {finite[1]} values of r; the numbers of points seen: {counts}"],
+              ref="N5.2"),
         Check(f"the region is transitory: just above it ([{hi_ + 0.002:g}, {hi_ + 0.006:g}]) this is rare (< 20 %)",
-              outside[0] < 0.2, [f"{outside[0]:.0%} of {outside[1]} values of r"]),
+              outside[0] < 0.2, [f"{outside[0]:.0%} of {outside[1]} values of r"], ref="N5.3"),
     ]
     note = paper_note("n5", lambda s: f"finitely many points at {s['finite']:.0%} of {s['of']} values of r in "
                       f"[0.172, 0.176]; the numbers of points seen: {s['counts']}.") + figure_links("5.3b", "5.4")
@@ -411,8 +418,8 @@ def stripes(section5_preview, stripes, special, lo, hi, step, count, explained):
     lo_, hi_, step_, count_, r_star = (number(x.replace("{", "").replace("}", ""))
                                        for x in (lo, hi, step, count, special))
     checks = [Check(f"the printed grid is consistent: {lo} + k·{step}, k < {count}, ends at {hi}",
-                    abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and F.SPECS["5.6"].count == count_)]
-    for s in stripes:
+                    abs(lo_ + (count_ - 1) * step_ - hi_) < 1e-9 and F.SPECS["5.6"].count == count_, ref="N6.1")]
+    for k, s in enumerate(stripes):
         c = number(s)
         scan = F.stripe_scan(F.probe(c + 2.5e-5 * np.arange(-8, 9)))
         others = [row[1] for row in scan]
@@ -421,7 +428,7 @@ def stripes(section5_preview, stripes, special, lo, hi, step, count, explained):
                             "has a sharp minimum (below half the median), within 10^-4 of the printed value",
                             abs(best[0] - c) <= 1e-4 and best[1] < 0.5 * float(np.median(others)),
                             [f"lowest coverage {best[1]:.3f} ({best[2]}) at r = {best[0]:.6f}; median "
-                             f"{np.median(others):.3f} over 17 values of r at Δr = 2.5e-5"]))
+                             f"{np.median(others):.3f} over 17 values of r at Δr = 2.5e-5"], ref=f"N6.{k + 2}"))
     fine = F.probe(r_star + 1e-7 * np.arange(-20, 21))
     widest = F.widest_orbit(fine)
     k = int(np.argmin(widest))
@@ -432,7 +439,8 @@ def stripes(section5_preview, stripes, special, lo, hi, step, count, explained):
                         abs(fine.r[k] - r_star) <= 2e-6 and widest[k] < F.PIXEL < ends,
                         [f"narrowest at r = {fine.r[k]:.7f}: widest cluster {widest[k]:.1e} rad, clusters per orbit "
                          f"{[F.omega(fine.phi[k, m]).clusters for m in range(fine.phi.shape[1])]}; at r ± 2e-6: "
-                         f"{widest[0]:.1e}, {widest[-1]:.1e} rad (41 values of r at Δr = 1e-7, 10^4 collisions)"]))
+                         f"{widest[0]:.1e}, {widest[-1]:.1e} rad (41 values of r at Δr = 1e-7, 10^4 collisions)"],
+                        ref="N6.4"))
     figs = [section5_figure(section5_preview[f]) for f in ("5.5", "5.6", "5.7", "5.8")]
     note = paper_note("n6", lambda s: f"the four lowest coverages of [0, π] in Figure 10 at r = {s['stripes']} "
                       f"({s['coverages']}); in Figure 11a the "
@@ -443,6 +451,10 @@ def stripes(section5_preview, stripes, special, lo, hi, step, count, explained):
 
 # --------------------------------------------------------------------------
 # N7: quasi-periodicity
+
+ISLAND_SENTENCE = ("the island theorem (N7.1) proves quasi-periodic orbits in the island at every rational r in "
+                   "]3−2√2, 1[ (wherever the rotation number is irrational; at the resonances, where it is rational, "
+                   "such as r = 2−√3 where it is 1/3, the island's orbits are periodic).")
 
 PRINTED_N7 = dict(grows_below="1", not_discrete_at="0.92")
 
@@ -473,23 +485,24 @@ def quasi_periodic(section5_preview, island_theorem, grows_below, not_discrete_a
               for k in range(len(x.r)) for m in range(x.phi.shape[1]) if x.breaks[k, m] == 0]
     checks = [
         Check(f"the ω-limit sets grow as r decreases from {grows_below}: the median width of the orbits' widest "
-              "cluster increases", grows, [", ".join(f"r = {r:g}: {widths[r]:.1e} rad" for r in order)]),
+              "cluster increases", grows, [", ".join(f"r = {r:g}: {widths[r]:.1e} rad" for r in order)], ref="N7.1"),
         Check(f"they are not discrete at r ≈ {not_discrete_at}: some orbit has a cluster wider than a pixel (π/1000)",
               any(w.width > F.PIXEL for w in at92),
-              [f"clusters per orbit {[w.clusters for w in at92]}, widest {max(w.width for w in at92):.1e} rad"]),
+              [f"clusters per orbit {[w.clusters for w in at92]}, widest {max(w.width for w in at92):.1e} rad"],
+              ref="N7.2"),
         Check("in the region of apparent chaos each orbit covers only part of what the 8 orbits cover together",
               all(s < 0.8 * u for s, u in zip(single, union)),
               [", ".join(f"r = {r:.2f}: one orbit {s:.2f}, union {u:.2f}" for r, s, u in zip(chaos.r, single, union))
-               + f" (fractions of {F.BINS} bins of [0, π])"]),
+               + f" (fractions of {F.BINS} bins of [0, π])"], ref="N7.3"),
         Check(f"each orbit's ω-limit looks like a finite union of intervals: its kept points form at most "
               f"{F.MAX_INTERVALS} intervals at a resolution of {coarse} rad (in the thin stripe and in the region "
               "of apparent chaos)", bool(pieces) and max(pieces) <= F.MAX_INTERVALS,
               [f"intervals per orbit over {len(pieces)} orbits (preview of Figure 11a and the 8 values of r above): "
-               + ", ".join(f"{c}: {pieces.count(c)}" for c in sorted(set(pieces)))]),
+               + ", ".join(f"{c}: {pieces.count(c)}" for c in sorted(set(pieces)))], ref="N7.4"),
     ]
     checks += island_explanations(island_theorem, not_discrete_at)
-    note = ("The cluster counts are evidence, not a proof; the explanations are ours and certified: the island "
-            "theorem (N7.1) proves quasi-periodic orbits for every r in ]3−2√2, 1[. " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 11a: "
+    note = ("The cluster counts are evidence, not a proof; the explanations are ours and certified: "
+            + ISLAND_SENTENCE + " " + paper_note("n7", lambda s: f"intervals per orbit (resolution {F.PIECE_GAP} rad) in Figure 11a: "
                                         f"{s['stripe_intervals']}; in Figure 6 for 0.2 ≤ r ≤ 0.9: {s['chaos_intervals']}."))
     return observe(checks, note=note)
 
@@ -517,9 +530,10 @@ def island_explanations(island_theorem, at_text) -> list:
     T = island_theorem["symbolic"]
     shares = "; ".join(f"r = {r}: [{float(lo):.3f}, {float(hi):.3f}]"
                        for r, (_, _, (lo, hi)) in island_theorem["at"].items())
-    return [Check(f"{EXPLANATION} quasi-periodic orbits exist for every r in ]3−2√2, 1[ (so at r ≈ {at_text}): "
-                  "the orbits in the island U_r around [ac]b turn densely on invariant ellipses (the island theorem, "
-                  "N7.1)", T.quasi_periodic,
+    return [Check(f"{EXPLANATION} quasi-periodic orbits exist at every rational r in ]3−2√2, 1[ (so at r = "
+                  f"{at_text}): the orbits in the island U_r around [ac]b turn densely on invariant ellipses wherever "
+                  "the rotation number is irrational, and are periodic at its rational values, the resonances (the "
+                  "island theorem, N7.1)", T.quasi_periodic,
                   [f"the theorem for r a symbol: {sum(s.holds for s in T.steps)} of {len(T.steps)} steps proved",
                    f"the island's share of the b-section (θ, φ) ∈ ]0, π/2[ × ]0, π[, certified intervals: {shares}"],
                   counts=False)] + grid_classes()
@@ -549,46 +563,99 @@ PRINTED_N7_1 = dict(suggests="the orbits of such a system might be quasi-periodi
 @certificate("N7.1", "l. 95, 1210, 1223-1226",
              "The numerical simulations suggest that the orbits of the spherical reduction might be quasi-periodic "
              "(l. 95), on invariant tori (l. 1210), in regimes above r = 3−2√2 (l. 1223-1226).  Proved here (ours) "
-             "for the island: for every r in ]3−2√2, 1[ the b-to-b map around the [ac]b orbit is an elliptic "
-             "rotation A(r) preserving Q, the island U_r = {Q < c_max} is invariant, and every orbit in it is "
-             "quasi-periodic, dense on its ellipse, wherever the rotation number is irrational (at every rational r).",
+             "for the island around the orbit [ac]b: for every r in ]3−2√2, 1[ the b-to-b map there is an elliptic "
+             "rotation A(r) preserving Q, and the island U_r = {Q < c_max} is invariant; every orbit in it is "
+             "quasi-periodic, dense on its ellipse, wherever the rotation number is irrational (at every rational r); "
+             "at the resonances (rotation number p/q, as at r = 2−√3 where it is 1/3 and A³ = I) every orbit in it "
+             "is periodic.",
              needs=("island_theorem",), printed=PRINTED_N7_1, expect=PASS,
              mutants=[replaced("above", "3-2√2", "2-√3", "the threshold above which the tori appear"),
                       replaced("above", "3-2√2", "3-2√3", "a threshold outside ]0, 1["),
                       replaced("suggests", "quasi-periodic", "periodic", "the suggestion reworded"),
                       replaced("tori", "invariant tori", "periodic orbits", "what the ω-limit sets might be")])
 def island_quasi_periodic(island_theorem, suggests, tori, above):
-    """The island theorem (certify/patterns/island_theorem.py) for r a symbol and at rationals of
-    Figure 6; the printed threshold compared, as an algebraic number, with the end of the interval
-    where A(r) is elliptic (the root of r² − 6r + 1 in ]0, 1[)."""
+    """The island theorem (certify/patterns/island_theorem.py) for r a symbol, each step a check of
+    its own (statements N7.1.2-N7.1.8), and at rationals of Figure 6; the printed threshold
+    compared, as an algebraic number, with the end of the interval where A(r) is elliptic (the
+    root of r² − 6r + 1 in ]0, 1[); the values −1, 0, 1 of tr A on the interval; the resonance
+    r = 2−√3, where the rotation number is 1/3 and A³ = I (every island orbit periodic)."""
     T = island_theorem["symbolic"]
-    steps = [f"{'✓' if s.holds else '✗'} {s.name}" for s in T.steps]
+    step = {s.name.split()[0]: s for s in T.steps}
     lower = radical(above)
     at = island_theorem["at"]
+    values_ok, values_ev = trace_values()
+    resonant_ok, resonant_ev = resonance_one_third()
+
+    def step_check(name: str, ref: str, extra: bool = True, evidence=(), text: str = "") -> Check:
+        s = step[name]
+        return Check(s.name + text, s.holds and extra, list(evidence), ref=ref, obligations=island_unsupported(True))
     checks = [
-        Check(f"l. 95: \"{suggests}\": proved for the island, for every r in ]3−2√2, 1[ (r a symbol, every step "
-              "an identity in Q(r) or a sign certified on the interval)",
-              "quasi-periodic" in suggests and T.quasi_periodic, steps, obligations=island_unsupported(True)),
-        Check(f"l. 1210: \"{tori}\": the island is foliated by the invariant ellipses Q = c, c < c_max, on which "
-              "the orbits are dense (closed invariant curves of the b-to-b section)",
-              "invariant tori" in tori and T.quasi_periodic,
-              ["A(r) is a rotation by θ, cos θ = −(1−r)²/(4r), in coordinates where Q is Euclidean"],
-              obligations=island_unsupported(True)),
-        Check(f"l. 1223-1226: the quasi-periodic regimes lie above r = {above}: the island exists exactly for r "
-              "above it (A(r) is elliptic iff r² − 6r + 1 < 0)", lower == island.LOWER_END,
-              [f"the printed {above} = {lower}; A(r) elliptic on ]{island.LOWER_END}, 1["]),
+        Check(f"l. 95: \"{suggests}\": proved for the island at every rational r in ]3−2√2, 1[ (wherever the "
+              "rotation number is irrational; r a symbol, every step an identity in Q(r) or a sign certified on the "
+              "interval); at the resonances (ρ = p/q, e.g. r = 2−√3) every island orbit is periodic instead",
+              "quasi-periodic" in suggests and T.quasi_periodic,
+              [f"the steps of the theorem for r a symbol: {sum(s.holds for s in T.steps)} of {len(T.steps)} proved"],
+              obligations=island_unsupported(True), ref="N7.1.1"),
+        step_check("(a)", "N7.1.2"),
+        step_check("(b)", "N7.1.3"),
+        step_check("(c)", "N7.1.4"),
+        step_check("(c′)", "N7.1.5", lower == island.LOWER_END,
+                   [f"l. 1223-1226: the printed {above} = {lower}, the lower end of the interval where A(r) is elliptic"],
+                   f"; l. 1223-1226: the quasi-periodic regimes lie above r = {above}"),
+        step_check("(d)", "N7.1.6", "invariant tori" in tori,
+                   ["A(r) is a rotation by θ, cos θ = −(1−r)²/(4r), in coordinates where Q is Euclidean"],
+                   f"; l. 1210: \"{tori}\": the invariant ellipses Q = c, c < c_max"),
+        step_check("(e)", "N7.1.7"),
+        step_check("(f)", "N7.1.8", values_ok, values_ev,
+                   "; tr A = 2cos θ takes the values −1, 0, 1 on ]3−2√2, 1[ only at r = 2−√3 (irrational)"),
+        Check("at r = 2−√3 the rotation number is 1/3 and A³ = I: every island orbit is periodic there; no other r "
+              "of the interval has ρ = 1/3", resonant_ok, resonant_ev, ref="N7.1.9"),
         Check("at the rationals r = " + ", ".join(at) + " of Figure 6 the theorem is proved step by step, θ/2π "
               "irrational (e^{iθ} is no root of unity)", all(t.quasi_periodic for t, _, _ in at.values()),
               [f"r = {r}: c_max = {t.c_max}, ρ = {rho}, island share in [{lo}, {hi}]"
-               for r, (t, rho, (lo, hi)) in at.items()], obligations=island_unsupported(False)),
+               for r, (t, rho, (lo, hi)) in at.items()], obligations=island_unsupported(False), ref="N7.1.10"),
     ]
     checks += window_resonance_explanation()
     note = ("The island exists on the whole of ]3−2√2, 1[, not only below r ≃ 0.19166 (l. 1226), where the paper "
-            "saw its regimes; outside the island the orbits may be attracted by periodic orbits (`certify identify`). "
+            "saw its regimes; its orbits are quasi-periodic where the rotation number is irrational (at every "
+            "rational r) and periodic at the resonances, where it is p/q (r = 2−√3: 1/3); outside the island the "
+            "orbits may be attracted by periodic orbits (`certify identify`). "
             "The theorem and its steps: `python -m certify island --symbolic`, docs/island.md.  The figure: the "
             "b-section at r = 3/10 with the island's boundary ellipse over the tool's eight orbits, and the rotation "
             "number against r with its resonances over the attracting windows of the census.")
     return conclude(checks, note=note, figures=[island_figure(Q(3, 10))])
+
+
+def trace_values() -> tuple[bool, list[str]]:
+    """tr A = −(1−r)²/(2r) equals −1, 0, 1 where r² − 4r + 1, (1 − r)², r² + 1 vanish: their roots
+    in ]3−2√2, 1[ (:func:`island_theorem.roots_inside`, Sturm and python-flint) are 2−√3 alone.  At
+    a rational r, 2cos θ = tr A is rational, e^{iθ} has degree ≤ 2, and a root of unity of degree
+    ≤ 2 has 2cos θ in {0, ±1, ±2}: the second route to step (f)."""
+    R = flint.fmpq_poly([0, 1])
+    numerators = {-1: R ** 2 - 4 * R + 1, 0: (1 - R) ** 2, 1: R ** 2 + 1}
+    inside = {k: [x for x in Algebraic.roots(P, 0, 1) if island.LOWER_END < x < 1] for k, P in numerators.items()}
+    counts = {k: island.roots_inside(P) for k, P in numerators.items()}
+    found = [x for xs in inside.values() for x in xs]
+    ok = all(len(inside[k]) == counts[k] for k in counts) and len(found) == 1 and found[0] == TWO_MINUS_ROOT3 \
+        and inside[-1] == found
+    names = {-1: "r² − 4r + 1", 0: "(1 − r)²", 1: "r² + 1"}
+    return ok, [f"tr A = {k}: the roots of {names[k]} in ]3−2√2, 1[: {', '.join(map(str, inside[k])) or 'none'}"
+                for k in numerators]
+
+
+TWO_MINUS_ROOT3 = Algebraic.surd(2, -1, 3)
+
+
+def resonance_one_third() -> tuple[bool, list[str]]:
+    """At r = 2−√3 the rotation number is 1/3 (the only r of ]3−2√2, 1[ with ρ = p/3:
+    :func:`island_theorem.resonances_of_q`) and A(r)³ = I exactly (SymPy, in Q(√3))."""
+    found = island.resonances_of_q(3)
+    A = sp.Matrix(island.island.matrix_A(2 - sp.sqrt(3)))
+    cube = (A ** 3).applyfunc(sp.radsimp)
+    ok = len(found) == 1 and (found[0].p, found[0].q) == (1, 3) and found[0].r == TWO_MINUS_ROOT3 \
+        and cube == sp.eye(2)
+    return ok, [f"ρ = p/3 in ]3−2√2, 1[ at: {', '.join(f'{s.p}/{s.q} at r = {s.r}' for s in found)}; "
+                f"A(2−√3)³ = {cube.tolist()}"]
 
 
 def island_unsupported(symbolic: bool) -> list[str]:

@@ -84,8 +84,9 @@ def cmd_all(args) -> int:
     out = prepare_output(args.out)
     committed = read_text_or_none(out / "REPORT.md")
     committed_certificates = read_text_or_none(out / "certificates.json")
+    committed_kernel = read_text_or_none(out / "kernel.json")
     results, timings = execute(None, out, args.jobs)
-    markdown = report.write_report(results, timings, out)
+    markdown = report.write_report(results, timings, out, jobs=args.jobs)
     saving.prune(out / "figures", keep={name for _, o in results for name in o.figures})
     warn_missing_figures(results, out)
     code = finish(results)
@@ -94,6 +95,8 @@ def cmd_all(args) -> int:
         stale = report.changed_parts(committed, markdown)
         if committed_certificates != read_text_or_none(out / "certificates.json") and stale != ["missing"]:
             stale = stale + ["certificates.json"]
+        if committed_kernel != read_text_or_none(out / "kernel.json") and stale != ["missing"]:
+            stale = stale + ["kernel.json"]
         if stale == ["missing"]:
             say(f"{out / 'REPORT.md'} was missing: generated it now, commit it")
         elif stale:
@@ -122,7 +125,7 @@ def _under(results) -> dict[str, list[str]]:
         elif outcome.status == OBSERVED and outcome.agrees is False:
             lines.append("≠ does not agree with the paper: " + " ".join(outcome.reason.split()))
         elif outcome.status == ERRATUM:
-            lines.append(f"{outcome.kind}: " + " ".join(outcome.misprint.split()))
+            lines.append(f"{outcome.kind}: " + " ".join(report.misprint_text(outcome).split()))
             for printed, fixes in report.erratum_pairs(outcome):
                 lines.append("✗ as printed: " + " ".join(printed.statement.split()))
                 for fix in fixes:
@@ -155,7 +158,7 @@ def cmd_run(args) -> int:
     results, timings = execute(args.ids, out, args.jobs)
     print_results(results)
     if out is not None:
-        report.write_report(results, timings, out)
+        report.write_report(results, timings, out, jobs=args.jobs)
         warn_missing_figures(results, out)
     code = finish(results)
     if out is not None:
@@ -164,14 +167,27 @@ def cmd_run(args) -> int:
 
 
 def cmd_verify(args) -> int:
-    """Re-check DIR/certificates.json with the independent kernel (certify_kernel: the standard
-    library alone), one line per certificate; exit 0, 1 when an obligation fails, 2 on bad input."""
+    """Decide the statements with the independent kernel (certify_kernel: the standard library
+    alone) on DIR/certificates.json, one line per certificate; exit 0, 1 when the kernel rejects a
+    certificate (or, with --check, its results differ from DIR/kernel.json), 2 on bad input."""
     import certify_kernel.__main__ as kernel
     if not args.path.is_file():
         raise UsageError(f"no certificates file at {args.path} (run `python -m certify all` first)")
     argv = [str(args.path)] + (["--only", *args.only] if args.only else []) + \
-        (["--jobs", str(args.jobs)] if args.jobs else [])
-    return kernel.main(argv)
+        (["--jobs", str(args.jobs)] if args.jobs else []) + (["--verbose"] if args.verbose else [])
+    if not args.check or args.only:
+        return kernel.main(argv)
+    from certify.run import verification
+    data = verification.decide(args.path.read_text(encoding="utf-8"), args.jobs or 2)
+    for r in data["certificates"].values():
+        print(r["line"])
+    print(f"{len(data['certificates'])} certificates; {data['verified']}/{data['statements']} statements verified")
+    code = 0 if all(r["ok"] for r in data["certificates"].values()) else 1
+    committed = args.path.parent / "kernel.json"
+    if read_text_or_none(committed) != verification.render(data):
+        say(f"{committed} is stale: the kernel's results differ (run `python -m certify all` and commit it)")
+        code = code or 1
+    return code
 
 
 def cmd_list(args) -> int:
@@ -235,11 +251,18 @@ def register(commands) -> None:
     add_jobs(p)
 
     p = add_command(commands, "verify", cmd_verify,
-                    help="re-check reports/certificates.json with the independent kernel (certify_kernel)")
+                    help="decide the paper's statements with the independent kernel (certify_kernel)",
+                    description="Decide every formal statement of statements/*.txt with the independent kernel "
+                    "(the Python standard library alone, its own definitions, the witnesses of "
+                    "reports/certificates.json): one line per certificate with K/N statements verified and why any "
+                    "is not, then the count.  With --check, also compare with the committed reports/kernel.json.")
     p.add_argument("path", nargs="?", type=Path, default=DEFAULT_OUT / "certificates.json", metavar="PATH",
                    help="the certificates file (default: reports/certificates.json)")
-    p.add_argument("--only", nargs="+", metavar="ID", default=None, help="re-check only these certificates")
+    p.add_argument("--only", nargs="+", metavar="ID", default=None, help="decide only these certificates")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N", help="processes (default: 2)")
+    p.add_argument("--verbose", action="store_true", help="list every statement and its result")
+    p.add_argument("--check", action="store_true",
+                   help="fail when the kernel's results differ from kernel.json beside the certificates file")
 
     p = add_command(commands, "list", cmd_list, help="list the certificates",
                     description="One line per certificate: its id, the lines of the paper it checks, its statement.")

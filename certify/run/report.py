@@ -21,8 +21,7 @@ import re
 from pathlib import Path
 from urllib.parse import quote
 
-from certify_kernel.statements import read as read_statements
-
+from certify.run import verification
 from certify.run.files import CHECKOUT, write_atomic
 from certify.run.runner import (
     ERRATUM,
@@ -36,6 +35,7 @@ from certify.run.runner import (
     corrected_statement,
     holds,
 )
+from certify_kernel.statements import read as read_statements
 
 PAPER = ("T. Dolmaire and E. Hübner-Rosenau, *One-dimensional inelastic collapse of four "
          "particles: asymmetric collision sequences and spherical billiard reduction*, "
@@ -187,15 +187,26 @@ def status_label(outcome) -> str:
     return f"{outcome.status}, {DISAGREES}" if disagrees else outcome.status
 
 
+def slips(outcome) -> list[str]:
+    """The slips of the paper an ERRATUM's false checks come from (``misprint``: one text, or a
+    tuple of them when one certificate meets several)."""
+    m = outcome.misprint
+    return [str(x) for x in m] if isinstance(m, (list, tuple)) else [str(m)] if m else []
+
+
+def misprint_text(outcome) -> str:
+    return "; ".join(slips(outcome))
+
+
 def misprints(results) -> list[tuple[str, str, list]]:
     """The distinct errors of the paper behind the errata, in the order met:
     ``(misprint, kind, [(cert, outcome), ...])``; certificates sharing one misprint
-    are grouped under it."""
+    are grouped under it, a certificate with several slips is under each."""
     groups: dict[str, tuple[str, list]] = {}
     for cert, outcome in results:
         if outcome.status == ERRATUM:
-            key = outcome.misprint or f"(not stated: {cert.id})"
-            groups.setdefault(key, (outcome.kind or "(kind not stated)", []))[1].append((cert, outcome))
+            for key in slips(outcome) or [f"(not stated: {cert.id})"]:
+                groups.setdefault(key, (outcome.kind or "(kind not stated)", []))[1].append((cert, outcome))
     return [(key, kind, members) for key, (kind, members) in groups.items()]
 
 
@@ -209,10 +220,10 @@ def errata_line(results) -> str:
     for kind in ERRATUM_KINDS + ("(kind not stated)",):
         mine = [g for g in groups if g[1] == kind]
         if mine:
-            certs = sum(len(g[2]) for g in mine)
+            certs = len({cert.id for g in mine for cert, _ in g[2]})
             parts.append(f"{len(mine)} {kind}{'s' if len(mine) != 1 else ''} (in {certs} certificate"
                          f"{'s' if certs != 1 else ''})")
-    n = sum(len(g[2]) for g in groups)
+    n = len({cert.id for g in groups for cert, _ in g[2]})
     return (f"{len(groups)} distinct error{'s' if len(groups) != 1 else ''} of the paper, in {n} certificate"
             f"{'s' if n != 1 else ''}: " + ", ".join(parts))
 
@@ -246,7 +257,7 @@ def main_results(results) -> list[tuple[str, bool, list]]:
     def stands(name, outcome):
         kind = name.split()[0].lower()
         return outcome.status == PASS or (outcome.status == ERRATUM and bool(
-            re.search(rf"({re.escape(name)}|the {kind}) holds", outcome.misprint or "")))
+            re.search(rf"({re.escape(name)}|the {kind}) holds", misprint_text(outcome))))
     return [(name, all(stands(name, o) for _, o in members), members) for name, members in found.items()]
 
 
@@ -265,7 +276,9 @@ def main_results_line(results) -> str:
     island = [(c, o) for c, o in results if c.id == ISLAND_CLAIM]
     if island and island[0][1].status == PASS:
         text += (".  The suggestion of the abstract, that the orbits might be quasi-periodic, is proved for an island "
-                 f"of the reduction ({_link(ISLAND_CLAIM)})")
+                 f"of the reduction ({_link(ISLAND_CLAIM)}) at every rational r in ]3−2√2, 1[, wherever its rotation "
+                 "number is irrational; at the resonances, where it is rational (r = 2−√3: 1/3), the island's orbits "
+                 "are periodic")
     return text + ".  Where the paper errs, and what is certified instead: [Errata](#errata)."
 
 
@@ -291,7 +304,7 @@ def _by_part(results) -> list[tuple[str, list]]:
     return list(groups.items())
 
 
-def _summary(results) -> str:
+def _summary(results, kernel=None) -> str:
     n = counts(results)
     against = disagreements(results)
     rows = [f"| {s} | {n[s]} |" for s in n]
@@ -304,7 +317,7 @@ def _summary(results) -> str:
         lines += ["", "Failing: " + ", ".join(_link(c) for c in failing) + "."]
     if errata_line(results):
         lines += ["", errata_line(results) + "; see [Errata](#errata)."]
-    lines += ["", kernel_line(results)]
+    lines += ["", kernel_line(kernel)]
     return "\n".join(lines)
 
 
@@ -393,45 +406,23 @@ def _errata(results) -> str:
     return "\n\n".join(parts)
 
 
-def kernel_coverage(outcome) -> tuple[int, int]:
-    """(k, n): of the n sub-claims of a certificate that count, the k that name obligations of
-    the independent kernel's language only (certificates.json; ``certify verify`` re-checks them)."""
-    return len(_kernel_subclaims(outcome)), sum(1 for c in list(outcome.printed) + list(outcome.corrected) if c.counts)
+def kernel_line(kernel) -> str:
+    """The summary's line on the independent kernel (reports/kernel.json)."""
+    if not kernel:
+        return "Independent kernel: not run (`python -m certify verify`, docs/verify.md)."
+    failed = sorted(i for i, r in kernel["certificates"].items() if not r["ok"])
+    k, n = kernel["verified"], kernel["statements"]
+    return (f"Independent kernel (`python -m certify verify`, docs/verify.md): **{k}/{n} statements verified**: "
+            f"of the {n} formal statements of the PASS and ERRATUM certificates (statements/*.txt, the paper's "
+            f"claims written as data), the kernel decides {k} exactly with its own definitions and the Python "
+            "standard library alone, each as the verdict the report gives it; each statement's line below says "
+            "whether it is verified and, if not, why." + (f"  **The kernel rejects {', '.join(failed)}.**" if failed
+                                                          else ""))
 
 
-def _kernel_subclaims(outcome) -> list:
-    """The sub-claims that count and name obligations of the kernel's language only."""
-    kinds = {ob["id"]: ob.get("kind") for ob in getattr(outcome, "obligations", [])}
-    subs = [c for c in list(outcome.printed) + list(outcome.corrected) if c.counts]
-    return [c for c in subs if c.obligations and all(kinds.get(i) not in (None, "unsupported") for i in c.obligations)]
-
-
-def kernel_cell(outcome) -> str:
-    """The table's "Kernel" column: "independently verified" or "k/n sub-claims"; "—" for an observation."""
-    if outcome.status not in (PASS, ERRATUM):
-        return "—"
-    k, n = kernel_coverage(outcome)
-    return "independently verified" if n and k == n else f"{k}/{n} sub-claims"
-
-
-def kernel_line(results) -> str:
-    """The summary's line on the independent kernel."""
-    proved = [o for _, o in results if o.status in (PASS, ERRATUM)]
-    k = sum(kernel_coverage(o)[0] for o in proved)
-    n = sum(kernel_coverage(o)[1] for o in proved)
-    whole = sum(1 for o in proved if kernel_coverage(o)[1] and kernel_coverage(o)[0] == kernel_coverage(o)[1])
-    derived = sum(1 for o in proved for c in _kernel_subclaims(o) if c.derivation)
-    pct = f" ({100 * k / n:.0f}%)" if n else ""
-    return (f"Independent kernel (`python -m certify verify`, docs/verify.md): {k} of the {n} sub-claims of "
-            f"the PASS and ERRATUM certificates{pct} rest on obligations in reports/certificates.json that "
-            f"it re-checks with the Python standard library alone, {derived} of them with a derivation (how "
-            f"the obligations give the statement) that it checks too; {whole} of {len(proved)} certificates "
-            "are independently verified whole.")
-
-
-def _table(results) -> str:
+def _table(results, kernel=None) -> str:
     rows = [f"| {_link(cert.id)} | {_cell(cert.line)} | {_cell(cert.statement)} | {status_label(outcome)} | "
-            f"{kernel_cell(outcome)} |" for cert, outcome in results]
+            f"{verification.cell(kernel, cert.id)} |" for cert, outcome in results]
     return "\n".join(["## All certificates", "", "| Id | Paper | Statement | Status | Kernel |",
                       "|---|---|---|---|---|", *rows])
 
@@ -447,7 +438,18 @@ def _role(check) -> str:
     return " *(consistency check of the engine, not evidence)*"
 
 
-def _checks(title: str, checks, shown: set | None = None) -> str:
+def _verified(kernel, cert_id: str, check) -> str:
+    """What the kernel says of a check's formal statement, for its line in the report (nothing for
+    an observation: the kernel has nothing to verify there)."""
+    if not getattr(check, "ref", "") or kernel is None:
+        return ""
+    why = verification.why_not(kernel, cert_id, check.ref)
+    if why is None or why == "an observation":
+        return ""
+    return " · *kernel: verified*" if why == "" else f" · *kernel: not verified ({_one_line(why)})*"
+
+
+def _checks(title: str, checks, shown: set | None = None, kernel=None, cert_id: str = "") -> str:
     """The checks with their evidence; an evidence fragment already in ``shown`` (the
     same sign table under "As printed" and "Corrected") is not repeated."""
     shown = set() if shown is None else shown
@@ -456,7 +458,8 @@ def _checks(title: str, checks, shown: set | None = None) -> str:
         role = _role(check)
         evidence = [str(e) for e in check.evidence]
         repeated = bool(evidence) and all(e in shown for e in evidence)
-        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(text_of(check))}{role}"
+        said = _verified(kernel, cert_id, check)
+        items.append(_bullet(f"{MARK[holds(check)]} {_one_line(text_of(check))}{role}{said}"
                              + (f" {SAME}" if repeated else "")))
         if not repeated:
             items += [_bullet(e if e not in shown else f"{_first_line(e)} {SAME}", indent=2) for e in evidence]
@@ -464,7 +467,7 @@ def _checks(title: str, checks, shown: set | None = None) -> str:
     return f"**{title}**\n\n" + "\n".join(items)
 
 
-def _section(cert, outcome) -> str:
+def _section(cert, outcome, kernel=None) -> str:
     """Everything about one certificate: verdicts, note, evidence, figures."""
     printed = "as printed: " if outcome.status != PASS else ""
     label = status_label(outcome)
@@ -474,12 +477,12 @@ def _section(cert, outcome) -> str:
     if outcome.status == OBSERVED and outcome.agrees is False:
         parts.append(f"**Does not agree with the paper:** {_one_line(outcome.reason)}")
     if outcome.status == ERRATUM:
-        parts.append(f"**Erratum ({outcome.kind}):** {_one_line(outcome.misprint)}")
+        parts.append(f"**Erratum ({outcome.kind}):** {_one_line(misprint_text(outcome))}")
     shown: set = set()
     if outcome.printed:
-        parts.append(_checks("As printed", outcome.printed, shown))
+        parts.append(_checks("As printed", outcome.printed, shown, kernel, cert.id))
     if outcome.corrected:
-        parts.append(_checks("Corrected (certified)", outcome.corrected, shown))
+        parts.append(_checks("Corrected (certified)", outcome.corrected, shown, kernel, cert.id))
     if str(outcome.note).strip():
         parts.append("**Note.** " + _fragment(outcome.note))
     if outcome.evidence:
@@ -488,14 +491,15 @@ def _section(cert, outcome) -> str:
     return "\n\n".join(parts)
 
 
-def render_markdown(results) -> str:
+def render_markdown(results, kernel=None) -> str:
     """The text of REPORT.md: head, contents, summary, errata, table, then the
-    certificates part by part, and a last line that closes the report."""
-    parts = [_head(results), _contents(results), _summary(results), _disagreements(results), _errata(results),
-             _table(results)]
+    certificates part by part, and a last line that closes the report; ``kernel``: the
+    independent kernel's results (reports/kernel.json, :mod:`certify.run.verification`)."""
+    parts = [_head(results), _contents(results), _summary(results, kernel), _disagreements(results),
+             _errata(results), _table(results, kernel)]
     for part, members in _by_part(results):
         parts.append(f'## <a id="{part_anchor(part)}"></a>{part}')
-        parts += [_section(cert, outcome) for cert, outcome in members]
+        parts += [_section(cert, outcome, kernel) for cert, outcome in members]
     return "\n\n".join(parts + [END]) + "\n"
 
 
@@ -521,7 +525,8 @@ def certificate_data(cert, outcome) -> dict:
         "proof": {"module": cert.module, "function": getattr(cert.func, "__name__", "")},
         "part": part_of(cert.id),
         "status": outcome.status,
-        **({"erratum": {"kind": outcome.kind, "misprint": outcome.misprint}} if outcome.status == ERRATUM else {}),
+        **({"erratum": {"kind": outcome.kind, "misprint": misprint_text(outcome)}}
+           if outcome.status == ERRATUM else {}),
         **({"agrees": outcome.agrees, "reason": outcome.reason} if outcome.status == OBSERVED else {}),
         "printed": [_check_data(c) for c in outcome.printed],
         "corrected": [_check_data(c) for c in outcome.corrected],
@@ -615,16 +620,18 @@ def render_timings(timings: dict) -> str:
 # --------------------------------------------------------------------------
 # Writing, and comparing with a committed report
 
-def write_report(results, timings: dict, out_dir) -> str:
-    """Write REPORT.md, report.json, certificates.json and timings.json into ``out_dir``.
+def write_report(results, timings: dict, out_dir, kernel: bool = True, jobs: int = 2) -> str:
+    """Write REPORT.md, report.json, certificates.json, kernel.json and timings.json into ``out_dir``.
 
-    All texts are rendered before anything is written, and each file is
+    All texts are rendered before anything is written (the kernel's results read back from
+    kernel.json, or decided now: :func:`certify.run.verification.results_for`), and each file is
     replaced atomically; REPORT.md comes last.  Returns the text of REPORT.md.
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    markdown, data, times = render_markdown(results), render_json(results), render_timings(timings)
     certificates = render_certificates(results)
+    verdicts = verification.results_for(certificates, out, jobs) if kernel else None
+    markdown, data, times = render_markdown(results, verdicts), render_json(results), render_timings(timings)
     write_atomic(out / "report.json", data)
     write_atomic(out / "certificates.json", certificates)
     write_atomic(out / "timings.json", times)

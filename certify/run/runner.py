@@ -97,7 +97,7 @@ class Outcome:
     figures: list[str] = field(default_factory=list)
     note: str = ""
     kind: str = ""
-    misprint: str = ""
+    misprint: str | tuple = ""         # one slip, or a tuple of them (one certificate, several slips)
     agrees: bool | None = None
     reason: str = ""
     obligations: list[dict] = field(default_factory=list)   # the certificate's facts (certify.obligations)
@@ -119,7 +119,7 @@ def corrected_statement(check: Check) -> str:
 
 def conclude(printed: list[Check], corrected: list[Check] | None = None,
              evidence: list[str] | None = None, figures: list[str] | None = None,
-             note: str = "", kind: str = "", misprint: str = "") -> Outcome:
+             note: str = "", kind: str = "", misprint: str | tuple = "") -> Outcome:
     """The verdict, resting only on the checks that could fail (``counts``):
 
     - PASS when every printed check holds (and one of them counts);
@@ -404,7 +404,8 @@ def plain(outcome: Outcome) -> Outcome:
     return Outcome(outcome.status, [check(c) for c in outcome.printed],
                    [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
                    [str(f) for f in outcome.figures], str(outcome.note), str(outcome.kind),
-                   str(outcome.misprint), outcome.agrees, str(outcome.reason), list(outcome.obligations))
+                   tuple(outcome.misprint) if isinstance(outcome.misprint, (list, tuple)) else str(outcome.misprint),
+                   outcome.agrees, str(outcome.reason), list(outcome.obligations))
 
 
 def units(certs: list[Certificate]) -> list[list[Certificate]]:

@@ -13,7 +13,7 @@ import re
 
 import pytest
 
-from certify.run import runner
+from certify.run import report, runner
 from certify.run.files import REPORTS
 from tests import paper, shared
 from tests.shared import strings
@@ -29,7 +29,7 @@ def certificate_quotations():
         if cert.expect == runner.ERRATUM:
             o = shared.as_printed(cert.id)
             checks = [c.statement for c in o.printed + o.corrected] + [str(e) for c in o.printed for e in c.evidence]
-            for text in [o.misprint, *checks]:
+            for text in [*report.slips(o), *checks]:
                 for ranges, phrase in paper.quotations(text):
                     yield cert.id, ranges, phrase
 

@@ -10,23 +10,27 @@ def test_t16_erratum_shows_the_corrected_sign():
     assert any("5-2√6 < r < 1" in e for c in o.corrected for e in c.evidence)
 
 
-def test_t24_with_the_one_stated_correction_passes():
-    """One misprint: q displayed at l. 493 inverted.  With q = (cx₋+d)/(cx₊+d) = f'(x₊)
-    every sentence of l. 495-505 holds as printed.  Keeping the displayed q instead takes
-    three corrections (every relation reversed); one of them alone keeps it false, and
-    then the one stated correction of q no longer makes it true."""
-    assert outcome("T24", **altered("T24", "q", "(c x₊ + d)/(c x₋ + d)", "(c x₋ + d)/(c x₊ + d)")).status == PASS
+def test_t24_with_the_two_stated_corrections_passes():
+    """Two misprints: q displayed at l. 493 inverted, and d^2 + 4bc for (a-d)^2 + 4bc at l. 495.
+    With q = (cx₋+d)/(cx₊+d) = f'(x₊) every sentence of l. 495-505 holds as printed.  Keeping
+    the displayed q instead takes three corrections (every relation reversed); one of them alone
+    keeps it false, and then the one stated correction of q no longer makes it true."""
+    q_one = altered("T24", "q_is_one", "d^2 + 4*b*c", "(a - d)^2 + 4*b*c")
+    assert outcome("T24", **altered("T24", "q", "(c x₊ + d)/(c x₋ + d)", "(c x₋ + d)/(c x₊ + d)"),
+                   **q_one).status == PASS
     reversed_ = {"upper": "|q|<1", "lower": "|q|>1", "stable_when": "|q|>1"}
-    assert outcome("T24", **reversed_).status == PASS
+    assert outcome("T24", **reversed_, **q_one).status == PASS
     for name, text in reversed_.items():
         o = outcome("T24", **{name: text})
         assert o.status == FAIL and not o.printed[0].holds
 
 
-def test_t24_erratum_is_one_misprint():
+def test_t24_erratum_is_two_misprints():
     o = outcome("T24")
-    assert o.status == ERRATUM and o.kind == "misprint" and "l. 493" in o.misprint
-    assert len([c for c in o.printed if not c.holds]) == 1
+    assert o.status == ERRATUM and o.kind == "misprint" and [m[:6] for m in o.misprint] == ["l. 493", "l. 495"]
+    assert len([c for c in o.printed if not c.holds]) == 2
+    with_q = outcome("T24", **altered("T24", "q", "(c x₊ + d)/(c x₋ + d)", "(c x₋ + d)/(c x₊ + d)"))
+    assert with_q.status == ERRATUM and [m[:6] for m in with_q.misprint] == ["l. 495"]
 
 
 def test_t16_with_the_stated_correction_passes():

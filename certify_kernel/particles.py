@@ -1,0 +1,273 @@
+"""The four particles on the line, moved exactly: Theorem 3.1's self-similar datum on the dynamics
+(T25.2, statements/3_simulation.txt).
+
+The state between two collisions is the gaps p = (p_1, p_2, p_3) ≥ 0 and the relative velocities
+q = (q_1, q_2, q_3), q_k = v_{k+1} − v_k (l. 195-198): in free flight p(t) = p + t·q (l. 154-157),
+and the pair k (a, b, c for k = 1, 2, 3) collides when p_k reaches 0 with q_k < 0, at t_k = −p_k/q_k;
+the next collision is the pair whose t_k is the smallest, which must be smaller than every other (a
+tie, a multiple collision, is not followed: the run stops there); then p_k = 0 and q ↦ K q, K the
+kernel's collision matrix (l. 159-163, :func:`certify_kernel.evaluate.collision`).  No pair with
+q_k < 0: the particles separate, no collision ever comes.
+
+The datum of Theorem 3.1 lies in the field Q(λ, √Δ), λ a real root of cp(r₀, λ) at a rational r₀
+and Δ = (a − d)² + 4bc: every number is an exact element α + β√Δ, α, β polynomials in λ reduced
+modulo λ's polynomial, and every sign the dynamics asks for (which q_k < 0, which t_k is the
+smallest, whether two states are equal) is decided exactly: signs of polynomials at λ by Sturm
+(:meth:`Algebraic.sign_of`), of α + β√Δ from those of α, β and α² − β²Δ.  So ``follows``,
+``q_scaled``, ``p_scaled`` and ``leaves`` below are proved, not observed: no rounding enters.
+
+In the statement files: ``datum(r = 1/20, λ = upper(cpM), x = xplus(a, b, c, d), p = (1, 0, x),
+q = (-1, U, V))`` is the state at t = 0 (r₀ rational; λ = upper, lower or branch(P, k) of P at r₀;
+x a fixed point of the Möbius map, as in the binders of ``forall``; p and q rational functions of
+r, λ, x), and the predicates are
+
+* ``follows(D, W)``: the first |W| collisions from D are the letters of the word W (``(ababcb)^20``);
+* ``q_scaled(D, w, n)``: q(t_{k|w|}) = λ^k q(0) for k = 1, ..., n (the collisions being w^n);
+* ``p_scaled(D, w, n)``: p(t_{k|w|}) = μ^k p(0) for k = 1, ..., n, μ = p_1(t_{|w|}) (idem);
+* ``leaves(D, w, n)``: within n periods the collisions depart from w w w ...: a collision that is
+  not the pattern's next letter, or none at all (the particles separate).
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+
+from .cells import _surd_sign
+from .evaluate import FUNCTIONS, PREDICATES, NotVerified, Undefined, bind, collision, expand_word, value
+from .poly import add, at_r, deg, divmod_, mul, scale, sub, trim
+from .poly import value as at
+from .sturm import Algebraic, real_roots
+from .values import RF, VARS, univariate
+
+
+class Field:
+    """Q(λ)(√Δ) at one real root λ of a square-free polynomial m: elements of Q(λ) are polynomials
+    reduced modulo m (m shrinks to a factor still vanishing at λ when an inverse meets a common
+    factor), their signs those at λ."""
+
+    def __init__(self, lam: Algebraic):
+        self.lam, self.delta = lam, []
+
+    def reduce(self, f: list) -> list:
+        return divmod_(trim(f), self.lam.p)[1] if deg(trim(f)) >= deg(self.lam.p) else trim(f)
+
+    def sign(self, f: list) -> int:
+        return self.lam.sign_of(f) if f else 0
+
+    def inverse(self, f: list) -> list:
+        """1/f(λ): Bézout's s·f + t·m = g; g = 1, or g vanishes at λ (f(λ) = 0), or m ← m/g."""
+        while True:
+            g, s = _bezout(f, self.lam.p)
+            if deg(g) == 0:
+                return self.reduce(scale(s, 1 / g[0]))
+            if self.sign(g) == 0:
+                raise Undefined("a division by 0 in the dynamics")
+            self.lam = Algebraic(divmod_(self.lam.p, g)[0], self.lam.lo, self.lam.hi, check=False)
+
+
+def _bezout(f: list, m: list) -> tuple[list, list]:
+    """(g, s) with g = gcd(f, m) (not normalised) and s·f ≡ g modulo m (extended Euclid)."""
+    r0, r1, s0, s1 = trim(m), trim(f), [], [Fraction(1)]
+    while r1:
+        quo, rem = divmod_(r0, r1)
+        r0, r1, s0, s1 = r1, rem, s1, sub(s0, mul(quo, s1))
+    return r0, s0
+
+
+class Num:
+    """α + β√Δ in a :class:`Field` (α, β reduced polynomials in λ)."""
+
+    __slots__ = ("a", "b", "F")
+
+    def __init__(self, F: Field, a: list, b: list | None = None):
+        self.F, self.a, self.b = F, F.reduce(a), F.reduce(b or [])
+
+    def _of(self, o) -> Num:
+        return o if isinstance(o, Num) else Num(self.F, [Fraction(o)])
+
+    def __add__(self, o):
+        o = self._of(o)
+        return Num(self.F, add(self.a, o.a), add(self.b, o.b))
+
+    def __sub__(self, o):
+        o = self._of(o)
+        return Num(self.F, sub(self.a, o.a), sub(self.b, o.b))
+
+    def __mul__(self, o):
+        o, F = self._of(o), self.F
+        return Num(F, add(mul(self.a, o.a), F.reduce(mul(mul(self.b, o.b), F.delta))),
+                   add(mul(self.a, o.b), mul(self.b, o.a)))
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        """(α + β√Δ)⁻¹ = (α − β√Δ)/(α² − β²Δ); the norm α² − β²Δ vanishes at λ only if α + β√Δ or
+        its conjugate is 0."""
+        o, F = self._of(o), self.F
+        norm = F.reduce(sub(mul(o.a, o.a), F.reduce(mul(mul(o.b, o.b), F.delta))))
+        if F.sign(norm) == 0:
+            raise Undefined("a division by 0 (or √Δ in Q(λ)) in the dynamics")
+        inv = F.inverse(norm)
+        return self * Num(F, mul(o.a, inv), scale(mul(o.b, inv), -1))
+
+    def sign(self) -> int:
+        F = self.F
+        return _surd_sign(self.a, self.b, F.delta, F.sign, lambda x, y: F.reduce(mul(x, y)), sub)
+
+    def __repr__(self) -> str:
+        return f"({self.a}) + ({self.b})√Δ"
+
+
+class Datum:
+    """The state at t = 0, its field, λ, and the collisions computed so far (each proved)."""
+
+    def __init__(self, F: Field, lam: Num, p: tuple, q: tuple, r0: Fraction):
+        self.F, self.lam, self.r0 = F, lam, r0
+        self.K = [[[_at_r(e, r0) for e in row] for row in collision(k).rows] for k in range(3)]
+        self.states, self.word, self.stop = [(p, q)], "", ""
+
+    def run(self, n: int, pattern: str = "") -> None:
+        """The collisions up to the n-th (fewer when the dynamics stops: ``stop`` says why, or when
+        the word departs from the periodic ``pattern``)."""
+        while len(self.word) < n and not self.stop:
+            if pattern and self.word and self.word[-1] != pattern[(len(self.word) - 1) % len(pattern)]:
+                return
+            p, q = self.states[-1]
+            approach = [k for k in range(3) if q[k].sign() < 0]
+            if not approach:
+                self.stop = "no further collision: every q_k ≥ 0, the particles separate"
+                return
+            first = approach[0]
+            for k in approach[1:]:              # t_k < t_first ⇔ p_k q_first − p_first q_k > 0 (q_k q_first > 0)
+                if (p[k] * q[first] - p[first] * q[k]).sign() > 0:
+                    first = k
+            if any((p[k] * q[first] - p[first] * q[k]).sign() == 0 for k in approach if k != first):
+                self.stop = "a multiple collision"
+                return
+            t = Num(self.F, []) - p[first] / q[first]
+            p = tuple(Num(self.F, []) if k == first else p[k] + t * q[k] for k in range(3))
+            q = tuple(sum((q[j] * c for j, c in enumerate(self.K[first][i]) if c), Num(self.F, [])) for i in range(3))
+            self.states.append((p, q))
+            self.word += "abc"[first]
+
+
+def _at_r(e: RF, r0: Fraction) -> Fraction:
+    return at(univariate(e, "r"), r0)
+
+
+def _rf_at(e: RF, r0: Fraction, nums: dict, F: Field) -> Num:
+    """A rational function of r, λ, x at r = r₀ and λ, x the given elements."""
+    def poly(d: dict) -> Num:
+        out = Num(F, [])
+        for key, c in d.items():
+            if any(e for i, e in enumerate(key) if VARS[i] not in ("r", *nums)):
+                raise Undefined("the datum has a variable other than r, λ and x")
+            term = Num(F, [c * r0 ** key[VARS.index("r")]])
+            for name, x in nums.items():
+                for _ in range(key[VARS.index(name)]):
+                    term = term * x
+            out = out + term
+        return out
+    return poly(e.num) / poly(e.den)
+
+
+_DATA: dict = {}
+
+
+def datum(ctx, *args) -> Datum:
+    """datum(r = R0, λ = BRANCH(P), x = xplus(a, b, c, d) or xminus(...), p = (...), q = (...)): λ and x
+    read as the binders of ``forall`` read them (:func:`certify_kernel.evaluate.bind`), at r = R0."""
+    given = {}
+    for t in args:
+        if t[0] != "cmp" or t[1] != ("=",) or t[2][0][0] != "name":
+            raise Undefined("datum(r = ..., λ = ..., x = ..., p = (...), q = (...))")
+        given[t[2][0][1]] = t[2][1]
+    key = (repr(sorted(given.items())), id(ctx.lets))
+    if key not in _DATA:
+        _DATA[key] = _datum(ctx, given)
+    return _DATA[key]
+
+
+def _datum(ctx, given: dict) -> Datum:
+    r0 = value(given["r"], ctx).constant()
+    B = bind([(name, "=", given[name]) for name in ("λ", "x") if name in given], ctx)
+    if r0 is None or B.cp is None or B.branch == "all" or len(B.sigmas) > 1:
+        raise Undefined("datum(): r a rational, λ one branch, x one fixed point")
+    cp = at_r(B.cp, r0)
+    roots = real_roots(cp)                                     # largest first, as the binders count them
+    k = len(roots) - 1 if B.branch == "last" else B.branch
+    if k >= len(roots) or B.branch in ("last", 1) and len(roots) < deg(cp):
+        raise Undefined(f"λ: no such branch at r = {r0}")
+    F = Field(roots[k])
+    lam = Num(F, [Fraction(0), Fraction(1)])
+    nums = {"λ": lam}
+    if B.mobius is not None:
+        a, b, c, d = (_rf_at(e, r0, nums, F) for e in B.mobius)
+        disc = (a - d) * (a - d) + 4 * b * c
+        if disc.sign() < 0:
+            raise Undefined("the fixed point x is not real")
+        F.delta = disc.a                                       # x = (a − d + σ√Δ)/(2c)
+        nums["x"] = (a - d + Num(F, [], [Fraction(B.sigmas[0])])) / (2 * c)
+    p, q = (tuple(_rf_at(value(e, ctx), r0, nums, F) for e in _triple(given[k])) for k in "pq")
+    if any(g.sign() < 0 for g in p):
+        raise Undefined("the datum has a negative gap")
+    return Datum(F, lam, p, q, r0)
+
+
+def _triple(t) -> tuple:
+    if t[0] != "tuple" or len(t[1]) != 3:
+        raise Undefined("p and q are written (p_1, p_2, p_3), (q_1, q_2, q_3)")
+    return t[1]
+
+
+def _word(t) -> str:
+    """A word written as letters, (w)^n or their products."""
+    if t[0] == "name":
+        return t[1]
+    if t[0] == "bin" and t[1] == "^" and t[3][0] == "num":
+        return "(" + _word(t[2]) + ")^" + t[3][1]
+    if t[0] == "bin" and t[1] == "*":
+        return _word(t[2]) + _word(t[3])
+    raise Undefined("a word is written as letters and (w)^n")
+
+
+def _periodic(ctx, D, w, n) -> tuple[Datum, str, int]:
+    D, word, n = value(D, ctx), expand_word(_word(w)), value(n, ctx).constant()
+    if not isinstance(D, Datum) or n is None or n.denominator != 1 or n < 1:
+        raise Undefined("(datum, word, number of periods)")
+    return D, word, int(n)
+
+
+def follows(ctx, D, W) -> bool:
+    D, word, _ = _periodic(ctx, D, W, ("num", "1"))
+    D.run(len(word))
+    return D.word[:len(word)] == word
+
+
+def _scaled(which: int):
+    def predicate(ctx, D, w, n) -> bool:
+        D, word, n = _periodic(ctx, D, w, n)
+        D.run(len(word) * n)
+        if D.word[:len(word) * n] != word * n:
+            return False
+        start = D.states[0][which]
+        factor = D.lam if which else D.states[len(word)][0][0]          # λ for q, μ = p_1(t_|w|) for p
+        power = Num(D.F, [Fraction(1)])
+        for k in range(1, n + 1):
+            power = power * factor
+            now = D.states[k * len(word)][which]
+            if any((now[i] - power * start[i]).sign() for i in range(3)):
+                return False
+        return True
+    return predicate
+
+
+def leaves(ctx, D, w, n) -> bool:
+    D, word, n = _periodic(ctx, D, w, n)
+    D.run(len(word) * n, pattern=word)
+    if D.stop == "a multiple collision":
+        raise NotVerified("a multiple collision before the pattern is left")
+    return D.word != (word * n)[:len(D.word)] or len(D.word) < len(word) * n
+
+
+FUNCTIONS["datum"] = datum
+PREDICATES.update(follows=follows, q_scaled=_scaled(1), p_scaled=_scaled(0), leaves=leaves)
