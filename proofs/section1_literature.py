@@ -18,8 +18,11 @@ import re
 
 from certify.algebra import Algebraic, facts, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
+from certify.dynamics.systems import candidate_in
+from certify.obligations import quiet, record
 from certify.patterns import analyse, fmt, vanishes_on_branch
 from certify.patterns import parse as parse_word
+from certify.patterns.periodic import read as read_pattern
 from certify.run import (
     PASS,
     Check,
@@ -27,6 +30,7 @@ from certify.run import (
     conclude,
     fact_ids,
     gathered,
+    named,
     overridden,
     quantity,
     replaced,
@@ -44,6 +48,31 @@ def expand_pattern(pattern: str) -> str:
     if "s" in word:
         raise ValueError(f"cannot read the pattern {pattern!r} as a four-particle word")
     return word
+
+
+def factors_witness(*words: str) -> list[str]:
+    """A witness for the kernel (certify_kernel/pattern.py): the irreducible factors the engine's
+    sign tables of each word's candidate found (its Spectrum's), which the kernel uses only
+    through exact divisions of its own cut polynomials (so that their roots are roots of small
+    polynomials); the obligation's id, in a list (none without a recording)."""
+    factors: set = set()
+    for word in words:
+        normal, system, _ = read_pattern(word)
+        spec = candidate_in(system, normal).spectrum
+        if not spec._known:               # the word caches were reset (a census): the analysis finds them again
+            with quiet():
+                analyse(word)
+            spec = candidate_in(system, normal).spectrum
+        factors |= {tuple(int(c) for c in f.coeffs()) for f in spec._known}
+    oid = record({"kind": "factors", "words": list(words), "factors": [list(f) for f in sorted(factors)]})
+    return take([oid]) if oid else []         # the check's own: no other check takes it
+
+
+def witnessed(check: Check, ref: str, *words: str) -> Check:
+    """``check`` deciding the formal statement ``ref``, with the factors of the words' candidates
+    as its witness."""
+    check.obligations = list(check.obligations or []) + factors_witness(*words)
+    return named(ref, check)
 
 
 # ---------------------------------------------------------------- L1-L6: the literature, through `certify pattern`
@@ -83,14 +112,17 @@ def _digits_check(name: str, a, digits: str) -> Check:
                  [f"{name} = {a.describe()}"])
 
 
-def _threshold_certificate(word, threshold, digits, what):
+def _threshold_certificate(word, threshold, digits, what, refs: dict):
     """No self-similar datum above the threshold, stable self-similar data on all of
-    ]0, threshold[ (an open set of initial data: positive measure)."""
-    with gathered() as analysis:         # the analysis' facts: for the checks that read it
+    ]0, threshold[ (an open set of initial data: positive measure), the feasible set's
+    supremum; ``refs``: the formal statements (statements/1_literature.txt) the checks decide,
+    by "digits", "above", "stable", "sup" (those printed)."""
+    with gathered() as analysis:         # the analysis' facts: for the checks that read them
         res = pattern(word)
     take(analysis)
     thr = radical(threshold)
     exists = _pieces(res, "exists")
+    feas = _pieces(res, "feasible")
     checks = [_digits_check(threshold, thr, digits),
               Check(f"for r > {threshold} no self-similar datum of {word} exists on any branch "
                     f"(λ > 0 real, u > 0{', x > 0' if res.system == 'four' else ''})",
@@ -101,7 +133,13 @@ def _threshold_certificate(word, threshold, digits, what):
                     any(lo == 0 and hi == thr for _, _, lo, hi in res.intervals("stable", 0)),
                     [f"stable: {_sets(res, 'stable')}", f"conditions: {'; '.join(res.conditions['stable'])}"],
                     obligations=analysis + take()),
+              Check(f"{threshold} is the largest r where the self-similar datum of {word} is feasible",
+                    bool(feas) and _top(feas) == thr, [f"feasible: {_sets(res, 'feasible')}"],
+                    obligations=analysis + take()),
               Check("every point of ]0, 1[ decided", not res.undecided, res.undecided, obligations=list(analysis))]
+    for check, key in zip(checks, ("digits", "above", "stable", "sup")):
+        if key in refs:
+            witnessed(check, refs[key], word) if key != "digits" else named(refs[key], check)
     ev = [f"`certify pattern {word}`: {res.verdict}", "M = `[" + ", ".join("[" + ", ".join(row) + "]" for row in res.matrix) + "]`", f"cp = `{res.cp}`",
           f"disc = `{res.discriminant}`", f"feasible: {_sets(res, 'feasible')}"]
     return checks, ev
@@ -121,7 +159,8 @@ PRINTED_L1 = dict(word="ab", threshold="7-4√3", digits="0.07180")
 def three_particles(word, threshold, digits):
     """`certify pattern ab` (three particles, 2x2 matrices): the self-similar data exist
     exactly for r ≤ 7-4√3 and are stable on ]0, 7-4√3[."""
-    checks, ev = _threshold_certificate(word, threshold, digits, "λ dominant: an open set of initial data")
+    checks, ev = _threshold_certificate(word, threshold, digits, "λ dominant: an open set of initial data",
+                                        dict(digits="L1.1", above="L1.2", stable="L1.3", sup="L1.4"))
     return conclude(checks, evidence=ev,
                     note="Three particles collapse only through the pattern ab repeated (CDKK, McNamara-Young); "
                          "what is certified is that pattern's self-similar datum: none for r > 7-4√3, a stable "
@@ -141,7 +180,7 @@ PRINTED_L2 = dict(word="[ac]b", threshold="3-2√2", digits="0.17157")
 def symmetric_system(word, threshold, digits):
     """`certify pattern [ac]b` (p_1 = p_3, the [ac] collision applies A and C at once,
     reduced to two gaps): no self-similar datum for r > 3-2√2, stable below."""
-    checks, ev = _threshold_certificate(word, threshold, digits, "in the symmetric system")
+    checks, ev = _threshold_certificate(word, threshold, digits, "in the symmetric system", dict(above="L2.1"))
     return conclude(checks, evidence=ev,
                     note="The symmetric system's only pattern is [ac]b repeated; its self-similar datum exists "
                          "exactly for r ≤ 3-2√2.")
@@ -172,11 +211,12 @@ def abcb_exists(word, P, r_exist, stability):
     feas = _pieces(res, "feasible")
     counted = fact_ids(lambda: facts.root_count(len(roots) + (poly(1) == 0), poly, 0, 1),   # Sturm on ]0, 1]
                        *[lambda e=e: facts.sign_at(int(poly(e) > 0) - int(poly(e) < 0), poly, e) for e in (0, 1)])
-    checks = [Check(f"P = {P} has exactly one root in [0,1]", len(roots) == 1 and not at_ends,
-                    ["roots in ]0,1[: " + ("; ".join(a.describe() for a in roots) or "none")], obligations=counted)]
+    checks = [named("L3.1", Check(f"P = {P} has exactly one root in [0,1]", len(roots) == 1 and not at_ends,
+                                  ["roots in ]0,1[: " + ("; ".join(a.describe() for a in roots) or "none")],
+                                  obligations=counted))]
     if re_ is None:
         return conclude(checks)
-    checks.append(_digits_check("r_exist", re_, r_exist))
+    checks.append(named("L3.2", _digits_check("r_exist", re_, r_exist)))
     # the feasible set covers ]0, r_exist[ up to the undecided points
     with gathered(again=True) as covering:
         cuts = sorted({p.lo for _, p in feas if not p.is_point} | {p.hi for _, p in feas if not p.is_point})
@@ -194,19 +234,20 @@ def abcb_exists(word, P, r_exist, stability):
         ends_at_root = bool(feas) and _top(feas) == re_
     take(covering + top)
     checks += [
-        Check(f"for every r in ]0, r_exist[ (r_exist = the root of P) the candidate of {word} is feasible on some "
+        witnessed(Check(f"for every r in ]0, r_exist[ (r_exist = the root of P) the candidate of {word} is feasible on some "
               f"branch and fixed point, except at the point(s) "
               f"{', '.join(fmt(c) for c in uncovered_points) or 'none'} where the engine is undecided "
               "(a double eigenvalue: u is 0/0 in every row of the eigen-equation)",
               not gaps and explained, [f"feasible: {_sets(res, 'feasible')}", f"gaps: {gaps or 'none'}",
                                        "undecided: " + ("; ".join(res.undecided) or "none")],
-              obligations=analysis + covering),
-        Check(f"for r > r_exist no feasible candidate of {word}", ends_at_root,
-              [f"sup of the feasible set: {fmt(_top(feas)) if feas else '∅'}"], obligations=analysis + top),
-        Check(f"{word} is {stability}: no stable self-similar datum for any r in ]0,1[",
-              stability == "unstable" and not res.stable and bool(res.feasible),
-              [f"stable: {_sets(res, 'stable')}; conditions {'; '.join(res.conditions['stable'])}"],
-              obligations=list(analysis)),
+              obligations=analysis + covering), "L3.3", word),
+        witnessed(Check(f"for r > r_exist no feasible candidate of {word}", ends_at_root,
+                        [f"sup of the feasible set: {fmt(_top(feas)) if feas else '∅'}"], obligations=analysis + top),
+                  "L3.4", word),
+        witnessed(Check(f"{word} is {stability}: no stable self-similar datum for any r in ]0,1[",
+                        stability == "unstable" and not res.stable and bool(res.feasible),
+                        [f"stable: {_sets(res, 'stable')}; conditions {'; '.join(res.conditions['stable'])}"],
+                        obligations=list(analysis)), "L3.5", word),
     ]
     return conclude(checks, evidence=[f"`certify pattern {word}`: {res.verdict}", f"cp = `{res.cp}`",
                                       f"disc = `{res.discriminant}`", f"exists: {_sets(res, 'exists')}"],
@@ -255,15 +296,18 @@ def upper_thresholds(ab_cb_patterns, **printed):
     the upper branch; its upper end is proven equal to the printed radical (minimal
     polynomial and isolating interval), and the digits are its rounding."""
     checks, ev = [], []
-    for key in sorted(printed, key=lambda k: int(k[1:])):
+    for i, key in enumerate(sorted(printed, key=lambda k: int(k[1:]))):
         n = int(key[1:])
         value, digits = _printed_value(printed[key])
+        radical_text = printed[key].replace("≈", "≃").partition("≃")[0].strip()
         w = stable_window(ab_cb_patterns, n) if n in ab_cb_patterns else None
-        checks.append(Check(f"n = {n}: the upper stability threshold of {ab_cb(n)} is {printed[key]}",
-                            w is not None and w[1] == value and value.in_rounding_interval(digits),
-                            [f"stable: {_sets(ab_cb_patterns[n], 'stable')}" if n in ab_cb_patterns
-                             else f"n = {n} is beyond the analysed n ≤ {N_MAX}",
-                             f"printed: {value.describe()}"] + ([f"computed: {w[1].describe()}"] if w else [])))
+        checks.append(witnessed(Check(f"n = {n}: the upper stability threshold of {ab_cb(n)} is {radical_text}",
+                                      w is not None and w[1] == value,
+                                      [f"stable: {_sets(ab_cb_patterns[n], 'stable')}" if n in ab_cb_patterns
+                                       else f"n = {n} is beyond the analysed n ≤ {N_MAX}",
+                                       f"printed: {value.describe()}"] + ([f"computed: {w[1].describe()}"] if w else [])),
+                              f"L4.{2 * i + 1}", *([ab_cb(n)] if n in ab_cb_patterns else [])))
+        checks.append(named(f"L4.{2 * i + 2}", _digits_check(radical_text, value, digits)))
         if n in ab_cb_patterns:
             ev.append(f"{ab_cb(n)}: {ab_cb_patterns[n].verdict}")
     return conclude(checks, evidence=ev)
@@ -290,10 +334,11 @@ def windows(ab_cb_patterns, n2, n3, limit, order):
     for n, text in ((2, n2), (3, n3)):
         lo_d, hi_d = (t.strip() for t in text.strip("[] ").split(","))
         w = stable_window(ab_cb_patterns, n)
-        checks.append(Check(f"the stability window of {ab_cb(n)} is ≈ {text}",
-                            w is not None and w[0].in_rounding_interval(lo_d) and w[1].in_rounding_interval(hi_d),
-                            [f"stable: {_sets(ab_cb_patterns[n], 'stable')}"]
-                            + ([f"lower end: {w[0].describe()}", f"upper end: {w[1].describe()}"] if w else [])))
+        checks.append(witnessed(Check(f"the stability window of {ab_cb(n)} is ≈ {text}",
+                                      w is not None and w[0].in_rounding_interval(lo_d) and w[1].in_rounding_interval(hi_d),
+                                      [f"stable: {_sets(ab_cb_patterns[n], 'stable')}"]
+                                      + ([f"lower end: {w[0].describe()}", f"upper end: {w[1].describe()}"] if w else [])),
+                                f"L5.{n - 1}", ab_cb(n)))
     ws = {n: stable_window(ab_cb_patterns, n) for n in range(2, N_MAX + 1)}
     lim = radical(limit)
     ok = all(w is not None for w in ws.values())
@@ -305,12 +350,12 @@ def windows(ab_cb_patterns, n2, n3, limit, order):
     take(order_facts + above_facts)
     rows = [f"n = {n}: ]{w[0].digits(10)}, {w[1].digits(10)}[" if w else f"n = {n}: not one interval"
             for n, w in ws.items()]
-    checks.append(Check(f"the windows of n = 2..{N_MAX} are {order.split(',')[0]} (each below the previous, with "
-                        f"a gap) and decreasing in n", "disjoint" in order and strictly, rows,
-                        obligations=list(order_facts)))
-    checks.append(Check(f"every window n = 2..{N_MAX} lies above {limit} (= {lim.digits(10)}), the distances "
-                        f"decreasing", "above" in order and above and decreasing, rows,
-                        obligations=above_facts + order_facts))
+    checks.append(named("L5.3", Check(f"the windows of n = 2..{N_MAX} are {order.split(',')[0]} (each below the "
+                                      f"previous, with a gap) and decreasing in n", "disjoint" in order and strictly, rows,
+                                      obligations=list(order_facts))))
+    checks.append(named("L5.3", Check(f"every window n = 2..{N_MAX} lies above {limit} (= {lim.digits(10)}), the "
+                                      f"distances decreasing", "above" in order and above and decreasing, rows,
+                                      obligations=above_facts + order_facts)))
     return conclude(checks, note=f"The accumulation itself is a statement about all n: certified are the windows "
                                  f"n = 2..{N_MAX}, decreasing towards {limit} from above; the limit is the "
                                  "paper's (and CDKK's) belief, not proven here.")
@@ -347,7 +392,8 @@ def q2_vanishes_at_threshold(ab_cb_patterns, criterion, branch):
         rows.append(f"n = {n}: r_n = {w[1].digits(10)}; numerator of q_2(0) = 0 there: {'yes' if zero else 'no'}; "
                     f"denominator = 0: {'yes' if pole else 'no'}")
     holds_for = [n for n, ok in results.items() if ok]
-    return conclude([Check(f"q_2(0) = 0 on the dominant branch at the upper threshold, for n = 2..{N_MAX}",
-                           len(holds_for) == len(results), rows)],
+    return conclude([named(f"L6.{n - 1}", Check(f"{ab_cb(n)}: q_2(0) = 0 on the dominant branch at the upper threshold",
+                                                 ok, [row for row in rows if row.startswith(f"n = {n}:")]))
+                     for n, ok in results.items()],
                     note=f"Tested, not assumed: it holds for n = {', '.join(map(str, holds_for)) or 'none'}; "
                          "for larger n it is not tested here (see `certify pattern`).")

@@ -67,7 +67,8 @@ from certify.run import (
     take,
     unsupported_fact,
 )
-from proofs.section1_literature import expand_pattern
+from proofs.section1_literature import expand_pattern, stable_window, witnessed
+from proofs.section1_literature import pattern as whole_pattern
 
 SIMULATOR = ("the particle simulator in ball arithmetic (certify.dynamics.simulate, python-flint arb: each collision "
              "chosen by enclosures of the collision times): the kernel has no interval arithmetic")
@@ -189,6 +190,14 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
         f"{s['branch']} {s['fixed_point']}: {s['set']}" for s in res.stable) + f" ({'; '.join(res.conditions['stable'])})")
     checks.append(Check("just below 5-2√6 the candidate is stable: dominant eigenvalue (|μ| < λ for the other "
                         "eigenvalues) and |f'(x)| < 1 on the whole interval ]s, 5-2√6[ (certify pattern)", stable))
+    with gathered() as whole_facts:             # `certify pattern` over ]0, 1[ (shared with L4, L5)
+        whole = whole_pattern(pattern)
+    take(whole_facts)
+    w = stable_window({3: whole}, 3)
+    checks.append(witnessed(Check(f"over ]0, 1[ the stable set of {pattern} is one interval of the dominant branch, "
+                                  "whose upper end is 5-2√6", w is not None and w[1] == r1,
+                                  [f"stable: {'; '.join(s_['branch'] + ' ' + s_['fixed_point'] + ': ' + s_['set'] for s_ in whole.stable)}"],
+                                  obligations=list(whole_facts)), "T26.1", pattern))
     others = [f"{BRANCH_NAMES[R.branch]} {R.fixed_point}: {R.describe()}" for R in an.regions
               if R.branch > 0 and R.pieces]
     if others:
@@ -265,7 +274,7 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     named = [collision_matrix(letter.lower()) for letter in matrix]
     checks = [Check(f"the matrix of the word {word} (collisions in time order) is {matrix}", same,
                     [f"M_w = `{show(cand.M.tolist())}`", f"cp(M_w) = `{show(sp.collect(cand.cp, lam))}`"],
-                    obligations=product_fact(same, named or [sp.eye(3)], cand.M))]
+                    obligations=product_fact(same, named or [sp.eye(3)], cand.M), ref="T27.1")]
     m = word.index(after) + 1
     feas, steps = prefix_requirements(word, m, cand.q0, cand.steps, cand.q0_other)
     i, o = INDEX[next], INDEX[other]
@@ -322,10 +331,10 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
         Check("every cell and critical value of ]0,1[ decided on every branch, for x₊ and x₋", not undecided,
               [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided],
               obligations=list(analysis)),
-        Check(f"wherever the candidate realises {', '.join(word[:m])}, the next collision is {next}, "
+        witnessed(Check(f"wherever the candidate realises {', '.join(word[:m])}, the next collision is {next}, "
               f"strictly before {other}", not bad and not undecided,
               [f"fails on {BRANCH_NAMES[R.branch]} {R.fixed_point} {p}: {why}" for R, p, why in bad],
-              obligations=analysis + facts_claim),
+              obligations=analysis + facts_claim), "T27.3", word),
         Check("and the candidate does realise them somewhere (the remark is not vacuous)", bool(feasible),
               obligations=list(analysis)),
     ]
@@ -333,13 +342,13 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     # the same conclusion from `certify pattern abcab` (the whole period, every branch, x±)
     res = analyse(word)
     dg = res.diagnosis or {}
-    checks.append(Check(f"`certify pattern {word}`: no feasible datum; the first collision that goes wrong is "
-                        f"collision {m + 1} ({other}), and {next} comes instead, strictly before, wherever the "
-                        f"first {m} are realised",
-                        not res.feasible and dg.get("collision") == m + 1 and dg.get("expected") == other
-                        and [i["letter"] for i in dg.get("instead", [])] == [next] and dg.get("complete") is True
-                        and not res.undecided,
-                        [res.verdict, dg.get("text", "no diagnosis")]))
+    checks.append(witnessed(Check(f"`certify pattern {word}`: no feasible datum; the first collision that goes wrong "
+                                  f"is collision {m + 1} ({other}), and {next} comes instead, strictly before, wherever "
+                                  f"the first {m} are realised",
+                                  not res.feasible and dg.get("collision") == m + 1 and dg.get("expected") == other
+                                  and [i["letter"] for i in dg.get("instead", [])] == [next]
+                                  and dg.get("complete") is True and not res.undecided,
+                                  [res.verdict, dg.get("text", "no diagnosis")]), "T27.2", word))
     where = "; ".join(f"{BRANCH_NAMES[R.branch]} branch with {R.fixed_point} on {R.describe()}" for R in feasible)
     return conclude(checks, evidence=ev,
                     note=f"The printed reason is checked wherever it applies: the candidate realises "
@@ -545,15 +554,16 @@ def abcab_census(pattern):
                     bool(records) and not feasible and not unchecked,
                     ([f"not decided: {', '.join(r['word'] for r in unchecked)}"] if unchecked else [])
                     + ([f"feasible: {', '.join(r['word'] for r in feasible)}"] if feasible else []))
+    printed = witnessed(printed, "T28.1", *FOUND[1:])
     corrected = []
     if feasible:
         replays = [replay(r) for r in feasible]
-        corrected.append(Check(
+        corrected.append(witnessed(Check(
             f"periodic patterns containing {pattern} (or {mirror}) can have feasible self-similar data: "
             + "; ".join(f"{r['word']} = {' '.join(r['blocks'])} on {_sets(r, 'feasible')}" for r in feasible)
             + f" (certified), the exact dynamics from each datum repeating the word for {PERIODS} periods",
             all(ok for ok, _ in replays), [text for _, text in replays], corrects=printed,
-            obligations=unsupported_fact(SIMULATOR)))
+            obligations=unsupported_fact(SIMULATOR)), "T28.2", *FOUND[1:]))
     return conclude(checks + [printed], corrected, evidence=ev, kind=REFUTED_REMARK,
                     misprint="l. 515, Remark 3.3: a pattern containing abcab 'does not seem to have feasible initial data'",
                     note=f"An empirical remark, tested on every pattern of at most {LENGTH} collisions containing "

@@ -107,6 +107,7 @@ from certify.run import (
     unread,
     unsupported_fact,
 )
+from proofs.section1_literature import witnessed
 
 WORD = "ababcb"
 ZERO = Q(0)                  # an exact 0 (fmpq is immutable: safe as a default argument)
@@ -1227,17 +1228,20 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
 @certificate("T25.1", "l. 276-321", "Theorem 3.1: self-similar data iff r < 5-2√6, given by the printed formulas, "
              "and unstable.", needs=["candidate"],
              printed=dict(a=A_PRINTED, b=B_PRINTED, c=C_PRINTED, d=D_PRINTED, U=U_PRINTED, V=V_PRINTED,
-                          velocities=VELOCITIES_PRINTED, p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, r1=R1_PRINTED),
+                          velocities=VELOCITIES_PRINTED, p3t4=P3_T4_PRINTED, p1t5=P1_T5_PRINTED, r1=R1_PRINTED,
+                          r1_digits="0.10102"),
              expect=PASS,
-             mutants=[replaced("U", "16*λ", "-16*λ", "the sign of a coefficient of u")])
-def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
+             mutants=[replaced("U", "16*λ", "-16*λ", "the sign of a coefficient of u"),
+                      replaced("r1_digits", "0.10102", "0.10103", "a digit of 5-2√6")])
+def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, r1_digits):
     """Two routes.  (1) The exact region analysis of the computed candidate
     (certify.patterns.feasibility): every inequality needed to realise ababcb — all the gaps,
     p_1(t_6) > 0 included, which the paper does not list — imposed on every branch
     and both fixed points over ]0,1[, critical values included.  (2) The printed
     formulas: x₊ > 0, u > 0, the five velocities < 0 and the two distances > 0 on the
     upper and lower branches below r1, from the sign tables shared with T17-T22.
-    Instability as in T24 (corrected reading)."""
+    Instability as in T24 (corrected reading).  The formal statements T25.1.1-8
+    (statements/3_pattern.txt): the checks naming them."""
     spectrum, rr1 = candidate.spectrum, r1_of(r1)
     with gathered(again=True) as analysis:     # the regions: for the first two checks
         an = Analysis(candidate)
@@ -1249,10 +1253,13 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
     with gathered(again=True) as ends:
         exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
                          and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
+        pieces = [p for k in range(3) for p in where[k]]
+        below = any(not p.is_point and p.lo == Algebraic.rational(0) and p.hi == rr1 for p in pieces)
+        above = any((p.lo >= rr1) if p.is_point else (p.hi > rr1) for p in pieces)
     regions = [f"{BRANCH_NAMES[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
                + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}" if R.dropped else "")
                for R in an.regions]
-    fp, xp, _xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
+    fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     uv = printed_uv(U, V)
     tables = [spectrum.table("u", parse(U), 0, 1)]
     tables += [spectrum.table(name, parse(text).subs(uv), 0, 1) for name, (_k, _i, text) in velocities.items()]
@@ -1261,25 +1268,42 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1):
         printed_ok = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
                          and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
                          for k in (UPPER, LOWER))
+    with gathered(again=True) as facts_minus:       # the other fixed point on those branches
+        minus_negative = all(xm.holds(k, -1, 0, rr1) for k in (UPPER, LOWER))
     apd = spectrum.table("a+d", fp.a + fp.d, 0, rr1)
     lam_t = spectrum.table("λ", lam, 0, rr1)
     with gathered(again=True) as facts_unstable:
         unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
     facts_unstable += modulus_facts(f_prime_at_fixed_point())      # |f'(x₊)| > 1 iff a+d < 0 (T24)
-    take(analysis + ends + facts_printed + facts_unstable)
+    take(analysis + ends + facts_printed + facts_minus + facts_unstable)
+    cp = candidate.cp
+    same_q = [reduce_mod(to_field(parse(e)) - candidate.q0[i + 1], cp) == 0 for i, e in enumerate((U, V))]
+    P, comp = [to_field(parse(e)) for e in (a, b, c, d)], [to_field(e) for e in candidate.abcd]
+    same_f = all(reduce_mod(P[i] * comp[j] - P[j] * comp[i], cp) == 0 for i in range(4) for j in range(i + 1, 4))
     return conclude([
         Check("every cell and critical value of ]0,1[ decided, on every branch, for both fixed points", not undecided,
               [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided],
               obligations=list(analysis)),
-        Check("the candidate realises ababcb, with every inequality strict, exactly for 0 < r < 5-2√6 on the upper "
-              "branch and on the lower branch, and nowhere on the middle branch",
-              exactly_below[UPPER] and exactly_below[LOWER] and not where[MIDDLE],
-              ["the inequalities: " + ", ".join(f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs)] + regions,
-              obligations=analysis + ends),
+        named("T25.1.1", Check(f"5-2√6 ≃ {r1_digits}", rr1.in_rounding_interval(r1_digits), [rr1.describe()])),
+        witnessed(Check("the candidate realises ababcb, every inequality strict, for every r in ]0, 5-2√6[ on some "
+                        "branch", below, regions, obligations=analysis + ends), "T25.1.2", WORD),
+        witnessed(Check("and for no r in [5-2√6, 1[, on any branch, for either fixed point", not above, regions,
+                        obligations=analysis + ends), "T25.1.3", WORD),
+        named("T25.1.4", Check("u, v as printed are the components of q(0) (rows 1 and 2 of M q = λ q), modulo cp(M)",
+                               all(same_q), [f"u: {same_q[0]}, v: {same_q[1]}"])),
+        named("T25.1.5", Check("the printed (a, b, c, d) is proportional to the computed position map modulo cp(M)",
+                               same_f, [f"computed a = `{show(candidate.abcd[0])}`"])),
+        witnessed(Check("the candidate realises ababcb, with every inequality strict, exactly for 0 < r < 5-2√6 on the "
+                        "upper branch and on the lower branch, and nowhere on the middle branch",
+                        exactly_below[UPPER] and exactly_below[LOWER] and not where[MIDDLE],
+                        ["the inequalities: " + ", ".join(f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs)]
+                        + regions, obligations=analysis + ends), "T25.1.6", WORD),
+        named("T25.1.7", Check("on the upper and lower branches the printed x₋ is negative for r < 5-2√6: the datum is "
+                               "x₊", minus_negative, obligations=list(facts_minus))),
         Check("with the printed formulas (x = x₊, u, v): x₊ > 0, u > 0, the five velocities < 0 and p3(t4), p1(t5) > 0 "
               "on the upper and lower branches for r < 5-2√6", printed_ok, obligations=list(facts_printed)),
-        Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable,
-              obligations=list(facts_unstable)),
+        witnessed(Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable,
+                        obligations=list(facts_unstable)), "T25.1.8", WORD),
     ], note="p_1(t_6) > 0 (μ > 0) is needed too and is not in the paper's list (l. 470-486); it holds on the same "
             "region. The computed (a, b, c, d) is the printed one times a negative constant (T10), so the paper's x₊ "
             "is the computed x₋.")

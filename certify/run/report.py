@@ -547,7 +547,7 @@ def render_json(results) -> str:
 
 
 CERTIFICATES_FORMAT = "certify-certificates/2"   # certify_kernel.FORMAT: docs/verify.md
-WITNESS_KINDS = ("signed",)                       # the facts the kernel reads as witnesses (certify_kernel.signs)
+WITNESS_KINDS = ("signed", "factors")            # the facts the kernel reads as witnesses (.signs, .pattern)
 _STATEMENTS: dict = {}
 
 
