@@ -56,7 +56,7 @@ from .poly import integer_primitive, squarefree, value
 from .sturm import Algebraic
 from .values import RF, Undefined, _root_above, _root_below, number, roots_in, univariate
 
-LONGEST = 12               # words of more collisions are not analysed (the kernel's time budget)
+LONGEST = 20               # words of more collisions are not analysed (the kernel's time budget)
 LARGEST = 40               # a cut polynomial left unsplit of larger degree is not isolated (Sturm is slow)
 GAP = {"a": 0, "s": 0, "b": 1, "c": 2}
 
