@@ -232,7 +232,8 @@ MUTANTS = [
            "    except NotVerified as exc:\n        return True, ''"),
     Mutant("the command exits 0 when a certificate fails", "kernel", MAIN, "return 1 if failed else 0", "return 0"),
     Mutant("* binds like + (precedence)", "kernel", LANG, '"*": 30,', '"*": 20,'),
-    Mutant("^ left-associative", "kernel", LANG, "right = self.formula(bp - 1 if op == \"^\" else bp, brackets)",
+    Mutant("^ left-associative", "kernel", LANG,
+           "right = self.formula(bp - 1 if op in (\"^\", \"implies\") else bp, brackets)",
            "right = self.formula(bp, brackets)"),
 ]
 

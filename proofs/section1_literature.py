@@ -18,11 +18,8 @@ import re
 
 from certify.algebra import Algebraic, facts, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
-from certify.dynamics.systems import candidate_in
-from certify.obligations import quiet, record
-from certify.patterns import analyse, fmt, vanishes_on_branch
+from certify.patterns import analyse, fmt, known_factors, vanishes_on_branch
 from certify.patterns import parse as parse_word
-from certify.patterns.periodic import read as read_pattern
 from certify.run import (
     PASS,
     Check,
@@ -36,6 +33,7 @@ from certify.run import (
     replaced,
     replaying,
     take,
+    witness,
 )
 
 
@@ -50,28 +48,11 @@ def expand_pattern(pattern: str) -> str:
     return word
 
 
-def factors_witness(*words: str) -> list[str]:
-    """A witness for the kernel (certify_kernel/pattern.py): the irreducible factors the engine's
-    sign tables of each word's candidate found (its Spectrum's), which the kernel uses only
-    through exact divisions of its own cut polynomials (so that their roots are roots of small
-    polynomials); the obligation's id, in a list (none without a recording)."""
-    factors: set = set()
-    for word in words:
-        normal, system, _ = read_pattern(word)
-        spec = candidate_in(system, normal).spectrum
-        if not spec._known:               # the word caches were reset (a census): the analysis finds them again
-            with quiet():
-                analyse(word)
-            spec = candidate_in(system, normal).spectrum
-        factors |= {tuple(int(c) for c in f.coeffs()) for f in spec._known}
-    oid = record({"kind": "factors", "words": list(words), "factors": [list(f) for f in sorted(factors)]})
-    return take([oid]) if oid else []         # the check's own: no other check takes it
-
-
 def witnessed(check: Check, ref: str, *words: str) -> Check:
     """``check`` deciding the formal statement ``ref``, with the factors of the words' candidates
     as its witness."""
-    check.obligations = list(check.obligations or []) + factors_witness(*words)
+    check.obligations = list(check.obligations or []) + witness("factors", words=list(words),
+                                                                  factors=known_factors(*words))
     return named(ref, check)
 
 

@@ -654,6 +654,10 @@ class Spectrum:
         self._texts: dict = {}             # id of a known factor -> its text
         self._branch_signs: dict = {}      # (id of a condition, key of rc, k, maxprec) -> (it, its sign there)
 
+    def known_factors(self) -> list:
+        """The irreducible factors (fmpz_poly) met so far by this spectrum's tables."""
+        return list(self._known)
+
     @cached_property
     def cp(self) -> sp.Expr:
         """cp as an expanded SymPy expression (for readers)."""

@@ -21,6 +21,7 @@ from .pattern import (
                           check_range,
                           dominance_requirements,
                           end_data,
+                          known_factors,
                           stability_conditions,
 )
 from .periodic import compact, normal_form, parse, primitive_root, read, system_of, validate
@@ -30,4 +31,5 @@ __all__ = ["BRANCH_NAMES", "island_theorem", "NO_X", "Analysis", "Requirement", 
            "vanishes_on_branch",
            "compact", "normal_form", "parse", "primitive_root", "read", "show_word", "system_of", "validate",
            "SCHEMA_PATH", "PatternResult", "analyse", "check_range", "dominance_requirements", "end_data",
+           "known_factors",
            "stability_conditions"]

@@ -60,6 +60,7 @@ from certify.algebra.poly import (
 from certify.dynamics.model import factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
+from certify.obligations import quiet
 
 from .feasibility import NO_X, Analysis, Region, Requirement, prefix_requirements
 from .periodic import compact, read
@@ -322,6 +323,23 @@ def _cap(text: str, n: int = 4000) -> str:
 
 def _nonempty(regions) -> list[dict]:
     return [region_set(R) for R in regions if R.pieces]
+
+
+def known_factors(*words: str) -> list[list[int]]:
+    """The irreducible factors (integer coefficients, lowest degree first) that the sign tables of
+    each word's candidate met (its Spectrum's), the analysis run first where the word caches were
+    reset: a witness for the kernel (certify_kernel/pattern.py divides its own cut polynomials by
+    those that divide them exactly, so that their roots are roots of small polynomials)."""
+    found: set = set()
+    for word in words:
+        normal, system, _ = read(word)
+        spec = candidate_in(system, normal).spectrum
+        if not spec.known_factors():        # the word caches were reset (a census): find them again, unrecorded
+            with quiet():
+                analyse(word)
+            spec = candidate_in(system, normal).spectrum
+        found |= {tuple(int(c) for c in f.coeffs()) for f in spec.known_factors()}
+    return [list(f) for f in sorted(found)]
 
 
 def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True) -> PatternResult:

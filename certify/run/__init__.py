@@ -36,6 +36,7 @@ from .checks import (
                      resultant_fact,
                      sign_intervals_facts,
                      unsupported_fact,
+                     witness,
 )
 from .files import first_member, load_findings, read_first_member
 from .island_figures import report_figure as island_figure
@@ -81,7 +82,8 @@ __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
     "product_fact", "identity_facts", "fact_ids", "resultant_fact", "identity_modulo_facts",
     "determinant_fact", "kept_facts", "sign_intervals_facts", "unsupported_fact",
-    "check_of", "combined", "concluded", "count_check", "digits_check", "eliminant_check", "identity", "result_check",
+    "check_of", "combined", "concluded", "count_check", "witness", "digits_check", "eliminant_check", "identity",
+    "result_check",
     "replaying", "gathered", "take", "captured", "facts_of",
     "first_member", "read_first_member", "load_findings",
     "committed_windows", "island_figure", "explanations", "save_figure",

@@ -213,3 +213,11 @@ def unsupported_fact(reason: str) -> list[str]:
 def determinant_fact(holds: bool, matrix, rhs) -> list[str]:
     """Record that det(matrix) = rhs (the engine's verdict ``holds``); the ids."""
     return fact_ids(lambda: facts.determinant_identity(holds, matrix, rhs))
+
+
+def witness(kind: str, **data) -> list[str]:
+    """Record a witness for the kernel (certificates.json: data of a kind it reads, such as
+    ``factors``, certify_kernel/pattern.py) and take it for the next check alone: its id in a list
+    (none outside a recording)."""
+    oid = obligations.record({"kind": kind, **data})
+    return obligations.take([oid]) if oid else []

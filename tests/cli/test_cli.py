@@ -206,7 +206,7 @@ def test_bench(fake, capsys, jobs):
 # Errors never end in a traceback
 
 def test_internal_error_is_one_line(fake, tmp_path, monkeypatch, capsys):
-    def crash(*args):
+    def crash(*args, **kwargs):
         raise RuntimeError("boom")
     monkeypatch.setattr(report, "write_report", crash)
     assert cli.main(["all", "--out", str(tmp_path)]) == 3        # its own code: not a FAIL (1), not usage (2)
@@ -217,7 +217,7 @@ def test_internal_error_is_one_line(fake, tmp_path, monkeypatch, capsys):
 def test_undecided_is_one_line_with_the_code_of_an_internal_error(fake, tmp_path, monkeypatch, capsys):
     from certify.errors import Undecided
 
-    def undecided(*args):
+    def undecided(*args, **kwargs):
         raise Undecided("sign of x undecided at r = 1/3")
     monkeypatch.setattr(report, "write_report", undecided)
     assert cli.main(["all", "--out", str(tmp_path)]) == 3
