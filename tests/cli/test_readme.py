@@ -28,6 +28,11 @@ def test_every_link_of_the_readme_and_the_docs_resolves():
             assert path.exists(), (page.name, target)
 
 
+def test_the_kernel_count_is_what_the_committed_kernel_json_gives():
+    data = json.loads((ROOT / "reports" / "kernel.json").read_text(encoding="utf-8"))
+    assert f"**{data['verified']}/{data['statements']} statements verified**" in README
+
+
 def test_the_example_is_what_the_committed_report_gives():
     from certify.run import runner
     data = json.loads((ROOT / "reports" / "report.json").read_text(encoding="utf-8"))
