@@ -8,12 +8,6 @@ and its answer.  A check takes the obligations recorded since the previous check
 (:func:`take`): the facts its verdict was computed from.  Nested calls (a Sturm count inside
 an isolation) and shared quantities (:func:`quiet`) record nothing.  Without an active
 recording the wrappers cost one attribute test.
-
-A deciding function that asserts something (a sign on a branch over an interval, a sign change
-at a point, a strict sign by inspection) also records a *piece* of derivation naming the ids
-it emitted (``fact(build, derive)``, :func:`asserting`); a check takes the pieces made since
-the previous check, adds the expected value of each other fact it rests on, and keeps the
-derivation when it concludes the check's verdict (:func:`derivation`, docs/verify.md).
 """
 from __future__ import annotations
 
@@ -31,9 +25,6 @@ class Recording:
         self.prefix, self.items, self.by_key, self.pending = prefix, [], {}, []
         self.depth = 0
         self.taken: set[str] = set()      # ids a check has taken from the pending ones
-        self.pieces: list[tuple[dict, bool]] = []    # derivation pieces not yet taken (reserved?)
-        self.gathering = 0                # inside gathered(): pieces are reserved for its check
-        self.held: set[str] = set()       # ids gathered() kept for a check that names them
         self.by_id: dict[str, dict] = {}
 
     def add(self, ob: dict) -> str:
@@ -114,9 +105,6 @@ def record(ob: dict) -> str | None:
 _CAPTURES: list[list] = []
 
 
-_EMITTED: list[list] = []
-
-
 def emit(ob: dict) -> str | None:
     """Record ``ob`` (a query of a table: the table first), and keep it for every
     :func:`replaying` computation under way; its id."""
@@ -124,57 +112,7 @@ def emit(ob: dict) -> str | None:
         return None
     for got in _CAPTURES:
         got.append(ob)
-    oid = record({**ob, "table": _ACTIVE[-1].add(ob["table"])} if isinstance(ob.get("table"), dict) else ob)
-    for seen in _EMITTED:
-        seen.append((oid, ob))
-    return oid
-
-
-def derive(piece: dict | None, carried: bool = False) -> None:
-    """Record a piece of derivation (docs/verify.md) for the check being made (``carried``, made
-    inside gathered() or naming a fact it gathered: only for a check that names its facts)."""
-    if piece is not None and _ACTIVE and not _ACTIVE[-1].depth:
-        rec = _ACTIVE[-1]
-        rec.pieces.append((piece, carried or rec.gathering > 0 or bool(rec.held.intersection(_refs(piece)))))
-
-
-def signs_within(found, allowed) -> None:
-    """Record that the signs ``found`` (a set a sign table returned, carrying its one query) are
-    asserted to lie in ``allowed``: the piece is a cover of the query's interval."""
-    ids = getattr(found, "facts", None)
-    rec = _ACTIVE[-1] if _ACTIVE else None
-    if rec is None or not ids or len(ids) != 1 or rec.by_id.get(ids[0], {}).get("kind") != "signs_query":
-        return
-    q = rec.by_id[ids[0]]
-    ends = rec.by_id[q["table"]]["ends"]
-    if not q["include_points"] and len(ends) > 2:     # the signs at the cell ends inside are not read
-        return
-    derive({"rule": "cover", "lo": ends[0] if q["lo"] is None else q["lo"], "hi": ends[-1] if q["hi"] is None
-            else q["hi"], "branch": q["branch"], "signs": sorted(allowed, key=str), "queries": list(ids)})
-
-
-def asserting(make: Callable) -> Callable:
-    """Decorate a deciding function that reads others (SignTable.holds reads its signs): its
-    outermost call records the piece ``make(answer, emitted, *args, **kw)``, ``emitted`` the
-    (id, obligation) pairs recorded during the call (an already taken fact too)."""
-    def wrap(func):
-        @functools.wraps(func)
-        def inner(*args, **kwargs):
-            if not _ACTIVE or _ACTIVE[-1].depth:
-                return func(*args, **kwargs)
-            seen: list = []
-            _EMITTED.append(seen)
-            try:
-                answer = func(*args, **kwargs)
-            finally:
-                _EMITTED.remove(seen)
-            try:
-                derive(make(answer, seen, *args, **kwargs))
-            except Exception:     # no piece: the check gets the expected values of its facts only
-                pass
-            return answer
-        return inner
-    return wrap
+    return record({**ob, "table": _ACTIVE[-1].add(ob["table"])} if isinstance(ob.get("table"), dict) else ob)
 
 
 def replaying(func: Callable) -> Callable:
@@ -237,12 +175,10 @@ def facts_of(*results) -> list[str]:
     return out
 
 
-def fact(build: Callable, piece: Callable | None = None) -> Callable:
+def fact(build: Callable) -> Callable:
     """Decorate a deciding function: its outermost call records ``build(answer, *args, **kw)``
     (a dict, a list of dicts, or None for nothing); an exception in ``build`` records an
-    obligation of kind ``unsupported`` with the reason, so that nothing is silently left out.
-    ``piece(answer, emitted, *args, **kw)``: the piece of derivation the answer asserts
-    (:func:`asserting`)."""
+    obligation of kind ``unsupported`` with the reason, so that nothing is silently left out."""
     def wrap(func):
         @functools.wraps(func)
         def inner(*args, **kwargs):
@@ -262,14 +198,8 @@ def fact(build: Callable, piece: Callable | None = None) -> Callable:
             ids = [emit(ob) for ob in listed]
             try:                        # a result object carries its own facts (see take)
                 answer.facts = [i for i in ids if i]
-                carried = True
             except AttributeError:
-                carried = False
-            if piece is not None and all(ids) and all(ob.get("kind") != "unsupported" for ob in listed):
-                try:
-                    derive(piece(answer, list(zip(ids, listed)), *args, **kwargs), carried)
-                except Exception:  # no piece: the check gets the expected values of its facts only
-                    pass
+                pass
             return answer
         return inner
     return wrap
@@ -305,15 +235,12 @@ def gathered(again: bool = False):
     got: list = []
     if again:
         _CAPTURES.append(got)
-    if rec is not None:
-        rec.gathering += 1
     try:
         yield ids
     finally:
         if again:
             _CAPTURES.remove(got)
         if rec is not None:
-            rec.gathering -= 1
             ids.extend(i for i in rec.pending if i not in before)
             for ob in got:
                 if isinstance(ob.get("table"), dict):
@@ -321,7 +248,6 @@ def gathered(again: bool = False):
                 if rec.add(ob) not in ids:
                     ids.append(rec.add(ob))
             rec.pending = [i for i in rec.pending if i in before]
-            rec.held.update(ids)
 
 
 @contextmanager
@@ -338,70 +264,8 @@ def captured():
         _CAPTURES.remove(got)
 
 
-# ---------------------------------------------------------------- derivations (docs/verify.md)
-
-def _refs(d: dict) -> list[str]:
-    """The obligation ids a derivation names."""
-    if d["rule"] == "all":
-        return [i for part in d["of"] for i in _refs(part)]
-    if d["rule"] == "expect":
-        return [e["id"] for e in d["facts"]]
-    return list(d["queries"]) + list(d.get("points", []))
-
-
-_KEY = lambda s: "null" if s is None else str(s)   # noqa: E731  (a sign as the kernel compares it)
-
-
-def concludes(d: dict, by_id: dict) -> bool:
-    """What a derivation concludes from the recorded values (the kernel re-checks it)."""
-    if d["rule"] == "all":
-        return all([concludes(part, by_id) for part in d["of"]])
-    if d["rule"] == "expect":
-        return all(json.dumps(value_of(by_id[e["id"]], f)) == json.dumps(v)
-                   for e in d["facts"] for f, v in e.items() if f != "id")
-    allowed = {_KEY(s) for s in d["signs"]}
-    got = [s for i in d["queries"] for s in by_id[i]["result"]]
-    got += [by_id[i]["signs"][d["branch"]] if d["branch"] < len(by_id[i]["signs"]) else "missing"
-            for i in d.get("points", [])]
-    return all(_KEY(s) in allowed for s in got)
-
-
-def value_of(ob: dict, field: str):
-    """A recorded value (for a sign table, "branches": its real branches per cell)."""
-    return [len(row) for row in ob["signs"]] if field == "branches" else ob[field]
-
-
-ASSERTED = {"identity": ("holds", True), "digits": ("holds", True), "resultant": ("holds", True),
-            "compare": ("sign", None), "sign_at": ("sign", None), "signed": ("sign", None),
-            "root_count": ("count", None), "signs_query": ("result", None), "sign_table": ("branches", None),
-            "branch_signs_at": ("signs", None)}   # None: the value found, a fact the check relies on as it is
-
-
-def expected(ob: dict) -> dict | None:
-    """The value a check asserts of a fact it rests on without a piece: an identity, a digits,
-    a resultant relation holds; a comparison, a count, a sign is what it was found to be."""
-    field, value = ASSERTED.get(ob["kind"], (None, None))
-    if field is None:
-        return None
-    return {"id": ob["id"], field: value_of(ob, field) if value is None else value}
-
-
-def derivation(ids: list[str], verdict: bool, free: bool) -> tuple[list[str], dict | None]:
-    """The check's obligations and its derivation: the pieces made since the previous check
-    whose ids are among ``ids``, and with ``free`` every one not reserved (their ids added),
-    with the expected value of every other fact; None when a fact has no form
-    (unsupported), or when the derivation does not conclude ``verdict``."""
+def in_order(ids: list[str]) -> list[str]:
+    """The ids of a check once each, in the order they were first recorded (as the file lists them)."""
     if not _ACTIVE:
-        return ids, None
-    rec = _ACTIVE[-1]
-    mine = [(p, r) for p, r in rec.pieces if (free and not r) or set(_refs(p)) <= set(ids)]
-    rec.pieces = [x for x in rec.pieces if x not in mine]
-    pieces = [p for p, _ in mine]
-    used = {i for p in pieces for i in _refs(p)}
-    ids = sorted(set(ids) | used, key=lambda i: int(i.rsplit(":", 1)[1]))   # as the file lists them: one order
-    rest = [expected(rec.by_id[i]) for i in ids if i not in used and rec.by_id[i]["kind"] != "algebraic"]
-    if not ids or None in rest:
-        return ids, None
-    parts = pieces + ([{"rule": "expect", "facts": rest}] if rest else [])
-    d = parts[0] if len(parts) == 1 else {"rule": "all", "of": parts}
-    return ids, d if concludes(d, rec.by_id) == verdict else None
+        return ids
+    return sorted(set(ids), key=lambda i: int(i.rsplit(":", 1)[1]))

@@ -31,7 +31,7 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
-from certify.obligations import asserting, fact, recording_now, silent
+from certify.obligations import fact, recording_now, silent
 
 from . import facts
 from . import numberfield as nf
@@ -556,12 +556,10 @@ class SignTable:
                     out.add(UNDECIDED if pt is None else pt[branch] if branch < len(pt) else NO_BRANCH)
         return Found(out)
 
-    @asserting(facts.holds_piece)
     def holds(self, branch: int, sign: int, lo=None, hi=None) -> bool:
         """g has the sign ``sign`` at every point of branch ``branch`` over ]lo, hi[."""
         return self.signs(branch, lo, hi) == {sign}
 
-    @asserting(facts.within_piece)
     def within(self, branch: int, allowed, lo=None, hi=None) -> bool:
         """g takes only signs in ``allowed`` (1, -1, 0, None: not real, NO_BRANCH) at the points
         of branch ``branch`` over ]lo, hi[, interior critical values included."""
@@ -573,7 +571,7 @@ class SignTable:
         right = [c for c in self.cells if same(c.lo, point)]
         return (left[0], right[0]) if left and right else None
 
-    @fact(facts.sign_around, facts.changes_piece)
+    @fact(facts.sign_around)
     def changes_at(self, branch: int, point) -> bool:
         """The sign on ``branch`` differs on the two cells adjacent to ``point``."""
         cells = self._around(point)
@@ -581,7 +579,7 @@ class SignTable:
             return False
         return cells[0].signs[branch] * cells[1].signs[branch] < 0
 
-    @fact(facts.sign_around, facts.keeps_piece)
+    @fact(facts.sign_around)
     def keeps_sign_at(self, branch: int, point) -> bool:
         """No sign change on ``branch`` across ``point`` (true where the branch ends there)."""
         cells = self._around(point)

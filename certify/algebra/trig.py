@@ -718,7 +718,7 @@ def _proportional_facts(res, v, w, H, ratio=None) -> list:
     raise ValueError("no ratio with a proved sign")
 
 
-@fact(_has_sign_facts, facts.sign_piece)
+@fact(_has_sign_facts)
 def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     """target has the strict sign ``expected`` under H.  With a ``witness`` W (written in
     the named quantities of H): target ≡ W after unfolding their definitions, and W has
@@ -735,7 +735,7 @@ def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     return Result(s == expected, ev + [f"under {H.describe()}: {word}"] + why)
 
 
-@fact(_proportional_facts, facts.proportional_piece)
+@fact(_proportional_facts)
 def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
     """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
     component i where that quotient has a sign by inspection; then v − k w ≡ 0."""

@@ -44,9 +44,6 @@ def count_check(name: str, roots: list, counts: tuple[int, int], expected: int) 
         sign_one = int(p(1) > 0) - int(p(1) < 0)
         own = obligations.take([i for i in (obligations.emit(facts.root_count(sturm + at_one, p, 0, 1)),
                                             obligations.emit(facts.sign_at(sign_one, p, 1))) if i])
-        if len(own) == 2:    # expected roots in ]0, 1[: expected + 1 in ]0, 1] when p(1) = 0
-            obligations.derive({"rule": "expect", "facts": [{"id": own[0], "count": expected + at_one},
-                                                            {"id": own[1], "sign": sign_one}]})
     return Check(f"{name} has exactly {expected} root(s) in ]0,1[ (Sturm and python-flint)",
                  sturm == expected and flint_count == expected and len(roots) == expected,
                  [f"Sturm count {sturm}, python-flint count {flint_count}"], obligations=own)

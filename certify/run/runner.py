@@ -44,8 +44,7 @@ class Check:
     ``ref``: the id of the formal statement (statements/*.txt, docs/statements.md) this check
     decides: the report prints that statement's text, and certificates.json gives the kernel the
     check's verdict on it with its witnesses.  ``obligations``: the ids of the facts its verdict
-    was computed from (the witnesses among them go to certificates.json); ``derivation``: how
-    they give it (:func:`certify.obligations.derivation`)."""
+    was computed from (the witnesses among them go to certificates.json)."""
 
     statement: str
     holds: bool
@@ -53,17 +52,12 @@ class Check:
     corrects: Check | str | None = None
     counts: bool = True
     obligations: list[str] | None = None
-    derivation: dict | None = None
     ref: str = ""
 
     def __post_init__(self):
-        free = self.obligations is None
-        if free:                         # the facts its verdict was computed from (obligations.take)
-            own = obligations.facts_of(self.holds)
-            free = not own
-            self.obligations = obligations.take(own)
-        if self.derivation is None:
-            self.obligations, self.derivation = obligations.derivation(self.obligations, holds(self), free)
+        if self.obligations is None:     # the facts its verdict was computed from (obligations.take)
+            self.obligations = obligations.take(obligations.facts_of(self.holds))
+        self.obligations = obligations.in_order(self.obligations)
 
 
 def named(ref: str, check: Check) -> Check:
@@ -400,7 +394,7 @@ def plain(outcome: Outcome) -> Outcome:
     bools.  That is all a report needs, and it crosses process boundaries (pickle)."""
     def check(c: Check) -> Check:
         return Check(str(c.statement), holds(c), [str(e) for e in c.evidence],
-                     corrected_statement(c) or None, c.counts, list(c.obligations or []), c.derivation, c.ref)
+                     corrected_statement(c) or None, c.counts, list(c.obligations or []), c.ref)
     return Outcome(outcome.status, [check(c) for c in outcome.printed],
                    [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
                    [str(f) for f in outcome.figures], str(outcome.note), str(outcome.kind),
