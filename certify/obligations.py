@@ -157,7 +157,7 @@ def take(own: list[str] | None = None) -> list[str]:
     if not _ACTIVE:
         return list(own or [])
     rec = _ACTIVE[-1]
-    if own:
+    if own is not None:
         rec.pending = [i for i in rec.pending if i not in own]
         return list(own)
     out, rec.pending = rec.pending, []

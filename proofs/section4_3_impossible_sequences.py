@@ -30,6 +30,7 @@ from certify.run import (
     combined,
     conclude,
     concluded,
+    facts_of,
     identity,
     kept_facts,
     overridden,
@@ -270,7 +271,7 @@ def no_aca_cac_for_every_orbit(reduction_cones, reduction_scan, section4_data, a
                             f"the next normal n' has n'_{INDEX[y] + 1} n'_{INDEX[excluded] + 1} < 0, so the collision "
                             f"after {y} is not {excluded} (for every orbit)", c.holds and res.holds,
                             [f"n' ∝ p' ∧ {y.upper()} w = `{T.show(c.normal)}`"] + res.evidence
-                            + ([] if c.holds else lemma_check(c).evidence), ref=ref))
+                            + ([] if c.holds else lemma_check(c).evidence), obligations=facts_of(res), ref=ref))
         evidence.append(supporting(
             f"{pattern} occurs {occurrences(scan, pattern)} times in {sum(map(len, scan))} collisions of {len(scan)} "
             f"exact reduction orbits and {occurrences(physical, pattern)} times in {sum(map(len, physical))} "

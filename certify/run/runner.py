@@ -55,8 +55,8 @@ class Check:
     ref: str = ""
 
     def __post_init__(self):
-        if self.obligations is None:     # the facts its verdict was computed from (obligations.take)
-            self.obligations = obligations.take(obligations.facts_of(self.holds))
+        if self.obligations is None:     # the facts its deciding result carries (a trig Result)
+            self.obligations = obligations.facts_of(self.holds)
         self.obligations = obligations.in_order(self.obligations)
 
 
