@@ -574,7 +574,7 @@ def text_of(check) -> str:
 
 def _statements_of(outcome) -> dict:
     """ref -> {"verdict", "witness"}: the run's verdict on each formal statement its checks decide
-    (holds when every check naming it holds), with the witnesses among their facts."""
+    (holds when every check naming it holds), with their witnesses of the kinds the kernel reads."""
     facts = {ob["id"]: ob for ob in getattr(outcome, "witnesses", [])}
     out: dict = {}
     for check in list(outcome.printed) + list(outcome.corrected):
