@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import re
 
-from certify.algebra import Algebraic, facts, parse, radical, to_field, to_fmpz_poly
+from certify.algebra import Algebraic, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
 from certify.patterns import analyse, fmt, known_factors, vanishes_on_branch
 from certify.patterns import parse as parse_word
@@ -25,14 +25,11 @@ from certify.run import (
     Check,
     certificate,
     conclude,
-    fact_ids,
-    gathered,
+    for_a_run,
     named,
     overridden,
     quantity,
     replaced,
-    replaying,
-    take,
     witness,
 )
 
@@ -51,8 +48,8 @@ def expand_pattern(pattern: str) -> str:
 def witnessed(check: Check, ref: str, *words: str) -> Check:
     """``check`` deciding the formal statement ``ref``, with the factors of the words' candidates
     as its witness."""
-    check.obligations = list(check.obligations or []) + witness("factors", words=list(words),
-                                                                  factors=known_factors(*words))
+    check.witnesses = list(check.witnesses or []) + witness("factors", words=list(words),
+                                                              factors=known_factors(*words))
     return named(ref, check)
 
 
@@ -64,9 +61,9 @@ def witnessed(check: Check, ref: str, *words: str) -> Check:
 N_MAX = 6                      # (ab)^n(cb)^n analysed for n = 2..N_MAX (about a minute in all)
 
 
-@replaying
+@for_a_run
 def pattern(word: str):
-    """`certify pattern word` over ]0, 1[ (memoised for the certificates of one process)."""
+    """`certify pattern word` over ]0, 1[ (memoised for the certificates of one run)."""
     return analyse(word)
 
 
@@ -98,26 +95,21 @@ def _threshold_certificate(word, threshold, digits, what, refs: dict):
     ]0, threshold[ (an open set of initial data: positive measure), the feasible set's
     supremum; ``refs``: the formal statements (statements/1_literature.txt) the checks decide,
     by "digits", "above", "stable", "sup" (those printed)."""
-    with gathered() as analysis:         # the analysis' facts: for the checks that read them
-        res = pattern(word)
-    take(analysis)
+    res = pattern(word)
     thr = radical(threshold)
     exists = _pieces(res, "exists")
     feas = _pieces(res, "feasible")
     checks = [_digits_check(threshold, thr, digits),
               Check(f"for r > {threshold} no self-similar datum of {word} exists on any branch "
                     f"(λ > 0 real, u > 0{', x > 0' if res.system == 'four' else ''})",
-                    bool(exists) and _top(exists) <= thr, [f"exists: {_sets(res, 'exists')}"],
-                    obligations=analysis + take()),
+                    bool(exists) and _top(exists) <= thr, [f"exists: {_sets(res, 'exists')}"]),
               Check(f"for every r in ]0, {threshold}[ the self-similar datum of {word} (upper branch) is feasible "
                     f"and stable ({what})",
                     any(lo == 0 and hi == thr for _, _, lo, hi in res.intervals("stable", 0)),
-                    [f"stable: {_sets(res, 'stable')}", f"conditions: {'; '.join(res.conditions['stable'])}"],
-                    obligations=analysis + take()),
+                    [f"stable: {_sets(res, 'stable')}", f"conditions: {'; '.join(res.conditions['stable'])}"]),
               Check(f"{threshold} is the largest r where the self-similar datum of {word} is feasible",
-                    bool(feas) and _top(feas) == thr, [f"feasible: {_sets(res, 'feasible')}"],
-                    obligations=analysis + take()),
-              Check("every point of ]0, 1[ decided", not res.undecided, res.undecided, obligations=list(analysis))]
+                    bool(feas) and _top(feas) == thr, [f"feasible: {_sets(res, 'feasible')}"]),
+              Check("every point of ]0, 1[ decided", not res.undecided, res.undecided)]
     for check, key in zip(checks, ("digits", "above", "stable", "sup")):
         if key in refs:
             witnessed(check, refs[key], word) if key != "digits" else named(refs[key], check)
@@ -182,53 +174,43 @@ PRINTED_L3 = dict(word="abcb", P="17r^6-138r^5+831r^4-3148r^3+831r^2-138r+17", r
 def abcb_exists(word, P, r_exist, stability):
     """`certify pattern abcb`: the union over branches and fixed points of the feasible
     sets is ]0, r_exist] minus the points the engine leaves undecided; nothing stable."""
-    with gathered() as analysis:         # the analysis' facts: for the checks that read it
-        res = pattern(word)
-    take(analysis)
+    res = pattern(word)
     poly = to_fmpz_poly(parse(re.sub(r"(\d)\s*r", r"\1*r", P)))     # "17r^6": implicit products
     roots = Algebraic.roots(poly, 0, 1)
     at_ends = [e for e in (0, 1) if poly(e) == 0]
     re_ = roots[0] if len(roots) == 1 else None
     feas = _pieces(res, "feasible")
-    counted = fact_ids(lambda: facts.root_count(len(roots) + (poly(1) == 0), poly, 0, 1),   # Sturm on ]0, 1]
-                       *[lambda e=e: facts.sign_at(int(poly(e) > 0) - int(poly(e) < 0), poly, e) for e in (0, 1)])
     checks = [named("L3.1", Check(f"P = {P} has exactly one root in [0,1]", len(roots) == 1 and not at_ends,
-                                  ["roots in ]0,1[: " + ("; ".join(a.describe() for a in roots) or "none")],
-                                  obligations=counted))]
+                                  ["roots in ]0,1[: " + ("; ".join(a.describe() for a in roots) or "none")]))]
     if re_ is None:
         return conclude(checks)
     checks.append(named("L3.2", _digits_check("r_exist", re_, r_exist)))
     # the feasible set covers ]0, r_exist[ up to the undecided points
-    with gathered(again=True) as covering:
-        cuts = sorted({p.lo for _, p in feas if not p.is_point} | {p.hi for _, p in feas if not p.is_point})
-        ends = [Algebraic.rational(0)] + [c for c in cuts if 0 < c < re_] + [re_]
-        gaps = []
-        for a, b in zip(ends, ends[1:]):
-            if not any(not p.is_point and p.lo <= a and b <= p.hi for _, p in feas):
-                gaps.append(f"]{fmt(a)}, {fmt(b)}[")
-        inner = [c for c in ends[1:-1]]
-        uncovered_points = [c for c in inner if not any((p.is_point and p.lo == c) or (not p.is_point and p.lo < c < p.hi)
-                                                        for _, p in feas)]
-        undecided = [u for R in res.regions["feasible"] for u in R.undecided]
-        explained = all(any(c == rc for rc, _ in undecided) for c in uncovered_points)
-    with gathered(again=True) as top:
-        ends_at_root = bool(feas) and _top(feas) == re_
-    take(covering + top)
+    cuts = sorted({p.lo for _, p in feas if not p.is_point} | {p.hi for _, p in feas if not p.is_point})
+    ends = [Algebraic.rational(0)] + [c for c in cuts if 0 < c < re_] + [re_]
+    gaps = []
+    for a, b in zip(ends, ends[1:]):
+        if not any(not p.is_point and p.lo <= a and b <= p.hi for _, p in feas):
+            gaps.append(f"]{fmt(a)}, {fmt(b)}[")
+    inner = [c for c in ends[1:-1]]
+    uncovered_points = [c for c in inner if not any((p.is_point and p.lo == c) or (not p.is_point and p.lo < c < p.hi)
+                                                    for _, p in feas)]
+    undecided = [u for R in res.regions["feasible"] for u in R.undecided]
+    explained = all(any(c == rc for rc, _ in undecided) for c in uncovered_points)
+    ends_at_root = bool(feas) and _top(feas) == re_
     checks += [
         witnessed(Check(f"for every r in ]0, r_exist[ (r_exist = the root of P) the candidate of {word} is feasible on some "
               f"branch and fixed point, except at the point(s) "
               f"{', '.join(fmt(c) for c in uncovered_points) or 'none'} where the engine is undecided "
               "(a double eigenvalue: u is 0/0 in every row of the eigen-equation)",
               not gaps and explained, [f"feasible: {_sets(res, 'feasible')}", f"gaps: {gaps or 'none'}",
-                                       "undecided: " + ("; ".join(res.undecided) or "none")],
-              obligations=analysis + covering), "L3.3", word),
+                                       "undecided: " + ("; ".join(res.undecided) or "none")]), "L3.3", word),
         witnessed(Check(f"for r > r_exist no feasible candidate of {word}", ends_at_root,
-                        [f"sup of the feasible set: {fmt(_top(feas)) if feas else '∅'}"], obligations=analysis + top),
-                  "L3.4", word),
+                        [f"sup of the feasible set: {fmt(_top(feas)) if feas else '∅'}"]), "L3.4", word),
         witnessed(Check(f"{word} is {stability}: no stable self-similar datum for any r in ]0,1[",
                         stability == "unstable" and not res.stable and bool(res.feasible),
-                        [f"stable: {_sets(res, 'stable')}; conditions {'; '.join(res.conditions['stable'])}"],
-                        obligations=list(analysis)), "L3.5", word),
+                        [f"stable: {_sets(res, 'stable')}; conditions {'; '.join(res.conditions['stable'])}"]),
+                  "L3.5", word),
     ]
     return conclude(checks, evidence=[f"`certify pattern {word}`: {res.verdict}", f"cp = `{res.cp}`",
                                       f"disc = `{res.discriminant}`", f"exists: {_sets(res, 'exists')}"],
@@ -323,20 +305,15 @@ def windows(ab_cb_patterns, n2, n3, limit, order):
     ws = {n: stable_window(ab_cb_patterns, n) for n in range(2, N_MAX + 1)}
     lim = radical(limit)
     ok = all(w is not None for w in ws.values())
-    with gathered(again=True) as order_facts:       # the ends compared: for both checks below
-        decreasing = ok and all(ws[n + 1][1] <= ws[n][0] for n in range(2, N_MAX))
-        strictly = ok and all(ws[n + 1][1] < ws[n][0] for n in range(2, N_MAX))
-    with gathered(again=True) as above_facts:
-        above = ok and all(w[0] > lim for w in ws.values())
-    take(order_facts + above_facts)
+    decreasing = ok and all(ws[n + 1][1] <= ws[n][0] for n in range(2, N_MAX))
+    strictly = ok and all(ws[n + 1][1] < ws[n][0] for n in range(2, N_MAX))
+    above = ok and all(w[0] > lim for w in ws.values())
     rows = [f"n = {n}: ]{w[0].digits(10)}, {w[1].digits(10)}[" if w else f"n = {n}: not one interval"
             for n, w in ws.items()]
     checks.append(named("L5.3", Check(f"the windows of n = 2..{N_MAX} are {order.split(',')[0]} (each below the "
-                                      f"previous, with a gap) and decreasing in n", "disjoint" in order and strictly, rows,
-                                      obligations=list(order_facts))))
+                                      f"previous, with a gap) and decreasing in n", "disjoint" in order and strictly, rows)))
     checks.append(named("L5.3", Check(f"every window n = 2..{N_MAX} lies above {limit} (= {lim.digits(10)}), the "
-                                      f"distances decreasing", "above" in order and above and decreasing, rows,
-                                      obligations=above_facts + order_facts)))
+                                      f"distances decreasing", "above" in order and above and decreasing, rows)))
     return conclude(checks, note=f"The accumulation itself is a statement about all n: certified are the windows "
                                  f"n = 2..{N_MAX}, decreasing towards {limit} from above; the limit is the "
                                  "paper's (and CDKK's) belief, not proven here.")

@@ -60,19 +60,11 @@ from certify.run import (
     Check,
     certificate,
     conclude,
-    gathered,
     overridden,
-    product_fact,
     read_first_member,
-    take,
-    unsupported_fact,
 )
 from proofs.section1_literature import expand_pattern, stable_window, witnessed
 from proofs.section1_literature import pattern as whole_pattern
-
-SIMULATOR = ("the particle simulator in ball arithmetic (certify.dynamics.simulate, python-flint arb: each collision "
-             "chosen by enclosures of the collision times): the kernel has no interval arithmetic")
-
 
 # ---------------------------------------------------------------- Remark 3.2 (l. 323-325): 5-2√6 is also the threshold of (ab)^3(cb)^3
 # T26 (Remark 3.2, l. 323-325): "The critical threshold of r, namely
@@ -142,10 +134,9 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
                         f"dominant one (strictly)", three_positive, ["sign of λ per branch:\n\n" + base.markdown()]))
     reqs, steps = prefix_requirements(word, len(word), cand.q0, cand.steps, cand.q0_other)
     reqs.append(Requirement("λ (q(t_12) = λ q(0) keeps the signs)", (FIELD(Lf), FIELD.zero), 1))
-    with gathered(again=True) as analysis:      # the regions: for the checks that read them
-        for req in reqs:
-            an.impose(req)
-        undecided = [(R, u) for R in an.regions for u in R.undecided]
+    for req in reqs:
+        an.impose(req)
+    undecided = [(R, u) for R in an.regions for u in R.undecided]
     ev.append("the candidate realises w with every inequality strict iff " + ", ".join(
         f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs))
     for key, T in an.tables.items():
@@ -156,30 +147,23 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
                   + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}"
                      if R.dropped else ""))
     upper = [R for R in an.regions if R.branch == 0]
-    with gathered(again=True) as ends_below:
-        below = [(R, p) for R in upper for p in R.pieces if not p.is_point and p.hi == r1]
-    with gathered(again=True) as ends_above:
-        above = [(R, p) for R in upper for p in R.pieces if (p.lo if p.is_point else p.hi) > r1]
-        at_r1 = [(R, p) for R in upper for p in R.pieces if p.is_point and p.lo == r1]
-    with gathered(again=True) as at_threshold:
-        u_zero = vanishes_on_branch(cand.spectrum, sp.expand(u_num), r1, 0)
-        den_sign = cand.spectrum.sign_at_point(Condition("denominator of u", (to_ring(u_den), RING.zero),
-                                                         (RING.one, RING.zero), None, None), r1)
+    below = [(R, p) for R in upper for p in R.pieces if not p.is_point and p.hi == r1]
+    above = [(R, p) for R in upper for p in R.pieces if (p.lo if p.is_point else p.hi) > r1]
+    at_r1 = [(R, p) for R in upper for p in R.pieces if p.is_point and p.lo == r1]
+    u_zero = vanishes_on_branch(cand.spectrum, sp.expand(u_num), r1, 0)
+    den_sign = cand.spectrum.sign_at_point(Condition("denominator of u", (to_ring(u_den), RING.zero),
+                                                     (RING.one, RING.zero), None, None), r1)
     den_sign = None if den_sign is None else den_sign[0]
-    take(analysis + ends_below + ends_above + at_threshold)
     checks += [
         Check("every cell and critical value of the window decided", not undecided,
-              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} {fmt(rc)} ({why})" for R, (rc, why) in undecided],
-              obligations=list(analysis)),
+              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
         Check("dominant branch: the candidate realises w on an interval ]s, 5-2√6[ just below the threshold",
-              bool(below), [f"{R.fixed_point}: {p}" for R, p in below], obligations=analysis + ends_below),
+              bool(below), [f"{R.fixed_point}: {p}" for R, p in below]),
         Check("dominant branch: no feasible candidate on ]5-2√6, 1/9[ nor at 5-2√6 (for x₊ and x₋)",
-              not above and not at_r1, [f"{R.fixed_point}: {p}" for R, p in above + at_r1],
-              obligations=analysis + ends_above),
+              not above and not at_r1, [f"{R.fixed_point}: {p}" for R, p in above + at_r1]),
         Check("q_2(0) vanishes exactly at 5-2√6 on the dominant branch (the CDKK criterion, CLAIMS L6): its "
               "numerator vanishes there (exact test in Q(r1)[λ]) and its denominator does not (sign proven by balls)",
-              u_zero and den_sign in (1, -1), [f"sign of the denominator of u at r1 on the dominant branch: {den_sign}"],
-              obligations=list(at_threshold)),
+              u_zero and den_sign in (1, -1), [f"sign of the denominator of u at r1 on the dominant branch: {den_sign}"]),
     ]
     # stability just below: `certify pattern` on the same window (λ dominant, |f'(x)| < 1)
     res = analyse(pattern, lo, hi)
@@ -190,14 +174,12 @@ def threshold_of_ab3cb3(pattern, threshold, quadratic):
         f"{s['branch']} {s['fixed_point']}: {s['set']}" for s in res.stable) + f" ({'; '.join(res.conditions['stable'])})")
     checks.append(Check("just below 5-2√6 the candidate is stable: dominant eigenvalue (|μ| < λ for the other "
                         "eigenvalues) and |f'(x)| < 1 on the whole interval ]s, 5-2√6[ (certify pattern)", stable))
-    with gathered() as whole_facts:             # `certify pattern` over ]0, 1[ (shared with L4, L5)
-        whole = whole_pattern(pattern)
-    take(whole_facts)
+    whole = whole_pattern(pattern)             # `certify pattern` over ]0, 1[ (shared with L4, L5)
     w = stable_window({3: whole}, 3)
     checks.append(witnessed(Check(f"over ]0, 1[ the stable set of {pattern} is one interval of the dominant branch, "
                                   "whose upper end is 5-2√6", w is not None and w[1] == r1,
-                                  [f"stable: {'; '.join(s_['branch'] + ' ' + s_['fixed_point'] + ': ' + s_['set'] for s_ in whole.stable)}"],
-                                  obligations=list(whole_facts)), "T26.1", pattern))
+                                  [f"stable: {'; '.join(s_['branch'] + ' ' + s_['fixed_point'] + ': ' + s_['set'] for s_ in whole.stable)}"]),
+                            "T26.1", pattern))
     others = [f"{BRANCH_NAMES[R.branch]} {R.fixed_point}: {R.describe()}" for R in an.regions
               if R.branch > 0 and R.pieces]
     if others:
@@ -271,25 +253,20 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
     that a)."""
     cand = candidate(word)
     same = (matrix_of_name(matrix) - cand.M).applyfunc(sp.cancel) == sp.zeros(3, 3)
-    named = [collision_matrix(letter.lower()) for letter in matrix]
     checks = [Check(f"the matrix of the word {word} (collisions in time order) is {matrix}", same,
-                    [f"M_w = `{show(cand.M.tolist())}`", f"cp(M_w) = `{show(sp.collect(cand.cp, lam))}`"],
-                    obligations=product_fact(same, named or [sp.eye(3)], cand.M), ref="T27.1")]
+                    [f"M_w = `{show(cand.M.tolist())}`", f"cp(M_w) = `{show(sp.collect(cand.cp, lam))}`"], ref="T27.1")]
     m = word.index(after) + 1
     feas, steps = prefix_requirements(word, m, cand.q0, cand.steps, cand.q0_other)
     i, o = INDEX[next], INDEX[other]
     tail = run_word(word[:m] + next, cand.q0)[-1]
     claim = [Requirement(f"q_{i + 1}(t_{m})", (steps[-1].q[i], FIELD.zero), -1),
              Requirement(f"p_{o + 1}(t_{m + 1})", tail.p[o], 1)]
-    with gathered(again=True) as analysis:      # the regions: for the checks that read them
-        an = Analysis(cand)
-        for req in feas:
-            an.impose(req)
-        undecided = [(R, u) for R in an.regions for u in R.undecided]
-        feasible = [R for R in an.regions if R.pieces]
-    with gathered(again=True) as facts_claim:
-        bad = [v for req in claim for v in an.violations(req)]
-    take(analysis + facts_claim)
+    an = Analysis(cand)
+    for req in feas:
+        an.impose(req)
+    undecided = [(R, u) for R in an.regions for u in R.undecided]
+    feasible = [R for R in an.regions if R.pieces]
+    bad = [v for req in claim for v in an.violations(req)]
     a, b, c, d = cand.abcd
     ev = [f"q(0) = (-1, u, v), u = `{show(sp.factor(cand.q0[1].as_expr()))}`, "
           f"v = `{show(sp.factor(cand.q0[2].as_expr()))}`; p(0) = (1, 0, x)",
@@ -327,18 +304,14 @@ def abcab_has_no_self_similar_datum(word, matrix, after, next, other):
                                                           f"{w}" for R, r0, w in dynamic))
     checks += [
         Check(f"cross-check on the dynamics: from the candidate, the first {m + 1} collisions are {want}",
-              all(w == want for _, _, w in dynamic) and bool(dynamic), obligations=unsupported_fact(SIMULATOR)),
+              all(w == want for _, _, w in dynamic) and bool(dynamic)),
         Check("every cell and critical value of ]0,1[ decided on every branch, for x₊ and x₋", not undecided,
-              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided],
-              obligations=list(analysis)),
+              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
         witnessed(Check(f"wherever the candidate realises {', '.join(word[:m])}, the next collision is {next}, "
               f"strictly before {other}", not bad and not undecided,
-              [f"fails on {BRANCH_NAMES[R.branch]} {R.fixed_point} {p}: {why}" for R, p, why in bad],
-              obligations=analysis + facts_claim), "T27.3", word),
-        Check("and the candidate does realise them somewhere (the remark is not vacuous)", bool(feasible),
-              obligations=list(analysis)),
+              [f"fails on {BRANCH_NAMES[R.branch]} {R.fixed_point} {p}: {why}" for R, p, why in bad]), "T27.3", word),
+        Check("and the candidate does realise them somewhere (the remark is not vacuous)", bool(feasible)),
     ]
-    take()      # the facts re-read for the evidence above: no check's
     # the same conclusion from `certify pattern abcab` (the whole period, every branch, x±)
     res = analyse(word)
     dg = res.diagnosis or {}
@@ -562,8 +535,7 @@ def abcab_census(pattern):
             f"periodic patterns containing {pattern} (or {mirror}) can have feasible self-similar data: "
             + "; ".join(f"{r['word']} = {' '.join(r['blocks'])} on {_sets(r, 'feasible')}" for r in feasible)
             + f" (certified), the exact dynamics from each datum repeating the word for {PERIODS} periods",
-            all(ok for ok, _ in replays), [text for _, text in replays], corrects=printed,
-            obligations=unsupported_fact(SIMULATOR)), "T28.2", *FOUND[1:]))
+            all(ok for ok, _ in replays), [text for _, text in replays], corrects=printed), "T28.2", *FOUND[1:]))
     return conclude(checks + [printed], corrected, evidence=ev, kind=REFUTED_REMARK,
                     misprint="l. 515, Remark 3.3: a pattern containing abcab 'does not seem to have feasible initial data'",
                     note=f"An empirical remark, tested on every pattern of at most {LENGTH} collisions containing "

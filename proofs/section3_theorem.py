@@ -39,7 +39,6 @@ from certify.algebra import (
     ball_value,
     discriminant_lambda,
     eliminate,
-    facts,
     flint_real_roots,
     from_flint,
     lam,
@@ -87,25 +86,15 @@ from certify.run import (
     certificate,
     conclude,
     count_check,
-    determinant_fact,
     digits_check,
     eliminant_check,
-    fact_ids,
     for_a_run,
-    gathered,
-    identity_facts,
-    identity_modulo_facts,
     named,
     overridden,
-    product_fact,
     quantity,
     replaced,
-    resultant_fact,
     reworded,
-    sign_intervals_facts,
-    take,
     unread,
-    unsupported_fact,
 )
 from proofs.section1_literature import witnessed
 
@@ -243,10 +232,8 @@ def matrix_of_ababcb(M, M_text):
         for j in range(3):
             ok = computed[i][j] == to_field(printed[i, j])      # equal in Q(r): the difference is 0
             checks.append(Check(f"entry ({i + 1},{j + 1}) as printed", ok, [f"computed `{show(M[i, j])}`"],
-                                obligations=product_fact(ok, word, printed, 3 * i + j), ref=f"T1.{3 * i + j + 1}"))
-    same = direct == computed
-    checks.append(Check("word_matrix('ababcb') is the product BCBABA", same,
-                        obligations=product_fact(same, word, M), ref="T1.10"))
+                                ref=f"T1.{3 * i + j + 1}"))
+    checks.append(Check("word_matrix('ababcb') is the product BCBABA", direct == computed, ref="T1.10"))
     return conclude(checks, note="l. 259 has an unbalanced parenthesis, `(r^3 - r^2 + 7r + 9))/32`; read without it.")
 
 
@@ -259,11 +246,8 @@ def matrix_of_ababcb(M, M_text):
 def characteristic_polynomial_of_M(cp, cp_text):
     """det(λI - M) expanded, against the print."""
     diff = sp.expand(cp - parse(cp_text))
-    # for the kernel: det(λI - M) of the printed M (T1: the product BCBABA) is the printed cp
-    ok = diff == 0
-    return conclude([Check("det(λI - M) - printed cp = 0", ok, [f"det(λI - M) = `{show(sp.collect(cp, lam))}`"],
-                           obligations=determinant_fact(ok, lam * sp.eye(3) - sp.Matrix(parse(M_PRINTED)),
-                                                        parse(cp_text)), ref="T2.1")])
+    return conclude([Check("det(λI - M) - printed cp = 0", diff == 0, [f"det(λI - M) = `{show(sp.collect(cp, lam))}`"],
+                           ref="T2.1")])
 
 
 @certificate("T3", "l. 340", "det M = r^6 > 0, hence a positive real eigenvalue for every r in ]0,1[.",
@@ -281,17 +265,13 @@ def determinant_and_positive_eigenvalue(M, spectrum, det_text, det_sign):
     det = sp.factor(det3(field_matrix(M)).as_expr())     # by cofactors in Q(λ, r, ...)
     T = spectrum.table("λ", lam, 0, 1)
     as_printed = to_field(det) == to_field(parse(det_text))
-    printed_det = determinant_fact(as_printed, M, parse(det_text))
     ivs = sign_intervals(to_fmpq_poly(det), 0, 1)
-    with gathered(again=True) as reading:        # the printed sign and range, read on the sign intervals
-        sign = statements.statement(det_sign, {"det M": DET}, subject="det M")
-        signs = sign.range.signs(ivs)
-    signs_det = take(reading) + determinant_fact(True, M, det) + sign_intervals_facts(to_fmpq_poly(det), ivs)
+    sign = statements.statement(det_sign, {"det M": DET}, subject="det M")   # the printed sign and range
+    signs = sign.range.signs(ivs)                                            # read on the sign intervals
     return conclude([
-        Check(f"det M = {det_text}", as_printed, [f"det M = `{show(det)}`"], obligations=printed_det, ref="T3.1"),
+        Check(f"det M = {det_text}", as_printed, [f"det M = `{show(det)}`"], ref="T3.1"),
         Check(f"det M is {det_sign} on ]0,1[", sign.relation.holds_on(DET, signs),
-              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"], obligations=signs_det,
-              ref="T3.2"),
+              [f"signs of det M on ]0,1[ (exact sign intervals): {sign_word(signs)}"], ref="T3.2"),
         Check("the largest real eigenvalue is positive on all of ]0,1[", T.holds(UPPER, 1),
               ["sign of λ per branch:\n\n" + T.markdown()], ref="T3.3"),
     ], evidence=["the paper's argument (l. 340): cp(0) = det(-M) = -det M < 0 and cp(λ) → +∞ as λ → +∞, so cp has a "
@@ -349,9 +329,9 @@ def discriminant_of_cp(cp, spectrum, delta_text, P0_text, three_real_when):
     p0_changes = [b_ for (_a, b_, s1), (_a2, _b2, s2) in zip(p0_ivs, p0_ivs[1:]) if s1 != s2]
     return conclude([
         Check("the printed Δ_cp is a constant multiple of Disc_λ(cp)", constant, [f"Disc_λ(cp) / Δ_cp = {ratio}"],
-              obligations=resultant_fact(constant, cp, "d/dλ", delta, "proportional"), ref="T4.1"),
+              ref="T4.1"),
         Check("Δ_cp = (q/2)² + (p/3)³ of the depressed cubic (Cardano's convention), Disc_λ(cp) = −108·Δ_cp",
-              card_same and ratio == -108, obligations=identity_facts((card_same, card, delta)), ref="T4.2"),
+              card_same and ratio == -108, ref="T4.2"),
         Check(f"three distinct real roots iff {three_real_when} (Disc > 0 iff three distinct real roots)",
               constant and condition.truth(DELTA) == three_real,
               [f"Disc_λ(cp) = ({ratio})·Δ_cp; for Δ_cp < 0, = 0, > 0: three distinct real roots "
@@ -367,8 +347,7 @@ def discriminant_of_cp(cp, spectrum, delta_text, P0_text, three_real_when):
               all(any(z == w for w in p0_changes) for z in d_changes),
               [f"Δ_cp changes sign at {', '.join(z.describe() for z in d_changes)}; P0 at "
                f"{', '.join(z.describe() for z in p0_changes)}"], ref="T4.6"),
-        Check("flint's Disc_λ(cp) has the same factors", flint_same,
-              obligations=resultant_fact(flint_same, cp, "d/dλ", delta, "proportional")),
+        Check("flint's Disc_λ(cp) has the same factors", flint_same),
     ], note="Convention: the paper's Δ_cp is −Disc/108 = (q/2)²+(p/3)³ (the paper says 'determinant' for "
             "'discriminant', l. 341). Disc_λ(cp) = −108·Δ_cp.")
 
@@ -466,11 +445,9 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
     T = spectrum.table("λ", lam, 0, 1)
     three = all((len(c.branches) == 3) == (c.hi <= rs) for c in T.cells)
     st = statements.statement(positive, {"λ": lam})
-    with gathered() as facts_three:
-        signs = [T.signs(k, st.range.lo, st.range.hi) for k in range(3)]
+    signs = [T.signs(k, st.range.lo, st.range.hi) for k in range(3)]
     all_three = all(st.relation.holds_on(lam, sg) for sg in signs)
-    with gathered() as facts_rstar:
-        pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
+    pos_rstar = all(T.holds(k, 1, 0, rs) for k in range(3))
     figs = spectrum_figures(spectrum, T, marks={"r*": rs, "5-2√6": rr1, "(7-2√10)/3": unique_root("3*r^2 - 14*r + 3")})
     return conclude([
         Check("three distinct real eigenvalues exactly on ]0, r*[ (one real eigenvalue on ]r*, 1[ but a double "
@@ -483,10 +460,9 @@ def branches_of_the_spectrum(spectrum, P0_text, r1, positive):
         Check("5-2√6 < r* (exact comparison of algebraic numbers)", rr1 < rs, [f"5-2√6 is {rr1.describe()}",
                                                                              f"r* is {rs.describe()}"], ref="T8.3"),
         Check(f"all three eigenvalues: {positive}", all_three,
-              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)], obligations=take(facts_three),
-              ref="T8.4"),
+              [f"{BRANCH_NAMES[k]}: {sign_word(sg)}" for k, sg in enumerate(signs)], ref="T8.4"),
         Check("hence the middle and lower eigenvalues are smaller in absolute value than the upper one on ]0, r*[ "
-              "(all positive there, ordered)", pos_rstar, obligations=take(facts_rstar), ref="T8.5"),
+              "(all positive there, ordered)", pos_rstar, ref="T8.5"),
     ], figures=figs)
 
 
@@ -502,13 +478,10 @@ def eigenvector_components(M, U, V):
     cpM = characteristic_polynomial(M)
     third = reduce_mod(res[2], cpM)
     return conclude([
-        Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0,
-              obligations=identity_facts((res[0] == 0, (M * q0)[0], lam * q0[0])), ref="T9.1"),
-        Check("second component vanishes identically", res[1] == 0,
-              obligations=identity_facts((res[1] == 0, (M * q0)[1], lam * q0[1])), ref="T9.2"),
+        Check("first component of M q(0) - λ q(0) vanishes identically", res[0] == 0, ref="T9.1"),
+        Check("second component vanishes identically", res[1] == 0, ref="T9.2"),
         Check("and the third vanishes modulo cp(M): q(0) is an eigenvector", third == 0,
-              [f"third component reduced modulo cp: `{show(third)}`"],
-              obligations=identity_modulo_facts(cpM, (third == 0, (M * q0)[2], lam * q0[2])), ref="T9.3"),
+              [f"third component reduced modulo cp: `{show(third)}`"], ref="T9.3"),
     ])
 
 
@@ -535,30 +508,25 @@ def position_map_of_ababcb(candidate, a, b, c, d):
     constant = ratio.numer.is_ground and ratio.denom.is_ground
     factor = ratio.as_expr() if constant else sp.cancel(P[2].as_expr() / comp[2].as_expr())
     p1 = steps[-1].position(0)
-    scaled = (P[2] == to_field(factor) * comp[2], P[2].as_expr(), factor * comp[2].as_expr())
+    scaled = P[2] == to_field(factor) * comp[2]
     pa, pb, pc, pd = (parse(e) for e in (a, b, c, d))          # x± as printed at l. 384 (s = √Δ)
     s_ = sp.Symbol("s")
     xs = (pa - pd + s_) / (2 * pc)
     fixed_points_ok = (sp.cancel((pa * x + pb) / (pc * x + pd) - x + (pc * x ** 2 + (pd - pa) * x - pb) / (pc * x + pd)) == 0
                        and sp.cancel(pc * xs ** 2 + (pd - pa) * xs - pb - (s_ ** 2 - ((pa - pd) ** 2 + 4 * pb * pc)) / (4 * pc)) == 0)
     return conclude([
-        Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", p1 != 0,
-              obligations=identity_facts((p1 == 0, p1.as_expr(), sp.Integer(0))), ref="T10.1"),
+        Check("p_1(t6) ≢ 0, so that f(x) = p_3(t6)/p_1(t6) is defined", p1 != 0, ref="T10.1"),
         Check("f is a Möbius map (ax+b)/(cx+d) proportional to the printed one modulo cp",
               all(m == 0 for m in minors.values()),
               [f"computed (modulo cp): a = `{show(abcd[0])}`, c = `{show(abcd[2])}`",
                f"printed c / computed c = {factor}"] +
-              [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()],
-              obligations=identity_modulo_facts(cp, *[(minors[f"{names[i]}{names[j]}"] == 0,
-                                                       P[i].as_expr() * comp[j].as_expr(),
-                                                       P[j].as_expr() * comp[i].as_expr())
-                                                      for i in range(4) for j in range(i + 1, 4)]), ref="T10.2"),
+              [f"minor {k} modulo cp: `{show(m)}`" for k, m in minors.items()], ref="T10.2"),
         Check("any fixed point of f is x± = (a-d ± √((a-d)^2+4bc))/(2c): f(x) - x = -(cx^2 + (d-a)x - b)/(cx+d), and "
               "(a-d ± s)/(2c) is a root of cx^2 + (d-a)x - b exactly when s^2 = (a-d)^2+4bc", fixed_points_ok,
               ref="T10.3"),
         Check(f"the factor printed/computed is a negative constant, {factor}: x± = (a-d ± √Δ)/(2c) swap, so the "
               "paper's x₊ is the computed x₋ (as `certify pattern ababcb` prints)",
-              bool(factor.is_Rational) and factor < 0 and scaled[0], obligations=identity_facts(scaled)),
+              bool(factor.is_Rational) and factor < 0 and scaled),
     ], evidence=[f"by construction: the engine applies the collisions {', '.join(word)} (q(t_k) = K q(t_(k-1))) and "
                  "defines t6 by p_2(t6) = 0, so p(t6) = (p_1(t6), 0, p_3(t6)) = p_1(t6)(1, 0, f(x))"])
 
@@ -571,8 +539,7 @@ def position_map_of_ababcb(candidate, a, b, c, d):
 def expansion_of_a_minus_d(a, d, amd):
     """a - d from the printed a and d, expanded, against the printed expansion."""
     diff = sp.expand(parse(a) - parse(d) - parse(amd))
-    return conclude([Check("(a) - (d) - (printed a-d) = 0", diff == 0, [f"difference: `{show(diff)}`"],
-                           obligations=identity_facts((diff == 0, parse(a) - parse(d), parse(amd))), ref="T11.1")])
+    return conclude([Check("(a) - (d) - (printed a-d) = 0", diff == 0, [f"difference: `{show(diff)}`"], ref="T11.1")])
 
 
 
@@ -701,22 +668,18 @@ def sign_of_c(c, below, above):
     quad = parse("r^2 - 10*r + 1")
     ratio = sp.cancel(cr / quad)
     ivs = sign_intervals(to_fmpq_poly(sp.expand(cr)), 0, 1)
-    signs_c = sign_intervals_facts(to_fmpq_poly(sp.expand(cr)), ivs)     # for the kernel: the signs of c/λ
-    ratio_pos, factored = False, []
+    ratio_pos = False
     if not ratio.has(lam) and ratio.is_polynomial(r):
         ratio_ivs = sign_intervals(to_fmpq_poly(sp.expand(ratio)), 0, 1)
         ratio_pos = all(sg > 0 for _a, _b, sg in ratio_ivs)
-        factored = identity_facts((sp.expand(parse(c) - lam * quad * ratio) == 0, parse(c), lam * quad * ratio)) + \
-            sign_intervals_facts(to_fmpq_poly(sp.expand(ratio)), ratio_ivs)
 
     def half(text, evidence=()):
-        with gathered(again=True) as reading:        # the range read, compared with the ends of the intervals
-            st = statements.statement(text, {"c": C_SIGN})
-            signs = st.range.signs(ivs)
+        st = statements.statement(text, {"c": C_SIGN})
+        signs = st.range.signs(ivs)              # the range read, compared with the ends of the intervals
         return Check(text, st.relation.holds_on(C_SIGN, signs), [f"signs of c for {st.range}: {sign_word(signs)}",
-                                                                 *evidence], obligations=take(reading) + signs_c)
+                                                                 *evidence])
     printed = [Check("c/λ = (r^2-10r+1)·(positive on ]0,1[), so sign c = sign(r^2-10r+1) when λ > 0", ratio_pos,
-                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"], obligations=factored, ref="T16.1"),
+                     [f"c/λ ÷ (r^2-10r+1) = `{show(sp.factor(ratio))}`"], ref="T16.1"),
                named("T16.2", half(below)),
                named("T16.3", half(above, [f"sign of c/λ on ]{a.short()}, {b_.short()}[: {'+' if sg > 0 else '−'}"
                                            for a, b_, sg in ivs]))]
@@ -782,40 +745,32 @@ def upper_branch_fixed_points(spectrum, a, b, c, d, U, V, r1, P1_text):
     fp, xp, xm = fixed_point_tables(spectrum, a, b, c, d, 0, 1)
     D = spectrum.table("Δ", fp.delta, 0, 1)
     r0 = Algebraic.surd(sp.Rational(7, 3), sp.Rational(-2, 3), 10)
-    with gathered() as facts_r2:
-        at_r2 = spectrum.sign_at_point(Condition.of("Δ", fp.delta), rr2)
-        bc_r2 = spectrum.sign_at_point(Condition.of("bc", parse(b) * parse(c)), rr2)
-        amd_r2 = spectrum.vanishes_at(fp.a - fp.d, rr2, UPPER)
-    with gathered() as facts_between:
-        between, ev_between = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, rr2)
-    with gathered() as facts_zeros:
-        zeros = [rc for rc in D.critical if rr2 < rc and spectrum.vanishes_at(fp.delta, rc, UPPER)]
-        cells_negative = D.signs(UPPER, rr2, 1, include_points=False) == {-1}
-    with gathered() as facts_above:
-        above, ev_above = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, 1)
-        above_but_r0, _ev = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, 1, skip=(r0,))
-    take(facts_r2 + facts_between + facts_zeros + facts_above)   # they belong to the checks below, not the first one
+    at_r2 = spectrum.sign_at_point(Condition.of("Δ", fp.delta), rr2)
+    bc_r2 = spectrum.sign_at_point(Condition.of("bc", parse(b) * parse(c)), rr2)
+    amd_r2 = spectrum.vanishes_at(fp.a - fp.d, rr2, UPPER)
+    between, ev_between = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, rr2)
+    zeros = [rc for rc in D.critical if rr2 < rc and spectrum.vanishes_at(fp.delta, rc, UPPER)]
+    cells_negative = D.signs(UPPER, rr2, 1, include_points=False) == {-1}
+    above, ev_above = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, 1)
+    above_but_r0, _ev = no_positive_fixed_point(spectrum, fp, xp, xm, UPPER, rr1, 1, skip=(r0,))
     printed = [
         Check("a-d, b, c > 0 on the upper branch for r < 5-2√6",
               all(T.holds(UPPER, 1, 0, rr1) for T in (amd, bb, cc)), ref="T17.1"),
         Check("exactly one positive fixed point, x₊, for r < 5-2√6", xp.holds(UPPER, 1, 0, rr1) and xm.holds(UPPER, -1, 0, rr1),
               ["x₊ on the branches:\n\n" + xp.markdown(), "x₋ on the branches:\n\n" + xm.markdown()], ref="T17.2"),
-        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between, obligations=list(facts_between),
-              ref="T17.3"),
+        Check("no positive fixed point for 5-2√6 < r < r2", between, ev_between, ref="T17.3"),
         Check("at r2 the fixed points are not real: a-d = 0 and 4bc < 0, so Δ < 0 on the upper branch",
-              at_r2 is not None and at_r2[0] == -1 and amd_r2 and bc_r2 is not None and bc_r2[0] == -1,
-              obligations=list(facts_r2), ref="T17.4"),
+              at_r2 is not None and at_r2[0] == -1 and amd_r2 and bc_r2 is not None and bc_r2[0] == -1, ref="T17.4"),
         Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1", cells_negative and not zeros,
               ["Δ on the branches:\n\n" + D.markdown()] +
-              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros], obligations=list(facts_zeros),
-              ref="T17.5"),
+              [f"Δ = 0 exactly on the upper branch at {z.describe()}" for z in zeros], ref="T17.5"),
         Check("so that a positive fixed point on the upper branch can only exist up to r = 5-2√6", above, ev_above,
-              obligations=list(facts_above), ref="T17.7"),
+              ref="T17.7"),
     ]
     corrected = printed[:4] + [Check("(a-d)^2 + 4bc < 0 on the upper branch from r2 until r = 1, except at the one point "
                                      "r0 = (7-2√10)/3, where it vanishes",
                                      cells_negative and len(zeros) == 1 and zeros[0] == r0,
-                                     corrects=printed[4], obligations=list(facts_zeros), ref="T17.6")]
+                                     corrects=printed[4], ref="T17.6")]
     x0 = cancelled((fp.a - fp.d) / (2 * fp.c))
     sx = spectrum.sign_at_point(Condition.of("(a-d)/(2c)", x0), r0)
     tc = spectrum.sign_at_point(Condition.of("t_c - t_a", x0 / (-parse(V)) - 1), r0)
@@ -847,13 +802,10 @@ def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
     amd = spectrum.table("a-d", parse(a) - parse(d), 0, 1)
     bc = spectrum.table("bc", parse(b) * parse(c), 0, 1)
     cc = spectrum.table("c", parse(c), 0, 1)
-    with gathered(again=True) as facts_away:
-        away, ev = no_positive_fixed_point(spectrum, fp, xp, xm, MIDDLE, 0, rs, skip=(rr1,))
-        at_rs = fixed_point_signs_at(spectrum, fp, rs, MIDDLE)       # r*, where the middle branch meets the lower
-        away, ev = away and at_rs <= {-1, None}, ev + [f"at r*: {sign_word(at_rs)}"]
-    with gathered(again=True) as facts_degenerate:
-        degenerate = all(spectrum.vanishes_at(g, rr1, MIDDLE) for g in (fp.a, fp.b, fp.c, fp.d))
-    take(facts_away + facts_degenerate)         # they belong to the first two checks below
+    away, ev = no_positive_fixed_point(spectrum, fp, xp, xm, MIDDLE, 0, rs, skip=(rr1,))
+    at_rs = fixed_point_signs_at(spectrum, fp, rs, MIDDLE)       # r*, where the middle branch meets the lower
+    away, ev = away and at_rs <= {-1, None}, ev + [f"at r*: {sign_word(at_rs)}"]
+    degenerate = all(spectrum.vanishes_at(g, rr1, MIDDLE) for g in (fp.a, fp.b, fp.c, fp.d))
     reasoning = [
         Check("the middle branch exists exactly on ]0, r*[ (and at r*)", all((len(cl.branches) >= 2) == (cl.hi <= rs) for cl in xp.cells)),
         Check("for r < 5-2√6: a-d < 0, bc < 0, c > 0 on the middle branch",
@@ -863,9 +815,9 @@ def middle_branch_fixed_points(spectrum, a, b, c, d, U, r1, P0_text):
               ref="T18.4"),
     ]
     return conclude([Check("x₊ and x₋ are never positive on the middle branch wherever f is defined", away, ev,
-                           obligations=list(facts_away), ref="T18.1"),
+                           ref="T18.1"),
                      Check("at r = 5-2√6 the printed f is undefined on the middle branch: a = b = c = d = 0 exactly",
-                           degenerate, obligations=list(facts_degenerate), ref="T18.2")] + reasoning,
+                           degenerate, ref="T18.2")] + reasoning,
                     note="At r = 5-2√6 on the middle branch a, b, c, d (and the numerators and denominators of u, v) "
                          "all vanish: the printed formulas define no datum there, so the claim holds vacuously at that point.")
 
@@ -904,18 +856,13 @@ def sign_of_u(cp, spectrum, U, quintic, digits, r1, position):
     wanted = {str(f) for f, _ in E.factors if f.degree() > 1 or f(0) != 0}
     target = {str(f) for f, _ in to_fmpz_poly(parse(f"(r^2-10*r+1)*({quintic})")).factor()[1]}
     others = [f for f, _ in E.factors if str(f) not in target]
-    both_routes = resultant_fact(E.agree, num, cp, from_flint(E.groebner), "same_factors")
-    # for the kernel: the other factors have no root in ]0, 1[ (Sturm on ]0, 1], and the sign at 1)
-    no_root = fact_ids(*[b for f in others for b in (
-        lambda f=f: facts.root_count(len(Algebraic.roots(f, 0, 1)) + (f(1) == 0), f, 0, 1),
-        lambda f=f: facts.sign_at(int(f(1) > 0) - int(f(1) < 0), f, 1))])
     roots, nf = roots_in_unit_interval(quintic)
     T = spectrum.table("u", parse(U), 0, 1)
     quad_roots = Algebraic.roots(to_fmpz_poly(parse("r^2-10*r+1")), 0, 1)
     checks = [Check("the eliminant's factors vanishing in ]0,1[ are r^2-10r+1 and the quintic",
                     wanted >= target and all(not Algebraic.roots(f, 0, 1) for f in others),
-                    E.evidence(), obligations=both_routes + no_root, ref="T20.1"),
-              Check("both routes agree", E.agree, obligations=both_routes),
+                    E.evidence(), ref="T20.1"),
+              Check("both routes agree", E.agree),
               Check("the first factor, r^2-10r+1, only has one root in ]0,1[, 5-2√6",
                     len(quad_roots) == 1 and quad_roots[0] == rr1, ref="T20.2"),
               named("T20.3", count_check("the quintic", roots, nf, 1))]
@@ -1018,8 +965,6 @@ def eliminant_of_a_plus_d(cp, a, d, P2_text, P3_text, d2, d3, degree, position):
     checks = eliminant_check("a+d", parse(a) + parse(d), cp, product)
     checks[0].ref = "T23.1"
     checks.append(Check(f"the polynomial has degree {degree}", to_fmpz_poly(parse(product)).degree() == degree,
-                        obligations=unsupported_fact("the degree of a polynomial, read off the printed product's "
-                                                     "expansion: the obligation language has no kind for a degree"),
                         ref="T23.2"))
     for n, (name, text, digits) in enumerate((("P2", P2_text, d2), ("P3", P3_text, d3))):
         roots, nf = roots_in_unit_interval(text)
@@ -1068,17 +1013,6 @@ def modulus_sign_factor(e: sp.Expr) -> int | None:
     As |e| > 1 iff P² > Q², this reads the sign of |e| - 1 off the sign of a + d."""
     num, den, ratio = modulus_ratio(e)
     return int(sp.sign(ratio)) if ratio.is_number and ratio != 0 else None
-
-
-def modulus_facts(e: sp.Expr) -> list[str]:
-    """For the kernel: the identity :func:`modulus_sign_factor` reads k from, P² - Q² =
-    κ·(a + d)·s with the constant κ it found (nothing when it found none)."""
-    A, B, C, D, s, xp, xm = mobius_symbols()
-    num, den, ratio = modulus_ratio(e)
-    if not (ratio.is_number and ratio != 0):
-        return []
-    lhs, rhs = num ** 2 - den ** 2, ratio * (A + D) * s
-    return identity_facts((sp.expand(lhs - rhs) == 0, lhs, rhs))
 
 
 def f_prime_at_fixed_point() -> sp.Expr:
@@ -1163,28 +1097,22 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
                      [f"{text} is (a-d)^2 + 4bc: {MARK[generic]}; at r0 on the upper branch, Δ = 0 and {text} = 0 "
                       f"alike: {MARK[at_r0]}"])
     sentence_text = f"x₊ stable iff {stable_when} (l. 495); {upper} on the upper branch and {lower} on the lower, r < 5-2√6 (l. 505)"
-    with gathered(again=True) as facts_printed:
-        ok, ev = sentences(q)
-    facts_printed += modulus_facts(read_q(q)) + modulus_facts(f_prime_at_fixed_point())
+    ok, ev = sentences(q)
     a_d = ["a+d on the branches:\n\n" + apd.markdown(),
            f"Δ = (a-d)² + 4bc > 0 on the upper branch: {MARK[real.holds(UPPER, 1, 0, rr1)]}, on the lower branch: "
            f"{MARK[real.holds(LOWER, 1, 0, rr1)]} (r < 5-2√6), so q is real and √Δ > 0",
            f"for every Möbius map, f'(x₊) = (ad-bc)/(cx₊+d)² = (cx₋+d)/(cx₊+d) and |f'(x₊)| - 1 has the sign of "
            f"{'a+d' if k_f == 1 else '-(a+d)'}"]
-    with gathered(again=True) as facts_upper:
-        upper_repels = k_f == -1 and apd.holds(UPPER, -1)
-    with gathered(again=True) as facts_lower:
-        lower_dominated = k_f == -1 and apd.holds(LOWER, 1) and all(lam_gap.holds(k, 1) for k in (UPPER, MIDDLE, LOWER))
+    upper_repels = k_f == -1 and apd.holds(UPPER, -1)
+    lower_dominated = k_f == -1 and apd.holds(LOWER, 1) and all(lam_gap.holds(k, 1) for k in (UPPER, MIDDLE, LOWER))
     A, B, C, D, s_, xp, xm = mobius_symbols()
     two_forms = sp.cancel(C * xp + D - (A + D + s_) / 2) == 0 and sp.cancel(C * xm + D - (A + D - s_) / 2) == 0
     minus_one = sp.cancel((A + D + s_) / (A + D - s_) + 1 - 2 * (A + D) / (A + D - s_)) == 0
     printed = [
-        Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d, obligations=take(facts_printed), ref="T24.1"),
-        Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)", upper_repels,
-              obligations=take(facts_upper + modulus_facts(f_prime_at_fixed_point())), ref="T24.3"),
+        Check(f"l. 493: q = {q}; with it, {sentence_text}", ok, ev + a_d, ref="T24.1"),
+        Check("so on the upper branch a+d < 0 and |f'(x₊)| > 1: x₊ is repelling (unstable)", upper_repels, ref="T24.3"),
         Check("and on the lower branch a+d > 0 and |f'(x₊)| < 1, but λ_lower < λ_upper, both > 0: λ is not dominant "
-              "(unstable in the velocities)", lower_dominated,
-              obligations=take(facts_lower + modulus_facts(f_prime_at_fixed_point())), ref="T24.4"),
+              "(unstable in the velocities)", lower_dominated, ref="T24.4"),
         Check("l. 493: the two forms of q agree, cx± + d = (a+d ± √Δ)/2 for x± = (a-d ± √Δ)/(2c)", two_forms, ref="T24.5"),
         named("T24.6", q_one(q_is_one)),
         Check("which does not happen below 5-2√6: Δ > 0, so q ≠ 1, on the upper and lower branches",
@@ -1200,14 +1128,11 @@ def stability_of_the_fixed_point(spectrum, a, b, c, d, r1, q, upper, lower, stab
                                    False, corrects=printed[0]))
         else:
             q_fixed = q.replace(*T24_CORRECTION)
-            with gathered(again=True) as facts_fixed:
-                ok_fixed, ev_fixed = sentences(q_fixed)
+            ok_fixed, ev_fixed = sentences(q_fixed)
             is_fprime = sp.cancel(read_q(q_fixed) - f_prime_at_fixed_point()) == 0
-            facts_fixed += modulus_facts(read_q(q_fixed)) + modulus_facts(f_prime_at_fixed_point()) + \
-                identity_facts((is_fprime, read_q(q_fixed), f_prime_at_fixed_point()))
             corrected.append(Check(f"l. 493: q = {q_fixed}; with it, {sentence_text}", ok_fixed and is_fprime,
                                    ev_fixed + [f"q = {q_fixed} is f'(x₊) identically: {MARK[is_fprime]}"],
-                                   corrects=printed[0], obligations=take(facts_fixed), ref="T24.2"))
+                                   corrects=printed[0], ref="T24.2"))
         slips.append("l. 493: q displayed as 1/f'(x₊), the fraction inverted")
     if not printed[4].holds:
         fixed = q_is_one.replace(*T24_Q_ONE) if T24_Q_ONE[0] in q_is_one else None
@@ -1243,19 +1168,17 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, r1_digi
     Instability as in T24 (corrected reading).  The formal statements T25.1.1-8
     (statements/3_pattern.txt): the checks naming them."""
     spectrum, rr1 = candidate.spectrum, r1_of(r1)
-    with gathered(again=True) as analysis:     # the regions: for the first two checks
-        an = Analysis(candidate)
-        reqs, _ = prefix_requirements(WORD, len(WORD), candidate.q0, candidate.steps, candidate.q0_other)
-        for q in reqs:
-            an.impose(q)
-        undecided = [(R, u_) for R in an.regions for u_ in R.undecided]
-        where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
-    with gathered(again=True) as ends:
-        exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
-                         and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
-        pieces = [p for k in range(3) for p in where[k]]
-        below = any(not p.is_point and p.lo == Algebraic.rational(0) and p.hi == rr1 for p in pieces)
-        above = any((p.lo >= rr1) if p.is_point else (p.hi > rr1) for p in pieces)
+    an = Analysis(candidate)
+    reqs, _ = prefix_requirements(WORD, len(WORD), candidate.q0, candidate.steps, candidate.q0_other)
+    for q in reqs:
+        an.impose(q)
+    undecided = [(R, u_) for R in an.regions for u_ in R.undecided]
+    where = {k: [p for R in an.regions if R.branch == k for p in R.pieces] for k in range(3)}
+    exactly_below = {k: len(where[k]) == 1 and not where[k][0].is_point and where[k][0].lo == Algebraic.rational(0)
+                     and where[k][0].hi == rr1 for k in (UPPER, LOWER)}
+    pieces = [p for k in range(3) for p in where[k]]
+    below = any(not p.is_point and p.lo == Algebraic.rational(0) and p.hi == rr1 for p in pieces)
+    above = any((p.lo >= rr1) if p.is_point else (p.hi > rr1) for p in pieces)
     regions = [f"{BRANCH_NAMES[R.branch]} branch, {R.fixed_point} of the computed f: realised on {R.describe()}"
                + (f"; excluded exactly at {', '.join(f'{fmt(rc)} ({why})' for rc, why in R.dropped)}" if R.dropped else "")
                for R in an.regions]
@@ -1264,31 +1187,25 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, r1_digi
     tables = [spectrum.table("u", parse(U), 0, 1)]
     tables += [spectrum.table(name, parse(text).subs(uv), 0, 1) for name, (_k, _i, text) in velocities.items()]
     dist = [spectrum.table(name, parse(text), 0, 1, fp) for name, text in (("p3(t4)", p3t4), ("p1(t5)", p1t5))]
-    with gathered(again=True) as facts_printed:
-        printed_ok = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
-                         and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
-                         for k in (UPPER, LOWER))
-    with gathered(again=True) as facts_minus:       # the other fixed point on those branches
-        minus_negative = all(xm.holds(k, -1, 0, rr1) for k in (UPPER, LOWER))
+    printed_ok = all(xp.holds(k, 1, 0, rr1) and tables[0].holds(k, 1, 0, rr1)
+                     and all(T.holds(k, -1, 0, rr1) for T in tables[1:]) and all(T.holds(k, 1, 0, rr1) for T in dist)
+                     for k in (UPPER, LOWER))
+    minus_negative = all(xm.holds(k, -1, 0, rr1) for k in (UPPER, LOWER))   # the other fixed point
     apd = spectrum.table("a+d", fp.a + fp.d, 0, rr1)
     lam_t = spectrum.table("λ", lam, 0, rr1)
-    with gathered(again=True) as facts_unstable:
-        unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)
-    facts_unstable += modulus_facts(f_prime_at_fixed_point())      # |f'(x₊)| > 1 iff a+d < 0 (T24)
-    take(analysis + ends + facts_printed + facts_minus + facts_unstable)
+    unstable = apd.holds(UPPER, -1) and lam_t.holds(LOWER, 1) and lam_t.holds(UPPER, 1)   # |f'(x₊)| > 1 iff a+d < 0 (T24)
     cp = candidate.cp
     same_q = [reduce_mod(to_field(parse(e)) - candidate.q0[i + 1], cp) == 0 for i, e in enumerate((U, V))]
     P, comp = [to_field(parse(e)) for e in (a, b, c, d)], [to_field(e) for e in candidate.abcd]
     same_f = all(reduce_mod(P[i] * comp[j] - P[j] * comp[i], cp) == 0 for i in range(4) for j in range(i + 1, 4))
     return conclude([
         Check("every cell and critical value of ]0,1[ decided, on every branch, for both fixed points", not undecided,
-              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided],
-              obligations=list(analysis)),
+              [f"undecided: {BRANCH_NAMES[R.branch]} {R.fixed_point} at {fmt(rc)} ({why})" for R, (rc, why) in undecided]),
         named("T25.1.1", Check(f"5-2√6 ≃ {r1_digits}", rr1.in_rounding_interval(r1_digits), [rr1.describe()])),
         witnessed(Check("the candidate realises ababcb, every inequality strict, for every r in ]0, 5-2√6[ on some "
-                        "branch", below, regions, obligations=analysis + ends), "T25.1.2", WORD),
-        witnessed(Check("and for no r in [5-2√6, 1[, on any branch, for either fixed point", not above, regions,
-                        obligations=analysis + ends), "T25.1.3", WORD),
+                        "branch", below, regions), "T25.1.2", WORD),
+        witnessed(Check("and for no r in [5-2√6, 1[, on any branch, for either fixed point", not above, regions),
+                  "T25.1.3", WORD),
         named("T25.1.4", Check("u, v as printed are the components of q(0) (rows 1 and 2 of M q = λ q), modulo cp(M)",
                                all(same_q), [f"u: {same_q[0]}, v: {same_q[1]}"])),
         named("T25.1.5", Check("the printed (a, b, c, d) is proportional to the computed position map modulo cp(M)",
@@ -1297,13 +1214,13 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, r1_digi
                         "upper branch and on the lower branch, and nowhere on the middle branch",
                         exactly_below[UPPER] and exactly_below[LOWER] and not where[MIDDLE],
                         ["the inequalities: " + ", ".join(f"{q.name} {'>' if q.sign > 0 else '<'} 0" for q in reqs)]
-                        + regions, obligations=analysis + ends), "T25.1.6", WORD),
+                        + regions), "T25.1.6", WORD),
         named("T25.1.7", Check("on the upper and lower branches the printed x₋ is negative for r < 5-2√6: the datum is "
-                               "x₊", minus_negative, obligations=list(facts_minus))),
+                               "x₊", minus_negative)),
         Check("with the printed formulas (x = x₊, u, v): x₊ > 0, u > 0, the five velocities < 0 and p3(t4), p1(t5) > 0 "
-              "on the upper and lower branches for r < 5-2√6", printed_ok, obligations=list(facts_printed)),
-        witnessed(Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable,
-                        obligations=list(facts_unstable)), "T25.1.8", WORD),
+              "on the upper and lower branches for r < 5-2√6", printed_ok),
+        witnessed(Check("unstable: upper branch |f'(x₊)| > 1 (a+d < 0), lower branch λ not dominant", unstable),
+                  "T25.1.8", WORD),
     ], note="p_1(t_6) > 0 (μ > 0) is needed too and is not in the paper's list (l. 470-486); it holds on the same "
             "region. The computed (a, b, c, d) is the printed one times a negative constant (T10), so the paper's x₊ "
             "is the computed x₋.")

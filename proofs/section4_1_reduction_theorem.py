@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from certify.algebra import Q, facts, lam, r, show, statements
+from certify.algebra import Q, lam, r, show, statements
 from certify.algebra import trig as T
 from certify.dynamics import INDEX, LETTERS, collision_matrix
 from certify.dynamics import cones as RC
@@ -52,21 +52,16 @@ from certify.run import (
     combined,
     conclude,
     concluded,
-    determinant_fact,
-    fact_ids,
-    facts_of,
     identity,
-    identity_facts,
-    identity_modulo_facts,
-    kept_facts,
+    kept_witnesses,
     named,
     overridden,
     quantity,
     replaced,
     result_check,
     reworded,
-    take,
     unread,
+    witnesses_of,
 )
 from proofs.section2_model import A_PRINTED, B_PRINTED, C_PRINTED, matrix
 
@@ -281,8 +276,7 @@ def matrices_are(letter: str, seen: list, lines: str) -> Check:
     diffs = [(m - K).applyfunc(sp.expand) for m in seen]
     return Check(f"l. {lines}: every matrix printed inline ({len(seen)}) is {letter.upper()} "
                  "(certify.dynamics.model.collision_matrix)", bool(seen) and all(d.is_zero_matrix for d in diffs),
-                 [f"printed: `{T.show(sp.Matrix(m).tolist())}`" for m in seen[:1]],
-                 obligations=identity_facts(*[(d.is_zero_matrix, m, K) for m, d in zip(seen, diffs)]) if seen else None)
+                 [f"printed: `{T.show(sp.Matrix(m).tolist())}`" for m in seen[:1]])
 
 
 def call_factors(text: str, fn: str, names: dict) -> list[list[tuple]]:
@@ -336,8 +330,7 @@ def tangent_bases(p0_a, e_x, e_theta_a, limit_0, limit_pi2, q_a_sum, q_a, p0_b, 
         same, det = (at - L).is_zero_matrix, L.det()
         checks.append(Check(f"l. 545: at θ = {angle} the basis is the printed {T.show(L.tolist())}, det = +1",
                             same and det == 1, [f"(e_x, p(0), e_θ) at θ = {angle}: "
-                                                f"`{T.show(at.tolist())}`, det {det}"],
-                            obligations=identity_facts((same, at, L)) + determinant_fact(det == 1, L, 1), ref=ref))
+                                                f"`{T.show(at.tolist())}`, det {det}"], ref=ref))
     checks.append(named("S1.5", identity("l. 614: cos φ e_θ + sin φ e_x + λ e_r is the printed vector q(0) (e_r = p(0))",
                                          T.parse(q_a_sum, eθ=eta, ex=ex, er=pa), vec(q_a))))
     frame_b = sp.Matrix.hstack(etb, ey, pb).T
@@ -505,17 +498,14 @@ def first_collision_after_a(p0_a, q_a, t_b, t_c, difference, order, p0_b, q_b, t
         if text is None:
             return Check(f"l. 628 corrected: the stated correction {' → '.join(ORDER_CORRECTION)} applies to the "
                          f"printed `{order}`", False)
-        holds = bool(known) and statements.relation(text, {"t_c": T_C, "t_b": T_B}).holds(known)
         # the implication rests on the certified sign of t_c - t_b; refuting it needs the hypotheses to hold
-        # somewhere, shown at a rational point: an evaluation the obligation language does not have
-        point = [] if holds else fact_ids(lambda: {"kind": "unsupported", "reason": (
-            "the hypotheses hold at a rational point (cos φ > 0, t_b, t_c > 0 there): the obligation language "
-            "has no evaluation at a point")})
+        # somewhere, shown at a rational point
+        holds = bool(known) and statements.relation(text, {"t_c": T_C, "t_b": T_B}).holds(known)
         holds = holds and all(signs["S2.8"])      # and the signs the formal statement reads (S2.8, S2.9)
         return Check(f"{label}: cos φ > 0, t_b > 0, t_c > 0 ⇒ {text}", holds, R["order+"].evidence + (
             [] if holds else [f"false whenever its hypotheses hold, and they do hold: {pt_ev}" if ok_pt else
                               f"false whenever its hypotheses hold; NO witness that they hold: {pt_ev}"]),
-            obligations=take(facts_of(R["order+"], *signs["S2.8"])) + point)
+            witnesses=witnesses_of(R["order+"], *signs["S2.8"]))
     as_printed = named("S2.8", order_check("l. 628", order))
     corrected_order = named("S2.9", order_check("l. 628 corrected", statements.corrected(order, *ORDER_CORRECTION)))
     return concluded(common + [as_printed] + conclusion + bc, common + [corrected_order] + conclusion + bc,
@@ -795,10 +785,10 @@ def printed_cones(cones: dict, A: str, B: str, C: str) -> dict:
     return cones if all(K[L] == SECTION2_K[L] for L in LETTERS) else RC.steps(K)
 
 
-def cone_facts(cones, motion: bool = False) -> list[str]:
-    """The facts of the step lemmas on ``cones`` (and of the particle lemmas with ``motion``),
+def cone_witnesses(cones, motion: bool = False) -> list[str]:
+    """The witnesses of the step lemmas on ``cones`` (and of the particle lemmas with ``motion``),
     kept by certify.dynamics.cones, recorded for the check that reads them; the ids."""
-    return kept_facts(RC.facts(cones, motion))
+    return kept_witnesses(RC.witnesses(cones, motion))
 
 
 def lemma_check(s: RC.Step) -> Check:
@@ -808,7 +798,7 @@ def lemma_check(s: RC.Step) -> Check:
     ev = [f"{'✓' if c.holds else '✗'} {c.statement}" for c in s.checks]
     ev += [e for c in s.checks if not c.holds for e in c.evidence]
     return Check(f"step lemma on the cone {s.label} (every state there, exact): {nxt}", s.holds, ev,
-                 obligations=cone_facts([s]))
+                 witnesses=cone_witnesses([s]))
 
 
 def supporting(text: str) -> str:
@@ -912,20 +902,8 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
         engine = sp.Matrix.hstack(*(sp.Matrix(col) for col in R.cofactor_columns(letter, r)))
         equal = all(sp.cancel(e) == 0 for e in engine - cof)                           # as matrices over Q(r)
         same = adjugate and equal
-        values = [sp.Rational(int(r0.p), int(r0.q)) for r0 in rates]
         integer = [R.cofactor(letter, r0) for r0 in rates]
         scaled = multiples(integer, cof, rates)     # k with N_ = k·cof at r = v
-        # for the kernel: K fixes e_m (m ≠ j); cof is K's cofactor matrix (K^T cof = det K · I, det K given) and the
-        # engine's; at each r₀ the integer matrix is k·cof(r₀) (an identity modulo r − r₀) with k > 0
-        grounds = identity_facts(*[(ok, [K, sp.eye(3).col(m)], sp.eye(3).col(m))
-                                   for ok, m in zip(kept, [m for m in range(3) if m != j])],
-                                 (adjugate, [K.T, cof], det * sp.eye(3)), (equal, engine, cof))
-        grounds += determinant_fact(True, K, det)
-        for N_, v, k in zip(integer, values, scaled):
-            if k is not None:
-                grounds += identity_modulo_facts(r - v, (True, sp.Matrix([[int(z) for z in row] for row in N_]), k * cof),
-                                                 var=r)
-                grounds += fact_ids(lambda k=k: facts.compare(1, k, 0))
         checks.append(Check(f"{letter.upper()} fixes {{x_{j + 1} = 0}} pointwise, so the plane after a collision "
                             f"{letter} is {letter.upper()}·P, with normal cof({letter.upper()}) n; the projective map "
                             f"moves normals by this cof({letter.upper()}): the engine's cof({letter.upper()}) equals "
@@ -934,7 +912,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                             [f"cof({letter.upper()}) = det·{letter.upper()}^(-T) = `{show(cof.applyfunc(sp.factor).tolist())}`",
                              f"engine − printed over Q(r): {'0' if same else show((engine - cof).applyfunc(sp.factor).tolist())}; "
                              f"integer multiples at {len(rates)} values of r: "
-                             f"{sum(k is not None for k in scaled)} positive"], obligations=grounds))
+                             f"{sum(k is not None for k in scaled)} positive"]))
     checks += plane_identities({L: matrix(text) for L, text in zip(LETTERS, (A, B, C))})
     cones = printed_cones(reduction_cones, A, B, C)
     checks.append(Check("the next collision depends on the contact and the plane only: on each of the six cones of "
@@ -943,7 +921,7 @@ def spherical_reduction_theorem(section4_data, reduction_cones, A, B, C):
                         "lemmas with the printed A, B, C); by induction, two trajectories on one plane have the same "
                         "collision types while both last", RC.dynamics_is_proven(cones),
                         [f"{'✓' if c.motion.holds else '✗'} {c.label}: next {c.following}"
-                         for c in cones.values()], obligations=cone_facts(cones.values(), motion=True), ref="S6.7"))
+                         for c in cones.values()], witnesses=cone_witnesses(cones.values(), motion=True), ref="S6.7"))
     compared = same = 0
     for d in section4_data:
         k = d.realised
@@ -1037,7 +1015,7 @@ def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduct
     closed = RC.map_is_proven(cones)
     checks.append(Check(f"every orbit of the reduction off the corners has {reduction}: the six cones hold every "
                         "state off the corners, and each step maps a cone into a cone of the next contact, or onto a "
-                        "corner (n'_j = 0)", closed and claim.infinite, obligations=cone_facts(cones.values()),
+                        "corner (n'_j = 0)", closed and claim.infinite, witnesses=cone_witnesses(cones.values()),
                         ref="S11.7"))
     checks += [check_of(c.motion) for c in cones.values()]
     for c in checks[-6:]:
@@ -1048,7 +1026,7 @@ def reduction_never_stops(reduction_cones, reduction_scan, section4_data, reduct
     checks.append(Check(f"the realised collisions are {realised} of the reduction's sequence (for every datum, by "
                         "induction on the collisions)", prefix and (extent == "prefix" or separated == 0),
                         [f"{separated} exact runs end because the particles separate while the reduction goes on"],
-                        obligations=cone_facts(cones.values(), motion=True), ref="S11.8"))
+                        witnesses=cone_witnesses(cones.values(), motion=True), ref="S11.8"))
     lengths = [len(o.word) for o in reduction_scan]
     realise = sum(R.word(d.orbit).startswith(run.word) for run, d in runs)
     evidence = [supporting(f"{len(lengths)} exact orbits from random planes meet no corner in {sum(lengths)} "

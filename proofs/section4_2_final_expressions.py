@@ -27,22 +27,19 @@ from certify.run import (
     combined,
     conclude,
     concluded,
-    fact_ids,
-    facts_of,
     identity,
-    identity_facts,
-    kept_facts,
+    kept_witnesses,
     named,
     overridden,
     replaced,
     result_check,
-    take,
+    witnesses_of,
 )
 from proofs.section4_1_reduction_theorem import (
     PAIR,
     SECTION2,
     UNIT,
-    cone_facts,
+    cone_witnesses,
     cθ,
     cφ,
     hit_point,
@@ -126,7 +123,7 @@ def contact_frame(contact: str, p0, q0) -> Check:
 def next_gap(contact: str, p0, q0, H: T.Signs) -> tuple[int | None, list[str], list[dict]]:
     """The one other gap k that closes on the ray p(0) + t q(0) (p_k(0) > 0, q_k(0) < 0)
     while the third one opens (q_l(0) > 0), all signs read from the factors under H; the
-    evidence, and the facts (signs) it was decided by, for :func:`certify.run.kept_facts`."""
+    evidence, and the witnesses of those signs, for :func:`certify.run.kept_witnesses`."""
     others = [j for j in range(3) if j != INDEX[contact]]
     with captured() as got:
         sp_ = {j: T.sign(p0[j], H)[0] for j in others}
@@ -146,7 +143,7 @@ def six_case(key: str, spec: str, p0, q0, q_t1: str) -> list[Check]:
     k, ev, signs = next_gap(contact, p0, q0, H)
     first = Check(f"{label}: the next collision is the printed {pair} with matrix {letter}: the only gap the ray "
                   "p(0) + t q(0) closes", k is not None and PAIR.get(pair) == LETTERS[k] and letter == LETTERS[k].upper(),
-                  ev, obligations=kept_facts(signs))
+                  ev, witnesses=kept_witnesses(signs))
     if k is None:
         return [first]
     V, R = vec(V_text), T.parse(R_text)
@@ -200,22 +197,18 @@ def engine_is_printed(printed: dict) -> list[Check]:
     args = (T.cθ, T.sθ, T.cφ, T.sφ)
     checks = []
 
-    def same(text, engine):        # (verdict, printed, engine's), as the check compared them
-        v, e = T.vector(text), sp.Matrix(engine)
-        return (v - e).applyfunc(sp.expand) == sp.zeros(3, 1), v, e
+    def same(text, engine) -> bool:
+        return (T.vector(text) - sp.Matrix(engine)).applyfunc(sp.expand) == sp.zeros(3, 1)
     for c in LETTERS:
-        compared = [same(printed[f"p0_{c}"], R.P0[c](*args[:2])), same(printed[f"q0_{c}"], R.Q0[c](*args))]
-        ok = all(x[0] for x in compared)
+        ok = same(printed[f"p0_{c}"], R.P0[c](*args[:2])) and same(printed[f"q0_{c}"], R.Q0[c](*args))
         for key, (c2, s) in CASE_KEYS.items():
             if c2 != c:
                 continue
             pair, _K, vec, _radicand = (x.strip() for x in printed[key].split("|"))
             j, p1 = R.CASES[(c, s)]
-            compared.append(same(vec, p1(*args)))
-            ok = ok and PAIR.get(pair) == j and compared[-1][0]
+            ok = same(vec, p1(*args)) and ok and PAIR.get(pair) == j
         checks.append(Check(f"contact {c}: the map steps with the printed p(0), q(0), next pair and p(t1)", ok,
-                            [f"`{printed[k]}`" for k in (f"p0_{c}", f"q0_{c}", f"{c}_pos", f"{c}_neg")],
-                            obligations=identity_facts(*compared)))
+                            [f"`{printed[k]}`" for k in (f"p0_{c}", f"q0_{c}", f"{c}_pos", f"{c}_neg")]))
     return checks
 
 
@@ -246,7 +239,7 @@ def case_is_the_map(key: str, spec: str, p0, q0) -> Check:
                  f"next contact {j} (u_{i + 1} u_{INDEX[j] + 1} > 0, u = p(0) ∧ q(0)) and the plane, p(t1) ∧ "
                  f"{letter}q(0) being a positive multiple of cof({letter}) u", rule.holds and plane.holds and all(sides),
                  [f"✓ {c.statement}" for c in steps] + [f"u = `{T.show(u0)}`"] + rule.evidence + plane.evidence,
-                 obligations=take(facts_of(rule, plane, *sides)))
+                 witnesses=witnesses_of(rule, plane, *sides))
 
 
 def case_for_every_radial_part(key: str, spec: str, p0, q0) -> Check:
@@ -297,7 +290,7 @@ def trigonometric_map_agrees_with_dynamics(section4_data, reduction_cones, **pri
                for n, (key, (c, _s)) in enumerate(CASE_KEYS.items())]
     checks.append(Check("the particles follow the projective map: on each of the six cones of states they collide "
                         "next at its contact, or never, and then span its plane (step and particle lemmas, S11)",
-                        RC.dynamics_is_proven(reduction_cones), obligations=cone_facts(reduction_cones.values(), True)))
+                        RC.dynamics_is_proven(reduction_cones), witnesses=cone_witnesses(reduction_cones.values(), True)))
     compared = agree = undecided = 0
     if all(c.holds for c in checks[:3]):
         for d in section4_data:
@@ -337,7 +330,7 @@ def trilinear(text: str, letter: str, u0, p1, q0, H: T.Signs, axis, tφ: str) ->
     ev = prop.evidence + orient.evidence + ([] if prop.holds else not_normal(u1, p1, H, tφ))
     return Check(f"l. 976-980: ũ(1) = `{text}` is a positive multiple of p(1) ∧ {letter}q(0), "
                  f"the normal of P(1) with e_t·u(1) > 0 ({RANGE[H.sign(cφ)]})", prop.holds and orient.holds and own.holds,
-                 ev, obligations=take(facts_of(prop, orient, own)))
+                 ev, witnesses=witnesses_of(prop, orient, own))
 
 
 @certificate("S8.1", "l. 931-987",
@@ -467,23 +460,23 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
     premise = "; with the step and particle lemmas on the six cones (S11)"
 
     def grounds(*results) -> list[str]:      # the lemmas on the cones, and the results read on them
-        return cone_facts(cones.values(), motion=True) + take(facts_of(*results))
+        return cone_witnesses(cones.values(), motion=True) + witnesses_of(*results)
 
     def evidence(results) -> list[str]:
         return [e for x in results for e in x.evidence[:1]]
     printed = [Check(f"u(k) = p(k) ∧ q(k) = αρ n satisfies the orientation e_t · u(k) > 0 (t = {orientation}) on every "
                      "cone of states", lemmas and all(orient) and all(trig_orient), evidence(orient + trig_orient),
-                     obligations=take(facts_of(*orient, *trig_orient)), ref="S8.2.1"),
+                     witnesses=witnesses_of(*orient, *trig_orient), ref="S8.2.1"),
                Check(f"contact a, next b: `{to_b}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
                      lemmas and a_b.following == "b" and on_b.holds and all(trig_b), on_b.evidence + evidence(trig_b),
-                     obligations=grounds(on_b, *trig_b), ref="S8.2.2"),
+                     witnesses=grounds(on_b, *trig_b), ref="S8.2.2"),
                Check(f"contact a, next c: `{to_c}` ∝ p(1) ∧ q(1), positively, for every state{premise}",
                      lemmas and a_c.following == "c" and on_c.holds and all(trig_c),
                      on_c.evidence + evidence(trig_c) + ([] if on_c.holds else [not_normal_at(to_c, a_c)[1]]),
-                     obligations=grounds(on_c, *trig_c), ref="S8.2.3"),
+                     witnesses=grounds(on_c, *trig_c), ref="S8.2.3"),
                Check(f"every contact: the relabelled formula [u ∧ e_j] ∧ [K_j(u ∧ [e_i ∧ u])] ∝ p(1) ∧ q(1), "
                      f"positively, for every state{premise}", lemmas and all(relabelled) and all(trig_relabelled),
-                     evidence(relabelled + trig_relabelled), obligations=grounds(*relabelled, *trig_relabelled),
+                     evidence(relabelled + trig_relabelled), witnesses=grounds(*relabelled, *trig_relabelled),
                      ref="S8.2.5")]
     corrected = []
     fixed = statements.corrected(to_c, *TRILINEAR_C_CORRECTION)     # the correction stated once, for S8.1 too
@@ -496,9 +489,7 @@ def vectorial_map_agrees_with_dynamics(section4_data, reduction_cones, orientati
                            f"positively, for every state{premise}; the printed one is refuted at an exact state",
                            lemmas and a_c.following == "c" and on_fixed.holds and all(trig_fixed) and refuted,
                            on_fixed.evidence + evidence(trig_fixed) + [witness], corrects=printed[2],
-                           obligations=grounds(on_fixed, *trig_fixed) + fact_ids(lambda: {"kind": "unsupported", "reason": (
-                               "the printed formula refuted at an exact state of the cone: the obligation language "
-                               "has no evaluation at a point")}), ref="S8.2.4"), printed[3]]
+                           witnesses=grounds(on_fixed, *trig_fixed), ref="S8.2.4"), printed[3]]
     evidence_runs = [supporting(tally_runs(section4_data, orientation, to_b, to_c))]
     return conclude(printed, corrected, evidence=evidence_runs, kind=MISPRINT, misprint=E_Y_FOR_E_Z)
 

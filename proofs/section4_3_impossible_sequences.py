@@ -31,16 +31,17 @@ from certify.run import (
     conclude,
     concluded,
     identity,
-    kept_facts,
+    kept_witnesses,
     overridden,
     replaced,
     result_check,
     reworded,
     unread,
+    witnesses_of,
 )
 from proofs.section4_1_reduction_theorem import (
     SECTION2,
-    cone_facts,
+    cone_witnesses,
     cθ,
     cφ,
     hit_point,
@@ -188,7 +189,7 @@ def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read
     cac = next_angle_sign("c", "A", 1, 0, SIGN_A)
     gaps = {c: next_gap(c, vec(CONTACT_P0[c]), vec(CONTACT_Q0[c]), T.hypotheses(s)) for c, s in (("c", -1), ("a", 1))}
     then_b = [Check(f"after a contact {c} with cos φ' {'<' if s < 0 else '>'} 0 the next collision is b",
-                    gaps[c][0] == INDEX["b"], obligations=kept_facts(gaps[c][2]))
+                    gaps[c][0] == INDEX["b"], witnesses=kept_witnesses(gaps[c][2]))
               for c, s in (("c", -1), ("a", 1))]
     # certified: cos φ' < 0 (aca[1]) and sin φ' > 0 (φ' ∈ ]0,π[ by definition); the printed conclusion read on them
     read = statements.relation(conclusion, {"cos(φ')": COS_NEXT, "sin(φ')": SIN_NEXT}).holds({COS_NEXT: -1, SIN_NEXT: 1})
@@ -206,7 +207,7 @@ def no_aca_no_cac(p_k, q_k, p_next, q_next, C_times_qk, projection, form_c, read
         frame_lemma("a", CONTACT_P0["a"], CONTACT_Q0["a"]),
         *cac, then_b[1],
         Check("no cac: after c then a, cos φ' > 0 and the next collision is b", all(cac) and then_b[1].holds,
-              obligations=[i for x in [*cac, then_b[1]] for i in x.obligations or []])]
+              witnesses=[i for x in [*cac, then_b[1]] for i in x.witnesses or []])]
     return concluded(algebra + [vector_claim, concl], corrected, kind=FALSE_STATEMENT,
                      misprint="l. 1014-1016: q(k+1) projected on p(k)^⊥, not p(k+1)^⊥ (a step of the proof of "
                               "Proposition 4.4; the proposition holds)",
@@ -270,7 +271,7 @@ def no_aca_cac_for_every_orbit(reduction_cones, reduction_scan, section4_data, a
                             f"the next normal n' has n'_{INDEX[y] + 1} n'_{INDEX[excluded] + 1} < 0, so the collision "
                             f"after {y} is not {excluded} (for every orbit)", c.holds and res.holds,
                             [f"n' ∝ p' ∧ {y.upper()} w = `{T.show(c.normal)}`"] + res.evidence
-                            + ([] if c.holds else lemma_check(c).evidence), ref=ref))
+                            + ([] if c.holds else lemma_check(c).evidence), witnesses=witnesses_of(res), ref=ref))
         evidence.append(supporting(
             f"{pattern} occurs {occurrences(scan, pattern)} times in {sum(map(len, scan))} collisions of {len(scan)} "
             f"exact reduction orbits and {occurrences(physical, pattern)} times in {sum(map(len, physical))} "
@@ -340,15 +341,13 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
     ks, blks = offsets(window), [B.strip() for B in blocks.split(",")]
     cones = reduction_cones.values()
     lemma = all(c.holds for c in cones)
-    with captured() as got:
+    # a letter whose exclusion is not proven stays allowed (the admissible windows are a superset of those that
+    # occur): the verdicts rest on the step lemmas and on the exclusions proven (S9.2, their witnesses)
+    with captured() as proven:
         allowed = RC.transitions(reduction_cones)
 
-    # a letter whose exclusion is not proven stays allowed (the admissible windows are a superset of those that
-    # occur): the verdicts rest on the step lemmas and on the exclusions proven (S9.2), not on the undecided ones
-    proven = [ob for ob in got if ob["kind"] != "unsupported"]
-
     def grounds() -> list[str]:
-        return cone_facts(cones) + kept_facts(proven)
+        return cone_witnesses(cones) + kept_witnesses(proven)
     rules = "; ".join(f"{x}{y} → {'/'.join(sorted(z))}" for (x, y), z in sorted(allowed.items()))
     starts_b = [w for w in RC.admissible(max(ks) + 1, allowed) if w[0] == "b"]
     seen, good = window_holds(starts_b, ks)
@@ -358,11 +357,11 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
     printed = [Check(f"{window}: every admissible window b… of length {max(ks) + 1} has b at the stated places (for "
                      "every orbit)", lemma and seen == good > 0,
                      [f"allowed after each proven step: {rules}", f"{good} of {seen}: {', '.join(starts_b)}"],
-                     obligations=grounds(), ref="S10.1"),
+                     witnesses=grounds(), ref="S10.1"),
                Check("b occurs infinitely often: every admissible window of length 3 contains b, and every orbit off "
                      "the corners has infinitely many collisions (the step lemma on the six cones, S11)",
                      lemma and all("b" in w for w in three), [f"{len(three)} windows: {', '.join(three)}"],
-                     obligations=grounds(), ref="S10.2")]
+                     witnesses=grounds(), ref="S10.2")]
     width = max(len(B) for B in blks)
     uncovered = [w for w in RC.admissible(width, allowed) if w[0] != "b" and not any(w.startswith(B) for B in blks)]
     induction = lemma and not uncovered and all(B.endswith("b") for B in blks)
@@ -376,12 +375,12 @@ def b_recurs(reduction_cones, reduction_scan, window, blocks):
                     f"{', '.join(uncovered) or 'none'}; every block ends with b, and no letter follows itself"]
     leading_b = [w for w in scan if w.startswith("b")]
     printed.append(Check(f"every pattern is a concatenation of {', '.join(blks)}", induction and not first_b,
-                         witness + induction_ev, obligations=grounds(), ref="S10.3"))
+                         witness + induction_ev, witnesses=grounds(), ref="S10.3"))
     corrected = printed[:2] + [
         Check(f"c_1 c_2 …, without its first letter when that is b, is a concatenation of {', '.join(blks)}: each "
               "admissible window that does not start with b starts with a block, which ends with b, so the next "
               "letter is not b again (induction along the word)", induction, induction_ev, corrects=printed[2],
-              obligations=grounds(), ref="S10.4")]
+              witnesses=grounds(), ref="S10.4")]
     evidence = [supporting(f"{window} at {s_good} of {s_seen} collisions b of the scan ({len(scan)} exact orbits, "
                            f"{sum(map(len, scan))} collisions); {sum(parses(w, blks) for w in scan)} of {len(scan)} "
                            f"orbit words parse as printed, {len(leading_b)} start with b, e.g. "

@@ -43,7 +43,6 @@ from certify.run import (
     quantity,
     replaced,
     section5_figure,
-    unsupported_fact,
 )
 
 PAPER_FINDINGS = "numerics-paper.json"
@@ -588,14 +587,14 @@ def island_quasi_periodic(island_theorem, suggests, tori, above):
 
     def step_check(name: str, ref: str, extra: bool = True, evidence=(), text: str = "") -> Check:
         s = step[name]
-        return Check(s.name + text, s.holds and extra, list(evidence), ref=ref, obligations=island_unsupported(True))
+        return Check(s.name + text, s.holds and extra, list(evidence), ref=ref)
     checks = [
         Check(f"l. 95: \"{suggests}\": proved for the island at every rational r in ]3−2√2, 1[ (wherever the "
               "rotation number is irrational; r a symbol, every step an identity in Q(r) or a sign certified on the "
               "interval); at the resonances (ρ = p/q, e.g. r = 2−√3) every island orbit is periodic instead",
               "quasi-periodic" in suggests and T.quasi_periodic,
               [f"the steps of the theorem for r a symbol: {sum(s.holds for s in T.steps)} of {len(T.steps)} proved"],
-              obligations=island_unsupported(True), ref="N7.1.1"),
+              ref="N7.1.1"),
         step_check("(a)", "N7.1.2"),
         step_check("(b)", "N7.1.3"),
         step_check("(c)", "N7.1.4"),
@@ -613,7 +612,7 @@ def island_quasi_periodic(island_theorem, suggests, tori, above):
         Check("at the rationals r = " + ", ".join(at) + " of Figure 6 the theorem is proved step by step, θ/2π "
               "irrational (e^{iθ} is no root of unity)", all(t.quasi_periodic for t, _, _ in at.values()),
               [f"r = {r}: c_max = {t.c_max}, ρ = {rho}, island share in [{lo}, {hi}]"
-               for r, (t, rho, (lo, hi)) in at.items()], obligations=island_unsupported(False), ref="N7.1.10"),
+               for r, (t, rho, (lo, hi)) in at.items()], ref="N7.1.10"),
     ]
     checks += window_resonance_explanation()
     note = ("The island exists on the whole of ]3−2√2, 1[, not only below r ≃ 0.19166 (l. 1226), where the paper "
@@ -656,19 +655,6 @@ def resonance_one_third() -> tuple[bool, list[str]]:
         and cube == sp.eye(2)
     return ok, [f"ρ = p/3 in ]3−2√2, 1[ at: {', '.join(f'{s.p}/{s.q} at r = {s.r}' for s in found)}; "
                 f"A(2−√3)³ = {cube.tolist()}"]
-
-
-def island_unsupported(symbolic: bool) -> list[str]:
-    """What the island theorem's verdict rests on that the obligation language lacks (the
-    steps are computed in certify.patterns.island_theorem, none of them recorded): named, for
-    the sub-claims of N7.1 that rest on it."""
-    signs = ("the signs of rational functions of r on ]3−2√2, 1[ (an interval with an algebraic end: `signed` and "
-             "`root_count` know ]0, 1[ and rational ends)" if symbolic else
-             "the content of the integer polynomial 2pq(ν² − tr A ν + det A) and its leading coefficient (step f)")
-    return unsupported_fact(
-        "the island theorem (certify.patterns.island_theorem): step (b), the branch region, is a Fourier–Motzkin "
-        f"elimination over the leaves of a sign branching of linear forms in (u, v), and the steps rest on {signs}; "
-        "neither is in the obligation language (the identities of steps a, c, d, e alone do not give the verdict)")
 
 
 def window_resonance_explanation() -> list:

@@ -18,9 +18,7 @@ import sympy as sp
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
-from certify.obligations import fact, silent
 
-from . import facts
 from .balls import GUARD, decide, precision
 from .poly import Q, parse, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_count
@@ -38,7 +36,6 @@ def _sign(a) -> int:
 class Algebraic:
     """A real algebraic number with its defining polynomial and isolating interval."""
 
-    @silent
     def __init__(self, p, lo, hi):
         self.p = squarefree_part(primitive(flint.fmpq_poly(p)))
         self.lo, self.hi = Q(lo), Q(hi)
@@ -56,7 +53,6 @@ class Algebraic:
         return cls(flint.fmpq_poly([-a, 1]), a, a)
 
     @classmethod
-    @silent
     def roots(cls, p, a=None, b=None) -> list[Algebraic]:
         """The distinct real roots of p in ]a, b[, increasing (Sturm isolation).  The
         isolating intervals are memoised per (p, a, b); each call returns new numbers
@@ -90,7 +86,6 @@ class Algebraic:
         roots = cls.roots(p)
         return roots[1] if b > 0 else roots[0]
 
-    @silent
     def minimal_polynomial(self) -> flint.fmpz_poly:
         """The irreducible factor of p vanishing at the number (p is replaced by it)."""
         if self.p.degree() > 1 and not getattr(self, "_minimal", False):
@@ -107,7 +102,6 @@ class Algebraic:
             self._minimal = True
         return self.p
 
-    @silent
     def key(self) -> tuple:
         """A hashable key of the number, cheap (unlike :meth:`describe`): its polynomial p
         and its index among the real roots of p, increasing.  Equal keys mean equal
@@ -149,7 +143,6 @@ class Algebraic:
     def is_rational(self) -> bool:
         return self.lo == self.hi
 
-    @silent
     def refine(self, width) -> Algebraic:
         """Shrink the isolating interval below ``width`` (in place) and return self."""
         if not self.is_rational:
@@ -178,12 +171,10 @@ class Algebraic:
             balls[prec] = flint.arb(mid, flint.arb(rad).upper())
         return balls[prec]
 
-    @silent
     def short(self, n: int = 8) -> str:
         """The number in a line of evidence: itself when rational, else ``≈`` and n digits."""
         return str(self.lo) if self.is_rational else "≈" + self.digits(n)
 
-    @silent
     def digits(self, n: int = 10) -> str:
         """The number rounded to n significant digits, from a certified enclosure:
         the interval is refined until both of its ends round alike."""
@@ -204,7 +195,6 @@ class Algebraic:
         # relative, not absolute, accuracy (a width of 2^-60 is useless near 0)
         return float(self.digits(20))
 
-    @fact(facts.compare)
     def compare_rational(self, q) -> int:
         """sign(self - q), exact."""
         q = Q(q)
@@ -222,7 +212,6 @@ class Algebraic:
                 return _sign(self.lo - q)
         return 1 if self.lo >= q else -1
 
-    @fact(facts.compare)
     def _cmp(self, other: Algebraic) -> int:
         if not isinstance(other, Algebraic):
             return self.compare_rational(other)
@@ -279,7 +268,6 @@ class Algebraic:
         # equal numbers may be given by different polynomials: hash the minimal one
         return hash((str(self.minimal_polynomial()),))
 
-    @fact(facts.digits)
     def in_rounding_interval(self, printed: str) -> bool:
         """Whether the number rounds to the printed decimal ``printed`` (e.g. "0.11384"):
         it lies in [d - h, d + h] with h half a unit of the last printed digit."""
@@ -290,7 +278,6 @@ class Algebraic:
         return self.compare_rational(Q(lo.numerator, lo.denominator)) >= 0 and \
             self.compare_rational(Q(hi.numerator, hi.denominator)) <= 0
 
-    @silent
     def describe(self) -> str:
         """'root of p in ]lo, hi[ ≈ digits' for the report (a function of the number
         alone, computed once)."""
@@ -316,7 +303,6 @@ class Algebraic:
             ends = f"{self.lo}, {self.hi}"
         return f"the root of {show(self.p)} in ]{ends}[ ≈ {self.digits(12)}"
 
-    @silent
     def floor_scaled(self, s: int) -> int:
         """⌊s·α⌋, exact: the isolating interval narrowed below 1/s, then one exact comparison.
         It depends on the number only, not on how far the interval was refined before."""
@@ -461,7 +447,6 @@ def _fmt(q: flint.fmpq, n: int) -> str:
     return str(sp.Float(sp.Rational(d) * sp.Rational(10) ** e, n))
 
 
-@fact(facts.sign_at)
 def sign_at(poly, alpha: Algebraic, prec: int = 64, maxprec: int = 4096) -> int:
     """The sign of a univariate rational polynomial at an algebraic number, exact:
     0 when the polynomial and the minimal factor share the root, otherwise decided
@@ -494,7 +479,6 @@ def sign_at(poly, alpha: Algebraic, prec: int = 64, maxprec: int = 4096) -> int:
     return sign
 
 
-@silent
 def sign_intervals(poly, lo, hi) -> list[tuple[object, object, int]]:
     """The sign of a univariate polynomial on each open interval between its
     consecutive real roots in ]lo, hi[: [(left end, right end, sign)], the ends

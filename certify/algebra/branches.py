@@ -31,9 +31,7 @@ from sympy.polys.rings import PolyElement
 
 from certify import caches
 from certify.errors import UNDECIDED, Undecided
-from certify.obligations import asserting, fact, recording_now, silent
 
-from . import facts
 from . import numberfield as nf
 from .algebraic import Algebraic, sign_at, to_fmpq
 from .balls import GUARD, decide, precision
@@ -492,15 +490,10 @@ class Cell:
         self.lo, self.hi, self.sample = lo, hi, sample
         self._branches_at, self._sign_of = branches_at, sign_of
         self._branches: list[Algebraic] | None = None
-        self.table: SignTable | None = None      # set by the table (for the kernel's record)
 
     @property
     def branches(self) -> list[Algebraic]:
         """The real eigenvalues at the sample, largest first: their number is that on the cell."""
-        return self._real_branches()
-
-    @fact(facts.cell_branches)
-    def _real_branches(self) -> list[Algebraic]:
         if self._branches is None:
             self._branches = self._branches_at(self.sample)
         return self._branches
@@ -511,11 +504,6 @@ class Cell:
         return Lazy(len(lams), lambda k: self._sign_of(self.sample, lams[k]))
 
 
-class Found(set):
-    """The signs a table gives on a branch over an interval: a set, carrying the facts it was
-    read from (certify.obligations.fact sets ``facts``)."""
-
-
 class SignTable:
     """The certified sign of a condition on each branch, cell by cell, and at each
     critical value (a list of signs, UNDECIDED where undecided; None where the branches
@@ -523,7 +511,7 @@ class SignTable:
 
     def __init__(self, condition: str, interval: tuple, critical: list, cells: list, point_at=None):
         self.condition, self.interval, self.critical, self.cells = condition, interval, critical, cells
-        self.source: tuple | None = None        # (spectrum, condition): what the kernel re-derives
+        self.source: tuple | None = None        # (spectrum, condition): what it was made from
         self._points = Lazy(len(critical), (lambda k: point_at(critical[k])) if point_at else (lambda k: None))
 
     def has_point(self, k: int) -> bool:
@@ -531,13 +519,10 @@ class SignTable:
         return k in self._points._done
 
     @property
-    @fact(facts.table_points)
     def points(self) -> Lazy:
-        """The signs at the critical values (read by a proof: the kernel re-derives each in
-        Q(r0)[λ], facts.branch_signs)."""
+        """The signs at the critical values, each computed when first read."""
         return self._points
 
-    @fact(facts.sign_query)
     def signs(self, branch: int, lo=None, hi=None, include_points=True) -> set:
         """Signs taken by g on branch ``branch`` (0 = largest real eigenvalue) over
         ]lo, hi[ (default: the whole interval), interior critical values included.
@@ -554,14 +539,12 @@ class SignTable:
                 if less(lo, rc) and less(rc, hi):
                     pt = self.points[k]
                     out.add(UNDECIDED if pt is None else pt[branch] if branch < len(pt) else NO_BRANCH)
-        return Found(out)
+        return out
 
-    @asserting(facts.holds_piece)
     def holds(self, branch: int, sign: int, lo=None, hi=None) -> bool:
         """g has the sign ``sign`` at every point of branch ``branch`` over ]lo, hi[."""
         return self.signs(branch, lo, hi) == {sign}
 
-    @asserting(facts.within_piece)
     def within(self, branch: int, allowed, lo=None, hi=None) -> bool:
         """g takes only signs in ``allowed`` (1, -1, 0, None: not real, NO_BRANCH) at the points
         of branch ``branch`` over ]lo, hi[, interior critical values included."""
@@ -573,7 +556,6 @@ class SignTable:
         right = [c for c in self.cells if same(c.lo, point)]
         return (left[0], right[0]) if left and right else None
 
-    @fact(facts.sign_around, facts.changes_piece)
     def changes_at(self, branch: int, point) -> bool:
         """The sign on ``branch`` differs on the two cells adjacent to ``point``."""
         cells = self._around(point)
@@ -581,7 +563,6 @@ class SignTable:
             return False
         return cells[0].signs[branch] * cells[1].signs[branch] < 0
 
-    @fact(facts.sign_around, facts.keeps_piece)
     def keeps_sign_at(self, branch: int, point) -> bool:
         """No sign change on ``branch`` across ``point`` (true where the branch ends there)."""
         cells = self._around(point)
@@ -589,7 +570,6 @@ class SignTable:
             return True
         return cells[0].signs[branch] == cells[1].signs[branch]
 
-    @silent
     def markdown(self, names=BRANCH_NAMES) -> str:
         """The sign table: one row per cell and per critical value."""
         width = max([len(c.signs) for c in self.cells] + [1])
@@ -622,7 +602,6 @@ def sign_word(signs) -> str:
 class Spectrum:
     """The real eigenvalue branches of cp(λ; r), cp ∈ Q[r][λ]."""
 
-    @silent
     def __init__(self, cp, ring_cp=None):
         """``cp`` an expression (or text) in r, λ; ``ring_cp`` the same polynomial as an
         element of the engine's ring, when the caller has it (no conversion then)."""
@@ -682,7 +661,6 @@ class Spectrum:
         t = to_fmpq(r0)
         return flint.fmpq_poly([c(t) for c in self._coefficients])
 
-    @silent
     def real_eigenvalues(self, r0) -> list[Algebraic]:
         """The real roots λ of cp(λ; r0), largest first, as algebraic numbers (Sturm);
         memoised, as the same samples recur across tables."""
@@ -734,7 +712,6 @@ class Spectrum:
         cond.degenerate = [d for d in cond.degenerate if d[0] != label] + [(label, e)]
         return R
 
-    @silent
     def critical_values(self, cond: Condition | None, lo, hi) -> list[Algebraic]:
         """The critical values in ]lo, hi[, increasing: the polynomials are factored
         over Q (python-flint) and each irreducible factor's real roots isolated by
@@ -784,7 +761,6 @@ class Spectrum:
         ``fixed_point`` of f when given), the one way a proof asks for a sign table."""
         return self.sign_table(Condition.of(name, g, fixed_point), lo, hi)
 
-    @silent
     def sign_table(self, cond: Condition, lo, hi) -> SignTable:
         """Certified signs of ``cond`` on every branch over ]lo, hi[ (memoised per
         condition and interval, so certificates sharing a condition share the work)."""
@@ -799,9 +775,7 @@ class Spectrum:
         cells = [Cell(a, b, simple_rational_between(a, b), self.real_eigenvalues,
                       lambda t, L: self._cell_sign(cond, t, L)) for a, b in zip(ends, ends[1:])]
         table = SignTable(cond.name, (_alg(lo), _alg(hi)), crit, cells, lambda rc: self.sign_at_point(cond, rc))
-        table.source = (self, cond)      # what the independent kernel re-derives (facts.sign_query)
-        for cell in cells:
-            cell.table = table
+        table.source = (self, cond)      # what it was made from (read by certify.patterns.feasibility)
         return table
 
     def _cell_sign(self, cond: Condition, t, L: Algebraic):
@@ -844,7 +818,6 @@ class Spectrum:
         out = decide(attempt, 128, 1024, undecided=lambda v: v == _MORE_PRECISION)
         return UNDECIDED if out == _MORE_PRECISION else out
 
-    @silent
     def branches_at(self, rc: Algebraic, maxprec: int = 1024):
         """The real eigenvalues at the algebraic r = rc, largest first, each repeated
         by its multiplicity (1, or 2 for the root of a linear gcd(cp, cp')), as
@@ -879,7 +852,6 @@ class Spectrum:
             prec *= 2
         return None
 
-    @fact(facts.point_signs)
     def sign_at_point(self, cond: Condition, rc: Algebraic, maxprec: int = 1024):
         """Signs of g on the branches at an algebraic r (UNDECIDED where undecided: g
         vanishing or a pole there), or None when the branches cannot be isolated."""
@@ -894,7 +866,6 @@ class Spectrum:
         return [self._undecided_sign(cond, rc, k, roots[k], 2 * quick, maxprec) if sg == UNDECIDED else sg
                 for k, sg in enumerate(out)]
 
-    @silent
     def sign_on_branch_at(self, cond: Condition, rc: Algebraic, k: int, maxprec: int = 1024):
         """``sign_at_point(cond, rc)[k]`` computed for the branch k alone (the same sign: balls
         decide a sign only where it is proven, and the exact tests are those of branch k);
@@ -946,7 +917,7 @@ class Spectrum:
         if not self.vanishes_at(cond.delta, rc, k):
             if self._root_with_sqrt(cond.N, cond.delta, rc, k, ball,
                                     lambda: (cond.numerator_norm(), self._split_norm_resultant(cond)),
-                                    None if recording_now() else self._split_ring_parts(cond)) and \
+                                    self._split_ring_parts(cond)) and \
                     self._root_with_sqrt(cond.D, cond.delta, rc, k, ball) is False:
                 return 0
             return UNDECIDED
@@ -1137,7 +1108,6 @@ class Spectrum:
             prec *= 2
         return None
 
-    @fact(facts.vanishing)
     def vanishes_at(self, h, rc: Algebraic, branch: int, maxprec: int = 1024) -> bool:
         """Exact test that the polynomial h(r, λ) (an expression or an element of
         ``poly.RING``) vanishes on branch ``branch`` at r = rc:
@@ -1326,7 +1296,7 @@ def _apart(a: Algebraic, b: Algebraic) -> bool:
 def less(a, b) -> bool:
     """a < b, exact: from the isolating intervals where they are apart (an exact comparison
     would then refine nothing either), else by the exact comparison."""
-    if _itself(a, b):
+    if a is b:                  # one object: a = a, without a comparison
         return False
     if isinstance(a, Algebraic) and isinstance(b, Algebraic):
         if _apart(a, b):
@@ -1336,15 +1306,9 @@ def less(a, b) -> bool:
     return a < b
 
 
-def _itself(a, b) -> bool:
-    """a and b are one object, where no comparison would be recorded (the answer is then
-    read off without one: a = a)."""
-    return a is b and not recording_now()
-
-
 def at_most(a, b) -> bool:
     """a ≤ b, exact (as :func:`less`)."""
-    if _itself(a, b):
+    if a is b:                  # one object: a = a, without a comparison
         return True
     if isinstance(a, Algebraic) and isinstance(b, Algebraic):
         if _apart(a, b):
@@ -1356,7 +1320,7 @@ def at_most(a, b) -> bool:
 
 def same(a, b) -> bool:
     """a = b, exact (as :func:`less`)."""
-    if _itself(a, b):
+    if a is b:                  # one object: a = a, without a comparison
         return True
     if isinstance(a, Algebraic) and isinstance(b, Algebraic) and (_apart(a, b) or _apart(b, a)):
         return False

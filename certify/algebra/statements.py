@@ -43,7 +43,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from certify import caches, obligations
+from certify import caches
 from certify.errors import StatementError  # raised here, caught by the runner: the ground floor's
 
 from .algebraic import Algebraic
@@ -198,11 +198,6 @@ class Relation:
     def holds_on(self, quantity: sp.Expr, signs) -> bool:
         """Whether it holds at every sign in ``signs`` (a set from a sign table: a
         non-sign entry such as NO_BRANCH, UNDECIDED or None makes it fail); False on an empty set."""
-        if getattr(signs, "facts", None):     # read off a sign table: the cover it asserts, for the kernel
-            try:
-                obligations.signs_within(signs, [s for s in (-1, 0, 1) if self.holds({quantity: s})])
-            except StatementError:
-                pass
         signs = set(signs)
         return bool(signs) and signs <= {-1, 0, 1} and all(self.holds({quantity: s}) for s in signs)
 

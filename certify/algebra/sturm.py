@@ -25,9 +25,7 @@ from __future__ import annotations
 import flint
 
 from certify import caches
-from certify.obligations import fact, silent
 
-from . import facts
 from .balls import ordered, precision
 from .poly import Q, poly_key, to_fmpq
 
@@ -227,7 +225,6 @@ def count_roots(p, a=None, b=None, seq=None) -> int:
     return va - vb
 
 
-@fact(facts.root_count)
 def sturm_count(p, a=None, b=None) -> int:
     """The number of distinct real roots of p in ]a, b] (a = -∞, b = +∞ when None) by
     Sturm's theorem alone: V(a) - V(b), the sign changes of the Sturm sequence, each
@@ -259,7 +256,6 @@ _CHECKED: dict = {}              # coefficients of p -> its number of distinct r
 caches.register(_CHECKED.clear)
 
 
-@silent
 def checked_real_root_count(p) -> int:
     """The number of distinct real roots of p, counted by both routes: the Sturm count
     over the line (:func:`sturm_count`) and python-flint's isolation
@@ -292,7 +288,6 @@ def cauchy_bound(p) -> flint.fmpq:
     return 1 + max((abs(a) / lead for a in c[:-1]), default=Q(0))
 
 
-@silent
 def isolate(p, a=None, b=None, width=None) -> list[tuple[flint.fmpq, flint.fmpq]]:
     """Isolating intervals (lo, hi) of the distinct real roots of p in the open
     interval ]a, b[, increasing.  Each interval holds exactly one root; lo == hi
@@ -334,7 +329,6 @@ def isolate(p, a=None, b=None, width=None) -> list[tuple[flint.fmpq, flint.fmpq]
     return out
 
 
-@silent
 def refine(p, lo, hi, width) -> tuple[flint.fmpq, flint.fmpq]:
     """Bisect an isolating interval of a simple root of p until hi - lo <= width."""
     p = flint.fmpq_poly(p)

@@ -37,7 +37,7 @@ from sympy.core.mul import _keep_coeff
 from sympy.polys.polyutils import _sort_gens
 
 from certify import caches
-from certify.obligations import fact
+from certify.witnesses import witnessing
 
 from . import facts
 from .poly import fraction_tree, lam, r
@@ -337,13 +337,12 @@ class Result:
     holds: bool
     evidence: list[str] = field(default_factory=list)
     routes: tuple = ()          # (numerator, normal form, Weierstrass) of an identity
-    facts: list | None = field(default=None, compare=False, repr=False)   # the obligations it was decided by
+    witnesses: list | None = field(default=None, compare=False, repr=False)   # the ids of its witnesses (a sign)
 
     def __bool__(self):
         return self.holds
 
 
-@fact(lambda res, E: facts.identity(res.holds, E, 0))
 def is_zero(E) -> Result:
     """E ≡ 0 on the circles, by both routes; RoutesDisagree if they differ."""
     za, ea = groebner_is_zero(E)
@@ -355,7 +354,6 @@ def is_zero(E) -> Result:
                        f"Weierstrass substitution: {eb[0]}"], (ea[0], ea[1], eb[0]))
 
 
-@fact(lambda res, lhs, rhs: facts.identity(res.holds, lhs, rhs))
 def equal(lhs, rhs) -> Result:
     """lhs ≡ rhs (scalars, or vectors component by component)."""
     if isinstance(lhs, sp.MatrixBase) or isinstance(rhs, sp.MatrixBase):
@@ -376,9 +374,7 @@ def parallel(v, w) -> Result:
     """v ∧ w ≡ 0 (v, w colinear wherever both are non-zero)."""
     c = v.cross(w)
     res = equal(c, sp.zeros(3, 1))
-    out = Result(res.holds, [f"v ∧ w = {short(c.applyfunc(sp.cancel))}"] + res.evidence)
-    out.facts = getattr(res, "facts", None)      # the identity v ∧ w ≡ 0 it was decided by
-    return out
+    return Result(res.holds, [f"v ∧ w = {short(c.applyfunc(sp.cancel))}"] + res.evidence)
 
 
 # ---------------------------------------------------------------- signs by inspection
@@ -448,7 +444,7 @@ def _rewrites(f):
 @caches.for_a_run
 def _rewrite(f, k: int):
     """The k-th form of :func:`_rewrites` (0: f expanded).  Memoised for a run: a sign and
-    the obligation that records it (:func:`signed_fact`) read the same forms, and the step
+    the witness that records it (:func:`signed_witness`) read the same forms, and the step
     lemmas ask the same signs again (pure SymPy; nothing here records)."""
     f = sp.expand(f)
     if k == 0:
@@ -597,13 +593,11 @@ def _poly_sign_of(p, H: Signs) -> tuple[int | None, list[str]]:
     return None, [f"`{show(_factored(_rewrite(p, 0)))}`: " + undecided[0]]     # p expanded, factored above
 
 
-def _sign_facts(answer, E, H: Signs):
-    if answer[0] is None:
-        raise ValueError("sign undecided by inspection")
-    return signed_fact(E, H)
+def _sign_witness(answer, E, H: Signs) -> dict | None:
+    return None if answer[0] is None else signed_witness(E, H)
 
 
-@fact(_sign_facts)
+@witnessing(_sign_witness)
 def sign(E, H: Signs) -> tuple[int | None, list[str]]:
     """The strict sign of E under the hypotheses H, by inspection of its factors."""
     n, d = fraction(E)
@@ -634,7 +628,7 @@ def _factor_data(f, H: Signs) -> dict | None:
 @caches.for_a_run
 def _poly_data(p, H: Signs) -> dict | None:
     """:func:`_poly_sign` as data: the rewritten form, its constant and factors with their proofs
-    (memoised for a run: a sign's obligation is built again for each check that reads it;
+    (memoised for a run: a sign's witness is built again for each check that reads it;
     :func:`certify.algebra.facts.signed` reads it without changing it)."""
     if p == 0:
         return None
@@ -651,8 +645,9 @@ def _poly_data(p, H: Signs) -> dict | None:
     return None
 
 
-def signed_fact(E, H: Signs) -> dict:
-    """The strict sign of E under H by inspection, as an obligation (ValueError if undecided)."""
+def signed_witness(E, H: Signs) -> dict:
+    """The strict sign of E under H by inspection, as a witness for the kernel (``signed``;
+    ValueError if undecided)."""
     n, d = fraction(E)
     found = [_poly_data(n, H), _poly_data(d, H)]
     parts = [x for x in found if x is not None]
@@ -667,12 +662,8 @@ def signed_fact(E, H: Signs) -> dict:
     return facts.signed(E, n, d, parts, {str(a): int(sg) for a, sg in H.atoms}, total)
 
 
-def _has_sign_facts(res, target, expected, H, witness=None) -> list:
-    W = target if witness is None else witness
-    out = []
-    if witness is not None:
-        out.append(facts.identity(bool(equal(target, H.unfold(W))), target, H.unfold(W)))
-    return out + [signed_fact(W, H)]
+def _has_sign_witness(res, target, expected, H, witness=None) -> dict:
+    return signed_witness(target if witness is None else witness, H)
 
 
 def cancel(E) -> sp.Expr:
@@ -683,7 +674,7 @@ def cancel(E) -> sp.Expr:
 
 @caches.for_a_run
 def _ratio(x, y) -> sp.Expr:
-    """x / y in lowest terms (memoised for a run: a proportionality and its fact read the same ratios):
+    """x / y in lowest terms (memoised for a run: a proportionality and its witness read the same ratios):
     sp.cancel's expression, by :func:`_flint_cancel` for a rational function of its symbols."""
     return cancel(x / y)
 
@@ -710,15 +701,12 @@ def _ratios(v, w):
             yield _ratio(x, y)
 
 
-def _proportional_facts(res, v, w, H, ratio=None) -> list:
+def _proportional_witness(res, v, w, H, ratio=None) -> dict | None:
     candidates = [ratio] if ratio is not None else _ratios(v, w)
-    for k in candidates:
-        if sign(k, H)[0] == 1:
-            return [signed_fact(k, H), facts.identity(bool(equal(v, k * w)), v, k * w)]
-    raise ValueError("no ratio with a proved sign")
+    return next((signed_witness(k, H) for k in candidates if sign(k, H)[0] == 1), None)
 
 
-@fact(_has_sign_facts, facts.sign_piece)
+@witnessing(_has_sign_witness)
 def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     """target has the strict sign ``expected`` under H.  With a ``witness`` W (written in
     the named quantities of H): target ≡ W after unfolding their definitions, and W has
@@ -735,7 +723,7 @@ def has_sign(target, expected: int, H: Signs, witness=None) -> Result:
     return Result(s == expected, ev + [f"under {H.describe()}: {word}"] + why)
 
 
-@fact(_proportional_facts, facts.proportional_piece)
+@witnessing(_proportional_witness)
 def positively_proportional(v, w, H: Signs, ratio=None) -> Result:
     """v = k w with k > 0 under H: k is ``ratio`` if given, else v_i / w_i for the first
     component i where that quotient has a sign by inspection; then v − k w ≡ 0."""

@@ -29,9 +29,9 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from certify import obligations
 from certify.algebra import trig as T
 from certify.algebra.poly import r
+from certify.witnesses import captured, recording
 
 from . import reduction as R
 from .model import INDEX, LETTERS
@@ -50,7 +50,7 @@ class Lemma:
     statement: str
     holds: bool
     evidence: list[str] = field(default_factory=list)
-    facts: list[dict] = field(default_factory=list)    # the obligations its verdict was computed from, as data
+    witnesses: list[dict] = field(default_factory=list)    # the witnesses its verdict rests on (signs), as data
 
 
 def name(k: int) -> str:
@@ -59,16 +59,16 @@ def name(k: int) -> str:
 
 def combined(statement: str, build: Callable[[], list[T.Result]]) -> Lemma:
     """A lemma that holds when every part holds; the parts are computed by ``build``, and the
-    facts they record are kept with the lemma (:func:`certify.obligations.captured`)."""
-    with obligations.captured() as got:
+    witnesses they record are kept with the lemma (:func:`certify.witnesses.captured`)."""
+    with captured() as got:
         parts = build()
     return Lemma(statement, all(parts), [e for p in parts for e in p.evidence], list(got))
 
 
 def labelled(statement: str, build: Callable[[], list[tuple[str, T.Result]]]) -> Lemma:
-    """A check made of named parts (computed by ``build``, their facts kept); each part's
+    """A check made of named parts (computed by ``build``, their witnesses kept); each part's
     evidence under its name."""
-    with obligations.captured() as got:
+    with captured() as got:
         parts = build()
     ev = []
     for what, res in parts:
@@ -104,10 +104,10 @@ class Cone:
 def cone(contact: str) -> Cone:
     """With n_t > 0, the sign of n_m for which p = ±(n ∧ e_i) has both free components of
     one strict sign (the plane meets the open face), proven for one sign and refuted for
-    the other; with the facts the lemma was computed from."""
-    with obligations.captured() as got:
+    the other; with the witnesses of the lemma."""
+    with captured() as got:
         C = _cone(contact)
-    C.check.facts = list(got)
+    C.check.witnesses = list(got)
     return C
 
 
@@ -191,7 +191,7 @@ def step(contact: str, sign: int, K: dict) -> Step:
         combined(f"{lab}: the tangent w = |n|² e_{i + 1} − n_{i + 1} n is ⊥ n and ⊥ p, and w_{i + 1} > 0 "
                  "(the pair in contact separates)",
                  lambda: [T.is_zero(w.dot(N)), T.is_zero(w.dot(p)), T.has_sign(w[i], 1, H)])]
-    with obligations.captured() as got:
+    with captured() as got:
         signs = {k: T.sign(w[k], H) for k in others}
     closing = [k for k in others if signs[k][0] == -1]
     opening = [k for k in others if signs[k][0] == 1]
@@ -227,7 +227,7 @@ def step(contact: str, sign: int, K: dict) -> Step:
                  f"has n'_{tj + 1} n'_{mj + 1} {SIGN[Cj.sigma]}",
                  lambda: [T.has_sign(u[tj] * u[mj], Cj.sigma, H)] if Cj.sigma is not None else [T.Result(False)])]
     out.following, out.p, out.w, out.t, out.p1, out.normal = LETTERS[j], p, w, t, p1, u
-    with obligations.captured() as got:
+    with captured() as got:
         out.cos_next, why = T.sign(u[j], H)
     if out.cos_next is not None:      # a sign the step lemma states (cos φ' = n'_j/|n'|)
         out.checks.append(Lemma(f"{lab}: cos φ' = n'_{j + 1}/|n'| {SIGN[out.cos_next]}", True, why, list(got)))
@@ -273,19 +273,19 @@ def physical(s: Step, K: dict) -> Lemma:
 
 def steps(K: dict) -> dict[tuple[str, int], Step]:
     """The step lemma on the six cones, each with the particles' motion (:func:`physical`);
-    each lemma keeps the facts it was computed from (recorded here apart from any
-    certificate's: a certificate that reads a lemma records them, :func:`facts`)."""
-    with obligations.recording("cones"):
+    each lemma keeps the witnesses of its signs (recorded here apart from any certificate's:
+    a certificate that reads a lemma records them again, :func:`witnesses`)."""
+    with recording("cones"):
         out = {(c, s): step(c, s, K) for c in LETTERS for s in (1, -1)}
         for st in out.values():
             st.motion = physical(st, K) if st.holds else Lemma(f"{st.label}: the step lemma fails", False)
     return out
 
 
-def facts(cones, motion: bool = False) -> list[dict]:
-    """The facts of the step lemmas on ``cones`` (Steps), and of the particle lemmas with ``motion``."""
-    out = [ob for st in cones for c in st.checks for ob in c.facts]
-    return out + ([ob for st in cones if st.motion for ob in st.motion.facts] if motion else [])
+def witnesses(cones, motion: bool = False) -> list[dict]:
+    """The witnesses of the step lemmas on ``cones`` (Steps), and of the particle lemmas with ``motion``."""
+    out = [ob for st in cones for c in st.checks for ob in c.witnesses]
+    return out + ([ob for st in cones if st.motion for ob in st.motion.witnesses] if motion else [])
 
 
 def map_is_proven(cones: dict) -> bool:

@@ -19,7 +19,6 @@ import flint
 import sympy as sp
 
 from certify import caches
-from certify.algebra import facts
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.branches import (
     NO_BRANCH,
@@ -45,7 +44,6 @@ from certify.algebra.poly import (
 from certify.dynamics.systems import FOUR, System, run_in
 from certify.dynamics.words import Candidate
 from certify.errors import UNDECIDED
-from certify.obligations import fact, recording_now
 
 NO_X = "—"                   # the label of the only "fixed point" of a two-gap system (no x)
 
@@ -232,24 +230,6 @@ def sign_in_cell(T, branch: int, lo, hi):
     return next(iter(signs))
 
 
-def _sign_at_facts(answer, T, rc, branch):
-    """For the kernel: a point of a cell has the cell's sign (the cell's signs query and rc
-    inside it); at a critical value, the table's sign there on ``branch`` (re-derived in
-    Q(rc)[λ]; the others are not claimed, so not computed unless the table holds them)."""
-    k = next((i for i, c in enumerate(T.critical) if same(c, rc)), None)
-    if k is not None:
-        if T.has_point(k) or T.source is None:
-            return facts.table_point(answer, T, rc, branch)
-        spec, cond = T.source
-        roots = spec.branches_at(rc)
-        signs = None if roots is None else [answer if i == branch else UNDECIDED for i in range(len(roots))]
-        return facts.branch_signs(signs, spec, cond, rc, only=branch)
-    cell = next(c for c in T.cells if c.lo < rc < c.hi)
-    return [facts.sign_query([answer], T, branch, cell.lo, cell.hi, include_points=False),
-            facts.compare(1, rc, cell.lo), facts.compare(-1, rc, cell.hi)]
-
-
-@fact(_sign_at_facts)
 def table_sign_at(T, rc: Algebraic, branch: int):
     """The sign of table T at rc on ``branch``: its point value when rc is one of
     T's critical values, else the sign of the cell holding rc."""
@@ -377,15 +357,12 @@ class Analysis:
     def _split(self, R: Region, p_list, req: Requirement, T):
         """Each piece cut at the critical values of T, with the status of req on each
         part: "holds", "fails" or "undecided" (and a reason at points)."""
-        exact = recording_now()
         for p in p_list:
             if p.is_point:
                 yield self._point(R, p, req, T)
                 continue
-            # exact comparisons (not read off the intervals): outside a deciding function each
-            # one is an obligation of the certificate being made (Algebraic._cmp records it);
-            # where none is made, the same answers read off the intervals first (branches.less)
-            cuts = [c for c in T.critical if (p.lo < c < p.hi if exact else less(p.lo, c) and less(c, p.hi))]
+            # exact comparisons, read off the isolating intervals first (branches.less)
+            cuts = [c for c in T.critical if less(p.lo, c) and less(c, p.hi)]
             ends = [p.lo] + cuts + [p.hi]
             for a, b in zip(ends, ends[1:]):
                 ok = _meets(sign_in_cell(T, R.branch, a, b), req.sign)
@@ -446,11 +423,7 @@ class Analysis:
         return self._sign_on(condition(req, self.spec.lrq_cp, x_value=xv), rc, k)
 
     def _sign_on(self, cond, rc, k):
-        """The sign of cond on branch k at rc (UNDECIDED where the branches are not isolated):
-        from every branch's signs where a certificate records them, else from branch k's."""
-        if recording_now():
-            sg = self.spec.sign_at_point(cond, rc)
-            return UNDECIDED if sg is None else (sg[k] if k < len(sg) else NO_BRANCH)
+        """The sign of cond on branch k at rc (UNDECIDED where the branches are not isolated)."""
         return self.spec.sign_on_branch_at(cond, rc, k)
 def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: System = FOUR,
                         previous: str | None = None) -> tuple[list[Requirement], list]:

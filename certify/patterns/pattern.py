@@ -60,7 +60,6 @@ from certify.algebra.poly import (
 from certify.dynamics.model import factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
-from certify.obligations import quiet
 
 from .feasibility import NO_X, Analysis, Region, Requirement, prefix_requirements
 from .periodic import compact, read
@@ -334,9 +333,8 @@ def known_factors(*words: str) -> list[list[int]]:
     for word in words:
         normal, system, _ = read(word)
         spec = candidate_in(system, normal).spectrum
-        if not spec.known_factors():        # the word caches were reset (a census): find them again, unrecorded
-            with quiet():
-                analyse(word)
+        if not spec.known_factors():        # the word caches were reset (a census): find them again
+            analyse(word)
             spec = candidate_in(system, normal).spectrum
         found |= {tuple(int(c) for c in f.coeffs()) for f in spec.known_factors()}
     return [list(f) for f in sorted(found)]

@@ -6,7 +6,7 @@ and progress on a terminal.  It imports every layer below it.
   every core).
 - :mod:`.report`: outcomes in, Markdown and JSON out, and the staleness check.
 - :mod:`.checks`: checks several proofs make alike (printed digits, root counts, eliminants,
-  identities, corrections one for one).
+  identities, corrections one for one), and the witnesses they give the kernel.
 - :mod:`.saving`, :mod:`.plots`: saving figures reproducibly; the certified charts.
 - :mod:`.files`, :mod:`.progress`: atomic writes, the committed findings; progress bars on a
   terminal only.
@@ -14,7 +14,7 @@ and progress on a terminal.  It imports every layer below it.
   the committed findings of Section 5 (reports/section5-orbits.json) and their explanations.
 """
 from certify.caches import for_a_run  # the memo of a run, for the proofs' shared steps
-from certify.obligations import captured, facts_of, gathered, replaying, take
+from certify.witnesses import captured, witnesses_of
 
 from . import checks, files, plots, progress, report, runner, saving
 from .census_report import committed_windows
@@ -23,19 +23,11 @@ from .checks import (
                      combined,
                      concluded,
                      count_check,
-                     determinant_fact,
                      digits_check,
                      eliminant_check,
-                     fact_ids,
                      identity,
-                     identity_facts,
-                     identity_modulo_facts,
-                     kept_facts,
-                     product_fact,
+                     kept_witnesses,
                      result_check,
-                     resultant_fact,
-                     sign_intervals_facts,
-                     unsupported_fact,
                      witness,
 )
 from .files import first_member, load_findings, read_first_member
@@ -80,11 +72,8 @@ from .section5_orbits import explanations
 
 __all__ = [
     "checks", "files", "plots", "progress", "report", "runner", "saving",
-    "product_fact", "identity_facts", "fact_ids", "resultant_fact", "identity_modulo_facts",
-    "determinant_fact", "kept_facts", "sign_intervals_facts", "unsupported_fact",
     "check_of", "combined", "concluded", "count_check", "witness", "digits_check", "eliminant_check", "identity",
-    "result_check",
-    "replaying", "gathered", "take", "captured", "facts_of",
+    "result_check", "kept_witnesses", "captured", "witnesses_of",
     "first_member", "read_first_member", "load_findings",
     "committed_windows", "island_figure", "explanations", "save_figure",
     "omega_figure", "section5_figure", "section5_name", "sign_chart",

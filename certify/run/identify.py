@@ -41,7 +41,7 @@ from functools import cache
 
 import flint
 
-from certify import caches, obligations
+from certify import caches
 from certify.algebra.algebraic import Algebraic
 from certify.algebra.balls import precision
 from certify.algebra.branches import BRANCH_NAMES
@@ -116,9 +116,9 @@ def orbit_analysis(normal: str) -> OrbitResult:
     return analyse(normal)
 
 
-orbits_at = obligations.replaying(orbit_at)
-"""``orbit_at`` once per (normal form, r) in a recording, its facts recorded again at every call
-(Section 5's explanations decide a committed word, then verify re-decides it: one computation)."""
+orbits_at = caches.for_a_run(orbit_at)
+"""``orbit_at`` once per (normal form, r) in a run (Section 5's explanations decide a committed
+word, then verify re-decides it: one computation)."""
 
 
 @cache

@@ -574,8 +574,8 @@ def text_of(check) -> str:
 
 def _statements_of(outcome) -> dict:
     """ref -> {"verdict", "witness"}: the run's verdict on each formal statement its checks decide
-    (holds when every check naming it holds), with the witnesses among their facts."""
-    facts = {ob["id"]: ob for ob in getattr(outcome, "obligations", [])}
+    (holds when every check naming it holds), with their witnesses of the kinds the kernel reads."""
+    facts = {ob["id"]: ob for ob in getattr(outcome, "witnesses", [])}
     out: dict = {}
     for check in list(outcome.printed) + list(outcome.corrected):
         if not getattr(check, "ref", ""):
@@ -583,10 +583,11 @@ def _statements_of(outcome) -> dict:
         entry = out.setdefault(check.ref, {"verdict": "holds", "witness": []})
         if not holds(check):
             entry["verdict"] = "refuted"
-        for i in check.obligations or []:
+        for i in check.witnesses or []:
             ob = facts.get(i)
-            if ob is not None and ob.get("kind") in WITNESS_KINDS and ob not in entry["witness"]:
-                entry["witness"].append({k: v for k, v in ob.items() if k != "id"})
+            data = {k: v for k, v in ob.items() if k != "id"} if ob is not None else None
+            if data is not None and ob.get("kind") in WITNESS_KINDS and data not in entry["witness"]:
+                entry["witness"].append(data)
     if outcome.status == OBSERVED:
         for entry in out.values():
             entry["verdict"] = "observed"

@@ -23,8 +23,9 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 
-from certify import caches, obligations
+from certify import caches
 from certify.errors import StatementError, UsageError
+from certify.witnesses import in_order, quiet, recording, witnesses_of
 
 from .executors import default_jobs  # noqa: F401  (runner.default_jobs, used by the CLI and benchmarks)
 
@@ -43,27 +44,21 @@ class Check:
     or the certificate FAILs, but it is not evidence for the printed claim.
     ``ref``: the id of the formal statement (statements/*.txt, docs/statements.md) this check
     decides: the report prints that statement's text, and certificates.json gives the kernel the
-    check's verdict on it with its witnesses.  ``obligations``: the ids of the facts its verdict
-    was computed from (the witnesses among them go to certificates.json); ``derivation``: how
-    they give it (:func:`certify.obligations.derivation`)."""
+    check's verdict on it with its witnesses.  ``witnesses``: the ids of the witnesses its verdict
+    rests on (:mod:`certify.witnesses`), those its deciding result carries unless given."""
 
     statement: str
     holds: bool
     evidence: list[str] = field(default_factory=list)
     corrects: Check | str | None = None
     counts: bool = True
-    obligations: list[str] | None = None
-    derivation: dict | None = None
+    witnesses: list[str] | None = None
     ref: str = ""
 
     def __post_init__(self):
-        free = self.obligations is None
-        if free:                         # the facts its verdict was computed from (obligations.take)
-            own = obligations.facts_of(self.holds)
-            free = not own
-            self.obligations = obligations.take(own)
-        if self.derivation is None:
-            self.obligations, self.derivation = obligations.derivation(self.obligations, holds(self), free)
+        if self.witnesses is None:       # those its deciding result carries (a trig Result)
+            self.witnesses = witnesses_of(self.holds)
+        self.witnesses = in_order(self.witnesses)
 
 
 def named(ref: str, check: Check) -> Check:
@@ -100,7 +95,7 @@ class Outcome:
     misprint: str | tuple = ""         # one slip, or a tuple of them (one certificate, several slips)
     agrees: bool | None = None
     reason: str = ""
-    obligations: list[dict] = field(default_factory=list)   # the certificate's facts (certify.obligations)
+    witnesses: list[dict] = field(default_factory=list)   # the certificate's witnesses (certify.witnesses)
 
 
 def holds(check: Check) -> bool:
@@ -347,7 +342,7 @@ class Context:
             q = QUANTITIES[name]
             args = {n: self.get(n) for n in q.needs}
             t = time.perf_counter()
-            with obligations.quiet():
+            with quiet():
                 self.values[name] = q.func(**args)
             self.seconds[name] = time.perf_counter() - t
         return self.values[name]
@@ -377,9 +372,9 @@ def run_certificate(cert: Certificate, ctx: Context | None = None,
         printed.update(overrides)
     try:
         args = {n: ctx.get(n) for n in cert.needs}
-        with obligations.recording(cert.id) as rec:
+        with recording(cert.id) as rec:
             outcome = cert.func(**args, **printed)
-        outcome.obligations = rec.items
+        outcome.witnesses = rec.items
     except StatementError as exc:  # a printed text the grammar does not read: never a guess
         outcome = Outcome(FAIL, [Check("the printed text was read", False, [f"`{exc}`"])])
     except Exception as exc:  # a check that could not be completed is a FAIL
@@ -392,7 +387,6 @@ def reset_caches() -> None:
     """Forget what the engine memoises across runs (every cache registered with
     :func:`certify.caches.register`): the next run is cold."""
     caches.reset()
-    obligations.forget()
 
 
 def plain(outcome: Outcome) -> Outcome:
@@ -400,12 +394,12 @@ def plain(outcome: Outcome) -> Outcome:
     bools.  That is all a report needs, and it crosses process boundaries (pickle)."""
     def check(c: Check) -> Check:
         return Check(str(c.statement), holds(c), [str(e) for e in c.evidence],
-                     corrected_statement(c) or None, c.counts, list(c.obligations or []), c.derivation, c.ref)
+                     corrected_statement(c) or None, c.counts, list(c.witnesses or []), c.ref)
     return Outcome(outcome.status, [check(c) for c in outcome.printed],
                    [check(c) for c in outcome.corrected], [str(e) for e in outcome.evidence],
                    [str(f) for f in outcome.figures], str(outcome.note), str(outcome.kind),
                    tuple(outcome.misprint) if isinstance(outcome.misprint, (list, tuple)) else str(outcome.misprint),
-                   outcome.agrees, str(outcome.reason), list(outcome.obligations))
+                   outcome.agrees, str(outcome.reason), list(outcome.witnesses))
 
 
 def units(certs: list[Certificate]) -> list[list[Certificate]]:

@@ -46,7 +46,7 @@ from fractions import Fraction
 
 import flint
 
-from certify import obligations
+from certify import caches
 from certify.algebra.algebraic import Algebraic
 from certify.errors import UsageError
 from certify.numerics import grid
@@ -246,7 +246,7 @@ def _island_note(entry: dict, w: str) -> str:
             "the word codes the island's rotation for a while")
 
 
-verify = obligations.replaying(ident.verify)    # once per run of the caches; its facts recorded at every call
+verify = caches.for_a_run(ident.verify)    # once per run of the caches
 
 
 def classes_check(entry: dict) -> list:

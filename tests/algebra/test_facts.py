@@ -1,5 +1,5 @@
 """The fast paths of certify.algebra.facts against the SymPy computations they replace: the
-records of the facts must not change (reports/certificates.json byte for byte)."""
+witnesses must not change (reports/certificates.json byte for byte)."""
 import pytest
 import sympy as sp
 from hypothesis import given, settings
@@ -109,43 +109,3 @@ def test_one_walk_finds_the_atoms(e, extra):
     assert functions == e.atoms(sp.Function) and list(functions) == list(e.atoms(sp.Function))
     assert powers == e.atoms(sp.Pow) and list(powers) == list(e.atoms(sp.Pow))
     assert bare == bare_by_subs(e)
-
-
-def test_a_number_is_recorded_alike_however_refined_and_once_per_builder():
-    # number_of: the record is a function of the number (memoised inside a fact's builder);
-    # called where a certificate records, its comparisons are recorded every time
-    import copy
-
-    import flint
-
-    from certify.algebra.algebraic import Algebraic
-    from certify.obligations import quiet, recording
-    [a] = Algebraic.roots(flint.fmpq_poly([1, -10, 1]), 0, 1)       # 5 - 2√6
-    b = copy.copy(a).refine(flint.fmpq(1, 2 ** 40))
-    fresh = facts._dyadic(copy.copy(a))
-    assert facts.number_of(a) == facts.number_of(b) == fresh
-    assert fresh["lo"] == "25/256" and fresh["hi"] == "13/128"
-    for _ in range(2):
-        with recording("X") as rec:
-            facts.number_of(a)
-        assert [ob["kind"] for ob in rec.items] == ["compare"]
-        with recording("X") as rec, quiet():
-            facts.number_of(a)
-        assert rec.items == []
-
-
-def test_a_table_with_the_same_polynomials_is_one_record_whichever_lists_hold_them():
-    # Recording.add: the key writes a table's cp and parts once per list object; equal
-    # contents (other lists) share an id, a changed coefficient or exponent does not
-    from certify.obligations import Recording
-    rec = Recording("X")
-
-    def table(c="1/2", e=1):
-        return {"kind": "sign_table", "cp": [["1", [0, 3]], [c, [e, 0]]], "parts": {"N0": [["-1", [1, 0]]]},
-                "ends": ["0", "1"], "samples": ["1/2"], "signs": [["?"]]}
-    first = table()
-    assert rec.add(first) == rec.add(table()) == rec.add(first) == "X:1"
-    assert rec.add(table("1/3")) == "X:2" and rec.add(table(e=2)) == "X:3"
-    assert rec.add({**table(), "parts": {"N0": [["-1", [1, 0]]], "D0": [["1", [0, 0]]]}}) == "X:4"
-    assert rec.add({"kind": "compare", "a": "1/2", "b": "1/3", "sign": 1}) == "X:5"
-    assert [ob["id"] for ob in rec.items] == ["X:1", "X:2", "X:3", "X:4", "X:5"]

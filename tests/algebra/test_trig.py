@@ -185,7 +185,7 @@ def test_show_kept_for_a_run_is_the_text(e):
 
 
 def test_sign_records_kept_for_a_run_are_not_changed_by_their_readers():
-    """signed_fact reads the memoised _poly_data/_factor_data without changing them: the record of
+    """signed_witness reads the memoised _poly_data/_factor_data without changing them: the witness of
     a sign is the same the first time, the next ones, and after the caches' reset."""
     import copy
 
@@ -193,8 +193,8 @@ def test_sign_records_kept_for_a_run_are_not_changed_by_their_readers():
     H = T.hypotheses(1)
     for E in [T.cθ * T.sφ + T.cφ, (1 + T.cφ ** 2) / (T.sθ * (T.cθ ** 2 + T.sθ ** 2)), -T.sφ ** 3 * T.cθ]:
         n, d = T.fraction(E)
-        first = T.signed_fact(E, H)
+        first = T.signed_witness(E, H)
         data = copy.deepcopy(T._poly_data(n, H))
-        assert T.signed_fact(E, H) == first and T._poly_data(n, H) == data
+        assert T.signed_witness(E, H) == first and T._poly_data(n, H) == data
         caches.reset()
-        assert T.signed_fact(E, H) == first
+        assert T.signed_witness(E, H) == first

@@ -123,8 +123,8 @@ def test_the_split_norm_gives_the_critical_values_of_the_norm(word):
 
 
 def test_the_norm_vanishes_where_a_part_of_its_split_does():
-    """The exact zero test of the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q (Spectrum._root_with_sqrt
-    without a recording) tests c, g and Q: at every critical value of every condition with x,
+    """The exact zero test of the numerator's norm N₀² - N₁²Δ ≡ 4c·g²·Q (Spectrum._root_with_sqrt)
+    tests c, g and Q: at every critical value of every condition with x,
     on every branch, some part vanishes exactly where the norm does (the norm's own test on a
     fresh Spectrum), over a few words, and both answers occur."""
     from certify.algebra.branches import Spectrum
@@ -151,25 +151,6 @@ def test_the_norm_vanishes_where_a_part_of_its_split_does():
     assert {a[1] for a in answers} == {True, False}
 
 
-@pytest.mark.parametrize("word", ["ababacbabacb", "abcb"])
-def test_the_route_without_a_recording_certifies_the_same_sets(monkeypatch, word):
-    # without a certificate being recorded, points are signed on the branch read only
-    # (Spectrum.sign_on_branch_at) and cuts found with comparisons read off the intervals
-    # first; with a recording, every branch's signs and exact comparisons (the facts the
-    # kernel re-derives).  The JSON of `certify pattern` is the same both ways
-    # (ababacbabacb: an "x not real" sign at a critical value, which the first version of
-    # the branch-alone route read as undecided)
-    from certify.patterns import analyse
-    from certify.patterns import feasibility as F
-    from certify.run import runner
-    runner.reset_caches()
-    fast = analyse(word).json_text()
-    runner.reset_caches()
-    monkeypatch.setattr(F, "recording_now", lambda: True)
-    exact = analyse(word).json_text()
-    assert fast == exact
-
-
 def test_the_condition_at_the_other_fixed_point_is_the_twin_with_n1_negated():
     # feasibility._twin: x₋'s condition from x₊'s (N₁ negated, N₀ and D₀ shared) is the
     # condition built afresh for x₋, for every requirement with x of ababcb
@@ -191,25 +172,19 @@ def test_the_condition_at_the_other_fixed_point_is_the_twin_with_n1_negated():
             assert _twin(cond, q.name).terms == other.terms
 
 
-def test_a_sign_at_a_critical_value_is_recorded_as_the_table_points_would_have_it():
-    # table_sign_at at a critical value the table has not signed: the branch's sign alone and
-    # its fact claiming that branch only, the same as from every branch's signs (table_point)
-    from certify.algebra import facts
+def test_a_sign_at_a_critical_value_is_the_one_the_table_points_would_have():
+    # table_sign_at at a critical value the table has not signed: the branch's sign alone
+    # (Spectrum.sign_on_branch_at), the same as from every branch's signs (T.points)
     from certify.algebra.branches import Condition
     from certify.algebra.poly import lam
-    from certify.obligations import recording
     from certify.patterns.feasibility import table_sign_at
     spec = candidate("abcb").spectrum
     T = spec.sign_table(Condition.of("λ - 1/4", lam - sp.Rational(1, 4)), 0, 1)
     assert len(T.critical) >= 2
     for k, rc in enumerate(T.critical):
         for branch in range(3):
-            with recording("X") as rec:
-                sg = table_sign_at(T, rc, branch)
+            sg = table_sign_at(T, rc, branch)
             assert not T.has_point(k)
             pt = T.points[k]                       # every branch's signs, computed now
             T._points._done.pop(k)
             assert sg == (pt[branch] if branch < len(pt) else "missing")
-            [ob] = rec.items
-            assert {key: v for key, v in ob.items() if key != "id"} == facts.table_point(sg, T, rc, branch)
-            T._points._done.pop(k)

@@ -1,31 +1,26 @@
-"""identify.orbits_at (orbit_at once per word and r in a recording, its facts replayed) against
-orbit_at itself: the same orbits, and a recording that calls it (Section 5's decide, then
-verify's decided) records the same facts, with the same ids, as one calling orbit_at."""
+"""identify.orbits_at (orbit_at once per word and r in a run) against orbit_at itself: the same
+orbits, computed once until the caches' reset."""
 import flint
 
-from certify import obligations
+from certify import caches
 from certify.patterns.reduction_orbits import orbit_at
 from certify.run import identify as ident
 
 WORD, R = "abacbcabcababcbcabacbacbcb", flint.fmpq(1, 5)    # N2's attracting word at r = 1/5
 
 
-def _recorded(f):
-    with obligations.recording("T") as rec:
-        first = f(WORD, R)
-        taken = obligations.take()
-        again = f(WORD, R)
-        taken_again = obligations.take()
-    kinds = [(x.kind, x.feasible, x.branch_name) for x in first] + [(x.kind, x.feasible) for x in again]
-    return kinds, rec.items, taken, taken_again
+def _kinds(orbits):
+    return [(x.kind, x.feasible, x.branch_name) for x in orbits]
 
 
-def test_orbits_at_records_what_orbit_at_records():
-    ident.orbits_at.cache_clear()
-    want = _recorded(orbit_at)
-    assert want[1] and want[2]                 # orbit_at records facts: the comparison says something
-    assert _recorded(ident.orbits_at) == want
-    assert _recorded(ident.orbits_at) == want  # served from the memo: the facts replayed
+def test_orbits_at_is_orbit_at_once_per_run():
+    caches.reset()
+    first = ident.orbits_at(WORD, R)
+    assert _kinds(first) == _kinds(orbit_at(WORD, R))
+    assert ident.orbits_at(WORD, R) is first           # served from the memo
+    caches.reset()
+    again = ident.orbits_at(WORD, R)
+    assert again is not first and _kinds(again) == _kinds(first)
 
 
 def test_decided_is_the_feasible_orbit_of_orbit_at():
