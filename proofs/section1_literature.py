@@ -121,9 +121,7 @@ def _threshold_certificate(word, threshold, digits, what, refs: dict):
 PRINTED_L1 = dict(word="ab", threshold="7-4√3", digits="0.07180")
 
 
-@certificate("L1", "l. 131, 1103, 1129",
-             "Three particles: no collapse (no self-similar datum of ab) for r > 7-4√3; below, stable collapse.",
-             printed=PRINTED_L1,
+@certificate("L1", printed=PRINTED_L1,
              expect=PASS,
              mutants=[replaced("threshold", "7-4√3", "7-4√2", "another radical"),
                       replaced("digits", "0.07180", "0.07181", "a digit"),
@@ -144,9 +142,7 @@ def three_particles(word, threshold, digits):
 PRINTED_L2 = dict(word="[ac]b", threshold="3-2√2", digits="0.17157")
 
 
-@certificate("L2", "l. 132",
-             "The symmetric four-particle system ([ac]b) cannot collapse for r > 3-2√2.",
-             printed=PRINTED_L2,
+@certificate("L2", printed=PRINTED_L2,
              expect=PASS,
              mutants=[replaced("threshold", "3-2√2", "3-2√3", "another radical"),
                       replaced("digits", "0.17157", "0.17158", "a digit")])
@@ -163,10 +159,7 @@ PRINTED_L3 = dict(word="abcb", P="17r^6-138r^5+831r^4-3148r^3+831r^2-138r+17", r
                   stability="unstable")
 
 
-@certificate("L3", "l. 132, 1101",
-             "abcb has collapsing (feasible self-similar) initial data for r < r_exist ≈ 0.19166, r_exist the only "
-             "real root in [0,1] of P; the pattern is unstable.",
-             printed=PRINTED_L3,
+@certificate("L3", printed=PRINTED_L3,
              expect=PASS,
              mutants=[replaced("P", "831r^4", "832r^4", "a coefficient of P"),
                       replaced("r_exist", "0.19166", "0.19167", "a digit of r_exist"),
@@ -247,9 +240,7 @@ PRINTED_L4 = {f"n{n}": t for n, t in ((2, "3-2√2 ≃ 0.17157"), (3, "5-2√6 �
                                        (6, "3 + 2√3 - 2√(5 + 3√3) ≃ 0.07782"))}
 
 
-@certificate("L4", "l. 1114-1120",
-             "Upper stability thresholds of (ab)^n(cb)^n, n = 2..6, are the printed radicals.",
-             needs=["ab_cb_patterns"], printed=PRINTED_L4,
+@certificate("L4", needs=["ab_cb_patterns"], printed=PRINTED_L4,
              expect=PASS,
              mutants=[replaced("n4", "4 + 3√2", "4 + 3√3", "a radicand of the n = 4 threshold"),
                       replaced("n6", "0.07782", "0.07783", "a digit of the n = 6 threshold"),
@@ -280,10 +271,7 @@ PRINTED_L5 = dict(n2="[0.12754, 0.17157]", n3="[0.09452, 0.10102]", limit="7-4�
                   order="disjoint, accumulating on 7-4√3 from above")
 
 
-@certificate("L5", "l. 1123-1125, 1215",
-             "Stability windows of (ab)^2(cb)^2 ≈ [0.12754, 0.17157] and (ab)^3(cb)^3 ≈ [0.09452, 0.10102]; the "
-             "windows are disjoint and accumulate on 7-4√3 from above.",
-             needs=["ab_cb_patterns"], printed=PRINTED_L5,
+@certificate("L5", needs=["ab_cb_patterns"], printed=PRINTED_L5,
              expect=PASS,
              mutants=[replaced("n2", "0.12754", "0.12755", "a digit of the n = 2 window"),
                       replaced("n3", "0.10102", "0.10103", "a digit of the n = 3 window"),
@@ -322,10 +310,7 @@ def windows(ab_cb_patterns, n2, n3, limit, order):
 PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant")
 
 
-@certificate("L6", "l. 1215",
-             "Conjecture (CDKK §7): the upper threshold of (ab)^n(cb)^n is where q_2(0) = 0 for the dominant "
-             "eigenvector (tested for n = 2..6).",
-             needs=["ab_cb_patterns"], printed=PRINTED_L6,
+@certificate("L6", needs=["ab_cb_patterns"], printed=PRINTED_L6,
              expect=PASS,
              mutants=[replaced("criterion", "q_2(0)", "q_3(0)", "another component of the eigenvector")])
 def q2_vanishes_at_threshold(ab_cb_patterns, criterion, branch):

@@ -85,9 +85,7 @@ PRINTED_T26 = dict(pattern="(ab)^3(cb)^3", threshold=(5, -2, 6), quadratic="r^2 
 WINDOW = (Q(1, 10), Q(1, 9))          # our choice of an r-interval around 5-2√6 ≈ 0.10102
 
 
-@certificate("T26", "l. 323-325",
-             "5-2√6 is also the critical (upper stability) threshold of (ab)^3(cb)^3 (CDKK Table 1).",
-             printed=PRINTED_T26,
+@certificate("T26", printed=PRINTED_T26,
              expect=PASS,
              mutants=[overridden({"pattern": "(ab)^2(cb)^2"}, "another pattern (its threshold is 3-2√2)"),
                       overridden({"threshold": (5, -2, 7)}, "a digit of the threshold"),
@@ -237,10 +235,7 @@ def matrix_of_name(name: str) -> sp.Matrix:
 PRINTED_T27 = dict(word="abcab", matrix="BACBA", after="b", next="a", other="c")
 
 
-@certificate("T27", "l. 513-515",
-             "abcab (matrix BACBA) has no self-similar datum: for the candidate (eigenvector of BACBA, a fixed "
-             "point of f), the collision after the first b is a, not c, at a strictly earlier time.",
-             printed=PRINTED_T27,
+@certificate("T27", printed=PRINTED_T27,
              expect=PASS,
              mutants=[overridden({"matrix": "BACAB"}, "a letter of the matrix name"),
                       overridden({"matrix": "ABCAB"}, "a letter of the matrix name"),
@@ -479,10 +474,7 @@ def readings_evidence(pattern: str) -> str:
             "without the mirror |\n|---|---:|---:|\n" + "\n".join(rows))
 
 
-@certificate("T28", "l. 515",
-             f"Remark 3.3: \"{QUOTE_T28}\" (a hedged remark, tested on a census of the periodic patterns of blocks "
-             "ab, cb, acb, cab).",
-             printed=PRINTED_T28,
+@certificate("T28", printed=PRINTED_T28,
              expect=ERRATUM,
              mutants=[overridden({"pattern": "abxab"}, "not a word of the letters a, b, c: not read")])
 def abcab_census(pattern):

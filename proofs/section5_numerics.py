@@ -99,10 +99,7 @@ PRINTED_N1 = dict(
 )
 
 
-@certificate("N1", "l. 1060-1069",
-             "Setup: trajectories computed to the 10^4-th collision, the last 5×10^2 b-collisions kept, "
-             "8 orbits per r (2 θ0 × 4 φ0), φ from q(b_n) = (cos θ cos φ, sin φ, −sin θ cos φ); break rules "
-             "when a time step or |cos φ| is below the precision.", printed=PRINTED_N1,
+@certificate("N1", printed=PRINTED_N1,
              expect=OBSERVED,
              mutants=[replaced("collisions", "10^4", "10^3", "fewer collisions computed"),
                       overridden({"velocity": ("cos(theta)*cos(phi)", "cos(phi)", "-sin(theta)*cos(phi)")}, "another component of q(b_n)")])
@@ -150,11 +147,7 @@ NEAR = 0.001     # "close to the region r ≃ 0.072" (l. 1090): within 10^-3 of 
 SEGMENT = 0.005  # "a short horizontal segment ... around (0.08, π/2)" (l. 1089): breaks within 0.005 of 0.08
 
 
-@certificate("N2", "l. 1071-1094",
-             "Figure 6 (fig:Simul_1), 0.072 ≤ r ≤ 0.999, Δr = 2.5e-4 (3709 values): windows of stability for r ≤ 0.17, "
-             "apparent chaos up to r ≈ 0.9, discrete ω-limit sets near r = 1, a short segment of breaks around "
-             "(0.08, π/2), the breaks accumulated close to r ≃ 0.072.",
-             needs=("section5_preview",), printed=PRINTED_N2,
+@certificate("N2", needs=("section5_preview",), printed=PRINTED_N2,
              expect="OBSERVED, disagrees",
              mutants=[overridden({"windows_below": "0.9"}, "the edge of the windows moved from 0.17 to 0.9"),
                       committed("explained", (ORBIT_FINDINGS, {"word": "abcb"}), "the committed word at r = 1/5 "
@@ -242,10 +235,7 @@ PRINTED_N3 = dict(lo="0.075", hi="0.192", step="2.5\\times 10^{-5}", count="4681
                   points=("4", "6", "8", "10"), windows=("(ab)^2(cb)^2", "(ab)^3(cb)^3", "third", "fourth"))
 
 
-@certificate("N3", "l. 1096-1128",
-             "Figure 7 (fig:Simul_2), 0.075 ≤ r ≤ 0.192, Δr = 2.5e-5 (4681 values): the orbits accumulate around 4 points in "
-             "the (ab)^2(cb)^2 window, 6 in the (ab)^3(cb)^3 window, 8 and 10 in the next two.",
-             needs=("section5_preview",), printed=PRINTED_N3,
+@certificate("N3", needs=("section5_preview",), printed=PRINTED_N3,
              expect=OBSERVED,
              mutants=[overridden({"points": ("5", "6", "8", "10")}, "another number of points in the first window")])
 def figure_5_2(section5_preview, lo, hi, step, count, points, windows):
@@ -277,10 +267,7 @@ def figure_5_2(section5_preview, lo, hi, step, count, points, windows):
 PRINTED_N4 = dict(r_below="0.078", n_from="6", accumulate_above="7-4\\sqrt{3}")
 
 
-@certificate("N4", "l. 1127-1128",
-             "For r below 0.078 the program cannot detect (ab)^n(cb)^n for n ≥ 6 (the dominant eigenvector of "
-             "J(BA)^n has a component below the computer precision); the windows should exist for every n ≥ 2, "
-             "accumulating above 7-4√3.", printed=PRINTED_N4,
+@certificate("N4", printed=PRINTED_N4,
              needs=("float64_engine",), expect="OBSERVED, disagrees")
 def below_0078(float64_engine, r_below, n_from, accumulate_above):
     """Our float64 engine at r just below r_max(n) for n = n_from..n_from+4 (8 orbits, 10^4
@@ -358,9 +345,7 @@ PRINTED_N5 = dict(lo="0.172", hi="0.176", fig_lo="0.171", fig_hi="0.176", step="
                   explained=ORBIT_FINDINGS)
 
 
-@certificate("N5", "l. 1148-1160",
-             "Transitory region 0.172 ≤ r ≤ 0.176: the orbits accumulate on finitely many points for r fixed; "
-             "Figure 9 (fig:Simul_3) at Δr = 1e-6 (5001 values, 0.171 ≤ r ≤ 0.176).", needs=("section5_preview",),
+@certificate("N5", needs=("section5_preview",),
              printed=PRINTED_N5,
              expect=OBSERVED,
              mutants=[overridden({"lo": "0.181", "hi": "0.185"}, "the transitory region moved"),
@@ -401,9 +386,7 @@ PRINTED_N6 = dict(stripes=("0.1845", "0.1896"), special="0.184525", lo="0.1845",
                   count="1001", explained=ORBIT_FINDINGS)
 
 
-@certificate("N6", "l. 1162-1208",
-             "Thin stripes near r ≈ 0.1845 and r ≈ 0.1896; at r ≈ 0.184525 all orbits have discrete ω-limit sets; "
-             "Figure 10 (fig:Simul_2_zoom_3); Figures 11a-11c (fig:Simul_4, fig:Simul_5, fig:Simul_6) at Δr = 1e-7 (1001 values, 0.1845 ≤ r ≤ 0.1846).", needs=("section5_preview",),
+@certificate("N6", needs=("section5_preview",),
              printed=PRINTED_N6,
              expect=OBSERVED,
              mutants=[replaced("special", "0.184525", "0.18455", "the special r moved"),
@@ -458,10 +441,7 @@ ISLAND_SENTENCE = ("the island theorem (N7.1) proves quasi-periodic orbits in th
 PRINTED_N7 = dict(grows_below="1", not_discrete_at="0.92")
 
 
-@certificate("N7", "l. 1088-1094, 1200-1208",
-             "The ω-limit sets look like finite unions of intervals, growing as r decreases from 1 and not "
-             "discrete at r ≈ 0.92; each orbit may cover only part of [0, π] while the union is dense "
-             "(quasi-periodicity).", needs=("section5_preview", "island_theorem"), printed=PRINTED_N7,
+@certificate("N7", needs=("section5_preview", "island_theorem"), printed=PRINTED_N7,
              expect=OBSERVED,
              mutants=[replaced("not_discrete_at", "0.92", "0.999", "where the ω-limit sets are not discrete")])
 def quasi_periodic(section5_preview, island_theorem, grows_below, not_discrete_at):
@@ -559,15 +539,7 @@ PRINTED_N7_1 = dict(suggests="the orbits of such a system might be quasi-periodi
                     above="3-2√2")
 
 
-@certificate("N7.1", "l. 95, 1210, 1223-1226",
-             "The numerical simulations suggest that the orbits of the spherical reduction might be quasi-periodic "
-             "(l. 95), on invariant tori (l. 1210), in regimes above r = 3−2√2 (l. 1223-1226).  Proved here (ours) "
-             "for the island around the orbit [ac]b: for every r in ]3−2√2, 1[ the b-to-b map there is an elliptic "
-             "rotation A(r) preserving Q, and the island U_r = {Q < c_max} is invariant; every orbit in it is "
-             "quasi-periodic, dense on its ellipse, wherever the rotation number is irrational (at every rational r); "
-             "at the resonances (rotation number p/q, as at r = 2−√3 where it is 1/3 and A³ = I) every orbit in it "
-             "is periodic.",
-             needs=("island_theorem",), printed=PRINTED_N7_1, expect=PASS,
+@certificate("N7.1", needs=("island_theorem",), printed=PRINTED_N7_1, expect=PASS,
              mutants=[replaced("above", "3-2√2", "2-√3", "the threshold above which the tori appear"),
                       replaced("above", "3-2√2", "3-2√3", "a threshold outside ]0, 1["),
                       replaced("suggests", "quasi-periodic", "periodic", "the suggestion reworded"),

@@ -23,11 +23,14 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 
+from certify_kernel.statements import read as read_statements
+
 from certify import caches
 from certify.errors import StatementError, UsageError
 from certify.witnesses import in_order, quiet, recording, witnesses_of
 
 from .executors import default_jobs  # noqa: F401  (runner.default_jobs, used by the CLI and benchmarks)
+from .files import CHECKOUT
 
 PASS, ERRATUM, FAIL, OBSERVED = "PASS", "ERRATUM", "FAIL", "OBSERVED"
 STATUSES = (PASS, ERRATUM, FAIL, OBSERVED)
@@ -264,8 +267,11 @@ CERTIFICATES: dict[str, Certificate] = {}
 QUANTITIES: dict[str, Quantity] = {}
 
 
-def certificate(id: str, line: str, statement: str, needs=(), printed=None, mutants=(), expect: str = ""):
-    """Declare a certificate for claim ``id`` printed at ``line`` of the paper.
+def certificate(id: str, line: str | None = None, statement: str | None = None, needs=(), printed=None, mutants=(),
+                expect: str = ""):
+    """Declare a certificate for claim ``id`` printed at ``line`` of the paper, stating ``statement``:
+    both, when not given, as the statement files say them (statements/*.txt: the line ``certificate
+    ID  l. LINES  "TITLE"``), where the paper's claims are written once.
 
     ``printed`` maps names to the inputs as printed in the paper; the function
     receives them as keyword arguments next to the shared quantities it needs.
@@ -275,10 +281,24 @@ def certificate(id: str, line: str, statement: str, needs=(), printed=None, muta
     def wrap(func):
         if id in CERTIFICATES:
             raise ValueError(f"certificate {id} declared twice")
-        CERTIFICATES[id] = Certificate(id, line, statement, func, tuple(needs),
+        written = paper_certificates().get(id)
+        if (line is None or statement is None) and written is None:
+            raise ValueError(f"certificate {id}: no line and statement given, and none in statements/*.txt")
+        CERTIFICATES[id] = Certificate(id, line if line is not None else written.line,
+                                       statement if statement is not None else written.title, func, tuple(needs),
                                        dict(printed or {}), func.__module__, tuple(mutants), expect)
         return func
     return wrap
+
+
+_PAPER: dict = {}
+
+
+def paper_certificates() -> dict:
+    """The certificates of the statement files (id -> certify_kernel.statements.Certificate), read once."""
+    if not _PAPER:
+        _PAPER.update({c.id: c for c in read_statements(CHECKOUT / "statements").certificates})
+    return _PAPER
 
 
 def quantity(name: str, needs=()):
