@@ -15,7 +15,22 @@ from __future__ import annotations
 from fractions import Fraction
 
 from .field import AtR0
-from .poly import at_r, d_lambda, deg, in_lambda, madd, mmul, mul, resultant_in, squarefree, sub, trim, value
+from .poly import (
+    at_r,
+    badd,
+    d_lambda,
+    deg,
+    in_lambda,
+    madd,
+    mmul,
+    mul,
+    resultant_in,
+    sign,
+    squarefree,
+    sub,
+    trim,
+    value,
+)
 from .sturm import Algebraic, real_roots
 from .values import Undefined, number, roots_in
 
@@ -130,7 +145,7 @@ class Point:
         if cond.cp is None:
             at = {n: in_lambda(P)[0] if P else [] for n, P in cond.parts.items()}
             if self.cell:
-                return condition_sign(at, lambda c: _sgn(value(c, self.r0)))
+                return condition_sign(at, lambda c: sign(value(c, self.r0)))
             return condition_sign(at, self._at.sign, mul, sub)
         if k is None or k >= self.branches(cond.cp):
             raise Undefined("no such branch")
@@ -140,11 +155,7 @@ class Point:
             return condition_sign({n: at_r(P, self.r0) for n, P in cond.parts.items()}, lam.sign_of)
         A, iv = self._at, roots[k]
         at = {n: in_lambda(P) for n, P in cond.parts.items()}
-        return condition_sign(at, lambda P: A.taq(P, cpl, *iv), A.mul, A.sub)
-
-
-def _sgn(x) -> int:
-    return (x > 0) - (x < 0)
+        return condition_sign(at, lambda P: A.taq(P, cpl, *iv), A.mul, lambda P, Q: badd(P, Q, -1))
 
 
 def _between(a, b) -> Fraction:
@@ -236,5 +247,3 @@ def pieces(conds: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False
             a.right = b
     return out
 
-
-__all__ = ["Condition", "Point", "Undecided", "pieces", "cut_points", "condition_sign", "_between"]

@@ -17,7 +17,7 @@ from fractions import Fraction
 from . import cells
 from .cells import Condition, Undecided
 from .language import parse
-from .poly import bareiss, d_lambda, in_lambda, interpolate_integers, squarefree
+from .poly import d_lambda, resultant_ints, squarefree
 from .sturm import Algebraic
 from .values import (
     RF,
@@ -201,43 +201,12 @@ def charpoly(M: Matrix) -> RF:
 
 
 def resultant(P: RF, Q: RF) -> RF:
-    """Res_λ(P, Q) ∈ Q[r], exactly: the Sylvester determinant at r = 0, 1, ..., (rows scaled to
-    integers, each scale divided out), interpolated (its degree in r is bounded by n·deg_r P +
-    m·deg_r Q for λ-degrees m, n)."""
-    p, q = in_lambda(two(P)), in_lambda(two(Q))
-    m, n = len(p) - 1, len(q) - 1
-    if m < 1 and n < 1:
+    """Res_λ(P, Q) ∈ Q[r], exactly (:func:`poly.resultant_ints`, its positive scale divided out)."""
+    p, q = two(P), two(Q)
+    if max((k[1] for k in p), default=-1) < 1 and max((k[1] for k in q), default=-1) < 1:
         raise Undefined("a resultant in λ of two polynomials without λ")
-    den = 1
-    for row in p + q:
-        for c in row:
-            den = den * c.denominator // _gcd(den, c.denominator)
-    P2 = [[int(c * den) for c in row] for row in p]
-    Q2 = [[int(c * den) for c in row] for row in q]
-    bound = n * max(len(c) - 1 for c in p) + m * max(len(c) - 1 for c in q)
-    ys = []
-    for x in range(bound + 1):
-        a = [_ival(c, x) for c in reversed(P2)]
-        b = [_ival(c, x) for c in reversed(Q2)]
-        rows = [[0] * i + a + [0] * (n - 1 - i) for i in range(n)] + [[0] * i + b + [0] * (m - 1 - i) for i in range(m)]
-        ys.append(bareiss(rows) if rows else 1)
-    fact = 1
-    for k in range(1, bound + 1):
-        fact *= k
-    coeffs = [Fraction(c, fact * den ** (m + n)) for c in interpolate_integers(ys)]
-    return RF({(k,) + (0,) * (len(VARS) - 1): c for k, c in enumerate(coeffs) if c})
-
-
-def _gcd(a: int, b: int) -> int:
-    from math import gcd
-    return gcd(a, b)
-
-
-def _ival(c: list, x: int) -> int:
-    v = 0
-    for a in reversed(c):
-        v = v * x + a
-    return v
+    ints, s = resultant_ints(p, q)
+    return RF({(k,) + (0,) * (len(VARS) - 1): Fraction(c, s) for k, c in enumerate(ints) if c})
 
 
 def discriminant(P: RF) -> RF:

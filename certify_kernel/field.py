@@ -7,7 +7,7 @@ from __future__ import annotations
 from fractions import Fraction
 from math import gcd as igcd
 
-from .poly import add, divmod_, gcd, integer_primitive, mul, scale, sign, sub, value
+from .poly import add, bderiv, bmul, divmod_, gcd, integer_primitive, mul, scale, sign, sub, value
 from .sturm import Algebraic, count
 
 
@@ -50,16 +50,8 @@ class AtR0:
         return P
 
     def mul(self, P: list, Q: list) -> list:
-        """P·Q in Q[r][λ] (Cauchy product), coefficients reduced modulo m."""
-        out: list = [[] for _ in range(max(len(P) + len(Q) - 1, 0))]
-        for i, a in enumerate(P):
-            for j, b in enumerate(Q):
-                out[i + j] = add(out[i + j], mul(a, b))
-        return [self.reduce(c) for c in out]
-
-    def sub(self, P: list, Q: list) -> list:
-        """P − Q in Q[r][λ]."""
-        return [sub(P[i] if i < len(P) else [], Q[i] if i < len(Q) else []) for i in range(max(len(P), len(Q)))]
+        """P·Q in Q[r][λ], coefficients reduced modulo m."""
+        return [self.reduce(c) for c in bmul(P, Q)]
 
     def remainder(self, A: list, B: list) -> list:
         """A positive multiple at r0 of −rem(A, B) in Q(r0)[λ] (B trimmed, lc B(r0) ≠ 0): the
@@ -94,7 +86,7 @@ class AtR0:
         the real closed field R ⊃ Q(r0) (Basu–Pollack–Roy, Thm 2.73; P need not be square-free).
         Q = 1 (``seq`` given: SRemS(P, P')) is Sturm's theorem, the number of distinct roots."""
         if seq is None:
-            seq = self.sequence(P, self.mul(_d(P), Q))
+            seq = self.sequence(P, self.mul(bderiv(P), Q))
         return self.variations(seq, a) - self.variations(seq, b)
 
     def roots(self, P: list) -> tuple[list, list]:
@@ -104,7 +96,7 @@ class AtR0:
         P = self.trim(P)
         if not P:
             raise ValueError("the polynomial vanishes identically at r0")
-        seq = self.sequence(P, _d(P))
+        seq = self.sequence(P, bderiv(P))
         total, B = self.taq([], P, "-inf", "+inf", seq), Fraction(1)
         while self.at(P, B) == 0 or self.at(P, -B) == 0 or self.taq([], P, -B, B, seq) != total:
             B *= 2
@@ -137,9 +129,9 @@ class AtR0:
             return out
         mult = []
         for iv in out:
-            D, k = _d(P), 1
+            D, k = bderiv(P), 1
             while self.taq(D, P, *iv) == 0:
-                D, k = _d(D), k + 1
+                D, k = bderiv(D), k + 1
             mult += [iv] * k
         return mult
 
@@ -158,11 +150,6 @@ def _enclose(c: list, lo: Fraction, hi: Fraction) -> int:
         val += int(q * d) * X ** k * D ** (len(c) - 1 - k)
         bound += k * abs(int(q * d)) * (abs(X) + W) ** (k - 1) * W * D ** (len(c) - 1 - k) if k else 0
     return (1 if val > 0 else -1) if abs(val) > bound else 0
-
-
-def _d(P: list) -> list:
-    """∂P/∂λ."""
-    return [scale(c, i) for i, c in enumerate(P)][1:]
 
 
 def _positive_content_free(P: list) -> list:

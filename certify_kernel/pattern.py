@@ -51,8 +51,8 @@ from math import gcd as igcd
 
 from .cells import Condition, Point, Undecided, _between, _OrderKey
 from .evaluate import ATOMS, FUNCTIONS, Matrix, NotVerified, collision, expand_word
+from .poly import add, badd, bderiv, bmul, integer_primitive, mul, squarefree, trim, value
 from .poly import gcd as qgcd
-from .poly import integer_primitive, squarefree, value
 from .sturm import Algebraic
 from .values import RF, Undefined, _root_above, _root_below, number, roots_in, univariate
 
@@ -62,55 +62,7 @@ GAP = {"a": 0, "s": 0, "b": 1, "c": 2}
 
 
 # ----------------------------------------------------------------- integer polynomials
-# in r: lists of ints, lowest degree first; in (r, Λ): lists over the powers of Λ of those
-
-def _trim(p: list) -> list:
-    while p and (p[-1] == 0 or p[-1] == []):
-        p.pop()
-    return p
-
-
-def _add(p: list, q: list, c: int = 1) -> list:
-    out = list(p) + [0] * (len(q) - len(p))
-    for i, y in enumerate(q):
-        out[i] += c * y
-    return _trim(out)
-
-
-def _mul(p: list, q: list) -> list:
-    """p·q; long integer ones by Kronecker substitution (one integer product of p(2^k), q(2^k),
-    whose base-2^k digits, |digit| < 2^(k-1), are the coefficients)."""
-    if not p or not q:
-        return []
-    if min(len(p), len(q)) < 16 or not all(type(a) is int for a in p + q):
-        out = [0] * (len(p) + len(q) - 1)
-        for i, a in enumerate(p):
-            for j, b in enumerate(q):
-                out[i + j] += a * b
-        return _trim(out)
-    k = (max(map(abs, p)) * max(map(abs, q)) * min(len(p), len(q))).bit_length() + 1
-    C = sum(a << (k * i) for i, a in enumerate(p)) * sum(b << (k * i) for i, b in enumerate(q))
-    out, mask = [], (1 << k) - 1
-    for _ in range(len(p) + len(q) - 1):
-        d = C & mask
-        d -= (1 << k) if d >> (k - 1) else 0
-        out.append(d)
-        C = (C - d) >> k
-    return _trim(out)
-
-
-def _badd(P: list, Q: list, c: int = 1) -> list:
-    return _trim([_add(P[j] if j < len(P) else [], Q[j] if j < len(Q) else [], c) for j in range(max(len(P), len(Q)))])
-
-
-def _bmul(P: list, Q: list) -> list:
-    out: list = [[] for _ in range(max(len(P) + len(Q) - 1, 0))]
-    for i, a in enumerate(P):
-        for j, b in enumerate(Q):
-            if a and b:
-                out[i + j] = _add(out[i + j], _mul(a, b))
-    return _trim(out)
-
+# in r: lists of ints, lowest degree first; in (r, Λ): lists over the powers of Λ of those (poly.py)
 
 def _brem(P: list, cp: list) -> list:
     """P modulo cp, monic in Λ (Λ^m = -(the rest)): the same value on every branch."""
@@ -118,13 +70,9 @@ def _brem(P: list, cp: list) -> list:
     while len(P) > m:
         top, k = P.pop(), len(P) - m
         for j in range(m):
-            P[k + j] = _add(P[k + j], _mul(top, cp[j]), -1)
-        _trim(P)
+            P[k + j] = add(P[k + j], mul(top, cp[j]), -1)
+        P = trim(P)
     return P
-
-
-def _neg(P: list) -> list:
-    return [[-a for a in c] for c in P]
 
 
 def _content(polys) -> int:
@@ -147,7 +95,7 @@ def _exact(p: list, f: list) -> list | None:
         q[k] = a
         for j, b in enumerate(f):
             p[k + j] -= a * b
-    return _trim(q) if q and not any(p) else None
+    return trim(q) if q and not any(p) else None
 
 
 def _gcd(p: list, q: list) -> list:
@@ -157,7 +105,7 @@ def _gcd(p: list, q: list) -> list:
     return [int(c) for c in integer_primitive(qgcd(p, q))]
 
 
-def _det(rows: list, add=_add, mul=_mul) -> list:
+def _det(rows: list, add=add, mul=mul) -> list:
     """The determinant of a 2×2 or 3×3 matrix of polynomials (Laplace along row 1)."""
     if len(rows) == 2:
         (a, b), (c, d) = rows
@@ -204,17 +152,17 @@ def norm(P: list, cp: list) -> list:
     if len(P) < 2:
         out = [1]
         for _ in range(len(cp) - 1):
-            out = _mul(out, P[0] if P else [])
+            out = mul(out, P[0] if P else [])
         return out
     return _det(_mult_matrix(P, cp))
 
 
 def _emul(x: El, y: El, cp: list) -> El:
-    return _el(_bmul(x.c, y.c), _mul(x.d, y.d), cp)
+    return _el(bmul(x.c, y.c), mul(x.d, y.d), cp)
 
 
 def _esub(x: El, y: El, cp: list) -> El:
-    return _el(_badd(_bmul(x.c, [y.d]), _bmul(y.c, [x.d]), -1), _mul(x.d, y.d), cp)
+    return _el(badd(bmul(x.c, [y.d]), bmul(y.c, [x.d]), -1), mul(x.d, y.d), cp)
 
 
 def _inverse(P: list, cp: list) -> El:
@@ -228,7 +176,7 @@ def _inverse(P: list, cp: list) -> El:
     return _el(adj, n, cp)
 
 
-def _sum(items, add=_badd) -> list:
+def _sum(items, add=badd) -> list:
     out: list = []
     for P in items:
         out = add(out, P)
@@ -252,7 +200,7 @@ def _matrices(system: str) -> dict:
     A, B, C = collision(0), collision(1), collision(2)
 
     def ints(K, size):
-        return [[_trim([int(2 * c) for c in univariate(e)]) if not e.is_zero() else [] for e in row[:size]]
+        return [[trim([int(2 * c) for c in univariate(e)]) if not e.is_zero() else [] for e in row[:size]]
                 for row in K.rows[:size]]
 
     def symmetric(K):                 # on (q_1, q_2, q_1): rows 1, 2 and columns 1 + 3, 2
@@ -282,7 +230,7 @@ class Run:
             t = [_emul(P[i][h], w, cp) for h in (0, 1)]                                # p_i/q̃_i
             P = [tuple(_esub(P[j][h], _emul(t[h], El(q[j], [1]), cp), cp) for h in (0, 1)) for j in range(g)]
             P[i] = (zero, zero)
-            q = [_sum([_bmul(q[j], [K[row][j]]) for j in range(g) if K[row][j]]) for row in range(g)]
+            q = [_sum([bmul(q[j], [K[row][j]]) for j in range(g) if K[row][j]]) for row in range(g)]
             self.q.append(q)
             self.p.append(P)
 
@@ -299,17 +247,17 @@ class Candidate:
         M = [[[1] if i == j else [] for j in range(g)] for i in range(g)]
         for letter in self.word:
             K = self.K[letter]
-            M = [[_sum([_mul(K[i][k], M[k][j]) for k in range(g)], _add) for j in range(g)] for i in range(g)]
+            M = [[_sum([mul(K[i][k], M[k][j]) for k in range(g)], add) for j in range(g)] for i in range(g)]
         self.M = M
-        B = [[_trim([M[i][j], [-1]] if i == j else [M[i][j]]) for j in range(g)] for i in range(g)]   # M' - Λ
-        self.cp = _det([[_neg(e) for e in row] for row in B], _badd, _bmul)
+        B = [[trim([M[i][j], [-1]] if i == j else [M[i][j]]) for j in range(g)] for i in range(g)]   # M' - Λ
+        self.cp = _det([[badd([], e, -1) for e in row] for row in B], badd, bmul)
         if g == 3:
             (b1, a11, a12), (b2, a21, a22) = B[rows[0]], B[rows[1]]
-            det = _det([[a11, a12], [a21, a22]], _badd, _bmul)
-            q0 = [_neg(det), _det([[b1, a12], [b2, a22]], _badd, _bmul), _det([[a11, b1], [a21, b2]], _badd, _bmul)]
+            det = _det([[a11, a12], [a21, a22]], badd, bmul)
+            q0 = [badd([], det, -1), _det([[b1, a12], [b2, a22]], badd, bmul), _det([[a11, b1], [a21, b2]], badd, bmul)]
         else:                          # row 1: (m11 - Λ)(-1) + m12 u = 0, row 2: m21(-1) + (m22 - Λ)u = 0
             det, U = (B[0][1], B[0][0]) if rows[0] == 0 else (B[1][1], B[1][0])
-            q0 = [_neg(det), U]
+            q0 = [badd([], det, -1), U]
         self.det, self.q0 = _brem(det, self.cp), [_brem(e, self.cp) for e in q0]
         self.cp_dict = _dict(self.cp)
 
@@ -323,10 +271,10 @@ class Candidate:
         L3 = lcm(δ_a, δ_b), L1 = lcm(δ_c, δ_d), h the content; and L1·L3."""
         (d, c), _, (b, a) = self.run.p[-1]
         L1, L3 = _lcm(d.d, c.d), _lcm(b.d, a.d)
-        abcd = [_bmul(e.c, [_mul(_exact(L, e.d), L2)]) for e, L, L2 in ((a, L3, L1), (b, L3, L1), (c, L1, L3),
+        abcd = [bmul(e.c, [mul(_exact(L, e.d), L2)]) for e, L, L2 in ((a, L3, L1), (b, L3, L1), (c, L1, L3),
                                                                        (d, L1, L3))]
         h = _content(x for P in abcd for x in P)
-        return [[[y // h for y in x] for x in P] for P in abcd], _mul(L1, L3)
+        return [[[y // h for y in x] for x in P] for P in abcd], mul(L1, L3)
 
     @property
     def abcd(self) -> list:
@@ -335,7 +283,7 @@ class Candidate:
     @cached_property
     def disc(self) -> list:
         """The factors of disc cp = Res_Λ(cp, ∂cp/∂Λ) (where two branches meet)."""
-        return [f for f, _ in _factors(norm([[i * a for a in c] for i, c in enumerate(self.cp)][1:], self.cp))]
+        return [f for f, _ in _factors(norm(bderiv(self.cp), self.cp))]
 
     def run_of(self, word: str) -> Run:
         if word not in self.runs:
@@ -361,7 +309,7 @@ def candidate(text: str, rows: tuple = (0, 1)) -> Candidate:
 
 
 def _lcm(a: list, b: list) -> list:
-    return _mul(a, _exact(b, _gcd(a, b)))
+    return mul(a, _exact(b, _gcd(a, b)))
 
 
 # ----------------------------------------------------------------- requirements and their conditions
@@ -426,16 +374,16 @@ def _condition(cand, G0, G1, D, s, abcd, affine):
         return _Cond(cand, {"N0": G0, "D0": D}, [("N", G0), ("D", D)]) if D else None
     a, b, c, d = abcd
     if affine:
-        dma = _badd(d, a, -1)
-        D0 = red(_brem(_bmul(dma, D), cp))
-        return _Cond(cand, {"N0": red(_brem(_badd(_bmul(G0, dma), _bmul(b, G1)), cp)), "D0": D0}) if D0 else None
-    A = _badd(a, d, -1)
-    delta = red(_brem(_badd(_bmul(A, A), _bmul([[4]], _bmul(b, c))), cp))
-    N0 = red(_brem(_badd(_bmul([[2]], _bmul(c, G0)), _bmul(A, G1)), cp))
-    D0 = red(_brem(_bmul([[2]], _bmul(c, D)), cp))
+        dma = badd(d, a, -1)
+        D0 = red(_brem(bmul(dma, D), cp))
+        return _Cond(cand, {"N0": red(_brem(badd(bmul(G0, dma), bmul(b, G1)), cp)), "D0": D0}) if D0 else None
+    A = badd(a, d, -1)
+    delta = red(_brem(badd(bmul(A, A), bmul([[4]], bmul(b, c))), cp))
+    N0 = red(_brem(badd(bmul([[2]], bmul(c, G0)), bmul(A, G1)), cp))
+    D0 = red(_brem(bmul([[2]], bmul(c, D)), cp))
 
     def norms():
-        Q = _brem(_badd(_badd(_bmul(c, _bmul(G0, G0)), _bmul(A, _bmul(G0, G1))), _bmul(b, _bmul(G1, G1)), -1), cp)
+        Q = _brem(badd(badd(bmul(c, bmul(G0, G0)), bmul(A, bmul(G0, G1))), bmul(b, bmul(G1, G1)), -1), cp)
         return [("N", Q), ("c", c), ("D", D), ("delta", delta)]
     return _Cond(cand, {"N0": N0, "D0": D0, "N1": [[s * x for x in p] for p in G1], "delta": delta}, norms) \
         if D0 else None
@@ -473,7 +421,7 @@ def _position(cand, run, k: int, j: int) -> Req:
     """p_j(t_k) > 0: P0 + x·P1 over one denominator in r; division-free, over (-det)^k."""
     P0, P1 = run.p[k][j]
     L = _lcm(P0.d, P1.d)
-    G0, G1 = (_bmul(e.c, [_exact(L, e.d)]) if e.c else [] for e in (P0, P1))
+    G0, G1 = (bmul(e.c, [_exact(L, e.d)]) if e.c else [] for e in (P0, P1))
 
     def free(R):
         F0, F1 = R.free(run.word)[k][j]
@@ -485,12 +433,12 @@ def _dominance(cand) -> list:
     """λ strictly dominant: cp'(λ) > 0, cp(-λ) > 0 (quadratic); cp'(λ) > 0, -cp(-λ) > 0,
     λ³ - det M > 0 (cubic) (cp(Λ) = 2^(3n)cp(λ): positive multiples)."""
     cp, one = cand.cp, [[1]]
-    d = [[i * a for a in c] for i, c in enumerate(cp)][1:]
+    d = bderiv(cp)
     minus = [[(-1) ** i * a for a in c] for i, c in enumerate(cp)]
     if len(cp) == 3:
         return [Req("cp'(λ)", 1, d, [], one), Req("cp(-λ)", 1, minus, [], one)]
     return [Req("cp'(λ)", 1, d, [], one), Req("-cp(-λ)", -1, minus, [], one),
-            Req("λ³ - det M", 1, _badd([[], [], [], [1]], [cp[0]]), [], one)]
+            Req("λ³ - det M", 1, badd([[], [], [], [1]], [cp[0]]), [], one)]
 
 
 def _attracting(cand) -> list:
@@ -500,8 +448,8 @@ def _attracting(cand) -> list:
     for sg in (-1, 1):
         def parts(abcd, sg=sg):
             a, b, c, d = abcd
-            return _badd(_badd(_bmul(b, c), _bmul(d, d)), _badd(_bmul(a, d), _bmul(b, c), -1), sg), \
-                _bmul(c, _badd(a, d)), [[1]]
+            return badd(badd(bmul(b, c), bmul(d, d)), badd(bmul(a, d), bmul(b, c), -1), sg), \
+                bmul(c, badd(a, d)), [[1]]
         G0, G1, D = parts(cand.abcd)
         out.append(Req(f"(cx+d)² {'+' if sg > 0 else '-'} (ad-bc)", 1, _brem(G0, cand.cp), _brem(G1, cand.cp), D,
                        free=lambda R, parts=parts: tuple(R.reduce(P) for P in parts(R.abcd)), kind=("f'", sg)))
@@ -767,7 +715,7 @@ class _Reduced:
         self.cp_dict, r0 = _dict(self.cp), p.r0
         self.point = Point(number(L * r0.lo) if r0.rational else
                            Algebraic([Fraction(a) for a in self.m], L * r0.lo, L * r0.hi, check=False), False)
-        self.minus_det = self.scaled(_neg(cand.det))
+        self.minus_det = self.scaled(badd([], cand.det, -1))
         F = self.free(cand.word)[-1]
         self.abcd = [F[2][1], F[2][0], F[0][1], F[0][0]] if len(F) == 3 else None
 
@@ -785,8 +733,8 @@ class _Reduced:
                 for i in range(d):
                     c[k - d + i] -= c[k] * self.m[i]
                 c[k] = 0
-            out.append(_trim(c))
-        return _trim(out)
+            out.append(trim(c))
+        return trim(out)
 
     def free(self, word: str) -> list:
         if word not in self.runs:
@@ -796,7 +744,7 @@ class _Reduced:
             for k, letter in enumerate(word):
                 E = max(self.t * j + len(c) - 1 for P in run.q[k] for j, c in enumerate(P) if c)
                 i, q = GAP[letter], [self.scaled(P, E) for P in run.q[k]]
-                F = [tuple(self.reduce(_badd(_bmul(q[i], F[j][h]), _bmul(F[i][h], q[j]), -1)) for h in (0, 1))
+                F = [tuple(self.reduce(badd(bmul(q[i], F[j][h]), bmul(F[i][h], q[j]), -1)) for h in (0, 1))
                      for j in range(g)]
                 F[i] = ([], [])
                 self.runs[word].append(F)
@@ -847,7 +795,7 @@ def _affine(p: Point, cand, k: int, abcd: list, cond, G0, G1, D):
     where d = a and b ≠ 0 (a translation: as an x that is not real, None); where f is the identity
     (every x fixed), the requirement's value if it does not depend on x (G1 = 0), else Undecided."""
     a, b, _, d = abcd
-    if _sign(p, _cond(cand, _badd(d, a, -1)), k) != 0:
+    if _sign(p, _cond(cand, badd(d, a, -1)), k) != 0:
         return _sign(p, cond(), k)
     if _sign(p, _cond(cand, b), k):
         return None

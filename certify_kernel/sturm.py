@@ -3,41 +3,27 @@ interval), over Q with the standard library alone."""
 from __future__ import annotations
 
 from fractions import Fraction
-from math import gcd as igcd
 
-from .poly import deg, derivative, gcd, pseudo_remainder, rat, sign, squarefree, trim, upoly, value
+from .poly import deg, derivative, gcd, integer_primitive, pseudo_remainder, sign, squarefree, trim, value
 
 _SEQ: dict = {}
 _SQF: dict = {}
 
 
-def _primitive_positive(p: list) -> list:
-    """p times a positive rational so that its coefficients are coprime integers (a positive
-    factor changes no sign, so a Sturm sequence stays one)."""
-    den = 1
-    for a in p:
-        den = den * a.denominator // igcd(den, a.denominator)
-    ints = [int(a * den) for a in p]
-    g = 0
-    for a in ints:
-        g = igcd(g, a)
-    return [Fraction(a // g) for a in ints] if g else []
-
-
 def sturm_sequence(p: list) -> list:
     """The Sturm sequence p₀ = p, p₁ = p', p_{k+1} = −rem(p_{k−1}, p_k) (each up to a positive
-    factor).  Sturm's theorem: for p square-free and a < b, the number of roots in ]a, b] is
+    factor: coprime integers).  Sturm's theorem: for p square-free and a < b, the number of roots in ]a, b] is
     V(a) − V(b), V the number of sign changes in the sequence (zeros dropped)."""
     key = tuple(p)
     if key not in _SEQ:
-        seq = [_primitive_positive(p), _primitive_positive(derivative(p))]
+        seq = [integer_primitive(p), integer_primitive(derivative(p))]     # positive multiples
         while seq[-1] and deg(seq[-1]) > 0:
-            a, b = [int(x) for x in seq[-2]], [int(x) for x in seq[-1]]
+            a, b = seq[-2], seq[-1]
             rem = pseudo_remainder(a, b)       # lc(b)^k · rem(a, b), k = deg a − deg b + 1
             if not rem:
                 break
             flip = -1 if b[-1] < 0 and (len(a) - len(b) + 1) % 2 else 1
-            seq.append(_primitive_positive([Fraction(-flip * x) for x in rem]))
+            seq.append(integer_primitive([-flip * x for x in rem]))
         if len(_SEQ) > 5000:
             _SEQ.clear()
         _SEQ[key] = [s for s in seq if s]
@@ -65,7 +51,7 @@ def _int_sign(q: list, a: int, b: int) -> int:
     Σ q_i a^i b^(deg − i), an integer (Horner's rule, homogenised)."""
     v, bp = 0, 1
     for c in reversed(q):
-        v = v * a + int(c) * bp
+        v = v * a + c * bp
         bp *= b
     return sign(v)
 
@@ -99,14 +85,6 @@ class Algebraic:
         self.p, self.lo, self.hi = p, Fraction(lo), Fraction(hi)
         if check:
             self.validate()
-
-    @classmethod
-    def of(cls, data) -> Algebraic:
-        """From JSON: {"poly": [...], "lo": "p/q", "hi": "p/q"}, or a rational "p/q"."""
-        if isinstance(data, (int, str)):
-            q = rat(data)
-            return cls([-q, Fraction(1)], q, q)
-        return cls(upoly(data["poly"]), rat(data["lo"]), rat(data["hi"]))
 
     def validate(self) -> None:
         """p square-free (gcd(p, p') = 1, so Sturm counts each root once) and the interval
