@@ -17,7 +17,7 @@ from fractions import Fraction
 from . import cells
 from .cells import Condition, Undecided
 from .language import parse
-from .poly import d_lambda, resultant_ints, squarefree
+from .poly import d_lambda, madd, mmul, resultant_ints, squarefree
 from .sturm import Algebraic
 from .values import (
     RF,
@@ -475,17 +475,26 @@ FUNCTIONS = {
 
 # --------------------------------------------------------------------- formulas
 
+CONNECTIVES = ("and", "or", "implies", "iff", "not")
+
+
+def connective(t, truth_of) -> bool:
+    """not, and, or, implies, iff from the truths of the operands, left to right (the right one not
+    read when the left decides)."""
+    a = truth_of(t[1])
+    if t[0] == "not":
+        return not a
+    if t[0] == "and" and not a or t[0] == "or" and a or t[0] == "implies" and not a:
+        return t[0] != "and"
+    b = truth_of(t[2])
+    return a == b if t[0] == "iff" else b
+
+
 def truth(t, ctx: Context) -> bool:
     """The truth of a closed formula (no variable left free but in identities)."""
     kind = t[0]
-    if kind in ("and", "or", "implies", "iff"):
-        a = truth(t[1], ctx)
-        if kind == "and" and not a or kind == "or" and a or kind == "implies" and not a:
-            return kind == "or" or kind == "implies"
-        b = truth(t[2], ctx)
-        return {"and": b, "or": b, "implies": b, "iff": a == b}[kind]
-    if kind == "not":
-        return not truth(t[1], ctx)
+    if kind in CONNECTIVES:
+        return connective(t, lambda u: truth(u, ctx))
     if kind == "mod":
         P = value(t[2], ctx)
         var = "λ" if "λ" in P.used() else next(iter(P.used()), "λ")
@@ -726,11 +735,9 @@ def conditions(body, B: Binding, ctx: Context) -> dict:
     out: dict = {}
 
     def walk(t):
-        if t[0] in ("and", "or", "implies", "iff"):
-            walk(t[1])
-            walk(t[2])
-        elif t[0] == "not":
-            walk(t[1])
+        if t[0] in CONNECTIVES:
+            for u in t[1:]:
+                walk(u)
         elif t[0] == "cmp":
             for k, (_op, a, b) in enumerate(zip(t[1], t[2], t[2][1:])):
                 if a[0] == "call" and a[1] in ATOMS:          # nroots(P) = 3: a count of the piece
@@ -783,8 +790,7 @@ def atom_condition(a, b, B: Binding, ctx: Context, sigma) -> Condition:
             else Condition(None, N0, D0)
     if any(any(any(k) for k in e.den) for e in B.mobius):
         raise Undefined("the coefficients a, b, c, d of the Möbius map must be polynomials")
-    a_, b_, c_, d_ = (_in_rl_rf(e) for e in B.mobius)
-    return _with_x(g, a_, b_, c_, d_, sigma, cp)
+    return _with_x(g, [_in_rl(e.num) for e in B.mobius], sigma, cp)
 
 
 def _in_rl(p: dict) -> dict:
@@ -794,35 +800,24 @@ def _in_rl(p: dict) -> dict:
     return {(k[ix[0]], k[ix[1]]): v for k, v in p.items()}
 
 
-def _in_rl_rf(e: RF) -> tuple:
-    return _in_rl(e.num), _in_rl(e.den)
-
-
-def _with_x(g: RF, a, b, c, d, sigma: int, cp) -> Condition:
-    """g(x) at x = (A + σ√Δ)/(2c): with a = a₁/a₂ etc. brought to polynomials (A = a − d over the
-    common denominator), each power of x expanded in Q[r, λ][√Δ] (√Δ² = Δ)."""
-    from .poly import madd, mmul
-    den = mmul(mmul(a[1], b[1]), mmul(c[1], d[1]))
-    a0, b0, c0, d0 = (mmul(e[0], _drop(den, e[1])) for e in (a, b, c, d))
-    A = madd(a0, d0, -1)
-    delta = madd(mmul(A, A), mmul({(0, 0): Fraction(4)}, mmul(b0, c0)))
-    X = (A, {k: sigma * v for k, v in {(0, 0): Fraction(1)}.items()})      # (A + σ√Δ) as (P0, P1)
-    two_c = mmul({(0, 0): Fraction(2)}, c0)
+def _with_x(g: RF, abcd: list, sigma: int, cp) -> Condition:
+    """g(x) at x = (A + σ√Δ)/(2c), A = a − d, Δ = A² + 4bc (a, ..., d polynomials): each power of x
+    expanded in Q[r, λ][√Δ] (√Δ² = Δ) and multiplied by (2c)^deg."""
+    a, b, c, d = abcd
+    A, one, sg = madd(a, d, -1), {(0, 0): Fraction(1)}, {(0, 0): Fraction(sigma)}
+    delta = madd(mmul(A, A), mmul({(0, 0): Fraction(4)}, mmul(b, c)))
+    two_c = mmul({(0, 0): Fraction(2)}, c)
 
     def power_sum(poly: dict):
-        """poly(x)·(2c)^deg as (P0, P1), poly in r, λ, x (x's exponent last)."""
+        """poly(x)·(2c)^deg as (P0, P1), poly in r, λ, x."""
         ix = VARS.index("x")
         deg_x = max((k[ix] for k in poly), default=0)
         P0, P1 = {}, {}
         for k, v in poly.items():
-            e = k[ix]
-            rest = {(k[VARS.index("r")], k[VARS.index("λ")]): v}
-            q0, q1 = {(0, 0): Fraction(1)}, {}
-            for _ in range(e):                      # (q0 + q1√Δ)(A + σ√Δ)
-                q0, q1 = madd(mmul(q0, X[0]), mmul(mmul(q1, delta), {(0, 0): Fraction(sigma)})), \
-                    madd(mmul(q0, {(0, 0): Fraction(sigma)}), mmul(q1, X[0]))
-            scale = {(0, 0): Fraction(1)}
-            for _ in range(deg_x - e):
+            rest, q0, q1, scale = {(k[0], k[1]): v}, one, {}, one
+            for _ in range(k[ix]):                      # (q0 + q1√Δ)(A + σ√Δ)
+                q0, q1 = madd(mmul(q0, A), mmul(mmul(q1, delta), sg)), madd(mmul(q0, sg), mmul(q1, A))
+            for _ in range(deg_x - k[ix]):
                 scale = mmul(scale, two_c)
             P0 = madd(P0, mmul(mmul(rest, q0), scale))
             P1 = madd(P1, mmul(mmul(rest, q1), scale))
@@ -834,31 +829,6 @@ def _with_x(g: RF, a, b, c, d, sigma: int, cp) -> Condition:
     for _ in range(dn - dd):
         D0, D1 = mmul(D0, two_c), mmul(D1, two_c)
     return Condition(cp, N0, D0, N1, D1, delta)
-
-
-def _drop(den: dict, factor: dict) -> dict:
-    """den / factor for den a product that contains factor (exact division of polynomials)."""
-    from .poly import mmul
-    if factor == {(0, 0): Fraction(1)}:
-        return den
-    return _exact_div(den, factor, mmul)
-
-
-def _exact_div(n: dict, d: dict, mmul) -> dict:
-    """n / d when d divides n (polynomials in (r, λ)): long division on the lex order."""
-    from .poly import madd
-    q: dict = {}
-    n = dict(n)
-    lead_d = max(d)
-    while n:
-        lead = max(n)
-        e = tuple(a - b for a, b in zip(lead, lead_d))
-        if any(x < 0 for x in e):
-            raise Undefined("an inexact division")
-        c = n[lead] / d[lead_d]
-        q[e] = c
-        n = madd(n, mmul({e: c}, d), -1)
-    return q
 
 
 def at_point(body, p, B: Binding, ctx: Context, conds: dict) -> bool:
@@ -885,14 +855,8 @@ def _branches(p, B: Binding):
 
 def _truth_at(t, p, k, s, B, ctx, conds) -> bool:
     kind = t[0]
-    if kind in ("and", "or", "implies", "iff"):
-        a = _truth_at(t[1], p, k, s, B, ctx, conds)
-        if kind == "and" and not a or kind == "or" and a or kind == "implies" and not a:
-            return kind in ("or", "implies")
-        b = _truth_at(t[2], p, k, s, B, ctx, conds)
-        return b if kind != "iff" else a == b
-    if kind == "not":
-        return not _truth_at(t[1], p, k, s, B, ctx, conds)
+    if kind in CONNECTIVES:
+        return connective(t, lambda u: _truth_at(u, p, k, s, B, ctx, conds))
     if kind == "cmp":
         for j, op in enumerate(t[1]):
             a = t[2][j]
