@@ -51,7 +51,21 @@ from math import gcd as igcd
 
 from .cells import Condition, Point, Undecided, _between, _OrderKey
 from .evaluate import ATOMS, FUNCTIONS, Matrix, NotVerified, collision, expand_word
-from .poly import add, badd, bderiv, bmul, integer_primitive, mul, squarefree, trim, value
+from .poly import (
+    add,
+    badd,
+    bderiv,
+    bmul,
+    enclose,
+    iadd,
+    imul,
+    in_lambda,
+    integer_primitive,
+    mul,
+    squarefree,
+    trim,
+    value,
+)
 from .poly import gcd as qgcd
 from .sturm import Algebraic
 from .values import RF, Undefined, _root_above, _root_below, number, roots_in, univariate
@@ -538,7 +552,7 @@ def _enclosed(p: Point, cond, k: int):
                     break
                 if dl <= 0:
                     continue
-                N = _iadd(N, _imul(parts["N1"], (_root_below(dl, bits + 32), _root_above(dh, bits + 32))))
+                N = iadd(N, imul(parts["N1"], (_root_below(dl, bits + 32), _root_above(dh, bits + 32))))
             if not (D[0] <= 0 <= D[1] or N[0] <= 0 <= N[1]):
                 memo[(cond.key, k)] = (1 if N[0] > 0 else -1) * (1 if D[0] > 0 else -1)
                 break
@@ -564,7 +578,7 @@ def _lambda_interval(p: Point, cp: dict, k: int, width: Fraction):
         mid = (a + b) / 2
         e = (Fraction(0), Fraction(0))
         for c in reversed(cpl):
-            e = _iadd(_imul(e, (mid, mid)), _ipoly(dict(enumerate(c)), p.r0.lo, p.r0.hi))
+            e = iadd(imul(e, (mid, mid)), enclose(c, p.r0.lo, p.r0.hi))
         sm = 1 if e[0] > 0 else -1 if e[1] < 0 else p._at.at(cpl, mid)
         if sm == 0:
             a = b = mid
@@ -592,47 +606,10 @@ def _narrow(r0, width: Fraction) -> None:
 
 def _box(P, r0, lam: tuple) -> tuple:
     """An enclosure of P(r₀, λ) for r₀ in its interval and λ in lam (P a cells dict, or dense)."""
-    if isinstance(P, dict):
-        rows: dict = {}
-        for (i, j), c in P.items():
-            rows.setdefault(j, {})[i] = c
-        P = [rows.get(j, {}) for j in range(max(rows, default=-1) + 1)]
     out = (Fraction(0), Fraction(0))
-    for c in reversed(P):
-        out = _iadd(_imul(out, lam), _ipoly(c if isinstance(c, dict) else dict(enumerate(c)), r0.lo, r0.hi))
+    for c in reversed(in_lambda(P) if isinstance(P, dict) else P):
+        out = iadd(imul(out, lam), enclose(c, r0.lo, r0.hi))
     return out
-
-
-def _ipoly(c: dict, lo: Fraction, hi: Fraction) -> tuple:
-    """An enclosure of Σ c_i r^i over [lo, hi] ⊆ [X - W, X + W]/S (dyadic, S = 2^(bits+1) finer than
-    the interval): the value at the centre ± Σ i|c_i|(|X| + W)^(i-1)·W (the mean value theorem), in
-    integers (homogeneous Horner)."""
-    if not c:
-        return Fraction(0), Fraction(0)
-    w, den = hi - lo, 1
-    bits = max(64, w.denominator.bit_length() - w.numerator.bit_length() + 32) if w else 64
-    for a in c.values():
-        den = den * Fraction(a).denominator // igcd(den, Fraction(a).denominator)
-    ints = {i: int(Fraction(a) * den) for i, a in c.items()}
-    n, S = max(ints), 1 << (bits + 1)
-    lo2, hi2 = (lo.numerator << bits) // lo.denominator, -((-hi.numerator << bits) // hi.denominator)
-    X, W = lo2 + hi2, hi2 - lo2
-    M, val, err, Sk = abs(X) + W, ints.get(n, 0), n * abs(ints.get(n, 0)), S
-    for i in range(n - 1, -1, -1):
-        val = val * X + ints.get(i, 0) * Sk
-        err = err * M + i * abs(ints.get(i, 0)) * Sk if i else err
-        Sk *= S
-    q = den * S ** n
-    return Fraction(val - err * W, q), Fraction(val + err * W, q)
-
-
-def _imul(a: tuple, b: tuple) -> tuple:
-    ps = (a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1])
-    return min(ps), max(ps)
-
-
-def _iadd(a: tuple, b: tuple, c: int = 1) -> tuple:
-    return (a[0] + c * b[0], a[1] + c * b[1]) if c > 0 else (a[0] - b[1], a[1] - b[0])
 
 
 def _ball_sign(p: Point, req: Req, cand, k: int, s: int):
@@ -646,14 +623,14 @@ def _ball_sign(p: Point, req: Req, cand, k: int, s: int):
         if end is None:
             continue
         (d, c), _, (b, a) = end[-1]
-        A = _iadd(a, d, -1)
-        dl, dh = _iadd(_imul(A, A), _imul((4, 4), _imul(b, c)))
+        A = iadd(a, d, -1)
+        dl, dh = iadd(imul(A, A), imul((4, 4), imul(b, c)))
         if dh < 0:
             return None
         if dl <= 0 or c[0] <= 0 <= c[1]:
             return 0
         root = (_root_below(dl, bits), _root_above(dh, bits))
-        x = _imul(_iadd(A, root if s > 0 else (-root[1], -root[0])), (1 / (2 * c[1]), 1 / (2 * c[0])))
+        x = imul(iadd(A, root if s > 0 else (-root[1], -root[0])), (1 / (2 * c[1]), 1 / (2 * c[0])))
         if req.kind[0] == "x":
             g = x
         elif req.kind[0] == "p":
@@ -661,10 +638,10 @@ def _ball_sign(p: Point, req: Req, cand, k: int, s: int):
             if at is None:
                 continue
             G0, G1 = at[req.kind[2]][req.kind[3]]
-            g = _iadd(G0, _imul(x, G1))
+            g = iadd(G0, imul(x, G1))
         else:
-            cx_d = _iadd(_imul(c, x), d)
-            g = _iadd(_imul(cx_d, cx_d), _imul((req.kind[1],) * 2, _iadd(_imul(a, d), _imul(b, c), -1)))
+            cx_d = iadd(imul(c, x), d)
+            g = iadd(imul(cx_d, cx_d), imul((req.kind[1],) * 2, iadd(imul(a, d), imul(b, c), -1)))
         if g[0] > 0 or g[1] < 0:
             return 1 if g[0] > 0 else -1
     return 0
@@ -686,8 +663,8 @@ def _balls(cand, p: Point, k: int, word: str, width: Fraction):
                 if q[i][0] <= 0 <= q[i][1]:
                     out = None
                     break
-                t = [_imul(P[i][h], (1 / q[i][1], 1 / q[i][0])) for h in (0, 1)]
-                P = [tuple(_iadd(P[j][h], _imul(t[h], q[j]), -1) for h in (0, 1)) for j in range(3)]
+                t = [imul(P[i][h], (1 / q[i][1], 1 / q[i][0])) for h in (0, 1)]
+                P = [tuple(iadd(P[j][h], imul(t[h], q[j]), -1) for h in (0, 1)) for j in range(3)]
                 P[i] = (zero, zero)
                 out.append(P)
         memo[(id(cand), k, word, width)] = out

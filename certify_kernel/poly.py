@@ -319,3 +319,39 @@ def resultant_in(p: dict, q: dict) -> list:
             _RESULTANTS.clear()
         _RESULTANTS[key] = [Fraction(c) for c in integer_primitive(resultant_ints(p, q)[0])]
     return _RESULTANTS[key]
+
+
+# --- interval arithmetic: (lo, hi) pairs of rationals --------------------------------
+
+def enclose(c: list, lo: Fraction, hi: Fraction) -> tuple:
+    """An enclosure of Σ c_i x^i over [lo, hi] ⊆ [X − W, X + W]/S (dyadic, S = 2^(bits+1) finer than
+    the interval): the value at the centre ± Σ i|c_i|(|X| + W)^(i−1)·W (the mean value theorem), in
+    integers (homogeneous Horner)."""
+    if not c:
+        return Fraction(0), Fraction(0)
+    w, den = hi - lo, 1
+    bits = max(64, w.denominator.bit_length() - w.numerator.bit_length() + 32) if w else 64
+    for a in c:
+        den = den * Fraction(a).denominator // igcd(den, Fraction(a).denominator)
+    ints = [int(Fraction(a) * den) for a in c]
+    n, S = len(c) - 1, 1 << (bits + 1)
+    lo2, hi2 = (lo.numerator << bits) // lo.denominator, -((-hi.numerator << bits) // hi.denominator)
+    X, W = lo2 + hi2, hi2 - lo2
+    M, val, err, Sk = abs(X) + W, ints[n], n * abs(ints[n]), S
+    for i in range(n - 1, -1, -1):
+        val = val * X + ints[i] * Sk
+        err = err * M + i * abs(ints[i]) * Sk if i else err
+        Sk *= S
+    q = den * S ** n
+    return Fraction(val - err * W, q), Fraction(val + err * W, q)
+
+
+def imul(a: tuple, b: tuple) -> tuple:
+    """The product of two intervals."""
+    ps = (a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1])
+    return min(ps), max(ps)
+
+
+def iadd(a: tuple, b: tuple, c: int = 1) -> tuple:
+    """a + b (c = 1) or a − b (c = −1)."""
+    return (a[0] + c * b[0], a[1] + c * b[1]) if c > 0 else (a[0] - b[1], a[1] - b[0])

@@ -7,16 +7,17 @@ from fractions import Fraction
 from .poly import deg, derivative, gcd, integer_primitive, pseudo_remainder, sign, squarefree, trim, value
 
 _SEQ: dict = {}
-_SQF: dict = {}
 
 
 def sturm_sequence(p: list) -> list:
-    """The Sturm sequence p₀ = p, p₁ = p', p_{k+1} = −rem(p_{k−1}, p_k) (each up to a positive
-    factor: coprime integers).  Sturm's theorem: for p square-free and a < b, the number of roots in ]a, b] is
-    V(a) − V(b), V the number of sign changes in the sequence (zeros dropped)."""
+    """The Sturm sequence of p's square-free part s (the same distinct roots): s₀ = s, s₁ = s',
+    s_{k+1} = −rem(s_{k−1}, s_k), each up to a positive factor (coprime integers).  Sturm's
+    theorem: for a < b the number of roots of s in ]a, b] is V(a) − V(b), V the number of sign
+    changes in the sequence (zeros dropped)."""
     key = tuple(p)
     if key not in _SEQ:
-        seq = [integer_primitive(p), integer_primitive(derivative(p))]     # positive multiples
+        p = squarefree(p)
+        seq = [integer_primitive(p), integer_primitive(derivative(p))]
         while seq[-1] and deg(seq[-1]) > 0:
             a, b = seq[-2], seq[-1]
             rem = pseudo_remainder(a, b)       # lc(b)^k · rem(a, b), k = deg a − deg b + 1
@@ -30,51 +31,35 @@ def sturm_sequence(p: list) -> list:
     return _SEQ[key]
 
 
-def _changes(signs: list) -> int:
+def changes(signs) -> int:
+    """The sign changes of a sequence of signs, zeros dropped."""
     signs = [s for s in signs if s]
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
 
 def variations(seq: list, x) -> int:
-    """V(x): sign changes of the sequence at x; x None for +∞, "-inf" for −∞ (there the sign
-    of a polynomial is that of its leading term)."""
-    if x is None:
-        return _changes([sign(q[-1]) for q in seq])
-    if x == "-inf":
-        return _changes([sign(q[-1]) * (-1) ** deg(q) for q in seq])
-    x = Fraction(x)
-    return _changes([_int_sign(q, x.numerator, x.denominator) for q in seq])
-
-
-def _int_sign(q: list, a: int, b: int) -> int:
-    """sign q(a/b) for q with integer coefficients, b > 0: the sign of b^deg·q(a/b) =
-    Σ q_i a^i b^(deg − i), an integer (Horner's rule, homogenised)."""
-    v, bp = 0, 1
-    for c in reversed(q):
-        v = v * a + c * bp
-        bp *= b
-    return sign(v)
+    """V(x) for a sequence of integer polynomials; x None for +∞, "-inf" for −∞ (the sign of a
+    polynomial there is that of its leading term).  At x = a/b (b > 0) the sign of q(x) is that of
+    the integer b^deg·q(a/b) = Σ q_i a^i b^(deg − i) (Horner's rule, homogenised)."""
+    if x is None or x == "-inf":
+        return changes(sign(q[-1]) * (-1 if x and len(q) % 2 == 0 else 1) for q in seq)
+    x, signs = Fraction(x), []
+    for q in seq:
+        v, bp = 0, 1
+        for c in reversed(q):
+            v, bp = v * x.numerator + c * bp, bp * x.denominator
+        signs.append(sign(v))
+    return changes(signs)
 
 
 def count(p: list, a=None, b=None) -> int:
-    """The number of distinct real roots of p in ]a, b] (None: −∞ or +∞), by Sturm's theorem
-    applied to the square-free part of p (which has the same distinct roots)."""
+    """The number of distinct real roots of p in ]a, b] (None: −∞ or +∞), by Sturm's theorem."""
     if not p:
         raise ValueError("the zero polynomial has every number as a root")
     if deg(p) == 0:
         return 0
-    key = tuple(p)
-    if key not in _SQF:
-        if len(_SQF) > 5000:
-            _SQF.clear()
-        _SQF[key] = sturm_sequence(squarefree(p))
-    seq = _SQF[key]
+    seq = sturm_sequence(p)
     return variations(seq, "-inf" if a is None else a) - variations(seq, b)
-
-
-def cauchy_bound(p: list) -> Fraction:
-    """1 + max |a_i / a_n|: every complex root of p has a smaller modulus (Cauchy)."""
-    return 1 + max((abs(a / p[-1]) for a in p[:-1]), default=Fraction(0))
 
 
 class Algebraic:
@@ -183,21 +168,19 @@ class Algebraic:
 
 def real_roots(p: list) -> list:
     """The distinct real roots of p, largest first, as isolated algebraic numbers: bisection of
-    ]−B, B] (B Cauchy's bound) until each piece holds one root, by Sturm counts."""
+    ]−B, B] until each piece holds one root, by Sturm counts; B = 1 + max |p_i / p_n| bounds the
+    modulus of every complex root (Cauchy)."""
     p = squarefree(trim(p))
     if deg(p) < 1:
         return []
-    B = cauchy_bound(p)
+    B = 1 + max((abs(a / p[-1]) for a in p[:-1]), default=Fraction(0))
     out, todo = [], [(-B, B, count(p, -B, B))]
     while todo:
         lo, hi, n = todo.pop()
         if n == 0:
             continue
         if n == 1:
-            if value(p, hi) == 0:
-                out.append(Algebraic(p, hi, hi, check=False))
-            else:
-                out.append(Algebraic(p, lo, hi, check=False))
+            out.append(Algebraic(p, hi if value(p, hi) == 0 else lo, hi, check=False))
             continue
         mid = (lo + hi) / 2
         left = count(p, lo, mid)
