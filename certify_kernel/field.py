@@ -5,10 +5,9 @@ in λ are lists of polynomials in r (lowest degree first, both ways)."""
 from __future__ import annotations
 
 from fractions import Fraction
-from math import gcd as igcd
 
-from .poly import add, bderiv, bmul, divmod_, gcd, integer_primitive, mul, scale, sign, sub, value
-from .sturm import Algebraic, count
+from .poly import add, bderiv, bmul, divmod_, enclose, gcd, integer_primitive, mul, scale, sign, sub, value
+from .sturm import Algebraic, changes, count
 
 
 class AtR0:
@@ -25,15 +24,15 @@ class AtR0:
 
     def sign(self, c: list) -> int:
         """sign c(r0).  0 exactly when gcd(c, m) has a root in r0's interval (the one root of m
-        there is r0).  Else that at the middle of the interval, once :func:`_enclose` proves it
-        (true after enough bisections, as c(r0) ≠ 0)."""
+        there is r0).  Else that of an enclosure of c on the interval (:func:`poly.enclose`) without
+        0 (there is one after enough bisections, as c(r0) ≠ 0)."""
         c, r0, tested = self.reduce(c), self.r0, False
         while c:
             if r0.rational:
                 return sign(value(c, r0.lo))
-            s = _enclose(c, r0.lo, r0.hi)
-            if s:
-                return s
+            lo, hi = enclose(c, r0.lo, r0.hi)
+            if lo > 0 or hi < 0:
+                return 1 if lo > 0 else -1
             if not tested:
                 g, tested = gcd(c, r0.p), True
                 if len(g) > 1 and count(g, r0.lo, r0.hi) == 1:
@@ -76,9 +75,8 @@ class AtR0:
     def variations(self, seq: list, x) -> int:
         """Sign changes of the sequence at λ = x (rational), or at ±∞ ("+inf", "-inf": the signs
         of the leading terms), zeros dropped."""
-        signs = [s for s in (self.sign(P[-1]) * (-1 if x == "-inf" and len(P) % 2 == 0 else 1) if isinstance(x, str)
-                             else self.at(P, x) for P in seq) if s]
-        return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
+        return changes(self.sign(P[-1]) * (-1 if x == "-inf" and len(P) % 2 == 0 else 1) if isinstance(x, str)
+                       else self.at(P, x) for P in seq)
 
     def taq(self, Q: list, P: list, a, b, seq=None) -> int:
         """Σ sign Q(r0, λ) over the distinct roots λ of P(r0, λ) in ]a, b[ (a, b rational or
@@ -134,22 +132,6 @@ class AtR0:
                 D, k = bderiv(D), k + 1
             mult += [iv] * k
         return mult
-
-
-def _enclose(c: list, lo: Fraction, hi: Fraction) -> int:
-    """The sign of c ∈ Q[r] on [lo, hi] when it is that at the centre x: |c(x)| > w·Σ k|c_k|M^(k−1)
-    (w the half-width, M = |x| + w), a bound of |c − c(x)| there (the mean value theorem); else
-    0.  In integers: times d·D^n > 0 (x = X/D, w = W/D, d the common denominator of c)."""
-    x, w = (lo + hi) / 2, (hi - lo) / 2
-    D = d = x.denominator * w.denominator // igcd(x.denominator, w.denominator)
-    X, W = int(x * D), int(w * D)
-    for q in c:
-        d = d * q.denominator // igcd(d, q.denominator)
-    val = bound = 0
-    for k, q in enumerate(c):
-        val += int(q * d) * X ** k * D ** (len(c) - 1 - k)
-        bound += k * abs(int(q * d)) * (abs(X) + W) ** (k - 1) * W * D ** (len(c) - 1 - k) if k else 0
-    return (1 if val > 0 else -1) if abs(val) > bound else 0
 
 
 def _positive_content_free(P: list) -> list:
