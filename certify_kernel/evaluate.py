@@ -307,7 +307,7 @@ def value(t, ctx: Context):
             raise Undefined(f"{t[1]}() is not a function of the language")
         return f(ctx, *t[2])
     if kind == "finite":
-        pts = sorted((number(value(x, ctx)) for x in t[1]), key=cells._OrderKey)
+        pts = sorted((number(value(x, ctx)) for x in t[1]), key=cells.ORDER)
         return RSet([(a, a, True, True) for a in pts])
     if kind == "setof":
         return setof(t, ctx)

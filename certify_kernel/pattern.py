@@ -49,7 +49,7 @@ from functools import cached_property
 from math import ceil
 from math import gcd as igcd
 
-from .cells import Condition, Point, Undecided, _between, _OrderKey
+from .cells import ORDER, Condition, Point, Undecided, _between, cut_points
 from .evaluate import ATOMS, FUNCTIONS, Matrix, NotVerified, collision, expand_word
 from .poly import (
     add,
@@ -68,7 +68,7 @@ from .poly import (
 )
 from .poly import gcd as qgcd
 from .sturm import Algebraic
-from .values import RF, Undefined, _root_above, _root_below, number, roots_in, univariate
+from .values import RF, Undefined, _root_above, _root_below, number, univariate
 
 LONGEST = 20               # words of more collisions are not analysed (the kernel's time budget)
 LARGEST = 40               # a cut polynomial left unsplit of larger degree is not isolated (Sturm is slow)
@@ -478,44 +478,34 @@ def learn(factors) -> None:
     """Add a witness's factors to the base (each is used only through exact divisions)."""
     known = {tuple(f) for f, _ in BASE}
     for f in factors:
-        f = [int(a) for a in integer_primitive([Fraction(a) for a in f])]
+        f = integer_primitive([Fraction(a) for a in f])
         if len(f) > 1 and tuple(f) not in known:
             known.add(tuple(f))
-            BASE.append((f, sum(a << i for i, a in enumerate(f))))
+            BASE.append((f, value(f, 2)))
 
 
 def _factors(p: list) -> list:
     """p = Π f^e · rest, the f from the base (exact divisions; f(2) | p(2) first): [(f, e)] and (the
     square-free part of rest, 1 if rest is square-free, else 2)."""
-    p = [int(a) for a in integer_primitive(p)] if p else []
+    p = integer_primitive(p)
     if len(p) < 2:
         return []
-    out, at2 = [], sum(a << i for i, a in enumerate(p))
+    out, at2 = [], value(p, 2)
     for f, f2 in BASE:
         e = 0
         while len(p) >= len(f) and (f2 == 0 or at2 % f2 == 0):
             q = _exact(p, f)
             if q is None:
                 break
-            p, at2, e = q, sum(a << i for i, a in enumerate(q)), e + 1
+            p, at2, e = q, value(q, 2), e + 1
         if e:
             out.append((f, e))
     if len(p) > 1:
         sq = squarefree([Fraction(a) for a in p])
         if len(sq) - 1 > LARGEST:
             raise NotVerified(f"a cut polynomial of degree {len(sq) - 1} that the witness's factors do not split")
-        out.append(([int(a) for a in integer_primitive(sq)], 1 if len(sq) == len(p) else 2))
+        out.append((integer_primitive(sq), 1 if len(sq) == len(p) else 2))
     return out
-
-
-def _cuts(cond: _Cond, lo, hi) -> list:
-    """The roots in ]lo, hi[ of the condition's cut factors, increasing, each once, with its factor."""
-    pts: list = []
-    for f in cond.cuts():
-        for a in roots_in([Fraction(x) for x in f], lo, hi):
-            if not any(a.compare(b) == 0 for b, _ in pts):
-                pts.append((a, f))
-    return sorted(pts, key=lambda e: _OrderKey(e[0]))
 
 
 # ----------------------------------------------------------------- signs at a piece
@@ -576,9 +566,7 @@ def _lambda_interval(p: Point, cp: dict, k: int, width: Fraction):
     _narrow(p.r0, width ** 2)
     while b - a > width:
         mid = (a + b) / 2
-        e = (Fraction(0), Fraction(0))
-        for c in reversed(cpl):
-            e = iadd(imul(e, (mid, mid)), enclose(c, p.r0.lo, p.r0.hi))
+        e = _box(cpl, p.r0, (mid, mid))
         sm = 1 if e[0] > 0 else -1 if e[1] < 0 else p._at.at(cpl, mid)
         if sm == 0:
             a = b = mid
@@ -820,7 +808,7 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
     points: dict = cand.__dict__.setdefault("points", {})
     sigmas = (1, -1) if len(cand.q0) == 3 else (None,)
     if regions is None:
-        ends = [zero] + [a for a, _ in _cuts(_cond(cand, [[1]]), zero, one)] + [one]
+        ends = [zero] + [a for a, _ in cut_points(_cond(cand, [[1]]).cuts(), zero, one)] + [one]
         found: dict = {}
         for a, b in zip(ends, ends[1:]):
             for piece in [(a, b)] + ([(b, b)] if b is not one else []):
@@ -834,10 +822,10 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
         live = [pc for R in regions for pc in R.pieces + R.undecided]
         if not live:
             break
-        lo = min((pc[0] for pc in live), key=_OrderKey)
-        hi = max((pc[1] for pc in live), key=_OrderKey)
+        lo = min((pc[0] for pc in live), key=ORDER)
+        hi = max((pc[1] for pc in live), key=ORDER)
         cond = req.cond(cand, sigmas[0])
-        cuts = _cuts(cond, lo, hi) if lo.compare(hi) < 0 else []
+        cuts = cut_points(cond.cuts(), lo, hi) if lo.compare(hi) < 0 else []
         at = _Reader(req, cand, stage, cond, lo, hi, cuts, points)
         split: dict = {}
         for R in regions:
