@@ -12,12 +12,15 @@ of r by a cylindrical decomposition (:mod:`certify_kernel.cells`); over several 
 """
 from __future__ import annotations
 
+import re
 from fractions import Fraction
+from functools import cache
 
 from . import cells
 from .cells import Condition, Undecided
 from .language import parse
 from .poly import d_lambda, madd, mmul, resultant_ints, squarefree
+from .poly import value as at
 from .sturm import Algebraic
 from .values import (
     RF,
@@ -83,11 +86,8 @@ class RSet:
 
 def order(a, b) -> int:
     """sign(a − b) for algebraic numbers and ∓∞."""
-    if a in (NEG, POS) or b in (NEG, POS):
-        ra, rb = ({NEG: -1, POS: 1}.get(a, 0) if isinstance(a, str) else 0), \
-            ({NEG: -1, POS: 1}.get(b, 0) if isinstance(b, str) else 0)
-        return (ra > rb) - (ra < rb)
-    return number(a).compare(number(b))
+    ra, rb = ({NEG: -1, POS: 1}.get(x, 0) if isinstance(x, str) else 0 for x in (a, b))
+    return (ra > rb) - (ra < rb) if ra or rb else number(a).compare(number(b))
 
 
 def merge(parts: list) -> list:
@@ -131,6 +131,12 @@ def collision(pair: int) -> Matrix:
     return Matrix([[cols[k][i] for k in range(3)] for i in range(3)])
 
 
+@cache
+def collisions_at(r0: Fraction) -> list:
+    """The entries of A, B, C at r = r₀ (rationals)."""
+    return [[[at(univariate(e), r0) for e in row] for row in collision(k).rows] for k in range(3)]
+
+
 def word_matrix(word: str) -> Matrix:
     """M_w = K_{c_n} ··· K_{c_1}: the velocities after the collisions of w, in time order."""
     M = identity(3)
@@ -142,31 +148,13 @@ def word_matrix(word: str) -> Matrix:
 
 
 def expand_word(text: str) -> str:
-    """A word as printed: letters, (...)^n repeated n times."""
-    out, k = _word(text.replace(" ", ""), 0)
-    if k != len(text.replace(" ", "")):
-        raise Undefined(f"not a word: {text!r}")
-    return out
-
-
-def _word(t: str, k: int) -> tuple[str, int]:
-    out = ""
-    while k < len(t) and t[k] != ")":
-        if t[k] == "(":
-            inner, k = _word(t, k + 1)
-            if k >= len(t) or t[k] != ")":
-                raise Undefined(f"unbalanced parenthesis in {t!r}")
-            k += 1
-            n = 1
-            if k < len(t) and t[k] == "^":
-                j = k + 1
-                while j < len(t) and t[j].isdigit():
-                    j += 1
-                n, k = int(t[k + 1:j]), j
-            out += inner * n
-        else:
-            out, k = out + t[k], k + 1
-    return out, k
+    """A word as printed: letters, (...)^n repeated n times (the innermost parentheses first)."""
+    w = text.replace(" ", "")
+    while "(" in w or ")" in w:
+        w, n = re.subn(r"\(([^()]*)\)(?:\^(\d+))?", lambda m: m[1] * int(m[2] or 1), w)
+        if not n:
+            raise Undefined(f"not a word: {text!r}")
+    return w
 
 
 def identity(n: int) -> Matrix:
@@ -452,6 +440,16 @@ def _squarefree(ctx, P) -> RF:
     return RF({(k,) + (0,) * (len(VARS) - 1): c for k, c in enumerate(squarefree(p)) if c})
 
 
+def _end(which: int):
+    """sup (which = 1) or inf (0) of a bounded non-empty set."""
+    def f(ctx, S):
+        parts = as_set(value(S, ctx)).parts
+        if not parts or parts[-which][which] in (NEG, POS):
+            raise Undefined(f"the {('infimum', 'supremum')[which]} of an empty or unbounded set")
+        return parts[-which][which]
+    return f
+
+
 FUNCTIONS = {
     "word": lambda ctx, w: word_matrix(_word_arg(w)),
     "det": lambda ctx, M: det(value(M, ctx)),
@@ -466,7 +464,7 @@ FUNCTIONS = {
     "dot": lambda ctx, u, v: dot(value(u, ctx), value(v, ctx)),
     "roots": _roots, "root": _root, "count": _count,
     "cos": _trig("cos"), "sin": _trig("sin"), "tan": _trig("tan"),
-    "sup": lambda ctx, S: _sup(ctx, S), "inf": lambda ctx, S: _inf(ctx, S),
+    "sup": _end(1), "inf": _end(0),
     "deg": lambda ctx, P: RF.const(len(_poly_r(value(P, ctx))) - 1),
     "numerator": lambda ctx, E: RF(value(E, ctx).num),
     "denominator": lambda ctx, E: RF(value(E, ctx).den),
@@ -566,27 +564,23 @@ def equal(a, b) -> bool:
 def proportional(a, b) -> bool:
     """a ~ b: a = k·b for a non-zero constant k (polynomials, or vectors entry by entry)."""
     a, b = (a if isinstance(a, tuple) else (a,)), (b if isinstance(b, tuple) else (b,))
-    pairs = [(x, y) for x, y in zip(a, b)]
     if len(a) != len(b):
         return False
     k = None
-    for x, y in pairs:
+    for x, y in zip(a, b):
         if y.is_zero() or x.is_zero():
             if not (x.is_zero() and y.is_zero()):
                 return False
             continue
         ratio = x / y
         c = ratio.constant()
-        if c is None:
-            num = ratio.num
-            terms = list(num.items())
-            c = terms[0][1] / next(iter(ratio.den.values())) if terms else None
+        if c is None:                 # a constant ratio not in lowest terms: its first coefficient, checked
+            c = next(iter(ratio.num.values())) / next(iter(ratio.den.values())) if ratio.num else None
             if c is None or not ratio.same(RF.const(c)):
                 return False
-        if k is None:
-            k = c
-        elif k != c:
+        if k is not None and k != c:
             return False
+        k = c
     return k is not None
 
 
@@ -615,20 +609,6 @@ def as_set(x) -> RSet:
         return RSet([(x.lo, x.hi, x.lo_closed, x.hi_closed)])
     a = number(x)
     return RSet([(a, a, True, True)])
-
-
-def _sup(ctx, S):
-    parts = as_set(value(S, ctx)).parts
-    if not parts or parts[-1][1] in (NEG, POS):
-        raise Undefined("the supremum of an empty or unbounded set")
-    return parts[-1][1]
-
-
-def _inf(ctx, S):
-    parts = as_set(value(S, ctx)).parts
-    if not parts or parts[0][0] in (NEG, POS):
-        raise Undefined("the infimum of an empty or unbounded set")
-    return parts[0][0]
 
 
 # --------------------------------------------------------------------- binders

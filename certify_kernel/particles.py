@@ -32,11 +32,10 @@ from __future__ import annotations
 from fractions import Fraction
 
 from .cells import _surd_sign
-from .evaluate import FUNCTIONS, PREDICATES, NotVerified, Undefined, bind, collision, expand_word, value
+from .evaluate import FUNCTIONS, PREDICATES, NotVerified, Undefined, bind, collisions_at, expand_word, value
 from .poly import add, at_r, deg, divmod_, mul, scale, sub, trim
-from .poly import value as at
 from .sturm import Algebraic, real_roots
-from .values import RF, VARS, univariate
+from .values import RF, VARS
 
 
 class Field:
@@ -122,7 +121,7 @@ class Datum:
 
     def __init__(self, F: Field, lam: Num, p: tuple, q: tuple, r0: Fraction):
         self.F, self.lam, self.r0 = F, lam, r0
-        self.K = [[[_at_r(e, r0) for e in row] for row in collision(k).rows] for k in range(3)]
+        self.K = collisions_at(r0)
         self.states, self.word, self.stop = [(p, q)], "", ""
 
     def run(self, n: int, pattern: str = "") -> None:
@@ -148,10 +147,6 @@ class Datum:
             q = tuple(sum((q[j] * c for j, c in enumerate(self.K[first][i]) if c), Num(self.F, [])) for i in range(3))
             self.states.append((p, q))
             self.word += "abc"[first]
-
-
-def _at_r(e: RF, r0: Fraction) -> Fraction:
-    return at(univariate(e, "r"), r0)
 
 
 def _rf_at(e: RF, r0: Fraction, nums: dict, F: Field) -> Num:

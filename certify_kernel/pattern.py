@@ -1,46 +1,42 @@
 """The self-similar candidate of a periodic collision word and where it realises the word (l. 265-321,
-441-516; the literature, l. 130-132, 1099-1130), decided exactly: the atoms datum, feasible, stable,
-realises, next and the functions eigenvector, posmap of the statement language (docs/statements.md;
-the atom "datum" is named selfsimilar there).
+441-516; the literature, l. 130-132, 1099-1130): the atoms selfsimilar, feasible, stable, realises,
+next and the functions eigenvector, posmap of the statement language (docs/statements.md).
 
 The candidate.  A word w = c_1 ··· c_n (four particles: a, b, c, the pairs 1-2, 2-3, 3-4; three
 particles: a, b; the symmetric system p_1 = p_3, q_1 = q_3 of l. 132: [ac], b) starts with the
-first gap's collision and ends with b (the normalisation of l. 270-280).  M_w = K_{c_n} ··· K_{c_1},
-the K the kernel's collision matrices (:func:`evaluate.collision`; three particles: the leading 2×2
-blocks of A and B, which do not read q_3; the symmetric system: A·C and B on (q_1, q_2, q_1)).  On a
-real eigenvalue λ of M_w (a branch, the largest first): q(0) = (-1, u[, v]) solving rows 1 and 2 of
-(M_w - λ) q = 0 by Cramer (l. 366; where that is 0/0, rows 1 and 3, then 2 and 3), p(0) = (1, 0[, x]),
-the collisions *assumed* (l. 460-463): at collision k, of gap i, p(t_k) = p(t_{k-1}) - (p_i/q_i)
-q(t_{k-1}), q(t_k) = K q(t_{k-1}).  Then p_2(t_n) = 0 and p_3/p_1 = f(x) = (ax + b)/(cx + d), x a
-fixed point x± = (a - d ± √Δ)/(2c), Δ = (a - d)² + 4bc (where c = 0, f is affine: x = b/(d - a)).
+first gap's collision and ends with b (l. 270-280).  M_w = K_{c_n} ··· K_{c_1}, the K the kernel's
+collision matrices (three particles: the leading 2×2 blocks of A and B, which do not read q_3; the
+symmetric system: A·C and B on (q_1, q_2, q_1)).  On a real eigenvalue λ of M_w (a branch, the
+largest first): q(0) = (-1, u[, v]) solving rows 1 and 2 of (M_w - λ) q = 0 by Cramer (l. 366;
+where that is 0/0, rows 1 and 3, then 2 and 3), p(0) = (1, 0[, x]), the collisions *assumed*
+(l. 460-463): at collision k, of gap i, p(t_k) = p(t_{k-1}) - (p_i/q_i) q(t_{k-1}), q(t_k) =
+K q(t_{k-1}).  Then p_2(t_n) = 0 and p_3/p_1 = f(x) = (ax + b)/(cx + d), x a fixed point
+x± = (a - d ± √Δ)/(2c), Δ = (a - d)² + 4bc (where c = 0, f is affine: x = b/(d - a)).
 
-What is decided.  The candidate *realises* a word v (its first |v| collisions, strictly) iff u > 0
-(p_2 opens after the b before t = 0), x > 0, at each collision k of gap i the pair approaches,
-q_i(t_{k-1}) < 0, and its gap is open, p_i(t_{k-1}) > 0 (automatic for k = 1 and when the pair
-collided at k - 2), and every gap that does not collide at the last two collisions is open at the
-end.  Enough: a collision b adds (1+r)/2·q_2 < 0 to q_1 and q_3, a or c adds (1+r)/2·q_1 or
-(1+r)/2·q_3 < 0 to q_2 ([ac]: (1+r)q_1), so each gap is concave between two collisions of its own
-pair, positive inside when positive at both ends: no other pair collides first, no triple
-collision (l. 478-480, for every gap).  *datum* (self-similar data exist): λ > 0, u > 0, x real
-and > 0; *feasible*: λ > 0 and the candidate realises w; *stable*: moreover λ strictly dominant
-(|μ| < λ for the other eigenvalues: with Q = cp/(Λ - λ), Q(λ) = cp'(λ) > 0, Q(-λ) > 0 and, for a
-cubic, μν = det M/λ < λ²: Schur-Cohn) and the fixed point attracting, |f'(x)| < 1, i.e.
-(cx + d)² ∓ (ad - bc) > 0, (cx + d)² = c(a + d)x + bc + d² at a fixed point.  Each atom holds at r
-when it holds on some branch and fixed point (next: on every one where the candidate realises v).
+What is decided.  The candidate *realises* a word v (its first |v| collisions, strictly) iff u > 0,
+x > 0, at each collision k of gap i q_i(t_{k-1}) < 0 and p_i(t_{k-1}) > 0 (automatic for k = 1 and
+when the pair collided at k - 2), and every gap that does not collide at the last two collisions is
+open at the end.  Enough: a collision b adds (1+r)/2·q_2 < 0 to q_1 and q_3, a or c adds
+(1+r)/2·q_1 or (1+r)/2·q_3 < 0 to q_2 ([ac]: (1+r)q_1), so each gap is concave between two
+collisions of its own pair, positive inside when positive at both ends: no other pair collides
+first, no triple collision (l. 478-480).  *selfsimilar*: λ > 0, u > 0, x real and > 0; *feasible*:
+λ > 0 and the candidate realises w; *stable*: moreover λ strictly dominant (|μ| < λ for the other
+eigenvalues: with Q = cp/(Λ - λ), Q(λ) = cp'(λ) > 0, Q(-λ) > 0 and, for a cubic, μν = det M/λ < λ²:
+Schur-Cohn) and the fixed point attracting, |f'(x)| < 1, i.e. (cx + d)² ∓ (ad - bc) > 0, (cx + d)² =
+c(a + d)x + bc + d² at a fixed point.  Each atom holds at r when it holds on some branch and fixed
+point (next: on every one where the candidate realises v).
 
-How.  With K' = 2K (integer matrices), M' = 2ⁿM_w and Λ = 2ⁿλ, cp = det(Λ - M') is monic in Λ over
-Z[r].  Every quantity is an element of Z[r][Λ]/(cp) over a denominator in r alone, (c₀ + c₁Λ +
-c₂Λ²)/δ(r), the parts divided by their gcd; its value on a branch is the quantity's wherever
-δ(r₀) ≠ 0 (cp monic: the identities hold in Z[r][Λ]/(cp)).  Each requirement is imposed where the
-previous ones hold, per branch and fixed point (a *region*), by a decomposition of r
+How.  With K' = 2K, M' = 2ⁿM_w and Λ = 2ⁿλ, cp = det(Λ - M') is monic in Λ over Z[r].  Every
+quantity is an element (c₀ + c₁Λ + c₂Λ²)/δ(r) of Z[r][Λ]/(cp) over a denominator in r alone, its
+value on a branch the quantity's wherever δ(r₀) ≠ 0 (cp monic).  Each requirement is imposed where
+the previous ones hold, per branch and fixed point (a *region*), by a decomposition of r
 (:mod:`certify_kernel.cells`): its cut points are the roots of the norms Res_Λ(cp, ·) of its parts
 (numerator, denominator, c and Δ of x) and of disc cp, split over the witness's factors (used only
-through exact divisions) so that they are roots of small polynomials; one exact sample per cell;
-at a cut point the sign follows from the neighbouring cells where multiplicities show that it must
-(:class:`_Reader`), else from rational interval enclosures (:func:`_enclosed`), else exactly in
-Q(r₀) (cells.Point); where the forms degenerate (δ(r₀) = 0, or their (a, b, c, d) share a zero) by
-the run itself in intervals (:func:`_ball_sign`), else exactly on the division-free run
-(:class:`_Reduced`).  Points no route decides are reported undecided.
+through exact divisions); one exact sample per cell; at a cut point the sign follows from the
+neighbouring cells where multiplicities show that it must (:class:`_Reader`), else from rational
+enclosures (:func:`_enclosed`), else exactly in Q(r₀) (cells.Point); where the forms degenerate
+(δ(r₀) = 0, or (a, b, c, d) share a zero) from the run itself in intervals (:func:`_ball_sign`),
+else exactly on the division-free run (:class:`_Reduced`).  Points no route decides are undecided.
 """
 from __future__ import annotations
 

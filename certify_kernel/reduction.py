@@ -24,16 +24,14 @@ from __future__ import annotations
 from fractions import Fraction
 from itertools import product
 
-from .evaluate import PREDICATES, NotVerified, collision, cross
-from .poly import value as at
+from .evaluate import PREDICATES, NotVerified, collision, collisions_at, cross
 from .signs import _form_sign
-from .values import RF, VARS, Undefined, univariate
+from .values import RF, VARS, Undefined
 
 LETTERS = "abc"
 ORIENTED = (1, 2, 0)                      # t with u_t > 0 for the contacts a, b, c (l. 949-950)
 E = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
 _GRAPH: dict = {}                         # (i, sign of u_i) -> (j, the signs u'_j may have)
-_AT: dict = {}                            # r -> the collision matrices at r
 
 
 def _third(i: int) -> int:
@@ -80,15 +78,13 @@ def words(n: int) -> set:
 
 def orbit(i: int, u: tuple, r: Fraction, n: int) -> str | None:
     """The contacts of the first n states of the exact orbit from (i, u) at r; None at a corner."""
-    if r not in _AT:
-        _AT[r] = [[[at(univariate(e), r) for e in row] for row in collision(j).rows] for j in range(3)]
     out = LETTERS[i]
     while u[ORIENTED[i]] > 0 > u[_third(i)] and u[i]:
         if len(out) == n:
             return out
         w = cross(u, cross(E[i], u))
         j = next(m for m in range(3) if m != i and w[m] < 0)
-        u = cross(cross(u, E[j]), tuple(sum(a * b for a, b in zip(row, w)) for row in _AT[r][j]))
+        u = cross(cross(u, E[j]), tuple(sum(a * b for a, b in zip(row, w)) for row in collisions_at(r)[j]))
         u, i = tuple(x / max(abs(y) for y in u) for x in u), j          # a positive factor: the same state
         out += LETTERS[i]
     return None
