@@ -112,9 +112,6 @@ class Num:
         F = self.F
         return _surd_sign(self.a, self.b, F.delta, F.sign, lambda x, y: F.reduce(mul(x, y)), sub)
 
-    def __repr__(self) -> str:
-        return f"({self.a}) + ({self.b})√Δ"
-
 
 class Datum:
     """The state at t = 0, its field, λ, and the collisions computed so far (each proved)."""
