@@ -1,31 +1,20 @@
 """The four particles on the line, moved exactly: Theorem 3.1's self-similar datum on the dynamics
 (T25.2, statements/3_simulation.txt).
 
-The state between two collisions is the gaps p = (p_1, p_2, p_3) ≥ 0 and the relative velocities
-q = (q_1, q_2, q_3), q_k = v_{k+1} − v_k (l. 195-198): in free flight p(t) = p + t·q (l. 154-157),
-and the pair k (a, b, c for k = 1, 2, 3) collides when p_k reaches 0 with q_k < 0, at t_k = −p_k/q_k;
-the next collision is the pair whose t_k is the smallest, which must be smaller than every other (a
-tie, a multiple collision, is not followed: the run stops there); then p_k = 0 and q ↦ K q, K the
-kernel's collision matrix (l. 159-163, :func:`certify_kernel.evaluate.collision`).  No pair with
-q_k < 0: the particles separate, no collision ever comes.
+Between two collisions the gaps p = (p_1, p_2, p_3) ≥ 0 move as p + t·q, q_k = v_{k+1} − v_k
+(l. 154-157, 195-198); the pair k (a, b, c) collides when p_k reaches 0 with q_k < 0, at t_k =
+−p_k/q_k; the next collision is the pair of the smallest t_k, strictly (a tie, a multiple
+collision, stops the run); then p_k = 0 and q ↦ K q, K the kernel's collision matrix (l. 159-163).
+No q_k < 0: the particles separate.
 
-The datum of Theorem 3.1 lies in the field Q(λ, √Δ), λ a real root of cp(r₀, λ) at a rational r₀
-and Δ = (a − d)² + 4bc: every number is an exact element α + β√Δ, α, β polynomials in λ reduced
-modulo λ's polynomial, and every sign the dynamics asks for (which q_k < 0, which t_k is the
-smallest, whether two states are equal) is decided exactly: signs of polynomials at λ by Sturm
-(:meth:`Algebraic.sign_of`), of α + β√Δ from those of α, β and α² − β²Δ.  So ``follows``,
-``q_scaled``, ``p_scaled`` and ``leaves`` below are proved, not observed: no rounding enters.
-
-In the statement files: ``datum(r = 1/20, λ = upper(cpM), x = xplus(a, b, c, d), p = (1, 0, x),
-q = (-1, U, V))`` is the state at t = 0 (r₀ rational; λ = upper, lower or branch(P, k) of P at r₀;
-x a fixed point of the Möbius map, as in the binders of ``forall``; p and q rational functions of
-r, λ, x), and the predicates are
-
-* ``follows(D, W)``: the first |W| collisions from D are the letters of the word W (``(ababcb)^20``);
-* ``q_scaled(D, w, n)``: q(t_{k|w|}) = λ^k q(0) for k = 1, ..., n (the collisions being w^n);
-* ``p_scaled(D, w, n)``: p(t_{k|w|}) = μ^k p(0) for k = 1, ..., n, μ = p_1(t_{|w|}) (idem);
-* ``leaves(D, w, n)``: within n periods the collisions depart from w w w ...: a collision that is
-  not the pattern's next letter, or none at all (the particles separate).
+The datum lies in Q(λ, √Δ), λ a real root of cp(r₀, λ) at a rational r₀, Δ = (a − d)² + 4bc:
+every number is an exact α + β√Δ (α, β polynomials in λ modulo λ's polynomial) and every sign the
+dynamics asks for is decided exactly (Sturm at λ; α + β√Δ from the signs of α, β, α² − β²Δ).
+``datum(r = R0, λ = upper(P), x = xplus(a, b, c, d), p = (...), q = (...))`` is the state at t = 0
+(λ and x as the binders of ``forall`` read them); ``follows(D, W)``: the first |W| collisions spell
+W; ``q_scaled(D, w, n)``, ``p_scaled(D, w, n)``: q(t_{k|w|}) = λ^k q(0), p(t_{k|w|}) = μ^k p(0)
+(μ = p_1(t_{|w|})) for k = 1, ..., n; ``leaves(D, w, n)``: within n periods the collisions depart
+from w w w ... (docs/statements.md).
 """
 from __future__ import annotations
 

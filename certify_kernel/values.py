@@ -272,7 +272,7 @@ def combine(op: str, a, b) -> Algebraic:
     if a.rational and b.rational:
         return number(a.lo + b.lo if op == "+" else a.lo * b.lo)
     pa = {(0, i): c for i, c in enumerate(a.p) if c}
-    R = resultant_in(pa, _bivariate(a.p, b.p, op) if op == "+" else _bivariate(a.p, b.p, "*"))
+    R = resultant_in(pa, _bivariate(a.p, b.p, op))
 
     def enclosure():
         if op == "+":
@@ -292,9 +292,7 @@ def sqrt(a) -> Algebraic:
     a = number(a)
     if a.compare_rational(0) < 0:
         raise Undefined("the square root of a negative number")
-    p2 = [Fraction(0)] * (2 * len(a.p) - 1)
-    for i, c in enumerate(a.p):
-        p2[2 * i] = c
+    p2 = [x for c in a.p for x in (c, Fraction(0))][:-1]          # p(x²)
 
     def bounds():
         return _root_below(max(a.lo, Fraction(0))), _root_above(max(a.hi, Fraction(0)))
