@@ -721,8 +721,7 @@ def conditions(body, B: Binding, ctx: Context) -> dict:
         elif t[0] == "cmp":
             for k, (_op, a, b) in enumerate(zip(t[1], t[2], t[2][1:])):
                 if a[0] == "call" and a[1] in ATOMS:          # nroots(P) = 3: a count of the piece
-                    for j, c in enumerate(ATOMS[a[1]][0](ctx, a[2])):
-                        out[(id(a), j)] = c
+                    walk(a)
                     continue
                 for s in B.sigmas or (None,):
                     out[(id(t), k, s)] = _point_condition(a, b, ctx) or atom_condition(a, b, B, ctx, s)
@@ -765,9 +764,7 @@ def atom_condition(a, b, B: Binding, ctx: Context, sigma) -> Condition:
     if "x" in g.used() and B.mobius is None:
         raise Undefined("x is free: bind it to a fixed point (x = xplus(a, b, c, d), ...)")
     if "x" not in g.used():
-        N0, D0 = _in_rl(g.num), _in_rl(g.den)
-        return Condition(cp, N0, D0) if cp is not None or any(k[1] for k in N0) or any(k[1] for k in D0) \
-            else Condition(None, N0, D0)
+        return Condition(cp, _in_rl(g.num), _in_rl(g.den))
     if any(any(any(k) for k in e.den) for e in B.mobius):
         raise Undefined("the coefficients a, b, c, d of the Möbius map must be polynomials")
     return _with_x(g, [_in_rl(e.num) for e in B.mobius], sigma, cp)

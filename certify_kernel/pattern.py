@@ -862,9 +862,7 @@ class _Reader:
 
     def holds(self, piece: tuple, k: int, s):
         a, b = piece
-        if a is not b:
-            return self.exact(_point(piece, self.points), k, s)
-        i = self._where(a)
+        i = self._where(a) if a is b else None
         if i is None:
             return self.exact(_point(piece, self.points), k, s)
         if i[0] == "cell":
