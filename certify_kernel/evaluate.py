@@ -194,16 +194,15 @@ def resultant(P: RF, Q: RF) -> RF:
     if max((k[1] for k in p), default=-1) < 1 and max((k[1] for k in q), default=-1) < 1:
         raise Undefined("a resultant in λ of two polynomials without λ")
     ints, s = resultant_ints(p, q)
-    return RF({(k,) + (0,) * (len(VARS) - 1): Fraction(c, s) for k, c in enumerate(ints) if c})
+    return RF({(k,): Fraction(c, s) for k, c in enumerate(ints) if c})
 
 
 def discriminant(P: RF) -> RF:
     """Disc_λ(P) = (−1)^(n(n−1)/2) Res_λ(P, ∂P/∂λ) / lc_λ(P) (n the degree in λ)."""
     p = two(P)
     n = max(k[1] for k in p)
-    lc = RF({(k[0], 0) + (0,) * (len(VARS) - 2): v for k, v in p.items() if k[1] == n})
-    return RF.const((-1) ** (n * (n - 1) // 2)) * resultant(P, RF({k + (0,) * (len(VARS) - 2): v
-                                                                    for k, v in d_lambda(p).items()})) / lc
+    lc = RF({(k[0],): v for k, v in p.items() if k[1] == n})
+    return RF.const((-1) ** (n * (n - 1) // 2)) * resultant(P, RF(d_lambda(p))) / lc
 
 
 def coefficient(P: RF, k: int, var: str = "λ") -> RF:
@@ -437,7 +436,7 @@ def _trig(kind: str):
 
 def _squarefree(ctx, P) -> RF:
     p = _poly_r(value(P, ctx))
-    return RF({(k,) + (0,) * (len(VARS) - 1): c for k, c in enumerate(squarefree(p)) if c})
+    return RF({(k,): c for k, c in enumerate(squarefree(p)) if c})
 
 
 def _end(which: int):

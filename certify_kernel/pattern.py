@@ -1086,11 +1086,8 @@ def posmap(ctx, w) -> RF:
 
 def _rf(e: El, n: int) -> RF:
     """An element (c₀ + c₁Λ + c₂Λ²)/δ(r) as a rational function of r and λ = Λ/2ⁿ."""
-    from .values import VARS
-    k = len(VARS)
-    num = {(i, j) + (0,) * (k - 2): Fraction(a * 2 ** (n * j)) for j, c in enumerate(e.c) for i, a in enumerate(c) if a}
-    den = {(i,) + (0,) * (k - 1): Fraction(a) for i, a in enumerate(e.d) if a}
-    return RF(num, den)
+    return RF({(i, j): Fraction(a * 2 ** (n * j)) for j, c in enumerate(e.c) for i, a in enumerate(c) if a},
+              {(i,): Fraction(a) for i, a in enumerate(e.d) if a})
 
 
 for _name, _stage in (("selfsimilar", "datum"), ("feasible", "feasible"), ("stable", "stable"),
