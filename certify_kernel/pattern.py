@@ -35,8 +35,8 @@ the previous ones hold, per branch and fixed point (a *region*), by a decomposit
 through exact divisions); one exact sample per cell; at a cut point the sign follows from the
 neighbouring cells where multiplicities show that it must (:class:`_Reader`), else from rational
 enclosures (:func:`_enclosed`), else exactly in Q(r₀) (cells.Point); where the forms degenerate
-(δ(r₀) = 0, or (a, b, c, d) share a zero) from the run itself in intervals (:func:`_ball_sign`),
-else exactly on the division-free run (:class:`_Reduced`).  Points no route decides are undecided.
+(δ(r₀) = 0, or (a, b, c, d) share a zero) exactly on the division-free run (:class:`_Reduced`).
+Points no route decides are undecided.
 """
 from __future__ import annotations
 
@@ -330,11 +330,11 @@ def _dict(P: list) -> dict:
 
 class Req:
     """A quantity g = (G0 + x·G1)/D (G0, G1, D polynomials in r, Λ) and the strict sign it must have;
-    ``kind`` names the positions' ones ("x", ("p", word, k, j), ("f'", ±1)), whose division-free
-    form ``free`` (a function of a :class:`_Reduced`) is read where this one degenerates."""
+    for the positions' ones, their division-free form ``free`` (a function of a :class:`_Reduced`),
+    read where this one degenerates."""
 
-    def __init__(self, name: str, sign: int, G0: list, G1: list, D: list, free=None, kind: tuple = ()):
-        self.name, self.sign, self.G0, self.G1, self.D, self.free, self.kind = name, sign, G0, G1, D, free, kind
+    def __init__(self, name: str, sign: int, G0: list, G1: list, D: list, free=None):
+        self.name, self.sign, self.G0, self.G1, self.D, self.free = name, sign, G0, G1, D, free
         self._conds: dict = {}
 
     def cond(self, cand, s, affine: bool = False):
@@ -405,7 +405,7 @@ def requirements(cand, stage: str, v: str | None = None) -> list:
     |f'(x)| < 1)."""
     one, four = [[1]], len(cand.q0) == 3
     lam, u = Req("λ", 1, [[], [1]], [], one), Req("u", 1, cand.q0[1], [], cand.det)
-    x = Req("x", 1, [], one, one, free=lambda R: ([], one, one), kind=("x",))
+    x = Req("x", 1, [], one, one, free=lambda R: ([], one, one))
     if stage == "datum":
         return [lam, u] + ([x] if four else [])
     v = cand.word if v is None else v
@@ -436,7 +436,7 @@ def _position(cand, run, k: int, j: int) -> Req:
     def free(R):
         F0, F1 = R.free(run.word)[k][j]
         return F0, F1, (R.minus_det if k % 2 else [[1]])
-    return Req(f"p_{j + 1}(t_{k})", 1, G0, G1, [L], free=free, kind=("p", run.word, k, j))
+    return Req(f"p_{j + 1}(t_{k})", 1, G0, G1, [L], free=free)
 
 
 def _dominance(cand) -> list:
@@ -462,7 +462,7 @@ def _attracting(cand) -> list:
                 bmul(c, badd(a, d)), [[1]]
         G0, G1, D = parts(cand.abcd)
         out.append(Req(f"(cx+d)² {'+' if sg > 0 else '-'} (ad-bc)", 1, _brem(G0, cand.cp), _brem(G1, cand.cp), D,
-                       free=lambda R, parts=parts: tuple(R.reduce(P) for P in parts(R.abcd)), kind=("f'", sg)))
+                       free=lambda R, parts=parts: tuple(R.reduce(P) for P in parts(R.abcd))))
     return out
 
 
@@ -596,65 +596,6 @@ def _box(P, r0, lam: tuple) -> tuple:
     return out
 
 
-def _ball_sign(p: Point, req: Req, cand, k: int, s: int):
-    """A requirement of the positions at the algebraic point p on branch k from the run itself in
-    rational intervals (:func:`_balls`): the true (a, b, c, d) and x_s (s named for the true
-    coefficients), then p_j(t_k), x or (cx + d)² ∓ (ad - bc): its sign, or 0 (undecided: the
-    intervals hold 0, or Δ or c may vanish)."""
-    for bits in (60, 200):
-        width = Fraction(1, 2 ** bits)
-        end = _balls(cand, p, k, cand.word, width)
-        if end is None:
-            continue
-        (d, c), _, (b, a) = end[-1]
-        A = iadd(a, d, -1)
-        dl, dh = iadd(imul(A, A), imul((4, 4), imul(b, c)))
-        if dh < 0:
-            return None
-        if dl <= 0 or c[0] <= 0 <= c[1]:
-            return 0
-        root = (_root_below(dl, bits), _root_above(dh, bits))
-        x = imul(iadd(A, root if s > 0 else (-root[1], -root[0])), (1 / (2 * c[1]), 1 / (2 * c[0])))
-        if req.kind[0] == "x":
-            g = x
-        elif req.kind[0] == "p":
-            at = _balls(cand, p, k, req.kind[1], width)
-            if at is None:
-                continue
-            G0, G1 = at[req.kind[2]][req.kind[3]]
-            g = iadd(G0, imul(x, G1))
-        else:
-            cx_d = iadd(imul(c, x), d)
-            g = iadd(imul(cx_d, cx_d), imul((req.kind[1],) * 2, iadd(imul(a, d), imul(b, c), -1)))
-        if g[0] > 0 or g[1] < 0:
-            return 1 if g[0] > 0 else -1
-    return 0
-
-
-def _balls(cand, p: Point, k: int, word: str, width: Fraction):
-    """The positions (P0, P1), p = P0 + x·P1, after each collision of word from p(0) = (1, 0, x) at
-    (r₀, λ_k) in rational intervals: τ = p_i/q̃_i, p - τ·q̃ with the velocities enclosed; None where
-    a q̃_i's enclosure holds 0."""
-    memo = p.__dict__.setdefault("_balls", {})
-    if (id(cand), k, word, width) not in memo:
-        lam, out = _lambda_interval(p, cand.cp_dict, k, width), None
-        if lam is not None:
-            one, zero = (Fraction(1), Fraction(1)), (Fraction(0), Fraction(0))
-            P, out, run = [(one, zero), (zero, zero), (zero, one)], [], cand.run_of(word)
-            out.append(P)
-            for k_, letter in enumerate(word):
-                q, i = [_box(P_, p.r0, lam) for P_ in run.q[k_]], GAP[letter]
-                if q[i][0] <= 0 <= q[i][1]:
-                    out = None
-                    break
-                t = [imul(P[i][h], (1 / q[i][1], 1 / q[i][0])) for h in (0, 1)]
-                P = [tuple(iadd(P[j][h], imul(t[h], q[j]), -1) for h in (0, 1)) for j in range(3)]
-                P[i] = (zero, zero)
-                out.append(P)
-        memo[(id(cand), k, word, width)] = out
-    return memo[(id(cand), k, word, width)]
-
-
 class _Reduced:
     """The division-free run at an algebraic point r₀, in integers: m the integer polynomial of r₀
     (leading coefficient L > 0, degree d), n = deg cp; y = L·r and M = L^t·Λ make m̃(y) =
@@ -722,8 +663,8 @@ def _reduced(cand, p: Point) -> _Reduced:
 def holds(p: Point, req: Req, cand, k: int, s) -> bool | None:
     """req on branch k with the fixed point x_s at the piece p: True, False or None (undecided).  At
     a point, where the forms are valid (δ(r₀) ≠ 0, L1·L3 ≠ 0): by enclosures, where c = 0 with the
-    affine f, else exactly; where they degenerate: by the run in intervals, else exactly on the
-    division-free run (x named as the candidate's: :meth:`Candidate.relabel`)."""
+    affine f, else exactly; where they degenerate: exactly on the division-free run (x named as the
+    candidate's: :meth:`Candidate.relabel`)."""
     cond = req.cond(cand, s)
     if p.cell:
         g = _sign(p, cond, k)
@@ -733,11 +674,8 @@ def holds(p: Point, req: Req, cand, k: int, s) -> bool | None:
         g = _enclosed(p, cond, k) if valid else 0
         if g == 0 and valid and req.G1 and _sign(p, _cond(cand, cand.abcd[2]), k) == 0:
             g = _affine(p, cand, k, cand.abcd, lambda: req.cond(cand, s, affine=True), req.G0, req.G1, req.D)
-        elif g == 0 and (valid or req.free is None):
-            g = _sign(p, cond, k)
         elif g == 0:
-            e = p.r0.sign_of(cand.position_map[1]) or 1
-            g = (_ball_sign(p, req, cand, k, e * s) if req.kind else 0) or Undecided
+            g = _sign(p, cond, k) if valid or req.free is None else Undecided
     if g is Undecided and req.free is not None and not p.cell:
         R = _reduced(cand, p)
         G0, G1, D = req.free(R)
