@@ -8,7 +8,7 @@ first gap's collision and ends with b (l. 270-280).  M_w = K_{c_n} ··· K_{c_1
 collision matrices (three particles: the leading 2×2 blocks of A and B, which do not read q_3; the
 symmetric system: A·C and B on (q_1, q_2, q_1)).  On a real eigenvalue λ of M_w (a branch, the
 largest first): q(0) = (-1, u[, v]) solving rows 1 and 2 of (M_w - λ) q = 0 by Cramer (l. 366;
-where that is 0/0, rows 1 and 3, then 2 and 3), p(0) = (1, 0[, x]), the collisions *assumed*
+where that is 0/0, undecided), p(0) = (1, 0[, x]), the collisions *assumed*
 (l. 460-463): at collision k, of gap i, p(t_k) = p(t_{k-1}) - (p_i/q_i) q(t_{k-1}), q(t_k) =
 K q(t_{k-1}).  Then p_2(t_n) = 0 and p_3/p_1 = f(x) = (ax + b)/(cx + d), x a fixed point
 x± = (a - d ± √Δ)/(2c), Δ = (a - d)² + 4bc (where c = 0, f is affine: x = b/(d - a)).
@@ -246,11 +246,11 @@ class Run:
 
 
 class Candidate:
-    """cp = det(Λ - M'), q̃(0) = det·(-1, u[, v]) from the rows ``rows`` of (M' - Λ)q = 0 (Cramer),
+    """cp = det(Λ - M'), q̃(0) = det·(-1, u[, v]) from rows 1 and 2 of (M' - Λ)q = 0 (Cramer),
     the runs, and (four particles) the position map (a, b, c, d) = L1·L3/h·(p(t_n)'s coefficients)."""
 
-    def __init__(self, text: str, rows: tuple = (0, 1)):
-        self.text, self.rows, self.runs, self.points = text, rows, {}, {}
+    def __init__(self, text: str):
+        self.runs, self.points = {}, {}
         self.system, self.word = read_word(text)
         self.K = _matrices(self.system)
         g = 3 if self.system == "four" else 2
@@ -262,11 +262,11 @@ class Candidate:
         B = [[trim([M[i][j], [-1]] if i == j else [M[i][j]]) for j in range(g)] for i in range(g)]   # M' - Λ
         self.cp = _det([[badd([], e, -1) for e in row] for row in B], badd, bmul)
         if g == 3:
-            (b1, a11, a12), (b2, a21, a22) = B[rows[0]], B[rows[1]]
+            (b1, a11, a12), (b2, a21, a22) = B[0], B[1]
             det = _det([[a11, a12], [a21, a22]], badd, bmul)
             q0 = [badd([], det, -1), _det([[b1, a12], [b2, a22]], badd, bmul), _det([[a11, b1], [a21, b2]], badd, bmul)]
         else:                          # row 1: (m11 - Λ)(-1) + m12 u = 0, row 2: m21(-1) + (m22 - Λ)u = 0
-            det, U = (B[0][1], B[0][0]) if rows[0] == 0 else (B[1][1], B[1][0])
+            det, U = B[0][1], B[0][0]
             q0 = [badd([], det, -1), U]
         self.det, self.q0 = _brem(det, self.cp), [_brem(e, self.cp) for e in q0]
         self.cp_dict = _dict(self.cp)
@@ -312,10 +312,10 @@ class Candidate:
 _CANDIDATES: dict = {}
 
 
-def candidate(text: str, rows: tuple = (0, 1)) -> Candidate:
-    if (text, rows) not in _CANDIDATES:
-        _CANDIDATES[(text, rows)] = Candidate(text, rows)
-    return _CANDIDATES[(text, rows)]
+def candidate(text: str) -> Candidate:
+    if text not in _CANDIDATES:
+        _CANDIDATES[text] = Candidate(text)
+    return _CANDIDATES[text]
 
 
 def _lcm(a: list, b: list) -> list:
@@ -701,26 +701,13 @@ def _affine(p: Point, cand, k: int, abcd: list, cond, G0, G1, D):
     return _sign(p, _cond(cand, G0, D), k) if _sign(p, _cond(cand, G1), k) == 0 else Undecided
 
 
-def _u(p: Point, req: Req, cand, stage: tuple, k: int, s):
-    """u > 0; at a point where the rows' determinant vanishes on the branch: if U or V does not, the
-    eigenvector has q_1 = 0 (no datum with q_1(0) = -1): False; else the other rows decide the whole
-    stage there, ("other", answer)."""
+def _u(p: Point, req: Req, cand, k: int, s):
+    """u > 0; at a point where the rows' determinant vanishes on the branch and U or V does not, the
+    eigenvector has q_1 = 0 (no datum with q_1(0) = -1): False."""
     v = holds(p, req, cand, k, s)
     if v is not None or p.cell or _sign(p, _cond(cand, cand.det), k) != 0:
         return v
-    if any(_sign(p, _cond(cand, P), k) != 0 for P in cand.q0[1:]):
-        return False
-    for rows in ((0, 2), (1, 2)) if len(cand.q0) == 3 else ((1,),):
-        other = candidate(cand.text, rows)
-        if rows != cand.rows and _sign(p, _cond(other, other.det), k) not in (0, Undecided):
-            out = True
-            for q in requirements(other, *stage):
-                w = holds(p, q, other, k, s)
-                if w is False:
-                    return ("other", False)
-                out = None if w is None else out
-            return ("other", out)
-    return None
+    return False if any(_sign(p, _cond(cand, P), k) != 0 for P in cand.q0[1:]) else None
 
 
 # ----------------------------------------------------------------- regions: where the requirements hold
@@ -729,9 +716,8 @@ class Region:
     gaps): the pieces of ]0, 1[ where every requirement imposed so far holds — open intervals
     (lo, hi) and points (a, a) — and the pieces left undecided."""
 
-    def __init__(self, k: int, s, pieces=None, undecided=None, final=None):
-        self.k, self.s = k, s
-        self.pieces, self.undecided, self.final = pieces or [], undecided or [], final or set()
+    def __init__(self, k: int, s, pieces=None, undecided=None):
+        self.k, self.s, self.pieces, self.undecided = k, s, pieces or [], undecided or []
 
 
 def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None = None) -> list:
@@ -751,7 +737,7 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
                         found.setdefault((k, s), Region(k, s)).pieces.append(piece)
         regions = list(found.values())
     else:
-        regions = [Region(R.k, R.s, list(R.pieces), list(R.undecided), set(R.final)) for R in regions]
+        regions = [Region(R.k, R.s, list(R.pieces), list(R.undecided)) for R in regions]
     for req in requirements(cand, *stage) if reqs is None else reqs:
         live = [pc for R in regions for pc in R.pieces + R.undecided]
         if not live:
@@ -760,7 +746,7 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
         hi = max((pc[1] for pc in live), key=ORDER)
         cond = req.cond(cand, sigmas[0])
         cuts = cut_points(cond.cuts(), lo, hi) if lo.compare(hi) < 0 else []
-        at = _Reader(req, cand, stage, cond, lo, hi, cuts, points)
+        at = _Reader(req, cand, cond, lo, hi, cuts, points)
         split: dict = {}
         for R in regions:
             kept, unsure = [], []
@@ -768,11 +754,7 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
                 if id(piece) not in split:
                     split[id(piece)] = _split(piece, [c for c, _ in cuts])
                 for sub in split[id(piece)]:
-                    v = True if sub[0] is sub[1] and id(sub[0]) in R.final else at.holds(sub, R.k, R.s)
-                    if isinstance(v, tuple):
-                        v = v[1]
-                        if v:
-                            R.final.add(id(sub[0]))
+                    v = at.holds(sub, R.k, R.s)
                     if v is not False:
                         (kept if v and was else unsure).append(sub)
             R.pieces, R.undecided = kept, unsure
@@ -793,8 +775,8 @@ class _Reader:
     N(r₀) = 0 (with √Δ: N₀ ± N₁√Δ, both in the norm 4cQ).  Any other point: exactly, in Q(r₀)
     (cells.Point)."""
 
-    def __init__(self, req, cand, stage, cond, lo, hi, cuts, points):
-        self.req, self.cand, self.stage, self.cond, self.points = req, cand, stage, cond, points
+    def __init__(self, req, cand, cond, lo, hi, cuts, points):
+        self.req, self.cand, self.cond, self.points = req, cand, cond, points
         self.ends = [lo] + [c for c, _ in cuts] + [hi]
         self.cuts = cuts
 
@@ -819,7 +801,7 @@ class _Reader:
         return self.exact(_point(piece, self.points), k, s)
 
     def exact(self, p: Point, k: int, s):
-        return _u(p, self.req, self.cand, self.stage, k, s) if self.req.name == "u" else \
+        return _u(p, self.req, self.cand, k, s) if self.req.name == "u" else \
             holds(p, self.req, self.cand, k, s)
 
     def _where(self, a):
@@ -908,7 +890,7 @@ def _regions(ctx, text: str, stage: tuple, branches) -> list:
             raise NotVerified(f"{text} has {n} collisions: beyond the kernel's budget of {LONGEST}")
         cand = candidate(text)
         known = _SETS.get((text, ("feasible", None)))
-        if stage[0] == "stable" and known is not None and not any(R.final for R in known):
+        if stage[0] == "stable" and known is not None:
             extra = _dominance(cand) + (_attracting(cand) if len(cand.q0) == 3 else [])
             _SETS[key] = analyse(cand, stage, known, extra)
         else:
