@@ -1,8 +1,8 @@
 """What a formula means: its objects built from the kernel's own definitions, its truth decided.
 
-Names are looked up in this order: the variables a binder binds, the definitions (`let`) of the
-statement files, the kernel's objects (:data:`BUILTIN`: the collision matrices A, B, C from the
-collision law, I, e_x, e_y, e_z), the declared variables.  Functions (:data:`FUNCTIONS`) build
+Names are looked up in this order: the definitions (`let`) of the statement files, the kernel's
+objects (:data:`BUILTIN`: the collision matrices A, B, C from the collision law, I, e_x, e_y, e_z),
+the declared variables (those the binders range over among them).  Functions (:data:`FUNCTIONS`) build
 the rest: the matrix of a word, det, charpoly, the discriminant and resultants in λ, roots,
 cross and dot products, cos and sin of an angle.  A formula is decided exactly: an identity of
 rational functions (modulo cos² + sin² = 1 and, with ``mod P``, modulo P), a comparison of real
@@ -239,12 +239,9 @@ class Context:
 
     def __init__(self, lets: dict, witnesses=None):
         self.lets, self.values, self.witnesses = lets, {}, witnesses or []
-        self.bound: dict = {}          # name -> value, inside binders
         self.counterexample = None     # a piece where a forall fails
 
     def name(self, name: str):
-        if name in self.bound:
-            return self.bound[name]
         if name in self.lets:
             if name not in self.values:
                 self.values[name] = None

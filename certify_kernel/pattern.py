@@ -365,9 +365,6 @@ class _Cond(Condition):
             self._cuts = out
         return self._cuts
 
-    def bounding(self) -> list:
-        return [[Fraction(a) for a in f] for f in self.cuts()]
-
 
 def _cond(cand, P: list, D: list | None = None) -> _Cond:
     """The condition P/D (D = 1 by default), for signs at points."""
