@@ -6,8 +6,8 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .poly import add, bderiv, bmul, divmod_, enclose, gcd, integer_primitive, mul, scale, sign, sub, value
-from .sturm import Algebraic, changes, count
+from .poly import add, bderiv, bmul, divmod_, integer_primitive, mul, scale, sub
+from .sturm import Algebraic, changes
 
 
 class AtR0:
@@ -23,23 +23,8 @@ class AtR0:
         return c if self.r0.rational or len(c) < len(self.r0.p) else divmod_(c, self.r0.p)[1]
 
     def sign(self, c: list) -> int:
-        """sign c(r0).  0 exactly when gcd(c, m) has a root in r0's interval (the one root of m
-        there is r0).  Else that of an enclosure of c on the interval (:func:`poly.enclose`) without
-        0 (there is one after enough bisections, as c(r0) ≠ 0)."""
-        c, r0, tested = self.reduce(c), self.r0, False
-        while c:
-            if r0.rational:
-                return sign(value(c, r0.lo))
-            lo, hi = enclose(c, r0.lo, r0.hi)
-            if lo > 0 or hi < 0:
-                return 1 if lo > 0 else -1
-            if not tested:
-                g, tested = gcd(c, r0.p), True
-                if len(g) > 1 and count(g, r0.lo, r0.hi) == 1:
-                    return 0
-            for _ in range(8):
-                r0.bisect()
-        return 0
+        """sign c(r0) (:meth:`Algebraic.sign_of`)."""
+        return self.r0.sign_of(self.reduce(c))
 
     def trim(self, P: list) -> list:
         """P without its leading coefficients that vanish at r0 (the same P(r0, λ))."""

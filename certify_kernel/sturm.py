@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .poly import deg, derivative, gcd, integer_primitive, pseudo_remainder, sign, squarefree, trim, value
+from .poly import deg, derivative, enclose, gcd, integer_primitive, pseudo_remainder, sign, squarefree, trim, value
 
 _SEQ: dict = {}
 
@@ -123,23 +123,23 @@ class Algebraic:
             self.bisect()
 
     def sign_of(self, h: list) -> int:
-        """The sign of h at the number.  If gcd(h, p) has a root in ]lo, hi] it is the number
-        (the only root of p there): 0.  Otherwise bisect until h has no root in ]lo, hi]
-        (Sturm), so that h keeps one sign there (intermediate value theorem); read it at hi."""
-        if not h:
-            return 0
-        if self.rational:
-            return sign(value(h, self.lo))
-        g = gcd(h, self.p)
-        if deg(g) > 0 and count(g, self.lo, self.hi) == 1:
-            return 0
-        for _ in range(10_000):
+        """The sign of h at the number: 0 exactly when gcd(h, p) has a root in ]lo, hi] (the only root
+        of p there is the number); else that of an enclosure of h on the interval
+        (:func:`poly.enclose`) without 0 (there is one after enough bisections, as h ≠ 0 there)."""
+        tested = False
+        while h:
             if self.rational:
                 return sign(value(h, self.lo))
-            if count(h, self.lo, self.hi) == 0:
-                return sign(value(h, self.hi))
-            self.bisect()
-        raise ArithmeticError("sign not decided in 10 000 bisections")
+            lo, hi = enclose(h, self.lo, self.hi)
+            if lo > 0 or hi < 0:
+                return 1 if lo > 0 else -1
+            if not tested:
+                g, tested = gcd(h, self.p), True
+                if deg(g) > 0 and count(g, self.lo, self.hi) == 1:
+                    return 0
+            for _ in range(8):
+                self.bisect()
+        return 0
 
     def compare(self, other: Algebraic) -> int:
         """sign(self − other).  Disjoint intervals decide.  If gcd of the two polynomials has
