@@ -556,7 +556,8 @@ def _lambda_interval(p: Point, cp: dict, k: int, width: Fraction):
         a, b = (Fraction(e) for e in roots[k])
         cache[k] = [a, b, p._at.at(cpl, a), cpl]
     a, b, sa, cpl = cache[k]
-    _narrow(p.r0, width ** 2)
+    while not p.r0.rational and p.r0.hi - p.r0.lo > width ** 2:
+        p.r0.bisect()
     while b - a > width:
         mid = (a + b) / 2
         e = _box(cpl, p.r0, (mid, mid))
@@ -569,20 +570,6 @@ def _lambda_interval(p: Point, cp: dict, k: int, width: Fraction):
             b = mid
     cache[k][:2] = [a, b]
     return a, b
-
-
-def _narrow(r0, width: Fraction) -> None:
-    """r₀'s isolating interval halved by the sign of its square-free polynomial at the middle (a simple
-    root: the signs at the ends differ) until narrower than width."""
-    while not r0.rational and r0.hi - r0.lo > width:
-        mid = (r0.lo + r0.hi) / 2
-        s_mid = value(r0.p, mid)
-        if s_mid == 0:
-            r0.lo = r0.hi = mid
-        elif (s_mid > 0) == (value(r0.p, r0.lo) > 0):
-            r0.lo = mid
-        else:
-            r0.hi = mid
 
 
 def _box(P, r0, lam: tuple) -> tuple:
