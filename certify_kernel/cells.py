@@ -17,22 +17,7 @@ from functools import cmp_to_key
 from math import ceil, floor
 
 from .field import AtR0
-from .poly import (
-    at_r,
-    badd,
-    d_lambda,
-    deg,
-    in_lambda,
-    madd,
-    mmul,
-    mul,
-    resultant_in,
-    sign,
-    squarefree,
-    sub,
-    trim,
-    value,
-)
+from .poly import at_r, badd, d_lambda, in_lambda, madd, mmul, mul, resultant_in, sign, squarefree, sub, value
 from .sturm import real_roots
 from .values import Undefined, number, roots_in
 
@@ -74,7 +59,7 @@ class Condition:
                     out.append(in_lambda(P)[0])
         else:
             out = [in_lambda(P)[0] if P else [] for P in polys]
-        return [squarefree(b) for b in out if deg(b) > 0]
+        return [squarefree(b) for b in out if len(b) > 1]
 
 
 def _norm(p0: dict, p1: dict, delta: dict) -> dict:
@@ -195,7 +180,7 @@ def cut_points(polys, lo, hi) -> list:
     found of first)."""
     pts: list = []
     for p in polys:
-        for a in roots_in(trim(p), lo, hi):
+        for a in roots_in(p, lo, hi):
             if not any(a.compare(b) == 0 for b, _ in pts):
                 pts.append((a, p))
     return sorted(pts, key=lambda e: ORDER(e[0]))
