@@ -112,7 +112,7 @@ def _gcd(p: list, q: list) -> list:
     """The primitive gcd in Z[r] (:func:`poly.gcd` over Q, made integral)."""
     if len(p) == 1 or len(q) == 1:
         return [1]
-    return [int(c) for c in integer_primitive(qgcd(p, q))]
+    return integer_primitive(qgcd(p, q))
 
 
 def _det(rows: list, add=add, mul=mul) -> list:
@@ -591,7 +591,7 @@ class _Reduced:
     (-sign det)^k where the velocity requirements hold."""
 
     def __init__(self, cand, p: Point):
-        m = [int(a) for a in integer_primitive(p.r0.p)]
+        m = integer_primitive(p.r0.p)
         m = m if m[-1] > 0 else [-a for a in m]
         L, d, n = m[-1], len(m) - 1, len(cand.cp) - 1
         self.m, self.L, self.cand, self.runs = [a * L ** (d - 1 - i) for i, a in enumerate(m[:-1])] + [1], L, cand, {}
@@ -709,7 +709,7 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
     requirements of the stage (:func:`requirements`, or ``reqs``) one at a time over ]0, 1[ (or
     on copies of ``regions``), each only where the previous ones hold."""
     zero, one = number(0), number(1)
-    points: dict = cand.__dict__.setdefault("points", {})
+    points = cand.points
     sigmas = (1, -1) if len(cand.q0) == 3 else (None,)
     if regions is None:
         ends = [zero] + [a for a, _ in cut_points(_cond(cand, [[1]]).cuts(), zero, one)] + [one]
