@@ -19,7 +19,7 @@ from functools import cache
 from . import cells
 from .cells import Condition, Undecided
 from .language import parse
-from .poly import d_lambda, madd, mmul, resultant_ints, squarefree
+from .poly import d_lambda, divmod_, madd, mmul, resultant_ints, squarefree
 from .poly import value as at
 from .sturm import Algebraic
 from .values import (
@@ -503,7 +503,6 @@ def truth(t, ctx: Context) -> bool:
     if kind == "forall":
         return forall(t, ctx)
     if kind == "call" and t[1] == "divides" and len(t[2]) == 2:
-        from .poly import divmod_
         P, Q = (_poly_r(value(x, ctx)) for x in t[2])
         if not P:
             raise Undefined("divides(0, Q)")
@@ -523,8 +522,7 @@ def compare(op: str, a, b, b_tree=None) -> bool:
     if op == "≈":
         return approx(a, b_tree)
     if op in ("=", "≠"):
-        same = equal(a, b)
-        return same if op == "=" else not same
+        return equal(a, b) == (op == "=")
     if op == "~":
         return proportional(a, b)
     if op in ("⊆", "in"):
