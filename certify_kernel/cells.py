@@ -13,10 +13,12 @@ and its truth on the whole interval is the truth on every piece.
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import cmp_to_key
+from math import ceil, floor
 
 from .field import AtR0
-from .poly import at_r, d_lambda, deg, in_lambda, madd, mmul, mul, resultant_in, squarefree, sub, trim, value
-from .sturm import Algebraic, real_roots
+from .poly import at_r, badd, d_lambda, in_lambda, madd, mmul, mul, resultant_in, sign, squarefree, sub, value
+from .sturm import real_roots
 from .values import Undefined, number, roots_in
 
 
@@ -57,7 +59,7 @@ class Condition:
                     out.append(in_lambda(P)[0])
         else:
             out = [in_lambda(P)[0] if P else [] for P in polys]
-        return [squarefree(b) for b in out if deg(b) > 0]
+        return [squarefree(b) for b in out if len(b) > 1]
 
 
 def _norm(p0: dict, p1: dict, delta: dict) -> dict:
@@ -130,7 +132,7 @@ class Point:
         if cond.cp is None:
             at = {n: in_lambda(P)[0] if P else [] for n, P in cond.parts.items()}
             if self.cell:
-                return condition_sign(at, lambda c: _sgn(value(c, self.r0)))
+                return condition_sign(at, lambda c: sign(value(c, self.r0)))
             return condition_sign(at, self._at.sign, mul, sub)
         if k is None or k >= self.branches(cond.cp):
             raise Undefined("no such branch")
@@ -140,11 +142,7 @@ class Point:
             return condition_sign({n: at_r(P, self.r0) for n, P in cond.parts.items()}, lam.sign_of)
         A, iv = self._at, roots[k]
         at = {n: in_lambda(P) for n, P in cond.parts.items()}
-        return condition_sign(at, lambda P: A.taq(P, cpl, *iv), A.mul, A.sub)
-
-
-def _sgn(x) -> int:
-    return (x > 0) - (x < 0)
+        return condition_sign(at, lambda P: A.taq(P, cpl, *iv), A.mul, lambda P, Q: badd(P, Q, -1))
 
 
 def _between(a, b) -> Fraction:
@@ -165,7 +163,6 @@ def _between(a, b) -> Fraction:
 
 def _simplest(lo: Fraction, hi: Fraction) -> Fraction:
     """The fraction of least denominator in ]lo, hi[ (continued fractions: x ∈ ]a, b[ ⇔ 1/x ∈ ]1/b, 1/a[)."""
-    from math import ceil, floor
     if floor(lo) + 1 < hi:                              # an integer inside: the one nearest 0
         return Fraction(0) if lo < 0 < hi else Fraction(floor(lo) + 1 if lo >= 0 else ceil(hi) - 1)
     n = floor(lo)
@@ -175,33 +172,18 @@ def _simplest(lo: Fraction, hi: Fraction) -> Fraction:
 
 
 _ROOTS: dict = {}
+ORDER = cmp_to_key(lambda a, b: a.compare(b))       # algebraic numbers sorted by their order
 
 
-def cut_points(conds: list, lo, hi) -> list:
-    """The real roots in ]lo, hi[ of the conditions' bounding polynomials, increasing, each once."""
-    polys = []
-    for c in conds:
-        if c.key not in _ROOTS:
-            _ROOTS[c.key] = c.bounding()
-        polys += _ROOTS[c.key]
-    seen: dict = {}
-    for p in polys:
-        seen.setdefault(repr(p), p)
+def cut_points(polys, lo, hi) -> list:
+    """The real roots in ]lo, hi[ of the polynomials, increasing, each once (with the polynomial it was
+    found of first)."""
     pts: list = []
-    for p in seen.values():
-        for a in roots_in(trim(p), lo, hi):
-            if not any(a.compare(b) == 0 for b in pts):
-                pts.append(a)
-    pts.sort(key=_OrderKey)
-    return pts
-
-
-class _OrderKey:
-    def __init__(self, a: Algebraic):
-        self.a = a
-
-    def __lt__(self, o) -> bool:
-        return self.a.compare(o.a) < 0
+    for p in polys:
+        for a in roots_in(p, lo, hi):
+            if not any(a.compare(b) == 0 for b, _ in pts):
+                pts.append((a, p))
+    return sorted(pts, key=lambda e: ORDER(e[0]))
 
 
 def pieces(conds: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False) -> list[Point]:
@@ -212,7 +194,13 @@ def pieces(conds: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False
         if not (lo_closed and hi_closed) or number(lo).compare(number(hi)) > 0:
             raise Undefined("an empty interval")
         return [Point(number(lo), cell=False)]
-    cuts = cut_points(conds, lo, hi)
+    polys: dict = {}
+    for c in conds:
+        if c.key not in _ROOTS:
+            _ROOTS[c.key] = c.bounding()
+        for p in _ROOTS[c.key]:
+            polys.setdefault(repr(p), p)
+    cuts = [a for a, _ in cut_points(polys.values(), lo, hi)]
     ends = [lo] + cuts + [hi]
     out: list[Point] = []
     if lo_closed:
@@ -236,5 +224,3 @@ def pieces(conds: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False
             a.right = b
     return out
 
-
-__all__ = ["Condition", "Point", "Undecided", "pieces", "cut_points", "condition_sign", "_between"]

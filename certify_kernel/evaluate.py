@@ -1,8 +1,8 @@
 """What a formula means: its objects built from the kernel's own definitions, its truth decided.
 
-Names are looked up in this order: the variables a binder binds, the definitions (`let`) of the
-statement files, the kernel's objects (:data:`BUILTIN`: the collision matrices A, B, C from the
-collision law, I, e_x, e_y, e_z), the declared variables.  Functions (:data:`FUNCTIONS`) build
+Names are looked up in this order: the definitions (`let`) of the statement files, the kernel's
+objects (:data:`BUILTIN`: the collision matrices A, B, C from the collision law, I, e_x, e_y, e_z),
+the declared variables (those the binders range over among them).  Functions (:data:`FUNCTIONS`) build
 the rest: the matrix of a word, det, charpoly, the discriminant and resultants in λ, roots,
 cross and dot products, cos and sin of an angle.  A formula is decided exactly: an identity of
 rational functions (modulo cos² + sin² = 1 and, with ``mod P``, modulo P), a comparison of real
@@ -12,12 +12,15 @@ of r by a cylindrical decomposition (:mod:`certify_kernel.cells`); over several 
 """
 from __future__ import annotations
 
+import re
 from fractions import Fraction
+from functools import cache
 
 from . import cells
 from .cells import Condition, Undecided
 from .language import parse
-from .poly import bareiss, d_lambda, in_lambda, interpolate_integers, squarefree
+from .poly import d_lambda, divmod_, madd, mmul, resultant_ints, squarefree
+from .poly import value as at
 from .sturm import Algebraic
 from .values import (
     RF,
@@ -83,11 +86,8 @@ class RSet:
 
 def order(a, b) -> int:
     """sign(a − b) for algebraic numbers and ∓∞."""
-    if a in (NEG, POS) or b in (NEG, POS):
-        ra, rb = ({NEG: -1, POS: 1}.get(a, 0) if isinstance(a, str) else 0), \
-            ({NEG: -1, POS: 1}.get(b, 0) if isinstance(b, str) else 0)
-        return (ra > rb) - (ra < rb)
-    return number(a).compare(number(b))
+    ra, rb = ({NEG: -1, POS: 1}.get(x, 0) if isinstance(x, str) else 0 for x in (a, b))
+    return (ra > rb) - (ra < rb) if ra or rb else number(a).compare(number(b))
 
 
 def merge(parts: list) -> list:
@@ -131,6 +131,12 @@ def collision(pair: int) -> Matrix:
     return Matrix([[cols[k][i] for k in range(3)] for i in range(3)])
 
 
+@cache
+def collisions_at(r0: Fraction) -> list:
+    """The entries of A, B, C at r = r₀ (rationals)."""
+    return [[[at(univariate(e), r0) for e in row] for row in collision(k).rows] for k in range(3)]
+
+
 def word_matrix(word: str) -> Matrix:
     """M_w = K_{c_n} ··· K_{c_1}: the velocities after the collisions of w, in time order."""
     M = identity(3)
@@ -142,31 +148,13 @@ def word_matrix(word: str) -> Matrix:
 
 
 def expand_word(text: str) -> str:
-    """A word as printed: letters, (...)^n repeated n times."""
-    out, k = _word(text.replace(" ", ""), 0)
-    if k != len(text.replace(" ", "")):
-        raise Undefined(f"not a word: {text!r}")
-    return out
-
-
-def _word(t: str, k: int) -> tuple[str, int]:
-    out = ""
-    while k < len(t) and t[k] != ")":
-        if t[k] == "(":
-            inner, k = _word(t, k + 1)
-            if k >= len(t) or t[k] != ")":
-                raise Undefined(f"unbalanced parenthesis in {t!r}")
-            k += 1
-            n = 1
-            if k < len(t) and t[k] == "^":
-                j = k + 1
-                while j < len(t) and t[j].isdigit():
-                    j += 1
-                n, k = int(t[k + 1:j]), j
-            out += inner * n
-        else:
-            out, k = out + t[k], k + 1
-    return out, k
+    """A word as printed: letters, (...)^n repeated n times (the innermost parentheses first)."""
+    w = text.replace(" ", "")
+    while "(" in w or ")" in w:
+        w, n = re.subn(r"\(([^()]*)\)(?:\^(\d+))?", lambda m: m[1] * int(m[2] or 1), w)
+        if not n:
+            raise Undefined(f"not a word: {text!r}")
+    return w
 
 
 def identity(n: int) -> Matrix:
@@ -201,52 +189,20 @@ def charpoly(M: Matrix) -> RF:
 
 
 def resultant(P: RF, Q: RF) -> RF:
-    """Res_λ(P, Q) ∈ Q[r], exactly: the Sylvester determinant at r = 0, 1, ..., (rows scaled to
-    integers, each scale divided out), interpolated (its degree in r is bounded by n·deg_r P +
-    m·deg_r Q for λ-degrees m, n)."""
-    p, q = in_lambda(two(P)), in_lambda(two(Q))
-    m, n = len(p) - 1, len(q) - 1
-    if m < 1 and n < 1:
+    """Res_λ(P, Q) ∈ Q[r], exactly (:func:`poly.resultant_ints`, its positive scale divided out)."""
+    p, q = two(P), two(Q)
+    if max((k[1] for k in p), default=-1) < 1 and max((k[1] for k in q), default=-1) < 1:
         raise Undefined("a resultant in λ of two polynomials without λ")
-    den = 1
-    for row in p + q:
-        for c in row:
-            den = den * c.denominator // _gcd(den, c.denominator)
-    P2 = [[int(c * den) for c in row] for row in p]
-    Q2 = [[int(c * den) for c in row] for row in q]
-    bound = n * max(len(c) - 1 for c in p) + m * max(len(c) - 1 for c in q)
-    ys = []
-    for x in range(bound + 1):
-        a = [_ival(c, x) for c in reversed(P2)]
-        b = [_ival(c, x) for c in reversed(Q2)]
-        rows = [[0] * i + a + [0] * (n - 1 - i) for i in range(n)] + [[0] * i + b + [0] * (m - 1 - i) for i in range(m)]
-        ys.append(bareiss(rows) if rows else 1)
-    fact = 1
-    for k in range(1, bound + 1):
-        fact *= k
-    coeffs = [Fraction(c, fact * den ** (m + n)) for c in interpolate_integers(ys)]
-    return RF({(k,) + (0,) * (len(VARS) - 1): c for k, c in enumerate(coeffs) if c})
-
-
-def _gcd(a: int, b: int) -> int:
-    from math import gcd
-    return gcd(a, b)
-
-
-def _ival(c: list, x: int) -> int:
-    v = 0
-    for a in reversed(c):
-        v = v * x + a
-    return v
+    ints, s = resultant_ints(p, q)
+    return RF({(k,): Fraction(c, s) for k, c in enumerate(ints) if c})
 
 
 def discriminant(P: RF) -> RF:
     """Disc_λ(P) = (−1)^(n(n−1)/2) Res_λ(P, ∂P/∂λ) / lc_λ(P) (n the degree in λ)."""
     p = two(P)
     n = max(k[1] for k in p)
-    lc = RF({(k[0], 0) + (0,) * (len(VARS) - 2): v for k, v in p.items() if k[1] == n})
-    return RF.const((-1) ** (n * (n - 1) // 2)) * resultant(P, RF({k + (0,) * (len(VARS) - 2): v
-                                                                    for k, v in d_lambda(p).items()})) / lc
+    lc = RF({(k[0],): v for k, v in p.items() if k[1] == n})
+    return RF.const((-1) ** (n * (n - 1) // 2)) * resultant(P, RF(d_lambda(p))) / lc
 
 
 def coefficient(P: RF, k: int, var: str = "λ") -> RF:
@@ -283,12 +239,9 @@ class Context:
 
     def __init__(self, lets: dict, witnesses=None):
         self.lets, self.values, self.witnesses = lets, {}, witnesses or []
-        self.bound: dict = {}          # name -> value, inside binders
         self.counterexample = None     # a piece where a forall fails
 
     def name(self, name: str):
-        if name in self.bound:
-            return self.bound[name]
         if name in self.lets:
             if name not in self.values:
                 self.values[name] = None
@@ -338,7 +291,7 @@ def value(t, ctx: Context):
             raise Undefined(f"{t[1]}() is not a function of the language")
         return f(ctx, *t[2])
     if kind == "finite":
-        pts = sorted((number(value(x, ctx)) for x in t[1]), key=cells._OrderKey)
+        pts = sorted((number(value(x, ctx)) for x in t[1]), key=cells.ORDER)
         return RSet([(a, a, True, True) for a in pts])
     if kind == "setof":
         return setof(t, ctx)
@@ -480,7 +433,17 @@ def _trig(kind: str):
 
 def _squarefree(ctx, P) -> RF:
     p = _poly_r(value(P, ctx))
-    return RF({(k,) + (0,) * (len(VARS) - 1): c for k, c in enumerate(squarefree(p)) if c})
+    return RF({(k,): c for k, c in enumerate(squarefree(p)) if c})
+
+
+def _end(which: int):
+    """sup (which = 1) or inf (0) of a bounded non-empty set."""
+    def f(ctx, S):
+        parts = as_set(value(S, ctx)).parts
+        if not parts or parts[-which][which] in (NEG, POS):
+            raise Undefined(f"the {('infimum', 'supremum')[which]} of an empty or unbounded set")
+        return parts[-which][which]
+    return f
 
 
 FUNCTIONS = {
@@ -497,7 +460,7 @@ FUNCTIONS = {
     "dot": lambda ctx, u, v: dot(value(u, ctx), value(v, ctx)),
     "roots": _roots, "root": _root, "count": _count,
     "cos": _trig("cos"), "sin": _trig("sin"), "tan": _trig("tan"),
-    "sup": lambda ctx, S: _sup(ctx, S), "inf": lambda ctx, S: _inf(ctx, S),
+    "sup": _end(1), "inf": _end(0),
     "deg": lambda ctx, P: RF.const(len(_poly_r(value(P, ctx))) - 1),
     "numerator": lambda ctx, E: RF(value(E, ctx).num),
     "denominator": lambda ctx, E: RF(value(E, ctx).den),
@@ -506,17 +469,26 @@ FUNCTIONS = {
 
 # --------------------------------------------------------------------- formulas
 
+CONNECTIVES = ("and", "or", "implies", "iff", "not")
+
+
+def connective(t, truth_of) -> bool:
+    """not, and, or, implies, iff from the truths of the operands, left to right (the right one not
+    read when the left decides)."""
+    a = truth_of(t[1])
+    if t[0] == "not":
+        return not a
+    if t[0] == "and" and not a or t[0] == "or" and a or t[0] == "implies" and not a:
+        return t[0] != "and"
+    b = truth_of(t[2])
+    return a == b if t[0] == "iff" else b
+
+
 def truth(t, ctx: Context) -> bool:
     """The truth of a closed formula (no variable left free but in identities)."""
     kind = t[0]
-    if kind in ("and", "or", "implies", "iff"):
-        a = truth(t[1], ctx)
-        if kind == "and" and not a or kind == "or" and a or kind == "implies" and not a:
-            return kind == "or" or kind == "implies"
-        b = truth(t[2], ctx)
-        return {"and": b, "or": b, "implies": b, "iff": a == b}[kind]
-    if kind == "not":
-        return not truth(t[1], ctx)
+    if kind in CONNECTIVES:
+        return connective(t, lambda u: truth(u, ctx))
     if kind == "mod":
         P = value(t[2], ctx)
         var = "λ" if "λ" in P.used() else next(iter(P.used()), "λ")
@@ -531,7 +503,6 @@ def truth(t, ctx: Context) -> bool:
     if kind == "forall":
         return forall(t, ctx)
     if kind == "call" and t[1] == "divides" and len(t[2]) == 2:
-        from .poly import divmod_
         P, Q = (_poly_r(value(x, ctx)) for x in t[2])
         if not P:
             raise Undefined("divides(0, Q)")
@@ -551,8 +522,7 @@ def compare(op: str, a, b, b_tree=None) -> bool:
     if op == "≈":
         return approx(a, b_tree)
     if op in ("=", "≠"):
-        same = equal(a, b)
-        return same if op == "=" else not same
+        return equal(a, b) == (op == "=")
     if op == "~":
         return proportional(a, b)
     if op in ("⊆", "in"):
@@ -588,27 +558,23 @@ def equal(a, b) -> bool:
 def proportional(a, b) -> bool:
     """a ~ b: a = k·b for a non-zero constant k (polynomials, or vectors entry by entry)."""
     a, b = (a if isinstance(a, tuple) else (a,)), (b if isinstance(b, tuple) else (b,))
-    pairs = [(x, y) for x, y in zip(a, b)]
     if len(a) != len(b):
         return False
     k = None
-    for x, y in pairs:
+    for x, y in zip(a, b):
         if y.is_zero() or x.is_zero():
             if not (x.is_zero() and y.is_zero()):
                 return False
             continue
         ratio = x / y
         c = ratio.constant()
-        if c is None:
-            num = ratio.num
-            terms = list(num.items())
-            c = terms[0][1] / next(iter(ratio.den.values())) if terms else None
+        if c is None:                 # a constant ratio not in lowest terms: its first coefficient, checked
+            c = next(iter(ratio.num.values())) / next(iter(ratio.den.values())) if ratio.num else None
             if c is None or not ratio.same(RF.const(c)):
                 return False
-        if k is None:
-            k = c
-        elif k != c:
+        if k is not None and k != c:
             return False
+        k = c
     return k is not None
 
 
@@ -637,20 +603,6 @@ def as_set(x) -> RSet:
         return RSet([(x.lo, x.hi, x.lo_closed, x.hi_closed)])
     a = number(x)
     return RSet([(a, a, True, True)])
-
-
-def _sup(ctx, S):
-    parts = as_set(value(S, ctx)).parts
-    if not parts or parts[-1][1] in (NEG, POS):
-        raise Undefined("the supremum of an empty or unbounded set")
-    return parts[-1][1]
-
-
-def _inf(ctx, S):
-    parts = as_set(value(S, ctx)).parts
-    if not parts or parts[0][0] in (NEG, POS):
-        raise Undefined("the infimum of an empty or unbounded set")
-    return parts[0][0]
 
 
 # --------------------------------------------------------------------- binders
@@ -757,16 +709,13 @@ def conditions(body, B: Binding, ctx: Context) -> dict:
     out: dict = {}
 
     def walk(t):
-        if t[0] in ("and", "or", "implies", "iff"):
-            walk(t[1])
-            walk(t[2])
-        elif t[0] == "not":
-            walk(t[1])
+        if t[0] in CONNECTIVES:
+            for u in t[1:]:
+                walk(u)
         elif t[0] == "cmp":
             for k, (_op, a, b) in enumerate(zip(t[1], t[2], t[2][1:])):
                 if a[0] == "call" and a[1] in ATOMS:          # nroots(P) = 3: a count of the piece
-                    for j, c in enumerate(ATOMS[a[1]][0](ctx, a[2])):
-                        out[(id(a), j)] = c
+                    walk(a)
                     continue
                 for s in B.sigmas or (None,):
                     out[(id(t), k, s)] = _point_condition(a, b, ctx) or atom_condition(a, b, B, ctx, s)
@@ -809,13 +758,10 @@ def atom_condition(a, b, B: Binding, ctx: Context, sigma) -> Condition:
     if "x" in g.used() and B.mobius is None:
         raise Undefined("x is free: bind it to a fixed point (x = xplus(a, b, c, d), ...)")
     if "x" not in g.used():
-        N0, D0 = _in_rl(g.num), _in_rl(g.den)
-        return Condition(cp, N0, D0) if cp is not None or any(k[1] for k in N0) or any(k[1] for k in D0) \
-            else Condition(None, N0, D0)
+        return Condition(cp, _in_rl(g.num), _in_rl(g.den))
     if any(any(any(k) for k in e.den) for e in B.mobius):
         raise Undefined("the coefficients a, b, c, d of the Möbius map must be polynomials")
-    a_, b_, c_, d_ = (_in_rl_rf(e) for e in B.mobius)
-    return _with_x(g, a_, b_, c_, d_, sigma, cp)
+    return _with_x(g, [_in_rl(e.num) for e in B.mobius], sigma, cp)
 
 
 def _in_rl(p: dict) -> dict:
@@ -825,35 +771,24 @@ def _in_rl(p: dict) -> dict:
     return {(k[ix[0]], k[ix[1]]): v for k, v in p.items()}
 
 
-def _in_rl_rf(e: RF) -> tuple:
-    return _in_rl(e.num), _in_rl(e.den)
-
-
-def _with_x(g: RF, a, b, c, d, sigma: int, cp) -> Condition:
-    """g(x) at x = (A + σ√Δ)/(2c): with a = a₁/a₂ etc. brought to polynomials (A = a − d over the
-    common denominator), each power of x expanded in Q[r, λ][√Δ] (√Δ² = Δ)."""
-    from .poly import madd, mmul
-    den = mmul(mmul(a[1], b[1]), mmul(c[1], d[1]))
-    a0, b0, c0, d0 = (mmul(e[0], _drop(den, e[1])) for e in (a, b, c, d))
-    A = madd(a0, d0, -1)
-    delta = madd(mmul(A, A), mmul({(0, 0): Fraction(4)}, mmul(b0, c0)))
-    X = (A, {k: sigma * v for k, v in {(0, 0): Fraction(1)}.items()})      # (A + σ√Δ) as (P0, P1)
-    two_c = mmul({(0, 0): Fraction(2)}, c0)
+def _with_x(g: RF, abcd: list, sigma: int, cp) -> Condition:
+    """g(x) at x = (A + σ√Δ)/(2c), A = a − d, Δ = A² + 4bc (a, ..., d polynomials): each power of x
+    expanded in Q[r, λ][√Δ] (√Δ² = Δ) and multiplied by (2c)^deg."""
+    a, b, c, d = abcd
+    A, one, sg = madd(a, d, -1), {(0, 0): Fraction(1)}, {(0, 0): Fraction(sigma)}
+    delta = madd(mmul(A, A), mmul({(0, 0): Fraction(4)}, mmul(b, c)))
+    two_c = mmul({(0, 0): Fraction(2)}, c)
 
     def power_sum(poly: dict):
-        """poly(x)·(2c)^deg as (P0, P1), poly in r, λ, x (x's exponent last)."""
+        """poly(x)·(2c)^deg as (P0, P1), poly in r, λ, x."""
         ix = VARS.index("x")
         deg_x = max((k[ix] for k in poly), default=0)
         P0, P1 = {}, {}
         for k, v in poly.items():
-            e = k[ix]
-            rest = {(k[VARS.index("r")], k[VARS.index("λ")]): v}
-            q0, q1 = {(0, 0): Fraction(1)}, {}
-            for _ in range(e):                      # (q0 + q1√Δ)(A + σ√Δ)
-                q0, q1 = madd(mmul(q0, X[0]), mmul(mmul(q1, delta), {(0, 0): Fraction(sigma)})), \
-                    madd(mmul(q0, {(0, 0): Fraction(sigma)}), mmul(q1, X[0]))
-            scale = {(0, 0): Fraction(1)}
-            for _ in range(deg_x - e):
+            rest, q0, q1, scale = {(k[0], k[1]): v}, one, {}, one
+            for _ in range(k[ix]):                      # (q0 + q1√Δ)(A + σ√Δ)
+                q0, q1 = madd(mmul(q0, A), mmul(mmul(q1, delta), sg)), madd(mmul(q0, sg), mmul(q1, A))
+            for _ in range(deg_x - k[ix]):
                 scale = mmul(scale, two_c)
             P0 = madd(P0, mmul(mmul(rest, q0), scale))
             P1 = madd(P1, mmul(mmul(rest, q1), scale))
@@ -865,31 +800,6 @@ def _with_x(g: RF, a, b, c, d, sigma: int, cp) -> Condition:
     for _ in range(dn - dd):
         D0, D1 = mmul(D0, two_c), mmul(D1, two_c)
     return Condition(cp, N0, D0, N1, D1, delta)
-
-
-def _drop(den: dict, factor: dict) -> dict:
-    """den / factor for den a product that contains factor (exact division of polynomials)."""
-    from .poly import mmul
-    if factor == {(0, 0): Fraction(1)}:
-        return den
-    return _exact_div(den, factor, mmul)
-
-
-def _exact_div(n: dict, d: dict, mmul) -> dict:
-    """n / d when d divides n (polynomials in (r, λ)): long division on the lex order."""
-    from .poly import madd
-    q: dict = {}
-    n = dict(n)
-    lead_d = max(d)
-    while n:
-        lead = max(n)
-        e = tuple(a - b for a, b in zip(lead, lead_d))
-        if any(x < 0 for x in e):
-            raise Undefined("an inexact division")
-        c = n[lead] / d[lead_d]
-        q[e] = c
-        n = madd(n, mmul({e: c}, d), -1)
-    return q
 
 
 def at_point(body, p, B: Binding, ctx: Context, conds: dict) -> bool:
@@ -916,14 +826,8 @@ def _branches(p, B: Binding):
 
 def _truth_at(t, p, k, s, B, ctx, conds) -> bool:
     kind = t[0]
-    if kind in ("and", "or", "implies", "iff"):
-        a = _truth_at(t[1], p, k, s, B, ctx, conds)
-        if kind == "and" and not a or kind == "or" and a or kind == "implies" and not a:
-            return kind in ("or", "implies")
-        b = _truth_at(t[2], p, k, s, B, ctx, conds)
-        return b if kind != "iff" else a == b
-    if kind == "not":
-        return not _truth_at(t[1], p, k, s, B, ctx, conds)
+    if kind in CONNECTIVES:
+        return connective(t, lambda u: _truth_at(u, p, k, s, B, ctx, conds))
     if kind == "cmp":
         for j, op in enumerate(t[1]):
             a = t[2][j]

@@ -5,10 +5,9 @@ in λ are lists of polynomials in r (lowest degree first, both ways)."""
 from __future__ import annotations
 
 from fractions import Fraction
-from math import gcd as igcd
 
-from .poly import add, divmod_, gcd, integer_primitive, mul, scale, sign, sub, value
-from .sturm import Algebraic, count
+from .poly import add, bderiv, bmul, divmod_, integer_primitive, mul, scale, sub
+from .sturm import Algebraic, changes
 
 
 class AtR0:
@@ -24,23 +23,8 @@ class AtR0:
         return c if self.r0.rational or len(c) < len(self.r0.p) else divmod_(c, self.r0.p)[1]
 
     def sign(self, c: list) -> int:
-        """sign c(r0).  0 exactly when gcd(c, m) has a root in r0's interval (the one root of m
-        there is r0).  Else that at the middle of the interval, once :func:`_enclose` proves it
-        (true after enough bisections, as c(r0) ≠ 0)."""
-        c, r0, tested = self.reduce(c), self.r0, False
-        while c:
-            if r0.rational:
-                return sign(value(c, r0.lo))
-            s = _enclose(c, r0.lo, r0.hi)
-            if s:
-                return s
-            if not tested:
-                g, tested = gcd(c, r0.p), True
-                if len(g) > 1 and count(g, r0.lo, r0.hi) == 1:
-                    return 0
-            for _ in range(8):
-                r0.bisect()
-        return 0
+        """sign c(r0) (:meth:`Algebraic.sign_of`)."""
+        return self.r0.sign_of(self.reduce(c))
 
     def trim(self, P: list) -> list:
         """P without its leading coefficients that vanish at r0 (the same P(r0, λ))."""
@@ -50,16 +34,8 @@ class AtR0:
         return P
 
     def mul(self, P: list, Q: list) -> list:
-        """P·Q in Q[r][λ] (Cauchy product), coefficients reduced modulo m."""
-        out: list = [[] for _ in range(max(len(P) + len(Q) - 1, 0))]
-        for i, a in enumerate(P):
-            for j, b in enumerate(Q):
-                out[i + j] = add(out[i + j], mul(a, b))
-        return [self.reduce(c) for c in out]
-
-    def sub(self, P: list, Q: list) -> list:
-        """P − Q in Q[r][λ]."""
-        return [sub(P[i] if i < len(P) else [], Q[i] if i < len(Q) else []) for i in range(max(len(P), len(Q)))]
+        """P·Q in Q[r][λ], coefficients reduced modulo m."""
+        return [self.reduce(c) for c in bmul(P, Q)]
 
     def remainder(self, A: list, B: list) -> list:
         """A positive multiple at r0 of −rem(A, B) in Q(r0)[λ] (B trimmed, lc B(r0) ≠ 0): the
@@ -84,9 +60,8 @@ class AtR0:
     def variations(self, seq: list, x) -> int:
         """Sign changes of the sequence at λ = x (rational), or at ±∞ ("+inf", "-inf": the signs
         of the leading terms), zeros dropped."""
-        signs = [s for s in (self.sign(P[-1]) * (-1 if x == "-inf" and len(P) % 2 == 0 else 1) if isinstance(x, str)
-                             else self.at(P, x) for P in seq) if s]
-        return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
+        return changes(self.sign(P[-1]) * (-1 if x == "-inf" and len(P) % 2 == 0 else 1) if isinstance(x, str)
+                       else self.at(P, x) for P in seq)
 
     def taq(self, Q: list, P: list, a, b, seq=None) -> int:
         """Σ sign Q(r0, λ) over the distinct roots λ of P(r0, λ) in ]a, b[ (a, b rational or
@@ -94,7 +69,7 @@ class AtR0:
         the real closed field R ⊃ Q(r0) (Basu–Pollack–Roy, Thm 2.73; P need not be square-free).
         Q = 1 (``seq`` given: SRemS(P, P')) is Sturm's theorem, the number of distinct roots."""
         if seq is None:
-            seq = self.sequence(P, self.mul(_d(P), Q))
+            seq = self.sequence(P, self.mul(bderiv(P), Q))
         return self.variations(seq, a) - self.variations(seq, b)
 
     def roots(self, P: list) -> tuple[list, list]:
@@ -104,7 +79,7 @@ class AtR0:
         P = self.trim(P)
         if not P:
             raise ValueError("the polynomial vanishes identically at r0")
-        seq = self.sequence(P, _d(P))
+        seq = self.sequence(P, bderiv(P))
         total, B = self.taq([], P, "-inf", "+inf", seq), Fraction(1)
         while self.at(P, B) == 0 or self.at(P, -B) == 0 or self.taq([], P, -B, B, seq) != total:
             B *= 2
@@ -137,32 +112,11 @@ class AtR0:
             return out
         mult = []
         for iv in out:
-            D, k = _d(P), 1
+            D, k = bderiv(P), 1
             while self.taq(D, P, *iv) == 0:
-                D, k = _d(D), k + 1
+                D, k = bderiv(D), k + 1
             mult += [iv] * k
         return mult
-
-
-def _enclose(c: list, lo: Fraction, hi: Fraction) -> int:
-    """The sign of c ∈ Q[r] on [lo, hi] when it is that at the centre x: |c(x)| > w·Σ k|c_k|M^(k−1)
-    (w the half-width, M = |x| + w), a bound of |c − c(x)| there (the mean value theorem); else
-    0.  In integers: times d·D^n > 0 (x = X/D, w = W/D, d the common denominator of c)."""
-    x, w = (lo + hi) / 2, (hi - lo) / 2
-    D = d = x.denominator * w.denominator // igcd(x.denominator, w.denominator)
-    X, W = int(x * D), int(w * D)
-    for q in c:
-        d = d * q.denominator // igcd(d, q.denominator)
-    val = bound = 0
-    for k, q in enumerate(c):
-        val += int(q * d) * X ** k * D ** (len(c) - 1 - k)
-        bound += k * abs(int(q * d)) * (abs(X) + W) ** (k - 1) * W * D ** (len(c) - 1 - k) if k else 0
-    return (1 if val > 0 else -1) if abs(val) > bound else 0
-
-
-def _d(P: list) -> list:
-    """∂P/∂λ."""
-    return [scale(c, i) for i, c in enumerate(P)][1:]
 
 
 def _positive_content_free(P: list) -> list:

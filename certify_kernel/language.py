@@ -15,10 +15,10 @@ _TOKEN = re.compile(r"""
   | (?P<str>"[^"]*")
   | (?P<num>\d+(?:\.\d+)?)
   | (?P<name>[^\W\d]\w*[′']*)
-  | (?P<op>implies|iff|and|or|not|forall|mod|in|given|∞|π|≤|≥|≠|≈|∧|·|√|⊆|−|<=|>=|!=|[-+*/^()\[\],:;<>=~{}|])
+  | (?P<op>implies|iff|and|or|not|forall|mod|in|∞|π|≤|≥|≠|≈|∧|·|√|⊆|−|<=|>=|!=|[-+*/^()\[\],:;<>=~{}|])
 """, re.VERBOSE)
 
-_WORDS = {"and", "or", "not", "implies", "iff", "forall", "mod", "in", "given"}
+_WORDS = {"and", "or", "not", "implies", "iff", "forall", "mod", "in"}
 _ALIAS = {"−": "-", "<=": "≤", ">=": "≥", "!=": "≠"}
 COMPARISONS = ("=", "≠", "<", ">", "≤", "≥", "≈", "~", "⊆", "in")
 
@@ -90,10 +90,6 @@ class Parser:
                 self.next()
                 left = ("mod", left, self.formula(10, brackets))
                 continue
-            if op == "given" and power < 5:
-                self.next()
-                left = ("given", left, self.formula(5, brackets))
-                continue
             if op == "√" and power < 30:                     # 2√6: a number times a root
                 left = ("bin", "*", left, self.formula(30, brackets))
                 continue
@@ -105,9 +101,7 @@ class Parser:
                 return left
             self.next()
             right = self.formula(bp - 1 if op in ("^", "implies") else bp, brackets)   # right-associative
-            left = (op if op in ("and", "or", "implies", "iff") else "bin", *((left, right) if op in
-                    ("and", "or", "implies", "iff") else (op, left, right)))
-        return left
+            left = (op, left, right) if op in ("and", "or", "implies", "iff") else ("bin", op, left, right)
 
     def comparison(self, left, brackets: bool):
         """a op b [op c ...]: a chain of comparisons (each pair compared)."""
@@ -135,8 +129,7 @@ class Parser:
         if kind == "name":
             if self.peek()[1] == "(":
                 self.next()
-                args = self.items(")")
-                return ("call", tok, tuple(args))
+                return ("call", tok, tuple(self.items(")")))
             return ("name", tok)
         if tok == "-":
             return ("neg", self.formula(40, brackets))
@@ -197,8 +190,7 @@ class Parser:
         return ("interval", lo, hi, lo_closed, tok == "]")
 
     def binders(self) -> tuple:
-        """NAME in SET | NAME = EXPR, separated by commas (a binder may be followed by a
-        condition "λ > 0" that restricts it: read as a formula binder)."""
+        """NAME in SET | NAME = EXPR, separated by commas."""
         out = []
         while True:
             kind, name = self.next()

@@ -1,42 +1,30 @@
 """The four particles on the line, moved exactly: Theorem 3.1's self-similar datum on the dynamics
 (T25.2, statements/3_simulation.txt).
 
-The state between two collisions is the gaps p = (p_1, p_2, p_3) ≥ 0 and the relative velocities
-q = (q_1, q_2, q_3), q_k = v_{k+1} − v_k (l. 195-198): in free flight p(t) = p + t·q (l. 154-157),
-and the pair k (a, b, c for k = 1, 2, 3) collides when p_k reaches 0 with q_k < 0, at t_k = −p_k/q_k;
-the next collision is the pair whose t_k is the smallest, which must be smaller than every other (a
-tie, a multiple collision, is not followed: the run stops there); then p_k = 0 and q ↦ K q, K the
-kernel's collision matrix (l. 159-163, :func:`certify_kernel.evaluate.collision`).  No pair with
-q_k < 0: the particles separate, no collision ever comes.
+Between two collisions the gaps p = (p_1, p_2, p_3) ≥ 0 move as p + t·q, q_k = v_{k+1} − v_k
+(l. 154-157, 195-198); the pair k (a, b, c) collides when p_k reaches 0 with q_k < 0, at t_k =
+−p_k/q_k; the next collision is the pair of the smallest t_k, strictly (a tie, a multiple
+collision, stops the run); then p_k = 0 and q ↦ K q, K the kernel's collision matrix (l. 159-163).
+No q_k < 0: the particles separate.
 
-The datum of Theorem 3.1 lies in the field Q(λ, √Δ), λ a real root of cp(r₀, λ) at a rational r₀
-and Δ = (a − d)² + 4bc: every number is an exact element α + β√Δ, α, β polynomials in λ reduced
-modulo λ's polynomial, and every sign the dynamics asks for (which q_k < 0, which t_k is the
-smallest, whether two states are equal) is decided exactly: signs of polynomials at λ by Sturm
-(:meth:`Algebraic.sign_of`), of α + β√Δ from those of α, β and α² − β²Δ.  So ``follows``,
-``q_scaled``, ``p_scaled`` and ``leaves`` below are proved, not observed: no rounding enters.
-
-In the statement files: ``datum(r = 1/20, λ = upper(cpM), x = xplus(a, b, c, d), p = (1, 0, x),
-q = (-1, U, V))`` is the state at t = 0 (r₀ rational; λ = upper, lower or branch(P, k) of P at r₀;
-x a fixed point of the Möbius map, as in the binders of ``forall``; p and q rational functions of
-r, λ, x), and the predicates are
-
-* ``follows(D, W)``: the first |W| collisions from D are the letters of the word W (``(ababcb)^20``);
-* ``q_scaled(D, w, n)``: q(t_{k|w|}) = λ^k q(0) for k = 1, ..., n (the collisions being w^n);
-* ``p_scaled(D, w, n)``: p(t_{k|w|}) = μ^k p(0) for k = 1, ..., n, μ = p_1(t_{|w|}) (idem);
-* ``leaves(D, w, n)``: within n periods the collisions depart from w w w ...: a collision that is
-  not the pattern's next letter, or none at all (the particles separate).
+The datum lies in Q(λ, √Δ), λ a real root of cp(r₀, λ) at a rational r₀, Δ = (a − d)² + 4bc:
+every number is an exact α + β√Δ (α, β polynomials in λ modulo λ's polynomial) and every sign the
+dynamics asks for is decided exactly (Sturm at λ; α + β√Δ from the signs of α, β, α² − β²Δ).
+``datum(r = R0, λ = upper(P), x = xplus(a, b, c, d), p = (...), q = (...))`` is the state at t = 0
+(λ and x as the binders of ``forall`` read them); ``follows(D, W)``: the first |W| collisions spell
+W; ``q_scaled(D, w, n)``, ``p_scaled(D, w, n)``: q(t_{k|w|}) = λ^k q(0), p(t_{k|w|}) = μ^k p(0)
+(μ = p_1(t_{|w|})) for k = 1, ..., n; ``leaves(D, w, n)``: within n periods the collisions depart
+from w w w ... (docs/statements.md).
 """
 from __future__ import annotations
 
 from fractions import Fraction
 
 from .cells import _surd_sign
-from .evaluate import FUNCTIONS, PREDICATES, NotVerified, Undefined, bind, collision, expand_word, value
+from .evaluate import FUNCTIONS, PREDICATES, NotVerified, Undefined, bind, collisions_at, expand_word, value
 from .poly import add, at_r, deg, divmod_, mul, scale, sub, trim
-from .poly import value as at
 from .sturm import Algebraic, real_roots
-from .values import RF, VARS, univariate
+from .values import RF, VARS
 
 
 class Field:
@@ -113,16 +101,13 @@ class Num:
         F = self.F
         return _surd_sign(self.a, self.b, F.delta, F.sign, lambda x, y: F.reduce(mul(x, y)), sub)
 
-    def __repr__(self) -> str:
-        return f"({self.a}) + ({self.b})√Δ"
-
 
 class Datum:
     """The state at t = 0, its field, λ, and the collisions computed so far (each proved)."""
 
     def __init__(self, F: Field, lam: Num, p: tuple, q: tuple, r0: Fraction):
         self.F, self.lam, self.r0 = F, lam, r0
-        self.K = [[[_at_r(e, r0) for e in row] for row in collision(k).rows] for k in range(3)]
+        self.K = collisions_at(r0)
         self.states, self.word, self.stop = [(p, q)], "", ""
 
     def run(self, n: int, pattern: str = "") -> None:
@@ -148,10 +133,6 @@ class Datum:
             q = tuple(sum((q[j] * c for j, c in enumerate(self.K[first][i]) if c), Num(self.F, [])) for i in range(3))
             self.states.append((p, q))
             self.word += "abc"[first]
-
-
-def _at_r(e: RF, r0: Fraction) -> Fraction:
-    return at(univariate(e, "r"), r0)
 
 
 def _rf_at(e: RF, r0: Fraction, nums: dict, F: Field) -> Num:

@@ -1,46 +1,42 @@
 """The self-similar candidate of a periodic collision word and where it realises the word (l. 265-321,
-441-516; the literature, l. 130-132, 1099-1130), decided exactly: the atoms datum, feasible, stable,
-realises, next and the functions eigenvector, posmap of the statement language (docs/statements.md;
-the atom "datum" is named selfsimilar there).
+441-516; the literature, l. 130-132, 1099-1130): the atoms selfsimilar, feasible, stable, realises,
+next and the functions eigenvector, posmap of the statement language (docs/statements.md).
 
 The candidate.  A word w = c_1 ··· c_n (four particles: a, b, c, the pairs 1-2, 2-3, 3-4; three
 particles: a, b; the symmetric system p_1 = p_3, q_1 = q_3 of l. 132: [ac], b) starts with the
-first gap's collision and ends with b (the normalisation of l. 270-280).  M_w = K_{c_n} ··· K_{c_1},
-the K the kernel's collision matrices (:func:`evaluate.collision`; three particles: the leading 2×2
-blocks of A and B, which do not read q_3; the symmetric system: A·C and B on (q_1, q_2, q_1)).  On a
-real eigenvalue λ of M_w (a branch, the largest first): q(0) = (-1, u[, v]) solving rows 1 and 2 of
-(M_w - λ) q = 0 by Cramer (l. 366; where that is 0/0, rows 1 and 3, then 2 and 3), p(0) = (1, 0[, x]),
-the collisions *assumed* (l. 460-463): at collision k, of gap i, p(t_k) = p(t_{k-1}) - (p_i/q_i)
-q(t_{k-1}), q(t_k) = K q(t_{k-1}).  Then p_2(t_n) = 0 and p_3/p_1 = f(x) = (ax + b)/(cx + d), x a
-fixed point x± = (a - d ± √Δ)/(2c), Δ = (a - d)² + 4bc (where c = 0, f is affine: x = b/(d - a)).
+first gap's collision and ends with b (l. 270-280).  M_w = K_{c_n} ··· K_{c_1}, the K the kernel's
+collision matrices (three particles: the leading 2×2 blocks of A and B, which do not read q_3; the
+symmetric system: A·C and B on (q_1, q_2, q_1)).  On a real eigenvalue λ of M_w (a branch, the
+largest first): q(0) = (-1, u[, v]) solving rows 1 and 2 of (M_w - λ) q = 0 by Cramer (l. 366;
+where that is 0/0, undecided), p(0) = (1, 0[, x]), the collisions *assumed*
+(l. 460-463): at collision k, of gap i, p(t_k) = p(t_{k-1}) - (p_i/q_i) q(t_{k-1}), q(t_k) =
+K q(t_{k-1}).  Then p_2(t_n) = 0 and p_3/p_1 = f(x) = (ax + b)/(cx + d), x a fixed point
+x± = (a - d ± √Δ)/(2c), Δ = (a - d)² + 4bc (where c = 0, f is affine: x = b/(d - a)).
 
-What is decided.  The candidate *realises* a word v (its first |v| collisions, strictly) iff u > 0
-(p_2 opens after the b before t = 0), x > 0, at each collision k of gap i the pair approaches,
-q_i(t_{k-1}) < 0, and its gap is open, p_i(t_{k-1}) > 0 (automatic for k = 1 and when the pair
-collided at k - 2), and every gap that does not collide at the last two collisions is open at the
-end.  Enough: a collision b adds (1+r)/2·q_2 < 0 to q_1 and q_3, a or c adds (1+r)/2·q_1 or
-(1+r)/2·q_3 < 0 to q_2 ([ac]: (1+r)q_1), so each gap is concave between two collisions of its own
-pair, positive inside when positive at both ends: no other pair collides first, no triple
-collision (l. 478-480, for every gap).  *datum* (self-similar data exist): λ > 0, u > 0, x real
-and > 0; *feasible*: λ > 0 and the candidate realises w; *stable*: moreover λ strictly dominant
-(|μ| < λ for the other eigenvalues: with Q = cp/(Λ - λ), Q(λ) = cp'(λ) > 0, Q(-λ) > 0 and, for a
-cubic, μν = det M/λ < λ²: Schur-Cohn) and the fixed point attracting, |f'(x)| < 1, i.e.
-(cx + d)² ∓ (ad - bc) > 0, (cx + d)² = c(a + d)x + bc + d² at a fixed point.  Each atom holds at r
-when it holds on some branch and fixed point (next: on every one where the candidate realises v).
+What is decided.  The candidate *realises* a word v (its first |v| collisions, strictly) iff u > 0,
+x > 0, at each collision k of gap i q_i(t_{k-1}) < 0 and p_i(t_{k-1}) > 0 (automatic for k = 1 and
+when the pair collided at k - 2), and every gap that does not collide at the last two collisions is
+open at the end.  Enough: a collision b adds (1+r)/2·q_2 < 0 to q_1 and q_3, a or c adds
+(1+r)/2·q_1 or (1+r)/2·q_3 < 0 to q_2 ([ac]: (1+r)q_1), so each gap is concave between two
+collisions of its own pair, positive inside when positive at both ends: no other pair collides
+first, no triple collision (l. 478-480).  *selfsimilar*: λ > 0, u > 0, x real and > 0; *feasible*:
+λ > 0 and the candidate realises w; *stable*: moreover λ strictly dominant (|μ| < λ for the other
+eigenvalues: with Q = cp/(Λ - λ), Q(λ) = cp'(λ) > 0, Q(-λ) > 0 and, for a cubic, μν = det M/λ < λ²:
+Schur-Cohn) and the fixed point attracting, |f'(x)| < 1, i.e. (cx + d)² ∓ (ad - bc) > 0, (cx + d)² =
+c(a + d)x + bc + d² at a fixed point.  Each atom holds at r when it holds on some branch and fixed
+point (next: on every one where the candidate realises v).
 
-How.  With K' = 2K (integer matrices), M' = 2ⁿM_w and Λ = 2ⁿλ, cp = det(Λ - M') is monic in Λ over
-Z[r].  Every quantity is an element of Z[r][Λ]/(cp) over a denominator in r alone, (c₀ + c₁Λ +
-c₂Λ²)/δ(r), the parts divided by their gcd; its value on a branch is the quantity's wherever
-δ(r₀) ≠ 0 (cp monic: the identities hold in Z[r][Λ]/(cp)).  Each requirement is imposed where the
-previous ones hold, per branch and fixed point (a *region*), by a decomposition of r
+How.  With K' = 2K, M' = 2ⁿM_w and Λ = 2ⁿλ, cp = det(Λ - M') is monic in Λ over Z[r].  Every
+quantity is an element (c₀ + c₁Λ + c₂Λ²)/δ(r) of Z[r][Λ]/(cp) over a denominator in r alone, its
+value on a branch the quantity's wherever δ(r₀) ≠ 0 (cp monic).  Each requirement is imposed where
+the previous ones hold, per branch and fixed point (a *region*), by a decomposition of r
 (:mod:`certify_kernel.cells`): its cut points are the roots of the norms Res_Λ(cp, ·) of its parts
 (numerator, denominator, c and Δ of x) and of disc cp, split over the witness's factors (used only
-through exact divisions) so that they are roots of small polynomials; one exact sample per cell;
-at a cut point the sign follows from the neighbouring cells where multiplicities show that it must
-(:class:`_Reader`), else from rational interval enclosures (:func:`_enclosed`), else exactly in
-Q(r₀) (cells.Point); where the forms degenerate (δ(r₀) = 0, or their (a, b, c, d) share a zero) by
-the run itself in intervals (:func:`_ball_sign`), else exactly on the division-free run
-(:class:`_Reduced`).  Points no route decides are reported undecided.
+through exact divisions); one exact sample per cell; at a cut point the sign follows from the
+neighbouring cells where multiplicities show that it must (:class:`_Reader`), else from rational
+enclosures (:func:`_enclosed`), else exactly in Q(r₀) (cells.Point); where the forms degenerate
+(δ(r₀) = 0, or (a, b, c, d) share a zero) exactly on the division-free run (:class:`_Reduced`).
+Points no route decides are undecided.
 """
 from __future__ import annotations
 
@@ -49,12 +45,26 @@ from functools import cached_property
 from math import ceil
 from math import gcd as igcd
 
-from .cells import Condition, Point, Undecided, _between, _OrderKey
+from .cells import ORDER, Condition, Point, Undecided, _between, cut_points
 from .evaluate import ATOMS, FUNCTIONS, Matrix, NotVerified, collision, expand_word
+from .poly import (
+    add,
+    badd,
+    bderiv,
+    bmul,
+    enclose,
+    iadd,
+    imul,
+    in_lambda,
+    integer_primitive,
+    mul,
+    squarefree,
+    trim,
+    value,
+)
 from .poly import gcd as qgcd
-from .poly import integer_primitive, squarefree, value
 from .sturm import Algebraic
-from .values import RF, Undefined, _root_above, _root_below, number, roots_in, univariate
+from .values import RF, Undefined, _root_above, _root_below, number, univariate
 
 LONGEST = 20               # words of more collisions are not analysed (the kernel's time budget)
 LARGEST = 40               # a cut polynomial left unsplit of larger degree is not isolated (Sturm is slow)
@@ -62,55 +72,7 @@ GAP = {"a": 0, "s": 0, "b": 1, "c": 2}
 
 
 # ----------------------------------------------------------------- integer polynomials
-# in r: lists of ints, lowest degree first; in (r, Λ): lists over the powers of Λ of those
-
-def _trim(p: list) -> list:
-    while p and (p[-1] == 0 or p[-1] == []):
-        p.pop()
-    return p
-
-
-def _add(p: list, q: list, c: int = 1) -> list:
-    out = list(p) + [0] * (len(q) - len(p))
-    for i, y in enumerate(q):
-        out[i] += c * y
-    return _trim(out)
-
-
-def _mul(p: list, q: list) -> list:
-    """p·q; long integer ones by Kronecker substitution (one integer product of p(2^k), q(2^k),
-    whose base-2^k digits, |digit| < 2^(k-1), are the coefficients)."""
-    if not p or not q:
-        return []
-    if min(len(p), len(q)) < 16 or not all(type(a) is int for a in p + q):
-        out = [0] * (len(p) + len(q) - 1)
-        for i, a in enumerate(p):
-            for j, b in enumerate(q):
-                out[i + j] += a * b
-        return _trim(out)
-    k = (max(map(abs, p)) * max(map(abs, q)) * min(len(p), len(q))).bit_length() + 1
-    C = sum(a << (k * i) for i, a in enumerate(p)) * sum(b << (k * i) for i, b in enumerate(q))
-    out, mask = [], (1 << k) - 1
-    for _ in range(len(p) + len(q) - 1):
-        d = C & mask
-        d -= (1 << k) if d >> (k - 1) else 0
-        out.append(d)
-        C = (C - d) >> k
-    return _trim(out)
-
-
-def _badd(P: list, Q: list, c: int = 1) -> list:
-    return _trim([_add(P[j] if j < len(P) else [], Q[j] if j < len(Q) else [], c) for j in range(max(len(P), len(Q)))])
-
-
-def _bmul(P: list, Q: list) -> list:
-    out: list = [[] for _ in range(max(len(P) + len(Q) - 1, 0))]
-    for i, a in enumerate(P):
-        for j, b in enumerate(Q):
-            if a and b:
-                out[i + j] = _add(out[i + j], _mul(a, b))
-    return _trim(out)
-
+# in r: lists of ints, lowest degree first; in (r, Λ): lists over the powers of Λ of those (poly.py)
 
 def _brem(P: list, cp: list) -> list:
     """P modulo cp, monic in Λ (Λ^m = -(the rest)): the same value on every branch."""
@@ -118,13 +80,9 @@ def _brem(P: list, cp: list) -> list:
     while len(P) > m:
         top, k = P.pop(), len(P) - m
         for j in range(m):
-            P[k + j] = _add(P[k + j], _mul(top, cp[j]), -1)
-        _trim(P)
+            P[k + j] = add(P[k + j], mul(top, cp[j]), -1)
+        P = trim(P)
     return P
-
-
-def _neg(P: list) -> list:
-    return [[-a for a in c] for c in P]
 
 
 def _content(polys) -> int:
@@ -147,17 +105,17 @@ def _exact(p: list, f: list) -> list | None:
         q[k] = a
         for j, b in enumerate(f):
             p[k + j] -= a * b
-    return _trim(q) if q and not any(p) else None
+    return trim(q) if q and not any(p) else None
 
 
 def _gcd(p: list, q: list) -> list:
     """The primitive gcd in Z[r] (:func:`poly.gcd` over Q, made integral)."""
     if len(p) == 1 or len(q) == 1:
         return [1]
-    return [int(c) for c in integer_primitive(qgcd(p, q))]
+    return integer_primitive(qgcd(p, q))
 
 
-def _det(rows: list, add=_add, mul=_mul) -> list:
+def _det(rows: list, add=add, mul=mul) -> list:
     """The determinant of a 2×2 or 3×3 matrix of polynomials (Laplace along row 1)."""
     if len(rows) == 2:
         (a, b), (c, d) = rows
@@ -204,17 +162,17 @@ def norm(P: list, cp: list) -> list:
     if len(P) < 2:
         out = [1]
         for _ in range(len(cp) - 1):
-            out = _mul(out, P[0] if P else [])
+            out = mul(out, P[0] if P else [])
         return out
     return _det(_mult_matrix(P, cp))
 
 
 def _emul(x: El, y: El, cp: list) -> El:
-    return _el(_bmul(x.c, y.c), _mul(x.d, y.d), cp)
+    return _el(bmul(x.c, y.c), mul(x.d, y.d), cp)
 
 
 def _esub(x: El, y: El, cp: list) -> El:
-    return _el(_badd(_bmul(x.c, [y.d]), _bmul(y.c, [x.d]), -1), _mul(x.d, y.d), cp)
+    return _el(badd(bmul(x.c, [y.d]), bmul(y.c, [x.d]), -1), mul(x.d, y.d), cp)
 
 
 def _inverse(P: list, cp: list) -> El:
@@ -228,7 +186,7 @@ def _inverse(P: list, cp: list) -> El:
     return _el(adj, n, cp)
 
 
-def _sum(items, add=_badd) -> list:
+def _sum(items, add=badd) -> list:
     out: list = []
     for P in items:
         out = add(out, P)
@@ -252,7 +210,7 @@ def _matrices(system: str) -> dict:
     A, B, C = collision(0), collision(1), collision(2)
 
     def ints(K, size):
-        return [[_trim([int(2 * c) for c in univariate(e)]) if not e.is_zero() else [] for e in row[:size]]
+        return [[trim([int(2 * c) for c in univariate(e)]) if not e.is_zero() else [] for e in row[:size]]
                 for row in K.rows[:size]]
 
     def symmetric(K):                 # on (q_1, q_2, q_1): rows 1, 2 and columns 1 + 3, 2
@@ -282,34 +240,34 @@ class Run:
             t = [_emul(P[i][h], w, cp) for h in (0, 1)]                                # p_i/q̃_i
             P = [tuple(_esub(P[j][h], _emul(t[h], El(q[j], [1]), cp), cp) for h in (0, 1)) for j in range(g)]
             P[i] = (zero, zero)
-            q = [_sum([_bmul(q[j], [K[row][j]]) for j in range(g) if K[row][j]]) for row in range(g)]
+            q = [_sum([bmul(q[j], [K[row][j]]) for j in range(g) if K[row][j]]) for row in range(g)]
             self.q.append(q)
             self.p.append(P)
 
 
 class Candidate:
-    """cp = det(Λ - M'), q̃(0) = det·(-1, u[, v]) from the rows ``rows`` of (M' - Λ)q = 0 (Cramer),
+    """cp = det(Λ - M'), q̃(0) = det·(-1, u[, v]) from rows 1 and 2 of (M' - Λ)q = 0 (Cramer),
     the runs, and (four particles) the position map (a, b, c, d) = L1·L3/h·(p(t_n)'s coefficients)."""
 
-    def __init__(self, text: str, rows: tuple = (0, 1)):
-        self.text, self.rows, self.runs, self.points = text, rows, {}, {}
+    def __init__(self, text: str):
+        self.runs, self.points = {}, {}
         self.system, self.word = read_word(text)
         self.K = _matrices(self.system)
         g = 3 if self.system == "four" else 2
         M = [[[1] if i == j else [] for j in range(g)] for i in range(g)]
         for letter in self.word:
             K = self.K[letter]
-            M = [[_sum([_mul(K[i][k], M[k][j]) for k in range(g)], _add) for j in range(g)] for i in range(g)]
+            M = [[_sum([mul(K[i][k], M[k][j]) for k in range(g)], add) for j in range(g)] for i in range(g)]
         self.M = M
-        B = [[_trim([M[i][j], [-1]] if i == j else [M[i][j]]) for j in range(g)] for i in range(g)]   # M' - Λ
-        self.cp = _det([[_neg(e) for e in row] for row in B], _badd, _bmul)
+        B = [[trim([M[i][j], [-1]] if i == j else [M[i][j]]) for j in range(g)] for i in range(g)]   # M' - Λ
+        self.cp = _det([[badd([], e, -1) for e in row] for row in B], badd, bmul)
         if g == 3:
-            (b1, a11, a12), (b2, a21, a22) = B[rows[0]], B[rows[1]]
-            det = _det([[a11, a12], [a21, a22]], _badd, _bmul)
-            q0 = [_neg(det), _det([[b1, a12], [b2, a22]], _badd, _bmul), _det([[a11, b1], [a21, b2]], _badd, _bmul)]
+            (b1, a11, a12), (b2, a21, a22) = B[0], B[1]
+            det = _det([[a11, a12], [a21, a22]], badd, bmul)
+            q0 = [badd([], det, -1), _det([[b1, a12], [b2, a22]], badd, bmul), _det([[a11, b1], [a21, b2]], badd, bmul)]
         else:                          # row 1: (m11 - Λ)(-1) + m12 u = 0, row 2: m21(-1) + (m22 - Λ)u = 0
-            det, U = (B[0][1], B[0][0]) if rows[0] == 0 else (B[1][1], B[1][0])
-            q0 = [_neg(det), U]
+            det, U = B[0][1], B[0][0]
+            q0 = [badd([], det, -1), U]
         self.det, self.q0 = _brem(det, self.cp), [_brem(e, self.cp) for e in q0]
         self.cp_dict = _dict(self.cp)
 
@@ -323,10 +281,10 @@ class Candidate:
         L3 = lcm(δ_a, δ_b), L1 = lcm(δ_c, δ_d), h the content; and L1·L3."""
         (d, c), _, (b, a) = self.run.p[-1]
         L1, L3 = _lcm(d.d, c.d), _lcm(b.d, a.d)
-        abcd = [_bmul(e.c, [_mul(_exact(L, e.d), L2)]) for e, L, L2 in ((a, L3, L1), (b, L3, L1), (c, L1, L3),
+        abcd = [bmul(e.c, [mul(_exact(L, e.d), L2)]) for e, L, L2 in ((a, L3, L1), (b, L3, L1), (c, L1, L3),
                                                                        (d, L1, L3))]
         h = _content(x for P in abcd for x in P)
-        return [[[y // h for y in x] for x in P] for P in abcd], _mul(L1, L3)
+        return [[[y // h for y in x] for x in P] for P in abcd], mul(L1, L3)
 
     @property
     def abcd(self) -> list:
@@ -335,7 +293,7 @@ class Candidate:
     @cached_property
     def disc(self) -> list:
         """The factors of disc cp = Res_Λ(cp, ∂cp/∂Λ) (where two branches meet)."""
-        return [f for f, _ in _factors(norm([[i * a for a in c] for i, c in enumerate(self.cp)][1:], self.cp))]
+        return [f for f, _ in _factors(norm(bderiv(self.cp), self.cp))]
 
     def run_of(self, word: str) -> Run:
         if word not in self.runs:
@@ -354,14 +312,14 @@ class Candidate:
 _CANDIDATES: dict = {}
 
 
-def candidate(text: str, rows: tuple = (0, 1)) -> Candidate:
-    if (text, rows) not in _CANDIDATES:
-        _CANDIDATES[(text, rows)] = Candidate(text, rows)
-    return _CANDIDATES[(text, rows)]
+def candidate(text: str) -> Candidate:
+    if text not in _CANDIDATES:
+        _CANDIDATES[text] = Candidate(text)
+    return _CANDIDATES[text]
 
 
 def _lcm(a: list, b: list) -> list:
-    return _mul(a, _exact(b, _gcd(a, b)))
+    return mul(a, _exact(b, _gcd(a, b)))
 
 
 # ----------------------------------------------------------------- requirements and their conditions
@@ -372,11 +330,11 @@ def _dict(P: list) -> dict:
 
 class Req:
     """A quantity g = (G0 + x·G1)/D (G0, G1, D polynomials in r, Λ) and the strict sign it must have;
-    ``kind`` names the positions' ones ("x", ("p", word, k, j), ("f'", ±1)), whose division-free
-    form ``free`` (a function of a :class:`_Reduced`) is read where this one degenerates."""
+    for the positions' ones, their division-free form ``free`` (a function of a :class:`_Reduced`),
+    read where this one degenerates."""
 
-    def __init__(self, name: str, sign: int, G0: list, G1: list, D: list, free=None, kind: tuple = ()):
-        self.name, self.sign, self.G0, self.G1, self.D, self.free, self.kind = name, sign, G0, G1, D, free, kind
+    def __init__(self, name: str, sign: int, G0: list, G1: list, D: list, free=None):
+        self.name, self.sign, self.G0, self.G1, self.D, self.free = name, sign, G0, G1, D, free
         self._conds: dict = {}
 
     def cond(self, cand, s, affine: bool = False):
@@ -407,9 +365,6 @@ class _Cond(Condition):
             self._cuts = out
         return self._cuts
 
-    def bounding(self) -> list:
-        return [[Fraction(a) for a in f] for f in self.cuts()]
-
 
 def _cond(cand, P: list, D: list | None = None) -> _Cond:
     """The condition P/D (D = 1 by default), for signs at points."""
@@ -426,16 +381,16 @@ def _condition(cand, G0, G1, D, s, abcd, affine):
         return _Cond(cand, {"N0": G0, "D0": D}, [("N", G0), ("D", D)]) if D else None
     a, b, c, d = abcd
     if affine:
-        dma = _badd(d, a, -1)
-        D0 = red(_brem(_bmul(dma, D), cp))
-        return _Cond(cand, {"N0": red(_brem(_badd(_bmul(G0, dma), _bmul(b, G1)), cp)), "D0": D0}) if D0 else None
-    A = _badd(a, d, -1)
-    delta = red(_brem(_badd(_bmul(A, A), _bmul([[4]], _bmul(b, c))), cp))
-    N0 = red(_brem(_badd(_bmul([[2]], _bmul(c, G0)), _bmul(A, G1)), cp))
-    D0 = red(_brem(_bmul([[2]], _bmul(c, D)), cp))
+        dma = badd(d, a, -1)
+        D0 = red(_brem(bmul(dma, D), cp))
+        return _Cond(cand, {"N0": red(_brem(badd(bmul(G0, dma), bmul(b, G1)), cp)), "D0": D0}) if D0 else None
+    A = badd(a, d, -1)
+    delta = red(_brem(badd(bmul(A, A), bmul([[4]], bmul(b, c))), cp))
+    N0 = red(_brem(badd(bmul([[2]], bmul(c, G0)), bmul(A, G1)), cp))
+    D0 = red(_brem(bmul([[2]], bmul(c, D)), cp))
 
     def norms():
-        Q = _brem(_badd(_badd(_bmul(c, _bmul(G0, G0)), _bmul(A, _bmul(G0, G1))), _bmul(b, _bmul(G1, G1)), -1), cp)
+        Q = _brem(badd(badd(bmul(c, bmul(G0, G0)), bmul(A, bmul(G0, G1))), bmul(b, bmul(G1, G1)), -1), cp)
         return [("N", Q), ("c", c), ("D", D), ("delta", delta)]
     return _Cond(cand, {"N0": N0, "D0": D0, "N1": [[s * x for x in p] for p in G1], "delta": delta}, norms) \
         if D0 else None
@@ -447,7 +402,7 @@ def requirements(cand, stage: str, v: str | None = None) -> list:
     |f'(x)| < 1)."""
     one, four = [[1]], len(cand.q0) == 3
     lam, u = Req("λ", 1, [[], [1]], [], one), Req("u", 1, cand.q0[1], [], cand.det)
-    x = Req("x", 1, [], one, one, free=lambda R: ([], one, one), kind=("x",))
+    x = Req("x", 1, [], one, one, free=lambda R: ([], one, one))
     if stage == "datum":
         return [lam, u] + ([x] if four else [])
     v = cand.word if v is None else v
@@ -473,24 +428,24 @@ def _position(cand, run, k: int, j: int) -> Req:
     """p_j(t_k) > 0: P0 + x·P1 over one denominator in r; division-free, over (-det)^k."""
     P0, P1 = run.p[k][j]
     L = _lcm(P0.d, P1.d)
-    G0, G1 = (_bmul(e.c, [_exact(L, e.d)]) if e.c else [] for e in (P0, P1))
+    G0, G1 = (bmul(e.c, [_exact(L, e.d)]) if e.c else [] for e in (P0, P1))
 
     def free(R):
         F0, F1 = R.free(run.word)[k][j]
         return F0, F1, (R.minus_det if k % 2 else [[1]])
-    return Req(f"p_{j + 1}(t_{k})", 1, G0, G1, [L], free=free, kind=("p", run.word, k, j))
+    return Req(f"p_{j + 1}(t_{k})", 1, G0, G1, [L], free=free)
 
 
 def _dominance(cand) -> list:
     """λ strictly dominant: cp'(λ) > 0, cp(-λ) > 0 (quadratic); cp'(λ) > 0, -cp(-λ) > 0,
     λ³ - det M > 0 (cubic) (cp(Λ) = 2^(3n)cp(λ): positive multiples)."""
     cp, one = cand.cp, [[1]]
-    d = [[i * a for a in c] for i, c in enumerate(cp)][1:]
+    d = bderiv(cp)
     minus = [[(-1) ** i * a for a in c] for i, c in enumerate(cp)]
     if len(cp) == 3:
         return [Req("cp'(λ)", 1, d, [], one), Req("cp(-λ)", 1, minus, [], one)]
     return [Req("cp'(λ)", 1, d, [], one), Req("-cp(-λ)", -1, minus, [], one),
-            Req("λ³ - det M", 1, _badd([[], [], [], [1]], [cp[0]]), [], one)]
+            Req("λ³ - det M", 1, badd([[], [], [], [1]], [cp[0]]), [], one)]
 
 
 def _attracting(cand) -> list:
@@ -500,11 +455,11 @@ def _attracting(cand) -> list:
     for sg in (-1, 1):
         def parts(abcd, sg=sg):
             a, b, c, d = abcd
-            return _badd(_badd(_bmul(b, c), _bmul(d, d)), _badd(_bmul(a, d), _bmul(b, c), -1), sg), \
-                _bmul(c, _badd(a, d)), [[1]]
+            return badd(badd(bmul(b, c), bmul(d, d)), badd(bmul(a, d), bmul(b, c), -1), sg), \
+                bmul(c, badd(a, d)), [[1]]
         G0, G1, D = parts(cand.abcd)
         out.append(Req(f"(cx+d)² {'+' if sg > 0 else '-'} (ad-bc)", 1, _brem(G0, cand.cp), _brem(G1, cand.cp), D,
-                       free=lambda R, parts=parts: tuple(R.reduce(P) for P in parts(R.abcd)), kind=("f'", sg)))
+                       free=lambda R, parts=parts: tuple(R.reduce(P) for P in parts(R.abcd))))
     return out
 
 
@@ -516,44 +471,34 @@ def learn(factors) -> None:
     """Add a witness's factors to the base (each is used only through exact divisions)."""
     known = {tuple(f) for f, _ in BASE}
     for f in factors:
-        f = [int(a) for a in integer_primitive([Fraction(a) for a in f])]
+        f = integer_primitive([Fraction(a) for a in f])
         if len(f) > 1 and tuple(f) not in known:
             known.add(tuple(f))
-            BASE.append((f, sum(a << i for i, a in enumerate(f))))
+            BASE.append((f, value(f, 2)))
 
 
 def _factors(p: list) -> list:
     """p = Π f^e · rest, the f from the base (exact divisions; f(2) | p(2) first): [(f, e)] and (the
     square-free part of rest, 1 if rest is square-free, else 2)."""
-    p = [int(a) for a in integer_primitive(p)] if p else []
+    p = integer_primitive(p)
     if len(p) < 2:
         return []
-    out, at2 = [], sum(a << i for i, a in enumerate(p))
+    out, at2 = [], value(p, 2)
     for f, f2 in BASE:
         e = 0
         while len(p) >= len(f) and (f2 == 0 or at2 % f2 == 0):
             q = _exact(p, f)
             if q is None:
                 break
-            p, at2, e = q, sum(a << i for i, a in enumerate(q)), e + 1
+            p, at2, e = q, value(q, 2), e + 1
         if e:
             out.append((f, e))
     if len(p) > 1:
         sq = squarefree([Fraction(a) for a in p])
         if len(sq) - 1 > LARGEST:
             raise NotVerified(f"a cut polynomial of degree {len(sq) - 1} that the witness's factors do not split")
-        out.append(([int(a) for a in integer_primitive(sq)], 1 if len(sq) == len(p) else 2))
+        out.append((integer_primitive(sq), 1 if len(sq) == len(p) else 2))
     return out
-
-
-def _cuts(cond: _Cond, lo, hi) -> list:
-    """The roots in ]lo, hi[ of the condition's cut factors, increasing, each once, with its factor."""
-    pts: list = []
-    for f in cond.cuts():
-        for a in roots_in([Fraction(x) for x in f], lo, hi):
-            if not any(a.compare(b) == 0 for b, _ in pts):
-                pts.append((a, f))
-    return sorted(pts, key=lambda e: _OrderKey(e[0]))
 
 
 # ----------------------------------------------------------------- signs at a piece
@@ -590,7 +535,7 @@ def _enclosed(p: Point, cond, k: int):
                     break
                 if dl <= 0:
                     continue
-                N = _iadd(N, _imul(parts["N1"], (_root_below(dl, bits + 32), _root_above(dh, bits + 32))))
+                N = iadd(N, imul(parts["N1"], (_root_below(dl, bits + 32), _root_above(dh, bits + 32))))
             if not (D[0] <= 0 <= D[1] or N[0] <= 0 <= N[1]):
                 memo[(cond.key, k)] = (1 if N[0] > 0 else -1) * (1 if D[0] > 0 else -1)
                 break
@@ -611,12 +556,11 @@ def _lambda_interval(p: Point, cp: dict, k: int, width: Fraction):
         a, b = (Fraction(e) for e in roots[k])
         cache[k] = [a, b, p._at.at(cpl, a), cpl]
     a, b, sa, cpl = cache[k]
-    _narrow(p.r0, width ** 2)
+    while not p.r0.rational and p.r0.hi - p.r0.lo > width ** 2:
+        p.r0.bisect()
     while b - a > width:
         mid = (a + b) / 2
-        e = (Fraction(0), Fraction(0))
-        for c in reversed(cpl):
-            e = _iadd(_imul(e, (mid, mid)), _ipoly(dict(enumerate(c)), p.r0.lo, p.r0.hi))
+        e = _box(cpl, p.r0, (mid, mid))
         sm = 1 if e[0] > 0 else -1 if e[1] < 0 else p._at.at(cpl, mid)
         if sm == 0:
             a = b = mid
@@ -628,122 +572,12 @@ def _lambda_interval(p: Point, cp: dict, k: int, width: Fraction):
     return a, b
 
 
-def _narrow(r0, width: Fraction) -> None:
-    """r₀'s isolating interval halved by the sign of its square-free polynomial at the middle (a simple
-    root: the signs at the ends differ) until narrower than width."""
-    while not r0.rational and r0.hi - r0.lo > width:
-        mid = (r0.lo + r0.hi) / 2
-        s_mid = value(r0.p, mid)
-        if s_mid == 0:
-            r0.lo = r0.hi = mid
-        elif (s_mid > 0) == (value(r0.p, r0.lo) > 0):
-            r0.lo = mid
-        else:
-            r0.hi = mid
-
-
 def _box(P, r0, lam: tuple) -> tuple:
     """An enclosure of P(r₀, λ) for r₀ in its interval and λ in lam (P a cells dict, or dense)."""
-    if isinstance(P, dict):
-        rows: dict = {}
-        for (i, j), c in P.items():
-            rows.setdefault(j, {})[i] = c
-        P = [rows.get(j, {}) for j in range(max(rows, default=-1) + 1)]
     out = (Fraction(0), Fraction(0))
-    for c in reversed(P):
-        out = _iadd(_imul(out, lam), _ipoly(c if isinstance(c, dict) else dict(enumerate(c)), r0.lo, r0.hi))
+    for c in reversed(in_lambda(P) if isinstance(P, dict) else P):
+        out = iadd(imul(out, lam), enclose(c, r0.lo, r0.hi))
     return out
-
-
-def _ipoly(c: dict, lo: Fraction, hi: Fraction) -> tuple:
-    """An enclosure of Σ c_i r^i over [lo, hi] ⊆ [X - W, X + W]/S (dyadic, S = 2^(bits+1) finer than
-    the interval): the value at the centre ± Σ i|c_i|(|X| + W)^(i-1)·W (the mean value theorem), in
-    integers (homogeneous Horner)."""
-    if not c:
-        return Fraction(0), Fraction(0)
-    w, den = hi - lo, 1
-    bits = max(64, w.denominator.bit_length() - w.numerator.bit_length() + 32) if w else 64
-    for a in c.values():
-        den = den * Fraction(a).denominator // igcd(den, Fraction(a).denominator)
-    ints = {i: int(Fraction(a) * den) for i, a in c.items()}
-    n, S = max(ints), 1 << (bits + 1)
-    lo2, hi2 = (lo.numerator << bits) // lo.denominator, -((-hi.numerator << bits) // hi.denominator)
-    X, W = lo2 + hi2, hi2 - lo2
-    M, val, err, Sk = abs(X) + W, ints.get(n, 0), n * abs(ints.get(n, 0)), S
-    for i in range(n - 1, -1, -1):
-        val = val * X + ints.get(i, 0) * Sk
-        err = err * M + i * abs(ints.get(i, 0)) * Sk if i else err
-        Sk *= S
-    q = den * S ** n
-    return Fraction(val - err * W, q), Fraction(val + err * W, q)
-
-
-def _imul(a: tuple, b: tuple) -> tuple:
-    ps = (a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1])
-    return min(ps), max(ps)
-
-
-def _iadd(a: tuple, b: tuple, c: int = 1) -> tuple:
-    return (a[0] + c * b[0], a[1] + c * b[1]) if c > 0 else (a[0] - b[1], a[1] - b[0])
-
-
-def _ball_sign(p: Point, req: Req, cand, k: int, s: int):
-    """A requirement of the positions at the algebraic point p on branch k from the run itself in
-    rational intervals (:func:`_balls`): the true (a, b, c, d) and x_s (s named for the true
-    coefficients), then p_j(t_k), x or (cx + d)² ∓ (ad - bc): its sign, or 0 (undecided: the
-    intervals hold 0, or Δ or c may vanish)."""
-    for bits in (60, 200):
-        width = Fraction(1, 2 ** bits)
-        end = _balls(cand, p, k, cand.word, width)
-        if end is None:
-            continue
-        (d, c), _, (b, a) = end[-1]
-        A = _iadd(a, d, -1)
-        dl, dh = _iadd(_imul(A, A), _imul((4, 4), _imul(b, c)))
-        if dh < 0:
-            return None
-        if dl <= 0 or c[0] <= 0 <= c[1]:
-            return 0
-        root = (_root_below(dl, bits), _root_above(dh, bits))
-        x = _imul(_iadd(A, root if s > 0 else (-root[1], -root[0])), (1 / (2 * c[1]), 1 / (2 * c[0])))
-        if req.kind[0] == "x":
-            g = x
-        elif req.kind[0] == "p":
-            at = _balls(cand, p, k, req.kind[1], width)
-            if at is None:
-                continue
-            G0, G1 = at[req.kind[2]][req.kind[3]]
-            g = _iadd(G0, _imul(x, G1))
-        else:
-            cx_d = _iadd(_imul(c, x), d)
-            g = _iadd(_imul(cx_d, cx_d), _imul((req.kind[1],) * 2, _iadd(_imul(a, d), _imul(b, c), -1)))
-        if g[0] > 0 or g[1] < 0:
-            return 1 if g[0] > 0 else -1
-    return 0
-
-
-def _balls(cand, p: Point, k: int, word: str, width: Fraction):
-    """The positions (P0, P1), p = P0 + x·P1, after each collision of word from p(0) = (1, 0, x) at
-    (r₀, λ_k) in rational intervals: τ = p_i/q̃_i, p - τ·q̃ with the velocities enclosed; None where
-    a q̃_i's enclosure holds 0."""
-    memo = p.__dict__.setdefault("_balls", {})
-    if (id(cand), k, word, width) not in memo:
-        lam, out = _lambda_interval(p, cand.cp_dict, k, width), None
-        if lam is not None:
-            one, zero = (Fraction(1), Fraction(1)), (Fraction(0), Fraction(0))
-            P, out, run = [(one, zero), (zero, zero), (zero, one)], [], cand.run_of(word)
-            out.append(P)
-            for k_, letter in enumerate(word):
-                q, i = [_box(P_, p.r0, lam) for P_ in run.q[k_]], GAP[letter]
-                if q[i][0] <= 0 <= q[i][1]:
-                    out = None
-                    break
-                t = [_imul(P[i][h], (1 / q[i][1], 1 / q[i][0])) for h in (0, 1)]
-                P = [tuple(_iadd(P[j][h], _imul(t[h], q[j]), -1) for h in (0, 1)) for j in range(3)]
-                P[i] = (zero, zero)
-                out.append(P)
-        memo[(id(cand), k, word, width)] = out
-    return memo[(id(cand), k, word, width)]
 
 
 class _Reduced:
@@ -757,7 +591,7 @@ class _Reduced:
     (-sign det)^k where the velocity requirements hold."""
 
     def __init__(self, cand, p: Point):
-        m = [int(a) for a in integer_primitive(p.r0.p)]
+        m = integer_primitive(p.r0.p)
         m = m if m[-1] > 0 else [-a for a in m]
         L, d, n = m[-1], len(m) - 1, len(cand.cp) - 1
         self.m, self.L, self.cand, self.runs = [a * L ** (d - 1 - i) for i, a in enumerate(m[:-1])] + [1], L, cand, {}
@@ -767,7 +601,7 @@ class _Reduced:
         self.cp_dict, r0 = _dict(self.cp), p.r0
         self.point = Point(number(L * r0.lo) if r0.rational else
                            Algebraic([Fraction(a) for a in self.m], L * r0.lo, L * r0.hi, check=False), False)
-        self.minus_det = self.scaled(_neg(cand.det))
+        self.minus_det = self.scaled(badd([], cand.det, -1))
         F = self.free(cand.word)[-1]
         self.abcd = [F[2][1], F[2][0], F[0][1], F[0][0]] if len(F) == 3 else None
 
@@ -785,8 +619,8 @@ class _Reduced:
                 for i in range(d):
                     c[k - d + i] -= c[k] * self.m[i]
                 c[k] = 0
-            out.append(_trim(c))
-        return _trim(out)
+            out.append(trim(c))
+        return trim(out)
 
     def free(self, word: str) -> list:
         if word not in self.runs:
@@ -796,7 +630,7 @@ class _Reduced:
             for k, letter in enumerate(word):
                 E = max(self.t * j + len(c) - 1 for P in run.q[k] for j, c in enumerate(P) if c)
                 i, q = GAP[letter], [self.scaled(P, E) for P in run.q[k]]
-                F = [tuple(self.reduce(_badd(_bmul(q[i], F[j][h]), _bmul(F[i][h], q[j]), -1)) for h in (0, 1))
+                F = [tuple(self.reduce(badd(bmul(q[i], F[j][h]), bmul(F[i][h], q[j]), -1)) for h in (0, 1))
                      for j in range(g)]
                 F[i] = ([], [])
                 self.runs[word].append(F)
@@ -813,8 +647,8 @@ def _reduced(cand, p: Point) -> _Reduced:
 def holds(p: Point, req: Req, cand, k: int, s) -> bool | None:
     """req on branch k with the fixed point x_s at the piece p: True, False or None (undecided).  At
     a point, where the forms are valid (δ(r₀) ≠ 0, L1·L3 ≠ 0): by enclosures, where c = 0 with the
-    affine f, else exactly; where they degenerate: by the run in intervals, else exactly on the
-    division-free run (x named as the candidate's: :meth:`Candidate.relabel`)."""
+    affine f, else exactly; where they degenerate: exactly on the division-free run (x named as the
+    candidate's: :meth:`Candidate.relabel`)."""
     cond = req.cond(cand, s)
     if p.cell:
         g = _sign(p, cond, k)
@@ -824,11 +658,8 @@ def holds(p: Point, req: Req, cand, k: int, s) -> bool | None:
         g = _enclosed(p, cond, k) if valid else 0
         if g == 0 and valid and req.G1 and _sign(p, _cond(cand, cand.abcd[2]), k) == 0:
             g = _affine(p, cand, k, cand.abcd, lambda: req.cond(cand, s, affine=True), req.G0, req.G1, req.D)
-        elif g == 0 and (valid or req.free is None):
-            g = _sign(p, cond, k)
         elif g == 0:
-            e = p.r0.sign_of(cand.position_map[1]) or 1
-            g = (_ball_sign(p, req, cand, k, e * s) if req.kind else 0) or Undecided
+            g = _sign(p, cond, k) if valid or req.free is None else Undecided
     if g is Undecided and req.free is not None and not p.cell:
         R = _reduced(cand, p)
         G0, G1, D = req.free(R)
@@ -847,33 +678,20 @@ def _affine(p: Point, cand, k: int, abcd: list, cond, G0, G1, D):
     where d = a and b ≠ 0 (a translation: as an x that is not real, None); where f is the identity
     (every x fixed), the requirement's value if it does not depend on x (G1 = 0), else Undecided."""
     a, b, _, d = abcd
-    if _sign(p, _cond(cand, _badd(d, a, -1)), k) != 0:
+    if _sign(p, _cond(cand, badd(d, a, -1)), k) != 0:
         return _sign(p, cond(), k)
     if _sign(p, _cond(cand, b), k):
         return None
     return _sign(p, _cond(cand, G0, D), k) if _sign(p, _cond(cand, G1), k) == 0 else Undecided
 
 
-def _u(p: Point, req: Req, cand, stage: tuple, k: int, s):
-    """u > 0; at a point where the rows' determinant vanishes on the branch: if U or V does not, the
-    eigenvector has q_1 = 0 (no datum with q_1(0) = -1): False; else the other rows decide the whole
-    stage there, ("other", answer)."""
+def _u(p: Point, req: Req, cand, k: int, s):
+    """u > 0; at a point where the rows' determinant vanishes on the branch and U or V does not, the
+    eigenvector has q_1 = 0 (no datum with q_1(0) = -1): False."""
     v = holds(p, req, cand, k, s)
     if v is not None or p.cell or _sign(p, _cond(cand, cand.det), k) != 0:
         return v
-    if any(_sign(p, _cond(cand, P), k) != 0 for P in cand.q0[1:]):
-        return False
-    for rows in ((0, 2), (1, 2)) if len(cand.q0) == 3 else ((1,),):
-        other = candidate(cand.text, rows)
-        if rows != cand.rows and _sign(p, _cond(other, other.det), k) not in (0, Undecided):
-            out = True
-            for q in requirements(other, *stage):
-                w = holds(p, q, other, k, s)
-                if w is False:
-                    return ("other", False)
-                out = None if w is None else out
-            return ("other", out)
-    return None
+    return False if any(_sign(p, _cond(cand, P), k) != 0 for P in cand.q0[1:]) else None
 
 
 # ----------------------------------------------------------------- regions: where the requirements hold
@@ -882,9 +700,8 @@ class Region:
     gaps): the pieces of ]0, 1[ where every requirement imposed so far holds — open intervals
     (lo, hi) and points (a, a) — and the pieces left undecided."""
 
-    def __init__(self, k: int, s, pieces=None, undecided=None, final=None):
-        self.k, self.s = k, s
-        self.pieces, self.undecided, self.final = pieces or [], undecided or [], final or set()
+    def __init__(self, k: int, s, pieces=None, undecided=None):
+        self.k, self.s, self.pieces, self.undecided = k, s, pieces or [], undecided or []
 
 
 def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None = None) -> list:
@@ -892,10 +709,10 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
     requirements of the stage (:func:`requirements`, or ``reqs``) one at a time over ]0, 1[ (or
     on copies of ``regions``), each only where the previous ones hold."""
     zero, one = number(0), number(1)
-    points: dict = cand.__dict__.setdefault("points", {})
+    points = cand.points
     sigmas = (1, -1) if len(cand.q0) == 3 else (None,)
     if regions is None:
-        ends = [zero] + [a for a, _ in _cuts(_cond(cand, [[1]]), zero, one)] + [one]
+        ends = [zero] + [a for a, _ in cut_points(_cond(cand, [[1]]).cuts(), zero, one)] + [one]
         found: dict = {}
         for a, b in zip(ends, ends[1:]):
             for piece in [(a, b)] + ([(b, b)] if b is not one else []):
@@ -904,16 +721,16 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
                         found.setdefault((k, s), Region(k, s)).pieces.append(piece)
         regions = list(found.values())
     else:
-        regions = [Region(R.k, R.s, list(R.pieces), list(R.undecided), set(R.final)) for R in regions]
+        regions = [Region(R.k, R.s, list(R.pieces), list(R.undecided)) for R in regions]
     for req in requirements(cand, *stage) if reqs is None else reqs:
         live = [pc for R in regions for pc in R.pieces + R.undecided]
         if not live:
             break
-        lo = min((pc[0] for pc in live), key=_OrderKey)
-        hi = max((pc[1] for pc in live), key=_OrderKey)
+        lo = min((pc[0] for pc in live), key=ORDER)
+        hi = max((pc[1] for pc in live), key=ORDER)
         cond = req.cond(cand, sigmas[0])
-        cuts = _cuts(cond, lo, hi) if lo.compare(hi) < 0 else []
-        at = _Reader(req, cand, stage, cond, lo, hi, cuts, points)
+        cuts = cut_points(cond.cuts(), lo, hi) if lo.compare(hi) < 0 else []
+        at = _Reader(req, cand, cond, lo, hi, cuts, points)
         split: dict = {}
         for R in regions:
             kept, unsure = [], []
@@ -921,11 +738,7 @@ def analyse(cand, stage: tuple, regions: list | None = None, reqs: list | None =
                 if id(piece) not in split:
                     split[id(piece)] = _split(piece, [c for c, _ in cuts])
                 for sub in split[id(piece)]:
-                    v = True if sub[0] is sub[1] and id(sub[0]) in R.final else at.holds(sub, R.k, R.s)
-                    if isinstance(v, tuple):
-                        v = v[1]
-                        if v:
-                            R.final.add(id(sub[0]))
+                    v = at.holds(sub, R.k, R.s)
                     if v is not False:
                         (kept if v and was else unsure).append(sub)
             R.pieces, R.undecided = kept, unsure
@@ -946,16 +759,14 @@ class _Reader:
     N(r₀) = 0 (with √Δ: N₀ ± N₁√Δ, both in the norm 4cQ).  Any other point: exactly, in Q(r₀)
     (cells.Point)."""
 
-    def __init__(self, req, cand, stage, cond, lo, hi, cuts, points):
-        self.req, self.cand, self.stage, self.cond, self.points = req, cand, stage, cond, points
+    def __init__(self, req, cand, cond, lo, hi, cuts, points):
+        self.req, self.cand, self.cond, self.points = req, cand, cond, points
         self.ends = [lo] + [c for c, _ in cuts] + [hi]
         self.cuts = cuts
 
     def holds(self, piece: tuple, k: int, s):
         a, b = piece
-        if a is not b:
-            return self.exact(_point(piece, self.points), k, s)
-        i = self._where(a)
+        i = self._where(a) if a is b else None
         if i is None:
             return self.exact(_point(piece, self.points), k, s)
         if i[0] == "cell":
@@ -974,7 +785,7 @@ class _Reader:
         return self.exact(_point(piece, self.points), k, s)
 
     def exact(self, p: Point, k: int, s):
-        return _u(p, self.req, self.cand, self.stage, k, s) if self.req.name == "u" else \
+        return _u(p, self.req, self.cand, k, s) if self.req.name == "u" else \
             holds(p, self.req, self.cand, k, s)
 
     def _where(self, a):
@@ -1063,7 +874,7 @@ def _regions(ctx, text: str, stage: tuple, branches) -> list:
             raise NotVerified(f"{text} has {n} collisions: beyond the kernel's budget of {LONGEST}")
         cand = candidate(text)
         known = _SETS.get((text, ("feasible", None)))
-        if stage[0] == "stable" and known is not None and not any(R.final for R in known):
+        if stage[0] == "stable" and known is not None:
             extra = _dominance(cand) + (_attracting(cand) if len(cand.q0) == 3 else [])
             _SETS[key] = analyse(cand, stage, known, extra)
         else:
@@ -1179,11 +990,8 @@ def posmap(ctx, w) -> RF:
 
 def _rf(e: El, n: int) -> RF:
     """An element (c₀ + c₁Λ + c₂Λ²)/δ(r) as a rational function of r and λ = Λ/2ⁿ."""
-    from .values import VARS
-    k = len(VARS)
-    num = {(i, j) + (0,) * (k - 2): Fraction(a * 2 ** (n * j)) for j, c in enumerate(e.c) for i, a in enumerate(c) if a}
-    den = {(i,) + (0,) * (k - 1): Fraction(a) for i, a in enumerate(e.d) if a}
-    return RF(num, den)
+    return RF({(i, j): Fraction(a * 2 ** (n * j)) for j, c in enumerate(e.c) for i, a in enumerate(c) if a},
+              {(i,): Fraction(a) for i, a in enumerate(e.d) if a})
 
 
 for _name, _stage in (("selfsimilar", "datum"), ("feasible", "feasible"), ("stable", "stable"),

@@ -1,35 +1,23 @@
-"""Polynomials over Q, in the Python standard library alone.
+"""Polynomials over Q and Z, in the Python standard library alone.
 
-Univariate polynomials are lists of Fractions, lowest degree first, with no trailing
-zero (the zero polynomial is ``[]``).  Multivariate polynomials are dicts mapping an
-exponent tuple to a non-zero Fraction.  Everything is exact: ``fractions.Fraction``
-and Python's unbounded ``int``.
+Univariate polynomials are lists of coefficients (Fractions, or ints), lowest degree first, with
+no trailing zero (the zero polynomial is ``[]``); a polynomial in (r, λ) is also a list over the
+powers of λ of polynomials in r (:func:`badd`, :func:`bmul`).  Multivariate polynomials are dicts
+mapping an exponent tuple to a non-zero Fraction.  Everything is exact.
 """
 from __future__ import annotations
 
 from fractions import Fraction
+from math import factorial
 from math import gcd as igcd
 
 
-def rat(text) -> Fraction:
-    """A rational read from an int or a string "p/q" (Fraction's own exact parser; no eval)."""
-    if isinstance(text, bool) or not isinstance(text, (int, str)):
-        raise ValueError(f"not a rational: {text!r}")
-    return Fraction(text)
-
-
-def trim(p: list) -> list:
-    """The same polynomial without trailing zero coefficients (a polynomial's value does not
-    depend on zero terms)."""
+def trim(p) -> list:
+    """p without trailing zero coefficients (or zero polynomials): the same polynomial."""
     p = list(p)
-    while p and p[-1] == 0:
+    while p and not p[-1]:
         p.pop()
     return p
-
-
-def upoly(coeffs) -> list:
-    """A univariate polynomial from JSON coefficients (ints or "p/q"), lowest degree first."""
-    return trim(rat(c) for c in coeffs)
 
 
 def deg(p: list) -> int:
@@ -37,10 +25,12 @@ def deg(p: list) -> int:
     return len(p) - 1
 
 
-def add(p: list, q: list) -> list:
-    """p + q, coefficient by coefficient (the definition of the sum)."""
-    n = max(len(p), len(q))
-    return trim((p[i] if i < len(p) else 0) + (q[i] if i < len(q) else 0) for i in range(n))
+def add(p: list, q: list, c=1) -> list:
+    """p + c·q, coefficient by coefficient."""
+    out = list(p) + [0] * (len(q) - len(p))
+    for i, y in enumerate(q):
+        out[i] += y if c == 1 else c * y
+    return trim(out)
 
 
 def scale(p: list, c) -> list:
@@ -50,19 +40,51 @@ def scale(p: list, c) -> list:
 
 def sub(p: list, q: list) -> list:
     """p − q."""
-    return add(p, scale(q, -1))
+    return add(p, q, -1)
 
 
 def mul(p: list, q: list) -> list:
-    """p·q by the Cauchy product of coefficient sequences."""
+    """p·q, the Cauchy product; long integer ones by Kronecker substitution (one integer product of
+    p(2^k), q(2^k), whose base-2^k digits, |digit| < 2^(k−1), are the coefficients)."""
     if not p or not q:
         return []
-    out = [Fraction(0)] * (len(p) + len(q) - 1)
+    ints = type(p[0]) is int and type(q[0]) is int
+    if ints and min(len(p), len(q)) >= 16 and all(type(a) is int for a in p + q):
+        k = (max(map(abs, p)) * max(map(abs, q)) * min(len(p), len(q))).bit_length() + 1
+        C = sum(a << (k * i) for i, a in enumerate(p)) * sum(b << (k * i) for i, b in enumerate(q))
+        out, mask = [], (1 << k) - 1
+        for _ in range(len(p) + len(q) - 1):
+            d = C & mask
+            d -= (1 << k) if d >> (k - 1) else 0
+            out.append(d)
+            C = (C - d) >> k
+        return trim(out)
+    out = [0 if ints else Fraction(0)] * (len(p) + len(q) - 1)
     for i, a in enumerate(p):
         if a:
             for j, b in enumerate(q):
                 out[i + j] += a * b
     return trim(out)
+
+
+def badd(P: list, Q: list, c=1) -> list:
+    """P + c·Q in Q[r][λ]."""
+    return trim(add(P[j] if j < len(P) else [], Q[j] if j < len(Q) else [], c) for j in range(max(len(P), len(Q))))
+
+
+def bmul(P: list, Q: list) -> list:
+    """P·Q in Q[r][λ] (the Cauchy product over Q[r])."""
+    out: list = [[] for _ in range(max(len(P) + len(Q) - 1, 0))]
+    for i, a in enumerate(P):
+        for j, b in enumerate(Q):
+            if a and b:
+                out[i + j] = add(out[i + j], mul(a, b))
+    return trim(out)
+
+
+def bderiv(P: list) -> list:
+    """∂P/∂λ in Q[r][λ]."""
+    return [scale(c, i) for i, c in enumerate(P)][1:]
 
 
 def divmod_(p: list, q: list) -> tuple[list, list]:
@@ -88,7 +110,7 @@ def monic(p: list) -> list:
 
 
 def integer_primitive(p: list) -> list:
-    """p times a non-zero rational, with coprime integer coefficients (same roots)."""
+    """p times a positive rational, with coprime integer coefficients (same roots, same signs)."""
     den = 1
     for a in p:
         den = den * Fraction(a).denominator // igcd(den, Fraction(a).denominator)
@@ -103,8 +125,7 @@ def pseudo_remainder(a: list, b: list) -> list:
     """prem(a, b) = lc(b)^(deg a − deg b + 1)·a mod b, in integers (b ≠ 0): Euclidean division
     of lc(b)^k·a needs no fraction."""
     r, lb, n = list(a), b[-1], len(b)
-    steps = len(a) - n + 1
-    for _ in range(max(steps, 0)):
+    for _ in range(max(len(a) - n + 1, 0)):
         if len(r) < n:
             r = [x * lb for x in r]
             continue
@@ -121,8 +142,6 @@ def gcd(p: list, q: list) -> list:
     integer polynomials with pseudo-remainders (each differs from the remainder by a non-zero
     constant factor, which changes no gcd)."""
     a, b = integer_primitive(p), integer_primitive(q)
-    if not b:
-        return monic([Fraction(x) for x in a])
     while b:
         a, b = b, integer_primitive(pseudo_remainder(a, b))
     return monic([Fraction(x) for x in a])
@@ -133,9 +152,9 @@ def derivative(p: list) -> list:
     return trim(i * a for i, a in enumerate(p) if i > 0)
 
 
-def value(p: list, x) -> Fraction:
+def value(p: list, x):
     """p(x) by Horner's rule."""
-    v = Fraction(0)
+    v = 0
     for a in reversed(p):
         v = v * x + a
     return v
@@ -153,18 +172,6 @@ def squarefree(p: list) -> list:
 
 
 # --- multivariate: dict exponent-tuple -> Fraction -------------------------------------
-
-def mpoly(data: dict, nvars: int | None = None) -> dict:
-    """A multivariate polynomial from JSON: {"vars": [...], "terms": [[coef, [e1, ...]], ...]}."""
-    names = data["vars"]
-    out: dict = {}
-    for coef, exps in data["terms"]:
-        if len(exps) != len(names) or any(not isinstance(e, int) or e < 0 for e in exps):
-            raise ValueError(f"bad exponents {exps!r} for variables {names!r}")
-        key = tuple(exps)
-        out[key] = out.get(key, Fraction(0)) + rat(coef)
-    return {k: v for k, v in out.items() if v}
-
 
 def madd(p: dict, q: dict, c=1) -> dict:
     """p + c·q."""
@@ -229,20 +236,9 @@ def at_r(p: dict, r0) -> list:
     return trim(value(c, r0) for c in in_lambda(p))
 
 
-def _integer_rows(p: dict) -> list:
-    """p ∈ Q[r][λ] times a positive integer (the lcm of its denominators), as integer
-    coefficient lists in r, one per power of λ (a constant factor changes no root)."""
-    den = 1
-    for v in p.values():
-        den = den * v.denominator // igcd(den, v.denominator)
-    return [[int(c * den) for c in row] for row in in_lambda(p)]
-
-
-def _int_value(row: list, x: int) -> int:
-    v = 0
-    for a in reversed(row):
-        v = v * x + a
-    return v
+def d_lambda(p: dict) -> dict:
+    """∂p/∂λ for p in (r, λ)."""
+    return {(i, j - 1): j * v for (i, j), v in p.items() if j > 0}
 
 
 def bareiss(rows: list) -> int:
@@ -273,13 +269,10 @@ def interpolate_integers(ys: list) -> list:
     for _ in range(D + 1):
         diffs.append(row[0])
         row = [b - a for a, b in zip(row, row[1:])]
-    fact = [1]
-    for k in range(1, D + 1):
-        fact.append(fact[-1] * k)
     out = [0] * (D + 1)
     falling = [1]                        # x(x−1)···(x−k+1), integer coefficients
     for k in range(D + 1):
-        c = diffs[k] * (fact[D] // fact[k])
+        c = diffs[k] * (factorial(D) // factorial(k))
         if c:
             for i, a in enumerate(falling):
                 out[i] += c * a
@@ -289,37 +282,76 @@ def interpolate_integers(ys: list) -> list:
     return trim(out)
 
 
+def resultant_ints(p: dict, q: dict) -> tuple[list, int]:
+    """(s·Res_λ(p, q) as integers in r, s > 0) for p, q ∈ Q[r][λ]: the rows scaled to integers
+    (by d_p, d_q: Res by d_p^n·d_q^m), the Sylvester determinant at r = 0, 1, ..., D (Bareiss),
+    interpolated (times D!).  The determinant with the formal λ-degrees m, n commutes with
+    r ↦ x, and D = n·deg_r p + m·deg_r q bounds its degree in r."""
+    (P, dp), (Q, dq) = _integer_rows(p), _integer_rows(q)
+    m, n = len(P) - 1, len(Q) - 1
+    if m < 0 or n < 0:
+        return [], 1
+    D = n * max(len(c) - 1 for c in P) + m * max(len(c) - 1 for c in Q)
+    ys = []
+    for x in range(D + 1):
+        a, b = [value(c, x) for c in reversed(P)], [value(c, x) for c in reversed(Q)]
+        ys.append(bareiss([[0] * i + a + [0] * (n - 1 - i) for i in range(n)] +
+                          [[0] * i + b + [0] * (m - 1 - i) for i in range(m)]))
+    return (interpolate_integers(ys) if any(ys) else []), factorial(D) * dp ** n * dq ** m
+
+
+def _integer_rows(p: dict) -> tuple[list, int]:
+    """(d·p as integer coefficient lists in r, one per power of λ; d > 0 the lcm of the denominators)."""
+    den = 1
+    for v in p.values():
+        den = den * v.denominator // igcd(den, v.denominator)
+    return [[int(c * den) for c in row] for row in in_lambda(p)], den
+
+
 _RESULTANTS: dict = {}
 
 
 def resultant_in(p: dict, q: dict) -> list:
-    """A non-zero constant multiple of Res_λ(p, q) ∈ Q[r] for p, q ∈ Q[r][λ] (the same roots),
-    by evaluation at r = 0, 1, 2, ... and interpolation.  The Sylvester determinant with the
-    formal λ-degrees m, n commutes with r ↦ r_i, and its degree in r is at most
-    n·deg_r p + m·deg_r q, so that many points plus one determine it."""
+    """Res_λ(p, q) ∈ Q[r] times a positive constant (coprime integer coefficients: the same roots)."""
     key = (tuple(sorted(p.items())), tuple(sorted(q.items())))
-    if key in _RESULTANTS:
-        return _RESULTANTS[key]
-    P, Q = _integer_rows(p), _integer_rows(q)
-    m, n = len(P) - 1, len(Q) - 1
-    if m < 0 or n < 0:
-        return []
-    bound = n * max((len(c) - 1 for c in P), default=0) + m * max((len(c) - 1 for c in Q), default=0)
-    xs, ys = list(range(bound + 1)), []
-    size = m + n
-    for x in xs:
-        a = [_int_value(c, x) for c in reversed(P)]
-        b = [_int_value(c, x) for c in reversed(Q)]
-        rows = [[0] * i + a + [0] * (size - m - 1 - i) for i in range(n)] + \
-            [[0] * i + b + [0] * (size - n - 1 - i) for i in range(m)]
-        ys.append(bareiss(rows))
-    out = [Fraction(c) for c in integer_primitive(interpolate_integers(ys))] if any(ys) else []
-    if len(_RESULTANTS) > 500:
-        _RESULTANTS.clear()
-    _RESULTANTS[key] = out
-    return out
+    if key not in _RESULTANTS:
+        if len(_RESULTANTS) > 500:
+            _RESULTANTS.clear()
+        _RESULTANTS[key] = [Fraction(c) for c in integer_primitive(resultant_ints(p, q)[0])]
+    return _RESULTANTS[key]
 
 
-def d_lambda(p: dict) -> dict:
-    """∂p/∂λ for p in (r, λ)."""
-    return {(i, j - 1): j * v for (i, j), v in p.items() if j > 0}
+# --- interval arithmetic: (lo, hi) pairs of rationals --------------------------------
+
+def enclose(c: list, lo: Fraction, hi: Fraction) -> tuple:
+    """An enclosure of Σ c_i x^i over [lo, hi] ⊆ [X − W, X + W]/S (dyadic, S = 2^(bits+1) finer than
+    the interval): the value at the centre ± Σ i|c_i|(|X| + W)^(i−1)·W (the mean value theorem), in
+    integers (homogeneous Horner)."""
+    if not c:
+        return Fraction(0), Fraction(0)
+    w, den = hi - lo, 1
+    bits = max(64, w.denominator.bit_length() - w.numerator.bit_length() + 32) if w else 64
+    for a in c:
+        den = den * Fraction(a).denominator // igcd(den, Fraction(a).denominator)
+    ints = [int(Fraction(a) * den) for a in c]
+    n, S = len(c) - 1, 1 << (bits + 1)
+    lo2, hi2 = (lo.numerator << bits) // lo.denominator, -((-hi.numerator << bits) // hi.denominator)
+    X, W = lo2 + hi2, hi2 - lo2
+    M, val, err, Sk = abs(X) + W, ints[n], n * abs(ints[n]), S
+    for i in range(n - 1, -1, -1):
+        val = val * X + ints[i] * Sk
+        err = err * M + i * abs(ints[i]) * Sk if i else err
+        Sk *= S
+    q = den * S ** n
+    return Fraction(val - err * W, q), Fraction(val + err * W, q)
+
+
+def imul(a: tuple, b: tuple) -> tuple:
+    """The product of two intervals."""
+    ps = (a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1])
+    return min(ps), max(ps)
+
+
+def iadd(a: tuple, b: tuple, c: int = 1) -> tuple:
+    """a + b (c = 1) or a − b (c = −1)."""
+    return (a[0] + c * b[0], a[1] + c * b[1]) if c > 0 else (a[0] - b[1], a[1] - b[0])

@@ -2,38 +2,30 @@
 its orbits: the predicates ``windows(F)``, ``concatenation(B, ...)`` and ``endless()`` of
 statements/4_dynamics.txt (Remark 4.2, Proposition 4.4, Corollary 4.5, Remark 4.6).
 
-A state is a contact i (0, 1, 2 for a, b, c: the gap p_i is 0) and u = (n1, n2, n3), a normal of its
-plane up to a positive factor, oriented by u_t > 0 (t = y, z, x for a, b, c: l. 949-950).  Its
-position is p = e_i ∧ u (l. 969), its velocity w = u ∧ p (l. 971).  The position is in the open face
-{p_i = 0, the others > 0} when u_k < 0 (k the third index), and the state is off the corners when
-moreover u_i = |u| cos φ ≠ 0: six cones (i, sign of u_i), open orthants of u.  :func:`graph` proves
-the step lemma on each cone (S11.1-S11.6) from these definitions alone: p is in the open face, the
-pair i separates (w_i > 0), exactly one other gap j closes (w_j < 0 < w_k), and the next normal, the
-trilinear map u' = [u ∧ e_j] ∧ [K_j w] of l. 976-980 (relabelled), lies in a cone of j (u'_t > 0 >
-u'_k), in the one of the sign of u'_j when that sign is one on the whole cone, else in either
-(u'_j = 0 is a corner).  Each sign is read off the terms of a polynomial in n1, n2, n3, r under the
-cone's signs and r > 0 (:func:`certify_kernel.signs._form_sign`).
-
-Hence every orbit off the corners follows a path of this graph (its states' contacts spell the
-path's word): a property of every window of every path holds for every orbit.  A path that violates
-one is only a candidate: the property is decided false on an exact orbit that has the window
-(integer u, rational r, the map in Fractions); if none is found the statement is not verified.
+A state is a contact i (a, b, c: p_i = 0) and u = (n1, n2, n3), the normal of its plane up to a
+positive factor, oriented by u_t > 0 (t = y, z, x for a, b, c: l. 949-950); its position is
+p = e_i ∧ u (l. 969), its velocity w = u ∧ p (l. 971).  p is in the open face when u_k < 0 (k the
+third index), off the corners when moreover u_i ≠ 0: six cones (i, sign of u_i).  :func:`graph`
+proves the step lemma on each cone (S11.1-S11.6): p in the open face, w_i > 0, exactly one other gap
+j closes (w_j < 0 < w_k), and u' = [u ∧ e_j] ∧ [K_j w] (l. 976-980) lies in a cone of j (u'_t > 0 >
+u'_k), of the sign of u'_j when that is one on the whole cone, else in either; each sign read off
+the terms of a polynomial in n1, n2, n3, r (:func:`certify_kernel.signs._form_sign`).  So every
+orbit off the corners follows a path of this graph: a property of every window of every path holds
+for every orbit; a path that violates it is decided false only on an exact orbit with that window.
 """
 from __future__ import annotations
 
 from fractions import Fraction
 from itertools import product
 
-from .evaluate import PREDICATES, NotVerified, collision, cross
-from .poly import value as at
+from .evaluate import PREDICATES, NotVerified, collision, collisions_at, cross
 from .signs import _form_sign
-from .values import RF, VARS, Undefined, univariate
+from .values import RF, VARS, Undefined
 
 LETTERS = "abc"
 ORIENTED = (1, 2, 0)                      # t with u_t > 0 for the contacts a, b, c (l. 949-950)
 E = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
 _GRAPH: dict = {}                         # (i, sign of u_i) -> (j, the signs u'_j may have)
-_AT: dict = {}                            # r -> the collision matrices at r
 
 
 def _third(i: int) -> int:
@@ -80,15 +72,13 @@ def words(n: int) -> set:
 
 def orbit(i: int, u: tuple, r: Fraction, n: int) -> str | None:
     """The contacts of the first n states of the exact orbit from (i, u) at r; None at a corner."""
-    if r not in _AT:
-        _AT[r] = [[[at(univariate(e), r) for e in row] for row in collision(j).rows] for j in range(3)]
     out = LETTERS[i]
     while u[ORIENTED[i]] > 0 > u[_third(i)] and u[i]:
         if len(out) == n:
             return out
         w = cross(u, cross(E[i], u))
         j = next(m for m in range(3) if m != i and w[m] < 0)
-        u = cross(cross(u, E[j]), tuple(sum(a * b for a, b in zip(row, w)) for row in _AT[r][j]))
+        u = cross(cross(u, E[j]), tuple(sum(a * b for a, b in zip(row, w)) for row in collisions_at(r)[j]))
         u, i = tuple(x / max(abs(y) for y in u) for x in u), j          # a positive factor: the same state
         out += LETTERS[i]
     return None

@@ -13,31 +13,33 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .poly import madd, mmul, reduce_circles, sign, trim, value
+from .evaluate import NEG, POS, NotVerified, arith, order, value
+from .poly import madd, mmul, reduce_circles, sign
+from .poly import value as at
 from .sturm import count
-from .values import CIRCLES, RF, VARS, Undefined
+from .values import CIRCLES, RF, VARS, Undefined, _to_list
+
+QUADRANTS = {(Fraction(0), Fraction(1, 2)): (1, 1), (Fraction(1, 2), Fraction(1)): (-1, 1),     # (cos, sin)
+             (Fraction(0), Fraction(1)): (None, 1)}
 
 
 def hypotheses(B) -> dict:
-    """Variable index -> strict sign, from the binders' intervals (angles by their quadrant)."""
+    """Variable index -> strict sign, from the binders' intervals (angles by their quadrant: the
+    signs of cos and sin)."""
     hyp: dict = {}
     for name, iv in B.angles.items():
-        if iv.angular:
-            lo, hi = (iv.lo if isinstance(iv.lo, Fraction) else Fraction(0) if _zero(iv.lo) else None), iv.hi
-            quadrants = {(Fraction(0), Fraction(1, 2)): (1, 1), (Fraction(1, 2), Fraction(1)): (-1, 1),
-                         (Fraction(0), Fraction(1)): (None, 1)}
-            if (lo, hi) not in quadrants:
-                raise Undefined(f"an angle in ]{lo}π, {hi}π[: only the quadrants ]0, π/2[, ]π/2, π[, ]0, π[")
-            cs, ss = quadrants[(lo, hi)]
-            for fn, s in ((f"cos {name}", cs), (f"sin {name}", ss)):
-                if s is not None:
-                    hyp[VARS.index(fn)] = s
+        if not iv.angular:
+            if iv.lo != NEG and order(iv.lo, 0) >= 0:
+                hyp[VARS.index(name)] = 1
+            elif iv.hi != POS and order(iv.hi, 0) <= 0:
+                hyp[VARS.index(name)] = -1
             continue
-        from .evaluate import NEG, POS, order
-        if iv.lo != NEG and order(iv.lo, 0) >= 0:
-            hyp[VARS.index(name)] = 1
-        elif iv.hi != POS and order(iv.hi, 0) <= 0:
-            hyp[VARS.index(name)] = -1
+        lo = iv.lo if isinstance(iv.lo, Fraction) else Fraction(0) if _zero(iv.lo) else None   # the end 0, a number
+        if (lo, iv.hi) not in QUADRANTS:
+            raise Undefined(f"an angle in ]{lo}π, {iv.hi}π[: only the quadrants ]0, π/2[, ]π/2, π[, ]0, π[")
+        for fn, s in zip((f"cos {name}", f"sin {name}"), QUADRANTS[(lo, iv.hi)]):
+            if s is not None:
+                hyp[VARS.index(fn)] = s
     if _in_unit(B):
         hyp[VARS.index("r")] = 1
     return hyp
@@ -46,15 +48,12 @@ def hypotheses(B) -> dict:
 def _in_unit(B) -> bool:
     """r's binder is an interval inside [0, 1]: r > 0 there, and a polynomial in r without root in
     ]0, 1[ keeps its sign there."""
-    from .evaluate import NEG, POS, order
     iv = B.interval
     return iv is not None and iv.lo not in (NEG, POS) and iv.hi not in (NEG, POS) and order(iv.lo, 0) >= 0 \
         and order(iv.hi, 1) <= 0
 
 
 def _zero(x) -> bool:
-    """The end 0 of an interval of an angle (read as a number, not as a multiple of π)."""
-    from .evaluate import order
     return x is not None and not isinstance(x, str) and order(x, 0) == 0
 
 
@@ -102,13 +101,10 @@ def _factor_sign(f: dict, names: list, hyp: dict, r_in_unit: bool) -> int:
         k = VARS.index("r")
         if not r_in_unit or any(e for key in poly for i, e in enumerate(key) if i != k):
             raise Undefined("a factor read as a polynomial in r on ]0, 1[ is not one")
-        u = [Fraction(0)] * (max((key[k] for key in poly), default=0) + 1)
-        for key, v in poly.items():
-            u[key[k]] += v
-        u = trim(u)
+        u = _to_list(poly, k)
         if not u or count(u, Fraction(0), Fraction(1)) - (1 if not sum(u) else 0):
             raise Undefined("a factor in r has a root in ]0, 1[")
-        return sign(value(u, Fraction(1, 2)))
+        return sign(at(u, Fraction(1, 2)))
     form = _terms(f["form"], names)
     if reduce_circles(madd(poly, form, -1), CIRCLES):
         raise Undefined("a factor's form differs from it modulo the circles")
@@ -156,9 +152,7 @@ def sign_by_witness(E: RF, witnesses: list, hyp: dict, r_in_unit: bool) -> int |
 def by_inspection(B, body, ctx) -> bool:
     """forall over several variables: the body a conjunction of strict signs E > 0, E < 0 (and
     identities E = F), each sign shown by a witness (or by E's own terms)."""
-    from .evaluate import NotVerified, arith, value
-    hyp = hypotheses(B)
-    unit = _in_unit(B)
+    hyp, unit = hypotheses(B), _in_unit(B)
     if B.interval is not None and not unit:
         raise Undefined("over several variables, r ranges in an interval inside [0, 1]")
     if any(iv.lo_closed or iv.hi_closed for iv in [*B.angles.values(), B.interval] if iv is not None):

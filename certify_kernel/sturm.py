@@ -3,92 +3,63 @@ interval), over Q with the standard library alone."""
 from __future__ import annotations
 
 from fractions import Fraction
-from math import gcd as igcd
 
-from .poly import deg, derivative, gcd, pseudo_remainder, rat, sign, squarefree, trim, upoly, value
+from .poly import deg, derivative, enclose, gcd, integer_primitive, pseudo_remainder, sign, squarefree, trim, value
 
 _SEQ: dict = {}
-_SQF: dict = {}
-
-
-def _primitive_positive(p: list) -> list:
-    """p times a positive rational so that its coefficients are coprime integers (a positive
-    factor changes no sign, so a Sturm sequence stays one)."""
-    den = 1
-    for a in p:
-        den = den * a.denominator // igcd(den, a.denominator)
-    ints = [int(a * den) for a in p]
-    g = 0
-    for a in ints:
-        g = igcd(g, a)
-    return [Fraction(a // g) for a in ints] if g else []
 
 
 def sturm_sequence(p: list) -> list:
-    """The Sturm sequence p₀ = p, p₁ = p', p_{k+1} = −rem(p_{k−1}, p_k) (each up to a positive
-    factor).  Sturm's theorem: for p square-free and a < b, the number of roots in ]a, b] is
-    V(a) − V(b), V the number of sign changes in the sequence (zeros dropped)."""
+    """The Sturm sequence of p's square-free part s (the same distinct roots): s₀ = s, s₁ = s',
+    s_{k+1} = −rem(s_{k−1}, s_k), each up to a positive factor (coprime integers).  Sturm's
+    theorem: for a < b the number of roots of s in ]a, b] is V(a) − V(b), V the number of sign
+    changes in the sequence (zeros dropped)."""
     key = tuple(p)
     if key not in _SEQ:
-        seq = [_primitive_positive(p), _primitive_positive(derivative(p))]
+        p = squarefree(p)
+        seq = [integer_primitive(p), integer_primitive(derivative(p))]
         while seq[-1] and deg(seq[-1]) > 0:
-            a, b = [int(x) for x in seq[-2]], [int(x) for x in seq[-1]]
+            a, b = seq[-2], seq[-1]
             rem = pseudo_remainder(a, b)       # lc(b)^k · rem(a, b), k = deg a − deg b + 1
             if not rem:
                 break
             flip = -1 if b[-1] < 0 and (len(a) - len(b) + 1) % 2 else 1
-            seq.append(_primitive_positive([Fraction(-flip * x) for x in rem]))
+            seq.append(integer_primitive([-flip * x for x in rem]))
         if len(_SEQ) > 5000:
             _SEQ.clear()
         _SEQ[key] = [s for s in seq if s]
     return _SEQ[key]
 
 
-def _changes(signs: list) -> int:
+def changes(signs) -> int:
+    """The sign changes of a sequence of signs, zeros dropped."""
     signs = [s for s in signs if s]
     return sum(1 for s, t in zip(signs, signs[1:]) if s != t)
 
 
 def variations(seq: list, x) -> int:
-    """V(x): sign changes of the sequence at x; x None for +∞, "-inf" for −∞ (there the sign
-    of a polynomial is that of its leading term)."""
-    if x is None:
-        return _changes([sign(q[-1]) for q in seq])
-    if x == "-inf":
-        return _changes([sign(q[-1]) * (-1) ** deg(q) for q in seq])
-    x = Fraction(x)
-    return _changes([_int_sign(q, x.numerator, x.denominator) for q in seq])
-
-
-def _int_sign(q: list, a: int, b: int) -> int:
-    """sign q(a/b) for q with integer coefficients, b > 0: the sign of b^deg·q(a/b) =
-    Σ q_i a^i b^(deg − i), an integer (Horner's rule, homogenised)."""
-    v, bp = 0, 1
-    for c in reversed(q):
-        v = v * a + int(c) * bp
-        bp *= b
-    return sign(v)
+    """V(x) for a sequence of integer polynomials; x None for +∞, "-inf" for −∞ (the sign of a
+    polynomial there is that of its leading term).  At x = a/b (b > 0) the sign of q(x) is that of
+    the integer b^deg·q(a/b) = Σ q_i a^i b^(deg − i) (Horner's rule, homogenised)."""
+    if x is None or x == "-inf":
+        return changes(sign(q[-1]) * (-1 if x and len(q) % 2 == 0 else 1) for q in seq)
+    x, signs = Fraction(x), []
+    for q in seq:
+        v, bp = 0, 1
+        for c in reversed(q):
+            v, bp = v * x.numerator + c * bp, bp * x.denominator
+        signs.append(sign(v))
+    return changes(signs)
 
 
 def count(p: list, a=None, b=None) -> int:
-    """The number of distinct real roots of p in ]a, b] (None: −∞ or +∞), by Sturm's theorem
-    applied to the square-free part of p (which has the same distinct roots)."""
+    """The number of distinct real roots of p in ]a, b] (None: −∞ or +∞), by Sturm's theorem."""
     if not p:
         raise ValueError("the zero polynomial has every number as a root")
     if deg(p) == 0:
         return 0
-    key = tuple(p)
-    if key not in _SQF:
-        if len(_SQF) > 5000:
-            _SQF.clear()
-        _SQF[key] = sturm_sequence(squarefree(p))
-    seq = _SQF[key]
+    seq = sturm_sequence(p)
     return variations(seq, "-inf" if a is None else a) - variations(seq, b)
-
-
-def cauchy_bound(p: list) -> Fraction:
-    """1 + max |a_i / a_n|: every complex root of p has a smaller modulus (Cauchy)."""
-    return 1 + max((abs(a / p[-1]) for a in p[:-1]), default=Fraction(0))
 
 
 class Algebraic:
@@ -99,14 +70,6 @@ class Algebraic:
         self.p, self.lo, self.hi = p, Fraction(lo), Fraction(hi)
         if check:
             self.validate()
-
-    @classmethod
-    def of(cls, data) -> Algebraic:
-        """From JSON: {"poly": [...], "lo": "p/q", "hi": "p/q"}, or a rational "p/q"."""
-        if isinstance(data, (int, str)):
-            q = rat(data)
-            return cls([-q, Fraction(1)], q, q)
-        return cls(upoly(data["poly"]), rat(data["lo"]), rat(data["hi"]))
 
     def validate(self) -> None:
         """p square-free (gcd(p, p') = 1, so Sturm counts each root once) and the interval
@@ -160,23 +123,23 @@ class Algebraic:
             self.bisect()
 
     def sign_of(self, h: list) -> int:
-        """The sign of h at the number.  If gcd(h, p) has a root in ]lo, hi] it is the number
-        (the only root of p there): 0.  Otherwise bisect until h has no root in ]lo, hi]
-        (Sturm), so that h keeps one sign there (intermediate value theorem); read it at hi."""
-        if not h:
-            return 0
-        if self.rational:
-            return sign(value(h, self.lo))
-        g = gcd(h, self.p)
-        if deg(g) > 0 and count(g, self.lo, self.hi) == 1:
-            return 0
-        for _ in range(10_000):
+        """The sign of h at the number: 0 exactly when gcd(h, p) has a root in ]lo, hi] (the only root
+        of p there is the number); else that of an enclosure of h on the interval
+        (:func:`poly.enclose`) without 0 (there is one after enough bisections, as h ≠ 0 there)."""
+        tested = False
+        while h:
             if self.rational:
                 return sign(value(h, self.lo))
-            if count(h, self.lo, self.hi) == 0:
-                return sign(value(h, self.hi))
-            self.bisect()
-        raise ArithmeticError("sign not decided in 10 000 bisections")
+            lo, hi = enclose(h, self.lo, self.hi)
+            if lo > 0 or hi < 0:
+                return 1 if lo > 0 else -1
+            if not tested:
+                g, tested = gcd(h, self.p), True
+                if deg(g) > 0 and count(g, self.lo, self.hi) == 1:
+                    return 0
+            for _ in range(8):
+                self.bisect()
+        return 0
 
     def compare(self, other: Algebraic) -> int:
         """sign(self − other).  Disjoint intervals decide.  If gcd of the two polynomials has
@@ -205,21 +168,19 @@ class Algebraic:
 
 def real_roots(p: list) -> list:
     """The distinct real roots of p, largest first, as isolated algebraic numbers: bisection of
-    ]−B, B] (B Cauchy's bound) until each piece holds one root, by Sturm counts."""
+    ]−B, B] until each piece holds one root, by Sturm counts; B = 1 + max |p_i / p_n| bounds the
+    modulus of every complex root (Cauchy)."""
     p = squarefree(trim(p))
     if deg(p) < 1:
         return []
-    B = cauchy_bound(p)
+    B = 1 + max((abs(a / p[-1]) for a in p[:-1]), default=Fraction(0))
     out, todo = [], [(-B, B, count(p, -B, B))]
     while todo:
         lo, hi, n = todo.pop()
         if n == 0:
             continue
         if n == 1:
-            if value(p, hi) == 0:
-                out.append(Algebraic(p, hi, hi, check=False))
-            else:
-                out.append(Algebraic(p, lo, hi, check=False))
+            out.append(Algebraic(p, hi if value(p, hi) == 0 else lo, hi, check=False))
             continue
         mid = (lo + hi) / 2
         left = count(p, lo, mid)

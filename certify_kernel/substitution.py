@@ -1,12 +1,9 @@
-"""Substitution: ``at(E, x, v, y, w, ...)`` is E with the variables x, y, ... replaced by the
-values v, w, ... (at once): p(1) and q(1) "obtained when λ = 0" (l. 662), the limit bases at
-θ = 0 and θ = π/2 (l. 545: cos θ = 1, sin θ = 0 and cos θ = 0, sin θ = 1), a quantity at a
-parametrised value (t_c at λ = −cos φ/tan θ + μ).  E is a rational function, or a vector or
-matrix of them; each x is a variable (``cos(θ)`` for the cosine of an angle), each v a rational
-function.  Nothing is decided here: the value is computed exactly, monomial by monomial, with
-the arithmetic of :class:`certify_kernel.values.RF`, and the statement compares it.  On the
-circles the value does not depend on the representative: a polynomial of the ideal
-(cos² + sin² − 1) vanishes at every point of it, and so at (cos, sin) = (1, 0) or (0, 1).
+"""Substitution: ``at(E, x, v, y, w, ...)`` is E (a rational function, vector or matrix) with the
+variables x, y, ... (``cos(θ)`` for a cosine) replaced by the rational functions v, w, ... at once:
+p(1), q(1) "obtained when λ = 0" (l. 662), the limit bases at θ = 0 and π/2 (l. 545), t_c at
+λ = −cos φ/tan θ + μ.  The value is computed exactly, monomial by monomial (:class:`values.RF`);
+on the circles it does not depend on the representative (a polynomial of the ideal
+(cos² + sin² − 1) vanishes at (cos, sin) = (1, 0) or (0, 1)).
 """
 from __future__ import annotations
 

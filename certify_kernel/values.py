@@ -8,9 +8,10 @@ arithmetic.
 from __future__ import annotations
 
 from fractions import Fraction
+from math import isqrt
 
-from .poly import add, gcd, integer_primitive, madd, mmul, monic, reduce_circles, squarefree, trim
-from .sturm import Algebraic, count
+from .poly import divmod_, gcd, madd, mmul, reduce_circles, resultant_in, squarefree, trim, value
+from .sturm import Algebraic, count, real_roots
 
 VARS: list[str] = ["r", "λ"]           # the declared variables, r and λ first (sign tables read (r, λ))
 CIRCLES: list[tuple[int, int]] = []     # (index of cos θ, index of sin θ) for each declared angle θ
@@ -136,7 +137,6 @@ def _reduce(num: dict, den: dict) -> RF:
             n, d = _to_list(num, i), _to_list(den, i)
             g = gcd(n, d)
             if len(g) > 1:
-                from .poly import divmod_
                 n, d = divmod_(n, g)[0], divmod_(d, g)[0]
                 return RF(_from_list(n, i), _from_list(d, i))
     return RF(num, den)
@@ -204,11 +204,6 @@ def two(P: RF) -> dict:
     return {k[:2]: v / c for k, v in P.num.items()}
 
 
-def from_two(p: dict) -> RF:
-    n = len(VARS)
-    return RF({k + (0,) * (n - 2): v for k, v in p.items()})
-
-
 # --------------------------------------------------------------- real algebraic numbers
 
 def number(x) -> Algebraic:
@@ -247,10 +242,10 @@ def _isolate(poly: list, lo: Fraction, hi: Fraction, refine) -> Algebraic:
     enclosure holding exactly one root of the square-free polynomial, ends not roots."""
     poly = squarefree(poly)
     for _ in range(200):
-        if lo == hi and not sum(c * lo ** i for i, c in enumerate(poly)):
+        if lo == hi and not value(poly, lo):
             return Algebraic([-lo, Fraction(1)], lo, hi, check=False)
         a, b = lo - (hi - lo) / 4 - Fraction(1, 10 ** 30), hi + (hi - lo) / 4 + Fraction(1, 10 ** 30)
-        if count(poly, a, b) == 1 and all(sum(c * e ** i for i, c in enumerate(poly)) for e in (a, b)):
+        if count(poly, a, b) == 1 and value(poly, a) and value(poly, b):
             return Algebraic(poly, a, b)
         lo, hi = refine()
     raise Undefined("a root could not be isolated")
@@ -259,7 +254,6 @@ def _isolate(poly: list, lo: Fraction, hi: Fraction, refine) -> Algebraic:
 def combine(op: str, a, b) -> Algebraic:
     """a + b, a − b, a·b, a/b of real algebraic numbers: the polynomial by a resultant, the root by
     interval arithmetic on the two isolating intervals."""
-    from .poly import resultant_in
     a, b = number(a), number(b)
     if op == "-":
         b = Algebraic([c * (-1) ** i for i, c in enumerate(b.p)], -b.hi, -b.lo) if not b.rational \
@@ -278,7 +272,7 @@ def combine(op: str, a, b) -> Algebraic:
     if a.rational and b.rational:
         return number(a.lo + b.lo if op == "+" else a.lo * b.lo)
     pa = {(0, i): c for i, c in enumerate(a.p) if c}
-    R = resultant_in(pa, _bivariate(a.p, b.p, op) if op == "+" else _bivariate(a.p, b.p, "*"))
+    R = resultant_in(pa, _bivariate(a.p, b.p, op))
 
     def enclosure():
         if op == "+":
@@ -298,9 +292,7 @@ def sqrt(a) -> Algebraic:
     a = number(a)
     if a.compare_rational(0) < 0:
         raise Undefined("the square root of a negative number")
-    p2 = [Fraction(0)] * (2 * len(a.p) - 1)
-    for i, c in enumerate(a.p):
-        p2[2 * i] = c
+    p2 = [x for c in a.p for x in (c, Fraction(0))][:-1]          # p(x²)
 
     def bounds():
         return _root_below(max(a.lo, Fraction(0))), _root_above(max(a.hi, Fraction(0)))
@@ -317,7 +309,6 @@ def sqrt(a) -> Algebraic:
 
 
 def _root_below(q: Fraction, bits: int = 64) -> Fraction:
-    from math import isqrt
     scale = 1 << bits
     return Fraction(isqrt(q.numerator * scale * scale // q.denominator), scale)
 
@@ -330,7 +321,6 @@ def _root_above(q: Fraction, bits: int = 64) -> Fraction:
 def roots_in(p: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False) -> list:
     """The distinct real roots of p in the interval (ends algebraic, or None for ∓∞), increasing,
     as isolated algebraic numbers (Sturm bisection of a Cauchy bound, then exact comparisons)."""
-    from .sturm import real_roots
     out = []
     for a in reversed(real_roots(p)):
         left = 1 if lo is None else a.compare(number(lo))
@@ -339,10 +329,3 @@ def roots_in(p: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False) 
             out.append(a)
     return out
 
-
-def integer_poly(p: list) -> list:
-    return [Fraction(c) for c in integer_primitive(p)]
-
-
-__all__ = ["VARS", "CIRCLES", "RF", "Undefined", "declare", "declare_angle", "univariate", "two", "from_two",
-           "number", "combine", "sqrt", "roots_in", "monic", "add", "integer_poly"]

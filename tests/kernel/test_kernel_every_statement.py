@@ -117,7 +117,7 @@ class _Recording(Context):
         self.used: list = []
 
     def name(self, name: str):
-        if name in self.lets and name not in self.bound and name not in self.used:
+        if name in self.lets and name not in self.used:
             self.used.append(name)
         return super().name(name)
 
