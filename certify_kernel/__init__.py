@@ -87,6 +87,9 @@ def verify_certificate(cert, engine: dict | None, lets: dict) -> dict:
            "statements": [], "counted": 0, "verified": 0}
     if engine is None:
         return {**out, "ok": False, "failure": "certificates.json has no entry for it"}
+    unread = _unread(engine)
+    if unread:
+        return {**out, "ok": False, "failure": f"{unread}: the kernel reads verdicts and witnesses only"}
     if engine.get("status") != out["status"]:
         return {**out, "ok": False, "failure": f"the run says {engine.get('status')}, its statements' verdicts "
                 f"make it {out['status']}"}
@@ -111,6 +114,26 @@ def verify_certificate(cert, engine: dict | None, lets: dict) -> dict:
             out["counted"] += 1
             out["verified"] += ok
     return out
+
+
+WITNESSES = ("signed", "factors")        # the kinds of witness a module of the kernel reads (signs, pattern)
+
+
+def _unread(engine: dict) -> str:
+    """What a certificate's entry holds beyond its status, its statements' verdicts and witnesses of
+    a kind the kernel reads ("" when nothing): objects, obligations, covers, moduli or counts are
+    never taken from a run, so a run that writes them is rejected, the field named."""
+    extra = sorted(set(engine) - {"id", "status", "statements"})
+    if extra:
+        return f"the field {extra[0]!r}"
+    for sid, rec in sorted(engine["statements"].items()):
+        extra = sorted(set(rec) - {"verdict", "witness"}) if isinstance(rec, dict) else ["(not an object)"]
+        if extra:
+            return f"statement {sid}: the field {extra[0]!r}"
+        w = rec.get("witness", [])
+        if not isinstance(w, list) or any(not isinstance(x, dict) or x.get("kind") not in WITNESSES for x in w):
+            return f"statement {sid}: a witness of no kind the kernel reads"
+    return ""
 
 
 _WORK: dict = {}

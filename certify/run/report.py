@@ -21,6 +21,7 @@ import re
 from pathlib import Path
 from urllib.parse import quote
 
+import certify_kernel
 from certify.run import verification
 from certify.run.files import CHECKOUT, write_atomic
 from certify.run.runner import (
@@ -547,7 +548,7 @@ def render_json(results) -> str:
 
 
 CERTIFICATES_FORMAT = "certify-certificates/2"   # certify_kernel.FORMAT: docs/verify.md
-WITNESS_KINDS = ("signed", "factors")            # the facts the kernel reads as witnesses (.signs, .pattern)
+WITNESS_KINDS = certify_kernel.WITNESSES         # the facts the kernel reads as witnesses (.signs, .pattern)
 _STATEMENTS: dict = {}
 
 

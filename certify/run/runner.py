@@ -23,11 +23,10 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 
-from certify_kernel.statements import read as read_statements
-
 from certify import caches
 from certify.errors import StatementError, UsageError
 from certify.witnesses import in_order, quiet, recording, witnesses_of
+from certify_kernel.statements import read as read_statements
 
 from .executors import default_jobs  # noqa: F401  (runner.default_jobs, used by the CLI and benchmarks)
 from .files import CHECKOUT

@@ -176,6 +176,19 @@ RUN_FORGERIES = {
     "a certificate of no statement file": (lambda d: d["certificates"].append(
         {"id": "T99", "status": "PASS", "statements": {}}), ["T1"],
         "T99: FAILED: certificates.json has it, the statement files do not"),
+    # the old format's forgeries (issue 34): the run chose an object, a modulus, a cover, a count; none is read
+    "an object replaced in every fact (P0 for T5)": (lambda d: entry(d, "T5").update(
+        obligations=[{"id": "T5:1", "kind": "root_count", "poly": ["11384", "-100000"], "count": 1}]), ["T5"],
+        "T5: FAILED: the field 'obligations': the kernel reads verdicts and witnesses only"),
+    "a file-chosen modulus": (lambda d: entry(d, "T17")["statements"]["T17.1"].update(
+        modulo={"var": "r", "poly": [["1", [1, 0]], ["-1/2", [0, 0]]]}), ["T17"],
+        "T17: FAILED: statement T17.1: the field 'modulo': the kernel reads verdicts and witnesses only"),
+    "a '?' cover": (lambda d: entry(d, "T17")["statements"]["T17.5"].update(
+        derivation={"rule": "cover", "signs": ["?"], "branch": 0}), ["T17"],
+        "T17: FAILED: statement T17.5: the field 'derivation': the kernel reads verdicts and witnesses only"),
+    "a reversed count": (lambda d: entry(d, "T5")["statements"]["T5.2"].update(
+        witness=[{"kind": "root_count", "lo": "1", "hi": "0", "count": -1}]), ["T5"],
+        "T5: FAILED: statement T5.2: a witness of no kind the kernel reads"),
 }
 
 
