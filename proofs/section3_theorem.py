@@ -1181,7 +1181,7 @@ def theorem_3_1(candidate, a, b, c, d, U, V, velocities, p3t4, p1t5, r1, r1_digi
         witnessed(Check("and for no r in [5-2√6, 1[, on any branch, for either fixed point", not above, regions),
                   "T25.1.3", WORD),
         named("T25.1.4", Check("u, v as printed are the components of q(0) (rows 1 and 2 of M q = λ q), modulo cp(M)",
-                               all(same_q), [f"u: {same_q[0]}, v: {same_q[1]}"])),
+                               all(same_q), [f"u as printed is the computed u: {'yes' if same_q[0] else 'no'}; v: {'yes' if same_q[1] else 'no'}"])),
         named("T25.1.5", Check("the printed (a, b, c, d) is proportional to the computed position map modulo cp(M)",
                                same_f, [f"computed a = `{show(candidate.abcd[0])}`"])),
         witnessed(Check("the candidate realises ababcb, with every inequality strict, exactly for 0 < r < 5-2√6 on the "

@@ -94,7 +94,7 @@ REJECTIONS = {
     "an observation said to hold": (lambda d: entry(d, "Z3")["statements"]["Z3.1"].update(verdict="holds"),
                                     "statement Z3.1: the run's verdict 'holds' is not the statement file's observed"),
     "a verdict that is not a record": (lambda d: entry(d, "Z1")["statements"].update({"Z1.1": "holds"}),
-                                       "statement Z1.1: the run's verdict 'holds' is not"),
+                                       "statement Z1.1: the field '(not an object)': the kernel reads verdicts"),
     "a verdict missing": (lambda d: entry(d, "Z1")["statements"]["Z1.3"].pop("verdict"),
                           "statement Z1.3: the run's verdict None is not"),
     "a statement missing": (lambda d: entry(d, "Z1")["statements"].pop("Z1.3"),
@@ -119,11 +119,19 @@ def test_a_forged_certificates_file_is_rejected(files, tmp_path, capsys, name):
     assert " 1 failed " in out.splitlines()[-1] or out.splitlines()[-1].startswith("3 certificates, 1 failed")
 
 
-def test_witnesses_of_any_shape_change_nothing_elsewhere(files, tmp_path, capsys):
+def test_witnesses_of_a_kind_the_kernel_reads_change_nothing_elsewhere(files, tmp_path, capsys):
     statements, paper, data = files
-    for w in (5, "a", {"num": 1}, [None, 1, "x", {"vars": 5}]):
+    for w in ([], [{"kind": "signed", "num": 1}], [{"kind": "factors", "factors": 5}]):
         entry(data, "Z1")["statements"]["Z1.1"]["witness"] = w
         assert run(tmp_path, statements, data) == 0, capsys.readouterr().out
+
+
+def test_witnesses_of_another_shape_are_rejected(files, tmp_path, capsys):
+    statements, paper, data = files
+    for w in (5, "a", {"num": 1}, [None, 1, "x", {"vars": 5}], [{"kind": "sign_table"}]):
+        entry(data, "Z1")["statements"]["Z1.1"]["witness"] = w
+        assert run(tmp_path, statements, data) == 1
+        assert "statement Z1.1: a witness of no kind the kernel reads" in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("edit, says", [
