@@ -350,3 +350,16 @@ def test_all_check_fails_on_a_stale_certificates_file(fake, tmp_path, capsys):
     assert cli.main(["all", "--check", "--out", str(out)]) == 1
     assert "certificates.json" in capsys.readouterr().err
     assert (out / "certificates.json").read_text(encoding="utf-8") == fresh     # rewritten anyway
+
+
+def test_verify_check_finds_a_stale_kernel_json(tmp_path, capsys):
+    """`certify verify --check` decides the statements again and compares with kernel.json beside the file."""
+    assert cli.main(["run", "T1", "T5", "--out", str(tmp_path), "--jobs", "1"]) == 0
+    capsys.readouterr()
+    path = str(tmp_path / "certificates.json")
+    assert cli.main(["verify", path, "--check", "--jobs", "1"]) == 0
+    assert "13/13 statements verified" in capsys.readouterr().out
+    kernel = tmp_path / "kernel.json"
+    kernel.write_text(kernel.read_text(encoding="utf-8").replace('"verified": 13', '"verified": 12'), encoding="utf-8")
+    assert cli.main(["verify", path, "--check", "--jobs", "1"]) == 1
+    assert "kernel.json is stale" in capsys.readouterr().err
