@@ -408,17 +408,26 @@ def _errata(results) -> str:
 
 
 def kernel_line(kernel) -> str:
-    """The summary's line on the independent kernel (reports/kernel.json)."""
+    """The summary's line on the independent kernel (reports/kernel.json), with the statements it
+    does not verify and why, in a few words each."""
     if not kernel:
         return "Independent kernel: not run (`python -m certify verify`, docs/verify.md)."
     failed = sorted(i for i, r in kernel["certificates"].items() if not r["ok"])
     k, n = kernel["verified"], kernel["statements"]
+    missing = [f"{sid} ({_short(why)})" for r in kernel["certificates"].values() if r["ok"] and r["counted"]
+               for sid, why in r["statements"].items() if why]
     return (f"Independent kernel (`python -m certify verify`, docs/verify.md): **{k}/{n} statements verified**: "
             f"of the {n} formal statements of the PASS and ERRATUM certificates (statements/*.txt, the paper's "
             f"claims written as data), the kernel decides {k} exactly with its own definitions and the Python "
             "standard library alone, each as the verdict the report gives it; each statement's line below says "
-            "whether it is verified and, if not, why." + (f"  **The kernel rejects {', '.join(failed)}.**" if failed
-                                                          else ""))
+            "whether it is verified and, if not, why." + (f"  Not verified: {', '.join(missing)}." if missing else "")
+            + (f"  **The kernel rejects {', '.join(failed)}.**" if failed else ""))
+
+
+def _short(why: str) -> str:
+    """A reason in a few words: up to its first colon or parenthesis."""
+    head = why.split(" (")[0].split(":")[0].strip()
+    return head if len(head) <= 60 else head[:59] + "…"
 
 
 def _table(results, kernel=None) -> str:
