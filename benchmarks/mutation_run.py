@@ -1,5 +1,5 @@
-"""The mutation run of issue 25 over carry_bound, trapping and reduction_orbits, and of issue 34 over
-the independent kernel (certify_kernel/).
+"""The mutation run of issue 25 over carry_bound, trapping and reduction_orbits, of issue 34 over
+the independent kernel (certify_kernel/), and of issue 38 over the island's membership test.
 
 Each mutant is a textual replacement in one source file (it must match exactly once).  The
 tree (certify/, tests/, pyproject.toml) is copied once to a temporary directory; for each
@@ -9,14 +9,16 @@ mutant the file is rewritten there, the targeted tests run with PYTHONPATH set t
 be killed; a survivor outside the list must be one docs/developing.md explains.
 
     nice python benchmarks/mutation_run.py              # all (about 10 minutes on a loaded machine)
-    python benchmarks/mutation_run.py --only carry      # one group: carry, trapping, orbits, kernel
+    python benchmarks/mutation_run.py --only carry      # one group: carry, trapping, orbits, kernel, island
     python benchmarks/mutation_run.py --list
 
 Exit code 1 when a listed mutant survives or an expected survivor is killed (update the docs).
 The kernel's mutants are small wrong changes to certify_kernel/ (a bounding polynomial dropped,
 a sample outside its cell, "every piece" weakened to "some piece", a sign, Sturm's count off by
 one, the modulus or the circles ignored, digits read loosely, a status or a verdict not
-compared, ...); tests/kernel/ must kill each (its default suite, the fast files first).
+compared, ...); tests/kernel/ must kill each (its default suite, the fast files first).  The
+island's mutants decide a ball of states at its midpoint, in the membership test or in one of
+its callers (issue 38); the tests on a ball across the boundary ellipse must kill each.
 """
 from __future__ import annotations
 
@@ -34,6 +36,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 ORBITS, RULES, KERNEL, TRAP = ("certify/patterns/reduction_orbits.py", "certify/numerics/rules.py",
                                "certify/numerics/kernel.py", "certify/numerics/trapping.py")
+ISLAND, POINTS, IDENTIFY = ("certify/dynamics/island.py", "certify/run/figure_points.py",
+                            "certify/run/identify.py")
 CELLS, STURM, EVAL, VALUES, SIGNS, INIT, MAIN, LANG = (f"certify_kernel/{name}.py" for name in (
     "cells", "sturm", "evaluate", "values", "signs", "__init__", "__main__", "language"))
 TESTS = {"orbits": ["tests/patterns/test_reduction_orbits.py"],
@@ -42,7 +46,9 @@ TESTS = {"orbits": ["tests/patterns/test_reduction_orbits.py"],
          "kernel": [f"tests/kernel/test_kernel_{name}.py" for name in (
              "language", "values", "cells", "evaluate", "statements", "signs", "verify", "forgeries",
              "every_statement")]
-         + ["-m", "not slow"]}
+         + ["-m", "not slow"],
+         "island": ["tests/dynamics/test_island.py", "tests/run/test_figure_points.py", "tests/run/test_identify.py",
+                    "-k", "across"]}
 
 
 @dataclass(frozen=True)
@@ -239,6 +245,17 @@ MUTANTS = [
     Mutant("^ left-associative", "kernel", LANG,
            "right = self.formula(bp - 1 if op in (\"^\", \"implies\") else bp, brackets)",
            "right = self.formula(bp, brackets)"),
+    # ---- the island's membership test and its callers (issue 38): a ball decided at its midpoint
+    Mutant("island.inside: a ball of states decided at its midpoint", "island", ISLAND,
+           "        return island_sign(n, r) == 1\n",
+           "        return island_sign(tuple(z.mid() if hasattr(z, 'mid') else z for z in n), r) == 1\n"),
+    Mutant("figure_points.island_intervals: the state at b decided at its midpoint", "island", POINTS,
+           "if not island.inside(z0_state, r):", "if not island.inside(tuple(z.mid() for z in z0_state), r):"),
+    Mutant("identify: the scan's state at b decided at its midpoint", "island", IDENTIFY,
+           'j == INDEX["b"] and island.inside(n, r):',
+           'j == INDEX["b"] and island.inside(tuple(z.mid() for z in n), r):'),
+    Mutant("identify.verify: the second route's state decided at its midpoint", "island", IDENTIFY,
+           "inside = island.inside(n, r)\n", "inside = island.inside(tuple(z.mid() for z in n), r)\n"),
 ]
 
 

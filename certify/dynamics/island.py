@@ -30,6 +30,17 @@ island`` command and its tests; this module only defines them, in any ring):
 1
 >>> island_sign((-3, 1, 1), r)      # u = -1/2, v = 1/2: Q = 9/10 > c_max
 -1
+
+A ball of states is in the island only when all of it is (:func:`inside`): on v = 0 the
+boundary ellipse crosses u = √(71/240) ≈ 0.5439, inside the ball u = 0.54 ± 0.01, whose
+midpoint is in the island:
+
+>>> from flint import arb
+>>> across = normal(arb("0.54 +/- 0.01"), arb(0))
+>>> inside(across, r), inside(tuple(z.mid() for z in across), r)
+(False, True)
+>>> inside(normal(arb("0.2 +/- 0.01"), arb(0)), r)
+True
 """
 from __future__ import annotations
 
@@ -90,3 +101,17 @@ def island_sign(n, r) -> int | str:
         return sign(c_max(r) - quadratic_form(u, v, r))
     except Undecided:
         return UNDECIDED
+
+
+def inside(n, r) -> bool:
+    """Whether the state n at b is proved inside the island U_r = {Q < c_max}: c_max − Q(u, v) > 0
+    decided for the whole of n (for a ball normal, at every normal it holds: a ball that
+    straddles the boundary ellipse is not inside, wherever its midpoint lies).  False outside,
+    on the boundary, where n's balls do not decide the sign, and for a state not proved inside
+    the face b (n_z − n_x not proved positive).  r exact (fmpq) or a ball.  The one membership
+    test of ``certify identify`` and of the certified points of Section 5's figures; that the
+    island is invariant (r in ]3−2√2, 1[) is the caller's to prove."""
+    try:
+        return island_sign(n, r) == 1
+    except ValueError:                      # n_z − n_x ≤ 0: not a state inside the face b
+        return False

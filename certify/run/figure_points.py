@@ -24,7 +24,7 @@ read as a rational; lo, hi rational bounds of arb balls; PIXEL a rational lower 
 
 * **island**: r in ]3−2√2, 1[ (r² − 6r + 1 < 0, exactly), the island theorem for the symbol
   r proved (:func:`certify.patterns.island_theorem.symbolic_theorem`), and the datum, a state
-  at b, proved inside the island U_r = {Q < c_max} (arb, :func:`certify.dynamics.island.island_sign`).
+  at b, proved inside the island U_r = {Q < c_max} (arb, the whole ball: :func:`certify.dynamics.island.inside`).
   By the theorem every later b-to-b step is the linear map A(r) of the chart (u, v) (three
   collisions: b, then a and c in either order; a double collision [ac] on the tie v = 0 is
   counted as two, a and c commuting), so the state after m steps is, exactly,
@@ -128,7 +128,7 @@ def island_intervals(r: flint.fmpq, z0_state, steps: list[int]) -> list | str:
     if not island_theorem_holds():
         return "the island theorem for the symbol r is not proved"
     with precision(PREC):
-        if island.island_sign(z0_state, r) != 1:
+        if not island.inside(z0_state, r):              # the whole ball, not its midpoint
             return "the state at b is not proved inside the island U_r = {Q < c_max}"
         u0, v0 = island.chart(z0_state)
         (a, b), (c, d) = island.matrix_A(r)

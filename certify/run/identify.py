@@ -6,8 +6,9 @@ For each r (an exact rational: 0.3 is 3/10) and initial datum (θ0, φ0) at the 
 
 * **island**: the state at b after some collision k, computed rigorously from the datum
   (arb balls from the first collision, :func:`certify.numerics.engines.ball_states`),
-  lies in the island U_r = {Q < c_max} of :mod:`certify.dynamics.island` (r in
-  ]3−2√2, 1[, decided exactly): by the island theorem (``certify island``) the orbit
+  lies in the island U_r = {Q < c_max} of :mod:`certify.dynamics.island`, the whole
+  ball (:func:`~certify.dynamics.island.inside`, the membership test the certified points of
+  Section 5's figures share; r in ]3−2√2, 1[, decided exactly): by the island theorem (``certify island``) the orbit
   stays in U_r for ever and is quasi-periodic.  No word is needed.
 * **attracting periodic**: the float64 run (an observation) settles on a periodic word w;
   :func:`~certify.patterns.reduction_orbits.orbit_at` decides exactly that w has an
@@ -21,7 +22,7 @@ For each r (an exact rational: 0.3 is 3/10) and initial datum (θ0, φ0) at the 
 Each proof is checked again before it is reported (:func:`verify`), by a second route to
 the state: the reduction's own ball steps (:func:`certify.dynamics.reduction.ball_run`,
 precision raised by powers of 2 until every sign is decided; up to :data:`VERIFY_MAX` collisions, beyond
-which the first route's state is used), the island's sign recomputed from Q and c_max,
+which the first route's state is used), the island's membership decided again on that state,
 the trapping ellipse re-certified from its exact data (:func:`trapping.check`) and the
 word re-decided by ``orbit_at``.  A word is "certified" only in the second class;
 otherwise it is what the float64 run shows past its certified horizon: "observed".
@@ -46,10 +47,8 @@ from certify.algebra.algebraic import Algebraic
 from certify.algebra.balls import precision
 from certify.algebra.branches import BRANCH_NAMES
 from certify.dynamics import island
-from certify.dynamics.island import island_sign
 from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ball_run
-from certify.dynamics.simulate import Undecided, sign
 from certify.errors import UsageError
 from certify.numerics import engines, grid, rules, trapping
 from certify.patterns import compact, island_theorem, read, show_word
@@ -247,12 +246,8 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
         if cls == ISLAND:
             if last != "b":
                 return f"the state after collision {k} is at contact {last}, not b"
-            try:
-                u, v = island.chart(n)
-                s = sign(island.c_max(r) - island.quadratic_form(u, v, r))
-            except (Undecided, ValueError):
-                s = 0
-            return None if s > 0 else f"the state at b after collision {k} is not proved inside the island (Q < c_max)"
+            inside = island.inside(n, r)
+            return None if inside else f"the state at b after collision {k} is not proved inside the island (Q < c_max)"
         if last != word[-1]:
             return f"the state after collision {k} is at contact {last}, not {word[-1]} (the start of {word})"
         inside = U.ball_sign(n) > 0
@@ -325,7 +320,7 @@ def _scan(x: Identified, r, theta0, phi0, U, rotation, budget):
     for k, j, n, bits in engines.ball_states(r, theta0, phi0, budget, stop=stop):
         with precision(bits):
             found = []
-            if tries[ISLAND] and j == INDEX["b"] and island_sign(n, r) == 1:
+            if tries[ISLAND] and j == INDEX["b"] and island.inside(n, r):
                 found.append(ISLAND)
             if tries[ATTRACTING] and j == c0 and U.ball_sign(n) == 1:
                 found.append(ATTRACTING)

@@ -134,3 +134,15 @@ def test_a_window_reaching_back_before_the_entry():
     window = fp.trap_window(x.word, x.entry, 600, 200)
     assert len(window) < 200                     # the rest comes from before the entry
     assert x.points == 200 and x.certified == x.points, x.why
+
+
+def test_a_ball_across_the_boundary_is_refused():
+    """A state whose ball straddles the boundary ellipse is refused, although its midpoint lies
+    in the island: its points would not be certified (tests/dynamics/test_island.py builds such
+    balls in general; here u = 0.54 ± 0.01 on v = 0 at r = 3/10, the ellipse at u ≈ 0.5439)."""
+    from certify.dynamics import island
+    q = flint.fmpq(3, 10)
+    across = island.normal(flint.arb("0.54 +/- 0.01"), flint.arb(0))
+    assert "not proved inside the island" in fp.island_intervals(q, across, [1, 2])
+    got = fp.island_intervals(q, tuple(z.mid() for z in across), [1, 2])
+    assert not isinstance(got, str) and len(got) == 2

@@ -10,6 +10,8 @@ import pytest
 
 from certify import cli
 from certify.algebra.algebraic import Algebraic
+from certify.dynamics import island
+from certify.dynamics.model import INDEX
 from certify.numerics import grid
 from certify.run import identify as ident
 
@@ -101,19 +103,44 @@ def test_a_mislabelled_class_a_wrong_word_or_a_state_outside_the_trap_is_refused
     assert ident.verify(r, att.theta0, att.phi0, ident.UNRESOLVED, k) is not None
 
 
-def test_a_lying_island_sign_is_caught_by_the_second_route(monkeypatch):
-    """island_sign says +1 everywhere: the scan proposes "island" for every orbit, the
-    second route (Q and c_max recomputed on its own state) refuses it for the orbits that
-    are attracted, which stay attracting periodic."""
-    monkeypatch.setattr(ident, "island_sign", lambda n, r: 1)
+def test_a_lying_first_route_is_caught_by_the_second_route(monkeypatch):
+    """The first route's states at b are replaced by the island's centre for 300 collisions:
+    the scan proposes "island" for every orbit; the second route (its own ball run to the
+    state, the island's membership decided on it) refuses it for the orbits that are
+    attracted, which stay attracting periodic."""
+    true_states = ident.engines.ball_states
+
+    def lying(r, theta0, phi0, collisions, **kw):
+        for k, j, n, bits in true_states(r, theta0, phi0, collisions, **kw):
+            yield (k, j, tuple(flint.arb(z) for z in (-1, 0, 1)), bits) if k < 300 and j == INDEX["b"] \
+                else (k, j, n, bits)
+    monkeypatch.setattr(ident.engines, "ball_states", lying)
     theta0, phi0 = grid(8)
     x = ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 20_000)
     assert x.cls == ident.ATTRACTING and any("refused by the second route" in n for n in x.notes)
 
 
-def test_without_the_island_sign_or_the_trap_the_class_changes(monkeypatch):
+def test_a_ball_across_the_boundary_is_no_island_on_either_route(monkeypatch):
+    """A state at b whose ball straddles the island's boundary ellipse (its midpoint inside:
+    tests/dynamics/test_island.py) is proposed by neither route: the scan does not even ask
+    the second route, and the second route refuses it."""
+    r = flint.fmpq(3, 10)
+    across = island.normal(flint.arb("0.54 +/- 0.01"), flint.arb(0))
+    asked = []
+    monkeypatch.setattr(ident.engines, "ball_states", lambda *a, **kw: iter([(1, INDEX["b"], across, 64)]))
+    monkeypatch.setattr(ident, "verify", lambda *a: asked.append(a))
+    x = ident.Identified("3/10", 0.5, 0.5, 1, 0)
+    assert ident._scan(x, r, 0.5, 0.5, None, None, 1)[0] is None and asked == []
+    monkeypatch.undo()
+    monkeypatch.setattr(ident, "_state", lambda *a: ("b", across, 64))
+    assert "not proved inside the island" in ident.verify(Fraction(3, 10), 0.5, 0.5, ident.ISLAND, 1)
+    monkeypatch.setattr(ident, "_state", lambda *a: ("b", tuple(z.mid() for z in across), 64))
+    assert ident.verify(Fraction(3, 10), 0.5, 0.5, ident.ISLAND, 1) is None       # its midpoint is inside
+
+
+def test_without_the_island_or_the_trap_the_class_changes(monkeypatch):
     theta0, phi0 = grid(2)
-    monkeypatch.setattr(ident, "island_sign", lambda n, r: -1)
+    monkeypatch.setattr(island, "inside", lambda n, r: False)
     assert ident.classify(Fraction(3, 10), float(theta0[1]), float(phi0[1]), 5000).cls == ident.UNRESOLVED
     monkeypatch.setattr(ident.trapping.Trap, "ball_sign", lambda self, n: 0)
     assert ident.classify(Fraction(3, 10), float(theta0[0]), float(phi0[0]), 5000).cls == ident.UNRESOLVED
