@@ -13,12 +13,12 @@ from __future__ import annotations
 import copy
 import json
 import math
-from concurrent.futures import FIRST_COMPLETED, wait
 from functools import lru_cache
 from pathlib import Path
 
 from certify.patterns import census, compact, island_theorem
 
+from .executors import wait_first
 from .files import REPORTS, read_first_member, read_text_or_none, write_atomic
 
 WINDOW = 64                  # jobs in flight at once (an interruption loses at most these)
@@ -109,7 +109,7 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
                     break
                 continue
             # a timeout, so that Ctrl-C and SIGTERM are handled while the jobs run
-            finished, pending = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
+            finished, pending = wait_first(pending, 0.5)
             for future in sorted(finished, key=lambda f: words_of[f]):
                 collect(future, words_of.pop(future))
     finally:
