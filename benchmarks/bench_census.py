@@ -29,7 +29,7 @@ if str(ROOT) not in sys.path:  # run as a script from a source checkout
     sys.path.insert(0, str(ROOT))
 
 from certify.patterns import census  # noqa: E402
-from certify.run import census as run_census  # noqa: E402
+from certify.run import census_report as run_census  # noqa: E402
 from certify.run.executors import default_jobs, executor  # noqa: E402
 from certify.run.files import write_section  # noqa: E402
 
@@ -75,7 +75,7 @@ def bench_census(lengths=LENGTHS, jobs: int | None = None, state=None) -> list[s
         for L in lengths:
             start = time.perf_counter()
             with executor(jobs) as ex:
-                records = run_census.run(L, ex, state, resume=True)
+                records = run_census.run_census(L, ex, state, resume=True)
             step = time.perf_counter() - start
             total += step
             rows.append(f"| {L} | {len(records)} | {len(records) - before} | {step:.1f} | {total:.1f} |")
