@@ -28,7 +28,8 @@ raised as soon as they return (a :class:`KeyboardInterrupt` raised inside
 then waited on it for good).  The workers ignore SIGINT and die of SIGTERM (no Python
 handler, so no traceback); on the way out the parent terminates them, kills any that a
 signal missed (one sent while the worker was being forked is lost), and only then shuts the
-pool down, so the command ends at once with every worker gone.
+pool down, so the command ends at once with every worker gone.  On a Dask cluster the signals
+are held the same way, and an interrupted run cancels its jobs instead of waiting for them.
 """
 from __future__ import annotations
 
@@ -131,29 +132,38 @@ def _stop_workers(pool: Pool) -> None:
 
 
 @contextmanager
+def _signals_held():
+    """SIGINT and SIGTERM handled by :func:`_interrupt` (in the main thread; elsewhere
+    nothing changes) while a pool runs; the handlers before restored after.  Yields the
+    signals it handles."""
+    main = threading.current_thread() is threading.main_thread()
+    old = {s: signal.signal(s, _interrupt) for s in (signal.SIGINT, signal.SIGTERM)} if main else {}
+    try:
+        yield list(old)
+    finally:
+        for s, handler in old.items():
+            signal.signal(s, handler)
+        _signalled.clear()
+
+
+@contextmanager
 def process_pool(jobs: int, initializer=None, initargs=(), context=None):
     """``jobs`` local worker processes (forked where possible) as a :class:`Pool`; on any
     exception (Ctrl-C, SIGTERM, an error) the workers are stopped at once, then the pool is
-    shut down, pending jobs cancelled.  Only the main thread may open one."""
+    shut down, pending jobs cancelled."""
     if context is None:
         context = multiprocessing.get_context("fork" if "fork" in multiprocessing.get_all_start_methods() else None)
-    main = threading.current_thread() is threading.main_thread()
-    old = {s: signal.signal(s, _interrupt) for s in (signal.SIGINT, signal.SIGTERM)} if main else {}
-    pool = Pool(jobs, mp_context=context, initializer=_worker_start, initargs=(initializer, *initargs))
-    try:
-        yield pool
-    except BaseException:
-        for s in old:                         # a second Ctrl-C must not cut the cleanup short
-            signal.signal(s, signal.SIG_IGN)
-        _stop_workers(pool)
-        raise
-    finally:
+    with _signals_held() as handled:
+        pool = Pool(jobs, mp_context=context, initializer=_worker_start, initargs=(initializer, *initargs))
         try:
-            pool.shutdown(wait=True, cancel_futures=True)
+            yield pool
+        except BaseException:
+            for s in handled:                     # a second Ctrl-C must not cut the cleanup short
+                signal.signal(s, signal.SIG_IGN)
+            _stop_workers(pool)
+            raise
         finally:
-            for s, handler in old.items():
-                signal.signal(s, handler)
-            _signalled.clear()
+            pool.shutdown(wait=True, cancel_futures=True)
 
 
 @contextmanager
@@ -185,8 +195,13 @@ def _dask(address: str, timeout: float):
     except (OSError, TimeoutError, ValueError, TypeError) as exc:
         reason = " ".join(str(exc).split()) or type(exc).__name__
         raise UsageError(f"cannot reach the scheduler {address!r}: {reason}") from None
+    ex = client.get_executor(pure=False)
     try:
-        with client.get_executor(pure=False) as ex:
+        with _signals_held():
             yield ex
+    except BaseException:
+        ex.shutdown(wait=False)          # Ctrl-C, an error: cancel the jobs on the cluster, do not wait for them
+        raise
     finally:
+        ex.shutdown(wait=True)           # (nothing left to wait for after a cancel)
         client.close()

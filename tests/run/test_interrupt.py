@@ -111,3 +111,19 @@ def test_census_ends_at_once_on_a_signal_to_its_main_process(tmp_path, signum):
                                          ["census", "--max-length", "12", "--jobs", "2", "--out", str(out)])
         assert (code, left) == (130, []), (k, code, left, err)
         assert err == "certify: interrupted\n", (k, err)
+
+
+@pytest.mark.slow
+def test_an_interrupted_run_on_a_dask_cluster_cancels_its_jobs_instead_of_waiting():
+    """Ctrl-C with --scheduler: the jobs in flight are cancelled, not waited for (before,
+    the executor's shutdown waited for them: minutes for the words of a long census)."""
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=1, dashboard_address=None,
+                                  silence_logs=40) as cluster:
+        start = time.monotonic()
+        with pytest.raises(KeyboardInterrupt):
+            with executors.executor(scheduler=cluster.scheduler_address) as ex:
+                future = ex.submit(_sleep, 6)
+                executors.wait_first({future}, 0.5)
+                raise KeyboardInterrupt
+        assert time.monotonic() - start < 4
