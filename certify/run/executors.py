@@ -17,7 +17,8 @@ Jobs must be module-level functions of picklable arguments returning plain data.
 A Dask worker must run one thread per process (``dask worker --nthreads 1``): python-flint's
 working precision (``flint.ctx.prec``) is global to a process, so two threads that set it at
 once would leave each other's balls at a precision neither asked for (still rigorous, but
-possibly undecided, and not the same bytes).
+possibly undecided, and not the same bytes).  A cluster whose workers run more threads
+is refused when the command connects (a worker that joins later is not checked).
 
 Interruption (Ctrl-C, ``kill -INT``, ``kill``): :func:`process_pool` is the one way this
 package runs local worker processes (the census, the sweeps, ``certify all``).  While it
@@ -195,6 +196,11 @@ def _dask(address: str, timeout: float):
     except (OSError, TimeoutError, ValueError, TypeError) as exc:
         reason = " ".join(str(exc).split()) or type(exc).__name__
         raise UsageError(f"cannot reach the scheduler {address!r}: {reason}") from None
+    threads = {n for n in client.nthreads().values()}
+    if threads - {1}:
+        client.close()
+        raise UsageError(f"the workers of {address!r} run {max(threads)} threads each: run them with one "
+                         "(dask worker --nthreads 1), python-flint's precision is global to a process")
     ex = client.get_executor(pure=False)
     try:
         with _signals_held():

@@ -145,6 +145,18 @@ def test_a_cluster_of_worker_processes_writes_the_same_census_json(tmp_path, cap
     assert on_cluster == local
 
 
+def test_a_cluster_of_workers_with_several_threads_is_refused():
+    """python-flint's precision is global to a process: two threads of one worker could
+    leave each other's balls at another precision (not the same bytes)."""
+    distributed = pytest.importorskip("distributed")
+    from certify.errors import UsageError
+    with distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=2, dashboard_address=None,
+                                  silence_logs=40) as cluster:
+        with pytest.raises(UsageError, match="--nthreads 1"):
+            with executor(scheduler=cluster.scheduler_address):
+                pass                                                          # pragma: no cover
+
+
 def test_local_processes_give_the_same_bytes(reference):
     with executor(2) as ex:
         assert as_json(run_census.run_census(L_SMALL, ex)) == as_json(reference)
