@@ -2,7 +2,7 @@
 
     python benchmarks/bench_census.py [--lengths 8 10 12 14 16] [--jobs N] [--state FILE]
                                       [--from-state FILE [--extrapolate L] [--fit-lengths N ...]
-                                       [--scale F]]
+                                       [--scale F] [--anchor L0 SECONDS]]
 
 For each L in turn, the census up to L is run on ``--jobs`` local processes with
 ``--resume`` on one state file, so the step to L analyses only the words longer than
@@ -76,33 +76,46 @@ def per_length(state) -> list[str]:
     return rows
 
 
-def extrapolate(means: dict[int, float], upto: int, cores=(2, 16, 64)) -> list[str]:
+def extrapolate(means: dict[int, float], upto: int, cores=(2, 16, 64), anchor: tuple[int, float] | None = None,
+                rows_from: int | None = None) -> list[str]:
     """An extrapolation, not a measurement: the mean seconds per word of each length fitted
     as exp(a + b·length) (least squares on the logarithms of ``means``), times the exact
-    number of words of each length (census.words_of_length); per bound L up to ``upto``:
-    the words, the fitted mean at L, the seconds of the whole census to L (measured means
-    where given, fitted beyond) and the hours on N cores (the words are independent jobs;
-    the longest word, about a minute at 20, is small against a core's share).  The words
-    shorter than the first fitted length are left out (minutes at most)."""
+    number of words of each length (census.words_of_length); per bound L up to ``upto``
+    (from ``rows_from``, default past the fitted lengths): the words, the mean at L, the
+    seconds of the whole census to L and the hours on N cores (the words are independent
+    jobs; the longest word, about a minute at 20, is small against a core's share).
+
+    Without ``anchor`` the measured means stand for their lengths and the fit beyond (the
+    words shorter than the first fitted length are left out: minutes at most).  With
+    ``anchor = (L0, seconds)`` (a whole census to L0 that took that many CPU seconds) the
+    fitted means of every length are scaled so that the census to L0 costs exactly that:
+    the fit gives the growth, the anchor the level."""
     xs = sorted(means)
     n = len(xs)
     mx, my = sum(xs) / n, sum(math.log(means[x]) for x in xs) / n
     b = sum((x - mx) * (math.log(means[x]) - my) for x in xs) / sum((x - mx) ** 2 for x in xs)
     a = my - b * mx
-    fitted = lambda length: means.get(length, math.exp(a + b * length))       # noqa: E731
+    counts = {length: len(census.words_of_length(length)) for length in range(1, upto + 1)}
+    if anchor is None:
+        mean = {k: means.get(k, math.exp(a + b * k)) if k >= xs[0] else 0.0 for k in counts}
+        level = ""
+    else:
+        at, seconds = anchor
+        scale = seconds / sum(counts[k] * math.exp(a + b * k) for k in range(1, at + 1))
+        mean = {k: scale * math.exp(a + b * k) for k in counts}
+        level = f"; level: the census to {at} in {seconds:.0f} s, so {mean[at]:.2f} s a word of length {at}"
     rows = [f"Fit: mean s per word = exp({a:.3f} + {b:.4f}·length), {math.exp(b):.3f}× per collision "
-            f"(lengths {xs[0]}-{xs[-1]}).", "",
+            f"(lengths {xs[0]}-{xs[-1]}){level}.", "",
             "| L | words to L | words of length L | mean s per word at L | hours of one worker to L | "
             + " | ".join(f"hours on {c} cores" for c in cores) + " |",
             "|---:|---:|---:|---:|---:|" + "---:|" * len(cores)]
-    total_words, seconds = 0, 0.0
+    total_words, total = 0, 0.0
     for length in range(1, upto + 1):
-        count = len(census.words_of_length(length))
-        total_words += count
-        seconds += count * fitted(length) if length >= xs[0] else 0.0
-        if length > xs[-1]:
-            rows.append(f"| {length} | {total_words} | {count} | {fitted(length):.2f} | {seconds / 3600:.1f} | "
-                        + " | ".join(f"{seconds / 3600 / c:.2f}" for c in cores) + " |")
+        total_words += counts[length]
+        total += counts[length] * mean[length]
+        if length >= (xs[-1] + 1 if rows_from is None else rows_from):
+            rows.append(f"| {length} | {total_words} | {counts[length]} | {mean[length]:.2f} | {total / 3600:.1f} | "
+                        + " | ".join(f"{total / 3600 / c:.2f}" for c in cores) + " |")
     return rows
 
 
@@ -151,6 +164,9 @@ def main(argv=None) -> int:
     p.add_argument("--scale", type=float, default=1.0, metavar="F",
                    help="multiply the measured seconds by F before fitting (e.g. the CPU share of a loaded machine: "
                         "the process's CPU seconds over the summed wall seconds of its records)")
+    p.add_argument("--anchor", nargs=2, type=float, default=None, metavar=("L0", "SECONDS"),
+                   help="with --extrapolate: scale the fit so that the census to L0 costs SECONDS of CPU (a run "
+                        "measured whole); the fit then gives only the growth")
     args = p.parse_args(argv)
     if args.from_state:
         rows = ["Analysis time per word length (seconds in one worker, from "
@@ -160,7 +176,9 @@ def main(argv=None) -> int:
             fit = args.fit_lengths or [n for n in by if n >= 12]
             means = {n: args.scale * sum(s for s, *_ in by[n]) / len(by[n]) for n in fit}
             rows += ["", f"Extrapolated (not measured) to {args.extrapolate}, seconds scaled by {args.scale}:", ""]
-            rows += extrapolate(means, args.extrapolate)
+            anchor = (int(args.anchor[0]), args.anchor[1]) if args.anchor else None
+            rows += extrapolate(means, args.extrapolate, anchor=anchor,
+                                rows_from=anchor[0] if anchor else None)
     else:
         rows = bench_census(args.lengths, args.jobs, args.state)
     print("\n".join(rows))

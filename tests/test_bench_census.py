@@ -39,3 +39,15 @@ def test_the_extrapolation_multiplies_exact_counts_by_the_fitted_growth():
     assert int(last[0]) == 12 and int(last[1]) == len(census.words(12)) and int(last[2]) == counts[12]
     assert math.isclose(float(last[3]), 16.0) and math.isclose(float(last[4]), round(expected, 1))
     assert math.isclose(float(last[5]), round(expected / 2, 2))
+
+
+def test_an_anchored_extrapolation_costs_the_anchor_at_its_length_and_grows_by_the_fit():
+    M = _module()
+    rows = M.extrapolate({8: 1.0, 9: 2.0, 10: 4.0}, 12, cores=(1,), anchor=(10, 3600.0), rows_from=10)
+    table = [r.strip("|").split("|") for r in rows[4:]]
+    assert [int(t[0]) for t in table] == [10, 11, 12]
+    assert math.isclose(float(table[0][4]), 1.0)                       # the census to 10: the anchor's hour
+    counts = {n: len(census.words_of_length(n)) for n in range(1, 13)}
+    level = 3600.0 / sum(counts[n] * 2.0 ** n for n in range(1, 11))
+    assert math.isclose(float(table[2][3]), round(level * 2.0 ** 12, 2))
+    assert math.isclose(float(table[2][4]), round(level * sum(counts[n] * 2.0 ** n for n in range(1, 13)) / 3600, 1))
