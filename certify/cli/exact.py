@@ -22,7 +22,8 @@ CENSUS_COST = "the census to 20 (5618 words) took about an hour on two cores"
 # With --scheduler (a Dask cluster) the census goes further: the words stream (census.iter_words), the
 # records come back to this process.  32 (about 3 million words) bounds a typing slip, not the cluster.
 MAX_CLUSTER_LENGTH = 32
-CLUSTER_COST = "beyond 20 on a Dask cluster (--scheduler): see docs/census.md for the time of 22 and 24 on N cores"
+CLUSTER_COST = ("beyond 20 on a Dask cluster (--scheduler): 22 about 8-10 hours of one core (about half an hour on "
+                "16), 24 about 28-47 (2-3 hours on 16), an extrapolation (docs/census.md)")
 
 
 def plural(n: int, word: str) -> str:
