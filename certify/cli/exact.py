@@ -59,7 +59,7 @@ def cmd_census(args) -> int:
                          "would replace it: write it elsewhere with --out DIR, or pass --force")
     state = args.state if args.state is not None else out / "census-state.jsonl"
     ensure_writable(state.parent)
-    with executors.executor(args.jobs, args.scheduler) as ex:
+    with executors.executor(args.jobs, args.scheduler, one_thread=True) as ex:
         records = census.run_census(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
     doc = census.write_outputs(records, args.max_length, out)
     if args.json:

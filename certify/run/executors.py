@@ -17,8 +17,9 @@ Jobs must be module-level functions of picklable arguments returning plain data.
 A Dask worker must run one thread per process (``dask worker --nthreads 1``): python-flint's
 working precision (``flint.ctx.prec``) is global to a process, so two threads that set it at
 once would leave each other's balls at a precision neither asked for (still rigorous, but
-possibly undecided, and not the same bytes).  A cluster whose workers run more threads
-is refused when the command connects (a worker that joins later is not checked).
+possibly undecided, and not the same bytes).  With ``one_thread`` (the census) a cluster
+whose workers run more threads is refused when the command connects (a worker that joins
+later is not checked).
 
 Interruption (Ctrl-C, ``kill -INT``, ``kill``): :func:`process_pool` is the one way this
 package runs local worker processes (the census, the sweeps, ``certify all``).  While it
@@ -168,11 +169,14 @@ def process_pool(jobs: int, initializer=None, initargs=(), context=None):
 
 
 @contextmanager
-def executor(jobs: int | None = None, scheduler: str | None = None, timeout: float | None = None):
+def executor(jobs: int | None = None, scheduler: str | None = None, timeout: float | None = None,
+             one_thread: bool = False):
     """Yield the executor for ``jobs`` local processes or the Dask ``scheduler``
-    (see the module's docstring); shut it down (pending jobs cancelled) on exit."""
+    (see the module's docstring); shut it down (pending jobs cancelled) on exit.
+    ``one_thread``: refuse a cluster whose workers run several threads (jobs that set
+    python-flint's precision, such as the census's)."""
     if scheduler:
-        with _dask(scheduler, CONNECT_TIMEOUT if timeout is None else timeout) as ex:
+        with _dask(scheduler, CONNECT_TIMEOUT if timeout is None else timeout, one_thread) as ex:
             yield ex
         return
     jobs = default_jobs() if jobs is None else jobs
@@ -186,7 +190,7 @@ def executor(jobs: int | None = None, scheduler: str | None = None, timeout: flo
 
 
 @contextmanager
-def _dask(address: str, timeout: float):
+def _dask(address: str, timeout: float, one_thread: bool = False):
     try:
         from distributed import Client
     except ImportError:
@@ -196,8 +200,8 @@ def _dask(address: str, timeout: float):
     except (OSError, TimeoutError, ValueError, TypeError) as exc:
         reason = " ".join(str(exc).split()) or type(exc).__name__
         raise UsageError(f"cannot reach the scheduler {address!r}: {reason}") from None
-    threads = {n for n in client.nthreads().values()}
-    if threads - {1}:
+    threads = set(client.nthreads().values())
+    if one_thread and threads - {1}:
         client.close()
         raise UsageError(f"the workers of {address!r} run {max(threads)} threads each: run them with one "
                          "(dask worker --nthreads 1), python-flint's precision is global to a process")

@@ -145,7 +145,7 @@ def test_a_cluster_of_worker_processes_writes_the_same_census_json(tmp_path, cap
     assert on_cluster == local
 
 
-def test_a_cluster_of_workers_with_several_threads_is_refused():
+def test_a_cluster_of_workers_with_several_threads_is_refused(tmp_path, capsys):
     """python-flint's precision is global to a process: two threads of one worker could
     leave each other's balls at another precision (not the same bytes)."""
     distributed = pytest.importorskip("distributed")
@@ -153,8 +153,12 @@ def test_a_cluster_of_workers_with_several_threads_is_refused():
     with distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=2, dashboard_address=None,
                                   silence_logs=40) as cluster:
         with pytest.raises(UsageError, match="--nthreads 1"):
-            with executor(scheduler=cluster.scheduler_address):
+            with executor(scheduler=cluster.scheduler_address, one_thread=True):
                 pass                                                          # pragma: no cover
+        argv = ["census", "--max-length", "3", "--out", str(tmp_path), "--scheduler", cluster.scheduler_address]
+        assert cli.main(argv) == 2 and "--nthreads 1" in capsys.readouterr().err
+        with executor(scheduler=cluster.scheduler_address):                   # other jobs may share a worker
+            pass
 
 
 def test_local_processes_give_the_same_bytes(reference):
