@@ -114,6 +114,19 @@ def test_census_ends_at_once_on_a_signal_to_its_main_process(tmp_path, signum):
 
 
 @pytest.mark.slow
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads the processes from /proc (Linux)")
+def test_certify_all_ends_at_once_on_sigint_to_its_main_process(tmp_path):
+    """The runner's pool (certify all, certify bench) is the same process_pool: 4 runs."""
+    for k in range(4):
+        out = tmp_path / str(k)
+        out.mkdir()
+        code, err, left = interrupt_once(out, signal.SIGINT, [0, 0.01, 0.1, 0.5][k],
+                                         ["all", "--jobs", "2", "--out", str(out)])
+        assert (code, left) == (130, []), (k, code, left, err)
+        assert err.splitlines()[-1] == "certify: interrupted" and "Traceback" not in err, (k, err)
+
+
+@pytest.mark.slow
 def test_an_interrupted_run_on_a_dask_cluster_cancels_its_jobs_instead_of_waiting():
     """Ctrl-C with --scheduler: the jobs in flight are cancelled, not waited for (before,
     the executor's shutdown waited for them: minutes for the words of a long census)."""
