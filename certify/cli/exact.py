@@ -50,8 +50,12 @@ def cmd_census(args) -> int:
     if args.max_length > 17:
         from certify.patterns.census import iter_words
         n = sum(1 for _ in iter_words(args.max_length))
-        say(f"census up to length {args.max_length}: {n} words; {CENSUS_COST} and the census to 17 (1214 words) "
-            "about ten minutes (progress on a terminal)")
+        if args.max_length > MAX_CENSUS_LENGTH:
+            say(f"census up to length {args.max_length}: {n} words on the cluster at {args.scheduler}; "
+                f"{CLUSTER_COST}; progress on a terminal, --resume after an interruption")
+        else:
+            say(f"census up to length {args.max_length}: {n} words; {CENSUS_COST} and the census to 17 (1214 "
+                "words) about ten minutes (progress on a terminal)")
     out = ensure_writable(args.out)
     longer = census.written_length(out)
     if longer is not None and longer > args.max_length and not args.force:
