@@ -1,7 +1,7 @@
 """The speed targets of issue 26: the engine against a plain SymPy script, in one sitting.
 
-    python benchmarks/bench_targets.py [--repeat N] [--long] [--all]
-    python -m certify bench --targets [--repeat N] [--long]      (= --all: also writes reports/BENCH.md)
+    python benchmarks/bench_targets.py [--repeat N] [--long] [--all] [--census]
+    python -m certify bench --targets [--repeat N] [--long]      (= --all --census: also writes reports/BENCH.md)
 
 The yardstick (:func:`algebra`) is a plain SymPy script doing the core of ``certify
 pattern``'s algebra on a word: M_w = K_{c_L} ··· K_{c_1} (expanded after each letter),
@@ -15,7 +15,8 @@ the median seconds of the script and of the engine's analysis (in process, the e
 (:func:`certify.run.runner.reset_caches`) and SymPy's emptied before each run), and their ratio.
 Then the whole command ``python -m certify pattern (ab)^6(cb)^6`` (fresh processes: imports,
 analysis, printing and exit; benchmarks/bench.py's time_command) against the script on the
-38-letter word (issue 26's target: at most 0.6) and on (ab)^6(cb)^6, in the same run.  Run the copy
+38-letter word (issue 26's target: at most 0.6) and on (ab)^6(cb)^6, in the same run.  With
+``--census`` also the census's words per second at a few lengths (:func:`census_speed`).  Run the copy
 of this file in another checkout to time that checkout's engine (the script imports the
 checkout it lives in).
 """
@@ -89,6 +90,30 @@ def median_seconds(f, repeat: int) -> float:
 
 
 TARGET_RATIOS = {"orbit": 1.2, "pattern": 0.6, "all": 3.0}      # issue 26's ceilings (ratios to the script)
+CENSUS_LENGTHS = (8, 10, 12)      # 6, 15 and 39 words: the census's speed at a few lengths (issue 35)
+
+
+def census_speed(lengths=CENSUS_LENGTHS, repeat: int = 3) -> list[str]:
+    """The census's speed (``certify census``'s job, :func:`certify.patterns.census.analyse_word`:
+    the self-similar analysis and the reduction's orbits of a word): for each length, every
+    word of exactly that length analysed in this process one after the other, the engine's
+    caches emptied first; the median seconds of ``repeat`` runs and the words per second.
+    Markdown rows | length | words | s | words/s |."""
+    from certify.patterns import census
+    from certify.run import runner
+
+    def analyse(words) -> None:
+        runner.reset_caches()
+        for word in words:
+            census.analyse_word(word)
+    rows = []
+    for length in lengths:
+        words = census.words_of_length(length)
+        seconds = median_seconds(lambda w=words: analyse(w), repeat)
+        rows.append(f"| {length} | {len(words)} | {seconds:.2f} | {len(words) / seconds:.2f} |")
+        print(f"census, the {len(words)} words of length {length}: {seconds:.2f} s, {len(words) / seconds:.2f} words/s "
+              f"(median of {repeat})", flush=True)
+    return rows
 
 
 def main(argv=None) -> int:
@@ -99,8 +124,19 @@ def main(argv=None) -> int:
     ap.add_argument("--long", action="store_true", help="also orbit on the 122-letter word (minutes)")
     ap.add_argument("--all", action="store_true", help="also the whole `python -m certify all` (fresh processes, "
                     "benchmarks/bench.py's time_command) against the script on the 38-letter word; writes BENCH.md")
+    ap.add_argument("--census", action="store_true", help="also the census's words per second at lengths "
+                    f"{', '.join(map(str, CENSUS_LENGTHS))} (a section of its own in BENCH.md with --all)")
     args = ap.parse_args(argv)
     from benchmarks.bench import BENCH, machine, time_command
+    if args.census:
+        census_rows = census_speed(CENSUS_LENGTHS, args.repeat)
+        if args.all:
+            files.write_section(BENCH, "census speed (issue 35)", "\n".join([
+                f"Measured by `python -m certify bench --targets --repeat {args.repeat}` on {machine()}: every word "
+                "of each length analysed as `certify census` does (self-similar data and the reduction's orbits), "
+                "in one process, caches emptied before each length; medians (benchmarks/bench_targets.py, "
+                "census_speed).  The whole census's cost by length: docs/census.md.", "",
+                "| length | words | s | words/s |", "|---:|---:|---:|---:|", *census_rows]))
     scripts, rows = {}, []
 
     def row(what: str, eng: float, ref: float, yardstick: str, target: float | None, reading: str = "") -> None:

@@ -213,11 +213,13 @@ def load_bench(name: str = "bench"):
 def cmd_bench(args) -> int:
     """Time the whole run (benchmarks/bench.py), or with --reduction the exact
     simulator and reduction map against bit growth (benchmarks/bench_reduction.py), or with
-    --targets issue 26's targets against the plain script (benchmarks/bench_targets.py)."""
+    --targets issue 26's targets against the plain script and the census's words per second
+    (benchmarks/bench_targets.py)."""
     if args.numerics:
         return load_bench("bench_numerics").main(["--quick"] * args.quick)
     if args.targets:
-        return load_bench("bench_targets").main(["--all", "--repeat", str(args.repeat)] + ["--long"] * args.long)
+        return load_bench("bench_targets").main(["--all", "--census", "--repeat", str(args.repeat)]
+                                                + ["--long"] * args.long)
     if args.reduction:
         return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
     if args.patterns:      # pattern (ab)^n(cb)^n for n = 2..12, then the census for L = 8..16
@@ -280,7 +282,8 @@ def register(commands) -> None:
                    "--targets: also `orbit` on the 122-letter word")
     p.add_argument("--targets", action="store_true",
                    help="time issue 26's targets (orbit, pattern and all against a plain SymPy script, in one run; "
-                   "benchmarks/bench_targets.py) instead, and write them to reports/BENCH.md")
+                   "benchmarks/bench_targets.py) and the census's words per second at lengths 8, 10, 12 instead, "
+                   "and write them to reports/BENCH.md")
     p.add_argument("--patterns", action="store_true",
                    help="time `pattern (ab)^n(cb)^n` for n = 2..12 and the census for L = 8..16 instead "
                         "(benchmarks/bench_patterns.py, bench_census.py; about an hour)")

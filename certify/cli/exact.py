@@ -19,6 +19,11 @@ MAX_DIGITS = 1000             # particles --digits
 # words alone exhausts memory).  Measured: benchmarks/bench_census.py, issues 25 and 26.
 MAX_CENSUS_LENGTH = 20
 CENSUS_COST = "the census to 20 (5618 words) took about an hour on two cores"
+# With --scheduler (a Dask cluster) the census goes further: the words stream (census.iter_words), the
+# records come back to this process.  32 (about 3 million words) bounds a typing slip, not the cluster.
+MAX_CLUSTER_LENGTH = 32
+CLUSTER_COST = ("beyond 20 on a Dask cluster (--scheduler): 22 about 8-10 hours of one core (about half an hour on "
+                "16), 24 about 28-47 (2-3 hours on 16), an extrapolation (docs/census.md)")
 
 
 def plural(n: int, word: str) -> str:
@@ -35,14 +40,22 @@ def cmd_census(args) -> int:
     from certify.run import executors, progress
     from certify.run.files import ensure_writable
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
-    if args.max_length > MAX_CENSUS_LENGTH:
-        raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} ({CENSUS_COST}; the words "
-                         "multiply by about 1.7 per collision, so a longer census does not finish in a working day)")
+    if args.max_length > MAX_CENSUS_LENGTH and not args.scheduler:
+        raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} on this machine ({CENSUS_COST}; "
+                         f"the words multiply by about 1.7 per collision, so a longer census does not finish in a "
+                         f"working day); {CLUSTER_COST}")
+    if args.max_length > MAX_CLUSTER_LENGTH:
+        raise UsageError(f"--max-length {args.max_length}: at most {MAX_CLUSTER_LENGTH}, even on a cluster (about "
+                         "3 million words at 32)")
     if args.max_length > 17:
-        from certify.patterns.census import words
-        n = len(words(args.max_length))
-        say(f"census up to length {args.max_length}: {n} words; {CENSUS_COST} and the census to 17 (1214 words) "
-            "about ten minutes (progress on a terminal)")
+        from certify.patterns.census import iter_words
+        n = sum(1 for _ in iter_words(args.max_length))
+        if args.max_length > MAX_CENSUS_LENGTH:
+            say(f"census up to length {args.max_length}: {n} words on the cluster at {args.scheduler}; "
+                f"{CLUSTER_COST}; progress on a terminal, --resume after an interruption")
+        else:
+            say(f"census up to length {args.max_length}: {n} words; {CENSUS_COST} and the census to 17 (1214 "
+                "words) about ten minutes (progress on a terminal)")
     out = ensure_writable(args.out)
     longer = census.written_length(out)
     if longer is not None and longer > args.max_length and not args.force:
@@ -50,7 +63,7 @@ def cmd_census(args) -> int:
                          "would replace it: write it elsewhere with --out DIR, or pass --force")
     state = args.state if args.state is not None else out / "census-state.jsonl"
     ensure_writable(state.parent)
-    with executors.executor(args.jobs, args.scheduler) as ex:
+    with executors.executor(args.jobs, args.scheduler, one_thread=True) as ex:
         records = census.run_census(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
     doc = census.write_outputs(records, args.max_length, out)
     if args.json:
@@ -164,7 +177,8 @@ def register(commands) -> None:
                     "self-similar data (`pattern`) and attracting periodic orbits of the reduction (`orbit`).  "
                     f"Writes DIR/CENSUS.md, census.json, {'census-windows.png'}; {CENSUS_COST}.")
     p.add_argument("--max-length", type=positive_int, required=True, metavar="L",
-                   help=f"longest period, in collisions (at most {MAX_CENSUS_LENGTH})")
+                   help=f"longest period, in collisions (at most {MAX_CENSUS_LENGTH}; with --scheduler at most "
+                        f"{MAX_CLUSTER_LENGTH})")
     p.add_argument("--json", action="store_true", help="also print the census as JSON on stdout")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
     p.add_argument("--state", type=Path, default=None, metavar="FILE",

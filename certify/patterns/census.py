@@ -44,24 +44,28 @@ KEPT = ("normal_form", "system", "characteristic_polynomial", "exists", "feasibl
 
 def lyndon_block_words(max_length: int) -> list[tuple[int, ...]]:
     """Every Lyndon word over the blocks (indices into :data:`BLOCKS`) whose letters
-    number at most ``max_length``: the FKM tree of pre-necklaces a_1 … a_t (a_t ≥
-    a_{t-p}; p the length of the longest Lyndon prefix period), a node kept when
+    number at most ``max_length`` (:func:`iter_lyndon_block_words` as a list)."""
+    return list(iter_lyndon_block_words(max_length))
+
+
+def iter_lyndon_block_words(max_length: int, exact: int | None = None):
+    """The Lyndon words over the blocks of at most ``max_length`` letters (of exactly
+    ``exact`` letters if given), one at a time: the FKM tree of pre-necklaces a_1 … a_t
+    (a_t ≥ a_{t-p}; p the length of the longest Lyndon prefix period), a node kept when
     p = t, a branch cut as soon as its length exceeds the bound."""
     sizes = [len(b) for b in BLOCKS]
     a = [0] * (max_length + 2)
-    out: list[tuple[int, ...]] = []
 
-    def grow(t: int, p: int, length: int) -> None:
-        if t > 1 and t - 1 == p:
-            out.append(tuple(a[1:t]))
+    def grow(t: int, p: int, length: int):
+        if t > 1 and t - 1 == p and (exact is None or length == exact):
+            yield tuple(a[1:t])
         for j in range(a[t - p], len(BLOCKS)):
             if length + sizes[j] <= max_length:
                 a[t] = j
-                grow(t + 1, p if j == a[t - p] else t, length + sizes[j])
+                yield from grow(t + 1, p if j == a[t - p] else t, length + sizes[j])
 
     if max_length >= min(sizes):
-        grow(1, 1, 0)
-    return out
+        yield from grow(1, 1, 0)
 
 
 def spell(blocks: tuple[int, ...]) -> str:
@@ -72,11 +76,23 @@ def spell(blocks: tuple[int, ...]) -> str:
 def words(max_length: int) -> list[str]:
     """One word per class (rotations and the mirror a<->c) of primitive periods made of
     blocks, of length at most ``max_length``: the pattern module's normal forms, sorted
-    by length, then alphabetically."""
+    by length, then alphabetically (:func:`iter_words` as a list)."""
+    return list(iter_words(max_length))
+
+
+def words_of_length(length: int) -> list[str]:
+    """The words of :func:`words` of exactly ``length`` letters, sorted (a class and its
+    mirror have one length, so a length is enumerated on its own)."""
+    return sorted({normal_form(spell(s))[0] for s in iter_lyndon_block_words(length, exact=length)})
+
+
+def iter_words(max_length: int):
+    """The words of :func:`words`, in that order, one length at a time: only the words of
+    one length are held at once (2259 at 20, about 18 000 at 24), not the whole census."""
     if max_length < 1:
         raise ValueError(f"the maximal length must be positive, not {max_length}")
-    keys = {normal_form(spell(s))[0] for s in lyndon_block_words(max_length)}
-    return sorted(keys, key=lambda w: (len(w), w))
+    for length in range(1, max_length + 1):
+        yield from words_of_length(length)
 
 
 def blocks_of(word: str) -> list[str]:

@@ -41,7 +41,6 @@ import re
 import signal
 import threading
 import time
-from concurrent.futures import FIRST_COMPLETED, wait
 from fractions import Fraction
 from functools import cmp_to_key
 from pathlib import Path
@@ -59,6 +58,7 @@ from certify.patterns.reduction_orbits import analyse
 
 from . import identify as ident
 from .census_report import dumps
+from .executors import wait_first
 from .files import read_text_or_none, write_atomic
 
 SCHEMA = "certify-atlas"
@@ -268,7 +268,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
                     what[future] = (kind, key)
                     pending.add(future)
             if pending:
-                finished, pending = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
+                finished, pending = wait_first(pending, 0.5)
                 for future in sorted(finished, key=lambda f: what[f]):
                     kind, key = what.pop(future)
                     collect(kind, key, future.result())

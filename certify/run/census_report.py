@@ -13,12 +13,12 @@ from __future__ import annotations
 import copy
 import json
 import math
-from concurrent.futures import FIRST_COMPLETED, wait
 from functools import lru_cache
 from pathlib import Path
 
 from certify.patterns import census, compact, island_theorem
 
+from .executors import wait_first
 from .files import REPORTS, read_first_member, read_text_or_none, write_atomic
 
 WINDOW = 64                  # jobs in flight at once (an interruption loses at most these)
@@ -66,18 +66,18 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
     census) is reused as it is and completed by ``complete(record)``, which computes
     only that part; the completed record is appended to the state (the last line of a
     word wins)."""
-    wanted = census.words(max_length)
+    n = sum(1 for _ in census.iter_words(max_length))     # the words stream: never all in memory at once
     done = {}
     if state is not None:
         state = Path(state)
         if resume:
-            done = {w: rec for w, rec in load_state(state).items() if w in set(wanted)}
+            done = {w: rec for w, rec in load_state(state).items() if rec["length"] <= max_length}
         else:
             write_atomic(state, "")
     partial = {w: done.pop(w) for w in list(done) if census.REDUCTION not in done[w]}
     done = {w: _timeless(rec) for w, rec in done.items()}
-    todo = [w for w in wanted if w not in done]       # shortest first: a cut census is complete up to a length
-    n = len(wanted)
+    # shortest first (a cut census is complete up to a length), streamed: submitted as the window frees
+    todo = (w for w in census.iter_words(max_length) if w not in done)
     if progress:
         progress(len(done), n, "")
     sink = state.open("a", encoding="utf-8") if state is not None else None
@@ -92,7 +92,7 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
             progress(len(done), n, word)
 
     try:
-        pending, words_of, queue = set(), {}, iter(todo)
+        pending, words_of, queue = set(), {}, todo
         while True:
             while len(pending) < window:
                 word = next(queue, None)
@@ -109,13 +109,13 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
                     break
                 continue
             # a timeout, so that Ctrl-C and SIGTERM are handled while the jobs run
-            finished, pending = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
+            finished, pending = wait_first(pending, 0.5)
             for future in sorted(finished, key=lambda f: words_of[f]):
                 collect(future, words_of.pop(future))
     finally:
         if sink is not None:
             sink.close()
-    return census.order(done[w] for w in wanted)
+    return [done[w] for w in census.iter_words(max_length)]          # census order
 
 
 def completed(records: dict[str, dict]) -> int:

@@ -15,11 +15,9 @@ import importlib
 import inspect
 import multiprocessing
 import pkgutil
-import signal
 import time
 import traceback
 from collections.abc import Callable
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 
@@ -28,6 +26,7 @@ from certify.errors import StatementError, UsageError
 from certify.witnesses import in_order, quiet, recording, witnesses_of
 from certify_kernel.statements import read as read_statements
 
+from . import executors
 from .executors import default_jobs  # noqa: F401  (runner.default_jobs, used by the CLI and benchmarks)
 from .files import CHECKOUT
 
@@ -466,12 +465,12 @@ GC_THRESHOLD = (50_000, 20, 20)    # the collector's thresholds during a run (Py
 
 
 def _worker_start(queue) -> None:
-    """In a worker: Ctrl-C is the parent's to handle (it terminates the workers).  The
+    """In a worker (after :func:`certify.run.executors.process_pool`'s own start: Ctrl-C
+    is the parent's to handle, it terminates the workers).  The
     objects inherited from the parent (modules, SymPy's tables) are frozen out of the cyclic
     collector, and it runs less often (:data:`GC_THRESHOLD`): the exact runs build millions of
     small objects, and full collections scanned them all again and again (about 7% of a run)."""
     global _DONE
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
     gc.freeze()
     gc.set_threshold(*GC_THRESHOLD)
     _DONE = queue
@@ -496,41 +495,35 @@ class WorkerDied(RuntimeError):
 def _parallel(plan: list[list[Certificate]], jobs: int, progress) -> tuple[list, dict]:
     """Run the units of ``plan`` on ``jobs`` forked processes, heaviest first.  A worker
     that dies raises :class:`WorkerDied` (never a silent hang); on Ctrl-C the workers
-    are terminated."""
+    are stopped (:func:`certify.run.executors.process_pool`)."""
     global _PLAN
     context = multiprocessing.get_context("fork")
     queue = context.SimpleQueue()
     by_id = {c.id: c for unit in plan for c in unit}
     _PLAN = plan
     finished, seconds, count = [], {}, 0
-    pool = ProcessPoolExecutor(min(jobs, len(plan)), mp_context=context, initializer=_worker_start,
-                               initargs=(queue,))
     try:
-        pending = {pool.submit(_worker_run, k) for k in range(len(plan))}
-        while True:
-            while not queue.empty():     # a worker's put is written before its unit's result
-                count, cid = count + 1, queue.get()
-                if progress:
-                    progress(count, len(by_id), cid)
-            if not pending:
-                break
-            done, pending = wait(pending, timeout=0.05, return_when=FIRST_COMPLETED)
-            for job in done:
-                try:
-                    result = job.result()
-                except BrokenProcessPool:
-                    raise WorkerDied("a worker process died before it returned its certificates "
-                                     "(run again with --jobs 1 to see which)") from None
-                if result is None:
-                    raise KeyboardInterrupt
-                finished += [(by_id[i], o, t, s) for i, o, t, s in result[0]]
-                seconds.update(result[1])
-    except BaseException:
-        for child in multiprocessing.active_children():   # the workers: stop them now
-            child.terminate()
-        raise
+        with executors.process_pool(min(jobs, len(plan)), _worker_start, (queue,), context) as pool:
+            pending = {pool.submit(_worker_run, k) for k in range(len(plan))}
+            while True:
+                while not queue.empty():     # a worker's put is written before its unit's result
+                    count, cid = count + 1, queue.get()
+                    if progress:
+                        progress(count, len(by_id), cid)
+                if not pending:
+                    break
+                done, pending = executors.wait_first(pending, 0.05)
+                for job in done:
+                    try:
+                        result = job.result()
+                    except BrokenProcessPool:
+                        raise WorkerDied("a worker process died before it returned its certificates "
+                                         "(run again with --jobs 1 to see which)") from None
+                    if result is None:
+                        raise KeyboardInterrupt
+                    finished += [(by_id[i], o, t, s) for i, o, t, s in result[0]]
+                    seconds.update(result[1])
     finally:
-        pool.shutdown(wait=True, cancel_futures=True)
         _PLAN = []
     return finished, seconds
 

@@ -28,7 +28,23 @@ def test_a_census_that_cannot_finish_is_refused_with_the_limit_and_the_reason(le
 def test_the_census_limit_is_in_the_help_and_the_docs(capsys):
     assert cli.main(["census", "--help"]) == 0
     out = " ".join(capsys.readouterr().out.split())
-    assert f"(at most {exact.MAX_CENSUS_LENGTH})" in out and "Every periodic collision word" in out
+    assert f"(at most {exact.MAX_CENSUS_LENGTH}; with --scheduler at most {exact.MAX_CLUSTER_LENGTH})" in out
+    assert "Every periodic collision word" in out
+
+
+def test_beyond_20_only_on_a_cluster_and_never_beyond_32(tmp_path, capsys, monkeypatch):
+    """With --scheduler the local cap does not apply: the census to 21 gets as far as the
+    scheduler (unreachable here); 33 is refused even then."""
+    from certify.run import executors
+    monkeypatch.setattr(executors, "CONNECT_TIMEOUT", 1)
+    code, out, err = run(capsys, "census", "--max-length", "21", "--out", str(tmp_path), "--scheduler",
+                         "tcp://127.0.0.1:9")
+    assert code == 2 and "9423 words" in err and "cannot reach the scheduler" in err
+    code, out, err = run(capsys, "census", "--max-length", "21", "--out", str(tmp_path))
+    assert code == 2 and "--scheduler" in err and "docs/census.md" in err
+    code, out, err = run(capsys, "census", "--max-length", "33", "--out", str(tmp_path), "--scheduler",
+                         "tcp://127.0.0.1:9")
+    assert code == 2 and f"at most {exact.MAX_CLUSTER_LENGTH}, even on a cluster" in err and err.count("\n") == 1
 
 
 def test_a_census_without_windows_says_it_drew_no_figure(tmp_path, capsys):

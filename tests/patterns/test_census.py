@@ -124,6 +124,43 @@ def test_a_dask_cluster_gives_the_same_bytes(reference):
     assert as_json(on_client) == as_json(reference)
 
 
+def census_json_of(tmp_path, name, L, *options):
+    """The bytes of census.json written by `certify census --max-length L OPTIONS`."""
+    out = tmp_path / name
+    assert cli.main(["census", "--max-length", str(L), "--out", str(out), *options]) == 0
+    return (out / "census.json").read_bytes()
+
+
+@pytest.mark.parametrize("L", [6, pytest.param(10, marks=pytest.mark.slow)])
+def test_a_cluster_of_worker_processes_writes_the_same_census_json(tmp_path, capsys, L):
+    """`certify census --scheduler` on a Dask LocalCluster of single-thread worker
+    processes (as `dask worker --nthreads 1` runs them) writes census.json byte for byte as
+    the local run does."""
+    distributed = pytest.importorskip("distributed")
+    local = census_json_of(tmp_path, "local", L, "--jobs", "1")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                                  silence_logs=40) as cluster:
+        on_cluster = census_json_of(tmp_path, "cluster", L, "--scheduler", cluster.scheduler_address)
+    assert json.loads(local)["census"]["words"] == len(census.words(L))
+    assert on_cluster == local
+
+
+def test_a_cluster_of_workers_with_several_threads_is_refused(tmp_path, capsys):
+    """python-flint's precision is global to a process: two threads of one worker could
+    leave each other's balls at another precision (not the same bytes)."""
+    distributed = pytest.importorskip("distributed")
+    from certify.errors import UsageError
+    with distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=2, dashboard_address=None,
+                                  silence_logs=40) as cluster:
+        with pytest.raises(UsageError, match="--nthreads 1"):
+            with executor(scheduler=cluster.scheduler_address, one_thread=True):
+                pass                                                          # pragma: no cover
+        argv = ["census", "--max-length", "3", "--out", str(tmp_path), "--scheduler", cluster.scheduler_address]
+        assert cli.main(argv) == 2 and "--nthreads 1" in capsys.readouterr().err
+        with executor(scheduler=cluster.scheduler_address):                   # other jobs may share a worker
+            pass
+
+
 def test_local_processes_give_the_same_bytes(reference):
     with executor(2) as ex:
         assert as_json(run_census.run_census(L_SMALL, ex)) == as_json(reference)
