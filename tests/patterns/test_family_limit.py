@@ -1,0 +1,93 @@
+"""The windows of (ab)^n(cb)^n beyond N₀ (certify.patterns.family_limit): the proved
+closed form of the upper end r_n (nθ = π, where q₂(0) = 0) against an independent mpmath
+computation of the stable set straight from the matrices (tests/patterns/mp_family.py),
+the exact identity behind it on the engine's candidate, and mutants of the proof's facts."""
+from fractions import Fraction
+
+import flint
+import mpmath as mp
+import pytest
+
+from certify.algebra.balls import ends, precision
+from certify.patterns import family_limit as F
+from tests.patterns import mp_family as ref
+
+
+def _mp(ball) -> mp.mpf:
+    lo, hi = ends(ball)
+    return (mp.mpf(int(lo.p)) / int(lo.q) + mp.mpf(int(hi.p)) / int(hi.q)) / 2
+
+
+def test_block_identities_hold_and_name_the_structure():
+    assert len(F.block_facts()) == 7
+
+
+@pytest.mark.parametrize("n", [2, 3, 4])
+def test_u_identity_holds_exactly_on_the_engine_candidate(n):
+    assert F.check_u_identity(n)
+
+
+def test_u_identity_fails_with_the_wrong_power(monkeypatch):
+    real = F.power
+    monkeypatch.setattr(F, "power", lambda K, n: real(K, n + 1))
+    assert not F.check_u_identity(3)
+
+
+def test_upper_end_is_the_known_end_for_n_2_3():
+    # 3 - 2√2 and 5 - 2√6: L5's and L6's certified upper ends
+    assert F.upper_end(2).overlaps(3 - 2 * flint.arb(2).sqrt())
+    assert F.upper_end(3).overlaps(5 - 2 * flint.arb(6).sqrt())
+    assert not F.upper_end(4).overlaps(F.upper_end(5))
+
+
+@pytest.mark.parametrize("n", [35, 50, 80])
+def test_upper_end_and_window_against_mpmath(n):
+    """hi_n from bisection of the stable set (mpmath, 4n + 60 digits) is r_n; above it u < 0
+    is what fails; lo_n lies in ]r_{n+1}, r_n[ (disjoint windows, observed)."""
+    with mp.workdps(4 * n + 60):
+        lo, hi = ref.window(n, steps=70)
+        rn, rn1 = _mp(F.upper_end(n, 400)), _mp(F.upper_end(n + 1, 400))
+        width = rn - lo
+        assert abs(hi - rn) < width * mp.mpf(2) ** -50
+        assert ref.analyse(n, rn + width / 10 ** 6) == (False, "u")
+        assert ref.analyse(n, rn - width / 10 ** 6)[0]
+        assert rn1 < lo < rn
+        assert "x" in ref.analyse(n, lo - width / 10 ** 6)[1]          # the lower end: x₊ crosses 0
+        s_lo = n ** 2 * (lo - (7 - 4 * mp.sqrt(3)))
+        assert 0.08 < (_mp(F.s_star()) - s_lo) * n < 0.13             # s_lo ≈ s* - 0.117/n (observed)
+
+
+def test_s_hi_formula_against_the_direct_difference():
+    n = 40
+    with precision(300):
+        direct = n ** 2 * (F.upper_end(n, 300) - (7 - 4 * flint.arb(3).sqrt()))
+        assert F.s_hi(flint.arb(flint.fmpq(1, n))).overlaps(direct)
+        assert (F.s_hi(flint.arb(0)) - F.s_star()).abs_upper() < flint.arb(2) ** -250
+
+
+def test_proof_facts_check():
+    assert F.check(F.prove(N0=30, boxes=16)) == []
+
+
+def test_mutant_smaller_constant_fails():
+    facts = F.prove(N0=30, boxes=16)
+    facts["C"] = Fraction(1, 3)                       # below κ ≈ 0.418: |s_hi - s*| ≤ ε²/3 is false
+    assert any("C ε²" in b for b in F.check(facts))
+
+
+def test_mutant_widened_box_fails():
+    facts = F.prove(N0=30, boxes=16)
+    facts["boxes"][-1]["eps"][1] = Fraction(1, 10)    # the last box widened to ε = 1/10
+    assert any("not in" in b for b in F.check(facts))
+
+
+def test_mutant_shifted_s_star_fails():
+    facts = F.prove(N0=30, boxes=16)
+    facts["s_star"] = [facts["s_star"][0] + Fraction(1, 10 ** 12), facts["s_star"][1] + Fraction(1, 10 ** 12)]
+    assert any("s_star" in b for b in F.check(facts))
+
+
+def test_mutant_gap_in_the_cover_fails():
+    facts = F.prove(N0=30, boxes=16)
+    del facts["boxes"][3]
+    assert "the boxes do not cover [0, 1/N0]" in F.check(facts)
