@@ -134,6 +134,49 @@ def upper_end(n: int, prec: int = 128) -> flint.arb:
         return 1 / (a + (a * a - 1).sqrt())
 
 
+# ------------------------------------------------------------------ 4. the lower end
+def period_parts(n: int) -> tuple:
+    """(P, W): P = K^n and Wᵀ = wᵀ(I + K + … + K^{n-1}) (exact polynomials in r), the two
+    pieces of the period matrix: M_ab^n = [[P, 0], [Wᵀ, 1]] on (q₁, q₂ | q₃)."""
+    K, w = block()
+    P = power(K, n)
+    S = [[flint.fmpq_poly([0])] * 2 for _ in range(2)]
+    Kj = power(K, 0)
+    for _ in range(n):
+        S = [[S[i][j] + Kj[i][j] for j in range(2)] for i in range(2)]
+        Kj = _mul(Kj, K)
+    return P, [w[0] * S[0][j] + w[1] * S[1][j] for j in range(2)]
+
+
+def period_matrix(n: int) -> list:
+    """M = M_cb^n M_ab^n from (P, W), with a, b, c, d = P₁₁, P₁₂, P₂₁, P₂₂:
+    row 1 = (a + W₂c + W₁², b + W₂d + W₁W₂, W₁), row 2 = (c(d + W₁), d² + cW₂, c),
+    row 3 = (bc + aW₁, bd + aW₂, a)."""
+    ((a, b), (c, d)), (W1, W2) = period_parts(n)
+    return [[a + W2 * c + W1 * W1, b + W2 * d + W1 * W2, W1],
+            [c * (d + W1), d * d + c * W2, c],
+            [b * c + a * W1, b * d + a * W2, a]]
+
+
+def lower_polynomial(n: int):
+    """F_n = W₁(a - W₁d + W₂c) + (bc + W₂cd - W₁d²) (a, b, c, d = K^n, W as in
+    :func:`period_parts`): D = det[e₁, M e₁, M² e₁] = c (ad - bc) F_n, and D = 0 wherever
+    p(0) = (1, 0, 0) lies in an invariant plane of M, in particular where x₊ = 0."""
+    ((a, b), (c, d)), (W1, W2) = period_parts(n)
+    return W1 * (a - W1 * d + W2 * c) + (b * c + W2 * c * d - W1 * d * d)
+
+
+def check_lower_identity(n: int) -> bool:
+    """Exact: :func:`period_matrix` is the engine's word_matrix((ab)^n(cb)^n), and
+    M₂₁(M²)₃₁ - M₃₁(M²)₂₁ = P₂₁ det(P) F_n (polynomials in r)."""
+    M = period_matrix(n)
+    if M != word_matrix_flint("ab" * n + "cb" * n):
+        return False
+    M2 = [[sum((M[i][k] * M[k][j] for k in range(3)), flint.fmpq_poly([0])) for j in range(3)] for i in range(3)]
+    (a, b), (c, d) = period_parts(n)[0]
+    return M[1][0] * M2[2][0] - M[2][0] * M2[1][0] == c * (a * d - b * c) * lower_polynomial(n)
+
+
 # ------------------------------------------------------------------ 3. the expansion
 def _r_of(eps: flint.arb) -> flint.arb:
     a = 3 + 4 * eps.cos_pi()
@@ -158,6 +201,162 @@ def kappa() -> flint.arb:
     """κ in s_hi(ε) = s* + κε² + O(ε⁴): κ = s*π²(3 + 4√3)/48 (from r/(r** - r) =
     r*/(8√3) + r**(r - r*)/192 + … and sinc_π(ε/2)² = 1 - π²ε²/12 + …)."""
     return s_star() * flint.arb.pi() ** 2 * (3 + 4 * flint.arb(3).sqrt()) / 48
+
+
+def r_of_theta(theta: flint.arb) -> flint.arb:
+    """The r in ]r*, 1[ with cos θ = t/(2r): r² - (6 + 8cos θ)r + 1 = 0, r = 1/(a + √(a² - 1))."""
+    a = 3 + 4 * theta.cos()
+    return 1 / (a + (a * a - 1).sqrt())
+
+
+def _k_w_n(r: flint.arb) -> tuple:
+    """K, w and N = (I - K)^{-1} at r (balls)."""
+    h = (1 + r) / 2
+    K = [[h * h - r, h], [-r * h, -r]]
+    det = (1 - K[0][0]) * (1 - K[1][1]) - K[0][1] * K[1][0]
+    N = [[(1 - K[1][1]) / det, K[0][1] / det], [K[1][0] / det, (1 - K[0][0]) / det]]
+    return K, [h * h, h], N
+
+
+def smallness(N1: int) -> tuple[flint.arb, flint.arb]:
+    """(δ₁, δ₂) = (N₁ r̄^{N₁-1}, N₁² r̄^{N₁-1}), r̄ = r_{N₁}: bounds of n r^{n-1} and n² r^{n-1}
+    for every n ≥ N₁ and r ≤ r_n (both decrease in n and in r there, as (n+1)²r/n² < 1)."""
+    rbar = upper_end(N1).upper()
+    return N1 * rbar ** (N1 - 1), N1 ** 2 * rbar ** (N1 - 1)
+
+
+def f_hat(eta: flint.arb, eps: flint.arb, N1: int) -> flint.arb:
+    """F_n sin θ/(ε r^{n-1}) (the sign of F_n) at r = r(θ), θ = εφ, φ = nθ = π - εη, for every
+    n ≥ N₁ with 1/n in ``eps`` (a ball that may contain 0): with s_j = r^{j-1} sin jθ/sin θ,
+    K^n = s_n K - r² s_{n-1} I gives a - W₁d + W₂c = (r^{n-1}/sin θ)(A sin φ - rB sin(φ - θ)),
+    A = K₁₁ - W₁K₂₂ + W₂K₂₁, B = 1 - W₁, and sin φ = sin εη, sin(φ - θ) = sin ε(η + φ): so
+    F̂ = W₁[Aη sinc(εη) - rB(η + φ) sinc(ε(η + φ))] + R.  W = wᵀN - wᵀK^nN, the second term
+    in a ball of radius δ₁(w₁ + w₂) max_i Σ_k|N_ki| (|(K^n)_ij| ≤ n r^{n-1}(|K_ij| + r) ≤ n r^{n-1});
+    |R| = |bc + W₂cd - W₁d²| sin θ/(ε r^{n-1}) ≤ (1 + |W₁| + |W₂|) π δ₂."""
+    d1, d2 = smallness(N1)
+    phi = flint.arb.pi() - eps * eta
+    r = r_of_theta(eps * phi)
+    K, w, N = _k_w_n(r)
+    if not max(abs(k) for row in K for k in row) + r < 1:
+        raise ArithmeticError("|K_ij| + r < 1 not proven: the bound |(K^n)_ij| ≤ n r^(n-1) needs it")
+    spread = d1 * (w[0] + w[1]) * max((N[0][i].abs_upper() + N[1][i].abs_upper()) for i in range(2))
+    W = [w[0] * N[0][i] + w[1] * N[1][i] + flint.arb(0, spread.upper()) for i in range(2)]
+    A = K[0][0] - W[0] * K[1][1] + W[1] * K[1][0]
+    B = 1 - W[0]
+    G = A * eta * (eps * eta).sinc() - r * B * (eta + phi) * (eps * (eta + phi)).sinc()
+    R = (1 + W[0].abs_upper() + W[1].abs_upper()) * flint.arb.pi() * d2
+    return W[0] * G + flint.arb(0, R.upper())
+
+
+def s_of(eta: flint.arb, eps: flint.arb) -> flint.arb:
+    """s = n²(r - r*) at φ = π - εη, θ = εφ: (r - r*)(r** - r) = 16 r sin²(θ/2), so
+    s = 4 r φ² sinc(θ/2)²/(r** - r)."""
+    phi = flint.arb.pi() - eps * eta
+    theta = eps * phi
+    r = r_of_theta(theta)
+    return 4 * r * phi ** 2 * (theta / 2).sinc() ** 2 / (7 + 4 * flint.arb(3).sqrt() - r)
+
+
+def _ball(e0, e1) -> flint.arb:
+    e0, e1 = flint.fmpq(e0.numerator, e0.denominator), flint.fmpq(e1.numerator, e1.denominator)
+    return flint.arb((e0 + e1) / 2, (e1 - e0) / 2)
+
+
+def lower_strip(e0: Fraction, e1: Fraction, N1: int, pieces: int = 256) -> dict:
+    """For ε ∈ [e0, e1] and η ∈ [0, π], cut into ``pieces`` equal η-boxes (η ≤ 4 > π): the sign
+    of F̂ on each; the proof needs F̂ < 0 on the first boxes, F̂ > 0 on the last ones, and
+    the undecided ones contiguous (the strip [η₋, η₊] holding every zero of F_n between
+    r_{n+1} and r_n).  Returns η₋, η₊ (rational) or raises ArithmeticError."""
+    eps = _ball(e0, e1)
+    cut = [Fraction(4 * k, pieces) for k in range(pieces + 1)]
+    signs = []
+    for a, b in zip(cut, cut[1:]):
+        v = f_hat(_ball(a, b), eps, N1)
+        signs.append(-1 if v < 0 else 1 if v > 0 else 0)
+    first = next(i for i, sg in enumerate(signs) if sg != -1)
+    last = max(i for i, sg in enumerate(signs) if sg != 1)
+    if any(sg == -1 for sg in signs[first:]) or any(sg == 1 for sg in signs[:last + 1]):
+        raise ArithmeticError(f"F̂ changes sign more than once on ε ∈ [{e0}, {e1}]")
+    return {"eps": [e0, e1], "pieces": pieces, "eta": [cut[first], cut[last + 1]]}
+
+
+def check_lower(facts: dict, prec: int = 200) -> list[str]:
+    """Re-verify :func:`prove_lower`'s facts at another precision: the ε-boxes cover
+    [0, 1/(N₀ + 1)]; on each, F̂ < 0 on every η-piece inside [0, η₋] and F̂ > 0 on every piece
+    inside [η₊, 4]; s at the strip's ends within the stated s_lo interval; η₊ + margin ≤
+    π/(1 + ε₁) with margin > 0.  The list of failures (empty: the facts hold)."""
+    bad = []
+    N1 = facts["N0"] + 1
+    rows = facts["boxes"]
+    if rows[0]["eps"][0] != 0 or rows[-1]["eps"][1] < Fraction(1, N1) or any(
+            a["eps"][1] != b["eps"][0] for a, b in zip(rows, rows[1:])):
+        bad.append("the ε-boxes do not cover [0, 1/(N0 + 1)]")
+    with precision(prec):
+        for row in rows:
+            e0, e1 = row["eps"]
+            eps = _ball(e0, e1)
+            lo_eta, hi_eta = row["eta"]
+            cut = [Fraction(4 * k, row["pieces"]) for k in range(row["pieces"] + 1)]
+            for a, b in zip(cut, cut[1:]):
+                if b <= lo_eta and not f_hat(_ball(a, b), eps, N1) < 0:
+                    bad.append(f"F̂ < 0 not proven on η ∈ [{a}, {b}], ε ∈ [{e0}, {e1}]")
+                if a >= hi_eta and not f_hat(_ball(a, b), eps, N1) > 0:
+                    bad.append(f"F̂ > 0 not proven on η ∈ [{a}, {b}], ε ∈ [{e0}, {e1}]")
+            if lo_eta not in cut or hi_eta not in cut:
+                bad.append(f"the strip's ends are not piece ends on ε ∈ [{e0}, {e1}]")
+            s_hi_end = ends(s_of(_ball(lo_eta, lo_eta), eps))[1]
+            s_lo_end = ends(s_of(_ball(hi_eta, hi_eta), eps))[0]
+            if not (row["s_lo"][0] <= _q(s_lo_end) and _q(s_hi_end) <= row["s_lo"][1]):
+                bad.append(f"s at the strip's ends not in {row['s_lo']} on ε ∈ [{e0}, {e1}]")
+            room = flint.arb.pi() / (1 + flint.arb(flint.fmpq(e1.numerator, e1.denominator)))
+            m = row["margin"]
+            if not (m > 0 and room - flint.arb(flint.fmpq((hi_eta + m).numerator, (hi_eta + m).denominator)) >= 0):
+                bad.append(f"η₊ + margin > π/(1 + ε) on ε ∈ [{e0}, {e1}]")
+    return bad
+
+
+def limit_constants() -> dict:
+    """The ε → 0 limit, exact in Q(√3) (SymPy, for a reader): at r*, h² = 4r*, wᵀ(I - K)⁻¹ =
+    (1/3, 2/3), A = (20√3 - 34)/3, B = 2/3, and F̂(η, 0) = W₁(Aη - r*B(η + π)) vanishes at
+    η₀ = πρ, ρ = r*B/(A - r*B) = √3/6; s = s*(1 - εη/π)² + O(ε²) gives s_lo = s* - αε + O(ε²),
+    α = 2s*ρ = s*/√3 = π²r*/6, and s_hi = s* + O(ε²): the window's width is αε/n² in r."""
+    import sympy as sp
+    rs = 7 - 4 * sp.sqrt(3)
+    h = (1 + rs) / 2
+    K = sp.Matrix([[h ** 2 - rs, h], [-rs * h, -rs]])
+    W = sp.Matrix([[h ** 2, h]]) * (sp.eye(2) - K).inv()
+    W1, W2 = (sp.radsimp(sp.simplify(e)) for e in W)
+    A = sp.radsimp(sp.simplify(K[0, 0] - W1 * K[1, 1] + W2 * K[1, 0]))
+    B = 1 - W1
+    rho = sp.radsimp(sp.simplify(rs * B / (A - rs * B)))
+    s_star_exact = sp.pi ** 2 * (7 * sp.sqrt(3) - 12) / 6
+    alpha = sp.radsimp(sp.simplify(2 * s_star_exact * rho))
+    return {"W": (W1, W2), "A": A, "B": B, "rho": rho, "eta0": sp.pi * rho, "s_star": s_star_exact,
+            "alpha": alpha}
+
+
+def prove_lower(N0: int = 30, boxes: int = 32, pieces: int = 256, prec: int = 128) -> dict:
+    """The lower end for every n > N₀, as rational facts: per ε-box of [0, 1/(N₀ + 1)], the strip
+    [η₋, η₊] (F_n < 0 for η < η₋, F_n > 0 for η₊ < η ≤ 4, F̂ as in :func:`f_hat`), the
+    enclosure of s at the strip's ends, and the disjointness η₊ < π/(1 + ε₁): the strip lies
+    strictly between r_{n+1} (η = π/(1 + ε)) and r_n (η = 0)."""
+    N1 = N0 + 1
+    with precision(prec):
+        cut = [Fraction(k, boxes * N1) for k in range(boxes + 1)]
+        rows = []
+        for e0, e1 in zip(cut, cut[1:]):
+            row = lower_strip(e0, e1, N1, pieces)
+            eps = _ball(e0, e1)
+            lo = ends(s_of(_ball(row["eta"][1], row["eta"][1]), eps))[0]
+            hi = ends(s_of(_ball(row["eta"][0], row["eta"][0]), eps))[1]
+            row["s_lo"] = [_q(lo), _q(hi)]
+            room = flint.arb.pi() / (1 + flint.arb(flint.fmpq(e1.numerator, e1.denominator)))
+            top = row["eta"][1]
+            row["margin"] = _q(ends(room - flint.arb(flint.fmpq(top.numerator, top.denominator)))[0])
+            if not row["margin"] > 0:
+                raise ArithmeticError(f"the strip reaches r_(n+1) on ε ∈ [{e0}, {e1}]")
+            rows.append(row)
+    return {"N0": N0, "boxes": rows}
 
 
 def _q(x) -> Fraction:
@@ -186,7 +385,7 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
         C = Fraction(int(C * 1000) + 1, 1000)
     return {"N0": N0, "block": block_facts(), "s_star": [_q(star_lo), _q(star_hi)],
             "kappa": [_q(ends(kap)[0]), _q(ends(kap)[1])], "C": C, "boxes": rows,
-            "monotone": "r_{n+1} < r_n for every n ≥ 2"}
+            "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec)}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -216,4 +415,6 @@ def check(facts: dict, prec: int = 200) -> list[str]:
                 bad.append(f"s_hi on ε ∈ [{e0}, {e1}] not in [{S0}, {S1}]")
             if S1 > star_hi + facts["C"] * e1 ** 2 or S0 < star_lo - facts["C"] * e1 ** 2:
                 bad.append(f"|s_hi - s*| > C ε² on ε ∈ [{e0}, {e1}]")
+    if "lower" in facts:
+        bad += check_lower(facts["lower"])
     return bad

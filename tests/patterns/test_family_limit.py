@@ -2,6 +2,7 @@
 closed form of the upper end r_n (nθ = π, where q₂(0) = 0) against an independent mpmath
 computation of the stable set straight from the matrices (tests/patterns/mp_family.py),
 the exact identity behind it on the engine's candidate, and mutants of the proof's facts."""
+import functools
 from fractions import Fraction
 
 import flint
@@ -11,6 +12,13 @@ import pytest
 from certify.algebra.balls import ends, precision
 from certify.patterns import family_limit as F
 from tests.patterns import mp_family as ref
+
+
+@functools.cache
+def _window(n):
+    """lo_n, hi_n of the mpmath reference at 4n + 60 digits (computed once per n)."""
+    with mp.workdps(4 * n + 60):
+        return ref.window(n, steps=70)
 
 
 def _mp(ball) -> mp.mpf:
@@ -44,8 +52,8 @@ def test_upper_end_is_the_known_end_for_n_2_3():
 def test_upper_end_and_window_against_mpmath(n):
     """hi_n from bisection of the stable set (mpmath, 4n + 60 digits) is r_n; above it u < 0
     is what fails; lo_n lies in ]r_{n+1}, r_n[ (disjoint windows, observed)."""
+    lo, hi = _window(n)
     with mp.workdps(4 * n + 60):
-        lo, hi = ref.window(n, steps=70)
         rn, rn1 = _mp(F.upper_end(n, 400)), _mp(F.upper_end(n + 1, 400))
         width = rn - lo
         assert abs(hi - rn) < width * mp.mpf(2) ** -50
@@ -91,3 +99,70 @@ def test_mutant_gap_in_the_cover_fails():
     facts = F.prove(N0=30, boxes=16)
     del facts["boxes"][3]
     assert "the boxes do not cover [0, 1/N0]" in F.check(facts)
+
+
+# ------------------------------------------------------------------ the lower end
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 5])
+def test_period_matrix_and_lower_identity_exact(n):
+    assert F.check_lower_identity(n)
+
+
+def test_lower_identity_fails_for_a_wrong_lower_polynomial(monkeypatch):
+    real = F.lower_polynomial
+    monkeypatch.setattr(F, "lower_polynomial", lambda n: real(n) + 1)
+    assert not F.check_lower_identity(3)
+
+
+def test_limit_constants_exact():
+    import sympy as sp
+    c = F.limit_constants()
+    assert c["W"] == (sp.Rational(1, 3), sp.Rational(2, 3)) and c["rho"] == sp.sqrt(3) / 6
+    with precision(100):
+        assert flint.arb(str(sp.N(c["alpha"], 30))).overlaps(F.s_star() / flint.arb(3).sqrt())
+
+
+@pytest.fixture(scope="module")
+def facts():
+    return F.prove(N0=30)
+
+
+@pytest.mark.parametrize("n", [35, 50, 80])
+def test_lower_strip_holds_the_mpmath_lower_end(n, facts):
+    """The observed lower end lo_n (bisection of the stable set, mpmath) is a zero of F_n (the
+    independent matrices' D = det[e₁, Me₁, M²e₁] vanishes there) and n²(lo_n - r*) lies in the
+    proof's enclosure for the ε-box of 1/n."""
+    row = next(b for b in facts["lower"]["boxes"] if b["eps"][0] <= Fraction(1, n) <= b["eps"][1])
+    lo, hi = _window(n)
+    with mp.workdps(4 * n + 60):
+        s_lo = n ** 2 * (lo - (7 - 4 * mp.sqrt(3)))
+        assert mp.mpf(row["s_lo"][0].numerator) / row["s_lo"][0].denominator < s_lo
+        assert s_lo < mp.mpf(row["s_lo"][1].numerator) / row["s_lo"][1].denominator
+
+        def D(r):
+            M = ref.matrix("cb", r) ** n * ref.matrix("ab", r) ** n
+            M2 = M * M
+            return M[1, 0] * M2[2, 0] - M[2, 0] * M2[1, 0]
+        h = (hi - lo) / 10 ** 8
+        assert D(lo - h) * D(lo + h) < 0                  # D changes sign at lo_n
+
+
+def test_mutant_narrowed_strip_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    row = f["lower"]["boxes"][-1]
+    row["eta"][1] = row["eta"][0]                     # the strip shrunk to its left end
+    assert any("F̂ > 0 not proven" in b for b in F.check(f))
+
+
+def test_mutant_lower_box_widened_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    f["lower"]["boxes"][-1]["eps"][1] = Fraction(1, 5)   # ε up to 1/5: n ≥ 5 is not proved
+    assert F.check(f)
+
+
+def test_mutant_margin_too_large_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    f["lower"]["boxes"][0]["margin"] = Fraction(3)       # more room than π/(1 + ε) - η₊ ≈ 2.2
+    assert any("margin" in b for b in F.check(f))
