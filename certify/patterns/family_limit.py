@@ -1,7 +1,8 @@
 """The windows of (ab)^n(cb)^n for large n: what is proved for every n, exactly.
 
 Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for every n.
-This module proves, for *every* n ≥ 2 (not only n ≤ N₀), the part that has a closed form:
+This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
+parts 5-6 for n > N₀), and that the windows they bound are disjoint and decrease:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -28,11 +29,24 @@ This module proves, for *every* n ≥ 2 (not only n ≤ N₀), the part that has
    r_{n+1} < r_n for every n (a = 3 + 4cos(π/n) increases).  Ball enclosures over boxes
    covering ε ∈ [0, 1/N₀] are returned as rational inequalities (:func:`check` re-verifies).
 
-What is *not* proved here (measured, docs/family-limit.md): that the stable set is exactly
-one interval whose upper end is r_n (observed to n = 80 by an independent mpmath
-computation; certified per n ≤ N₀ by the family's exact certificates), and the lower end
-lo_n (where the fixed point x₊ crosses 0: observed s_lo(ε) ≈ s* - 0.117ε), hence the
-disjointness r_{n+1} < lo_n (observed margin ≈ 0.28/n³).
+4. **The lower end is a zero of F_n** (:func:`check_lower_identity`): at a fixed point x of the
+   position map the plane of q(0) and p(0) = (1, 0, x) is M-invariant (p ∧ q is mapped by
+   Λ²M over a period), so x₊ = 0 makes e₁, Me₁, M²e₁ dependent: D = M₂₁(M²)₃₁ - M₃₁(M²)₂₁ =
+   P₂₁ det(P) F_n = 0, F_n = W₁(a - W₁d + W₂c) + (bc + W₂cd - W₁d²) (a, b, c, d = K^n, W as in
+   :func:`period_parts`).
+
+5. **Its zeros, for every n > N₀** (:func:`f_hat`, :func:`prove_lower`): in the blow-up
+   φ = nθ = π - εη, F_n's sign is that of F̂(η, ε), a function with a limit at ε = 0, the
+   exponentially small parts in balls; balls over boxes of (η, ε) ∈ [0, 4] × [0, 1/(N₀+1)]
+   put every zero of F_n in [r_{n+1}, r_n] in a strip η ∈ [η₋, η₊] ⊂ [0.89, 0.93], far from
+   r_{n+1} (η = π/(1 + ε)): the windows ]ℓ_n, r_n[ are disjoint and decrease.
+
+6. **The limit** (:func:`limit_constants`, exact in Q(√3)): η₀ = π√3/6, s_lo = s* - αε + O(ε²)
+   with α = s*/√3 = π²r*/6 ≈ 0.1181.
+
+Not proved here (docs/family-limit.md): that the stable set is exactly ]ℓ_n, r_n[ for n > N₀
+(every condition inside, one failing outside); certified per n ≤ N₀ by the family's exact
+certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in the tests).
 """
 from __future__ import annotations
 
