@@ -234,8 +234,11 @@ def _k_w_n(r: flint.arb) -> tuple:
 
 def smallness(N1: int) -> tuple[flint.arb, flint.arb]:
     """(δ₁, δ₂) = (N₁ r̄^{N₁-1}, N₁² r̄^{N₁-1}), r̄ = r_{N₁}: bounds of n r^{n-1} and n² r^{n-1}
-    for every n ≥ N₁ and r ≤ r_n (both decrease in n and in r there, as (n+1)²r/n² < 1)."""
+    for every n ≥ N₁ and r ≤ r_n: both increase with r ≤ r_n ≤ r_{N₁} and decrease in n, as
+    (n + 1)² r/n² < 1 there."""
     rbar = upper_end(N1).upper()
+    if not (N1 + 1) ** 2 * rbar < N1 ** 2:
+        raise ArithmeticError(f"n² r^(n-1) is not proven to decrease from n = {N1}")
     return N1 * rbar ** (N1 - 1), N1 ** 2 * rbar ** (N1 - 1)
 
 

@@ -166,3 +166,21 @@ def test_mutant_margin_too_large_fails(facts):
     f = copy.deepcopy(facts)
     f["lower"]["boxes"][0]["margin"] = Fraction(3)       # more room than π/(1 + ε) - η₊ ≈ 2.2
     assert any("margin" in b for b in F.check(f))
+
+
+@pytest.mark.parametrize("n", [6, 7, 10])
+def test_the_lower_proof_closes_from_n_6(n):
+    """prove(N0=5): the strip and the disjointness hold from n = 6 on, and hold lo_n there."""
+    f = F.prove(N0=5)
+    assert F.check(f) == []
+    row = next(b for b in f["lower"]["boxes"] if b["eps"][0] <= Fraction(1, n) <= b["eps"][1])
+    lo, _ = _window(n)
+    with mp.workdps(4 * n + 60):
+        s_lo = n ** 2 * (lo - (7 - 4 * mp.sqrt(3)))
+        lo_s, hi_s = (mp.mpf(q.numerator) / q.denominator for q in row["s_lo"])
+        assert lo_s < s_lo < hi_s
+
+
+def test_the_lower_proof_does_not_close_from_n_3():
+    with pytest.raises(ArithmeticError):
+        F.prove(N0=2)
