@@ -376,6 +376,77 @@ def prove_lower(N0: int = 30, boxes: int = 32, pieces: int = 256, prec: int = 12
     return {"N0": N0, "boxes": rows}
 
 
+# ------------------------------------------------------------------ 7. the dominant branch
+R_MAX = flint.fmpq(1, 4)     # part 7 holds for r in ]0, 1/4]: the spectral radius of K is ≤ 1/4 there
+
+
+def dominant_facts(N1: int) -> dict:
+    """For every n ≥ N₁ and every r ∈ ]0, 1/4], with balls over that whole range (no boxes):
+
+    * the spectral radius of K is ≤ 1/4 (r ≥ r*: it is r; r < r*: the larger root is ≤ t ≤ 1/4),
+      so |s_j| ≤ j 4^{1-j} and |(K^n)_ij| ≤ n 4^{1-n}(|K_ij| + r) ≤ δ = N₁ 4^{1-N₁};
+    * wᵀ(I - K)⁻¹ = (1/3, 2/3) exactly (:func:`check_w_limit`), so W = (1/3, 2/3) + O(δ) and
+      M = [[1/9, 2/9, 1/3], [0, 0, 0], [0, 0, 0]] + O(δ) (:func:`period_matrix`'s formula);
+    * cp changes sign on [1/9 - ω, 1/9 + ω] (ω = 16δ rounded up): a real eigenvalue λ there; the other two
+      have |μ|, |ν| ≤ |S|/2 + √(|S|²/4 + |Π|), S = tr M - λ, Π = det M/λ = r^{4n}/λ, below λ:
+      λ is real, simple, positive and strictly dominant;
+    * its eigenvector (-1, u, v) (rows 2, 3 by Cramer) has q₃(t_{2n}) = v - W₁ + W₂u and
+      P₂₂ = d in balls with q₃(t_{2n}) - d < 0 < λ - d²: by part 2, **u has the sign of s_n**.
+
+    Returns the rational bounds; ArithmeticError when a ball does not decide."""
+    with precision(128):
+        r = flint.arb(R_MAX / 2, R_MAX / 2)                       # ]0, 1/4] (and 0)
+        h = (1 + r) / 2
+        K, w, N = _k_w_n(r)
+        if not max(abs(k) for row in K for k in row) + r < 1:
+            raise ArithmeticError("|K_ij| + r < 1 not proven on ]0, 1/4]")
+        if not (N1 + 1) * R_MAX < N1:
+            raise ArithmeticError("n 4^(1-n) is not proven to decrease")
+        delta = N1 * flint.arb(R_MAX) ** (N1 - 1)
+        small = flint.arb(0, delta.upper())
+        width = (16 * delta).upper().mid().fmpq()
+        a = b = c = d = small
+        spread = delta * (w[0] + w[1]) * max((N[0][i].abs_upper() + N[1][i].abs_upper()) for i in range(2))
+        W1 = flint.arb(flint.fmpq(1, 3)) + flint.arb(0, spread.abs_upper())
+        W2 = flint.arb(flint.fmpq(2, 3)) + flint.arb(0, spread.abs_upper())
+        M = [[a + W2 * c + W1 * W1, b + W2 * d + W1 * W2, W1],
+             [c * (d + W1), d * d + c * W2, c],
+             [b * c + a * W1, b * d + a * W2, a]]
+        det = flint.arb(0, (R_MAX ** (4 * N1)))                    # det M = r^{4n} ∈ [0, 4^{-4N₁}]
+        tr = M[0][0] + M[1][1] + M[2][2]
+        e2 = sum((M[i][i] * M[j][j] - M[i][j] * M[j][i] for i, j in ((0, 1), (0, 2), (1, 2))), flint.arb(0))
+
+        def cp(t):
+            return t ** 3 - tr * t ** 2 + e2 * t - det
+        lo, hi = flint.arb(flint.fmpq(1, 9) - width), flint.arb(flint.fmpq(1, 9) + width)
+        if not (cp(lo) < 0 and cp(hi) > 0):
+            raise ArithmeticError("cp does not change sign around 1/9")
+        lam = flint.arb((flint.fmpq(1, 9)), width)
+        S, Pi = (tr - lam).abs_upper(), (det / lam).abs_upper()
+        others = S / 2 + (S * S / 4 + Pi).sqrt()
+        if not others < lam:
+            raise ArithmeticError("strict dominance not proven")
+        D = (lam - M[1][1]) * (lam - M[2][2]) - M[1][2] * M[2][1]
+        u = (-M[1][0] * (lam - M[2][2]) - M[1][2] * M[2][0]) / D
+        v = (-M[2][0] * (lam - M[1][1]) - M[2][1] * M[1][0]) / D
+        q3 = v - W1 + W2 * u
+        if not (q3 - d < 0 and lam - d * d > 0 and h > 0):
+            raise ArithmeticError("the hypotheses of part 2 are not proven")
+        return {"N1": N1, "r": [Fraction(0), _q(R_MAX)], "delta": _q(ends(delta)[1]),
+                "lambda": [_q(ends(lo)[0]), _q(ends(hi)[1])], "others": _q(ends(others)[1]),
+                "u": _q(max(abs(e) for e in ends(u))),
+                "q3_minus_d": _q(ends(q3 - d)[1])}
+
+
+def check_w_limit() -> bool:
+    """wᵀ(I - K)⁻¹ = (1/3, 2/3) for every r (exact: (1/3, 2/3)(I - K) = wᵀ as polynomials in r)."""
+    K, w = block()
+    third = flint.fmpq(1, 3)
+    one = flint.fmpq_poly([1])
+    IK = [[one - K[0][0], -K[0][1]], [-K[1][0], one - K[1][1]]]
+    return [third * IK[0][j] + 2 * third * IK[1][j] for j in range(2)] == w
+
+
 def _q(x) -> Fraction:
     x = flint.fmpq(x)
     return Fraction(int(x.p), int(x.q))
@@ -402,7 +473,8 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
         C = Fraction(int(C * 1000) + 1, 1000)
     return {"N0": N0, "block": block_facts(), "s_star": [_q(star_lo), _q(star_hi)],
             "kappa": [_q(ends(kap)[0]), _q(ends(kap)[1])], "C": C, "boxes": rows,
-            "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec)}
+            "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec),
+            "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit()}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -434,4 +506,26 @@ def check(facts: dict, prec: int = 200) -> list[str]:
                 bad.append(f"|s_hi - s*| > C ε² on ε ∈ [{e0}, {e1}]")
     if "lower" in facts:
         bad += check_lower(facts["lower"])
+    if "dominant" in facts:
+        bad += check_dominant(facts["dominant"])
+    return bad
+
+
+def check_dominant(facts: dict) -> list[str]:
+    """Re-derive :func:`dominant_facts` for N₁ and compare: the stated λ-interval must hold the
+    proved one, the bounds on |μ|, |ν|, |u| and q₃(t_{2n}) - d must be implied by the proved ones,
+    q₃(t_{2n}) - d < 0 and |μ|, |ν| < λ's lower end.  The list of failures."""
+    try:
+        new = dominant_facts(facts["N1"])
+    except ArithmeticError as e:
+        return [f"part 7 does not hold for N1 = {facts['N1']}: {e}"]
+    bad = []
+    if not (facts["lambda"][0] <= new["lambda"][0] and new["lambda"][1] <= facts["lambda"][1]):
+        bad.append(f"λ not in {facts['lambda']}")
+    if not (new["others"] <= facts["others"] < facts["lambda"][0]):
+        bad.append(f"|μ|, |ν| ≤ {facts['others']} < λ not proven")
+    if not (new["u"] <= facts["u"] and new["q3_minus_d"] <= facts["q3_minus_d"] < 0):
+        bad.append("the bounds on u and q₃(t_2n) - d are not implied")
+    if facts["r"] != [Fraction(0), _q(R_MAX)]:
+        bad.append(f"part 7 is proved for r in ]0, 1/4], not {facts['r']}")
     return bad

@@ -184,3 +184,53 @@ def test_the_lower_proof_closes_from_n_6(n):
 def test_the_lower_proof_does_not_close_from_n_3():
     with pytest.raises(ArithmeticError):
         F.prove(N0=2)
+
+
+# ------------------------------------------------------------------ the dominant branch
+def test_w_limit_is_one_third_two_thirds():
+    assert F.check_w_limit()
+
+
+def test_dominant_branch_from_n_7_not_6():
+    assert F.dominant_facts(7)["q3_minus_d"] < 0
+    with pytest.raises(ArithmeticError):
+        F.dominant_facts(6)
+
+
+def test_dominant_branch_and_sign_of_u_against_mpmath(facts):
+    """n = 35: mpmath's dominant eigenvalue lies in the proved interval, and q₂(0) has the sign
+    of sin(nθ) below r*, inside the window, just above r_n and where nθ = 3π/2 and 5π/2 (the
+    last two: u < 0, then u > 0 again on the dominant branch)."""
+    n, d = 35, facts["dominant"]
+    with mp.workdps(4 * n + 60):
+        rs = 7 - 4 * mp.sqrt(3)
+
+        def r_at(phi):                       # nθ = phi
+            a = 3 + 4 * mp.cos(phi / n)
+            return a - mp.sqrt(a * a - 1)
+        for r in (rs / 2, rs - mp.mpf(10) ** -6, r_at(mp.pi * 0.99), r_at(mp.pi * 1.01), r_at(1.5 * mp.pi),
+                  r_at(2.5 * mp.pi), mp.mpf("0.2")):
+            M = ref.matrix("cb", r) ** n * ref.matrix("ab", r) ** n
+            ev = sorted(mp.eig(M)[0], key=abs, reverse=True)
+            lam = mp.re(ev[0])
+            lo_l, hi_l = (mp.mpf(q.numerator) / q.denominator for q in d["lambda"])
+            assert lo_l < lam < hi_l
+            A = M - lam * mp.eye(3)
+            u = (A[0, 0] * A[1, 2] - A[0, 2] * A[1, 0]) / (A[0, 1] * A[1, 2] - A[0, 2] * A[1, 1])
+            c = (r * r - 6 * r + 1) / (8 * r)
+            sn = mp.sin(n * mp.acos(c)) if r > rs else 1
+            assert mp.sign(u) == mp.sign(sn)
+
+
+def test_mutant_dominant_lambda_shifted_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    f["dominant"]["lambda"] = [Fraction(1, 8), Fraction(1, 7)]
+    assert any("λ not in" in b for b in F.check(f))
+
+
+def test_mutant_dominant_range_widened_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    f["dominant"]["r"] = [Fraction(0), Fraction(1, 2)]
+    assert any("]0, 1/4]" in b for b in F.check(f))
