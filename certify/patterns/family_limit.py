@@ -44,6 +44,10 @@ parts 5-6 for n > N₀), and that the windows they bound are disjoint and decrea
 6. **The limit** (:func:`limit_constants`, exact in Q(√3)): η₀ = π√3/6, s_lo = s* - αε + O(ε²)
    with α = s*/√3 = π²r*/6 ≈ 0.1181.
 
+7. **The dominant branch** (:func:`dominant_facts`, for every n ≥ 7 and r ∈ ]0, 1/4], one ball
+   computation): λ = 1/9 + O(n 4^{-n}) is real, simple and strictly dominant (wᵀ(I - K)⁻¹ =
+   (1/3, 2/3) exactly), and the hypotheses of part 2 hold: q₂(0) has the sign of s_n there.
+
 Not proved here (docs/family-limit.md): that the stable set is exactly ]ℓ_n, r_n[ for n > N₀
 (every condition inside, one failing outside); certified per n ≤ N₀ by the family's exact
 certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in the tests).
