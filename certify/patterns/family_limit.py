@@ -436,10 +436,58 @@ def dominant_facts(N1: int) -> dict:
         q3 = v - W1 + W2 * u
         if not (q3 - d < 0 and lam - d * d > 0 and h > 0):
             raise ArithmeticError("the hypotheses of part 2 are not proven")
+        X = -(d + W1) * (lam - M[2][2]) - (b * c + a * W1)       # u = c X/D: every term of u's numerator has c
         return {"N1": N1, "r": [Fraction(0), _q(R_MAX)], "delta": _q(ends(delta)[1]),
                 "lambda": [_q(ends(lo)[0]), _q(ends(hi)[1])], "others": _q(ends(others)[1]),
-                "u": _q(max(abs(e) for e in ends(u))),
-                "q3_minus_d": _q(ends(q3 - d)[1])}
+                "u": _q(max(abs(e) for e in ends(u))), "Cu": _q(ends(X.abs_upper() / D.abs_lower())[1]),
+                "q3_minus_d": _q(ends(q3 - d)[1]), "q3_abs": _q(ends(q3.abs_lower())[0])}
+
+
+def velocity_facts(N1: int) -> dict:
+    """Every velocity condition of w_n holds on ]r*, r_n[ for every n ≥ N₁ ≥ 7 (ball checks over
+    r ∈ [7/100, 8/100] ⊃ ]r*, r_7]).  Exactly, with s̃_k = sin kθ/sin θ and y = K^j(-1, u):
+
+        y₁ = -r^{j-1}[K₁₁s̃_j - r s̃_{j-1} - uh s̃_j],   (Ay)₂ = y₂ + hy₁ = -r^{j-1}[rh s̃_{j+1} - u(K₁₁s̃_j - r s̃_{j-1})].
+
+    For nθ ≤ π and 1 ≤ k ≤ n - 1, s̃_k ≥ 1, and K₁₁ sin jθ - r sin(j-1)θ = sin jθ(K₁₁ - r cos θ) +
+    r cos jθ sin θ ≥ sin θ(K₁₁ - 2r); |K₁₁s̃_j - r s̃_{j-1}| ≤ n(K₁₁ + r).  Part 7 gives u = cX/D with
+    |X|/D ≤ C_u, c = -rh r^{n-1}s̃_n, so u = s̃_n ω, |u| ≤ C_u δ_n, |ω| ≤ rh C_u δ_n/n (δ_n = n4^{1-n},
+    r^{n-1} ≤ 4^{1-n}).  Hence before each a (j = 1..n-1): K₁₁ - 2r > hnC_uδ_n; before each b, j ≤ n-2:
+    rh > nC_uδ_n(K₁₁ + r), and j = n-1: the bracket is s̃_n(rh - ω(…)) > 0 as δ_nC_u(K₁₁ + r) < 1.
+    The cb-phase is the same with (q₃, q₂)(t_{2n}) = |q₃|(-1, u'), u' = q₂(t_{2n})/|q₃| = s̃_n ω',
+    q₂(t_{2n}) = -c + du = rh r^{n-1}s̃_n(1 - dX/D): C_u' = rh(1 + δC_u)/|q₃|.  n δ_n decreases."""
+    dom = dominant_facts(N1)
+    with precision(128):
+        if not (flint.arb(flint.fmpq(7, 100)) < 7 - 4 * flint.arb(3).sqrt() and upper_end(7) < flint.fmpq(8, 100)):
+            raise ArithmeticError("[7/100, 8/100] does not cover ]r*, r_7]")
+        margins: dict = {}
+        for k in range(16):                                        # 16 r-boxes of [7/100, 8/100]
+            r = flint.arb(flint.fmpq(7, 100) + flint.fmpq(2 * k + 1, 3200), flint.fmpq(1, 3200))
+            for name, m in _velocity_margins(r, dom, N1).items():
+                margins[name] = m if name not in margins else margins[name].min(m)
+        bad = [k for k, m in margins.items() if not m > 0]
+        if bad:
+            raise ArithmeticError("velocity margins not proven: " + ", ".join(bad))
+        return {"N1": N1, "r": [Fraction(7, 100), Fraction(8, 100)],
+                "margins": {k: _q(ends(m)[0]) for k, m in margins.items()}}
+
+
+def _velocity_margins(r: flint.arb, dom: dict, N1: int) -> dict:
+    """The six margins of :func:`velocity_facts` on a ball of r: with |u| ≤ C δ_n and |ω| n ≤ rh Ω δ_n
+    (ab: C = Ω = C_u; cb: Ω = (1 + δC_u)/|q₃|, C = rhΩ) and n δ_n ≤ N₁ δ (δ = δ_{N₁})."""
+    def rat(x):
+        return flint.arb(flint.fmpq(x.numerator, x.denominator))
+    h = (1 + r) / 2
+    K11 = h * h - r
+    delta, Cu, Q3 = rat(dom["delta"]), rat(dom["Cu"]), rat(dom["q3_abs"])
+    dn = N1 * delta
+    Om = (1 + delta * Cu) / Q3
+    margins = {}
+    for name, C, Omega in (("ab", Cu, Cu), ("cb", r * h * Om, Om)):
+        margins[f"{name}: before a/c"] = K11 - 2 * r - h * dn * C
+        margins[f"{name}: before b, j < n - 1"] = r * h - dn * C * (K11 + r)
+        margins[f"{name}: before b, j = n - 1"] = 1 - delta * Omega * (K11 + r)
+    return margins
 
 
 def check_w_limit() -> bool:
@@ -478,7 +526,8 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
     return {"N0": N0, "block": block_facts(), "s_star": [_q(star_lo), _q(star_hi)],
             "kappa": [_q(ends(kap)[0]), _q(ends(kap)[1])], "C": C, "boxes": rows,
             "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec),
-            "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit()}
+            "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit(),
+            "velocity": velocity_facts(max(N0 + 1, 8))}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -512,7 +561,22 @@ def check(facts: dict, prec: int = 200) -> list[str]:
         bad += check_lower(facts["lower"])
     if "dominant" in facts:
         bad += check_dominant(facts["dominant"])
+    if "velocity" in facts:
+        bad += check_velocity(facts["velocity"])
     return bad
+
+
+def check_velocity(facts: dict) -> list[str]:
+    """Recompute :func:`velocity_facts` for N₁: every stated margin must be positive and at most
+    the recomputed lower bound, on the stated r-range [7/100, 8/100].  The list of failures."""
+    if facts["r"] != [Fraction(7, 100), Fraction(8, 100)]:
+        return [f"the velocity conditions are proved on [7/100, 8/100], not {facts['r']}"]
+    try:
+        new = velocity_facts(facts["N1"])
+    except ArithmeticError as e:
+        return [f"part 8 does not hold for N1 = {facts['N1']}: {e}"]
+    return [f"velocity margin {k} = {m} not implied" for k, m in facts["margins"].items()
+            if not (0 < m <= new["margins"].get(k, Fraction(-1)))]
 
 
 def check_dominant(facts: dict) -> list[str]:

@@ -234,3 +234,45 @@ def test_mutant_dominant_range_widened_fails(facts):
     f = copy.deepcopy(facts)
     f["dominant"]["r"] = [Fraction(0), Fraction(1, 2)]
     assert any("]0, 1/4]" in b for b in F.check(f))
+
+
+# ------------------------------------------------------------------ the velocity conditions
+def test_velocity_conditions_from_n_8_not_7():
+    assert all(m > 0 for m in F.velocity_facts(8)["margins"].values())
+    with pytest.raises(ArithmeticError):
+        F.velocity_facts(7)
+
+
+def _velocity_signs(n, r):
+    """Every velocity condition of (ab)^n(cb)^n on the dominant branch at r (mpmath): the pair
+    of each collision approaches just before it."""
+    M = ref.matrix("cb", r) ** n * ref.matrix("ab", r) ** n
+    lam = mp.re(sorted(mp.eig(M)[0], key=abs, reverse=True)[0])
+    A = M - lam * mp.eye(3)
+    det = A[0, 1] * A[1, 2] - A[0, 2] * A[1, 1]
+    q = [mp.mpf(-1), (A[0, 0] * A[1, 2] - A[0, 2] * A[1, 0]) / det, (A[0, 1] * A[1, 0] - A[0, 0] * A[1, 1]) / det]
+    ok = True
+    for letter in "ab" * n + "cb" * n:
+        ok = ok and q[ref.IDX[letter]] < 0
+        q = ref.collide(letter, q, r)
+    return ok
+
+
+def test_velocity_conditions_against_mpmath():
+    """n = 35: they hold on ]r*, r_n[ (below, inside and at the top of the window) and fail just
+    above r_n (where q₂(0) < 0 and the last b of the ab-phase comes with q₂ > 0)."""
+    n = 35
+    with mp.workdps(4 * n + 60):
+        rs = 7 - 4 * mp.sqrt(3)
+        rn = _mp(F.upper_end(n, 400))
+        for r in (rs + (rn - rs) / 1000, (rs + rn) / 2, rn - (rn - rs) / 10 ** 6):
+            assert _velocity_signs(n, r)
+        assert not _velocity_signs(n, rn + (rn - rs) / 10 ** 6)
+
+
+def test_mutant_velocity_margin_inflated_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    key = next(iter(f["velocity"]["margins"]))
+    f["velocity"]["margins"][key] = Fraction(1, 2)
+    assert any("velocity margin" in b for b in F.check(f))
