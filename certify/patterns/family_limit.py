@@ -48,9 +48,13 @@ parts 5-6 for n > N₀), and that the windows they bound are disjoint and decrea
    computation): λ = 1/9 + O(n 4^{-n}) is real, simple and strictly dominant (wᵀ(I - K)⁻¹ =
    (1/3, 2/3) exactly), and the hypotheses of part 2 hold: q₂(0) has the sign of s_n there.
 
+8. **The velocity conditions** (:func:`velocity_facts`, for every n ≥ 8): every collision's pair
+   approaches on ]r*, r_n[, in both phases (exact formulas in s̃_k = sin kθ/sin θ, balls over r).
+
 Not proved here (docs/family-limit.md): that the stable set is exactly ]ℓ_n, r_n[ for n > N₀
-(every condition inside, one failing outside); certified per n ≤ N₀ by the family's exact
-certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in the tests).
+(inside: x₊ > 0, p₃(t_{2n}) > 0, p₁(T) > 0, |f'(x₊)| < 1; outside: one condition failing);
+certified per n ≤ N₀ by the family's exact certificates, observed beyond by an independent
+mpmath computation (n = 35, 50, 80 in the tests).
 """
 from __future__ import annotations
 
