@@ -1,0 +1,278 @@
+"""The windows of (ab)^n(cb)^n beyond N₀ (certify.patterns.family_limit): the proved
+closed form of the upper end r_n (nθ = π, where q₂(0) = 0) against an independent mpmath
+computation of the stable set straight from the matrices (tests/patterns/mp_family.py),
+the exact identity behind it on the engine's candidate, and mutants of the proof's facts."""
+import functools
+from fractions import Fraction
+
+import flint
+import mpmath as mp
+import pytest
+
+from certify.algebra.balls import ends, precision
+from certify.patterns import family_limit as F
+from tests.patterns import mp_family as ref
+
+
+@functools.cache
+def _window(n):
+    """lo_n, hi_n of the mpmath reference at 4n + 60 digits (computed once per n)."""
+    with mp.workdps(4 * n + 60):
+        return ref.window(n, steps=70)
+
+
+def _mp(ball) -> mp.mpf:
+    lo, hi = ends(ball)
+    return (mp.mpf(int(lo.p)) / int(lo.q) + mp.mpf(int(hi.p)) / int(hi.q)) / 2
+
+
+def test_block_identities_hold_and_name_the_structure():
+    assert len(F.block_facts()) == 7
+
+
+@pytest.mark.parametrize("n", [2, 3, 4])
+def test_u_identity_holds_exactly_on_the_engine_candidate(n):
+    assert F.check_u_identity(n)
+
+
+def test_u_identity_fails_with_the_wrong_power(monkeypatch):
+    real = F.power
+    monkeypatch.setattr(F, "power", lambda K, n: real(K, n + 1))
+    assert not F.check_u_identity(3)
+
+
+def test_upper_end_is_the_known_end_for_n_2_3():
+    # 3 - 2√2 and 5 - 2√6: L5's and L6's certified upper ends
+    assert F.upper_end(2).overlaps(3 - 2 * flint.arb(2).sqrt())
+    assert F.upper_end(3).overlaps(5 - 2 * flint.arb(6).sqrt())
+    assert not F.upper_end(4).overlaps(F.upper_end(5))
+
+
+@pytest.mark.parametrize("n", [35, 50, 80])
+def test_upper_end_and_window_against_mpmath(n):
+    """hi_n from bisection of the stable set (mpmath, 4n + 60 digits) is r_n; above it u < 0
+    is what fails; lo_n lies in ]r_{n+1}, r_n[ (disjoint windows, observed)."""
+    lo, hi = _window(n)
+    with mp.workdps(4 * n + 60):
+        rn, rn1 = _mp(F.upper_end(n, 400)), _mp(F.upper_end(n + 1, 400))
+        width = rn - lo
+        assert abs(hi - rn) < width * mp.mpf(2) ** -50
+        assert ref.analyse(n, rn + width / 10 ** 6) == (False, "u")
+        assert ref.analyse(n, rn - width / 10 ** 6)[0]
+        assert rn1 < lo < rn
+        assert "x" in ref.analyse(n, lo - width / 10 ** 6)[1]          # the lower end: x₊ crosses 0
+        s_lo = n ** 2 * (lo - (7 - 4 * mp.sqrt(3)))
+        assert 0.08 < (_mp(F.s_star()) - s_lo) * n < 0.13             # s_lo ≈ s* - 0.117/n (observed)
+
+
+def test_s_hi_formula_against_the_direct_difference():
+    n = 40
+    with precision(300):
+        direct = n ** 2 * (F.upper_end(n, 300) - (7 - 4 * flint.arb(3).sqrt()))
+        assert F.s_hi(flint.arb(flint.fmpq(1, n))).overlaps(direct)
+        assert (F.s_hi(flint.arb(0)) - F.s_star()).abs_upper() < flint.arb(2) ** -250
+
+
+def test_proof_facts_check():
+    assert F.check(F.prove(N0=30, boxes=16)) == []
+
+
+def test_mutant_smaller_constant_fails():
+    facts = F.prove(N0=30, boxes=16)
+    facts["C"] = Fraction(1, 3)                       # below κ ≈ 0.418: |s_hi - s*| ≤ ε²/3 is false
+    assert any("C ε²" in b for b in F.check(facts))
+
+
+def test_mutant_widened_box_fails():
+    facts = F.prove(N0=30, boxes=16)
+    facts["boxes"][-1]["eps"][1] = Fraction(1, 10)    # the last box widened to ε = 1/10
+    assert any("not in" in b for b in F.check(facts))
+
+
+def test_mutant_shifted_s_star_fails():
+    facts = F.prove(N0=30, boxes=16)
+    facts["s_star"] = [facts["s_star"][0] + Fraction(1, 10 ** 12), facts["s_star"][1] + Fraction(1, 10 ** 12)]
+    assert any("s_star" in b for b in F.check(facts))
+
+
+def test_mutant_gap_in_the_cover_fails():
+    facts = F.prove(N0=30, boxes=16)
+    del facts["boxes"][3]
+    assert "the boxes do not cover [0, 1/N0]" in F.check(facts)
+
+
+# ------------------------------------------------------------------ the lower end
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 5])
+def test_period_matrix_and_lower_identity_exact(n):
+    assert F.check_lower_identity(n)
+
+
+def test_lower_identity_fails_for_a_wrong_lower_polynomial(monkeypatch):
+    real = F.lower_polynomial
+    monkeypatch.setattr(F, "lower_polynomial", lambda n: real(n) + 1)
+    assert not F.check_lower_identity(3)
+
+
+def test_limit_constants_exact():
+    import sympy as sp
+    c = F.limit_constants()
+    assert c["W"] == (sp.Rational(1, 3), sp.Rational(2, 3)) and c["rho"] == sp.sqrt(3) / 6
+    with precision(100):
+        assert flint.arb(str(sp.N(c["alpha"], 30))).overlaps(F.s_star() / flint.arb(3).sqrt())
+
+
+@pytest.fixture(scope="module")
+def facts():
+    return F.prove(N0=30)
+
+
+@pytest.mark.parametrize("n", [35, 50, 80])
+def test_lower_strip_holds_the_mpmath_lower_end(n, facts):
+    """The observed lower end lo_n (bisection of the stable set, mpmath) is a zero of F_n (the
+    independent matrices' D = det[e₁, Me₁, M²e₁] vanishes there) and n²(lo_n - r*) lies in the
+    proof's enclosure for the ε-box of 1/n."""
+    row = next(b for b in facts["lower"]["boxes"] if b["eps"][0] <= Fraction(1, n) <= b["eps"][1])
+    lo, hi = _window(n)
+    with mp.workdps(4 * n + 60):
+        s_lo = n ** 2 * (lo - (7 - 4 * mp.sqrt(3)))
+        assert mp.mpf(row["s_lo"][0].numerator) / row["s_lo"][0].denominator < s_lo
+        assert s_lo < mp.mpf(row["s_lo"][1].numerator) / row["s_lo"][1].denominator
+
+        def D(r):
+            M = ref.matrix("cb", r) ** n * ref.matrix("ab", r) ** n
+            M2 = M * M
+            return M[1, 0] * M2[2, 0] - M[2, 0] * M2[1, 0]
+        h = (hi - lo) / 10 ** 8
+        assert D(lo - h) * D(lo + h) < 0                  # D changes sign at lo_n
+
+
+def test_mutant_narrowed_strip_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    row = f["lower"]["boxes"][-1]
+    row["eta"][1] = row["eta"][0]                     # the strip shrunk to its left end
+    assert any("F̂ > 0 not proven" in b for b in F.check(f))
+
+
+def test_mutant_lower_box_widened_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    f["lower"]["boxes"][-1]["eps"][1] = Fraction(1, 5)   # ε up to 1/5: n ≥ 5 is not proved
+    assert F.check(f)
+
+
+def test_mutant_margin_too_large_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    f["lower"]["boxes"][0]["margin"] = Fraction(3)       # more room than π/(1 + ε) - η₊ ≈ 2.2
+    assert any("margin" in b for b in F.check(f))
+
+
+@pytest.mark.parametrize("n", [6, 7, 10])
+def test_the_lower_proof_closes_from_n_6(n):
+    """prove(N0=5): the strip and the disjointness hold from n = 6 on, and hold lo_n there."""
+    f = F.prove(N0=5)
+    assert F.check(f) == []
+    row = next(b for b in f["lower"]["boxes"] if b["eps"][0] <= Fraction(1, n) <= b["eps"][1])
+    lo, _ = _window(n)
+    with mp.workdps(4 * n + 60):
+        s_lo = n ** 2 * (lo - (7 - 4 * mp.sqrt(3)))
+        lo_s, hi_s = (mp.mpf(q.numerator) / q.denominator for q in row["s_lo"])
+        assert lo_s < s_lo < hi_s
+
+
+def test_the_lower_proof_does_not_close_from_n_3():
+    with pytest.raises(ArithmeticError):
+        F.prove(N0=2)
+
+
+# ------------------------------------------------------------------ the dominant branch
+def test_w_limit_is_one_third_two_thirds():
+    assert F.check_w_limit()
+
+
+def test_dominant_branch_from_n_7_not_6():
+    assert F.dominant_facts(7)["q3_minus_d"] < 0
+    with pytest.raises(ArithmeticError):
+        F.dominant_facts(6)
+
+
+def test_dominant_branch_and_sign_of_u_against_mpmath(facts):
+    """n = 35: mpmath's dominant eigenvalue lies in the proved interval, and q₂(0) has the sign
+    of sin(nθ) below r*, inside the window, just above r_n and where nθ = 3π/2 and 5π/2 (the
+    last two: u < 0, then u > 0 again on the dominant branch)."""
+    n, d = 35, facts["dominant"]
+    with mp.workdps(4 * n + 60):
+        rs = 7 - 4 * mp.sqrt(3)
+
+        def r_at(phi):                       # nθ = phi
+            a = 3 + 4 * mp.cos(phi / n)
+            return a - mp.sqrt(a * a - 1)
+        for r in (rs / 2, rs - mp.mpf(10) ** -6, r_at(mp.pi * 0.99), r_at(mp.pi * 1.01), r_at(1.5 * mp.pi),
+                  r_at(2.5 * mp.pi), mp.mpf("0.2")):
+            M = ref.matrix("cb", r) ** n * ref.matrix("ab", r) ** n
+            ev = sorted(mp.eig(M)[0], key=abs, reverse=True)
+            lam = mp.re(ev[0])
+            lo_l, hi_l = (mp.mpf(q.numerator) / q.denominator for q in d["lambda"])
+            assert lo_l < lam < hi_l
+            A = M - lam * mp.eye(3)
+            u = (A[0, 0] * A[1, 2] - A[0, 2] * A[1, 0]) / (A[0, 1] * A[1, 2] - A[0, 2] * A[1, 1])
+            c = (r * r - 6 * r + 1) / (8 * r)
+            sn = mp.sin(n * mp.acos(c)) if r > rs else 1
+            assert mp.sign(u) == mp.sign(sn)
+
+
+def test_mutant_dominant_lambda_shifted_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    f["dominant"]["lambda"] = [Fraction(1, 8), Fraction(1, 7)]
+    assert any("λ not in" in b for b in F.check(f))
+
+
+def test_mutant_dominant_range_widened_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    f["dominant"]["r"] = [Fraction(0), Fraction(1, 2)]
+    assert any("]0, 1/4]" in b for b in F.check(f))
+
+
+# ------------------------------------------------------------------ the velocity conditions
+def test_velocity_conditions_from_n_8_not_7():
+    assert all(m > 0 for m in F.velocity_facts(8)["margins"].values())
+    with pytest.raises(ArithmeticError):
+        F.velocity_facts(7)
+
+
+def _velocity_signs(n, r):
+    """Every velocity condition of (ab)^n(cb)^n on the dominant branch at r (mpmath): the pair
+    of each collision approaches just before it."""
+    M = ref.matrix("cb", r) ** n * ref.matrix("ab", r) ** n
+    lam = mp.re(sorted(mp.eig(M)[0], key=abs, reverse=True)[0])
+    A = M - lam * mp.eye(3)
+    det = A[0, 1] * A[1, 2] - A[0, 2] * A[1, 1]
+    q = [mp.mpf(-1), (A[0, 0] * A[1, 2] - A[0, 2] * A[1, 0]) / det, (A[0, 1] * A[1, 0] - A[0, 0] * A[1, 1]) / det]
+    ok = True
+    for letter in "ab" * n + "cb" * n:
+        ok = ok and q[ref.IDX[letter]] < 0
+        q = ref.collide(letter, q, r)
+    return ok
+
+
+def test_velocity_conditions_against_mpmath():
+    """n = 35: they hold on ]r*, r_n[ (below, inside and at the top of the window) and fail just
+    above r_n (where q₂(0) < 0 and the last b of the ab-phase comes with q₂ > 0)."""
+    n = 35
+    with mp.workdps(4 * n + 60):
+        rs = 7 - 4 * mp.sqrt(3)
+        rn = _mp(F.upper_end(n, 400))
+        for r in (rs + (rn - rs) / 1000, (rs + rn) / 2, rn - (rn - rs) / 10 ** 6):
+            assert _velocity_signs(n, r)
+        assert not _velocity_signs(n, rn + (rn - rs) / 10 ** 6)
+
+
+def test_mutant_velocity_margin_inflated_fails(facts):
+    import copy
+    f = copy.deepcopy(facts)
+    key = next(iter(f["velocity"]["margins"]))
+    f["velocity"]["margins"][key] = Fraction(1, 2)
+    assert any("velocity margin" in b for b in F.check(f))
