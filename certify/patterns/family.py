@@ -67,6 +67,13 @@ def family_n(word: str) -> int | None:
     return n if n >= 1 and word == family_word(n) else None
 
 
+def implied_names(n: int) -> set[str]:
+    """The feasibility conditions of (ab)^n(cb)^n implied by the others on the set where those hold
+    (the module's docstring: p_3 concave on [0, t_2n], p_1 on [t_2n, t_4n]): p_3(t_k) > 0 for
+    1 ≤ k < 2n and p_1(t_k) > 0 for 2n < k < 4n, as prefix_requirements names them."""
+    return {f"p_3(t_{k})" for k in range(1, 2 * n)} | {f"p_1(t_{k})" for k in range(2 * n + 1, 4 * n)}
+
+
 # ------------------------------------------------------------------ the block K and s_j
 def trace(rr):
     """t = tr K = (r² − 6r + 1)/4 (det K = r²)."""
@@ -274,3 +281,33 @@ def binding_conditions(n: int, q0: tuple, x, rr) -> list[tuple[str, object, int]
     out.append((f"p_3(t_{2 * n})", pos["p(t_2n)"][2], 1))
     out.append((f"p_1(t_{4 * n})", pos["p(t_4n)"][0], 1))
     return out
+
+
+# ------------------------------------------------------------------ stability
+def position_map(n: int, q0: tuple, rr) -> tuple:
+    """(a, b, c, d) with p_3(t_4n) = a x + b and p_1(t_4n) = c x + d exactly (p(0) = (1, 0, x)):
+    f(x) = (ax + b)/(cx + d), the engine's position map up to a common factor (whose sign may swap
+    the names x₊, x₋).  Both are affine in x: read off at x = 0 and x = 1."""
+    zero, one = rr * 0, rr * 0 + 1
+    p0, p1 = positions(n, q0, zero, rr)["p(t_4n)"], positions(n, q0, one, rr)["p(t_4n)"]
+    return p1[2] - p0[2], p0[2], p1[0] - p0[0], p0[0]
+
+
+def dominance(n: int, lam, rr) -> list[tuple[str, object, int]]:
+    """λ strictly dominant among the roots of cp_n = λ³ + c₁λ² + c₂λ + c₃ (Schur–Cohn–Jury, as
+    :func:`certify.patterns.pattern.dominance_requirements`): cp'(λ) > 0, −cp(−λ) > 0, λ³ − det M > 0,
+    det M = −c₃ = r^{4n}; the coefficients in closed form (:func:`charpoly`)."""
+    _, c1, c2, c3 = charpoly(n) if isinstance(rr, flint.fmpq_poly) else charpoly(n, rr)
+    if isinstance(rr, flint.fmpq_poly):
+        c1, c2, c3 = (c(rr) for c in (c1, c2, c3))
+    return [("dominance: cp'(λ)", 3 * lam * lam + 2 * c1 * lam + c2, 1),
+            ("dominance: -cp(-λ)", lam * lam * lam - c1 * lam * lam + c2 * lam - c3, 1),
+            ("dominance: λ³ - det M", lam * lam * lam + c3, 1)]
+
+
+def attracting(abcd: tuple, x) -> list[tuple[str, object, int]]:
+    """|f'(x)| < 1 at a fixed point x of f = (ax + b)/(cx + d), f'(x) = (ad − bc)/(cx + d)²:
+    (cx + d)² − (ad − bc) > 0 and (cx + d)² + (ad − bc) > 0 (the engine's two conditions)."""
+    a, b, c, d = abcd
+    den, det = (c * x + d) * (c * x + d), a * d - b * c
+    return [("attracting: (cx+d)² - (ad-bc)", den - det, 1), ("attracting: (cx+d)² + (ad-bc)", den + det, 1)]

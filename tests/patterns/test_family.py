@@ -4,7 +4,7 @@ velocities, with the collision times the engine defines), n ≤ 12."""
 import flint
 import pytest
 
-from certify.algebra.poly import LR_R, Frac, field_to_frac
+from certify.algebra.poly import LR_LAMBDA, LR_R, Frac, field_to_frac
 from certify.dynamics.model import charpoly_coefficients, word_matrix_flint
 from certify.dynamics.words import candidate, run_lr
 from certify.patterns import family as F
@@ -70,3 +70,29 @@ def test_binding_conditions_are_the_engines(n):
         assert ours[0][name] == G0 and ours[1][name] == G0 + G1, name
     implied = set(engine) - set(ours[0])
     assert implied == {f"p_3(t_{k})" for k in range(1, 2 * n)} | {f"p_1(t_{k})" for k in range(2 * n + 1, 4 * n)}
+
+
+@pytest.mark.parametrize("n", [2, 3, 5])
+def test_position_map_is_the_engines_up_to_a_factor(n):
+    """(a, b, c, d) in closed form is proportional to the engine's, on every branch (modulo cp)."""
+    from certify.algebra.poly import frac_to_field, ring_to_lrq
+    from certify.dynamics.words import _lrq_to_frac, reduce_mod
+    cand = candidate(F.family_word(n))
+    q0 = tuple(field_to_frac(e) for e in cand.q0)
+    ours = F.position_map(n, q0, LR_R)
+    theirs = [_lrq_to_frac(ring_to_lrq(e)) for e in cand.abcd_ring]
+    for i in range(4):
+        for j in range(i + 1, 4):
+            e = ours[i] * theirs[j] - ours[j] * theirs[i]
+            assert reduce_mod(frac_to_field(e), cand.cp) == 0, (i, j)
+
+
+@pytest.mark.parametrize("n", [2, 4])
+def test_dominance_is_the_engines(n):
+    """The dominance conditions in closed form are the engine's polynomials in (λ, r)."""
+    from certify.algebra.poly import to_field
+    from certify.patterns.pattern import dominance_requirements
+    cand = candidate(F.family_word(n))
+    ours = {name: value for name, value, _ in F.dominance(n, LR_LAMBDA, LR_R)}
+    for q in dominance_requirements(cand.spectrum.ring_cp):
+        assert ours[q.name] == field_to_frac(to_field(q.G[0])), q.name
