@@ -74,6 +74,69 @@ def implied_names(n: int) -> set[str]:
     return {f"p_3(t_{k})" for k in range(1, 2 * n)} | {f"p_1(t_{k})" for k in range(2 * n + 1, 4 * n)}
 
 
+def reduced_names(n: int) -> set[str]:
+    """The feasibility conditions of (ab)^n(cb)^n that, with r < ρ_{n−1} (:func:`turning_bound`),
+    are equivalent to all of them (:func:`prefix_requirements`'s names): u = q_2(0) > 0, x > 0,
+    q_1(t_{2n−2}) < 0, q_2(t_{2n−3}) < 0, q_2(t_{2n−1}) < 0, q_3(t_{2n}) < 0, p_3(t_{2n}) > 0,
+    q_3(t_{4n−2}) < 0, q_2(t_{4n−3}) < 0, q_2(t_{4n−1}) < 0, p_1(t_{4n}) > 0.
+
+    Why (the quadrant proposition).  In the (ab)^n phase the velocities of gaps 1, 2 at t_{2j}
+    are Q_j = K^j Q_0, and the conditions on them are: Q_j in the open quadrant
+    {q_1 < 0 < q_2} for 0 ≤ j ≤ n − 1 ((Q_j)_1 = q_1(t_{2j}), (Q_j)_2 = y_j = −r q_2(t_{2j−1})),
+    and (Q_n)_2 > 0.  For m ≥ 1 and r ∈ ]0, 1[:
+
+        Q_0, …, Q_m all in the quadrant  ⟺  Q_0, Q_m in the quadrant and s_j > 0 for 1 ≤ j ≤ m.
+
+    Proof.  det(Q_0, Q_j) = s_j det(Q_0, K Q_0) and det(Q_j, Q_{j+1}) = r^{2j} det(Q_0, K Q_0)
+    (Cayley–Hamilton; det K = r²).  If det(Q_0, K Q_0) = 0, Q_0 is a real eigenvector of K,
+    which exists only for r ≤ r* = 7 − 4√3 where both eigenvalues are positive (t ≥ 2r > 0),
+    so every Q_j is a positive multiple of Q_0 and every s_j > 0: both sides hold.  Otherwise,
+    say det(Q_0, K Q_0) > 0.  (⇐) The angles φ_j ∈ ]0, π[ from Q_0 to Q_j (s_j > 0) increase
+    (det(Q_j, Q_{j+1}) > 0), so every Q_j lies in the cone spanned by Q_0 and Q_m, of opening
+    < π, inside the (convex) quadrant.  (⇒) Inside the quadrant the angles increase by less than
+    π/2 in all, so det(Q_0, Q_j) > 0 and s_j > 0.  The (cb)^n phase is the mirror image with the
+    same K (Q'_j = K^j (q_3, q_2)(t_{2n}), Q'_0 in the quadrant iff q_3(t_{2n}) < 0 and y_n > 0).
+    And s_j > 0 for 1 ≤ j ≤ m iff r < ρ_m (:func:`turning_bound`).  ∎"""
+    if n < 2:
+        raise ValueError("the reduction needs n ≥ 2")
+    return {"u = q_2(0)", "x", f"q_1(t_{2 * n - 2})", f"q_2(t_{2 * n - 3})", f"q_2(t_{2 * n - 1})",
+            f"q_3(t_{2 * n})", f"p_3(t_{2 * n})", f"q_3(t_{4 * n - 2})", f"q_2(t_{4 * n - 3})",
+            f"q_2(t_{4 * n - 1})", f"p_1(t_{4 * n})"}
+
+
+def turning_bound(m: int):
+    """ρ_m: s_j(r) > 0 for every 1 ≤ j ≤ m exactly on ]0, ρ_m[ (within ]0, 1[), as an Algebraic
+    number, the least root of s_m in ]0, 1[; None for m = 1 (s_1 = 1: no bound).
+
+    Proof.  On ]0, r*] both eigenvalues μ₁, μ₂ of K are positive (t ≥ 2r > 0) and
+    s_j = (μ₁^j − μ₂^j)/(μ₁ − μ₂) > 0 (j μ^{j−1} at r*): no root of any s_j there.  On ]r*, 1[,
+    s_j = r^{j−1} sin(jθ)/sin θ with cos θ = t/(2r) = (r + 1/r − 6)/8, decreasing in r, so θ ∈ ]0, 2π/3[
+    increases with r; all s_j > 0 (j ≤ m) iff mθ < π (if mθ ≥ π, the first j with jθ ≥ π has
+    jθ < 2π, so s_j ≤ 0).  The roots of s_m on ]r*, 1[ are where θ = kπ/m, the least one at
+    k = 1: that is ρ_m (r² − (6 + 8 cos(π/m)) r + 1 = 0; none in ]0, 1[ for m = 1, as θ < 2π/3)."""
+    from certify.algebra.algebraic import Algebraic
+    if m < 2:
+        return None
+    roots = Algebraic.roots(chebyshev(m, r_poly())[m], 0, 1)
+    return roots[0]
+
+
+def cut_below(regions: list, rho) -> None:
+    """Keep, in each region of an Analysis, only the r < ρ (ρ an Algebraic): a piece across ρ
+    becomes ]lo, ρ[, the points ≥ ρ are dropped (exact comparisons)."""
+    from certify.algebra.branches import less, same
+    from certify.patterns.feasibility import Piece
+    for R in regions:
+        out = []
+        for p in R.pieces:
+            if p.is_point:
+                if less(p.lo, rho):
+                    out.append(p)
+            elif less(p.lo, rho):
+                out.append(p if less(p.hi, rho) or same(p.hi, rho) else Piece(p.lo, rho, p.x_value, p.note))
+        R.pieces = out
+
+
 # ------------------------------------------------------------------ the block K and s_j
 def trace(rr):
     """t = tr K = (r² − 6r + 1)/4 (det K = r²)."""

@@ -96,3 +96,84 @@ def test_dominance_is_the_engines(n):
     ours = {name: value for name, value, _ in F.dominance(n, LR_LAMBDA, LR_R)}
     for q in dominance_requirements(cand.spectrum.ring_cp):
         assert ours[q.name] == field_to_frac(to_field(q.G[0])), q.name
+
+
+# ------------------------------------------------------------------ the quadrant proposition
+def _in_quadrant(q):
+    return q[0] < 0 < q[1]
+
+
+@pytest.mark.parametrize("m", range(1, 9))
+def test_quadrant_proposition_at_rational_points(m):
+    """Q_0..Q_m in the open quadrant ⟺ Q_0, Q_m in it and r < ρ_m, exactly at rational r and
+    Q_0 (a grid through both sides of ρ_m and of r* = 7 − 4√3)."""
+    rho = F.turning_bound(m)
+    seen = set()
+    for k in range(1, 200):
+        r0 = flint.fmpq(k, 400) if k < 100 else flint.fmpq(7, 100) + flint.fmpq(k - 100, 2000)
+        s = F.chebyshev(m, r0)
+        assert all(e > 0 for e in s[1:]) == (rho is None or rho.compare_rational(r0) > 0), (m, r0)
+        for u in (flint.fmpq(1, 50), flint.fmpq(1, 3), flint.fmpq(2), flint.fmpq(9)):
+            Q = [(flint.fmpq(-1), u)]
+            K = F.block_K(r0)
+            for _ in range(m):
+                q = Q[-1]
+                Q.append((K[0][0] * q[0] + K[0][1] * q[1], K[1][0] * q[0] + K[1][1] * q[1]))
+            every = all(_in_quadrant(q) for q in Q)
+            ends = _in_quadrant(Q[0]) and _in_quadrant(Q[-1]) and all(e > 0 for e in s[1:])
+            assert every == ends, (m, r0, u)
+            seen.add(every)
+    assert seen == {True, False} or m == 1           # both cases met: the test can fail
+
+
+def test_turning_bound_is_where_m_theta_is_pi():
+    """ρ_m is the root of r² − (6 + 8 cos(π/m)) r + 1 in ]0, 1[ (balls); ρ_2 = 3 − 2√2."""
+    from certify.algebra.algebraic import Algebraic
+    assert F.turning_bound(1) is None
+    assert F.turning_bound(2) == Algebraic.roots(flint.fmpq_poly([1, -6, 1]), 0, 1)[0]
+    from certify.algebra.balls import precision
+    for m in (3, 7, 20):
+        with precision(200):
+            a = 3 + 4 * (flint.arb.pi() / m).cos()
+            ball = a - (a * a - 1).sqrt()
+            assert abs(F.turning_bound(m).arb(200) - ball) < flint.arb(10) ** -40
+
+
+# ------------------------------------------------------------------ the route of certify pattern
+def _generic(word, monkeypatch):
+    from certify.patterns import pattern as P
+    with monkeypatch.context() as mp:
+        mp.setattr(F, "family_n", lambda w: None)
+        return P.analyse(word)
+
+
+@pytest.mark.parametrize("n", range(2, 7))
+def test_family_route_gives_the_generic_sets(n, monkeypatch):
+    """`certify pattern (ab)^n(cb)^n` through the family route: the same JSON as the generic route
+    (every set, condition, formula), except points the generic route left undecided that lie at
+    r ≥ ρ_{n−1}, where the quadrant proposition proves the word infeasible (n = 2, 3: byte-identical)."""
+    from certify.patterns import pattern as P
+    w = F.family_word(n)
+    ours, theirs = P.analyse(w), _generic(w, monkeypatch)
+    a, b = ours.to_json(), theirs.to_json()
+    assert {k for k in a if a[k] != b[k]} <= {"undecided", "verdict"}
+    assert set(a["undecided"]) <= set(b["undecided"])
+    rho = F.turning_bound(n - 1)
+    for u in set(b["undecided"]) - set(a["undecided"]):
+        assert float(u.split("≈")[1].split(":")[0]) >= float(rho) - 1e-9, u
+    if n <= 3:
+        assert ours.json_text() == theirs.json_text() and ours.markdown() == theirs.markdown()
+
+
+@pytest.mark.parametrize("n", [4, 5])
+def test_family_route_mutants_fail(n, monkeypatch):
+    """Without the cut at ρ_{n−1} the reduced conditions give a larger feasible set; with the cut
+    at ρ_{2n} the stable window is cut: the route's sets are then not the generic ones."""
+    from certify.patterns import pattern as P
+    w = F.family_word(n)
+    theirs = _generic(w, monkeypatch).to_json()
+    bound = F.turning_bound
+    monkeypatch.setattr(F, "turning_bound", lambda m: None)
+    assert P.analyse(w).to_json()["feasible"] != theirs["feasible"]
+    monkeypatch.setattr(F, "turning_bound", lambda m: bound(2 * m + 2))
+    assert P.analyse(w).to_json()["stable"] != theirs["stable"]
