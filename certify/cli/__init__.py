@@ -6,11 +6,12 @@
     run ID [ID ...] [--out DIR] [--jobs N]
                                 run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics [--quick]] [--patterns]
+    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics [--quick]] [--patterns] [--family]
                                 time the whole run (benchmarks/bench.py), or the
                                 exact simulator and reduction map (bench_reduction.py),
                                 the numerical engines (bench_numerics.py), or
-                                pattern and census (bench_patterns.py, bench_census.py)
+                                pattern and census (bench_patterns.py, bench_census.py),
+                                or pattern on (ab)^n(cb)^n, n = 12, 20, 40 (--family)
     census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
            [--state FILE] [--resume] [--force]
                                 every periodic pattern of blocks up to length L,
