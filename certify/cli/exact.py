@@ -87,12 +87,12 @@ def cmd_family(args) -> int:
     if args.n_max < 2:
         raise UsageError(f"--n-max: the family starts at n = 2, not {args.n_max}")
     out = files.ensure_writable(args.out)
-    doc = windows(args.n_max, progress=progress.Bar("n"))
+    doc, seconds = windows(args.n_max, progress=progress.Bar("n"))
     files.write_atomic(out / "family.json", json.dumps(doc, ensure_ascii=False, indent=2, sort_keys=True) + "\n")
-    for rec in doc["windows"]:
+    for rec, sec in zip(doc["windows"], seconds):
         where = f"]{rec['lo']['digits']}, {rec['hi']['digits']}[" if rec.get("one_interval") \
             else "; ".join(rec["stable"])
-        print(f"(ab)^{rec['n']}(cb)^{rec['n']}: W = {where} ({rec['seconds']} s, {rec['undecided']} undecided)")
+        print(f"(ab)^{rec['n']}(cb)^{rec['n']}: W = {where} ({sec:.1f} s, {rec['undecided']} undecided)")
     failure = doc["first_failure"]
     print("every window one interval above 7-4√3, hi_n a zero of q_2(0), hi_{n+1} < lo_n" if doc["all_hold"]
           else f"fails at n = {failure['n']}: {failure['reason']}")

@@ -13,7 +13,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 @pytest.fixture(scope="module")
 def doc():
-    return FW.windows(4)
+    return FW.windows(4)[0]
 
 
 def test_windows_hold_for_small_n(doc):
