@@ -69,7 +69,9 @@ def test_binding_conditions_are_the_engines(n):
         G0, G1 = (field_to_frac(e) for e in engine[name])
         assert ours[0][name] == G0 and ours[1][name] == G0 + G1, name
     implied = set(engine) - set(ours[0])
+    assert implied == F.implied_names(n)
     assert implied == {f"p_3(t_{k})" for k in range(1, 2 * n)} | {f"p_1(t_{k})" for k in range(2 * n + 1, 4 * n)}
+    assert F.reduced_names(n) <= set(engine) | {"x"}
 
 
 @pytest.mark.parametrize("n", [2, 3, 5])
