@@ -2,7 +2,9 @@
 
     python benchmarks/bench_patterns.py [--repeat N] [--n 2 3 ... 12] [--budget SECONDS]
     python benchmarks/bench_patterns.py --orbit [--repeat N] [--n 2 ... 6]
+    python benchmarks/bench_patterns.py --family [--n 12 20 40] [--budget SECONDS]
     python -m certify bench --patterns [--repeat N]
+    python -m certify bench --family
 
 For each n, :func:`certify.patterns.analyse` on (ab)^n(cb)^n over ]0, 1[, ``--repeat``
 times, each cold (the engine's caches emptied first, :func:`certify.run.runner.reset_caches`);
@@ -12,7 +14,10 @@ the larger n are reported as not measured.  The table goes to stdout and to the 
 "certify pattern" of reports/BENCH.md (:func:`certify.run.files.write_section`).  With
 ``--orbit``: :func:`certify.patterns.reduction_orbits.analyse` instead (``certify orbit``), on
 (ab)^n(cb)^n and the complex-pair attractor abacbabcbcabcb, into the section "certify orbit"
-(the figures docs/orbit.md quotes).
+(the figures docs/orbit.md quotes).  With ``--family`` (:func:`bench_family`): the whole command
+``python -m certify pattern (ab)^n(cb)^n --json`` for n = 12, 20, 40 (issue 35's yardsticks; the
+family route of docs/family.md), once each in a fresh process, stopped after ``--budget`` seconds,
+into the section "certify pattern, the family".
 
 :func:`bench_pattern_words` is the function other benchmark scripts (the census's) call.
 """
@@ -69,13 +74,46 @@ def bench_pattern_words(ns=NS, repeat: int = 3, budget: float = 600.0, words=Non
     return rows
 
 
+FAMILY_NS = (12, 20, 40)
+
+
+def bench_family(ns=FAMILY_NS, budget: float = 600.0) -> list[dict]:
+    """Wall seconds of ``python -m certify pattern (ab)^n(cb)^n --json`` (a fresh process: imports,
+    analysis, printing), once per n; a run past ``budget`` seconds is stopped and reported, and the
+    larger n are not measured.  One dict per n: word, seconds (or ``skipped``), the verdict's tail."""
+    import json
+    import os
+    import subprocess
+    rows, over = [], None
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    for n in ns:
+        word = f"(ab)^{n}(cb)^{n}"
+        if over is not None:
+            rows.append({"word": word, "skipped": f"not measured: a shorter word ran past {over:.0f} s"})
+            continue
+        start = time.perf_counter()
+        try:
+            out = subprocess.run([sys.executable, "-m", "certify", "pattern", word, "--json"], cwd=ROOT, env=env,
+                                 check=True, capture_output=True, text=True, timeout=budget).stdout
+        except subprocess.TimeoutExpired:
+            over = budget
+            rows.append({"word": word, "skipped": f"stopped after {budget:.0f} s"})
+            continue
+        data = json.loads(out)
+        rows.append({"word": word, "length": 4 * n, "median": time.perf_counter() - start, "min": None, "runs": 1,
+                     "verdict": f"{len(data['undecided'])} undecided point(s); stable: "
+                                + "; ".join(f"{s['branch']} {s['fixed_point']}: {s['set']}" for s in data["stable"])})
+    return rows
+
+
 def table(rows) -> str:
     out = ["| word | length | median (s) | min (s) | runs | verdict |", "|---|---|---|---|---|---|"]
     for r in rows:
         if "skipped" in r:
             out.append(f"| {r['word']} | | | | | {r['skipped']} |")
         else:
-            out.append(f"| {r['word']} | {r['length']} | {r['median']:.1f} | {r['min']:.1f} | {r['runs']} | "
+            low = "" if r["min"] is None else f"{r['min']:.1f}"
+            out.append(f"| {r['word']} | {r['length']} | {r['median']:.1f} | {low} | {r['runs']} | "
                        f"{r['verdict']} |")
     return "\n".join(out)
 
@@ -104,9 +142,20 @@ def main(argv=None) -> int:
     ap.add_argument("--n", type=int, nargs="+", default=list(NS))
     ap.add_argument("--budget", type=float, default=600.0)
     ap.add_argument("--orbit", action="store_true", help="time `certify orbit` instead (section 'certify orbit')")
+    ap.add_argument("--family", action="store_true", help="time the whole `certify pattern (ab)^n(cb)^n` for "
+                    "n = 12, 20, 40 instead (section 'certify pattern, the family')")
     args = ap.parse_args(argv)
     if args.orbit:
         return bench_orbit(args)
+    if args.family:
+        ns = args.n if args.n != list(NS) else list(FAMILY_NS)
+        body = (f"`python -m certify pattern (ab)^n(cb)^n --json`, the whole command in a fresh process, once each, "
+                f"stopped after {args.budget:.0f} s ({date.today()}, {platform.processor() or platform.machine()}, "
+                f"Python {platform.python_version()}; benchmarks/bench_patterns.py --family):\n\n"
+                + table(bench_family(ns, args.budget)))
+        print(body)
+        files.write_section(BENCH, "certify pattern, the family", body)
+        return 0
     rows = bench_pattern_words(args.n, args.repeat, args.budget)
     body = (f"`certify pattern (ab)^n(cb)^n` over ]0, 1[, cold (caches emptied), median of {args.repeat} "
             f"({date.today()}, {platform.processor() or platform.machine()}, Python {platform.python_version()}; "

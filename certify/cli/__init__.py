@@ -6,11 +6,12 @@
     run ID [ID ...] [--out DIR] [--jobs N]
                                 run some certificates, print their verdicts
     list                        list the certificates: id, paper line, statement
-    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics [--quick]] [--patterns]
+    bench [--repeat N] [--jobs N] [--reduction [--long]] [--numerics [--quick]] [--patterns] [--family]
                                 time the whole run (benchmarks/bench.py), or the
                                 exact simulator and reduction map (bench_reduction.py),
                                 the numerical engines (bench_numerics.py), or
-                                pattern and census (bench_patterns.py, bench_census.py)
+                                pattern and census (bench_patterns.py, bench_census.py),
+                                or pattern on (ab)^n(cb)^n, n = 12, 20, 40 (--family)
     census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
            [--state FILE] [--resume] [--force]
                                 every periodic pattern of blocks up to length L,
@@ -20,6 +21,10 @@
                                 the exact analysis of one periodic word (ababcb,
                                 (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
                                 exist, are feasible, are stable (certify.patterns.pattern)
+    family --n-max N [--out DIR]
+                                the stability windows of (ab)^n(cb)^n for n = 2..N,
+                                checked (one interval, above 7-4√3, hi_n a zero of q_2(0),
+                                disjoint and decreasing): DIR/family.json
     orbit WORD [--json] [--r-range LO HI | --trap R]
                                 the periodic orbits of the reduction with one word:
                                 where they exist, are feasible, attracting, saddles,
@@ -89,7 +94,7 @@ TOPICS = ("claims", "exact", "section5", "island_command", "atlas_command", "sch
 # Each command's topic: running a command imports its topic's module alone (``pattern`` does not load the
 # runner, the plots, numpy...).  tests/cli/test_cli.py checks the table against what the topics register.
 COMMANDS = {**dict.fromkeys(("all", "run", "verify", "list", "bench"), "claims"),
-            **dict.fromkeys(("census", "pattern", "orbit", "particles"), "exact"),
+            **dict.fromkeys(("census", "pattern", "family", "orbit", "particles"), "exact"),
             **dict.fromkeys(("simulate", "identify", "stress", "figures"), "section5"),
             "island": "island_command", "atlas": "atlas_command", "schema": "schemas"}
 EXIT_CODES = {0: "all PASS/ERRATUM/OBSERVED", 1: "a FAIL or a stale report", 2: "usage error",

@@ -92,6 +92,27 @@ def cmd_pattern(args) -> int:
     return 0
 
 
+def cmd_family(args) -> int:
+    """The windows of (ab)^n(cb)^n for n = 2..N (certify.patterns.family_windows): DIR/family.json,
+    written atomically, and one line per n; exit 1 when a check fails (the first n is named)."""
+    from certify.patterns.family_windows import windows
+    from certify.run import files, progress
+    if args.n_max < 2:
+        raise UsageError(f"--n-max: the family starts at n = 2, not {args.n_max}")
+    out = files.ensure_writable(args.out)
+    doc, seconds = windows(args.n_max, progress=progress.Bar("n"))
+    files.write_atomic(out / "family.json", json.dumps(doc, ensure_ascii=False, indent=2, sort_keys=True) + "\n")
+    for rec, sec in zip(doc["windows"], seconds):
+        where = f"]{rec['lo']['digits']}, {rec['hi']['digits']}[" if rec.get("one_interval") \
+            else "; ".join(rec["stable"])
+        print(f"(ab)^{rec['n']}(cb)^{rec['n']}: W = {where} ({sec:.1f} s, {rec['undecided']} undecided)")
+    failure = doc["first_failure"]
+    print("every window one interval above 7-4√3, hi_n a zero of q_2(0), hi_{n+1} < lo_n" if doc["all_hold"]
+          else f"fails at n = {failure['n']}: {failure['reason']}")
+    print(f"wrote {out / 'family.json'}")
+    return 0 if doc["all_hold"] else 1
+
+
 def cmd_orbit(args) -> int:
     """The periodic orbits of the reduction with one word: Markdown on stdout, or JSON
     with --json (schema certify/patterns/orbit.schema.json).  A bad word is a UsageError
@@ -170,7 +191,7 @@ def add_word_options(p, word_help: str, schema: str) -> None:
 
 
 def register(commands) -> None:
-    """The parsers of ``census``, ``pattern``, ``orbit`` and ``particles``."""
+    """The parsers of ``census``, ``pattern``, ``family``, ``orbit`` and ``particles``."""
     p = add_command(commands, "census", cmd_census, help="analyse every periodic pattern of blocks up to a length",
                     description="Every periodic collision word made of the blocks ab, cb, acb, cab (Corollary 4.5) "
                     "of at most L collisions, one per class (rotations, mirror a<->c), analysed two ways: stable "
@@ -196,6 +217,13 @@ def register(commands) -> None:
                     "[ac]b (a and c at once, the symmetric system), ab (three particles); any rotation "
                     "or the mirror a<->c.")
     add_word_options(p, "a period over a, b, c; powers (…)^n; [ac]", "pattern.schema.json")
+
+    p = add_command(commands, "family", cmd_family, help="the stability windows of (ab)^n(cb)^n for n = 2..N",
+                    description="For n = 2..N, the stable set of (ab)^n(cb)^n by `pattern`'s exact analysis, "
+                    "checked to be one interval ]lo_n, hi_n[ above 7-4√3 with hi_n a zero of q_2(0) on its branch, "
+                    "and hi_{n+1} < lo_n.  Writes DIR/family.json (docs/family.md).")
+    p.add_argument("--n-max", type=positive_int, required=True, metavar="N", help="the largest n (at least 2)")
+    p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
 
     p = add_command(commands, "orbit", cmd_orbit,
                     help="certify the periodic orbits of the reduction (Section 4) with one word",

@@ -61,6 +61,7 @@ from certify.dynamics.model import factor_lr
 from certify.dynamics.systems import BY_NAME, candidate_in, run_in
 from certify.errors import UsageError
 
+from . import family
 from .feasibility import NO_X, Analysis, Region, Requirement, prefix_requirements
 from .periodic import compact, read
 from .periodic import show as show_word
@@ -376,6 +377,9 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
         groups.append(new)
     conditions["feasible"] = [_cond(q) for g in groups for q in g]
     diagnosis, before = None, _copy(an.regions)
+    k = family.family_n(normal) if system_name == "four" else None
+    if k is not None and k >= 2 and _family_feasible(an, groups, k):
+        groups = []                 # (ab)^n(cb)^n: the feasible set, from the equivalent reduced conditions
     for m, group in enumerate(groups, 1):
         # the same set whatever the order: those without x first (cheap, no √Δ), so
         # that the regions shrink before the tables with x (norms of twice the degree)
@@ -404,6 +408,26 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res
+
+
+def _family_feasible(an: Analysis, groups: list, n: int) -> bool:
+    """The feasible set of (ab)^n(cb)^n, n ≥ 2: the r < ρ_{n−1} (:func:`.family.turning_bound`)
+    where the reduced conditions hold (:func:`.family.reduced_names`, imposed in the order of the
+    collisions), the same set as all the conditions (the quadrant proposition, proved there).
+    True when some r is left; else ``an`` is restored and the generic route names the collision
+    that goes wrong."""
+    saved = _copy(an.regions)
+    rho = family.turning_bound(n - 1)
+    if rho is not None:
+        family.cut_below(an.regions, rho)
+    keep = family.reduced_names(n)
+    for group in groups:
+        for q in sorted((q for q in group if q.name in keep), key=lambda q: q.has_x):
+            an.impose(q)
+    if any(R.pieces for R in an.regions):
+        return True
+    an.regions = saved
+    return False
 
 
 def discriminant(spec) -> flint.fmpq_poly:

@@ -1,0 +1,90 @@
+"""The stability windows of (ab)^n(cb)^n for n = 2..N, one by one (``certify family``).
+
+For each n, :func:`window` runs ``certify pattern``'s exact analysis of w_n (the family route of
+:mod:`.family`) over ]0, 1[ and reads off its stable set; then it checks, exactly:
+
+1. the stable set is one open interval W_n = ]lo_n, hi_n[ on one branch and fixed point (no
+   isolated point);
+2. lo_n > r* = 7 − 4√3 (comparison of algebraic numbers);
+3. hi_n is a zero of q_2(0) on that branch (CDKK's conjecture, L6): the numerator of u = q_2(0)
+   vanishes there on the branch and its denominator does not (exact zero tests in Q(hi_n)[λ]);
+
+and :func:`check_windows` checks across n that hi_{n+1} < lo_n.  A check that fails is reported
+with its n, never assumed.  The sets are certified as in ``certify pattern`` (algebraic end
+points); the undecided points of the analysis are counted in each record.
+"""
+from __future__ import annotations
+
+import time
+
+import flint
+
+from certify.algebra.algebraic import Algebraic
+from certify.algebra.branches import BRANCH_NAMES, less
+from certify.algebra.poly import to_field
+from certify.dynamics.systems import candidate_in
+
+from .family import family_word
+from .feasibility import vanishes_on_branch
+from .pattern import analyse, end_data
+
+SCHEMA = "certify-family"
+
+
+def r_star() -> Algebraic:
+    """r* = 7 − 4√3, the root of r² − 14r + 1 in ]0, 1[."""
+    return Algebraic.roots(flint.fmpq_poly([1, -14, 1]), 0, 1)[0]
+
+
+def window(n: int) -> tuple[dict, tuple | None]:
+    """The record of w_n (JSON, no timing: a committed report holds none) and its window (lo, hi) as
+    Algebraic numbers (None when the stable set is not one interval)."""
+    word = family_word(n)
+    res = analyse(word, formulas=False)
+    spans, points = res.intervals("stable"), res.points("stable")
+    record = {"n": n, "word": f"(ab)^{n}(cb)^{n}", "stable": [s["set"] for s in res.stable],
+              "undecided": len(res.undecided)}
+    if len(spans) != 1 or points:
+        record.update(one_interval=False)
+        return record, None
+    branch, fixed_point, lo, hi = spans[0]
+    cand = candidate_in("four", word)
+    u = to_field(cand.q0[1])
+    record.update(one_interval=True, branch=BRANCH_NAMES[branch], fixed_point=fixed_point,
+                  lo=end_data(lo), hi=end_data(hi), above_r_star=less(r_star(), lo),
+                  hi_zero_of_u=vanishes_on_branch(cand.spectrum, u.numer, hi, branch)
+                  and not vanishes_on_branch(cand.spectrum, u.denom, hi, branch))
+    return record, (lo, hi)
+
+
+def check_windows(records: list[dict], ends: list) -> dict:
+    """The checks across n: every record one interval above r* with hi_n a zero of q_2(0), and
+    hi_{n+1} < lo_n for consecutive n (exact); the first n where one fails, with the reason."""
+    for rec in records:
+        for key, what in (("one_interval", "the stable set is not one interval"),
+                          ("above_r_star", "lo_n ≤ 7 − 4√3"),
+                          ("hi_zero_of_u", "q_2(0) does not vanish at hi_n on the branch")):
+            if not rec.get(key):
+                return {"all_hold": False, "first_failure": {"n": rec["n"], "reason": what}}
+    for (a, pa), (b, pb) in zip(zip(records, ends), zip(records[1:], ends[1:])):
+        if not less(pb[1], pa[0]):
+            return {"all_hold": False, "first_failure": {"n": b["n"], "reason": f"hi_{b['n']} ≥ lo_{a['n']}"}}
+    return {"all_hold": True, "first_failure": None}
+
+
+def windows(n_max: int, progress=None) -> tuple[dict, list[float]]:
+    """The document of ``certify family --n-max N`` (a record per n = 2..N and the checks) and the
+    seconds each n took (printed, not recorded)."""
+    records, ends, seconds = [], [], []
+    for n in range(2, n_max + 1):
+        if progress:
+            progress(n - 2, n_max - 1, f"n = {n}")
+        start = time.perf_counter()
+        rec, pair = window(n)
+        seconds.append(time.perf_counter() - start)
+        records.append(rec)
+        ends.append(pair)
+    if progress:
+        progress(n_max - 1, n_max - 1, "")
+    doc = {"schema": SCHEMA, "version": 1, "n_max": n_max, "windows": records, **check_windows(records, ends)}
+    return doc, seconds
