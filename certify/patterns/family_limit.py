@@ -2,7 +2,8 @@
 
 Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for every n.
 This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
-parts 5-6 for n > N₀), and that the windows they bound are disjoint and decrease:
+parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-9) that
+on ]0, r_n[ the stable set is everything above a thin strip around the lower end:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -51,13 +52,23 @@ parts 5-6 for n > N₀), and that the windows they bound are disjoint and decrea
 8. **The velocity conditions** (:func:`velocity_facts`, for every n ≥ 8): every collision's pair
    approaches on ]r*, r_n[, in both phases (exact formulas in s̃_k = sin kθ/sin θ, balls over r).
 
-Not proved here (docs/family-limit.md): that the stable set is exactly ]ℓ_n, r_n[ for n > N₀
-(inside: x₊ > 0, p₃(t_{2n}) > 0, p₁(T) > 0, |f'(x₊)| < 1; outside: one condition failing);
-certified per n ≤ N₀ by the family's exact certificates, observed beyond by an independent
+9. **The positions** (:func:`graded_quantities`, :func:`position_facts`, :func:`below_facts`, for every
+   n ≥ 7): p(0) = (1, 0, x) ↦ p(T) is the map Q induced by M on R³/q(0); its entries Q₁₂, Q₂₁, its trace
+   μ + ν and p₃(t_{2n}) - x are exact polynomials in z = r^(n-1), the rest y of λ and K^n/z, whose parts
+   at z = 0 are multiples of one linear form L = 3A + 2C - D (μ + ν: L² + 6r²).  Q₁₂, Q₂₁ > 0 < μ + ν makes
+   the positive fixed point attracting with p₁(T), p₃(t_{2n}) > 0; Q₁₂, Q₂₁ < 0 < μ + ν leaves nothing
+   stable.  Balls: 'inside' from r_n down to a strip η ∈ [η_in, η_out] of the blow-up (width ≤ 3/256 for
+   N₁ = 31), 'below' from the strip down to 0 (three charts).
+
+Not proved here (docs/family-limit.md): which points of that strip are stable (the lower end lies in
+it, so "one interval" is not proved for n > N₀), the arcs above r_n where sin nθ > 0 again, and
+]1/4, 1[; certified per n ≤ N₀ by the family's exact certificates, observed beyond by an independent
 mpmath computation (n = 35, 50, 80 in the tests).
 """
 from __future__ import annotations
 
+import functools
+import itertools
 from fractions import Fraction
 
 import flint
@@ -494,6 +505,355 @@ def _velocity_margins(r: flint.arb, dom: dict, N1: int) -> dict:
     return margins
 
 
+# ------------------------------------------------------------------ 9. the positions, inside and below
+GRADED_VARS = ("z", "y", "A", "B", "C", "D")
+
+
+@functools.cache
+def graded_quantities() -> dict:
+    """The quantities deciding the positions' conditions, as exact polynomials over Q in
+    (z, y, A, B, C, D), where K^n = z·[[A, B], [C, D]] (z = r^(n-1), so A, B, C, D are O(1) in the
+    blow-up) and λ = 1/9 + zλ₁ + z²λ₂ + z³y (λ₁, λ₂ polynomials in A..D from cp(λ) = 0, y the rest):
+    W = w̄(I - K^n) with w̄ = wᵀ(I - K)⁻¹ = (1/3, 2/3) (:func:`check_w_limit`), M as in
+    :func:`period_matrix`, e₁, e₂, e₃ its symmetric functions (e₃ = (ad - bc)² is checked), and
+
+    * ``lambda`` = λ itself, ``G`` = cp(λ)/z³ (its root in y is λ's), ``X`` = -(d + W₁)(λ - a) - (bc + aW₁) (u = cX/Δ),
+      ``Delta`` = Δ = (λ - M₂₂)(λ - a) - cM₃₂, ``Dmix`` = Δ - dX;
+    * ``E`` = (W₁X + Δ)/z: the coefficient of p₃(0) in p₁(T) is Q₁₂ = W₁ + Δ/X = zE/X;
+    * ``Y`` = (M₃₁X + (d + W₁)(M₃₁(λ - M₂₂) + M₃₂M₂₁))/(z³(AD - BC)) (λ cancels, and the division by
+      AD - BC = det(K^n)/z² is exact): the coefficient of p₁(0) in p₃(T) is Q₂₁ = r^{2n} zY/X;
+    * ``S`` = (e₁ - λ)/z²: μ + ν = tr M - λ = z²S (μν = e₃/λ);
+    * ``Z`` = (W₁(Δ - dX) + q₃(t_{2n})Δ)/z: p₃(t_{2n}) = x + zZ/(Δ - dX).
+
+    Every division by a power of z is exact (checked: the lower coefficients vanish identically)."""
+    ctx = flint.fmpq_mpoly_ctx.get(GRADED_VARS, "lex")
+    z, y, A, B, C, D = ctx.gens()
+    third = flint.fmpq(1, 3)
+    a, b, c, d = z * A, z * B, z * C, z * D
+    W1, W2 = third - third * a - 2 * third * c, 2 * third - third * b - 2 * third * d
+    M = [[a + W2 * c + W1 * W1, b + W2 * d + W1 * W2, W1],
+         [c * (d + W1), d * d + c * W2, c],
+         [b * c + a * W1, b * d + a * W2, a]]
+    e1 = M[0][0] + M[1][1] + M[2][2]
+    e2 = sum((M[i][i] * M[j][j] - M[i][j] * M[j][i] for i, j in ((0, 1), (0, 2), (1, 2))), ctx.from_dict({}))
+    e3 = (a * d - b * c) ** 2
+    det = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
+           + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]))
+    if det != e3:
+        raise ArithmeticError("det M ≠ (ad - bc)²")
+
+    def cp(t):
+        return t ** 3 - e1 * t ** 2 + e2 * t - e3
+    lam = ctx.from_dict({}) + flint.fmpq(1, 9)
+    for k in (1, 2):                                   # cp'(1/9) = 1/81 at z = 0
+        lam = lam - 81 * _z_part(cp(lam), k) * z ** k
+    lam = lam + z ** 3 * y
+    X = -(d + W1) * (lam - a) - (b * c + a * W1)
+    Delta = (lam - M[1][1]) * (lam - a) - c * M[2][1]
+    N31 = M[2][0] * (lam - M[1][1]) + M[2][1] * M[1][0]
+    q3Delta = -N31 - W1 * Delta + W2 * c * X           # q₃(t_2n)Δ = (v - W₁ + W₂u)Δ
+    out = {"G": (cp(lam), 3), "X": (X, 0), "Delta": (Delta, 0), "Dmix": (Delta - d * X, 0),
+           "E": (W1 * X + Delta, 1), "Y": (M[2][0] * X + (d + W1) * N31, 3), "S": (e1 - lam, 2),
+           "Z": (W1 * (Delta - d * X) + q3Delta, 1)}
+    qs = {"lambda": lam} | {name: _divide_z(p, k, name) for name, (p, k) in out.items()}
+    qs["Y"], rest = divmod(qs["Y"], A * D - B * C)
+    if rest != 0:
+        raise ArithmeticError("Y is not divisible by AD - BC")
+    return qs
+
+
+def _z_part(p, k: int):
+    """The coefficient of z^k in p (a polynomial in the other variables)."""
+    ctx = p.context()
+    return ctx.from_dict({(0,) + e[1:]: v for e, v in p.to_dict().items() if e[0] == k})
+
+
+def _divide_z(p, k: int, name: str):
+    """p/z^k, exact: ArithmeticError if a term of degree < k in z is left."""
+    if any(e[0] < k for e in p.to_dict()):
+        raise ArithmeticError(f"{name} is not divisible by z^{k}")
+    return p.context().from_dict({(e[0] - k,) + e[1:]: v for e, v in p.to_dict().items()})
+
+
+def _evaluate(p, values: list) -> flint.arb:
+    """p at balls (one per variable of GRADED_VARS), term by term with a table of powers."""
+    degs = p.degrees()
+    powers = []
+    for v, m in zip(values, degs):
+        row = [flint.arb(1)]
+        for _ in range(m):
+            row.append(row[-1] * v)
+        powers.append(row)
+    total = flint.arb(0)
+    for e, coeff in p.to_dict().items():
+        term = flint.arb(coeff)
+        for i, k in enumerate(e):
+            if k:
+                term *= powers[i][k]
+        total += term
+    return total
+
+
+def _blowup_entries(eta: flint.arb, eps: flint.arb) -> tuple[flint.arb, list]:
+    """(r, [A, B, C, D]) at φ = nθ = π - εη, θ = εφ: K^n = r^(n-1)(s̃_n K - r s̃_(n-1) I) with
+    s̃_n = sin εη/sin θ and s̃_(n-1) = sin ε(η + φ)/sin θ (both written with sinc: no 0/0 at ε = 0)."""
+    phi = flint.arb.pi() - eps * eta
+    r = r_of_theta(eps * phi)
+    den = phi * (eps * phi).sinc()
+    sn = eta * (eps * eta).sinc() / den
+    sn1 = (eta + phi) * (eps * (eta + phi)).sinc() / den
+    h = (1 + r) / 2
+    K = [[h * h - r, h], [-r * h, -r]]
+    return r, [sn * K[0][0] - r * sn1, sn * K[0][1], sn * K[1][0], sn * K[1][1] - r * sn1]
+
+
+def _lambda_rest(entries: list, z: flint.arb) -> flint.arb:
+    """A ball holding y, where λ = 1/9 + zλ₁ + z²λ₂ + z³y is the root of cp near 1/9 (the dominant
+    eigenvalue of part 7): G = cp(λ)/z³ has slope 1/81 + O(z) in y and changes sign on it."""
+    G = graded_quantities()["G"]
+    g0 = _evaluate(G, [z, flint.arb(0)] + entries)
+    R = 200 * g0.abs_upper() + 1
+    lo, hi = (_evaluate(G, [z, flint.arb(x)] + entries) for x in (-R, R))
+    if not (lo < 0 < hi):
+        raise ArithmeticError("λ's rest y is not enclosed")
+    return flint.arb(0, R)
+
+
+def position_signs(eta: flint.arb, eps: flint.arb, N1: int) -> dict:
+    """The balls of :func:`graded_quantities` (X, Δ, Δ - dX, E, Y, S, Z) for every n ≥ N₁ with 1/n
+    in ``eps`` and r at η in ``eta`` of the blow-up, z = r^(n-1) in [0, r_{N₁}^(N₁-1)]."""
+    r, entries = _blowup_entries(eta, eps)
+    zmax = upper_end(N1).upper() ** (N1 - 1)
+    z = flint.arb(zmax / 2, zmax / 2)
+    y = _lambda_rest(entries, z)
+    return {name: _evaluate(p, [z, y] + entries) for name, p in graded_quantities().items()
+            if name not in ("G", "lambda")}
+
+
+INSIDE = {"X": -1, "Delta": 1, "Dmix": 1, "E": -1, "Y": -1, "S": 1, "Z": 1}
+BELOW = {"X": -1, "E": 1, "Y": 1, "S": 1}
+
+
+def position_label(eta: flint.arb, eps: flint.arb, N1: int) -> str:
+    """'inside' when every sign of :data:`INSIDE` is proved on the box (then Q₁₂, Q₂₁ > 0, μ + ν > 0
+    and p₃(t_{2n}) > x: the positive fixed point is attracting with p₁(T) > 0 and p₃(t_{2n}) > 0),
+    'below' when those of :data:`BELOW` are (Q₁₂, Q₂₁ < 0, μ + ν > 0: no fixed point with x > 0 is
+    attracting with p₁(T) > 0), else '?'."""
+    v = position_signs(eta, eps, N1)
+
+    def holds(signs):
+        return all((v[k] < 0) if sg < 0 else (v[k] > 0) for k, sg in signs.items())
+    return "inside" if holds(INSIDE) else "below" if holds(BELOW) else "?"
+
+
+def position_strip(e0: Fraction, e1: Fraction, N1: int, start: int = 32, depth: int = 5) -> dict:
+    """On ε ∈ [e0, e1]: [0, 4] cut into ``start`` pieces, each undecided piece halved up to ``depth``
+    times; the pieces labelled 'inside' must be the first ones and those labelled 'below' the last
+    ones, one undecided strip [η_in, η_out] between.  Returns the labelled pieces."""
+    eps = _ball(e0, e1)
+    todo = [(Fraction(4 * k, start), Fraction(4 * (k + 1), start), 0) for k in range(start)]
+    pieces = []
+    while todo:
+        a, b, level = todo.pop(0)
+        label = position_label(_ball(a, b), eps, N1)
+        if label == "?" and level < depth:
+            m = (a + b) / 2
+            todo[:0] = [(a, m, level + 1), (m, b, level + 1)]
+        else:
+            pieces.append([a, b, label])
+    labels = "".join({"inside": "i", "below": "b", "?": "?"}[p[2]] for p in pieces)
+    if not (labels.startswith("i") and labels.endswith("b")) or labels.strip("i").strip("?").strip("b"):
+        raise ArithmeticError(f"the positions are not decided as inside | strip | below on ε ∈ [{e0}, {e1}]: {labels}")
+    undecided = [p for p in pieces if p[2] == "?"]
+    strip = [undecided[0][0], undecided[-1][1]] if undecided else [pieces[labels.rfind("i")][1]] * 2
+    return {"eps": [e0, e1], "pieces": [p for p in pieces if p[2] != "?"], "strip": strip}
+
+
+def position_facts(N1: int, boxes: int = 32, prec: int = 128) -> dict:
+    """For every n ≥ N₁ (≥ 7, for part 7), per ε-box of [0, 1/N₁]: the η-pieces of the blow-up where
+    the positions' conditions all hold ('inside', from η = 0) and where they fail ('below', up to
+    η = 4 > π/(1 + ε), i.e. down to r_{n+1}), and the undecided strip between them."""
+    if N1 < 7:
+        raise ArithmeticError("part 9 needs part 7 (n ≥ 7)")
+    with precision(prec):
+        cut = [Fraction(k, boxes * N1) for k in range(boxes + 1)]
+        return {"N1": N1, "boxes": [position_strip(e0, e1, N1) for e0, e1 in zip(cut, cut[1:])]}
+
+
+def check_positions(facts: dict, prec: int = 200) -> list[str]:
+    """Re-verify :func:`position_facts`: the ε-boxes cover [0, 1/N₁]; on each, the stated pieces with
+    the undecided strip tile [0, 4] in order (inside pieces, strip, below pieces), and every piece's
+    label is recomputed at ``prec`` bits.  The list of failures."""
+    bad = []
+    N1, rows = facts["N1"], facts["boxes"]
+    if N1 < 7:
+        bad.append("part 9 needs n ≥ 7")
+    if rows[0]["eps"][0] != 0 or rows[-1]["eps"][1] < Fraction(1, N1) or any(
+            a["eps"][1] != b["eps"][0] for a, b in zip(rows, rows[1:])):
+        bad.append("the ε-boxes do not cover [0, 1/N1]")
+    with precision(prec):
+        for row in rows:
+            e0, e1 = row["eps"]
+            inside = [p for p in row["pieces"] if p[2] == "inside"]
+            below = [p for p in row["pieces"] if p[2] == "below"]
+            ends_ = [(Fraction(0), row["strip"][0])] if not inside else []
+            tiles = [(p[0], p[1]) for p in inside] + [tuple(row["strip"])] + [(p[0], p[1]) for p in below]
+            if (inside + below != row["pieces"] or ends_ or tiles[0][0] != 0 or tiles[-1][1] != 4
+                    or any(s[1] != t[0] for s, t in zip(tiles, tiles[1:]))):
+                bad.append(f"the pieces do not tile [0, 4] as inside | strip | below on ε ∈ [{e0}, {e1}]")
+                continue
+            eps = _ball(e0, e1)
+            for a, b, label in row["pieces"]:
+                if position_label(_ball(a, b), eps, N1) != label:
+                    bad.append(f"'{label}' not proven on η ∈ [{a}, {b}], ε ∈ [{e0}, {e1}]")
+    return bad
+
+
+def _far_entries(psi: flint.arb, rho: flint.arb, N1: int) -> tuple[flint.arb, list, flint.arb]:
+    """Below r_{n+1}, the chart ψ = π - φ ∈ [0, π], ρ = 1/η ∈ [0, 1/4] (η ≥ 4), ε = ρψ: (ε, [A, B, C, D],
+    z-range) with K^n = (r^(n-1)/ρ)·[[A, B], [C, D]], i.e. the entries ρ(s̃_n K - r s̃_(n-1) I):
+    ρ s̃_n = sin ψ/(ψ φ sinc θ) and ρ s̃_(n-1) = (1 + ρφ) sin(ψ + θ)/((ψ + θ) φ sinc θ), θ = εφ, each written
+    with sinc at the end of [0, π] the box is near; z = η r^(n-1) ≤ π n r^(n-1) ≤ π N₁ r_{N₁}^(N₁-1)."""
+    phi = flint.arb.pi() - psi
+    lo, hi = ends(rho * psi)
+    eps = _ball(_q(max(lo, flint.fmpq(0))), _q(min(hi, flint.fmpq(1, N1))))      # ε = ρψ ≤ 1/N₁
+    theta = eps * phi
+    r = r_of_theta(theta)
+    if psi.upper() < 2:
+        sn = psi.sinc() / (phi * theta.sinc())
+        sn1 = (1 + rho * phi) * (psi + theta).sinc() / (phi * theta.sinc())
+    else:
+        sn = phi.sinc() / (psi * theta.sinc())
+        sn1 = (1 + rho * phi) * (1 - eps) * (phi - theta).sinc() / ((psi + theta) * theta.sinc())
+    h = (1 + r) / 2
+    K = [[h * h - r, h], [-r * h, -r]]
+    zmax = flint.arb.pi() * smallness(N1)[0]
+    return eps, [sn * K[0][0] - r * sn1, sn * K[0][1], sn * K[1][0], sn * K[1][1] - r * sn1], zmax
+
+
+
+def _below_holds(entries: list, zmax: flint.arb) -> bool:
+    """True when :data:`BELOW`'s signs (and Δ > 0) are proved for K^n = z·[[A, B], [C, D]], z ∈ [0, zmax]."""
+    z = flint.arb(zmax.upper() / 2, zmax.upper() / 2)
+    y = _lambda_rest(entries, z)
+    qs = graded_quantities()
+    return all((_evaluate(qs[k], [z, y] + entries) < 0) if sg < 0 else (_evaluate(qs[k], [z, y] + entries) > 0)
+               for k, sg in (BELOW | {"Delta": 1}).items())
+
+
+def far_holds(box: list, N1: int) -> bool | None:
+    """The box [w₀, w₁] × [ρ₀, ρ₁] of the chart ψ = πw, ρ = 1/η (:func:`_far_entries`): None when no n ≥ N₁
+    has a point there (ρ₀ψ₀ > 1/N₁), else whether 'below' is proved on it."""
+    (w0, w1), (r0, r1) = box
+    if flint.arb(flint.fmpq((r0 * w0).numerator, (r0 * w0).denominator)) * flint.arb.pi() > flint.fmpq(1, N1):
+        return None
+    _, entries, zmax = _far_entries(flint.arb.pi() * _ball(w0, w1), _ball(r0, r1), N1)
+    return _below_holds(entries, zmax)
+
+
+def _low_entries(r: flint.arb, N1: int) -> tuple[list, flint.arb]:
+    """Below r* (K has real eigenvalues κ₁ ≥ κ₂ > 0, κ₁ ≤ 1/4): K^n = s_n(K - r²(s_(n-1)/s_n) I) with
+    s_(n-1)/s_n = β/κ₁, β = (1 - g^(n-1))/(1 - g^n) ∈ [(N₁ - 1)/N₁, 1] (g = κ₂/κ₁ ∈ [0, 1]: the mean of
+    g⁰..g^(n-2) is at least that of g⁰..g^(n-1)), and 0 < s_n ≤ n κ₁^(n-1) ≤ N₁ 4^(1-N₁).  ([A, B, C, D], z-range);
+    the discriminant (r* - r)(r** - r)(r + 1)²/16 ≥ 0 is clamped at 0 (a ball reaching past r*)."""
+    t = (r * r - 6 * r + 1) / 4
+    disc = (7 - 4 * flint.arb(3).sqrt() - r) * (7 + 4 * flint.arb(3).sqrt() - r) * (r + 1) ** 2 / 16
+    lo, hi = ends(disc)
+    root = disc.sqrt() if lo > 0 else flint.arb(0, flint.arb(hi).sqrt().upper())    # √[0, hi] ⊂ [0, √hi]
+    k1 = (t + root) / 2
+    beta = _ball(Fraction(N1 - 1, N1), Fraction(1))
+    h = (1 + r) / 2
+    K = [[h * h - r, h], [-r * h, -r]]
+    m = r * r * beta / k1
+    return [K[0][0] - m, K[0][1], K[1][0], K[1][1] - m], N1 * flint.arb(flint.fmpq(1, 4)) ** (N1 - 1)
+
+
+def low_holds(box: list, N1: int) -> bool:
+    """Whether 'below' is proved for every r in the box [r₀, r₁] ∩ ]0, r*] (:func:`_low_entries`)."""
+    (r0, r1), = box
+    entries, zmax = _low_entries(_ball(r0, r1), N1)
+    return _below_holds(entries, zmax)
+
+
+def _leaves(box: list, holds, depth: int) -> list:
+    """Cut ``box`` (a list of rational [lo, hi] sides) in halves along every side until ``holds`` is True
+    or None on each piece, at most ``depth`` times; ArithmeticError if a piece stays undecided."""
+    try:
+        ok = holds(box)
+    except ArithmeticError:              # λ not enclosed on a box this wide: halve it
+        ok = False
+    if ok is None or ok:
+        return [[list(side) for side in box] + ["none" if ok is None else "below"]]
+    if depth == 0:
+        raise ArithmeticError(f"'below' not proven on {box}")
+    halves = [[(a, (a + b) / 2), ((a + b) / 2, b)] for a, b in box]
+    out: list = []
+    for combo in itertools.product(*halves):
+        out += _leaves(list(combo), holds, depth - 1)
+    return out
+
+
+FAR_GRID = ([Fraction(k, 8) for k in range(9)], [Fraction(k, 32) for k in range(9)])   # w = ψ/π, ρ = 1/η
+LOW_GRID = [Fraction(0), Fraction(7, 200), Fraction(7, 100), Fraction(72, 1000)]       # ]0, r*], r* < 0.0718
+
+
+def below_facts(N1: int, depth: int = 6) -> dict:
+    """Every r in ]0, r_{n+1}] is not stable, for every n ≥ N₁ (≥ 7): the leaves of the two charts,
+    (ψ/π, 1/η) ∈ [0, 1] × [0, 1/4] (]r*, r_{n+1}], η ≥ 4) and r ∈ ]0, 72/1000] ∩ ]0, r*], each labelled
+    'below' (proved) or 'none' (no n ≥ N₁ there)."""
+    if N1 < 7:
+        raise ArithmeticError("part 9 needs part 7 (n ≥ 7)")
+    with precision(128):
+        ws, rs = FAR_GRID
+        far = []
+        for w in zip(ws, ws[1:]):
+            for rr in zip(rs, rs[1:]):
+                far += _leaves([w, rr], lambda b: far_holds(b, N1), depth)
+        low = []
+        for rr in zip(LOW_GRID, LOW_GRID[1:]):
+            low += _leaves([rr], lambda b: low_holds(b, N1), depth)
+    return {"N1": N1, "far": far, "low": low}
+
+
+def _tiles(leaves: list, outer: list) -> bool:
+    """Whether the boxes tile ``outer``: inside it, pairwise without common interior, total volume equal."""
+    def vol(b):
+        out = Fraction(1)
+        for a, c in b:
+            out *= c - a
+        return out
+    boxes = [leaf[:-1] for leaf in leaves]
+    if any(not all(o[0] <= a < c <= o[1] for (a, c), o in zip(b, outer)) for b in boxes):
+        return False
+    for i, b in enumerate(boxes):
+        for d in boxes[i + 1:]:
+            if all(a < f and e < c for (a, c), (e, f) in zip(b, d)):
+                return False
+    return sum(map(vol, boxes)) == vol(outer)
+
+
+def check_below(facts: dict, prec: int = 200) -> list[str]:
+    """Re-verify :func:`below_facts` at ``prec`` bits: the leaves tile each chart, and every leaf's label
+    is recomputed ('none': ρ₀ψ₀ > 1/N₁).  The list of failures."""
+    bad = []
+    N1 = facts["N1"]
+    ws, rs = FAR_GRID
+    if N1 < 7:
+        bad.append("part 9 needs n ≥ 7")
+    if not _tiles(facts["far"], [[ws[0], ws[-1]], [rs[0], rs[-1]]]):
+        bad.append("the far chart's leaves do not tile [0, 1] × [0, 1/4]")
+    if not _tiles(facts["low"], [[LOW_GRID[0], LOW_GRID[-1]]]) or not (
+            flint.arb(flint.fmpq(LOW_GRID[-1].numerator, LOW_GRID[-1].denominator)) > 7 - 4 * flint.arb(3).sqrt()):
+        bad.append("the low chart's leaves do not tile ]0, r*]")
+    with precision(prec):
+        for leaf in facts["far"]:
+            if {True: "below", None: "none", False: "?"}[far_holds(leaf[:-1], N1)] != leaf[-1]:
+                bad.append(f"'{leaf[-1]}' not proven on the far box {leaf[:-1]}")
+        for leaf in facts["low"]:
+            if not (leaf[-1] == "below" and low_holds(leaf[:-1], N1)):
+                bad.append(f"'{leaf[-1]}' not proven on the low box {leaf[:-1]}")
+    return bad
+
 def check_w_limit() -> bool:
     """wᵀ(I - K)⁻¹ = (1/3, 2/3) for every r (exact: (1/3, 2/3)(I - K) = wᵀ as polynomials in r)."""
     K, w = block()
@@ -509,7 +869,8 @@ def _q(x) -> Fraction:
 
 
 def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
-    """The facts of parts 1-3 as rational statements a checker re-verifies (:func:`check`):
+    """The facts of parts 1-9 (parts 4-9 under their keys) as rational statements a checker
+    re-verifies (:func:`check`); for parts 1-3:
     the block identities; s* and κ in rational intervals; for ε in each of ``boxes`` equal
     boxes covering [0, 1/N₀], a rational interval holding s_hi(ε) and |s_hi(ε) - s*| ≤ C ε₁²
     (ε₁ the box's right end) with one rational C; and that r_n decreases (exact: a = 3 + 4cos(π/n) increases in n, and
@@ -531,7 +892,8 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
             "kappa": [_q(ends(kap)[0]), _q(ends(kap)[1])], "C": C, "boxes": rows,
             "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec),
             "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit(),
-            "velocity": velocity_facts(max(N0 + 1, 8))}
+            "velocity": velocity_facts(max(N0 + 1, 8)), "positions": position_facts(max(N0 + 1, 7)),
+            "below": below_facts(max(N0 + 1, 7))}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -567,6 +929,10 @@ def check(facts: dict, prec: int = 200) -> list[str]:
         bad += check_dominant(facts["dominant"])
     if "velocity" in facts:
         bad += check_velocity(facts["velocity"])
+    if "positions" in facts:
+        bad += check_positions(facts["positions"])
+    if "below" in facts:
+        bad += check_below(facts["below"])
     return bad
 
 
