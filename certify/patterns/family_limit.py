@@ -58,17 +58,20 @@ on ]0, r_n[ the stable set is everything above a thin strip around the lower end
    at z = 0 are multiples of one linear form L = 3A + 2C - D (μ + ν: L² + 6r²).  Q₁₂, Q₂₁ > 0 < μ + ν makes
    the positive fixed point attracting with p₁(T), p₃(t_{2n}) > 0; Q₁₂, Q₂₁ < 0 < μ + ν leaves nothing
    stable.  Balls: 'inside' from r_n down to a strip η ∈ [η_in, η_out] of the blow-up (width ≤ 3/256 for
-   N₁ = 31), 'below' from the strip down to 0 (three charts).
+   N₁ = 31), 'below' from the strip down to 0 (three charts), and inside the strip L increasing with
+   the O(z) rests bounded (:func:`thin_strip`): the undecided set is one interval I_n of η-length
+   ≤ 2.87·10⁻³⁵ for every n ≥ 31.
 
-Not proved here (docs/family-limit.md): which points of that strip are stable (the lower end lies in
-it, so "one interval" is not proved for n > N₀), the arcs above r_n where sin nθ > 0 again, and
-]1/4, 1[; certified per n ≤ N₀ by the family's exact certificates, observed beyond by an independent
-mpmath computation (n = 35, 50, 80 in the tests).
+Not proved here (docs/family-limit.md): which points of I_n are stable (the stable set's lower end lies
+in it, so "exactly one interval" is not proved for n > N₀), the arcs above r_n where sin nθ > 0 again,
+and ]1/4, 1[; certified per n ≤ N₀ by the family's exact certificates, observed beyond by an
+independent mpmath computation (n = 35, 50, 80 in the tests).
 """
 from __future__ import annotations
 
 import functools
 import itertools
+import math
 from fractions import Fraction
 
 import flint
@@ -666,13 +669,91 @@ def position_strip(e0: Fraction, e1: Fraction, N1: int, start: int = 32, depth: 
         raise ArithmeticError(f"the positions are not decided as inside | strip | below on ε ∈ [{e0}, {e1}]: {labels}")
     undecided = [p for p in pieces if p[2] == "?"]
     strip = [undecided[0][0], undecided[-1][1]] if undecided else [pieces[labels.rfind("i")][1]] * 2
-    return {"eps": [e0, e1], "pieces": [p for p in pieces if p[2] != "?"], "strip": strip}
+    row = {"eps": [e0, e1], "pieces": [p for p in pieces if p[2] != "?"], "strip": strip}
+    row["thin"] = _round_up(thin_strip(row, N1))
+    return row
+
+
+def _round_up(x: Fraction) -> Fraction:
+    """A rational with 3 significant digits at least 1.01 x (room for the re-check at another precision)."""
+    e = 0
+    while x * 10 ** e < 100:
+        e += 1
+    return Fraction(math.ceil(x * Fraction(101, 100) * 10 ** e), 10 ** e)
+
+
+def _sinc_series(u0: flint.arb, scale: flint.arb) -> flint.arb_series:
+    """sinc(u0 + scale·t) to first order in t, for |u0| ≤ 1: sinc'(u) = -u j(u), j(u) = (sin u - u cos u)/u³
+    = 1/3 - u²/30 + u⁴/840 - … ∈ [1/3 - u²/30, 1/3] (an alternating series with decreasing terms)."""
+    U = u0.abs_upper()
+    if not U <= 1:
+        raise ArithmeticError("sinc's slope bound needs |u| ≤ 1")
+    j = flint.arb(flint.fmpq(1, 3)) - U * U / 60 + flint.arb(0, (U * U / 60).upper())
+    return flint.arb_series([u0.sinc(), -u0 * j * scale], prec=2)
+
+
+def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
+    """dL/dη on a box, L = 3A + 2C - D = s̃_n(3K₁₁ + 2K₂₁ - K₂₂) - 2r s̃_(n-1) in the blow-up of
+    :func:`_blowup_entries` (first-order series in η, r = r(θ) through cos and √)."""
+    t = flint.arb_series([eta, 1], prec=2)
+    phi = flint.arb.pi() - eps * t
+    theta = eps * phi
+    a = 3 + 4 * theta.cos()
+    r = 1 / (a + (a * a - 1).sqrt())
+    phi0 = flint.arb.pi() - eps * eta
+    den = phi * _sinc_series(eps * phi0, -eps * eps)
+    sn = t * _sinc_series(eps * eta, eps) / den
+    sn1 = (phi + t) * _sinc_series(eps * (phi0 + eta), eps * (1 - eps)) / den
+    h = (1 + r) / 2
+    L = sn * (3 * (h * h - r) - 2 * r * h + r) - 2 * r * sn1
+    return L.coeffs()[1]
+
+
+@functools.cache
+def _rests() -> dict:
+    """(E - L/27)/z, (Y - L/9)/z, (Z + L/81)/z with their weights 27, 9, 81: E = (L + 27z·rest)/27,
+    Y = (L + 9z·rest)/9, Z = -(L - 81z·rest)/81."""
+    qs = graded_quantities()
+    ctx = qs["E"].context()
+    _, _, A, B, C, D = ctx.gens()
+    L = 3 * A + 2 * C - D
+    return {"E": (_divide_z(qs["E"] - L / 27, 1, "E"), 27), "Y": (_divide_z(qs["Y"] - L / 9, 1, "Y"), 9),
+            "Z": (_divide_z(qs["Z"] + L / 81, 1, "Z"), 81)}
+
+
+def thin_strip(row: dict, N1: int, pieces: int = 8) -> Fraction:
+    """On the ε-box and strip [η_in, η_out] of a :func:`position_strip` row: L is increasing (dL/dη ≥ m > 0)
+    and |weight·rest| ≤ B for E, Y, Z, while X < 0 < Δ, Δ - dX and S > 0 hold; so 'inside' holds wherever
+    L < -τ and 'below' wherever L > τ, τ = B r_{N₁}^(N₁-1), and the undecided set is inside one interval of
+    η-length ≤ 2τ/m.  Returns that bound (rational), ArithmeticError if a ball does not decide."""
+    eps = _ball(*row["eps"])
+    a, b = row["strip"]
+    cut = [a + (b - a) * k / pieces for k in range(pieces + 1)]
+    zmax = upper_end(N1).upper() ** (N1 - 1)
+    z = flint.arb(zmax / 2, zmax / 2)
+    m, B = None, flint.arb(0)
+    for e0, e1 in zip(cut, cut[1:]):
+        eta = _ball(e0, e1)
+        slope = l_slope(eta, eps)
+        if not slope > 0:
+            raise ArithmeticError(f"dL/dη > 0 not proven on η ∈ [{e0}, {e1}]")
+        m = slope if m is None else m.min(slope)
+        _, entries = _blowup_entries(eta, eps)
+        y = _lambda_rest(entries, z)
+        v = position_signs(eta, eps, N1)
+        if not (v["X"] < 0 and v["Delta"] > 0 and v["Dmix"] > 0 and v["S"] > 0):
+            raise ArithmeticError(f"X < 0 < Δ, Δ - dX, S not proven on η ∈ [{e0}, {e1}]")
+        for rest, weight in _rests().values():
+            B = B.max(weight * _evaluate(rest, [z, y] + entries).abs_upper())
+    width = 2 * B * zmax / m.lower()
+    return _q(ends(width)[1])
 
 
 def position_facts(N1: int, boxes: int = 32, prec: int = 128) -> dict:
     """For every n ≥ N₁ (≥ 7, for part 7), per ε-box of [0, 1/N₁]: the η-pieces of the blow-up where
     the positions' conditions all hold ('inside', from η = 0) and where they fail ('below', up to
-    η = 4 > π/(1 + ε), i.e. down to r_{n+1}), and the undecided strip between them."""
+    η = 4 > π/(1 + ε), i.e. down to r_{n+1}), the strip between them, and ``thin``: a bound of the
+    η-length of the one interval of that strip where neither is proved (:func:`thin_strip`)."""
     if N1 < 7:
         raise ArithmeticError("part 9 needs part 7 (n ≥ 7)")
     with precision(prec):
@@ -682,8 +763,9 @@ def position_facts(N1: int, boxes: int = 32, prec: int = 128) -> dict:
 
 def check_positions(facts: dict, prec: int = 200) -> list[str]:
     """Re-verify :func:`position_facts`: the ε-boxes cover [0, 1/N₁]; on each, the stated pieces with
-    the undecided strip tile [0, 4] in order (inside pieces, strip, below pieces), and every piece's
-    label is recomputed at ``prec`` bits.  The list of failures."""
+    the undecided strip tile [0, 4] in order (inside pieces, strip, below pieces), every piece's
+    label is recomputed at ``prec`` bits, and the strip's undecided interval (:func:`thin_strip`) is
+    at most the stated width.  The list of failures."""
     bad = []
     N1, rows = facts["N1"], facts["boxes"]
     if N1 < 7:
@@ -706,6 +788,11 @@ def check_positions(facts: dict, prec: int = 200) -> list[str]:
             for a, b, label in row["pieces"]:
                 if position_label(_ball(a, b), eps, N1) != label:
                     bad.append(f"'{label}' not proven on η ∈ [{a}, {b}], ε ∈ [{e0}, {e1}]")
+            try:
+                if not thin_strip(row, N1) <= row["thin"]:
+                    bad.append(f"the undecided interval is not proven ≤ {row['thin']} wide on ε ∈ [{e0}, {e1}]")
+            except ArithmeticError as e:
+                bad.append(f"the strip is not proven thin on ε ∈ [{e0}, {e1}]: {e}")
     return bad
 
 
