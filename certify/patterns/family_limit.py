@@ -2,8 +2,8 @@
 
 Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for every n.
 This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
-parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-9) that
-on ]0, r_n[ the stable set is everything above a thin strip around the lower end:
+parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-10) that
+on ]0, 1/4] the stable set is everything between r_n and a thin strip around the lower end:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -62,10 +62,14 @@ on ]0, r_n[ the stable set is everything above a thin strip around the lower end
    the O(z) rests bounded (:func:`thin_strip`): the undecided set is one interval I_n of η-length
    ≤ 2.87·10⁻³⁵ for every n ≥ 31.
 
+10. **Above r_n, up to 1/4** (:func:`arc_facts`, for every n ≥ 7): where π < nθ ≤ 2π, u ≤ 0 (part 7);
+    where nθ > 2π, some b of the ab-phase has sin j'θ ≤ -min(2/n, sin θ_max, sin(3θ_max/2)), and its pair
+    separates (part 8's formula): nothing in ]r_n, 1/4] is stable.
+
 Not proved here (docs/family-limit.md): which points of I_n are stable (the stable set's lower end lies
-in it, so "exactly one interval" is not proved for n > N₀), the arcs above r_n where sin nθ > 0 again,
-and ]1/4, 1[; certified per n ≤ N₀ by the family's exact certificates, observed beyond by an
-independent mpmath computation (n = 35, 50, 80 in the tests).
+in it, so "exactly one interval" is not proved for n > N₀), and ]1/4, 1[; certified per n ≤ N₀ by the
+family's exact certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in
+the tests).
 """
 from __future__ import annotations
 
@@ -634,7 +638,7 @@ def position_signs(eta: flint.arb, eps: flint.arb, N1: int) -> dict:
 
 
 INSIDE = {"X": -1, "Delta": 1, "Dmix": 1, "E": -1, "Y": -1, "S": 1, "Z": 1}
-BELOW = {"X": -1, "E": 1, "Y": 1, "S": 1}
+BELOW = {"X": -1, "Delta": 1, "E": 1, "Y": 1, "S": 1}
 
 
 def position_label(eta: flint.arb, eps: flint.arb, N1: int) -> str:
@@ -820,12 +824,12 @@ def _far_entries(psi: flint.arb, rho: flint.arb, N1: int) -> tuple[flint.arb, li
 
 
 def _below_holds(entries: list, zmax: flint.arb) -> bool:
-    """True when :data:`BELOW`'s signs (and Δ > 0) are proved for K^n = z·[[A, B], [C, D]], z ∈ [0, zmax]."""
+    """True when :data:`BELOW`'s signs are proved for K^n = z·[[A, B], [C, D]], z ∈ [0, zmax]."""
     z = flint.arb(zmax.upper() / 2, zmax.upper() / 2)
     y = _lambda_rest(entries, z)
     qs = graded_quantities()
     return all((_evaluate(qs[k], [z, y] + entries) < 0) if sg < 0 else (_evaluate(qs[k], [z, y] + entries) > 0)
-               for k, sg in (BELOW | {"Delta": 1}).items())
+               for k, sg in BELOW.items())
 
 
 def far_holds(box: list, N1: int) -> bool | None:
@@ -941,6 +945,52 @@ def check_below(facts: dict, prec: int = 200) -> list[str]:
                 bad.append(f"'{leaf[-1]}' not proven on the low box {leaf[:-1]}")
     return bad
 
+# ------------------------------------------------------------------ 10. above r_n, up to 1/4
+COS_THETA_MAX = flint.fmpq(-7, 32)     # cos θ = t/(2r) at r = 1/4; θ increases with r on ]r*, 1[
+
+
+def arc_facts(N1: int) -> dict:
+    """For every n ≥ N₁ (≥ 7) and every r in ]r*, 1/4] with nθ > 2π, a b of the ab-phase comes with its
+    pair separating: no stable point.  Proof: θ ≤ θ_max < 2π/3 (cos θ_max = -7/32 > -1/2); j₀ the largest j
+    with jθ < 2π (j₀ ≤ n - 1 as nθ > 2π, j₀θ ≥ 2π - θ > π); if j₀θ ≤ 2π - θ/2 take j' = j₀, else j' = j₀ - 1:
+    then 2π - j'θ ∈ [θ/2, 3θ/2] ⊂ ]0, π[, so sin j'θ ≤ -m, m = min(sin(θ/2), sin θ, sin(3θ/2))
+    ≥ min(2/n, sin θ_max, sin(3θ_max/2)) on [2π/n, θ_max].  Before the j'-th b (part 8's formula, j = j' - 1)
+    the bracket times sin θ is rh sin j'θ - u(K₁₁ sin(j'-1)θ - r sin(j'-2)θ) ≤ rh(-m + C_u δ_n h²), as
+    |u| ≤ C_u|c| (part 7), |c| = rh r^(n-1)|sin nθ|/sin θ ≤ rh δ_n (δ_n = n4^(1-n)) and K₁₁ + r = h² ≤ 25/64.
+    So q₂ ≥ 0 there when 2 > C_u(25/64) n²4^(1-n) and min(sin θ_max, sin(3θ_max/2)) > C_u(25/64) δ_n, both
+    decreasing in n: the margins at N₁ are returned (rational lower bounds)."""
+    if N1 < 7:
+        raise ArithmeticError("part 10 needs part 7 (n ≥ 7)")
+    Cu = flint.arb(_fmpq(dominant_facts(N1)["Cu"]))
+    with precision(128):
+        c = flint.arb(COS_THETA_MAX)
+        if not c > flint.fmpq(-1, 2):
+            raise ArithmeticError("θ_max < 2π/3 not proven")
+        theta = c.acos()
+        h2 = flint.arb(flint.fmpq(25, 64))
+        dn = N1 * flint.arb(flint.fmpq(1, 4)) ** (N1 - 1)
+        m1 = 2 - Cu * h2 * N1 * dn
+        m2 = theta.sin().min((3 * theta / 2).sin()) - Cu * h2 * dn
+        if not (m1 > 0 and m2 > 0):
+            raise ArithmeticError("the separating b is not proven")
+        return {"N1": N1, "r": [None, Fraction(1, 4)], "margins": [_q(ends(m1)[0]), _q(ends(m2)[0])]}
+
+
+def _fmpq(x: Fraction) -> flint.fmpq:
+    return flint.fmpq(x.numerator, x.denominator)
+
+
+def check_arcs(facts: dict) -> list[str]:
+    """Recompute :func:`arc_facts`: the stated margins must be positive and at most the recomputed ones."""
+    try:
+        new = arc_facts(facts["N1"])
+    except ArithmeticError as e:
+        return [f"part 10 does not hold for N1 = {facts['N1']}: {e}"]
+    if facts["r"] != new["r"]:
+        return [f"part 10 is proved up to r = 1/4, not {facts['r'][1]}"]
+    return [f"arc margin {m} not implied" for m, k in zip(facts["margins"], new["margins"]) if not 0 < m <= k]
+
+
 def check_w_limit() -> bool:
     """wᵀ(I - K)⁻¹ = (1/3, 2/3) for every r (exact: (1/3, 2/3)(I - K) = wᵀ as polynomials in r)."""
     K, w = block()
@@ -956,7 +1006,7 @@ def _q(x) -> Fraction:
 
 
 def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
-    """The facts of parts 1-9 (parts 4-9 under their keys) as rational statements a checker
+    """The facts of parts 1-10 (parts 4-10 under their keys) as rational statements a checker
     re-verifies (:func:`check`); for parts 1-3:
     the block identities; s* and κ in rational intervals; for ε in each of ``boxes`` equal
     boxes covering [0, 1/N₀], a rational interval holding s_hi(ε) and |s_hi(ε) - s*| ≤ C ε₁²
@@ -980,7 +1030,7 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
             "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec),
             "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit(),
             "velocity": velocity_facts(max(N0 + 1, 8)), "positions": position_facts(max(N0 + 1, 7)),
-            "below": below_facts(max(N0 + 1, 7))}
+            "below": below_facts(max(N0 + 1, 7)), "arcs": arc_facts(max(N0 + 1, 7))}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -1020,6 +1070,8 @@ def check(facts: dict, prec: int = 200) -> list[str]:
         bad += check_positions(facts["positions"])
     if "below" in facts:
         bad += check_below(facts["below"])
+    if "arcs" in facts:
+        bad += check_arcs(facts["arcs"])
     return bad
 
 

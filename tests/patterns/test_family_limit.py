@@ -73,10 +73,10 @@ def test_s_hi_formula_against_the_direct_difference():
         assert (F.s_hi(flint.arb(0)) - F.s_star()).abs_upper() < flint.arb(2) ** -250
 
 
-def _check_but_part_9(facts):
-    """F.check on the facts without part 9's keys (checked by their own tests): a mutant of another part
-    must fail on its own."""
-    return F.check({k: v for k, v in facts.items() if k not in ("positions", "below")})
+def _check_but_parts_9_10(facts):
+    """F.check on the facts without the keys of parts 9 and 10 (checked by their own tests): a mutant of
+    another part must fail on its own."""
+    return F.check({k: v for k, v in facts.items() if k not in ("positions", "below", "arcs")})
 
 
 @pytest.fixture(scope="module")
@@ -92,28 +92,28 @@ def test_mutant_smaller_constant_fails(small):
     import copy
     facts = copy.deepcopy(small)
     facts["C"] = Fraction(1, 3)                       # below κ ≈ 0.418: |s_hi - s*| ≤ ε²/3 is false
-    assert any("C ε²" in b for b in _check_but_part_9(facts))
+    assert any("C ε²" in b for b in _check_but_parts_9_10(facts))
 
 
 def test_mutant_widened_box_fails(small):
     import copy
     facts = copy.deepcopy(small)
     facts["boxes"][-1]["eps"][1] = Fraction(1, 10)    # the last box widened to ε = 1/10
-    assert any("not in" in b for b in _check_but_part_9(facts))
+    assert any("not in" in b for b in _check_but_parts_9_10(facts))
 
 
 def test_mutant_shifted_s_star_fails(small):
     import copy
     facts = copy.deepcopy(small)
     facts["s_star"] = [facts["s_star"][0] + Fraction(1, 10 ** 12), facts["s_star"][1] + Fraction(1, 10 ** 12)]
-    assert any("s_star" in b for b in _check_but_part_9(facts))
+    assert any("s_star" in b for b in _check_but_parts_9_10(facts))
 
 
 def test_mutant_gap_in_the_cover_fails(small):
     import copy
     facts = copy.deepcopy(small)
     del facts["boxes"][3]
-    assert "the boxes do not cover [0, 1/N0]" in _check_but_part_9(facts)
+    assert "the boxes do not cover [0, 1/N0]" in _check_but_parts_9_10(facts)
 
 
 # ------------------------------------------------------------------ the lower end
@@ -176,21 +176,21 @@ def test_mutant_narrowed_strip_fails(facts):
     f = copy.deepcopy(facts)
     row = f["lower"]["boxes"][-1]
     row["eta"][1] = row["eta"][0]                     # the strip shrunk to its left end
-    assert any("F̂ > 0 not proven" in b for b in _check_but_part_9(f))
+    assert any("F̂ > 0 not proven" in b for b in _check_but_parts_9_10(f))
 
 
 def test_mutant_lower_box_widened_fails(facts):
     import copy
     f = copy.deepcopy(facts)
     f["lower"]["boxes"][-1]["eps"][1] = Fraction(1, 5)   # ε up to 1/5: n ≥ 5 is not proved
-    assert _check_but_part_9(f)
+    assert _check_but_parts_9_10(f)
 
 
 def test_mutant_margin_too_large_fails(facts):
     import copy
     f = copy.deepcopy(facts)
     f["lower"]["boxes"][0]["margin"] = Fraction(3)       # more room than π/(1 + ε) - η₊ ≈ 2.2
-    assert any("margin" in b for b in _check_but_part_9(f))
+    assert any("margin" in b for b in _check_but_parts_9_10(f))
 
 
 @pytest.mark.parametrize("n", [6, 7, 10])
@@ -250,14 +250,14 @@ def test_mutant_dominant_lambda_shifted_fails(facts):
     import copy
     f = copy.deepcopy(facts)
     f["dominant"]["lambda"] = [Fraction(1, 8), Fraction(1, 7)]
-    assert any("λ not in" in b for b in _check_but_part_9(f))
+    assert any("λ not in" in b for b in _check_but_parts_9_10(f))
 
 
 def test_mutant_dominant_range_widened_fails(facts):
     import copy
     f = copy.deepcopy(facts)
     f["dominant"]["r"] = [Fraction(0), Fraction(1, 2)]
-    assert any("]0, 1/4]" in b for b in _check_but_part_9(f))
+    assert any("]0, 1/4]" in b for b in _check_but_parts_9_10(f))
 
 
 # ------------------------------------------------------------------ the velocity conditions
@@ -299,7 +299,7 @@ def test_mutant_velocity_margin_inflated_fails(facts):
     f = copy.deepcopy(facts)
     key = next(iter(f["velocity"]["margins"]))
     f["velocity"]["margins"][key] = Fraction(1, 2)
-    assert any("velocity margin" in b for b in _check_but_part_9(f))
+    assert any("velocity margin" in b for b in _check_but_parts_9_10(f))
 
 
 # ------------------------------------------------------------------ the positions (part 9)
@@ -443,3 +443,29 @@ def test_l_slope_against_a_difference_quotient():
         quotient = (L(flint.fmpq(9, 10) + h) - L(flint.fmpq(9, 10) - h)) / (2 * h)
         slope = F.l_slope(flint.arb(flint.fmpq(9, 10)), eps)
         assert slope.overlaps(quotient) and slope.rad() < flint.arb(10) ** -6
+
+
+# ------------------------------------------------------------------ above r_n (part 10)
+def test_arcs_above_r_n_against_mpmath(facts):
+    """n = 35: where nθ > 2π (and at r = 1/5, 1/4) some velocity condition of the reference fails, and
+    the point is not stable; part 10's margins are positive from N₁ = 7 on."""
+    assert facts["arcs"]["N1"] == 31 and _facts_from_7()["arcs"]["N1"] == 7
+    assert all(m > 0 for m in facts["arcs"]["margins"])
+    n = 35
+    with mp.workdps(4 * n + 60):
+        def r_at(phi):
+            a_ = 3 + 4 * mp.cos(phi / n)
+            return a_ - mp.sqrt(a_ * a_ - 1)
+        for r in (r_at(2.5 * mp.pi), r_at(4.5 * mp.pi), r_at(10.2 * mp.pi), mp.mpf("0.2"), mp.mpf("0.25")):
+            assert not _velocity_signs(n, r)
+            assert not ref.analyse(n, r)[0]
+
+
+def test_mutant_arc_margin_inflated_fails(facts):
+    import copy
+    f = copy.deepcopy(facts["arcs"])
+    f["margins"][1] = Fraction(1, 2)                  # above min(sin θ_max, sin(3θ_max/2)) ≈ 0.439
+    assert any("arc margin" in b for b in F.check_arcs(f))
+    g = copy.deepcopy(facts["arcs"])
+    g["r"] = [None, Fraction(1, 2)]
+    assert any("1/4" in b for b in F.check_arcs(g))
