@@ -3,7 +3,7 @@
 Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for every n.
 This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
 parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-10) that
-on ]0, 1/4] the stable set is everything between r_n and a thin strip around the lower end:
+on ]0, 5/8] the stable set is everything between r_n and a thin strip around the lower end:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -62,12 +62,13 @@ on ]0, 1/4] the stable set is everything between r_n and a thin strip around the
    the O(z) rests bounded (:func:`thin_strip`): the undecided set is one interval I_n of η-length
    ≤ 2.87·10⁻³⁵ for every n ≥ 31.
 
-10. **Above r_n, up to 1/4** (:func:`arc_facts`, for every n ≥ 7): where π < nθ ≤ 2π, u ≤ 0 (part 7);
-    where nθ > 2π, some b of the ab-phase has sin j'θ ≤ -min(2/n, sin θ_max, sin(3θ_max/2)), and its pair
-    separates (part 8's formula): nothing in ]r_n, 1/4] is stable.
+10. **Above r_n** (:func:`arc_facts`, for every n ≥ 7): where π < nθ ≤ 2π, u ≤ 0 (part 7); where
+    nθ > 2π, some b of the ab-phase has sin j'θ ≤ -min(2/n, sin θ_max, sin(3θ_max/2)), and its pair
+    separates (part 8's formula): nothing in ]r_n, R] is stable, R = 5/8 for N₁ = 31 (part 7 re-proved on
+    boxes of ]1/4, 5/8]), 1/4 for N₁ = 7.
 
 Not proved here (docs/family-limit.md): which points of I_n are stable (the stable set's lower end lies
-in it, so "exactly one interval" is not proved for n > N₀), and ]1/4, 1[; certified per n ≤ N₀ by the
+in it, so "exactly one interval" is not proved for n > N₀), and ]R, 1[; certified per n ≤ N₀ by the
 family's exact certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in
 the tests).
 """
@@ -406,11 +407,11 @@ def prove_lower(N0: int = 30, boxes: int = 32, pieces: int = 256, prec: int = 12
 R_MAX = flint.fmpq(1, 4)     # part 7 holds for r in ]0, 1/4]: the spectral radius of K is ≤ 1/4 there
 
 
-def dominant_facts(N1: int) -> dict:
-    """For every n ≥ N₁ and every r ∈ ]0, 1/4], with balls over that whole range (no boxes):
+def dominant_facts(N1: int, r0: Fraction = Fraction(0), r1: Fraction = Fraction(1, 4)) -> dict:
+    """For every n ≥ N₁ and every r ∈ ]r₀, r₁] (by default ]0, 1/4]), with balls over that whole range:
 
-    * the spectral radius of K is ≤ 1/4 (r ≥ r*: it is r; r < r*: the larger root is ≤ t ≤ 1/4),
-      so |s_j| ≤ j 4^{1-j} and |(K^n)_ij| ≤ n 4^{1-n}(|K_ij| + r) ≤ δ = N₁ 4^{1-N₁};
+    * the spectral radius of K is ≤ ρ̄ = max(r₁, 1/4) (r ≥ r*: it is r; r < r*: the larger root is
+      ≤ t ≤ 1/4), so |s_j| ≤ j ρ̄^{j-1} and |(K^n)_ij| ≤ n ρ̄^{n-1}(|K_ij| + r) ≤ δ = N₁ ρ̄^{N₁-1} max(1, |K_ij| + r);
     * wᵀ(I - K)⁻¹ = (1/3, 2/3) exactly (:func:`check_w_limit`), so W = (1/3, 2/3) + O(δ) and
       M = [[1/9, 2/9, 1/3], [0, 0, 0], [0, 0, 0]] + O(δ) (:func:`period_matrix`'s formula);
     * cp changes sign on [1/9 - ω, 1/9 + ω] (ω = 16δ rounded up): a real eigenvalue λ there; the other two
@@ -420,15 +421,15 @@ def dominant_facts(N1: int) -> dict:
       P₂₂ = d in balls with q₃(t_{2n}) - d < 0 < λ - d²: by part 2, **u has the sign of s_n**.
 
     Returns the rational bounds; ArithmeticError when a ball does not decide."""
+    rbar = _fmpq(max(r1, Fraction(1, 4)))
     with precision(128):
-        r = flint.arb(R_MAX / 2, R_MAX / 2)                       # ]0, 1/4] (and 0)
+        r = _ball(r0, r1)                                          # ]r₀, r₁] (and r₀)
         h = (1 + r) / 2
         K, w, N = _k_w_n(r)
-        if not max(abs(k) for row in K for k in row) + r < 1:
-            raise ArithmeticError("|K_ij| + r < 1 not proven on ]0, 1/4]")
-        if not (N1 + 1) * R_MAX < N1:
-            raise ArithmeticError("n 4^(1-n) is not proven to decrease")
-        delta = N1 * flint.arb(R_MAX) ** (N1 - 1)
+        kmax = (max(abs(k) for row in K for k in row) + r).upper()
+        if not (N1 + 1) * rbar < N1:
+            raise ArithmeticError("n ρ̄^(n-1) is not proven to decrease")
+        delta = N1 * flint.arb(rbar) ** (N1 - 1) * (kmax if kmax > 1 else 1)
         small = flint.arb(0, delta.upper())
         width = (16 * delta).upper().mid().fmpq()
         a = b = c = d = small
@@ -438,7 +439,7 @@ def dominant_facts(N1: int) -> dict:
         M = [[a + W2 * c + W1 * W1, b + W2 * d + W1 * W2, W1],
              [c * (d + W1), d * d + c * W2, c],
              [b * c + a * W1, b * d + a * W2, a]]
-        det = flint.arb(0, (R_MAX ** (4 * N1)))                    # det M = r^{4n} ∈ [0, 4^{-4N₁}]
+        det = flint.arb(0, (rbar ** (4 * N1)))                     # det M = r^{4n} ∈ [0, ρ̄^{4N₁}]
         tr = M[0][0] + M[1][1] + M[2][2]
         e2 = sum((M[i][i] * M[j][j] - M[i][j] * M[j][i] for i, j in ((0, 1), (0, 2), (1, 2))), flint.arb(0))
 
@@ -459,7 +460,7 @@ def dominant_facts(N1: int) -> dict:
         if not (q3 - d < 0 and lam - d * d > 0 and h > 0):
             raise ArithmeticError("the hypotheses of part 2 are not proven")
         X = -(d + W1) * (lam - M[2][2]) - (b * c + a * W1)       # u = c X/D: every term of u's numerator has c
-        return {"N1": N1, "r": [Fraction(0), _q(R_MAX)], "delta": _q(ends(delta)[1]),
+        return {"N1": N1, "r": [r0, r1], "delta": _q(ends(delta)[1]),
                 "lambda": [_q(ends(lo)[0]), _q(ends(hi)[1])], "others": _q(ends(others)[1]),
                 "u": _q(max(abs(e) for e in ends(u))), "Cu": _q(ends(X.abs_upper() / D.abs_lower())[1]),
                 "q3_minus_d": _q(ends(q3 - d)[1]), "q3_abs": _q(ends(q3.abs_lower())[0])}
@@ -945,49 +946,70 @@ def check_below(facts: dict, prec: int = 200) -> list[str]:
                 bad.append(f"'{leaf[-1]}' not proven on the low box {leaf[:-1]}")
     return bad
 
-# ------------------------------------------------------------------ 10. above r_n, up to 1/4
-COS_THETA_MAX = flint.fmpq(-7, 32)     # cos θ = t/(2r) at r = 1/4; θ increases with r on ]r*, 1[
+# ------------------------------------------------------------------ 10. above r_n
+UPPER_STEP = Fraction(1, 8)     # the boxes of ]1/4, R] on which part 7's dominance is re-proved
 
 
-def arc_facts(N1: int) -> dict:
-    """For every n ≥ N₁ (≥ 7) and every r in ]r*, 1/4] with nθ > 2π, a b of the ab-phase comes with its
-    pair separating: no stable point.  Proof: θ ≤ θ_max < 2π/3 (cos θ_max = -7/32 > -1/2); j₀ the largest j
-    with jθ < 2π (j₀ ≤ n - 1 as nθ > 2π, j₀θ ≥ 2π - θ > π); if j₀θ ≤ 2π - θ/2 take j' = j₀, else j' = j₀ - 1:
-    then 2π - j'θ ∈ [θ/2, 3θ/2] ⊂ ]0, π[, so sin j'θ ≤ -m, m = min(sin(θ/2), sin θ, sin(3θ/2))
+def upper_boxes(N1: int) -> list:
+    """The boxes [1/4 + k/8, 1/4 + (k + 1)/8] on which :func:`dominant_facts` holds for N₁, from 1/4 up to
+    the first that fails (or 7/8): the range ]1/4, R] where parts 7 and 10 extend."""
+    boxes: list = []
+    a = Fraction(1, 4)
+    while a < Fraction(7, 8):
+        try:
+            dominant_facts(N1, a, a + UPPER_STEP)
+        except ArithmeticError:
+            break
+        boxes.append([a, a + UPPER_STEP])
+        a += UPPER_STEP
+    return boxes
+
+
+def arc_facts(N1: int, boxes: list | None = None) -> dict:
+    """For every n ≥ N₁ (≥ 7) and every r in ]r*, R] with nθ > 2π, a b of the ab-phase comes with its
+    pair separating: no stable point (R = 1/4, or the top of ``boxes``, where part 7's dominance is
+    re-proved box by box).  Proof: θ ≤ θ_max < 2π/3 (cos θ_max = (R² - 6R + 1)/(8R) > -1/2); j₀ the
+    largest j with jθ < 2π (j₀ ≤ n - 1 as nθ > 2π, j₀θ ≥ 2π - θ > π); if j₀θ ≤ 2π - θ/2 take j' = j₀, else
+    j' = j₀ - 1: then 2π - j'θ ∈ [θ/2, 3θ/2] ⊂ ]0, π[, so sin j'θ ≤ -m, m = min(sin(θ/2), sin θ, sin(3θ/2))
     ≥ min(2/n, sin θ_max, sin(3θ_max/2)) on [2π/n, θ_max].  Before the j'-th b (part 8's formula, j = j' - 1)
     the bracket times sin θ is rh sin j'θ - u(K₁₁ sin(j'-1)θ - r sin(j'-2)θ) ≤ rh(-m + C_u δ_n h²), as
-    |u| ≤ C_u|c| (part 7), |c| = rh r^(n-1)|sin nθ|/sin θ ≤ rh δ_n (δ_n = n4^(1-n)) and K₁₁ + r = h² ≤ 25/64.
-    So q₂ ≥ 0 there when 2 > C_u(25/64) n²4^(1-n) and min(sin θ_max, sin(3θ_max/2)) > C_u(25/64) δ_n, both
-    decreasing in n: the margins at N₁ are returned (rational lower bounds)."""
+    |u| ≤ C_u|c| (part 7), |c| = rh r^(n-1)|sin nθ|/sin θ ≤ rh δ_n (δ_n = nρ̄^(n-1), ρ̄ = max(R, 1/4)) and
+    K₁₁ + r = h² ≤ ((1 + R)/2)².  So q₂ ≥ 0 there when 2 > C_u h² n²ρ̄^(n-1) and min(sin θ_max, sin(3θ_max/2))
+    > C_u h² δ_n, both decreasing in n: the margins at N₁ are returned (rational lower bounds)."""
     if N1 < 7:
         raise ArithmeticError("part 10 needs part 7 (n ≥ 7)")
-    Cu = flint.arb(_fmpq(dominant_facts(N1)["Cu"]))
+    boxes = upper_boxes(N1) if boxes is None else boxes
+    R = boxes[-1][1] if boxes else Fraction(1, 4)
+    if boxes and (boxes[0][0] != Fraction(1, 4) or any(a[1] != b[0] for a, b in zip(boxes, boxes[1:]))):
+        raise ArithmeticError("the boxes do not cover ]1/4, R]")
+    Cu = max(_fmpq(dominant_facts(N1, *box)["Cu"]) for box in [[Fraction(0), Fraction(1, 4)]] + boxes)
     with precision(128):
-        c = flint.arb(COS_THETA_MAX)
-        if not c > flint.fmpq(-1, 2):
-            raise ArithmeticError("θ_max < 2π/3 not proven")
+        c = flint.arb(_fmpq((R * R - 6 * R + 1) / (8 * R)))
+        rbar = flint.arb(_fmpq(max(R, Fraction(1, 4))))
+        if not (c > flint.fmpq(-1, 2) and (N1 + 1) ** 2 * rbar < N1 ** 2):
+            raise ArithmeticError("θ_max < 2π/3 or the decrease of n²ρ̄^(n-1) not proven")
         theta = c.acos()
-        h2 = flint.arb(flint.fmpq(25, 64))
-        dn = N1 * flint.arb(flint.fmpq(1, 4)) ** (N1 - 1)
+        h2 = flint.arb(_fmpq(((1 + R) / 2) ** 2))
+        dn = N1 * rbar ** (N1 - 1)
         m1 = 2 - Cu * h2 * N1 * dn
         m2 = theta.sin().min((3 * theta / 2).sin()) - Cu * h2 * dn
         if not (m1 > 0 and m2 > 0):
             raise ArithmeticError("the separating b is not proven")
-        return {"N1": N1, "r": [None, Fraction(1, 4)], "margins": [_q(ends(m1)[0]), _q(ends(m2)[0])]}
-
+        return {"N1": N1, "r": [None, R], "upper": boxes, "margins": [_q(ends(m1)[0]), _q(ends(m2)[0])]}
 
 def _fmpq(x: Fraction) -> flint.fmpq:
     return flint.fmpq(x.numerator, x.denominator)
 
 
 def check_arcs(facts: dict) -> list[str]:
-    """Recompute :func:`arc_facts`: the stated margins must be positive and at most the recomputed ones."""
+    """Recompute :func:`arc_facts` on the stated boxes (part 7 re-proved on each): the stated range must be
+    theirs, the margins positive and at most the recomputed ones."""
     try:
-        new = arc_facts(facts["N1"])
+        new = arc_facts(facts["N1"], facts["upper"])
     except ArithmeticError as e:
         return [f"part 10 does not hold for N1 = {facts['N1']}: {e}"]
     if facts["r"] != new["r"]:
-        return [f"part 10 is proved up to r = 1/4, not {facts['r'][1]}"]
+        return [f"part 10 is proved up to r = {new['r'][1]}, not {facts['r'][1]}"]
     return [f"arc margin {m} not implied" for m, k in zip(facts["margins"], new["margins"]) if not 0 < m <= k]
 
 

@@ -447,16 +447,17 @@ def test_l_slope_against_a_difference_quotient():
 
 # ------------------------------------------------------------------ above r_n (part 10)
 def test_arcs_above_r_n_against_mpmath(facts):
-    """n = 35: where nθ > 2π (and at r = 1/5, 1/4) some velocity condition of the reference fails, and
-    the point is not stable; part 10's margins are positive from N₁ = 7 on."""
-    assert facts["arcs"]["N1"] == 31 and _facts_from_7()["arcs"]["N1"] == 7
+    """n = 35: where nθ > 2π (and at r = 1/5, 1/4, 0.6) some velocity condition of the reference fails,
+    and the point is not stable; part 10 reaches r = 5/8 for N₁ = 31, 1/4 for N₁ = 7."""
+    assert facts["arcs"]["r"][1] == Fraction(5, 8) and _facts_from_7()["arcs"]["r"][1] == Fraction(1, 4)
     assert all(m > 0 for m in facts["arcs"]["margins"])
     n = 35
     with mp.workdps(4 * n + 60):
         def r_at(phi):
             a_ = 3 + 4 * mp.cos(phi / n)
             return a_ - mp.sqrt(a_ * a_ - 1)
-        for r in (r_at(2.5 * mp.pi), r_at(4.5 * mp.pi), r_at(10.2 * mp.pi), mp.mpf("0.2"), mp.mpf("0.25")):
+        for r in (r_at(2.5 * mp.pi), r_at(4.5 * mp.pi), r_at(10.2 * mp.pi), mp.mpf("0.2"), mp.mpf("0.25"),
+                  mp.mpf("0.6")):
             assert not _velocity_signs(n, r)
             assert not ref.analyse(n, r)[0]
 
@@ -467,5 +468,8 @@ def test_mutant_arc_margin_inflated_fails(facts):
     f["margins"][1] = Fraction(1, 2)                  # above min(sin θ_max, sin(3θ_max/2)) ≈ 0.439
     assert any("arc margin" in b for b in F.check_arcs(f))
     g = copy.deepcopy(facts["arcs"])
-    g["r"] = [None, Fraction(1, 2)]
-    assert any("1/4" in b for b in F.check_arcs(g))
+    g["r"] = [None, Fraction(7, 8)]                    # part 7 is re-proved up to 5/8 for N₁ = 31, not 7/8
+    assert any("proved up to" in b for b in F.check_arcs(g))
+    h = copy.deepcopy(facts["arcs"])
+    h["upper"].append([Fraction(5, 8), Fraction(3, 4)])  # a box where part 7's dominance is not proven
+    assert any("part 10 does not hold" in b for b in F.check_arcs(h))
