@@ -531,7 +531,8 @@ def graded_quantities() -> dict:
     * ``Y`` = (M₃₁X + (d + W₁)(M₃₁(λ - M₂₂) + M₃₂M₂₁))/(z³(AD - BC)) (λ cancels, and the division by
       AD - BC = det(K^n)/z² is exact): the coefficient of p₁(0) in p₃(T) is Q₂₁ = r^{2n} zY/X;
     * ``S`` = (e₁ - λ)/z²: μ + ν = tr M - λ = z²S (μν = e₃/λ);
-    * ``Z`` = (W₁(Δ - dX) + q₃(t_{2n})Δ)/z: p₃(t_{2n}) = x + zZ/(Δ - dX).
+    * ``Z`` = (W₁(Δ - dX) + q₃(t_{2n})Δ)/z: p₃(t_{2n}) = x + zZ/(Δ - dX);
+    * ``F`` = F_n/z (part 4's polynomial, λ-free).
 
     Every division by a power of z is exact (checked: the lower coefficients vanish identically)."""
     ctx = flint.fmpq_mpoly_ctx.get(GRADED_VARS, "lex")
@@ -562,7 +563,8 @@ def graded_quantities() -> dict:
     q3Delta = -N31 - W1 * Delta + W2 * c * X           # q₃(t_2n)Δ = (v - W₁ + W₂u)Δ
     out = {"G": (cp(lam), 3), "X": (X, 0), "Delta": (Delta, 0), "Dmix": (Delta - d * X, 0),
            "E": (W1 * X + Delta, 1), "Y": (M[2][0] * X + (d + W1) * N31, 3), "S": (e1 - lam, 2),
-           "Z": (W1 * (Delta - d * X) + q3Delta, 1)}
+           "Z": (W1 * (Delta - d * X) + q3Delta, 1),
+           "F": (W1 * (a - W1 * d + W2 * c) + (b * c + W2 * c * d - W1 * d * d), 1)}
     qs = {"lambda": lam} | {name: _divide_z(p, k, name) for name, (p, k) in out.items()}
     qs["Y"], rest = divmod(qs["Y"], A * D - B * C)
     if rest != 0:
@@ -638,8 +640,8 @@ def position_signs(eta: flint.arb, eps: flint.arb, N1: int) -> dict:
             if name not in ("G", "lambda")}
 
 
-INSIDE = {"X": -1, "Delta": 1, "Dmix": 1, "E": -1, "Y": -1, "S": 1, "Z": 1}
-BELOW = {"X": -1, "Delta": 1, "E": 1, "Y": 1, "S": 1}
+INSIDE = {"X": -1, "Delta": 1, "Dmix": 1, "E": -1, "Y": -1, "S": 1, "Z": 1, "F": -1}
+BELOW = {"X": -1, "Delta": 1, "E": 1, "Y": 1, "S": 1, "F": 1}             # F: F_n ≠ 0 there too
 
 
 def position_label(eta: flint.arb, eps: flint.arb, N1: int) -> str:
@@ -716,21 +718,22 @@ def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
 
 @functools.cache
 def _rests() -> dict:
-    """(E - L/27)/z, (Y - L/9)/z, (Z + L/81)/z with their weights 27, 9, 81: E = (L + 27z·rest)/27,
-    Y = (L + 9z·rest)/9, Z = -(L - 81z·rest)/81."""
+    """(E - L/27)/z, (Y - L/9)/z, (Z + L/81)/z, (F - L/9)/z with their weights 27, 9, 81, 9:
+    E = (L + 27z·rest)/27, Y = (L + 9z·rest)/9, Z = -(L - 81z·rest)/81, F = (L + 9z·rest)/9."""
     qs = graded_quantities()
     ctx = qs["E"].context()
     _, _, A, B, C, D = ctx.gens()
     L = 3 * A + 2 * C - D
     return {"E": (_divide_z(qs["E"] - L / 27, 1, "E"), 27), "Y": (_divide_z(qs["Y"] - L / 9, 1, "Y"), 9),
-            "Z": (_divide_z(qs["Z"] + L / 81, 1, "Z"), 81)}
+            "Z": (_divide_z(qs["Z"] + L / 81, 1, "Z"), 81), "F": (_divide_z(qs["F"] - L / 9, 1, "F"), 9)}
 
 
 def thin_strip(row: dict, N1: int, pieces: int = 8) -> Fraction:
     """On the ε-box and strip [η_in, η_out] of a :func:`position_strip` row: L is increasing (dL/dη ≥ m > 0)
-    and |weight·rest| ≤ B for E, Y, Z, while X < 0 < Δ, Δ - dX and S > 0 hold; so 'inside' holds wherever
-    L < -τ and 'below' wherever L > τ, τ = B r_{N₁}^(N₁-1), and the undecided set is inside one interval of
-    η-length ≤ 2τ/m.  Returns that bound (rational), ArithmeticError if a ball does not decide."""
+    and |weight·rest| ≤ B for E, Y, Z, F, while X < 0 < Δ, Δ - dX and S > 0 hold; so 'inside' holds
+    wherever L < -τ and 'below' wherever L > τ, τ = B r_{N₁}^(N₁-1), F_n ≠ 0 wherever |L| > τ, and the
+    undecided set and every zero of F_n in the strip are inside one interval of η-length ≤ 2τ/m.
+    Returns that bound (rational), ArithmeticError if a ball does not decide."""
     eps = _ball(*row["eps"])
     a, b = row["strip"]
     cut = [a + (b - a) * k / pieces for k in range(pieces + 1)]

@@ -355,6 +355,8 @@ def test_graded_quantities_against_the_reference(n, eta):
                           (z ** 2 * v["S"], Q11 + Q22), (z * v["Z"] / (v["Delta"] - z * ent[3] * v["X"]), mid[0])):
             assert abs(got - want) <= abs(want) * mp.mpf(10) ** -20
         assert abs(mid[1] - 1) < mp.mpf(10) ** -20
+        Fn = mp.polyval([mp.mpf(int(c.p)) / int(c.q) for c in reversed(F.lower_polynomial(n).coeffs())], r)
+        assert abs(z * v["F"] - Fn) <= abs(Fn) * mp.mpf(10) ** -20
 
 
 def test_leading_forms_are_one_linear_form():
@@ -367,6 +369,7 @@ def test_leading_forms_are_one_linear_form():
     assert F._z_part(qs["E"], 0) == third * L
     assert F._z_part(qs["Y"], 0) == L / 9
     assert F._z_part(qs["Z"], 0) == -L / 81
+    assert F._z_part(qs["F"], 0) == L / 9                                  # F_n = zL/9 + O(z²)
     assert F._z_part(qs["S"], 0) == L * L + 6 * (A * D - B * C)
     assert F._z_part(qs["X"], 0) == -third
 
