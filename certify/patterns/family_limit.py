@@ -2,7 +2,8 @@
 
 Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for every n.
 This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
-parts 5-6 for n > N₀), and that the windows they bound are disjoint and decrease:
+parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-10) that
+on ]0, 5/8] the stable set is everything between r_n and a thin strip around the lower end:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -51,13 +52,31 @@ parts 5-6 for n > N₀), and that the windows they bound are disjoint and decrea
 8. **The velocity conditions** (:func:`velocity_facts`, for every n ≥ 8): every collision's pair
    approaches on ]r*, r_n[, in both phases (exact formulas in s̃_k = sin kθ/sin θ, balls over r).
 
-Not proved here (docs/family-limit.md): that the stable set is exactly ]ℓ_n, r_n[ for n > N₀
-(inside: x₊ > 0, p₃(t_{2n}) > 0, p₁(T) > 0, |f'(x₊)| < 1; outside: one condition failing);
-certified per n ≤ N₀ by the family's exact certificates, observed beyond by an independent
-mpmath computation (n = 35, 50, 80 in the tests).
+9. **The positions** (:func:`graded_quantities`, :func:`position_facts`, :func:`below_facts`, for every
+   n ≥ 7): p(0) = (1, 0, x) ↦ p(T) is the map Q induced by M on R³/q(0); its entries Q₁₂, Q₂₁, its trace
+   μ + ν and p₃(t_{2n}) - x are exact polynomials in z = r^(n-1), the rest y of λ and K^n/z, whose parts
+   at z = 0 are multiples of one linear form L = 3A + 2C - D (μ + ν: L² + 6r²).  Q₁₂, Q₂₁ > 0 < μ + ν makes
+   the positive fixed point attracting with p₁(T), p₃(t_{2n}) > 0; Q₁₂, Q₂₁ < 0 < μ + ν leaves nothing
+   stable.  Balls: 'inside' from r_n down to a strip η ∈ [η_in, η_out] of the blow-up (width ≤ 3/256 for
+   N₁ = 31), 'below' from the strip down to 0 (three charts), and inside the strip L increasing with
+   the O(z) rests bounded (:func:`thin_strip`): the undecided set is one interval I_n of η-length
+   ≤ 2.87·10⁻³⁵ for every n ≥ 31.
+
+10. **Above r_n** (:func:`arc_facts`, for every n ≥ 7): where π < nθ ≤ 2π, u ≤ 0 (part 7); where
+    nθ > 2π, some b of the ab-phase has sin j'θ ≤ -min(2/n, sin θ_max, sin(3θ_max/2)), and its pair
+    separates (part 8's formula): nothing in ]r_n, R] is stable, R = 5/8 for N₁ = 31 (part 7 re-proved on
+    boxes of ]1/4, 5/8]), 1/4 for N₁ = 7.
+
+Not proved here (docs/family-limit.md): which points of I_n are stable (the stable set's lower end lies
+in it, so "exactly one interval" is not proved for n > N₀), and ]R, 1[; certified per n ≤ N₀ by the
+family's exact certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in
+the tests).
 """
 from __future__ import annotations
 
+import functools
+import itertools
+import math
 from fractions import Fraction
 
 import flint
@@ -388,11 +407,11 @@ def prove_lower(N0: int = 30, boxes: int = 32, pieces: int = 256, prec: int = 12
 R_MAX = flint.fmpq(1, 4)     # part 7 holds for r in ]0, 1/4]: the spectral radius of K is ≤ 1/4 there
 
 
-def dominant_facts(N1: int) -> dict:
-    """For every n ≥ N₁ and every r ∈ ]0, 1/4], with balls over that whole range (no boxes):
+def dominant_facts(N1: int, r0: Fraction = Fraction(0), r1: Fraction = Fraction(1, 4)) -> dict:
+    """For every n ≥ N₁ and every r ∈ ]r₀, r₁] (by default ]0, 1/4]), with balls over that whole range:
 
-    * the spectral radius of K is ≤ 1/4 (r ≥ r*: it is r; r < r*: the larger root is ≤ t ≤ 1/4),
-      so |s_j| ≤ j 4^{1-j} and |(K^n)_ij| ≤ n 4^{1-n}(|K_ij| + r) ≤ δ = N₁ 4^{1-N₁};
+    * the spectral radius of K is ≤ ρ̄ = max(r₁, 1/4) (r ≥ r*: it is r; r < r*: the larger root is
+      ≤ t ≤ 1/4), so |s_j| ≤ j ρ̄^{j-1} and |(K^n)_ij| ≤ n ρ̄^{n-1}(|K_ij| + r) ≤ δ = N₁ ρ̄^{N₁-1} max(1, |K_ij| + r);
     * wᵀ(I - K)⁻¹ = (1/3, 2/3) exactly (:func:`check_w_limit`), so W = (1/3, 2/3) + O(δ) and
       M = [[1/9, 2/9, 1/3], [0, 0, 0], [0, 0, 0]] + O(δ) (:func:`period_matrix`'s formula);
     * cp changes sign on [1/9 - ω, 1/9 + ω] (ω = 16δ rounded up): a real eigenvalue λ there; the other two
@@ -402,15 +421,15 @@ def dominant_facts(N1: int) -> dict:
       P₂₂ = d in balls with q₃(t_{2n}) - d < 0 < λ - d²: by part 2, **u has the sign of s_n**.
 
     Returns the rational bounds; ArithmeticError when a ball does not decide."""
+    rbar = _fmpq(max(r1, Fraction(1, 4)))
     with precision(128):
-        r = flint.arb(R_MAX / 2, R_MAX / 2)                       # ]0, 1/4] (and 0)
+        r = _ball(r0, r1)                                          # ]r₀, r₁] (and r₀)
         h = (1 + r) / 2
         K, w, N = _k_w_n(r)
-        if not max(abs(k) for row in K for k in row) + r < 1:
-            raise ArithmeticError("|K_ij| + r < 1 not proven on ]0, 1/4]")
-        if not (N1 + 1) * R_MAX < N1:
-            raise ArithmeticError("n 4^(1-n) is not proven to decrease")
-        delta = N1 * flint.arb(R_MAX) ** (N1 - 1)
+        kmax = (max(abs(k) for row in K for k in row) + r).upper()
+        if not (N1 + 1) * rbar < N1:
+            raise ArithmeticError("n ρ̄^(n-1) is not proven to decrease")
+        delta = N1 * flint.arb(rbar) ** (N1 - 1) * (kmax if kmax > 1 else 1)
         small = flint.arb(0, delta.upper())
         width = (16 * delta).upper().mid().fmpq()
         a = b = c = d = small
@@ -420,7 +439,7 @@ def dominant_facts(N1: int) -> dict:
         M = [[a + W2 * c + W1 * W1, b + W2 * d + W1 * W2, W1],
              [c * (d + W1), d * d + c * W2, c],
              [b * c + a * W1, b * d + a * W2, a]]
-        det = flint.arb(0, (R_MAX ** (4 * N1)))                    # det M = r^{4n} ∈ [0, 4^{-4N₁}]
+        det = flint.arb(0, (rbar ** (4 * N1)))                     # det M = r^{4n} ∈ [0, ρ̄^{4N₁}]
         tr = M[0][0] + M[1][1] + M[2][2]
         e2 = sum((M[i][i] * M[j][j] - M[i][j] * M[j][i] for i, j in ((0, 1), (0, 2), (1, 2))), flint.arb(0))
 
@@ -441,7 +460,7 @@ def dominant_facts(N1: int) -> dict:
         if not (q3 - d < 0 and lam - d * d > 0 and h > 0):
             raise ArithmeticError("the hypotheses of part 2 are not proven")
         X = -(d + W1) * (lam - M[2][2]) - (b * c + a * W1)       # u = c X/D: every term of u's numerator has c
-        return {"N1": N1, "r": [Fraction(0), _q(R_MAX)], "delta": _q(ends(delta)[1]),
+        return {"N1": N1, "r": [r0, r1], "delta": _q(ends(delta)[1]),
                 "lambda": [_q(ends(lo)[0]), _q(ends(hi)[1])], "others": _q(ends(others)[1]),
                 "u": _q(max(abs(e) for e in ends(u))), "Cu": _q(ends(X.abs_upper() / D.abs_lower())[1]),
                 "q3_minus_d": _q(ends(q3 - d)[1]), "q3_abs": _q(ends(q3.abs_lower())[0])}
@@ -494,6 +513,509 @@ def _velocity_margins(r: flint.arb, dom: dict, N1: int) -> dict:
     return margins
 
 
+# ------------------------------------------------------------------ 9. the positions, inside and below
+GRADED_VARS = ("z", "y", "A", "B", "C", "D")
+
+
+@functools.cache
+def graded_quantities() -> dict:
+    """The quantities deciding the positions' conditions, as exact polynomials over Q in
+    (z, y, A, B, C, D), where K^n = z·[[A, B], [C, D]] (z = r^(n-1), so A, B, C, D are O(1) in the
+    blow-up) and λ = 1/9 + zλ₁ + z²λ₂ + z³y (λ₁, λ₂ polynomials in A..D from cp(λ) = 0, y the rest):
+    W = w̄(I - K^n) with w̄ = wᵀ(I - K)⁻¹ = (1/3, 2/3) (:func:`check_w_limit`), M as in
+    :func:`period_matrix`, e₁, e₂, e₃ its symmetric functions (e₃ = (ad - bc)² is checked), and
+
+    * ``lambda`` = λ itself, ``G`` = cp(λ)/z³ (its root in y is λ's), ``X`` = -(d + W₁)(λ - a) - (bc + aW₁) (u = cX/Δ),
+      ``Delta`` = Δ = (λ - M₂₂)(λ - a) - cM₃₂, ``Dmix`` = Δ - dX;
+    * ``E`` = (W₁X + Δ)/z: the coefficient of p₃(0) in p₁(T) is Q₁₂ = W₁ + Δ/X = zE/X;
+    * ``Y`` = (M₃₁X + (d + W₁)(M₃₁(λ - M₂₂) + M₃₂M₂₁))/(z³(AD - BC)) (λ cancels, and the division by
+      AD - BC = det(K^n)/z² is exact): the coefficient of p₁(0) in p₃(T) is Q₂₁ = r^{2n} zY/X;
+    * ``S`` = (e₁ - λ)/z²: μ + ν = tr M - λ = z²S (μν = e₃/λ);
+    * ``Z`` = (W₁(Δ - dX) + q₃(t_{2n})Δ)/z: p₃(t_{2n}) = x + zZ/(Δ - dX);
+    * ``F`` = F_n/z (part 4's polynomial, λ-free).
+
+    Every division by a power of z is exact (checked: the lower coefficients vanish identically)."""
+    ctx = flint.fmpq_mpoly_ctx.get(GRADED_VARS, "lex")
+    z, y, A, B, C, D = ctx.gens()
+    third = flint.fmpq(1, 3)
+    a, b, c, d = z * A, z * B, z * C, z * D
+    W1, W2 = third - third * a - 2 * third * c, 2 * third - third * b - 2 * third * d
+    M = [[a + W2 * c + W1 * W1, b + W2 * d + W1 * W2, W1],
+         [c * (d + W1), d * d + c * W2, c],
+         [b * c + a * W1, b * d + a * W2, a]]
+    e1 = M[0][0] + M[1][1] + M[2][2]
+    e2 = sum((M[i][i] * M[j][j] - M[i][j] * M[j][i] for i, j in ((0, 1), (0, 2), (1, 2))), ctx.from_dict({}))
+    e3 = (a * d - b * c) ** 2
+    det = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
+           + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]))
+    if det != e3:
+        raise ArithmeticError("det M ≠ (ad - bc)²")
+
+    def cp(t):
+        return t ** 3 - e1 * t ** 2 + e2 * t - e3
+    lam = ctx.from_dict({}) + flint.fmpq(1, 9)
+    for k in (1, 2):                                   # cp'(1/9) = 1/81 at z = 0
+        lam = lam - 81 * _z_part(cp(lam), k) * z ** k
+    lam = lam + z ** 3 * y
+    X = -(d + W1) * (lam - a) - (b * c + a * W1)
+    Delta = (lam - M[1][1]) * (lam - a) - c * M[2][1]
+    N31 = M[2][0] * (lam - M[1][1]) + M[2][1] * M[1][0]
+    q3Delta = -N31 - W1 * Delta + W2 * c * X           # q₃(t_2n)Δ = (v - W₁ + W₂u)Δ
+    out = {"G": (cp(lam), 3), "X": (X, 0), "Delta": (Delta, 0), "Dmix": (Delta - d * X, 0),
+           "E": (W1 * X + Delta, 1), "Y": (M[2][0] * X + (d + W1) * N31, 3), "S": (e1 - lam, 2),
+           "Z": (W1 * (Delta - d * X) + q3Delta, 1),
+           "F": (W1 * (a - W1 * d + W2 * c) + (b * c + W2 * c * d - W1 * d * d), 1)}
+    qs = {"lambda": lam} | {name: _divide_z(p, k, name) for name, (p, k) in out.items()}
+    qs["Y"], rest = divmod(qs["Y"], A * D - B * C)
+    if rest != 0:
+        raise ArithmeticError("Y is not divisible by AD - BC")
+    return qs
+
+
+def _z_part(p, k: int):
+    """The coefficient of z^k in p (a polynomial in the other variables)."""
+    ctx = p.context()
+    return ctx.from_dict({(0,) + e[1:]: v for e, v in p.to_dict().items() if e[0] == k})
+
+
+def _divide_z(p, k: int, name: str):
+    """p/z^k, exact: ArithmeticError if a term of degree < k in z is left."""
+    if any(e[0] < k for e in p.to_dict()):
+        raise ArithmeticError(f"{name} is not divisible by z^{k}")
+    return p.context().from_dict({(e[0] - k,) + e[1:]: v for e, v in p.to_dict().items()})
+
+
+def _evaluate(p, values: list) -> flint.arb:
+    """p at balls (one per variable of GRADED_VARS), term by term with a table of powers."""
+    degs = p.degrees()
+    powers = []
+    for v, m in zip(values, degs):
+        row = [flint.arb(1)]
+        for _ in range(m):
+            row.append(row[-1] * v)
+        powers.append(row)
+    total = flint.arb(0)
+    for e, coeff in p.to_dict().items():
+        term = flint.arb(coeff)
+        for i, k in enumerate(e):
+            if k:
+                term *= powers[i][k]
+        total += term
+    return total
+
+
+def _blowup_entries(eta: flint.arb, eps: flint.arb) -> tuple[flint.arb, list]:
+    """(r, [A, B, C, D]) at φ = nθ = π - εη, θ = εφ: K^n = r^(n-1)(s̃_n K - r s̃_(n-1) I) with
+    s̃_n = sin εη/sin θ and s̃_(n-1) = sin ε(η + φ)/sin θ (both written with sinc: no 0/0 at ε = 0)."""
+    phi = flint.arb.pi() - eps * eta
+    r = r_of_theta(eps * phi)
+    den = phi * (eps * phi).sinc()
+    sn = eta * (eps * eta).sinc() / den
+    sn1 = (eta + phi) * (eps * (eta + phi)).sinc() / den
+    h = (1 + r) / 2
+    K = [[h * h - r, h], [-r * h, -r]]
+    return r, [sn * K[0][0] - r * sn1, sn * K[0][1], sn * K[1][0], sn * K[1][1] - r * sn1]
+
+
+def _lambda_rest(entries: list, z: flint.arb) -> flint.arb:
+    """A ball holding y, where λ = 1/9 + zλ₁ + z²λ₂ + z³y is the root of cp near 1/9 (the dominant
+    eigenvalue of part 7): G = cp(λ)/z³ has slope 1/81 + O(z) in y and changes sign on it."""
+    G = graded_quantities()["G"]
+    g0 = _evaluate(G, [z, flint.arb(0)] + entries)
+    R = 200 * g0.abs_upper() + 1
+    lo, hi = (_evaluate(G, [z, flint.arb(x)] + entries) for x in (-R, R))
+    if not (lo < 0 < hi):
+        raise ArithmeticError("λ's rest y is not enclosed")
+    return flint.arb(0, R)
+
+
+def position_signs(eta: flint.arb, eps: flint.arb, N1: int) -> dict:
+    """The balls of :func:`graded_quantities` (X, Δ, Δ - dX, E, Y, S, Z) for every n ≥ N₁ with 1/n
+    in ``eps`` and r at η in ``eta`` of the blow-up, z = r^(n-1) in [0, r_{N₁}^(N₁-1)]."""
+    r, entries = _blowup_entries(eta, eps)
+    zmax = upper_end(N1).upper() ** (N1 - 1)
+    z = flint.arb(zmax / 2, zmax / 2)
+    y = _lambda_rest(entries, z)
+    return {name: _evaluate(p, [z, y] + entries) for name, p in graded_quantities().items()
+            if name not in ("G", "lambda")}
+
+
+INSIDE = {"X": -1, "Delta": 1, "Dmix": 1, "E": -1, "Y": -1, "S": 1, "Z": 1, "F": -1}
+BELOW = {"X": -1, "Delta": 1, "E": 1, "Y": 1, "S": 1, "F": 1}             # F: F_n ≠ 0 there too
+
+
+def position_label(eta: flint.arb, eps: flint.arb, N1: int) -> str:
+    """'inside' when every sign of :data:`INSIDE` is proved on the box (then Q₁₂, Q₂₁ > 0, μ + ν > 0
+    and p₃(t_{2n}) > x: the positive fixed point is attracting with p₁(T) > 0 and p₃(t_{2n}) > 0),
+    'below' when those of :data:`BELOW` are (Q₁₂, Q₂₁ < 0, μ + ν > 0: no fixed point with x > 0 is
+    attracting with p₁(T) > 0), else '?'."""
+    v = position_signs(eta, eps, N1)
+
+    def holds(signs):
+        return all((v[k] < 0) if sg < 0 else (v[k] > 0) for k, sg in signs.items())
+    return "inside" if holds(INSIDE) else "below" if holds(BELOW) else "?"
+
+
+def position_strip(e0: Fraction, e1: Fraction, N1: int, start: int = 32, depth: int = 5) -> dict:
+    """On ε ∈ [e0, e1]: [0, 4] cut into ``start`` pieces, each undecided piece halved up to ``depth``
+    times; the pieces labelled 'inside' must be the first ones and those labelled 'below' the last
+    ones, one undecided strip [η_in, η_out] between.  Returns the labelled pieces."""
+    eps = _ball(e0, e1)
+    todo = [(Fraction(4 * k, start), Fraction(4 * (k + 1), start), 0) for k in range(start)]
+    pieces = []
+    while todo:
+        a, b, level = todo.pop(0)
+        label = position_label(_ball(a, b), eps, N1)
+        if label == "?" and level < depth:
+            m = (a + b) / 2
+            todo[:0] = [(a, m, level + 1), (m, b, level + 1)]
+        else:
+            pieces.append([a, b, label])
+    labels = "".join({"inside": "i", "below": "b", "?": "?"}[p[2]] for p in pieces)
+    if not (labels.startswith("i") and labels.endswith("b")) or labels.strip("i").strip("?").strip("b"):
+        raise ArithmeticError(f"the positions are not decided as inside | strip | below on ε ∈ [{e0}, {e1}]: {labels}")
+    undecided = [p for p in pieces if p[2] == "?"]
+    strip = [undecided[0][0], undecided[-1][1]] if undecided else [pieces[labels.rfind("i")][1]] * 2
+    row = {"eps": [e0, e1], "pieces": [p for p in pieces if p[2] != "?"], "strip": strip}
+    row["thin"] = _round_up(thin_strip(row, N1))
+    return row
+
+
+def _round_up(x: Fraction) -> Fraction:
+    """A rational with 3 significant digits at least 1.01 x (room for the re-check at another precision)."""
+    e = 0
+    while x * 10 ** e < 100:
+        e += 1
+    return Fraction(math.ceil(x * Fraction(101, 100) * 10 ** e), 10 ** e)
+
+
+def _sinc_series(u0: flint.arb, scale: flint.arb) -> flint.arb_series:
+    """sinc(u0 + scale·t) to first order in t, for |u0| ≤ 1: sinc'(u) = -u j(u), j(u) = (sin u - u cos u)/u³
+    = 1/3 - u²/30 + u⁴/840 - … ∈ [1/3 - u²/30, 1/3] (an alternating series with decreasing terms)."""
+    U = u0.abs_upper()
+    if not U <= 1:
+        raise ArithmeticError("sinc's slope bound needs |u| ≤ 1")
+    j = flint.arb(flint.fmpq(1, 3)) - U * U / 60 + flint.arb(0, (U * U / 60).upper())
+    return flint.arb_series([u0.sinc(), -u0 * j * scale], prec=2)
+
+
+def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
+    """dL/dη on a box, L = 3A + 2C - D = s̃_n(3K₁₁ + 2K₂₁ - K₂₂) - 2r s̃_(n-1) in the blow-up of
+    :func:`_blowup_entries` (first-order series in η, r = r(θ) through cos and √)."""
+    t = flint.arb_series([eta, 1], prec=2)
+    phi = flint.arb.pi() - eps * t
+    theta = eps * phi
+    a = 3 + 4 * theta.cos()
+    r = 1 / (a + (a * a - 1).sqrt())
+    phi0 = flint.arb.pi() - eps * eta
+    den = phi * _sinc_series(eps * phi0, -eps * eps)
+    sn = t * _sinc_series(eps * eta, eps) / den
+    sn1 = (phi + t) * _sinc_series(eps * (phi0 + eta), eps * (1 - eps)) / den
+    h = (1 + r) / 2
+    L = sn * (3 * (h * h - r) - 2 * r * h + r) - 2 * r * sn1
+    return L.coeffs()[1]
+
+
+@functools.cache
+def _rests() -> dict:
+    """(E - L/27)/z, (Y - L/9)/z, (Z + L/81)/z, (F - L/9)/z with their weights 27, 9, 81, 9:
+    E = (L + 27z·rest)/27, Y = (L + 9z·rest)/9, Z = -(L - 81z·rest)/81, F = (L + 9z·rest)/9."""
+    qs = graded_quantities()
+    ctx = qs["E"].context()
+    _, _, A, B, C, D = ctx.gens()
+    L = 3 * A + 2 * C - D
+    return {"E": (_divide_z(qs["E"] - L / 27, 1, "E"), 27), "Y": (_divide_z(qs["Y"] - L / 9, 1, "Y"), 9),
+            "Z": (_divide_z(qs["Z"] + L / 81, 1, "Z"), 81), "F": (_divide_z(qs["F"] - L / 9, 1, "F"), 9)}
+
+
+def thin_strip(row: dict, N1: int, pieces: int = 8) -> Fraction:
+    """On the ε-box and strip [η_in, η_out] of a :func:`position_strip` row: L is increasing (dL/dη ≥ m > 0)
+    and |weight·rest| ≤ B for E, Y, Z, F, while X < 0 < Δ, Δ - dX and S > 0 hold; so 'inside' holds
+    wherever L < -τ and 'below' wherever L > τ, τ = B r_{N₁}^(N₁-1), F_n ≠ 0 wherever |L| > τ, and the
+    undecided set and every zero of F_n in the strip are inside one interval of η-length ≤ 2τ/m.
+    Returns that bound (rational), ArithmeticError if a ball does not decide."""
+    eps = _ball(*row["eps"])
+    a, b = row["strip"]
+    cut = [a + (b - a) * k / pieces for k in range(pieces + 1)]
+    zmax = upper_end(N1).upper() ** (N1 - 1)
+    z = flint.arb(zmax / 2, zmax / 2)
+    m, B = None, flint.arb(0)
+    for e0, e1 in zip(cut, cut[1:]):
+        eta = _ball(e0, e1)
+        slope = l_slope(eta, eps)
+        if not slope > 0:
+            raise ArithmeticError(f"dL/dη > 0 not proven on η ∈ [{e0}, {e1}]")
+        m = slope if m is None else m.min(slope)
+        _, entries = _blowup_entries(eta, eps)
+        y = _lambda_rest(entries, z)
+        v = position_signs(eta, eps, N1)
+        if not (v["X"] < 0 and v["Delta"] > 0 and v["Dmix"] > 0 and v["S"] > 0):
+            raise ArithmeticError(f"X < 0 < Δ, Δ - dX, S not proven on η ∈ [{e0}, {e1}]")
+        for rest, weight in _rests().values():
+            B = B.max(weight * _evaluate(rest, [z, y] + entries).abs_upper())
+    width = 2 * B * zmax / m.lower()
+    return _q(ends(width)[1])
+
+
+def position_facts(N1: int, boxes: int = 32, prec: int = 128) -> dict:
+    """For every n ≥ N₁ (≥ 7, for part 7), per ε-box of [0, 1/N₁]: the η-pieces of the blow-up where
+    the positions' conditions all hold ('inside', from η = 0) and where they fail ('below', up to
+    η = 4 > π/(1 + ε), i.e. down to r_{n+1}), the strip between them, and ``thin``: a bound of the
+    η-length of the one interval of that strip where neither is proved (:func:`thin_strip`)."""
+    if N1 < 7:
+        raise ArithmeticError("part 9 needs part 7 (n ≥ 7)")
+    with precision(prec):
+        cut = [Fraction(k, boxes * N1) for k in range(boxes + 1)]
+        return {"N1": N1, "boxes": [position_strip(e0, e1, N1) for e0, e1 in zip(cut, cut[1:])]}
+
+
+def check_positions(facts: dict, prec: int = 200) -> list[str]:
+    """Re-verify :func:`position_facts`: the ε-boxes cover [0, 1/N₁]; on each, the stated pieces with
+    the undecided strip tile [0, 4] in order (inside pieces, strip, below pieces), every piece's
+    label is recomputed at ``prec`` bits, and the strip's undecided interval (:func:`thin_strip`) is
+    at most the stated width.  The list of failures."""
+    bad = []
+    N1, rows = facts["N1"], facts["boxes"]
+    if N1 < 7:
+        bad.append("part 9 needs n ≥ 7")
+    if rows[0]["eps"][0] != 0 or rows[-1]["eps"][1] < Fraction(1, N1) or any(
+            a["eps"][1] != b["eps"][0] for a, b in zip(rows, rows[1:])):
+        bad.append("the ε-boxes do not cover [0, 1/N1]")
+    with precision(prec):
+        for row in rows:
+            e0, e1 = row["eps"]
+            inside = [p for p in row["pieces"] if p[2] == "inside"]
+            below = [p for p in row["pieces"] if p[2] == "below"]
+            ends_ = [(Fraction(0), row["strip"][0])] if not inside else []
+            tiles = [(p[0], p[1]) for p in inside] + [tuple(row["strip"])] + [(p[0], p[1]) for p in below]
+            if (inside + below != row["pieces"] or ends_ or tiles[0][0] != 0 or tiles[-1][1] != 4
+                    or any(s[1] != t[0] for s, t in zip(tiles, tiles[1:]))):
+                bad.append(f"the pieces do not tile [0, 4] as inside | strip | below on ε ∈ [{e0}, {e1}]")
+                continue
+            eps = _ball(e0, e1)
+            for a, b, label in row["pieces"]:
+                if position_label(_ball(a, b), eps, N1) != label:
+                    bad.append(f"'{label}' not proven on η ∈ [{a}, {b}], ε ∈ [{e0}, {e1}]")
+            try:
+                if not thin_strip(row, N1) <= row["thin"]:
+                    bad.append(f"the undecided interval is not proven ≤ {row['thin']} wide on ε ∈ [{e0}, {e1}]")
+            except ArithmeticError as e:
+                bad.append(f"the strip is not proven thin on ε ∈ [{e0}, {e1}]: {e}")
+    return bad
+
+
+def _far_entries(psi: flint.arb, rho: flint.arb, N1: int) -> tuple[flint.arb, list, flint.arb]:
+    """Below r_{n+1}, the chart ψ = π - φ ∈ [0, π], ρ = 1/η ∈ [0, 1/4] (η ≥ 4), ε = ρψ: (ε, [A, B, C, D],
+    z-range) with K^n = (r^(n-1)/ρ)·[[A, B], [C, D]], i.e. the entries ρ(s̃_n K - r s̃_(n-1) I):
+    ρ s̃_n = sin ψ/(ψ φ sinc θ) and ρ s̃_(n-1) = (1 + ρφ) sin(ψ + θ)/((ψ + θ) φ sinc θ), θ = εφ, each written
+    with sinc at the end of [0, π] the box is near; z = η r^(n-1) ≤ π n r^(n-1) ≤ π N₁ r_{N₁}^(N₁-1)."""
+    phi = flint.arb.pi() - psi
+    lo, hi = ends(rho * psi)
+    eps = _ball(_q(max(lo, flint.fmpq(0))), _q(min(hi, flint.fmpq(1, N1))))      # ε = ρψ ≤ 1/N₁
+    theta = eps * phi
+    r = r_of_theta(theta)
+    if psi.upper() < 2:
+        sn = psi.sinc() / (phi * theta.sinc())
+        sn1 = (1 + rho * phi) * (psi + theta).sinc() / (phi * theta.sinc())
+    else:
+        sn = phi.sinc() / (psi * theta.sinc())
+        sn1 = (1 + rho * phi) * (1 - eps) * (phi - theta).sinc() / ((psi + theta) * theta.sinc())
+    h = (1 + r) / 2
+    K = [[h * h - r, h], [-r * h, -r]]
+    zmax = flint.arb.pi() * smallness(N1)[0]
+    return eps, [sn * K[0][0] - r * sn1, sn * K[0][1], sn * K[1][0], sn * K[1][1] - r * sn1], zmax
+
+
+
+def _below_holds(entries: list, zmax: flint.arb) -> bool:
+    """True when :data:`BELOW`'s signs are proved for K^n = z·[[A, B], [C, D]], z ∈ [0, zmax]."""
+    z = flint.arb(zmax.upper() / 2, zmax.upper() / 2)
+    y = _lambda_rest(entries, z)
+    qs = graded_quantities()
+    return all((_evaluate(qs[k], [z, y] + entries) < 0) if sg < 0 else (_evaluate(qs[k], [z, y] + entries) > 0)
+               for k, sg in BELOW.items())
+
+
+def far_holds(box: list, N1: int) -> bool | None:
+    """The box [w₀, w₁] × [ρ₀, ρ₁] of the chart ψ = πw, ρ = 1/η (:func:`_far_entries`): None when no n ≥ N₁
+    has a point there (ρ₀ψ₀ > 1/N₁), else whether 'below' is proved on it."""
+    (w0, w1), (r0, r1) = box
+    if flint.arb(flint.fmpq((r0 * w0).numerator, (r0 * w0).denominator)) * flint.arb.pi() > flint.fmpq(1, N1):
+        return None
+    _, entries, zmax = _far_entries(flint.arb.pi() * _ball(w0, w1), _ball(r0, r1), N1)
+    return _below_holds(entries, zmax)
+
+
+def _low_entries(r: flint.arb, N1: int) -> tuple[list, flint.arb]:
+    """Below r* (K has real eigenvalues κ₁ ≥ κ₂ > 0, κ₁ ≤ 1/4): K^n = s_n(K - r²(s_(n-1)/s_n) I) with
+    s_(n-1)/s_n = β/κ₁, β = (1 - g^(n-1))/(1 - g^n) ∈ [(N₁ - 1)/N₁, 1] (g = κ₂/κ₁ ∈ [0, 1]: the mean of
+    g⁰..g^(n-2) is at least that of g⁰..g^(n-1)), and 0 < s_n ≤ n κ₁^(n-1) ≤ N₁ 4^(1-N₁).  ([A, B, C, D], z-range);
+    the discriminant (r* - r)(r** - r)(r + 1)²/16 ≥ 0 is clamped at 0 (a ball reaching past r*)."""
+    t = (r * r - 6 * r + 1) / 4
+    disc = (7 - 4 * flint.arb(3).sqrt() - r) * (7 + 4 * flint.arb(3).sqrt() - r) * (r + 1) ** 2 / 16
+    lo, hi = ends(disc)
+    root = disc.sqrt() if lo > 0 else flint.arb(0, flint.arb(hi).sqrt().upper())    # √[0, hi] ⊂ [0, √hi]
+    k1 = (t + root) / 2
+    beta = _ball(Fraction(N1 - 1, N1), Fraction(1))
+    h = (1 + r) / 2
+    K = [[h * h - r, h], [-r * h, -r]]
+    m = r * r * beta / k1
+    return [K[0][0] - m, K[0][1], K[1][0], K[1][1] - m], N1 * flint.arb(flint.fmpq(1, 4)) ** (N1 - 1)
+
+
+def low_holds(box: list, N1: int) -> bool:
+    """Whether 'below' is proved for every r in the box [r₀, r₁] ∩ ]0, r*] (:func:`_low_entries`)."""
+    (r0, r1), = box
+    entries, zmax = _low_entries(_ball(r0, r1), N1)
+    return _below_holds(entries, zmax)
+
+
+def _leaves(box: list, holds, depth: int) -> list:
+    """Cut ``box`` (a list of rational [lo, hi] sides) in halves along every side until ``holds`` is True
+    or None on each piece, at most ``depth`` times; ArithmeticError if a piece stays undecided."""
+    try:
+        ok = holds(box)
+    except ArithmeticError:              # λ not enclosed on a box this wide: halve it
+        ok = False
+    if ok is None or ok:
+        return [[list(side) for side in box] + ["none" if ok is None else "below"]]
+    if depth == 0:
+        raise ArithmeticError(f"'below' not proven on {box}")
+    halves = [[(a, (a + b) / 2), ((a + b) / 2, b)] for a, b in box]
+    out: list = []
+    for combo in itertools.product(*halves):
+        out += _leaves(list(combo), holds, depth - 1)
+    return out
+
+
+FAR_GRID = ([Fraction(k, 8) for k in range(9)], [Fraction(k, 32) for k in range(9)])   # w = ψ/π, ρ = 1/η
+LOW_GRID = [Fraction(0), Fraction(7, 200), Fraction(7, 100), Fraction(72, 1000)]       # ]0, r*], r* < 0.0718
+
+
+def below_facts(N1: int, depth: int = 6) -> dict:
+    """Every r in ]0, r_{n+1}] is not stable, for every n ≥ N₁ (≥ 7): the leaves of the two charts,
+    (ψ/π, 1/η) ∈ [0, 1] × [0, 1/4] (]r*, r_{n+1}], η ≥ 4) and r ∈ ]0, 72/1000] ∩ ]0, r*], each labelled
+    'below' (proved) or 'none' (no n ≥ N₁ there)."""
+    if N1 < 7:
+        raise ArithmeticError("part 9 needs part 7 (n ≥ 7)")
+    with precision(128):
+        ws, rs = FAR_GRID
+        far = []
+        for w in zip(ws, ws[1:]):
+            for rr in zip(rs, rs[1:]):
+                far += _leaves([w, rr], lambda b: far_holds(b, N1), depth)
+        low = []
+        for rr in zip(LOW_GRID, LOW_GRID[1:]):
+            low += _leaves([rr], lambda b: low_holds(b, N1), depth)
+    return {"N1": N1, "far": far, "low": low}
+
+
+def _tiles(leaves: list, outer: list) -> bool:
+    """Whether the boxes tile ``outer``: inside it, pairwise without common interior, total volume equal."""
+    def vol(b):
+        out = Fraction(1)
+        for a, c in b:
+            out *= c - a
+        return out
+    boxes = [leaf[:-1] for leaf in leaves]
+    if any(not all(o[0] <= a < c <= o[1] for (a, c), o in zip(b, outer)) for b in boxes):
+        return False
+    for i, b in enumerate(boxes):
+        for d in boxes[i + 1:]:
+            if all(a < f and e < c for (a, c), (e, f) in zip(b, d)):
+                return False
+    return sum(map(vol, boxes)) == vol(outer)
+
+
+def check_below(facts: dict, prec: int = 200) -> list[str]:
+    """Re-verify :func:`below_facts` at ``prec`` bits: the leaves tile each chart, and every leaf's label
+    is recomputed ('none': ρ₀ψ₀ > 1/N₁).  The list of failures."""
+    bad = []
+    N1 = facts["N1"]
+    ws, rs = FAR_GRID
+    if N1 < 7:
+        bad.append("part 9 needs n ≥ 7")
+    if not _tiles(facts["far"], [[ws[0], ws[-1]], [rs[0], rs[-1]]]):
+        bad.append("the far chart's leaves do not tile [0, 1] × [0, 1/4]")
+    if not _tiles(facts["low"], [[LOW_GRID[0], LOW_GRID[-1]]]) or not (
+            flint.arb(flint.fmpq(LOW_GRID[-1].numerator, LOW_GRID[-1].denominator)) > 7 - 4 * flint.arb(3).sqrt()):
+        bad.append("the low chart's leaves do not tile ]0, r*]")
+    with precision(prec):
+        for leaf in facts["far"]:
+            if {True: "below", None: "none", False: "?"}[far_holds(leaf[:-1], N1)] != leaf[-1]:
+                bad.append(f"'{leaf[-1]}' not proven on the far box {leaf[:-1]}")
+        for leaf in facts["low"]:
+            if not (leaf[-1] == "below" and low_holds(leaf[:-1], N1)):
+                bad.append(f"'{leaf[-1]}' not proven on the low box {leaf[:-1]}")
+    return bad
+
+# ------------------------------------------------------------------ 10. above r_n
+UPPER_STEP = Fraction(1, 8)     # the boxes of ]1/4, R] on which part 7's dominance is re-proved
+
+
+def upper_boxes(N1: int) -> list:
+    """The boxes [1/4 + k/8, 1/4 + (k + 1)/8] on which :func:`dominant_facts` holds for N₁, from 1/4 up to
+    the first that fails (or 7/8): the range ]1/4, R] where parts 7 and 10 extend."""
+    boxes: list = []
+    a = Fraction(1, 4)
+    while a < Fraction(7, 8):
+        try:
+            dominant_facts(N1, a, a + UPPER_STEP)
+        except ArithmeticError:
+            break
+        boxes.append([a, a + UPPER_STEP])
+        a += UPPER_STEP
+    return boxes
+
+
+def arc_facts(N1: int, boxes: list | None = None) -> dict:
+    """For every n ≥ N₁ (≥ 7) and every r in ]r*, R] with nθ > 2π, a b of the ab-phase comes with its
+    pair separating: no stable point (R = 1/4, or the top of ``boxes``, where part 7's dominance is
+    re-proved box by box).  Proof: θ ≤ θ_max < 2π/3 (cos θ_max = (R² - 6R + 1)/(8R) > -1/2); j₀ the
+    largest j with jθ < 2π (j₀ ≤ n - 1 as nθ > 2π, j₀θ ≥ 2π - θ > π); if j₀θ ≤ 2π - θ/2 take j' = j₀, else
+    j' = j₀ - 1: then 2π - j'θ ∈ [θ/2, 3θ/2] ⊂ ]0, π[, so sin j'θ ≤ -m, m = min(sin(θ/2), sin θ, sin(3θ/2))
+    ≥ min(2/n, sin θ_max, sin(3θ_max/2)) on [2π/n, θ_max].  Before the j'-th b (part 8's formula, j = j' - 1)
+    the bracket times sin θ is rh sin j'θ - u(K₁₁ sin(j'-1)θ - r sin(j'-2)θ) ≤ rh(-m + C_u δ_n h²), as
+    |u| ≤ C_u|c| (part 7), |c| = rh r^(n-1)|sin nθ|/sin θ ≤ rh δ_n (δ_n = nρ̄^(n-1), ρ̄ = max(R, 1/4)) and
+    K₁₁ + r = h² ≤ ((1 + R)/2)².  So q₂ ≥ 0 there when 2 > C_u h² n²ρ̄^(n-1) and min(sin θ_max, sin(3θ_max/2))
+    > C_u h² δ_n, both decreasing in n: the margins at N₁ are returned (rational lower bounds)."""
+    if N1 < 7:
+        raise ArithmeticError("part 10 needs part 7 (n ≥ 7)")
+    boxes = upper_boxes(N1) if boxes is None else boxes
+    R = boxes[-1][1] if boxes else Fraction(1, 4)
+    if boxes and (boxes[0][0] != Fraction(1, 4) or any(a[1] != b[0] for a, b in zip(boxes, boxes[1:]))):
+        raise ArithmeticError("the boxes do not cover ]1/4, R]")
+    Cu = max(_fmpq(dominant_facts(N1, *box)["Cu"]) for box in [[Fraction(0), Fraction(1, 4)]] + boxes)
+    with precision(128):
+        c = flint.arb(_fmpq((R * R - 6 * R + 1) / (8 * R)))
+        rbar = flint.arb(_fmpq(max(R, Fraction(1, 4))))
+        if not (c > flint.fmpq(-1, 2) and (N1 + 1) ** 2 * rbar < N1 ** 2):
+            raise ArithmeticError("θ_max < 2π/3 or the decrease of n²ρ̄^(n-1) not proven")
+        theta = c.acos()
+        h2 = flint.arb(_fmpq(((1 + R) / 2) ** 2))
+        dn = N1 * rbar ** (N1 - 1)
+        m1 = 2 - Cu * h2 * N1 * dn
+        m2 = theta.sin().min((3 * theta / 2).sin()) - Cu * h2 * dn
+        if not (m1 > 0 and m2 > 0):
+            raise ArithmeticError("the separating b is not proven")
+        return {"N1": N1, "r": [None, R], "upper": boxes, "margins": [_q(ends(m1)[0]), _q(ends(m2)[0])]}
+
+def _fmpq(x: Fraction) -> flint.fmpq:
+    return flint.fmpq(x.numerator, x.denominator)
+
+
+def check_arcs(facts: dict) -> list[str]:
+    """Recompute :func:`arc_facts` on the stated boxes (part 7 re-proved on each): the stated range must be
+    theirs, the margins positive and at most the recomputed ones."""
+    try:
+        new = arc_facts(facts["N1"], facts["upper"])
+    except ArithmeticError as e:
+        return [f"part 10 does not hold for N1 = {facts['N1']}: {e}"]
+    if facts["r"] != new["r"]:
+        return [f"part 10 is proved up to r = {new['r'][1]}, not {facts['r'][1]}"]
+    return [f"arc margin {m} not implied" for m, k in zip(facts["margins"], new["margins"]) if not 0 < m <= k]
+
+
 def check_w_limit() -> bool:
     """wᵀ(I - K)⁻¹ = (1/3, 2/3) for every r (exact: (1/3, 2/3)(I - K) = wᵀ as polynomials in r)."""
     K, w = block()
@@ -509,7 +1031,8 @@ def _q(x) -> Fraction:
 
 
 def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
-    """The facts of parts 1-3 as rational statements a checker re-verifies (:func:`check`):
+    """The facts of parts 1-10 (parts 4-10 under their keys) as rational statements a checker
+    re-verifies (:func:`check`); for parts 1-3:
     the block identities; s* and κ in rational intervals; for ε in each of ``boxes`` equal
     boxes covering [0, 1/N₀], a rational interval holding s_hi(ε) and |s_hi(ε) - s*| ≤ C ε₁²
     (ε₁ the box's right end) with one rational C; and that r_n decreases (exact: a = 3 + 4cos(π/n) increases in n, and
@@ -531,7 +1054,8 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
             "kappa": [_q(ends(kap)[0]), _q(ends(kap)[1])], "C": C, "boxes": rows,
             "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec),
             "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit(),
-            "velocity": velocity_facts(max(N0 + 1, 8))}
+            "velocity": velocity_facts(max(N0 + 1, 8)), "positions": position_facts(max(N0 + 1, 7)),
+            "below": below_facts(max(N0 + 1, 7)), "arcs": arc_facts(max(N0 + 1, 7))}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -567,6 +1091,12 @@ def check(facts: dict, prec: int = 200) -> list[str]:
         bad += check_dominant(facts["dominant"])
     if "velocity" in facts:
         bad += check_velocity(facts["velocity"])
+    if "positions" in facts:
+        bad += check_positions(facts["positions"])
+    if "below" in facts:
+        bad += check_below(facts["below"])
+    if "arcs" in facts:
+        bad += check_arcs(facts["arcs"])
     return bad
 
 

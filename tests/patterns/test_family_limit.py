@@ -73,32 +73,47 @@ def test_s_hi_formula_against_the_direct_difference():
         assert (F.s_hi(flint.arb(0)) - F.s_star()).abs_upper() < flint.arb(2) ** -250
 
 
-def test_proof_facts_check():
-    assert F.check(F.prove(N0=30, boxes=16)) == []
+def _check_but_parts_9_10(facts):
+    """F.check on the facts without the keys of parts 9 and 10 (checked by their own tests): a mutant of
+    another part must fail on its own."""
+    return F.check({k: v for k, v in facts.items() if k not in ("positions", "below", "arcs")})
 
 
-def test_mutant_smaller_constant_fails():
-    facts = F.prove(N0=30, boxes=16)
+@pytest.fixture(scope="module")
+def small():
+    return F.prove(N0=30, boxes=16)
+
+
+def test_proof_facts_check(small):
+    assert F.check(small) == []
+
+
+def test_mutant_smaller_constant_fails(small):
+    import copy
+    facts = copy.deepcopy(small)
     facts["C"] = Fraction(1, 3)                       # below κ ≈ 0.418: |s_hi - s*| ≤ ε²/3 is false
-    assert any("C ε²" in b for b in F.check(facts))
+    assert any("C ε²" in b for b in _check_but_parts_9_10(facts))
 
 
-def test_mutant_widened_box_fails():
-    facts = F.prove(N0=30, boxes=16)
+def test_mutant_widened_box_fails(small):
+    import copy
+    facts = copy.deepcopy(small)
     facts["boxes"][-1]["eps"][1] = Fraction(1, 10)    # the last box widened to ε = 1/10
-    assert any("not in" in b for b in F.check(facts))
+    assert any("not in" in b for b in _check_but_parts_9_10(facts))
 
 
-def test_mutant_shifted_s_star_fails():
-    facts = F.prove(N0=30, boxes=16)
+def test_mutant_shifted_s_star_fails(small):
+    import copy
+    facts = copy.deepcopy(small)
     facts["s_star"] = [facts["s_star"][0] + Fraction(1, 10 ** 12), facts["s_star"][1] + Fraction(1, 10 ** 12)]
-    assert any("s_star" in b for b in F.check(facts))
+    assert any("s_star" in b for b in _check_but_parts_9_10(facts))
 
 
-def test_mutant_gap_in_the_cover_fails():
-    facts = F.prove(N0=30, boxes=16)
+def test_mutant_gap_in_the_cover_fails(small):
+    import copy
+    facts = copy.deepcopy(small)
     del facts["boxes"][3]
-    assert "the boxes do not cover [0, 1/N0]" in F.check(facts)
+    assert "the boxes do not cover [0, 1/N0]" in _check_but_parts_9_10(facts)
 
 
 # ------------------------------------------------------------------ the lower end
@@ -119,6 +134,16 @@ def test_limit_constants_exact():
     assert c["W"] == (sp.Rational(1, 3), sp.Rational(2, 3)) and c["rho"] == sp.sqrt(3) / 6
     with precision(100):
         assert flint.arb(str(sp.N(c["alpha"], 30))).overlaps(F.s_star() / flint.arb(3).sqrt())
+
+
+@functools.cache
+def _facts_from_7():
+    """prove(N0=5): parts 5, 7, 9 from n = 6, 7, 7 on, part 8 from n = 8 (computed once)."""
+    return F.prove(N0=5)
+
+
+def test_the_proof_from_n_6_checks():
+    assert F.check(_facts_from_7()) == []
 
 
 @pytest.fixture(scope="module")
@@ -151,28 +176,27 @@ def test_mutant_narrowed_strip_fails(facts):
     f = copy.deepcopy(facts)
     row = f["lower"]["boxes"][-1]
     row["eta"][1] = row["eta"][0]                     # the strip shrunk to its left end
-    assert any("F̂ > 0 not proven" in b for b in F.check(f))
+    assert any("F̂ > 0 not proven" in b for b in _check_but_parts_9_10(f))
 
 
 def test_mutant_lower_box_widened_fails(facts):
     import copy
     f = copy.deepcopy(facts)
     f["lower"]["boxes"][-1]["eps"][1] = Fraction(1, 5)   # ε up to 1/5: n ≥ 5 is not proved
-    assert F.check(f)
+    assert _check_but_parts_9_10(f)
 
 
 def test_mutant_margin_too_large_fails(facts):
     import copy
     f = copy.deepcopy(facts)
     f["lower"]["boxes"][0]["margin"] = Fraction(3)       # more room than π/(1 + ε) - η₊ ≈ 2.2
-    assert any("margin" in b for b in F.check(f))
+    assert any("margin" in b for b in _check_but_parts_9_10(f))
 
 
 @pytest.mark.parametrize("n", [6, 7, 10])
 def test_the_lower_proof_closes_from_n_6(n):
     """prove(N0=5): the strip and the disjointness hold from n = 6 on, and hold lo_n there."""
-    f = F.prove(N0=5)
-    assert F.check(f) == []
+    f = _facts_from_7()
     row = next(b for b in f["lower"]["boxes"] if b["eps"][0] <= Fraction(1, n) <= b["eps"][1])
     lo, _ = _window(n)
     with mp.workdps(4 * n + 60):
@@ -226,14 +250,14 @@ def test_mutant_dominant_lambda_shifted_fails(facts):
     import copy
     f = copy.deepcopy(facts)
     f["dominant"]["lambda"] = [Fraction(1, 8), Fraction(1, 7)]
-    assert any("λ not in" in b for b in F.check(f))
+    assert any("λ not in" in b for b in _check_but_parts_9_10(f))
 
 
 def test_mutant_dominant_range_widened_fails(facts):
     import copy
     f = copy.deepcopy(facts)
     f["dominant"]["r"] = [Fraction(0), Fraction(1, 2)]
-    assert any("]0, 1/4]" in b for b in F.check(f))
+    assert any("]0, 1/4]" in b for b in _check_but_parts_9_10(f))
 
 
 # ------------------------------------------------------------------ the velocity conditions
@@ -275,4 +299,180 @@ def test_mutant_velocity_margin_inflated_fails(facts):
     f = copy.deepcopy(facts)
     key = next(iter(f["velocity"]["margins"]))
     f["velocity"]["margins"][key] = Fraction(1, 2)
-    assert any("velocity margin" in b for b in F.check(f))
+    assert any("velocity margin" in b for b in _check_but_parts_9_10(f))
+
+
+# ------------------------------------------------------------------ the positions (part 9)
+def _mp_poly(p, values):
+    """An fmpq_mpoly of graded_quantities() at mpmath values (z, y, A, B, C, D)."""
+    total = mp.mpf(0)
+    for e, c in p.to_dict().items():
+        term = mp.mpf(int(c.p)) / int(c.q)
+        for v, k in zip(values, e):
+            term *= v ** int(k)
+        total += term
+    return total
+
+
+def _reference_quotient(n, r):
+    """From the independent reference: λ, the map p(0) = (1, 0, x) ↦ p(T) on the plane p₂ = 0 as
+    p₁(T) = Q₁₁ + Q₁₂x, p₃(T) = Q₂₁ + Q₂₂x, and p₃(t_2n) = P₀ + P₁x (positions propagated letter by
+    letter, each collision time from p_i = 0)."""
+    M = ref.matrix("cb", r) ** n * ref.matrix("ab", r) ** n
+    lam = mp.re(sorted(mp.eig(M)[0], key=abs, reverse=True)[0])
+    A = M - lam * mp.eye(3)
+    det = A[0, 1] * A[1, 2] - A[0, 2] * A[1, 1]
+    q = [mp.mpf(-1), (A[0, 0] * A[1, 2] - A[0, 2] * A[1, 0]) / det, (A[0, 1] * A[1, 0] - A[0, 0] * A[1, 1]) / det]
+    P = [(mp.mpf(1), mp.mpf(0)), (mp.mpf(0), mp.mpf(0)), (mp.mpf(0), mp.mpf(1))]
+    for k, letter in enumerate("ab" * n + "cb" * n):
+        i = ref.IDX[letter]
+        t = (-P[i][0] / q[i], -P[i][1] / q[i])
+        P = [(P[j][0] + t[0] * q[j], P[j][1] + t[1] * q[j]) for j in range(3)]
+        P[i] = (mp.mpf(0), mp.mpf(0))
+        q = ref.collide(letter, q, r)
+        if k == 2 * n - 1:
+            mid = P[2]
+    return lam, P[0], P[2], mid
+
+
+@pytest.mark.parametrize("n, eta", [(35, 0.3), (35, 0.95), (35, 2.5), (12, 0.5), (12, 1.5)])
+def test_graded_quantities_against_the_reference(n, eta):
+    """The closed forms of part 9 (Q₁₂ = zE/X, Q₂₁ = r^(2n) zY/X, Q₁₁ + Q₂₂ = z²S, p₃(t_2n) = x + zZ/(Δ - dX),
+    with K^n = z[[A, B], [C, D]], z = r^(n-1)) against the reference's positions, at nθ = π - η/n."""
+    qs = F.graded_quantities()
+    with mp.workdps(4 * n + 60):
+        a_ = 3 + 4 * mp.cos((mp.pi - mp.mpf(eta) / n) / n)
+        r = a_ - mp.sqrt(a_ * a_ - 1)
+        lam, (Q11, Q12), (Q21, Q22), mid = _reference_quotient(n, r)
+        h = (1 + r) / 2
+        Kn = mp.matrix([[h * h - r, h], [-r * h, -r]]) ** n
+        z = r ** (n - 1)
+        ent = [Kn[0, 0] / z, Kn[0, 1] / z, Kn[1, 0] / z, Kn[1, 1] / z]
+        y = (lam - _mp_poly(qs["lambda"], [z, 0] + ent)) / z ** 3
+        v = {k: _mp_poly(p, [z, y] + ent) for k, p in qs.items()}
+        assert abs(v["G"]) < mp.mpf(10) ** -20                           # y is λ's rest: cp(λ) = 0
+        for got, want in ((z * v["E"] / v["X"], Q12), (r ** (2 * n) * z * v["Y"] / v["X"], Q21),
+                          (z ** 2 * v["S"], Q11 + Q22), (z * v["Z"] / (v["Delta"] - z * ent[3] * v["X"]), mid[0])):
+            assert abs(got - want) <= abs(want) * mp.mpf(10) ** -20
+        assert abs(mid[1] - 1) < mp.mpf(10) ** -20
+        Fn = mp.polyval([mp.mpf(int(c.p)) / int(c.q) for c in reversed(F.lower_polynomial(n).coeffs())], r)
+        assert abs(z * v["F"] - Fn) <= abs(Fn) * mp.mpf(10) ** -20
+
+
+def test_leading_forms_are_one_linear_form():
+    """At z = 0 every position quantity is a multiple of L = 3A + 2C - D (and S = L² + 6(AD - BC) > 0)."""
+    qs = F.graded_quantities()
+    ctx = qs["E"].context()
+    _, _, A, B, C, D = ctx.gens()
+    L = 3 * A + 2 * C - D
+    third = flint.fmpq(1, 27)
+    assert F._z_part(qs["E"], 0) == third * L
+    assert F._z_part(qs["Y"], 0) == L / 9
+    assert F._z_part(qs["Z"], 0) == -L / 81
+    assert F._z_part(qs["F"], 0) == L / 9                                  # F_n = zL/9 + O(z²)
+    assert F._z_part(qs["S"], 0) == L * L + 6 * (A * D - B * C)
+    assert F._z_part(qs["X"], 0) == -third
+
+
+@pytest.mark.parametrize("n, which", [(35, "N0=30"), (50, "N0=30"), (10, "N0=5")])
+def test_positions_against_the_reference_stable_set(n, which, facts):
+    """Where part 9 says 'inside' the reference finds r stable, where it says 'below' not; and below
+    r_{n+1} (the far chart) and below r* (the low chart) nothing is stable."""
+    f = facts if which == "N0=30" else _facts_from_7()
+    row = next(b for b in f["positions"]["boxes"] if b["eps"][0] <= Fraction(1, n) <= b["eps"][1])
+    with mp.workdps(4 * n + 60):
+        def r_at(eta):
+            a_ = 3 + 4 * mp.cos((mp.pi - mp.mpf(eta) / n) / n)
+            return a_ - mp.sqrt(a_ * a_ - 1)
+        for a, b, label in row["pieces"][::7]:
+            mid = (a + b) / 2
+            assert ref.analyse(n, r_at(mp.mpf(mid.numerator) / mid.denominator))[0] == (label == "inside")
+        rs = 7 - 4 * mp.sqrt(3)
+        for r in (rs / 3, rs * (1 - mp.mpf(10) ** -6), r_at(6), r_at(n * mp.pi / 2)):
+            assert not ref.analyse(n, r)[0]
+
+
+def test_positions_and_below_check(facts):
+    assert F.check_positions(facts["positions"]) == [] and F.check_below(facts["below"]) == []
+    assert facts["positions"]["N1"] == 31 and _facts_from_7()["positions"]["N1"] == 7
+
+
+def test_mutant_positions_piece_relabelled_fails(facts):
+    import copy
+    f = copy.deepcopy(facts["positions"])
+    piece = next(p for p in f["boxes"][5]["pieces"] if p[2] == "below")
+    piece[2] = "inside"
+    assert F.check_positions(f)
+
+
+def test_mutant_positions_inside_into_the_strip_fails(facts):
+    """Claiming 'inside' up to the strip's upper end (the strip closed from below) fails."""
+    import copy
+    f = copy.deepcopy(facts["positions"])
+    row = f["boxes"][-1]
+    last = [p for p in row["pieces"] if p[2] == "inside"][-1]
+    last[1] = row["strip"][0] = row["strip"][1]
+    assert any("not proven" in b for b in F.check_positions(f))
+
+
+def test_mutant_below_leaf_removed_fails(facts):
+    import copy
+    f = copy.deepcopy(facts["below"])
+    del f["far"][len(f["far"]) // 2]
+    assert any("tile" in b for b in F.check_below(f))
+    g = copy.deepcopy(facts["below"])
+    g["low"] = g["low"][:-1]
+    assert any("tile" in b for b in F.check_below(g))
+
+
+def test_mutant_positions_thinner_strip_fails(facts):
+    """The undecided part of the strip is proved ≤ 2τ/m wide (≈ 10⁻³⁵ in η for n ≥ 31); claiming a
+    millionth of that bound fails."""
+    import copy
+    f = copy.deepcopy(facts["positions"])
+    assert max(row["thin"] for row in f["boxes"]) < Fraction(1, 10 ** 30)
+    f["boxes"][3]["thin"] /= 10 ** 6
+    assert any("not proven ≤" in b for b in F.check_positions(f))
+
+
+def test_l_slope_against_a_difference_quotient():
+    with precision(200):
+        eps = flint.arb(flint.fmpq(1, 40))
+
+        def L(eta):
+            _, e = F._blowup_entries(flint.arb(eta), eps)
+            return 3 * e[0] + 2 * e[2] - e[3]
+        h = flint.fmpq(1, 10 ** 20)
+        quotient = (L(flint.fmpq(9, 10) + h) - L(flint.fmpq(9, 10) - h)) / (2 * h)
+        slope = F.l_slope(flint.arb(flint.fmpq(9, 10)), eps)
+        assert slope.overlaps(quotient) and slope.rad() < flint.arb(10) ** -6
+
+
+# ------------------------------------------------------------------ above r_n (part 10)
+def test_arcs_above_r_n_against_mpmath(facts):
+    """n = 35: where nθ > 2π (and at r = 1/5, 1/4, 0.6) some velocity condition of the reference fails,
+    and the point is not stable; part 10 reaches r = 5/8 for N₁ = 31, 1/4 for N₁ = 7."""
+    assert facts["arcs"]["r"][1] == Fraction(5, 8) and _facts_from_7()["arcs"]["r"][1] == Fraction(1, 4)
+    assert all(m > 0 for m in facts["arcs"]["margins"])
+    n = 35
+    with mp.workdps(4 * n + 60):
+        def r_at(phi):
+            a_ = 3 + 4 * mp.cos(phi / n)
+            return a_ - mp.sqrt(a_ * a_ - 1)
+        for r in (r_at(2.5 * mp.pi), r_at(4.5 * mp.pi), r_at(10.2 * mp.pi), mp.mpf("0.2"), mp.mpf("0.25"),
+                  mp.mpf("0.6")):
+            assert not _velocity_signs(n, r)
+            assert not ref.analyse(n, r)[0]
+
+
+def test_mutant_arc_margin_inflated_fails(facts):
+    import copy
+    f = copy.deepcopy(facts["arcs"])
+    f["margins"][1] = Fraction(1, 2)                  # above min(sin θ_max, sin(3θ_max/2)) ≈ 0.439
+    assert any("arc margin" in b for b in F.check_arcs(f))
+    g = copy.deepcopy(facts["arcs"])
+    g["r"] = [None, Fraction(7, 8)]                    # part 7 is re-proved up to 5/8 for N₁ = 31, not 7/8
+    assert any("proved up to" in b for b in F.check_arcs(g))
+    h = copy.deepcopy(facts["arcs"])
+    h["upper"].append([Fraction(5, 8), Fraction(3, 4)])  # a box where part 7's dominance is not proven
+    assert any("part 10 does not hold" in b for b in F.check_arcs(h))
