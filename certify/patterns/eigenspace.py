@@ -368,6 +368,7 @@ class Family:
         self.abcd = (a, b, c, d)
         self._roots: dict = {}
         self._witnesses: dict = {}
+        self._zeros: dict = {}
 
     def witness(self, t, sigma: int) -> Witness:
         key = (str(t), sigma)
@@ -379,6 +380,20 @@ class Family:
         return divmod(f, self.m)[1]
 
     def _x_parts(self):
+        """Memoised :meth:`_x_parts_of`."""
+        if "_xp" not in self.__dict__:
+            self._xp = self._x_parts_of()
+        return self._xp
+
+    def special_roots(self, f) -> list:
+        """[(g, ρ)]: the real roots ρ of the norm of f with their irreducible factor g (memoised)."""
+        key = ("special", id(f))
+        if key not in self._roots:
+            self._roots[key] = [(g, rho) for g, _e in self.norm(f).factor()[1] if g.degree() > 0
+                                for rho in Algebraic.roots(g)]
+        return self._roots[key]
+
+    def _x_parts_of(self):
         """(the polynomials of the fixed point, (A, B) -> the parts of A + xB whose signs fix its
         sign), or None where f has no fixed point formula (c ≡ 0 and a ≡ d)."""
         a, b, c, d = self.abcd
@@ -424,7 +439,23 @@ class Family:
         self._roots[name] = out
         return out
 
+    def nonzero_ball(self, f, rho: Algebraic) -> bool:
+        """f(r₀, ρ) ≠ 0, proven by balls (up to 2048 bits); False when they do not prove it."""
+        for prec in (256, 1024, 2048):
+            with precision(prec + 64):
+                v = _rs_ball(f, self.es.r0.arb(prec), rho.arb(prec))
+                if v > 0 or v < 0:
+                    return True
+        return False
+
     def vanishes_at(self, f, g: flint.fmpq_poly, rho: Algebraic):
+        """Memoised :meth:`_vanishes_at`."""
+        key = (id(f), str(g), str(rho.lo), str(rho.hi))
+        if key not in self._zeros:
+            self._zeros[key] = (f, self._vanishes_at(f, g, rho))
+        return self._zeros[key][1]
+
+    def _vanishes_at(self, f, g: flint.fmpq_poly, rho: Algebraic):
         """Whether f(r₀, ρ) = 0, ρ a real root of the irreducible g ∈ Q[s] (exact): f modulo g in
         K[s] is 0 (every root of g is a root), or its gcd with g is linear with ρ as root; False when
         that gcd is 1; None when it cannot tell."""
@@ -522,7 +553,7 @@ def cell_samples(roots) -> list:
 
 def decide_on_cells(es: Eigenspace, wanted, sigma: int):
     """On an eigenspace of dimension 2 (a line of data q_a + s·d): "holds" when the sample of some
-    open cell of the s-line (cut at every root of the requirements' parts, :meth:`Family.cuts`) meets
+    open cell of the s-line (cut at every root of the requirements' parts, :meth:`Family.roots`) meets
     every requirement of ``wanted`` (certified signs at that exact datum), "fails" when none does and
     no root of c or Δ (where x may be defined at an isolated s) is a real root at r₀; None otherwise.
     Sound: on an open cell every requirement has a constant sign (its parts do not vanish there, x is
@@ -540,20 +571,17 @@ def decide_on_cells(es: Eigenspace, wanted, sigma: int):
     for kind, f in (zip(("c", "Δ"), base) if len(base) == 2 else ()):   # else x has a pole at each root
         if f.is_zero() or f.degrees()[1] == 0:
             continue
-        for g, _e in fam.norm(f).factor()[1]:
-            for rho in (Algebraic.roots(g) if g.degree() > 0 else []):
-                with precision(600):
-                    v = _rs_ball(f, es.r0.arb(512), rho.arb(512))
-                if v > 0 or v < 0:
-                    continue                  # f ≠ 0 there: a regular point, in the cells
-                zero = fam.vanishes_at(f, g, rho)
-                if zero is False:
-                    continue
-                status = fam.special_status(kind, rho, g, wanted)
-                if status == "holds" and zero:
-                    return "holds"
-                if status != "fails":
-                    return None
+        for g, rho in fam.special_roots(f):
+            if fam.nonzero_ball(f, rho):
+                continue                      # f ≠ 0 there: a regular point, in the cells
+            zero = fam.vanishes_at(f, g, rho)
+            if zero is False:
+                continue
+            status = fam.special_status(kind, rho, g, wanted)
+            if status == "holds" and zero:
+                return "holds"
+            if status != "fails":
+                return None
     return "fails"
 
 
