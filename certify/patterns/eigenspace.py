@@ -478,16 +478,17 @@ class Family:
         if len(G) == 1:
             return False
         if len(G) == 2:
-            # its root s* = -G₁/G₀ ∈ K is a root of g (G divides g): s* = ρ iff s* lies in ρ's
-            # isolating interval (balls of s*, no inverse in K: G's coefficients can be large)
-            rho.refine(Q(1, 10 ** 30))
+            # its root s* = -G₁/G₀ ∈ K is a root of g (G divides g): s* = ρ iff its ball meets ρ's and
+            # no other real root's of g (balls of s*, no inverse in K: G's coefficients can be large)
+            if rho.is_rational:
+                return (F.of(G[0]) * rho.lo + F.of(G[1])).is_zero()
+            others = [a for a in Algebraic.roots(g) if not a == rho]
             with precision(700):
                 b = -nf.arb_of(G[1], F.r0.arb(600)) / nf.arb_of(G[0], F.r0.arb(600))
-                if rho.is_rational:
-                    return (F.of(G[0]) * rho.lo + F.of(G[1])).is_zero()
-                if b > rho.lo and b < rho.hi:
+                near = [a for a in others if a.arb(600).overlaps(b)]
+                if b.overlaps(rho.arb(600)) and not near:
                     return True
-                if b < rho.lo or b > rho.hi:
+                if not b.overlaps(rho.arb(600)):
                     return False
         return None
 
