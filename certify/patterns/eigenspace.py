@@ -325,6 +325,9 @@ class Eigenspace:
 
 
 RS = flint.fmpq_mpoly_ctx.get(("r", "s"), "lex")
+# the largest degree of a norm to Q[s] the cells are made of: beyond it (the resultants of python-flint
+# take seconds each, tens of them a point) the point stays undecided; measured in the report of issue 35
+NORM_DEGREE = 120
 
 
 def _rs(c: K):
@@ -433,6 +436,9 @@ class Family:
         for f in polys:
             if f.is_zero() or f.degrees()[1] == 0:
                 continue
+            if f.degrees()[1] * self.es.F.m.degree() > NORM_DEGREE:
+                self._roots[name] = None
+                return None              # beyond the budget: the point stays undecided
             for g, _e in self.norm(f).factor()[1]:
                 if g.degree() > 0:
                     out += Algebraic.roots(g)
