@@ -45,7 +45,10 @@ from certify.dynamics.systems import FOUR, System, run_in
 from certify.dynamics.words import Candidate
 from certify.errors import UNDECIDED
 
+from .eigenspace import Eigenspace, Witness, decide_on_cells, polynomial_at
+
 NO_X = "—"                   # the label of the only "fixed point" of a two-gap system (no x)
+EIGENSPACE_NOTE = "a multiple eigenvalue: a datum of its eigenspace"
 
 
 @dataclass
@@ -162,6 +165,7 @@ class Piece:
     hi: Algebraic | None = None
     x_value: sp.Expr | None = None
     note: str = ""
+    eigenspace: bool = False       # decided on the eigenspace of a multiple eigenvalue (:mod:`.eigenspace`)
 
     @property
     def is_point(self) -> bool:
@@ -287,6 +291,8 @@ class Analysis:
             if cand.abcd is not None else {NO_X: None}
         self.tables = {}
         self._twins: dict = {}          # id of a requirement with x -> (it, its first Condition, its x)
+        self.imposed: list[Requirement] = []     # in the order imposed (the eigenspace route re-decides them)
+        self._spaces: dict = {}         # r₀ -> Eigenspace or None
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
         self.regions = [Region(k, f, [], [], []) for k in range(nb) for f in self.fps]
@@ -296,7 +302,9 @@ class Analysis:
                 if R.branch < len(next(c for c in base.cells if c.lo == a).branches):
                     R.pieces.append(Piece(a, b))
             for c, pt in zip(base.critical, base.points):
-                if pt is None:
+                if pt is None and self._eigenspace(c, R.branch) is not None:
+                    R.pieces.append(Piece(c, note=EIGENSPACE_NOTE, eigenspace=True))
+                elif pt is None:
                     R.undecided.append((c, "branches not isolated"))
                 elif R.branch < len(pt):
                     R.pieces.append(Piece(c))
@@ -340,6 +348,7 @@ class Analysis:
                 elif p.is_point and why:
                     R.dropped.append((p.lo, why))
             R.pieces = sorted(new, key=lambda q: q.lo)
+        self.imposed.append(req)
 
     def violations(self, req: Requirement) -> list[tuple[Region, Piece, str]]:
         """Where, in the current regions, req does not have its sign (or is undecided)."""
@@ -374,6 +383,14 @@ class Analysis:
 
     # -- a single point: balls first, exact zero tests where balls cannot decide
     def _point(self, R: Region, p: Piece, req: Requirement, T):
+        if p.eigenspace:
+            return self._on_eigenspace(R, p, req) or (p, "undecided", f"{req.name} (no datum of the eigenspace found)")
+        found = self._generic_point(R, p, req, T)
+        if found[1] != "undecided" or p.x_value is not None:
+            return found
+        return self._on_eigenspace(R, Piece(p.lo, note=EIGENSPACE_NOTE, eigenspace=True), req) or found
+
+    def _generic_point(self, R: Region, p: Piece, req: Requirement, T):
         rc, k = p.lo, R.branch
         with_x = p.x_value is not None and req.has_x
         sg = self._sign_with_x(req, rc, k, p.x_value) if with_x else \
@@ -410,6 +427,60 @@ class Analysis:
                     return p, "holds" if ok else "fails", "" if ok else \
                         f"{req.name} has the wrong sign (other rows of the eigen-equation)"
         return p, "undecided", req.name
+
+    # -- a point where the branch's eigenvalue is multiple: the data of its eigenspace
+    def _eigenspace(self, rc: Algebraic, branch: int) -> Eigenspace | None:
+        """The eigenspace of λ_branch(r₀) when it is a multiple eigenvalue (exact in Q(r₀)),
+        for a word of four particles; None otherwise."""
+        if self.cand.abcd is None or len(self.cand.Mq) != 3:
+            return None
+        key = rc.key()
+        if key not in self._spaces:
+            es = Eigenspace(self.cand.word, self.cand.Mq, self.spec, rc)
+            self._spaces[key] = es if es.ok else None
+        es = self._spaces[key]
+        if es is None:
+            return None
+        roots = self.spec.branches_at(rc)
+        if roots is None:
+            return es if es.multiplicity == 3 else None          # a triple root: every branch is λ₀
+        return es if branch < len(roots) and es.contains(roots[branch]) else None
+
+    def _on_eigenspace(self, R: Region, p: Piece, req: Requirement):
+        """The status of req at the point p on the eigenspace route (:mod:`.eigenspace`): some
+        datum of the eigenspace of the multiple eigenvalue λ₀ = λ_k(r₀) meets req and every
+        requirement imposed before (one witness, certified signs; "holds"), none does (the
+        linear ones cut an empty polyhedron, exact; or λ, dominance exact in Q(r₀): "fails"),
+        or None (undecided, or λ_k(r₀) not a multiple eigenvalue)."""
+        es = self._eigenspace(p.lo, R.branch)
+        if es is None:
+            return None
+        if req.name == "λ" or req.name.startswith("dominance"):
+            v = polynomial_at(req.G[0], es.F, es.lam0)
+            if v is None:
+                return None
+            sg = v.sign()
+            why = f"{req.name} {'= 0' if sg == 0 else 'has the wrong sign'} at the multiple eigenvalue (exact)"
+            return (p, "holds", "") if sg == req.sign else (p, "fails", why)
+        if es.q1_zero:
+            return p, "fails", "q_1(0) = 0 on the whole eigenspace of the multiple eigenvalue (exact): a never comes"
+        wanted = [q for q in self.imposed if q.name != "λ" and not q.name.startswith("dominance")] + [req]
+        linear = [f for f in (es.linear(q.name, q.sign) for q in wanted) if f is not None]
+        samples = es.polyhedron(linear)
+        if samples is None:
+            return p, "fails", f"{req.name}: no datum of the eigenspace (dimension {es.dim}) of the multiple " \
+                "eigenvalue meets the velocities' requirements (exact)"
+        sigma = -1 if R.fixed_point == X_MINUS else 1
+        for s in samples:
+            w = Witness(es, s, sigma)
+            if all(w.value_sign(q.name) == q.sign for q in wanted):
+                return p, "holds", ""
+        if es.dim == 2:
+            status = decide_on_cells(es, wanted, sigma)
+            if status is not None:
+                return p, status, "" if status == "holds" else f"{req.name}: no datum of the eigenspace (dimension " \
+                    "2) of the multiple eigenvalue meets the requirements (exact cells of its line of data)"
+        return None
 
     def _condition_at_point(self, req: Requirement, p: Piece, T):
         """The Condition of req at the point p: the table's own when req has no x (the same
