@@ -1000,6 +1000,49 @@ def arc_facts(N1: int, boxes: list | None = None) -> dict:
             raise ArithmeticError("the separating b is not proven")
         return {"N1": N1, "r": [None, R], "upper": boxes, "margins": [_q(ends(m1)[0]), _q(ends(m2)[0])]}
 
+# ------------------------------------------------------------------ 11. t ≤ 0: the third a separates
+THIRD_A_R0 = Fraction(429, 2500)    # 0.1716 > 3 - 2√2 ≈ 0.171573, the zero of t = tr K in ]0, 1[
+
+
+def third_a_facts(r0: Fraction = THIRD_A_R0) -> dict:
+    """For every n ≥ 3 and every r in [r₀, 1[ (r₀ ≥ 3 - 2√2, so t = tr K = (r² - 6r + 1)/4 ≤ 0) nothing is
+    feasible, whatever q(0): before the (j+1)-th a of the ab-phase (j ≤ n - 1) pair 1 has q₁ = ℓ_j =
+    (K^j (-1, u))₁, and Cayley–Hamilton (K² = tK - r²I, checked exactly) gives ℓ₂ = tℓ₁ - r²ℓ₀ = tℓ₁ + r²,
+    so if the second a's pair approaches (ℓ₁ < 0) the third's separates: ℓ₂ ≥ r² ≥ r₀² > 0.  No dominance,
+    no eigenvector, no bound in n: u and v are arbitrary.  t ≤ 0 on [r₀, 1] is checked exactly at both ends
+    (t is convex).  Returns the range, n_min = 3 (the third a is in the word), t_max = max t ≤ 0 and the
+    margin r₀² (a rational lower bound of ℓ₂ where ℓ₁ < 0); ArithmeticError if a step fails."""
+    K, _ = block()
+    one = flint.fmpq_poly([1])
+    K2 = _mul(K, K)
+    if any(K2[i][j] - T * K[i][j] + (R * R if i == j else 0) * one != 0 for i in range(2) for j in range(2)):
+        raise ArithmeticError("K² ≠ tK - r²I")
+    t0, t1 = (_q(T(_fmpq(x))) for x in (r0, Fraction(1)))
+    if not (0 < r0 < 1 and t0 <= 0 and t1 <= 0):
+        raise ArithmeticError(f"t = tr K ≤ 0 on [{r0}, 1] not proven")
+    return {"r": [r0, Fraction(1)], "n_min": 3, "t_max": max(t0, t1), "margin": r0 * r0}
+
+
+def check_third_a(facts: dict) -> list[str]:
+    """Recompute :func:`third_a_facts` on the stated range: t_max must be ≥ the recomputed maximum and ≤ 0,
+    the margin positive and at most r₀², n_min ≥ 3 (three a's in the ab-phase).  The list of failures."""
+    r0, r1 = facts["r"]
+    try:
+        new = third_a_facts(r0)
+    except ArithmeticError as e:
+        return [f"part 11 does not hold: {e}"]
+    bad = []
+    if r1 != 1:
+        bad.append(f"part 11 is stated on [{r0}, {r1}], not [r0, 1[")
+    if facts["n_min"] < 3:
+        bad.append(f"part 11 needs a third a: n ≥ 3, not n ≥ {facts['n_min']}")
+    if not new["t_max"] <= facts["t_max"] <= 0:
+        bad.append(f"t ≤ {facts['t_max']} not implied")
+    if not 0 < facts["margin"] <= new["margin"]:
+        bad.append(f"third a margin {facts['margin']} not implied")
+    return bad
+
+
 def _fmpq(x: Fraction) -> flint.fmpq:
     return flint.fmpq(x.numerator, x.denominator)
 
@@ -1055,7 +1098,8 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
             "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec),
             "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit(),
             "velocity": velocity_facts(max(N0 + 1, 8)), "positions": position_facts(max(N0 + 1, 7)),
-            "below": below_facts(max(N0 + 1, 7)), "arcs": arc_facts(max(N0 + 1, 7))}
+            "below": below_facts(max(N0 + 1, 7)), "arcs": arc_facts(max(N0 + 1, 7)),
+            "third_a": third_a_facts()}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -1097,6 +1141,8 @@ def check(facts: dict, prec: int = 200) -> list[str]:
         bad += check_below(facts["below"])
     if "arcs" in facts:
         bad += check_arcs(facts["arcs"])
+    if "third_a" in facts:
+        bad += check_third_a(facts["third_a"])
     return bad
 
 

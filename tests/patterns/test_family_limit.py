@@ -476,3 +476,52 @@ def test_mutant_arc_margin_inflated_fails(facts):
     h = copy.deepcopy(facts["arcs"])
     h["upper"].append([Fraction(5, 8), Fraction(3, 4)])  # a box where part 7's dominance is not proven
     assert any("part 10 does not hold" in b for b in F.check_arcs(h))
+
+
+# ------------------------------------------------------------------ t ≤ 0: the third a (part 11)
+def _q1_before_the_a(n, r, u, v):
+    """q₁ just before each a of the ab-phase, by the reference's collision law from q(0) = (-1, u, v)."""
+    q, out = [mp.mpf(-1), u, v], []
+    for letter in "ab" * n:
+        if letter == "a":
+            out.append(q[0])
+        q = ref.collide(letter, q, r)
+    return out
+
+
+def test_third_a_separates_for_any_q0_against_mpmath():
+    """Part 11 for every q(0): at r in [r₀, 1[ and arbitrary u, v, the second a's pair separates or the third's
+    does by at least r₀²; at r = 0.17 < 3 - 2√2 (t > 0) some u (about -32 or less) lets the first three a's all approach."""
+    f = F.third_a_facts()
+    with mp.workdps(50):
+        margin = mp.mpf(f["margin"].numerator) / f["margin"].denominator
+        for r in (mp.mpf(429) / 2500, mp.mpf("0.3"), mp.mpf(5) / 8, mp.mpf("0.8"), mp.mpf("0.999")):
+            for u in (mp.mpf(-7), mp.mpf(0), mp.mpf("0.3"), mp.mpf(1) / 3, mp.mpf(2), mp.mpf(40)):
+                l0, l1, l2 = _q1_before_the_a(3, r, u, mp.mpf("0.5"))[:3]
+                assert l0 < 0 and (l1 >= 0 or l2 >= margin)
+                assert mp.almosteq(l2, (r * r - 6 * r + 1) / 4 * l1 + r * r)
+        r = mp.mpf("0.17")
+        assert any(max(_q1_before_the_a(3, r, u, mp.mpf(0))) < 0 for u in mp.linspace(-60, 0, 61))
+    with pytest.raises(ArithmeticError):
+        F.third_a_facts(Fraction(17, 100))
+
+
+@pytest.mark.parametrize("n", [31, 50])
+def test_third_a_nothing_stable_against_the_reference(n):
+    """The reference's stable-set analysis finds nothing stable at r in [5/8, 1[ (and 0.18, 0.3)."""
+    with mp.workdps(4 * n + 60):
+        for r in ("0.18", "0.3", "0.625", "0.7", "0.8", "0.9", "0.99"):
+            assert not ref.analyse(n, mp.mpf(r))[0]
+
+
+def test_mutants_of_the_third_a_fail():
+    import copy
+    f = F.third_a_facts()
+    assert F.check_third_a(f) == [] and f["r"] == [Fraction(429, 2500), 1] and f["t_max"] < 0
+    for key, value, words in (("r", [Fraction(1, 10), Fraction(1)], "does not hold"),
+                              ("margin", f["margin"] * 2, "margin"),
+                              ("n_min", 2, "third a"),
+                              ("t_max", f["t_max"] * 2, "t ≤")):
+        g = copy.deepcopy(f)
+        g[key] = value
+        assert any(words in b for b in F.check_third_a(g)), key
