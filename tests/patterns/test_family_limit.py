@@ -491,7 +491,8 @@ def _q1_before_the_a(n, r, u, v):
 
 def test_third_a_separates_for_any_q0_against_mpmath():
     """Part 11 for every q(0): at r in [r₀, 1[ and arbitrary u, v, the second a's pair separates or the third's
-    does by at least r₀²; at r = 0.17 < 3 - 2√2 (t > 0) some u (about -32 or less) lets the first three a's all approach."""
+    does by at least r₀²; at r = 0.17 < 3 - 2√2 (t > 0) some u (about -32 or less) lets the first three a's
+    all approach, and the proof refuses r₀ = 17/100."""
     f = F.third_a_facts()
     with mp.workdps(50):
         margin = mp.mpf(f["margin"].numerator) / f["margin"].denominator
