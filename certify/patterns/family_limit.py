@@ -2,8 +2,8 @@
 
 Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for every n.
 This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
-parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-10) that
-on ]0, 5/8] the stable set is everything between r_n and a thin strip around the lower end:
+parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-11) that
+on ]0, 1[ the stable set is everything between r_n and a thin strip around the lower end:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -67,8 +67,13 @@ on ]0, 5/8] the stable set is everything between r_n and a thin strip around the
     separates (part 8's formula): nothing in ]r_n, R] is stable, R = 5/8 for N₁ = 31 (part 7 re-proved on
     boxes of ]1/4, 5/8]), 1/4 for N₁ = 7.
 
+11. **Where t = tr K ≤ 0** (:func:`third_a_facts`, for every n ≥ 3, exact): on [429/2500, 1[ (429/2500 >
+    3 - 2√2, the zero of t) q₁ before the a's of the ab-phase obeys ℓ_{j+2} = tℓ_{j+1} - r²ℓ_j with ℓ₀ = -1,
+    so ℓ₁ < 0 forces ℓ₂ ≥ r² > 0: for any q(0) the second or the third a has its pair separating, nothing
+    is feasible.  With parts 9 and 10 this closes ]0, 1[ for every n ≥ 31 (and n ≥ 8 with N₁ = 7).
+
 Not proved here (docs/family-limit.md): which points of I_n are stable (the stable set's lower end lies
-in it, so "exactly one interval" is not proved for n > N₀), and ]R, 1[; certified per n ≤ N₀ by the
+in it, so "exactly one interval" is not proved for n > N₀); certified per n ≤ N₀ by the
 family's exact certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in
 the tests).
 """
@@ -1074,7 +1079,7 @@ def _q(x) -> Fraction:
 
 
 def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
-    """The facts of parts 1-10 (parts 4-10 under their keys) as rational statements a checker
+    """The facts of parts 1-11 (parts 4-11 under their keys) as rational statements a checker
     re-verifies (:func:`check`); for parts 1-3:
     the block identities; s* and κ in rational intervals; for ε in each of ``boxes`` equal
     boxes covering [0, 1/N₀], a rational interval holding s_hi(ε) and |s_hi(ε) - s*| ≤ C ε₁²
