@@ -1048,6 +1048,43 @@ def check_third_a(facts: dict) -> list[str]:
     return bad
 
 
+# ------------------------------------------------------------------ 12. the reflection: M = N²
+SWAP = (2, 1, 0)    # J: the reflection of the line, q₁ ↔ q₃ (and p₁ ↔ p₃)
+
+
+def reflection_facts() -> list[str]:
+    """The exact identities behind M = N², N = J M_ab^n (J swaps q₁ and q₃), read from the engine's matrices:
+    M_cb = J M_ab J, M_ab e₃ = e₃ and det M_ab = r².  Consequences (docs/family-limit.md, part 12): N commutes
+    with M, so N q(0) = σ₀ q(0) with σ₀ = -q₃(t_{2n}); N e₃ = e₁, so on R³/q(0) in (p₁, p₃) the induced map is
+    N̄ = [[τ, 1], [γ, 0]] with γ = r^{2n}/σ₀, and Q = N̄² = [[τ² + γ, τ], [γτ, γ]]: the fixed points are
+    x² + τx - γ = 0, p₁(T) = σ₊², p₃(t_{2n}) = σ₊ at x₊ > 0, and |f'(x₊)| < 1 exactly when τ = Q₁₂ > 0.
+    ArithmeticError if an identity fails."""
+    Mab, Mcb = word_matrix_flint("ab"), word_matrix_flint("cb")
+    checks = {
+        "M_cb = J M_ab J (J: q₁ ↔ q₃)": all(Mcb[i][j] == Mab[SWAP[i]][SWAP[j]] for i in range(3) for j in range(3)),
+        "M_ab e₃ = e₃": [Mab[i][2] for i in range(3)] == [0, 0, 1],
+        "det M_ab = r²": _det3(Mab) == R * R,
+    }
+    bad = [k for k, ok in checks.items() if not ok]
+    if bad:
+        raise ArithmeticError("reflection identities fail: " + "; ".join(bad))
+    return list(checks)
+
+
+def _det3(M) -> flint.fmpq_poly:
+    return (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
+            + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]))
+
+
+def check_reflection(facts: list[str]) -> list[str]:
+    """Re-derive :func:`reflection_facts`: the stated identities must be the proved ones."""
+    try:
+        new = reflection_facts()
+    except ArithmeticError as e:
+        return [str(e)]
+    return [f"reflection identity not proved: {k}" for k in facts if k not in new]
+
+
 def _fmpq(x: Fraction) -> flint.fmpq:
     return flint.fmpq(x.numerator, x.denominator)
 
@@ -1104,7 +1141,7 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
             "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit(),
             "velocity": velocity_facts(max(N0 + 1, 8)), "positions": position_facts(max(N0 + 1, 7)),
             "below": below_facts(max(N0 + 1, 7)), "arcs": arc_facts(max(N0 + 1, 7)),
-            "third_a": third_a_facts()}
+            "third_a": third_a_facts(), "reflection": reflection_facts()}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -1148,6 +1185,8 @@ def check(facts: dict, prec: int = 200) -> list[str]:
         bad += check_arcs(facts["arcs"])
     if "third_a" in facts:
         bad += check_third_a(facts["third_a"])
+    if "reflection" in facts:
+        bad += check_reflection(facts["reflection"])
     return bad
 
 

@@ -526,3 +526,70 @@ def test_mutants_of_the_third_a_fail():
         g = copy.deepcopy(f)
         g[key] = value
         assert any(words in b for b in F.check_third_a(g)), key
+
+
+# ------------------------------------------------------------------ the reflection M = N² (part 12)
+def test_reflection_identities_and_mutant():
+    assert F.check_reflection(F.reflection_facts()) == []
+    assert F.check_reflection(["M_cb = J M_ab J (J: q₁ ↔ q₃)", "M_cb = M_ab"]) != []
+
+
+def _quotient(G, q0):
+    """The map induced by G on R³/q(0) in the coordinates (p₁, p₃) of the representatives with p₂ = 0."""
+    cols = []
+    for k in (0, 2):
+        w = G[:, k]
+        w = w - (w[1] / q0[1]) * q0
+        cols.append((w[0], w[2]))
+    return mp.matrix([[cols[0][0], cols[1][0]], [cols[0][1], cols[1][1]]])
+
+
+def _positions(n, r, q0):
+    """The reference's positions, letter by letter from p(0) = (1, 0, x) and q(0): (p(t_{2n}), p(T)), each as
+    pairs (coefficient of 1, coefficient of x) per particle gap."""
+    q, P, half = list(q0), [(mp.mpf(1), mp.mpf(0)), (mp.mpf(0), mp.mpf(0)), (mp.mpf(0), mp.mpf(1))], None
+    for k, letter in enumerate("ab" * n + "cb" * n):
+        if k == 2 * n:
+            half = list(P)
+        i = ref.IDX[letter]
+        t = (-P[i][0] / q[i], -P[i][1] / q[i])
+        P = [(P[j][0] + t[0] * q[j], P[j][1] + t[1] * q[j]) for j in range(3)]
+        P[i] = (mp.mpf(0), mp.mpf(0))
+        q = ref.collide(letter, q, r)
+    return half, P
+
+
+@pytest.mark.parametrize("n", [10, 35])
+def test_reflection_decides_the_points_near_the_lower_end_against_the_reference(n):
+    """Part 12 against the reference: with N = J M_ab^n, N q(0) = σ₀ q(0) with σ₀ = -q₃(t_{2n}) > 0, the induced
+    N̄ = [[τ, 1], [γ, 0]] with γ = r^{2n}/σ₀, Q = N̄² (the reference's own p(T)), τ = Q₁₂, and at points just
+    below and above the reference's lower end (and mid-window) it is stable exactly where τ > 0, with
+    p₃(t_{2n}) = σ₊ = τ + x₊ there."""
+    lo, hi = _window(n)
+    J = mp.matrix([[0, 0, 1], [0, 1, 0], [1, 0, 0]])
+    with mp.workdps(4 * n + 60):
+        for k in ("-1e-3", "-1e-8", "1e-8", "1e-3", "0.5"):
+            r = lo + mp.mpf(k) * (hi - lo)
+            Mab = ref.matrix("ab", r) ** n
+            M = ref.matrix("cb", r) ** n * Mab
+            ev, vec = mp.eig(M)
+            i = max(range(3), key=lambda i: abs(ev[i]))
+            q0 = mp.matrix([mp.re(x) for x in vec[:, i]]) / -mp.re(vec[0, i])
+            N = J * Mab
+            sigma0 = -(Mab * q0)[2]
+            assert sigma0 > 0 and mp.norm(N * q0 - sigma0 * q0) < mp.mpf(10) ** (-3 * n)
+            Nb, Q = _quotient(N, q0), _quotient(M, q0)
+            gamma = r ** (2 * n) / sigma0
+            tau = Nb[0, 0]
+            scale = r ** (2 * n)
+            assert abs(Nb[0, 1] - 1) + abs(Nb[1, 1]) < mp.mpf(10) ** (-2 * n)
+            assert abs(Nb[1, 0] - gamma) < mp.mpf(10) ** (-20) * gamma
+            assert mp.mnorm(Q - Nb * Nb, 1) < mp.mpf(10) ** (-20) * scale
+            stable, why = ref.analyse(n, r)
+            assert stable == (tau > 0), (k, why)
+            half, P = _positions(n, r, q0)              # the reference's p(T) = Q (1, x)
+            assert all(abs(P[j][m] - Q[j // 2, m]) < mp.mpf(10) ** (-20) * scale for j in (0, 2) for m in (0, 1))
+            x = (-tau + mp.sqrt(tau * tau + 4 * gamma)) / 2
+            sigma = tau + x
+            assert x > 0 and abs(P[0][0] + x * P[0][1] - sigma ** 2) < mp.mpf(10) ** (-20) * scale
+            assert abs(half[2][0] + x * half[2][1] - sigma) < mp.mpf(10) ** (-20) * r ** n
