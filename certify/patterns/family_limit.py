@@ -2,8 +2,9 @@
 
 Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for every n.
 This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
-parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-11) that
-on ]0, 1[ the stable set is everything between r_n and a thin strip around the lower end:
+parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, (parts 7-11) that
+on ]0, 1[ the stable set is everything between r_n and a thin strip around the lower end, and (part 12)
+that inside the strip one sign, that of Q₁₂, decides:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -72,8 +73,13 @@ on ]0, 1[ the stable set is everything between r_n and a thin strip around the l
     so ℓ₁ < 0 forces ℓ₂ ≥ r² > 0: for any q(0) the second or the third a has its pair separating, nothing
     is feasible.  With parts 9 and 10 this closes ]0, 1[ for every n ≥ 31 (and n ≥ 8 with N₁ = 7).
 
-Not proved here (docs/family-limit.md): which points of I_n are stable (the stable set's lower end lies
-in it, so "exactly one interval" is not proved for n > N₀); certified per n ≤ N₀ by the
+12. **The reflection** (:func:`reflection_facts`, exact): M_cb = J M_ab J (J: q₁ ↔ q₃), so M = N² with
+    N = J M_ab^n; on R³/q(0) N induces N̄ = [[τ, 1], [γ, 0]] (N e₃ = e₁, γ = r^{2n}/σ₀ > 0, σ₀ = -q₃(t_{2n})),
+    Q = N̄²: on ]r*, r_n[ (n ≥ 31) r is stable exactly where τ = Q₁₂ > 0, and at every end of the stable
+    set Q = γI (μ = ν) and F_n = 0.
+
+Not proved here (docs/family-limit.md): that Q₁₂ changes sign only once in I_n (so "exactly one interval"
+is not proved for n > N₀); certified per n ≤ N₀ by the
 family's exact certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in
 the tests).
 """
@@ -1116,7 +1122,7 @@ def _q(x) -> Fraction:
 
 
 def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
-    """The facts of parts 1-11 (parts 4-11 under their keys) as rational statements a checker
+    """The facts of parts 1-12 (parts 4-12 under their keys) as rational statements a checker
     re-verifies (:func:`check`); for parts 1-3:
     the block identities; s* and κ in rational intervals; for ε in each of ``boxes`` equal
     boxes covering [0, 1/N₀], a rational interval holding s_hi(ε) and |s_hi(ε) - s*| ≤ C ε₁²
