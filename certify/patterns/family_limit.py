@@ -710,9 +710,9 @@ def _sinc_series(u0: flint.arb, scale: flint.arb) -> flint.arb_series:
     return flint.arb_series([u0.sinc(), -u0 * j * scale], prec=2)
 
 
-def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
-    """dL/dη on a box, L = 3A + 2C - D = s̃_n(3K₁₁ + 2K₂₁ - K₂₂) - 2r s̃_(n-1) in the blow-up of
-    :func:`_blowup_entries` (first-order series in η, r = r(θ) through cos and √)."""
+def _blowup_series(eta: flint.arb, eps: flint.arb) -> tuple:
+    """(r, [A, B, C, D]) of :func:`_blowup_entries` as first-order series in η at the ball ``eta`` (ε fixed):
+    the values and their η-derivatives (r = r(θ) through cos and √, the sinc's by :func:`_sinc_series`)."""
     t = flint.arb_series([eta, 1], prec=2)
     phi = flint.arb.pi() - eps * t
     theta = eps * phi
@@ -723,8 +723,15 @@ def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
     sn = t * _sinc_series(eps * eta, eps) / den
     sn1 = (phi + t) * _sinc_series(eps * (phi0 + eta), eps * (1 - eps)) / den
     h = (1 + r) / 2
-    L = sn * (3 * (h * h - r) - 2 * r * h + r) - 2 * r * sn1
-    return L.coeffs()[1]
+    K = [[h * h - r, h], [-r * h, -r]]
+    return r, [sn * K[0][0] - r * sn1, sn * K[0][1], sn * K[1][0], sn * K[1][1] - r * sn1]
+
+
+def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
+    """dL/dη on a box, L = 3A + 2C - D = s̃_n(3K₁₁ + 2K₂₁ - K₂₂) - 2r s̃_(n-1) in the blow-up of
+    :func:`_blowup_entries` (first-order series in η, :func:`_blowup_series`)."""
+    _, (A, _, C, D) = _blowup_series(eta, eps)
+    return (3 * A + 2 * C - D).coeffs()[1]
 
 
 @functools.cache
@@ -766,6 +773,83 @@ def thin_strip(row: dict, N1: int, pieces: int = 8) -> Fraction:
             B = B.max(weight * _evaluate(rest, [z, y] + entries).abs_upper())
     width = 2 * B * zmax / m.lower()
     return _q(ends(width)[1])
+
+
+def f_slope(row: dict, N1: int, pieces: int = 8) -> Fraction:
+    """On the ε-box and strip [η_in, η_out] of a :func:`position_strip` row, for every n ≥ N₁: F = F_n/z =
+    L/9 + zR_F (R_F the exact rest of :func:`_rests`, free of λ) is strictly increasing in η,
+
+        dF/dη = L'/9 + z Σ_v ∂R_F/∂v · v' + z'(R_F + z ∂R_F/∂z)  (v = A, B, C, D),
+
+    with L' ≥ m (:func:`l_slope`), v' from :func:`_blowup_series`, z ∈ [0, r_{N₁}^(N₁-1)] and |z'| =
+    z(n - 1)|dr/dη|/r ≤ z ε|dr/dθ|/r (dθ/dη = -ε², (n - 1)ε² ≤ ε).  So F_n has exactly one zero in the strip
+    (it changes sign there: part 9).  Returns a rational lower bound of dF/dη on the strip; ArithmeticError
+    if a ball does not decide."""
+    eps = _ball(*row["eps"])
+    a, b = row["strip"]
+    cut = [a + (b - a) * k / pieces for k in range(pieces + 1)]
+    zmax = upper_end(N1).upper() ** (N1 - 1)
+    z = flint.arb(zmax / 2, zmax / 2)
+    rest = _rests()["F"][0]
+    low = None
+    for e0, e1 in zip(cut, cut[1:]):
+        eta = _ball(e0, e1)
+        r, series = _blowup_series(eta, eps)
+        entries = [v.coeffs()[0] for v in series]
+        values = [z, flint.arb(0)] + entries
+        theta = flint.arb_series([(eps * (flint.arb.pi() - eps * eta)), 1], prec=2)
+        ca = 3 + 4 * theta.cos()
+        drdtheta = (1 / (ca + (ca * ca - 1).sqrt())).coeffs()[1]
+        r0 = r.coeffs()[0]
+        zdot = flint.arb(0, (zmax * eps.abs_upper() * drdtheta.abs_upper() / r0.abs_lower()).upper())
+        slope = l_slope(eta, eps) / 9 + zdot * (_evaluate(rest, values)
+                                                + z * _evaluate(rest.derivative("z"), values))
+        for i, v in enumerate(series):
+            slope += z * _evaluate(rest.derivative("ABCD"[i]), values) * v.coeffs()[1]
+        if not slope > 0:
+            raise ArithmeticError(f"dF/dη > 0 not proven on η ∈ [{e0}, {e1}]")
+        low = slope if low is None else low.min(slope)
+    return _round_down(_q(ends(low)[0]))
+
+
+def _round_down(x: Fraction) -> Fraction:
+    """A rational with 3 significant digits at most 0.99 x, for x > 0 (room for the re-check)."""
+    e = 0
+    while x * 10 ** e < 100:
+        e += 1
+    return Fraction(math.floor(x * Fraction(99, 100) * 10 ** e), 10 ** e)
+
+
+def one_zero_facts(positions: dict, prec: int = 128) -> dict:
+    """:func:`f_slope` on every strip of :func:`position_facts`: for every n ≥ N₁, F_n has exactly one zero
+    in the strip, ℓ_n (with part 12: the stable set in ]0, 1[ is exactly ]ℓ_n, r_n[)."""
+    N1 = positions["N1"]
+    with precision(prec):
+        return {"N1": N1, "boxes": [{"eps": row["eps"], "strip": row["strip"], "slope": f_slope(row, N1)}
+                                    for row in positions["boxes"]]}
+
+
+def check_one_zero(facts: dict, positions: dict | None = None, prec: int = 200) -> list[str]:
+    """Recompute each strip's slope bound (at ``prec`` bits): it must be positive and at most the recomputed
+    one; with the positions' facts, the strips must be theirs.  The list of failures."""
+    with precision(prec):
+        return _check_one_zero(facts, positions)
+
+
+def _check_one_zero(facts: dict, positions: dict | None) -> list[str]:
+    bad = []
+    if positions is not None and [[b["eps"], b["strip"]] for b in facts["boxes"]] != [
+            [row["eps"], row["strip"]] for row in positions["boxes"]]:
+        bad.append("the strips of part 12 are not part 9's")
+    for row in facts["boxes"]:
+        try:
+            new = f_slope(row, facts["N1"])
+        except ArithmeticError as e:
+            bad.append(f"one zero of F_n not proven on ε ∈ {row['eps']}: {e}")
+            continue
+        if not 0 < row["slope"] <= new:
+            bad.append(f"dF/dη ≥ {row['slope']} on ε ∈ {row['eps']} not implied")
+    return bad
 
 
 def position_facts(N1: int, boxes: int = 32, prec: int = 128) -> dict:
@@ -1066,10 +1150,17 @@ def reflection_facts() -> list[str]:
     x² + τx - γ = 0, p₁(T) = σ₊², p₃(t_{2n}) = σ₊ at x₊ > 0, and |f'(x₊)| < 1 exactly when τ = Q₁₂ > 0.
     ArithmeticError if an identity fails."""
     Mab, Mcb = word_matrix_flint("ab"), word_matrix_flint("cb")
+    ctx = flint.fmpq_mpoly_ctx.get(("a", "b", "c", "d", "W1", "W2"), "lex")
+    a, b, c, d, W1, W2 = ctx.gens()
+    N = [[W1, W2, ctx.from_dict({(0,) * 6: 1})], [c, d, ctx.from_dict({})], [a, b, ctx.from_dict({})]]
+    e2 = sum((N[i][i] * N[j][j] - N[i][j] * N[j][i] for i, j in ((0, 1), (0, 2), (1, 2))), ctx.from_dict({}))
+    F = W1 * (a - W1 * d + W2 * c) + (b * c + W2 * c * d - W1 * d * d)
     checks = {
         "M_cb = J M_ab J (J: q₁ ↔ q₃)": all(Mcb[i][j] == Mab[SWAP[i]][SWAP[j]] for i in range(3) for j in range(3)),
         "M_ab e₃ = e₃": [Mab[i][2] for i in range(3)] == [0, 0, 1],
         "det M_ab = r²": _det3(Mab) == R * R,
+        "e₂(N) tr N - det N = -F_n, N = J M_ab^n = [[W₁, W₂, 1], [c, d, 0], [a, b, 0]]":
+            e2 * (W1 + d) - _det3(N) == -F,
     }
     bad = [k for k, ok in checks.items() if not ok]
     if bad:
@@ -1141,11 +1232,13 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
         C = max(max(row["s_hi"][1] - _q(star_lo), _q(star_hi) - row["s_hi"][0]) / row["eps"][1] ** 2
                 for row in rows)
         C = Fraction(int(C * 1000) + 1, 1000)
+    positions = position_facts(max(N0 + 1, 7))
     return {"N0": N0, "block": block_facts(), "s_star": [_q(star_lo), _q(star_hi)],
             "kappa": [_q(ends(kap)[0]), _q(ends(kap)[1])], "C": C, "boxes": rows,
             "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec),
             "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit(),
-            "velocity": velocity_facts(max(N0 + 1, 8)), "positions": position_facts(max(N0 + 1, 7)),
+            "velocity": velocity_facts(max(N0 + 1, 8)), "positions": positions,
+            "one_zero": one_zero_facts(positions),
             "below": below_facts(max(N0 + 1, 7)), "arcs": arc_facts(max(N0 + 1, 7)),
             "third_a": third_a_facts(), "reflection": reflection_facts()}
 
@@ -1193,6 +1286,8 @@ def check(facts: dict, prec: int = 200) -> list[str]:
         bad += check_third_a(facts["third_a"])
     if "reflection" in facts:
         bad += check_reflection(facts["reflection"])
+    if "one_zero" in facts:
+        bad += check_one_zero(facts["one_zero"], facts.get("positions"))
     return bad
 
 

@@ -587,9 +587,33 @@ def test_reflection_decides_the_points_near_the_lower_end_against_the_reference(
             assert mp.mnorm(Q - Nb * Nb, 1) < mp.mpf(10) ** (-20) * scale
             stable, why = ref.analyse(n, r)
             assert stable == (tau > 0), (k, why)
+            # e₂(N) tr N - det N = τ(σ₀ + σ₊)(σ₀ + σ₋) = -F_n: stable exactly where F_n < 0
+            a, b, c, d, W1, W2 = Mab[0, 0], Mab[0, 1], Mab[1, 0], Mab[1, 1], Mab[2, 0], Mab[2, 1]
+            Fn = W1 * (a - W1 * d + W2 * c) + (b * c + W2 * c * d - W1 * d * d)
+            e2 = sum(N[i, i] * N[j, j] - N[i, j] * N[j, i] for i, j in ((0, 1), (0, 2), (1, 2)))
+            assert abs(e2 * (N[0, 0] + N[1, 1] + N[2, 2]) - mp.det(N) + Fn) < mp.mpf(10) ** (-20) * abs(Fn)
+            assert stable == (Fn < 0)
             half, P = _positions(n, r, q0)              # the reference's p(T) = Q (1, x)
             assert all(abs(P[j][m] - Q[j // 2, m]) < mp.mpf(10) ** (-20) * scale for j in (0, 2) for m in (0, 1))
             x = (-tau + mp.sqrt(tau * tau + 4 * gamma)) / 2
             sigma = tau + x
             assert x > 0 and abs(P[0][0] + x * P[0][1] - sigma ** 2) < mp.mpf(10) ** (-20) * scale
             assert abs(half[2][0] + x * half[2][1] - sigma) < mp.mpf(10) ** (-20) * r ** n
+
+
+def test_one_zero_of_f_in_each_strip_and_mutants(facts):
+    """Part 12's slope: dF/dη > 0 on every strip of part 9 (N₁ = 31 and N₁ = 7), re-checked at 200 bits;
+    an inflated slope, a strip moved off part 9's, or a row removed each fail."""
+    import copy
+    assert F.check_one_zero(facts["one_zero"], facts["positions"]) == []
+    assert all(row["slope"] > 0 for row in facts["one_zero"]["boxes"])
+    assert F.check_one_zero(_facts_from_7()["one_zero"], _facts_from_7()["positions"]) == []
+    f = copy.deepcopy(facts["one_zero"])
+    f["boxes"][5]["slope"] = Fraction(1, 20)                 # above the proved ≈ 0.0176
+    assert any("not implied" in b for b in F.check_one_zero(f))
+    g = copy.deepcopy(facts["one_zero"])
+    g["boxes"][5]["strip"] = [Fraction(1, 2), Fraction(3, 4)]
+    assert any("not part 9's" in b for b in F.check_one_zero(g, facts["positions"]))
+    h = copy.deepcopy(facts["one_zero"])
+    del h["boxes"][7]
+    assert any("not part 9's" in b for b in F.check_one_zero(h, facts["positions"]))
