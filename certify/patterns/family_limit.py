@@ -4,7 +4,7 @@ Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for ev
 This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
 parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, (parts 7-11) that
 on ]0, 1[ the stable set is everything between r_n and a thin strip around the lower end, and (part 12)
-that inside the strip one sign, that of Q₁₂, decides:
+that it is exactly ]ℓ_n, r_n[, ℓ_n the one zero of F_n in the strip:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -73,14 +73,14 @@ that inside the strip one sign, that of Q₁₂, decides:
     so ℓ₁ < 0 forces ℓ₂ ≥ r² > 0: for any q(0) the second or the third a has its pair separating, nothing
     is feasible.  With parts 9 and 10 this closes ]0, 1[ for every n ≥ 31 (and n ≥ 8 with N₁ = 7).
 
-12. **The reflection** (:func:`reflection_facts`, exact): M_cb = J M_ab J (J: q₁ ↔ q₃), so M = N² with
-    N = J M_ab^n; on R³/q(0) N induces N̄ = [[τ, 1], [γ, 0]] (N e₃ = e₁, γ = r^{2n}/σ₀ > 0, σ₀ = -q₃(t_{2n})),
-    Q = N̄²: on ]r*, r_n[ (n ≥ 31) r is stable exactly where τ = Q₁₂ > 0, and at every end of the stable
-    set Q = γI (μ = ν) and F_n = 0.
+12. **The reflection** (:func:`reflection_facts`, exact; :func:`f_slope`, balls): M_cb = J M_ab J (J: q₁ ↔ q₃),
+    so M = N² with N = J M_ab^n; on R³/q(0) N induces N̄ = [[τ, 1], [γ, 0]] (N e₃ = e₁, γ = r^{2n}/σ₀ > 0,
+    σ₀ = -q₃(t_{2n})), Q = N̄², and e₂(N) tr N - det N = τ(σ₀ + σ₊)(σ₀ + σ₋) = -F_n: on ]r*, r_n[ r is stable
+    exactly where F_n < 0.  dF/dη > 0 on part 9's strips: F_n has one zero ℓ_n in ]r_{n+1}, r_n[, and the
+    stable set in ]0, 1[ is exactly ]ℓ_n, r_n[ for every n ≥ 31 (n ≥ 8 with N₁ = 7).
 
-Not proved here (docs/family-limit.md): that Q₁₂ changes sign only once in I_n (so "exactly one interval"
-is not proved for n > N₀); certified per n ≤ N₀ by the
-family's exact certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in
+Not proved here (docs/family-limit.md): ℓ_n in closed form (it is enclosed); n ≤ N₀ is certified n by n by
+the family's exact certificates, and an independent mpmath computation is observed (n = 35, 50, 80 in
 the tests).
 """
 from __future__ import annotations
