@@ -791,6 +791,8 @@ def f_slope(row: dict, N1: int, pieces: int = 8) -> Fraction:
     zmax = upper_end(N1).upper() ** (N1 - 1)
     z = flint.arb(zmax / 2, zmax / 2)
     rest = _rests()["F"][0]
+    if rest.degrees()[GRADED_VARS.index("y")] != 0:
+        raise ArithmeticError("F's rest depends on λ")
     low = None
     for e0, e1 in zip(cut, cut[1:]):
         eta = _ball(e0, e1)
