@@ -2,8 +2,9 @@
 
 Issue 35 asks for the stable set W_n = ]lo_n, hi_n[ of w_n = (ab)^n(cb)^n for every n.
 This module proves where the two ends of that window are, for every n (parts 1-4 for all n,
-parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, and (parts 7-10) that
-on ]0, 5/8] the stable set is everything between r_n and a thin strip around the lower end:
+parts 5-6 for n > N₀), that the windows they bound are disjoint and decrease, (parts 7-11) that
+on ]0, 1[ the stable set is everything between r_n and a thin strip around the lower end, and (part 12)
+that it is exactly ]ℓ_n, r_n[, ℓ_n the one zero of F_n in the strip:
 
 1. **The block structure** (:func:`block_facts`, exact polynomials in r): M_ab = [[K, 0],
    [wᵀ, 1]] in (q₁, q₂ | q₃), M_cb the same K on (q₃, q₂), K = [[h² - r, h], [-rh, -r]]
@@ -67,9 +68,19 @@ on ]0, 5/8] the stable set is everything between r_n and a thin strip around the
     separates (part 8's formula): nothing in ]r_n, R] is stable, R = 5/8 for N₁ = 31 (part 7 re-proved on
     boxes of ]1/4, 5/8]), 1/4 for N₁ = 7.
 
-Not proved here (docs/family-limit.md): which points of I_n are stable (the stable set's lower end lies
-in it, so "exactly one interval" is not proved for n > N₀), and ]R, 1[; certified per n ≤ N₀ by the
-family's exact certificates, observed beyond by an independent mpmath computation (n = 35, 50, 80 in
+11. **Where t = tr K ≤ 0** (:func:`third_a_facts`, for every n ≥ 3, exact): on [429/2500, 1[ (429/2500 >
+    3 - 2√2, the zero of t) q₁ before the a's of the ab-phase obeys ℓ_{j+2} = tℓ_{j+1} - r²ℓ_j with ℓ₀ = -1,
+    so ℓ₁ < 0 forces ℓ₂ ≥ r² > 0: for any q(0) the second or the third a has its pair separating, nothing
+    is feasible.  With parts 9 and 10 this closes ]0, 1[ for every n ≥ 31 (and n ≥ 8 with N₁ = 7).
+
+12. **The reflection** (:func:`reflection_facts`, exact; :func:`f_slope`, balls): M_cb = J M_ab J (J: q₁ ↔ q₃),
+    so M = N² with N = J M_ab^n; on R³/q(0) N induces N̄ = [[τ, 1], [γ, 0]] (N e₃ = e₁, γ = r^{2n}/σ₀ > 0,
+    σ₀ = -q₃(t_{2n})), Q = N̄², and e₂(N) tr N - det N = τ(σ₀ + σ₊)(σ₀ + σ₋) = -F_n: on ]r*, r_n[ r is stable
+    exactly where F_n < 0.  dF/dη > 0 on part 9's strips: F_n has one zero ℓ_n in ]r_{n+1}, r_n[, and the
+    stable set in ]0, 1[ is exactly ]ℓ_n, r_n[ for every n ≥ 31 (n ≥ 8 with N₁ = 7).
+
+Not proved here (docs/family-limit.md): ℓ_n in closed form (it is enclosed); n ≤ N₀ is certified n by n by
+the family's exact certificates, and an independent mpmath computation is observed (n = 35, 50, 80 in
 the tests).
 """
 from __future__ import annotations
@@ -699,9 +710,9 @@ def _sinc_series(u0: flint.arb, scale: flint.arb) -> flint.arb_series:
     return flint.arb_series([u0.sinc(), -u0 * j * scale], prec=2)
 
 
-def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
-    """dL/dη on a box, L = 3A + 2C - D = s̃_n(3K₁₁ + 2K₂₁ - K₂₂) - 2r s̃_(n-1) in the blow-up of
-    :func:`_blowup_entries` (first-order series in η, r = r(θ) through cos and √)."""
+def _blowup_series(eta: flint.arb, eps: flint.arb) -> tuple:
+    """(r, [A, B, C, D]) of :func:`_blowup_entries` as first-order series in η at the ball ``eta`` (ε fixed):
+    the values and their η-derivatives (r = r(θ) through cos and √, the sinc's by :func:`_sinc_series`)."""
     t = flint.arb_series([eta, 1], prec=2)
     phi = flint.arb.pi() - eps * t
     theta = eps * phi
@@ -712,8 +723,15 @@ def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
     sn = t * _sinc_series(eps * eta, eps) / den
     sn1 = (phi + t) * _sinc_series(eps * (phi0 + eta), eps * (1 - eps)) / den
     h = (1 + r) / 2
-    L = sn * (3 * (h * h - r) - 2 * r * h + r) - 2 * r * sn1
-    return L.coeffs()[1]
+    K = [[h * h - r, h], [-r * h, -r]]
+    return r, [sn * K[0][0] - r * sn1, sn * K[0][1], sn * K[1][0], sn * K[1][1] - r * sn1]
+
+
+def l_slope(eta: flint.arb, eps: flint.arb) -> flint.arb:
+    """dL/dη on a box, L = 3A + 2C - D = s̃_n(3K₁₁ + 2K₂₁ - K₂₂) - 2r s̃_(n-1) in the blow-up of
+    :func:`_blowup_entries` (first-order series in η, :func:`_blowup_series`)."""
+    _, (A, _, C, D) = _blowup_series(eta, eps)
+    return (3 * A + 2 * C - D).coeffs()[1]
 
 
 @functools.cache
@@ -755,6 +773,85 @@ def thin_strip(row: dict, N1: int, pieces: int = 8) -> Fraction:
             B = B.max(weight * _evaluate(rest, [z, y] + entries).abs_upper())
     width = 2 * B * zmax / m.lower()
     return _q(ends(width)[1])
+
+
+def f_slope(row: dict, N1: int, pieces: int = 8) -> Fraction:
+    """On the ε-box and strip [η_in, η_out] of a :func:`position_strip` row, for every n ≥ N₁: F = F_n/z =
+    L/9 + zR_F (R_F the exact rest of :func:`_rests`, free of λ) is strictly increasing in η,
+
+        dF/dη = L'/9 + z Σ_v ∂R_F/∂v · v' + z'(R_F + z ∂R_F/∂z)  (v = A, B, C, D),
+
+    with L' ≥ m (:func:`l_slope`), v' from :func:`_blowup_series`, z ∈ [0, r_{N₁}^(N₁-1)] and |z'| =
+    z(n - 1)|dr/dη|/r ≤ z ε|dr/dθ|/r (dθ/dη = -ε², (n - 1)ε² ≤ ε).  So F_n has exactly one zero in the strip
+    (it changes sign there: part 9).  Returns a rational lower bound of dF/dη on the strip; ArithmeticError
+    if a ball does not decide."""
+    eps = _ball(*row["eps"])
+    a, b = row["strip"]
+    cut = [a + (b - a) * k / pieces for k in range(pieces + 1)]
+    zmax = upper_end(N1).upper() ** (N1 - 1)
+    z = flint.arb(zmax / 2, zmax / 2)
+    rest = _rests()["F"][0]
+    if rest.degrees()[GRADED_VARS.index("y")] != 0:
+        raise ArithmeticError("F's rest depends on λ")
+    low = None
+    for e0, e1 in zip(cut, cut[1:]):
+        eta = _ball(e0, e1)
+        r, series = _blowup_series(eta, eps)
+        entries = [v.coeffs()[0] for v in series]
+        values = [z, flint.arb(0)] + entries
+        theta = flint.arb_series([(eps * (flint.arb.pi() - eps * eta)), 1], prec=2)
+        ca = 3 + 4 * theta.cos()
+        drdtheta = (1 / (ca + (ca * ca - 1).sqrt())).coeffs()[1]
+        r0 = r.coeffs()[0]
+        zdot = flint.arb(0, (zmax * eps.abs_upper() * drdtheta.abs_upper() / r0.abs_lower()).upper())
+        slope = l_slope(eta, eps) / 9 + zdot * (_evaluate(rest, values)
+                                                + z * _evaluate(rest.derivative("z"), values))
+        for i, v in enumerate(series):
+            slope += z * _evaluate(rest.derivative("ABCD"[i]), values) * v.coeffs()[1]
+        if not slope > 0:
+            raise ArithmeticError(f"dF/dη > 0 not proven on η ∈ [{e0}, {e1}]")
+        low = slope if low is None else low.min(slope)
+    return _round_down(_q(ends(low)[0]))
+
+
+def _round_down(x: Fraction) -> Fraction:
+    """A rational with 3 significant digits at most 0.99 x, for x > 0 (room for the re-check)."""
+    e = 0
+    while x * 10 ** e < 100:
+        e += 1
+    return Fraction(math.floor(x * Fraction(99, 100) * 10 ** e), 10 ** e)
+
+
+def one_zero_facts(positions: dict, prec: int = 128) -> dict:
+    """:func:`f_slope` on every strip of :func:`position_facts`: for every n ≥ N₁, F_n has exactly one zero
+    in the strip, ℓ_n (with part 12: the stable set in ]0, 1[ is exactly ]ℓ_n, r_n[)."""
+    N1 = positions["N1"]
+    with precision(prec):
+        return {"N1": N1, "boxes": [{"eps": row["eps"], "strip": row["strip"], "slope": f_slope(row, N1)}
+                                    for row in positions["boxes"]]}
+
+
+def check_one_zero(facts: dict, positions: dict | None = None, prec: int = 200) -> list[str]:
+    """Recompute each strip's slope bound (at ``prec`` bits): it must be positive and at most the recomputed
+    one; with the positions' facts, the strips must be theirs.  The list of failures."""
+    with precision(prec):
+        return _check_one_zero(facts, positions)
+
+
+def _check_one_zero(facts: dict, positions: dict | None) -> list[str]:
+    bad = []
+    if positions is not None and [[b["eps"], b["strip"]] for b in facts["boxes"]] != [
+            [row["eps"], row["strip"]] for row in positions["boxes"]]:
+        bad.append("the strips of part 12 are not part 9's")
+    for row in facts["boxes"]:
+        try:
+            new = f_slope(row, facts["N1"])
+        except ArithmeticError as e:
+            bad.append(f"one zero of F_n not proven on ε ∈ {row['eps']}: {e}")
+            continue
+        if not 0 < row["slope"] <= new:
+            bad.append(f"dF/dη ≥ {row['slope']} on ε ∈ {row['eps']} not implied")
+    return bad
 
 
 def position_facts(N1: int, boxes: int = 32, prec: int = 128) -> dict:
@@ -1000,6 +1097,93 @@ def arc_facts(N1: int, boxes: list | None = None) -> dict:
             raise ArithmeticError("the separating b is not proven")
         return {"N1": N1, "r": [None, R], "upper": boxes, "margins": [_q(ends(m1)[0]), _q(ends(m2)[0])]}
 
+# ------------------------------------------------------------------ 11. t ≤ 0: the third a separates
+THIRD_A_R0 = Fraction(429, 2500)    # 0.1716 > 3 - 2√2 ≈ 0.171573, the zero of t = tr K in ]0, 1[
+
+
+def third_a_facts(r0: Fraction = THIRD_A_R0) -> dict:
+    """For every n ≥ 3 and every r in [r₀, 1[ (r₀ ≥ 3 - 2√2, so t = tr K = (r² - 6r + 1)/4 ≤ 0) nothing is
+    feasible, whatever q(0): before the (j+1)-th a of the ab-phase (j ≤ n - 1) pair 1 has q₁ = ℓ_j =
+    (K^j (-1, u))₁, and Cayley–Hamilton (K² = tK - r²I, checked exactly) gives ℓ₂ = tℓ₁ - r²ℓ₀ = tℓ₁ + r²,
+    so if the second a's pair approaches (ℓ₁ < 0) the third's separates: ℓ₂ ≥ r² ≥ r₀² > 0.  No dominance,
+    no eigenvector, no bound in n: u and v are arbitrary.  t ≤ 0 on [r₀, 1] is checked exactly at both ends
+    (t is convex).  Returns the range, n_min = 3 (the third a is in the word), t_max = max t ≤ 0 and the
+    margin r₀² (a rational lower bound of ℓ₂ where ℓ₁ < 0); ArithmeticError if a step fails."""
+    K, _ = block()
+    one = flint.fmpq_poly([1])
+    K2 = _mul(K, K)
+    if any(K2[i][j] - T * K[i][j] + (R * R if i == j else 0) * one != 0 for i in range(2) for j in range(2)):
+        raise ArithmeticError("K² ≠ tK - r²I")
+    t0, t1 = (_q(T(_fmpq(x))) for x in (r0, Fraction(1)))
+    if not (0 < r0 < 1 and t0 <= 0 and t1 <= 0):
+        raise ArithmeticError(f"t = tr K ≤ 0 on [{r0}, 1] not proven")
+    return {"r": [r0, Fraction(1)], "n_min": 3, "t_max": max(t0, t1), "margin": r0 * r0}
+
+
+def check_third_a(facts: dict) -> list[str]:
+    """Recompute :func:`third_a_facts` on the stated range: t_max must be ≥ the recomputed maximum and ≤ 0,
+    the margin positive and at most r₀², n_min ≥ 3 (three a's in the ab-phase).  The list of failures."""
+    r0, r1 = facts["r"]
+    try:
+        new = third_a_facts(r0)
+    except ArithmeticError as e:
+        return [f"part 11 does not hold: {e}"]
+    bad = []
+    if r1 != 1:
+        bad.append(f"part 11 is stated on [{r0}, {r1}], not [r0, 1[")
+    if facts["n_min"] < 3:
+        bad.append(f"part 11 needs a third a: n ≥ 3, not n ≥ {facts['n_min']}")
+    if not new["t_max"] <= facts["t_max"] <= 0:
+        bad.append(f"t ≤ {facts['t_max']} not implied")
+    if not 0 < facts["margin"] <= new["margin"]:
+        bad.append(f"third a margin {facts['margin']} not implied")
+    return bad
+
+
+# ------------------------------------------------------------------ 12. the reflection: M = N²
+SWAP = (2, 1, 0)    # J: the reflection of the line, q₁ ↔ q₃ (and p₁ ↔ p₃)
+
+
+def reflection_facts() -> list[str]:
+    """The exact identities behind M = N², N = J M_ab^n (J swaps q₁ and q₃), read from the engine's matrices:
+    M_cb = J M_ab J, M_ab e₃ = e₃ and det M_ab = r².  Consequences (docs/family-limit.md, part 12): N commutes
+    with M, so N q(0) = σ₀ q(0) with σ₀ = -q₃(t_{2n}); N e₃ = e₁, so on R³/q(0) in (p₁, p₃) the induced map is
+    N̄ = [[τ, 1], [γ, 0]] with γ = r^{2n}/σ₀, and Q = N̄² = [[τ² + γ, τ], [γτ, γ]]: the fixed points are
+    x² + τx - γ = 0, p₁(T) = σ₊², p₃(t_{2n}) = σ₊ at x₊ > 0, and |f'(x₊)| < 1 exactly when τ = Q₁₂ > 0.
+    ArithmeticError if an identity fails."""
+    Mab, Mcb = word_matrix_flint("ab"), word_matrix_flint("cb")
+    ctx = flint.fmpq_mpoly_ctx.get(("a", "b", "c", "d", "W1", "W2"), "lex")
+    a, b, c, d, W1, W2 = ctx.gens()
+    N = [[W1, W2, ctx.from_dict({(0,) * 6: 1})], [c, d, ctx.from_dict({})], [a, b, ctx.from_dict({})]]
+    e2 = sum((N[i][i] * N[j][j] - N[i][j] * N[j][i] for i, j in ((0, 1), (0, 2), (1, 2))), ctx.from_dict({}))
+    F = W1 * (a - W1 * d + W2 * c) + (b * c + W2 * c * d - W1 * d * d)
+    checks = {
+        "M_cb = J M_ab J (J: q₁ ↔ q₃)": all(Mcb[i][j] == Mab[SWAP[i]][SWAP[j]] for i in range(3) for j in range(3)),
+        "M_ab e₃ = e₃": [Mab[i][2] for i in range(3)] == [0, 0, 1],
+        "det M_ab = r²": _det3(Mab) == R * R,
+        "e₂(N) tr N - det N = -F_n, N = J M_ab^n = [[W₁, W₂, 1], [c, d, 0], [a, b, 0]]":
+            e2 * (W1 + d) - _det3(N) == -F,
+    }
+    bad = [k for k, ok in checks.items() if not ok]
+    if bad:
+        raise ArithmeticError("reflection identities fail: " + "; ".join(bad))
+    return list(checks)
+
+
+def _det3(M) -> flint.fmpq_poly:
+    return (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
+            + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]))
+
+
+def check_reflection(facts: list[str]) -> list[str]:
+    """Re-derive :func:`reflection_facts`: the stated identities must be the proved ones."""
+    try:
+        new = reflection_facts()
+    except ArithmeticError as e:
+        return [str(e)]
+    return [f"reflection identity not proved: {k}" for k in facts if k not in new]
+
+
 def _fmpq(x: Fraction) -> flint.fmpq:
     return flint.fmpq(x.numerator, x.denominator)
 
@@ -1031,7 +1215,7 @@ def _q(x) -> Fraction:
 
 
 def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
-    """The facts of parts 1-10 (parts 4-10 under their keys) as rational statements a checker
+    """The facts of parts 1-12 (parts 4-12 under their keys) as rational statements a checker
     re-verifies (:func:`check`); for parts 1-3:
     the block identities; s* and κ in rational intervals; for ε in each of ``boxes`` equal
     boxes covering [0, 1/N₀], a rational interval holding s_hi(ε) and |s_hi(ε) - s*| ≤ C ε₁²
@@ -1050,12 +1234,15 @@ def prove(N0: int = 30, boxes: int = 64, prec: int = 128) -> dict:
         C = max(max(row["s_hi"][1] - _q(star_lo), _q(star_hi) - row["s_hi"][0]) / row["eps"][1] ** 2
                 for row in rows)
         C = Fraction(int(C * 1000) + 1, 1000)
+    positions = position_facts(max(N0 + 1, 7))
     return {"N0": N0, "block": block_facts(), "s_star": [_q(star_lo), _q(star_hi)],
             "kappa": [_q(ends(kap)[0]), _q(ends(kap)[1])], "C": C, "boxes": rows,
             "monotone": "r_{n+1} < r_n for every n ≥ 2", "lower": prove_lower(N0, prec=prec),
             "dominant": dominant_facts(max(N0 + 1, 7)), "w_limit": check_w_limit(),
-            "velocity": velocity_facts(max(N0 + 1, 8)), "positions": position_facts(max(N0 + 1, 7)),
-            "below": below_facts(max(N0 + 1, 7)), "arcs": arc_facts(max(N0 + 1, 7))}
+            "velocity": velocity_facts(max(N0 + 1, 8)), "positions": positions,
+            "one_zero": one_zero_facts(positions),
+            "below": below_facts(max(N0 + 1, 7)), "arcs": arc_facts(max(N0 + 1, 7)),
+            "third_a": third_a_facts(), "reflection": reflection_facts()}
 
 
 def check(facts: dict, prec: int = 200) -> list[str]:
@@ -1097,6 +1284,12 @@ def check(facts: dict, prec: int = 200) -> list[str]:
         bad += check_below(facts["below"])
     if "arcs" in facts:
         bad += check_arcs(facts["arcs"])
+    if "third_a" in facts:
+        bad += check_third_a(facts["third_a"])
+    if "reflection" in facts:
+        bad += check_reflection(facts["reflection"])
+    if "one_zero" in facts:
+        bad += check_one_zero(facts["one_zero"], facts.get("positions"))
     return bad
 
 

@@ -476,3 +476,144 @@ def test_mutant_arc_margin_inflated_fails(facts):
     h = copy.deepcopy(facts["arcs"])
     h["upper"].append([Fraction(5, 8), Fraction(3, 4)])  # a box where part 7's dominance is not proven
     assert any("part 10 does not hold" in b for b in F.check_arcs(h))
+
+
+# ------------------------------------------------------------------ t ≤ 0: the third a (part 11)
+def _q1_before_the_a(n, r, u, v):
+    """q₁ just before each a of the ab-phase, by the reference's collision law from q(0) = (-1, u, v)."""
+    q, out = [mp.mpf(-1), u, v], []
+    for letter in "ab" * n:
+        if letter == "a":
+            out.append(q[0])
+        q = ref.collide(letter, q, r)
+    return out
+
+
+def test_third_a_separates_for_any_q0_against_mpmath():
+    """Part 11 for every q(0): at r in [r₀, 1[ and arbitrary u, v, the second a's pair separates or the third's
+    does by at least r₀²; at r = 0.17 < 3 - 2√2 (t > 0) some u (about -32 or less) lets the first three a's
+    all approach, and the proof refuses r₀ = 17/100."""
+    f = F.third_a_facts()
+    with mp.workdps(50):
+        margin = mp.mpf(f["margin"].numerator) / f["margin"].denominator
+        for r in (mp.mpf(429) / 2500, mp.mpf("0.3"), mp.mpf(5) / 8, mp.mpf("0.8"), mp.mpf("0.999")):
+            for u in (mp.mpf(-7), mp.mpf(0), mp.mpf("0.3"), mp.mpf(1) / 3, mp.mpf(2), mp.mpf(40)):
+                l0, l1, l2 = _q1_before_the_a(3, r, u, mp.mpf("0.5"))[:3]
+                assert l0 < 0 and (l1 >= 0 or l2 >= margin)
+                assert mp.almosteq(l2, (r * r - 6 * r + 1) / 4 * l1 + r * r)
+        r = mp.mpf("0.17")
+        assert any(max(_q1_before_the_a(3, r, u, mp.mpf(0))) < 0 for u in mp.linspace(-60, 0, 61))
+    with pytest.raises(ArithmeticError):
+        F.third_a_facts(Fraction(17, 100))
+
+
+@pytest.mark.parametrize("n", [31, 50])
+def test_third_a_nothing_stable_against_the_reference(n):
+    """The reference's stable-set analysis finds nothing stable at r in [5/8, 1[ (and 0.18, 0.3)."""
+    with mp.workdps(4 * n + 60):
+        for r in ("0.18", "0.3", "0.625", "0.7", "0.8", "0.9", "0.99"):
+            assert not ref.analyse(n, mp.mpf(r))[0]
+
+
+def test_mutants_of_the_third_a_fail():
+    import copy
+    f = F.third_a_facts()
+    assert F.check_third_a(f) == [] and f["r"] == [Fraction(429, 2500), 1] and f["t_max"] < 0
+    for key, value, words in (("r", [Fraction(1, 10), Fraction(1)], "does not hold"),
+                              ("margin", f["margin"] * 2, "margin"),
+                              ("n_min", 2, "third a"),
+                              ("t_max", f["t_max"] * 2, "t ≤")):
+        g = copy.deepcopy(f)
+        g[key] = value
+        assert any(words in b for b in F.check_third_a(g)), key
+
+
+# ------------------------------------------------------------------ the reflection M = N² (part 12)
+def test_reflection_identities_and_mutant():
+    assert F.check_reflection(F.reflection_facts()) == []
+    assert F.check_reflection(["M_cb = J M_ab J (J: q₁ ↔ q₃)", "M_cb = M_ab"]) != []
+
+
+def _quotient(G, q0):
+    """The map induced by G on R³/q(0) in the coordinates (p₁, p₃) of the representatives with p₂ = 0."""
+    cols = []
+    for k in (0, 2):
+        w = G[:, k]
+        w = w - (w[1] / q0[1]) * q0
+        cols.append((w[0], w[2]))
+    return mp.matrix([[cols[0][0], cols[1][0]], [cols[0][1], cols[1][1]]])
+
+
+def _positions(n, r, q0):
+    """The reference's positions, letter by letter from p(0) = (1, 0, x) and q(0): (p(t_{2n}), p(T)), each as
+    pairs (coefficient of 1, coefficient of x) per particle gap."""
+    q, P, half = list(q0), [(mp.mpf(1), mp.mpf(0)), (mp.mpf(0), mp.mpf(0)), (mp.mpf(0), mp.mpf(1))], None
+    for k, letter in enumerate("ab" * n + "cb" * n):
+        if k == 2 * n:
+            half = list(P)
+        i = ref.IDX[letter]
+        t = (-P[i][0] / q[i], -P[i][1] / q[i])
+        P = [(P[j][0] + t[0] * q[j], P[j][1] + t[1] * q[j]) for j in range(3)]
+        P[i] = (mp.mpf(0), mp.mpf(0))
+        q = ref.collide(letter, q, r)
+    return half, P
+
+
+@pytest.mark.parametrize("n", [10, 35])
+def test_reflection_decides_the_points_near_the_lower_end_against_the_reference(n):
+    """Part 12 against the reference: with N = J M_ab^n, N q(0) = σ₀ q(0) with σ₀ = -q₃(t_{2n}) > 0, the induced
+    N̄ = [[τ, 1], [γ, 0]] with γ = r^{2n}/σ₀, Q = N̄² (the reference's own p(T)), τ = Q₁₂, and at points just
+    below and above the reference's lower end (and mid-window) it is stable exactly where τ > 0, with
+    p₃(t_{2n}) = σ₊ = τ + x₊ there."""
+    lo, hi = _window(n)
+    J = mp.matrix([[0, 0, 1], [0, 1, 0], [1, 0, 0]])
+    with mp.workdps(4 * n + 60):
+        for k in ("-1e-3", "-1e-8", "1e-8", "1e-3", "0.5"):
+            r = lo + mp.mpf(k) * (hi - lo)
+            Mab = ref.matrix("ab", r) ** n
+            M = ref.matrix("cb", r) ** n * Mab
+            ev, vec = mp.eig(M)
+            i = max(range(3), key=lambda i: abs(ev[i]))
+            q0 = mp.matrix([mp.re(x) for x in vec[:, i]]) / -mp.re(vec[0, i])
+            N = J * Mab
+            sigma0 = -(Mab * q0)[2]
+            assert sigma0 > 0 and mp.norm(N * q0 - sigma0 * q0) < mp.mpf(10) ** (-3 * n)
+            Nb, Q = _quotient(N, q0), _quotient(M, q0)
+            gamma = r ** (2 * n) / sigma0
+            tau = Nb[0, 0]
+            scale = r ** (2 * n)
+            assert abs(Nb[0, 1] - 1) + abs(Nb[1, 1]) < mp.mpf(10) ** (-2 * n)
+            assert abs(Nb[1, 0] - gamma) < mp.mpf(10) ** (-20) * gamma
+            assert mp.mnorm(Q - Nb * Nb, 1) < mp.mpf(10) ** (-20) * scale
+            stable, why = ref.analyse(n, r)
+            assert stable == (tau > 0), (k, why)
+            # e₂(N) tr N - det N = τ(σ₀ + σ₊)(σ₀ + σ₋) = -F_n: stable exactly where F_n < 0
+            a, b, c, d, W1, W2 = Mab[0, 0], Mab[0, 1], Mab[1, 0], Mab[1, 1], Mab[2, 0], Mab[2, 1]
+            Fn = W1 * (a - W1 * d + W2 * c) + (b * c + W2 * c * d - W1 * d * d)
+            e2 = sum(N[i, i] * N[j, j] - N[i, j] * N[j, i] for i, j in ((0, 1), (0, 2), (1, 2)))
+            assert abs(e2 * (N[0, 0] + N[1, 1] + N[2, 2]) - mp.det(N) + Fn) < mp.mpf(10) ** (-20) * abs(Fn)
+            assert stable == (Fn < 0)
+            half, P = _positions(n, r, q0)              # the reference's p(T) = Q (1, x)
+            assert all(abs(P[j][m] - Q[j // 2, m]) < mp.mpf(10) ** (-20) * scale for j in (0, 2) for m in (0, 1))
+            x = (-tau + mp.sqrt(tau * tau + 4 * gamma)) / 2
+            sigma = tau + x
+            assert x > 0 and abs(P[0][0] + x * P[0][1] - sigma ** 2) < mp.mpf(10) ** (-20) * scale
+            assert abs(half[2][0] + x * half[2][1] - sigma) < mp.mpf(10) ** (-20) * r ** n
+
+
+def test_one_zero_of_f_in_each_strip_and_mutants(facts):
+    """Part 12's slope: dF/dη > 0 on every strip of part 9 (N₁ = 31 and N₁ = 7), re-checked at 200 bits;
+    an inflated slope, a strip moved off part 9's, or a row removed each fail."""
+    import copy
+    assert F.check_one_zero(facts["one_zero"], facts["positions"]) == []
+    assert all(row["slope"] > 0 for row in facts["one_zero"]["boxes"])
+    assert F.check_one_zero(_facts_from_7()["one_zero"], _facts_from_7()["positions"]) == []
+    f = copy.deepcopy(facts["one_zero"])
+    f["boxes"][5]["slope"] = Fraction(1, 20)                 # above the proved ≈ 0.0176
+    assert any("not implied" in b for b in F.check_one_zero(f))
+    g = copy.deepcopy(facts["one_zero"])
+    g["boxes"][5]["strip"] = [Fraction(1, 2), Fraction(3, 4)]
+    assert any("not part 9's" in b for b in F.check_one_zero(g, facts["positions"]))
+    h = copy.deepcopy(facts["one_zero"])
+    del h["boxes"][7]
+    assert any("not part 9's" in b for b in F.check_one_zero(h, facts["positions"]))
