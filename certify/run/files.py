@@ -174,6 +174,34 @@ def ensure_writable(directory) -> Path:
     return directory
 
 
+def _covers(new, old) -> bool:
+    """A measure of a result's size covers another: a number at least as large, an interval
+    (lo, hi) containing the other."""
+    if isinstance(old, tuple):
+        return new[0] <= old[0] and old[1] <= new[1]
+    return new >= old
+
+
+def _shown(value) -> str:
+    return f"]{value[0]}, {value[1]}[" if isinstance(value, tuple) else str(value)
+
+
+def keep_larger(path, what: str, committed: dict | None, new: dict, force: bool, option: str = "--out DIR") -> None:
+    """Refuse to replace a larger result: ``path`` holds a ``what`` (census, atlas, ...) whose
+    size is ``committed`` (name -> a number, larger is more, or an interval (lo, hi) of r;
+    None when there is no readable result there); the run about to replace it has the size
+    ``new``.  Unless ``force``, a run smaller in one measure is a UsageError (one line, exit 2)
+    naming the measures, ``option`` (where to write instead) and --force.  Every command
+    that writes into reports/ by default calls this before any work."""
+    if force or not committed:
+        return
+    smaller = [name for name, old in committed.items() if name in new and not _covers(new[name], old)]
+    if smaller:
+        sizes = lambda doc: ", ".join(f"{name} {_shown(doc[name])}" for name in smaller)    # noqa: E731
+        raise UsageError(f"{path} holds a larger {what} ({sizes(committed)}) than this run's ({sizes(new)}), which "
+                         f"would replace it: write it elsewhere with {option}, or pass --force")
+
+
 def write_section(path, title: str, body: str) -> None:
     """Replace (or add) the section ``## title`` of the Markdown file ``path`` by ``body``,
     atomically; the other sections are kept.  Benchmarks share one file this way."""
