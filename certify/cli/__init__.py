@@ -88,7 +88,7 @@ import traceback
 
 from certify.errors import Undecided, UsageError
 
-from .options import Parser, say
+from .options import Parser, clip, say
 
 TOPICS = ("claims", "exact", "section5", "island_command", "atlas_command", "schemas")   # in the order of ``--help``
 # Each command's topic: running a command imports its topic's module alone (``pattern`` does not load the
@@ -155,7 +155,7 @@ def main(argv=None) -> int:
         return args.func(args)
     except UsageError as exc:
         clear_progress()
-        say(f"error: {exc}")
+        say(f"error: {clip(' '.join(str(exc).split()))}")
         return 2
     except KeyboardInterrupt:
         clear_progress()

@@ -38,7 +38,7 @@ def cmd_census(args) -> int:
 
     from certify.run import census_report as census
     from certify.run import executors, progress
-    from certify.run.files import ensure_writable, keep_larger
+    from certify.run.files import ensure_writable, ensure_writable_file, keep_larger
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     if args.max_length > MAX_CENSUS_LENGTH and not args.scheduler:
         raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} on this machine ({CENSUS_COST}; "
@@ -61,7 +61,7 @@ def cmd_census(args) -> int:
     keep_larger(out / "census.json", "census", None if longer is None else {"longest period": longer},
                 {"longest period": args.max_length}, args.force)
     state = args.state if args.state is not None else out / "census-state.jsonl"
-    ensure_writable(state.parent)
+    ensure_writable_file(state, "--state")
     with executors.executor(args.jobs, args.scheduler, one_thread=True) as ex:
         records = census.run_census(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
     doc = census.write_outputs(records, args.max_length, out)

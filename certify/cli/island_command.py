@@ -46,12 +46,8 @@ def cmd_island(args) -> int:
         raise UsageError(f"--depth is at most {MAX_DEPTH}")
     rs = r_list(args) if args.r is not None or args.r_range is not None else []
     if args.figure is not None:
-        from pathlib import Path
-
-        from certify.run.files import ensure_writable
-        if Path(args.figure).is_dir():
-            raise UsageError(f"--figure {args.figure!r} is a directory, not a file")
-        ensure_writable(Path(args.figure).parent if str(Path(args.figure).parent) else Path("."))
+        from certify.run.files import ensure_writable_file
+        ensure_writable_file(args.figure, "--figure")
     bar = progress.Bar("r")
     records = []
     for k, r in enumerate(rs):

@@ -12,6 +12,7 @@ from certify.run import executors, progress, saving
 from certify.run.files import (
     atomic_path,
     ensure_writable,
+    ensure_writable_file,
     keep_larger,
     load_findings,
     read_text_or_none,
@@ -79,9 +80,7 @@ def cmd_simulate(args) -> int:
     r = r_values(args)
     theta0, phi0 = initial_data(args)
     if args.out is not None:
-        ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
-        if args.out.is_dir():
-            raise UsageError(f"--out {str(args.out)!r} is a directory, not a file")
+        ensure_writable_file(args.out, "--out")
     if args.dps is not None and args.engine == "float64":
         raise UsageError("--dps is for the mp and ball engines")
     if args.words and args.out is None:
@@ -101,9 +100,7 @@ def cmd_simulate(args) -> int:
 def cmd_stress(args) -> int:
     """Near-singular, long and random orbits on every engine: reports/STRESS.md."""
     from certify.numerics import stress
-    ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
-    if args.out.is_dir():
-        raise UsageError(f"--out {str(args.out)!r} is a directory, not a file")
+    ensure_writable_file(args.out, "--out")
     spec = stress.RANDOM_QUICK if args.quick else stress.RANDOM
     keep_larger(args.out, "stress report", committed_stress(args.out),
                 {"random orbits": spec["count"], "collisions each": spec["collisions"]}, args.force, "--out FILE")
