@@ -29,6 +29,13 @@ class Parser(argparse.ArgumentParser):
     def error(self, message):
         raise UsageError(message)
 
+    def _get_values(self, action, arg_strings):
+        """argparse's values, but ``--r=--`` is refused: argparse (3.11) drops the "--" and
+        hands the option an untyped empty list."""
+        if action.option_strings and action.nargs is None and arg_strings == ["--"]:
+            self.error(f"argument {'/'.join(action.option_strings)}: expected a value, got '--'")
+        return super()._get_values(action, arg_strings)
+
 
 # --- numbers: one syntax for every command --------------------------------------------
 #

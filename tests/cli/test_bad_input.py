@@ -87,3 +87,12 @@ def test_an_output_file_that_is_a_directory_is_refused_by_every_command(tmp_path
         assert cli.main([*argv, str(tmp_path)]) == 2
         err = capsys.readouterr().err
         assert one_line(err) and f"{option} '{tmp_path}' is a directory, not a file" in err, err
+
+
+@pytest.mark.parametrize("argv", [["census", "--max-length=--"], ["family", "--n-max=--"], ["island", "--r=--"]])
+def test_an_option_given_the_value_dashdash_is_refused(argv, capsys):
+    """argparse (3.11) drops a "--" given as ``--opt=--`` and hands the option an empty list:
+    exit 3 (census, family, island) before cli.options.Parser refused it."""
+    assert cli.main(argv) == 2
+    err = capsys.readouterr().err
+    assert one_line(err) and "expected a value, got '--'" in err, err
