@@ -36,6 +36,12 @@ def test_a_certificates_file_of_the_wrong_shape_is_one_line_exit_2(shape, tmp_pa
     assert one_line(capsys.readouterr().err)
 
 
+@pytest.mark.parametrize("argv", [["--jobs", "x"], ["--jobs", "0"], ["--only"], ["--bogus"], ["a", "b"]])
+def test_a_bad_option_of_the_kernel_is_one_line_exit_2(argv, capsys):
+    assert kernel_main(argv) == 2
+    assert one_line(capsys.readouterr().err)
+
+
 LONG = "1" * 5000 + "/3" + "0" * 5000           # a rational r in ]0, 1[ with a 5000-digit numerator
 
 
