@@ -86,3 +86,32 @@ def test_commands_md_names_every_schema():
     section = text.split("## JSON outputs and their schemas", 1)[1].split("\n## ", 1)[0]
     for name in schemas.schemas():
         assert f"`{name}`" in section, name
+
+
+def findings(r: str, collisions: int) -> dict:
+    """The committed record of identify --section5 at r (reports/section5-orbits.json)."""
+    doc = json.loads((REPORTS / "section5-orbits.json").read_text(encoding="utf-8"))
+    return next(x for runs in doc["claims"].values() for x in runs
+                if isinstance(x, dict) and x.get("r") == r and x.get("collisions") == collisions)
+
+
+def test_orbit_md_says_what_the_committed_findings_say():
+    """docs/orbit.md read "at r = 0.173 no orbit shows a period ≤ 120" while the committed
+    findings (and README) have all eight on a certified 122-letter word."""
+    text = " ".join((DOCS / "orbit.md").read_text(encoding="utf-8").split())
+    for collisions in (10_000, 100_000):
+        at = findings("173/1000", collisions)
+        assert at["classes"] == {"attracting periodic": 8, "island": 0, "unresolved": 0}
+        assert {len(w["word"]) for w in at["words"]} == {122}
+    assert "at r = 0.173 all eight follow the 122-letter word" in text and "no period ≤ 120" not in text
+    for r in ("3/10", "4/5"):
+        assert findings(r, 10_000)["classes"] == {"attracting periodic": 4, "island": 4, "unresolved": 0}
+    assert "the other four are island orbits (quasi-periodic, proved)" in text
+
+
+def test_orbit_md_states_identifys_limits_on_r(capsys):
+    from certify.cli.options import R_MARGIN_TEXT
+    text = " ".join((DOCS / "orbit.md").read_text(encoding="utf-8").split())
+    assert f"An r within {R_MARGIN_TEXT} of 0 or 1 is refused" in text and "(above 1 − 2^-53)" in text
+    assert cli.main(["identify", "--r", "0.99999999999999999"]) == 2 and "rounds to 1.0" in capsys.readouterr().err
+    assert cli.main(["identify", "--r", "2^-61"]) == 2 and R_MARGIN_TEXT in capsys.readouterr().err
