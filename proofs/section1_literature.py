@@ -477,8 +477,11 @@ def windows(ab_cb_patterns, ab_cb_limit, n2, n3, limit, order, family):
                                           "the paper's open problem, proved)", True, [])))
     gap = ("the stable set outside the windows (family_limit's facts have no parts 9, 10)" if R is None
            else f"the stable set in ]{R}, 1[ (family_limit proves nothing there)")
-    note = ("The paper's open problem (l. 1215: the windows \"seem to be disjoint and accumulate from above on 7−4√3 "
-            "... this has also not been proven yet\"): " + (
+    if not whole:
+        parts[2].evidence.append(f"NOT proved: for n > {N0}, {gap}; the windows W_n are disjoint, the whole stable "
+                                 "sets are not certified to be")
+    note = ("The paper's open problem (l. 1215: the intervals of stability \"seem to be disjoint and accumulate from "
+            "above … but this has also not been proven yet\"): " + (
                 "proved for every n ≥ 2. " if whole else
                 f"proved for the windows W_n of every n ≥ 2 (n ≤ {N0} exact, n > {N0} by family_limit's balls) and "
                 f"for the whole stable sets of n ≤ {N0}. NOT certified: for n > {N0}, {gap}; so that the stable "
@@ -554,6 +557,10 @@ def q2_vanishes_at_threshold(ab_cb_patterns, ab_cb_limit, criterion, branch, fam
     parts = [small_n_q2(family_document(family))] + large_n_q2(ab_cb_limit)
     checks += [named("L6.6", c) for c in parts]
     whole = all(c.holds for c in parts) and "positions" in ab_cb_limit["facts"]
+    if "positions" not in ab_cb_limit["facts"]:
+        parts[-1].evidence.append(f"NOT proved: for n > {N0}, that the stable set reaches r_n (family_limit's facts "
+                                  "have no part 9): r_n is where q_2(0) = 0 and the feasible set ends, not yet the "
+                                  "certified upper end of the stable set")
     note = ("CDKK's conjecture (l. 1215), tested, not assumed: " + (
         "proved for every n ≥ 2 — the upper end of the window of (ab)^n(cb)^n is where q_2(0) = 0 on the dominant "
         "branch, r_n, the root of r² − (6 + 8cos(π/n))r + 1." if whole else
