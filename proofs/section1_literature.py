@@ -308,27 +308,36 @@ def family_document(source=FAMILY) -> dict | None:
     return doc
 
 
+def document_problems(doc: dict | None) -> list[str]:
+    """What keeps family.json from being used: missing, stale (its digest is not that of the source
+    it depends on), an n of 2..N0 missing, a stable set that is not one interval."""
+    if doc is None:
+        return [f"reports/{FAMILY} is missing: run `{FAMILY_COMMAND}`"]
+    if not is_current(doc):
+        return [f"reports/{FAMILY} is stale: its digest ({str(doc.get('digest'))[:12]}…) is not that of the "
+                f"source it depends on (family_windows.code_digest()); run `{FAMILY_COMMAND}` and commit it"]
+    recs = doc.get("windows", [])
+    held = {rec["n"] for rec in recs}
+    return ([f"n = {rec['n']}: the stable set is not one interval: {'; '.join(rec['stable'])}"
+             for rec in recs if not rec.get("one_interval")]
+            + [f"n = {n} is not in reports/{FAMILY}" for n in range(2, N0 + 1) if n not in held])
+
+
 def exact_windows(doc: dict | None) -> tuple[dict, list[str]]:
     """The windows W_n = ]lo_n, hi_n[ of family.json for n = 2..N0 as algebraic numbers (each end's
-    root recounted in its isolating interval: census.end_number), and what keeps them from being
-    used: the document missing or stale (its digest is not the source's), an n missing, a stable
-    set that is not one interval, an end that is not read."""
-    if doc is None:
-        return {}, [f"reports/{FAMILY} is missing: run `{FAMILY_COMMAND}`"]
-    if not is_current(doc):
-        return {}, [f"reports/{FAMILY} is stale: its digest ({str(doc.get('digest'))[:12]}…) is not that of the "
-                    f"source it depends on (family_windows.code_digest()); run `{FAMILY_COMMAND}` and commit it"]
-    ws, problems = {}, []
+    root recounted in its isolating interval: census.end_number; about 6 s), none when the document
+    cannot be used, and the problems (:func:`document_problems`, an end that is not read)."""
+    problems = document_problems(doc)
+    if doc is None or problems[:1] and "stale" in problems[0]:
+        return {}, problems
+    ws = {}
     for rec in doc.get("windows", []):
         if not rec.get("one_interval"):
-            problems.append(f"n = {rec['n']}: the stable set is not one interval: {'; '.join(rec['stable'])}")
             continue
         try:
             ws[rec["n"]] = (end_number(rec["lo"]), end_number(rec["hi"]))
         except (ValueError, ArithmeticError) as exc:
             problems.append(f"n = {rec['n']}: an end point is not read: {exc}")
-    held = {rec["n"] for rec in doc.get("windows", [])}
-    problems += [f"n = {n} is not in reports/{FAMILY}" for n in range(2, N0 + 1) if n not in held]
     return ws, problems
 
 
@@ -499,7 +508,7 @@ PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant", family=FAMILY)
 def small_n_q2(doc: dict | None) -> Check:
     """L6 for n = 2..N0 from family.json (current): hi_n a zero of q_2(0) on the upper branch (the
     record's exact test), or the first n where not."""
-    _, problems = exact_windows(doc)
+    problems = document_problems(doc)
     recs = (doc or {}).get("windows", [])
     first = next((rec["n"] for rec in recs if not (rec.get("hi_zero_of_u") and rec.get("branch") == "upper")), None)
     return Check(f"for n = 2..{N0} (reports/{FAMILY}, exact zero tests in Q(hi_n)[λ]): at the upper end hi_n of the "
