@@ -478,17 +478,19 @@ def windows(ab_cb_patterns, ab_cb_limit, n2, n3, limit, order, family):
     cover, R = stable_cover(ab_cb_limit)
     parts = [small_n_windows(ws, problems, lim, limit, order), joined(ws), large_n_windows(ab_cb_limit, lim, order)]
     parts += [cover] if cover else []
-    checks += [named("L5.3", c) for c in parts]
     proved = all(c.holds for c in parts)
     whole = proved and R is not None and R >= 1
-    if whole:
-        checks.append(named("L5.3", Check(f"for every n ≥ 2 the stable sets of (ab)^n(cb)^n are {order} (l. 1215: "
-                                          "the paper's open problem, proved)", True, [])))
     gap = ("the stable set outside the windows (family_limit's facts have no parts 9, 10)" if R is None
            else f"the stable set in ]{R}, 1[ (family_limit proves nothing there)")
     if not whole:
         parts[2].evidence.append(f"NOT proved: for n > {N0}, {gap}; the windows W_n are disjoint, the whole stable "
                                  "sets are not certified to be")
+    checks += parts
+    checks.append(named("L5.3", Check(
+        f"for every n ≥ 2 the windows of (ab)^n(cb)^n are {order}: the {len(parts)} checks above"
+        + (" (the whole stable sets: the paper's open problem, proved)" if whole else ""), proved,
+        ["every part holds" if proved else "a part fails: " + "; ".join(c.statement[:80] for c in parts if not c.holds)]
+        + ([] if whole else [f"NOT certified: for n > {N0}, {gap}"]))))
     note = ("The paper's open problem (l. 1215: the intervals of stability \"seem to be disjoint and accumulate from "
             "above … but this has also not been proven yet\"): " + (
                 "proved for every n ≥ 2. " if whole else
@@ -564,12 +566,17 @@ def q2_vanishes_at_threshold(ab_cb_patterns, ab_cb_limit, criterion, branch, fam
                                           ok, [row for row in rows if row.startswith(f"n = {n}:")]))
               for n, ok in results.items()]
     parts = [small_n_q2(family_document(family))] + large_n_q2(ab_cb_limit)
-    checks += [named("L6.6", c) for c in parts]
     whole = all(c.holds for c in parts) and "positions" in ab_cb_limit["facts"]
     if "positions" not in ab_cb_limit["facts"]:
         parts[-1].evidence.append(f"NOT proved: for n > {N0}, that the stable set reaches r_n (family_limit's facts "
                                   "have no part 9): r_n is where q_2(0) = 0 and the feasible set ends, not yet the "
                                   "certified upper end of the stable set")
+    checks += parts
+    checks.append(named("L6.6", Check(
+        f"for every n ≥ 2, {criterion} on the {branch} branch at the upper end of the window: the {len(parts)} checks "
+        "above", all(c.holds for c in parts),
+        ["every part holds" if all(c.holds for c in parts) else "a part fails"]
+        + ([] if whole else [f"NOT certified: for n > {N0}, that r_n is the upper end of the stable set (no part 9)"]))))
     note = ("CDKK's conjecture (l. 1215), tested, not assumed: " + (
         "proved for every n ≥ 2 — the upper end of the window of (ab)^n(cb)^n is where q_2(0) = 0 on the dominant "
         "branch, r_n, the root of r² − (6 + 8cos(π/n))r + 1." if whole else
