@@ -26,10 +26,8 @@ import flint
 
 from certify.algebra import Algebraic, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
-from certify.patterns import analyse, family_limit, fmt, known_factors, vanishes_on_branch
+from certify.patterns import analyse, end_number, family_limit, family_windows, fmt, known_factors, vanishes_on_branch
 from certify.patterns import parse as parse_word
-from certify.patterns.census import end_number
-from certify.patterns.family_windows import is_current, r_star
 from certify.run import (
     PASS,
     Check,
@@ -313,7 +311,7 @@ def document_problems(doc: dict | None) -> list[str]:
     it depends on), an n of 2..N0 missing, a stable set that is not one interval."""
     if doc is None:
         return [f"reports/{FAMILY} is missing: run `{FAMILY_COMMAND}`"]
-    if not is_current(doc):
+    if not family_windows.is_current(doc):
         return [f"reports/{FAMILY} is stale: its digest ({str(doc.get('digest'))[:12]}…) is not that of the "
                 f"source it depends on (family_windows.code_digest()); run `{FAMILY_COMMAND}` and commit it"]
     recs = doc.get("windows", [])
@@ -384,7 +382,7 @@ def large_n_windows(limit: dict, lim, order: str) -> Check:
     ends_ok = (not bad and facts["N0"] == N0 and lower is not None and lower["N0"] == N0
                and all(b["margin"] > 0 and b["s_lo"][0] > 0 for b in lower["boxes"])
                and all(b["s_hi"][0] > 0 for b in facts["boxes"]))
-    holds = ends_ok and lim == r_star() and "disjoint" in order and "above" in order
+    holds = ends_ok and lim == family_windows.r_star() and "disjoint" in order and "above" in order
     return Check(f"for every n > {N0}: the window W_n = ]ℓ_n, r_n[ — r_n where q_2(0) = 0 (nθ = π, the root of "
                  "r² − (6 + 8cos(π/n))r + 1), ℓ_n where x₊ crosses 0 (a zero of F_n) — has r_(n+1) < ℓ_n < r_n, "
                  f"and n²(ℓ_n − r*), n²(r_n − r*) lie in proved boxes above 0 and bounded: the windows are "
@@ -433,7 +431,7 @@ def joined(ws: dict) -> Check:
 
 def figure(ws: dict, limit: dict) -> str:
     """n²(W_n − r*) against 1/n: the exact windows as bars, the proved boxes of the ends for n > N0."""
-    rs = float(r_star())
+    rs = float(family_windows.r_star())
     exact = [(n, n * n * (float(lo) - rs), n * n * (float(hi) - rs)) for n, (lo, hi) in sorted(ws.items())]
     facts, band = limit["facts"], []
     for b in (facts.get("lower") or {}).get("boxes", []):
