@@ -12,10 +12,16 @@ For each n, :func:`window` runs ``certify pattern``'s exact analysis of w_n (the
 and :func:`check_windows` checks across n that hi_{n+1} < lo_n.  A check that fails is reported
 with its n, never assumed.  The sets are certified as in ``certify pattern`` (algebraic end
 points); the undecided points of the analysis are counted in each record.
+
+The document carries :func:`code_digest`, the sha256 of the source it was computed with (the exact
+algebra, the models, the pattern analysis): a reader (L5, L6) uses a committed family.json only
+while :func:`is_current` holds, and asks for ``certify family --n-max N`` otherwise.
 """
 from __future__ import annotations
 
+import hashlib
 import time
+from pathlib import Path
 
 import flint
 
@@ -29,6 +35,29 @@ from .feasibility import vanishes_on_branch
 from .pattern import analyse, end_data
 
 SCHEMA = "certify-family"
+
+CERTIFY = Path(__file__).resolve().parent.parent
+# the source the windows depend on (what `import certify.patterns.family_windows` loads, less the
+# patterns' __init__ and island theorem, which the analysis does not call), relative to certify/
+DEPENDS = ("algebra", "dynamics", "caches.py", "errors.py", "witnesses.py", "patterns/family.py",
+           "patterns/family_windows.py", "patterns/feasibility.py", "patterns/pattern.py", "patterns/periodic.py")
+
+
+def code_digest(root: Path = CERTIFY) -> str:
+    """sha256 of the source files of :data:`DEPENDS` under ``root``, each by its relative path."""
+    h = hashlib.sha256()
+    files = []
+    for name in DEPENDS:
+        path = root / name
+        files += sorted(path.glob("*.py")) if path.is_dir() else [path]
+    for path in files:
+        h.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def is_current(doc: dict) -> bool:
+    """Whether a family.json document was computed by this source (its digest matches)."""
+    return doc.get("schema") == SCHEMA and doc.get("digest") == code_digest()
 
 
 def r_star() -> Algebraic:
@@ -86,5 +115,6 @@ def windows(n_max: int, progress=None) -> tuple[dict, list[float]]:
         ends.append(pair)
     if progress:
         progress(n_max - 1, n_max - 1, "")
-    doc = {"schema": SCHEMA, "version": 1, "n_max": n_max, "windows": records, **check_windows(records, ends)}
+    doc = {"schema": SCHEMA, "version": 1, "n_max": n_max, "digest": code_digest(), "windows": records,
+           **check_windows(records, ends)}
     return doc, seconds
