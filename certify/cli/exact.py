@@ -100,7 +100,9 @@ def cmd_family(args) -> int:
     if args.n_max < 2:
         raise UsageError(f"--n-max: the family starts at n = 2, not {args.n_max}")
     out = files.ensure_writable(args.out)
-    doc, seconds = windows(args.n_max, progress=progress.Bar("n"))
+    from certify.run.executors import executor
+    with executor(args.jobs) as pool:
+        doc, seconds = windows(args.n_max, progress=progress.Bar("n"), pool=None if args.jobs == 1 else pool)
     files.write_atomic(out / "family.json", json.dumps(doc, ensure_ascii=False, indent=2, sort_keys=True) + "\n")
     for rec, sec in zip(doc["windows"], seconds):
         where = f"]{rec['lo']['digits']}, {rec['hi']['digits']}[" if rec.get("one_interval") \
@@ -224,6 +226,7 @@ def register(commands) -> None:
                     "and hi_{n+1} < lo_n.  Writes DIR/family.json (docs/family.md).")
     p.add_argument("--n-max", type=positive_int, required=True, metavar="N", help="the largest n (at least 2)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    add_jobs(p)
 
     p = add_command(commands, "orbit", cmd_orbit,
                     help="certify the periodic orbits of the reduction (Section 4) with one word",

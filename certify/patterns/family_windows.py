@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import hashlib
 import time
+from concurrent.futures import as_completed
 from pathlib import Path
 
 import flint
@@ -30,6 +31,7 @@ from certify.algebra.branches import BRANCH_NAMES, less
 from certify.algebra.poly import to_field
 from certify.dynamics.systems import candidate_in
 
+from .census import end_number
 from .family import family_word
 from .feasibility import vanishes_on_branch
 from .pattern import analyse, end_data
@@ -101,20 +103,45 @@ def check_windows(records: list[dict], ends: list) -> dict:
     return {"all_hold": True, "first_failure": None}
 
 
-def windows(n_max: int, progress=None) -> tuple[dict, list[float]]:
+def _timed_record(n: int) -> tuple[dict, float]:
+    """w_n's record and its seconds (plain data, for a worker process)."""
+    start = time.perf_counter()
+    rec, _ = window(n)
+    return rec, time.perf_counter() - start
+
+
+def _ends(rec: dict) -> tuple | None:
+    """The window's ends of a record, read back as algebraic numbers (each root recounted in its
+    isolating interval)."""
+    return (end_number(rec["lo"]), end_number(rec["hi"])) if rec.get("one_interval") else None
+
+
+def windows(n_max: int, progress=None, pool=None) -> tuple[dict, list[float]]:
     """The document of ``certify family --n-max N`` (a record per n = 2..N and the checks) and the
-    seconds each n took (printed, not recorded)."""
-    records, ends, seconds = [], [], []
-    for n in range(2, n_max + 1):
-        if progress:
-            progress(n - 2, n_max - 1, f"n = {n}")
-        start = time.perf_counter()
-        rec, pair = window(n)
-        seconds.append(time.perf_counter() - start)
-        records.append(rec)
-        ends.append(pair)
+    seconds each n took (printed, not recorded).  ``pool``: an executor (``submit``) that analyses
+    the n in parallel, the largest first; the document is the same, record for record."""
+    ns = list(range(2, n_max + 1))
+    if pool is None:
+        results = {}
+        for i, n in enumerate(ns):
+            if progress:
+                progress(i, len(ns), f"n = {n}")
+            start = time.perf_counter()
+            rec, pair = window(n)
+            results[n] = rec, pair, time.perf_counter() - start
+    else:
+        futures = {pool.submit(_timed_record, n): n for n in reversed(ns)}
+        results = {}
+        for i, fut in enumerate(as_completed(futures)):
+            rec, sec = fut.result()
+            results[futures[fut]] = rec, _ends(rec), sec
+            if progress:
+                progress(i + 1, len(ns), f"n = {futures[fut]}")
     if progress:
-        progress(n_max - 1, n_max - 1, "")
+        progress(len(ns), len(ns), "")
+    records = [results[n][0] for n in ns]
+    ends = [results[n][1] for n in ns]
+    seconds = [results[n][2] for n in ns]
     doc = {"schema": SCHEMA, "version": 1, "n_max": n_max, "digest": code_digest(), "windows": records,
            **check_windows(records, ends)}
     return doc, seconds

@@ -59,3 +59,12 @@ def test_command_writes_family_json(tmp_path):
     bad = subprocess.run([sys.executable, "-m", "certify", "family", "--n-max", "1", "--out", str(tmp_path)],
                          cwd=ROOT, capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "Traceback" not in bad.stderr
+
+
+def test_worker_processes_give_the_same_document(doc):
+    """`certify family --jobs 2`: the n analysed in worker processes (records as plain data, the ends
+    read back from them) give the document of the serial run, byte for byte."""
+    from certify.run.executors import process_pool
+    with process_pool(2) as pool:
+        parallel = FW.windows(4, pool=pool)[0]
+    assert json.dumps(parallel, sort_keys=True) == json.dumps(doc, sort_keys=True)
