@@ -41,8 +41,9 @@ SCHEMA = "certify-family"
 CERTIFY = Path(__file__).resolve().parent.parent
 # the source the windows depend on (what `import certify.patterns.family_windows` loads, less the
 # patterns' __init__ and island theorem, which the analysis does not call), relative to certify/
-DEPENDS = ("algebra", "dynamics", "caches.py", "errors.py", "witnesses.py", "patterns/family.py",
-           "patterns/family_windows.py", "patterns/feasibility.py", "patterns/pattern.py", "patterns/periodic.py")
+DEPENDS = ("algebra", "dynamics", "caches.py", "errors.py", "witnesses.py", "patterns/census.py",
+           "patterns/eigenspace.py", "patterns/family.py", "patterns/family_windows.py", "patterns/feasibility.py",
+           "patterns/pattern.py", "patterns/periodic.py")
 
 
 def code_digest(root: Path = CERTIFY) -> str:
