@@ -391,18 +391,30 @@ def large_n_windows(limit: dict, lim, order: str) -> Check:
 
 
 def stable_cover(limit: dict) -> tuple[Check | None, object]:
-    """What family_limit proves of the whole stable set for n > N0 (parts 9, 10, when its facts
-    have them): the check, and R (the stable set is known on ]0, R]; None: nowhere)."""
+    """What family_limit proves of the whole stable set for n > N0 (parts 9-12, when its facts have
+    them): the check, and R (the stable set is known on ]0, R]; None: nowhere).  Part 11 (nothing
+    feasible on [r₀, 1[ for every n ≥ 3) extends R to 1 when r₀ ≤ part 10's R; parts 12 (the
+    reflection M = N² and one zero of F_n per strip) decide the points of the strip I_n."""
     facts, bad = limit["facts"], limit["failures"]
     if not all(k in facts for k in ("positions", "below", "arcs")):
         return None, None
     R = facts["arcs"]["r"][1]
+    third = facts.get("third_a")
+    if third and third["r"][0] <= R and third["r"][1] >= 1 and third["n_min"] <= N0 + 1:
+        R = third["r"][1]
+    exact = "one_zero" in facts and "reflection" in facts
+    inside = ("the stable set is exactly ]ℓ_n, r_n[, ℓ_n the one zero of F_n in its strip (family_limit parts 9-12)"
+              if exact else "which points of one interval I_n inside the strip are stable is not decided "
+              "(family_limit parts 9, 10)")
     return Check(f"for every n > {N0}: in ]0, {R}] the stable set of (ab)^n(cb)^n lies in ]r_(n+1), r_n[ (nothing "
                  f"stable in ]0, r_(n+1)] nor in ]r_n, {R}]) and holds every r from the strip of the lower end up "
-                 "to r_n; which points of one interval I_n inside the strip are stable is not decided "
-                 "(family_limit parts 9, 10)", not bad,
+                 f"to r_n; {inside}", not bad,
                  [f"positions: {len(facts['positions']['boxes'])} ε-boxes; below: {len(facts['below']['far'])} + "
-                  f"{len(facts['below']['low'])} leaves; above r_n: up to R = {R}",
+                  f"{len(facts['below']['low'])} leaves; above r_n: up to {facts['arcs']['r'][1]} (part 10)"
+                  + (f", and nothing feasible on [{third['r'][0]}, 1[ for every n ≥ {third['n_min']} (part 11: "
+                     f"t ≤ {third['t_max']} there, so the second or third a's pair separates)" if third else "")
+                  + ("; part 12: M = N² (N = J M_ab^n), stable exactly where F_n < 0, dF_n/dη > 0 on every strip"
+                     if exact else ""),
                   "family_limit.check: " + ("every fact re-verified" if not bad else "FAILS")]), R
 
 
@@ -491,7 +503,10 @@ def windows(ab_cb_patterns, ab_cb_limit, n2, n3, limit, order, family):
         + ([] if whole else [f"NOT certified: for n > {N0}, {gap}"]))))
     note = ("The paper's open problem (l. 1215: the intervals of stability \"seem to be disjoint and accumulate from "
             "above … but this has also not been proven yet\"): " + (
-                "proved for every n ≥ 2. " if whole else
+                f"proved for every n ≥ 2: the stable set of (ab)^n(cb)^n in ]0, 1[ is one open interval W_n (n ≤ {N0}: "
+                f"exact, family.json; n > {N0}: exactly ]ℓ_n, r_n[, r_n the root in ]0, 1[ of r² − (6 + 8cos(π/n))r + 1, "
+                "ℓ_n the one zero of F_n in ]r_(n+1), r_n[), the W_n disjoint, decreasing and accumulating on 7−4√3 "
+                "from above. " if whole else
                 f"proved for the windows W_n of every n ≥ 2 (n ≤ {N0} exact, n > {N0} by family_limit's balls) and "
                 f"for the whole stable sets of n ≤ {N0}. NOT certified: for n > {N0}, {gap}; so that the stable "
                 "sets (not only the windows) are disjoint for every n is not certified. ")
