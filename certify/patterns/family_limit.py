@@ -1272,22 +1272,11 @@ def check(facts: dict, prec: int = 200) -> list[str]:
                 bad.append(f"s_hi on ε ∈ [{e0}, {e1}] not in [{S0}, {S1}]")
             if S1 > star_hi + facts["C"] * e1 ** 2 or S0 < star_lo - facts["C"] * e1 ** 2:
                 bad.append(f"|s_hi - s*| > C ε² on ε ∈ [{e0}, {e1}]")
-    if "lower" in facts:
-        bad += check_lower(facts["lower"])
-    if "dominant" in facts:
-        bad += check_dominant(facts["dominant"])
-    if "velocity" in facts:
-        bad += check_velocity(facts["velocity"])
-    if "positions" in facts:
-        bad += check_positions(facts["positions"])
-    if "below" in facts:
-        bad += check_below(facts["below"])
-    if "arcs" in facts:
-        bad += check_arcs(facts["arcs"])
-    if "third_a" in facts:
-        bad += check_third_a(facts["third_a"])
-    if "reflection" in facts:
-        bad += check_reflection(facts["reflection"])
+    for key, check_part in (("lower", check_lower), ("dominant", check_dominant), ("velocity", check_velocity),
+                            ("positions", check_positions), ("below", check_below), ("arcs", check_arcs),
+                            ("third_a", check_third_a), ("reflection", check_reflection)):
+        if key in facts:
+            bad += check_part(facts[key])
     if "one_zero" in facts:
         bad += check_one_zero(facts["one_zero"], facts.get("positions"))
     return bad
