@@ -22,17 +22,14 @@ import json
 import re
 from fractions import Fraction
 
-import flint
-
 from certify.algebra import Algebraic, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
-from certify.patterns import analyse, end_number, family_limit, family_windows, fmt, known_factors, vanishes_on_branch
+from certify.patterns import analyse, end_number, family_windows, fmt, known_factors, vanishes_on_branch
 from certify.patterns import parse as parse_word
 from certify.run import (
     PASS,
     Check,
     certificate,
-    committed,
     conclude,
     for_a_run,
     load_findings,
@@ -279,20 +276,36 @@ def upper_thresholds(ab_cb_patterns, **printed):
 
 
 # ---------------------------------------------------------------- L5, L6 for every n ≥ 2
-# n = 2..N0: the exact windows of reports/family.json (`certify family --n-max 30`: `certify pattern`'s
-# analysis of each w_n, 1562 s in all, never recomputed here), used only while the document's digest is
-# that of the source it was computed with (family_windows.is_current).  n > N0: family_limit's proof
-# (prove(N0), re-verified by check), run once per run in the quantity ab_cb_limit.
+# n = 2..7: `certify pattern`'s exact analysis of each w_n (ab_cb_patterns, ab_cb_seven).
+# n ≥ 8: family_limit's theorem (prove(7), re-verified by check: family_windows.theorem), and for
+# n = 8..N0 its windows as exact algebraic numbers (family_windows.proved_window: ℓ_n the one root of
+# F_n in ]r_(n+1), r_n[, counted exactly).  reports/family.json (`certify family --n-max 30`, the
+# engine's analysis of each n, half an hour) is the second route for n = 8..30: compared where current.
 
-N0 = 30
+N0 = family_windows.EXACT_N0                 # the exact windows listed: n = 2..30
+PROVED_FROM = family_windows.PROVED_N0 + 1   # the theorem: every n ≥ 8
 FAMILY = "family.json"
 FAMILY_COMMAND = f"python -m certify family --n-max {N0}"
 
 
+@quantity("ab_cb_seven")
+def ab_cb_seven():
+    """`certify pattern (ab)^7(cb)^7` over ]0, 1[ (about 25 s): the last n below the theorem."""
+    return pattern(ab_cb(PROVED_FROM - 1))
+
+
+@quantity("ab_cb_limit")
+def ab_cb_limit():
+    """family_limit's proof for every n ≥ 8 (prove(7), then check: about 8 s) and the exact windows it
+    gives for n = 8..N0 (about 10 s): {"facts", "failures", "windows": {n: (ℓ_n, r_n)}}."""
+    return {**family_windows.theorem(), "windows": {n: family_windows.proved_window(n)
+                                                    for n in range(PROVED_FROM, N0 + 1)}}
+
+
 def family_document(source=FAMILY) -> dict | None:
     """The committed reports/family.json (None when absent), or ``(name, edits)`` for the mutation
-    tests: ``{"digest": text}`` replaces its digest (a stale document); ``{"meets": n}`` moves
-    hi_{n+1} up to hi_n (W_{n+1} then meets W_n)."""
+    tests: ``{"digest": text}`` replaces its digest (a stale document); ``{"lo": n}`` moves lo_n to
+    lo_(n+1) (the engine's route then disagrees with the proof's)."""
     name, edits = (source, {}) if isinstance(source, str) else source
     doc = load_findings(name)
     if not doc or not edits:
@@ -300,56 +313,37 @@ def family_document(source=FAMILY) -> dict | None:
     doc = json.loads(json.dumps(doc))
     if "digest" in edits:
         doc["digest"] = edits["digest"]
-    if "meets" in edits:
+    if "lo" in edits:
         recs = {w["n"]: w for w in doc["windows"]}
-        recs[edits["meets"] + 1]["hi"] = recs[edits["meets"]]["hi"]
+        recs[edits["lo"]]["lo"] = recs[edits["lo"] + 1]["lo"]
     return doc
 
 
-def document_problems(doc: dict | None) -> list[str]:
-    """What keeps family.json from being used: missing, stale (its digest is not that of the source
-    it depends on), an n of 2..N0 missing, a stable set that is not one interval."""
+def second_route(doc: dict | None, proved: dict) -> Check | None:
+    """The engine's windows of family.json (when current: computed by this source) against the
+    proof's for n = 8..N0, exact comparisons; None (a line of evidence instead) when it is absent or
+    stale: the proof does not need it."""
+    if doc is None or not family_windows.is_current(doc):
+        return None
+    recs = {rec["n"]: rec for rec in doc.get("windows", [])}
+    differ = []
+    for n, (lo, hi) in sorted(proved.items()):
+        rec = recs.get(n)
+        if not (rec and rec.get("one_interval") and end_number(rec["lo"]) == lo and end_number(rec["hi"]) == hi):
+            differ.append(n)
+    return Check(f"the second route: the engine's exact analysis of each w_n (reports/{FAMILY}) gives the same "
+                 f"window for n = {PROVED_FROM}..{N0}", not differ,
+                 [f"differs at n = {', '.join(map(str, differ))}" if differ else "the same ends, exactly"])
+
+
+def _route_note(doc: dict | None) -> str:
+    """Why family.json was not compared (absent or stale)."""
     if doc is None:
-        return [f"reports/{FAMILY} is missing: run `{FAMILY_COMMAND}`"]
+        return f"reports/{FAMILY} (the engine's route for n ≤ {N0}) is absent: not compared"
     if not family_windows.is_current(doc):
-        return [f"reports/{FAMILY} is stale: its digest ({str(doc.get('digest'))[:12]}…) is not that of the "
-                f"source it depends on (family_windows.code_digest()); run `{FAMILY_COMMAND}` and commit it"]
-    recs = doc.get("windows", [])
-    held = {rec["n"] for rec in recs}
-    return ([f"n = {rec['n']}: the stable set is not one interval: {'; '.join(rec['stable'])}"
-             for rec in recs if not rec.get("one_interval")]
-            + [f"n = {n} is not in reports/{FAMILY}" for n in range(2, N0 + 1) if n not in held])
-
-
-def exact_windows(doc: dict | None) -> tuple[dict, list[str]]:
-    """The windows W_n = ]lo_n, hi_n[ of family.json for n = 2..N0 as algebraic numbers (each end's
-    root recounted in its isolating interval: census.end_number; about 6 s), none when the document
-    cannot be used, and the problems (:func:`document_problems`, an end that is not read)."""
-    problems = document_problems(doc)
-    if doc is None or problems[:1] and "stale" in problems[0]:
-        return {}, problems
-    ws = {}
-    for rec in doc.get("windows", []):
-        if not rec.get("one_interval"):
-            continue
-        try:
-            ws[rec["n"]] = (end_number(rec["lo"]), end_number(rec["hi"]))
-        except (ValueError, ArithmeticError) as exc:
-            problems.append(f"n = {rec['n']}: an end point is not read: {exc}")
-    return ws, problems
-
-
-def proved_for_large_n(facts: dict) -> dict:
-    """family_limit's facts for every n > N0 and the failures of their re-verification
-    (family_limit.check at another precision: empty when every fact holds)."""
-    return {"facts": facts, "failures": family_limit.check(facts)}
-
-
-@quantity("ab_cb_limit")
-def ab_cb_limit():
-    """The proof for every n > N0 (family_limit.prove(N0), then check): seconds, once per run
-    (L5 and L6 need it and ab_cb_patterns: one unit of the runner)."""
-    return proved_for_large_n(family_limit.prove(N0))
+        return (f"reports/{FAMILY} (the engine's route for n ≤ {N0}) was computed by another source (digest "
+                f"{str(doc.get('digest'))[:12]}…): not compared; `{FAMILY_COMMAND}` recomputes it (about 30 min)")
+    return f"reports/{FAMILY} compared"
 
 
 def _fq(x: Fraction) -> float:
@@ -375,23 +369,23 @@ def _limit_evidence(limit: dict) -> list[str]:
 
 
 def large_n_windows(limit: dict, lim, order: str) -> Check:
-    """L5.3 for every n > N0, from family_limit's facts (parts 3, 5): r_{n+1} < ℓ_n < r_n, and
-    n²(ℓ_n − r*), n²(r_n − r*) in proved boxes of ]0, s* + C/N0²]."""
+    """L5.3 for every n ≥ 8, from family_limit's facts (parts 3, 5): r_{n+1} < ℓ_n < r_n, and
+    n²(ℓ_n − r*), n²(r_n − r*) in proved boxes above 0 and bounded."""
     facts, bad = limit["facts"], limit["failures"]
     lower = facts.get("lower")
-    ends_ok = (not bad and facts["N0"] == N0 and lower is not None and lower["N0"] == N0
+    ends_ok = (not bad and facts["N0"] == PROVED_FROM - 1 and lower is not None and lower["N0"] == PROVED_FROM - 1
                and all(b["margin"] > 0 and b["s_lo"][0] > 0 for b in lower["boxes"])
                and all(b["s_hi"][0] > 0 for b in facts["boxes"]))
     holds = ends_ok and lim == family_windows.r_star() and "disjoint" in order and "above" in order
-    return Check(f"for every n > {N0}: the window W_n = ]ℓ_n, r_n[ — r_n where q_2(0) = 0 (nθ = π, the root of "
-                 "r² − (6 + 8cos(π/n))r + 1), ℓ_n where x₊ crosses 0 (a zero of F_n) — has r_(n+1) < ℓ_n < r_n, "
+    return Check(f"for every n ≥ {PROVED_FROM}: the window W_n = ]ℓ_n, r_n[ — r_n where q_2(0) = 0 (nθ = π, the root "
+                 "of r² − (6 + 8cos(π/n))r + 1), ℓ_n where x₊ crosses 0 (a zero of F_n) — has r_(n+1) < ℓ_n < r_n, "
                  f"and n²(ℓ_n − r*), n²(r_n − r*) lie in proved boxes above 0 and bounded: the windows are "
                  f"{order.split(',')[0]} and decreasing, and accumulate on {lim.digits(10)} from above "
                  "(family_limit parts 3, 5)", holds, _limit_evidence(limit))
 
 
 def stable_cover(limit: dict) -> tuple[Check | None, object]:
-    """What family_limit proves of the whole stable set for n > N0 (parts 9-12, when its facts have
+    """What family_limit proves of the whole stable set for n ≥ 8 (parts 9-12, when its facts have
     them): the check, and R (the stable set is known on ]0, R]; None: nowhere).  Part 11 (nothing
     feasible on [r₀, 1[ for every n ≥ 3) extends R to 1 when r₀ ≤ part 10's R; parts 12 (the
     reflection M = N² and one zero of F_n per strip) decide the points of the strip I_n."""
@@ -400,15 +394,15 @@ def stable_cover(limit: dict) -> tuple[Check | None, object]:
         return None, None
     R = facts["arcs"]["r"][1]
     third = facts.get("third_a")
-    if third and third["r"][0] <= R and third["r"][1] >= 1 and third["n_min"] <= N0 + 1:
+    if third and third["r"][0] <= R and third["r"][1] >= 1 and third["n_min"] <= PROVED_FROM:
         R = third["r"][1]
     exact = "one_zero" in facts and "reflection" in facts
     inside = ("the stable set is exactly ]ℓ_n, r_n[, ℓ_n the one zero of F_n in its strip (family_limit parts 9-12)"
               if exact else "which points of one interval I_n inside the strip are stable is not decided "
               "(family_limit parts 9, 10)")
-    return Check(f"for every n > {N0}: in ]0, {R}] the stable set of (ab)^n(cb)^n lies in ]r_(n+1), r_n[ (nothing "
-                 f"stable in ]0, r_(n+1)] nor in ]r_n, {R}]) and holds every r from the strip of the lower end up "
-                 f"to r_n; {inside}", not bad,
+    return Check(f"for every n ≥ {PROVED_FROM}: in ]0, {R}] the stable set of (ab)^n(cb)^n lies in ]r_(n+1), r_n[ "
+                 f"(nothing stable in ]0, r_(n+1)] nor in ]r_n, {R}]) and holds every r from the strip of the lower end "
+                 f"up to r_n; {inside}", not bad,
                  [f"positions: {len(facts['positions']['boxes'])} ε-boxes; below: {len(facts['below']['far'])} + "
                   f"{len(facts['below']['low'])} leaves; above r_n: up to {facts['arcs']['r'][1]} (part 10)"
                   + (f", and nothing feasible on [{third['r'][0]}, 1[ for every n ≥ {third['n_min']} (part 11: "
@@ -418,27 +412,30 @@ def stable_cover(limit: dict) -> tuple[Check | None, object]:
                   "family_limit.check: " + ("every fact re-verified" if not bad else "FAILS")]), R
 
 
-def small_n_windows(ws: dict, problems: list[str], lim, limit: str, order: str) -> Check:
-    """L5.3 for n = 2..N0 from family.json: every stable set one open interval above the limit and
-    hi_{n+1} < lo_n (exact comparisons of algebraic numbers)."""
-    meets = [n for n in range(2, N0) if n in ws and n + 1 in ws and not ws[n + 1][1] < ws[n][0]]
-    low = [n for n, w in ws.items() if not lim < w[0]]
-    holds = not problems and not meets and not low and "disjoint" in order and "above" in order
-    rows = [f"n = {n}: ]{w[0].digits(10)}, {w[1].digits(10)}[" for n, w in sorted(ws.items())]
-    return Check(f"for n = 2..{N0} (reports/{FAMILY}, exact): each stable set is one open interval W_n = ]lo_n, hi_n[, "
-                 f"above {limit}, and W_(n+1) lies below W_n with a gap (hi_(n+1) < lo_n): {order.split(',')[0]}, "
-                 "decreasing", holds,
-                 problems + [f"W_{n + 1} meets W_{n}: hi_{n + 1} ≥ lo_{n}" for n in meets]
+def engine_windows(ab_cb_patterns: dict, ab_cb_seven) -> dict:
+    """The engine's windows of n = 2..7 (None where the stable set is not one interval)."""
+    return {**{n: stable_window(ab_cb_patterns, n) for n in range(2, N_MAX + 1)},
+            PROVED_FROM - 1: stable_window({PROVED_FROM - 1: ab_cb_seven}, PROVED_FROM - 1)}
+
+
+def exact_windows(engine: dict, proved: dict, lim, limit: str, order: str) -> Check:
+    """L5.3 for n = 2..N0, exact: n ≤ 7 the engine's stable sets (each one open interval), n = 8..N0 the
+    proof's ]ℓ_n, r_n[ (exact ends); every window above the limit and hi_{n+1} < lo_n (exact comparisons
+    of algebraic numbers, r_8 < lo_7 joining the two routes)."""
+    ws = {**engine, **proved}
+    missing = [n for n in range(2, N0 + 1) if ws.get(n) is None]
+    meets = [n for n in range(2, N0) if n not in missing and n + 1 not in missing and not ws[n + 1][1] < ws[n][0]]
+    low = [n for n, w in ws.items() if w is not None and not lim < w[0]]
+    holds = not missing and not meets and not low and "disjoint" in order and "above" in order
+    rows = [f"n = {n}: ]{w[0].digits(10)}, {w[1].digits(10)}[" + (" (engine)" if n in engine else " (proof)")
+            for n, w in sorted(ws.items()) if w is not None]
+    return Check(f"for n = 2..{N0}, exact: each stable set is one open interval W_n = ]lo_n, hi_n[ (n ≤ "
+                 f"{PROVED_FROM - 1}: `certify pattern`; n ≥ {PROVED_FROM}: the proof's ]ℓ_n, r_n[, ℓ_n the one root of "
+                 f"F_n in ]r_(n+1), r_n[), above {limit}, and W_(n+1) lies below W_n with a gap (hi_(n+1) < lo_n): "
+                 f"{order.split(',')[0]}, decreasing", holds,
+                 [f"n = {n}: the stable set is not one interval" for n in missing]
+                 + [f"W_{n + 1} meets W_{n}: hi_{n + 1} ≥ lo_{n}" for n in meets]
                  + [f"lo_{n} ≤ {limit}" for n in low] + rows)
-
-
-def joined(ws: dict) -> Check:
-    """The two parts meet: r_{N0+1} (a ball) < lo_{N0} (the isolating interval's lower end)."""
-    r_next = family_limit.upper_end(N0 + 1)
-    lo = ws.get(N0)
-    return Check(f"the two parts meet: r_{N0 + 1} < lo_{N0}", lo is not None and r_next < flint.arb(lo[0].lo),
-                 [f"r_{N0 + 1} ∈ {r_next.str(12)}"]
-                 + ([f"lo_{N0} ≈ {lo[0].digits(12)}, its isolating interval from {float(lo[0].lo):.12f}"] if lo else []))
 
 
 def figure(ws: dict, limit: dict) -> str:
@@ -448,9 +445,11 @@ def figure(ws: dict, limit: dict) -> str:
     facts, band = limit["facts"], []
     for b in (facts.get("lower") or {}).get("boxes", []):
         e0, e1 = b["eps"]
+        if e0 >= Fraction(1, N0):
+            continue
         his = [h["s_hi"] for h in facts["boxes"] if h["eps"][0] < e1 and e0 < h["eps"][1]]
         if his:
-            band.append((_fq(e0), _fq(e1), (_fq(b["s_lo"][0]), _fq(b["s_lo"][1])),
+            band.append((_fq(e0), _fq(min(e1, Fraction(1, N0))), (_fq(b["s_lo"][0]), _fq(b["s_lo"][1])),
                          (_fq(min(h[0] for h in his)), _fq(max(h[1] for h in his)))))
     return plots.family_windows_figure(exact, band)
 
@@ -459,21 +458,18 @@ PRINTED_L5 = dict(n2="[0.12754, 0.17157]", n3="[0.09452, 0.10102]", limit="7-4�
                   order="disjoint, accumulating on 7-4√3 from above", family=FAMILY)
 
 
-@certificate("L5", needs=["ab_cb_patterns", "ab_cb_limit"], printed=PRINTED_L5,
+@certificate("L5", needs=["ab_cb_patterns", "ab_cb_seven", "ab_cb_limit"], printed=PRINTED_L5,
              expect=PASS,
              mutants=[replaced("n2", "0.12754", "0.12755", "a digit of the n = 2 window"),
                       replaced("n3", "0.10102", "0.10103", "a digit of the n = 3 window"),
                       replaced("order", "disjoint", "overlapping", "the windows' order"),
                       replaced("order", "above", "below", "the side of the accumulation"),
-                      replaced("limit", "7-4√3", "3-2√2", "the limit of the windows"),
-                      committed("family", (FAMILY, {"digest": "0" * 64}), "family.json stale (another digest)"),
-                      committed("family", (FAMILY, {"meets": 12}), "hi_13 of family.json moved up to hi_12: "
-                                "W_13 meets W_12")])
-def windows(ab_cb_patterns, ab_cb_limit, n2, n3, limit, order, family):
+                      replaced("limit", "7-4√3", "3-2√2", "the limit of the windows")])
+def windows(ab_cb_patterns, ab_cb_seven, ab_cb_limit, n2, n3, limit, order, family):
     """The stable sets of (ab)^n(cb)^n: n = 2, 3 rounding to the printed windows (`certify pattern`);
-    for every n ≥ 2 the windows disjoint, decreasing, accumulating on 7-4√3 from above — n ≤ 30
-    exact (family.json, current), n > 30 by family_limit's proof; the whole stable set is certified
-    for n ≤ 30, and for n > 30 only on the range family_limit's facts cover (said in the note)."""
+    for every n ≥ 2 the whole stable set in ]0, 1[ one open interval W_n, the W_n disjoint, decreasing,
+    accumulating on 7-4√3 from above — n ≤ 7 by the engine's exact analysis, n ≥ 8 by family_limit's
+    theorem (its windows exact for n ≤ 30); family.json, the engine's route to n = 30, compared when current."""
     checks = []
     for n, text in ((2, n2), (3, n3)):
         lo_d, hi_d = (t.strip() for t in text.strip("[] ").split(","))
@@ -484,86 +480,73 @@ def windows(ab_cb_patterns, ab_cb_limit, n2, n3, limit, order, family):
                                       + ([f"lower end: {w[0].describe()}", f"upper end: {w[1].describe()}"] if w else [])),
                                 f"L5.{n - 1}", ab_cb(n)))
     lim = radical(limit)
-    ws, problems = exact_windows(family_document(family))
+    engine, proved = engine_windows(ab_cb_patterns, ab_cb_seven), ab_cb_limit["windows"]
     cover, R = stable_cover(ab_cb_limit)
-    parts = [small_n_windows(ws, problems, lim, limit, order), joined(ws), large_n_windows(ab_cb_limit, lim, order)]
-    parts += [cover] if cover else []
-    proved = all(c.holds for c in parts)
-    whole = proved and R is not None and R >= 1
+    doc = family_document(family)
+    parts = [exact_windows(engine, proved, lim, limit, order), large_n_windows(ab_cb_limit, lim, order)]
+    parts += [c for c in (cover, second_route(doc, proved)) if c is not None]
+    holds = all(c.holds for c in parts)
+    whole = holds and R is not None and R >= 1
     gap = ("the stable set outside the windows (family_limit's facts have no parts 9, 10)" if R is None
            else f"the stable set in ]{R}, 1[ (family_limit proves nothing there)")
     if not whole:
-        parts[2].evidence.append(f"NOT proved: for n > {N0}, {gap}; the windows W_n are disjoint, the whole stable "
-                                 "sets are not certified to be")
+        parts[1].evidence.append(f"NOT proved: for n ≥ {PROVED_FROM}, {gap}; the windows W_n are disjoint, the whole "
+                                 "stable sets are not certified to be")
     checks += parts
     checks.append(named("L5.3", Check(
         f"for every n ≥ 2 the windows of (ab)^n(cb)^n are {order}: the {len(parts)} checks above"
-        + (" (the whole stable sets: the paper's open problem, proved)" if whole else ""), proved,
-        ["every part holds" if proved else "a part fails: " + "; ".join(c.statement[:80] for c in parts if not c.holds)]
-        + ([] if whole else [f"NOT certified: for n > {N0}, {gap}"]))))
+        + (" (the whole stable sets: the paper's open problem, proved)" if whole else ""), holds,
+        ["every part holds" if holds else "a part fails: " + "; ".join(c.statement[:80] for c in parts if not c.holds)]
+        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, {gap}"]))))
     note = ("The paper's open problem (l. 1215: the intervals of stability \"seem to be disjoint and accumulate from "
             "above … but this has also not been proven yet\"): " + (
-                f"proved for every n ≥ 2: the stable set of (ab)^n(cb)^n in ]0, 1[ is one open interval W_n (n ≤ {N0}: "
-                f"exact, family.json; n > {N0}: exactly ]ℓ_n, r_n[, r_n the root in ]0, 1[ of r² − (6 + 8cos(π/n))r + 1, "
-                "ℓ_n the one zero of F_n in ]r_(n+1), r_n[), the W_n disjoint, decreasing and accumulating on 7−4√3 "
+                f"proved for every n ≥ 2: the stable set of (ab)^n(cb)^n in ]0, 1[ is one open interval W_n (n ≤ "
+                f"{PROVED_FROM - 1}: `certify pattern`, exact; n ≥ {PROVED_FROM}: exactly ]ℓ_n, r_n[, r_n the root in "
+                "]0, 1[ of r² − (6 + 8cos(π/n))r + 1, ℓ_n the one zero of F_n in ]r_(n+1), r_n[, by family_limit's "
+                f"theorem, its ends exact for n ≤ {N0}), the W_n disjoint, decreasing and accumulating on 7−4√3 "
                 "from above. " if whole else
-                f"proved for the windows W_n of every n ≥ 2 (n ≤ {N0} exact, n > {N0} by family_limit's balls) and "
-                f"for the whole stable sets of n ≤ {N0}. NOT certified: for n > {N0}, {gap}; so that the stable "
-                "sets (not only the windows) are disjoint for every n is not certified. ")
-            + "The figure: n²(W_n − (7−4√3)) against 1/n, the exact windows of n ≤ 30 as bars, the proved boxes of "
-              "the ends for n > 30; both ends tend to s* = π²(7√3−12)/6 ≈ 0.20456.")
-    return conclude(checks, note=note, figures=[figure(ws, ab_cb_limit)],
-                    evidence=[f"`{FAMILY_COMMAND}` (reports/{FAMILY}) for n ≤ {N0}; "
-                              f"certify/patterns/family_limit.py (prove({N0}), check) for n > {N0}"])
+                f"proved for the windows W_n of every n ≥ 2 and for the whole stable sets of n ≤ {PROVED_FROM - 1}. "
+                f"NOT certified: for n ≥ {PROVED_FROM}, {gap}. ")
+            + f"{_route_note(doc)}. The figure: n²(W_n − (7−4√3)) against 1/n, the exact windows of n ≤ {N0} as "
+              f"bars, the proved boxes of the ends for n > {N0}; both ends tend to s* = π²(7√3−12)/6 ≈ 0.20456.")
+    return conclude(checks, note=note, figures=[figure({**engine, **proved}, ab_cb_limit)],
+                    evidence=[f"`certify pattern` for n ≤ {PROVED_FROM - 1}; certify/patterns/family_limit.py "
+                              f"(prove({PROVED_FROM - 1}), check) for n ≥ {PROVED_FROM}; {_route_note(doc)}"])
 
 
-PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant", family=FAMILY)
-
-
-def small_n_q2(doc: dict | None) -> Check:
-    """L6 for n = 2..N0 from family.json (current): hi_n a zero of q_2(0) on the upper branch (the
-    record's exact test), or the first n where not."""
-    problems = document_problems(doc)
-    recs = (doc or {}).get("windows", [])
-    first = next((rec["n"] for rec in recs if not (rec.get("hi_zero_of_u") and rec.get("branch") == "upper")), None)
-    return Check(f"for n = 2..{N0} (reports/{FAMILY}, exact zero tests in Q(hi_n)[λ]): at the upper end hi_n of the "
-                 "window, q_2(0) = 0 on the dominant (upper) branch and its denominator does not vanish",
-                 not problems and first is None,
-                 problems + ([f"fails first at n = {first}"] if first is not None else
-                             [f"holds at every n = 2..{max((rec['n'] for rec in recs), default=1)}"]))
+PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant")
 
 
 def large_n_q2(limit: dict) -> list[Check]:
-    """L6 for every n > N0 from family_limit (parts 2, 7; part 9 for the window's upper end)."""
+    """L6 for every n ≥ 8 from family_limit (parts 2, 7; part 9 for the window's upper end)."""
     facts, bad = limit["facts"], limit["failures"]
     dom = facts.get("dominant")
-    out = [Check(f"for every n > {N0}: on ]0, {dom['r'][1] if dom else '?'}] the eigenvalue λ ≈ 1/9 is real, simple and "
-                 "strictly dominant (part 7), and q_2(0) has the sign of sin(nθ) there (part 2): it vanishes at r_n "
-                 "(nθ = π), is > 0 on ]r*, r_n[ and < 0 just above r_n", not bad and dom is not None,
+    out = [Check(f"for every n ≥ {PROVED_FROM}: on ]0, {dom['r'][1] if dom else '?'}] the eigenvalue λ ≈ 1/9 is real, "
+                 "simple and strictly dominant (part 7), and q_2(0) has the sign of sin(nθ) there (part 2): it vanishes "
+                 "at r_n (nθ = π), is > 0 on ]r*, r_n[ and < 0 just above r_n", not bad and dom is not None,
                  _limit_evidence(limit)[:1] + ([f"λ ∈ [{_fq(dom['lambda'][0]):.9f}, {_fq(dom['lambda'][1]):.9f}], "
                                                 f"|μ|, |ν| ≤ {_fq(dom['others']):.3g}"] if dom else ["no part 7"]))]
     if "positions" in facts:
-        out.append(Check(f"for every n > {N0} the stable set reaches r_n from below (every r between the lower "
-                         "end's strip and r_n stable, part 9): the window's upper end hi_n is r_n", not bad,
+        out.append(Check(f"for every n ≥ {PROVED_FROM} the stable set reaches r_n from below (every r between the "
+                         "lower end's strip and r_n stable, part 9): the window's upper end hi_n is r_n", not bad,
                          [f"positions: {len(facts['positions']['boxes'])} ε-boxes"]))
     return out
 
 
-@certificate("L6", needs=["ab_cb_patterns", "ab_cb_limit"], printed=PRINTED_L6,
+@certificate("L6", needs=["ab_cb_patterns", "ab_cb_seven", "ab_cb_limit"], printed=PRINTED_L6,
              expect=PASS,
              mutants=[replaced("criterion", "q_2(0)", "q_3(0)", "another component of the eigenvector"),
-                      replaced("branch", "dominant", "lower", "another eigenvalue branch"),
-                      committed("family", (FAMILY, {"digest": "0" * 64}), "family.json stale (another digest)")])
-def q2_vanishes_at_threshold(ab_cb_patterns, ab_cb_limit, criterion, branch, family):
-    """For each n = 2..N_MAX (`certify pattern`): at the upper end r_n of the stability window, the
+                      replaced("branch", "dominant", "lower", "another eigenvalue branch")])
+def q2_vanishes_at_threshold(ab_cb_patterns, ab_cb_seven, ab_cb_limit, criterion, branch):
+    """For each n = 2..7 (`certify pattern`): at the upper end r_n of the stability window, the
     numerator of u = q_2(0) vanishes on the dominant (upper) branch (exact test in Q(r_n)[λ]) and
-    its denominator does not; for n ≤ 30 the same from family.json, for n > 30 family_limit's proof."""
+    its denominator does not; for every n ≥ 8 family_limit's proof (parts 2, 7, 9)."""
     if criterion.replace(" ", "") != "q_2(0)=0" or branch not in ("dominant", "upper"):
         return conclude([Check(f"the criterion read: {criterion} on the {branch} branch", False,
                                ["only `q_2(0) = 0` on the dominant branch is implemented"])])
     rows, results = [], {}
-    for n in range(2, N_MAX + 1):
-        w = stable_window(ab_cb_patterns, n)
+    engine = engine_windows(ab_cb_patterns, ab_cb_seven)
+    for n, w in engine.items():
         cand = candidate(expand_pattern(ab_cb(n)))
         u = to_field(cand.q0[1].as_expr())
         if w is None:
@@ -577,23 +560,22 @@ def q2_vanishes_at_threshold(ab_cb_patterns, ab_cb_limit, criterion, branch, fam
                     f"denominator = 0: {'yes' if pole else 'no'}")
     checks = [named(f"L6.{n - 1}", Check(f"{ab_cb(n)}: q_2(0) = 0 on the dominant branch at the upper threshold",
                                           ok, [row for row in rows if row.startswith(f"n = {n}:")]))
-              for n, ok in results.items()]
-    parts = [small_n_q2(family_document(family))] + large_n_q2(ab_cb_limit)
+              for n, ok in results.items() if n <= N_MAX]
+    small = [n for n in results if n > N_MAX]
+    parts = [Check(f"{ab_cb(n)}: q_2(0) = 0 on the dominant branch at the upper threshold", results[n],
+                   [row for row in rows if row.startswith(f"n = {n}:")]) for n in small]
+    parts += large_n_q2(ab_cb_limit)
     whole = all(c.holds for c in parts) and "positions" in ab_cb_limit["facts"]
-    if "positions" not in ab_cb_limit["facts"]:
-        parts[-1].evidence.append(f"NOT proved: for n > {N0}, that the stable set reaches r_n (family_limit's facts "
-                                  "have no part 9): r_n is where q_2(0) = 0 and the feasible set ends, not yet the "
-                                  "certified upper end of the stable set")
     checks += parts
     checks.append(named("L6.6", Check(
-        f"for every n ≥ 2, {criterion} on the {branch} branch at the upper end of the window: the {len(parts)} checks "
-        "above", all(c.holds for c in parts),
-        ["every part holds" if all(c.holds for c in parts) else "a part fails"]
-        + ([] if whole else [f"NOT certified: for n > {N0}, that r_n is the upper end of the stable set (no part 9)"]))))
+        f"for every n ≥ 2, {criterion} on the {branch} branch at the upper end of the window: the checks above",
+        all(c.holds for c in checks),
+        ["every part holds" if all(c.holds for c in checks) else "a part fails"]
+        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, that r_n is the upper end of the stable set"]))))
     note = ("CDKK's conjecture (l. 1215), tested, not assumed: " + (
         "proved for every n ≥ 2 — the upper end of the window of (ab)^n(cb)^n is where q_2(0) = 0 on the dominant "
-        "branch, r_n, the root of r² − (6 + 8cos(π/n))r + 1." if whole else
-        f"proved for n ≤ {N0} (exact) and, for n > {N0}, that q_2(0) vanishes exactly at r_n on the dominant branch "
-        f"and changes sign there; that r_n is the upper end of the stable set for n > {N0} is NOT certified "
-        "(family_limit's facts have no part 9)."))
+        "branch, r_n, the root of r² − (6 + 8cos(π/n))r + 1 (n ≤ 7: exact zero tests; n ≥ 8: family_limit's theorem)."
+        if whole else
+        f"proved for n ≤ {PROVED_FROM - 1} (exact) and, for n ≥ {PROVED_FROM}, that q_2(0) vanishes exactly at r_n on "
+        "the dominant branch and changes sign there; that r_n is the upper end of the stable set is NOT certified."))
     return conclude(checks, note=note)

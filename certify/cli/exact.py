@@ -84,9 +84,15 @@ def cmd_pattern(args) -> int:
     """The exact analysis of one periodic word: Markdown on stdout, or JSON with --json
     (schema certify/patterns/pattern.schema.json).  A bad word is a UsageError (exit 2),
     raised before any work; nothing is written to a file."""
-    from certify.patterns import analyse, check_range, read
+    from certify.patterns import analyse, check_range, family_windows, read
+    from certify.patterns.family import family_n
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
-    read(args.word)                       # validate first: one line, exit 2
+    normal, system, _why = read(args.word)                       # validate first: one line, exit 2
+    n = family_n(normal) if system == "four" else None
+    if n is not None and n > family_windows.EXACT_N0 and not args.r_range:
+        rec = family_windows.theorem_record(n)   # (ab)^n(cb)^n beyond n = 30: the proof's window
+        print(json.dumps(rec, ensure_ascii=False, indent=2) if args.json else family_windows.theorem_markdown(rec))
+        return 0 if rec["proof_holds"] else 1
     result = analyse(args.word, lo, hi)
     print(result.json_text() if args.json else result.markdown())
     return 0
