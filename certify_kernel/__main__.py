@@ -20,19 +20,37 @@ from .statements import FileError
 DEFAULT = os.path.join("reports", "certificates.json")
 
 
+class Parser(argparse.ArgumentParser):
+    """An option error in one line on stderr, exit 2 (bad input), as every other error."""
+
+    def error(self, message):
+        print(f"error: {message}", file=sys.stderr)
+        raise SystemExit(2)
+
+
+def jobs(text: str) -> int:
+    """--jobs: a positive integer."""
+    if not text.isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text[:40]!r}")
+    return int(text)
+
+
 def main(argv=None) -> int:
     """Parse the options, verify, print; the exit code."""
-    parser = argparse.ArgumentParser(prog="python3 -m certify_kernel",
+    parser = Parser(prog="python3 -m certify_kernel",
                                      description="Decides the paper's statements (statements/*.txt) with the "
                                                  "kernel's own definitions and the witnesses of a certificates file.")
     parser.add_argument("path", nargs="?", default=DEFAULT, help=f"the certificates file (default: {DEFAULT})")
     parser.add_argument("--statements", default=str(STATEMENTS), metavar="DIR",
                         help="the statement files (default: statements/ of the checkout)")
     parser.add_argument("--only", nargs="+", metavar="ID", default=None, help="check only these certificates")
-    parser.add_argument("--jobs", type=int, default=min(2, os.cpu_count() or 1), metavar="N",
+    parser.add_argument("--jobs", type=jobs, default=min(2, os.cpu_count() or 1), metavar="N",
                         help="processes (default: 2)")
     parser.add_argument("--verbose", action="store_true", help="list every statement and its result")
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:               # --help: 0; an option error: 2, said in one line
+        return exc.code if isinstance(exc.code, int) else 0
     try:
         data = load(args.path)
         paper = read(args.statements)

@@ -21,7 +21,7 @@
                                 the exact analysis of one periodic word (ababcb,
                                 (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
                                 exist, are feasible, are stable (certify.patterns.pattern)
-    family --n-max N [--out DIR]
+    family --n-max N [--out DIR] [--force]
                                 the stability windows of (ab)^n(cb)^n for n = 2..N,
                                 checked (one interval, above 7-4√3, hi_n a zero of q_2(0),
                                 disjoint and decreasing): DIR/family.json
@@ -37,7 +37,7 @@
               [--digits D] [--exact]
                                 simulate the four particles exactly, print the
                                 collisions and their times (certify.dynamics.particles)
-    figures [--resolution preview|paper] [--only FIG ...] [--n4 NMAX] [--out DIR]
+    figures [--resolution preview|paper] [--only FIG ...] [--n4 NMAX] [--out DIR] [--force]
                                 Figures 6-11 of the paper (our ids 5.1-5.8) into
                                 DIR/figures; paper: also
                                 DIR/numerics-paper.json; --n4: DIR/numerics-n4.json;
@@ -53,11 +53,11 @@
                                 the island theorem at each rational r: quasi-periodic
                                 orbits around [ac]b, proved (certify.patterns.island_theorem)
     atlas [--r-range LO HI] [--resolution N] [--data M] [--out DIR] [--jobs N | --scheduler ADDRESS]
-          [--resume] [--json]
+          [--resume] [--json] [--force]
                                 the attractors of the reduction over ]0, 1[: each orbit's
                                 class, the certified windows stitched into cells, families:
                                 DIR/ATLAS.md, atlas.json, atlas.png (certify.run.atlas)
-    stress [--out FILE] [--quick] [--jobs N]
+    stress [--out FILE] [--quick] [--jobs N] [--force]
                                 near-singular, long and 1000 random orbits on every
                                 engine against the certified one: reports/STRESS.md
     schema [NAME] [--validate FILE]
@@ -88,7 +88,7 @@ import traceback
 
 from certify.errors import Undecided, UsageError
 
-from .options import Parser, say
+from .options import Parser, clip, say
 
 TOPICS = ("claims", "exact", "section5", "island_command", "atlas_command", "schemas")   # in the order of ``--help``
 # Each command's topic: running a command imports its topic's module alone (``pattern`` does not load the
@@ -155,7 +155,7 @@ def main(argv=None) -> int:
         return args.func(args)
     except UsageError as exc:
         clear_progress()
-        say(f"error: {exc}")
+        say(f"error: {clip(' '.join(str(exc).split()))}")
         return 2
     except KeyboardInterrupt:
         clear_progress()

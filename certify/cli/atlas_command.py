@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from certify.run import progress
-from certify.run.files import ensure_writable
+from certify.run.files import ensure_writable, keep_larger, load_findings
 
 from .options import DEFAULT_OUT, add_command, count, positive_int, r_range
 
@@ -22,6 +22,7 @@ def cmd_atlas(args) -> int:
     rs = atlas.r_values(lo, hi, args.resolution)
     data = atlas.data_grid(args.data)
     out = ensure_writable(args.out)
+    keep_larger(out / "atlas.json", "atlas", committed_size(out), size(lo, hi, args), args.force)
     state = out / atlas.STATE
     params = {"r_range": [str(atlas.Fraction(lo)), str(atlas.Fraction(hi))], "resolution": args.resolution,
               "data": args.data, "collisions": args.collisions, "word_max": args.word_max,
@@ -42,6 +43,26 @@ def cmd_atlas(args) -> int:
               f"{s['attractors_without_windows']} without; {len(doc['cells'])} cells; {len(doc['families'])} families")
         print(f"wrote {out / 'ATLAS.md'}, atlas.json, {atlas.FIGURE}; state {state}")
     return 0
+
+
+def size(lo, hi, args) -> dict:
+    """The measures of an atlas's size: its r-range and grid, the orbits' length, the words'
+    limits (keep_larger compares them with the atlas already written)."""
+    return {"r-range": (lo, hi), "r values": args.resolution, "initial data per r": args.data,
+            "collisions": args.collisions, "longest word": args.word_max, "seconds per word": args.word_seconds}
+
+
+def committed_size(out: Path) -> dict | None:
+    """The size of the atlas already in OUT/atlas.json (its parameters), or None."""
+    from fractions import Fraction
+    doc = load_findings("atlas.json", out)
+    try:
+        p = doc["parameters"]
+        return {"r-range": tuple(Fraction(x) for x in p["r_range"]), "r values": int(p["resolution"]),
+                "initial data per r": int(p["data"]), "collisions": int(p["collisions"]),
+                "longest word": int(p["word_max"]), "seconds per word": int(p["word_seconds"])}
+    except (KeyError, TypeError, ValueError, ZeroDivisionError):
+        return None
 
 
 def command_line(args) -> str:
@@ -83,6 +104,8 @@ def register(commands) -> None:
                    help=f"time limit of one word's window (default {atlas.WORD_SECONDS})")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
     p.add_argument("--resume", action="store_true", help="reuse the records of DIR/atlas-state.jsonl")
+    p.add_argument("--force", action="store_true",
+                   help="replace an atlas of a larger range, grid or limits already in DIR (refused without it)")
     p.add_argument("--json", action="store_true", help="also print atlas.json on stdout")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")

@@ -38,7 +38,7 @@ def cmd_census(args) -> int:
 
     from certify.run import census_report as census
     from certify.run import executors, progress
-    from certify.run.files import ensure_writable
+    from certify.run.files import ensure_writable, ensure_writable_file, keep_larger
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     if args.max_length > MAX_CENSUS_LENGTH and not args.scheduler:
         raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} on this machine ({CENSUS_COST}; "
@@ -58,11 +58,10 @@ def cmd_census(args) -> int:
                 "words) about ten minutes (progress on a terminal)")
     out = ensure_writable(args.out)
     longer = census.written_length(out)
-    if longer is not None and longer > args.max_length and not args.force:
-        raise UsageError(f"{out / 'census.json'} holds a census up to length {longer}; one up to {args.max_length} "
-                         "would replace it: write it elsewhere with --out DIR, or pass --force")
+    keep_larger(out / "census.json", "census", None if longer is None else {"longest period": longer},
+                {"longest period": args.max_length}, args.force)
     state = args.state if args.state is not None else out / "census-state.jsonl"
-    ensure_writable(state.parent)
+    ensure_writable_file(state, "--state")
     with executors.executor(args.jobs, args.scheduler, one_thread=True) as ex:
         records = census.run_census(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
     doc = census.write_outputs(records, args.max_length, out)
@@ -106,6 +105,7 @@ def cmd_family(args) -> int:
     if args.n_max < 2:
         raise UsageError(f"--n-max: the family starts at n = 2, not {args.n_max}")
     out = files.ensure_writable(args.out)
+    files.keep_larger(out / "family.json", "family", committed_family(out), {"largest n": args.n_max}, args.force)
     from certify.run.executors import executor
     with executor(args.jobs) as pool:
         doc, seconds = windows(args.n_max, progress=progress.Bar("n"), pool=None if args.jobs == 1 else pool)
@@ -119,6 +119,16 @@ def cmd_family(args) -> int:
           else f"fails at n = {failure['n']}: {failure['reason']}")
     print(f"wrote {out / 'family.json'}")
     return 0 if doc["all_hold"] else 1
+
+
+def committed_family(out: Path) -> dict | None:
+    """The size of the family already in OUT/family.json (its largest n), or None."""
+    from certify.run.files import load_findings
+    doc = load_findings("family.json", out)
+    try:
+        return {"largest n": int(doc["n_max"])} if doc is not None else None
+    except (KeyError, TypeError, ValueError):
+        return None
 
 
 def cmd_orbit(args) -> int:
@@ -232,6 +242,8 @@ def register(commands) -> None:
                     "and hi_{n+1} < lo_n.  Writes DIR/family.json (docs/family.md).")
     p.add_argument("--n-max", type=positive_int, required=True, metavar="N", help="the largest n (at least 2)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    p.add_argument("--force", action="store_true",
+                   help="replace a family of a larger n already in DIR (refused without it)")
     add_jobs(p)
 
     p = add_command(commands, "orbit", cmd_orbit,

@@ -46,12 +46,8 @@ def cmd_island(args) -> int:
         raise UsageError(f"--depth is at most {MAX_DEPTH}")
     rs = r_list(args) if args.r is not None or args.r_range is not None else []
     if args.figure is not None:
-        from pathlib import Path
-
-        from certify.run.files import ensure_writable
-        if Path(args.figure).is_dir():
-            raise UsageError(f"--figure {args.figure!r} is a directory, not a file")
-        ensure_writable(Path(args.figure).parent if str(Path(args.figure).parent) else Path("."))
+        from certify.run.files import ensure_writable_file
+        ensure_writable_file(args.figure, "--figure")
     bar = progress.Bar("r")
     records = []
     for k, r in enumerate(rs):
@@ -82,7 +78,7 @@ def text_lines(doc: dict):
     """The text output: each theorem's steps with ✓/✗ and evidence, then the numbers."""
     records = doc["islands"] if "islands" in doc else ([doc] if "r" in doc else [])
     for rec in records:
-        yield f"island theorem at r = {rec['r']}: {'proved' if rec['holds'] else 'REFUSED'}"
+        yield f"island theorem at r = {rec['r']}: {verdict(rec)}"
         yield from _steps(rec["steps"])
         if rec["elliptic"]:
             rho = rec["rotation_number"]
@@ -111,6 +107,17 @@ def text_lines(doc: dict):
         yield "ends of the census's attracting windows that are resonances (the same algebraic number):"
         for x in doc["window_resonances"]:
             yield f"  {x['word']}: {island_theorem.resonance_phrase(x['end'], x['digits'], x['p'], x['q'])}"
+
+
+def verdict(rec: dict) -> str:
+    """What the island theorem proved at r, in a few words: an island, or (A not elliptic)
+    that this theorem gives none."""
+    if not rec["holds"]:
+        return "REFUSED"
+    if not rec["elliptic"]:
+        return "proved, in its other case: A(r) is not elliptic (r² − 6r + 1 ≥ 0), so no island at this r"
+    return "proved: an island of " + ("quasi-periodic orbits" if rec["quasi_periodic"] else "invariant ellipses") + \
+        " around [ac]b"
 
 
 def _steps(steps):

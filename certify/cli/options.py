@@ -29,6 +29,13 @@ class Parser(argparse.ArgumentParser):
     def error(self, message):
         raise UsageError(message)
 
+    def _get_values(self, action, arg_strings):
+        """argparse's values, but ``--r=--`` is refused: argparse (3.11) drops the "--" and
+        hands the option an untyped empty list."""
+        if action.option_strings and action.nargs is None and arg_strings == ["--"]:
+            self.error(f"argument {'/'.join(action.option_strings)}: expected a value, got '--'")
+        return super()._get_values(action, arg_strings)
+
 
 # --- numbers: one syntax for every command --------------------------------------------
 #
@@ -37,6 +44,7 @@ class Parser(argparse.ArgumentParser):
 # bounded (MAX_EXPONENT), so that no input makes a number too large to build.
 
 MAX_EXPONENT = 10_000                 # |e| of 1e<e> and 10^<e>: 10^10000 is built at once
+MAX_DIGITS = 1000                     # digits written in a number's text (Python reads at most 4300)
 R_MARGIN = Fraction(1, 2 ** 60)       # r is at least this far from 0 and 1 (see r_value)
 R_MARGIN_TEXT = "2^-60"
 _DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)(?:[eE]([+-]?\d+))?")
@@ -48,10 +56,24 @@ def _named(name: str | None) -> str:
     return f"{name}: " if name else ""
 
 
+ECHO = 200                            # characters of a word echoed in a message (a path fits)
+
+
+def clip(message: str, width: int = ECHO) -> str:
+    """``message`` with every word longer than ``width`` characters cut, saying how long it
+    was: an error echoes what was typed, never 10 kB of it."""
+    def cut(word: str) -> str:
+        return word if len(word) <= width else f"{word[:width // 2]}…({len(word)} characters)"
+    return " ".join(cut(w) for w in message.split(" "))
+
+
 def exact(text: str, name: str | None = None) -> Fraction:
     """``text`` as an exact rational: 3/10, 0.3, 1e-1, 10^-1, -2 (a decimal read exactly).
     UsageError (one line, exit 2) otherwise, naming ``name``."""
     t = str(text).strip().replace("_", "")
+    digits = sum(ch.isdigit() for ch in t)
+    if digits > MAX_DIGITS:
+        raise UsageError(f"{_named(name)}{clip(repr(text))} has {digits} digits: at most {MAX_DIGITS}")
     m, p, f = _DECIMAL.fullmatch(t), _POWER.fullmatch(t), _FRACTION.fullmatch(t)
     exponent = int(m.group(2) or 0) if m else int(p.group(2)) if p else 0
     if not (m or p or f):

@@ -1,5 +1,6 @@
 """``certify schema [NAME] [--validate FILE]``: the JSON Schema of every JSON output, shipped
-with the package (certify/patterns/*.schema.json, certify/schemas/*.schema.json), each valid
+with the package (certify/patterns/*.schema.json, certify/schemas/*.schema.json,
+certify_kernel/certificates.schema.json), each valid
 alone with plain ``jsonschema`` (no reference outside its file).
 
     certify schema                                  every schema: name, file, what writes it
@@ -17,6 +18,7 @@ from certify.errors import UsageError
 from .options import add_command
 
 FOLDER = Path(__file__).resolve().parent.parent / "schemas"
+KERNEL = Path(__file__).resolve().parents[2] / "certify_kernel"      # its package folder, not imported
 WRITERS = {"pattern": "certify pattern WORD --json", "orbit": "certify orbit WORD --json",
            "trap": "certify orbit WORD --trap R --json", "census": "certify census: DIR/census.json",
            "report": "certify all: reports/report.json", "timings": "certify all: reports/timings.json",
@@ -25,7 +27,8 @@ WRITERS = {"pattern": "certify pattern WORD --json", "orbit": "certify orbit WOR
            "identify": "certify identify --json", "section5-orbits": "certify identify --section5: "
            "reports/section5-orbits.json", "island": "certify island --json",
            "atlas": "certify atlas: DIR/atlas.json",
-           "family-window": "certify pattern '(ab)^n(cb)^n' --json for n > 30 (the theorem's window)"}
+           "family-window": "certify pattern '(ab)^n(cb)^n' --json for n > 30 (the theorem's window)",
+           "certificates": "certify all: reports/certificates.json, read by python3 -m certify_kernel"}
 
 
 def schemas() -> dict[str, Path]:
@@ -35,6 +38,7 @@ def schemas() -> dict[str, Path]:
     from certify.patterns.reduction_orbits import SCHEMA_PATH as ORBIT
     found = {"pattern": SCHEMA_PATH, "orbit": ORBIT, "island": ISLAND}
     found.update({p.name.removesuffix(".schema.json"): p for p in sorted(FOLDER.glob("*.schema.json"))})
+    found["certificates"] = KERNEL / "certificates.schema.json"       # the kernel's input, shipped with it
     return found
 
 

@@ -9,7 +9,16 @@ from pathlib import Path
 
 from certify.errors import UsageError
 from certify.run import executors, progress, saving
-from certify.run.files import atomic_path, ensure_writable, write_atomic, write_findings
+from certify.run.files import (
+    atomic_path,
+    ensure_writable,
+    ensure_writable_file,
+    keep_larger,
+    load_findings,
+    read_text_or_none,
+    write_atomic,
+    write_findings,
+)
 
 from .options import (
     DEFAULT_OUT,
@@ -71,9 +80,7 @@ def cmd_simulate(args) -> int:
     r = r_values(args)
     theta0, phi0 = initial_data(args)
     if args.out is not None:
-        ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
-        if args.out.is_dir():
-            raise UsageError(f"--out {str(args.out)!r} is a directory, not a file")
+        ensure_writable_file(args.out, "--out")
     if args.dps is not None and args.engine == "float64":
         raise UsageError("--dps is for the mp and ball engines")
     if args.words and args.out is None:
@@ -93,14 +100,49 @@ def cmd_simulate(args) -> int:
 def cmd_stress(args) -> int:
     """Near-singular, long and random orbits on every engine: reports/STRESS.md."""
     from certify.numerics import stress
-    ensure_writable(args.out.parent if str(args.out.parent) else Path("."))
+    ensure_writable_file(args.out, "--out")
+    spec = stress.RANDOM_QUICK if args.quick else stress.RANDOM
+    keep_larger(args.out, "stress report", committed_stress(args.out),
+                {"random orbits": spec["count"], "collisions each": spec["collisions"]}, args.force, "--out FILE")
     with executors.executor(args.jobs) as ex:
         text, silent = stress.report(quick=args.quick, progress=progress.Bar("orbit"), executor=ex)
     write_atomic(args.out, text)
     print(f"wrote {args.out}: {silent} silent wrong collision(s)")
     return 1 if silent else 0
 
+def committed_stress(path: Path) -> dict | None:
+    """The size of the stress report already at ``path`` (its random orbits and their
+    collisions, from its heading), or None."""
+    import re
+    found = re.search(r"^## (\d+) random orbits, (\d+) collisions each$", read_text_or_none(path) or "", re.M)
+    return {"random orbits": int(found[1]), "collisions each": int(found[2])} if found else None
+
+
 FIGURE_DPI = {"preview": None, "paper": 150}
+
+
+def points_share(every: int | None):
+    """The share of the r of a figure whose plotted points are certified (--certify-points
+    EVERY: 1/EVERY; none: 0), a measure of the paper figures' size for keep_larger."""
+    from fractions import Fraction
+    return Fraction(1, every) if every else Fraction(0)
+
+
+def committed_figures(out: Path) -> tuple[dict | None, dict | None]:
+    """The sizes of the findings already in OUT: the paper figures (the share of r with
+    certified points, numerics-paper.json) and the N4 search (its largest n,
+    numerics-n4.json); None for a file absent or unreadable."""
+    paper, n4 = load_findings("numerics-paper.json", out), load_findings("numerics-n4.json", out)
+    try:
+        every = {(f.get("points") or {}).get("every") for k, f in (paper or {}).items() if k.startswith("5.")}
+        share = None if not every else {"share of r with certified points": min(points_share(e) for e in every)}
+    except (AttributeError, TypeError, ValueError, ZeroDivisionError):
+        share = None
+    try:
+        largest = {"largest n searched": max(int(n) for n in n4["ns"])} if n4 else None
+    except (KeyError, TypeError, ValueError):
+        largest = None
+    return share, largest
 
 
 def cmd_figures(args) -> int:
@@ -113,6 +155,12 @@ def cmd_figures(args) -> int:
     if unknown:
         raise UsageError(f"unknown figure {unknown[0]!r} (one of {', '.join(numerics.SPECS)})")
     out = prepare_output(args.out)
+    paper, n4 = committed_figures(out)
+    if args.n4 is not None:
+        keep_larger(out / "numerics-n4.json", "N4 search", n4, {"largest n searched": args.n4}, args.force)
+    if args.resolution == "paper":
+        keep_larger(out / "numerics-paper.json", "set of paper figures", paper,
+                    {"share of r with certified points": points_share(args.certify_points)}, args.force)
     if args.n4 is not None:
         with executors.executor(args.jobs) as ex:                      # one n per job
             found = numerics.n4_search(args.n4, progress=progress.Bar("n"), executor=ex if args.jobs > 1 else None)
@@ -291,6 +339,8 @@ def register(commands) -> None:
     p.add_argument("--out", type=Path, default=DEFAULT_STRESS, metavar="FILE",
                    help="the report (default: reports/STRESS.md)")
     p.add_argument("--quick", action="store_true", help="smaller cases (a smoke test): 40 random orbits of 300")
+    p.add_argument("--force", action="store_true",
+                   help="replace a report of more random orbits already at FILE (refused without it)")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
                    help="processes for the random orbits (default: all cores)")
 
@@ -311,4 +361,7 @@ def register(commands) -> None:
     p.add_argument("--n4", type=positive_int, default=None, metavar="NMAX",
                    help="find the windows of (ab)^n(cb)^n up to n = NMAX with the mp engine (minutes)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    p.add_argument("--force", action="store_true",
+                   help="replace findings of a larger search (--n4) or of more certified points (paper) already in "
+                        "DIR (refused without it)")
     add_jobs(p)

@@ -161,17 +161,65 @@ def ensure_writable(directory) -> Path:
     """Create ``directory`` if needed and prove that a file can be written there.
 
     Raises :class:`UsageError` (exit code 2) with a one-line reason otherwise, so
-    that the CLI can refuse an output directory *before* running certificates.
+    that the CLI can refuse an output directory *before* running certificates: "not a
+    directory" (a file there, or on its path), "not writable" (the probe failed), or why
+    it cannot be created.  The one way a bad output path is reported.
     """
     directory = Path(directory)
+
+    def refuse(why: str):
+        raise UsageError(f"cannot write to output directory {str(directory)!r}: {why}")
+    blocking = next((p for p in (directory, *directory.parents) if p.exists() and not p.is_dir()), None)
+    if blocking is not None:
+        refuse("not a directory" + ("" if blocking == directory else f" ({str(blocking)!r} is a file)"))
     try:
         directory.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        refuse(f"cannot be created ({exc.strerror or type(exc).__name__})")
+    try:
         with tempfile.NamedTemporaryFile(dir=directory, prefix=".certify-probe-"):
             pass
     except OSError as exc:
-        reason = exc.strerror or type(exc).__name__
-        raise UsageError(f"cannot write to output directory {str(directory)!r}: {reason}") from None
+        refuse(f"not writable ({exc.strerror or type(exc).__name__})")
     return directory
+
+
+def ensure_writable_file(path, option: str) -> Path:
+    """An output file ``path`` (given by ``option``): its directory as :func:`ensure_writable`
+    checks it, and not a directory itself; a UsageError (one line, exit 2) otherwise."""
+    path = Path(path)
+    if path.is_dir():
+        raise UsageError(f"{option} {str(path)!r} is a directory, not a file")
+    ensure_writable(path.parent if str(path.parent) else Path("."))
+    return path
+
+
+def _covers(new, old) -> bool:
+    """A measure of a result's size covers another: a number at least as large, an interval
+    (lo, hi) containing the other."""
+    if isinstance(old, tuple):
+        return new[0] <= old[0] and old[1] <= new[1]
+    return new >= old
+
+
+def _shown(value) -> str:
+    return f"]{value[0]}, {value[1]}[" if isinstance(value, tuple) else str(value)
+
+
+def keep_larger(path, what: str, committed: dict | None, new: dict, force: bool, option: str = "--out DIR") -> None:
+    """Refuse to replace a larger result: ``path`` holds a ``what`` (census, atlas, ...) whose
+    size is ``committed`` (name -> a number, larger is more, or an interval (lo, hi) of r;
+    None when there is no readable result there); the run about to replace it has the size
+    ``new``.  Unless ``force``, a run smaller in one measure is a UsageError (one line, exit 2)
+    naming the measures, ``option`` (where to write instead) and --force.  Every command
+    that writes into reports/ by default calls this before any work."""
+    if force or not committed:
+        return
+    smaller = [name for name, old in committed.items() if name in new and not _covers(new[name], old)]
+    if smaller:
+        sizes = lambda doc: ", ".join(f"{name} {_shown(doc[name])}" for name in smaller)    # noqa: E731
+        raise UsageError(f"{path} holds a larger {what} ({sizes(committed)}) than this run's ({sizes(new)}), which "
+                         f"would replace it: write it elsewhere with {option}, or pass --force")
 
 
 def write_section(path, title: str, body: str) -> None:

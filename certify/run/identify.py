@@ -364,7 +364,9 @@ def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIO
                 why_not = "no periodic orbit with this word at r (decided exactly, orbit_at)"
             elif o.kind != "attracting":
                 kind = {"saddle": "a saddle", "repelling": "repelling"}.get(o.kind, "of multiplier modulus 1")
-                why_not = f"its periodic orbit at r is {kind} (decided exactly, orbit_at)"
+                why_not = (f"its periodic orbit at r is {kind} (decided exactly, orbit_at): proved, the word has no "
+                           f"attracting periodic orbit at r; observed, the run repeats it without converging to that "
+                           f"orbit (orbits near a periodic orbit share its word)")
             else:
                 rotation = followed(block, normal)
                 U = trap_of(rotation, q)

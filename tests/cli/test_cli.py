@@ -331,7 +331,8 @@ def test_output_under_a_file_is_a_usage_error(tmp_path, capsys):
     (tmp_path / "file").write_text("")
     assert cli.main(["all", "--out", str(tmp_path / "file" / "reports")]) == 2
     assert lines(capsys.readouterr().err) == [f"certify: error: cannot write to output directory "
-                                              f"{str(tmp_path / 'file' / 'reports')!r}: Not a directory"]
+                                              f"{str(tmp_path / 'file' / 'reports')!r}: not a directory "
+                                              f"({str(tmp_path / 'file')!r} is a file)"]
 
 
 def test_list_runs():

@@ -26,10 +26,19 @@ def run(capsys, *argv):
 def test_text_shows_every_step_and_the_numbers(capsys):
     code, out, err = run(capsys, "--r", "0.3", "--depth", "6")
     assert code == 0 and err == ""
-    assert "island theorem at r = 3/10: proved" in out
+    assert "island theorem at r = 3/10: proved: an island of quasi-periodic orbits around [ac]b" in out
     assert out.count("✓") == 7 and "✗" not in out
     assert "c_max = 71/120" in out and "rotation number ρ = 0.3169449453512215" in out
     assert "quasi-periodic: yes" in out and "island fraction" in out
+
+
+def test_not_elliptic_says_in_its_first_line_that_what_is_proved_is_no_island(capsys):
+    """Issue 38 item 8: at r = 1/10 the theorem holds in its other case (A not elliptic); the
+    first line no longer reads "proved" alone above "not elliptic: no island"."""
+    code, out, _ = run(capsys, "--r", "1/10")
+    first = out.splitlines()[0]
+    assert code == 0 and first.startswith("island theorem at r = 1/10: proved")
+    assert "not elliptic" in first and "no island" in first
 
 
 def test_json_validates_and_says_what_the_issue_asks(capsys):

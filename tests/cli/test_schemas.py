@@ -45,7 +45,8 @@ def test_every_schema_is_package_data():
 
 
 @pytest.mark.parametrize("name, file", [("report", "report.json"), ("census", "census.json"),
-                                        ("numerics-paper", "numerics-paper.json"), ("numerics-n4", "numerics-n4.json")])
+                                        ("numerics-paper", "numerics-paper.json"), ("numerics-n4", "numerics-n4.json"),
+                                        ("certificates", "certificates.json")])
 def test_the_committed_outputs_validate(name, file):
     validate(name, json.loads((REPORTS / file).read_text(encoding="utf-8")))
 

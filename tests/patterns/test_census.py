@@ -323,7 +323,7 @@ def test_a_shorter_census_does_not_silently_replace_a_longer_one(tmp_path, capsy
     capsys.readouterr()
     assert cli.main(["census", "--max-length", "3", "--out", str(tmp_path), "--jobs", "1"]) == 2
     err = capsys.readouterr().err
-    assert "holds a census up to length 4" in err and err.count("\n") == 1
+    assert "holds a larger census (longest period 4)" in err and err.count("\n") == 1
     assert (tmp_path / "census.json").read_bytes() == before
     assert cli.main(["census", "--max-length", "3", "--out", str(tmp_path), "--jobs", "1", "--force"]) == 0
     assert json.loads((tmp_path / "census.json").read_text())["census"]["max_length"] == 3

@@ -171,6 +171,18 @@ def test_near_one_no_line_contradicts_itself():
     assert y.cls == ident.UNRESOLVED and y.line().count("observed") >= 1 and "certified:" not in y.line()
 
 
+def test_a_repeated_word_whose_orbit_repels_says_what_is_proved_and_what_observed():
+    """Issue 38 item 8: at r = 0.95 the run repeats abcb, whose periodic orbit is repelling;
+    the line says both halves: proved (no attracting orbit of abcb at r), observed (the run
+    repeats the word without converging to its orbit)."""
+    theta0, phi0 = grid(1)
+    x = ident.classify(Fraction(19, 20), float(theta0[0]), float(phi0[0]), 5000)
+    line = x.line()
+    assert x.cls == ident.UNRESOLVED and x.word == "abcb" and "periodic orbit at r is repelling" in line
+    assert "proved, the word has no attracting periodic orbit at r" in line
+    assert "observed, the run repeats it without converging to that orbit" in line
+
+
 def test_the_grid_beyond_eight_is_a_superset_without_corners():
     t8, p8 = grid(8)
     t, p = grid(24)
