@@ -85,9 +85,10 @@ def cmd_pattern(args) -> int:
     (schema certify/patterns/pattern.schema.json).  A bad word is a UsageError (exit 2),
     raised before any work; nothing is written to a file."""
     from certify.patterns import analyse, check_range, read
+    from certify.run import progress
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
     read(args.word)                       # validate first: one line, exit 2
-    result = analyse(args.word, lo, hi)
+    result = analyse(args.word, lo, hi, progress=progress.Bar("step"))
     print(result.json_text() if args.json else result.markdown())
     return 0
 

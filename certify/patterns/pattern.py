@@ -397,7 +397,7 @@ def known_factors(*words: str) -> list[list[int]]:
     return [list(f) for f in sorted(found)]
 
 
-def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True) -> PatternResult:
+def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True, progress=None) -> PatternResult:
     """The exact analysis of a written period (any rotation / mirror) over ]lo, hi[.
 
     ``formulas=False`` (the census) skips what only the report prints: the period
@@ -406,7 +406,9 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     With ``formulas`` they are computed when first read.  ``diagnosis=False`` (the
     physics line of ``certify orbit``, which reads only the certified sets) skips the
     search for the collision that comes instead where the word is never feasible
-    (``diagnosis`` None, the verdict without it); the certified sets are the same."""
+    (``diagnosis`` None, the verdict without it); the certified sets are the same.
+    ``progress(k, n, label)`` (a :class:`certify.run.progress.Bar`) as the conditions of each
+    collision, then stability, are imposed: k of n done."""
     import time
     start = time.perf_counter()
     diagnose_failure = diagnosis
@@ -436,6 +438,9 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     k = family.family_n(normal) if system_name == "four" else None
     if k is not None and k >= 2 and _family_feasible(an, groups, k):
         groups = []                 # (ab)^n(cb)^n: the feasible set, from the equivalent reduced conditions
+    tick = progress or (lambda k, n, label="": None)
+    steps = len(groups) + 1                          # each collision's conditions, then stability
+    tick(0, steps, "feasible")
     for m, group in enumerate(groups, 1):
         # the same set whatever the order: those without x first (cheap, no √Δ), so
         # that the regions shrink before the tables with x (norms of twice the degree)
@@ -445,6 +450,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
                 and diagnosis is None:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
         before = _copy(an.regions)
+        tick(m, steps, f"collision {m} of {len(groups)}" if m < len(groups) else "stable")
     regions["feasible"] = _copy(an.regions)
     stab = dominance_requirements(cand.spectrum.ring_cp)
     if cand.abcd is not None:
@@ -452,6 +458,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     conditions["stable"] = [_cond(q) for q in stab]
     for q in stab:
         an.impose(q)
+    tick(steps, steps, "")
     regions["stable"] = _copy(an.regions)
     undecided = sorted({f"{BRANCH_NAMES[R.branch]} {R.fixed_point} at {_short(rc)}: {why_}"
                         for R in an.regions for rc, why_ in R.undecided})

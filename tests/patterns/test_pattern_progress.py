@@ -1,0 +1,26 @@
+"""Progress of a long analysis (issue 38 item 4): ``certify pattern`` on a long word said nothing
+for minutes.  ``analyse`` reports each collision's conditions and then stability, k of n, from
+k = 0 (the bar is drawn at once); the command draws it on a terminal only."""
+from certify import cli
+from certify.patterns import analyse
+from certify.patterns.periodic import read
+from certify.run import progress
+
+
+def test_analyse_reports_every_collision_then_stability():
+    calls = []
+    res = analyse("abacbcb", progress=lambda k, n, label="": calls.append((k, n, label)))
+    n = len(read("abacbcb")[0]) + 1                    # seven collisions, then stability
+    assert [c[:2] for c in calls] == [(k, n) for k in range(n + 1)]
+    assert calls[1][2] == "collision 1 of 7" and calls[-2][2] == "stable"
+    assert res.to_json() == analyse("abacbcb").to_json()       # the same analysis, with or without
+
+
+def test_the_command_draws_progress_on_a_terminal_only(monkeypatch, capsys):
+    assert cli.main(["pattern", "abcb"]) == 0
+    quiet = capsys.readouterr()
+    assert quiet.err == "" and quiet.out.startswith("# Pattern abcb")
+    monkeypatch.setattr(progress, "_is_terminal", lambda stream: True)
+    assert cli.main(["pattern", "abcb"]) == 0
+    shown = capsys.readouterr()
+    assert "collision 1 of 4" in shown.err and shown.out == quiet.out
