@@ -5,6 +5,7 @@ exactly).
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 
 from certify.errors import UsageError
@@ -85,10 +86,13 @@ def cmd_pattern(args) -> int:
     (schema certify/patterns/pattern.schema.json).  A bad word is a UsageError (exit 2),
     raised before any work; nothing is written to a file."""
     from certify.patterns import analyse, check_range, read
-    from certify.run import progress
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
     read(args.word)                       # validate first: one line, exit 2
-    result = analyse(args.word, lo, hi, progress=progress.Bar("step"))
+    bar = None
+    if sys.stderr.isatty():               # a progress bar on a terminal: certify.run (numpy, tqdm) loaded only then
+        from certify.run.progress import Bar
+        bar = Bar("step")
+    result = analyse(args.word, lo, hi, progress=bar)
     print(result.json_text() if args.json else result.markdown())
     return 0
 
