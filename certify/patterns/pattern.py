@@ -407,13 +407,16 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     physics line of ``certify orbit``, which reads only the certified sets) skips the
     search for the collision that comes instead where the word is never feasible
     (``diagnosis`` None, the verdict without it); the certified sets are the same.
-    ``progress(k, n, label)`` (a :class:`certify.run.progress.Bar`) as the conditions of each
-    collision, then stability, are imposed: k of n done."""
+    ``progress(k, n, label)`` (a :class:`certify.run.progress.Bar`): k of the n steps done (existence,
+    each collision's conditions, stability; the family route decides feasibility at once), from 0."""
     import time
     start = time.perf_counter()
     diagnose_failure = diagnosis
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
+    tick = progress or (lambda k, n, label="": None)
+    total = len(normal) + 2                          # existence, each collision's conditions, stability
+    tick(0, total, "")
     system = BY_NAME[system_name]
     cand = candidate_in(system_name, normal)
     an = Analysis(cand, lo, hi)
@@ -425,6 +428,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     for q in first:
         an.impose(q)
     regions = {"exists": _copy(an.regions)}
+    tick(1, total, "exists")
     # feasibility, collision by collision: the first one that empties every region is named
     seen = {q.name for q in first}
     groups = []
@@ -438,9 +442,6 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     k = family.family_n(normal) if system_name == "four" else None
     if k is not None and k >= 2 and _family_feasible(an, groups, k):
         groups = []                 # (ab)^n(cb)^n: the feasible set, from the equivalent reduced conditions
-    tick = progress or (lambda k, n, label="": None)
-    steps = len(groups) + 1                          # each collision's conditions, then stability
-    tick(0, steps, "feasible")
     for m, group in enumerate(groups, 1):
         # the same set whatever the order: those without x first (cheap, no √Δ), so
         # that the regions shrink before the tables with x (norms of twice the degree)
@@ -450,7 +451,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
                 and diagnosis is None:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
         before = _copy(an.regions)
-        tick(m, steps, f"collision {m} of {len(groups)}" if m < len(groups) else "stable")
+        tick(1 + m, total, f"collision {m} of {len(groups)}")
     regions["feasible"] = _copy(an.regions)
     stab = dominance_requirements(cand.spectrum.ring_cp)
     if cand.abcd is not None:
@@ -458,7 +459,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     conditions["stable"] = [_cond(q) for q in stab]
     for q in stab:
         an.impose(q)
-    tick(steps, steps, "")
+    tick(total, total, "stable")
     regions["stable"] = _copy(an.regions)
     undecided = sorted({f"{BRANCH_NAMES[R.branch]} {R.fixed_point} at {_short(rc)}: {why_}"
                         for R in an.regions for rc, why_ in R.undecided})

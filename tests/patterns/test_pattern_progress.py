@@ -11,10 +11,17 @@ from certify.patterns.periodic import read
 def test_analyse_reports_every_collision_then_stability():
     calls = []
     res = analyse("abacbcb", progress=lambda k, n, label="": calls.append((k, n, label)))
-    n = len(read("abacbcb")[0]) + 1                    # seven collisions, then stability
+    n = len(read("abacbcb")[0]) + 2                    # existence, seven collisions, stability
     assert [c[:2] for c in calls] == [(k, n) for k in range(n + 1)]
-    assert calls[1][2] == "collision 1 of 7" and calls[-2][2] == "stable"
+    assert [c[2] for c in calls[1:3]] == ["exists", "collision 1 of 7"] and calls[-1][2] == "stable"
     assert res.to_json() == analyse("abacbcb").to_json()       # the same analysis, with or without
+
+
+def test_the_family_route_jumps_to_stability():
+    """(ab)^n(cb)^n: feasibility from the family's reduced conditions, at once (no collision steps)."""
+    calls = []
+    analyse("(ab)^2(cb)^2", progress=lambda k, n, label="": calls.append((k, n)))
+    assert calls == [(0, 10), (1, 10), (10, 10)]
 
 
 class Terminal(io.StringIO):
