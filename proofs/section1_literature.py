@@ -6,19 +6,25 @@ L2  the symmetric system [ac]b: no collapse above 3-2√2 (l. 132);
 L3  abcb: collapsing data exactly below r_exist ≈ 0.19166, the only root of P in [0,1],
     and unstable (l. 132, 1101);
 L4  the upper stability thresholds of (ab)^n(cb)^n, n = 2..6, as printed (l. 1114-1120);
-L5  the stability windows of (ab)^2(cb)^2 and (ab)^3(cb)^3, disjoint, accumulating on
-    7-4√3 from above (l. 1123-1125, 1215);
-L6  CDKK's conjecture: the upper threshold is where q_2(0) = 0 (l. 1215).
+L5  the stability windows of (ab)^2(cb)^2 and (ab)^3(cb)^3 (l. 1123-1125); for every n ≥ 2, the
+    windows disjoint, accumulating on 7-4√3 from above (l. 1215, the paper's open problem);
+L6  CDKK's conjecture: the upper threshold is where q_2(0) = 0 (l. 1215), for every n ≥ 2.
+
+L5 and L6 for every n: n ≤ N0 = 30 from reports/family.json (``certify family --n-max 30``, the
+exact windows, read back only while its digest is that of the source), n > 30 from the proof of
+certify/patterns/family_limit.py (``prove``, re-verified by ``check``, within the run).
 
 Remark 3.2 (T26, the threshold 5-2√6 of (ab)^3(cb)^3) is in proofs/section3_remarks.py.
 """
 from __future__ import annotations
 
+import json
 import re
+from fractions import Fraction
 
 from certify.algebra import Algebraic, parse, radical, to_field, to_fmpz_poly
 from certify.dynamics import candidate
-from certify.patterns import analyse, fmt, known_factors, vanishes_on_branch
+from certify.patterns import analyse, end_number, family_windows, fmt, known_factors, vanishes_on_branch
 from certify.patterns import parse as parse_word
 from certify.run import (
     PASS,
@@ -26,8 +32,10 @@ from certify.run import (
     certificate,
     conclude,
     for_a_run,
+    load_findings,
     named,
     overridden,
+    plots,
     quantity,
     replaced,
     witness,
@@ -267,20 +275,201 @@ def upper_thresholds(ab_cb_patterns, **printed):
     return conclude(checks, evidence=ev)
 
 
+# ---------------------------------------------------------------- L5, L6 for every n ≥ 2
+# n = 2..7: `certify pattern`'s exact analysis of each w_n (ab_cb_patterns, ab_cb_seven).
+# n ≥ 8: family_limit's theorem (prove(7), re-verified by check: family_windows.theorem), and for
+# n = 8..N0 its windows as exact algebraic numbers (family_windows.proved_window: ℓ_n the one root of
+# F_n in ]r_(n+1), r_n[, counted exactly).  reports/family.json (`certify family --n-max 30`, the
+# engine's analysis of each n, half an hour) is the second route for n = 8..30: compared where current.
+
+N0 = family_windows.EXACT_N0                 # the exact windows listed: n = 2..30
+PROVED_FROM = family_windows.PROVED_N0 + 1   # the theorem: every n ≥ 8
+FAMILY = "family.json"
+FAMILY_COMMAND = f"python -m certify family --n-max {N0}"
+
+
+@quantity("ab_cb_seven")
+def ab_cb_seven():
+    """`certify pattern (ab)^7(cb)^7` over ]0, 1[ (about 25 s): the last n below the theorem."""
+    return pattern(ab_cb(PROVED_FROM - 1))
+
+
+@quantity("ab_cb_limit")
+def ab_cb_limit():
+    """family_limit's proof for every n ≥ 8 (prove(7), then check: about 8 s) and the exact windows it
+    gives for n = 8..N0 (about 10 s): {"facts", "failures", "windows": {n: (ℓ_n, r_n)}}."""
+    return {**family_windows.theorem(), "windows": {n: family_windows.proved_window(n)
+                                                    for n in range(PROVED_FROM, N0 + 1)}}
+
+
+def family_document(source=FAMILY) -> dict | None:
+    """The committed reports/family.json (None when absent), or ``(name, edits)`` for the mutation
+    tests: ``{"digest": text}`` replaces its digest (a stale document); ``{"lo": n}`` moves lo_n to
+    lo_(n+1) (the engine's route then disagrees with the proof's)."""
+    name, edits = (source, {}) if isinstance(source, str) else source
+    doc = load_findings(name)
+    if not doc or not edits:
+        return doc
+    doc = json.loads(json.dumps(doc))
+    if "digest" in edits:
+        doc["digest"] = edits["digest"]
+    if "lo" in edits:
+        recs = {w["n"]: w for w in doc["windows"]}
+        recs[edits["lo"]]["lo"] = recs[edits["lo"] + 1]["lo"]
+    return doc
+
+
+def second_route(doc: dict | None, proved: dict) -> Check | None:
+    """The engine's windows of family.json (when current: computed by this source) against the
+    proof's for n = 8..N0, exact comparisons; None (a line of evidence instead) when it is absent or
+    stale: the proof does not need it."""
+    if doc is None or not family_windows.is_current(doc):
+        return None
+    recs = {rec["n"]: rec for rec in doc.get("windows", [])}
+    differ = []
+    for n, (lo, hi) in sorted(proved.items()):
+        rec = recs.get(n)
+        if not (rec and rec.get("one_interval") and end_number(rec["lo"]) == lo and end_number(rec["hi"]) == hi):
+            differ.append(n)
+    return Check(f"the second route: the engine's exact analysis of each w_n (reports/{FAMILY}) gives the same "
+                 f"window for n = {PROVED_FROM}..{N0}", not differ,
+                 [f"differs at n = {', '.join(map(str, differ))}" if differ else "the same ends, exactly"])
+
+
+def _route_note(doc: dict | None) -> str:
+    """Why family.json was not compared (absent or stale)."""
+    if doc is None:
+        return f"reports/{FAMILY} (the engine's route for n ≤ {N0}) is absent: not compared"
+    if not family_windows.is_current(doc):
+        return (f"reports/{FAMILY} (the engine's route for n ≤ {N0}) was computed by another source (digest "
+                f"{str(doc.get('digest'))[:12]}…): not compared; `{FAMILY_COMMAND}` recomputes it (about 30 min)")
+    return f"reports/{FAMILY} compared"
+
+
+def _fq(x: Fraction) -> float:
+    return float(x)
+
+
+def _limit_evidence(limit: dict) -> list[str]:
+    """The constants and margins of family_limit's facts, and its check's verdict."""
+    facts, bad = limit["facts"], limit["failures"]
+    ev = [f"family_limit.check: {'every fact re-verified (200 bits)' if not bad else 'FAILS: ' + '; '.join(bad[:5])}",
+          f"s* = π²(7√3 − 12)/6 ∈ [{_fq(facts['s_star'][0]):.12f}, {_fq(facts['s_star'][1]):.12f}], "
+          f"κ ∈ [{_fq(facts['kappa'][0]):.9f}, {_fq(facts['kappa'][1]):.9f}]; |n²(r_n − r*) − s*| ≤ C/n², C = {facts['C']} "
+          f"({len(facts['boxes'])} ε-boxes over [0, 1/{facts['N0']}])"]
+    lower = facts.get("lower")
+    if lower:
+        boxes = lower["boxes"]
+        ev.append(f"the lower end: every zero of F_n in [r_(n+1), r_n] in a strip η ∈ "
+                  f"[{_fq(min(b['eta'][0] for b in boxes)):.4f}, {_fq(max(b['eta'][1] for b in boxes)):.4f}] of the "
+                  f"blow-up φ = nθ = π − η/n; n²(ℓ_n − r*) ∈ [{_fq(min(b['s_lo'][0] for b in boxes)):.7f}, "
+                  f"{_fq(max(b['s_lo'][1] for b in boxes)):.7f}]; margin to r_(n+1): η ≥ "
+                  f"{_fq(min(b['margin'] for b in boxes)):.3f} ({len(boxes)} ε-boxes over [0, 1/{lower['N0'] + 1}])")
+    return ev
+
+
+def large_n_windows(limit: dict, lim, order: str) -> Check:
+    """L5.3 for every n ≥ 8, from family_limit's facts (parts 3, 5): r_{n+1} < ℓ_n < r_n, and
+    n²(ℓ_n − r*), n²(r_n − r*) in proved boxes above 0 and bounded."""
+    facts, bad = limit["facts"], limit["failures"]
+    lower = facts.get("lower")
+    ends_ok = (not bad and facts["N0"] == PROVED_FROM - 1 and lower is not None and lower["N0"] == PROVED_FROM - 1
+               and all(b["margin"] > 0 and b["s_lo"][0] > 0 for b in lower["boxes"])
+               and all(b["s_hi"][0] > 0 for b in facts["boxes"]))
+    holds = ends_ok and lim == family_windows.r_star() and "disjoint" in order and "above" in order
+    return Check(f"for every n ≥ {PROVED_FROM}: the window W_n = ]ℓ_n, r_n[ — r_n where q_2(0) = 0 (nθ = π, the root "
+                 "of r² − (6 + 8cos(π/n))r + 1), ℓ_n where x₊ crosses 0 (a zero of F_n) — has r_(n+1) < ℓ_n < r_n, "
+                 f"and n²(ℓ_n − r*), n²(r_n − r*) lie in proved boxes above 0 and bounded: the windows are "
+                 f"{order.split(',')[0]} and decreasing, and accumulate on {lim.digits(10)} from above "
+                 "(family_limit parts 3, 5)", holds, _limit_evidence(limit))
+
+
+def stable_cover(limit: dict) -> tuple[Check | None, object]:
+    """What family_limit proves of the whole stable set for n ≥ 8 (parts 9-12, when its facts have
+    them): the check, and R (the stable set is known on ]0, R]; None: nowhere).  Part 11 (nothing
+    feasible on [r₀, 1[ for every n ≥ 3) extends R to 1 when r₀ ≤ part 10's R; parts 12 (the
+    reflection M = N² and one zero of F_n per strip) decide the points of the strip I_n."""
+    facts, bad = limit["facts"], limit["failures"]
+    if not all(k in facts for k in ("positions", "below", "arcs")):
+        return None, None
+    R = facts["arcs"]["r"][1]
+    third = facts.get("third_a")
+    if third and third["r"][0] <= R and third["r"][1] >= 1 and third["n_min"] <= PROVED_FROM:
+        R = third["r"][1]
+    exact = "one_zero" in facts and "reflection" in facts
+    inside = ("the stable set is exactly ]ℓ_n, r_n[, ℓ_n the one zero of F_n in its strip (family_limit parts 9-12)"
+              if exact else "which points of one interval I_n inside the strip are stable is not decided "
+              "(family_limit parts 9, 10)")
+    return Check(f"for every n ≥ {PROVED_FROM}: in ]0, {R}] the stable set of (ab)^n(cb)^n lies in ]r_(n+1), r_n[ "
+                 f"(nothing stable in ]0, r_(n+1)] nor in ]r_n, {R}]) and holds every r from the strip of the lower end "
+                 f"up to r_n; {inside}", not bad,
+                 [f"positions: {len(facts['positions']['boxes'])} ε-boxes; below: {len(facts['below']['far'])} + "
+                  f"{len(facts['below']['low'])} leaves; above r_n: up to {facts['arcs']['r'][1]} (part 10)"
+                  + (f", and nothing feasible on [{third['r'][0]}, 1[ for every n ≥ {third['n_min']} (part 11: "
+                     f"t ≤ {third['t_max']} there, so the second or third a's pair separates)" if third else "")
+                  + ("; part 12: M = N² (N = J M_ab^n), stable exactly where F_n < 0, dF_n/dη > 0 on every strip"
+                     if exact else ""),
+                  "family_limit.check: " + ("every fact re-verified" if not bad else "FAILS")]), R
+
+
+def engine_windows(ab_cb_patterns: dict, ab_cb_seven) -> dict:
+    """The engine's windows of n = 2..7 (None where the stable set is not one interval)."""
+    return {**{n: stable_window(ab_cb_patterns, n) for n in range(2, N_MAX + 1)},
+            PROVED_FROM - 1: stable_window({PROVED_FROM - 1: ab_cb_seven}, PROVED_FROM - 1)}
+
+
+def exact_windows(engine: dict, proved: dict, lim, limit: str, order: str) -> Check:
+    """L5.3 for n = 2..N0, exact: n ≤ 7 the engine's stable sets (each one open interval), n = 8..N0 the
+    proof's ]ℓ_n, r_n[ (exact ends); every window above the limit and hi_{n+1} < lo_n (exact comparisons
+    of algebraic numbers, r_8 < lo_7 joining the two routes)."""
+    ws = {**engine, **proved}
+    missing = [n for n in range(2, N0 + 1) if ws.get(n) is None]
+    meets = [n for n in range(2, N0) if n not in missing and n + 1 not in missing and not ws[n + 1][1] < ws[n][0]]
+    low = [n for n, w in ws.items() if w is not None and not lim < w[0]]
+    holds = not missing and not meets and not low and "disjoint" in order and "above" in order
+    rows = [f"n = {n}: ]{w[0].digits(10)}, {w[1].digits(10)}[" + (" (engine)" if n in engine else " (proof)")
+            for n, w in sorted(ws.items()) if w is not None]
+    return Check(f"for n = 2..{N0}, exact: each stable set is one open interval W_n = ]lo_n, hi_n[ (n ≤ "
+                 f"{PROVED_FROM - 1}: `certify pattern`; n ≥ {PROVED_FROM}: the proof's ]ℓ_n, r_n[, ℓ_n the one root of "
+                 f"F_n in ]r_(n+1), r_n[), above {limit}, and W_(n+1) lies below W_n with a gap (hi_(n+1) < lo_n): "
+                 f"{order.split(',')[0]}, decreasing", holds,
+                 [f"n = {n}: the stable set is not one interval" for n in missing]
+                 + [f"W_{n + 1} meets W_{n}: hi_{n + 1} ≥ lo_{n}" for n in meets]
+                 + [f"lo_{n} ≤ {limit}" for n in low] + rows)
+
+
+def figure(ws: dict, limit: dict) -> str:
+    """n²(W_n − r*) against 1/n: the exact windows as bars, the proved boxes of the ends for n > N0."""
+    rs = float(family_windows.r_star())
+    exact = [(n, n * n * (float(lo) - rs), n * n * (float(hi) - rs)) for n, (lo, hi) in sorted(ws.items())]
+    facts, band = limit["facts"], []
+    for b in (facts.get("lower") or {}).get("boxes", []):
+        e0, e1 = b["eps"]
+        if e0 >= Fraction(1, N0):
+            continue
+        his = [h["s_hi"] for h in facts["boxes"] if h["eps"][0] < e1 and e0 < h["eps"][1]]
+        if his:
+            band.append((_fq(e0), _fq(min(e1, Fraction(1, N0))), (_fq(b["s_lo"][0]), _fq(b["s_lo"][1])),
+                         (_fq(min(h[0] for h in his)), _fq(max(h[1] for h in his)))))
+    return plots.family_windows_figure(exact, band)
+
+
 PRINTED_L5 = dict(n2="[0.12754, 0.17157]", n3="[0.09452, 0.10102]", limit="7-4√3",
-                  order="disjoint, accumulating on 7-4√3 from above")
+                  order="disjoint, accumulating on 7-4√3 from above", family=FAMILY)
 
 
-@certificate("L5", needs=["ab_cb_patterns"], printed=PRINTED_L5,
+@certificate("L5", needs=["ab_cb_patterns", "ab_cb_seven", "ab_cb_limit"], printed=PRINTED_L5,
              expect=PASS,
              mutants=[replaced("n2", "0.12754", "0.12755", "a digit of the n = 2 window"),
                       replaced("n3", "0.10102", "0.10103", "a digit of the n = 3 window"),
                       replaced("order", "disjoint", "overlapping", "the windows' order"),
+                      replaced("order", "above", "below", "the side of the accumulation"),
                       replaced("limit", "7-4√3", "3-2√2", "the limit of the windows")])
-def windows(ab_cb_patterns, n2, n3, limit, order):
-    """The stable sets of (ab)^n(cb)^n (upper branch) for n = 2..N_MAX: each one open
-    interval, ends rounding to the printed digits for n = 2, 3; pairwise disjoint,
-    decreasing in n, all above 7-4√3."""
+def windows(ab_cb_patterns, ab_cb_seven, ab_cb_limit, n2, n3, limit, order, family):
+    """The stable sets of (ab)^n(cb)^n: n = 2, 3 rounding to the printed windows (`certify pattern`);
+    for every n ≥ 2 the whole stable set in ]0, 1[ one open interval W_n, the W_n disjoint, decreasing,
+    accumulating on 7-4√3 from above — n ≤ 7 by the engine's exact analysis, n ≥ 8 by family_limit's
+    theorem (its windows exact for n ≤ 30); family.json, the engine's route to n = 30, compared when current."""
     checks = []
     for n, text in ((2, n2), (3, n3)):
         lo_d, hi_d = (t.strip() for t in text.strip("[] ").split(","))
@@ -290,39 +479,74 @@ def windows(ab_cb_patterns, n2, n3, limit, order):
                                       [f"stable: {_sets(ab_cb_patterns[n], 'stable')}"]
                                       + ([f"lower end: {w[0].describe()}", f"upper end: {w[1].describe()}"] if w else [])),
                                 f"L5.{n - 1}", ab_cb(n)))
-    ws = {n: stable_window(ab_cb_patterns, n) for n in range(2, N_MAX + 1)}
     lim = radical(limit)
-    ok = all(w is not None for w in ws.values())
-    decreasing = ok and all(ws[n + 1][1] <= ws[n][0] for n in range(2, N_MAX))
-    strictly = ok and all(ws[n + 1][1] < ws[n][0] for n in range(2, N_MAX))
-    above = ok and all(w[0] > lim for w in ws.values())
-    rows = [f"n = {n}: ]{w[0].digits(10)}, {w[1].digits(10)}[" if w else f"n = {n}: not one interval"
-            for n, w in ws.items()]
-    checks.append(named("L5.3", Check(f"the windows of n = 2..{N_MAX} are {order.split(',')[0]} (each below the "
-                                      f"previous, with a gap) and decreasing in n", "disjoint" in order and strictly, rows)))
-    checks.append(named("L5.3", Check(f"every window n = 2..{N_MAX} lies above {limit} (= {lim.digits(10)}), the "
-                                      f"distances decreasing", "above" in order and above and decreasing, rows)))
-    return conclude(checks, note=f"The accumulation itself is a statement about all n: certified are the windows "
-                                 f"n = 2..{N_MAX}, decreasing towards {limit} from above; the limit is the "
-                                 "paper's (and CDKK's) belief, not proven here.")
+    engine, proved = engine_windows(ab_cb_patterns, ab_cb_seven), ab_cb_limit["windows"]
+    cover, R = stable_cover(ab_cb_limit)
+    doc = family_document(family)
+    parts = [exact_windows(engine, proved, lim, limit, order), large_n_windows(ab_cb_limit, lim, order)]
+    parts += [c for c in (cover, second_route(doc, proved)) if c is not None]
+    holds = all(c.holds for c in parts)
+    whole = holds and R is not None and R >= 1
+    gap = ("the stable set outside the windows (family_limit's facts have no parts 9, 10)" if R is None
+           else f"the stable set in ]{R}, 1[ (family_limit proves nothing there)")
+    if not whole:
+        parts[1].evidence.append(f"NOT proved: for n ≥ {PROVED_FROM}, {gap}; the windows W_n are disjoint, the whole "
+                                 "stable sets are not certified to be")
+    checks += parts
+    checks.append(named("L5.3", Check(
+        f"for every n ≥ 2 the windows of (ab)^n(cb)^n are {order}: the {len(parts)} checks above"
+        + (" (the whole stable sets: the paper's open problem, proved)" if whole else ""), holds,
+        ["every part holds" if holds else "a part fails: " + "; ".join(c.statement[:80] for c in parts if not c.holds)]
+        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, {gap}"]))))
+    note = ("The paper's open problem (l. 1215: the intervals of stability \"seem to be disjoint and accumulate from "
+            "above … but this has also not been proven yet\"): " + (
+                f"proved for every n ≥ 2: the stable set of (ab)^n(cb)^n in ]0, 1[ is one open interval W_n (n ≤ "
+                f"{PROVED_FROM - 1}: `certify pattern`, exact; n ≥ {PROVED_FROM}: exactly ]ℓ_n, r_n[, r_n the root in "
+                "]0, 1[ of r² − (6 + 8cos(π/n))r + 1, ℓ_n the one zero of F_n in ]r_(n+1), r_n[, by family_limit's "
+                f"theorem, its ends exact for n ≤ {N0}), the W_n disjoint, decreasing and accumulating on 7−4√3 "
+                "from above. " if whole else
+                f"proved for the windows W_n of every n ≥ 2 and for the whole stable sets of n ≤ {PROVED_FROM - 1}. "
+                f"NOT certified: for n ≥ {PROVED_FROM}, {gap}. ")
+            + f"{_route_note(doc)}. The figure: n²(W_n − (7−4√3)) against 1/n, the exact windows of n ≤ {N0} as "
+              f"bars, the proved boxes of the ends for n > {N0}; both ends tend to s* = π²(7√3−12)/6 ≈ 0.20456.")
+    return conclude(checks, note=note, figures=[figure({**engine, **proved}, ab_cb_limit)],
+                    evidence=[f"`certify pattern` for n ≤ {PROVED_FROM - 1}; certify/patterns/family_limit.py "
+                              f"(prove({PROVED_FROM - 1}), check) for n ≥ {PROVED_FROM}; {_route_note(doc)}"])
 
 
 PRINTED_L6 = dict(criterion="q_2(0) = 0", branch="dominant")
 
 
-@certificate("L6", needs=["ab_cb_patterns"], printed=PRINTED_L6,
+def large_n_q2(limit: dict) -> list[Check]:
+    """L6 for every n ≥ 8 from family_limit (parts 2, 7; part 9 for the window's upper end)."""
+    facts, bad = limit["facts"], limit["failures"]
+    dom = facts.get("dominant")
+    out = [Check(f"for every n ≥ {PROVED_FROM}: on ]0, {dom['r'][1] if dom else '?'}] the eigenvalue λ ≈ 1/9 is real, "
+                 "simple and strictly dominant (part 7), and q_2(0) has the sign of sin(nθ) there (part 2): it vanishes "
+                 "at r_n (nθ = π), is > 0 on ]r*, r_n[ and < 0 just above r_n", not bad and dom is not None,
+                 _limit_evidence(limit)[:1] + ([f"λ ∈ [{_fq(dom['lambda'][0]):.9f}, {_fq(dom['lambda'][1]):.9f}], "
+                                                f"|μ|, |ν| ≤ {_fq(dom['others']):.3g}"] if dom else ["no part 7"]))]
+    if "positions" in facts:
+        out.append(Check(f"for every n ≥ {PROVED_FROM} the stable set reaches r_n from below (every r between the "
+                         "lower end's strip and r_n stable, part 9): the window's upper end hi_n is r_n", not bad,
+                         [f"positions: {len(facts['positions']['boxes'])} ε-boxes"]))
+    return out
+
+
+@certificate("L6", needs=["ab_cb_patterns", "ab_cb_seven", "ab_cb_limit"], printed=PRINTED_L6,
              expect=PASS,
-             mutants=[replaced("criterion", "q_2(0)", "q_3(0)", "another component of the eigenvector")])
-def q2_vanishes_at_threshold(ab_cb_patterns, criterion, branch):
-    """For each n = 2..N_MAX: at the upper end r_n of the stability window, the numerator
-    of u = q_2(0) vanishes on the dominant (upper) branch (exact test in Q(r_n)[λ]) and
-    its denominator does not."""
+             mutants=[replaced("criterion", "q_2(0)", "q_3(0)", "another component of the eigenvector"),
+                      replaced("branch", "dominant", "lower", "another eigenvalue branch")])
+def q2_vanishes_at_threshold(ab_cb_patterns, ab_cb_seven, ab_cb_limit, criterion, branch):
+    """For each n = 2..7 (`certify pattern`): at the upper end r_n of the stability window, the
+    numerator of u = q_2(0) vanishes on the dominant (upper) branch (exact test in Q(r_n)[λ]) and
+    its denominator does not; for every n ≥ 8 family_limit's proof (parts 2, 7, 9)."""
     if criterion.replace(" ", "") != "q_2(0)=0" or branch not in ("dominant", "upper"):
         return conclude([Check(f"the criterion read: {criterion} on the {branch} branch", False,
                                ["only `q_2(0) = 0` on the dominant branch is implemented"])])
     rows, results = [], {}
-    for n in range(2, N_MAX + 1):
-        w = stable_window(ab_cb_patterns, n)
+    engine = engine_windows(ab_cb_patterns, ab_cb_seven)
+    for n, w in engine.items():
         cand = candidate(expand_pattern(ab_cb(n)))
         u = to_field(cand.q0[1].as_expr())
         if w is None:
@@ -334,9 +558,24 @@ def q2_vanishes_at_threshold(ab_cb_patterns, criterion, branch):
         results[n] = zero and not pole
         rows.append(f"n = {n}: r_n = {w[1].digits(10)}; numerator of q_2(0) = 0 there: {'yes' if zero else 'no'}; "
                     f"denominator = 0: {'yes' if pole else 'no'}")
-    holds_for = [n for n, ok in results.items() if ok]
-    return conclude([named(f"L6.{n - 1}", Check(f"{ab_cb(n)}: q_2(0) = 0 on the dominant branch at the upper threshold",
-                                                 ok, [row for row in rows if row.startswith(f"n = {n}:")]))
-                     for n, ok in results.items()],
-                    note=f"Tested, not assumed: it holds for n = {', '.join(map(str, holds_for)) or 'none'}; "
-                         "for larger n it is not tested here (see `certify pattern`).")
+    checks = [named(f"L6.{n - 1}", Check(f"{ab_cb(n)}: q_2(0) = 0 on the dominant branch at the upper threshold",
+                                          ok, [row for row in rows if row.startswith(f"n = {n}:")]))
+              for n, ok in results.items() if n <= N_MAX]
+    small = [n for n in results if n > N_MAX]
+    parts = [Check(f"{ab_cb(n)}: q_2(0) = 0 on the dominant branch at the upper threshold", results[n],
+                   [row for row in rows if row.startswith(f"n = {n}:")]) for n in small]
+    parts += large_n_q2(ab_cb_limit)
+    whole = all(c.holds for c in parts) and "positions" in ab_cb_limit["facts"]
+    checks += parts
+    checks.append(named("L6.6", Check(
+        f"for every n ≥ 2, {criterion} on the {branch} branch at the upper end of the window: the checks above",
+        all(c.holds for c in checks),
+        ["every part holds" if all(c.holds for c in checks) else "a part fails"]
+        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, that r_n is the upper end of the stable set"]))))
+    note = ("CDKK's conjecture (l. 1215), tested, not assumed: " + (
+        "proved for every n ≥ 2 — the upper end of the window of (ab)^n(cb)^n is where q_2(0) = 0 on the dominant "
+        "branch, r_n, the root of r² − (6 + 8cos(π/n))r + 1 (n ≤ 7: exact zero tests; n ≥ 8: family_limit's theorem)."
+        if whole else
+        f"proved for n ≤ {PROVED_FROM - 1} (exact) and, for n ≥ {PROVED_FROM}, that q_2(0) vanishes exactly at r_n on "
+        "the dominant branch and changes sign there; that r_n is the upper end of the stable set is NOT certified."))
+    return conclude(checks, note=note)

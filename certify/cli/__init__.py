@@ -11,7 +11,7 @@
                                 exact simulator and reduction map (bench_reduction.py),
                                 the numerical engines (bench_numerics.py), or
                                 pattern and census (bench_patterns.py, bench_census.py),
-                                or pattern on (ab)^n(cb)^n, n = 12, 20, 40 (--family)
+                                or pattern on (ab)^n(cb)^n, n = 8, 12, 31, 40, 60 (--family)
     census --max-length L [--json] [--out DIR] [--jobs N | --scheduler ADDRESS]
            [--state FILE] [--resume] [--force]
                                 every periodic pattern of blocks up to length L,

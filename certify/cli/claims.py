@@ -222,7 +222,7 @@ def cmd_bench(args) -> int:
                                                 + ["--long"] * args.long)
     if args.reduction:
         return load_bench("bench_reduction").main(["--repeat", str(args.repeat)] + ["--long"] * args.long)
-    if args.family:        # the whole command `pattern (ab)^n(cb)^n` for n = 12, 20, 40
+    if args.family:        # the whole command `pattern (ab)^n(cb)^n` for n = 8, 12, 31, 40, 60
         return load_bench("bench_patterns").main(["--family"])
     if args.patterns:      # pattern (ab)^n(cb)^n for n = 2..12, then the census for L = 8..16
         jobs = ["--jobs", str(args.jobs)] if args.jobs else []
@@ -290,7 +290,7 @@ def register(commands) -> None:
                    help="time `pattern (ab)^n(cb)^n` for n = 2..12 and the census for L = 8..16 instead "
                         "(benchmarks/bench_patterns.py, bench_census.py; about an hour)")
     p.add_argument("--family", action="store_true",
-                   help="time the whole `certify pattern (ab)^n(cb)^n` for n = 12, 20, 40 instead "
+                   help="time the whole `certify pattern (ab)^n(cb)^n` for n = 8, 12, 31, 40, 60 instead "
                         "(benchmarks/bench_patterns.py --family; each stopped after 600 s)")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",
                    help="time only the run on N processes (default: both --jobs 1 and all cores)")

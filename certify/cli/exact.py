@@ -85,9 +85,15 @@ def cmd_pattern(args) -> int:
     """The exact analysis of one periodic word: Markdown on stdout, or JSON with --json
     (schema certify/patterns/pattern.schema.json).  A bad word is a UsageError (exit 2),
     raised before any work; nothing is written to a file."""
-    from certify.patterns import analyse, check_range, read
+    from certify.patterns import analyse, check_range, family_windows, read
+    from certify.patterns.family import family_n
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
-    read(args.word)                       # validate first: one line, exit 2
+    normal, system, _why = read(args.word)                       # validate first: one line, exit 2
+    n = family_n(normal) if system == "four" else None
+    if n is not None and n > family_windows.EXACT_N0 and not args.r_range:
+        rec = family_windows.theorem_record(n)   # (ab)^n(cb)^n beyond n = 30: the proof's window
+        print(json.dumps(rec, ensure_ascii=False, indent=2) if args.json else family_windows.theorem_markdown(rec))
+        return 0 if rec["proof_holds"] else 1
     bar = None
     if sys.stderr.isatty():               # a progress bar on a terminal: certify.run (numpy, tqdm) loaded only then
         from certify.run.progress import Bar
@@ -105,7 +111,9 @@ def cmd_family(args) -> int:
     if args.n_max < 2:
         raise UsageError(f"--n-max: the family starts at n = 2, not {args.n_max}")
     out = files.ensure_writable(args.out)
-    doc, seconds = windows(args.n_max, progress=progress.Bar("n"))
+    from certify.run.executors import executor
+    with executor(args.jobs) as pool:
+        doc, seconds = windows(args.n_max, progress=progress.Bar("n"), pool=None if args.jobs == 1 else pool)
     files.write_atomic(out / "family.json", json.dumps(doc, ensure_ascii=False, indent=2, sort_keys=True) + "\n")
     for rec, sec in zip(doc["windows"], seconds):
         where = f"]{rec['lo']['digits']}, {rec['hi']['digits']}[" if rec.get("one_interval") \
@@ -229,6 +237,7 @@ def register(commands) -> None:
                     "and hi_{n+1} < lo_n.  Writes DIR/family.json (docs/family.md).")
     p.add_argument("--n-max", type=positive_int, required=True, metavar="N", help="the largest n (at least 2)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
+    add_jobs(p)
 
     p = add_command(commands, "orbit", cmd_orbit,
                     help="certify the periodic orbits of the reduction (Section 4) with one word",

@@ -12,7 +12,8 @@ It imports the models and the exact algebra below it.
 """
 from certify.algebra.branches import BRANCH_NAMES
 
-from . import island_theorem
+from . import family_limit, family_windows, island_theorem  # family_*: L5, L6 (the windows, the proof beyond N0)
+from .census import end_number  # an end point of a committed r-set, as an algebraic number
 from .feasibility import NO_X, Analysis, Requirement, fmt, mod_cp, prefix_requirements, vanishes_on_branch
 from .pattern import (
                           SCHEMA_PATH,
@@ -32,4 +33,4 @@ __all__ = ["BRANCH_NAMES", "island_theorem", "NO_X", "Analysis", "Requirement", 
            "compact", "normal_form", "parse", "primitive_root", "read", "show_word", "system_of", "validate",
            "SCHEMA_PATH", "PatternResult", "analyse", "check_range", "dominance_requirements", "end_data",
            "known_factors",
-           "stability_conditions"]
+           "stability_conditions", "family_limit", "family_windows", "end_number"]

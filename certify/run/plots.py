@@ -245,3 +245,44 @@ def section5_figure(data, dpi: int | None = None) -> str:
     lines = red_lines() if saving.enabled() else None       # mpmath roots, for drawing only
     return omega_figure(data, section5_name(spec.id, data.resolution), lines=lines, boxes=spec.boxes,
                         title=title, dpi=dpi)
+
+
+# --------------------------------------------------------------------------
+# L5: the windows of (ab)^n(cb)^n, rescaled (certify.patterns.family_windows, family_limit)
+
+def family_windows_figure(exact: list, band: list, name: str = "L5-family-windows") -> str:
+    """n²(W_n − (7 − 4√3)) against 1/n: ``exact`` the windows of n ≤ N₀ as (n, s_lo, s_hi)
+    (bars), ``band`` the proved enclosures for every n > N₀ as (ε₀, ε₁, [s_lo interval],
+    [s_hi interval]) over ε = 1/n ∈ [ε₀, ε₁] (shaded: the window's lower end lies in the lower
+    box, its upper end in the upper box); left all n, right n ≥ 10.  Floats: a drawing of
+    certified numbers."""
+    def panel(ax, first: bool):
+        for k, (e0, e1, lo, hi) in enumerate(band):
+            label = first and k == 0
+            ax.fill_between([e0, e1], [lo[0]] * 2, [lo[1]] * 2, color="tab:orange", lw=0,
+                            label="n > N₀: the lower end (proved box)" if label else None)
+            ax.fill_between([e0, e1], [hi[0]] * 2, [hi[1]] * 2, color="tab:green", lw=0,
+                            label="n > N₀: the upper end (proved box)" if label else None)
+            ax.fill_between([e0, e1], [lo[1]] * 2, [hi[0]] * 2, color="tab:blue", alpha=0.15, lw=0,
+                            label="n > N₀: inside the window" if label else None)
+        for k, (n, lo, hi) in enumerate(exact):
+            ax.plot([1 / n, 1 / n], [lo, hi], color="tab:blue", lw=2,
+                    label="n ≤ N₀: the exact window" if first and k == 0 else None)
+        ax.set_xlabel("1/n")
+
+    def draw():
+        plt = saving.pyplot()
+        fig, (ax, zoom) = plt.subplots(1, 2, figsize=(10, 4))
+        panel(ax, True)
+        panel(zoom, False)
+        near = [v for n, lo, hi in exact if n >= 10 for v in (lo, hi)] + [v for b in band for v in b[2] + b[3]]
+        if near:
+            zoom.set_xlim(0, 0.1 + 0.005)
+            zoom.set_ylim(min(near) - 0.001, max(near) + 0.001)
+        ax.set_ylabel("n² (r − (7 − 4√3))")
+        zoom.set_title("n ≥ 10", fontsize=8)
+        fig.suptitle("The stability windows of (ab)^n(cb)^n, rescaled", fontsize=9)
+        ax.legend(loc="best", fontsize=7)
+        return saving.save_figure(fig, name)
+    key = saving.input_digest(tuple(exact), tuple(tuple(map(tuple, b[2:])) + b[:2] for b in band))
+    return saving.cached(name, key, draw)

@@ -59,3 +59,54 @@ def test_command_writes_family_json(tmp_path):
     bad = subprocess.run([sys.executable, "-m", "certify", "family", "--n-max", "1", "--out", str(tmp_path)],
                          cwd=ROOT, capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "Traceback" not in bad.stderr
+
+
+def test_worker_processes_give_the_same_document(doc):
+    """`certify family --jobs 2`: the n analysed in worker processes (records as plain data, the ends
+    read back from them) give the document of the serial run, byte for byte."""
+    from certify.run.executors import process_pool
+    with process_pool(2) as pool:
+        parallel = FW.windows(4, pool=pool)[0]
+    assert json.dumps(parallel, sort_keys=True) == json.dumps(doc, sort_keys=True)
+
+
+def test_pattern_beyond_30_gives_the_theorem_s_window():
+    """`certify pattern '(ab)^31(cb)^31' --json`: the theorem's route, valid against its schema, the
+    window ]ℓ_31, r_31[ exact (its ends read back equal proved_window's), no undecided point."""
+    from certify.cli.schemas import validate
+    from certify.patterns import end_number
+    out = subprocess.run([sys.executable, "-m", "certify", "pattern", "(ab)^31(cb)^31", "--json"],
+                         cwd=ROOT, capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert validate("family-window", out.stdout) == []
+    rec = json.loads(out.stdout)
+    assert rec["route"] == "theorem" and rec["proof_holds"] and rec["undecided"] == []
+    piece = rec["stable"][0]["pieces"][0]
+    assert (end_number(piece["lo"]), end_number(piece["hi"])) == FW.proved_window(31)
+    md = FW.theorem_markdown(rec)
+    assert "no undecided point" in md and "Not computed on this route" in md
+
+
+def test_pattern_dispatch(monkeypatch, capsys):
+    """The theorem's route only for the family beyond EXACT_N0 over the whole of ]0, 1[; the engine's
+    otherwise (a word of the family at n ≤ 30, another word, or --r-range); a failing proof: exit 1."""
+    import certify.patterns as P
+    from certify.cli import main
+    calls = []
+    monkeypatch.setattr(P, "analyse", lambda word, lo=0, hi=1, progress=None: calls.append(word) or _Stub())
+    monkeypatch.setattr(FW, "EXACT_N0", 8)
+    assert main(["pattern", "(ab)^8(cb)^8"]) == 0 and calls == ["(ab)^8(cb)^8"]
+    assert main(["pattern", "(ab)^9(cb)^9", "--r-range", "0.07", "0.08"]) == 0 and len(calls) == 2
+    assert main(["pattern", "(ab)^9(cb)^9"]) == 0 and len(calls) == 2
+    assert "]≈0.07" in capsys.readouterr().out
+    monkeypatch.setattr(FW, "theorem", lambda n0=7: {"facts": {}, "failures": ["a margin"]})
+    assert main(["pattern", "(ab)^9(cb)^9"]) == 1
+    assert "NOT decided" in capsys.readouterr().out
+
+
+class _Stub:
+    def markdown(self):
+        return "engine"
+
+    def json_text(self):
+        return "{}"
