@@ -147,9 +147,11 @@ def _one(k: int) -> dict:
 def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None, tick=None) -> list[dict]:
     """The results of :func:`verify_certificate` for the certificates of the statement files (those
     named by ``ids``), in their order; on ``jobs`` processes (fork), the heaviest first; ``tick(k,
-    n, id)`` after each (a progress bar)."""
+    n, id)`` after each and ``tick(0, n, "")`` before the first (a progress bar, drawn at once)."""
     prepare(paper)
     certs = [c for c in paper.certificates if ids is None or c.id in ids]
+    if tick:
+        tick(0, len(certs), "")
     engine = {c["id"]: c for c in data["certificates"]}
     _WORK.update(certs=certs, engine=engine, lets=paper.lets)
     order = sorted(range(len(certs)), key=lambda k: -len(json.dumps(engine.get(certs[k].id, ""))))

@@ -35,11 +35,26 @@ def jobs(text: str) -> int:
     return int(text)
 
 
+def _is_terminal(stream) -> bool:
+    try:
+        return stream.isatty()
+    except (AttributeError, ValueError):      # no isatty, or a closed stream
+        return False
+
+
+def progress(k: int, n: int, label: str = "") -> None:
+    """k of n certificates decided, on one line of stderr rewritten in place (erased at the end);
+    :func:`main` passes it only when stderr is a terminal, so a file or a pipe gets nothing."""
+    text = f"\r{k}/{n} certificates decided" + (f" (last: {label})" if label else "") if k < n else "\r"
+    sys.stderr.write(text + "\x1b[K")
+    sys.stderr.flush()
+
+
 def main(argv=None) -> int:
     """Parse the options, verify, print; the exit code."""
     parser = Parser(prog="python3 -m certify_kernel",
-                                     description="Decides the paper's statements (statements/*.txt) with the "
-                                                 "kernel's own definitions and the witnesses of a certificates file.")
+                    description="Decides the paper's statements (statements/*.txt) with the "
+                                "kernel's own definitions and the witnesses of a certificates file.")
     parser.add_argument("path", nargs="?", default=DEFAULT, help=f"the certificates file (default: {DEFAULT})")
     parser.add_argument("--statements", default=str(STATEMENTS), metavar="DIR",
                         help="the statement files (default: statements/ of the checkout)")
@@ -66,7 +81,7 @@ def main(argv=None) -> int:
             return 2
     stray = sorted({c["id"] for c in data["certificates"]} - {c.id for c in paper.certificates})
     start = time.perf_counter()
-    results = verify_all(data, paper, args.jobs, ids)
+    results = verify_all(data, paper, args.jobs, ids, tick=progress if _is_terminal(sys.stderr) else None)
     for r in results:
         print(line(r))
         if args.verbose:

@@ -20,7 +20,7 @@ from certify import caches
 from certify.errors import UNDECIDED, Undecided
 
 from .balls import GUARD, decide, precision
-from .poly import Q, parse, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
+from .poly import Q, from_flint, parse, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
 from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_count
 
 _ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
@@ -289,19 +289,55 @@ class Algebraic:
     def _describe(self) -> str:
         if self.is_rational:
             return f"{self.lo}"
+        lo, hi = self.decimal_ends()
+        return f"the root of {show(self.p)} in ]{lo}, {hi}[ ≈ {self.digits(12)}"
+
+    def decimal_ends(self) -> tuple[str, str]:
+        """The ends of a short isolating interval of the minimal polynomial, as decimal texts
+        (]L/10^k, (L+1)/10^k[, k = 12, 16, …: a function of the number alone; the rational ends
+        of the current interval when no such k up to 36 isolates).  Memoised."""
+        ends = getattr(self, "_decimal_ends", None)
+        if ends is not None:
+            return ends
         self.minimal_polynomial()
-        ends = None
-        for k in range(12, 40, 4):            # a short isolating interval with decimal ends
+        for k in range(12, 40, 4):
             s = 10 ** k
-            L = self.floor_scaled(s)          # ]L/s, (L+1)/s[: a function of the number alone
+            L = self.floor_scaled(s)
             lo, hi = Q(L, s), Q(L + 1, s)
             if self.p(lo) != 0 and self.p(hi) != 0 and count_roots(self.p, lo, hi) == 1:
-                ends = f"{_dec(L, k)}, {_dec(L + 1, k)}"
+                ends = (_dec(L, k), _dec(L + 1, k))
                 break
         if ends is None:
             self.refine(Q(1, 10 ** 12))
-            ends = f"{self.lo}, {self.hi}"
-        return f"the root of {show(self.p)} in ]{ends}[ ≈ {self.digits(12)}"
+            ends = (str(self.lo), str(self.hi))
+        self._decimal_ends = ends
+        return ends
+
+    def latex(self) -> str:
+        """The number in LaTeX, exactly: a rational as a fraction; else the root of its minimal
+        polynomial in an isolating interval with decimal ends, ≈ 12 digits (:meth:`describe`).
+
+        >>> print(Algebraic.surd(3, -2, 2).latex())  # doctest: +NORMALIZE_WHITESPACE
+        \\text{the root of } r^{2} - 6 r + 1 \\text{ in }
+        \\left]0.171572875253, 0.171572875254\\right[ \\approx 0.171572875254
+        >>> print(Algebraic.rational(Q(-3, 7)).latex())
+        - \\frac{3}{7}
+
+        The digits are correctly rounded (:meth:`digits`); the interval holds exactly one root
+        of the polynomial, the number."""
+        if self.is_rational:
+            return sp.latex(sp.Rational(int(self.lo.p), int(self.lo.q)))
+        lo, hi = self.decimal_ends()
+        return (f"\\text{{the root of }} {sp.latex(from_flint(self.p), order='lex')}"
+                f" \\text{{ in }} \\left]{lo}, {hi}\\right[ \\approx {self.digits(12)}")
+
+    def _repr_latex_(self) -> str:
+        """A notebook shows the number as :meth:`latex` (IPython's rich display)."""
+        return f"${self.latex()}$"
+
+    def _repr_markdown_(self) -> str:
+        """A notebook's Markdown: :meth:`latex` between dollars."""
+        return f"${self.latex()}$"
 
     def floor_scaled(self, s: int) -> int:
         """⌊s·α⌋, exact: the isolating interval narrowed below 1/s, then one exact comparison.

@@ -33,7 +33,7 @@ from certify import caches
 from certify.errors import UNDECIDED, Undecided
 
 from . import numberfield as nf
-from .algebraic import Algebraic, sign_at, to_fmpq
+from .algebraic import Algebraic, sign_at
 from .balls import GUARD, decide, precision
 from .poly import (
     MCTX,
@@ -55,6 +55,7 @@ from .poly import (
     ring_to_lrq,
     ring_to_mpoly,
     to_field,
+    to_fmpq,
     to_ring,
     x,
 )

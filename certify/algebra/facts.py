@@ -11,6 +11,8 @@ import sympy as sp
 
 from certify import caches
 
+from .poly import fraction_tree
+
 
 def rational(q) -> str:
     """A rational (fmpq, Fraction, SymPy Rational, int) as "p/q"."""
@@ -135,7 +137,6 @@ def polynomial_terms(x, gens: list) -> list:
 
 def _mpoly(x, gens: list):
     """x as an fmpq_mpoly in ``gens`` (:func:`polynomial_terms`; _NotPolynomial otherwise)."""
-    from .poly import fraction_tree
     ctx = flint.fmpq_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(gens))), "lex")
     zeros = (0,) * len(gens)
     found = fraction_tree(sp.sympify(x), dict(zip(gens, ctx.gens())).get,

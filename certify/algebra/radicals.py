@@ -17,6 +17,7 @@ from certify.errors import StatementError
 from .algebraic import Algebraic
 from .balls import precision
 from .poly import Q, to_fmpz_poly
+from .statements import Names
 
 
 def _ball(e: sp.Expr) -> flint.arb:
@@ -45,7 +46,6 @@ def _ball(e: sp.Expr) -> flint.arb:
 
 def radical(text: str) -> Algebraic:
     """The printed constant ``text`` (e.g. "4+√5-2√(5+2√5)") as an exact algebraic number."""
-    from .statements import Names
     e = Names.of({}).expr(text)
     if e.free_symbols:
         raise StatementError(f"{text!r} is not a constant")

@@ -27,7 +27,7 @@ import flint
 from certify import caches
 
 from .balls import ordered, precision
-from .poly import Q, poly_key, to_fmpq
+from .poly import Q, poly_key, primitive, squarefree_part, to_fmpq
 
 _SEQUENCES: dict = {}            # the coefficients of p -> its Sturm sequence (memoised)
 caches.register(_SEQUENCES.clear)
@@ -353,7 +353,6 @@ def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
     roots it proves real (imaginary part exactly zero) inside ]a, b[ (the ball
     must lie strictly inside, else ValueError: undecided), increasing: ordered by
     the exact rational ends of the balls (ValueError when two balls overlap)."""
-    from .poly import primitive, squarefree_part
     P = squarefree_part(primitive(flint.fmpq_poly(p)))
     out = []
     roots: list[tuple[flint.acb, int]] = _complex_roots(P)  # type: ignore[assignment]  # stub says list[acb]; it returns (acb, multiplicity) pairs

@@ -5,6 +5,7 @@ exactly).
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 
 from certify.errors import UsageError
@@ -92,7 +93,11 @@ def cmd_pattern(args) -> int:
         rec = family_windows.theorem_record(n)   # (ab)^n(cb)^n beyond n = 30: the proof's window
         print(json.dumps(rec, ensure_ascii=False, indent=2) if args.json else family_windows.theorem_markdown(rec))
         return 0 if rec["proof_holds"] else 1
-    result = analyse(args.word, lo, hi)
+    bar = None
+    if sys.stderr.isatty():               # a progress bar on a terminal: certify.run (numpy, tqdm) loaded only then
+        from certify.run.progress import Bar
+        bar = Bar("step")
+    result = analyse(args.word, lo, hi, progress=bar)
     print(result.json_text() if args.json else result.markdown())
     return 0
 

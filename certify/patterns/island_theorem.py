@@ -121,6 +121,15 @@ class Theorem:
         """Proved: every step holds, A is elliptic and θ/2π is irrational (step f)."""
         return self.holds and self.elliptic and any(s.name.startswith("(f)") for s in self.steps)
 
+    def _repr_markdown_(self) -> str:
+        """A notebook shows the theorem at r: its conclusion, then each step with ✓ or ✗."""
+        head = (f"**The island at r = {self.r}**: "
+                + ("every step proved; A elliptic, c_max = " + str(self.c_max)
+                   + ("; every orbit in U_r is dense on its ellipse" if self.quasi_periodic else "")
+                   if self.holds and self.elliptic else
+                   "A is not elliptic: no island" if self.holds else "a step does not hold"))
+        return "\n".join([head, ""] + [f"- {'✓' if s.holds else '✗'} {s.name}" for s in self.steps])
+
 
 # --- signs of polynomials in r, at a rational r or on ]3−2√2, 1[ ----------------
 

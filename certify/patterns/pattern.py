@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from math import gcd
 from pathlib import Path
+from typing import NamedTuple
 
 import flint
 import sympy as sp
@@ -174,6 +175,47 @@ def _copy(regions) -> list[Region]:
     return [Region(R.branch, R.fixed_point, list(R.pieces), list(R.undecided), list(R.dropped)) for R in regions]
 
 
+STAGES = ("exists", "feasible", "stable")     # the stages of an analysis, each set inside the one before
+
+
+def check_stage(stage: str) -> None:
+    """ValueError naming the stages when ``stage`` is none of them."""
+    if stage not in STAGES:
+        raise ValueError(f"stage must be one of {', '.join(map(repr, STAGES))}, not {stage!r}")
+
+
+class Window(NamedTuple):
+    """A maximal open interval ]lo, hi[ of r in one stage's set (exists, feasible or stable), on
+    one eigenvalue branch (0, 1, 2: :data:`BRANCH_NAMES`) with the fixed point x₊ or x₋: certified,
+    with exact algebraic ends.  A tuple (branch, fixed point, lo, hi); a notebook shows it in LaTeX."""
+
+    branch: int
+    fixed_point: str
+    lo: Algebraic
+    hi: Algebraic
+
+    @property
+    def branch_name(self) -> str:
+        return BRANCH_NAMES[self.branch] if self.branch < len(BRANCH_NAMES) else f"λ{self.branch}"
+
+    def latex(self) -> str:
+        """r ∈ ]r₁, r₂[ with its branch and fixed point, then the ends as :meth:`Algebraic.latex`,
+        one a line (a LaTeX ``aligned`` block)."""
+        point = self.fixed_point.replace("x₊", "x_+").replace("x₋", "x_-")
+        return (f"\\begin{{aligned}} & r \\in \\left]r_1, r_2\\right[ \\quad "
+                f"\\text{{({self.branch_name} branch, }} {point}\\text{{)}} \\\\ "
+                f"& r_1 = {self.lo.latex()} \\\\ & r_2 = {self.hi.latex()} \\end{{aligned}}")
+
+    def _repr_latex_(self) -> str:
+        """A notebook shows the window as :meth:`latex`."""
+        return f"$${self.latex()}$$"
+
+    def _repr_markdown_(self) -> str:
+        """A notebook's Markdown: the window, then its ends one an item."""
+        return (f"$r \\in \\left]r_1, r_2\\right[$ ({self.branch_name} branch, {self.fixed_point}):\n\n"
+                f"- $r_1 = {self.lo.latex()}$\n- $r_2 = {self.hi.latex()}$")
+
+
 @dataclass
 class PatternResult:
     """The analysis of one word; ``to_json()`` follows pattern.schema.json."""
@@ -221,15 +263,29 @@ class PatternResult:
         """The formulas of u, v, x."""
         return self._printed[2]
 
-    def intervals(self, stage: str, branch: int | None = None) -> list:
-        """(branch, fixed point, lo, hi) for each maximal open interval of the stage's set."""
-        return [(R.branch, R.fixed_point, lo, hi) for R in self.regions[stage]
-                if branch is None or R.branch == branch for lo, hi in R.merged()[0]]
+    def intervals(self, stage: str, branch: int | None = None) -> list[Window]:
+        """A :class:`Window` (branch, fixed point, lo, hi) for each maximal open interval of the
+        stage's set, on every branch or on ``branch`` (ValueError for another stage or branch)."""
+        return [Window(R.branch, R.fixed_point, lo, hi) for R in self._regions(stage, branch)
+                for lo, hi in R.merged()[0]]
 
-    def points(self, stage: str, branch: int | None = None) -> list:
-        """(branch, fixed point, r) for each isolated point of the stage's set."""
-        return [(R.branch, R.fixed_point, q.lo) for R in self.regions[stage]
-                if branch is None or R.branch == branch for q in R.merged()[1]]
+    def points(self, stage: str, branch: int | None = None) -> list[tuple[int, str, Algebraic]]:
+        """(branch, fixed point, r) for each isolated point of the stage's set (as :meth:`intervals`)."""
+        return [(R.branch, R.fixed_point, q.lo) for R in self._regions(stage, branch) for q in R.merged()[1]]
+
+    def _regions(self, stage: str, branch: int | None) -> list[Region]:
+        """The regions of ``stage`` on ``branch`` (every branch when None); ValueError naming the
+        allowed values for anything else (a branch given by name, a stage misspelt)."""
+        check_stage(stage)
+        known = sorted(set(range(len(BRANCH_NAMES))) | {R.branch for Rs in self.regions.values() for R in Rs})
+        if branch is not None and (isinstance(branch, bool) or not isinstance(branch, int) or branch not in known):
+            named = ", ".join(f"{k} ({BRANCH_NAMES[k] if k < len(BRANCH_NAMES) else f'λ{k}'})" for k in known)
+            raise ValueError(f"branch must be None (every branch) or one of {named}, not {branch!r}")
+        return [R for R in self.regions[stage] if branch is None or R.branch == branch]
+
+    def _repr_markdown_(self) -> str:
+        """A notebook shows the analysis as ``certify pattern`` prints it (:meth:`markdown`)."""
+        return self.markdown()
 
     @property
     def written(self) -> str:
@@ -341,7 +397,7 @@ def known_factors(*words: str) -> list[list[int]]:
     return [list(f) for f in sorted(found)]
 
 
-def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True) -> PatternResult:
+def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True, progress=None) -> PatternResult:
     """The exact analysis of a written period (any rotation / mirror) over ]lo, hi[.
 
     ``formulas=False`` (the census) skips what only the report prints: the period
@@ -350,12 +406,17 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     With ``formulas`` they are computed when first read.  ``diagnosis=False`` (the
     physics line of ``certify orbit``, which reads only the certified sets) skips the
     search for the collision that comes instead where the word is never feasible
-    (``diagnosis`` None, the verdict without it); the certified sets are the same."""
+    (``diagnosis`` None, the verdict without it); the certified sets are the same.
+    ``progress(k, n, label)`` (a :class:`certify.run.progress.Bar`): k of the n steps done (existence,
+    each collision's conditions, stability; the family route decides feasibility at once), from 0."""
     import time
     start = time.perf_counter()
     diagnose_failure = diagnosis
     lo, hi = check_range(lo, hi)
     normal, system_name, why = read(word)
+    tick = progress or (lambda k, n, label="": None)
+    total = len(normal) + 2                          # existence, each collision's conditions, stability
+    tick(0, total, "")
     system = BY_NAME[system_name]
     cand = candidate_in(system_name, normal)
     an = Analysis(cand, lo, hi)
@@ -367,6 +428,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     for q in first:
         an.impose(q)
     regions = {"exists": _copy(an.regions)}
+    tick(1, total, "exists")
     # feasibility, collision by collision: the first one that empties every region is named
     seen = {q.name for q in first}
     groups = []
@@ -389,6 +451,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
                 and diagnosis is None:
             diagnosis = diagnose(system, cand, normal, m, before, lo, hi)
         before = _copy(an.regions)
+        tick(1 + m, total, f"collision {m} of {len(groups)}")
     regions["feasible"] = _copy(an.regions)
     stab = dominance_requirements(cand.spectrum.ring_cp)
     if cand.abcd is not None:
@@ -396,6 +459,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     conditions["stable"] = [_cond(q) for q in stab]
     for q in stab:
         an.impose(q)
+    tick(total, total, "stable")
     regions["stable"] = _copy(an.regions)
     undecided = sorted({f"{BRANCH_NAMES[R.branch]} {R.fixed_point} at {_short(rc)}: {why_}"
                         for R in an.regions for rc, why_ in R.undecided})

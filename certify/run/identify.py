@@ -291,6 +291,10 @@ class Identified:
     def line(self) -> str:
         return f"r = {self.r}, θ0 = {self.theta0:.6f}, φ0 = {self.phi0:.6f}: {self.cls}: {self.why}"
 
+    def _repr_markdown_(self) -> str:
+        """A notebook shows the orbit's class in bold, then why (certified or observed)."""
+        return f"r = {self.r}, θ0 = {self.theta0:.6f}, φ0 = {self.phi0:.6f}: **{self.cls}**: {self.why}"
+
 
 def _observed(x: Identified, word: str, block: str | None) -> str:
     if x.breaks:

@@ -93,7 +93,7 @@ def test_pattern_dispatch(monkeypatch, capsys):
     import certify.patterns as P
     from certify.cli import main
     calls = []
-    monkeypatch.setattr(P, "analyse", lambda word, lo=0, hi=1: calls.append(word) or _Stub())
+    monkeypatch.setattr(P, "analyse", lambda word, lo=0, hi=1, progress=None: calls.append(word) or _Stub())
     monkeypatch.setattr(FW, "EXACT_N0", 8)
     assert main(["pattern", "(ab)^8(cb)^8"]) == 0 and calls == ["(ab)^8(cb)^8"]
     assert main(["pattern", "(ab)^9(cb)^9", "--r-range", "0.07", "0.08"]) == 0 and len(calls) == 2

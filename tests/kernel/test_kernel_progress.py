@@ -1,0 +1,46 @@
+"""The kernel's progress (issue 38 item 4): ``python3 -m certify_kernel`` and ``certify verify``
+said nothing for minutes.  verify_all ticks from 0 (the bar drawn at once), then after each
+certificate; the kernel's own line goes to stderr only when stderr is a terminal."""
+from __future__ import annotations
+
+import io
+import json
+
+import certify_kernel
+from certify_kernel import __main__ as kernel_main
+from certify_kernel.statements import read
+from tests.kernel.kernel_support import honest_file, write_statements
+from tests.kernel.test_kernel_verify import TEXT
+
+
+class Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+def files(tmp_path):
+    statements = write_statements(tmp_path / "statements", TEXT)
+    path = tmp_path / "certificates.json"
+    path.write_text(json.dumps(honest_file(read(statements))), encoding="utf-8")
+    return statements, path
+
+
+def test_verify_all_ticks_from_zero(tmp_path):
+    statements, path = files(tmp_path)
+    calls = []
+    certify_kernel.verify_all(json.loads(path.read_text()), read(statements), 1,
+                              tick=lambda k, n, label: calls.append((k, n)))
+    assert calls == [(0, 3), (1, 3), (2, 3), (3, 3)]
+
+
+def test_the_kernel_shows_progress_on_a_terminal_only(tmp_path, monkeypatch, capsys):
+    statements, path = files(tmp_path)
+    argv = [str(path), "--statements", str(statements), "--jobs", "1"]
+    assert kernel_main.main(argv) == 0
+    assert capsys.readouterr().err == ""                   # a pipe or a file: nothing
+    terminal = Terminal()
+    monkeypatch.setattr("sys.stderr", terminal)
+    assert kernel_main.main(argv) == 0
+    drawn = terminal.getvalue()
+    assert "\r0/3 certificates decided\x1b[K" in drawn and "2/3 certificates decided (last: " in drawn
+    assert drawn.endswith("\r\x1b[K")                       # erased at the end
