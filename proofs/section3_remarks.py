@@ -627,8 +627,8 @@ def threshold_of_collapse(word, P, r_exist, max_length):
     res = whole_pattern(expand_pattern(word))
     top = max((p.lo if p.is_point else p.hi) for R in res.regions["feasible"] for p in R.pieces) \
         if res.feasible else None
-    checks.append(witnessed(Check(f"{word}'s feasible self-similar data end at r_exist: the supremum of its "
-                                  "feasible set (every branch and fixed point) is the root of P",
+    checks.append(witnessed(Check(f"{word}'s feasible self-similar data reach r_exist and none lie above it: the "
+                                  "supremum of its feasible set (every branch and fixed point) is the root of P",
                                   top is not None and top == re_, [f"feasible: {_sets_of(res)}"]), "T29.1", word))
     summary, records, scope = _census_scope(max_length)
     re_.refine(Fraction(1, 10 ** 12))
