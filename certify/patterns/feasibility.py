@@ -570,8 +570,7 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: 
         reqs.append(Requirement("x", (FIELD.zero, FIELD.one), 1))
     index = system.index
     letters = [index[previous or word[-1]]] + [index[c] for c in word[:m]]   # letters[k] = i_k
-    # p(t_1) from q(0) of the other rows of the eigen-equation (where q0's own rows give 0/0)
-    others_1 = [run_in(system, word[:1], q)[0].p for q in q0_other if all(e is not None for e in q)]
+    others_1 = _first_positions(q0_other, system, word[0])
     for k in range(1, m + 1):
         i = letters[k]
         before = q0 if k == 1 else steps[k - 2].q
@@ -586,6 +585,20 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: 
             other = tuple(p[j] for p in others_1) if m == 1 else ()
             reqs.append(Requirement(f"p_{j + 1}(t_{m})", steps[m - 1].p[j], 1, other))
     return reqs, steps
+
+
+# a memo per candidate's q0_other (the same list in every call for its word): {(system, letter): positions}
+_per_candidate = caches.by_identity(lambda q0_other: {})
+
+
+def _first_positions(q0_other, system: System, letter: str) -> list:
+    """p(t_1) after the first collision ``letter`` from each q(0) of the other rows of the
+    eigen-equation (where q0's own rows give 0/0), computed once per candidate and letter."""
+    memo = _per_candidate(q0_other)
+    key = (system.name, letter)
+    if key not in memo:
+        memo[key] = [run_in(system, letter, q)[0].p for q in q0_other if all(e is not None for e in q)]
+    return memo[key]
 
 
 def _positive_constant(e) -> bool:
