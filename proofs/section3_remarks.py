@@ -568,10 +568,9 @@ def census_records() -> tuple[dict, list[dict]] | None:
     """(summary, records) of the committed census (reports/census.json), each record cut to what
     T29 and T30 read (word, outcome, feasible and stable sets, undecided points); None without one."""
     import json
-
-    from certify.run.files import REPORTS
+    from pathlib import Path
     try:
-        doc = json.loads((REPORTS / "census.json").read_text(encoding="utf-8"))
+        doc = json.loads((Path(__file__).resolve().parents[1] / "reports" / "census.json").read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
     keep = ("feasible", "stable", "undecided")
