@@ -60,8 +60,11 @@ from certify.run import (
     Check,
     certificate,
     conclude,
+    for_a_run,
+    named,
     overridden,
     read_first_member,
+    replaced,
 )
 from proofs.section1_literature import expand_pattern, stable_window, witnessed
 from proofs.section1_literature import pattern as whole_pattern
@@ -533,3 +536,169 @@ def abcab_census(pattern):
                     note=f"An empirical remark, tested on every pattern of at most {LENGTH} collisions containing "
                          f"{pattern} and on the shortest counterexamples of the census (reports/CENSUS.md: "
                          "`python -m certify census --max-length L`).")
+
+
+# ---------------------------------------------------------------- the conclusion's open questions (l. 1214-1215), on the census
+# T29 (l. 1215): "what is the upper threshold of r for which inelastic collapse can occur (stable or
+# not)?"; the paper's known threshold is r_exist ≈ 0.19166, where abcb's self-similar collapse ends
+# (l. 1099-1102, L3).  T30 (l. 1214-1215): whether "any such periodic and asymmetric pattern is always
+# unstable", whether (ab)^n(cb)^n "are the only patterns that are stable in some region of r".
+#
+# What is checked.  The committed census (reports/census.json, ``certify census --max-length 20``):
+# every class of primitive block periods (Corollary 4.5 with S10) of at most 20 collisions analysed
+# exactly by ``certify pattern``; read here, not recomputed (an hour on two cores).  T29: the census
+# has every class (its word count is the FKM tree's, :func:`certify.patterns.census.words`), none in
+# error, no point left undecided above r_exist (the printed digits of each undecided point, certified
+# to 10 digits, against r_exist's isolating interval), and the largest end of all the feasible sets
+# (exact: algebraic ends compared by their isolating intervals and minimal polynomials) is r_exist,
+# reached by abcb — re-analysed here.  So, over the periodic patterns of at most 20 collisions,
+# feasible self-similar data exist exactly for r < r_exist: the threshold of *self-similar* collapse.
+# (Collapse along a non-periodic pattern, or a periodic one of more collisions, is not covered: the
+# bound is part of the statement.)  T30: the stable words of the census are the printed ones (ab and
+# (ab)^n(cb)^n), and no point left undecided in another word could be stable: each is at a multiple
+# eigenvalue of its branch (the eigenspace route), where strict dominance fails exactly.
+PRINTED_T29 = dict(word="abcb", P="17r^6-138r^5+831r^4-3148r^3+831r^2-138r+17", r_exist="0.19166",
+                   max_length="20")
+PRINTED_T30 = dict(stable="ab, (ab)^n(cb)^n", max_length="20")
+EIGENSPACE_ROUTE = "(no datum of the eigenspace found)"     # the undecided text of the eigenspace route
+
+
+@for_a_run
+def census_records() -> tuple[dict, list[dict]] | None:
+    """(summary, records) of the committed census (reports/census.json), each record cut to what
+    T29 and T30 read (word, outcome, feasible and stable sets, undecided points); None without one."""
+    import json
+    from pathlib import Path
+    try:
+        doc = json.loads((Path(__file__).resolve().parents[1] / "reports" / "census.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    keep = ("feasible", "stable", "undecided")
+    return doc["census"], [{"word": r["word"], "outcome": r["outcome"], "stable": r["stable"],
+                            **{k: (r.get("result") or {}).get(k) or [] for k in keep}} for r in doc["words"]]
+
+
+def _census_scope(max_length: str):
+    """(summary, records, checks): the committed census read, and the check that it holds every
+    class of at most ``max_length`` collisions, none in error."""
+    found = census_records()
+    if found is None:
+        return None, [], [Check("the committed census reports/census.json was read", False)]
+    summary, records = found
+    bound = int(max_length) if max_length.isdigit() else -1
+    n = len(census.words(bound)) if 0 < bound <= summary["max_length"] else None
+    errors = [r["word"] for r in records if r["outcome"] != "analysed"]
+    return summary, records, [Check(
+        f"the committed census holds every class of primitive block periods of at most {max_length} collisions "
+        f"({n if n is not None else 'not covered'}: the FKM tree), each analysed exactly, none in error",
+        n is not None and len({r["word"] for r in records}) == n == summary["words"] and not errors,
+        [f"census to {summary['max_length']}: {summary['words']} words; errors: {', '.join(errors) or 'none'}"])]
+
+
+def _undecided_r(text: str) -> Fraction:
+    """The r of an undecided point as printed ("upper x₊ at ≈0.2679491924: ..."), 10 certified digits."""
+    return Fraction(re.search(r"at ≈?([0-9.]+)", text).group(1))
+
+
+def _ends(record: dict):
+    """The upper ends of a record's feasible sets (each interval's hi, each point), exact."""
+    return [census.end_number(p["hi"] if p["kind"] == "interval" else p["at"])
+            for s in record["feasible"] for p in s["pieces"]]
+
+
+@certificate("T29", printed=PRINTED_T29,
+             expect=PASS,
+             mutants=[replaced("r_exist", "0.19166", "0.19167", "a digit of r_exist"),
+                      replaced("P", "831r^4", "832r^4", "a coefficient of P"),
+                      overridden({"word": "ababcb"}, "another word (its data end at 5-2√6)"),
+                      overridden({"max_length": "21"}, "a longer bound than the census's")])
+def threshold_of_collapse(word, P, r_exist, max_length):
+    """The largest r with feasible self-similar data over every periodic pattern of at most
+    ``max_length`` collisions (the committed census) is r_exist, the root of P, where ``word``'s end."""
+    poly = to_fmpz_poly(parse(re.sub(r"(\d)\s*r", r"\1*r", P)))
+    roots = Algebraic.roots(poly, 0, 1)
+    checks = [Check(f"P = {P} has exactly one root r_exist in ]0, 1[, ≈ {r_exist}",
+                    len(roots) == 1 and roots[0].in_rounding_interval(r_exist),
+                    ["roots in ]0,1[: " + ("; ".join(a.describe() for a in roots) or "none")])]
+    if len(roots) != 1:
+        return conclude(checks)
+    re_ = roots[0]
+    res = whole_pattern(expand_pattern(word))
+    top = max((p.lo if p.is_point else p.hi) for R in res.regions["feasible"] for p in R.pieces) \
+        if res.feasible else None
+    checks.append(witnessed(Check(f"{word}'s feasible self-similar data reach r_exist and none lie above it: the "
+                                  "supremum of its feasible set (every branch and fixed point) is the root of P",
+                                  top is not None and top == re_, [f"feasible: {_sets_of(res)}"]), "T29.1", word))
+    summary, records, scope = _census_scope(max_length)
+    re_.refine(Fraction(1, 10 ** 12))
+    above = [f"{r['word']}: {u}" for r in records for u in r["undecided"]
+             if _undecided_r(u) + Fraction(1, 10 ** 9) >= Fraction(int(re_.lo.p), int(re_.lo.q))]
+    tops = [(e, r["word"]) for r in records for e in _ends(r)]
+    highest = max((e for e, _ in tops), default=None)
+    at_top = sorted({w for e, w in tops if e == highest})
+    beyond = sorted({w for e, w in tops if re_ < e})
+    census_word = census.normal_form(expand_pattern(word))[0] if records else ""
+    checks += scope + [named("T29.2", Check(
+        f"no periodic pattern of at most {max_length} collisions has feasible self-similar data for r > r_exist: "
+        f"the largest end of the feasible sets of the committed census is r_exist, reached by {word}, and no "
+        "point above r_exist is left undecided",
+        bool(records) and highest == re_ and census_word in at_top and not beyond and not above,
+        [f"largest end: {highest.describe() if highest is not None else 'none'}, reached by "
+         f"{', '.join(at_top) or 'none'}", f"ends above r_exist: {', '.join(beyond) or 'none'}",
+         f"undecided points at or above r_exist: {'; '.join(above) or 'none'}",
+         f"undecided points below it: {sum(len(r['undecided']) for r in records) - len(above)} in "
+         f"{len(summary['undecided']) if summary else 0} words (census.json)"]))]
+    return conclude(checks, evidence=[f"`certify pattern {word}`: {res.verdict}"],
+                    note="Self-similar collapse along a periodic pattern of at most "
+                         f"{max_length} collisions exists exactly for r < r_exist ≈ {r_exist}: the threshold asked at "
+                         "l. 1215, within the bound (the committed census, `python -m certify census --max-length "
+                         f"{max_length}`; non-periodic patterns and longer periods are not covered).")
+
+
+def _sets_of(res) -> str:
+    return "; ".join(f"{s['branch']} {s['fixed_point']}: {s['set']}" for s in res.feasible) or "∅"
+
+
+def _allowed(printed: str, max_length: int):
+    """The normal forms of the printed words ("ab, (ab)^n(cb)^n": a family in n ≥ 1 expanded up to
+    ``max_length`` collisions), as a list of (item, normal forms)."""
+    out = []
+    for item in (t.strip() for t in printed.split(",")):
+        if "^n" in item:
+            forms = [expand_pattern(item.replace("^n", f"^{n}")) for n in range(1, max_length // 2 + 1)]
+        else:
+            forms = [expand_pattern(item)]
+        out.append((item, {census.normal_form(w)[0] for w in forms if len(w) <= max_length}))
+    return out
+
+
+@certificate("T30", printed=PRINTED_T30,
+             expect=PASS,
+             mutants=[overridden({"stable": "(ab)^n(cb)^n"}, "ab left out"),
+                      overridden({"stable": "ab, (ab)^n(cb)^n, ababcb"}, "an asymmetric word named stable"),
+                      overridden({"max_length": "21"}, "a longer bound than the census's")])
+def stable_patterns(stable, max_length):
+    """The periodic patterns of at most ``max_length`` collisions with stable self-similar data are
+    exactly the printed ones (the committed census): every asymmetric one is unstable."""
+    summary, records, checks = _census_scope(max_length)
+    bound = int(max_length) if max_length.isdigit() else 0
+    try:
+        allowed = _allowed(stable, bound)
+    except ValueError as exc:
+        return conclude(checks + [Check(f"the printed words {stable!r} were read", False, [str(exc)])])
+    names = set().union(*(forms for _, forms in allowed)) if allowed else set()
+    found = [r["word"] for r in records if r["stable"]]
+    others = [w for w in found if w not in names]
+    missing = [item for item, forms in allowed if not forms & set(found)]
+    doubtful = [f"{r['word']}: {u}" for r in records if r["word"] not in names for u in r["undecided"]
+                if EIGENSPACE_ROUTE not in u]
+    checks.append(named("T30.1", Check(
+        f"up to {max_length} collisions the periodic patterns with stable self-similar data are {stable} (each "
+        "has a stable member), no other: every asymmetric one is unstable; the points left undecided in the others "
+        "are at a multiple eigenvalue (not strictly dominant: never stable)",
+        bool(records) and not others and not missing and not doubtful,
+        [f"stable in the census: {', '.join(found) or 'none'}", f"others: {', '.join(others) or 'none'}",
+         f"printed but none stable: {', '.join(missing) or 'none'}",
+         f"undecided points not at a multiple eigenvalue: {'; '.join(doubtful) or 'none'}"])))
+    return conclude(checks, note=f"Read on the committed census (every class of at most {max_length} collisions); "
+                                 "longer periods are not covered.")

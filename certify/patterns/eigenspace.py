@@ -270,6 +270,22 @@ class Eigenspace:
             return None
         return tuple(run[k][i] * sign for run in self.runs)
 
+    def word_velocities(self) -> list:
+        """The linear forms of the whole word's requirements on velocities: u = q_2(0) > 0 and
+        -q_{i_k}(t_{k-1}) > 0 for every collision k (each pair approaches before it collides)."""
+        forms = [tuple(run[0][1] for run in self.runs)]
+        for k, c in enumerate(self.word, 1):
+            forms.append(tuple(-run[k - 1][INDEX[c]] for run in self.runs))
+        return forms
+
+    def realises_no_velocities(self) -> bool:
+        """No datum of E (q_1(0) = -1) meets the velocities' requirements of the whole word
+        (:meth:`word_velocities`; exact, memoised): then no datum of E realises the word, whatever
+        its positions.  (A pair with q_{i_k}(t_{k-1}) = 0 on all of E is such a case.)"""
+        if "_no_velocities" not in self.__dict__:
+            self._no_velocities = self.polyhedron(self.word_velocities()) is None
+        return self._no_velocities
+
     def polyhedron(self, linear) -> list | None:
         """Parameters s where every linear form α + β·s is > 0: None when empty (exact), else
         a list of sample points inside (rational parameters)."""

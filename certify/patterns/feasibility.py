@@ -47,6 +47,8 @@ from certify.errors import UNDECIDED
 
 from .eigenspace import Eigenspace, Witness, decide_on_cells, polynomial_at
 
+WORD_VELOCITIES = "no datum of the eigenspace (dimension {dim}) of the multiple eigenvalue meets the velocities' " \
+    "requirements of the whole word (exact): none realises the word"
 NO_X = "—"                   # the label of the only "fixed point" of a two-gap system (no x)
 EIGENSPACE_NOTE = "a multiple eigenvalue: a datum of its eigenspace"
 
@@ -405,27 +407,49 @@ class Analysis:
             if _meets(self._sign_with_x(Requirement("x", (FIELD.zero, FIELD.one), 1), rc, k, xv), 1) is True:
                 return self._point(R, Piece(rc, None, xv, "c = 0: f affine, fixed point b/(d-a)"), req, T)
             return p, "fails", "c = 0 there (exact): f is affine, its fixed point b/(d-a) is not positive"
-        if not req.has_x or p.x_value is not None:
-            # g = N/D without √Δ: N = 0 (g = 0) or D = 0 (g undefined: a collision time or
-            # the normalisation q_1(0) = -1 breaks down) both defeat a strict inequality;
-            # N = D = 0 stays undecided.
-            cond = self._condition_at_point(req, p, T)
-            zero_n = vanishes_on_branch(self.spec, cond.N[0], rc, k)
-            zero_d = vanishes_on_branch(self.spec, cond.D[0], rc, k)
-            if zero_n != zero_d:
-                return p, "fails", f"{req.name} {'vanishes' if zero_n else 'has a pole'} there (exact)"
-            # 0/0: another representation of the same function, with a denominator not vanishing there
-            for G in req.other:
-                alt = Requirement(req.name, G, req.sign)
-                cond = condition(alt, self.spec.lrq_cp, x_value=p.x_value if alt.has_x else None)
-                if vanishes_on_branch(self.spec, cond.D[0], rc, k):
-                    continue
-                if vanishes_on_branch(self.spec, cond.N[0], rc, k):
-                    return p, "fails", f"{req.name} vanishes there (exact, other rows of the eigen-equation)"
-                ok = _meets(self._sign_on(cond, rc, k), req.sign)
-                if ok != UNDECIDED:
-                    return p, "holds" if ok else "fails", "" if ok else \
-                        f"{req.name} has the wrong sign (other rows of the eigen-equation)"
+        if req.has_x and p.x_value is None:
+            return self._other_rows_with_x(R, p, req)
+        # g = N/D without √Δ: N = 0 (g = 0) or D = 0 (g undefined: a collision time or
+        # the normalisation q_1(0) = -1 breaks down) both defeat a strict inequality;
+        # N = D = 0 stays undecided.
+        cond = self._condition_at_point(req, p, T)
+        zero_n = vanishes_on_branch(self.spec, cond.N[0], rc, k)
+        zero_d = vanishes_on_branch(self.spec, cond.D[0], rc, k)
+        if zero_n != zero_d:
+            return p, "fails", f"{req.name} {'vanishes' if zero_n else 'has a pole'} there (exact)"
+        # 0/0: another representation of the same function, with a denominator not vanishing there
+        for G in req.other:
+            alt = Requirement(req.name, G, req.sign)
+            cond = condition(alt, self.spec.lrq_cp, x_value=p.x_value if alt.has_x else None)
+            if vanishes_on_branch(self.spec, cond.D[0], rc, k):
+                continue
+            if vanishes_on_branch(self.spec, cond.N[0], rc, k):
+                return p, "fails", f"{req.name} vanishes there (exact, other rows of the eigen-equation)"
+            ok = _meets(self._sign_on(cond, rc, k), req.sign)
+            if ok != UNDECIDED:
+                return p, "holds" if ok else "fails", "" if ok else \
+                    f"{req.name} has the wrong sign (other rows of the eigen-equation)"
+        return p, "undecided", req.name
+
+    def _other_rows_with_x(self, R: Region, p: Piece, req: Requirement):
+        """A requirement with x = x± at a point where its representation G₀ + xG₁ is 0/0 on the
+        branch: its sign from another representation of the same function (q(0) from other rows
+        of the eigen-equation, ``req.other``) whose denominator does not vanish there (exact), the
+        same fixed point x±; "undecided" when none decides.  Sound: at a simple eigenvalue every
+        representation is the same function of r near r₀, and one whose denominator is non-zero
+        at r₀ gives its value there (continuity)."""
+        k = R.branch
+        if self._eigenspace(p.lo, k) is not None:
+            return p, "undecided", req.name          # a multiple eigenvalue: its eigenspace decides
+        for G in req.other:
+            alt = Requirement(req.name, G, req.sign)
+            cond = condition(alt, self.spec.lrq_cp, self.fps[R.fixed_point])
+            if vanishes_on_branch(self.spec, cond.D[0], p.lo, k):
+                continue
+            ok = _meets(self._sign_on(cond, p.lo, k), req.sign)
+            if ok != UNDECIDED:
+                return p, "holds" if ok else "fails", "" if ok else \
+                    f"{req.name} has the wrong sign (other rows of the eigen-equation)"
         return p, "undecided", req.name
 
     # -- a point where the branch's eigenvalue is multiple: the data of its eigenspace
@@ -480,7 +504,25 @@ class Analysis:
             if status is not None:
                 return p, status, "" if status == "holds" else f"{req.name}: no datum of the eigenspace (dimension " \
                     "2) of the multiple eigenvalue meets the requirements (exact cells of its line of data)"
+        if req.name[:2] in ("q_", "p_") and es.realises_no_velocities():
+            return p, "fails", WORD_VELOCITIES.format(dim=es.dim)       # else undecided: the whole word decides
         return None
+
+    def settle_by_word(self):
+        """Move the points left undecided so far (by the requirements of existence: λ, u, x) at a
+        multiple eigenvalue where no datum of the eigenspace meets the velocities' requirements of
+        the whole word (exact, :meth:`.Eigenspace.realises_no_velocities`) to the dropped points: no
+        datum there realises the word, so the point is in no feasible (or stable) set.  Whether data
+        *exist* there (u, x > 0) stays undecided: the caller's copy of the regions before keeps it."""
+        for R in self.regions:
+            keep = []
+            for rc, why in R.undecided:
+                es = self._eigenspace(rc, R.branch)
+                if es is not None and not es.q1_zero and es.realises_no_velocities():
+                    R.dropped.append((rc, f"{why}; " + WORD_VELOCITIES.format(dim=es.dim)))
+                else:
+                    keep.append((rc, why))
+            R.undecided = keep
 
     def _condition_at_point(self, req: Requirement, p: Piece, T):
         """The Condition of req at the point p: the table's own when req has no x (the same
@@ -528,6 +570,7 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: 
         reqs.append(Requirement("x", (FIELD.zero, FIELD.one), 1))
     index = system.index
     letters = [index[previous or word[-1]]] + [index[c] for c in word[:m]]   # letters[k] = i_k
+    others_1 = _first_positions(q0_other, system, word[0])
     for k in range(1, m + 1):
         i = letters[k]
         before = q0 if k == 1 else steps[k - 2].q
@@ -535,11 +578,27 @@ def prefix_requirements(word: str, m: int, q0, steps=None, q0_other=(), system: 
             reqs.append(Requirement(f"q_{i + 1}(t_{k - 1})", (before[i], FIELD.zero), -1))
         automatic = k == 1 or letters[k - 2] == i
         if not automatic:
-            reqs.append(Requirement(f"p_{i + 1}(t_{k - 1})", steps[k - 2].p[i], 1))
+            other = tuple(p[i] for p in others_1) if k == 2 else ()
+            reqs.append(Requirement(f"p_{i + 1}(t_{k - 1})", steps[k - 2].p[i], 1, other))
     for j in range(system.gaps):
         if j != letters[m] and j != letters[m - 1]:
-            reqs.append(Requirement(f"p_{j + 1}(t_{m})", steps[m - 1].p[j], 1))
+            other = tuple(p[j] for p in others_1) if m == 1 else ()
+            reqs.append(Requirement(f"p_{j + 1}(t_{m})", steps[m - 1].p[j], 1, other))
     return reqs, steps
+
+
+# a memo per candidate's q0_other (the same list in every call for its word): {(system, letter): positions}
+_per_candidate = caches.by_identity(lambda q0_other: {})
+
+
+def _first_positions(q0_other, system: System, letter: str) -> list:
+    """p(t_1) after the first collision ``letter`` from each q(0) of the other rows of the
+    eigen-equation (where q0's own rows give 0/0), computed once per candidate and letter."""
+    memo = _per_candidate(q0_other)
+    key = (system.name, letter)
+    if key not in memo:
+        memo[key] = [run_in(system, letter, q)[0].p for q in q0_other if all(e is not None for e in q)]
+    return memo[key]
 
 
 def _positive_constant(e) -> bool:

@@ -428,6 +428,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     for q in first:
         an.impose(q)
     regions = {"exists": _copy(an.regions)}
+    an.settle_by_word()             # points of existence undecided where no datum can realise the word
     tick(1, total, "exists")
     # feasibility, collision by collision: the first one that empties every region is named
     seen = {q.name for q in first}

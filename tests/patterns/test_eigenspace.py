@@ -106,3 +106,128 @@ def test_ababcbcb_window_end_on_a_line_of_data():
     res = analyse("ababcbcb", formulas=False)
     assert res.undecided == []
     assert [e["set"] for e in res.stable] == ["]≈0.1275440976, ≈0.1715728753["]
+
+
+def _velocity_forms(word, q0, r0):
+    """The linear forms that must be > 0 for ``word`` to run from q(0) = q0 (SymPy, affine in the
+    parameters of q0): u = q_2(0) and -q_{i_k}(t_{k-1}) for every collision k (the paper's A, B, C)."""
+    q, forms = sp.Matrix(q0), [sp.expand(q0[1])]
+    for letter in word:
+        forms.append(sp.expand(-q[INDEX[letter]]))
+        q = (collision_matrix(letter).subs(R, r0) * q).applyfunc(sp.expand)
+    return forms
+
+
+def _farkas(forms, params):
+    """A Farkas certificate that the forms cannot all be > 0: weights y ≥ 0, not all 0, on at most
+    len(params) + 1 of them, with Σ y·form a constant ≤ 0 (SymPy, exact); None if none is found."""
+    from itertools import combinations
+    rows = [[sp.radsimp(sp.Poly(f, *params).coeff_monomial(p)) for p in params] for f in forms]
+    consts = [sp.radsimp(f.subs({p: 0 for p in params})) for f in forms]
+    for k in range(1, len(params) + 2):
+        for S in combinations(range(len(forms)), k):
+            null = sp.Matrix([rows[i] for i in S]).T.nullspace(simplify=True)
+            if len(null) != 1:
+                continue
+            y = [sp.radsimp(e) for e in null[0]]
+            if all(e <= 0 for e in y):
+                y = [-e for e in y]
+            if all(e >= 0 for e in y) and sp.radsimp(sum(e * consts[i] for e, i in zip(y, S))) <= 0:
+                return S, y
+    return None
+
+
+def test_a_plane_of_data_where_no_datum_runs_the_word():
+    """acbacbacbacbacbcab at r₀ = 2 - √3 (M(r₀) = λ₀I: a plane of data, 6 points undecided in the
+    census at the existence requirement x).  Now: no datum of the plane meets the velocities'
+    requirements of the whole word, so the points are in no feasible set (undecided for existence
+    only: the stage's own copy keeps them).  Second route: a Farkas certificate in SymPy, exact in
+    Q(√3), for q(0) = (-1, u, v) free."""
+    word = "acbacbacbacbacbcab"
+    res = analyse(word, formulas=False)
+    assert res.undecided == [] and res.feasible == []
+    kept = [(R.branch, rc) for R in res.regions["exists"] for rc, _why in R.undecided]
+    assert len(kept) == 6 and all(abs(float(rc.lo) - 0.2679491924) < 1e-9 for _b, rc in kept)
+    r0 = 2 - sp.sqrt(3)
+    normal = res.normal
+    M0 = candidate(normal).M.subs(R, r0).applyfunc(sp.expand)
+    assert (M0 - M0[0, 0] * sp.eye(3)).applyfunc(sp.radsimp) == sp.zeros(3)
+    u, v = sp.symbols("u v")
+    assert _farkas(_velocity_forms(normal, [-1, u, v], r0), [u, v]) is not None
+
+
+def test_a_line_of_data_where_a_pair_never_approaches():
+    """abacbacbacbacbacb at r₀ = 2 - √3 (a line of data): 4 points undecided in the census at
+    u = q_2(0) (no witness runs the word).  Now decided: some pair has q_{i_k}(t_{k-1}) = 0 on the
+    whole line, the word never runs.  Second route: SymPy's eigenvectors of M(r₀) and the forms."""
+    word = "abacbacbacbacbacb"
+    res = analyse(word, formulas=False)
+    assert res.undecided == [] and res.feasible == []
+    r0 = 2 - sp.sqrt(3)
+    M0 = candidate(word).M.subs(R, r0).applyfunc(sp.radsimp)
+    lines = [e for e in M0.eigenvects(simplify=True) if len(e[2]) == 2]
+    assert len(lines) == 1
+    b0, b1 = lines[0][2]
+    s = sp.Symbol("s")
+    q0 = b0 + s * b1 if sp.radsimp(b0[0]) != 0 else b1 + s * b0
+    q0 = (q0 / -q0[0]).applyfunc(sp.radsimp)
+    forms = _velocity_forms(word, list(q0), r0)
+    assert any(sp.radsimp(f) == 0 for f in forms[1:])
+
+
+def test_a_simple_eigenvalue_where_the_first_gap_is_0_over_0():
+    """ababacbacbacbacbcbcb at r₀ ≈ 0.3903691107 (a simple eigenvalue of the upper branch, where q(0)
+    from rows 1-2 of the eigen-equation is 0/0): p_3(t_1) = x₊ + q_3(0) was undecided.  Now from the
+    other rows: < 0, the point fails.  Second route: python-flint balls at r₀ — M(r₀), its largest
+    real eigenvalue, the eigenvector from rows 1 and 3 (or 2 and 3) of M - λI, the word run from
+    p(0) = (1, 0, x) (affine in x) and the positive fixed point of p_3(t_n)/p_1(t_n) (the other one
+    is negative; the engine's label x₊ depends on the scale of its a, b, c, d)."""
+    import flint
+
+    from certify.algebra.algebraic import Algebraic
+    from certify.algebra.balls import precision
+    word = "ababacbacbacbacbcbcb"
+    res = analyse(word, formulas=False)
+    assert res.undecided == []
+    [r0] = [a for a in Algebraic.roots(flint.fmpq_poly([1, -12, 27, -16, 27, -12, 1]))
+            if a.arb(64) > flint.arb("0.39") and a.arb(64) < flint.arb("0.391")]
+    with precision(400):
+        Rb = r0.arb(400)
+        Mq = candidate(word).Mq
+        M = [[sum((flint.arb(c) * Rb ** k for k, c in enumerate(e.coeffs())), flint.arb(0)) for e in row]
+             for row in Mq]
+        lams = [z.real for z in flint.acb_mat(M).eig() if not (z.imag > 0 or z.imag < 0)]
+        lam0 = max(lams, key=lambda z: z.mid())
+        A = [[M[i][j] - (lam0 if i == j else 0) for j in range(3)] for i in range(3)]
+
+        def cross(u, w):
+            return [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
+        q = next(c for c in (cross(A[0], A[2]), cross(A[1], A[2])) if c[0] > 0 or c[0] < 0)
+        q = [e / -q[0] for e in q]
+        p = [(flint.arb(1), flint.arb(0)), (flint.arb(0), flint.arb(0)), (flint.arb(0), flint.arb(1))]
+        first = None
+        for letter in word:
+            i = INDEX[letter]
+            t = (-p[i][0] / q[i], -p[i][1] / q[i])
+            p = [(P0 + t[0] * qj, P1 + t[1] * qj) for (P0, P1), qj in zip(p, q)]
+            p[i] = (flint.arb(0), flint.arb(0))
+            first = first or p[2]
+            q = [sum((Mi * qj for Mi, qj in zip(row, q)), flint.arb(0)) for row in _ball_matrix(letter, Rb)]
+        (d, c), _p2, (b, a) = p
+        xs = [(a - d + sigma * ((a - d) ** 2 + 4 * b * c).sqrt()) / (2 * c) for sigma in (1, -1)]
+        positive = [x for x in xs if x > 0]
+        assert len(positive) == 1 and all(x < 0 for x in xs if x not in positive)
+        assert first[0] + positive[0] * first[1] < 0                # p_3(t_1) < 0: the gap c closed
+
+
+def _ball_matrix(letter, Rb):
+    """The collision matrix of ``letter`` (the paper's A, B, C) at a ball of r."""
+    import flint
+    C = collision_matrix(letter)
+    out = [[flint.arb(0)] * 3 for _ in range(3)]
+    for i in range(3):
+        for j in range(3):
+            for (k,), cf in sp.Poly(sp.expand(C[i, j]), R).terms():
+                cf = sp.Rational(cf)
+                out[i][j] += flint.arb(int(cf.p)) / int(cf.q) * Rb ** k
+    return out

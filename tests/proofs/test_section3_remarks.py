@@ -58,3 +58,60 @@ def test_the_committed_census_summary_is_read_from_the_head_of_the_file():
     if not path.exists():
         pytest.skip("no committed census")
     assert T.committed_census() == json.loads(path.read_text(encoding="utf-8"))["census"]
+
+
+# T29, T30 (l. 1214-1215): the threshold of collapse and the stable patterns, read on the committed census
+COMMITTED_CENSUS = T.census_records        # before any test replaces it
+
+
+def _census_with(change):
+    """The committed census's (summary, records) with ``change`` applied to a copy of the records."""
+    import copy
+    summary, records = COMMITTED_CENSUS()
+    records = copy.deepcopy(records)
+    change(records)
+    return summary, records
+
+
+def _record(records, word):
+    return next(r for r in records if r["word"] == word)
+
+
+def test_t29_t30_pass_on_the_committed_census():
+    o29, o30 = as_printed("T29"), as_printed("T30")
+    assert o29.status == "PASS" and o30.status == "PASS"
+    text = "\n".join(e for c in o29.printed for e in c.evidence)
+    assert "reached by abcb" in text and "undecided points at or above r_exist: none" in text
+
+
+def test_t29_fails_on_an_undecided_point_above_r_exist(monkeypatch):
+    """Not certified while a point above r_exist is undecided: the census as it was before this
+    engine (87 words with such points) would FAIL."""
+    def add(records):
+        _record(records, "abacbacbacbacbacb")["undecided"] = ["upper x₊ at ≈0.2679491924: u = q_2(0)"]
+    monkeypatch.setattr(T, "census_records", lambda: _census_with(add))
+    o = T.threshold_of_collapse(**T.PRINTED_T29)
+    assert o.status == "FAIL"
+    assert any("abacbacbacbacbacb: upper x₊ at ≈0.2679491924" in e for c in o.printed for e in c.evidence)
+
+
+def test_t29_fails_on_a_feasible_end_above_r_exist(monkeypatch):
+    """A feasible set reaching above r_exist in another word (its end moved to 1/5)."""
+    end = {"digits": "0.2", "exact": "1/5", "interval": ["1/5", "1/5"], "minimal_polynomial": "5r - 1"}
+
+    def move(records):
+        rec = next(r for r in records if r["feasible"] and r["word"] != "abcb")
+        rec["feasible"][0]["pieces"][0]["hi"] = end
+    monkeypatch.setattr(T, "census_records", lambda: _census_with(move))
+    assert T.threshold_of_collapse(**T.PRINTED_T29).status == "FAIL"
+
+
+def test_t30_fails_on_an_asymmetric_stable_word_or_a_doubtful_point(monkeypatch):
+    def stable(records):
+        _record(records, "ababcb")["stable"] = True
+
+    def doubtful(records):
+        _record(records, "abacbcbabcabcb")["undecided"] = ["upper x₊ at ≈0.1: p_3(t_1)"]
+    for change in (stable, doubtful):
+        monkeypatch.setattr(T, "census_records", lambda change=change: _census_with(change))
+        assert T.stable_patterns(**T.PRINTED_T30).status == "FAIL"
