@@ -539,14 +539,14 @@ def abcab_census(pattern):
 
 
 # ---------------------------------------------------------------- the conclusion's open questions (l. 1214-1215), on the census
-# T29 (l. 1215): "what is the upper threshold of r for which inelastic collapse can occur (stable or
+# T28.3 (l. 1215): "what is the upper threshold of r for which inelastic collapse can occur (stable or
 # not)?"; the paper's known threshold is r_exist ≈ 0.19166, where abcb's self-similar collapse ends
-# (l. 1099-1102, L3).  T30 (l. 1214-1215): whether "any such periodic and asymmetric pattern is always
+# (l. 1099-1102, L3).  T28.4 (l. 1214-1215): whether "any such periodic and asymmetric pattern is always
 # unstable", whether (ab)^n(cb)^n "are the only patterns that are stable in some region of r".
 #
 # What is checked.  The committed census (reports/census.json, ``certify census --max-length 20``):
 # every class of primitive block periods (Corollary 4.5 with S10) of at most 20 collisions analysed
-# exactly by ``certify pattern``; read here, not recomputed (an hour on two cores).  T29: the census
+# exactly by ``certify pattern``; read here, not recomputed (an hour on two cores).  T28.3: the census
 # has every class (its word count is the FKM tree's, :func:`certify.patterns.census.words`), none in
 # error, no point left undecided above r_exist (the printed digits of each undecided point, certified
 # to 10 digits, against r_exist's isolating interval), and the largest end of all the feasible sets
@@ -554,19 +554,19 @@ def abcab_census(pattern):
 # reached by abcb — re-analysed here.  So, over the periodic patterns of at most 20 collisions,
 # feasible self-similar data exist exactly for r < r_exist: the threshold of *self-similar* collapse.
 # (Collapse along a non-periodic pattern, or a periodic one of more collisions, is not covered: the
-# bound is part of the statement.)  T30: the stable words of the census are the printed ones (ab and
+# bound is part of the statement.)  T28.4: the stable words of the census are the printed ones (ab and
 # (ab)^n(cb)^n), and no point left undecided in another word could be stable: each is at a multiple
 # eigenvalue of its branch (the eigenspace route), where strict dominance fails exactly.
-PRINTED_T29 = dict(word="abcb", P="17r^6-138r^5+831r^4-3148r^3+831r^2-138r+17", r_exist="0.19166",
+PRINTED_T28_3 = dict(word="abcb", P="17r^6-138r^5+831r^4-3148r^3+831r^2-138r+17", r_exist="0.19166",
                    max_length="20")
-PRINTED_T30 = dict(stable="ab, (ab)^n(cb)^n", max_length="20")
+PRINTED_T28_4 = dict(stable="ab, (ab)^n(cb)^n", max_length="20")
 EIGENSPACE_ROUTE = "(no datum of the eigenspace found)"     # the undecided text of the eigenspace route
 
 
 @for_a_run
 def census_records() -> tuple[dict, list[dict]] | None:
     """(summary, records) of the committed census (reports/census.json), each record cut to what
-    T29 and T30 read (word, outcome, feasible and stable sets, undecided points); None without one."""
+    T28.3 and T28.4 read (word, outcome, feasible and stable sets, undecided points); None without one."""
     import json
     from pathlib import Path
     try:
@@ -606,7 +606,7 @@ def _ends(record: dict):
             for s in record["feasible"] for p in s["pieces"]]
 
 
-@certificate("T29", printed=PRINTED_T29,
+@certificate("T28.3", printed=PRINTED_T28_3,
              expect=PASS,
              mutants=[replaced("r_exist", "0.19166", "0.19167", "a digit of r_exist"),
                       replaced("P", "831r^4", "832r^4", "a coefficient of P"),
@@ -628,7 +628,7 @@ def threshold_of_collapse(word, P, r_exist, max_length):
         if res.feasible else None
     checks.append(witnessed(Check(f"{word}'s feasible self-similar data reach r_exist and none lie above it: the "
                                   "supremum of its feasible set (every branch and fixed point) is the root of P",
-                                  top is not None and top == re_, [f"feasible: {_sets_of(res)}"]), "T29.1", word))
+                                  top is not None and top == re_, [f"feasible: {_sets_of(res)}"]), "T28.3.1", word))
     summary, records, scope = _census_scope(max_length)
     re_.refine(Fraction(1, 10 ** 12))
     above = [f"{r['word']}: {u}" for r in records for u in r["undecided"]
@@ -638,7 +638,7 @@ def threshold_of_collapse(word, P, r_exist, max_length):
     at_top = sorted({w for e, w in tops if e == highest})
     beyond = sorted({w for e, w in tops if re_ < e})
     census_word = census.normal_form(expand_pattern(word))[0] if records else ""
-    checks += scope + [named("T29.2", Check(
+    checks += scope + [named("T28.3.2", Check(
         f"no periodic pattern of at most {max_length} collisions has feasible self-similar data for r > r_exist: "
         f"the largest end of the feasible sets of the committed census is r_exist, reached by {word}, and no "
         "point above r_exist is left undecided",
@@ -672,7 +672,7 @@ def _allowed(printed: str, max_length: int):
     return out
 
 
-@certificate("T30", printed=PRINTED_T30,
+@certificate("T28.4", printed=PRINTED_T28_4,
              expect=PASS,
              mutants=[overridden({"stable": "(ab)^n(cb)^n"}, "ab left out"),
                       overridden({"stable": "ab, (ab)^n(cb)^n, ababcb"}, "an asymmetric word named stable"),
@@ -692,7 +692,7 @@ def stable_patterns(stable, max_length):
     missing = [item for item, forms in allowed if not forms & set(found)]
     doubtful = [f"{r['word']}: {u}" for r in records if r["word"] not in names for u in r["undecided"]
                 if EIGENSPACE_ROUTE not in u]
-    checks.append(named("T30.1", Check(
+    checks.append(named("T28.4.1", Check(
         f"up to {max_length} collisions the periodic patterns with stable self-similar data are {stable} (each "
         "has a stable member), no other: every asymmetric one is unstable; the points left undecided in the others "
         "are at a multiple eigenvalue (not strictly dominant: never stable)",

@@ -60,7 +60,7 @@ def test_the_committed_census_summary_is_read_from_the_head_of_the_file():
     assert T.committed_census() == json.loads(path.read_text(encoding="utf-8"))["census"]
 
 
-# T29, T30 (l. 1214-1215): the threshold of collapse and the stable patterns, read on the committed census
+# T28.3, T28.4 (l. 1214-1215): the threshold of collapse and the stable patterns, read on the committed census
 COMMITTED_CENSUS = T.census_records        # before any test replaces it
 
 
@@ -78,7 +78,7 @@ def _record(records, word):
 
 
 def test_t29_t30_pass_on_the_committed_census():
-    o29, o30 = as_printed("T29"), as_printed("T30")
+    o29, o30 = as_printed("T28.3"), as_printed("T28.4")
     assert o29.status == "PASS" and o30.status == "PASS"
     text = "\n".join(e for c in o29.printed for e in c.evidence)
     assert "reached by abcb" in text and "undecided points at or above r_exist: none" in text
@@ -90,7 +90,7 @@ def test_t29_fails_on_an_undecided_point_above_r_exist(monkeypatch):
     def add(records):
         _record(records, "abacbacbacbacbacb")["undecided"] = ["upper x₊ at ≈0.2679491924: u = q_2(0)"]
     monkeypatch.setattr(T, "census_records", lambda: _census_with(add))
-    o = T.threshold_of_collapse(**T.PRINTED_T29)
+    o = T.threshold_of_collapse(**T.PRINTED_T28_3)
     assert o.status == "FAIL"
     assert any("abacbacbacbacbacb: upper x₊ at ≈0.2679491924" in e for c in o.printed for e in c.evidence)
 
@@ -103,7 +103,7 @@ def test_t29_fails_on_a_feasible_end_above_r_exist(monkeypatch):
         rec = next(r for r in records if r["feasible"] and r["word"] != "abcb")
         rec["feasible"][0]["pieces"][0]["hi"] = end
     monkeypatch.setattr(T, "census_records", lambda: _census_with(move))
-    assert T.threshold_of_collapse(**T.PRINTED_T29).status == "FAIL"
+    assert T.threshold_of_collapse(**T.PRINTED_T28_3).status == "FAIL"
 
 
 def test_t30_fails_on_an_asymmetric_stable_word_or_a_doubtful_point(monkeypatch):
@@ -114,4 +114,4 @@ def test_t30_fails_on_an_asymmetric_stable_word_or_a_doubtful_point(monkeypatch)
         _record(records, "abacbcbabcabcb")["undecided"] = ["upper x₊ at ≈0.1: p_3(t_1)"]
     for change in (stable, doubtful):
         monkeypatch.setattr(T, "census_records", lambda change=change: _census_with(change))
-        assert T.stable_patterns(**T.PRINTED_T30).status == "FAIL"
+        assert T.stable_patterns(**T.PRINTED_T28_4).status == "FAIL"
