@@ -572,3 +572,61 @@ def find(r, max_returns: int = 2, alphas=(2.0, 1.5, 3.0), tries: int = 40) -> Ho
                             return Horseshoe(r, None, tried=tried)
                         break       # another margin rarely mends a failed proof: lengthen the chain
     return Horseshoe(r, None, tried=tried)
+
+
+CONCLUSION = ("an invariant set of G = f^{k} (k = {k} b-returns) on which G is semi-conjugate to the "
+              "subshift of finite type of T; topological entropy of the b-to-b map ≥ log ρ(T)/k ≥ {h}; "
+              "periodic orbits of infinitely many periods")
+MEASURE_ZERO = ("the horseshoe is a set of measure zero: it proves chaos on it, not that a given "
+                "unresolved orbit of the simulator is chaotic")
+
+
+def as_json(H: Horseshoe, seconds: float | None = None) -> dict:
+    """The JSON record of ``certify chaos`` (certify/schemas/chaos.schema.json)."""
+    doc: dict = {"schema": "certify-chaos", "version": 1, "r": str(H.r),
+                 "certified": bool(H.proof is not None and H.proof.holds)}
+    if seconds is not None:
+        doc["seconds"] = round(seconds, 2)
+    P = H.proof
+    if P is None or not P.holds:
+        doc["why"] = (f"no horseshoe found: {H.tried} chains of boxes tried, none proved "
+                      "(saddles of at most 2 returns and their homoclinic points); nothing is claimed")
+        return doc
+    doc.update({
+        "saddle": {"word": H.saddle, "returns": P.k, "point": list(H.saddle_point),
+                   "multipliers": list(H.multipliers), "homoclinic_iterates": H.homoclinic_iterates},
+        "boxes": [b.as_json() | {"in_branch": P.in_branch[b.name][1]} for b in P.boxes],
+        "coverings": [{"from": P.boxes[i].name, "to": P.boxes[j].name, "evidence": why}
+                      for (i, j), (_, why) in P.covers.items()],
+        "disjoint": P.disjoint[1],
+        "T": P.T, "rho_lower": str(P.beta), "entropy_lower": P.entropy,
+        "conclusion": CONCLUSION.format(k=P.k, h=P.entropy), "measure": MEASURE_ZERO})
+    return doc
+
+
+def text_lines(doc: dict):
+    """The text output of ``certify chaos``."""
+    if not doc["certified"]:
+        yield f"chaos at r = {doc['r']}: NOT certified: {doc['why']}"
+        return
+    s = doc["saddle"]
+    yield f"chaos at r = {doc['r']}: a horseshoe, proved in exact rational arithmetic"
+    yield (f"  saddle: word {s['word']} ({s['returns']} b-return(s)) at (u, v) ≈ ({s['point'][0]:.6f}, "
+           f"{s['point'][1]:.6f}), multipliers ≈ {s['multipliers'][0]:.4g}, {s['multipliers'][1]:.4g} (floats, the search)")
+    yield f"  homoclinic orbit: the unstable line reaches the stable line after {s['homoclinic_iterates']} iterates"
+    yield f"  G = f^{s['returns']}; boxes N = c + [-1,1]U + [-1,1]S in the chart (u, v) of the b-section, rational:"
+    for b in doc["boxes"]:
+        c = ", ".join(f"{float(_q(z)):.6g}" for z in b["center"])
+        yield f"    {b['name']:>4}  word {b['word']:<12} centre ≈ ({c})  ✓ in its branch: {b['in_branch']}"
+    yield "  covering relations N_i ⇒ N_j (images of the vertices in N_j's coordinates):"
+    for e in doc["coverings"]:
+        yield f"    ✓ {e['from']} ⇒ {e['to']}: {e['evidence']}"
+    yield f"  ✓ {doc['disjoint']}"
+    yield "  T = " + " ".join("".join(map(str, row)) for row in doc["T"])
+    yield f"  ρ(T) ≥ {doc['rho_lower']} ≈ {float(_q(doc['rho_lower'])):.6f} (Collatz–Wielandt, exact)"
+    yield f"  proved: {doc['conclusion']}"
+    yield f"  note: {doc['measure']}"
+
+
+def _q(text: str) -> Fraction:
+    return Fraction(text)
