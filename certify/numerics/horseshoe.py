@@ -182,7 +182,10 @@ class Proof:
 
 
 def in_branch(box: Box, r) -> tuple[bool, str]:
-    """Every form of the box's word is > 0 at its four vertices (so on the box, by convexity)."""
+    """Every form of the box's word is > 0 at its four vertices (so on the box, by convexity); a
+    flat box (U, S dependent) is refused."""
+    if box.U[0] * box.S[1] - box.U[1] * box.S[0] == 0:
+        return False, "a flat box: U and S are dependent"
     forms = branch_forms(box.word, r)
     for row, why in forms:
         for p in box.vertices():
@@ -238,7 +241,8 @@ def prove(r, boxes: list, edges: list, k: int) -> Proof:
     m = len(boxes)
     P.T = [[0] * m for _ in range(m)]
     for i, j in edges:
-        holds, why = covering(boxes[i], boxes[j], r) if P.in_branch[boxes[i].name][0] else (False, "not in its branch")
+        holds, why = (covering(boxes[i], boxes[j], r) if P.in_branch[boxes[i].name][0] and P.in_branch[boxes[j].name][0]
+                      else (False, "a box not in its branch"))
         P.covers[(i, j)] = (holds, why)
         P.T[i][j] = 1 if holds else 0
     bad = [(a.name, b.name) for n, a in enumerate(boxes) for b in boxes[n + 1:] if not separated(a, b)]
@@ -468,7 +472,8 @@ def _preimage_on_line(s: Saddle, t: float, j: int) -> float:
 
 
 def _rational(x: float) -> flint.fmpq:
-    f = Fraction(float(x)).limit_denominator(10**15)
+    """The float x exactly, as a rational (a dyadic)."""
+    f = Fraction(float(x))
     return flint.fmpq(f.numerator, f.denominator)
 
 
@@ -478,23 +483,24 @@ def chain(fm: FloatMap, s: Saddle, h: Homoclinic, back: int, forward: int, alpha
     cannot satisfy the linearised covering conditions with margin ``alpha``."""
     t0 = _preimage_on_line(s, h.t, back)
     q = [s.p + t0 * s.eu]
-    words = []
-    for _ in range(back + h.m + forward):
-        z, w = fm.step(q[-1], s.returns)
+    for _ in range(back + h.m):                # away from p: G itself (rounding grows like λ^(back+m))
+        z, _w = fm.step(q[-1], s.returns)
         if z is None:
             return None
-        words.append(w)
         q.append(z)
-    z, w = fm.step(q[-1], s.returns)          # the last box's word
-    if z is None:
-        return None
-    words.append(w)
+    q[-1] = s.p + _coords(s, q[-1])[1] * s.es  # the homoclinic point, on the stable line
+    for _ in range(forward):                   # back to p along the stable line: p's projective map
+        q.append(projective(s.M, q[-1]))
+    words = []
+    for z in q:
+        image_, w = fm.step(z, s.returns)
+        if image_ is None:
+            return None
+        words.append(w)
     L = len(q) - 1
     lam, mu = abs(s.lam), abs(s.mu)
     d0 = abs(t0)
     sL = abs(_coords(s, q[-1])[1])
-    if abs(_coords(s, q[-1])[0]) > 1e-3 * sL:
-        return None
     w0, h0 = d0 / math.sqrt(lam), sL * math.sqrt(mu)
     eu, es = [s.eu], [None] * (L + 1)
     lams, mus = [], [0.0] * (L + 1)
