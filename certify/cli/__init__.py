@@ -67,8 +67,8 @@
 
 The commands by topic: :mod:`.claims` (all, run, list, bench), :mod:`.exact` (census,
 pattern, orbit, particles), :mod:`.section5` (simulate, identify, stress, figures),
-:mod:`.island_command` (island),
-:mod:`.atlas_command` (atlas), :mod:`.chaos_command` (chaos), :mod:`.schemas` (schema); :mod:`.options` holds what they share
+:mod:`.island_command` (island), :mod:`.chaos_command` (chaos),
+:mod:`.atlas_command` (atlas), :mod:`.schemas` (schema); :mod:`.options` holds what they share
 (the parser, the one syntax of numbers) and :func:`~certify.cli.options.add_command`, the one way a command is
 registered (each topic's ``register(commands)`` calls it for its commands).
 
@@ -92,7 +92,8 @@ from certify.errors import Undecided, UsageError
 
 from .options import Parser, say
 
-TOPICS = ("claims", "exact", "section5", "island_command", "atlas_command", "chaos_command", "schemas")   # in the order of ``--help``
+TOPICS = ("claims", "exact", "section5", "island_command", "atlas_command", "chaos_command",
+          "schemas")   # in the order of ``--help``
 # Each command's topic: running a command imports its topic's module alone (``pattern`` does not load the
 # runner, the plots, numpy...).  tests/cli/test_cli.py checks the table against what the topics register.
 COMMANDS = {**dict.fromkeys(("all", "run", "verify", "list", "bench"), "claims"),

@@ -15,7 +15,6 @@ from certify.run import progress
 
 from .options import add_command, integer, r_grid, r_value, restitution
 
-
 MAX_COUNT = 200              # --r-range COUNT: a few seconds each
 
 

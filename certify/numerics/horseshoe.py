@@ -206,7 +206,8 @@ def covering(a: Box, b: Box, r) -> tuple[bool, str]:
     if (all(x < -1 for x in left) and all(x > 1 for x in right)) or \
             (all(x > 1 for x in left) and all(x < -1 for x in right)):
         return True, (f"|y| ≤ {float(max(abs(y) for y in ys)):.4g} < 1; exit edges at x ∈ "
-                      f"[{float(min(left)):.4g}, {float(max(left)):.4g}] and [{float(min(right)):.4g}, {float(max(right)):.4g}]")
+                      f"[{float(min(left)):.4g}, {float(max(left)):.4g}] and "
+                      f"[{float(min(right)):.4g}, {float(max(right)):.4g}]")
     return False, f"the exit edges' images at x = {[float(x) for x in left]}, {[float(x) for x in right]}"
 
 
@@ -618,7 +619,8 @@ def text_lines(doc: dict):
     s = doc["saddle"]
     yield f"chaos at r = {doc['r']}: a horseshoe, proved in exact rational arithmetic"
     yield (f"  saddle: word {s['word']} ({s['returns']} b-return(s)) at (u, v) ≈ ({s['point'][0]:.6f}, "
-           f"{s['point'][1]:.6f}), multipliers ≈ {s['multipliers'][0]:.4g}, {s['multipliers'][1]:.4g} (floats, the search)")
+           f"{s['point'][1]:.6f}), multipliers ≈ {s['multipliers'][0]:.4g}, {s['multipliers'][1]:.4g} "
+           "(floats, the search)")
     yield f"  homoclinic orbit: the unstable line reaches the stable line after {s['homoclinic_iterates']} iterates"
     yield f"  G = f^{s['returns']}; boxes N = c + [-1,1]U + [-1,1]S in the chart (u, v) of the b-section, rational:"
     for b in doc["boxes"]:
