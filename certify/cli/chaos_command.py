@@ -13,7 +13,7 @@ import time
 from certify.errors import UsageError
 from certify.run import progress
 
-from .options import add_command, integer, r_grid, r_value, restitution
+from .options import add_command, count, integer, r_grid, r_value, restitution
 
 MAX_COUNT = 200              # --r-range COUNT: a few seconds each
 
@@ -27,6 +27,8 @@ def cmd_chaos(args) -> int:
     start = time.perf_counter()
     found = horseshoe.find(args.r)
     doc = horseshoe.as_json(found, time.perf_counter() - start)
+    if args.visits and doc["certified"]:
+        doc["visits"] = horseshoe.visits(args.r, found.proof.boxes, orbits=args.visits)
     print(json.dumps(doc, indent=2, ensure_ascii=False) if args.json else "\n".join(horseshoe.text_lines(doc)))
     return 0 if doc["certified"] else 1
 
@@ -72,3 +74,6 @@ def register(commands) -> None:
     g.add_argument("--r-range", nargs=3, default=None, metavar=("LO", "HI", "COUNT"),
                    help=f"COUNT rationals from LO to HI, ends included (COUNT at most {MAX_COUNT})")
     p.add_argument("--json", action="store_true", help="print JSON (certify/schemas/chaos.schema.json)")
+    p.add_argument("--visits", type=count, default=0, metavar="N",
+                   help="also simulate N random float64 orbits and say how many enter the boxes "
+                   "(observed, not a proof; default 0: none)")

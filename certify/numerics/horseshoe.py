@@ -634,7 +634,38 @@ def text_lines(doc: dict):
     yield f"  ρ(T) ≥ {doc['rho_lower']} ≈ {float(_q(doc['rho_lower'])):.6f} (Collatz–Wielandt, exact)"
     yield f"  proved: {doc['conclusion']}"
     yield f"  note: {doc['measure']}"
+    if "visits" in doc:
+        v = doc["visits"]
+        yield (f"  visits ({v['kind']}): {v['visiting']} of {v['orbits']} random orbits enter a box within "
+               f"{v['returns']} returns; share of returns in the boxes {v['share_of_returns']:.2e}")
 
 
 def _q(text: str) -> Fraction:
     return Fraction(text)
+
+
+def visits(r, boxes: list, orbits: int = 100, returns: int = 2000, seed: int = 0) -> dict:
+    """Observed (float64, not a proof): of ``orbits`` random orbits of f (u uniform in ]−1, 1[,
+    v normal with deviation 3, seeded), how many enter some box within ``returns`` b-returns
+    (after 100 transient ones), and the share of their returns spent in the boxes."""
+    fm = FloatMap(r)
+    rng = np.random.default_rng(seed)
+    frames = [(np.array([float(z) for z in b.c]),
+               np.linalg.inv(np.column_stack([[float(z) for z in b.U], [float(z) for z in b.S]]))) for b in boxes]
+    visiting = inside = counted = 0
+    for _ in range(orbits):
+        z = np.array([rng.uniform(-1, 1), 3 * rng.normal()])
+        hit = False
+        for k in range(returns + 100):
+            z, _w = fm.step(z)
+            if z is None:
+                break
+            if k >= 100:
+                counted += 1
+                if any(np.abs(B @ (z - c)).max() <= 1 for c, B in frames):
+                    inside += 1
+                    hit = True
+        visiting += hit
+    return {"orbits": orbits, "returns": returns, "visiting": visiting,
+            "share_of_returns": inside / counted if counted else 0.0,
+            "kind": "observed (float64 orbits, not a proof)"}

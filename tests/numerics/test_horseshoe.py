@@ -125,3 +125,14 @@ def test_no_horseshoe_is_claimed_without_a_proof():
     assert H.proof is None
     doc = hs.as_json(H)
     assert doc["certified"] is False and "nothing is claimed" in doc["why"]
+
+
+def test_visits_counts_orbits_that_enter_a_box(found):
+    """A box covering the whole strip |u| < 1, |v| < 10^4 is visited by every orbit; the proof's
+    boxes are visited by few (observed)."""
+    whole = hs.Box("all", "ab", (hs.to_fmpq(0), hs.to_fmpq(0)), (hs.to_fmpq(1), hs.to_fmpq(0)),
+                   (hs.to_fmpq(0), hs.to_fmpq(10**4)))
+    v = hs.visits(R, [whole], orbits=3, returns=50)
+    assert v["visiting"] == 3 and v["share_of_returns"] > 0.99
+    few = hs.visits(R, found.proof.boxes, orbits=3, returns=50)
+    assert 0 <= few["visiting"] <= 3 and "observed" in few["kind"]
