@@ -24,11 +24,21 @@ def cmd_chaos(args) -> int:
     from certify.numerics import horseshoe
     if args.r_range is not None:
         return sweep(args, horseshoe)
+    if args.figure is not None:
+        from pathlib import Path
+
+        from certify.run.files import ensure_writable
+        if Path(args.figure).is_dir():
+            raise UsageError(f"--figure {args.figure!r} is a directory, not a file")
+        ensure_writable(Path(args.figure).parent if str(Path(args.figure).parent) else Path("."))
     start = time.perf_counter()
     found = horseshoe.find(args.r)
     doc = horseshoe.as_json(found, time.perf_counter() - start)
     if args.visits and doc["certified"]:
         doc["visits"] = horseshoe.visits(args.r, found.proof.boxes, orbits=args.visits)
+    if args.figure is not None and doc["certified"]:
+        from certify.run import horseshoe_figure
+        horseshoe_figure.horseshoe_figure(args.figure, found)
     print(json.dumps(doc, indent=2, ensure_ascii=False) if args.json else "\n".join(horseshoe.text_lines(doc)))
     return 0 if doc["certified"] else 1
 
@@ -74,6 +84,8 @@ def register(commands) -> None:
     g.add_argument("--r-range", nargs=3, default=None, metavar=("LO", "HI", "COUNT"),
                    help=f"COUNT rationals from LO to HI, ends included (COUNT at most {MAX_COUNT})")
     p.add_argument("--json", action="store_true", help="print JSON (certify/schemas/chaos.schema.json)")
+    p.add_argument("--figure", default=None, metavar="PATH",
+                   help="also draw the boxes on the b-section and each covering relation into PATH (PNG)")
     p.add_argument("--visits", type=count, default=0, metavar="N",
                    help="also simulate N random float64 orbits and say how many enter the boxes "
                    "(observed, not a proof; default 0: none)")

@@ -56,3 +56,10 @@ def test_a_broken_record_does_not_validate(schema):
 def test_bad_input_is_one_line_and_exit_2(capsys, argv):
     code, out, err = run(capsys, *argv)
     assert code == 2 and out == "" and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+
+
+def test_figure_is_a_png_and_a_directory_is_refused(capsys, tmp_path):
+    code, _, _ = run(capsys, "--r", "9/100", "--figure", str(tmp_path / "h.png"))
+    assert code == 0 and (tmp_path / "h.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    code, out, err = run(capsys, "--r", "9/100", "--figure", str(tmp_path))
+    assert code == 2 and "is a directory" in err and out == ""
