@@ -472,9 +472,10 @@ def _preimage_on_line(s: Saddle, t: float, j: int) -> float:
     return float(np.dot(z - s.p, s.eu))
 
 
-def _rational(x: float) -> flint.fmpq:
-    """The float x exactly, as a rational (a dyadic)."""
-    f = Fraction(float(x))
+def _rational(x: float, decimals: int) -> flint.fmpq:
+    """The float x rounded to ``decimals`` decimals, as an exact rational (a short decimal: the boxes
+    read as printed; the proof decides the rounded boxes)."""
+    f = Fraction(f"{float(x):.{decimals}f}")
     return flint.fmpq(f.numerator, f.denominator)
 
 
@@ -530,8 +531,12 @@ def chain(fm: FloatMap, s: Saddle, h: Homoclinic, back: int, forward: int, alpha
     heights = [H[j] * Sh ** ((j + 1) / (L + 2)) for j in range(L + 1)]
 
     def box(name, word, c, U, S):
-        return Box(name, word, tuple(_rational(x) for x in c), tuple(_rational(x) for x in U),
-                   tuple(_rational(x) for x in S))
+        scale = min(float(np.linalg.norm(U)), float(np.linalg.norm(S)))
+        if not scale > 0:
+            return Box(name, word, (flint.fmpq(0),) * 2, (flint.fmpq(0),) * 2, (flint.fmpq(0),) * 2)
+        d = max(8, 6 - math.floor(math.log10(scale)))      # 10^-6 of the box's smaller side
+        return Box(name, word, tuple(_rational(x, d) for x in c), tuple(_rational(x, d) for x in U),
+                   tuple(_rational(x, d) for x in S))
     boxes = [box("N0", s.word, s.p, w0 * s.eu, h0 * s.es)]
     boxes += [box(f"B{j}", words[j], q[j], widths[j] * eu[j], heights[j] * es[j]) for j in range(L + 1)]
     edges = [(0, 0), (0, 1)] + [(j, j + 1) for j in range(1, L + 1)] + [(L + 1, 0)]
@@ -669,3 +674,20 @@ def visits(r, boxes: list, orbits: int = 100, returns: int = 2000, seed: int = 0
     return {"orbits": orbits, "returns": returns, "visiting": visiting,
             "share_of_returns": inside / counted if counted else 0.0,
             "kind": "observed (float64 orbits, not a proof)"}
+
+
+def facts(P: Proof) -> list[tuple[str, str, bool, object]]:
+    """The proof's facts in the order of the statements N8.2, N8.3, ... (one per box in its branch,
+    one per covering relation, one per box for its disjointness from the later boxes, the
+    Collatz–Wielandt bound): (kind, text, holds, what: a box index, an edge (i, j) or None)."""
+    out: list[tuple[str, str, bool, object]] = []
+    for n, b in enumerate(P.boxes):
+        out.append(("branch", f"{b.name} lies in the branch of {b.word}", P.in_branch[b.name][0], n))
+    for (i, j), (holds, _) in P.covers.items():
+        out.append(("cover", f"{P.boxes[i].name} ⇒ {P.boxes[j].name}", holds, (i, j)))
+    for n, a in enumerate(P.boxes[:-1]):
+        later = P.boxes[n + 1:]
+        out.append(("disjoint", f"{a.name} is disjoint from {', '.join(b.name for b in later)}",
+                    all(separated(a, b) for b in later), n))
+    out.append(("beta", f"ρ(T) ≥ {P.beta} > 1 (Collatz–Wielandt)", P.beta is not None and P.beta > 1, None))
+    return out
