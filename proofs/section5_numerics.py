@@ -648,7 +648,7 @@ def window_resonance_explanation() -> list:
                              for w, side, d, (p, q) in found)], counts=False)]
 
 
-# N8: the paper's "apparent chaos", proved at two r by horseshoes (ours)
+# N2.7: the paper's "apparent chaos", proved at two r by horseshoes (ours)
 
 CHAOS_R = ("11/100", "9/100")          # in the gaps ]0.1010, 0.1275[ and ]0.0864, 0.0945[ between stability windows
 
@@ -666,40 +666,40 @@ def exact_r(text: str):
     return Q(f.numerator, f.denominator)
 
 
-PRINTED_N8 = dict(chaos="This could suggest a chaotic behaviour", windows="windows of apparent chaos",
-                  r="11/100", entropy="0.11")
+CHAOS_ENTROPY = "0.11"        # ours: the lower bound of the entropy claimed at r = 11/100 (statement N2.7.1)
+PRINTED_N2_7 = dict(chaos="This could suggest a chaotic behaviour", windows="windows of apparent chaos")
 
 
-@certificate("N8", needs=("horseshoes",), printed=PRINTED_N8, expect=PASS,
-             mutants=[overridden({"r": "9/10"}, "an r where no horseshoe is found"),
-                      overridden({"entropy": "0.2"}, "an entropy bound the horseshoe does not give"),
-                      replaced("chaos", "chaotic", "periodic", "the suggestion reworded")])
-def chaos_proved(horseshoes, chaos, windows, r, entropy):
-    """At r = 11/100 (the boxes of statements N8.2-N8.5, decided again by the kernel from its own
+@certificate("N2.7", needs=("horseshoes",), printed=PRINTED_N2_7, expect=PASS,
+             mutants=[replaced("chaos", "chaotic", "periodic", "the suggestion reworded"),
+                      replaced("windows", "apparent chaos", "apparent order", "the windows reworded")])
+def chaos_proved(horseshoes, chaos, windows):
+    """At r = 11/100 (the boxes of statements N2.7.2-N2.7.23, decided again by the kernel from its own
     collision matrices) and at r = 9/100: a horseshoe of the b-to-b map, each box in one branch,
     each covering relation, disjoint boxes and ρ(T) ≥ β > 1 decided in rationals
-    (certify/numerics/horseshoe.py, docs/chaos.md); the conclusion (Zgliczyński–Gidea) is N8.1."""
-    H = horseshoes.get(r) or F.horseshoe.find(exact_r(r))
+    (certify/numerics/horseshoe.py, docs/chaos.md); the conclusion (Zgliczyński–Gidea) is N2.7.1."""
+    r = CHAOS_R[0]
+    H = horseshoes[r]
     P = H.proof
     proved = P is not None and P.holds
     boxes = [] if P is None else [f"{b.name}: word {b.word}, centre ({b.c[0]}, {b.c[1]}), "
                                   f"U = ({b.U[0]}, {b.U[1]}), S = ({b.S[0]}, {b.S[1]})" for b in P.boxes]
-    bound_ok = proved and float(P.entropy) >= float(exact_r(entropy))
+    bound_ok = proved and float(P.entropy) >= float(exact_r(CHAOS_ENTROPY))
     checks = [
-        Check(f"l. 1084: \"{chaos}\"; l. 1086: \"{windows}\": proved at r = {r}: a horseshoe of the b-to-b map, "
-              f"topological entropy ≥ {P.entropy if proved else '?'} ≥ {entropy} on a compact invariant set, periodic "
-              "orbits of infinitely many periods (Zgliczyński–Gidea's theorem on the covering relations below)",
-              proved and "chaotic" in chaos and "chaos" in windows and bound_ok,
+        Check(f"l. 1084: \"{chaos}\": proved at r = {r}: a horseshoe of the b-to-b map, topological entropy ≥ "
+              f"{P.entropy if proved else '?'} ≥ {CHAOS_ENTROPY} on a compact invariant set, periodic orbits of "
+              "infinitely many periods (Zgliczyński–Gidea's theorem on the covering relations below)",
+              proved and "chaotic" in chaos and bound_ok,
               [f"saddle {H.saddle} ({P.k if P else '?'} b-returns), T = {P.T if P else '?'}, ρ(T) ≥ {P.beta if P else '?'}"]
-              + boxes, ref="N8.1")]
+              + boxes, ref="N2.7.1"),
+        Check(f"l. 1086: \"{windows}\": chaos proved in the gaps between the stability windows, at r = "
+              + " and ".join(CHAOS_R), "chaos" in windows and all(G.proof is not None and G.proof.holds
+                                                                   for G in horseshoes.values()),
+              [f"r = {x}: saddle {G.saddle}, entropy ≥ {G.proof.entropy if G.proof else '?'}"
+               for x, G in horseshoes.items()])]
     if P is not None:
-        checks += [Check(f"r = {r}: {text}", holds, [], ref=f"N8.{k}")
+        checks += [Check(f"r = {r}: {text}", holds, [], ref=f"N2.7.{k}")
                    for k, (_, text, holds, _) in enumerate(F.horseshoe.facts(P), 2)]
-    for other, G in horseshoes.items():
-        if other != r:
-            ok = G.proof is not None and G.proof.holds
-            checks.append(Check(f"also at r = {other}: a horseshoe, entropy ≥ {G.proof.entropy if ok else '?'}", ok,
-                                [f"saddle {G.saddle}, {len(G.proof.boxes) if ok else 0} boxes"]))
     note = ("Chaos is proved on a horseshoe, a set of measure zero: this says nothing of a given orbit the simulator "
             "calls unresolved.  `python -m certify chaos --r 11/100`, docs/chaos.md.")
     return conclude(checks, note=note)

@@ -677,7 +677,7 @@ def visits(r, boxes: list, orbits: int = 100, returns: int = 2000, seed: int = 0
 
 
 def facts(P: Proof) -> list[tuple[str, str, bool, object]]:
-    """The proof's facts in the order of the statements N8.2, N8.3, ... (one per box in its branch,
+    """The proof's facts in the order of the statements N2.7.2, N2.7.3, ... (one per box in its branch,
     one per covering relation, one per box for its disjointness from the later boxes, the
     Collatz–Wielandt bound): (kind, text, holds, what: a box index, an edge (i, j) or None)."""
     out: list[tuple[str, str, bool, object]] = []

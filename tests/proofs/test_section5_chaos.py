@@ -1,6 +1,6 @@
-"""N8 (ours): the horseshoe at r = 11/100 as statements of statements/5_numerics.txt, decided by the
+"""N2.7 (ours): the horseshoe at r = 11/100 as statements of statements/5_numerics.txt, decided by the
 kernel from its own collision matrices.  The committed block is the one tools/chaos_statements.py
-writes from the boxes the engine proves today; the kernel verifies it from a run of N8; a statement
+writes from the boxes the engine proves today; the kernel verifies it from a run of N2.7; a statement
 file whose box is moved out of its branch, or whose target box is moved off the image, is refused."""
 from __future__ import annotations
 
@@ -29,7 +29,7 @@ def tool():
 @pytest.fixture(scope="module")
 def run_n8(tmp_path_factory):
     out = tmp_path_factory.mktemp("n8")
-    done = subprocess.run([sys.executable, "-m", "certify", "run", "N8", "--out", str(out)], cwd=ROOT,
+    done = subprocess.run([sys.executable, "-m", "certify", "run", "N2.7", "--out", str(out)], cwd=ROOT,
                           capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     return out / "certificates.json"
@@ -37,7 +37,7 @@ def run_n8(tmp_path_factory):
 
 def kernel(certificates: Path, statements: Path) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, "-m", "certify_kernel", str(certificates), "--statements", str(statements),
-                           "--only", "N8", "--jobs", "1"], cwd=ROOT, capture_output=True, text=True)
+                           "--only", "N2.7", "--jobs", "1"], cwd=ROOT, capture_output=True, text=True)
 
 
 def test_the_committed_statements_are_the_boxes_the_engine_proves():
@@ -52,7 +52,7 @@ def test_the_kernel_verifies_every_formal_statement_of_n8(run_n8):
     done = kernel(run_n8, STATEMENTS)
     assert done.returncode == 0, done.stdout + done.stderr
     n = len(hs.facts(hs.find(tool().R).proof))
-    assert f"{n}/{n + 1} statements verified" in done.stdout       # N8.1 (the theorem) is not formalised
+    assert f"{n}/{n + 1} statements verified" in done.stdout       # N2.7.1 (the theorem) is not formalised
 
 
 def forged(tmp_path: Path, old: str, new: str) -> Path:
@@ -69,7 +69,7 @@ def test_a_box_vertex_moved_out_of_its_branch_is_refused_by_the_kernel(run_n8, t
     text = (STATEMENTS / "5_numerics.txt").read_text(encoding="utf-8")
     line = re.search(r"^let ch_B2_1 = \(.*\)$", text, re.M).group(0)
     done = kernel(run_n8, forged(tmp_path, line, "let ch_B2_1 = (-0.5, 40, 1.5)"))
-    assert done.returncode == 1 and "N8" in done.stdout and "FAILED" in done.stdout
+    assert done.returncode == 1 and "N2.7" in done.stdout and "FAILED" in done.stdout
 
 
 def test_a_target_box_moved_off_the_image_is_refused_by_the_kernel(run_n8, tmp_path):
