@@ -646,3 +646,60 @@ def window_resonance_explanation() -> list:
                   bool(closing) and closing <= named,
                   [", ".join(f"{by.get(w, w)}: {'upper' if side == 'hi' else 'lower'} end ≈ {d}, ρ = {p}/{q}"
                              for w, side, d, (p, q) in found)], counts=False)]
+
+
+# N2.7: the paper's "apparent chaos", proved at two r by horseshoes (ours)
+
+CHAOS_R = ("11/100", "9/100")          # in the gaps ]0.1010, 0.1275[ and ]0.0864, 0.0945[ between stability windows
+
+
+@quantity("horseshoes")
+def horseshoes():
+    """The horseshoe ``certify chaos`` proves at each r of CHAOS_R (None where none is found)."""
+    return {text: F.horseshoe.find(exact_r(text)) for text in CHAOS_R}
+
+
+def exact_r(text: str):
+    """The exact rational of a printed r ("11/100")."""
+    from fractions import Fraction
+    f = Fraction(text)
+    return Q(f.numerator, f.denominator)
+
+
+CHAOS_ENTROPY = "0.11"        # ours: the lower bound of the entropy claimed at r = 11/100 (statement N2.7.1)
+PRINTED_N2_7 = dict(chaos="This could suggest a chaotic behaviour", windows="windows of apparent chaos")
+
+
+@certificate("N2.7", needs=("horseshoes",), printed=PRINTED_N2_7, expect=PASS,
+             mutants=[replaced("chaos", "chaotic", "periodic", "the suggestion reworded"),
+                      replaced("windows", "apparent chaos", "apparent order", "the windows reworded")])
+def chaos_proved(horseshoes, chaos, windows):
+    """At r = 11/100 (the boxes of statements N2.7.2-N2.7.23, decided again by the kernel from its own
+    collision matrices) and at r = 9/100: a horseshoe of the b-to-b map, each box in one branch,
+    each covering relation, disjoint boxes and ρ(T) ≥ β > 1 decided in rationals
+    (certify/numerics/horseshoe.py, docs/chaos.md); the conclusion (Zgliczyński–Gidea) is N2.7.1."""
+    r = CHAOS_R[0]
+    H = horseshoes[r]
+    P = H.proof
+    proved = P is not None and P.holds
+    boxes = [] if P is None else [f"{b.name}: word {b.word}, centre ({b.c[0]}, {b.c[1]}), "
+                                  f"U = ({b.U[0]}, {b.U[1]}), S = ({b.S[0]}, {b.S[1]})" for b in P.boxes]
+    bound_ok = proved and float(P.entropy) >= float(exact_r(CHAOS_ENTROPY))
+    checks = [
+        Check(f"l. 1084: \"{chaos}\": proved at r = {r}: a horseshoe of the b-to-b map, topological entropy ≥ "
+              f"{P.entropy if proved else '?'} ≥ {CHAOS_ENTROPY} on a compact invariant set, periodic orbits of "
+              "infinitely many periods (Zgliczyński–Gidea's theorem on the covering relations below)",
+              proved and "chaotic" in chaos and bound_ok,
+              [f"saddle {H.saddle} ({P.k if P else '?'} b-returns), T = {P.T if P else '?'}, ρ(T) ≥ {P.beta if P else '?'}"]
+              + boxes, ref="N2.7.1"),
+        Check(f"l. 1086: \"{windows}\": chaos proved in the gaps between the stability windows, at r = "
+              + " and ".join(CHAOS_R), "chaos" in windows and all(G.proof is not None and G.proof.holds
+                                                                   for G in horseshoes.values()),
+              [f"r = {x}: saddle {G.saddle}, entropy ≥ {G.proof.entropy if G.proof else '?'}"
+               for x, G in horseshoes.items()])]
+    if P is not None:
+        checks += [Check(f"r = {r}: {text}", holds, [], ref=f"N2.7.{k}")
+                   for k, (_, text, holds, _) in enumerate(F.horseshoe.facts(P), 2)]
+    note = ("Chaos is proved on a horseshoe, a set of measure zero: this says nothing of a given orbit the simulator "
+            "calls unresolved.  `python -m certify chaos --r 11/100`, docs/chaos.md.")
+    return conclude(checks, note=note)

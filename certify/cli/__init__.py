@@ -60,12 +60,14 @@
     stress [--out FILE] [--quick] [--jobs N] [--force]
                                 near-singular, long and 1000 random orbits on every
                                 engine against the certified one: reports/STRESS.md
+    chaos --r R [--json]        a horseshoe of the b-to-b map at r, proved by covering
+                                relations in rationals (certify.numerics.horseshoe)
     schema [NAME] [--validate FILE]
                                 the JSON Schema of every JSON output; check a file
 
 The commands by topic: :mod:`.claims` (all, run, list, bench), :mod:`.exact` (census,
 pattern, orbit, particles), :mod:`.section5` (simulate, identify, stress, figures),
-:mod:`.island_command` (island),
+:mod:`.island_command` (island), :mod:`.chaos_command` (chaos),
 :mod:`.atlas_command` (atlas), :mod:`.schemas` (schema); :mod:`.options` holds what they share
 (the parser, the one syntax of numbers) and :func:`~certify.cli.options.add_command`, the one way a command is
 registered (each topic's ``register(commands)`` calls it for its commands).
@@ -90,13 +92,14 @@ from certify.errors import Undecided, UsageError
 
 from .options import Parser, clip, say
 
-TOPICS = ("claims", "exact", "section5", "island_command", "atlas_command", "schemas")   # in the order of ``--help``
+TOPICS = ("claims", "exact", "section5", "island_command", "atlas_command", "chaos_command",
+          "schemas")   # in the order of ``--help``
 # Each command's topic: running a command imports its topic's module alone (``pattern`` does not load the
 # runner, the plots, numpy...).  tests/cli/test_cli.py checks the table against what the topics register.
 COMMANDS = {**dict.fromkeys(("all", "run", "verify", "list", "bench"), "claims"),
             **dict.fromkeys(("census", "pattern", "family", "orbit", "particles"), "exact"),
             **dict.fromkeys(("simulate", "identify", "stress", "figures"), "section5"),
-            "island": "island_command", "atlas": "atlas_command", "schema": "schemas"}
+            "island": "island_command", "atlas": "atlas_command", "chaos": "chaos_command", "schema": "schemas"}
 EXIT_CODES = {0: "all PASS/ERRATUM/OBSERVED", 1: "a FAIL or a stale report", 2: "usage error",
               3: "internal error or undecided", 130: "interrupted"}
 

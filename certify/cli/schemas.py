@@ -26,7 +26,7 @@ WRITERS = {"pattern": "certify pattern WORD --json", "orbit": "certify orbit WOR
            "numerics-n4": "certify figures --n4 NMAX: reports/numerics-n4.json",
            "identify": "certify identify --json", "section5-orbits": "certify identify --section5: "
            "reports/section5-orbits.json", "island": "certify island --json",
-           "atlas": "certify atlas: DIR/atlas.json",
+           "atlas": "certify atlas: DIR/atlas.json", "chaos": "certify chaos --r R --json",
            "family-window": "certify pattern '(ab)^n(cb)^n' --json for n > 30 (the theorem's window)",
            "certificates": "certify all: reports/certificates.json, read by python3 -m certify_kernel"}
 

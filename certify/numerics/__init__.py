@@ -13,8 +13,9 @@ billiard reduction (Section 5 of the paper), from collision to collision, in flo
 - :mod:`.experiments`: N3-N7 read off the runs, the N4 search, the findings' numbers.
 - :mod:`.stress`: near-singular, long and random orbits against the ball engine.
 - :mod:`.trapping`: certified trapping ellipses of attracting periodic orbits of the reduction.
+- :mod:`.horseshoe`: horseshoes of the b-to-b map proved by covering relations (``certify chaos``).
 """
-from . import experiments, figures, limits, stress, thresholds
+from . import experiments, figures, horseshoe, limits, stress, thresholds
 from .engines import ENGINES, OrbitResult, run_orbit
 from .experiments import (
                           N4_DEFAULT,
@@ -56,7 +57,7 @@ from .rules import BREAKS, COMPLETED, CORNER, HORIZON, NONFINITE, SHORT_STEP, UN
 from .thresholds import N_LINES, R_CRIT, digits_for, min_component, r_exist, r_max, red_lines, upper_threshold
 
 __all__ = [
-    "experiments", "figures", "limits", "stress", "thresholds",
+    "experiments", "figures", "horseshoe", "limits", "stress", "thresholds",
     "ENGINES", "OrbitResult", "run_orbit",
     "N4_DEFAULT", "findings", "is_rotation", "n3_stats", "n3_window_probes", "n4_search", "n4_window", "summary",
     "windows_of",
