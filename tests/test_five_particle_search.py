@@ -49,3 +49,29 @@ def test_words_are_classes():
     ws = list(search.words(6, 5))
     assert len(ws) == len(set(ws)) and all(set(w) == set("abcd") for w in ws)
     assert all(search.canonical(w, "abcd") == w for w in ws)
+
+
+@pytest.mark.parametrize("word, r, particles", [("abadcbcabc", 0.26, 5), ("ababcbcb", 0.15, 4)])
+def test_the_plane_is_the_dominant_eigenvector_of_the_second_compound(word, r, particles):
+    """Where the datum is stable, κ = λμ is the strictly dominant eigenvalue of Λ²M_w and its eigenvector
+    is the plane Span(p(0), q(0)): contracted with the last face's coordinate it gives p(0) (one algebraic
+    function κ of r carries the datum: the route of a five-particle certify pattern, docs/particles.md)."""
+    import itertools
+
+    import numpy as np
+    gaps = particles - 1
+    (lam, mu, stable), = [d for d in search.data(word, r, particles) if d[2]]
+    M = search.period_matrix(word, gaps, r)
+    pairs = list(itertools.combinations(range(gaps), 2))
+    W = np.array([[M[i, k] * M[j, m] - M[i, m] * M[j, k] for (k, m) in pairs] for (i, j) in pairs])
+    ev, V = np.linalg.eig(W)
+    order = np.argsort(-abs(ev))
+    assert abs(ev[order[0]] - lam * mu) < 1e-12 and abs(ev[order[1]]) < abs(ev[order[0]]) * (1 - 1e-3)
+    B = np.zeros((gaps, gaps))
+    for (i, j), b in zip(pairs, V[:, order[0]].real):
+        B[i, j], B[j, i] = b, -b
+    Y = "abcd".index(word[-1])
+    ew, U = np.linalg.eig(M)
+    q0, e = U[:, np.argmin(abs(ew - lam))].real, U[:, np.argmin(abs(ew - mu))].real
+    p0 = e[Y] * q0 - q0[Y] * e
+    assert np.allclose(B[:, Y] / B[0, Y], p0 / p0[0], rtol=1e-9)
