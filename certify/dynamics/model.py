@@ -6,6 +6,11 @@ q_i = v_{i+1} - v_i (i = 1, 2, 3), a collision of type a, b, c (pairs 1-2, 2-3, 
 maps q to A q, B q, C q (:func:`collide`, the printed matrices).  A word
 w = c_1 c_2 ... c_n (collisions in time order) has the matrix
 M_w = K_{c_n} ... K_{c_1}; for ababcb, M = BCBABA.
+
+N particles (beyond the paper, issue 39): the pair i, i+1 is the i-th letter of
+a, b, c, d, ... (:func:`alphabet`); on the N - 1 gaps its collision matrix is
+K_i = I + w_i e_iᵀ, w_i = h e_{i-1} - (1 + r) e_i + h e_{i+1} (:func:`collide_gaps`), the
+law of :func:`collide_particles` read on the differences, and A, B, C for N = 4.
 """
 from __future__ import annotations
 
@@ -21,6 +26,41 @@ from certify.errors import UsageError
 LETTERS = "abc"
 INDEX = {"a": 0, "b": 1, "c": 2}          # the component p_i that vanishes at the collision
 NEXT = ((1, 2), (2, 0), (0, 1))      # the other two indices of a contact i: (i + 1, i + 2) mod 3
+LETTERS_N = "abcdefghijklmnopqrstuvwxyz"   # the pairs 1-2, 2-3, ... of N <= 27 particles
+
+
+def alphabet(particles: int) -> str:
+    """The letters of the N - 1 pairs of N particles: a (1-2), b (2-3), ...; "abc" for four."""
+    if isinstance(particles, bool) or not isinstance(particles, int) or not 3 <= particles <= len(LETTERS_N) + 1:
+        raise UsageError(f"the number of particles must be an integer from 3 to {len(LETTERS_N) + 1}, "
+                         f"got {particles!r}")
+    return LETTERS_N[:particles - 1]
+
+
+def particles_of(word: str) -> int:
+    """N given by the alphabet of a word: one more than the pairs its last letter needs, at
+    least four (a word over a, b, c is one of the paper's four particles; d gives five)."""
+    return max(4, max(LETTERS_N.index(L) for L in word) + 2)
+
+
+def collide_gaps(letter: str, q, rr=r) -> tuple:
+    """K_i q for the pair i of ``letter`` among N = len(q) + 1 particles (q the relative
+    velocities of the N - 1 gaps), in any ring holding r and q: K_i = I + w_i e_iᵀ with
+    w_i = h e_{i-1} - (1 + r) e_i + h e_{i+1}, h = (1 + r)/2 (the entries of w_i outside
+    the gaps dropped): q_i -> -r q_i, q_{i±1} -> q_{i±1} + h q_i, the others kept.
+    For four particles it is :func:`collide` (A, B, C); tests/dynamics/test_n_particles.py
+    checks it against the exact N-particle simulation, collision by collision."""
+    i = LETTERS_N.find(letter) if len(letter) == 1 else -1
+    if not 0 <= i < len(q):
+        raise ValueError(f"unknown collision {letter!r} among {len(q) + 1} particles")
+    h = (1 + rr) / 2
+    out = list(q)
+    out[i] = -rr * q[i]
+    if i > 0:
+        out[i - 1] = q[i - 1] + h * q[i]
+    if i + 1 < len(q):
+        out[i + 1] = q[i + 1] + h * q[i]
+    return tuple(out)
 
 
 def collide(letter: str, q, rr=r) -> tuple:
@@ -55,7 +95,8 @@ def collide_integral(letter: str, q, rr) -> tuple:
 
 def collide_particles(letter: str, v, rr=r) -> tuple:
     """The collision law (l. 158-163) on the velocities v = (v1, v2, v3, v4) of the
-    particles, equal masses: the pair i, i+1 of ``letter`` (a: 1-2, b: 2-3, c: 3-4)
+    particles (or of N = len(v) particles, the pairs of :func:`alphabet`),
+    equal masses: the pair i, i+1 of ``letter`` (a: 1-2, b: 2-3, c: 3-4, d: 4-5, ...)
     keeps its momentum v_i + v_{i+1}, its relative velocity v_{i+1} - v_i becomes
     -r (v_{i+1} - v_i), the other particles keep their velocities.  With h = (1 + r)/2:
     v_i' = v_i + h (v_{i+1} - v_i),  v_{i+1}' = v_{i+1} - h (v_{i+1} - v_i).
@@ -64,9 +105,9 @@ def collide_particles(letter: str, v, rr=r) -> tuple:
     printed A, B, C), not derived from it: that the differences of this law are A, B, C
     (l. 208-232) is a check (tests/dynamics/test_particles.py), and the two simulators built on
     them (certify.dynamics.particles, certify.dynamics.simulate) cross-check each other."""
-    if letter not in INDEX:
+    i = LETTERS_N.find(letter) if len(letter) == 1 else -1
+    if not 0 <= i < len(v) - 1:
         raise ValueError(f"unknown collision {letter!r}")
-    i = INDEX[letter]
     d = (1 + rr) / 2 * (v[i + 1] - v[i])
     w = list(v)
     w[i], w[i + 1] = v[i] + d, v[i + 1] - d
@@ -82,11 +123,14 @@ def collision_matrix(letter: str, rr=r) -> sp.Matrix:
 A, B, C = (collision_matrix(k) for k in LETTERS)
 
 
-def check_word(word: str) -> str:
-    """A collision word over a, b, c, with no letter repeated consecutively
-    (cyclically, as the word is a period); raise UsageError otherwise."""
-    if not isinstance(word, str) or not re.fullmatch(r"[abc]+", word or ""):
-        raise UsageError(f"invalid pattern word {word!r}: use the letters a, b, c")
+def check_word(word: str, particles: int = 4) -> str:
+    """A collision word over a, b, c (the letters of :func:`alphabet` for ``particles``), with
+    no letter repeated consecutively (cyclically, as the word is a period); raise
+    UsageError otherwise."""
+    letters = alphabet(particles)
+    if not isinstance(word, str) or not re.fullmatch(f"[{letters}]+", word or ""):
+        raise UsageError(f"invalid pattern word {word!r}: use the letters {', '.join(letters)}"
+                         + ("" if particles == 4 else f" ({particles} particles)"))
     if len(word) < 2 or any(x == y for x, y in zip(word, word[1:] + word[0])):
         raise UsageError(f"invalid pattern word {word!r}: the same pair cannot collide twice in a row")
     return word
@@ -168,7 +212,7 @@ def factor_lr(e) -> sp.Expr:
 
 
 def charpoly_flint(M) -> sp.Expr:
-    """det(λI - M) for a 2x2 or 3x3 matrix of python-flint polynomials in r, as the
+    """det(λI - M) for a square matrix of python-flint polynomials in r, as the
     expanded SymPy expression (equal to ``sp.expand(Matrix.charpoly(λ).as_expr())``)."""
     coeffs = charpoly_coefficients(M)
     n = len(coeffs) - 1
@@ -199,7 +243,8 @@ def det3(rows):
 
 def charpoly_coefficients(M) -> list:
     """The coefficients of det(λI - M), highest power of λ first, as python-flint
-    polynomials in r (M a 2x2 or 3x3 matrix of them)."""
+    polynomials in r (M a square matrix of them; n x n for n >= 4 by
+    :func:`faddeev_leverrier`)."""
     n = len(M)
     one = flint.fmpq_poly([1])
     if n == 2:
@@ -209,8 +254,26 @@ def charpoly_coefficients(M) -> list:
         det = det3(M)
         minors = (a * e - b * d) + (a * i - c * g) + (e * i - f * h)
         coeffs = [one, -(a + e + i), minors, -det]
+    elif n >= 4 and all(len(row) == n for row in M):
+        coeffs = faddeev_leverrier(M)
     else:
-        raise ValueError("a 2x2 or 3x3 matrix")
+        raise ValueError("a square matrix of size at least 2")
+    return coeffs
+
+
+def faddeev_leverrier(M) -> list:
+    """The coefficients 1, c_1, ..., c_n of det(λI - M) = λ^n + c_1 λ^(n-1) + ... + c_n for
+    an n x n matrix of python-flint polynomials in r, exactly, by the Faddeev-LeVerrier
+    recursion over Q[r]: N_1 = I, c_k = -tr(M N_k)/k, N_(k+1) = M N_k + c_k I."""
+    n = len(M)
+    one, zero = flint.fmpq_poly([1]), flint.fmpq_poly([])
+    N = [[one if i == j else zero for j in range(n)] for i in range(n)]
+    coeffs = [one]
+    for k in range(1, n + 1):
+        MN = [[sum((M[i][m] * N[m][j] for m in range(n)), zero) for j in range(n)] for i in range(n)]
+        c = -sum((MN[i][i] for i in range(n)), zero) / k
+        coeffs.append(c)
+        N = [[MN[i][j] + c if i == j else MN[i][j] for j in range(n)] for i in range(n)]
     return coeffs
 
 

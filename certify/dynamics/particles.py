@@ -37,7 +37,7 @@ from certify.algebra.poly import Q, to_fmpq
 from certify.errors import UsageError
 
 from . import simulate as sim
-from .model import collide_particles
+from .model import alphabet, collide_particles
 
 NUMBER = re.compile(r"[+-]?(\d+(/\d+)?|\d+\.\d*|\.\d+)")
 PROGRESS_STEPS = 200          # at most this many progress reports per run
@@ -68,22 +68,32 @@ def check_r(value) -> flint.fmpq:
     return r
 
 
-def check_four(values, name: str) -> tuple:
-    """Exactly four rationals name1..name4; UsageError otherwise."""
+COUNTS = {3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
+
+
+def count_word(n: int) -> str:
+    """"four", "five", ... (digits beyond eight)."""
+    return COUNTS.get(n, str(n))
+
+
+def check_four(values, name: str, count: int = 4) -> tuple:
+    """Exactly four (``count``) rationals name1..name4; UsageError otherwise."""
     if isinstance(values, (str, bytes)) or not isinstance(values, Sequence):
-        raise UsageError(f"{name} must be a sequence of four numbers, got {values!r}")
-    if len(values) != 4:
-        raise UsageError(f"expected four values {name}1 {name}2 {name}3 {name}4, got {len(values)}")
+        raise UsageError(f"{name} must be a sequence of {count_word(count)} numbers, got {values!r}")
+    if len(values) != count:
+        names = " ".join(f"{name}{i}" for i in range(1, count + 1)) if count <= 8 else f"{name}1 ... {name}{count}"
+        raise UsageError(f"expected {count_word(count)} values {names}, got {len(values)}")
     return tuple(rational(z, f"{name}{i}") for i, z in enumerate(values, 1))
 
 
-def check_positions(values) -> tuple:
-    """Four positions, ordered x1 <= x2 <= x3 <= x4 (the particles are labelled from
-    left to right, l. 150); UsageError otherwise."""
-    x = check_four(values, "x")
-    for i in range(3):
+def check_positions(values, count: int = 4) -> tuple:
+    """Four (``count``) positions, ordered x1 <= x2 <= x3 <= x4 (the particles are labelled
+    from left to right, l. 150); UsageError otherwise."""
+    x = check_four(values, "x", count)
+    for i in range(count - 1):
         if x[i] > x[i + 1]:
-            raise UsageError(f"the positions must satisfy x1 <= x2 <= x3 <= x4 (particles "
+            order = " <= ".join(f"x{k}" for k in range(1, count + 1)) if count <= 8 else "x1 <= x2 <= ..."
+            raise UsageError(f"the positions must satisfy {order} (particles "
                              f"labelled left to right): x{i + 1} = {x[i]} > x{i + 2} = {x[i + 1]}")
     return x
 
@@ -142,8 +152,8 @@ class History:
 
 
 def differences(z: Sequence) -> tuple:
-    """(z2 - z1, z3 - z2, z4 - z3): p from x, q from v."""
-    return tuple(z[i + 1] - z[i] for i in range(3))
+    """(z2 - z1, z3 - z2, z4 - z3) (and on for N particles): p from x, q from v."""
+    return tuple(z[i + 1] - z[i] for i in range(len(z) - 1))
 
 
 def advance(x: Sequence, v: Sequence, dt) -> tuple:
@@ -152,9 +162,11 @@ def advance(x: Sequence, v: Sequence, dt) -> tuple:
 
 
 def evolve(x, v, r, collisions: int,
-             progress: Callable[[int, int, str], None] | None = None) -> History:
+             progress: Callable[[int, int, str], None] | None = None, particles: int = 4) -> History:
     """At most ``collisions`` collision events from the positions x and velocities v
-    (four exact rationals each, x ordered), restitution coefficient r in ]0, 1[.
+    (four exact rationals each, x ordered; ``particles`` of them for N particles, the pairs
+    a, b, c, d, ... and the next collision by :func:`certify.dynamics.simulate.next_collision_gaps`),
+    restitution coefficient r in ]0, 1[.
 
     Exact: every comparison is decided in fmpq, no rounding anywhere.  The next
     collision is decided by :func:`certify.dynamics.simulate.next_collision` on the differences
@@ -162,7 +174,10 @@ def evolve(x, v, r, collisions: int,
     letter of the event.  Invalid data raise UsageError.  ``progress(k, n, label)``,
     e.g. :func:`certify.run.progress.show`, is told about every n/200-th collision and
     called with k = n at the end."""
-    x, v, r, n = check_positions(x), check_four(v, "v"), check_r(r), check_count(collisions)
+    alphabet(particles)
+    x, v = check_positions(x, particles), check_four(v, "v", particles)
+    r, n = check_r(r), check_count(collisions)
+    next_collision = sim.next_collision if particles == 4 else sim.next_collision_gaps
     out = History(x, v, r)
     t = Q(0)
     every = max(1, n // PROGRESS_STEPS)
@@ -171,7 +186,7 @@ def evolve(x, v, r, collisions: int,
             if progress is not None and k % every == 0:
                 progress(k, n, "collisions")
             try:
-                nxt = sim.next_collision(differences(x), differences(v))
+                nxt = next_collision(differences(x), differences(v))
             except sim.MultipleCollision as exc:
                 out.stop = "triple"
                 out.triple = Meeting(exc.particles, t + exc.t, advance(x, v, exc.t), v)
@@ -230,7 +245,7 @@ def report_lines(history: History, digits: int = 20, full: bool = False) -> Iter
         yield f"the particles separate after {count}: no pair approaches"
     else:
         m = history.triple
-        kind = "triple" if len(m.particles) == 3 else "quadruple"
+        kind = sim.meeting_kind(len(m.particles))
         where = m.x[m.particles[0] - 1]
         yield (f"{kind} collision of particles {', '.join(map(str, m.particles))} at "
                f"t {show_time(m.t, digits, full)}, x {show_time(where, digits, full)}, "

@@ -34,7 +34,7 @@ from certify.algebra.balls import precision
 from certify.algebra.poly import to_fmpq
 from certify.errors import Undecided
 
-from .model import INDEX, LETTERS, collide, collide_integral
+from .model import INDEX, LETTERS, LETTERS_N, collide, collide_gaps, collide_integral
 
 
 class MultipleCollision(ArithmeticError):
@@ -46,8 +46,13 @@ class MultipleCollision(ArithmeticError):
 
     def __init__(self, particles: Sequence[int], t):
         self.particles, self.t = tuple(particles), t
-        kind = "triple" if len(self.particles) == 3 else "quadruple"
+        kind = meeting_kind(len(self.particles))
         super().__init__(f"{kind} collision of particles {', '.join(map(str, self.particles))}")
+
+
+def meeting_kind(count: int) -> str:
+    """"triple", "quadruple", or "5-fold", ... : the name of a meeting of ``count`` particles."""
+    return {3: "triple", 4: "quadruple"}.get(count, f"{count}-fold")
 
 
 # --- numbers -------------------------------------------------------------------
@@ -362,6 +367,66 @@ def follow_rays(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Rays:
             Q = collide_integral(L, Q, r)
         events.append(letters)
         rays.append((P, Q))
+    return out
+
+
+# --- N particles (beyond the paper) -------------------------------------------
+
+def next_collision_gaps(p: Sequence, q: Sequence) -> tuple[str, flint.fmpq] | None:
+    """:func:`next_collision` for exact (fmpq) gaps p and velocities q of N = len(p) + 1
+    particles: (letters, time), letters the pairs (a, b, c, d, ...) whose gap closes first,
+    several when non-adjacent pairs tie (their laws act on disjoint pairs and commute);
+    None when no pair approaches.  The closed gaps at that time are those letters and the
+    pairs in contact (:func:`touches`); two adjacent closed gaps, one of them a collision,
+    are particles meeting at one point: :class:`MultipleCollision`, with the particles of
+    that run of closed gaps.  For N = 4 the same decisions as :func:`next_collision`."""
+    times = [(LETTERS_N[i], p[i].p * q[i].q, -q[i].p * p[i].q) for i in range(len(q)) if q[i].p < 0]
+    if not times:
+        return None
+    _, n, d = times[0]
+    for _L, n1, d1 in times[1:]:
+        if n1 * d < n * d1:
+            n, d = n1, d1
+    letters = "".join(L for L, n1, d1 in times if n1 * d == n * d1)
+    t = flint.fmpq(n, d)
+    closed = [i for i in range(len(q)) if LETTERS_N[i] in letters or touches(p, q, t, i)]
+    runs: list[list[int]] = []
+    for i in closed:
+        if runs and runs[-1][-1] == i - 1:
+            runs[-1].append(i)
+        else:
+            runs.append([i])
+    for run in runs:
+        if len(run) > 1 and any(LETTERS_N[i] in letters for i in run):
+            raise MultipleCollision(range(run[0] + 1, run[-1] + 3), t)
+    return letters, t
+
+
+def follow_gaps(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Run:
+    """At most n collisions of N = len(p0) + 1 particles from the exact gaps p0 and relative
+    velocities q0: the next collision by :func:`next_collision_gaps`, free flight p + t q, the
+    closed gaps set to 0 and q mapped by K_i (:func:`certify.dynamics.model.collide_gaps`) for
+    each letter.  Exact (fmpq); the same :class:`Run` as :func:`follow` gives for N = 4."""
+    t = flint.fmpq(0)
+    p, q = tuple(flint.fmpq(z) for z in p0), tuple(flint.fmpq(z) for z in q0)
+    out = Run(states=[State(t, p, q)])
+    for _ in range(n):
+        try:
+            nxt = next_collision_gaps(p, q)
+        except MultipleCollision as exc:
+            out.stop, out.reason = "multiple", str(exc)
+            return out
+        if nxt is None:
+            out.stop = "free"
+            return out
+        letters, dt = nxt
+        p = [pi + dt * qi for pi, qi in zip(p, q)]
+        for L in letters:
+            p[LETTERS_N.index(L)] = flint.fmpq(0)
+            q = collide_gaps(L, q, r)
+        p, t = tuple(p), t + dt
+        out.events.append(letters)
+        out.states.append(State(t, p, q))
     return out
 
 

@@ -1,4 +1,4 @@
-"""The three systems of collision words, with one law each, and their candidates.
+"""The systems of collision words, with one law each, and their candidates.
 
 * ``four``: four particles, gaps p_1, p_2, p_3; letters a, b, c (:func:`.model.collide`).
 * ``three``: three particles, gaps p_1, p_2; a on gap 1, b on gap 2, the same law
@@ -9,6 +9,10 @@
   [ac] (letter ``s``) applies A and C at once (AC = CA): q_1 -> -r q_1, q_3 -> -r q_3,
   q_2 -> q_2 + h q_1 + h q_3 = q_2 + 2h q_1; b keeps the symmetry:
   (q_1, q_2) -> (q_1 + h q_2, -r q_2).
+
+* N particles (beyond the paper, issue 39; :func:`of_particles`): gaps p_1, ..., p_{N-1},
+  letters a, b, c, d, ... (:func:`.model.alphabet`), the law K_i = I + w_i e_iᵀ of
+  :func:`.model.collide_gaps`; N = 4 is ``four`` and N = 3 is ``three``.
 
 For a two-gap system the candidate of a word (first-gap letter ... b) is q(0) = (-1, u),
 an eigenvector of the 2x2 M_w for an eigenvalue λ, and p(0) = (1, 0): after the last b
@@ -28,7 +32,16 @@ from certify import caches
 from certify.algebra.branches import Spectrum
 from certify.algebra.poly import LR_LAMBDA, Frac, flint_poly_to_frac, frac_to_field, r
 
-from .model import INDEX, charpoly_flint, charpoly_ring, collide, factor_flint, word_matrix_flint
+from .model import (
+    INDEX,
+    alphabet,
+    charpoly_flint,
+    charpoly_ring,
+    collide,
+    collide_gaps,
+    factor_flint,
+    word_matrix_flint,
+)
 from .words import Candidate, Step, candidate, run_lr, steps_of
 
 
@@ -45,6 +58,10 @@ class System:
         """The velocities after a collision ``letter`` (any ring holding r and q)."""
         if self.name == "four":
             return collide(letter, q, rr)
+        if self.gaps > 2:
+            if letter not in self.index:
+                raise ValueError(f"unknown collision {letter!r} in the {self.name} system")
+            return collide_gaps(letter, q, rr)
         h = (1 + rr) / 2
         q1, q2 = q
         if letter in ("a", "s"):
@@ -59,6 +76,18 @@ FOUR = System("four", 3, dict(INDEX))
 THREE = System("three", 2, {"a": 0, "b": 1})
 SYMMETRIC = System("symmetric", 2, {"s": 0, "b": 1})
 BY_NAME = {S.name: S for S in (FOUR, THREE, SYMMETRIC)}
+
+
+def of_particles(particles: int) -> System:
+    """The system of N particles on a line: ``three`` (N = 3), ``four`` (N = 4, the paper's),
+    and for N >= 5 the N - 1 gaps with the letters of :func:`.model.alphabet` and the law
+    K_i = I + w_i e_iᵀ; UsageError for an N the alphabet does not cover."""
+    letters = alphabet(particles)
+    if particles == 3:
+        return THREE
+    if particles == 4:
+        return FOUR
+    return System(f"{particles} particles", particles - 1, {L: i for i, L in enumerate(letters)})
 
 
 def system_matrix_flint(system: System, word: str) -> list[list[flint.fmpq_poly]]:

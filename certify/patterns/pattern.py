@@ -90,6 +90,12 @@ def dominance_requirements(cp) -> list[Requirement]:
       and q < λ² (with q > -λ² implied by the two); q = μν = det M/λ, so with λ > 0:
       cp'(λ) > 0, -cp(-λ) > 0 and λ³ - det M > 0 (det M = -cp(0)).
 
+    * n = 4 (five particles, issue 39): Q(Λ) = Λ³ + AΛ² + BΛ + C (A, B, C polynomials in
+      (r, λ): the quotient of cp by Λ - λ) and z³ + a z² + b z + c = Q(λz)/λ³ with a = A/λ,
+      b = B/λ², c = C/λ³; Jury's criterion for a real cubic, Q(λ) > 0, -Q(-λ) > 0, |c| < 1 and
+      1 - c² > |ca - b|, where the last implies |c| < 1 (1 - c² > |ca - b| ≥ 0); times positive
+      powers of λ: cp'(λ) > 0, cp(-λ) > 0 and λ⁶ - C² ∓ (CAλ² - Bλ⁴) > 0.
+
     All strict, so a double eigenvalue λ = μ (Q(λ) = 0) is not dominant.  These are
     polynomials in (r, λ), certified on the branch like any other condition."""
     C = to_ring(cp)                                   # in the engine's ring: no SymPy expression
@@ -102,9 +108,26 @@ def dominance_requirements(cp) -> list[Requirement]:
     elif n == 3:
         det = -C.coeff_wrt(L, 0)
         out = [("cp'(λ)", d), ("-cp(-λ)", -minus), ("λ³ - det M", L ** 3 - det)]
+    elif n == 4:
+        A, B, C3 = quotient_by_root(C, L)
+        mixed = C3 * A * L ** 2 - B * L ** 4
+        out = [("cp'(λ)", d), ("cp(-λ)", minus), ("λ⁶ - C² - (CAλ² - Bλ⁴)", L ** 6 - C3 ** 2 - mixed),
+               ("λ⁶ - C² + (CAλ² - Bλ⁴)", L ** 6 - C3 ** 2 + mixed)]
     else:
-        raise ValueError(f"dominance is implemented for 2x2 and 3x3 matrices, not degree {n}")
+        raise ValueError(f"dominance is implemented for 2x2, 3x3 and 4x4 matrices, not degree {n}")
     return [Requirement(f"dominance: {name}", (to_field(e), FIELD.zero), 1) for name, e in out]
+
+
+def quotient_by_root(C, L) -> tuple:
+    """(A, B, C) with cp(Λ) = (Λ - λ)(Λ³ + AΛ² + BΛ + C) for a quartic cp monic in λ, as
+    polynomials in (r, λ) of the engine's ring (synthetic division by Λ - λ: A = c₁ + λ,
+    B = c₂ + λA, C = c₃ + λB for cp = Λ⁴ + c₁Λ³ + c₂Λ² + c₃Λ + c₄)."""
+    c = [C.coeff_wrt(L, 4 - k) for k in range(5)]
+    if c[0] != 1:
+        raise ValueError("cp must be monic in λ")
+    A = c[1] + L
+    B = c[2] + L * A
+    return A, B, c[3] + L * B
 
 
 def stability_conditions(abcd) -> list[Requirement]:

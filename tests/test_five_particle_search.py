@@ -1,0 +1,77 @@
+"""tools/five_particle_search.py (observed, floats): its datum against certify pattern's exact sets for
+four particles, and the five-particle word it finds."""
+import importlib.util
+from pathlib import Path
+
+import pytest
+
+from certify.patterns.pattern import analyse
+
+ROOT = Path(__file__).resolve().parents[1]
+spec = importlib.util.spec_from_file_location("five_particle_search", ROOT / "tools" / "five_particle_search.py")
+search = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(search)
+
+
+def inside(intervals, r: float, margin: float = 1e-3) -> bool | None:
+    """True/False away from the ends (None within ``margin`` of one)."""
+    for lo, hi in intervals:
+        a, b = float(lo.digits(15)), float(hi.digits(15))
+        if min(abs(r - a), abs(r - b)) < margin:
+            return None
+        if a < r < b:
+            return True
+    return False
+
+
+@pytest.mark.parametrize("word", ["ababcbcb", "abcb", "ababcb"])
+def test_the_datum_of_two_eigenvalues_is_the_pattern_for_four_particles(word):
+    """Stable and feasible at r exactly where certify pattern's exact analysis says so (grid of 0.01)."""
+    res = analyse(word)
+    stable = [(lo, hi) for *_, lo, hi in res.intervals("stable")]
+    feasible = [(lo, hi) for *_, lo, hi in res.intervals("feasible")]
+    for k in range(1, 100):
+        r = k / 100
+        found = search.data(word, r, 4)
+        for expected, seen in ((inside(stable, r), any(s for *_, s in found)), (inside(feasible, r), bool(found))):
+            assert expected is None or expected == seen, (word, r)
+
+
+def test_the_five_particle_word():
+    """abadcbcabc: stable at 0.26, feasible but not stable at 0.2, neither at 0.27."""
+    assert any(s for *_, s in search.data("abadcbcabc", 0.26, 5))
+    assert search.data("abadcbcabc", 0.2, 5) and not any(s for *_, s in search.data("abadcbcabc", 0.2, 5))
+    assert not search.data("abadcbcabc", 0.27, 5)
+    assert search.canonical("abcbdcbdcd", "abcd") == "abadcbcabc"     # its mirror (a↔d, b↔c), rotated
+
+
+def test_words_are_classes():
+    ws = list(search.words(6, 5))
+    assert len(ws) == len(set(ws)) and all(set(w) == set("abcd") for w in ws)
+    assert all(search.canonical(w, "abcd") == w for w in ws)
+
+
+@pytest.mark.parametrize("word, r, particles", [("abadcbcabc", 0.26, 5), ("ababcbcb", 0.15, 4)])
+def test_the_plane_is_the_dominant_eigenvector_of_the_second_compound(word, r, particles):
+    """Where the datum is stable, κ = λμ is the strictly dominant eigenvalue of Λ²M_w and its eigenvector
+    is the plane Span(p(0), q(0)): contracted with the last face's coordinate it gives p(0) (one algebraic
+    function κ of r carries the datum: the route of a five-particle certify pattern, docs/particles.md)."""
+    import itertools
+
+    import numpy as np
+    gaps = particles - 1
+    (lam, mu, stable), = [d for d in search.data(word, r, particles) if d[2]]
+    M = search.period_matrix(word, gaps, r)
+    pairs = list(itertools.combinations(range(gaps), 2))
+    W = np.array([[M[i, k] * M[j, m] - M[i, m] * M[j, k] for (k, m) in pairs] for (i, j) in pairs])
+    ev, V = np.linalg.eig(W)
+    order = np.argsort(-abs(ev))
+    assert abs(ev[order[0]] - lam * mu) < 1e-12 and abs(ev[order[1]]) < abs(ev[order[0]]) * (1 - 1e-3)
+    B = np.zeros((gaps, gaps))
+    for (i, j), b in zip(pairs, V[:, order[0]].real):
+        B[i, j], B[j, i] = b, -b
+    Y = "abcd".index(word[-1])
+    ew, U = np.linalg.eig(M)
+    q0, e = U[:, np.argmin(abs(ew - lam))].real, U[:, np.argmin(abs(ew - mu))].real
+    p0 = e[Y] * q0 - q0[Y] * e
+    assert np.allclose(B[:, Y] / B[0, Y], p0 / p0[0], rtol=1e-9)

@@ -1,0 +1,193 @@
+"""Observed, not certified: five-particle words with stable self-similar collapse (issue 39).
+
+    python tools/five_particle_search.py --max-length 10 --r 0.2505 0.2675 8      # words, r grid
+    python tools/five_particle_search.py --word abadcbcabc --r 0.2 0.3 1001 --ends
+
+The self-similar datum of a word w of N particles (N - 1 gaps), as for four particles
+(certify pattern), from two eigenvalues of M_w.  The run from (p, q) gives after the period
+p(t_n) = M_w (p + T q), q(t_n) = M_w q (free flight p + τq, and each K_i fixes its collision face
+pointwise), T the period's duration.  With q = q(0) an eigenvector for λ and p(t_n) = μ p(0),
+p(0) = αq + Σ β_k e_k in the eigenvectors e_k of M_w gives μα = λ(α + T), μβ_k = λ_k β_k: p(0)
+lies in the plane of q and one eigenvector e_μ (μ > 0 another eigenvalue), and on the face of
+the last letter Y: p(0) ∝ (e_μ)_Y q - q_Y e_μ.  The datum is *feasible* when the run from it
+follows w (every collision the true next one), and *stable* when λ > μ > |ν| for the two other
+eigenvalues ν (λ dominant: the velocities; μ above the rest: the plane Span(p, q), a fixed point of
+the reduction on Gr(2, N - 1), attracts).  For N = 4 the two other eigenvalues are the fixed points
+x₊, x₋ of the position map, and this reproduces certify pattern's exact stable and feasible sets
+(ababcb, abcb, abcbcb, ababcbcb on a grid of step 0.001).
+
+Floats (numpy) on a grid of r, bisection for the ends: what it prints is observed.  ``--ends``
+then names, for each observed end, the exact polynomial in r (a factor of disc_λ cp, of the
+resultant whose roots are the r where the modulus of a real eigenvalue equals that of another,
+Res_y(cp_{M²}(y), cp_{Λ²M}(y)), or of Res_λ(cp, cp of M without the first letter's gap: a
+component of q(0) vanishes)) with a root there, isolated exactly (python-flint's certified roots).
+That the window ends at that root is observed; certify pattern does not take five-particle words yet.
+"""
+from __future__ import annotations
+
+import argparse
+import itertools
+import sys
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+
+from certify.dynamics.model import alphabet, collide_gaps  # noqa: E402
+
+
+def canonical(word: str, letters: str) -> str:
+    """The least rotation of the word or of its mirror image (a <-> the last letter, ...)."""
+    mirror = word.translate(str.maketrans(letters, letters[::-1]))
+    return min(w[k:] + w[:k] for w in (word, mirror) for k in range(len(word)))
+
+
+def words(max_length: int, particles: int):
+    """One word per class (rotations, mirror) of primitive periods of 2..max_length letters over
+    the pairs of N particles, every pair used, no pair twice in a row (cyclically)."""
+    letters = alphabet(particles)
+    seen = set()
+    for n in range(2, max_length + 1):
+        for t in itertools.product(letters, repeat=n):
+            w = "".join(t)
+            if any(w[k] == w[(k + 1) % n] for k in range(n)) or len(set(w)) < len(letters):
+                continue
+            if any(n % d == 0 and w == w[:d] * (n // d) for d in range(1, n)):
+                continue
+            c = canonical(w, letters)
+            if c not in seen:
+                seen.add(c)
+                yield c
+
+
+def period_matrix(word: str, gaps: int, r: float) -> np.ndarray:
+    """M_w at a float r, by the engine's law (collide_gaps in floats)."""
+    M = np.eye(gaps)
+    for letter in word:
+        M = np.array([collide_gaps(letter, tuple(M[:, j]), r) for j in range(gaps)]).T
+    return M
+
+
+def follows(word: str, p: np.ndarray, q: np.ndarray, r: float, letters: str) -> bool:
+    """Does the float run from (p, q) follow the word (each collision the strict next one)?"""
+    for letter in word:
+        times = sorted((-p[j] / q[j], j) for j in range(len(q)) if q[j] < 0)
+        if not times or letters[times[0][1]] != letter:
+            return False
+        if len(times) > 1 and times[1][0] <= times[0][0] * (1 + 1e-9):
+            return False
+        t, i = times[0]
+        p = p + t * q
+        if np.any(p < -1e-12 * np.abs(p).max()):
+            return False
+        p[i] = 0
+        q = np.array(collide_gaps(letter, tuple(q), r))
+    return True
+
+
+def data(word: str, r: float, particles: int) -> list[tuple[float, float, bool]]:
+    """(λ, μ, stable) for every feasible self-similar datum of the word at r."""
+    letters, gaps = alphabet(particles), particles - 1
+    ev, V = np.linalg.eig(period_matrix(word, gaps, r))
+    real = [k for k in range(gaps) if abs(ev[k].imag) < 1e-12 and ev[k].real > 0]
+    Y = letters.index(word[-1])
+    out = []
+    for a, b in itertools.permutations(real, 2):
+        q0, e = V[:, a].real, V[:, b].real
+        p0 = e[Y] * q0 - q0[Y] * e
+        p0[Y] = 0
+        p0 = p0 if p0[(Y + 1) % gaps] > 0 else -p0
+        if not all(p0[k] > 0 for k in range(gaps) if k != Y):
+            continue
+        if any(follows(word, p0, s * q0, r, letters) for s in (1, -1)):
+            rest = [abs(ev[k]) for k in range(gaps) if k not in (a, b)]
+            out.append((ev[a].real, ev[b].real, bool(ev[a].real > ev[b].real > max(rest))))
+    return out
+
+
+def bisect(test, a: float, b: float) -> float:
+    """The point where test changes between a and b (60 halvings)."""
+    ta = test(a)
+    for _ in range(60):
+        m = (a + b) / 2
+        a, b = (m, b) if test(m) == ta else (a, m)
+    return (a + b) / 2
+
+
+def window(word: str, grid, particles: int, stable: bool) -> list[float]:
+    """The grid points where the word has a feasible (or stable) datum, and the ends bisected."""
+    test = (lambda r: any(s for *_, s in data(word, r, particles))) if stable else (
+        lambda r: bool(data(word, r, particles)))
+    hits = [test(r) for r in grid]
+    ends = [bisect(test, grid[k], grid[k + 1]) for k in range(len(grid) - 1) if hits[k] != hits[k + 1]]
+    return ends, [r for r, h in zip(grid, hits) if h]
+
+
+def exact_ends(word: str, ends: list[float], particles: int) -> None:
+    """For each observed end, the exact polynomials with a certified root within 1e-8 of it."""
+    import flint
+    import sympy as sp
+
+    from certify.dynamics.model import charpoly_coefficients
+    from certify.dynamics.systems import of_particles, system_matrix_flint
+    M = system_matrix_flint(of_particles(particles), word)
+    n, r, y = len(M), sp.Symbol("r"), sp.Symbol("y")
+
+    def expr(c):
+        return sp.Add(*[sp.Rational(int(k.p), int(k.q)) * r ** i for i, k in enumerate(flint.fmpq_poly(c).coeffs())])
+
+    def charpoly(A):
+        cs = charpoly_coefficients(A)
+        return sp.Add(*[expr(c) * y ** (len(cs) - 1 - k) for k, c in enumerate(cs)])
+
+    zero = flint.fmpq_poly([])
+    prod = [[sum((M[i][k] * M[k][j] for k in range(n)), zero) for j in range(n)] for i in range(n)]
+    pairs = list(itertools.combinations(range(n), 2))
+    wedge = [[M[i][k] * M[j][m] - M[i][m] * M[j][k] for (k, m) in pairs] for (i, j) in pairs]
+    first = alphabet(particles).index(word[0])
+    minor = [[M[i][j] for j in range(n) if j != first] for i in range(n) if i != first]
+    cp = charpoly(M)
+    sources = {"disc_λ cp": sp.discriminant(cp, y),
+               "Res(cp_M², cp_Λ²M): equal moduli": sp.resultant(charpoly(prod), charpoly(wedge), y),
+               f"Res(cp, cp of M without gap {first + 1}): q_{first + 1}(0) = 0": sp.resultant(cp, charpoly(minor), y)}
+    for end in ends:
+        print(f"end ≈ {end:.13f}")
+        for name, poly in sources.items():
+            for f, _ in sp.factor_list(sp.Poly(poly, r))[1]:
+                fz = flint.fmpz_poly([int(c) for c in reversed(f.all_coeffs())])
+                for z in fz.complex_roots():
+                    z = z[0]
+                    if abs(float(z.imag.mid())) < 1e-30 and abs(float(z.real.mid()) - end) < 1e-8:
+                        print(f"   {name}: the root {z.real.str(16, radius=True)} of a factor of degree "
+                              f"{fz.degree()}: {f.as_expr() if fz.degree() <= 4 else '…'}")
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--particles", type=int, default=5)
+    ap.add_argument("--max-length", type=int, default=None)
+    ap.add_argument("--word", default=None)
+    ap.add_argument("--r", nargs=3, type=float, default=(0.01, 0.99, 99), metavar=("LO", "HI", "POINTS"))
+    ap.add_argument("--ends", action="store_true", help="the exact polynomials at the ends of --word's window")
+    args = ap.parse_args(argv)
+    grid = list(np.linspace(args.r[0], args.r[1], int(args.r[2])))
+    if args.word:
+        for stable in (False, True):
+            ends, hits = window(args.word, grid, args.particles, stable)
+            print(f"{'stable' if stable else 'feasible'}: {len(hits)} of {len(grid)} grid points; ends {ends}")
+            if args.ends and stable:
+                exact_ends(args.word, ends, args.particles)
+        return 0
+    count = 0
+    for w in words(args.max_length, args.particles):
+        count += 1
+        hits = [r for r in grid if any(s for *_, s in data(w, r, args.particles))]
+        if hits:
+            print(f"{w}: stable on {len(hits)} grid points in [{min(hits):.6f}, {max(hits):.6f}]", flush=True)
+    print(f"{count} words")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
