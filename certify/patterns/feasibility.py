@@ -286,8 +286,11 @@ class Analysis:
     """Impose requirements one at a time on the candidate of a word and keep, per
     real branch and fixed point, the region of r where all hold (certified)."""
 
-    def __init__(self, cand: Candidate, lo=0, hi=1):
+    def __init__(self, cand: Candidate, lo=0, hi=1, eigenspace: bool = True):
         self.cand, self.spec, self.lo, self.hi = cand, cand.spectrum, lo, hi
+        # False: the eigenspace route is not run (its points stay undecided for existence and
+        # feasibility); the stable sets are the same, as no point of a multiple eigenvalue is stable
+        self.eigenspace_route = eigenspace
         # a two-gap system has no position variable: one pseudo fixed point "—", no condition uses x
         self.fps = {fp.label: fp for fp in fixed_point_data(cand.abcd_ring or cand.abcd, self.spec.ring_cp)} \
             if cand.abcd is not None else {NO_X: None}
@@ -475,7 +478,9 @@ class Analysis:
         datum of the eigenspace of the multiple eigenvalue λ₀ = λ_k(r₀) meets req and every
         requirement imposed before (one witness, certified signs; "holds"), none does (the
         linear ones cut an empty polyhedron, exact; or λ, dominance exact in Q(r₀): "fails"),
-        or None (undecided, or λ_k(r₀) not a multiple eigenvalue)."""
+        or None (undecided, or λ_k(r₀) not a multiple eigenvalue, or the route not run)."""
+        if not self.eigenspace_route:
+            return None
         es = self._eigenspace(p.lo, R.branch)
         if es is None:
             return None
@@ -513,7 +518,10 @@ class Analysis:
         multiple eigenvalue where no datum of the eigenspace meets the velocities' requirements of
         the whole word (exact, :meth:`.Eigenspace.realises_no_velocities`) to the dropped points: no
         datum there realises the word, so the point is in no feasible (or stable) set.  Whether data
-        *exist* there (u, x > 0) stays undecided: the caller's copy of the regions before keeps it."""
+        *exist* there (u, x > 0) stays undecided: the caller's copy of the regions before keeps it.
+        Nothing is moved when the eigenspace route is not run."""
+        if not self.eigenspace_route:
+            return
         for R in self.regions:
             keep = []
             for rc, why in R.undecided:

@@ -420,7 +420,8 @@ def known_factors(*words: str) -> list[list[int]]:
     return [list(f) for f in sorted(found)]
 
 
-def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True, progress=None) -> PatternResult:
+def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True, progress=None,
+            eigenspace: bool = True) -> PatternResult:
     """The exact analysis of a written period (any rotation / mirror) over ]lo, hi[.
 
     ``formulas=False`` (the census) skips what only the report prints: the period
@@ -431,7 +432,11 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     search for the collision that comes instead where the word is never feasible
     (``diagnosis`` None, the verdict without it); the certified sets are the same.
     ``progress(k, n, label)`` (a :class:`certify.run.progress.Bar`): k of the n steps done (existence,
-    each collision's conditions, stability; the family route decides feasibility at once), from 0."""
+    each collision's conditions, stability; the family route decides feasibility at once), from 0.
+    ``eigenspace=False`` (L4-L6, which read only the stable sets of (ab)^n(cb)^n) does not run the eigenspace
+    route (:mod:`.eigenspace`, slow on long words): its points stay undecided for existence and
+    feasibility; the stable sets are the same, as no point of a multiple eigenvalue is stable (strict
+    dominance fails there, exactly)."""
     import time
     start = time.perf_counter()
     diagnose_failure = diagnosis
@@ -442,7 +447,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
     tick(0, total, "")
     system = BY_NAME[system_name]
     cand = candidate_in(system_name, normal)
-    an = Analysis(cand, lo, hi)
+    an = Analysis(cand, lo, hi, eigenspace)
     n = len(normal)
     reqs, steps = prefix_requirements(normal, n, cand.q0, cand.steps, cand.q0_other, system=system)
     lam_req = Requirement("λ", (FIELD(Lf), FIELD.zero), 1)

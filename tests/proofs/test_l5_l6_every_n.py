@@ -150,3 +150,20 @@ def test_figure_is_written(tmp_path, engine, limit, monkeypatch):
     with saving.output_dir(tmp_path):
         name = T.figure({**engine, **limit["windows"]}, limit)
     assert name == "L5-family-windows.png" and (tmp_path / name).stat().st_size > 0
+
+
+@pytest.mark.parametrize("n", [2, 3])
+def test_without_the_eigenspace_route_the_stable_sets_are_the_same(n):
+    """L4-L6 run `pattern` without the eigenspace route: the same stable sets as with it, and every
+    point it leaves undecided is a multiple eigenvalue of its branch (where nothing is stable)."""
+    from certify.dynamics.systems import candidate_in
+    from certify.patterns import analyse
+    from certify.patterns.feasibility import Analysis
+    word = T.ab_cb(n)
+    fast, full = T.stable_sets(word), analyse(word)
+    assert fast.intervals("stable") == full.intervals("stable") and fast.points("stable") == full.points("stable")
+    assert len(fast.undecided) > len(full.undecided)
+    an = Analysis(candidate_in("four", fast.normal), 0, 1)
+    left = [(R.branch, rc) for R in fast.regions["stable"] for rc, _why in R.undecided]
+    assert len(left) == len(fast.undecided)
+    assert all(an._eigenspace(rc, k) is not None for k, rc in left)
