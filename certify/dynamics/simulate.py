@@ -133,6 +133,12 @@ def first_collisions_exact(p: Sequence, q: Sequence) -> tuple[str, flint.fmpq] |
         num = q[i].p
         if num < 0:
             times.append((L, p[i].p * q[i].q, -num * p[i].q))
+    return earliest(times)
+
+
+def earliest(times: list) -> tuple[str, flint.fmpq] | None:
+    """The letters whose time n/d (``(letter, n, d)``, d > 0) is the least, and that time; None for
+    none.  Compared by cross-multiplication: one fmpq is formed, for the answer."""
     if not times:
         return None
     _, n, d = times[0]
@@ -380,15 +386,10 @@ def next_collision_gaps(p: Sequence, q: Sequence) -> tuple[str, flint.fmpq] | No
     pairs in contact (:func:`touches`); two adjacent closed gaps, one of them a collision,
     are particles meeting at one point: :class:`MultipleCollision`, with the particles of
     that run of closed gaps.  For N = 4 the same decisions as :func:`next_collision`."""
-    times = [(LETTERS_N[i], p[i].p * q[i].q, -q[i].p * p[i].q) for i in range(len(q)) if q[i].p < 0]
-    if not times:
+    first = earliest([(LETTERS_N[i], p[i].p * q[i].q, -q[i].p * p[i].q) for i in range(len(q)) if q[i].p < 0])
+    if first is None:
         return None
-    _, n, d = times[0]
-    for _L, n1, d1 in times[1:]:
-        if n1 * d < n * d1:
-            n, d = n1, d1
-    letters = "".join(L for L, n1, d1 in times if n1 * d == n * d1)
-    t = flint.fmpq(n, d)
+    letters, t = first
     closed = [i for i in range(len(q)) if LETTERS_N[i] in letters or touches(p, q, t, i)]
     runs: list[list[int]] = []
     for i in closed:

@@ -10,7 +10,7 @@ import numpy as np
 
 from certify.numerics import horseshoe
 
-from . import files, saving
+from . import saving
 
 
 def _f(z) -> float:
@@ -61,10 +61,4 @@ def horseshoe_figure(path, H: horseshoe.Horseshoe, cloud: int = 4000) -> Path:
         axn.set_title(f"{a_.name} ⇒ {b_.name} (in {b_.name}'s x, y)", fontsize=8)
         axn.tick_params(labelsize=6)
     fig.tight_layout()
-    path = Path(path)
-    try:
-        with files.atomic_path(path) as tmp:
-            fig.savefig(tmp, format="png", dpi=saving.DPI, metadata={"Software": None})
-    finally:
-        plt.close(fig)
-    return path
+    return saving.write_figure(fig, path)

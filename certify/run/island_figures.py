@@ -20,7 +20,7 @@ import numpy as np
 from certify.dynamics import island
 from certify.patterns import island_theorem as it
 
-from . import census_report, files, saving
+from . import census_report, saving
 
 LOWER = 3 - 2 * math.sqrt(2)
 FLOAT_WIDTH = flint.fmpq(1, 2 ** 72)   # a resonance's interval refined (Sturm) below this before float(): the
@@ -132,13 +132,7 @@ def island_figure(path, r=None, Q: int = 12) -> Path:
         section_axes(axes[0], r)
     rotation_axes(axes[-1], Q)
     fig.tight_layout()
-    path = Path(path)
-    try:
-        with files.atomic_path(path) as tmp:
-            fig.savefig(tmp, format="png", dpi=saving.DPI, metadata={"Software": None})
-    finally:
-        plt.close(fig)
-    return path
+    return saving.write_figure(fig, path)
 
 
 def report_figure(r) -> str:

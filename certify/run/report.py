@@ -407,6 +407,11 @@ def _errata(results) -> str:
     return "\n\n".join(parts)
 
 
+def _natural(cid: str) -> tuple:
+    """A certificate id's sort key: its letter, then its numbers as numbers (L3 < L10, N2.7 < N7.1)."""
+    return tuple(int(t) if t.isdigit() else t for t in re.split(r"(\d+)", cid))
+
+
 def kernel_line(kernel) -> str:
     """The summary's line on the independent kernel (reports/kernel.json), with the statements it
     does not verify and why, in a few words each."""
@@ -414,7 +419,8 @@ def kernel_line(kernel) -> str:
         return "Independent kernel: not run (`python -m certify verify`, docs/verify.md)."
     failed = sorted(i for i, r in kernel["certificates"].items() if not r["ok"])
     k, n = kernel["verified"], kernel["statements"]
-    missing = [f"{sid} ({_short(why)})" for r in kernel["certificates"].values() if r["ok"] and r["counted"]
+    by_id = sorted(kernel["certificates"].items(), key=lambda kv: _natural(kv[0]))   # the same order, read back or not
+    missing = [f"{sid} ({_short(why)})" for _id, r in by_id if r["ok"] and r["counted"]
                for sid, why in r["statements"].items() if why]
     return (f"Independent kernel (`python -m certify verify`, docs/verify.md): **{k}/{n} statements verified**: "
             f"of the {n} formal statements of the PASS and ERRATUM certificates (statements/*.txt, the paper's "

@@ -90,15 +90,25 @@ def save_figure(fig, name: str, dpi: int | None = None) -> str:
     The write is atomic (temporary file, then :func:`os.replace`).  With no
     output directory set, nothing is written.  ``dpi``: default :data:`DPI`.
     """
-    plt = pyplot()
     name = figure_name(name)
+    if _output_dir is not None:
+        write_figure(fig, _output_dir / name, dpi)
+    else:
+        pyplot().close(fig)
+    return name
+
+
+def write_figure(fig, path, dpi: int | None = None) -> Path:
+    """Write ``fig`` as a PNG at ``path`` atomically (no software stamp: the same bytes each run), close
+    it, return the path."""
+    plt = pyplot()
+    path = Path(path)
     try:
-        if _output_dir is not None:
-            with atomic_path(_output_dir / name) as tmp:
-                fig.savefig(tmp, format="png", dpi=dpi or DPI, metadata={"Software": None})
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, format="png", dpi=dpi or DPI, metadata={"Software": None})
     finally:
         plt.close(fig)
-    return name
+    return path
 
 
 CACHE_ENV = "CERTIFY_FIGURE_CACHE"     # the cache's directory; "off" (or empty) draws every figure
