@@ -1,9 +1,11 @@
-"""The Python face of certify, for a notebook (docs/api.md): five functions over the engine's own.
+"""The Python face of certify, for a notebook (docs/api.md): six functions over the engine's own.
 
 - :func:`analyse`: the exact analysis of a periodic word (``certify pattern``), a
   :class:`~certify.patterns.PatternResult`.
 - :func:`windows`: its certified windows of r, each a :class:`~certify.patterns.pattern.Window`
   with exact algebraic ends (:class:`~certify.algebra.Algebraic`).
+- :func:`family_window`: the stable window of (ab)^n(cb)^n for any n ≥ 2 (``certify pattern``'s
+  route for the family: the engine up to n = 7, the theorem of family_limit beyond).
 - :func:`island`: the island theorem at a rational r (``certify island``), every step proved.
 - :func:`identify`: the class of the simulated orbits at r (``certify identify``).
 - :func:`certificate`: one certificate of the paper run (``certify run ID``).
@@ -22,10 +24,12 @@ from contextlib import contextmanager
 from fractions import Fraction
 from typing import NamedTuple
 
+from certify.algebra import Algebraic
 from certify.cli.options import r_range, r_value
 from certify.cli.section5 import float64_r
 from certify.errors import UsageError
-from certify.patterns import island_theorem, pattern
+from certify.patterns import family_windows, island_theorem, pattern
+from certify.patterns.family import family_n, family_word
 from certify.patterns.island_theorem import Theorem
 from certify.patterns.pattern import STAGES, PatternResult, Window
 from certify.run import identify as identification
@@ -33,7 +37,8 @@ from certify.run import report, runner
 
 Rational = Fraction | int | float | str   # Fraction(3, 10), 0, "3/10", "0.3", 0.3: read exactly from the text
 
-__all__ = ["Rational", "analyse", "windows", "island", "identify", "certificate", "Certified", "STAGES"]
+__all__ = ["Rational", "analyse", "windows", "family_window", "island", "identify", "certificate", "Certified",
+           "STAGES"]
 
 
 @contextmanager
@@ -57,8 +62,13 @@ def analyse(word: str, lo: Rational = 0, hi: Rational = 1) -> PatternResult:
     are stable, each set certified with exact algebraic ends; a notebook shows it as Markdown."""
     with _plain_errors():
         lo_q, hi_q = r_range(str(lo), str(hi))
-        pattern.read(word)
-        return pattern.analyse(word, lo_q, hi_q)
+        normal, system, _why = pattern.read(word)
+    n = family_n(normal) if system == "four" else None
+    if n is not None and n > family_windows.EXACT_N0 and (lo_q, hi_q) == (0, 1):
+        raise ValueError(f"{word}: the engine's analysis over ]0, 1[ takes hours for n = {n} > "
+                         f"{family_windows.EXACT_N0}: family_window({n}) gives its stable window by the "
+                         "theorem; analyse(word, lo, hi) runs the engine on ]lo, hi[")
+    return pattern.analyse(word, lo_q, hi_q)
 
 
 def windows(word: str, stage: str = "stable", branch: int | None = None,
@@ -69,6 +79,23 @@ def windows(word: str, stage: str = "stable", branch: int | None = None,
     ``analyse(word).points(stage)``."""
     pattern.check_stage(stage)                      # before the work
     return analyse(word, lo, hi).intervals(stage, branch)
+
+
+def family_window(n: int) -> tuple[Algebraic, Algebraic]:
+    """The stable set of (ab)^n(cb)^n in ]0, 1[, one open window ]lo, hi[ with exact ends, for any
+    n ≥ 2: for n ≤ 7 the engine's exact analysis (:func:`analyse`, its stable set), for n ≥ 8 the theorem of
+    certify/patterns/family_limit.py (:func:`certify.patterns.family_windows.proved_window`: lo the one
+    zero of F_n in ]r_(n+1), r_n[, hi = r_n where nθ = π), valid once the proof's facts are re-verified
+    in this process (about 8 s the first time; a ValueError if they fail)."""
+    if isinstance(n, bool) or not isinstance(n, int) or n < 2:
+        raise ValueError(f"n must be an integer ≥ 2, not {n!r}")
+    if n <= family_windows.PROVED_N0:      # stable sets only: the eigenspace route does not change them (L4-L6)
+        [w] = pattern.analyse(family_word(n), eigenspace=False).intervals("stable")
+        return w.lo, w.hi
+    failures = family_windows.theorem()["failures"]
+    if failures:
+        raise ValueError(f"the family's theorem does not hold here: {failures[0]}")
+    return family_windows.proved_window(n)
 
 
 def island(r: Rational) -> Theorem:

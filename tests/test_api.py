@@ -147,3 +147,25 @@ def test_docs_api_examples_use_every_function():
     for name in ("analyse", "windows", "island", "identify", "certificate"):
         assert f"api.{name}(" in sources, name
     assert "_repr_markdown_()" in sources and ".latex()" in sources
+
+
+def test_family_window_joins_the_engine_and_the_theorem_and_its_upper_end_is_where_n_theta_is_pi():
+    """family_window(7) (the engine) lies above family_window(8) (the theorem), disjoint (L5), and
+    the theorem's upper end r_8 is the root in ]0, 1[ of r² − (6 + 8cos(π/8))r + 1, found here by
+    mpmath independently of the tool."""
+    import mpmath
+    lo7, hi7 = api.family_window(7)
+    lo8, hi8 = api.family_window(8)
+    assert lo8 < hi8 < lo7 < hi7
+    mpmath.mp.dps = 40
+    c = 6 + 8 * mpmath.cos(mpmath.pi / 8)
+    root = (c - mpmath.sqrt(c * c - 4)) / 2
+    assert abs(mpmath.mpf(hi8.digits(30)) - root) < mpmath.mpf(10) ** -28
+
+
+def test_analyse_refuses_a_family_word_beyond_n0_over_the_whole_range_at_once():
+    """(ab)^31(cb)^31 over ]0, 1[ is hours of engine work: a ValueError naming family_window, at once."""
+    with pytest.raises(ValueError, match=r"family_window\(31\)"):
+        api.analyse("(ab)^31(cb)^31")
+    with pytest.raises(ValueError, match="integer ≥ 2"):
+        api.family_window(True)
