@@ -27,6 +27,7 @@ WRITERS = {"pattern": "certify pattern WORD --json", "orbit": "certify orbit WOR
            "identify": "certify identify --json", "section5-orbits": "certify identify --section5: "
            "reports/section5-orbits.json", "island": "certify island --json",
            "atlas": "certify atlas: DIR/atlas.json", "chaos": "certify chaos --r R --json",
+           "family": "certify family --n-max N: DIR/family.json (the engine's windows, L5's second route)",
            "family-window": "certify pattern '(ab)^n(cb)^n' --json for n > 30 (the theorem's window)",
            "certificates": "certify all: reports/certificates.json, read by python3 -m certify_kernel"}
 

@@ -46,7 +46,7 @@ def test_every_schema_is_package_data():
 
 @pytest.mark.parametrize("name, file", [("report", "report.json"), ("census", "census.json"),
                                         ("numerics-paper", "numerics-paper.json"), ("numerics-n4", "numerics-n4.json"),
-                                        ("certificates", "certificates.json")])
+                                        ("certificates", "certificates.json"), ("family", "family.json")])
 def test_the_committed_outputs_validate(name, file):
     validate(name, json.loads((REPORTS / file).read_text(encoding="utf-8")))
 

@@ -56,6 +56,8 @@ def test_command_writes_family_json(tmp_path):
     assert out.returncode == 0, out.stderr
     data = json.loads((tmp_path / "family.json").read_text(encoding="utf-8"))
     assert data["schema"] == "certify-family" and [w["n"] for w in data["windows"]] == [2, 3]
+    from tests.cli.test_schemas import validate
+    validate("family", data)                              # certify/schemas/family.schema.json
     bad = subprocess.run([sys.executable, "-m", "certify", "family", "--n-max", "1", "--out", str(tmp_path)],
                          cwd=ROOT, capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "Traceback" not in bad.stderr
