@@ -242,29 +242,35 @@ def follow(p0: Sequence, q0: Sequence, r, n: int, prec: int | None = None,
     prefix is certified).  ``until(run)`` may stop the run early (stop="until")."""
     if until is None and type(r) is flint.fmpq and all(type(z) is flint.fmpq for z in (*p0, *q0)):
         return _follow_exact(tuple(p0), tuple(q0), r, n)
-    t = zero_like(p0[0])
-    out = Run(states=[State(t, tuple(p0), tuple(q0))])
-    p, q = tuple(p0), tuple(q0)
     with precision(prec):
-        for _ in range(n):
-            try:
-                nxt = step(p, q, r)
-            except Undecided as exc:
-                out.stop, out.reason = "undecided", str(exc)
-                return out
-            except MultipleCollision as exc:
-                out.stop, out.reason = "multiple", str(exc)
-                return out
-            if nxt is None:
-                out.stop = "free"
-                return out
-            letters, dt, p, q = nxt
-            t = t + dt
-            out.events.append(letters)
-            out.states.append(State(t, p, q))
-            if until is not None and until(out):
-                out.stop = "until"
-                return out
+        return _iterate(tuple(p0), tuple(q0), n, lambda p, q: step(p, q, r), until)
+
+
+def _iterate(p: tuple, q: tuple, n: int, advance: Callable[[tuple, tuple], tuple | None],
+             until: Callable[[Run], bool] | None = None) -> Run:
+    """At most n steps ``advance(p, q) -> (letters, dt, p, q)`` (None: no collision ahead), the Run
+    they make; an Undecided or MultipleCollision step ends it with its stop and reason."""
+    t = zero_like(p[0])
+    out = Run(states=[State(t, p, q)])
+    for _ in range(n):
+        try:
+            nxt = advance(p, q)
+        except Undecided as exc:
+            out.stop, out.reason = "undecided", str(exc)
+            return out
+        except MultipleCollision as exc:
+            out.stop, out.reason = "multiple", str(exc)
+            return out
+        if nxt is None:
+            out.stop = "free"
+            return out
+        letters, dt, p, q = nxt
+        t = t + dt
+        out.events.append(letters)
+        out.states.append(State(t, p, q))
+        if until is not None and until(out):
+            out.stop = "until"
+            return out
     return out
 
 
@@ -408,27 +414,22 @@ def follow_gaps(p0: Sequence, q0: Sequence, r: flint.fmpq, n: int) -> Run:
     velocities q0: the next collision by :func:`next_collision_gaps`, free flight p + t q, the
     closed gaps set to 0 and q mapped by K_i (:func:`certify.dynamics.model.collide_gaps`) for
     each letter.  Exact (fmpq); the same :class:`Run` as :func:`follow` gives for N = 4."""
-    t = flint.fmpq(0)
     p, q = tuple(flint.fmpq(z) for z in p0), tuple(flint.fmpq(z) for z in q0)
-    out = Run(states=[State(t, p, q)])
-    for _ in range(n):
-        try:
-            nxt = next_collision_gaps(p, q)
-        except MultipleCollision as exc:
-            out.stop, out.reason = "multiple", str(exc)
-            return out
-        if nxt is None:
-            out.stop = "free"
-            return out
-        letters, dt = nxt
-        p = [pi + dt * qi for pi, qi in zip(p, q)]
-        for L in letters:
-            p[LETTERS_N.index(L)] = flint.fmpq(0)
-            q = collide_gaps(L, q, r)
-        p, t = tuple(p), t + dt
-        out.events.append(letters)
-        out.states.append(State(t, p, q))
-    return out
+    return _iterate(p, q, n, lambda p, q: step_gaps(p, q, r))
+
+
+def step_gaps(p: tuple, q: tuple, r: flint.fmpq) -> tuple | None:
+    """One collision of N = len(p) + 1 particles, exactly: (letters, dt, p, q) after it, or None
+    when no gap closes (:func:`next_collision_gaps`, free flight, :func:`collide_gaps`)."""
+    nxt = next_collision_gaps(p, q)
+    if nxt is None:
+        return None
+    letters, dt = nxt
+    p = [pi + dt * qi for pi, qi in zip(p, q)]
+    for L in letters:
+        p[LETTERS_N.index(L)] = flint.fmpq(0)
+        q = collide_gaps(L, q, r)
+    return letters, dt, tuple(p), q
 
 
 def integral_vector(v: Sequence) -> tuple:
