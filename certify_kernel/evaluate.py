@@ -607,6 +607,7 @@ def as_set(x) -> RSet:
 
 # --------------------------------------------------------------------- binders
 
+QUANTIFIERS: dict = {}  # "angles" -> decide(B, body, ctx): forall over several variables, registered by .signs
 ATOMS: dict = {}        # name -> (conditions(ctx, args) -> [Condition], value(point, ctx, args, conds)): a truth,
                         # or a count compared with a number (nroots(P) = 3)
 
@@ -652,8 +653,9 @@ def forall(t, ctx: Context) -> bool:
     body holds on every piece of the decomposition; over other variables: signs by inspection."""
     B = bind(t[1], ctx)
     if B.angles:
-        from .signs import by_inspection
-        return by_inspection(B, t[2], ctx)
+        if "angles" not in QUANTIFIERS:
+            raise Undefined("forall over angles needs certify_kernel.signs")
+        return QUANTIFIERS["angles"](B, t[2], ctx)
     if B.interval is None:
         raise Undefined("forall needs r in an interval (or angles)")
     found = decide(B, t[2], ctx)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .evaluate import NEG, POS, NotVerified, arith, order, value
+from .evaluate import NEG, POS, QUANTIFIERS, NotVerified, arith, order, value
 from .poly import madd, mmul, reduce_circles, sign
 from .poly import value as at
 from .sturm import count
@@ -181,3 +181,6 @@ def by_inspection(B, body, ctx) -> bool:
         if s != (1 if op == ">" else -1):
             return False
     return True
+
+
+QUANTIFIERS["angles"] = by_inspection     # evaluate.forall's route over angles (evaluate does not import this module)
