@@ -159,7 +159,7 @@ def compound(M: Matrix) -> Matrix:
     if not isinstance(M, Matrix) or M.n != len(M.rows[0]):
         raise Undefined("compound(M): a square matrix")
     P, a = _pairs(M.n), M.rows
-    return Matrix([[a[j][l] * a[k][m] - a[j][m] * a[k][l] for l, m in P] for j, k in P])
+    return Matrix([[a[j][c] * a[k][d] - a[j][d] * a[k][c] for c, d in P] for j, k in P])
 
 
 @cache
