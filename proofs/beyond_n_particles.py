@@ -15,9 +15,8 @@ import flint
 import sympy as sp
 
 from certify.algebra import r
-from certify.dynamics import collide_particles
+from certify.dynamics import LETTERS_N, collide_gaps, collide_particles
 from certify.dynamics import simulate as sim
-from certify.dynamics.model import LETTERS_N, collide_gaps
 from certify.run import PASS, Check, certificate, conclude, identity, replaced
 from proofs.section2_model import matrix
 
