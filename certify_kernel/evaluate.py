@@ -116,19 +116,50 @@ def _sum(items) -> RF:
     return out
 
 
-def collision(pair: int) -> Matrix:
-    """The matrix K with q' = K q for a collision of the particles pair+1, pair+2 (l. 160-166):
-    v_i' + v_j' = v_i + v_j and v_i' − v_j' = −r(v_i − v_j), j = i + 1, the others unchanged; q_k =
-    v_{k+1} − v_k.  Column k is q' for the velocities v = (0, ..., 0, 1, ..., 1) whose q is e_k."""
+def collision(pair: int, gaps: int = 3) -> Matrix:
+    """The matrix K with q' = K q for a collision of the particles pair+1, pair+2 (l. 160-166) among
+    gaps + 1 particles (four in the paper): v_i' + v_j' = v_i + v_j and v_i' − v_j' = −r(v_i − v_j),
+    j = i + 1, the others unchanged; q_k = v_{k+1} − v_k.  Column k is q' for the velocities
+    v = (0, ..., 0, 1, ..., 1) whose q is e_k."""
     r = RF.var("r")
     half = RF.const(Fraction(1, 2))
     cols = []
-    for k in range(3):
-        v = [RF.const(0 if m <= k else 1) for m in range(4)]
+    for k in range(gaps):
+        v = [RF.const(0 if m <= k else 1) for m in range(gaps + 1)]
         s, d = v[pair] + v[pair + 1], v[pair] - v[pair + 1]
         v[pair], v[pair + 1] = half * (s - r * d), half * (s + r * d)
-        cols.append([v[m + 1] - v[m] for m in range(3)])
-    return Matrix([[cols[k][i] for k in range(3)] for i in range(3)])
+        cols.append([v[m + 1] - v[m] for m in range(gaps)])
+    return Matrix([[cols[k][i] for k in range(gaps)] for i in range(gaps)])
+
+
+def collision_of(ctx, N, i) -> Matrix:
+    """K(N, i): the collision matrix of the pair i, i + 1 among N particles, on the N − 1 gaps
+    (beyond the paper: statements/6_beyond.txt); K(4, 1), K(4, 2), K(4, 3) are A, B, C."""
+    n, k = _integer(value(N, ctx)), _integer(value(i, ctx))
+    if not 3 <= n <= 12 or not 1 <= k < n:
+        raise Undefined("K(N, i): N particles (3 to 12) and a pair i from 1 to N − 1")
+    return collision(k - 1, n - 1)
+
+
+def _pairs(n: int) -> list:
+    return [(j, k) for j in range(n) for k in range(j + 1, n)]
+
+
+def wedge(u: tuple, v: tuple) -> tuple:
+    """The bivector u ∧ v of two vectors of R^n: its coordinates u_j v_k − u_k v_j, j < k in
+    lexicographic order (12, 13, ..., 1n, 23, ...)."""
+    if not isinstance(u, tuple) or not isinstance(v, tuple) or len(u) != len(v) or len(u) < 2:
+        raise Undefined("wedge(u, v): two vectors of one length")
+    return tuple(u[j] * v[k] - u[k] * v[j] for j, k in _pairs(len(u)))
+
+
+def compound(M: Matrix) -> Matrix:
+    """Λ²M, the matrix of u ∧ v ↦ Mu ∧ Mv on the coordinates of :func:`wedge`: entry ((j, k), (l, m))
+    is the minor M_jl M_km − M_jm M_kl."""
+    if not isinstance(M, Matrix) or M.n != len(M.rows[0]):
+        raise Undefined("compound(M): a square matrix")
+    P, a = _pairs(M.n), M.rows
+    return Matrix([[a[j][c] * a[k][d] - a[j][d] * a[k][c] for c, d in P] for j, k in P])
 
 
 @cache
@@ -458,6 +489,9 @@ FUNCTIONS = {
     "sqfree": _squarefree,
     "cross": lambda ctx, u, v: cross(value(u, ctx), value(v, ctx)),
     "dot": lambda ctx, u, v: dot(value(u, ctx), value(v, ctx)),
+    "K": collision_of,
+    "wedge": lambda ctx, u, v: wedge(value(u, ctx), value(v, ctx)),
+    "compound": lambda ctx, M: compound(value(M, ctx)),
     "roots": _roots, "root": _root, "count": _count,
     "cos": _trig("cos"), "sin": _trig("sin"), "tan": _trig("tan"),
     "sup": _end(1), "inf": _end(0),

@@ -14,12 +14,14 @@ from . import cones, particles, reduction, simulate
 from .model import (
                     INDEX,
                     LETTERS,
+                    LETTERS_N,
                     A,
                     B,
                     C,
                     characteristic_polynomial,
                     check_word,
                     collide,
+                    collide_gaps,
                     collide_particles,
                     collision_matrix,
                     det3,
@@ -40,8 +42,8 @@ from .words import (
 
 __all__ = [
     "cones", "particles", "reduction", "simulate",
-    "INDEX", "LETTERS", "A", "B", "C", "characteristic_polynomial", "check_word", "collide",
-    "collide_particles", "collision_matrix", "det3", "word_matrix",
+    "INDEX", "LETTERS", "LETTERS_N", "A", "B", "C", "characteristic_polynomial", "check_word", "collide",
+    "collide_gaps", "collide_particles", "collision_matrix", "det3", "word_matrix",
     "MultipleCollision", "Undecided",
     "Candidate", "candidate", "check_position_map", "eigenvector", "fixed_point_ball", "position_map",
     "reduce_mod", "run_word", "velocities",

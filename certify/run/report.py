@@ -54,6 +54,7 @@ PARTS = {
     "T": "Section 3: Theorem 3.1, the pattern ababcb",
     "S": "Section 4: the spherical billiard reduction",
     "N": "Section 5: the numerical simulations",
+    "B": "Beyond the paper",
 }
 END = "*End of the report.*"
 

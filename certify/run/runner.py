@@ -323,7 +323,7 @@ def load_all() -> dict[str, Certificate]:
 
 def claim_key(id: str):
     """Sort ids as the claims are listed: M1 < M2 < T1 < T2 < T10 < T10.1."""
-    order = "LMTSN"
+    order = "LMTSNB"                 # B: beyond the paper, after its sections
     head, num = id[0], id[1:]
     parts = tuple(int(p) for p in num.split("."))
     return (order.index(head) if head in order else len(order), parts)
