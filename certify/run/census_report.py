@@ -357,7 +357,8 @@ def summary_lines(s: dict, by: dict, recs: list) -> list[str]:
     f, red = s["stable_findings"], s["reduction"]
     undecided = [(w, p) for w in s["undecided"] for p in (by[w].get("result") or {}).get("undecided", [])]
     highest, reached = census.highest_feasible(recs)
-    top = max(undecided, key=lambda wp: census.undecided_r(wp[1]), default=None)
+    top_r = max((census.undecided_r(p) for _w, p in undecided), default=None)
+    at_top = [(w, p) for w, p in undecided if census.undecided_r(p) == top_r]
     row = lambda what, words, count=None: f"| {what} | {count or len(words)} | {_names(words, by)} |"  # noqa: E731
     lines = [
         "## Summary", "",
@@ -380,7 +381,8 @@ def summary_lines(s: dict, by: dict, recs: list) -> list[str]:
            "compared exactly; certificate T28.3 checks it on the committed census)" if highest is not None
            else "none (no word has feasible self-similar data)"),
         "- the highest undecided self-similar point: "
-        + (f"{_names([top[0]], by)}, {top[1]}" if top is not None else "none"),
+        + (f"{_names([at_top[0][0]], by)}, {at_top[0][1]}" + (f" (and {len(at_top) - 1} more points at that r, in "
+           f"{len({w for w, _p in at_top})} words in all)" if len(at_top) > 1 else "") if at_top else "none"),
         "- stable self-similar data other than (ab)^n(cb)^n (and the three-particle ab): "
         + (_names(f["other_than_ab_n_cb_n"], by) if f["other_than_ab_n_cb_n"] else f"none up to length {s['max_length']}"),
         "",
