@@ -20,8 +20,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from certify.run.census_report import write_outputs  # noqa: E402
 from certify.errors import UsageError  # noqa: E402
+from certify.run.census_report import write_outputs  # noqa: E402
 from certify.run.files import ensure_writable  # noqa: E402
 
 

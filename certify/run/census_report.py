@@ -353,18 +353,14 @@ def _short(text: str, limit: int = CELL) -> str:
 
 def summary_lines(s: dict, by: dict, recs: list) -> list[str]:
     """The summary a reader wants first (a screen): each count with its first words, the
-    largest r with feasible self-similar data, the undecided points."""
-    f, red = s["stable_findings"], s["reduction"]
-    undecided = [(w, p) for w in s["undecided"] for p in (by[w].get("result") or {}).get("undecided", [])]
-    highest, reached = census.highest_feasible(recs)
-    top_r = max((census.undecided_r(p) for _w, p in undecided), default=None)
-    at_top = [(w, p) for w, p in undecided if census.undecided_r(p) == top_r]
+    largest r with feasible self-similar data, the highest undecided point."""
+    f, red, L = s["stable_findings"], s["reduction"], s["max_length"]
+    points = sum(len((by[w].get("result") or {}).get("undecided", [])) for w in s["undecided"])
     row = lambda what, words, count=None: f"| {what} | {count or len(words)} | {_names(words, by)} |"  # noqa: E731
-    lines = [
+    return [
         "## Summary", "",
-        f"{s['words']} words (classes of primitive periods of the blocks ab, cb, acb, cab of at most "
-        f"{s['max_length']} collisions), each analysed exactly two ways (below). All lists: the appendix; "
-        f"every word: {TABLE}.", "",
+        f"{s['words']} words (classes of primitive periods of the blocks ab, cb, acb, cab of at most {L} "
+        f"collisions), each analysed exactly two ways (below). All lists: the appendix; every word: {TABLE}.", "",
         "| words with | count | the first |", "|---|---:|---|",
         row("stable self-similar (collapsing) data", s["stable"]),
         row("an attracting periodic orbit of the reduction", red["attracting"]),
@@ -372,22 +368,38 @@ def summary_lines(s: dict, by: dict, recs: list) -> list[str]:
         row("feasible self-similar data", s["feasible"]),
         row("abcab or cbacb (cyclically) and feasible self-similar data (T28)", s["abcab"]["feasible"],
             f"{len(s['abcab']['feasible'])} of {s['abcab']['words']}"),
-        row("undecided self-similar points", s["undecided"], f"{len(s['undecided'])} ({len(undecided)} points)"),
+        row("undecided self-similar points", s["undecided"], f"{len(s['undecided'])} ({points} points)"),
         row("a feasible periodic orbit of the reduction", red["feasible"]),
         row("undecided points of the reduction", red["undecided"]),
         row("an analysis error (either way)", sorted(set(s["errors"]) | set(red["errors"]))), "",
-        "- the largest r with feasible self-similar data: "
-        + (f"{_end_text(highest)}, reached by {_names(reached, by)} (the largest end of every feasible set, "
-           "compared exactly; certificate T28.3 checks it on the committed census)" if highest is not None
-           else "none (no word has feasible self-similar data)"),
-        "- the highest undecided self-similar point: "
-        + (f"{_names([at_top[0][0]], by)}, {at_top[0][1]}" + (f" (and {len(at_top) - 1} more points at that r, in "
-           f"{len({w for w, _p in at_top})} words in all)" if len(at_top) > 1 else "") if at_top else "none"),
+        _threshold_line(recs, by), _undecided_line(s, by),
         "- stable self-similar data other than (ab)^n(cb)^n (and the three-particle ab): "
-        + (_names(f["other_than_ab_n_cb_n"], by) if f["other_than_ab_n_cb_n"] else f"none up to length {s['max_length']}"),
+        + (_names(f["other_than_ab_n_cb_n"], by) if f["other_than_ab_n_cb_n"] else f"none up to length {L}"),
         "",
     ]
-    return lines
+
+
+def _threshold_line(recs: list, by: dict) -> str:
+    """The largest end of every feasible self-similar set (exact) and the words reaching it."""
+    highest, reached = census.highest_feasible(recs)
+    if highest is None:
+        return "- the largest r with feasible self-similar data: none (no word has feasible self-similar data)"
+    return (f"- the largest r with feasible self-similar data: {_end_text(highest)}, reached by {_names(reached, by)} "
+            "(the largest end of every feasible set, compared exactly; certificate T28.3 checks it on the committed "
+            "census)")
+
+
+def _undecided_line(s: dict, by: dict) -> str:
+    """The highest undecided self-similar point (its r as printed, 10 certified digits), the
+    first word with it, and how many more points share that r."""
+    points = [(w, p) for w in s["undecided"] for p in (by[w].get("result") or {}).get("undecided", [])]
+    if not points:
+        return "- the highest undecided self-similar point: none"
+    top = max(census.undecided_r(p) for _w, p in points)
+    at_top = [(w, p) for w, p in points if census.undecided_r(p) == top]
+    more = (f" (and {len(at_top) - 1} more points at that r, in {len({w for w, _p in at_top})} words in all)"
+            if len(at_top) > 1 else "")
+    return f"- the highest undecided self-similar point: {_names([at_top[0][0]], by)}, {at_top[0][1]}{more}"
 
 
 def _end_text(number) -> str:
