@@ -189,7 +189,8 @@ def render(source: Path, out: Path) -> int:
 def test_the_files_written_again_from_a_census_json_are_those_of_a_fresh_census(tmp_path, capsys, L):
     """`certify census --max-length L` into A; tools/census_render.py from A/census.json (brief
     records) and from a census.json of the full records of A's state file (as the census to 20
-    was committed): the same bytes, every file."""
+    was committed); tools/census_redo.py and `--resume` from the brief records, one word
+    analysed again: the same bytes, every file."""
     fresh = tmp_path / "fresh"
     assert cli.main(["census", "--max-length", str(L), "--out", str(fresh), "--jobs", "1"]) == 0
     full = [json.loads(line) for line in (fresh / "census-state.jsonl").read_text(encoding="utf-8").splitlines()]
@@ -201,6 +202,16 @@ def test_the_files_written_again_from_a_census_json_are_those_of_a_fresh_census(
         assert render(source, tmp_path / name) == 0
         for file in FILES:
             assert (tmp_path / name / file).read_bytes() == (fresh / file).read_bytes(), (name, file)
+    # tools/census_redo.py: the brief records kept in a state, one word analysed again, the same bytes
+    state = tmp_path / "redo" / "state.jsonl"
+    state.parent.mkdir()
+    assert subprocess.run([sys.executable, str(ROOT / "tools" / "census_redo.py"), str(fresh / "census.json"),
+                           str(state), "--word", "abcb"], capture_output=True, timeout=120).returncode == 0
+    assert len(state.read_text(encoding="utf-8").splitlines()) == len(census.words(L)) - 1
+    assert cli.main(["census", "--max-length", str(L), "--out", str(state.parent), "--jobs", "1",
+                     "--state", str(state), "--resume"]) == 0
+    for file in FILES:
+        assert (state.parent / file).read_bytes() == (fresh / file).read_bytes(), ("redo", file)
 
 
 def test_render_refuses_a_census_whose_summary_is_not_its_records(tmp_path):
