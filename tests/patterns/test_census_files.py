@@ -98,8 +98,10 @@ def test_the_summary_names_the_highest_undecided_point():
 # ----------------------------------------------------------------- census.json and the table
 def test_the_committed_census_data_is_a_few_megabytes():
     """census.json was 93 MB (every existence set of both analyses); now a few MB, the table less."""
-    assert (REPORTS / "census.json").stat().st_size < 8 * MB
+    size = (REPORTS / "census.json").stat().st_size
+    assert size < 8 * MB
     assert (REPORTS / census_report.TABLE).stat().st_size < 1 * MB
+    assert f"the census to {committed()['census']['max_length']} is {size / MB:.1f} MB" in " ".join(docs().split())
 
 
 def test_the_committed_records_are_brief_and_their_summary_is_theirs():
