@@ -187,7 +187,7 @@ def render(source: Path, out: Path) -> int:
                           capture_output=True, text=True, timeout=300).returncode
 
 
-@pytest.mark.parametrize("L", [10])
+@pytest.mark.parametrize("L", [8, pytest.param(10, marks=pytest.mark.slow)])
 def test_the_files_written_again_from_a_census_json_are_those_of_a_fresh_census(tmp_path, capsys, L):
     """`certify census --max-length L` into A; tools/census_render.py from A/census.json (brief
     records) and from a census.json of the full records of A's state file (as the census to 20
