@@ -58,6 +58,7 @@ from certify.run import (
     PASS,
     REFUTED_REMARK,
     Check,
+    census_report,
     certificate,
     conclude,
     for_a_run,
@@ -627,7 +628,7 @@ def threshold_of_collapse(word, P, r_exist, max_length):
     summary, records, scope = _census_scope(max_length)
     re_.refine(Fraction(1, 10 ** 12))
     above = [f"{r['word']}: {u}" for r in records for u in r["undecided"]
-             if census.undecided_r(u) + Fraction(1, 10 ** 9) >= Fraction(int(re_.lo.p), int(re_.lo.q))]
+             if census_report.undecided_r(u) + Fraction(1, 10 ** 9) >= Fraction(int(re_.lo.p), int(re_.lo.q))]
     tops = [(e, r["word"]) for r in records for e in _ends(r)]
     highest = max((e for e, _ in tops), default=None)
     at_top = sorted({w for e, w in tops if e == highest})

@@ -205,53 +205,6 @@ def add_reduction(record: dict, lo=0, hi=1) -> dict:
     return record
 
 
-RESULT_KEPT = ("system", "feasible", "stable", "undecided")       # of ``result`` in census.json
-REDUCTION_KEPT = ("attracting", "attracting_points", "saddle", "repelling", "complex_pair", "undecided")
-
-
-def brief(record: dict) -> dict:
-    """The record as census.json keeps it: the self-similar part's feasible and stable
-    r-sets and undecided points (exact ends), its verdict; the reduction part's attracting
-    windows and points, its saddle, repelling and complex-pair sets (text), its undecided
-    points and verdict.  Dropped, and recomputed for one word by ``certify pattern WORD
-    --json`` and ``certify orbit WORD --json``: the existence sets of both, the reduction's
-    feasible sets (exact ends), the characteristic polynomial, the diagnosis.  The times
-    (:data:`TIMES`) are dropped too.  ``brief(brief(r)) == brief(r)``: a census written from
-    the records of census.json is the census written from the analyses."""
-    out = {k: v for k, v in record.items() if k not in TIMES}
-    if out.get("result") is not None:
-        out["result"] = {k: v for k, v in out["result"].items() if k in RESULT_KEPT}
-    part = out.get(REDUCTION)
-    if part is not None and part.get("result") is not None:
-        out[REDUCTION] = dict(part, result={k: v for k, v in part["result"].items() if k in REDUCTION_KEPT})
-    return out
-
-
-def undecided_r(text: str) -> Fraction:
-    """The r of an undecided point as the census prints it ("upper x₊ at ≈0.2679491924: ..."),
-    its certified digits as a fraction."""
-    found = re.search(r"at ≈?([0-9.]+)", text)
-    if found is None:
-        raise ValueError(f"no r in the undecided point {text!r}")
-    return Fraction(found.group(1))
-
-
-def feasible_ends(record: dict) -> list[dict]:
-    """The upper ends of a record's feasible self-similar sets (each interval's hi, each
-    point), in the end-point form of ``pattern --json``."""
-    return [p["hi"] if p["kind"] == "interval" else p["at"]
-            for s in (record.get("result") or {}).get("feasible", []) for p in s["pieces"]]
-
-
-def highest_feasible(records) -> tuple[object, list[str]]:
-    """(the largest end of every feasible self-similar set, as an exact algebraic number;
-    the words that reach it), or (None, []) when no word is feasible.  Ends compared
-    exactly (:func:`end_number`)."""
-    tops = [(end_number(e), r["word"]) for r in records for e in feasible_ends(r)]
-    highest = max((e for e, _ in tops), default=None)
-    return highest, sorted({w for e, w in tops if e == highest})
-
-
 def r_sets(record: dict, stage: str) -> list[tuple[str, str]]:
     """(branch and fixed point, set) of a record's r-sets at ``stage`` (exists, feasible,
     stable); [] for an error or an empty stage."""

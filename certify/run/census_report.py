@@ -13,6 +13,8 @@ from __future__ import annotations
 import copy
 import json
 import math
+import re
+from fractions import Fraction
 from functools import lru_cache
 from pathlib import Path
 
@@ -123,12 +125,59 @@ def completed(records: dict[str, dict]) -> int:
     return sum(census.REDUCTION in r for r in records.values())
 
 
+RESULT_KEPT = ("system", "feasible", "stable", "undecided")       # of ``result`` in census.json
+REDUCTION_KEPT = ("attracting", "attracting_points", "saddle", "repelling", "complex_pair", "undecided")
+
+
+def brief(record: dict) -> dict:
+    """The record as census.json keeps it: the self-similar part's feasible and stable
+    r-sets and undecided points (exact ends), its verdict; the reduction part's attracting
+    windows and points, its saddle, repelling and complex-pair sets (text), its undecided
+    points and verdict.  Dropped, and recomputed for one word by ``certify pattern WORD
+    --json`` and ``certify orbit WORD --json``: the existence sets of both, the reduction's
+    feasible sets (exact ends), the characteristic polynomial, the diagnosis.  The times
+    (:data:`~certify.patterns.census.TIMES`) are dropped too.  ``brief(brief(r)) == brief(r)``: a census written from
+    the records of census.json is the census written from the analyses."""
+    out = {k: v for k, v in record.items() if k not in census.TIMES}
+    if out.get("result") is not None:
+        out["result"] = {k: v for k, v in out["result"].items() if k in RESULT_KEPT}
+    part = out.get(census.REDUCTION)
+    if part is not None and part.get("result") is not None:
+        out[census.REDUCTION] = dict(part, result={k: v for k, v in part["result"].items() if k in REDUCTION_KEPT})
+    return out
+
+
+def undecided_r(text: str) -> Fraction:
+    """The r of an undecided point as the census prints it ("upper x₊ at ≈0.2679491924: ..."),
+    its certified digits as a fraction."""
+    found = re.search(r"at ≈?([0-9.]+)", text)
+    if found is None:
+        raise ValueError(f"no r in the undecided point {text!r}")
+    return Fraction(found.group(1))
+
+
+def feasible_ends(record: dict) -> list[dict]:
+    """The upper ends of a record's feasible self-similar sets (each interval's hi, each
+    point), in the end-point form of ``pattern --json``."""
+    return [p["hi"] if p["kind"] == "interval" else p["at"]
+            for s in (record.get("result") or {}).get("feasible", []) for p in s["pieces"]]
+
+
+def highest_feasible(records) -> tuple[object, list[str]]:
+    """(the largest end of every feasible self-similar set, as an exact algebraic number;
+    the words that reach it), or (None, []) when no word is feasible.  Ends compared
+    exactly (:func:`certify.patterns.census.end_number`)."""
+    tops = [(census.end_number(e), r["word"]) for r in records for e in feasible_ends(r)]
+    highest = max((e for e, _ in tops), default=None)
+    return highest, sorted({w for e, w in tops if e == highest})
+
+
 def document(records, max_length: int) -> dict:
     """The census as one JSON document: the summary, then every record in brief
-    (:func:`certify.patterns.census.brief`: what the report, the certificates T28.3-T28.4 and
+    (:func:`brief`: what the report, the certificates T28.3-T28.4 and
     the table need; the rest is recomputed for a word by ``certify pattern WORD --json``)."""
     return {"census": census.summary(records, max_length),
-            "words": [census.brief(r) for r in census.order(records)]}
+            "words": [brief(r) for r in census.order(records)]}
 
 
 def to_json(doc: dict) -> str:
@@ -381,7 +430,7 @@ def summary_lines(s: dict, by: dict, recs: list) -> list[str]:
 
 def _threshold_line(recs: list, by: dict) -> str:
     """The largest end of every feasible self-similar set (exact) and the words reaching it."""
-    highest, reached = census.highest_feasible(recs)
+    highest, reached = highest_feasible(recs)
     if highest is None:
         return "- the largest r with feasible self-similar data: none (no word has feasible self-similar data)"
     return (f"- the largest r with feasible self-similar data: {_end_text(highest)}, reached by {_names(reached, by)} "
@@ -395,8 +444,8 @@ def _undecided_line(s: dict, by: dict) -> str:
     points = [(w, p) for w in s["undecided"] for p in (by[w].get("result") or {}).get("undecided", [])]
     if not points:
         return "- the highest undecided self-similar point: none"
-    top = max(census.undecided_r(p) for _w, p in points)
-    at_top = [(w, p) for w, p in points if census.undecided_r(p) == top]
+    top = max(undecided_r(p) for _w, p in points)
+    at_top = [(w, p) for w, p in points if undecided_r(p) == top]
     more = (f" (and {len(at_top) - 1} more points at that r, in {len({w for w, _p in at_top})} words in all)"
             if len(at_top) > 1 else "")
     return f"- the highest undecided self-similar point: {_names([at_top[0][0]], by)}, {at_top[0][1]}{more}"
@@ -603,7 +652,7 @@ def written_length(out) -> int | None:
 def write_outputs(records, max_length: int, out) -> dict:
     """OUT/CENSUS.md, OUT/census.json, OUT/census-words.csv.gz (:data:`TABLE`) and
     OUT/census-windows.png from the census records (analysed, or read back from a
-    census.json: the same bytes, :func:`certify.patterns.census.brief`); returns the document."""
+    census.json: the same bytes, :func:`brief`); returns the document."""
     out = Path(out)
     doc = document(records, max_length)
     drawn = window_figure(doc, out / FIGURE, marks())

@@ -100,7 +100,7 @@ def test_census_json_is_the_document_with_a_record_a_line(reference):
     assert json.loads(text) == run_census.document(reference, L_SMALL)
     lines = text.splitlines()
     start = lines.index('"words": [') + 1
-    assert [json.loads(line.rstrip(",")) for line in lines[start:-1]] == [census.brief(r) for r in reference]
+    assert [json.loads(line.rstrip(",")) for line in lines[start:-1]] == [run_census.brief(r) for r in reference]
     assert lines[-1] == "]}"
 
 

@@ -84,7 +84,7 @@ def test_the_summary_names_the_highest_undecided_point():
     """The highest undecided self-similar point of the committed census, found here from the
     records, is the one the summary names."""
     doc = committed()
-    points = [(census.undecided_r(p), r["compact"], p) for r in doc["words"]
+    points = [(census_report.undecided_r(p), r["compact"], p) for r in doc["words"]
               for p in (r.get("result") or {}).get("undecided", [])]
     top = max(r for r, _w, _p in points)
     at_top = [(w, p) for r, w, p in points if r == top]
@@ -108,7 +108,7 @@ def test_the_committed_records_are_brief_and_their_summary_is_theirs():
     """Each record of census.json is its own brief form, and the summary computed from the
     records is the one the file holds (nothing the summary needs was dropped)."""
     doc = committed()
-    assert all(census.brief(r) == r for r in doc["words"])
+    assert all(census_report.brief(r) == r for r in doc["words"])
     assert census.summary(doc["words"], doc["census"]["max_length"]) == doc["census"]
 
 
