@@ -513,8 +513,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         f"# Census of periodic patterns up to length {L}",
         "",
         "Written by `python -m certify census --max-length "
-        f"{L}` (certify/patterns/census.py, certify/run/census_report.py); do not edit by hand. Data: census.json, "
-        f"{TABLE} (docs/census.md).",
+        f"{L}` (certify/patterns/census.py, certify/run/census_report.py), or from its census.json by `python "
+        f"tools/census_render.py` (the same bytes); do not edit by hand. Data: census.json, {TABLE} (docs/census.md).",
         "",
     ] + summary_lines(s, by, recs) + [
         "## What was analysed",
