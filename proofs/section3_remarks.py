@@ -58,6 +58,7 @@ from certify.run import (
     PASS,
     REFUTED_REMARK,
     Check,
+    census_report,
     certificate,
     conclude,
     for_a_run,
@@ -595,11 +596,6 @@ def _census_scope(max_length: str):
         [f"census to {summary['max_length']}: {summary['words']} words; errors: {', '.join(errors) or 'none'}"])]
 
 
-def _undecided_r(text: str) -> Fraction:
-    """The r of an undecided point as printed ("upper x₊ at ≈0.2679491924: ..."), 10 certified digits."""
-    return Fraction(re.search(r"at ≈?([0-9.]+)", text).group(1))
-
-
 def _ends(record: dict):
     """The upper ends of a record's feasible sets (each interval's hi, each point), exact."""
     return [census.end_number(p["hi"] if p["kind"] == "interval" else p["at"])
@@ -632,7 +628,7 @@ def threshold_of_collapse(word, P, r_exist, max_length):
     summary, records, scope = _census_scope(max_length)
     re_.refine(Fraction(1, 10 ** 12))
     above = [f"{r['word']}: {u}" for r in records for u in r["undecided"]
-             if _undecided_r(u) + Fraction(1, 10 ** 9) >= Fraction(int(re_.lo.p), int(re_.lo.q))]
+             if census_report.undecided_r(u) + Fraction(1, 10 ** 9) >= Fraction(int(re_.lo.p), int(re_.lo.q))]
     tops = [(e, r["word"]) for r in records for e in _ends(r)]
     highest = max((e for e, _ in tops), default=None)
     at_top = sorted({w for e, w in tops if e == highest})

@@ -8,7 +8,10 @@ except those to redo: the words with undecided self-similar points (``--undecide
 named.  ``certify census --resume`` then analyses only the words missing from the state and writes
 the census from all the records: the kept ones byte for byte, the redone ones as a fresh run makes
 them (a record does not depend on the others, nor on the bound L).  The state has no seconds for the
-kept records (the census keeps none).
+kept records (the census keeps none).  The kept records are those of census.json, in brief
+(:func:`certify.run.census_report.brief`): census.json, CENSUS.md and the table written from them are
+the bytes written from the full records; to rewrite the files without redoing any word,
+``tools/census_render.py``.
 """
 from __future__ import annotations
 

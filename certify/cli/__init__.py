@@ -16,7 +16,8 @@
            [--state FILE] [--resume] [--force]
                                 every periodic pattern of blocks up to length L,
                                 its feasible and stable r-sets: DIR/CENSUS.md,
-                                DIR/census.json, DIR/census-windows.png
+                                DIR/census.json, census-words.csv.gz (a row a
+                                word), census-windows.png
     pattern WORD [--json] [--r-range LO HI]
                                 the exact analysis of one periodic word (ababcb,
                                 (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data

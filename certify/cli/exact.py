@@ -76,7 +76,7 @@ def cmd_census(args) -> int:
               f"feasible {len(s['abcab']['feasible'])}; "
               f"with an attracting periodic orbit of the reduction: {len(s['reduction']['attracting'])}")
         figure = f", {census.FIGURE}" if (out / census.FIGURE).is_file() else " (no window to draw: no figure)"
-        print(f"wrote {out / 'CENSUS.md'}, census.json{figure}; state {state}")
+        print(f"wrote {out / 'CENSUS.md'}, census.json, {census.TABLE}{figure}; state {state}")
     return 0
 
 
@@ -219,7 +219,7 @@ def register(commands) -> None:
                     description="Every periodic collision word made of the blocks ab, cb, acb, cab (Corollary 4.5) "
                     "of at most L collisions, one per class (rotations, mirror a<->c), analysed two ways: stable "
                     "self-similar data (`pattern`) and attracting periodic orbits of the reduction (`orbit`).  "
-                    f"Writes DIR/CENSUS.md, census.json, {'census-windows.png'}; {CENSUS_COST}.")
+                    f"Writes DIR/CENSUS.md, census.json, census-words.csv.gz, census-windows.png; {CENSUS_COST}.")
     p.add_argument("--max-length", type=positive_int, required=True, metavar="L",
                    help=f"longest period, in collisions (at most {MAX_CENSUS_LENGTH}; with --scheduler at most "
                         f"{MAX_CLUSTER_LENGTH})")

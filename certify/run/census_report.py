@@ -13,6 +13,8 @@ from __future__ import annotations
 import copy
 import json
 import math
+import re
+from fractions import Fraction
 from functools import lru_cache
 from pathlib import Path
 
@@ -123,9 +125,59 @@ def completed(records: dict[str, dict]) -> int:
     return sum(census.REDUCTION in r for r in records.values())
 
 
+RESULT_KEPT = ("system", "feasible", "stable", "undecided")       # of ``result`` in census.json
+REDUCTION_KEPT = ("attracting", "attracting_points", "saddle", "repelling", "complex_pair", "undecided")
+
+
+def brief(record: dict) -> dict:
+    """The record as census.json keeps it: the self-similar part's feasible and stable
+    r-sets and undecided points (exact ends), its verdict; the reduction part's attracting
+    windows and points, its saddle, repelling and complex-pair sets (text), its undecided
+    points and verdict.  Dropped, and recomputed for one word by ``certify pattern WORD
+    --json`` and ``certify orbit WORD --json``: the existence sets of both, the reduction's
+    feasible sets (exact ends), the characteristic polynomial, the diagnosis.  The times
+    (:data:`~certify.patterns.census.TIMES`) are dropped too.  ``brief(brief(r)) == brief(r)``: a census written from
+    the records of census.json is the census written from the analyses."""
+    out = {k: v for k, v in record.items() if k not in census.TIMES}
+    if out.get("result") is not None:
+        out["result"] = {k: v for k, v in out["result"].items() if k in RESULT_KEPT}
+    part = out.get(census.REDUCTION)
+    if part is not None and part.get("result") is not None:
+        out[census.REDUCTION] = dict(part, result={k: v for k, v in part["result"].items() if k in REDUCTION_KEPT})
+    return out
+
+
+def undecided_r(text: str) -> Fraction:
+    """The r of an undecided point as the census prints it ("upper x₊ at ≈0.2679491924: ..."),
+    its certified digits as a fraction."""
+    found = re.search(r"at ≈?([0-9.]+)", text)
+    if found is None:
+        raise ValueError(f"no r in the undecided point {text!r}")
+    return Fraction(found.group(1))
+
+
+def feasible_ends(record: dict) -> list[dict]:
+    """The upper ends of a record's feasible self-similar sets (each interval's hi, each
+    point), in the end-point form of ``pattern --json``."""
+    return [p["hi"] if p["kind"] == "interval" else p["at"]
+            for s in (record.get("result") or {}).get("feasible", []) for p in s["pieces"]]
+
+
+def highest_feasible(records) -> tuple[object, list[str]]:
+    """(the largest end of every feasible self-similar set, as an exact algebraic number;
+    the words that reach it), or (None, []) when no word is feasible.  Ends compared
+    exactly (:func:`certify.patterns.census.end_number`)."""
+    tops = [(census.end_number(e), r["word"]) for r in records for e in feasible_ends(r)]
+    highest = max((e for e, _ in tops), default=None)
+    return highest, sorted({w for e, w in tops if e == highest})
+
+
 def document(records, max_length: int) -> dict:
-    """The census as one JSON document: the summary, then every record."""
-    return {"census": census.summary(records, max_length), "words": census.order(records)}
+    """The census as one JSON document: the summary, then every record in brief
+    (:func:`brief`: what the report, the certificates T28.3-T28.4 and
+    the table need; the rest is recomputed for a word by ``certify pattern WORD --json``)."""
+    return {"census": census.summary(records, max_length),
+            "words": [brief(r) for r in census.order(records)]}
 
 
 def to_json(doc: dict) -> str:
@@ -136,6 +188,91 @@ def to_json(doc: dict) -> str:
     assert sorted(doc) == ["census", "words"]
     words = ",\n".join(dump(rec, separators=(",", ":")) for rec in doc["words"])
     return '{"census": ' + dump(doc["census"], indent=1) + ',\n"words": [\n' + words + "\n]}\n"
+
+
+# --------------------------------------------------------------------------
+# The table: one row per word (CSV, gzip), for pandas and spreadsheets
+
+TABLE = "census-words.csv.gz"        # next to census.json: one row per word
+COLUMNS = {
+    "word": "the normal form (the class's key; census.json's `word`)",
+    "compact": "the word with powers, as CENSUS.md prints it",
+    "length": "collisions in a period",
+    "blocks": "its blocks, separated by spaces",
+    "contains_abcab": "abcab or its mirror cbacb occurs cyclically (T28)",
+    "outcome": "`analysed` or `error` (the self-similar analysis)",
+    "feasible": "feasible self-similar data somewhere in ]0, 1[ (empty: error)",
+    "stable": "stable self-similar (collapsing) data somewhere (empty: error)",
+    "undecided": "the self-similar analysis left points undecided (empty: error)",
+    "attracting": "an attracting periodic orbit of the reduction somewhere",
+    "feasible_set": "the feasible r-sets per branch and fixed point, as text (≈ and 10 digits)",
+    "stable_set": "the stable r-sets, as text",
+    "attracting_set": "the attracting windows of the reduction per branch, with the in-plane pair, as text",
+    "feasible_exact": "JSON: the feasible r-sets with exact ends (census.json's `result.feasible`)",
+    "stable_exact": "JSON: the stable r-sets with exact ends (`result.stable`)",
+    "attracting_exact": "JSON: the attracting windows with exact ends (`reduction.result.attracting`)",
+    "feasible_lo": "float: the least end of the feasible r-sets (empty: none)",
+    "feasible_hi": "float: the largest end of the feasible r-sets",
+    "stable_lo": "float: the least end of the stable r-sets",
+    "stable_hi": "float: the largest end of the stable r-sets",
+    "attracting_lo": "float: the least end of the attracting windows",
+    "attracting_hi": "float: the largest end of the attracting windows",
+    "undecided_points": "the undecided self-similar points, separated by ` | `",
+    "verdict": "the self-similar verdict (`certify pattern`)",
+    "reduction_outcome": "`analysed`, `three particles` or `error` (the reduction)",
+    "reduction_verdict": "the reduction's verdict (`certify orbit`)",
+    "error": "the error of either analysis, one line",
+}
+
+
+def _float_ends(pieces) -> tuple[float, float] | tuple[str, str]:
+    """(least, largest) end of the pieces as floats of their certified digits; ("", "") without."""
+    ends = [float(p[k]["digits"]) for p in pieces for k in (("lo", "hi") if p["kind"] == "interval" else ("at",))]
+    return (min(ends), max(ends)) if ends else ("", "")
+
+
+def _json_cell(value) -> str:
+    return json.dumps(value, sort_keys=True, ensure_ascii=False, separators=(",", ":"))
+
+
+def table_row(record: dict) -> dict:
+    """A record of census.json as a row of :data:`TABLE` (the keys of :data:`COLUMNS`)."""
+    result = record.get("result") or {}
+    part = record.get(census.REDUCTION) or {}
+    attracting = (part.get("result") or {}).get("attracting", [])
+    analysed = record["outcome"] == "analysed"
+    row = {"word": record["word"], "compact": record["compact"], "length": record["length"],
+           "blocks": " ".join(record["blocks"]), "contains_abcab": record["contains_abcab"],
+           "outcome": record["outcome"], "feasible": record["feasible"], "stable": record["stable"],
+           "undecided": record["undecided"], "attracting": bool(part.get("attracting")),
+           "feasible_set": _sets(record, "feasible") if analysed else "",
+           "stable_set": _sets(record, "stable") if analysed else "",
+           "attracting_set": _attracting(record),
+           "feasible_exact": _json_cell(result.get("feasible", [])),
+           "stable_exact": _json_cell(result.get("stable", [])),
+           "attracting_exact": _json_cell(attracting),
+           "undecided_points": " | ".join(result.get("undecided", [])),
+           "verdict": record["verdict"], "reduction_outcome": part.get("outcome", ""),
+           "reduction_verdict": part.get("verdict", ""),
+           "error": "; ".join(e for e in (record["error"], part.get("error")) if e)}
+    for stage in ("feasible", "stable"):
+        row[f"{stage}_lo"], row[f"{stage}_hi"] = _float_ends([p for s in result.get(stage, []) for p in s["pieces"]])
+    row["attracting_lo"], row["attracting_hi"] = _float_ends([dict(a, kind="interval") for a in attracting])
+    return {k: ("" if row[k] is None else row[k]) for k in COLUMNS}
+
+
+def table(doc: dict) -> bytes:
+    """:data:`TABLE`: a header, then one CSV row per word of the census, in census order,
+    compressed with gzip (no time stamp: the same bytes for the same census)."""
+    import csv
+    import gzip
+    import io
+    text = io.StringIO()
+    writer = csv.DictWriter(text, fieldnames=list(COLUMNS), lineterminator="\n")
+    writer.writeheader()
+    for record in doc["words"]:
+        writer.writerow(table_row(record))
+    return gzip.compress(text.getvalue().encode("utf-8"), compresslevel=9, mtime=0)
 
 
 # --------------------------------------------------------------------------
@@ -180,8 +317,8 @@ def reduction_lines(s: dict, recs: list, L: int) -> list[str]:
              f"- words with a feasible periodic orbit of the reduction: {len(f['feasible'])}; with an attracting "
              f"one: {len(f['attracting'])}; with undecided points: {len(f['undecided'])}; errors: {len(f['errors'])}"
              + (f"; not computed: {len(f['missing'])}" if f["missing"] else ""),
-             "- attracting periodic orbits of the reduction: " + ("; ".join(
-                 f"`{by[w]['compact']}` on {_attracting(by[w])}" for w in f["attracting"]) or "none"),
+             "- attracting periodic orbits of the reduction:" + ("".join(
+                 f"\n  - `{by[w]['compact']}` on {_attracting(by[w])}" for w in f["attracting"]) or " none"),
              "- with a complex in-plane pair where attracting (not collapse): "
              + (", ".join(f"`{by[w]['compact']}`" for w in f["complex_pair_attracting"]) or "none"),
              "- families (the words x_0 v^n x_1 … with one or two repeated factors v, attracting for at least three "
@@ -241,20 +378,146 @@ def resonance_lines(windows: dict, by: dict) -> list[str]:
             "the island's interval):", ""] + (rows or ["- none"]) + [""]
 
 
+FIRST = 5                  # the words a summary line names before "…"
+WIDTH = 100                # the appendix's lines (a list of words wrapped)
+CELL = 400                 # the longest cell of the table of notable words (the rest: the data table)
+
+
+def _names(words: list[str], by: dict, first: int | None = FIRST) -> str:
+    """Compact names of ``words`` (normal forms), the first ``first`` of them, then "…"."""
+    shown = [f"`{by[w]['compact'] if w in by else w}`" for w in words[:first]]
+    return ", ".join(shown) + (", …" if first is not None and len(words) > first else "") or "none"
+
+
+def _wrapped(words: list[str], by: dict) -> list[str]:
+    """Every word of ``words``, compact, in lines of at most :data:`WIDTH` characters."""
+    import textwrap
+    return textwrap.wrap(_names(words, by, None), WIDTH, break_long_words=False, break_on_hyphens=False)
+
+
+def _short(text: str, limit: int = CELL) -> str:
+    """A cell of at most ``limit`` characters; longer, cut and sent to the data table."""
+    return text if len(text) <= limit else text[:limit].rsplit(";", 1)[0] + "; … (all: " + TABLE + ")"
+
+
+def summary_lines(s: dict, by: dict, recs: list) -> list[str]:
+    """The summary a reader wants first (a screen): each count with its first words, the
+    largest r with feasible self-similar data, the highest undecided point."""
+    f, red, L = s["stable_findings"], s["reduction"], s["max_length"]
+    points = sum(len((by[w].get("result") or {}).get("undecided", [])) for w in s["undecided"])
+    row = lambda what, words, count=None: f"| {what} | {count or len(words)} | {_names(words, by)} |"  # noqa: E731
+    return [
+        "## Summary", "",
+        f"{s['words']} words (classes of primitive periods of the blocks ab, cb, acb, cab of at most {L} "
+        f"collisions), each analysed exactly two ways (below). All lists: the appendix; every word: {TABLE}.", "",
+        "| words with | count | the first |", "|---|---:|---|",
+        row("stable self-similar (collapsing) data", s["stable"]),
+        row("an attracting periodic orbit of the reduction", red["attracting"]),
+        row("… of which with a complex in-plane pair (not a collapse)", red["complex_pair_attracting"]),
+        row("feasible self-similar data", s["feasible"]),
+        row("abcab or cbacb (cyclically) and feasible self-similar data (T28)", s["abcab"]["feasible"],
+            f"{len(s['abcab']['feasible'])} of {s['abcab']['words']}"),
+        row("undecided self-similar points", s["undecided"], f"{len(s['undecided'])} ({points} points)"),
+        row("a feasible periodic orbit of the reduction", red["feasible"]),
+        row("undecided points of the reduction", red["undecided"]),
+        row("an analysis error (either way)", sorted(set(s["errors"]) | set(red["errors"]))), "",
+        _threshold_line(recs, by), _undecided_line(s, by),
+        "- stable self-similar data other than (ab)^n(cb)^n (and the three-particle ab): "
+        + (_names(f["other_than_ab_n_cb_n"], by) if f["other_than_ab_n_cb_n"] else f"none up to length {L}"),
+        "",
+    ]
+
+
+def _threshold_line(recs: list, by: dict) -> str:
+    """The largest end of every feasible self-similar set (exact) and the words reaching it."""
+    highest, reached = highest_feasible(recs)
+    if highest is None:
+        return "- the largest r with feasible self-similar data: none (no word has feasible self-similar data)"
+    return (f"- the largest r with feasible self-similar data: {_end_text(highest)}, reached by {_names(reached, by)} "
+            "(the largest end of every feasible set, compared exactly; certificate T28.3 checks it on the committed "
+            "census)")
+
+
+def _undecided_line(s: dict, by: dict) -> str:
+    """The highest undecided self-similar point (its r as printed, 10 certified digits), the
+    first word with it, and how many more points share that r."""
+    points = [(w, p) for w in s["undecided"] for p in (by[w].get("result") or {}).get("undecided", [])]
+    if not points:
+        return "- the highest undecided self-similar point: none"
+    top = max(undecided_r(p) for _w, p in points)
+    at_top = [(w, p) for w, p in points if undecided_r(p) == top]
+    more = (f" (and {len(at_top) - 1} more points at that r, in {len({w for w, _p in at_top})} words in all)"
+            if len(at_top) > 1 else "")
+    return f"- the highest undecided self-similar point: {_names([at_top[0][0]], by)}, {at_top[0][1]}{more}"
+
+
+def _end_text(number) -> str:
+    """An exact end (an :class:`~certify.algebra.algebraic.Algebraic`) as ≈ and 10 digits."""
+    return "≈" + number.digits(10)
+
+
+def notable_lines(recs: list) -> list[str]:
+    """The table of the words a reader looks at: stable, attracting, undecided, in error."""
+    attracting = lambda r: bool((r.get(census.REDUCTION) or {}).get("attracting"))     # noqa: E731
+    rank = lambda r: (0 if r["stable"] else 1 if attracting(r) else 2 if r["undecided"] else 3,  # noqa: E731
+                      r["length"], r["word"])
+    notable = sorted((r for r in recs if r["stable"] or attracting(r) or r["undecided"] or r["outcome"] == "error"
+                      or (r.get(census.REDUCTION) or {}).get("outcome") == "error"), key=rank)
+    lines = ["## Notable words", "",
+             "The words with stable self-similar data, then with an attracting periodic orbit of the reduction, with "
+             f"undecided self-similar points, in error. Every word, with its sets and exact ends: {TABLE} "
+             "(docs/census.md); one word in full: `certify pattern WORD`, `certify orbit WORD`.", "",
+             "| word | length | blocks | feasible r-sets | stable r-sets | attracting periodic orbit of the reduction "
+             "| note |", "|---|---:|---|---|---|---|---|"]
+    for r in notable:
+        analysed = r["outcome"] == "analysed"
+        undecided = (r.get("result") or {}).get("undecided", [])
+        note = r["error"] if not analysed else (f"{len(undecided)} undecided points" if undecided else "")
+        lines.append(f"| `{r['compact']}` | {r['length']} | {' '.join(r['blocks'])} | "
+                     f"{_cell(_short(_sets(r, 'feasible'))) if analysed else '—'} | "
+                     f"{_cell(_short(_sets(r, 'stable'))) if analysed else '—'} | "
+                     f"{_cell(_short(_attracting(r)))} | {_cell(_short(note))} |")
+    return lines + ([] if notable else ["| none | | | | | | |"]) + [""]
+
+
+def appendix_lines(s: dict, by: dict) -> list[str]:
+    """The long lists, wrapped: the words of each count of the summary."""
+    red = s["reduction"]
+    lists = [("with stable self-similar data", s["stable"]),
+             ("with an attracting periodic orbit of the reduction", red["attracting"]),
+             ("with feasible self-similar data", s["feasible"]),
+             ("containing abcab or cbacb (cyclically) with feasible self-similar data (T28)", s["abcab"]["feasible"]),
+             ("containing abcab or cbacb, undecided or in error", s["abcab"]["undecided_or_error"]),
+             ("with undecided self-similar points", s["undecided"]),
+             ("with a feasible periodic orbit of the reduction", red["feasible"]),
+             ("with undecided points of the reduction", red["undecided"]),
+             ("with an error of the self-similar analysis", s["errors"]),
+             ("with an error of the reduction's analysis", red["errors"])]
+    lines = ["## Appendix: the lists", "",
+             "Each list in census order (length, then the word), compact (a power written out in census.json's "
+             "`word`)."]
+    for what, words in lists:
+        lines += ["", f"### Words {what} ({len(words)})", ""] + (_wrapped(words, by) or ["none"])
+    return lines + [""]
+
+
 def markdown(doc: dict, figure: str | None = None) -> str:
-    """CENSUS.md: what was enumerated, the findings (stable self-similar data, then the
-    attracting periodic orbits of the reduction), then one row per word: stable first,
-    then attracting, feasible, undecided, in error, the rest."""
+    """CENSUS.md: a summary that fits a screen (the counts with their first words, the largest
+    r with feasible self-similar data, the undecided points), the findings (stable self-similar
+    data, then the attracting periodic orbits of the reduction), the notable words, and the
+    long lists in an appendix; every word is in the table :data:`TABLE`."""
     s, recs = doc["census"], doc["words"]
     L = s["max_length"]
-    attracting = lambda r: bool((r.get(census.REDUCTION) or {}).get("attracting"))     # noqa: E731
-    rank = lambda r: (0 if r["stable"] else 1 if attracting(r) else 2 if r["feasible"] else  # noqa: E731
-                      3 if r["undecided"] else 4 if r["outcome"] == "error" else 5, r["length"], r["word"])
+    by = {r["word"]: r for r in recs}
     lines = [
         f"# Census of periodic patterns up to length {L}",
         "",
         "Written by `python -m certify census --max-length "
-        f"{L}` (certify/patterns/census.py, certify/run/census_report.py); do not edit by hand.",
+        f"{L}` (certify/patterns/census.py, certify/run/census_report.py), or from its census.json by `python "
+        f"tools/census_render.py` (the same bytes); do not edit by hand. Data: census.json, {TABLE} (docs/census.md).",
+        "",
+    ] + summary_lines(s, by, recs) + [
+        "## What was analysed",
         "",
         "Every primitive period made of the blocks ab, cb, acb, cab (Corollary 4.5, l. 1037-1051, with the "
         "correction certified in S10), of at most "
@@ -268,18 +531,6 @@ def markdown(doc: dict, figure: str | None = None) -> str:
         "reduction map of Section 4 has an attracting periodic orbit with this word, per real eigenvalue branch, "
         "with its in-plane pair (real: it carries self-similar data; complex: not a collapse).",
         "",
-        f"- words: {s['words']}",
-        f"- with feasible self-similar data: {len(s['feasible'])}",
-        f"- with stable self-similar (collapsing) data: {len(s['stable'])}",
-        f"- with an attracting periodic orbit of the reduction: {len(s['reduction']['attracting'])}",
-        f"- self-similar analysis with undecided points: {len(s['undecided'])}"
-        + (f" ({', '.join(s['undecided'])})" if s['undecided'] else ""),
-        f"- analysis error: {len(s['errors'])}" + (f" ({', '.join(s['errors'])})" if s['errors'] else ""),
-        f"- containing abcab cyclically (or its mirror cbacb): {s['abcab']['words']}, of which with feasible data: "
-        f"{len(s['abcab']['feasible'])}" + (f" ({', '.join(s['abcab']['feasible'])})" if s['abcab']['feasible'] else "")
-        + (f"; undecided or error: {', '.join(s['abcab']['undecided_or_error'])}"
-           if s['abcab']['undecided_or_error'] else ""),
-        "",
         "## Findings",
         "",
         "### Stable self-similar (collapsing) data",
@@ -287,38 +538,22 @@ def markdown(doc: dict, figure: str | None = None) -> str:
     ]
     f = s["stable_findings"]
     stable = [r for r in census.order(recs) if r["stable"]]
-    lines += [
-        "- stable self-similar data: " + ("; ".join(f"`{r['compact']}` on {_sets(r, 'stable')}" for r in stable)
-                                         or "none"),
-        "- stable self-similar data other than (ab)^n(cb)^n (and the three-particle ab): "
-        + (", ".join(f"`{w}`" for w in f["other_than_ab_n_cb_n"]) or f"none up to length {L}"),
+    lines += ["- stable self-similar data:"] + [f"  - `{r['compact']}` on {_sets(r, 'stable')}" for r in stable] + [
         "- stable self-similar windows reaching above 3-2√2 ≈ 0.171573 (compared on certified isolating intervals "
-        "and minimal polynomials): " + (", ".join(f"`{w}`" for w in f["above_3-2√2"]) or f"none up to length {L}")
-        + (f"; not decided: {', '.join(f['undecided_against_3-2√2'])}" if f["undecided_against_3-2√2"] else ""),
+        "and minimal polynomials): " + (_names(f["above_3-2√2"], by) if f["above_3-2√2"] else f"none up to length {L}")
+        + (f"; not decided: {_names(f['undecided_against_3-2√2'], by)}" if f["undecided_against_3-2√2"] else ""),
         "- T28 (l. 515, Remark 3.3: a pattern containing abcab 'does not seem to have feasible initial data'): "
-        + (f"refuted: {', '.join(f'`{w}`' for w in s['abcab']['feasible'])} contain abcab (cyclically, or its "
-           "mirror cbacb) and have feasible self-similar data (certificate T28 re-checks the shortest and runs "
-           "the exact dynamics from their data)" if s["abcab"]["feasible"]
-           else f"no counterexample up to length {L}"),
+        + (f"refuted: {len(s['abcab']['feasible'])} words contain abcab (cyclically, or its mirror cbacb) and have "
+           f"feasible self-similar data, the shortest {_names(s['abcab']['feasible'], by)} (all in the appendix; "
+           "certificate T28 re-checks the shortest and runs the exact dynamics from their data)"
+           if s["abcab"]["feasible"] else f"no counterexample up to length {L}"),
         "",
     ]
     lines += reduction_lines(s, recs, L)
     if figure:
         lines += [f"![stable self-similar windows and attracting windows of the reduction]({figure})", ""]
-    lines += ["## Every word", "",
-              "Words with stable self-similar data first, then with an attracting periodic orbit of the reduction, "
-              "feasible, undecided, in error, the rest.", "",
-              "| word | length | blocks | abcab | verdict (self-similar) | feasible r-sets | stable r-sets | "
-              "attracting periodic orbit of the reduction | note |",
-              "|---|---:|---|:-:|---|---|---|---|---|"]
-    for r in sorted(recs, key=rank):
-        note = r["error"] if r["outcome"] == "error" else ("undecided points" if r["undecided"] else "")
-        lines.append(f"| `{r['compact']}` | {r['length']} | {' '.join(r['blocks'])} | "
-                     f"{'yes' if r['contains_abcab'] else ''} | {_cell(r['verdict'])} | "
-                     f"{_cell(_sets(r, 'feasible')) if r['outcome'] == 'analysed' else '—'} | "
-                     f"{_cell(_sets(r, 'stable')) if r['outcome'] == 'analysed' else '—'} | "
-                     f"{_cell(_attracting(r))} | {_cell(note)} |")
-    return "\n".join(lines) + "\n"
+    lines += notable_lines(recs) + appendix_lines(s, by)
+    return "\n".join(lines).rstrip("\n") + "\n"
 
 
 # --------------------------------------------------------------------------
@@ -415,7 +650,9 @@ def written_length(out) -> int | None:
 
 
 def write_outputs(records, max_length: int, out) -> dict:
-    """OUT/CENSUS.md, OUT/census.json and OUT/census-windows.png; returns the document."""
+    """OUT/CENSUS.md, OUT/census.json, OUT/census-words.csv.gz (:data:`TABLE`) and
+    OUT/census-windows.png from the census records (analysed, or read back from a
+    census.json: the same bytes, :func:`brief`); returns the document."""
     out = Path(out)
     doc = document(records, max_length)
     drawn = window_figure(doc, out / FIGURE, marks())
@@ -423,4 +660,5 @@ def write_outputs(records, max_length: int, out) -> dict:
         (out / FIGURE).unlink()
     write_atomic(out / "CENSUS.md", markdown(doc, FIGURE if drawn else None))
     write_atomic(out / "census.json", to_json(doc))
+    write_atomic(out / TABLE, table(doc))
     return doc

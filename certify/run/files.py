@@ -63,7 +63,7 @@ def read_text_or_none(path) -> str | None:
 def first_member(text: str, key: str):
     """``json.loads(text)[key]`` for a JSON object, decoding only that member when it is the
     object's first (the rest of the text is not parsed: reports/census.json opens with its
-    summary "census", 33 kB, before 13 MB of per-word records); KeyError without it,
+    summary "census", 94 kB, before 6 MB of per-word records); KeyError without it,
     ValueError for text that is not JSON."""
     import json
     decoder, ws = json.JSONDecoder(), re.compile(r"[ \t\n\r]*")
@@ -84,8 +84,8 @@ _MISSING = object()
 
 def read_first_member(path, key: str, chunk: int = 1 << 16):
     """:func:`first_member` of the text of ``path``, reading only as much of the file as
-    that member needs when it is the object's first (reports/census.json: its 33 kB
-    summary, not the 97 MB after it); the whole file otherwise.  None when the file does
+    that member needs when it is the object's first (reports/census.json: its 94 kB
+    summary, not the 6 MB after it); the whole file otherwise.  None when the file does
     not exist or cannot be read (as :func:`read_text_or_none`; a defect after the member
     is not read)."""
     import codecs

@@ -100,7 +100,8 @@ def test_census_json_is_the_document_with_a_record_a_line(reference):
     assert json.loads(text) == run_census.document(reference, L_SMALL)
     lines = text.splitlines()
     start = lines.index('"words": [') + 1
-    assert [json.loads(line.rstrip(",")) for line in lines[start:-1]] == reference and lines[-1] == "]}"
+    assert [json.loads(line.rstrip(",")) for line in lines[start:-1]] == [run_census.brief(r) for r in reference]
+    assert lines[-1] == "]}"
 
 
 def test_serial_census_lists_every_word(reference):
@@ -227,15 +228,20 @@ FAKE_REDUCTION = {"outcome": "analysed", "feasible": False, "attracting": False,
                              "repelling": [], "complex_pair": [], "undecided": []}}
 
 
-def test_markdown_lists_feasible_words_first_and_errors_with_their_error(tmp_path):
+def test_markdown_tables_the_notable_words_and_lists_the_feasible_ones(tmp_path):
+    """The table of notable words: stable first, then in error (with its error); a word only
+    feasible is not a row but is in the appendix's list (every word: the data table)."""
     recs = [fake(w) for w in census.words(5)]
     recs[1] = dict(recs[1], outcome="error", feasible=None, stable=None, verdict="error", error="ArithmeticError: x")
     doc = run_census.document(recs, 5)
     text = run_census.markdown(doc)
     rows = [line for line in text.splitlines() if line.startswith("| `")]
-    assert len(rows) == len(recs)
-    assert rows[0].startswith("| `ab`") and rows[1].startswith("| `abcb`")
-    assert "ArithmeticError: x" in text and "analysis error: 1 (acb)" in text
+    assert [row.split(" | ")[0] for row in rows] == ["| `ab`", "| `acb`"]
+    assert "ArithmeticError: x" in rows[1]
+    assert "| an analysis error (either way) | 1 | `acb` |" in text
+    appendix = text[text.index("## Appendix"):]
+    feasible = appendix[appendix.index("### Words with feasible self-similar data (2)"):]
+    assert feasible.splitlines()[2] == "`ab`, `abcb`"
 
 
 # ----------------------------------------------------------------- the command line
