@@ -262,8 +262,8 @@ def section5_figure(data, dpi: int | None = None) -> str:
     fraction = data.certified_fraction()
     if fraction is not None:             # the run itself, proved collision by collision up to its horizon
         horizon = int(data.certified.max())
-        title += (f"\ncertified: {fraction:.2%} of the collisions computed (each orbit's first ≤ {horizon}; "
-                  "the plotted ones, later, shadow true orbits)" if horizon < data.collisions - data.keep
+        title += (f"\ncertified: {fraction:.2%} of the collisions computed (at most the first {horizon} of each "
+                  "orbit; the plotted ones, later, shadow true orbits)" if horizon < data.collisions - data.keep
                   else f"\ncertified: {fraction:.2%} of the collisions computed")
     points = data.extra.get("points")
     if points and points["all"]["points"]:  # the plotted points, proved afterwards through the dynamics

@@ -110,3 +110,15 @@ def test_the_section5_captions_name_what_each_percentage_counts(monkeypatch, tmp
     title = fig.axes[0].get_title()
     assert title.count("%") == 3 and fc.unnamed_percentages(title) == []
     assert fc.problems(fig) == {}
+
+
+def test_the_numerics_benchmark_figure_is_legible(monkeypatch, tmp_path):
+    """bench_numerics.png: three panels side by side whose titles overlapped; a table shaped as
+    `certify bench --numerics` makes it (engines' times and errors spread as measured there)."""
+    bench = pytest.importorskip("benchmarks.bench_numerics")
+    marks = (100, 1000, 10_000)
+    engines = {"float64": (0.03, 1e-15), "mp 16 digits": (150.0, 1e-15), "mp 30 digits": (160.0, 1e-28),
+               "mp 60 digits": (165.0, 1e-63), "mp 120 digits": (175.0, 1e-123), "ball (64/128 bits)": (70.0, 1e-19)}
+    table = [[name] + [x for _ in bench.ORBITS for x in (sec, err, err, err)] for name, (sec, err) in engines.items()]
+    fig, = fc.drawn(monkeypatch, tmp_path, bench.plot, table, marks, tmp_path / "bench_numerics.png")
+    assert fc.problems(fig) == {}
