@@ -346,11 +346,13 @@ def markdown(lines) -> str:
     return "\n".join(out) + "\n"
 
 
-def plot(table, marks):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(ORBITS), figsize=(5 * len(ORBITS), 4), sharey=True)
+def plot(table, marks, path=None):
+    """Each engine's error after the last mark against its time per collision, one panel per orbit,
+    into ``path`` (default reports/figures/bench_numerics.png; certify.run.saving.write_figure: the
+    same bytes for the same table)."""
+    from certify.run import saving
+    plt = saving.pyplot()
+    fig, axes = plt.subplots(1, len(ORBITS), figsize=(5 * len(ORBITS), 4.2), sharey=True)
     width = 1 + len(marks)
     for a, (ax, (name, r)) in enumerate(zip(axes, ORBITS.items())):
         for row in table:
@@ -358,16 +360,15 @@ def plot(table, marks):
             err = row[1 + a * width + len(marks)]
             if isinstance(err, float):
                 ax.loglog(sec, max(err, 1e-300), "o")
-                ax.annotate(row[0].split(" (")[0], (sec, max(err, 1e-300)), fontsize=7)
-        ax.set_title(f"{name} orbit, r = {r}: error after {marks[-1]} collisions")
+                ax.annotate(row[0].split(" (")[0], (sec, max(err, 1e-300)), xytext=(4, -3),
+                            textcoords="offset points", fontsize=7)
+        ax.margins(x=0.25)                      # room for the engines' names at the right
+        ax.set_title(f"{name} orbit, r = {r}:\nerror after {marks[-1]} collisions", fontsize=9)
         ax.set_xlabel("µs per collision")
+        ax.tick_params(labelleft=True)
     axes[0].set_ylabel("sin(angle to the certified normal)")
     fig.tight_layout()
-    PLOT.parent.mkdir(parents=True, exist_ok=True)
-    with files.atomic_path(PLOT) as tmp:
-        fig.savefig(tmp, format="png", dpi=100)
-    plt.close(fig)
-
+    saving.write_figure(fig, path or PLOT, dpi=100)
 
 if __name__ == "__main__":
     raise SystemExit(main())

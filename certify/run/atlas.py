@@ -600,7 +600,7 @@ def figure(doc: dict, path) -> Path:
     sampled r) with the resonances p/q, q ≤ 8; middle, one row per attractor, its certified
     windows as bars and the sampled r where data reached it as dots; bottom, the observed
     shares at each sampled r (island, attracting, unresolved).  Floats: a drawing only."""
-    from . import saving
+    from . import plots, saving
     plt = saving.pyplot()
     atts = doc["attractors"]
     rows = doc["r"]
@@ -611,15 +611,12 @@ def figure(doc: dict, path) -> Path:
     isl = [(float(Fraction(r["r"])), float(r["island"]["rotation_number"])) for r in rows if r["island"]]
     if isl:
         ax0.plot(*zip(*isl), ".-", color="tab:green", ms=2, lw=0.8)
-    marks = sorted({(float(x["hi"]), x["p"], x["q"]) for x in doc["summary"]["resonant_upper_ends"]})
-    for k, (x, p, q) in enumerate(marks):
-        if lo <= x <= hi:
-            for panel in (ax0, ax):
-                panel.axvline(x, color="grey", lw=0.4, ls=":")
-            ax0.annotate(f"{p}/{q}", (x, 1.0 + 0.11 * (k % 3)), xycoords=("data", "axes fraction"), fontsize=6,
-                         ha="center", va="bottom")
+    marks = {f"{p}/{q}": x for x, p, q in sorted({(float(x["hi"]), x["p"], x["q"])
+                                                  for x in doc["summary"]["resonant_upper_ends"]}) if lo <= x <= hi}
+    for x in marks.values():
+        for panel in (ax0, ax):
+            panel.axvline(x, color="grey", lw=0.4, ls=":")
     ax0.set_ylabel("ρ", fontsize=8)
-    ax0.set_title("the island's rotation number ρ(r); dotted: windows ending at ρ = p/q exactly", fontsize=7, pad=34)
     colour = {"real": "tab:orange", "complex": "tab:red", "real and complex": "tab:purple"}
     for k, a in enumerate(atts):
         for w in a["windows"]:
@@ -650,9 +647,16 @@ def figure(doc: dict, path) -> Path:
         bottom = [b + y for b, y in zip(bottom, ys)]
     bx.set_ylim(0, 1)
     bx.set_ylabel("share", fontsize=8)
-    bx.legend(fontsize=6, loc="upper right")
+    bx.legend(fontsize=6, loc="center right", bbox_to_anchor=(-0.1, 0.5))   # in the margin: it covers no bar
     bx.set_xlim(lo, hi)
     bx.set_xlabel("r")
+    for panel in (ax0, ax):                       # each panel its own r ticks
+        panel.tick_params(labelbottom=True)
+    fig.tight_layout()
+    fig.subplots_adjust(left=0.3)
+    rows = plots.label_lines(ax0, marks, color="black")     # the axes placed: the labels in rows, none overlapping
+    ax0.set_title("the island's rotation number ρ(r); dotted: windows ending at ρ = p/q exactly", fontsize=7,
+                  pad=plots.label_pad(rows))
     fig.tight_layout()
     fig.subplots_adjust(left=0.3)
     path = Path(path)

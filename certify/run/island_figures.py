@@ -5,8 +5,8 @@
   Q = c_max drawn over the b-section points of the paper's orbits (float64 engine, the
   initial data of ``certify.numerics.grid(8)``);
 * :func:`rotation_axes`: the rotation number ρ(r) on ]3−2√2, 1[ with the resonances p/q
-  marked, over the attracting windows of the census (reports/census.json, read with
-  :func:`certify.patterns.census.attracting_windows`);
+  marked and, on a strip below sharing its r axis, the attracting windows of the census
+  (reports/census.json, read with :func:`.census_report.committed_windows`);
 * :func:`island_figure`: both, side by side, written to a path (``certify island --figure``).
 """
 from __future__ import annotations
@@ -62,16 +62,24 @@ def section_data(r, collisions: int = 3000) -> tuple[float, list, tuple | None]:
 
 
 def draw_section(ax, r, data) -> None:
+    """The b-section points of each orbit (one colour each) and the island's boundary (black), with a
+    legend below the panel (it covers no point)."""
+    from matplotlib.lines import Line2D
     _, points, grid = data
     for k, (th, ph) in enumerate(points):
         ax.plot(th, ph, ".", ms=1.2, alpha=0.6, label=f"orbit {k + 1}")
+    handles, labels = ax.get_legend_handles_labels()
     if grid is not None:
         ax.contour(*grid, levels=[0], colors="k", linewidths=1.2)
+        handles.append(Line2D([], [], color="k", lw=1.2))
+        labels.append("the island's boundary Q = c_max")
     ax.set_xlim(0, math.pi / 2)
     ax.set_ylim(0, math.pi)
     ax.set_xlabel("θ")
     ax.set_ylabel("φ")
-    ax.set_title(f"b-section at r = {r}: the island's boundary Q = c_max (black)")
+    ax.set_title(f"b-section at r = {r}: {len(points)} orbits of the paper's initial data (float64)", fontsize=9)
+    ax.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=5, fontsize=7,
+              markerscale=5, frameon=False, handlelength=1.2, columnspacing=1.0)
 
 
 def section_axes(ax, r, collisions: int = 3000) -> None:
@@ -97,40 +105,55 @@ def rotation_data(Q: int = 12, windows=None) -> tuple[list, list]:
     return marks, shown
 
 
-def draw_rotation(ax, Q: int, data) -> None:
+def draw_rotation(ax, strip, Q: int, data) -> None:
+    """Top (``ax``): ρ(r) with the resonances p/q as vertical lines, labelled above the panel
+    (:func:`.plots.label_lines`: no two labels overlap).  Below (``strip``, the same r axis): the
+    census's attracting windows, one row per word, as bars (an r interval: no height on the ρ axis)."""
+    from .plots import label_lines, label_pad
     marks, shown = data
     rs = np.linspace(LOWER + 1e-9, 1 - 1e-9, 600)
     rho = np.arccos(-(1 - rs) ** 2 / (4 * rs)) / (2 * math.pi)
-    ax.plot(rs, rho, "k-", lw=1.2, label="ρ(r)")
-    for label, x, y in marks:
+    ax.plot(rs, rho, "k-", lw=1.2)
+    for _, x, y in marks:
         ax.axvline(x, color="tab:blue", lw=0.5, alpha=0.6)
-        ax.annotate(label, (x, y), fontsize=7, xytext=(2, 2), textcoords="offset points")
-    for k, (w, lo, hi) in enumerate(shown):            # one thin row per window, at the bottom
-        y = 0.02 + 0.04 * k
-        ax.axvspan(max(lo, LOWER), hi, ymin=y, ymax=y + 0.03, color="tab:orange", alpha=0.8,
-                   label="attracting windows (census)" if k == 0 else None)
-        ax.annotate(w, (max(lo, LOWER), 0.24 + 0.27 * (y + 0.03)), fontsize=6, va="bottom")
+        ax.plot([x], [y], "o", color="tab:blue", ms=2.5)
     ax.set_xlim(LOWER - 0.01, 1)
     ax.set_ylim(0.24, 0.51)
-    ax.set_xlabel("r")
+    rows = label_lines(ax, {label: x for label, x, _ in marks}, color="tab:blue", fontsize=7)
     ax.set_ylabel("rotation number ρ")
-    ax.set_title(f"ρ(r) and the resonances p/q, q ≤ {Q}")
-    ax.legend(loc="upper right", fontsize=7)
+    ax.set_title(f"ρ(r) and the resonances ρ = p/q, q ≤ {Q} (blue)", fontsize=9, pad=label_pad(rows, 7))
+    words = list(dict.fromkeys(w for w, _, _ in shown))
+    for w, lo, hi in shown:                        # clipped by the axes at 3−2√2 − 0.01
+        strip.barh(words.index(w), hi - lo, left=lo, height=0.6, color="tab:orange")
+    strip.set_yticks(range(len(words)), words, fontsize=7)
+    strip.set_ylim(len(words) - 0.5, -0.5)
+    strip.set_xlabel("r")
+    strip.set_title("attracting periodic orbits of the reduction: their windows in the census", fontsize=9)
 
 
-def rotation_axes(ax, Q: int = 12, windows=None) -> None:
-    draw_rotation(ax, Q, rotation_data(Q, windows))
+def rotation_axes(ax, strip, Q: int = 12, windows=None) -> None:
+    """ρ(r) on ``ax``, the census's windows (or ``windows``) on ``strip`` (:func:`draw_rotation`)."""
+    draw_rotation(ax, strip, Q, rotation_data(Q, windows))
+
+
+def island_axes(plt, section: bool, windows: int) -> tuple:
+    """The figure and its panels: the b-section on the left (when ``section``), ρ(r) at the right
+    over a strip of ``windows`` rows sharing its r axis."""
+    fig = plt.figure(figsize=(12 if section else 6, 5.2 + 0.2 * windows))
+    grid = fig.add_gridspec(2, 2 if section else 1, height_ratios=[3, 0.6 + 0.3 * max(windows, 1)])
+    left = fig.add_subplot(grid[:, 0]) if section else None
+    top = fig.add_subplot(grid[0, -1])
+    return fig, left, top, fig.add_subplot(grid[1, -1], sharex=top)
 
 
 def island_figure(path, r=None, Q: int = 12) -> Path:
     """The b-section at r (when given) and the rotation number against r, into ``path``."""
     plt = saving.pyplot()
-    ncols = 2 if r is not None else 1
-    fig, axes = plt.subplots(1, ncols, figsize=(6 * ncols, 4.5))
-    axes = np.atleast_1d(axes)
-    if r is not None:
-        section_axes(axes[0], r)
-    rotation_axes(axes[-1], Q)
+    data = rotation_data(Q)
+    fig, left, top, strip = island_axes(plt, r is not None, len({w for w, _, _ in data[1]}))
+    if left is not None:
+        section_axes(left, r)
+    draw_rotation(top, strip, Q, data)
     fig.tight_layout()
     return saving.write_figure(fig, path)
 
@@ -145,9 +168,9 @@ def report_figure(r) -> str:
 
     def draw() -> str:
         plt = saving.pyplot()
-        fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
-        draw_section(axes[0], r, section)
-        draw_rotation(axes[1], 12, rotation)
+        fig, left, top, strip = island_axes(plt, True, len({w for w, _, _ in rotation[1]}))
+        draw_section(left, r, section)
+        draw_rotation(top, strip, 12, rotation)
         fig.tight_layout()
         return saving.save_figure(fig, "island")
     _, points, grid = section

@@ -47,11 +47,12 @@ def _marks(marks: dict | None) -> list[tuple[str, float]]:
     return [(label, float(value)) for label, value in (marks or {}).items()]
 
 
-def _draw_marks(ax, marks: list[tuple[str, float]]) -> None:
-    for label, value in marks:
+def _draw_marks(ax, marks: list[tuple[str, float]]) -> int:
+    """The critical values of r as dashed grey lines, labelled above the axes (:func:`label_lines`);
+    returns the rows of labels."""
+    for _, value in marks:
         ax.axvline(value, color="grey", lw=0.6, ls="--")
-        ax.annotate(label, (value, 1.0), xycoords=("data", "axes fraction"), fontsize=7,
-                    rotation=90, va="top", ha="right")
+    return label_lines(ax, dict(marks), color="black", fontsize=7)
 
 
 def _spectrum_key(spectrum) -> str:
@@ -87,8 +88,8 @@ def spectrum_figures(spectrum, table, marks: dict) -> list[str]:
             for k, ok in enumerate(oks):
                 ax.plot(rs[ok], np.where(ok, curves[:, k], np.nan)[ok], ".", ms=1.5, color=COLORS[k],
                         label=BRANCH_NAMES[k] + " branch" if k < 3 else f"branch {k}")
-            _draw_marks(ax, shown)
             ax.set_xlim(r_lo, r_hi)
+            _draw_marks(ax, shown)
             if ylim:
                 ax.set_ylim(*ylim)
             ax.set_xlabel("r")
@@ -122,14 +123,13 @@ def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=No
                 ax.plot(rs[ok], curves[ok, k], ".", ms=1.5, color=color,
                         label=None if sign in labelled else ("> 0" if sign > 0 else "< 0"))
                 labelled.add(sign)
-        _draw_marks(ax, shown)
         ax.set_xlim(*xlim)
-        if ylim:
-            ax.set_ylim(*ylim)
         ax.set_yscale("symlog", linthresh=1e-4)
+        ax.set_ylim(*(ylim or (min(0.0, float(np.nanmin(curves))), None)))   # no empty band below the data
+        rows = _draw_marks(ax, shown)
         ax.set_xlabel("r")
         ax.set_ylabel("λ")
-        ax.set_title(title, fontsize=9)
+        ax.set_title(title, fontsize=9, pad=label_pad(rows, 7))
         ax.legend(loc="best", fontsize=7, markerscale=6)
         return saving.save_figure(fig, name)
     key = saving.input_digest(_spectrum_key(spectrum), title, xlim, ylim, *(ok for *_, ok in oks), shown)
@@ -139,18 +139,29 @@ def sign_chart(spectrum, table, name: str, title: str, xlim=(1e-4, 0.2), ylim=No
 # --------------------------------------------------------------------------
 # Section 5: clouds of (r, φ) points (certify.numerics.figures)
 
-LABEL_FONT_INCH = 6 * 0.6 / 72          # the width of one character of a 6 pt label, in inches
+LABEL_PAD = 2                           # points between the axes and the first row of labels, and between rows
 
 
-def label_rows(lines: dict, xlo: float, xhi: float, axes_inches: float) -> dict:
-    """Where to write each threshold label above the axes so that none overprints another
+def text_width_inches(text: str, fontsize: float) -> float:
+    """The width of ``text`` set in the default font at ``fontsize`` points, in inches (measured,
+    as the renderer sets it)."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+    width, _, _ = TextToPath().get_text_width_height_descent(text, FontProperties(size=fontsize), ismath=False)
+    return width / 72
+
+
+def label_rows(lines: dict, xlo: float, xhi: float, axes_inches: float, fontsize: float = 6) -> dict:
+    """Where to write each line's label above the axes so that none overprints another
     or is cut at an edge: ``{label: (x as axes fraction, row, ha)}``, row 0 first, a label
-    going to the first row where it does not overlap one already placed."""
+    going to the first row where it does not overlap one already placed (labels measured
+    with :func:`text_width_inches`, a space apart)."""
     placed: dict[int, list[tuple[float, float]]] = {}
     out = {}
+    space = text_width_inches(" ", fontsize)
     for label, value in sorted(lines.items(), key=lambda kv: kv[1]):
         x = (value - xlo) / (xhi - xlo)
-        w = (len(label) + 1) * LABEL_FONT_INCH / axes_inches
+        w = (text_width_inches(label, fontsize) + space) / axes_inches
         left, ha = (x - w / 2, "center")
         if left < 0:
             left, ha = x, "left"
@@ -161,6 +172,27 @@ def label_rows(lines: dict, xlo: float, xhi: float, axes_inches: float) -> dict:
         placed.setdefault(row, []).append((left, left + w))
         out[label] = (x, row, ha)
     return out
+
+
+def label_lines(ax, lines: dict, color: str = "red", fontsize: float = 6) -> int:
+    """Label the vertical lines ``lines`` ({label: r}, those inside the x range of ``ax``) above
+    the axes, in rows (:func:`label_rows`) so that no two labels overlap; the axes' x limits
+    and its place in the figure set first.  Returns the number of rows (:func:`label_pad`)."""
+    xlo, xhi = ax.get_xlim()
+    shown = {label: value for label, value in lines.items() if xlo <= value <= xhi}
+    fig = ax.get_figure()
+    inches = ax.get_position().width * fig.get_figwidth() * 0.9    # tight_layout may narrow the axes a little
+    rows = label_rows(shown, xlo, xhi, inches, fontsize)
+    for label, (x, row, ha) in rows.items():
+        ax.annotate(label, (x, 1.0), xycoords="axes fraction", xytext=(0, LABEL_PAD + (fontsize + LABEL_PAD) * row),
+                    textcoords="offset points", fontsize=fontsize, va="bottom", ha=ha, color=color,
+                    annotation_clip=False)
+    return 1 + max((row for _, row, _ in rows.values()), default=-1)
+
+
+def label_pad(rows: int, fontsize: float = 6) -> float:
+    """The title's pad (points) above ``rows`` rows of :func:`label_lines`."""
+    return 6 + (fontsize + LABEL_PAD) * rows + (LABEL_PAD if rows else 0)
 
 
 def omega_figure(data, name: str, lines: dict | None = None, boxes=(), title: str = "",
@@ -198,17 +230,14 @@ def _draw_omega(data, name: str, lines, boxes, title: str, size, dpi) -> str:
     shown = {label: value for label, value in (lines or {}).items() if lo <= value <= hi}
     for value in shown.values():
         ax.axvline(value, color="red", lw=0.8)
-    rows = label_rows(shown, xlo, xhi, size[0] * 0.85)
-    for label, (x, row, ha) in rows.items():
-        ax.annotate(label, (x, 1.0 + 0.012 + 0.04 * row), xycoords="axes fraction", fontsize=6, va="bottom", ha=ha,
-                    color="red", annotation_clip=False)
     for b_lo, b_hi in boxes:
         ax.add_patch(Rectangle((b_lo, 0.02), b_hi - b_lo, np.pi - 0.04, fill=False, edgecolor="red", lw=1.0))
-    ax.set_xlim(lo - span / (2 * width), hi + span / (2 * width))
+    ax.set_xlim(xlo, xhi)
     ax.set_ylim(0, np.pi)
+    rows = label_lines(ax, shown)
     ax.set_xlabel("r")
     ax.set_ylabel("φ")
-    ax.set_title(title, fontsize=8, pad=6 + 9 * (1 + max((row for _, row, _ in rows.values()), default=-1)))
+    ax.set_title(title, fontsize=8, pad=label_pad(rows))
     if broken.size:
         ax.legend(loc="upper right", fontsize=7)
     fig.tight_layout()
@@ -231,17 +260,18 @@ def section5_figure(data, dpi: int | None = None) -> str:
              f"{orbits} orbit{'s' if orbits != 1 else ''}, last {data.keep} b-collisions of {data.collisions}, "
              f"{data.engine}")
     fraction = data.certified_fraction()
-    if fraction is not None:
-        title += (f"\ncertified: {fraction:.2%} of the collisions (horizon ≤ {int(data.certified.max())}: "
-                  "the points are shadowing orbits)" if data.certified.max() < data.collisions - data.keep
-                  else f"\ncertified: {fraction:.2%} of the collisions")
+    if fraction is not None:             # the run itself, proved collision by collision up to its horizon
+        horizon = int(data.certified.max())
+        title += (f"\ncertified: {fraction:.2%} of the collisions computed (at most the first {horizon} of each "
+                  "orbit; the plotted ones, later, shadow true orbits)" if horizon < data.collisions - data.keep
+                  else f"\ncertified: {fraction:.2%} of the collisions computed")
     points = data.extra.get("points")
-    if points and points["all"]["points"]:
+    if points and points["all"]["points"]:  # the plotted points, proved afterwards through the dynamics
         a, b = points["all"], points["above_3-2sqrt2"]
-        title += ("\ncertified points (within a pixel of the true orbit: island, trap or ball engine): "
-                  f"{a['fraction']:.2%}"
-                  + (f", {b['fraction']:.2%} for r > 3−2√2" if b["points"] else "")
-                  + (f" (every {points['every']}th r)" if points["every"] > 1 else ""))
+        every = f"; every {points['every']}th r" if points["every"] > 1 else ""
+        title += ("\ncertified within a pixel of the true orbit (island, trap or ball engine"
+                  f"{every}): {a['fraction']:.2%} of the plotted points"
+                  + (f", {b['fraction']:.2%} of those at r > 3−2√2" if b["points"] else ""))
     lines = red_lines() if saving.enabled() else None       # mpmath roots, for drawing only
     return omega_figure(data, section5_name(spec.id, data.resolution), lines=lines, boxes=spec.boxes,
                         title=title, dpi=dpi)

@@ -144,22 +144,3 @@ def test_observe_fails_only_on_a_consistency_check():
     assert observe([Check("seen", False)]).note.startswith(runner.DISAGREES)
     assert observe([Check("seen", True), Check("engine", False, counts=False)]).status == runner.FAIL
     assert observe([]).status == runner.FAIL
-
-
-def test_threshold_labels_neither_overprint_nor_leave_the_figure():
-    """Figure 7's lines r_max(4..6) lie within 0.01 of one another and r_exist at its right
-    edge: each label gets a row where it overlaps none, inside [0, 1] of the axes."""
-    from certify.run.plots import LABEL_FONT_INCH, label_rows
-    lines = F.red_lines()
-    spec = F.SPECS["5.2"]
-    rows = label_rows({k: v for k, v in lines.items() if spec.lo <= v <= spec.hi}, spec.lo, spec.hi, 7.6)
-    boxes = {}
-    for label, (x, row, ha) in rows.items():
-        w = (len(label) + 1) * LABEL_FONT_INCH / 7.6
-        left = {"center": x - w / 2, "left": x, "right": x - w}[ha]
-        assert 0 <= left and left + w <= 1, label
-        boxes.setdefault(row, []).append((left, left + w))
-    for spans in boxes.values():
-        spans.sort()
-        assert all(a[1] <= b[0] for a, b in zip(spans, spans[1:]))
-    assert len(boxes) > 1 and "r_exist" in rows
