@@ -286,18 +286,20 @@ def family_windows_figure(exact: list, band: list, name: str = "L5-family-window
     [s_hi interval]) over ε = 1/n ∈ [ε₀, ε₁] (shaded: the window's lower end lies in the lower
     box, its upper end in the upper box); left all n, right n ≥ 10.  Floats: a drawing of
     certified numbers."""
+    last = max(n for n, _lo, _hi in exact)        # the exact windows are listed to n = last, the boxes beyond
+
     def panel(ax, first: bool):
         for k, (e0, e1, lo, hi) in enumerate(band):
             label = first and k == 0
             ax.fill_between([e0, e1], [lo[0]] * 2, [lo[1]] * 2, color="tab:orange", lw=0,
-                            label="n > N₀: the lower end (proved box)" if label else None)
+                            label=f"n > {last}: the lower end (proved box)" if label else None)
             ax.fill_between([e0, e1], [hi[0]] * 2, [hi[1]] * 2, color="tab:green", lw=0,
-                            label="n > N₀: the upper end (proved box)" if label else None)
+                            label=f"n > {last}: the upper end (proved box)" if label else None)
             ax.fill_between([e0, e1], [lo[1]] * 2, [hi[0]] * 2, color="tab:blue", alpha=0.15, lw=0,
-                            label="n > N₀: inside the window" if label else None)
+                            label=f"n > {last}: inside the window" if label else None)
         for k, (n, lo, hi) in enumerate(exact):
             ax.plot([1 / n, 1 / n], [lo, hi], color="tab:blue", lw=2,
-                    label="n ≤ N₀: the exact window" if first and k == 0 else None)
+                    label=f"n ≤ {last}: the exact window" if first and k == 0 else None)
         ax.set_xlabel("1/n")
 
     def draw():
