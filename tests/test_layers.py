@@ -15,7 +15,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 LAYERS = ("algebra", "dynamics", "patterns", "numerics", "run")
-CONTRACTS = 4      # pyproject.toml: the layers, the floors of certify/algebra, the kernel alone, the floors of the kernel
+CONTRACTS = 4      # pyproject.toml: the layers, the floors of algebra, the kernel alone, the floors of the kernel
 
 
 def lint(tree: Path) -> subprocess.CompletedProcess:
