@@ -72,6 +72,8 @@ COLLISIONS = 20_000                           # of each float64 run and rigorous
 WORD_MAX = MAX_ORBIT_LENGTH                   # longer words: no window (orbit_at at the r seen)
 WORD_SECONDS = 600                            # time limit of one word's window
 REFINE = 3                                    # rounds of refinement after the first grid
+LATE = 4                                      # a long transient is run again LATE times longer
+TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
 RESONANCE_Q = 32
 STATE = "atlas-state.jsonl"
 FIGURE = "atlas.png"
@@ -182,17 +184,41 @@ def seeds() -> dict[str, str]:
 
 
 # ------------------------------------------------------------------ the jobs
+def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
+    """What an unresolved orbit shows (observed; the word's type at r is exact): a *long
+    transient* when the word its float64 run repeats has an attracting periodic orbit at r
+    (``orbit_at``) that the orbit had not been proved to enter; a word whose periodic orbit
+    at r is *not attracting* (a saddle, repelling, of multiplier modulus 1, or none: the run
+    repeats the word without converging, an invariant curve or a slow transient); else
+    nothing recognised (no period within the run, a block too long, not a word)."""
+    if observed is None:
+        return NOTHING
+    try:
+        normal = read(observed)[0]
+    except UsageError:
+        return NOTHING
+    o = ident.decided(normal, r)
+    return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
+
+
 def r_job(r: str, data: list, collisions: int) -> dict:
-    """Every orbit of ``data`` at r classified by identify; the island at r (the theorem,
-    the rotation number, the certified share of the b-section).  Plain data."""
+    """Every orbit of ``data`` at r classified by identify (an unresolved long transient run
+    again, :data:`LATE` times longer, its class kept if that run proves one); the island at r
+    (the theorem, the rotation number, the certified share of the b-section).  Plain data."""
     start = time.perf_counter()
     q = Fraction(r)
     fq = flint.fmpq(q.numerator, q.denominator)
     orbits = []
     for th, ph in data:
         x = ident.classify(q, th, ph, collisions)
+        rerun = None
+        if x.cls == UNRESOLVED and unresolved_kind(x.word, fq) == TRANSIENT:
+            rerun = LATE * collisions
+            y = ident.classify(q, th, ph, rerun)
+            x = y if y.cls != UNRESOLVED else x
         rec = {"theta0": th, "phi0": ph, "class": x.cls, "certified_from": x.certified_from,
-               "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else ""}
+               "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else "",
+               "rerun": rerun, "unresolved": unresolved_kind(x.word, fq) if x.cls == UNRESOLVED else None}
         if x.cls == ATTRACTING:
             normal = read(x.word)[0]
             rec["word"], rec["branch"] = normal, ident.decided(normal, fq).branch_name
@@ -631,8 +657,9 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
         q = Fraction(rec["r"])
         rows.append({"r": rec["r"], "digits": f"{float(q):.6f}", "island": rec["island"],
                      "counts": _counts(rec["orbits"]), "total": len(rec["orbits"]),
-                     "orbits": [{k: o[k] for k in ("theta0", "phi0", "class", "certified_from", "word", "branch",
-                                                   "observed", "why")} for o in rec["orbits"]]})
+                     "orbits": [{**{k: o[k] for k in ("theta0", "phi0", "class", "certified_from", "word", "branch",
+                                                     "observed", "why")},
+                                 "rerun": o.get("rerun"), "unresolved": o.get("unresolved")} for o in rec["orbits"]]})
     for cell in cells:
         sampled = [row for row in rows if _in_cell(Fraction(row["r"]), cell)]
         cell["sampled"] = [row["r"] for row in sampled]
@@ -703,7 +730,8 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                         "attractors_without_windows": len(no_window), "inconsistent": inconsistent,
                         "upper_ends_above": above, "resonant_upper_ends": resonant, "interior_ends": interior,
                         "seeds": sum(w.get("source", "met") != "met" for w in word_records),
-                        "families": len(fams), "certified_share_above": share_above(rows)},
+                        "families": len(fams), "certified_share_above": share_above(rows),
+                        "unresolved_by_kind": unresolved_by_kind(rows)},
             "attractors": attractors, "without_window": no_window, "cells": cells,
             "families": fams, "by_resonance": by_resonance(resonant),
             "observed_words": dict(sorted(observed.items(), key=lambda kv: (-kv[1], kv[0]))),
@@ -724,6 +752,19 @@ def why_no_window(w: dict) -> str:
     if w["outcome"] == "time limit":
         return f"time limit: the window's analysis took over {w['word_seconds']} s"
     return w["outcome"] + (f" ({w['error']})" if w.get("error") else "")
+
+
+def unresolved_by_kind(rows: list[dict]) -> dict:
+    """The unresolved orbits by what they show (:func:`unresolved_kind`), and the orbits whose
+    class the longer run of a long transient proved."""
+    out = {k: 0 for k in (TRANSIENT, NOT_ATTRACTING, NOTHING)}
+    for row in rows:
+        for o in row["orbits"]:
+            if o["class"] == UNRESOLVED:
+                out[o["unresolved"] or NOTHING] += 1
+    out["certified by a longer run"] = sum(1 for row in rows for o in row["orbits"]
+                                           if o["rerun"] and o["class"] != UNRESOLVED)
+    return out
 
 
 def share_above(rows: list[dict]) -> dict:
@@ -767,6 +808,12 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            f"φ0 ∈ ]0, π[); {p['collisions']} collisions per float64 run and per rigorous scan",
            f"- orbits: {s['orbits']}: island {cls[ISLAND]}, attracting periodic (certified) {cls[ATTRACTING]}, "
            f"unresolved {cls[UNRESOLVED]} (`certify identify`'s classes)",
+           "- unresolved, by what they show (observed): " + "; ".join(
+               f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
+           + f" (a long transient: its word attracts at r, run again {LATE}× longer; "
+           f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so and are counted in their "
+           "class; a word not attracting at r: repeated without converging, an invariant curve or a slow transient, "
+           "its rotation number not computed)",
            f"- words certified: {s['words']}; attractors (word, branch) with an exact window over ]0, 1[: "
            f"{s['attractors_with_windows']}; without one: {s['attractors_without_windows']} (longer than "
            f"{p['word_max']} letters, or over the time limit of {p['word_seconds']} s: known only at the r where "
@@ -1033,6 +1080,16 @@ def check_orbits(doc: dict, rows=None) -> list[str]:
             problems.append(f"r = {row['r']}: the counts are not those of its orbits")
         for o in row["orbits"]:
             x = ident.classify(r, o["theta0"], o["phi0"], collisions)
+            late = x.cls == UNRESOLVED and unresolved_kind(x.word, fq) == TRANSIENT
+            if o.get("rerun") != (LATE * collisions if late else None):
+                problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: run again "
+                                f"{o.get('rerun')} in the atlas, not what identify's class asks for")
+            elif o.get("rerun"):
+                y = ident.classify(r, o["theta0"], o["phi0"], o["rerun"])
+                x = y if y.cls != UNRESOLVED else x
+            if o["class"] == UNRESOLVED and o.get("unresolved") != unresolved_kind(x.word, fq):
+                problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: unresolved "
+                                f"{o.get('unresolved')} in the atlas, {unresolved_kind(x.word, fq)} by orbit_at")
             word = read(x.word)[0] if x.cls == ATTRACTING else None
             branch = ident.decided(word, fq).branch_name if word else None
             if (x.cls, word, branch) != (o["class"], o["word"], o["branch"]):

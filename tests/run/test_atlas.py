@@ -281,3 +281,34 @@ def test_the_progress_bar_follows_a_total_that_grows():
     assert "2/4" in tty.getvalue()
     bar(4, 4)
     assert progress._OPEN == []
+
+
+def test_unresolved_orbits_say_what_they_show(doc):
+    r = atlas.flint.fmpq(9, 10)
+    assert atlas.unresolved_kind(None, r) == atlas.NOTHING
+    assert atlas.unresolved_kind("abcb", r) == atlas.NOT_ATTRACTING               # repelling near r = 1
+    assert atlas.unresolved_kind("abacbabcbcabcb", r) == atlas.TRANSIENT           # attracting at 9/10
+    kinds = doc["summary"]["unresolved_by_kind"]
+    assert sum(v for k, v in kinds.items() if k != "certified by a longer run") == doc["summary"]["classes"][
+        atlas.UNRESOLVED]
+    for row in doc["r"]:
+        for o in row["orbits"]:
+            assert (o["unresolved"] is None) == (o["class"] != atlas.UNRESOLVED)
+
+
+def test_a_wrong_unresolved_kind_or_rerun_is_caught(doc):
+    bad = copy.deepcopy(doc)
+    row = bad["r"][0]
+    o = row["orbits"][0]
+    o["rerun"] = 7
+    assert any("run again" in p for p in atlas.check_orbits(bad, [row]))
+    bad = copy.deepcopy(doc)
+    row = next((r for r in bad["r"] if any(o["class"] == atlas.UNRESOLVED for o in r["orbits"])), None)
+    if row is None:                                   # the tiny atlas may resolve every orbit: make one
+        row = bad["r"][0]
+        row["orbits"] = row["orbits"][:1]
+        o = row["orbits"][0]
+    else:
+        o = next(o for o in row["orbits"] if o["class"] == atlas.UNRESOLVED)
+    o["class"], o["unresolved"] = atlas.UNRESOLVED, "no such kind"
+    assert atlas.check_orbits(bad, [row]) != []
