@@ -90,11 +90,14 @@ def register(commands) -> None:
     from certify.run import atlas
     p = add_command(commands, "atlas", cmd_atlas,
                     help="map the attractors of the reduction over ]0, 1[: classes, certified windows, families",
-                    description="Over a grid of r and of initial data on the b-section, every orbit classified by "
-                    "identify (island / attracting periodic, certified / unresolved); each certified word's exact "
-                    "attracting windows over ]0, 1[ by orbit (words too long or too slow: only at the r seen); the "
-                    "windows stitched into cells of ]0, 1[ with the attractors that coexist there (certified) and "
-                    "the shares of initial data reaching each (observed); families of words. Writes DIR/ATLAS.md, "
+                    description="Starting from the known attractors (the families' members, the census's and "
+                    "identify --section5's attracting words) and over a grid of r refined where it matters and of "
+                    "initial data on the b-section, every orbit classified by identify (island / attracting periodic, "
+                    "certified / unresolved, with what it shows); each certified word's exact attracting windows over "
+                    "]0, 1[ by orbit (words too long or too slow: only at the r seen); the windows stitched into cells "
+                    "of ]0, 1[ with the attractors that coexist there (certified) and the shares of initial data "
+                    "reaching each (observed); the families as rules, their next members predicted and certified. "
+                    "Writes DIR/ATLAS.md, "
                     "DIR/atlas.json, DIR/atlas.png and the state DIR/atlas-state.jsonl (--resume).")
     p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
                    help=f"r in ]LO, HI[ (rationals, 0 <= LO < HI <= 1; default {atlas.LO} 1)")
