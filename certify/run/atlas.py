@@ -63,7 +63,7 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 1
+VERSION = 2
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
@@ -74,7 +74,8 @@ WORD_SECONDS = 600                            # time limit of one word's window
 REFINE = 3                                    # rounds of refinement after the first grid
 LATE = 4                                      # a long transient is run again LATE times longer
 TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
-RESONANCE_Q = 32
+RESONANCE_Q = 120                             # window ends decided to be resonances p/q, q ≤ 120
+NEAR_Q = 24                                   # a non-resonant end: the nearest p/q with q ≤ 24 (observed)
 STATE = "atlas-state.jsonl"
 FIGURE = "atlas.png"
 WINDOW = 16                                   # jobs in flight
@@ -546,8 +547,11 @@ def _in_cell(q: Fraction, cell: dict) -> bool:
 # ------------------------------------------------------------------ families and rotation numbers
 def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
     """The island's rotation number at a window end in [3 − 2√2, 1]: a resonance p/q (q ≤ Q)
-    decided exactly, else ρ (8 certified digits) and the nearest p/q with q ≤ Q ("near",
-    with the distance: an observation); None below 3 − 2√2."""
+    decided exactly, else ρ (8 certified digits) and the nearest p/q with q ≤ :data:`NEAR_Q`
+    ("near", with the distance: an observation); None below 3 − 2√2.  The one candidate: ρ is
+    a ball of width < 1/(2Q²), so if ρ = p/q with q ≤ Q, p/q is the fraction nearest its
+    midpoint with denominator ≤ Q (two such fractions are 1/Q² apart); that candidate is
+    decided exactly (:func:`is_resonance`)."""
     x = _alg(end)
     if x < LOWER_END:
         return None
@@ -555,28 +559,36 @@ def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
         return {"rho": "0.5", "resonance": [1, 2], "near": None}
     if x == Algebraic.rational(flint.fmpq(1)):
         return {"rho": "0.25", "resonance": [1, 4], "near": None}
-    pq = island_theorem.resonance_of(x, Q)
     with precision(200):
         rho = island_theorem.rotation_ball(x.arb(200), 200)
     lo, hi = ends(rho)
+    if not (hi - lo) * 2 * Q * Q < 1:
+        raise ArithmeticError(f"the rotation number at {x} is not narrow enough to find its resonance")
     digits = f"{float((lo + hi) / 2):.8f}"
-    if pq is not None:
-        return {"rho": digits, "resonance": list(pq), "near": None}
     mid = Fraction(int((lo + hi).p), int((lo + hi).q)) / 2
-    best = min((Fraction(p, q) for q in range(2, Q + 1) for p in range(1, q) if math.gcd(p, q) == 1),
+    cand = mid.limit_denominator(Q)
+    if is_resonance(x, cand.numerator, cand.denominator):
+        return {"rho": digits, "resonance": [cand.numerator, cand.denominator], "near": None}
+    best = min((Fraction(p, q) for q in range(2, NEAR_Q + 1) for p in range(1, q) if math.gcd(p, q) == 1),
                key=lambda f: (abs(f - mid), f.denominator))
     return {"rho": digits, "resonance": None, "near": [best.numerator, best.denominator],
             "distance": f"{float(abs(best - mid)):.2e}"}
 
 
-def closes_at(end: dict, p: int, q: int) -> bool:
-    """Whether the island's rotation number at the window end is exactly p/q: the end is
-    the same algebraic number as the resonance r_{p/q} (:func:`island_theorem.resonances_of_q`;
-    p/q = 1/2 is 3 − 2√2)."""
-    x = _alg(end)
+def is_resonance(x: Algebraic, p: int, q: int) -> bool:
+    """Whether the island's rotation number at x is exactly p/q: x is the same algebraic
+    number as a resonance r_{p/q} (:func:`island_theorem.resonances_of_q`; p/q = 1/2 is
+    3 − 2√2)."""
     if (p, q) == (1, 2):
         return x == LOWER_END
+    if q < 3:
+        return False
     return any(s.p == p and s.r == x for s in island_theorem.resonances_of_q(q))
+
+
+def closes_at(end: dict, p: int, q: int) -> bool:
+    """Whether a window end is exactly the resonance p/q (:func:`is_resonance`)."""
+    return is_resonance(_alg(end), p, q)
 
 
 def families(attractors: list[dict], words: list[dict]) -> list[dict]:

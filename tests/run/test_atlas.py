@@ -312,3 +312,34 @@ def test_a_wrong_unresolved_kind_or_rerun_is_caught(doc):
         o = next(o for o in row["orbits"] if o["class"] == atlas.UNRESOLVED)
     o["class"], o["unresolved"] = atlas.UNRESOLVED, "no such kind"
     assert atlas.check_orbits(bad, [row]) != []
+
+
+def test_the_committed_atlas_misses_no_seed_nor_family_member(monkeypatch):
+    """reports/atlas.json: every known attractor and family member has its record and every
+    family its three certified members and certified prediction; dropping one is caught."""
+    from certify.run.files import load_findings
+    monkeypatch.setattr(atlas, "FAMILIES", FAMILIES)
+    doc = load_findings("atlas.json")
+    if doc is None or doc["version"] < atlas.VERSION:
+        pytest.skip("the committed atlas predates version 2 (regenerate: python -m certify atlas)")
+    assert atlas.check_seeds(doc) == [] and atlas.check_families(doc) == []
+    assert {f["family"] for f in doc["families"]} == {rule.name for rule in FAMILIES}
+    member = doc["families"][-1]["members"][1]["word"]
+    bad = copy.deepcopy(doc)
+    bad["attractors"] = [a for a in bad["attractors"] if a["word"] != member]
+    bad["words"] = [w for w in bad["words"] if w["word"] != member]
+    assert atlas.check_seeds(bad) and atlas.check_families(bad)
+
+
+def test_a_window_end_is_found_a_resonance_with_a_large_denominator():
+    """(abacbc)^9a(bcabac)^9bcb closes at ρ = 18/37 and the 122-letter word at 19/40: with
+    resonances looked up to q ≤ 32 only, they read "near" (15 of 17 interior upper ends of a
+    coarse atlas were resonances, 17 of 17 with q ≤ 120)."""
+    from certify.patterns.island_theorem import resonances_of_q
+    from certify.patterns.pattern import end_data
+    s = next(x for x in resonances_of_q(37) if x.p == 18)
+    assert atlas.end_rotation(end_data(s.r))["resonance"] == [18, 37]
+    assert atlas.is_resonance(s.r, 18, 37) and not atlas.is_resonance(s.r, 17, 35)
+    off = atlas.Algebraic.rational(atlas.flint.fmpq(1731, 10000))          # ρ there is not p/q with q ≤ 120
+    rot = atlas.end_rotation(end_data(off))
+    assert rot["resonance"] is None and rot["near"][1] <= atlas.NEAR_Q
