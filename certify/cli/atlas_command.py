@@ -26,10 +26,13 @@ def cmd_atlas(args) -> int:
     state = out / atlas.STATE
     params = {"r_range": [str(atlas.Fraction(lo)), str(atlas.Fraction(hi))], "resolution": args.resolution,
               "data": args.data, "collisions": args.collisions, "word_max": args.word_max,
-              "word_seconds": args.word_seconds, "command": command_line(args)}
+              "word_seconds": args.word_seconds, "seeds": args.seeds, "refine": args.refine,
+              "command": command_line(args)}
+    seeds = atlas.seeds() if args.seeds == "known" else {}
     with executors.executor(args.jobs, args.scheduler) as ex:
         rrec, wrec = atlas.run_atlas(rs, data, args.collisions, ex, state, args.resume, progress=progress.Bar("job"),
-                                     word_seconds=args.word_seconds, word_max=args.word_max)
+                                     word_seconds=args.word_seconds, word_max=args.word_max, seeds=seeds,
+                                     refine=args.refine, r_range=(atlas.Fraction(lo), atlas.Fraction(hi)))
     doc = atlas.document(rrec, wrec, params)
     atlas.write_outputs(doc, out)
     if args.json:
@@ -37,7 +40,8 @@ def cmd_atlas(args) -> int:
     else:
         s = doc["summary"]
         c = s["classes"]
-        print(f"{s['r_values']} r × {len(data)} initial data: {s['orbits']} orbits: island {c['island']}, "
+        print(f"{s['r_values']} r ({args.resolution} and {s['r_values'] - len(rs)} by refinement) × {len(data)} "
+              f"initial data: {s['orbits']} orbits: island {c['island']}, "
               f"attracting periodic {c['attracting periodic']}, unresolved {c['unresolved']}; {s['words']} words "
               f"certified, {s['attractors_with_windows']} attractors with exact windows, "
               f"{s['attractors_without_windows']} without; {len(doc['cells'])} cells; {len(doc['families'])} families")
@@ -48,7 +52,8 @@ def cmd_atlas(args) -> int:
 def size(lo, hi, args) -> dict:
     """The measures of an atlas's size: its r-range and grid, the orbits' length, the words'
     limits (keep_larger compares them with the atlas already written)."""
-    return {"r-range": (lo, hi), "r values": args.resolution, "initial data per r": args.data,
+    return {"r-range": (lo, hi), "r values": args.resolution, "rounds of refinement": args.refine,
+            "initial data per r": args.data,
             "collisions": args.collisions, "longest word": args.word_max, "seconds per word": args.word_seconds}
 
 
@@ -59,6 +64,7 @@ def committed_size(out: Path) -> dict | None:
     try:
         p = doc["parameters"]
         return {"r-range": tuple(Fraction(x) for x in p["r_range"]), "r values": int(p["resolution"]),
+                "rounds of refinement": int(p.get("refine", 0)),
                 "initial data per r": int(p["data"]), "collisions": int(p["collisions"]),
                 "longest word": int(p["word_max"]), "seconds per word": int(p["word_seconds"])}
     except (KeyError, TypeError, ValueError, ZeroDivisionError):
@@ -84,11 +90,14 @@ def register(commands) -> None:
     from certify.run import atlas
     p = add_command(commands, "atlas", cmd_atlas,
                     help="map the attractors of the reduction over ]0, 1[: classes, certified windows, families",
-                    description="Over a grid of r and of initial data on the b-section, every orbit classified by "
-                    "identify (island / attracting periodic, certified / unresolved); each certified word's exact "
-                    "attracting windows over ]0, 1[ by orbit (words too long or too slow: only at the r seen); the "
-                    "windows stitched into cells of ]0, 1[ with the attractors that coexist there (certified) and "
-                    "the shares of initial data reaching each (observed); families of words. Writes DIR/ATLAS.md, "
+                    description="Starting from the known attractors (the families' members, the census's and "
+                    "identify --section5's attracting words) and over a grid of r refined where it matters and of "
+                    "initial data on the b-section, every orbit classified by identify (island / attracting periodic, "
+                    "certified / unresolved, with what it shows); each certified word's exact attracting windows over "
+                    "]0, 1[ by orbit (words too long or too slow: only at the r seen); the windows stitched into cells "
+                    "of ]0, 1[ with the attractors that coexist there (certified) and the shares of initial data "
+                    "reaching each (observed); the families as rules, their next members predicted and certified. "
+                    "Writes DIR/ATLAS.md, "
                     "DIR/atlas.json, DIR/atlas.png and the state DIR/atlas-state.jsonl (--resume).")
     p.add_argument("--r-range", nargs=2, default=None, metavar=("LO", "HI"),
                    help=f"r in ]LO, HI[ (rationals, 0 <= LO < HI <= 1; default {atlas.LO} 1)")
@@ -102,6 +111,12 @@ def register(commands) -> None:
                    help=f"longest word whose window over ]0, 1[ is computed (default {atlas.WORD_MAX})")
     p.add_argument("--word-seconds", type=positive_int, default=atlas.WORD_SECONDS, metavar="S",
                    help=f"time limit of one word's window (default {atlas.WORD_SECONDS})")
+    p.add_argument("--refine", type=count, default=atlas.REFINE, metavar="K",
+                   help=f"rounds of refinement after the grid: an r in every unsampled cell, near each window end, "
+                   f"around words without a window (default {atlas.REFINE})")
+    p.add_argument("--seeds", choices=("known", "none"), default="known",
+                   help="start from the known attractors (the families' members, the census's and identify "
+                   "--section5's attracting words; default) or only from what the orbits meet")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR", help="output directory (default: reports)")
     p.add_argument("--resume", action="store_true", help="reuse the records of DIR/atlas-state.jsonl")
     p.add_argument("--force", action="store_true",

@@ -37,10 +37,10 @@ from __future__ import annotations
 
 import json
 import math
-import re
 import signal
 import threading
 import time
+from dataclasses import dataclass
 from fractions import Fraction
 from functools import cmp_to_key
 from pathlib import Path
@@ -54,23 +54,28 @@ from certify.numerics import grid
 from certify.patterns import compact, island_theorem, read
 from certify.patterns.island_theorem import LOWER_END, algebraic_of
 from certify.patterns.pattern import end_data
-from certify.patterns.reduction_orbits import analyse
+from certify.patterns.reduction_orbits import MAX_ORBIT_LENGTH, analyse
 
 from . import identify as ident
-from .census_report import dumps
+from .census_report import committed_windows, dumps
 from .executors import wait_first
-from .files import read_text_or_none, write_atomic
+from .files import load_findings, read_text_or_none, write_atomic
+from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 1
+VERSION = 2
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
-LO, HI = Fraction(9, 125), Fraction(1)        # the axis of Figure 5.1 starts at 0.072
-RESOLUTION = 200                              # r values
+LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
+RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
 DATA = 24                                     # initial data per r, besides the tool's 8
 COLLISIONS = 20_000                           # of each float64 run and rigorous scan
-WORD_MAX = 64                                 # longer words: no window (orbit_at at the r seen)
-WORD_SECONDS = 180                            # time limit of one word's window
-RESONANCE_Q = 24
+WORD_MAX = MAX_ORBIT_LENGTH                   # longer words: no window (orbit_at at the r seen)
+WORD_SECONDS = 600                            # time limit of one word's window
+REFINE = 3                                    # rounds of refinement after the first grid
+LATE = 4                                      # a long transient is run again LATE times longer
+TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
+RESONANCE_Q = 120                             # window ends decided to be resonances p/q, q ≤ 120
+NEAR_Q = 24                                   # a non-resonant end: the nearest p/q with q ≤ 24 (observed)
 STATE = "atlas-state.jsonl"
 FIGURE = "atlas.png"
 WINDOW = 16                                   # jobs in flight
@@ -118,18 +123,103 @@ def data_grid(m: int) -> list[tuple[float, float]]:
     return out
 
 
+# ------------------------------------------------------------------ the seeds and the families' rules
+@dataclass(frozen=True)
+class Rule:
+    """A family of attractors as a rule: member k's word is ``spelling`` with k written in,
+    for k = ``first`` .. ``last`` (certified members) and k = ``last`` + 1 (the prediction);
+    its window closes (upper end) where the island's rotation number is
+    p_k/q_k = (a k + b)/(c k + d), ``closing`` = (a, b, c, d), or ``closing`` None (windows
+    below 3 − 2√2, where there is no island).  The rule is a conjecture read off the members;
+    the atlas certifies each member's window with ``certify orbit`` and decides its closing
+    resonance exactly."""
+
+    name: str
+    spelling: str
+    first: int
+    last: int
+    closing: tuple[int, int, int, int] | None
+
+    def word(self, k: int) -> str:
+        """Member k's word (normal form)."""
+        return read(self.spelling.format(k=k))[0]
+
+    def resonance(self, k: int) -> tuple[int, int] | None:
+        """p_k/q_k in lowest terms, or None."""
+        if self.closing is None:
+            return None
+        a, b, c, d = self.closing
+        g = math.gcd(a * k + b, c * k + d)
+        return (a * k + b) // g, (c * k + d) // g
+
+    def members(self) -> range:
+        """The members the atlas certifies: first .. last, and the prediction last + 1."""
+        return range(self.first, self.last + 2)
+
+
+FAMILIES = (
+    Rule("(ab)^k(cb)^k", "(ab)^{k}(cb)^{k}", 2, 12, None),
+    Rule("(abacbc)^k a(bcabac)^k bcb", "(abacbc)^{k}a(bcabac)^{k}bcb", 1, 6, (2, 0, 4, 1)),
+    Rule("(abacbc)^k a(bac)^2(bcabac)^k bcb", "(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb", 1, 3, (2, 1, 4, 3)),
+)
+
+
+def seeds() -> dict[str, str]:
+    """The certified attractors the atlas starts from, normal form → where known: every
+    member of :data:`FAMILIES` (the prediction included), the census's attracting words
+    (read by :func:`.census_report.committed_windows`) and the words ``certify identify
+    --section5`` proved some orbit to follow for ever (reports/section5-orbits.json)."""
+    out: dict[str, str] = {}
+    for rule in FAMILIES:
+        for k in rule.members():
+            out.setdefault(rule.word(k), f"family {rule.name}, k = {k}")
+    found = committed_windows()
+    for w in sorted(found[0] if found else {}):
+        out.setdefault(read(w)[0], "census")
+    for entries in (load_findings(SECTION5) or {}).get("claims", {}).values():
+        for e in entries:
+            for w in e["words"]:
+                if w["certified"] and w["kind"] == "attracting":
+                    out.setdefault(w["word"], f"identify --section5 at r = {e['r']}")
+    return out
+
+
 # ------------------------------------------------------------------ the jobs
+def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
+    """What an unresolved orbit shows (observed; the word's type at r is exact): a *long
+    transient* when the word its float64 run repeats has an attracting periodic orbit at r
+    (``orbit_at``) that the orbit had not been proved to enter; a word whose periodic orbit
+    at r is *not attracting* (a saddle, repelling, of multiplier modulus 1, or none: the run
+    repeats the word without converging, an invariant curve or a slow transient); else
+    nothing recognised (no period within the run, a block too long, not a word)."""
+    if observed is None:
+        return NOTHING
+    try:
+        normal = read(observed)[0]
+    except UsageError:
+        return NOTHING
+    o = ident.decided(normal, r)
+    return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
+
+
 def r_job(r: str, data: list, collisions: int) -> dict:
-    """Every orbit of ``data`` at r classified by identify; the island at r (the theorem,
-    the rotation number, the certified share of the b-section).  Plain data."""
+    """Every orbit of ``data`` at r classified by identify (an unresolved long transient run
+    again, :data:`LATE` times longer, its class kept if that run proves one); the island at r
+    (the theorem, the rotation number, the certified share of the b-section).  Plain data."""
     start = time.perf_counter()
     q = Fraction(r)
     fq = flint.fmpq(q.numerator, q.denominator)
     orbits = []
     for th, ph in data:
         x = ident.classify(q, th, ph, collisions)
+        rerun = None
+        if x.cls == UNRESOLVED and unresolved_kind(x.word, fq) == TRANSIENT:
+            rerun = LATE * collisions
+            y = ident.classify(q, th, ph, rerun)
+            x = y if y.cls != UNRESOLVED else x
         rec = {"theta0": th, "phi0": ph, "class": x.cls, "certified_from": x.certified_from,
-               "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else ""}
+               "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else "",
+               "rerun": rerun, "unresolved": unresolved_kind(x.word, fq) if x.cls == UNRESOLVED else None}
         if x.cls == ATTRACTING:
             normal = read(x.word)[0]
             rec["word"], rec["branch"] = normal, ident.decided(normal, fq).branch_name
@@ -202,37 +292,61 @@ def _words_of(rec: dict) -> list[str]:
 
 
 def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=None, resume: bool = False,
-              progress=None, word_seconds: float | None = WORD_SECONDS, word_max: int = WORD_MAX) -> tuple:
-    """(r records, word records): the r jobs, and a word job for each new certified word as
-    soon as it is met; records appended to ``state`` as they arrive.  ``resume``: the r
+              progress=None, word_seconds: float | None = WORD_SECONDS, word_max: int = WORD_MAX,
+              seeds: dict | None = None, refine: int = 0, r_range: tuple | None = None) -> tuple:
+    """(r records, word records): the r jobs, a word job for each seed (``seeds``: word →
+    where known) and for each new certified word as soon as it is met; then ``refine``
+    rounds of :func:`refinement` inside ``r_range`` (default: the grid's ends), each adding
+    the r it asks for.  Records are appended to ``state`` as they arrive.  ``resume``: the r
     records of ``state`` with the same data and collisions, and its word records with the
-    same limits, are reused."""
-    done_r, done_w = {}, {}
+    same limits, are reused (the rounds are decided from the records, so a resumed atlas
+    asks for the same r)."""
+    stored_r, done_r, done_w = {}, {}, {}
     if state is not None:
         state = Path(state)
         if resume:
             for rec in load_state(state):
                 if rec["kind"] == "r" and rec["data"] == len(data) and rec["collisions"] == collisions:
-                    done_r[rec["r"]] = rec
+                    stored_r[rec["r"]] = rec
                 elif rec["kind"] == "word" and rec["word_max"] == word_max and (
                         rec["outcome"] != "time limit" or rec["word_seconds"] == word_seconds):
                     done_w[rec["word"]] = rec
         else:
             write_atomic(state, "")
-    wanted = [str(r) for r in rs]
-    queue = [("r", r) for r in wanted if r not in done_r]
+    sources = dict(seeds or {})
+    lo, hi = r_range or (min(rs), max(rs))
+    wanted: list[str] = []
+    queue: list[tuple[str, str]] = []
     seen = set(done_w)
-    for r in wanted:
-        if r in done_r:
-            for w in _words_of(done_r[r]):
-                if w not in seen:
-                    seen.add(w)
-                    queue.insert(0, ("word", w))
-    total = [len(wanted) + len(seen)]
-    count = [len([r for r in wanted if r in done_r]) + len(done_w)]
+    total, count = [0], [len(done_w)]
+    sink = state.open("a", encoding="utf-8") if state is not None else None
+
+    def want_word(w):
+        if w not in seen:
+            seen.add(w)
+            total[0] += 1
+            queue.insert(0, ("word", w))          # words first: the longest jobs start early
+
+    def want_r(rs_new):
+        for r in (str(x) for x in rs_new):
+            if r in wanted:
+                continue
+            wanted.append(r)
+            total[0] += 1
+            if r in stored_r:
+                done_r[r] = stored_r[r]
+                count[0] += 1
+                for w in _words_of(done_r[r]):
+                    want_word(w)
+            else:
+                queue.append(("r", r))
+
+    total[0] += len(done_w)
+    for w in sources:
+        want_word(w)
+    want_r(rs)
     if progress:
         progress(count[0], total[0], "")
-    sink = state.open("a", encoding="utf-8") if state is not None else None
 
     def collect(kind, key, rec):
         if sink is not None:
@@ -241,10 +355,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
         if kind == "r":
             done_r[key] = rec
             for w in _words_of(rec):
-                if w not in seen:
-                    seen.add(w)
-                    total[0] += 1
-                    queue.insert(0, ("word", w))       # words first: the longest jobs start early
+                want_word(w)
         else:
             done_w[key] = rec
         count[0] += 1
@@ -257,25 +368,129 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
         return executor.submit(word_job, key, word_seconds, word_max)
 
     try:
-        pending, what = set(), {}
-        while queue or pending:
-            while queue and len(pending) < WINDOW:
-                kind, key = queue.pop(0)
-                future = submit(kind, key)
-                if future.done():
-                    collect(kind, key, future.result())
-                else:
-                    what[future] = (kind, key)
-                    pending.add(future)
-            if pending:
-                finished, pending = wait_first(pending, 0.5)
-                for future in sorted(finished, key=lambda f: what[f]):
-                    kind, key = what.pop(future)
-                    collect(kind, key, future.result())
+        pending: set = set()
+        what: dict = {}
+        rounds = 0
+        while True:
+            while queue or pending:
+                while queue and len(pending) < WINDOW:
+                    kind, key = queue.pop(0)
+                    future = submit(kind, key)
+                    if future.done():
+                        collect(kind, key, future.result())
+                    else:
+                        what[future] = (kind, key)
+                        pending.add(future)
+                if pending:
+                    finished, pending = wait_first(pending, 0.5)
+                    for future in sorted(finished, key=lambda f: what[f]):
+                        kind, key = what.pop(future)
+                        collect(kind, key, future.result())
+            if rounds >= refine:
+                break
+            rounds += 1
+            more = refinement([done_r[r] for r in wanted], list(done_w.values()), lo, hi)
+            if not more:
+                break
+            want_r(more)
     finally:
         if sink is not None:
             sink.close()
-    return [done_r[r] for r in wanted], sorted(done_w.values(), key=lambda w: (w["length"], w["word"]))
+    rows = sorted((done_r[r] for r in wanted), key=lambda rec: Fraction(rec["r"]))
+    words = sorted(done_w.values(), key=lambda w: (w["length"], w["word"]))
+    for w in words:
+        w["source"] = sources.get(w["word"], "met")
+    return rows, words
+
+
+# ------------------------------------------------------------------ refinement
+def simple_inside(a: Algebraic, b: Algebraic) -> Fraction:
+    """The rational with the fewest decimals in the middle half of ]a, b[ (a < b algebraic),
+    nearest the middle: a readable r that is exactly inside."""
+    prec = 64
+    while True:
+        la, ua = ends(a.arb(prec))
+        lb, ub = ends(b.arb(prec))
+        if ua < lb and (lb - ua) * 4 > (ub - la):
+            break
+        prec *= 2
+    x0 = Fraction(int(ua.p), int(ua.q))
+    x1 = Fraction(int(lb.p), int(lb.q))
+    mid, quarter = (x0 + x1) / 2, (x1 - x0) / 4
+    d = 1
+    while True:
+        s = 10 ** d
+        lo_n, hi_n = math.ceil((mid - quarter) * s), math.floor((mid + quarter) * s)
+        if lo_n <= hi_n:
+            return min((Fraction(n, s) for n in range(lo_n, hi_n + 1)), key=lambda x: (abs(x - mid), x))
+        d += 1
+
+
+def refinement(r_records: list[dict], word_records: list[dict], lo: Fraction, hi: Fraction) -> list[Fraction]:
+    """The r the next round asks for, inside ]lo, hi[ (observed sampling; the windows are
+    exact whatever is sampled): (1) in every cell of the stitched windows that no sampled r
+    lies in, its simplest rational (:func:`simple_inside`); (2) near each window end, inside
+    the window, the simplest rational of the eighth of the cell next to the end; (3) where the grid
+    meets a word without a window (too long, too slow), halfway to each neighbouring r.
+    Increasing, without the r already sampled."""
+    have = sorted(Fraction(rec["r"]) for rec in r_records)
+    A = Algebraic.rational(flint.fmpq(lo.numerator, lo.denominator))
+    B = Algebraic.rational(flint.fmpq(hi.numerator, hi.denominator))
+    atts = attractors_of(word_records)
+    out: set[Fraction] = set()
+    cells = stitch(atts)
+    for c in cells:
+        a, b = _alg(c["lo"]), _alg(c["hi"])
+        if not (a < B and A < b):
+            continue
+        a, b = (a if A < a else A), (b if b < B else B)
+        if not any(_in_open(q, a, b) for q in have):
+            out.add(simple_inside(a, b))
+    for lo_end, hi_end in {(_alg(w["lo"]), _alg(w["hi"])) for x in atts for w in x["windows"]}:
+        for e, toward_hi in ((lo_end, False), (hi_end, True)):
+            if not (A < e < B):
+                continue
+            if toward_hi:
+                c = next(c for c in cells if _alg(c["lo"]) < e and not _alg(c["hi"]) < e)
+                u, v = _alg(c["lo"]), e
+            else:
+                c = next(c for c in cells if not e < _alg(c["lo"]) and e < _alg(c["hi"]))
+                u, v = e, _alg(c["hi"])
+            u, v = (u if A < u else A), (v if v < B else B)
+            near = _eighth(u, v, toward_hi) if u < v else None
+            if near is not None:
+                out.add(near)
+    lost = {w["compact"] for w in word_records if w["outcome"] != "analysed"}
+    for rec in sorted(r_records, key=lambda x: Fraction(x["r"])):
+        if not any(compact(w) in lost for w in _words_of(rec)):
+            continue
+        q = Fraction(rec["r"])
+        k = have.index(q)
+        for other in (have[k - 1] if k else lo, have[k + 1] if k + 1 < len(have) else hi):
+            mid = (q + other) / 2
+            out.add(Fraction(round(mid * 10 ** 6), 10 ** 6))
+    return sorted(x for x in out if lo < x < hi and x not in have and 0 < x < 1)
+
+
+def _in_open(q: Fraction, a: Algebraic, b: Algebraic) -> bool:
+    x = Algebraic.rational(flint.fmpq(q.numerator, q.denominator))
+    return a < x < b
+
+
+def _eighth(u: Algebraic, v: Algebraic, toward_hi: bool) -> Fraction | None:
+    """The simplest rational of the eighth of ]u, v[ next to v (``toward_hi``) or to u."""
+    with precision(128):
+        lu, uu = ends(u.arb(128))
+        lv, uv = ends(v.arb(128))
+    if not uu < lv:
+        return None
+    x0, x1 = Fraction(int(uu.p), int(uu.q)), Fraction(int(lv.p), int(lv.q))
+    width = (x1 - x0) / 8
+    a, b = (x1 - width, x1) if toward_hi else (x0, x0 + width)
+    ra = Algebraic.rational(flint.fmpq(a.numerator, a.denominator))
+    rb = Algebraic.rational(flint.fmpq(b.numerator, b.denominator))
+    q = simple_inside(ra, rb)
+    return q if _in_open(q, u, v) else None
 
 
 # ------------------------------------------------------------------ stitching
@@ -330,15 +545,13 @@ def _in_cell(q: Fraction, cell: dict) -> bool:
 
 
 # ------------------------------------------------------------------ families and rotation numbers
-def template(compact_word: str) -> str:
-    """The family of a word: its compact spelling with every exponent replaced by n."""
-    return re.sub(r"\^\d+", "^n", compact_word)
-
-
 def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
     """The island's rotation number at a window end in [3 − 2√2, 1]: a resonance p/q (q ≤ Q)
-    decided exactly, else ρ (8 certified digits) and the nearest p/q with q ≤ Q ("near",
-    with the distance: an observation); None below 3 − 2√2."""
+    decided exactly, else ρ (8 certified digits) and the nearest p/q with q ≤ :data:`NEAR_Q`
+    ("near", with the distance: an observation); None below 3 − 2√2.  The one candidate: ρ is
+    a ball of width < 1/(2Q²), so if ρ = p/q with q ≤ Q, p/q is the fraction nearest its
+    midpoint with denominator ≤ Q (two such fractions are 1/Q² apart); that candidate is
+    decided exactly (:func:`is_resonance`)."""
     x = _alg(end)
     if x < LOWER_END:
         return None
@@ -346,36 +559,82 @@ def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
         return {"rho": "0.5", "resonance": [1, 2], "near": None}
     if x == Algebraic.rational(flint.fmpq(1)):
         return {"rho": "0.25", "resonance": [1, 4], "near": None}
-    pq = island_theorem.resonance_of(x, Q)
     with precision(200):
         rho = island_theorem.rotation_ball(x.arb(200), 200)
     lo, hi = ends(rho)
+    if not (hi - lo) * 2 * Q * Q < 1:
+        raise ArithmeticError(f"the rotation number at {x} is not narrow enough to find its resonance")
     digits = f"{float((lo + hi) / 2):.8f}"
-    if pq is not None:
-        return {"rho": digits, "resonance": list(pq), "near": None}
     mid = Fraction(int((lo + hi).p), int((lo + hi).q)) / 2
-    best = min((Fraction(p, q) for q in range(2, Q + 1) for p in range(1, q) if math.gcd(p, q) == 1),
+    cand = mid.limit_denominator(Q)
+    if is_resonance(x, cand.numerator, cand.denominator):
+        return {"rho": digits, "resonance": [cand.numerator, cand.denominator], "near": None}
+    best = min((Fraction(p, q) for q in range(2, NEAR_Q + 1) for p in range(1, q) if math.gcd(p, q) == 1),
                key=lambda f: (abs(f - mid), f.denominator))
     return {"rho": digits, "resonance": None, "near": [best.numerator, best.denominator],
             "distance": f"{float(abs(best - mid)):.2e}"}
 
 
-def families(attractors: list[dict]) -> list[dict]:
-    """The attractors grouped by :func:`template`, with their windows and the rotation number
-    at each window's upper end."""
-    groups: dict[str, list] = {}
+def is_resonance(x: Algebraic, p: int, q: int) -> bool:
+    """Whether the island's rotation number at x is exactly p/q: x is the same algebraic
+    number as a resonance r_{p/q} (:func:`island_theorem.resonances_of_q`; p/q = 1/2 is
+    3 − 2√2)."""
+    if (p, q) == (1, 2):
+        return x == LOWER_END
+    if q < 3:
+        return False
+    return any(s.p == p and s.r == x for s in island_theorem.resonances_of_q(q))
+
+
+def closes_at(end: dict, p: int, q: int) -> bool:
+    """Whether a window end is exactly the resonance p/q (:func:`is_resonance`)."""
+    return is_resonance(_alg(end), p, q)
+
+
+def families(attractors: list[dict], words: list[dict]) -> list[dict]:
+    """Each rule of :data:`FAMILIES` whose members the atlas all analysed: member k's word, its
+    certified windows, the resonance p_k/q_k the rule predicts at the upper end and whether
+    the window closes there exactly; a member is *certified* when it has an attracting window
+    (closing at p_k/q_k where the rule says one); the last is the prediction."""
+    by_word: dict[str, list] = {}
     for a in attractors:
-        groups.setdefault(template(a["compact"]), []).append(a)
+        by_word.setdefault(a["word"], []).append(a)
+    analysed = {w["word"]: w for w in words}
     out = []
-    for key in sorted(groups, key=lambda k: (-len(groups[k]), k)):
+    for rule in FAMILIES:
+        if any(rule.word(k) not in analysed for k in rule.members()):
+            continue                          # not analysed in this atlas (seeded without its family)
         members = []
-        for a in groups[key]:
-            members.append({"attractor": name(a["word"], a["branch"]),
-                            "windows": [{"lo": w["lo"]["digits"], "hi": w["hi"]["digits"],
-                                         "rotation_at_hi": end_rotation(w["hi"])} for w in a["windows"]]})
-        blocks = sorted(set(re.findall(r"\(([abc]+)\)\^\d+", " ".join(a["compact"] for a in groups[key]))))
-        out.append({"family": key, "repeated": blocks, "members": members})
+        for k in rule.members():
+            w = rule.word(k)
+            wins = [(a, win) for a in by_word.get(w, []) for win in a["windows"]]
+            pq = rule.resonance(k)
+            closes = None if pq is None else any(closes_at(win["hi"], *pq) for _a, win in wins)
+            members.append({"k": k, "word": w, "compact": compact(w), "length": len(w),
+                            "predicted": k == rule.last + 1, "outcome": analysed[w]["outcome"],
+                            "windows": [{"branch": a["branch"], "lo": win["lo"]["digits"], "hi": win["hi"]["digits"],
+                                         "pair": win["pair"]} for a, win in wins],
+                            "closing": list(pq) if pq else None, "closes": closes,
+                            "certified": bool(wins) and closes is not False})
+        p1, p0, q1, q0 = rule.closing or (0, 0, 0, 0)
+        out.append({"family": rule.name, "rule": rule.spelling.replace("{k}", "k"),
+                    "closing": f"({_affine(p1, p0)})/({_affine(q1, q0)})" if rule.closing else None,
+                    "members": members,
+                    "certified_members": sum(m["certified"] for m in members if not m["predicted"]),
+                    "prediction_certified": any(m["certified"] for m in members if m["predicted"])})
     return out
+
+
+def _affine(a: int, b: int) -> str:
+    return f"{a}k" + (f" + {b}" if b > 0 else f" − {-b}" if b < 0 else "")
+
+
+def in_family(word: str) -> str | None:
+    """The name of the rule of :data:`FAMILIES` whose member ``word`` is, or None."""
+    for rule in FAMILIES:
+        if any(rule.word(k) == word for k in rule.members()):
+            return rule.name
+    return None
 
 
 def by_resonance(resonant: list[dict]) -> list[dict]:
@@ -410,8 +669,9 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
         q = Fraction(rec["r"])
         rows.append({"r": rec["r"], "digits": f"{float(q):.6f}", "island": rec["island"],
                      "counts": _counts(rec["orbits"]), "total": len(rec["orbits"]),
-                     "orbits": [{k: o[k] for k in ("theta0", "phi0", "class", "certified_from", "word", "branch",
-                                                   "observed", "why")} for o in rec["orbits"]]})
+                     "orbits": [{**{k: o[k] for k in ("theta0", "phi0", "class", "certified_from", "word", "branch",
+                                                     "observed", "why")},
+                                 "rerun": o.get("rerun"), "unresolved": o.get("unresolved")} for o in rec["orbits"]]})
     for cell in cells:
         sampled = [row for row in rows if _in_cell(Fraction(row["r"]), cell)]
         cell["sampled"] = [row["r"] for row in sampled]
@@ -434,16 +694,19 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
     no_window = []
     for w in word_records:
         if w["outcome"] != "analysed":
-            for k in sorted(seen):
-                if k.startswith(w["compact"] + " ("):
-                    no_window.append({"attractor": k, "word": w["word"], "length": w["length"], "why": w["outcome"],
-                                      "seen_at": sorted(set(seen[k]), key=Fraction)})
+            met = [k for k in sorted(seen) if k.startswith(w["compact"] + " (")] or [w["compact"]]
+            for k in met:
+                no_window.append({"attractor": k, "word": w["word"], "length": w["length"], "why": why_no_window(w),
+                                  "source": w.get("source", "met"),
+                                  "seen_at": sorted(set(seen.get(k, [])), key=Fraction)})
     observed: dict[str, int] = {}
     for row in rows:
         for o in row["orbits"]:
             if o["observed"]:
                 observed[o["observed"]] = observed.get(o["observed"], 0) + 1
-    attractors = [{"name": name(a["word"], a["branch"]), **a,
+    source = {w["word"]: w.get("source", "met") for w in word_records}
+    attractors = [{"name": name(a["word"], a["branch"]), **a, "source": source[a["word"]],
+                   "family": in_family(a["word"]),
                    "seen_at": sorted(set(seen.get(name(a["word"], a["branch"]), [])), key=Fraction)} for a in atts]
     inconsistent = []
     by_name = {a["name"]: a for a in attractors}
@@ -455,7 +718,7 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
             if word in analysed and not any(_alg(w["lo"]) < x < _alg(w["hi"]) for w in
                                             (by_name[k]["windows"] if k in by_name else [])):
                 inconsistent.append({"attractor": k, "r": row["r"]})
-    resonant, above = [], 0
+    resonant, above, interior = [], 0, {"upper": 0, "lower": 0, "resonant_upper": 0, "resonant_lower": 0}
     for a in atts:
         for w in a["windows"]:
             rot = end_rotation(w["hi"])
@@ -463,18 +726,65 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                 above += 1
                 if rot["resonance"]:
                     resonant.append({"attractor": name(a["word"], a["branch"]), "hi": w["hi"]["digits"],
-                                     "p": rot["resonance"][0], "q": rot["resonance"][1]})
+                                     "p": rot["resonance"][0], "q": rot["resonance"][1],
+                                     "island_end": not interior_end(w["hi"])})
+            for side in ("lower", "upper"):
+                end = w["lo" if side == "lower" else "hi"]
+                if interior_end(end):
+                    interior[side] += 1
+                    interior["resonant_" + side] += bool((end_rotation(end) or {}).get("resonance"))
+    fams = families(atts, word_records)
     totals = {k: sum(row["counts"].get(k, 0) for row in rows) for k in (ISLAND, UNRESOLVED)}
     totals[ATTRACTING] = sum(n for row in rows for k, n in row["counts"].items() if k not in (ISLAND, UNRESOLVED))
     return {"schema": SCHEMA, "version": VERSION, "parameters": parameters,
             "summary": {"r_values": len(rows), "orbits": sum(row["total"] for row in rows), "classes": totals,
                         "words": len(word_records), "attractors_with_windows": len(atts),
                         "attractors_without_windows": len(no_window), "inconsistent": inconsistent,
-                        "upper_ends_above": above, "resonant_upper_ends": resonant},
+                        "upper_ends_above": above, "resonant_upper_ends": resonant, "interior_ends": interior,
+                        "seeds": sum(w.get("source", "met") != "met" for w in word_records),
+                        "families": len(fams), "certified_share_above": share_above(rows),
+                        "unresolved_by_kind": unresolved_by_kind(rows)},
             "attractors": attractors, "without_window": no_window, "cells": cells,
-            "families": families(atts), "by_resonance": by_resonance(resonant),
+            "families": fams, "by_resonance": by_resonance(resonant),
             "observed_words": dict(sorted(observed.items(), key=lambda kv: (-kv[1], kv[0]))),
             "words": [_timeless(w) for w in word_records], "r": rows}
+
+
+def interior_end(end: dict) -> bool:
+    """Whether a window end lies strictly inside ]3 − 2√2, 1[ (not one of the island's own ends)."""
+    x = _alg(end)
+    return LOWER_END < x < Algebraic.rational(flint.fmpq(1))
+
+
+def why_no_window(w: dict) -> str:
+    """Why a word record has no window, in one phrase."""
+    if w["outcome"] == "too long":
+        return (f"too long: {w['length']} letters, over the {w['word_max']} whose window `certify orbit` computes "
+                f"(MAX_ORBIT_LENGTH = {MAX_ORBIT_LENGTH}: the conditions' degree grows like 2L)")
+    if w["outcome"] == "time limit":
+        return f"time limit: the window's analysis took over {w['word_seconds']} s"
+    return w["outcome"] + (f" ({w['error']})" if w.get("error") else "")
+
+
+def unresolved_by_kind(rows: list[dict]) -> dict:
+    """The unresolved orbits by what they show (:func:`unresolved_kind`), and the orbits whose
+    class the longer run of a long transient proved."""
+    out = {k: 0 for k in (TRANSIENT, NOT_ATTRACTING, NOTHING)}
+    for row in rows:
+        for o in row["orbits"]:
+            if o["class"] == UNRESOLVED:
+                out[o["unresolved"] or NOTHING] += 1
+    out["certified by a longer run"] = sum(1 for row in rows for o in row["orbits"]
+                                           if o["rerun"] and o["class"] != UNRESOLVED)
+    return out
+
+
+def share_above(rows: list[dict]) -> dict:
+    """The orbits sampled above 3 − 2√2 and how many have a certified class (island or
+    attracting periodic): observed counts of certified classes."""
+    n = sum(row["total"] for row in rows if row["island"] is not None)
+    u = sum(row["counts"].get(UNRESOLVED, 0) for row in rows if row["island"] is not None)
+    return {"orbits": n, "certified": n - u}
 
 
 def to_json(doc: dict) -> str:
@@ -510,14 +820,28 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            f"φ0 ∈ ]0, π[); {p['collisions']} collisions per float64 run and per rigorous scan",
            f"- orbits: {s['orbits']}: island {cls[ISLAND]}, attracting periodic (certified) {cls[ATTRACTING]}, "
            f"unresolved {cls[UNRESOLVED]} (`certify identify`'s classes)",
+           "- unresolved, by what they show (observed): " + "; ".join(
+               f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
+           + f" (a long transient: its word attracts at r, run again {LATE}× longer; "
+           f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so and are counted in their "
+           "class; a word not attracting at r: repeated without converging, an invariant curve or a slow transient, "
+           "its rotation number not computed)",
            f"- words certified: {s['words']}; attractors (word, branch) with an exact window over ]0, 1[: "
            f"{s['attractors_with_windows']}; without one: {s['attractors_without_windows']} (longer than "
            f"{p['word_max']} letters, or over the time limit of {p['word_seconds']} s: known only at the r where "
            "seen, by `orbit_at`)",
-           f"- windows ending in [3−2√2, 1] at a resonance of the island (ρ = p/q exactly, q ≤ {RESONANCE_Q}): "
-           f"{len(s['resonant_upper_ends'])} of {s['upper_ends_above']}"
-           + (": " + ", ".join(f"`{x['attractor']}` at ≈{x['hi']} (ρ = {x['p']}/{x['q']})"
-                               for x in s["resonant_upper_ends"]) if s["resonant_upper_ends"] else ""),
+           f"- seeds: {s['seeds']} known attracting words analysed whether or not the grid meets them (the families' "
+           "members, the census's and `identify --section5`'s attracting words); the grid: "
+           f"{p['resolution']} r and {p.get('refine', 0)} rounds of refinement (an r in every unsampled cell, near "
+           "each window end, around words without a window)",
+           f"- interior window ends (strictly inside ]3−2√2, 1[, not the island's own ends) that are resonances of "
+           f"the island (ρ = p/q exactly, q ≤ {RESONANCE_Q}): upper ends {s['interior_ends']['resonant_upper']} of "
+           f"{s['interior_ends']['upper']}, lower ends {s['interior_ends']['resonant_lower']} of "
+           f"{s['interior_ends']['lower']}; besides, {sum(x['island_end'] for x in s['resonant_upper_ends'])} "
+           "windows end at the island's own ends (3−2√2, ρ = 1/2; r = 1, ρ → 1/4)",
+           f"- families (rules with at least three certified members and the next member predicted): "
+           f"{s['families']}; orbits sampled above 3−2√2 with a certified class: "
+           f"{_share(s['certified_share_above']['certified'], s['certified_share_above']['orbits'])}",
            "- certified orbits outside their word's certified window: "
            + (", ".join(f"{x['attractor']} at r = {x['r']}" for x in s["inconsistent"]) or "none"), "",
            "**Certified**: each orbit's class (island: quasi-periodic for ever, by the island theorem; attracting "
@@ -544,31 +868,44 @@ def markdown(doc: dict, figure: str | None = None) -> str:
                    f"{_share(c['unresolved'], c['orbits']) if c['orbits'] else '—'} | "
                    f"{f'[{float(Fraction(fr[0])):.3f}, {float(Fraction(fr[1])):.3f}]' if fr else '—'} |")
     out += ["", "## Attractors and their certified windows", "",
-            "| attractor (word, branch) | length | window(s) (certified) | pair | ρ at the upper end | sampled r where "
-            "reached |", "|---|---:|---|---|---|---|"]
+            "| attractor (word, branch) | length | window(s) (certified) | pair | ρ at the upper end | known from | "
+            "sampled r where reached |", "|---|---:|---|---|---|---|---|"]
     for a in doc["attractors"]:
         wins = "; ".join(f"]{_end(w['lo'])}, {_end(w['hi'])}[" for w in a["windows"])
         pairs = ", ".join(sorted({w["pair"] for w in a["windows"]}))
         rot = "; ".join(_rot(end_rotation(w["hi"])) for w in a["windows"])
         seen = ", ".join(a["seen_at"][:6]) + (f" … ({len(a['seen_at'])})" if len(a["seen_at"]) > 6 else "")
-        out.append(f"| `{a['name']}` | {a['length']} | {wins} | {pairs} | {rot} | {seen} |")
+        known = a["source"] + (f" (family {a['family']})" if a["family"] and a["source"] == "met" else "")
+        out.append(f"| `{a['name']}` | {a['length']} | {wins} | {pairs} | {rot} | {known} | {seen or '—'} |")
     if doc["without_window"]:
         out += ["", "### Attractors without a window", "",
-                "Certified attracting at the r where reached (`orbit_at` and a trapping ellipse, through identify); "
-                "their window over ]0, 1[ was not computed.", "",
-                "| attractor | length | why no window | sampled r where reached |", "|---|---:|---|---|"]
+                "Certified attracting at the r where reached (`orbit_at` and a trapping ellipse, through identify), "
+                "or seeded; their window over ]0, 1[ was not computed.", "",
+                "| attractor | length | why no window | known from | sampled r where reached |",
+                "|---|---:|---|---|---|"]
         for a in doc["without_window"]:
-            out.append(f"| `{a['attractor']}` | {a['length']} | {a['why']} | {', '.join(a['seen_at'])} |")
+            out.append(f"| `{a['attractor']}` | {a['length']} | {a['why']} | {a['source']} | "
+                       f"{', '.join(a['seen_at']) or '—'} |")
     out += ["", "## Families", "",
-            "The attractors grouped by their compact spelling with the exponents replaced by n (the block that "
-            "repeats); ρ: the island's rotation number at each window's upper end (a resonance decided exactly, "
-            f"or the nearest p/q with q ≤ {RESONANCE_Q}: observed).", "",
-            "| family | repeated blocks | members: window, ρ at its upper end |", "|---|---|---|"]
+            "Each family is a rule read off its members (a conjecture): member k's word, and the resonance "
+            "p_k/q_k of the island at which its window closes (its upper end). Each member listed is certified by "
+            "`certify orbit` (its exact window) and its closing decided exactly (the same algebraic number as the "
+            "resonance r_{p/q}); the last member is the rule's prediction, certified the same way.", ""]
     for f in doc["families"]:
-        members = "; ".join(f"`{m['attractor']}` ]{w['lo']}, {w['hi']}[ {_rot(w['rotation_at_hi'])}"
-                            for m in f["members"] for w in m["windows"])
-        out.append(f"| `{f['family']}` | {', '.join(f['repeated']) or '—'} | {members} |")
-    out += ["", "### By the resonance at which the windows end", "",
+        out += [f"### `{f['family']}`: {f['certified_members']} certified members, the prediction "
+                f"{'certified' if f['prediction_certified'] else 'NOT certified'}", "",
+                f"Member k: `{f['rule']}`" + (f"; its window closes at ρ = {f['closing']}." if f["closing"] else
+                                             "; below 3−2√2 (no island, no closing resonance)."), "",
+                "| k | length | window(s) (certified) | closes at p_k/q_k | status |", "|---:|---:|---|---|---|"]
+        for m in f["members"]:
+            wins = "; ".join(f"]{w['lo']}, {w['hi']}[ ({w['branch']}, {w['pair']})" for w in m["windows"]) or \
+                f"none ({m['outcome']})"
+            closing = ("—" if m["closing"] is None else
+                       f"{m['closing'][0]}/{m['closing'][1]}: {'yes, exactly' if m['closes'] else 'no'}")
+            status = ("predicted, " if m["predicted"] else "") + ("certified" if m["certified"] else "not certified")
+            out.append(f"| {m['k']} | {m['length']} | {wins} | {closing} | {status} |")
+        out.append("")
+    out += ["## By the resonance at which the windows end", "",
             "The island's rotation number at a window's upper end, when it is exactly p/q (decided as algebraic "
             "numbers): the windows that close at the same resonance.", "",
             "| ρ = p/q at the upper end | attractors |", "|---|---|"]
@@ -595,9 +932,13 @@ def _short(text: str, n: int = 34) -> str:
     return text if len(text) <= n else text[:n - 12] + "…" + text[-11:]
 
 
+LABELLED_Q = 12        # atlas.png names the resonances p/q with q ≤ 12; the others (up to 40 near 3−2√2) are lines
+
+
 def figure(doc: dict, path) -> Path:
     """atlas.png: top, the island's rotation number ρ(r) on ]3−2√2, 1[ (certified digits at the
-    sampled r) with the resonances p/q, q ≤ 8; middle, one row per attractor, its certified
+    sampled r) with the windows' resonant ends (dotted; labelled p/q where q ≤ LABELLED_Q); middle,
+    one row per attractor, its certified
     windows as bars and the sampled r where data reached it as dots; bottom, the observed
     shares at each sampled r (island, attracting, unresolved).  Floats: a drawing only."""
     from . import plots, saving
@@ -611,11 +952,12 @@ def figure(doc: dict, path) -> Path:
     isl = [(float(Fraction(r["r"])), float(r["island"]["rotation_number"])) for r in rows if r["island"]]
     if isl:
         ax0.plot(*zip(*isl), ".-", color="tab:green", ms=2, lw=0.8)
-    marks = {f"{p}/{q}": x for x, p, q in sorted({(float(x["hi"]), x["p"], x["q"])
-                                                  for x in doc["summary"]["resonant_upper_ends"]}) if lo <= x <= hi}
-    for x in marks.values():
-        for panel in (ax0, ax):
-            panel.axvline(x, color="grey", lw=0.4, ls=":")
+    ends = sorted({(float(x["hi"]), x["p"], x["q"]) for x in doc["summary"]["resonant_upper_ends"]})
+    for x, _p, _q in ends:
+        if lo <= x <= hi:
+            for panel in (ax0, ax):
+                panel.axvline(x, color="grey", lw=0.4, ls=":")
+    marks = {f"{p}/{q}": x for x, p, q in ends if lo <= x <= hi and q <= LABELLED_Q}   # the others: lines only
     ax0.set_ylabel("ρ", fontsize=8)
     colour = {"real": "tab:orange", "complex": "tab:red", "real and complex": "tab:purple"}
     for k, a in enumerate(atts):
@@ -655,7 +997,8 @@ def figure(doc: dict, path) -> Path:
     fig.tight_layout()
     fig.subplots_adjust(left=0.3)
     rows = plots.label_lines(ax0, marks, color="black")     # the axes placed: the labels in rows, none overlapping
-    ax0.set_title("the island's rotation number ρ(r); dotted: windows ending at ρ = p/q exactly", fontsize=7,
+    ax0.set_title(f"the island's rotation number ρ(r); dotted: windows ending at ρ = p/q exactly (named for "
+                  f"q ≤ {LABELLED_Q}; all in ATLAS.md)", fontsize=7,
                   pad=plots.label_pad(rows))
     fig.tight_layout()
     fig.subplots_adjust(left=0.3)
@@ -759,6 +1102,16 @@ def check_orbits(doc: dict, rows=None) -> list[str]:
             problems.append(f"r = {row['r']}: the counts are not those of its orbits")
         for o in row["orbits"]:
             x = ident.classify(r, o["theta0"], o["phi0"], collisions)
+            late = x.cls == UNRESOLVED and unresolved_kind(x.word, fq) == TRANSIENT
+            if o.get("rerun") != (LATE * collisions if late else None):
+                problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: run again "
+                                f"{o.get('rerun')} in the atlas, not what identify's class asks for")
+            elif o.get("rerun"):
+                y = ident.classify(r, o["theta0"], o["phi0"], o["rerun"])
+                x = y if y.cls != UNRESOLVED else x
+            if o["class"] == UNRESOLVED and o.get("unresolved") != unresolved_kind(x.word, fq):
+                problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: unresolved "
+                                f"{o.get('unresolved')} in the atlas, {unresolved_kind(x.word, fq)} by orbit_at")
             word = read(x.word)[0] if x.cls == ATTRACTING else None
             branch = ident.decided(word, fq).branch_name if word else None
             if (x.cls, word, branch) != (o["class"], o["word"], o["branch"]):
@@ -778,12 +1131,55 @@ def check_orbits(doc: dict, rows=None) -> list[str]:
     return problems
 
 
+def check_seeds(doc: dict) -> list[str]:
+    """Every seed the atlas was started from (:func:`seeds` again, when its parameters say
+    ``seeds: known``; the words recorded as seeds otherwise), every word a certified orbit
+    follows, and every member of a family it lists has its word record (an attractor dropped
+    from the atlas is missed here)."""
+    have = {w["word"] for w in doc["words"]}
+    want = {w["word"]: w["source"] for w in doc["words"] if w.get("source", "met") != "met"}
+    if doc["parameters"].get("seeds") == "known":
+        want.update(seeds())
+    for row in doc["r"]:
+        for o in row["orbits"]:
+            if o["class"] == ATTRACTING:
+                want.setdefault(o["word"], f"met at r = {row['r']}")
+    rules = {rule.name: rule for rule in FAMILIES}
+    for f in doc["families"]:
+        for k in rules[f["family"]].members() if f["family"] in rules else ():
+            want.setdefault(rules[f["family"]].word(k), f"family {f['family']}, k = {k}")
+    return [f"{compact(w)} ({src}): no word record in the atlas" for w, src in sorted(want.items()) if w not in have]
+
+
+def check_families(doc: dict) -> list[str]:
+    """The families recomputed from the atlas's attractors equal its own (each member's
+    windows, its closing resonance decided again), and each has at least three certified
+    members and its prediction certified."""
+    problems = []
+    fresh = families(doc["attractors"], doc["words"])
+    if fresh != doc["families"]:
+        mine = {f["family"]: f for f in doc["families"]}
+        for f in fresh:
+            if mine.get(f["family"]) != f:
+                problems.append(f"family {f['family']}: differs from the attractors' windows and closings "
+                                "decided again")
+        for name_ in set(mine) - {f["family"] for f in fresh}:
+            problems.append(f"family {name_}: no member in the atlas's words")
+    for f in doc["families"]:
+        if f["certified_members"] < 3 or not f["prediction_certified"]:
+            problems.append(f"family {f['family']}: {f['certified_members']} certified members, prediction "
+                            f"{'certified' if f['prediction_certified'] else 'not certified'}")
+    return problems
+
+
 def check_atlas(doc: dict, window_max: int = 24, rows=None) -> list[str]:
     """Every way the document can be wrong that a recomputation sees (empty: it checks):
-    the windows (:func:`check_windows`, words up to ``window_max`` letters), the cells
-    (:func:`check_cells`), the orbits and the island (:func:`check_orbits` on ``rows``,
+    the seeds and words (:func:`check_seeds`), the windows (:func:`check_windows`, words up
+    to ``window_max`` letters), the cells (:func:`check_cells`), the families
+    (:func:`check_families`), the orbits and the island (:func:`check_orbits` on ``rows``,
     default every r), the cells' counts."""
-    problems = check_windows(doc, window_max) + check_cells(doc) + check_orbits(doc, rows)
+    problems = (check_seeds(doc) + check_windows(doc, window_max) + check_cells(doc) + check_families(doc)
+                + check_orbits(doc, rows))
     for c in doc["cells"]:
         rows_in = [row for row in doc["r"] if row["r"] in c["sampled"]]
         counts: dict[str, int] = {}
