@@ -1,6 +1,7 @@
 """The points of a multiple eigenvalue (certify.patterns.eigenspace), undecided before, decided now;
 each decision checked by a second route in SymPy (exact in Q(√2), Q(√3)): the eigenspace of
 M(r₀) from SymPy's eigenvects, the word's velocities and positions from the paper's matrices."""
+import pytest
 import sympy as sp
 
 from certify.dynamics.model import INDEX, collision_matrix
@@ -231,3 +232,66 @@ def _ball_matrix(letter, Rb):
                 cf = sp.Rational(cf)
                 out[i][j] += flint.arb(int(cf.p)) / int(cf.q) * Rb ** k
     return out
+
+
+def _spy_cancel(monkeypatch):
+    """Record (family, (a, b, c, d) before, after) of every :meth:`Family.cancel`."""
+    from certify.patterns.eigenspace import Family
+    seen, orig = [], Family.cancel
+
+    def spy(self, abcd):
+        out = orig(self, abcd)
+        seen.append((self, abcd, out))
+        return out
+    monkeypatch.setattr(Family, "cancel", spy)
+    return seen
+
+
+def _same_map(fam, before, after) -> bool:
+    """(a, b, c, d) and (a', b', c', d') proportional in K[s] (every 2x2 minor of the pair is 0,
+    exact in Q(r₀)[s]): the same Möbius map wherever both are defined."""
+    return all(fam.red(before[i] * after[j] - before[j] * after[i]).is_zero()
+               for i in range(4) for j in range(i + 1, 4))
+
+
+def test_the_position_map_cancelled_on_a_line_of_data(monkeypatch):
+    """(ab)³(cb)³ at ≈0.0945194072 (a double eigenvalue, a line of data q_a + s·d): its position map's
+    a, b, c, d (degree 11 in s) share the factors q_{i_k}(t_{k-1}) of the run's common denominator,
+    which made Δ a constant times a square and the norms of degree 176 (beyond NORM_DEGREE: 2 points
+    undecided in the census).  Cancelled now: the lower and middle x₋ points decided (not feasible),
+    x₊ feasible on both (a datum of the eigenspace), the stable window unchanged.  Second route for the
+    cancellation: the 2x2 minors of the map before and after are 0 exactly; a mutant (one entry
+    times s + 1) is caught."""
+    seen = _spy_cancel(monkeypatch)
+    res = analyse("abababcbcbcb", formulas=False)
+    assert res.undecided == []
+    assert _regions_at(res, "feasible", "0.0945194") == {("middle", "x₊"), ("lower", "x₊")}
+    assert [e["set"] for e in res.stable] == ["]≈0.09451940725, ≈0.1010205144["]
+    assert seen
+    for fam, before, after in seen:
+        assert max(e.degrees()[1] for e in after) < max(e.degrees()[1] for e in before)
+        assert _same_map(fam, before, after)
+    fam, before, after = seen[0]
+    _r, s = fam.m.context().gens()
+    mutant = (after[0], after[1], fam.red(after[2] * (s + 1)), after[3])
+    assert not _same_map(fam, before, mutant)
+
+
+def test_a_line_of_data_decided_where_the_census_stopped():
+    """aba(cb)²(abc)²b at ≈0.1516570691 (a line of data; 4 points undecided in the census, at q_2(t_1)
+    and x: norms beyond NORM_DEGREE): decided now with the position map cancelled, no datum of the
+    line realises the word (no feasible point, no feasible set)."""
+    res = analyse("abacbcbabcabcb", formulas=False)
+    assert res.undecided == [] and res.feasible == []
+
+
+@pytest.mark.slow
+def test_the_census_points_of_twenty_collisions_decided():
+    """(ab)⁵(cb)⁵ at ≈0.0796489098 (its map's entries at the isolated s where c = 0 cancel to ~1e-64:
+    decided at 2048 bits, undecided at 512) and a(bac)²bab(cba)²(cb)² at ≈0.1602898915 (norms of degree
+    532 before the cancellation): no point left undecided; the first keeps its stable window."""
+    res = analyse("abababababcbcbcbcbcb", formulas=False)
+    assert res.undecided == []
+    assert [e["set"] for e in res.stable] == ["]≈0.07964890975, ≈0.08070090315["]
+    res = analyse("abacbacbabcbacbacbcb", formulas=False)
+    assert res.undecided == [] and res.feasible == []
