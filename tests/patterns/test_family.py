@@ -173,8 +173,8 @@ def _near(p, points) -> bool:
     return any(p[:2] == q[:2] and abs(p[2] - q[2]) < 1e-9 for q in points)
 
 
-@pytest.mark.parametrize("n", range(2, 7))
-def test_family_route_gives_the_generic_sets(n, monkeypatch):
+@pytest.mark.parametrize("n", [2, 3, 4, *(pytest.param(n, marks=pytest.mark.slow) for n in (5, 6))])
+def test_family_route_gives_the_generic_sets(n, monkeypatch):     # n = 5, 6: minutes each
     """`certify pattern (ab)^n(cb)^n` through the family route: the same JSON as the generic route
     (every interval, condition, formula), except points the generic route left undecided: at
     r ≥ ρ_{n−1} the quadrant proposition proves the word infeasible, and at a multiple eigenvalue the
