@@ -190,13 +190,17 @@ def step(p: Sequence, q: Sequence, r) -> tuple[str, object, tuple, tuple] | None
     """Advance to the next collision: (letters, time, p, q) right after it
     (velocities post-collisional, l. 195), or None when no collision comes."""
     nxt = next_collision(p, q)
-    if nxt is None:
-        return None
+    return None if nxt is None else _collide_after(p, q, r, nxt, INDEX.__getitem__, collide)
+
+
+def _collide_after(p: Sequence, q: Sequence, r, nxt: tuple, index: Callable[[str], int], law: Callable) -> tuple:
+    """(letters, t, p, q) right after the collisions ``nxt`` = (letters, t): free flight for t, each
+    closed gap set to exactly zero, q mapped by ``law`` (collide, collide_gaps) for each letter."""
     letters, t = nxt
     p = [pi + t * qi for pi, qi in zip(p, q)]
     for L in letters:
-        p[INDEX[L]] = zero_like(p[INDEX[L]])    # the closed gap is exactly zero
-        q = collide(L, q, r)
+        p[index(L)] = zero_like(p[index(L)])    # the closed gap is exactly zero
+        q = law(L, q, r)
     return letters, t, tuple(p), tuple(q)
 
 
@@ -422,14 +426,7 @@ def step_gaps(p: tuple, q: tuple, r: flint.fmpq) -> tuple | None:
     """One collision of N = len(p) + 1 particles, exactly: (letters, dt, p, q) after it, or None
     when no gap closes (:func:`next_collision_gaps`, free flight, :func:`collide_gaps`)."""
     nxt = next_collision_gaps(p, q)
-    if nxt is None:
-        return None
-    letters, dt = nxt
-    p = [pi + dt * qi for pi, qi in zip(p, q)]
-    for L in letters:
-        p[LETTERS_N.index(L)] = flint.fmpq(0)
-        q = collide_gaps(L, q, r)
-    return letters, dt, tuple(p), q
+    return None if nxt is None else _collide_after(p, q, r, nxt, LETTERS_N.index, collide_gaps)
 
 
 def integral_vector(v: Sequence) -> tuple:
