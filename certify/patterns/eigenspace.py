@@ -403,12 +403,10 @@ class Family:
         return RS.from_dict({(i, n - j): e for j, c in enumerate(fk) for i, e in enumerate(c.coeffs()) if e != 0})
 
     def _divide_linear(self, fk, root):
-        """f / (s - root) in K[s] when s - root divides f exactly, else None (synthetic division)."""
-        m = self.es.F.m
-        out = [fk[0]]
-        for c in fk[1:]:
-            out.append(nf.reduce(c + root * out[-1], m))
-        return out[:-1] if out[-1].is_zero() else None
+        """f / (s - root) in K[s] when s - root divides f exactly, else None (numberfield.divides,
+        numberfield.divide)."""
+        m, g = self.es.F.m, [flint.fmpq_poly([1]), -root]
+        return nf.divide(fk, g, m) if nf.divides(g, fk, m) else None
 
     def cancel(self, abcd):
         """The position map's (a, b, c, d) divided by their common factors among the times'
@@ -532,11 +530,7 @@ class Family:
         K[s] is 0 (every root of g is a root), or its gcd with g is linear with ρ as root; False when
         that gcd is 1; None when it cannot tell."""
         F = self.es.F
-        d = f.to_dict()
-        top = max(j for (_i, j) in d)
-        fk = [F.of(0) for _ in range(top + 1)]                  # highest first
-        for (i, j), c in d.items():
-            fk[top - j] = fk[top - j] + F.of(flint.fmpq_poly([0] * i + [c]))
+        fk = [F.of(c) for c in self.kpoly(f)]                   # highest first
         gq = [c / g[g.degree()] for c in reversed(g.coeffs())]  # monic over Q, highest first
         n = len(gq) - 1
         while len(fk) > n:                                      # f mod g, without growth (g monic)
