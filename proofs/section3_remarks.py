@@ -656,12 +656,13 @@ def _sets_of(res) -> str:
 
 
 def _allowed(printed: str, max_length: int):
-    """The normal forms of the printed words ("ab, (ab)^n(cb)^n": a family in n ≥ 1 expanded up to
-    ``max_length`` collisions), as a list of (item, normal forms)."""
+    """The normal forms of the printed words ("ab, (ab)^n(cb)^n": the family of L4-L6, n ≥ 2 — n = 1
+    is abcb, unstable (L3.5) — expanded up to ``max_length`` collisions), as a list of (item, normal
+    forms)."""
     out = []
     for item in (t.strip() for t in printed.split(",")):
         if "^n" in item:
-            forms = [expand_pattern(item.replace("^n", f"^{n}")) for n in range(1, max_length // 2 + 1)]
+            forms = [expand_pattern(item.replace("^n", f"^{n}")) for n in range(2, max_length // 4 + 1)]
         else:
             forms = [expand_pattern(item)]
         out.append((item, {census.normal_form(w)[0] for w in forms if len(w) <= max_length}))

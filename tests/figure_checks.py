@@ -1,10 +1,12 @@
 """What a reader of a figure stumbles on, measured on the rendered figure (matplotlib's Agg
 renderer, at the dpi the figure is saved with): two texts overprinting each other, a text cut
 by the figure's edge, a panel without its own x tick labels, a legend over plotted data, a
-series of points without a legend entry, most of a panel's height left empty.
+series of points without a legend entry; and, called by the tests that need them, most of a
+panel's height left empty (:func:`empty_height`) and percentages not named apart
+(:func:`unnamed_percentages`).
 
 :func:`drawn` runs a drawing with the figures' cache off and returns the figures it saved;
-:func:`problems` lists what is wrong with one of them (empty when legible)."""
+:func:`problems` lists the first five kinds for one of them (empty when legible)."""
 from __future__ import annotations
 
 import re

@@ -95,6 +95,8 @@ def test_analyse_and_windows_are_the_engines(family2):
     assert res.to_json() == family2.to_json()
     assert res._repr_markdown_() == family2.markdown()
     assert api.windows("(ab)^2(cb)^2") == family2.intervals("stable")
+    hi = api.windows("(ab)^2(cb)^2")[0].hi                 # 3 − 2√2, computed here by SymPy
+    assert abs(sp.Float(hi.digits(30), 40) - sp.N(3 - 2 * sp.sqrt(2), 40)) < sp.Float(10) ** -28
     assert api.windows("abcb", "feasible", 2) == analyse("abcb").intervals("feasible", 2)
     lo, hi = Fraction(1, 10), Fraction(3, 20)
     assert api.analyse("(ab)^2(cb)^2", "1/10", "0.15").interval == (flint.fmpq(1, 10), flint.fmpq(3, 20))

@@ -112,6 +112,9 @@ def test_t30_fails_on_an_asymmetric_stable_word_or_a_doubtful_point(monkeypatch)
 
     def doubtful(records):
         _record(records, "abacbcbabcabcb")["undecided"] = ["upper x₊ at ≈0.1: p_3(t_1)"]
-    for change in (stable, doubtful):
+
+    def abcb(records):                     # (ab)^1(cb)^1 is not of the family (n ≥ 2): abcb stable is a failure
+        _record(records, "abcb")["stable"] = True
+    for change in (stable, doubtful, abcb):
         monkeypatch.setattr(T, "census_records", lambda change=change: _census_with(change))
         assert T.stable_patterns(**T.PRINTED_T28_4).status == "FAIL"
