@@ -202,6 +202,17 @@ def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
     return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
 
 
+def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
+    """identify's class of the orbit (θ0, φ0) at r and the collisions it was run again with: an
+    unresolved long transient (its word attracting at r) is run again :data:`LATE` times longer
+    and that run's class kept when it proves one; (class, None) otherwise."""
+    x = ident.classify(q, th, ph, collisions)
+    if x.cls != UNRESOLVED or unresolved_kind(x.word, fq) != TRANSIENT:
+        return x, None
+    y = ident.classify(q, th, ph, LATE * collisions)
+    return (y if y.cls != UNRESOLVED else x), LATE * collisions
+
+
 def r_job(r: str, data: list, collisions: int) -> dict:
     """Every orbit of ``data`` at r classified by identify (an unresolved long transient run
     again, :data:`LATE` times longer, its class kept if that run proves one); the island at r
@@ -211,12 +222,7 @@ def r_job(r: str, data: list, collisions: int) -> dict:
     fq = flint.fmpq(q.numerator, q.denominator)
     orbits = []
     for th, ph in data:
-        x = ident.classify(q, th, ph, collisions)
-        rerun = None
-        if x.cls == UNRESOLVED and unresolved_kind(x.word, fq) == TRANSIENT:
-            rerun = LATE * collisions
-            y = ident.classify(q, th, ph, rerun)
-            x = y if y.cls != UNRESOLVED else x
+        x, rerun = classify_late(q, fq, th, ph, collisions)
         rec = {"theta0": th, "phi0": ph, "class": x.cls, "certified_from": x.certified_from,
                "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else "",
                "rerun": rerun, "unresolved": unresolved_kind(x.word, fq) if x.cls == UNRESOLVED else None}
@@ -1101,14 +1107,10 @@ def check_orbits(doc: dict, rows=None) -> list[str]:
         if _counts(row["orbits"]) != row["counts"] or row["total"] != len(row["orbits"]):
             problems.append(f"r = {row['r']}: the counts are not those of its orbits")
         for o in row["orbits"]:
-            x = ident.classify(r, o["theta0"], o["phi0"], collisions)
-            late = x.cls == UNRESOLVED and unresolved_kind(x.word, fq) == TRANSIENT
-            if o.get("rerun") != (LATE * collisions if late else None):
+            x, rerun = classify_late(r, fq, o["theta0"], o["phi0"], collisions)
+            if o.get("rerun") != rerun:
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: run again "
                                 f"{o.get('rerun')} in the atlas, not what identify's class asks for")
-            elif o.get("rerun"):
-                y = ident.classify(r, o["theta0"], o["phi0"], o["rerun"])
-                x = y if y.cls != UNRESOLVED else x
             if o["class"] == UNRESOLVED and o.get("unresolved") != unresolved_kind(x.word, fq):
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: unresolved "
                                 f"{o.get('unresolved')} in the atlas, {unresolved_kind(x.word, fq)} by orbit_at")
