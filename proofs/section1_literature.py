@@ -530,11 +530,12 @@ def large_n_q2(limit: dict) -> list[Check]:
     """L6 for every n ≥ 8 from family_limit (parts 2, 7; part 9 for the window's upper end)."""
     facts, bad = limit["facts"], limit["failures"]
     dom = facts.get("dominant")
-    out = [Check(f"for every n ≥ {PROVED_FROM}: on ]0, {dom['r'][1] if dom else '?'}] the eigenvalue λ ≈ 1/9 is real, "
+    upto = dom['r'][1] if dom else '?'
+    out = [named("L6.6.1", Check(f"for every n ≥ {PROVED_FROM}: on ]0, {upto}] the eigenvalue λ ≈ 1/9 is real, "
                  "simple and strictly dominant (part 7), and q_2(0) has the sign of sin(nθ) there (part 2): it vanishes "
                  "at r_n (nθ = π), is > 0 on ]r*, r_n[ and < 0 just above r_n", not bad and dom is not None,
                  _limit_evidence(limit)[:1] + ([f"λ ∈ [{_fq(dom['lambda'][0]):.9f}, {_fq(dom['lambda'][1]):.9f}], "
-                                                f"|μ|, |ν| ≤ {_fq(dom['others']):.3g}"] if dom else ["no part 7"]))]
+                                                f"|μ|, |ν| ≤ {_fq(dom['others']):.3g}"] if dom else ["no part 7"])))]
     if "positions" in facts:
         out.append(Check(f"for every n ≥ {PROVED_FROM} the stable set reaches r_n from below (every r between the "
                          "lower end's strip and r_n stable, part 9): the window's upper end hi_n is r_n", not bad,
