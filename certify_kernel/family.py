@@ -138,6 +138,20 @@ def check_q2_identity() -> bool:
     return not madd(e2, claim)
 
 
+def check_u_factor() -> bool:
+    """Exact, in the same ring: the numerator of u by Cramer on rows 2 and 3 of (N² − λ)q = 0,
+    −(N²)₂₁(λ − (N²)₃₃) − (N²)₂₃(N²)₃₁, is c·X with X = −(d + W₁)(λ − (N²)₃₃) − (bc + aW₁): so
+    u = cX/D, |u| ≤ C_u|c| with C_u a bound of |X|/D (part 4 returns it)."""
+    a, b, c, d, W1, W2, lam, u, v = (_var(x) for x in _NAMES)
+    N = _n_rows(a, b, c, d, W1, W2)
+    M = [[madd(madd(mmul(N[i][0], N[0][j]), mmul(N[i][1], N[1][j])), mmul(N[i][2], N[2][j])) for j in range(3)]
+         for i in range(3)]
+    lam_33 = madd(lam, M[2][2], -1)
+    num = madd(mmul(mmul(_const(-1), M[1][0]), lam_33), mmul(M[1][2], M[2][0]), -1)
+    X = madd(mmul(mmul(_const(-1), madd(d, W1)), lam_33), madd(mmul(b, c), mmul(a, W1)), -1)
+    return not madd(num, mmul(c, X), -1)
+
+
 def check_period_matrix(n: int) -> bool:
     """Exact, for one n: N² with N = J M_ab^n is the kernel's word_matrix((ab)^n(cb)^n) (a check of
     part 1's algebra on the kernel's own matrices; part 1 proves it for every n)."""
@@ -237,11 +251,49 @@ def dominant(K: list, N1: int, r_max: Fraction) -> dict:
     q3 = v - W1 + W2 * u
     if not ((q3 - d).negative() and (lam - d * d).positive()):
         raise NotVerified("q₃(t_2n) − d < 0 < λ − d² is not proved")
+    X = -(d + W1) * (lam - M[2][2]) - (b * c + a * W1)            # u = cX/D: M₂₁ = c(d + W₁), M₂₃ = c
     return {"delta": delta, "lambda": (lam.lo, lam.hi), "others": others, "u": u.mag(),
-            "q3_minus_d": (q3 - d).hi, "lambda_minus_d2": (lam - d * d).lo}
+            "q3_minus_d": (q3 - d).hi, "lambda_minus_d2": (lam - d * d).lo, "Cu": (X.abs() / D).hi}
 
 
-# ------------------------------------------------------------- the predicate
+# ------------------------------------------------------------- 5. above nθ = 2π: a b separates
+def arcs(K: list, N1: int, r_max: Fraction, Cu: Fraction) -> dict:
+    """Part 5 for every n ≥ N1 and r ∈ ]r*, R] with nθ > 2π (R = r_max ≤ 1/4): some b of the ab-phase
+    comes with its pair separating, so the word is not realised.  Exactly: (h, 1)K = (ht, K₁₁) and
+    K₁₁ + r = h², K₁₁ = (1 − r)²/4 ≥ 0; so with y = K^{j−1}(−1, u) and K^j = s_j K − r² s_{j−1} I, q₂
+    before the j-th b is (y₂ + hy₁ =) −h s_j + u(K₁₁ s_{j−1} − r² s_{j−2}) = (r^{j−2}/sin θ)[−rh sin jθ +
+    u(K₁₁ sin(j−1)θ − r sin(j−2)θ)].  θ ≤ θ_max, cos θ_max = t(R)/(2R) > −1/2 (θ_max < 2π/3, so j₀, the
+    largest j with jθ < 2π, is ≥ 3 and ≤ n − 1); j' = j₀ if j₀θ ≤ 2π − θ/2, else j₀ − 1: 2π − j'θ ∈
+    [θ/2, 3θ/2] ⊂ ]0, π[, so sin j'θ ≤ −m, m = min(sin(θ/2), sin(3θ/2)) ≥ min(2/n, sin(3θ_max/2)) for
+    θ ∈ [2π/n, θ_max] (sin x ≥ 2x/π on [0, π/2], sin concave on [0, π], 3π/n ≤ π/2), sin(3x) =
+    sin x(1 + 2cos 2x).  |u| ≤ C_u|c|, |c| = rh|s_n| ≤ rh n ρ̄^{n−1} = rh δ_n (|sin nθ| ≤ n sin θ), and
+    |K₁₁ sin(j−1)θ − r sin(j−2)θ| ≤ h²: at j = j' the bracket is ≥ rh(m − C_u h² δ_n) > 0 (q₂ > 0 before
+    that b) when 2 > C_u h² n² ρ̄^{n−1} and sin(3θ_max/2) > C_u h² δ_n, both decreasing in n ((N + 1)² ρ̄ ≤
+    N²): checked at N1 in intervals.  Returns the two margins."""
+    r, h2 = R, mul(H, H)
+    exact = {
+        "(h, 1)K = (ht, K₁₁)": add(mul(H, K[0][0]), K[1][0]) == mul(H, T) and add(mul(H, K[0][1]), K[1][1]) == K[0][0],
+        "K₁₁ + r = h²": add(K[0][0], r) == h2,
+        "K₁₁ = (1 − r)²/4": K[0][0] == scale(mul([1, -1], [1, -1]), Fraction(1, 4)),
+        "h² − 2r = t": sub(h2, scale(r, 2)) == T,
+    }
+    bad = [k for k, ok in exact.items() if not ok]
+    if bad:
+        raise ArithmeticError("part 5: " + "; ".join(bad))
+    cmax = at(T, r_max) / (2 * r_max)
+    if not (cmax > Fraction(-1, 2) and (N1 + 1) ** 2 * RHO <= N1 ** 2):
+        raise NotVerified("θ_max < 2π/3 or the decrease of n²ρ̄^(n−1) is not proved")
+    s3 = sqrt(Iv((1 - cmax) / 2)) * (1 + 2 * cmax)                # sin(3θ_max/2)
+    h2max = ((1 + r_max) / 2) ** 2
+    dn = N1 * RHO ** (N1 - 1)
+    m1 = 2 - Cu * h2max * N1 * dn
+    m2 = s3 - Cu * h2max * dn
+    if not (m1 > 0 and m2.positive()):
+        raise NotVerified(f"the separating b is not proved (n ≥ {N1})")
+    return {"margins": (m1, m2.lo)}
+
+
+# ------------------------------------------------------------- the predicates
 def _pi_multiple(t) -> Fraction:
     """c in an expression cπ written π, π/m, k·π, k·π/m or kπ (a tree of the language)."""
     if t in (("const", "π"), ("name", "π")):
@@ -253,7 +305,7 @@ def _pi_multiple(t) -> Fraction:
     raise Undefined("the threshold is written n·θ = cπ (c rational)")
 
 
-def _arguments(word, n_bound, r_range, threshold, ctx) -> tuple:
+def _arguments(word, n_bound, r_range, threshold, ctx, relation: str = "=") -> tuple:
     """(N, R, c) from the predicate's arguments, each checked for its form."""
     from .evaluate import interval
     if word[0] != "str" or word[1].replace(" ", "") != WORD:
@@ -267,9 +319,9 @@ def _arguments(word, n_bound, r_range, threshold, ctx) -> tuple:
     lo, hi = iv.lo, iv.hi
     if not (lo.rational and hi.rational) or lo.lo != 0 or iv.lo_closed or not iv.hi_closed:
         raise Undefined("the range of r is ]0, R], R rational")
-    if (threshold[0] != "cmp" or threshold[1] != ("=",) or threshold[2][0][0] != "bin"
+    if (threshold[0] != "cmp" or threshold[1] != (relation,) or threshold[2][0][0] != "bin"
             or threshold[2][0][1:3] != ("·", ("name", "n")) or threshold[2][0][3] != ("name", "θ")):
-        raise Undefined("the threshold is written n·θ = cπ")
+        raise Undefined(f"the threshold is written n·θ {relation} cπ")
     return N1, Fraction(hi.lo), _pi_multiple(threshold[2][1])
 
 
@@ -279,6 +331,16 @@ def q2_sign_family(ctx, word, n_bound, r_range, threshold) -> bool:
     q_2(0) > 0 there, for c > 1 it vanished before, at nθ = π); NotVerified when a step is not proved
     (R > 1/4, N too small for the intervals)."""
     N1, r_max, c = _arguments(word, n_bound, r_range, threshold, ctx)
+    _proved(N1, r_max)
+    if c != 1:
+        ctx.counterexample = f"n·θ = {c}π: sin(nθ) {'> 0' if c < 1 else 'vanished first at nθ = π'}"
+        return False
+    return True
+
+
+def _proved(N1: int, r_max: Fraction) -> dict:
+    """Parts 1-4 for every n ≥ N1 on ]0, R]: the facts of :func:`dominant` (NotVerified when a step
+    is not proved)."""
     if N1 < 2:
         raise Undefined("n ≥ N with N ≥ 2")
     if r_max > R_MAX:
@@ -287,14 +349,29 @@ def q2_sign_family(ctx, word, n_bound, r_range, threshold) -> bool:
         K, _ = block()
         if not check_q2_identity():
             raise ArithmeticError("the identity of q_2(0) fails")
+        if not check_u_factor():
+            raise ArithmeticError("u = cX/D fails")
         theta_facts(r_max)
     except ArithmeticError as exc:
         raise NotVerified(str(exc)) from None
-    dominant(K, N1, r_max)
-    if c != 1:
-        ctx.counterexample = f"n·θ = {c}π: sin(nθ) {'> 0' if c < 1 else 'vanished first at nθ = π'}"
-        return False
+    return {"K": K, **dominant(K, N1, r_max)}
+
+
+def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
+    """``family_unstable("(ab)^n(cb)^n", n ≥ N, r in ]0, R], n·θ > cπ)``: for every n ≥ N no r of ]0, R]
+    with nθ > cπ is stable.  Proved for c ≥ 1: where π < nθ < 2π, q_2(0) < 0 on the dominant branch and
+    at nθ = 2π it is 0 (parts 1-4), and where nθ > 2π a b of the ab-phase separates (part 5): the word
+    is not realised.  For c < 1, NotVerified (the kernel proves no stability)."""
+    N1, r_max, c = _arguments(word, n_bound, r_range, threshold, ctx, ">")
+    facts = _proved(N1, r_max)
+    try:
+        arcs(facts["K"], N1, r_max, facts["Cu"])
+    except ArithmeticError as exc:
+        raise NotVerified(str(exc)) from None
+    if c < 1:
+        raise NotVerified("the kernel's route shows nothing unstable below nθ = π")
     return True
 
 
 PREDICATES["q2_sign_family"] = q2_sign_family
+PREDICATES["family_unstable"] = family_unstable

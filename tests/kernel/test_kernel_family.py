@@ -150,3 +150,45 @@ def test_a_broken_identity_makes_the_statement_not_verified(monkeypatch):
     monkeypatch.setattr(family, "check_q2_identity", lambda: False)
     got = outcome(L661)
     assert got.startswith("not verified") and "identity of q_2(0)" in got
+
+
+UNSTABLE = 'family_unstable("(ab)^n(cb)^n", n ≥ 8, r in ]0, 1/4], n·θ > π)'
+
+
+def test_nothing_above_r_n_is_stable_for_every_n_from_8():
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    assert stmts["L6.6.2"].formula == UNSTABLE
+    assert outcome(UNSTABLE) == "verified"
+    assert outcome(stmts["L6.6.3"].formula) == "verified"
+
+
+@pytest.mark.parametrize("change, why", [
+    ("n·θ > π/2", "below nθ = π"),               # inside the window: the kernel proves no instability there
+    ("n ≥ 6", "change sign around 1/9"),
+    ("r in ]0, 1/2]", "r ≤ 1/4"),
+])
+def test_mutants_of_unstable_are_not_verified(change, why):
+    old = {"n·": "n·θ > π", "n ": "n ≥ 8", "r ": "r in ]0, 1/4]"}[change[:2]]
+    got = outcome(UNSTABLE.replace(old, change))
+    assert got.startswith("not verified") and why in got, got
+
+
+def test_the_third_a_statement_fails_where_t_is_positive():
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    f = stmts["L6.6.3"].formula
+    assert outcome(f.replace("429/2500", "1/10")).startswith("failed:")          # t > 0 below 3 − 2√2
+    assert outcome(f.replace("+ r^2", "- r^2")).startswith("failed:")            # ℓ₂ = tℓ₁ − r²: false
+
+
+def test_the_arcs_margins_and_a_tightened_one(monkeypatch):
+    """Part 5's margins at N₁ = 7 (docs/family-limit.md, part 10: 1.956 and 0.4328 with the engine's
+    C_u), recomputed; with C_u inflated 200-fold the separating b is no longer proved."""
+    facts = family._proved(7, Fraction(1, 4))
+    m1, m2 = family.arcs(facts["K"], 7, Fraction(1, 4), facts["Cu"])["margins"]
+    assert Fraction(19, 10) < m1 < 2 and Fraction(4, 10) < m2 < Fraction(45, 100)
+    with pytest.raises(NotVerified, match="separating b"):
+        family.arcs(facts["K"], 7, Fraction(1, 4), 200 * facts["Cu"])
+
+
+def test_u_is_c_times_x_over_d():
+    assert family.check_u_factor()
