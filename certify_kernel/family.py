@@ -281,6 +281,8 @@ def arcs(K: list, N1: int, r_max: Fraction, Cu: Fraction) -> dict:
     if bad:
         raise ArithmeticError("part 5: " + "; ".join(bad))
     cmax = at(T, r_max) / (2 * r_max)
+    if N1 < 6:
+        raise NotVerified("part 5 needs n ≥ 6 (3π/n ≤ π/2)")
     if not (cmax > Fraction(-1, 2) and (N1 + 1) ** 2 * RHO <= N1 ** 2):
         raise NotVerified("θ_max < 2π/3 or the decrease of n²ρ̄^(n−1) is not proved")
     s3 = sqrt(Iv((1 - cmax) / 2)) * (1 + 2 * cmax)                # sin(3θ_max/2)
