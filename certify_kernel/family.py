@@ -97,6 +97,7 @@ def block() -> tuple[list, list]:
         "det(I − K) = 3(r + 1)²/4": _det2(I_K) == [Fraction(3, 4), Fraction(3, 2), Fraction(3, 4)],
         "det M_ab = r²": det_ab == r2,
         "K₂₁ = −rh": K[1][0] == scale(mul(R, H), -1),
+        "K₁₂ = h": K[0][1] == H,
     }
     bad = [k for k, ok in checks.items() if not ok]
     if bad:
@@ -253,7 +254,8 @@ def dominant(K: list, N1: int, r_max: Fraction) -> dict:
         raise NotVerified("q₃(t_2n) − d < 0 < λ − d² is not proved")
     X = -(d + W1) * (lam - M[2][2]) - (b * c + a * W1)            # u = cX/D: M₂₁ = c(d + W₁), M₂₃ = c
     return {"delta": delta, "lambda": (lam.lo, lam.hi), "others": others, "u": u.mag(),
-            "q3_minus_d": (q3 - d).hi, "lambda_minus_d2": (lam - d * d).lo, "Cu": (X.abs() / D).hi}
+            "q3_minus_d": (q3 - d).hi, "lambda_minus_d2": (lam - d * d).lo, "Cu": (X.abs() / D).hi,
+            "q3_abs": (-q3).lo if q3.negative() else Fraction(0)}
 
 
 # ------------------------------------------------------------- 5. above nθ = 2π: a b separates
@@ -295,6 +297,48 @@ def arcs(K: list, N1: int, r_max: Fraction, Cu: Fraction) -> dict:
     return {"margins": (m1, m2.lo)}
 
 
+# ------------------------------------------------------------- 6. below r_n: every pair approaches
+VELOCITY_RANGE = (Fraction(7, 100), Fraction(8, 100))     # ⊃ ]r*, r_n[ for every n ≥ 7
+
+
+def velocities(K: list, N1: int, facts: dict) -> dict:
+    """Part 6 for every n ≥ N1 ≥ 7 and r ∈ ]r*, r_n[ (0 < nθ < π), on the dominant branch: before every
+    collision of (ab)^n(cb)^n its pair approaches.  Exactly (K^j = s_j K − r² s_{j−1}I, K₁₂ = h,
+    (h, 1)K = (ht, K₁₁)), with y = K^j(−1, u) and s_j = r^{j−1} s̃_j, s̃_j = sin jθ/sin θ:
+    q₁ before the (j+1)-th a is y₁ = −r^{j−1}[K₁₁s̃_j − r s̃_{j−1} − uh s̃_j], q₂ before the (j+1)-th b is
+    −r^{j−1}[rh s̃_{j+1} − u(K₁₁s̃_j − r s̃_{j−1})].  For 1 ≤ k ≤ n − 1, 1 ≤ s̃_k ≤ n (θ ≤ kθ ≤ π − θ), and
+    K₁₁ sin jθ − r sin(j−1)θ = sin jθ(K₁₁ − r cos θ) + r cos jθ sin θ ≥ sin θ(K₁₁ − 2r).  u = cX/D =
+    s̃_n ω, c = −rh r^{n−1}s̃_n, |ω| ≤ rh r^{n−1}C_u, |u| ≤ n|ω|.  So the a-brackets are ≥ K₁₁ − 2r −
+    rh²C n² r^{n−1}, the b-brackets with j ≤ n − 2 are ≥ rh(1 − Ch² n² r^{n−1}), and the last b's is
+    s̃_n(rh − |ω| n h²) > 0 with s̃_n > 0.  The cb-phase is the same map on (q₃, q₂) from
+    (q₃, q₂)(t_2n) = |q₃|(−1, u′), q₃(t_2n) < d < 0 (part 4, and d = −r s_n − r² s_{n−1} < 0),
+    u′ = q₂(t_2n)/|q₃| = s̃_n ω′, q₂(t_2n) = −c + du = −c(1 − dX/D): |ω′| ≤ rh r^{n−1}(1 + δC_u)/|q₃|.
+    With C = max(C_u, (1 + δC_u)/|q₃|), r ∈ [7/100, 8/100] (7/100 < r*, and r_n < 8/100 as cos θ(8/100) <
+    √3/2 < cos(π/n) for n ≥ 7) and n² r^{n−1} ≤ N1²(8/100)^{N1−1} (decreasing): both margins are checked
+    positive in intervals over 16 boxes of the range.  Returns the smallest margins."""
+    lo, hi = VELOCITY_RANGE
+    c08 = at(T, hi) / (2 * hi)
+    root = [Fraction(1), Fraction(-14), Fraction(1)]
+    if not (N1 >= 7 and at(root, lo) > 0 and 0 < c08 and c08 * c08 < Fraction(3, 4)
+            and (N1 + 1) ** 2 * hi <= N1 ** 2):
+        raise NotVerified("[7/100, 8/100] ⊃ ]r*, r_n[ or the decrease of n² r^(n−1) is not proved")
+    q3 = Iv(facts["q3_abs"])
+    C = max(facts["Cu"], ((1 + facts["delta"] * facts["Cu"]) / q3).hi)
+    big = N1 * N1 * hi ** (N1 - 1)
+    m_a = m_b = None
+    for k in range(16):
+        r = Iv(lo + (hi - lo) * k / 16, lo + (hi - lo) * (k + 1) / 16)
+        h = (1 + r) / 2
+        K11 = _poly_iv(K[0][0], r)
+        a_ = K11 - 2 * r - r * h * h * C * big
+        b_ = 1 - C * h * h * big
+        m_a = a_.lo if m_a is None else min(m_a, a_.lo)
+        m_b = b_.lo if m_b is None else min(m_b, b_.lo)
+    if not (m_a > 0 and m_b > 0):
+        raise NotVerified(f"the velocity margins are not proved (n ≥ {N1})")
+    return {"margins": (m_a, m_b)}
+
+
 # ------------------------------------------------------------- the predicates
 def _pi_multiple(t) -> Fraction:
     """c in an expression cπ written π, π/m, k·π, k·π/m or kπ (a tree of the language)."""
@@ -307,24 +351,27 @@ def _pi_multiple(t) -> Fraction:
     raise Undefined("the threshold is written n·θ = cπ (c rational)")
 
 
-def _arguments(word, n_bound, r_range, threshold, ctx, relation: str = "=") -> tuple:
-    """(N, R, c) from the predicate's arguments, each checked for its form."""
+def _arguments(ctx, word, n_bound, threshold, relation: str, r_range=None) -> tuple:
+    """(N, R, c) from the predicate's arguments, each checked for its form (R = 1/4 without a range)."""
     from .evaluate import interval
     if word[0] != "str" or word[1].replace(" ", "") != WORD:
         raise Undefined(f"the kernel's family route knows the word {WORD} only")
     if n_bound[0] != "cmp" or n_bound[1] != ("≥",) or n_bound[2][0] != ("name", "n") or n_bound[2][1][0] != "num":
         raise Undefined("the range of n is written n ≥ N")
     N1 = int(Fraction(n_bound[2][1][1]))
-    if r_range[0] != "cmp" or r_range[1] != ("in",) or r_range[2][0] != ("name", "r"):
-        raise Undefined("the range of r is written r in ]0, R]")
-    iv = interval(r_range[2][1], ctx)
-    lo, hi = iv.lo, iv.hi
-    if not (lo.rational and hi.rational) or lo.lo != 0 or iv.lo_closed or not iv.hi_closed:
-        raise Undefined("the range of r is ]0, R], R rational")
+    r_max = R_MAX
+    if r_range is not None:
+        if r_range[0] != "cmp" or r_range[1] != ("in",) or r_range[2][0] != ("name", "r"):
+            raise Undefined("the range of r is written r in ]0, R]")
+        iv = interval(r_range[2][1], ctx)
+        lo, hi = iv.lo, iv.hi
+        if not (lo.rational and hi.rational) or lo.lo != 0 or iv.lo_closed or not iv.hi_closed:
+            raise Undefined("the range of r is ]0, R], R rational")
+        r_max = Fraction(hi.lo)
     if (threshold[0] != "cmp" or threshold[1] != (relation,) or threshold[2][0][0] != "bin"
             or threshold[2][0][1:3] != ("·", ("name", "n")) or threshold[2][0][3] != ("name", "θ")):
         raise Undefined(f"the threshold is written n·θ {relation} cπ")
-    return N1, Fraction(hi.lo), _pi_multiple(threshold[2][1])
+    return N1, r_max, _pi_multiple(threshold[2][1])
 
 
 def q2_sign_family(ctx, word, n_bound, r_range, threshold) -> bool:
@@ -332,7 +379,7 @@ def q2_sign_family(ctx, word, n_bound, r_range, threshold) -> bool:
     n ≥ N on ]0, R]; False when c ≠ 1 (nθ = cπ is not where q_2(0) first vanishes: for 0 < c < 1
     q_2(0) > 0 there, for c > 1 it vanished before, at nθ = π); NotVerified when a step is not proved
     (R > 1/4, N too small for the intervals)."""
-    N1, r_max, c = _arguments(word, n_bound, r_range, threshold, ctx)
+    N1, r_max, c = _arguments(ctx, word, n_bound, threshold, "=", r_range)
     _proved(N1, r_max)
     if c != 1:
         ctx.counterexample = f"n·θ = {c}π: sin(nθ) {'> 0' if c < 1 else 'vanished first at nθ = π'}"
@@ -364,7 +411,7 @@ def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
     with nθ > cπ is stable.  Proved for c ≥ 1: where π < nθ < 2π, q_2(0) < 0 on the dominant branch and
     at nθ = 2π it is 0 (parts 1-4), and where nθ > 2π a b of the ab-phase separates (part 5): the word
     is not realised.  For c < 1, NotVerified (the kernel proves no stability)."""
-    N1, r_max, c = _arguments(word, n_bound, r_range, threshold, ctx, ">")
+    N1, r_max, c = _arguments(ctx, word, n_bound, threshold, ">", r_range)
     facts = _proved(N1, r_max)
     try:
         arcs(facts["K"], N1, r_max, facts["Cu"])
@@ -375,5 +422,21 @@ def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
     return True
 
 
+def family_approaching(ctx, word, n_bound, threshold) -> bool:
+    """``family_approaching("(ab)^n(cb)^n", n ≥ N, n·θ < cπ)``: for every n ≥ N and every r above
+    r* = 7 − 4√3 with nθ < cπ, on the dominant branch every collision of the word comes with its pair
+    approaching.  Proved for c ≤ 1 (part 6); false for c > 1: just above r_n (nθ slightly above π, r
+    still in [7/100, 8/100]) the last b of (ab)^n has the bracket s̃_n(rh − ω(…)) < 0 as s̃_n < 0, so
+    its pair separates."""
+    N1, _, c = _arguments(ctx, word, n_bound, threshold, "<")
+    facts = _proved(N1, R_MAX)
+    velocities(facts["K"], N1, facts)
+    if c > 1:
+        ctx.counterexample = "just above r_n (nθ slightly above π): the last b of (ab)^n separates"
+        return False
+    return True
+
+
 PREDICATES["q2_sign_family"] = q2_sign_family
+PREDICATES["family_approaching"] = family_approaching
 PREDICATES["family_unstable"] = family_unstable

@@ -545,6 +545,11 @@ def large_n_q2(limit: dict) -> list[Check]:
                                      "(part 11)", not bad and third is not None,
                                      [f"t ≤ {_fq(third['t_max']):.3g} on [{third['r'][0]}, 1]" if third else
                                       "no part 11"])))
+    out.append(named("L6.6.4", Check(f"for every n ≥ {PROVED_FROM} every velocity condition holds on ]r*, r_n[ "
+                                     "(part 8); just above r_n the last b of (ab)^n separates (part 2's sign of q_2)",
+                                     not bad and "velocity" in facts,
+                                     [f"margins ≥ {min(_fq(m) for m in facts['velocity']['margins'].values()):.3g}"
+                                      if "velocity" in facts else "no part 8"])))
     if "positions" in facts:
         out.append(Check(f"for every n ≥ {PROVED_FROM} the stable set reaches r_n from below (every r between the "
                          "lower end's strip and r_n stable, part 9): the window's upper end hi_n is r_n", not bad,

@@ -192,3 +192,26 @@ def test_the_arcs_margins_and_a_tightened_one(monkeypatch):
 
 def test_u_is_c_times_x_over_d():
     assert family.check_u_factor()
+
+
+APPROACHING = 'family_approaching("(ab)^n(cb)^n", n ≥ 8, n·θ < π)'
+
+
+def test_every_pair_approaches_below_r_n_and_not_above():
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    assert stmts["L6.6.4"].formula.startswith(APPROACHING)
+    assert outcome(stmts["L6.6.4"].formula) == "verified"
+    assert outcome(APPROACHING) == "verified"
+    got = outcome(APPROACHING.replace("n·θ < π", "n·θ < 2·π"))            # a wrong threshold: false
+    assert got.startswith("failed:") and "finds it false" in got
+
+
+def test_the_velocity_margins_and_an_inflated_constant():
+    """Part 6's margins (docs/family-limit.md, part 8: ≥ 0.051 before each a, about 1 before each b),
+    recomputed at N₁ = 8; with C_u inflated 10⁶-fold they are no longer proved (the margins are wide:
+    n² r^(n−1) ≤ 64·0.08⁷ ≈ 1.3·10⁻⁶)."""
+    facts = family._proved(8, Fraction(1, 4))
+    m_a, m_b = family.velocities(facts["K"], 8, facts)["margins"]
+    assert Fraction(5, 100) < m_a < Fraction(6, 100) and Fraction(99, 100) < m_b < 1
+    with pytest.raises(NotVerified, match="velocity margins"):
+        family.velocities(facts["K"], 8, {**facts, "Cu": 10 ** 6 * facts["Cu"]})
