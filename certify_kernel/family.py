@@ -12,8 +12,8 @@ language (docs/statements.md) says: for every integer n ≥ N and every r in ]0,
 it is true exactly when c = 1 (the first zero of sin(nθ) above r*), and the kernel proves it for
 every n ≥ N at once.  Everything is built here from the kernel's collision matrices
 (:func:`certify_kernel.evaluate.word_matrix`); nothing is read from the engine.  The proof
-(docs/family-limit.md, parts 1, 2 and 7; the engine's certify/patterns/family_limit.py is not
-imported, its facts not read):
+(docs/family-limit.md, parts 1, 2, 7, 8 and 10, numbered 1-6 here; the engine's
+certify/patterns/family_limit.py is not imported, its facts not read):
 
 1. *The block* (:func:`block`, exact polynomials in r).  M_ab = [[K, 0], [wᵀ, 1]] on (q₁, q₂ | q₃),
    M_cb = J M_ab J (J: q₁ ↔ q₃), det K = r², tr K = t = (r² − 6r + 1)/4, K² = tK − r²I (Cayley–Hamilton),
@@ -41,12 +41,18 @@ imported, its facts not read):
    x² − (tr M − λ)x + det M/λ, have modulus ≤ |S|/2 + √(S²/4 + |Π|) < λ: λ is real, simple, strictly
    dominant.  Its eigenvector (−1, u, v) (rows 2 and 3, Cramer, D > 0) has q₃(t_{2n}) − d < 0 < λ − d²,
    so by 2, u = −rh s_n (q₃(t_{2n}) − d)/(λ − d²) has the sign of s_n.
+5. *Above nθ = 2π* (:func:`arcs`, family_limit's part 10): a b of (ab)^n separates.
+6. *Below r_n* (:func:`velocities`, family_limit's part 8): every pair approaches.
+
+Two more predicates use them: ``family_unstable("(ab)^n(cb)^n", n ≥ N, r in ]0, R], n·θ > cπ)``
+(nothing stable there: parts 1-5) and ``family_approaching("(ab)^n(cb)^n", n ≥ N, n·θ < cπ)``
+(every pair approaches above r*: parts 1-4, 6).  The kernel reads no witness for any of them.
 """
 from __future__ import annotations
 
 from fractions import Fraction
 
-from .evaluate import PREDICATES, NotVerified, word_matrix
+from .evaluate import PREDICATES, NotVerified, interval, word_matrix
 from .intervals import Iv, sqrt
 from .poly import add, madd, mmul, mul, scale, sub
 from .poly import value as at
@@ -353,7 +359,6 @@ def _pi_multiple(t) -> Fraction:
 
 def _arguments(ctx, word, n_bound, threshold, relation: str, r_range=None) -> tuple:
     """(N, R, c) from the predicate's arguments, each checked for its form (R = 1/4 without a range)."""
-    from .evaluate import interval
     if word[0] != "str" or word[1].replace(" ", "") != WORD:
         raise Undefined(f"the kernel's family route knows the word {WORD} only")
     if n_bound[0] != "cmp" or n_bound[1] != ("≥",) or n_bound[2][0] != ("name", "n") or n_bound[2][1][0] != "num":
