@@ -116,7 +116,7 @@ def verify_certificate(cert, engine: dict | None, lets: dict) -> dict:
     return out
 
 
-WITNESSES = ("signed", "factors")        # the kinds of witness a module of the kernel reads (signs, pattern)
+WITNESSES = ("signed", "factors", "datum")   # the kinds of witness the kernel reads (signs, pattern, particles)
 
 
 def _unread(engine: dict) -> str:

@@ -21,10 +21,10 @@ from __future__ import annotations
 from fractions import Fraction
 
 from .cells import _surd_sign
-from .evaluate import FUNCTIONS, PREDICATES, NotVerified, Undefined, bind, collisions_at, expand_word, value
+from .evaluate import FUNCTIONS, PREDICATES, NotVerified, Undefined, bind, collision, collisions_at, expand_word, value
 from .poly import add, at_r, deg, divmod_, mul, scale, sub, trim
 from .sturm import Algebraic, real_roots
-from .values import RF, VARS
+from .values import RF, VARS, univariate
 
 
 class Field:
@@ -103,11 +103,12 @@ class Num:
 
 
 class Datum:
-    """The state at t = 0, its field, λ, and the collisions computed so far (each proved)."""
+    """The state at t = 0, its field, λ, and the collisions computed so far (each proved); r₀ a
+    rational, or K the collision matrices in F (r₀ algebraic, F = Q(r₀))."""
 
-    def __init__(self, F: Field, lam: Num, p: tuple, q: tuple, r0: Fraction):
+    def __init__(self, F: Field, lam: Num, p: tuple, q: tuple, r0: Fraction | None, K: list | None = None):
         self.F, self.lam, self.r0 = F, lam, r0
-        self.K = collisions_at(r0)
+        self.K = collisions_at(r0) if K is None else K
         self.states, self.word, self.stop = [(p, q)], "", ""
 
     def run(self, n: int, pattern: str = "") -> None:
@@ -248,6 +249,57 @@ def leaves(ctx, D, w, n) -> bool:
     if D.stop == "a multiple collision":
         raise NotVerified("a multiple collision before the pattern is left")
     return D.word != (word * n)[:len(D.word)] or len(D.word) < len(word) * n
+
+
+# ----------------------------------------------------------------- a datum witnessed at an algebraic r₀
+def witnessed_feasible(witnesses: list, word: str, r0: Algebraic) -> bool:
+    """Some witness of kind "datum" for ``word`` at r₀ proves it *feasible* there: at a point where
+    the candidate degenerates (Cramer's q(0) is 0/0 on a multiple eigenvalue: a line of data) any
+    eigenvector is a datum, and one that realises the word is enough (the atom is an existence).
+    Nothing of the witness is trusted: :func:`realised_at`."""
+    return any(isinstance(w, dict) and w.get("kind") == "datum" and w.get("word") == word and realised_at(w, r0)
+               for w in witnesses or [])
+
+
+def realised_at(w: dict, r0: Algebraic) -> bool:
+    """The witness's datum at r₀, checked exactly in Q(r₀)(√Δ) with the kernel's collision matrices:
+    its r is r₀ (its polynomial and isolating interval, checked, equal r₀); λ > 0; q(0) = (-1, u, v)
+    with u > 0 and M_w q(0) = λ q(0); x = α + β√Δ > 0 (Δ > 0 where β ≠ 0); and the four particles
+    from p(0) = (1, 0, x), q(0), moved exactly (:meth:`Datum.run`: each collision the strict first),
+    spell the word and return scaled: p(t_n) = μ p(0) with μ > 0 (so x is a fixed point of the
+    position map) and q(t_n) = λ q(0).  Elements of Q(r₀) are polynomials in r (lowest first)."""
+    try:
+        F = Field(r0)
+        mine = Algebraic([Fraction(c) for c in w["r"]["polynomial"]], *(Fraction(e) for e in w["r"]["interval"]))
+        if mine.compare(r0) != 0:
+            return False
+        of = lambda c: Num(F, [Fraction(a) for a in c])          # noqa: E731
+        lam, q0 = of(w["lambda"]), tuple(of(c) for c in w["q"])
+        alpha, beta, delta = (of(w["x"][k]) for k in ("alpha", "beta", "delta"))
+    except (KeyError, TypeError, ValueError, ZeroDivisionError):
+        return False
+    if beta.a and delta.sign() <= 0:
+        return False
+    F.delta = delta.a
+    x = Num(F, alpha.a, beta.a)
+    word = expand_word(w["word"])
+    K = [[[Num(F, univariate(e)) for e in row] for row in collision(k).rows] for k in range(3)]
+    q = q0
+    for letter in word:
+        M = K["abc".index(letter)]
+        q = tuple(sum((q[j] * M[i][j] for j in range(3)), Num(F, [])) for i in range(3))
+    if len(q0) != 3 or (q0[0] + 1).sign() or q0[1].sign() <= 0 or lam.sign() <= 0 or x.sign() <= 0 or \
+            any((q[i] - lam * q0[i]).sign() for i in range(3)):
+        return False
+    one, zero = Num(F, [Fraction(1)]), Num(F, [])
+    D = Datum(F, lam, (one, zero, x), q0, None, K)
+    D.run(len(word))
+    if D.word != word:
+        return False
+    (p_end, q_end), p0 = D.states[-1], D.states[0][0]
+    mu = p_end[0]
+    return mu.sign() > 0 and not any((p_end[i] - mu * p0[i]).sign() or (q_end[i] - lam * q0[i]).sign()
+                                     for i in range(3))
 
 
 FUNCTIONS["datum"] = datum

@@ -47,6 +47,7 @@ from math import gcd as igcd
 
 from .cells import ORDER, Condition, Point, Undecided, _between, cut_points
 from .evaluate import ATOMS, FUNCTIONS, Matrix, NotVerified, collision, expand_word
+from .particles import witnessed_feasible
 from .poly import (
     add,
     badd,
@@ -932,7 +933,14 @@ def _stage_atom(stage: str):
         return _ends(_regions(ctx, *args_of(ctx, args)))
 
     def truth(p, ctx, args, conds):
-        return _exists(p, _regions(ctx, *args_of(ctx, args)))
+        text, st, branches = args_of(ctx, args)
+        try:
+            return _exists(p, _regions(ctx, text, st, branches))
+        except Undecided:
+            if stage == "feasible" and branches is None and not p.cell and \
+                    witnessed_feasible(ctx.witnesses, expand_word(text), p.r0):
+                return True            # a degenerate point: a witnessed datum realises the word
+            raise
     return conditions, truth
 
 

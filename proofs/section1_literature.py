@@ -53,11 +53,13 @@ def expand_pattern(pattern: str) -> str:
     return word
 
 
-def witnessed(check: Check, ref: str, *words: str) -> Check:
+def witnessed(check: Check, ref: str, *words: str, data: list = ()) -> Check:
     """``check`` deciding the formal statement ``ref``, with the factors of the words' candidates
-    as its witness."""
+    as its witness, and the ``data`` found at multiple eigenvalues (``PatternResult.data``: the
+    kernel re-runs each where its candidate degenerates)."""
     check.witnesses = list(check.witnesses or []) + witness("factors", words=list(words),
-                                                              factors=known_factors(*words))
+                                                              factors=known_factors(*words)) \
+        + [i for d in data for i in witness("datum", **d)]
     return named(ref, check)
 
 
@@ -211,7 +213,8 @@ def abcb_exists(word, P, r_exist, stability):
               f"{', '.join(fmt(c) for c in uncovered_points) or 'none'} where the engine is undecided "
               "(a double eigenvalue: u is 0/0 in every row of the eigen-equation)",
               not gaps and explained, [f"feasible: {_sets(res, 'feasible')}", f"gaps: {gaps or 'none'}",
-                                       "undecided: " + ("; ".join(res.undecided) or "none")]), "L3.3", word),
+                                       "undecided: " + ("; ".join(res.undecided) or "none")]), "L3.3", word,
+                  data=res.data),
         witnessed(Check(f"for r > r_exist no feasible candidate of {word}", ends_at_root,
                         [f"sup of the feasible set: {fmt(_top(feas)) if feas else '∅'}"]), "L3.4", word),
         witnessed(Check(f"{word} is {stability}: no stable self-similar datum for any r in ]0,1[",
@@ -223,8 +226,9 @@ def abcb_exists(word, P, r_exist, stability):
                                       f"disc = `{res.discriminant}`", f"exists: {_sets(res, 'exists')}"],
                     note="r_exist is where the feasible branches end (a root of the discriminant: two eigenvalues "
                          "meet). At 3-2√2 the two upper eigenvalues cross (the factor (r²-6r+1)² of the "
-                         "discriminant): there the eigenvector is not determined by the eigen-equation's rows and "
-                         "the engine leaves the point undecided; it is named in the check.")
+                         "discriminant): there the eigenvector is not determined by the eigen-equation's rows; the "
+                         "engine decides the point on the plane of eigenvectors of the double eigenvalue, and gives "
+                         "the kernel a datum of that plane realising abcb, which the kernel moves exactly.")
 
 
 def ab_cb(n: int) -> str:

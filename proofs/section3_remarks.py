@@ -566,17 +566,25 @@ EIGENSPACE_ROUTE = "(no datum of the eigenspace found)"     # the undecided text
 
 @for_a_run
 def census_records() -> tuple[dict, list[dict]] | None:
-    """(summary, records) of the committed census (reports/census.json), each record cut to what
-    T28.3 and T28.4 read (word, outcome, feasible and stable sets, undecided points); None without one."""
+    """(summary, records) of the committed census (reports/census.json), its records as written
+    (:func:`certify.run.census_report.brief`); None without one."""
     import json
     from pathlib import Path
     try:
         doc = json.loads((Path(__file__).resolve().parents[1] / "reports" / "census.json").read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
-    keep = ("feasible", "stable", "undecided")
-    return doc["census"], [{"word": r["word"], "outcome": r["outcome"], "stable": r["stable"],
-                            **{k: (r.get("result") or {}).get(k) or [] for k in keep}} for r in doc["words"]]
+    return doc["census"], doc["words"]
+
+
+def _undecided(record: dict) -> list[str]:
+    """A record's undecided self-similar points (their texts)."""
+    return (record.get("result") or {}).get("undecided") or []
+
+
+def _bound(max_length: str) -> int:
+    """The printed bound on the collisions, as an integer (-1 when it is not a number)."""
+    return int(max_length) if max_length.isdigit() else -1
 
 
 def _census_scope(max_length: str):
@@ -586,7 +594,7 @@ def _census_scope(max_length: str):
     if found is None:
         return None, [], [Check("the committed census reports/census.json was read", False)]
     summary, records = found
-    bound = int(max_length) if max_length.isdigit() else -1
+    bound = _bound(max_length)
     n = len(census.words(bound)) if 0 < bound <= summary["max_length"] else None
     errors = [r["word"] for r in records if r["outcome"] != "analysed"]
     return summary, records, [Check(
@@ -594,12 +602,6 @@ def _census_scope(max_length: str):
         f"({n if n is not None else 'not covered'}: the FKM tree), each analysed exactly, none in error",
         n is not None and len({r["word"] for r in records}) == n == summary["words"] and not errors,
         [f"census to {summary['max_length']}: {summary['words']} words; errors: {', '.join(errors) or 'none'}"])]
-
-
-def _ends(record: dict):
-    """The upper ends of a record's feasible sets (each interval's hi, each point), exact."""
-    return [census.end_number(p["hi"] if p["kind"] == "interval" else p["at"])
-            for s in record["feasible"] for p in s["pieces"]]
 
 
 @certificate("T28.3", printed=PRINTED_T28_3,
@@ -627,12 +629,11 @@ def threshold_of_collapse(word, P, r_exist, max_length):
                                   top is not None and top == re_, [f"feasible: {_sets_of(res)}"]), "T28.3.1", word))
     summary, records, scope = _census_scope(max_length)
     re_.refine(Fraction(1, 10 ** 12))
-    above = [f"{r['word']}: {u}" for r in records for u in r["undecided"]
+    above = [f"{r['word']}: {u}" for r in records for u in _undecided(r)
              if census_report.undecided_r(u) + Fraction(1, 10 ** 9) >= Fraction(int(re_.lo.p), int(re_.lo.q))]
-    tops = [(e, r["word"]) for r in records for e in _ends(r)]
-    highest = max((e for e, _ in tops), default=None)
-    at_top = sorted({w for e, w in tops if e == highest})
-    beyond = sorted({w for e, w in tops if re_ < e})
+    highest, at_top = census_report.highest_feasible(records)
+    beyond = sorted({r["word"] for r in records for e in census_report.feasible_ends(r)
+                     if re_ < census.end_number(e)})
     census_word = census.normal_form(expand_pattern(word))[0] if records else ""
     checks += scope + [named("T28.3.2", Check(
         f"no periodic pattern of at most {max_length} collisions has feasible self-similar data for r > r_exist: "
@@ -642,7 +643,7 @@ def threshold_of_collapse(word, P, r_exist, max_length):
         [f"largest end: {highest.describe() if highest is not None else 'none'}, reached by "
          f"{', '.join(at_top) or 'none'}", f"ends above r_exist: {', '.join(beyond) or 'none'}",
          f"undecided points at or above r_exist: {'; '.join(above) or 'none'}",
-         f"undecided points below it: {sum(len(r['undecided']) for r in records) - len(above)} in "
+         f"undecided points below it: {sum(len(_undecided(r)) for r in records) - len(above)} in "
          f"{len(summary['undecided']) if summary else 0} words (census.json)"]))]
     return conclude(checks, evidence=[f"`certify pattern {word}`: {res.verdict}"],
                     note="Self-similar collapse along a periodic pattern of at most "
@@ -678,16 +679,15 @@ def stable_patterns(stable, max_length):
     """The periodic patterns of at most ``max_length`` collisions with stable self-similar data are
     exactly the printed ones (the committed census): every asymmetric one is unstable."""
     summary, records, checks = _census_scope(max_length)
-    bound = int(max_length) if max_length.isdigit() else 0
     try:
-        allowed = _allowed(stable, bound)
+        allowed = _allowed(stable, max(_bound(max_length), 0))
     except ValueError as exc:
         return conclude(checks + [Check(f"the printed words {stable!r} were read", False, [str(exc)])])
     names = set().union(*(forms for _, forms in allowed)) if allowed else set()
     found = [r["word"] for r in records if r["stable"]]
     others = [w for w in found if w not in names]
     missing = [item for item, forms in allowed if not forms & set(found)]
-    doubtful = [f"{r['word']}: {u}" for r in records if r["word"] not in names for u in r["undecided"]
+    doubtful = [f"{r['word']}: {u}" for r in records if r["word"] not in names for u in _undecided(r)
                 if EIGENSPACE_ROUTE not in u]
     checks.append(named("T28.4.1", Check(
         f"up to {max_length} collisions the periodic patterns with stable self-similar data are {stable} (each "

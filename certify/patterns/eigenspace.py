@@ -619,7 +619,8 @@ def cell_samples(roots) -> list:
 
 
 def decide_on_cells(es: Eigenspace, wanted, sigma: int):
-    """On an eigenspace of dimension 2 (a line of data q_a + s·d): "holds" when the sample of some
+    """(status, witness).  On an eigenspace of dimension 2 (a line of data q_a + s·d): "holds" (with the
+    :class:`Witness` of the cell's sample, or None at an isolated s) when the sample of some
     open cell of the s-line (cut at every root of the requirements' parts, :meth:`Family.roots`) meets
     every requirement of ``wanted`` (certified signs at that exact datum), "fails" when none does and
     no root of c or Δ (where x may be defined at an isolated s) is a real root at r₀; None otherwise.
@@ -629,11 +630,11 @@ def decide_on_cells(es: Eigenspace, wanted, sigma: int):
     fam = es.family()
     roots = [fam.roots(None)] + [fam.roots(q.name) for q in wanted]
     if any(rs is None for rs in roots):
-        return None
+        return None, None
     for t in cell_samples([a for rs in roots for a in rs]):
         w = fam.witness(t, sigma)
         if all(w.value_sign(q.name) == q.sign for q in wanted):
-            return "holds"
+            return "holds", w
     base = fam._x_parts()[0]
     for kind, f in (zip(("c", "Δ"), base) if len(base) == 2 else ()):   # else x has a pole at each root
         if f.is_zero() or f.degrees()[1] == 0:
@@ -649,10 +650,10 @@ def decide_on_cells(es: Eigenspace, wanted, sigma: int):
                 if status is not None:
                     break
             if status == "holds" and zero:
-                return "holds"
+                return "holds", None
             if status != "fails":
-                return None
-    return "fails"
+                return None, None
+    return "fails", None
 
 
 def _power(x: K, j: int) -> K:
@@ -743,6 +744,24 @@ class Witness:
                 return _sign_ball(sq - det if "- (ad-bc)" in name else sq + det)
             return UNDECIDED
         return decide(attempt, 64, 2048)
+
+
+    def kernel_form(self) -> dict:
+        """The datum as a witness for the kernel (certify_kernel/particles.py, ``realised_at``):
+        r₀ by its minimal polynomial and isolating interval, λ₀ and q(0) as polynomials in r
+        (elements of Q(r₀)), x = α + β√Δ with α, β, Δ in Q(r₀); every number an exact rational
+        written as text.  The kernel trusts none of it: it re-runs the particles from it."""
+        F, x = self.es.F, self.x
+        text = lambda e: [str(c) for c in e.c.coeffs()]           # noqa: E731
+        if x[0] == "affine":
+            alpha, beta, delta = x[1], F.of(0), F.of(0)
+        else:
+            _kind, amd, delta, c = x
+            alpha, beta = amd / (2 * c), F.of(self.sigma) / (2 * c)
+        return {"word": self.es.word, "r": {"polynomial": [str(c) for c in F.m.coeffs()],
+                                            "interval": list(self.es.r0.decimal_ends())},
+                "lambda": text(self.es.lam0), "q": [text(e) for e in self.steps[0][1]],
+                "x": {"alpha": text(alpha), "beta": text(beta), "delta": text(delta)}}
 
 
 def polynomial_at(e, F: KField, lam0: K) -> K | None:

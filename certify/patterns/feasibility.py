@@ -298,6 +298,7 @@ class Analysis:
         self._twins: dict = {}          # id of a requirement with x -> (it, its first Condition, its x)
         self.imposed: list[Requirement] = []     # in the order imposed (the eigenspace route re-decides them)
         self._spaces: dict = {}         # r₀ -> Eigenspace or None
+        self.data: dict = {}            # (r₀, branch, σ) -> the Witness that last met every requirement there
         base = self.spec.sign_table(Condition.of("λ", lam), lo, hi)
         nb = max(len(c.branches) for c in base.cells)
         self.regions = [Region(k, f, [], [], []) for k in range(nb) for f in self.fps]
@@ -503,15 +504,29 @@ class Analysis:
         for s in samples:
             w = Witness(es, s, sigma)
             if all(w.value_sign(q.name) == q.sign for q in wanted):
+                self.data[(p.lo.key(), R.branch, sigma)] = w
                 return p, "holds", ""
         if es.dim == 2:
-            status = decide_on_cells(es, wanted, sigma)
+            status, w = decide_on_cells(es, wanted, sigma)
+            if w is not None:
+                self.data[(p.lo.key(), R.branch, sigma)] = w
             if status is not None:
                 return p, status, "" if status == "holds" else f"{req.name}: no datum of the eigenspace (dimension " \
                     "2) of the multiple eigenvalue meets the requirements (exact cells of its line of data)"
         if req.name[:2] in ("q_", "p_") and es.realises_no_velocities():
             return p, "fails", WORD_VELOCITIES.format(dim=es.dim)       # else undecided: the whole word decides
         return None
+
+    def feasible_data(self) -> list[dict]:
+        """The data found at multiple eigenvalues that meet every requirement imposed so far
+        (certified signs at the witness), in the kernel's witness form
+        (:meth:`.eigenspace.Witness.kernel_form`)."""
+        wanted = [q for q in self.imposed if q.name != "λ" and not q.name.startswith("dominance")]
+        out = []
+        for w in self.data.values():
+            if w.x is not None and all(w.value_sign(q.name) == q.sign for q in wanted) and w.kernel_form() not in out:
+                out.append(w.kernel_form())
+        return out
 
     def settle_by_word(self):
         """Move the points left undecided so far (by the requirements of existence: λ, u, x) at a

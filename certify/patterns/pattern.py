@@ -259,6 +259,7 @@ class PatternResult:
     seconds: float = 0.0
     regions: dict = field(default_factory=dict, repr=False)   # stage -> [Region] (for certificates)
     formulas: object = field(default=None, repr=False)      # () -> (matrix, discriminant, datum), or None
+    data: list = field(default_factory=list, repr=False)    # the data found at multiple eigenvalues (kernel witnesses)
 
     @cached_property
     def _printed(self) -> tuple:
@@ -482,6 +483,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
         before = _copy(an.regions)
         tick(1 + m, total, f"collision {m} of {len(groups)}")
     regions["feasible"] = _copy(an.regions)
+    data = an.feasible_data()
     stab = dominance_requirements(cand.spectrum.ring_cp)
     if cand.abcd is not None:
         stab = stab + stability_conditions(cand.abcd_ring or cand.abcd)
@@ -497,7 +499,7 @@ def analyse(word: str, lo=0, hi=1, formulas: bool = True, diagnosis: bool = True
         return M, show_factored(discriminant(cand.spectrum)), datum(cand)
     res = PatternResult(word, normal, system_name, why, (lo, hi), lambda: show_collected(cand.spectrum.ring_cp, "λ"),
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
-                        undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None)
+                        undecided, conditions, diagnosis, "", 0.0, regions, printed if formulas else None, data)
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res

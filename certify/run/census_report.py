@@ -433,7 +433,9 @@ def _threshold_line(recs: list, by: dict) -> str:
     highest, reached = highest_feasible(recs)
     if highest is None:
         return "- the largest r with feasible self-similar data: none (no word has feasible self-similar data)"
-    return (f"- the largest r with feasible self-similar data: {_end_text(highest)}, reached by {_names(reached, by)} "
+    end = next(e for e in feasible_ends(by[reached[0]]) if census.end_number(e) == highest)
+    return (f"- the largest r with feasible self-similar data: {census.show_end(end)}, "
+            f"reached by {_names(reached, by)} "
             "(the largest end of every feasible set, compared exactly; certificate T28.3 checks it on the committed "
             "census)")
 
@@ -449,11 +451,6 @@ def _undecided_line(s: dict, by: dict) -> str:
     more = (f" (and {len(at_top) - 1} more points at that r, in {len({w for w, _p in at_top})} words in all)"
             if len(at_top) > 1 else "")
     return f"- the highest undecided self-similar point: {_names([at_top[0][0]], by)}, {at_top[0][1]}{more}"
-
-
-def _end_text(number) -> str:
-    """An exact end (an :class:`~certify.algebra.algebraic.Algebraic`) as ≈ and 10 digits."""
-    return "≈" + number.digits(10)
 
 
 def notable_lines(recs: list) -> list[str]:

@@ -281,10 +281,23 @@ def main_results_line(results) -> str:
                  f"of the reduction ({_link(ISLAND_CLAIM)}) at every rational r in ]3−2√2, 1[, wherever its rotation "
                  "number is irrational; at the resonances, where it is rational (r = 2−√3: 1/3), the island's orbits "
                  "are periodic")
+    settled = [f"{what} ({_link(cid)})" for cid, what in OPEN_PROBLEMS
+               if any(c.id == cid and o.status == PASS for c, o in results)]
+    if settled:
+        text += ".  Questions the paper leaves open, settled here: " + "; ".join(settled)
     return text + ".  Where the paper errs, and what is certified instead: [Errata](#errata)."
 
 
 ISLAND_CLAIM = "N7.1"       # the paper's suggestion (l. 95), proved for the island around [ac]b
+# the paper's open questions (l. 1084-1086, 1214-1217) that a certificate settles, as the first screen names them
+OPEN_PROBLEMS = (
+    ("L5", "the stability windows of (ab)^n(cb)^n are disjoint and accumulate on 7−4√3 from above, for every n ≥ 2"),
+    ("L6", "their upper ends are where q₂(0) = 0 on the dominant branch (CDKK's conjecture), for every n ≥ 2"),
+    ("T28.3", "the largest r with self-similar collapse along a periodic pattern of at most 20 collisions is "
+              "abcb's r_exist ≈ 0.19166"),
+    ("T28.4", "up to 20 collisions no asymmetric periodic pattern is stable"),
+    ("N2.7", "the apparent chaos is proved at sampled r by horseshoes of the b-to-b map (on sets of measure zero)"),
+)
 
 
 def _contents(results) -> str:

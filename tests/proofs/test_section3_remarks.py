@@ -88,7 +88,7 @@ def test_t29_fails_on_an_undecided_point_above_r_exist(monkeypatch):
     """Not certified while a point above r_exist is undecided: the census as it was before this
     engine (87 words with such points) would FAIL."""
     def add(records):
-        _record(records, "abacbacbacbacbacb")["undecided"] = ["upper x₊ at ≈0.2679491924: u = q_2(0)"]
+        _record(records, "abacbacbacbacbacb")["result"]["undecided"] = ["upper x₊ at ≈0.2679491924: u = q_2(0)"]
     monkeypatch.setattr(T, "census_records", lambda: _census_with(add))
     o = T.threshold_of_collapse(**T.PRINTED_T28_3)
     assert o.status == "FAIL"
@@ -101,7 +101,7 @@ def test_t29_fails_on_a_feasible_end_above_r_exist(monkeypatch):
 
     def move(records):
         rec = next(r for r in records if r["feasible"] and r["word"] != "abcb")
-        rec["feasible"][0]["pieces"][0]["hi"] = end
+        rec["result"]["feasible"][0]["pieces"][0]["hi"] = end
     monkeypatch.setattr(T, "census_records", lambda: _census_with(move))
     assert T.threshold_of_collapse(**T.PRINTED_T28_3).status == "FAIL"
 
@@ -111,7 +111,7 @@ def test_t30_fails_on_an_asymmetric_stable_word_or_a_doubtful_point(monkeypatch)
         _record(records, "ababcb")["stable"] = True
 
     def doubtful(records):
-        _record(records, "abacbcbabcabcb")["undecided"] = ["upper x₊ at ≈0.1: p_3(t_1)"]
+        _record(records, "abacbcbabcabcb")["result"]["undecided"] = ["upper x₊ at ≈0.1: p_3(t_1)"]
 
     def abcb(records):                     # (ab)^1(cb)^1 is not of the family (n ≥ 2): abcb stable is a failure
         _record(records, "abcb")["stable"] = True

@@ -324,3 +324,18 @@ def test_no_committed_json_holds_a_timing():
         found = set(keys(json.loads((root / name).read_text(encoding="utf-8")))) & set(files.TIMINGS)
         assert not found, (name, found)
     assert files.timeless({"a": [{"seconds": 1, "b": 2}], "seconds": 3}) == {"a": [{"b": 2}]}
+
+
+def test_the_first_screen_names_the_open_questions_settled_and_only_those():
+    """The open questions of the paper a PASS certificate settles are named in the first line, each
+    linked; one that fails (or is absent) is not named."""
+    from tests.shared import registry
+    theorem = conclude([Check("self-similar data iff r < 5-2√6", True)])
+    settled = [(registry()[cid], conclude([Check("settled", True)])) for cid, _ in report.OPEN_PROBLEMS]
+    line = report.main_results_line([(registry()["T25.1"], theorem)] + settled)
+    assert "Questions the paper leaves open, settled here" in line
+    for cid, what in report.OPEN_PROBLEMS:
+        assert what in line and f"(#cert-{cid.lower().replace('.', '-')})" in line, cid
+    failed = [(registry()["L5"], conclude([Check("settled", False)]))]
+    line = report.main_results_line([(registry()["T25.1"], theorem)] + failed)
+    assert "leaves open" not in line
