@@ -17,7 +17,7 @@ import json
 import multiprocessing
 import os
 
-from . import particles, pattern, reduction, signs, substitution  # noqa: F401  (they register their functions, predicates, quantifiers)
+from . import family, particles, pattern, reduction, signs, substitution  # noqa: F401  (they register their functions, predicates, quantifiers)
 from .evaluate import Context, NotVerified, truth
 from .language import Syntax, parse
 from .statements import Paper, read

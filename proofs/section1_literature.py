@@ -534,11 +534,26 @@ def large_n_q2(limit: dict) -> list[Check]:
     """L6 for every n ≥ 8 from family_limit (parts 2, 7; part 9 for the window's upper end)."""
     facts, bad = limit["facts"], limit["failures"]
     dom = facts.get("dominant")
-    out = [Check(f"for every n ≥ {PROVED_FROM}: on ]0, {dom['r'][1] if dom else '?'}] the eigenvalue λ ≈ 1/9 is real, "
+    upto = dom['r'][1] if dom else '?'
+    out = [named("L6.6.1", Check(f"for every n ≥ {PROVED_FROM}: on ]0, {upto}] the eigenvalue λ ≈ 1/9 is real, "
                  "simple and strictly dominant (part 7), and q_2(0) has the sign of sin(nθ) there (part 2): it vanishes "
                  "at r_n (nθ = π), is > 0 on ]r*, r_n[ and < 0 just above r_n", not bad and dom is not None,
                  _limit_evidence(limit)[:1] + ([f"λ ∈ [{_fq(dom['lambda'][0]):.9f}, {_fq(dom['lambda'][1]):.9f}], "
-                                                f"|μ|, |ν| ≤ {_fq(dom['others']):.3g}"] if dom else ["no part 7"]))]
+                                                f"|μ|, |ν| ≤ {_fq(dom['others']):.3g}"] if dom else ["no part 7"])))]
+    out.append(named("L6.6.2", Check(f"for every n ≥ {PROVED_FROM} nothing in ]r_n, 1/4] is stable: q_2(0) < 0 where "
+                                     "π < nθ < 2π, = 0 at 2π (part 7), a b of (ab)^n separates where nθ > 2π (part 10)",
+                                     not bad and dom is not None and "arcs" in facts,
+                                     [f"part 10 up to r = {facts['arcs']['r'][1]}" if "arcs" in facts else "no part 10"])))
+    third = facts.get("third_a")
+    out.append(named("L6.6.3", Check("for every n ≥ 3 nothing in [0.1716, 1[ is feasible: ℓ₂ = tℓ₁ + r² with t < 0 "
+                                     "(part 11)", not bad and third is not None,
+                                     [f"t ≤ {_fq(third['t_max']):.3g} on [{third['r'][0]}, 1]" if third else
+                                      "no part 11"])))
+    out.append(named("L6.6.4", Check(f"for every n ≥ {PROVED_FROM} every velocity condition holds on ]r*, r_n[ "
+                                     "(part 8); just above r_n the last b of (ab)^n separates (part 2's sign of q_2)",
+                                     not bad and "velocity" in facts,
+                                     [f"margins ≥ {min(_fq(m) for m in facts['velocity']['margins'].values()):.3g}"
+                                      if "velocity" in facts else "no part 8"])))
     if "positions" in facts:
         out.append(Check(f"for every n ≥ {PROVED_FROM} the stable set reaches r_n from below (every r between the "
                          "lower end's strip and r_n stable, part 9): the window's upper end hi_n is r_n", not bad,
