@@ -87,6 +87,12 @@ def cmd_pattern(args) -> int:
     from certify.patterns import analyse, check_range, family_windows, read
     from certify.patterns.family import family_n
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
+    if "d" in args.word:                  # five particles (issue 39): the κ route, certify.patterns.five
+        from certify.patterns.five import analyse_five, read_five
+        read_five(args.word)                                     # validate first: one line, exit 2
+        result = analyse_five(args.word, lo, hi)
+        print(result.json_text() if args.json else result.markdown())
+        return 0
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     n = family_n(normal) if system == "four" else None
     if n is not None and n > family_windows.EXACT_N0 and not args.r_range:
@@ -144,6 +150,12 @@ def cmd_orbit(args) -> int:
     from certify.patterns.reduction_orbits import analyse as analyse_orbit
     from certify.run import progress
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
+    if "d" in args.word:                  # five particles (issue 39): the κ route, certify.patterns.five
+        from certify.patterns.five import analyse_five, read_five
+        read_five(args.word)                                     # validate first: one line, exit 2
+        result = analyse_five(args.word, lo, hi)
+        print(result.json_text() if args.json else result.markdown())
+        return 0
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     if args.trap is not None:
         if args.r_range:

@@ -1,0 +1,373 @@
+"""``certify pattern WORD`` for five particles (issue 39): the self-similar datum through κ = λμ.
+
+For N particles the self-similar datum of a word w has q(0) an eigenvector of M_w for λ and p(0) in
+the plane of q(0) and a second eigenvector e_μ, on the face Y of the last letter (docs/particles.md).
+For five particles μ is a root of a cubic over Q(r, λ); the route here avoids it:
+
+* the plane Π = Span(q(0), e_μ) is the eigenvector of the second compound Λ²M_w for κ = λμ, a
+  root of the sextic cp(Λ²M_w) (the spectrum's variable, written λ in the engine's ring);
+* p(0) is Π contracted with the face's coordinate: with Π = p ∧ q and p_Y = 0,
+  Π_{lY} = q_Y p_l (l < Y) and Π_{Yl} = -q_Y p_l (l > Y): p(0) ∝ p̂ = (Π_{lY}, …, 0, …, -Π_{Yl}),
+  normalised by one of its coordinates, rational in (r, κ);
+* λ and μ are the roots of x² - t x + κ, t = λ + μ the trace of M_w on Π (Cayley–Hamilton on Π:
+  M²p̂ - t M p̂ + κ p̂ = 0, so t = (M²p̂ + κp̂)_j / (M p̂)_j); the engine's position fixed point x
+  (:mod:`.feasibility`, x = (A ± √Δ)/(2c)) is λ, with a - d = T_num, c = T_den, b = -κ T_den,
+  d = 0: c x² = (a - d)x + b is x² = t x - κ, both roots analysed (x₊ and x₋, the two orderings);
+* q(0) ∝ M p(0) - μ p(0) (p(0) = α e_λ + β e_μ, so M p - μ p = α(λ - μ) e_λ), affine in x over
+  Q(r, κ), normalised to q_{i₁}(0) = -1 for the first letter's gap (exact division by the
+  conjugate: 1/(A + xB) = (A + (t - x)B)/(A² + tAB + κB²)).
+
+Every quantity of the run is then G₀ + x G₁ with G₀, G₁ ∈ Q(r, κ), reduced modulo x² = t x - κ
+and modulo the sextic: the engine's requirements, certified by :class:`.feasibility.Analysis` over
+r-cells of the sextic's spectrum like the four particles' (critical values from resultants and
+discriminants, one exact sample per cell, signs by balls, exact zero tests).
+
+The run is kept projectively: p̃(t_k) = p̃_i(t_{k-1}) q(t_{k-1}) - q_i(t_{k-1}) p̃(t_{k-1}) is
+(-q_i(t_{k-1})) > 0 times the true p(t_{k-1}) + τ_k q(t_{k-1}) wherever the approach condition
+q_i(t_{k-1}) < 0 holds (imposed before the positions at t_k), so its signs are those of the gaps.
+
+Requirements (each strict): *exists*: λ = x > 0, μ = t - x > 0, p_j(0) > 0 for the gaps j ≠ Y;
+*feasible*: at each collision k the pair approaches, q_{i_k}(t_{k-1}) < 0, and every gap but the
+one colliding is open at t_k, p̃_j(t_k) > 0 (the gap that collided at k - 1 is open at t_k by
+itself: it separates at t_{k-1}; the gaps are affine in t between collisions, open at both ends,
+so open between: no other pair touches first, no triple collision);  the positions then return
+as μ p(0) (p(t_n) lies on Π and on the face Y, a line through p(0)).  *stable*: λ > μ > |ν| for
+the two other eigenvalues ν (velocities: λ dominant; the plane, the fixed point of the reduction on
+Gr(2, 4), attracts iff κ = λμ strictly dominates the five other products of two eigenvalues,
+which with λ > μ > 0 is the same: |λμ| > |λν| and |λμ| > |μν| give μ > |ν| and λ > |ν|, and
+conversely): λ - μ = 2x - t > 0 and, with cp(z) = (z² - tz + κ)(z² + sz + p) (s = c₁ + t,
+p = c₂ + ts - κ), Jury's criterion for z² + sz + p in the open disc of radius μ > 0:
+μ² - p > 0, μ² + sμ + p > 0, μ² - sμ + p > 0, where μ² = t² - κ - t x.
+"""
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from functools import cache
+
+import flint
+
+from certify.algebra.branches import Spectrum
+from certify.algebra.poly import (
+    FIELD,
+    LR_LAMBDA,
+    LRCTX,
+    RING,
+    Frac,
+    flint_poly_to_frac,
+    frac_to_field,
+    lr_to_ring,
+)
+from certify.dynamics.model import alphabet, charpoly_coefficients, collide_gaps
+from certify.dynamics.systems import of_particles, system_matrix_flint
+
+from .feasibility import Requirement
+
+PAIRS = list(itertools.combinations(range(4), 2))       # the coordinates of Λ²R⁴: e_k ∧ e_l, k < l
+
+
+def second_compound(M) -> list:
+    """Λ²M on the basis e_k ∧ e_l (k < l): the 2×2 minors of M (python-flint polynomials in r)."""
+    return [[M[i][k] * M[j][m] - M[i][m] * M[j][k] for (k, m) in PAIRS] for (i, j) in PAIRS]
+
+
+def sextic_ring(W):
+    """det(κI - Λ²M_w) as an element of the engine's ring, κ written λ (monic, degree 6)."""
+    coeffs = charpoly_coefficients(W)
+    n, zeros = len(coeffs) - 1, (0,) * (len(RING.gens) - 2)
+    terms = {(n - k, j) + zeros: RING.domain(cj) for k, c in enumerate(coeffs)
+             for j, cj in enumerate(flint.fmpq_poly(c).coeffs()) if cj}
+    return RING.from_dict(terms)
+
+
+class Reducer:
+    """Reduction of :class:`Frac` in (κ, r) modulo the sextic (monic in κ): numerator and
+    denominator separately, the same values on every branch κ(r)."""
+
+    def __init__(self, ring_cp):
+        from certify.algebra.poly import ring_to_lrq
+        self.C = ring_to_lrq(ring_cp)
+
+    def poly(self, p):
+        """An fmpz_mpoly in (κ, r) reduced modulo cp, as (fmpz_mpoly, positive integer scale)."""
+        q = flint.fmpq_mpoly_ctx.get(("lam", "r"), "lex").from_dict(
+            {m: flint.fmpq(c) for m, c in zip(p.monoms(), p.coeffs())})
+        rem = divmod(q, self.C)[1]
+        den = 1
+        for c in rem.coeffs():
+            den = den * int(c.q) // flint.fmpz(den).gcd(int(c.q)) if c.q != 1 else den
+        terms = {m: int(c * den) for m, c in zip(rem.monoms(), rem.coeffs())}
+        return LRCTX.from_dict(terms), den
+
+    def __call__(self, F: Frac) -> Frac:
+        n, a = self.poly(F.num)
+        d, b = self.poly(F.den)
+        if d.is_zero():
+            raise ZeroDivisionError("a denominator vanishes modulo the sextic")
+        return Frac(n * b, d * a)
+
+
+class Ext:
+    """Polynomials in (κ, r) (:class:`Frac` with a constant denominator) affine in y, with
+    y² = T y - κ D² (y = D λ, T = D t: :func:`five_candidate`), reduced modulo the sextic."""
+
+    def __init__(self, T: Frac, D: Frac, red: Reducer):
+        self.T, self.D2k, self.red = T, red(LR_LAMBDA * D * D), red
+
+    def mul(self, u: tuple, v: tuple) -> tuple:
+        """(A + yB)(C + yE) = AC - κD²BE + y(AE + BC + T BE)."""
+        be = self.red(u[1] * v[1])
+        return (self.red(u[0] * v[0] - self.D2k * be), self.red(u[0] * v[1] + u[1] * v[0] + self.T * be))
+
+
+@dataclass
+class FiveCandidate:
+    """The κ-route candidate of a five-particle word: what :class:`.feasibility.Analysis` reads
+    (``spectrum`` of the sextic, ``abcd`` with c y² = (a - d) y + b the relation of y = Dλ,
+    ``Mq``, ``word``) and the data, all polynomials in (κ, r) (affine in y) reduced modulo the sextic."""
+
+    word: str
+    Mq: list
+    spectrum: Spectrum
+    abcd: tuple
+    abcd_ring: tuple
+    T: Frac                  # D t (t = λ + μ)
+    D: Frac                  # y = D λ
+    p0: list                 # p̂ ∝ p(0) (an unknown sign, the same for every gap), p̂_Y = 0
+    q0: list                 # (A, B): q̂ = A + yB, a positive multiple of q(0) where q̄_{i₁} ≠ 0
+    cp4: list                # the quartic's coefficients c₁..c₄ (Frac in r)
+    ext: Ext
+    face: int                # Y, the gap of the last letter
+    steps: list              # [(letter, p̃(t_k), q(t_{k-1}), q(t_k))]
+    q0_other: tuple = ()
+
+
+def eigen_plane(W) -> list:
+    """A κ-eigenvector Π of Λ²M (Frac in (κ, r)): the last coordinate 1, the others from the first
+    five rows of (Λ²M - κI)Π = 0 by elimination over Q(κ, r)."""
+    A = [[flint_poly_to_frac(W[i][j]) - (LR_LAMBDA if i == j else Frac.of(0)) for j in range(6)] for i in range(6)]
+    rows = [A[i][:5] + [-A[i][5]] for i in range(5)]
+    for c in range(5):
+        piv = next(i for i in range(c, 5) if not rows[i][c].is_zero())
+        rows[c], rows[piv] = rows[piv], rows[c]
+        inv = rows[c][c].inverse()
+        rows[c] = [e * inv for e in rows[c]]
+        for i in range(5):
+            if i != c and not rows[i][c].is_zero():
+                f = rows[i][c]
+                rows[i] = [a - f * b for a, b in zip(rows[i], rows[c])]
+    return [rows[i][5] for i in range(5)] + [Frac.of(1)]
+
+
+def matvec(M, v, red) -> list:
+    return [red(sum((flint_poly_to_frac(M[i][j]) * v[j] for j in range(len(v))), Frac.of(0))) for i in range(len(M))]
+
+
+def _polynomial(F: Frac) -> bool:
+    return F.den.total_degree() <= 0
+
+
+@cache
+def five_candidate(word: str) -> FiveCandidate:
+    """The κ-route candidate of a word of five particles (see the module's docstring)."""
+    letters = alphabet(5)
+    M = system_matrix_flint(of_particles(5), word)
+    W = second_compound(M)
+    ring_cp = sextic_ring(W)
+    spectrum = Spectrum(None, ring_cp)
+    red = Reducer(ring_cp)
+    Pi = eigen_plane(W)
+    common = Frac(Pi[0].den)
+    for e in Pi[1:]:
+        common = Frac(common.num * e.den / common.num.gcd(e.den)) if not e.den.is_one() else common
+    Pi = [red(e * common) for e in Pi]
+    if not all(_polynomial(e) for e in Pi):
+        raise ArithmeticError("the eigenvector of Λ²M did not clear its denominators")
+    Y = letters.index(word[-1])
+    coord = dict(zip(PAIRS, Pi))
+    p_hat = [coord[(l, Y)] if l < Y else (-coord[(Y, l)] if l > Y else Frac.of(0)) for l in range(4)]
+    Mp = matvec(M, p_hat, red)
+    MMp = matvec(M, Mp, red)
+    j = next(j for j in range(4) if not Mp[j].is_zero())
+    T, D = red(MMp[j] + LR_LAMBDA * p_hat[j]), Mp[j]          # t = T/D
+    ext = Ext(T, D, red)
+    # D(M p - μ p) = D M p - (T - y) p, y = Dλ; q̂ = -q̄_{i₁} q̄ is a positive multiple of ±q̄
+    qbar = [(red(D * Mp[k] - T * p_hat[k]), p_hat[k]) for k in range(4)]
+    i1 = letters.index(word[0])
+    q0 = qbar
+    # the engine's position fixed point: c y² = (a - d) y + b with c = 1, a = T, b = -κD², d = 0
+    a, b, c, d = (T, -ext.D2k, Frac.of(1), Frac.of(0))
+    abcd_ring = tuple(_ring(e) for e in (a, b, c, d))
+    abcd = tuple(frac_to_field(e) for e in (a, b, c, d))
+    cp4 = [flint_poly_to_frac(flint.fmpq_poly(cf)) for cf in charpoly_coefficients(M)[1:]]
+    steps = run(word, Pi, q0, red)
+    return FiveCandidate(word, M, spectrum, abcd, abcd_ring, T, D, p_hat, q0, cp4, ext, Y, steps)
+
+
+def _ring(F: Frac):
+    """A Frac with a constant denominator as an element of the engine's ring."""
+    if not _polynomial(F):
+        raise ValueError("not a polynomial")
+    return lr_to_ring(F.num, int(F.den.coeffs()[0]))
+
+
+_R = Frac(LRCTX.gen(1))
+
+
+def contract(P: list, i: int) -> list:
+    """ι_i P: the vector (P_{li} for l < i, 0, -P_{il} for l > i) of a bivector P = p ∧ q with p_i = 0,
+    which is q_i·p (P_{li} = p_l q_i - p_i q_l, P_{il} = p_i q_l - p_l q_i)."""
+    coord = dict(zip(PAIRS, P))
+    return [coord[(l, i)] if l < i else (-coord[(i, l)] if l > i else Frac.of(0)) for l in range(4)]
+
+
+def wedge_collide(letter: str, P: list, red) -> list:
+    """Λ²K_i P: the bivector of the plane after the collision (K_i fixes the face of pair i
+    pointwise, so p ∧ q ↦ p ∧ K_i q; certificate B1)."""
+    zero, one = Frac.of(0), Frac.of(1)
+    cols = [collide_gaps(letter, tuple(one if m == j else zero for m in range(4)), _R) for j in range(4)]
+    K = [[cols[j][m] for j in range(4)] for m in range(4)]
+    out = []
+    for (i, j) in PAIRS:
+        total = zero
+        for (k, m), e in zip(PAIRS, P):
+            c = K[i][k] * K[j][m] - K[i][m] * K[j][k]
+            if not c.is_zero():
+                total = total + c * e
+        out.append(red(total))
+    return out
+
+
+def run(word: str, Pi: list, q0: list, red) -> list:
+    """The run through the plane: P_k = Λ²K_{i_k} P_{k-1} (free flight keeps p ∧ q), p̂_k = ι_{i_k} P_k =
+    q_{i_k}(t_k⁺)·c·p(t_k) (c the scale of Π against p(0) ∧ q(0)), q̄(t_k) = K_{i_k} q̄(t_{k-1}) (q̄ a
+    multiple of q(0), affine in y); [(letter, p̂_k, q̄(t_{k-1}), q̄(t_k))]."""
+    letters = alphabet(5)
+    P, q, out = list(Pi), list(q0), []
+    for letter in word:
+        i = letters.index(letter)
+        P = wedge_collide(letter, P, red)
+        before = q
+        q = list(zip(collide_gaps(letter, tuple(e[0] for e in q), _R), collide_gaps(letter, tuple(e[1] for e in q), _R)))
+        q = [(red(a), red(b)) for a, b in q]
+        out.append((letter, contract(P, i), before, q))
+    return out
+
+
+def _req(name: str, u: tuple, sign: int) -> Requirement:
+    return Requirement(name, (frac_to_field(u[0]), frac_to_field(u[1])), sign)
+
+
+def requirements(cand: FiveCandidate) -> dict:
+    """The requirements of each stage (see the module's docstring), in the order imposed:
+    {"exists": [...], "feasible": [[...] per collision], "stable": [...]}.  With y = Dλ,
+    T = Dt: λ > 0 is D y > 0, μ > 0 is D(T - y) > 0, λ - μ > 0 is D(2y - T) > 0, and D²(μ² ∓ …)
+    are affine in y (D²μ² = T² - κD² - T y)."""
+    Y, T, D, red, ext = cand.face, cand.T, cand.D, cand.ext.red, cand.ext
+    zero = Frac.of(0)
+    j0 = next(j for j in range(4) if j != Y and not cand.p0[j].is_zero())
+    exists = [_req("λ", (zero, D), 1), _req("μ", (red(D * T), -D), 1)]
+    exists += [_req(f"p_{j + 1}(0)", (red(cand.p0[j] * cand.p0[j0]), zero), 1) for j in range(4) if j not in (Y, j0)]
+    feasible = []
+    letters = alphabet(5)
+    i1 = letters.index(cand.word[0])
+    sign_q = cand.q0[i1]                  # the true q(0) is -sign(q̄_{i₁}(0)) q̄
+    previous = Y
+    for k, (letter, p, before, _after) in enumerate(cand.steps, 1):
+        i = letters.index(letter)
+        name = f"q_{i + 1}(t_{k - 1})·q̄_{i1 + 1}(0)" if k > 1 else f"q̄_{i1 + 1}(0)²"
+        group = [_req(name, ext.mul(before[i], sign_q), 1)]
+        # with the approach at k, p_m(t_k) has the sign of p̂_k,m · p̂_0,j₀
+        group += [_req(f"p_{m + 1}(t_{k})", (red(p[m] * cand.p0[j0]), zero), 1) for m in range(4)
+                  if m not in (i, previous)]
+        feasible.append(group)
+        previous = i
+    c1, c2 = cand.cp4[0], cand.cp4[1]
+    Ds = red(c1 * D + T)                                     # D s
+    D2p = red(c2 * D * D + T * Ds - LR_LAMBDA * D * D)       # D² p
+    D2mu2 = (red(T * T - LR_LAMBDA * D * D), -T)             # D² μ² = T² - κD² - T y
+    Dmu = (T, Frac.of(-1))                                   # D μ = T - y
+    sDmu = (red(Ds * T), -Ds)                                # D s · D μ
+    stable = [_req("λ - μ", (red(-D * T), red(2 * D * D) if False else red(Frac.of(2) * D)), 1),
+              _req("μ² - p", (D2mu2[0] - D2p, D2mu2[1]), 1),
+              _req("μ² + sμ + p", (D2mu2[0] + sDmu[0] + D2p, D2mu2[1] + sDmu[1]), 1),
+              _req("μ² - sμ + p", (D2mu2[0] - sDmu[0] + D2p, D2mu2[1] - sDmu[1]), 1)]
+    del Dmu
+    return {"exists": exists, "feasible": feasible, "stable": stable}
+
+
+def normal_form(word: str) -> tuple[str, str]:
+    """The least rotation of the word or of its mirror image (a <-> d, b <-> c: particles numbered
+    from the right), and why it is the same orbit."""
+    letters = alphabet(5)
+    mirror = word.translate(str.maketrans(letters, letters[::-1]))
+    best = min((w[k:] + w[:k], w is mirror) for w in (word, mirror) for k in range(len(word)))
+    why = "the least rotation" + (" of the mirror image (a<->d, b<->c)" if best[1] else "")
+    return best[0], why
+
+
+def read_five(text: str) -> tuple[str, str]:
+    """(normal form, explanation) of a five-particle word over a, b, c, d; UsageError (one line)
+    for another letter, a pair twice in a row (cyclically), a pair never used, or a proper power."""
+    from certify.dynamics.model import check_word
+    from certify.errors import UsageError
+    word = check_word("".join(str(text).split()), 5)
+    if set(word) != set(alphabet(5)):
+        raise UsageError(f"invalid pattern word {text!r}: a five-particle word uses every pair a, b, c, d")
+    n = len(word)
+    root = next((d for d in range(1, n) if n % d == 0 and word == word[:d] * (n // d)), None)
+    if root is not None:
+        raise UsageError(f"invalid pattern word {text!r}: a proper power of {word[:root]!r}")
+    return normal_form(word)
+
+
+def analyse_five(text: str, lo=0, hi=1, progress=None):
+    """The exact analysis of a five-particle word over ]lo, hi[ (certified like
+    :func:`.pattern.analyse`: the κ-route candidate, the requirements of :func:`requirements`
+    imposed by :class:`.feasibility.Analysis`), as a :class:`.pattern.PatternResult`."""
+    import time
+
+    from certify.algebra.branches import BRANCH_NAMES
+    from certify.algebra.poly import show_collected, show_factored
+
+    from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, verdict
+    start = time.perf_counter()
+    lo, hi = check_range(lo, hi)
+    normal, why = read_five(text)
+    cand = five_candidate(normal)
+    reqs = requirements(cand)
+    tick = progress or (lambda k, n, label="": None)
+    total = len(reqs["feasible"]) + 2
+    from .feasibility import Analysis
+    an = Analysis(cand, lo, hi)
+    for q in reqs["exists"]:
+        an.impose(q)
+    regions = {"exists": _copy(an.regions)}
+    tick(1, total, "exists")
+    for m, group in enumerate(reqs["feasible"], 1):
+        for q in sorted(group, key=lambda q: q.has_x):
+            an.impose(q)
+        tick(1 + m, total, f"collision {m} of {len(reqs['feasible'])}")
+    regions["feasible"] = _copy(an.regions)
+    for q in reqs["stable"]:
+        an.impose(q)
+    regions["stable"] = _copy(an.regions)
+    tick(total, total, "stable")
+    conditions = {"exists": [_cond(q) for q in reqs["exists"]] + ["λ real"],
+                  "feasible": [_cond(q) for g in reqs["feasible"] for q in g],
+                  "stable": [_cond(q) for q in reqs["stable"]]}
+    undecided = sorted({f"{BRANCH_NAMES[R.branch] if R.branch < len(BRANCH_NAMES) else f'κ{R.branch}'} "
+                        f"{R.fixed_point} at {_short(rc)}: {why_}" for R in an.regions for rc, why_ in R.undecided})
+
+    def printed():
+        M = [[show_factored(e) for e in row] for row in cand.Mq]
+        datum = {"κ": "λμ, a root of cp(Λ²M) (the branch)", "λ": "x = (T ± √(T² - 4κD²))/(2D) (x₊, x₋: the two "
+                 "orderings of the pair)", "p(0)": "ι_Y Π, Π the κ-eigenvector of Λ²M, Y the last letter's gap",
+                 "q(0)": "∝ M p(0) - μ p(0), q of the first letter's gap < 0"}
+        return M, show_factored(cand.spectrum.disc), datum
+    res = PatternResult(text, normal, "five", why, (lo, hi), lambda: show_collected(cand.spectrum.ring_cp, "κ"),
+                        _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
+                        undecided, conditions, None, "", 0.0, regions, printed)
+    res.verdict = verdict(res)
+    res.seconds = time.perf_counter() - start
+    return res
