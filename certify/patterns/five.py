@@ -13,31 +13,36 @@ For five particles μ is a root of a cubic over Q(r, λ); the route here avoids 
   M²p̂ - t M p̂ + κ p̂ = 0, so t = (M²p̂ + κp̂)_j / (M p̂)_j); the engine's position fixed point x
   (:mod:`.feasibility`, x = (A ± √Δ)/(2c)) is λ, with a - d = T_num, c = T_den, b = -κ T_den,
   d = 0: c x² = (a - d)x + b is x² = t x - κ, both roots analysed (x₊ and x₋, the two orderings);
-* q(0) ∝ M p(0) - μ p(0) (p(0) = α e_λ + β e_μ, so M p - μ p = α(λ - μ) e_λ), affine in x over
-  Q(r, κ), normalised to q_{i₁}(0) = -1 for the first letter's gap (exact division by the
-  conjugate: 1/(A + xB) = (A + (t - x)B)/(A² + tAB + κB²)).
+* q(0) ∝ M p(0) - μ p(0) (p(0) = α e_λ + β e_μ, so M p - μ p = α(λ - μ) e_λ); with y = Dλ and
+  T = Dt: q̄ = D M p̂ - (T - y) p̂, affine in y over Q[κ, r], and y² = T y - κD²; the true q(0) is
+  -sign(q̄_{i₁}(0)) q̄ for the first letter's gap i₁ (the pair approaches).
 
-Every quantity of the run is then G₀ + x G₁ with G₀, G₁ ∈ Q(r, κ), reduced modulo x² = t x - κ
-and modulo the sextic: the engine's requirements, certified by :class:`.feasibility.Analysis` over
-r-cells of the sextic's spectrum like the four particles' (critical values from resultants and
-discriminants, one exact sample per cell, signs by balls, exact zero tests).
+Every quantity is a polynomial in (κ, r), or affine in y, reduced modulo y² = T y - κD² and modulo
+the sextic: the engine's requirements G₀ + y G₁ (its position fixed point y = (a - d ± √Δ)/(2c) with
+c = 1, a - d = T, b = -κD²), certified by :class:`.feasibility.Analysis` over r-cells of the sextic's
+spectrum like the four particles' (critical values from resultants and discriminants, one exact
+sample per cell, signs by balls, exact zero tests).  x₊ and x₋ are the two orderings of the pair.
 
-The run is kept projectively: p̃(t_k) = p̃_i(t_{k-1}) q(t_{k-1}) - q_i(t_{k-1}) p̃(t_{k-1}) is
-(-q_i(t_{k-1})) > 0 times the true p(t_{k-1}) + τ_k q(t_{k-1}) wherever the approach condition
-q_i(t_{k-1}) < 0 holds (imposed before the positions at t_k), so its signs are those of the gaps.
+**The run through the plane** (certificate B1: each K_i fixes its face pointwise, free flight keeps
+p ∧ q): P_k = Λ²K_{i_k} P_{k-1}, P_0 = Π = c p(0) ∧ q(0), and as p_{i_k}(t_k) = 0 the contraction
+p̂_k = ι_{i_k} P_k is c q_{i_k}(t_k⁺) p(t_k) with q_{i_k}(t_k⁺) = -r q_{i_k}(t_{k-1}) > 0 where the
+pair approaches: p_m(t_k) has the sign of p̂_{k,m} p̂_{0,j₀} (p̂_0 = c q_Y(0) p(0), q_Y(0) > 0 as the
+face Y separates after the period's last collision).  So the positions are polynomials in (κ, r) of
+degree growing by 2 a collision, and only the approach conditions q̄_{i_k}(t_{k-1}) q̄_{i₁}(0) > 0 hold y.
 
-Requirements (each strict): *exists*: λ = x > 0, μ = t - x > 0, p_j(0) > 0 for the gaps j ≠ Y;
-*feasible*: at each collision k the pair approaches, q_{i_k}(t_{k-1}) < 0, and every gap but the
-one colliding is open at t_k, p̃_j(t_k) > 0 (the gap that collided at k - 1 is open at t_k by
-itself: it separates at t_{k-1}; the gaps are affine in t between collisions, open at both ends,
-so open between: no other pair touches first, no triple collision);  the positions then return
-as μ p(0) (p(t_n) lies on Π and on the face Y, a line through p(0)).  *stable*: λ > μ > |ν| for
-the two other eigenvalues ν (velocities: λ dominant; the plane, the fixed point of the reduction on
-Gr(2, 4), attracts iff κ = λμ strictly dominates the five other products of two eigenvalues,
-which with λ > μ > 0 is the same: |λμ| > |λν| and |λμ| > |μν| give μ > |ν| and λ > |ν|, and
-conversely): λ - μ = 2x - t > 0 and, with cp(z) = (z² - tz + κ)(z² + sz + p) (s = c₁ + t,
-p = c₂ + ts - κ), Jury's criterion for z² + sz + p in the open disc of radius μ > 0:
-μ² - p > 0, μ² + sμ + p > 0, μ² - sμ + p > 0, where μ² = t² - κ - t x.
+Requirements (each strict): *exists*: λ > 0 (Dy > 0), μ > 0 (D(T - y) > 0), p_j(0) > 0 for the
+gaps j ≠ Y (p̂_{0,j} p̂_{0,j₀} > 0); *feasible*: at each collision k the pair approaches
+(q̄_{i₁}(0)² > 0 for k = 1), and every gap but the one colliding is open at t_k (the gap that
+collided at k - 1 is open at t_k by itself: it separates at t_{k-1}; the gaps are affine in t
+between collisions, open at both ends, so open between: no other pair touches first, no triple
+collision); the positions then return as μ p(0) (p(t_n) lies on Π and on the face Y, a line
+through p(0)).  *stable*: λ > μ > |ν| for the two other eigenvalues ν (velocities: λ dominant;
+the plane, the fixed point of the reduction on Gr(2, 4), attracts iff κ = λμ strictly dominates
+the five other products of two eigenvalues, which with λ > μ > 0 is the same: |λμ| > |λν| and
+|λμ| > |μν| give μ > |ν| and λ > |ν|, and conversely; tests/patterns/test_five.py checks it):
+D(2y - T) > 0 and, with cp(z) = (z² - tz + κ)(z² + sz + p) (s = c₁ + t, p = c₂ + ts - κ), Jury's
+criterion for z² + sz + p in the open disc of radius μ > 0, times D²: μ² - p > 0,
+μ² + sμ + p > 0, μ² - sμ + p > 0, with D²μ² = T² - κD² - T y.
 """
 from __future__ import annotations
 
@@ -49,19 +54,21 @@ import flint
 
 from certify.algebra.branches import Spectrum
 from certify.algebra.poly import (
-    FIELD,
     LR_LAMBDA,
+    LR_R,
     LRCTX,
-    RING,
+    LRQCTX,
     Frac,
     flint_poly_to_frac,
     frac_to_field,
     lr_to_ring,
+    ring_to_lrq,
 )
-from certify.dynamics.model import alphabet, charpoly_coefficients, collide_gaps
+from certify.dynamics.model import alphabet, charpoly_coefficients, charpoly_ring, collide_gaps
 from certify.dynamics.systems import of_particles, system_matrix_flint
 
-from .feasibility import Requirement
+from .feasibility import Analysis, Requirement
+from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, verdict
 
 PAIRS = list(itertools.combinations(range(4), 2))       # the coordinates of Λ²R⁴: e_k ∧ e_l, k < l
 
@@ -71,27 +78,16 @@ def second_compound(M) -> list:
     return [[M[i][k] * M[j][m] - M[i][m] * M[j][k] for (k, m) in PAIRS] for (i, j) in PAIRS]
 
 
-def sextic_ring(W):
-    """det(κI - Λ²M_w) as an element of the engine's ring, κ written λ (monic, degree 6)."""
-    coeffs = charpoly_coefficients(W)
-    n, zeros = len(coeffs) - 1, (0,) * (len(RING.gens) - 2)
-    terms = {(n - k, j) + zeros: RING.domain(cj) for k, c in enumerate(coeffs)
-             for j, cj in enumerate(flint.fmpq_poly(c).coeffs()) if cj}
-    return RING.from_dict(terms)
-
-
 class Reducer:
     """Reduction of :class:`Frac` in (κ, r) modulo the sextic (monic in κ): numerator and
     denominator separately, the same values on every branch κ(r)."""
 
     def __init__(self, ring_cp):
-        from certify.algebra.poly import ring_to_lrq
         self.C = ring_to_lrq(ring_cp)
 
     def poly(self, p):
         """An fmpz_mpoly in (κ, r) reduced modulo cp, as (fmpz_mpoly, positive integer scale)."""
-        q = flint.fmpq_mpoly_ctx.get(("lam", "r"), "lex").from_dict(
-            {m: flint.fmpq(c) for m, c in zip(p.monoms(), p.coeffs())})
+        q = LRQCTX.from_dict({m: flint.fmpq(c) for m, c in zip(p.monoms(), p.coeffs())})
         rem = divmod(q, self.C)[1]
         den = 1
         for c in rem.coeffs():
@@ -173,7 +169,7 @@ def five_candidate(word: str) -> FiveCandidate:
     letters = alphabet(5)
     M = system_matrix_flint(of_particles(5), word)
     W = second_compound(M)
-    ring_cp = sextic_ring(W)
+    ring_cp = charpoly_ring(W)                     # det(κI - Λ²M), κ written λ in the ring
     spectrum = Spectrum(None, ring_cp)
     red = Reducer(ring_cp)
     Pi = eigen_plane(W)
@@ -184,17 +180,13 @@ def five_candidate(word: str) -> FiveCandidate:
     if not all(_polynomial(e) for e in Pi):
         raise ArithmeticError("the eigenvector of Λ²M did not clear its denominators")
     Y = letters.index(word[-1])
-    coord = dict(zip(PAIRS, Pi))
-    p_hat = [coord[(l, Y)] if l < Y else (-coord[(Y, l)] if l > Y else Frac.of(0)) for l in range(4)]
+    p_hat = contract(Pi, Y)
     Mp = matvec(M, p_hat, red)
     MMp = matvec(M, Mp, red)
     j = next(j for j in range(4) if not Mp[j].is_zero())
     T, D = red(MMp[j] + LR_LAMBDA * p_hat[j]), Mp[j]          # t = T/D
     ext = Ext(T, D, red)
-    # D(M p - μ p) = D M p - (T - y) p, y = Dλ; q̂ = -q̄_{i₁} q̄ is a positive multiple of ±q̄
-    qbar = [(red(D * Mp[k] - T * p_hat[k]), p_hat[k]) for k in range(4)]
-    i1 = letters.index(word[0])
-    q0 = qbar
+    q0 = [(red(D * Mp[k] - T * p_hat[k]), p_hat[k]) for k in range(4)]      # D(M p - μ p), y = Dλ
     # the engine's position fixed point: c y² = (a - d) y + b with c = 1, a = T, b = -κD², d = 0
     a, b, c, d = (T, -ext.D2k, Frac.of(1), Frac.of(0))
     abcd_ring = tuple(_ring(e) for e in (a, b, c, d))
@@ -211,21 +203,19 @@ def _ring(F: Frac):
     return lr_to_ring(F.num, int(F.den.coeffs()[0]))
 
 
-_R = Frac(LRCTX.gen(1))
-
 
 def contract(P: list, i: int) -> list:
     """ι_i P: the vector (P_{li} for l < i, 0, -P_{il} for l > i) of a bivector P = p ∧ q with p_i = 0,
     which is q_i·p (P_{li} = p_l q_i - p_i q_l, P_{il} = p_i q_l - p_l q_i)."""
     coord = dict(zip(PAIRS, P))
-    return [coord[(l, i)] if l < i else (-coord[(i, l)] if l > i else Frac.of(0)) for l in range(4)]
+    return [coord[(m, i)] if m < i else (-coord[(i, m)] if m > i else Frac.of(0)) for m in range(4)]
 
 
 def wedge_collide(letter: str, P: list, red) -> list:
     """Λ²K_i P: the bivector of the plane after the collision (K_i fixes the face of pair i
     pointwise, so p ∧ q ↦ p ∧ K_i q; certificate B1)."""
     zero, one = Frac.of(0), Frac.of(1)
-    cols = [collide_gaps(letter, tuple(one if m == j else zero for m in range(4)), _R) for j in range(4)]
+    cols = [collide_gaps(letter, tuple(one if m == j else zero for m in range(4)), LR_R) for j in range(4)]
     K = [[cols[j][m] for j in range(4)] for m in range(4)]
     out = []
     for (i, j) in PAIRS:
@@ -248,8 +238,8 @@ def run(word: str, Pi: list, q0: list, red) -> list:
         i = letters.index(letter)
         P = wedge_collide(letter, P, red)
         before = q
-        q = list(zip(collide_gaps(letter, tuple(e[0] for e in q), _R), collide_gaps(letter, tuple(e[1] for e in q), _R)))
-        q = [(red(a), red(b)) for a, b in q]
+        parts = [collide_gaps(letter, tuple(e[part] for e in q), LR_R) for part in (0, 1)]
+        q = [(red(a), red(b)) for a, b in zip(*parts)]
         out.append((letter, contract(P, i), before, q))
     return out
 
@@ -286,13 +276,11 @@ def requirements(cand: FiveCandidate) -> dict:
     Ds = red(c1 * D + T)                                     # D s
     D2p = red(c2 * D * D + T * Ds - LR_LAMBDA * D * D)       # D² p
     D2mu2 = (red(T * T - LR_LAMBDA * D * D), -T)             # D² μ² = T² - κD² - T y
-    Dmu = (T, Frac.of(-1))                                   # D μ = T - y
     sDmu = (red(Ds * T), -Ds)                                # D s · D μ
-    stable = [_req("λ - μ", (red(-D * T), red(2 * D * D) if False else red(Frac.of(2) * D)), 1),
+    stable = [_req("λ - μ", (red(-D * T), red(Frac.of(2) * D)), 1),
               _req("μ² - p", (D2mu2[0] - D2p, D2mu2[1]), 1),
               _req("μ² + sμ + p", (D2mu2[0] + sDmu[0] + D2p, D2mu2[1] + sDmu[1]), 1),
               _req("μ² - sμ + p", (D2mu2[0] - sDmu[0] + D2p, D2mu2[1] - sDmu[1]), 1)]
-    del Dmu
     return {"exists": exists, "feasible": feasible, "stable": stable}
 
 
@@ -330,7 +318,6 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
     from certify.algebra.branches import BRANCH_NAMES
     from certify.algebra.poly import show_collected, show_factored
 
-    from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, verdict
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, why = read_five(text)
@@ -338,7 +325,6 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
     reqs = requirements(cand)
     tick = progress or (lambda k, n, label="": None)
     total = len(reqs["feasible"]) + 2
-    from .feasibility import Analysis
     an = Analysis(cand, lo, hi)
     for q in reqs["exists"]:
         an.impose(q)
@@ -365,9 +351,24 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
                  "orderings of the pair)", "p(0)": "ι_Y Π, Π the κ-eigenvector of Λ²M, Y the last letter's gap",
                  "q(0)": "∝ M p(0) - μ p(0), q of the first letter's gap < 0"}
         return M, show_factored(cand.spectrum.disc), datum
-    res = PatternResult(text, normal, "five", why, (lo, hi), lambda: show_collected(cand.spectrum.ring_cp, "κ"),
+    cp_text = lambda: show_collected(cand.spectrum.ring_cp, "λ").replace("λ", "κ")     # noqa: E731
+    res = FiveResult(text, normal, "five", why, (lo, hi), cp_text,
                         _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
                         undecided, conditions, None, "", 0.0, regions, printed)
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res
+
+
+
+class FiveResult(PatternResult):
+    """The :class:`.pattern.PatternResult` of a five-particle word: cp is the sextic cp(Λ²M) in κ = λμ,
+    and stability is λ > μ > |ν| (its Markdown names them; the JSON's fields are the pattern schema's)."""
+
+    def markdown(self) -> str:
+        text = super().markdown()
+        for old, new in (("cp(M) = `", "cp(Λ²M) in κ = λμ = `"), ("disc_λ cp(M) = `", "disc_κ cp(Λ²M) = `"),
+                         ("## Stable (λ dominant, fixed point attracting)",
+                          "## Stable (λ > μ > |ν| for the other eigenvalues ν: λ dominant, the plane attracting)")):
+            text = text.replace(old, new, 1)
+        return text

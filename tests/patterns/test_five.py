@@ -139,3 +139,36 @@ def test_bad_five_particle_words_are_one_line_errors():
         res = subprocess.run([sys.executable, "-m", "certify", "pattern", word], cwd=ROOT, capture_output=True,
                              text=True)
         assert res.returncode == 2 and "Traceback" not in res.stderr and len(res.stderr.strip().splitlines()) == 1
+
+
+def test_the_two_stability_criteria_agree():
+    """For λ > μ > 0 real and two other eigenvalues (a real pair or a complex pair): λ > μ > |ν| for both
+    iff κ = λμ strictly dominates the five other products of two eigenvalues (the module's argument),
+    on random spectra and on the word's at r on a grid."""
+    import random
+
+    import numpy as np
+    rng = random.Random(5)
+
+    def agree(ev):
+        lam, mu, *rest = ev
+        direct = lam > mu > max(abs(v) for v in rest)
+        products = [ev[i] * ev[j] for i in range(4) for j in range(i + 1, 4) if (i, j) != (0, 1)]
+        return direct == all(abs(lam * mu) > abs(p) for p in products)
+    for _ in range(2000):
+        mu = rng.uniform(0.01, 2)
+        lam = mu + rng.uniform(0.001, 2)
+        if rng.random() < 0.5:
+            rest = [rng.uniform(-3, 3), rng.uniform(-3, 3)]
+        else:
+            z = complex(rng.uniform(-2, 2), rng.uniform(0.01, 2))
+            rest = [z, z.conjugate()]
+        assert agree([lam, mu, *rest])
+    for k in range(1, 60):
+        ev = sorted(np.linalg.eigvals(search.period_matrix(WORD, 4, k / 60)), key=lambda z: -abs(z))
+        real = sorted((z.real for z in ev if abs(z.imag) < 1e-12 and z.real > 0), reverse=True)
+        if len(real) >= 2:
+            rest = list(ev)
+            for v in real[:2]:
+                rest.pop(int(np.argmin([abs(z - v) for z in rest])))
+            assert agree([real[0], real[1], *rest])
