@@ -58,11 +58,14 @@ from certify.algebra.poly import (
     LR_R,
     LRCTX,
     LRQCTX,
+    RING,
     Frac,
     flint_poly_to_frac,
     frac_to_field,
     lr_to_ring,
+    mpoly_to_ring,
     ring_to_lrq,
+    ring_to_mpoly,
 )
 from certify.dynamics.model import alphabet, charpoly_coefficients, charpoly_ring, collide_gaps
 from certify.dynamics.systems import of_particles, system_matrix_flint
@@ -138,13 +141,17 @@ class FiveCandidate:
     q0_other: tuple = ()
 
 
-def eigen_plane(W) -> list:
+def eigen_plane(W, red) -> list:
     """A κ-eigenvector Π of Λ²M (Frac in (κ, r)): the last coordinate 1, the others from the first
-    five rows of (Λ²M - κI)Π = 0 by elimination over Q(κ, r)."""
+    five rows of (Λ²M - κI)Π = 0 by elimination over Q(κ, r), every pivot non-zero modulo κ's
+    polynomial (ArithmeticError otherwise: the route needs another normalisation there)."""
     A = [[flint_poly_to_frac(W[i][j]) - (LR_LAMBDA if i == j else Frac.of(0)) for j in range(6)] for i in range(6)]
     rows = [A[i][:5] + [-A[i][5]] for i in range(5)]
     for c in range(5):
-        piv = next(i for i in range(c, 5) if not rows[i][c].is_zero())
+        piv = next((i for i in range(c, 5) if not red(rows[i][c]).is_zero()), None)
+        if piv is None:
+            raise ArithmeticError("Λ²M - κI has no pivot in a column: the plane is not normalised by its last "
+                                  "coordinate")
         rows[c], rows[piv] = rows[piv], rows[c]
         inv = rows[c][c].inverse()
         rows[c] = [e * inv for e in rows[c]]
@@ -163,27 +170,47 @@ def _polynomial(F: Frac) -> bool:
     return F.den.total_degree() <= 0
 
 
+def sextic_factors(word: str) -> list:
+    """The irreducible factors of cp(Λ²M_w) in κ (over Q[r], monic: the sextic is monic), each with
+    its multiplicity, as elements of the engine's ring (κ written λ)."""
+    M = system_matrix_flint(of_particles(5), word)
+    _, terms = ring_to_mpoly(charpoly_ring(second_compound(M))).factor()
+    out = []
+    for f, e in terms:
+        if f.degrees()[1] == 0:
+            continue                                   # a constant in κ (the sextic is monic: none but ±1)
+        g = mpoly_to_ring(f)
+        lead = g.coeff_wrt(RING.gens[0], g.degree(RING.gens[0]))
+        if not lead.is_ground:
+            raise ArithmeticError("a factor of the monic sextic with a leading coefficient in r")
+        out.append((g.quo_ground(lead.LC), int(e)))
+    return out
+
+
 @cache
-def five_candidate(word: str) -> FiveCandidate:
-    """The κ-route candidate of a word of five particles (see the module's docstring)."""
+def five_candidate(word: str, factor=None) -> FiveCandidate:
+    """The κ-route candidate of a word of five particles (see the module's docstring), κ a root of
+    ``factor`` (an irreducible factor of cp(Λ²M) of multiplicity 1, by default the sextic itself)."""
     letters = alphabet(5)
     M = system_matrix_flint(of_particles(5), word)
     W = second_compound(M)
-    ring_cp = charpoly_ring(W)                     # det(κI - Λ²M), κ written λ in the ring
+    ring_cp = charpoly_ring(W) if factor is None else factor      # det(κI - Λ²M), κ written λ in the ring
     spectrum = Spectrum(None, ring_cp)
     red = Reducer(ring_cp)
-    Pi = eigen_plane(W)
+    Pi = eigen_plane(W, red)
     common = Frac(Pi[0].den)
     for e in Pi[1:]:
         common = Frac(common.num * e.den / common.num.gcd(e.den)) if not e.den.is_one() else common
     Pi = [red(e * common) for e in Pi]
-    if not all(_polynomial(e) for e in Pi):
+    if not all(_polynomial(e) for e in Pi) or all(e.is_zero() for e in Pi):
         raise ArithmeticError("the eigenvector of Λ²M did not clear its denominators")
     Y = letters.index(word[-1])
     p_hat = contract(Pi, Y)
     Mp = matvec(M, p_hat, red)
     MMp = matvec(M, Mp, red)
-    j = next(j for j in range(4) if not Mp[j].is_zero())
+    j = next((j for j in range(4) if not Mp[j].is_zero()), None)
+    if j is None:
+        raise ArithmeticError("M p̂ vanishes")
     T, D = red(MMp[j] + LR_LAMBDA * p_hat[j]), Mp[j]          # t = T/D
     ext = Ext(T, D, red)
     q0 = [(red(D * Mp[k] - T * p_hat[k]), p_hat[k]) for k in range(4)]      # D(M p - μ p), y = Dλ
@@ -316,45 +343,70 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
     import time
 
     from certify.algebra.branches import BRANCH_NAMES
-    from certify.algebra.poly import show_collected, show_factored
+    from certify.algebra.poly import mpoly_to_univariate, primitive, show_collected, show_factored
 
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, why = read_five(text)
-    cand = five_candidate(normal)
-    reqs = requirements(cand)
+    factors = sextic_factors(normal)
+    regions: dict = {"exists": [], "feasible": [], "stable": []}
+    sets: dict = {"exists": [], "feasible": [], "stable": []}
+    undecided: list = []
+    conditions: dict = {}
+    cands = []
     tick = progress or (lambda k, n, label="": None)
-    total = len(reqs["feasible"]) + 2
-    an = Analysis(cand, lo, hi)
-    for q in reqs["exists"]:
-        an.impose(q)
-    regions = {"exists": _copy(an.regions)}
-    tick(1, total, "exists")
-    for m, group in enumerate(reqs["feasible"], 1):
-        for q in sorted(group, key=lambda q: q.has_x):
+    for number, (factor, multiplicity) in enumerate(factors, 1):
+        label = f"factor {number} of cp(Λ²M), " if len(factors) > 1 else ""
+        if multiplicity > 1:
+            undecided.append(f"{label}κ a root of multiplicity {multiplicity} of cp(Λ²M) on all of ]{lo}, {hi}[: "
+                             "its eigenplane is not unique (not analysed)")
+            continue
+        try:
+            cand = five_candidate(normal, factor if len(factors) > 1 else None)
+        except ArithmeticError as e:
+            undecided.append(f"{label}on all of ]{lo}, {hi}[: {e} (not analysed)")
+            continue
+        cands.append(cand)
+        reqs = requirements(cand)
+        total = len(reqs["feasible"]) + 2
+        an = Analysis(cand, lo, hi)
+        stage_regions = {}
+        for q in reqs["exists"]:
             an.impose(q)
-        tick(1 + m, total, f"collision {m} of {len(reqs['feasible'])}")
-    regions["feasible"] = _copy(an.regions)
-    for q in reqs["stable"]:
-        an.impose(q)
-    regions["stable"] = _copy(an.regions)
-    tick(total, total, "stable")
-    conditions = {"exists": [_cond(q) for q in reqs["exists"]] + ["λ real"],
-                  "feasible": [_cond(q) for g in reqs["feasible"] for q in g],
-                  "stable": [_cond(q) for q in reqs["stable"]]}
-    undecided = sorted({f"{BRANCH_NAMES[R.branch] if R.branch < len(BRANCH_NAMES) else f'κ{R.branch}'} "
-                        f"{R.fixed_point} at {_short(rc)}: {why_}" for R in an.regions for rc, why_ in R.undecided})
+        stage_regions["exists"] = _copy(an.regions)
+        tick(1, total, "exists")
+        for m, group in enumerate(reqs["feasible"], 1):
+            for q in sorted(group, key=lambda q: q.has_x):
+                an.impose(q)
+            tick(1 + m, total, f"collision {m} of {len(reqs['feasible'])}")
+        stage_regions["feasible"] = _copy(an.regions)
+        for q in reqs["stable"]:
+            an.impose(q)
+        stage_regions["stable"] = _copy(an.regions)
+        tick(total, total, "stable")
+        for stage, rs in stage_regions.items():
+            regions[stage] += rs
+            sets[stage] += [dict(d, branch=label + d["branch"]) for d in _nonempty(rs)]
+        conditions = {"exists": [_cond(q) for q in reqs["exists"]] + ["λ real"],
+                      "feasible": [_cond(q) for g in reqs["feasible"] for q in g],
+                      "stable": [_cond(q) for q in reqs["stable"]]}
+        names = [BRANCH_NAMES[R.branch] if R.branch < len(BRANCH_NAMES) else f"κ{R.branch}" for R in an.regions]
+        undecided += sorted({f"{label}{name} {R.fixed_point} at {_short(rc)}: {why_}"
+                             for name, R in zip(names, an.regions) for rc, why_ in R.undecided})
+    if not conditions:
+        conditions = {stage: [] for stage in ("exists", "feasible", "stable")}
 
     def printed():
-        M = [[show_factored(e) for e in row] for row in cand.Mq]
+        M = [[show_factored(e) for e in row] for row in system_matrix_flint(of_particles(5), normal)]
         datum = {"κ": "λμ, a root of cp(Λ²M) (the branch)", "λ": "x = (T ± √(T² - 4κD²))/(2D) (x₊, x₋: the two "
                  "orderings of the pair)", "p(0)": "ι_Y Π, Π the κ-eigenvector of Λ²M, Y the last letter's gap",
                  "q(0)": "∝ M p(0) - μ p(0), q of the first letter's gap < 0"}
-        return M, show_factored(cand.spectrum.disc), datum
-    cp_text = lambda: show_collected(cand.spectrum.ring_cp, "λ").replace("λ", "κ")     # noqa: E731
-    res = FiveResult(text, normal, "five", why, (lo, hi), cp_text,
-                        _nonempty(regions["exists"]), _nonempty(regions["feasible"]), _nonempty(regions["stable"]),
-                        undecided, conditions, None, "", 0.0, regions, printed)
+        whole = charpoly_ring(second_compound(system_matrix_flint(of_particles(5), normal)))
+        return M, show_factored(primitive(mpoly_to_univariate(ring_to_mpoly(whole).discriminant("lam")))), datum
+    cp_text = lambda: show_collected(charpoly_ring(second_compound(system_matrix_flint(of_particles(5), normal))),  # noqa: E731
+                                     "λ").replace("λ", "κ")
+    res = FiveResult(text, normal, "five", why, (lo, hi), cp_text, sets["exists"], sets["feasible"], sets["stable"],
+                     undecided, conditions, None, "", 0.0, regions, printed)
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res

@@ -172,3 +172,11 @@ def test_the_two_stability_criteria_agree():
             for v in real[:2]:
                 rest.pop(int(np.argmin([abs(z - v) for z in rest])))
             assert agree([real[0], real[1], *rest])
+
+
+def test_a_repeated_factor_of_the_sextic_is_named_not_analysed():
+    """abcacd: cp(Λ²M) has a repeated factor in κ (its plane is not unique there): that factor is listed as
+    undecided on the whole range, the other analysed, no traceback."""
+    res = five.analyse_five("abcacd")
+    assert any("multiplicity 2" in u and "not analysed" in u for u in res.undecided)
+    assert [m for _, m in five.sextic_factors("abcacd")].count(2) == 1
