@@ -424,3 +424,70 @@ class FiveResult(PatternResult):
                           "## Stable (λ > μ > |ν| for the other eigenvalues ν: λ dominant, the plane attracting)")):
             text = text.replace(old, new, 1)
         return text
+
+
+def word_classes(max_length: int):
+    """One word per class (rotations, mirror a<->d, b<->c) of the five-particle periods of 4..max_length
+    collisions: every pair used, no pair twice in a row (cyclically), not a proper power; each its
+    :func:`normal_form`, shortest first, then in lexicographic order."""
+    letters = alphabet(5)
+    for n in range(len(letters), max_length + 1):
+        found = set()
+        for t in itertools.product(letters, repeat=n - 1):
+            w = "a" + "".join(t)                      # every class has a rotation starting with a
+            if any(w[k] == w[(k + 1) % n] for k in range(n)) or len(set(w)) < len(letters):
+                continue
+            if any(n % d == 0 and w == w[:d] * (n // d) for d in range(1, n)):
+                continue
+            found.add(normal_form(w)[0])
+        yield from sorted(found)
+
+
+def census_five(max_length: int, progress=None) -> dict:
+    """``certify census --particles 5``: every class of :func:`word_classes` analysed by
+    :func:`analyse_five` over ]0, 1[; per word its certified stable and feasible windows (exact ends)
+    and its undecided points; per length the number of words and the seconds; the largest r of stable
+    and of feasible self-similar collapse (the largest upper end of a window or isolated point: exact),
+    the largest undecided point (where the proof ends) and the words with a factor of cp(Λ²M) not
+    analysed (a repeated factor: the largest r are certified for the other words and factors only)."""
+    import time
+
+    from certify.algebra.branches import less
+
+    from .pattern import end_data
+    words = list(word_classes(max_length))
+    records, lengths = [], {}
+    best: dict = {"stable": None, "feasible": None, "undecided": None}
+    whole: list = []
+    for k, w in enumerate(words):
+        if progress is not None:
+            progress(k, len(words), w)
+        start = time.perf_counter()
+        res = analyse_five(w)
+        seconds = time.perf_counter() - start
+        entry = lengths.setdefault(len(w), {"words": 0, "seconds": 0.0})
+        entry["words"] += 1
+        entry["seconds"] += seconds
+        rec = {"word": w, "seconds": round(seconds, 2), "undecided": res.undecided}
+        if any("not analysed" in u for u in res.undecided):
+            whole.append(w)
+        for stage in ("stable", "feasible", "undecided"):
+            if stage == "undecided":
+                tops = [rc for R in res.regions["stable"] for rc, _ in R.undecided]
+            else:
+                rec[stage] = [s["set"] for s in getattr(res, stage)]
+                tops = [hi for *_, hi in res.intervals(stage)] + [at for *_, at in res.points(stage)]
+            for top in tops:
+                if best[stage] is None or less(best[stage][0], top):
+                    best[stage] = (top, w)
+        records.append(rec)
+    if progress is not None:
+        progress(len(words), len(words), "")
+    out = {"max_length": max_length, "words": len(words), "records": records,
+           "lengths": {n: {"words": e["words"], "seconds": round(e["seconds"], 1)} for n, e in sorted(lengths.items())}}
+    for stage, found in best.items():
+        out[f"largest_{stage}"] = None if found is None else {"r": end_data(found[0]), "word": found[1]}
+    out["stable_words"] = [{"word": r["word"], "windows": r["stable"]} for r in records if r["stable"]]
+    out["undecided_words"] = [r["word"] for r in records if r["undecided"]]
+    out["not_analysed_words"] = whole         # a factor of cp(Λ²M) not analysed on the whole range
+    return out

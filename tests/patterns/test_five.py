@@ -180,3 +180,45 @@ def test_a_repeated_factor_of_the_sextic_is_named_not_analysed():
     res = five.analyse_five("abcacd")
     assert any("multiplicity 2" in u and "not analysed" in u for u in res.undecided)
     assert [m for _, m in five.sextic_factors("abcacd")].count(2) == 1
+
+
+def test_the_word_classes_are_the_search_tools():
+    """The census's classes (normal forms) are the float search's, independently enumerated, to length 8."""
+    assert list(five.word_classes(8)) == sorted(search.words(8, 5), key=lambda w: (len(w), w))
+
+
+@pytest.fixture(scope="module")
+def census5():
+    return five.census_five(5)
+
+
+def test_the_census_against_the_float_search(census5):
+    """Every word of the census to 5: feasible at r on a grid (away from the ends) exactly where the float
+    search finds a feasible datum, for the words whose every factor was analysed; the largest feasible r
+    is 3 - 2√2 (SymPy), attained by one of its words."""
+    import sympy as sp
+    for rec in census5["records"]:
+        if rec["word"] in census5["not_analysed_words"]:
+            continue
+        res = five.analyse_five(rec["word"])
+        spans = [(float(w.lo.digits(15)), float(w.hi.digits(15))) for w in res.intervals("feasible")]
+        for k in range(1, 50):
+            r = k / 50
+            if any(min(abs(r - a), abs(r - b)) < 1e-3 for a, b in spans):
+                continue
+            assert any(a < r < b for a, b in spans) == bool(search.data(rec["word"], r, 5)), (rec["word"], r)
+    best = census5["largest_feasible"]
+    assert abs(float(best["r"]["digits"]) - float(3 - 2 * sp.sqrt(2))) < 1e-11
+    assert best["r"]["minimal_polynomial"] == "r^2 - 6r + 1"
+
+
+def test_the_census_command():
+    """census --particles 5 prints the summary; beyond its limit, another N, or a cluster option: one line, exit 2."""
+    run = lambda *a: subprocess.run([sys.executable, "-m", "certify", "census", *a], cwd=ROOT,  # noqa: E731
+                                    capture_output=True, text=True)
+    out = run("--particles", "5", "--max-length", "4")
+    assert out.returncode == 0 and "4 words up to length 4" in out.stdout
+    for bad in (["--particles", "5", "--max-length", "9"], ["--particles", "6", "--max-length", "4"],
+                ["--particles", "5", "--max-length", "4", "--resume"]):
+        res = run(*bad)
+        assert res.returncode == 2 and len(res.stderr.strip().splitlines()) == 1 and "Traceback" not in res.stderr
