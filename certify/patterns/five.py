@@ -133,11 +133,11 @@ class FiveCandidate:
     T: Frac                  # D t (t = λ + μ)
     D: Frac                  # y = D λ
     p0: list                 # p̂ ∝ p(0) (an unknown sign, the same for every gap), p̂_Y = 0
-    q0: list                 # (A, B): q̂ = A + yB, a positive multiple of q(0) where q̄_{i₁} ≠ 0
+    q0: list                 # (A, B): q̄ = A + yB, the true q(0) is -sign(q̄_{i₁}(0)) times q̄
     cp4: list                # the quartic's coefficients c₁..c₄ (Frac in r)
     ext: Ext
     face: int                # Y, the gap of the last letter
-    steps: list              # [(letter, p̃(t_k), q(t_{k-1}), q(t_k))]
+    steps: list              # [(letter, p̂_k = ι P_k, q̄(t_{k-1}), q̄(t_k))]
     q0_other: tuple = ()
 
 

@@ -222,3 +222,30 @@ def test_the_census_command():
                 ["--particles", "5", "--max-length", "4", "--resume"]):
         res = run(*bad)
         assert res.returncode == 2 and len(res.stderr.strip().splitlines()) == 1 and "Traceback" not in res.stderr
+
+
+def test_the_datum_is_exact():
+    """Exact identities modulo the sextic (and y² = T y - κD²): Π is a κ-eigenvector of Λ²M, the plane's
+    Cayley–Hamilton D M²p̂ - T M p̂ + κ D p̂ = 0, q̄ a λ-eigenvector (D M q̄ = y q̄), and each contraction
+    p̂_k = ι P_k vanishes on the face of its collision; a wrong t (T + D) breaks the second."""
+    from certify.algebra.poly import LR_LAMBDA, Frac
+    from certify.dynamics.systems import of_particles, system_matrix_flint
+    cand = five.five_candidate(WORD)
+    red, ext = cand.ext.red, cand.ext
+    M = system_matrix_flint(of_particles(5), WORD)
+    W = five.second_compound(M)
+    Pi = five.eigen_plane(W, red)
+    assert all(red(e - LR_LAMBDA * p).is_zero() for e, p in zip(five.matvec(W, Pi, red), Pi))
+    Mp = five.matvec(M, cand.p0, red)
+    MMp = five.matvec(M, Mp, red)
+    for T in (cand.T, cand.T + cand.D):
+        ch = [red(cand.D * a - T * b + LR_LAMBDA * cand.D * c) for a, b, c in zip(MMp, Mp, cand.p0)]
+        assert all(e.is_zero() for e in ch) == (T is cand.T)
+    Mq = [five.matvec(M, [q[part] for q in cand.q0], red) for part in (0, 1)]
+    y = (Frac.of(0), Frac.of(1))
+    for k in range(4):
+        lhs = (red(cand.D * Mq[0][k]), red(cand.D * Mq[1][k]))
+        rhs = ext.mul(y, cand.q0[k])
+        assert (lhs[0] - rhs[0]).is_zero() and (lhs[1] - rhs[1]).is_zero()
+    for letter, p, _, _ in cand.steps:
+        assert p["abcd".index(letter)].is_zero()
