@@ -21,7 +21,8 @@ then names, for each observed end, the exact polynomial in r (a factor of disc_�
 resultant whose roots are the r where the modulus of a real eigenvalue equals that of another,
 Res_y(cp_{M²}(y), cp_{Λ²M}(y)), or of Res_λ(cp, cp of M without the first letter's gap: a
 component of q(0) vanishes)) with a root there, isolated exactly (python-flint's certified roots).
-That the window ends at that root is observed; certify pattern does not take five-particle words yet.
+What this prints is observed; ``certify pattern WORD`` certifies a five-particle word's sets exactly
+(certify/patterns/five.py).
 """
 from __future__ import annotations
 

@@ -41,6 +41,8 @@ def cmd_census(args) -> int:
     from certify.run import executors, progress
     from certify.run.files import ensure_writable, ensure_writable_file, keep_larger
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
+    if args.particles != 4:
+        return census_of_five(args)
     if args.max_length > MAX_CENSUS_LENGTH and not args.scheduler:
         raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} on this machine ({CENSUS_COST}; "
                          f"the words multiply by about 1.7 per collision, so a longer census does not finish in a "
@@ -87,6 +89,12 @@ def cmd_pattern(args) -> int:
     from certify.patterns import analyse, check_range, family_windows, read
     from certify.patterns.family import family_n
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
+    if "d" in args.word:                  # five particles (issue 39): the κ route, certify.patterns.five
+        from certify.patterns.five import analyse_five, read_five
+        read_five(args.word)                                     # validate first: one line, exit 2
+        result = analyse_five(args.word, lo, hi)
+        print(result.json_text() if args.json else result.markdown())
+        return 0
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     n = family_n(normal) if system == "four" else None
     if n is not None and n > family_windows.EXACT_N0 and not args.r_range:
@@ -144,6 +152,12 @@ def cmd_orbit(args) -> int:
     from certify.patterns.reduction_orbits import analyse as analyse_orbit
     from certify.run import progress
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
+    if "d" in args.word:                  # five particles (issue 39): the κ route, certify.patterns.five
+        from certify.patterns.five import analyse_five, read_five
+        read_five(args.word)                                     # validate first: one line, exit 2
+        result = analyse_five(args.word, lo, hi)
+        print(result.json_text() if args.json else result.markdown())
+        return 0
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     if args.trap is not None:
         if args.r_range:
@@ -213,6 +227,49 @@ def add_word_options(p, word_help: str, schema: str) -> None:
                    help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
 
 
+MAX_FIVE_LENGTH = 8          # census --particles 5: L = 7 (178 words) in about 4 min, 8 (528) in about 20 (measured)
+
+
+def census_of_five(args) -> int:
+    """``census --particles 5``: the five-particle census (certify.patterns.five.census_five), a summary on
+    stdout (JSON with --json); nothing is written to a file (none is committed yet)."""
+    from certify.patterns.five import census_five
+    from certify.run import progress
+    if args.particles != 5:
+        raise UsageError(f"--particles {args.particles}: the census takes 4 (the paper's) or 5 particles")
+    if args.max_length > MAX_FIVE_LENGTH:
+        raise UsageError(f"--max-length {args.max_length}: at most {MAX_FIVE_LENGTH} for five particles on this "
+                         f"machine (the classes multiply by about 3 per collision: 178 words to 7, 528 to 8)")
+    if args.scheduler or args.resume or args.state is not None:
+        raise UsageError("--particles 5: no --scheduler, --state or --resume (the census runs here, in one go)")
+    doc = census_five(args.max_length, progress=progress.Bar("word"))
+    if args.json:
+        print(json.dumps(doc, ensure_ascii=False, indent=2, sort_keys=True))
+        return 0
+    print(five_summary(doc))
+    return 0
+
+
+def five_summary(doc: dict) -> str:
+    """The five-particle census in a few lines: words and seconds per length, the largest r of stable and
+    of feasible self-similar collapse and of an undecided point (exact), the stable words, the words with
+    undecided points and those with a factor not analysed."""
+    lines = [f"five particles, {plural(doc['words'], 'word')} up to length {doc['max_length']} (classes: rotations, "
+             "mirror a<->d, b<->c)"]
+    lines += [f"  length {n}: {e['words']} words, {e['seconds']} s" for n, e in doc["lengths"].items()]
+    for stage in ("stable", "feasible", "undecided"):
+        best = doc[f"largest_{stage}"]
+        lines.append(f"largest r of {stage if stage == 'undecided' else stage + ' self-similar collapse'}: " + (
+            "none" if best is None else f"≈{best['r']['digits']} (the root of {best['r']['minimal_polynomial']} in "
+            f"]{best['r']['interval'][0]}, {best['r']['interval'][1]}[), {best['word']}"))
+    lines += [f"stable: {s['word']} on {'; '.join(s['windows'])}" for s in doc["stable_words"]]
+    lines.append(f"words with undecided points: {len(doc['undecided_words'])} (certify pattern WORD lists them)")
+    if doc["not_analysed_words"]:
+        lines.append(f"words with a repeated factor of cp(Λ²M), that factor not analysed (the largest r above hold for "
+                     f"the others only): {', '.join(doc['not_analysed_words'])}")
+    return "\n".join(lines)
+
+
 def register(commands) -> None:
     """The parsers of ``census``, ``pattern``, ``family``, ``orbit`` and ``particles``."""
     p = add_command(commands, "census", cmd_census, help="analyse every periodic pattern of blocks up to a length",
@@ -232,6 +289,9 @@ def register(commands) -> None:
                    help="replace a census of longer periods already in DIR (refused without it)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
+    p.add_argument("--particles", type=positive_int, default=4, metavar="N",
+                   help=f"4 (the paper's, default) or 5: every five-particle word class up to L ≤ {MAX_FIVE_LENGTH} "
+                        "by the κ route of `pattern`, a summary on stdout, no file written")
     add_jobs(p)
 
     p = add_command(commands, "pattern", cmd_pattern, help="analyse one periodic collision word exactly",

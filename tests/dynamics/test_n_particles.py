@@ -247,8 +247,9 @@ def test_invalid_n_particle_data(x, v, n, message):
         evolve(x, v, "1/2", 3, particles=n)
 
 
-def test_pattern_with_a_five_particle_word_is_one_line_exit_2(capsys):
-    """Until `certify pattern` takes five-particle words, a d is bad input: one line, exit 2."""
-    assert cli.main(["pattern", "abcdcb"]) == 2
+def test_pattern_with_a_bad_five_particle_word_is_one_line_exit_2(capsys):
+    """`certify pattern` takes five-particle words (tests/patterns/test_five.py); a bad one (a pair unused) is
+    bad input: one line, exit 2."""
+    assert cli.main(["pattern", "abdb"]) == 2
     out, err = capsys.readouterr()
     assert out == "" and err.count("\n") == 1 and err.startswith("certify: error: ")

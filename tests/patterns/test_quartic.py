@@ -80,8 +80,9 @@ def test_dominance_on_five_particle_words(word, r0):
         assert all(signs) == dominant, (word, r0, value, ev)
 
 
-def test_pattern_refuses_five_particle_words_for_now(capsys):
-    """`certify pattern` is not wired for five particles (issue 39): a d is one line, exit 2."""
-    assert cli.main(["pattern", "abadcbcabc"]) == 2
+def test_pattern_refuses_a_letter_beyond_five_particles(capsys):
+    """`certify pattern` takes five-particle words (issue 39, tests/patterns/test_five.py); a letter beyond d
+    is one line, exit 2."""
+    assert cli.main(["pattern", "abadcbcabe"]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and "use the letters a, b, c" in err
+    assert out == "" and err.count("\n") == 1 and "use the letters a, b, c, d" in err

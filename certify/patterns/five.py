@@ -1,0 +1,493 @@
+"""``certify pattern WORD`` for five particles (issue 39): the self-similar datum through κ = λμ.
+
+For N particles the self-similar datum of a word w has q(0) an eigenvector of M_w for λ and p(0) in
+the plane of q(0) and a second eigenvector e_μ, on the face Y of the last letter (docs/particles.md).
+For five particles μ is a root of a cubic over Q(r, λ); the route here avoids it:
+
+* the plane Π = Span(q(0), e_μ) is the eigenvector of the second compound Λ²M_w for κ = λμ, a
+  root of the sextic cp(Λ²M_w) (the spectrum's variable, written λ in the engine's ring);
+* p(0) is Π contracted with the face's coordinate: with Π = p ∧ q and p_Y = 0,
+  Π_{lY} = q_Y p_l (l < Y) and Π_{Yl} = -q_Y p_l (l > Y): p(0) ∝ p̂ = (Π_{lY}, …, 0, …, -Π_{Yl}),
+  normalised by one of its coordinates, rational in (r, κ);
+* λ and μ are the roots of x² - t x + κ, t = λ + μ the trace of M_w on Π (Cayley–Hamilton on Π:
+  M²p̂ - t M p̂ + κ p̂ = 0, so t = (M²p̂ + κp̂)_j / (M p̂)_j); the engine's position fixed point x
+  (:mod:`.feasibility`, x = (A ± √Δ)/(2c)) is λ, with a - d = T_num, c = T_den, b = -κ T_den,
+  d = 0: c x² = (a - d)x + b is x² = t x - κ, both roots analysed (x₊ and x₋, the two orderings);
+* q(0) ∝ M p(0) - μ p(0) (p(0) = α e_λ + β e_μ, so M p - μ p = α(λ - μ) e_λ); with y = Dλ and
+  T = Dt: q̄ = D M p̂ - (T - y) p̂, affine in y over Q[κ, r], and y² = T y - κD²; the true q(0) is
+  -sign(q̄_{i₁}(0)) q̄ for the first letter's gap i₁ (the pair approaches).
+
+Every quantity is a polynomial in (κ, r), or affine in y, reduced modulo y² = T y - κD² and modulo
+the sextic: the engine's requirements G₀ + y G₁ (its position fixed point y = (a - d ± √Δ)/(2c) with
+c = 1, a - d = T, b = -κD²), certified by :class:`.feasibility.Analysis` over r-cells of the sextic's
+spectrum like the four particles' (critical values from resultants and discriminants, one exact
+sample per cell, signs by balls, exact zero tests).  x₊ and x₋ are the two orderings of the pair.
+
+**The run through the plane** (certificate B1: each K_i fixes its face pointwise, free flight keeps
+p ∧ q): P_k = Λ²K_{i_k} P_{k-1}, P_0 = Π = c p(0) ∧ q(0), and as p_{i_k}(t_k) = 0 the contraction
+p̂_k = ι_{i_k} P_k is c q_{i_k}(t_k⁺) p(t_k) with q_{i_k}(t_k⁺) = -r q_{i_k}(t_{k-1}) > 0 where the
+pair approaches: p_m(t_k) has the sign of p̂_{k,m} p̂_{0,j₀} (p̂_0 = c q_Y(0) p(0), q_Y(0) > 0 as the
+face Y separates after the period's last collision).  So the positions are polynomials in (κ, r) of
+degree growing by 2 a collision, and only the approach conditions q̄_{i_k}(t_{k-1}) q̄_{i₁}(0) > 0 hold y.
+
+Requirements (each strict): *exists*: λ > 0 (Dy > 0), μ > 0 (D(T - y) > 0), p_j(0) > 0 for the
+gaps j ≠ Y (p̂_{0,j} p̂_{0,j₀} > 0); *feasible*: at each collision k the pair approaches
+(q̄_{i₁}(0)² > 0 for k = 1), and every gap but the one colliding is open at t_k (the gap that
+collided at k - 1 is open at t_k by itself: it separates at t_{k-1}; the gaps are affine in t
+between collisions, open at both ends, so open between: no other pair touches first, no triple
+collision); the positions then return as μ p(0) (p(t_n) lies on Π and on the face Y, a line
+through p(0)).  *stable*: λ > μ > |ν| for the two other eigenvalues ν (velocities: λ dominant;
+the plane, the fixed point of the reduction on Gr(2, 4), attracts iff κ = λμ strictly dominates
+the five other products of two eigenvalues, which with λ > μ > 0 is the same: |λμ| > |λν| and
+|λμ| > |μν| give μ > |ν| and λ > |ν|, and conversely; tests/patterns/test_five.py checks it):
+D(2y - T) > 0 and, with cp(z) = (z² - tz + κ)(z² + sz + p) (s = c₁ + t, p = c₂ + ts - κ), Jury's
+criterion for z² + sz + p in the open disc of radius μ > 0, times D²: μ² - p > 0,
+μ² + sμ + p > 0, μ² - sμ + p > 0, with D²μ² = T² - κD² - T y.
+"""
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from functools import cache
+
+import flint
+
+from certify.algebra.branches import Spectrum
+from certify.algebra.poly import (
+    LR_LAMBDA,
+    LR_R,
+    LRCTX,
+    LRQCTX,
+    RING,
+    Frac,
+    flint_poly_to_frac,
+    frac_to_field,
+    lr_to_ring,
+    mpoly_to_ring,
+    ring_to_lrq,
+    ring_to_mpoly,
+)
+from certify.dynamics.model import alphabet, charpoly_coefficients, charpoly_ring, collide_gaps
+from certify.dynamics.systems import of_particles, system_matrix_flint
+
+from .feasibility import Analysis, Requirement
+from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, verdict
+
+PAIRS = list(itertools.combinations(range(4), 2))       # the coordinates of Λ²R⁴: e_k ∧ e_l, k < l
+
+
+def second_compound(M) -> list:
+    """Λ²M on the basis e_k ∧ e_l (k < l): the 2×2 minors of M (python-flint polynomials in r)."""
+    return [[M[i][k] * M[j][m] - M[i][m] * M[j][k] for (k, m) in PAIRS] for (i, j) in PAIRS]
+
+
+class Reducer:
+    """Reduction of :class:`Frac` in (κ, r) modulo the sextic (monic in κ): numerator and
+    denominator separately, the same values on every branch κ(r)."""
+
+    def __init__(self, ring_cp):
+        self.C = ring_to_lrq(ring_cp)
+
+    def poly(self, p):
+        """An fmpz_mpoly in (κ, r) reduced modulo cp, as (fmpz_mpoly, positive integer scale)."""
+        q = LRQCTX.from_dict({m: flint.fmpq(c) for m, c in zip(p.monoms(), p.coeffs())})
+        rem = divmod(q, self.C)[1]
+        den = 1
+        for c in rem.coeffs():
+            den = den * int(c.q) // flint.fmpz(den).gcd(int(c.q)) if c.q != 1 else den
+        terms = {m: int(c * den) for m, c in zip(rem.monoms(), rem.coeffs())}
+        return LRCTX.from_dict(terms), den
+
+    def __call__(self, F: Frac) -> Frac:
+        n, a = self.poly(F.num)
+        d, b = self.poly(F.den)
+        if d.is_zero():
+            raise ZeroDivisionError("a denominator vanishes modulo the sextic")
+        return Frac(n * b, d * a)
+
+
+class Ext:
+    """Polynomials in (κ, r) (:class:`Frac` with a constant denominator) affine in y, with
+    y² = T y - κ D² (y = D λ, T = D t: :func:`five_candidate`), reduced modulo the sextic."""
+
+    def __init__(self, T: Frac, D: Frac, red: Reducer):
+        self.T, self.D2k, self.red = T, red(LR_LAMBDA * D * D), red
+
+    def mul(self, u: tuple, v: tuple) -> tuple:
+        """(A + yB)(C + yE) = AC - κD²BE + y(AE + BC + T BE)."""
+        be = self.red(u[1] * v[1])
+        return (self.red(u[0] * v[0] - self.D2k * be), self.red(u[0] * v[1] + u[1] * v[0] + self.T * be))
+
+
+@dataclass
+class FiveCandidate:
+    """The κ-route candidate of a five-particle word: what :class:`.feasibility.Analysis` reads
+    (``spectrum`` of the sextic, ``abcd`` with c y² = (a - d) y + b the relation of y = Dλ,
+    ``Mq``, ``word``) and the data, all polynomials in (κ, r) (affine in y) reduced modulo the sextic."""
+
+    word: str
+    Mq: list
+    spectrum: Spectrum
+    abcd: tuple
+    abcd_ring: tuple
+    T: Frac                  # D t (t = λ + μ)
+    D: Frac                  # y = D λ
+    p0: list                 # p̂ ∝ p(0) (an unknown sign, the same for every gap), p̂_Y = 0
+    q0: list                 # (A, B): q̄ = A + yB, the true q(0) is -sign(q̄_{i₁}(0)) times q̄
+    cp4: list                # the quartic's coefficients c₁..c₄ (Frac in r)
+    ext: Ext
+    face: int                # Y, the gap of the last letter
+    steps: list              # [(letter, p̂_k = ι P_k, q̄(t_{k-1}), q̄(t_k))]
+    q0_other: tuple = ()
+
+
+def eigen_plane(W, red) -> list:
+    """A κ-eigenvector Π of Λ²M (Frac in (κ, r)): the last coordinate 1, the others from the first
+    five rows of (Λ²M - κI)Π = 0 by elimination over Q(κ, r), every pivot non-zero modulo κ's
+    polynomial (ArithmeticError otherwise: the route needs another normalisation there)."""
+    A = [[flint_poly_to_frac(W[i][j]) - (LR_LAMBDA if i == j else Frac.of(0)) for j in range(6)] for i in range(6)]
+    rows = [A[i][:5] + [-A[i][5]] for i in range(5)]
+    for c in range(5):
+        piv = next((i for i in range(c, 5) if not red(rows[i][c]).is_zero()), None)
+        if piv is None:
+            raise ArithmeticError("Λ²M - κI has no pivot in a column: the plane is not normalised by its last "
+                                  "coordinate")
+        rows[c], rows[piv] = rows[piv], rows[c]
+        inv = rows[c][c].inverse()
+        rows[c] = [e * inv for e in rows[c]]
+        for i in range(5):
+            if i != c and not rows[i][c].is_zero():
+                f = rows[i][c]
+                rows[i] = [a - f * b for a, b in zip(rows[i], rows[c])]
+    return [rows[i][5] for i in range(5)] + [Frac.of(1)]
+
+
+def matvec(M, v, red) -> list:
+    return [red(sum((flint_poly_to_frac(M[i][j]) * v[j] for j in range(len(v))), Frac.of(0))) for i in range(len(M))]
+
+
+def _polynomial(F: Frac) -> bool:
+    return F.den.total_degree() <= 0
+
+
+def sextic_factors(word: str) -> list:
+    """The irreducible factors of cp(Λ²M_w) in κ (over Q[r], monic: the sextic is monic), each with
+    its multiplicity, as elements of the engine's ring (κ written λ)."""
+    M = system_matrix_flint(of_particles(5), word)
+    _, terms = ring_to_mpoly(charpoly_ring(second_compound(M))).factor()
+    out = []
+    for f, e in terms:
+        if f.degrees()[1] == 0:
+            continue                                   # a constant in κ (the sextic is monic: none but ±1)
+        g = mpoly_to_ring(f)
+        lead = g.coeff_wrt(RING.gens[0], g.degree(RING.gens[0]))
+        if not lead.is_ground:
+            raise ArithmeticError("a factor of the monic sextic with a leading coefficient in r")
+        out.append((g.quo_ground(lead.LC), int(e)))
+    return out
+
+
+@cache
+def five_candidate(word: str, factor=None) -> FiveCandidate:
+    """The κ-route candidate of a word of five particles (see the module's docstring), κ a root of
+    ``factor`` (an irreducible factor of cp(Λ²M) of multiplicity 1, by default the sextic itself)."""
+    letters = alphabet(5)
+    M = system_matrix_flint(of_particles(5), word)
+    W = second_compound(M)
+    ring_cp = charpoly_ring(W) if factor is None else factor      # det(κI - Λ²M), κ written λ in the ring
+    spectrum = Spectrum(None, ring_cp)
+    red = Reducer(ring_cp)
+    Pi = eigen_plane(W, red)
+    common = Frac(Pi[0].den)
+    for e in Pi[1:]:
+        common = Frac(common.num * e.den / common.num.gcd(e.den)) if not e.den.is_one() else common
+    Pi = [red(e * common) for e in Pi]
+    if not all(_polynomial(e) for e in Pi) or all(e.is_zero() for e in Pi):
+        raise ArithmeticError("the eigenvector of Λ²M did not clear its denominators")
+    Y = letters.index(word[-1])
+    p_hat = contract(Pi, Y)
+    Mp = matvec(M, p_hat, red)
+    MMp = matvec(M, Mp, red)
+    j = next((j for j in range(4) if not Mp[j].is_zero()), None)
+    if j is None:
+        raise ArithmeticError("M p̂ vanishes")
+    T, D = red(MMp[j] + LR_LAMBDA * p_hat[j]), Mp[j]          # t = T/D
+    ext = Ext(T, D, red)
+    q0 = [(red(D * Mp[k] - T * p_hat[k]), p_hat[k]) for k in range(4)]      # D(M p - μ p), y = Dλ
+    # the engine's position fixed point: c y² = (a - d) y + b with c = 1, a = T, b = -κD², d = 0
+    a, b, c, d = (T, -ext.D2k, Frac.of(1), Frac.of(0))
+    abcd_ring = tuple(_ring(e) for e in (a, b, c, d))
+    abcd = tuple(frac_to_field(e) for e in (a, b, c, d))
+    cp4 = [flint_poly_to_frac(flint.fmpq_poly(cf)) for cf in charpoly_coefficients(M)[1:]]
+    steps = run(word, Pi, q0, red)
+    return FiveCandidate(word, M, spectrum, abcd, abcd_ring, T, D, p_hat, q0, cp4, ext, Y, steps)
+
+
+def _ring(F: Frac):
+    """A Frac with a constant denominator as an element of the engine's ring."""
+    if not _polynomial(F):
+        raise ValueError("not a polynomial")
+    return lr_to_ring(F.num, int(F.den.coeffs()[0]))
+
+
+
+def contract(P: list, i: int) -> list:
+    """ι_i P: the vector (P_{li} for l < i, 0, -P_{il} for l > i) of a bivector P = p ∧ q with p_i = 0,
+    which is q_i·p (P_{li} = p_l q_i - p_i q_l, P_{il} = p_i q_l - p_l q_i)."""
+    coord = dict(zip(PAIRS, P))
+    return [coord[(m, i)] if m < i else (-coord[(i, m)] if m > i else Frac.of(0)) for m in range(4)]
+
+
+def wedge_collide(letter: str, P: list, red) -> list:
+    """Λ²K_i P: the bivector of the plane after the collision (K_i fixes the face of pair i
+    pointwise, so p ∧ q ↦ p ∧ K_i q; certificate B1)."""
+    zero, one = Frac.of(0), Frac.of(1)
+    cols = [collide_gaps(letter, tuple(one if m == j else zero for m in range(4)), LR_R) for j in range(4)]
+    K = [[cols[j][m] for j in range(4)] for m in range(4)]
+    out = []
+    for (i, j) in PAIRS:
+        total = zero
+        for (k, m), e in zip(PAIRS, P):
+            c = K[i][k] * K[j][m] - K[i][m] * K[j][k]
+            if not c.is_zero():
+                total = total + c * e
+        out.append(red(total))
+    return out
+
+
+def run(word: str, Pi: list, q0: list, red) -> list:
+    """The run through the plane: P_k = Λ²K_{i_k} P_{k-1} (free flight keeps p ∧ q), p̂_k = ι_{i_k} P_k =
+    q_{i_k}(t_k⁺)·c·p(t_k) (c the scale of Π against p(0) ∧ q(0)), q̄(t_k) = K_{i_k} q̄(t_{k-1}) (q̄ a
+    multiple of q(0), affine in y); [(letter, p̂_k, q̄(t_{k-1}), q̄(t_k))]."""
+    letters = alphabet(5)
+    P, q, out = list(Pi), list(q0), []
+    for letter in word:
+        i = letters.index(letter)
+        P = wedge_collide(letter, P, red)
+        before = q
+        parts = [collide_gaps(letter, tuple(e[part] for e in q), LR_R) for part in (0, 1)]
+        q = [(red(a), red(b)) for a, b in zip(*parts)]
+        out.append((letter, contract(P, i), before, q))
+    return out
+
+
+def _req(name: str, u: tuple, sign: int) -> Requirement:
+    return Requirement(name, (frac_to_field(u[0]), frac_to_field(u[1])), sign)
+
+
+def requirements(cand: FiveCandidate) -> dict:
+    """The requirements of each stage (see the module's docstring), in the order imposed:
+    {"exists": [...], "feasible": [[...] per collision], "stable": [...]}.  With y = Dλ,
+    T = Dt: λ > 0 is D y > 0, μ > 0 is D(T - y) > 0, λ - μ > 0 is D(2y - T) > 0, and D²(μ² ∓ …)
+    are affine in y (D²μ² = T² - κD² - T y)."""
+    Y, T, D, red, ext = cand.face, cand.T, cand.D, cand.ext.red, cand.ext
+    zero = Frac.of(0)
+    j0 = next(j for j in range(4) if j != Y and not cand.p0[j].is_zero())
+    exists = [_req("λ", (zero, D), 1), _req("μ", (red(D * T), -D), 1)]
+    exists += [_req(f"p_{j + 1}(0)", (red(cand.p0[j] * cand.p0[j0]), zero), 1) for j in range(4) if j not in (Y, j0)]
+    feasible = []
+    letters = alphabet(5)
+    i1 = letters.index(cand.word[0])
+    sign_q = cand.q0[i1]                  # the true q(0) is -sign(q̄_{i₁}(0)) q̄
+    previous = Y
+    for k, (letter, p, before, _after) in enumerate(cand.steps, 1):
+        i = letters.index(letter)
+        name = f"q_{i + 1}(t_{k - 1})·q̄_{i1 + 1}(0)" if k > 1 else f"q̄_{i1 + 1}(0)²"
+        group = [_req(name, ext.mul(before[i], sign_q), 1)]
+        # with the approach at k, p_m(t_k) has the sign of p̂_k,m · p̂_0,j₀
+        group += [_req(f"p_{m + 1}(t_{k})", (red(p[m] * cand.p0[j0]), zero), 1) for m in range(4)
+                  if m not in (i, previous)]
+        feasible.append(group)
+        previous = i
+    c1, c2 = cand.cp4[0], cand.cp4[1]
+    Ds = red(c1 * D + T)                                     # D s
+    D2p = red(c2 * D * D + T * Ds - LR_LAMBDA * D * D)       # D² p
+    D2mu2 = (red(T * T - LR_LAMBDA * D * D), -T)             # D² μ² = T² - κD² - T y
+    sDmu = (red(Ds * T), -Ds)                                # D s · D μ
+    stable = [_req("λ - μ", (red(-D * T), red(Frac.of(2) * D)), 1),
+              _req("μ² - p", (D2mu2[0] - D2p, D2mu2[1]), 1),
+              _req("μ² + sμ + p", (D2mu2[0] + sDmu[0] + D2p, D2mu2[1] + sDmu[1]), 1),
+              _req("μ² - sμ + p", (D2mu2[0] - sDmu[0] + D2p, D2mu2[1] - sDmu[1]), 1)]
+    return {"exists": exists, "feasible": feasible, "stable": stable}
+
+
+def normal_form(word: str) -> tuple[str, str]:
+    """The least rotation of the word or of its mirror image (a <-> d, b <-> c: particles numbered
+    from the right), and why it is the same orbit."""
+    letters = alphabet(5)
+    mirror = word.translate(str.maketrans(letters, letters[::-1]))
+    best = min((w[k:] + w[:k], w is mirror) for w in (word, mirror) for k in range(len(word)))
+    why = "the least rotation" + (" of the mirror image (a<->d, b<->c)" if best[1] else "")
+    return best[0], why
+
+
+def read_five(text: str) -> tuple[str, str]:
+    """(normal form, explanation) of a five-particle word over a, b, c, d; UsageError (one line)
+    for another letter, a pair twice in a row (cyclically), a pair never used, or a proper power."""
+    from certify.dynamics.model import check_word
+    from certify.errors import UsageError
+    word = check_word("".join(str(text).split()), 5)
+    if set(word) != set(alphabet(5)):
+        raise UsageError(f"invalid pattern word {text!r}: a five-particle word uses every pair a, b, c, d")
+    n = len(word)
+    root = next((d for d in range(1, n) if n % d == 0 and word == word[:d] * (n // d)), None)
+    if root is not None:
+        raise UsageError(f"invalid pattern word {text!r}: a proper power of {word[:root]!r}")
+    return normal_form(word)
+
+
+def analyse_five(text: str, lo=0, hi=1, progress=None):
+    """The exact analysis of a five-particle word over ]lo, hi[ (certified like
+    :func:`.pattern.analyse`: the κ-route candidate, the requirements of :func:`requirements`
+    imposed by :class:`.feasibility.Analysis`), as a :class:`.pattern.PatternResult`."""
+    import time
+
+    from certify.algebra.branches import BRANCH_NAMES
+    from certify.algebra.poly import mpoly_to_univariate, primitive, show_collected, show_factored
+
+    start = time.perf_counter()
+    lo, hi = check_range(lo, hi)
+    normal, why = read_five(text)
+    factors = sextic_factors(normal)
+    regions: dict = {"exists": [], "feasible": [], "stable": []}
+    sets: dict = {"exists": [], "feasible": [], "stable": []}
+    undecided: list = []
+    conditions: dict = {}
+    cands = []
+    tick = progress or (lambda k, n, label="": None)
+    for number, (factor, multiplicity) in enumerate(factors, 1):
+        label = f"factor {number} of cp(Λ²M), " if len(factors) > 1 else ""
+        if multiplicity > 1:
+            undecided.append(f"{label}κ a root of multiplicity {multiplicity} of cp(Λ²M) on all of ]{lo}, {hi}[: "
+                             "its eigenplane is not unique (not analysed)")
+            continue
+        try:
+            cand = five_candidate(normal, factor if len(factors) > 1 else None)
+        except ArithmeticError as e:
+            undecided.append(f"{label}on all of ]{lo}, {hi}[: {e} (not analysed)")
+            continue
+        cands.append(cand)
+        reqs = requirements(cand)
+        total = len(reqs["feasible"]) + 2
+        an = Analysis(cand, lo, hi)
+        stage_regions = {}
+        for q in reqs["exists"]:
+            an.impose(q)
+        stage_regions["exists"] = _copy(an.regions)
+        tick(1, total, "exists")
+        for m, group in enumerate(reqs["feasible"], 1):
+            for q in sorted(group, key=lambda q: q.has_x):
+                an.impose(q)
+            tick(1 + m, total, f"collision {m} of {len(reqs['feasible'])}")
+        stage_regions["feasible"] = _copy(an.regions)
+        for q in reqs["stable"]:
+            an.impose(q)
+        stage_regions["stable"] = _copy(an.regions)
+        tick(total, total, "stable")
+        for stage, rs in stage_regions.items():
+            regions[stage] += rs
+            sets[stage] += [dict(d, branch=label + d["branch"]) for d in _nonempty(rs)]
+        conditions = {"exists": [_cond(q) for q in reqs["exists"]] + ["λ real"],
+                      "feasible": [_cond(q) for g in reqs["feasible"] for q in g],
+                      "stable": [_cond(q) for q in reqs["stable"]]}
+        names = [BRANCH_NAMES[R.branch] if R.branch < len(BRANCH_NAMES) else f"κ{R.branch}" for R in an.regions]
+        undecided += sorted({f"{label}{name} {R.fixed_point} at {_short(rc)}: {why_}"
+                             for name, R in zip(names, an.regions) for rc, why_ in R.undecided})
+    if not conditions:
+        conditions = {stage: [] for stage in ("exists", "feasible", "stable")}
+
+    def printed():
+        M = [[show_factored(e) for e in row] for row in system_matrix_flint(of_particles(5), normal)]
+        datum = {"κ": "λμ, a root of cp(Λ²M) (the branch)", "λ": "x = (T ± √(T² - 4κD²))/(2D) (x₊, x₋: the two "
+                 "orderings of the pair)", "p(0)": "ι_Y Π, Π the κ-eigenvector of Λ²M, Y the last letter's gap",
+                 "q(0)": "∝ M p(0) - μ p(0), q of the first letter's gap < 0"}
+        whole = charpoly_ring(second_compound(system_matrix_flint(of_particles(5), normal)))
+        return M, show_factored(primitive(mpoly_to_univariate(ring_to_mpoly(whole).discriminant("lam")))), datum
+    cp_text = lambda: show_collected(charpoly_ring(second_compound(system_matrix_flint(of_particles(5), normal))),  # noqa: E731
+                                     "λ").replace("λ", "κ")
+    res = FiveResult(text, normal, "five", why, (lo, hi), cp_text, sets["exists"], sets["feasible"], sets["stable"],
+                     undecided, conditions, None, "", 0.0, regions, printed)
+    res.verdict = verdict(res)
+    res.seconds = time.perf_counter() - start
+    return res
+
+
+
+class FiveResult(PatternResult):
+    """The :class:`.pattern.PatternResult` of a five-particle word: cp is the sextic cp(Λ²M) in κ = λμ,
+    and stability is λ > μ > |ν| (its Markdown names them; the JSON's fields are the pattern schema's)."""
+
+    def markdown(self) -> str:
+        text = super().markdown()
+        for old, new in (("cp(M) = `", "cp(Λ²M) in κ = λμ = `"), ("disc_λ cp(M) = `", "disc_κ cp(Λ²M) = `"),
+                         ("## Stable (λ dominant, fixed point attracting)",
+                          "## Stable (λ > μ > |ν| for the other eigenvalues ν: λ dominant, the plane attracting)")):
+            text = text.replace(old, new, 1)
+        return text
+
+
+def word_classes(max_length: int):
+    """One word per class (rotations, mirror a<->d, b<->c) of the five-particle periods of 4..max_length
+    collisions: every pair used, no pair twice in a row (cyclically), not a proper power; each its
+    :func:`normal_form`, shortest first, then in lexicographic order."""
+    letters = alphabet(5)
+    for n in range(len(letters), max_length + 1):
+        found = set()
+        for t in itertools.product(letters, repeat=n - 1):
+            w = "a" + "".join(t)                      # every class has a rotation starting with a
+            if any(w[k] == w[(k + 1) % n] for k in range(n)) or len(set(w)) < len(letters):
+                continue
+            if any(n % d == 0 and w == w[:d] * (n // d) for d in range(1, n)):
+                continue
+            found.add(normal_form(w)[0])
+        yield from sorted(found)
+
+
+def census_five(max_length: int, progress=None) -> dict:
+    """``certify census --particles 5``: every class of :func:`word_classes` analysed by
+    :func:`analyse_five` over ]0, 1[; per word its certified stable and feasible windows (exact ends)
+    and its undecided points; per length the number of words and the seconds; the largest r of stable
+    and of feasible self-similar collapse (the largest upper end of a window or isolated point: exact),
+    the largest undecided point (where the proof ends) and the words with a factor of cp(Λ²M) not
+    analysed (a repeated factor: the largest r are certified for the other words and factors only)."""
+    import time
+
+    from certify.algebra.branches import less
+
+    from .pattern import end_data
+    words = list(word_classes(max_length))
+    records, lengths = [], {}
+    best: dict = {"stable": None, "feasible": None, "undecided": None}
+    whole: list = []
+    for k, w in enumerate(words):
+        if progress is not None:
+            progress(k, len(words), w)
+        start = time.perf_counter()
+        res = analyse_five(w)
+        seconds = time.perf_counter() - start
+        entry = lengths.setdefault(len(w), {"words": 0, "seconds": 0.0})
+        entry["words"] += 1
+        entry["seconds"] += seconds
+        rec = {"word": w, "seconds": round(seconds, 2), "undecided": res.undecided}
+        if any("not analysed" in u for u in res.undecided):
+            whole.append(w)
+        for stage in ("stable", "feasible", "undecided"):
+            if stage == "undecided":
+                tops = [rc for R in res.regions["stable"] for rc, _ in R.undecided]
+            else:
+                rec[stage] = [s["set"] for s in getattr(res, stage)]
+                tops = [hi for *_, hi in res.intervals(stage)] + [at for *_, at in res.points(stage)]
+            for top in tops:
+                if best[stage] is None or less(best[stage][0], top):
+                    best[stage] = (top, w)
+        records.append(rec)
+    if progress is not None:
+        progress(len(words), len(words), "")
+    out = {"max_length": max_length, "words": len(words), "records": records,
+           "lengths": {n: {"words": e["words"], "seconds": round(e["seconds"], 1)} for n, e in sorted(lengths.items())}}
+    for stage, found in best.items():
+        out[f"largest_{stage}"] = None if found is None else {"r": end_data(found[0]), "word": found[1]}
+    out["stable_words"] = [{"word": r["word"], "windows": r["stable"]} for r in records if r["stable"]]
+    out["undecided_words"] = [r["word"] for r in records if r["undecided"]]
+    out["not_analysed_words"] = whole         # a factor of cp(Λ²M) not analysed on the whole range
+    return out

@@ -1,0 +1,251 @@
+"""certify pattern on five-particle words (the κ route, certify/patterns/five.py): abadcbcabc's exact
+stable window against the float search (tools/five_particle_search.py), an exact five-particle run
+from the certified datum, and mutants (a dropped condition, a moved end) caught."""
+import importlib.util
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import flint
+import pytest
+
+from certify.dynamics.particles import evolve
+from certify.patterns import five
+
+ROOT = Path(__file__).resolve().parents[2]
+spec = importlib.util.spec_from_file_location("five_particle_search", ROOT / "tools" / "five_particle_search.py")
+search = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(search)
+WORD = "abadcbcabc"
+
+
+@pytest.fixture(scope="module")
+def result():
+    return five.analyse_five(WORD)
+
+
+def _window(result):
+    (w,) = result.intervals("stable")
+    return w
+
+
+def test_the_stable_window_has_exact_ends(result):
+    """One window; its upper end is 2 - √3 (r² - 4r + 1, checked by SymPy), its lower end a root of
+    an exhibited polynomial where the float search's stability changes (bisected in floats)."""
+    import sympy as sp
+    w = _window(result)
+    r = sp.Symbol("r")
+    hi = [int(c) for c in w.hi.minimal_polynomial().coeffs()]
+    assert sp.Poly(list(reversed(hi)), r) == sp.Poly(r ** 2 - 4 * r + 1, r)
+    assert abs(float(w.hi.digits(15)) - float(2 - sp.sqrt(3))) < 1e-12
+    lo = float(w.lo.digits(15))
+    stable = lambda x: any(s for *_, s in search.data(WORD, x, 5))   # noqa: E731
+    assert abs(search.bisect(stable, 0.249, 0.252) - lo) < 1e-9
+    assert w.lo.minimal_polynomial().degree() > 2
+
+
+@pytest.mark.parametrize("k", range(1, 20))
+def test_the_window_against_the_float_search(result, k):
+    """Stable at r exactly where the exact window says so, on a grid over [0.2, 0.3] (away from the ends)."""
+    w = _window(result)
+    r = 0.2 + k * 0.005
+    a, b = float(w.lo.digits(15)), float(w.hi.digits(15))
+    if min(abs(r - a), abs(r - b)) < 1e-4:
+        return
+    assert (a < r < b) == any(s for *_, s in search.data(WORD, r, 5))
+
+
+def test_a_moved_end_is_caught(result):
+    """The floats are stable just above the certified lower end and not just below it: an end moved by
+    1e-7 either way would contradict them."""
+    lo = float(_window(result).lo.digits(15))
+    stable = lambda x: any(s for *_, s in search.data(WORD, x, 5))   # noqa: E731
+    assert stable(lo + 1e-7) and not stable(lo - 1e-7)
+
+
+def test_a_dropped_condition_is_caught():
+    """Without Jury's condition μ² - p > 0 (the other pair inside the disc of radius μ) the stable set is
+    strictly larger: the condition is not idle."""
+    from certify.patterns.feasibility import Analysis
+    cand = five.five_candidate(WORD)
+    reqs = five.requirements(cand)
+    an = Analysis(cand, flint.fmpq(1, 5), flint.fmpq(3, 10))
+    for q in reqs["exists"] + [q for g in reqs["feasible"] for q in g] + \
+            [q for q in reqs["stable"] if q.name != "μ² - p"]:
+        an.impose(q)
+    spans = [s for R in an.regions for s in R.merged()[0]]
+    assert any(float(a.digits(12)) < 0.25 for a, _ in spans)
+
+
+def _datum(r0: flint.fmpq, prec: int = 400):
+    """p(0), q(0) (gaps, balls) of the stable datum at a rational r0 inside the window, from the candidate's
+    exact formulas: κ the certified branch, λ the root of x² - t x + κ of the stable region."""
+    cand = five.five_candidate(WORD)
+    (R,) = [R for R in five.analyse_five(WORD, flint.fmpq(1, 4), flint.fmpq(27, 100)).regions["stable"] if R.pieces]
+    kappa = cand.spectrum.real_eigenvalues(r0)[R.branch].arb(prec)
+    flint.ctx.prec = prec
+    rr = flint.arb(r0)
+
+    def ev(F):
+        def poly(P):
+            return sum((flint.arb(int(c)) * kappa ** e[0] * rr ** e[1] for e, c in zip(P.monoms(), P.coeffs())),
+                       flint.arb(0))
+        return poly(F.num) / poly(F.den)
+    T, D = ev(cand.T), ev(cand.D)
+    sigma = 1 if R.fixed_point == "x₊" else -1
+    y = (T + sigma * (T * T - 4 * kappa * D * D).sqrt()) / 2
+    p = [ev(e) for e in cand.p0]
+    q = [ev(a) + y * ev(b) for a, b in cand.q0]
+    i1 = "abcd".index(WORD[0])
+    s = -1 if q[i1] > 0 else 1
+    j0 = next(j for j in range(4) if j != cand.face and p[j] != 0)
+    t = 1 if p[j0] > 0 else -1
+    return [t * e for e in p], [s * e for e in q]
+
+
+def test_an_exact_particle_run_from_the_certified_datum():
+    """At r = 13/50 (inside the window) the datum, rounded to rationals after half the first flight, is run
+    exactly with five particles (simulate's evolve): three periods of the word, collision by collision."""
+    r0 = flint.fmpq(13, 50)
+    p, q = _datum(r0)
+    i1 = "abcd".index(WORD[0])
+    tau = -p[i1] / q[i1] / 2
+    gaps = [p[j] + tau * q[j] for j in range(4)]
+    def rational(b):
+        return flint.fmpq(int((b * 2 ** 200).mid().floor().unique_fmpz()), 2 ** 200)
+    x = [flint.fmpq(0)]
+    v = [flint.fmpq(0)]
+    for g, u in zip(gaps, q):
+        x.append(x[-1] + rational(g))
+        v.append(v[-1] + rational(u))
+    history = evolve(x, v, r0, 3 * len(WORD), particles=5)
+    assert history.word == WORD * 3
+
+
+def test_the_cli_json_follows_the_pattern_schema():
+    import jsonschema
+    out = subprocess.run([sys.executable, "-m", "certify", "pattern", WORD, "--json", "--r-range", "1/4", "27/100"],
+                         cwd=ROOT, capture_output=True, text=True, check=True).stdout
+    doc = json.loads(out)
+    schema = json.loads((ROOT / "certify" / "patterns" / "pattern.schema.json").read_text())
+    jsonschema.validate(doc, schema)
+    assert doc["system"] == "five" and doc["stable"]
+
+
+def test_bad_five_particle_words_are_one_line_errors():
+    """Another letter, a pair twice in a row (cyclically), a pair never used, a proper power."""
+    for word in ("abadcbcabe", "abcdd", "abad", "abdcabdc"):
+        res = subprocess.run([sys.executable, "-m", "certify", "pattern", word], cwd=ROOT, capture_output=True,
+                             text=True)
+        assert res.returncode == 2 and "Traceback" not in res.stderr and len(res.stderr.strip().splitlines()) == 1
+
+
+def test_the_two_stability_criteria_agree():
+    """For λ > μ > 0 real and two other eigenvalues (a real pair or a complex pair): λ > μ > |ν| for both
+    iff κ = λμ strictly dominates the five other products of two eigenvalues (the module's argument),
+    on random spectra and on the word's at r on a grid."""
+    import random
+
+    import numpy as np
+    rng = random.Random(5)
+
+    def agree(ev):
+        lam, mu, *rest = ev
+        direct = lam > mu > max(abs(v) for v in rest)
+        products = [ev[i] * ev[j] for i in range(4) for j in range(i + 1, 4) if (i, j) != (0, 1)]
+        return direct == all(abs(lam * mu) > abs(p) for p in products)
+    for _ in range(2000):
+        mu = rng.uniform(0.01, 2)
+        lam = mu + rng.uniform(0.001, 2)
+        if rng.random() < 0.5:
+            rest = [rng.uniform(-3, 3), rng.uniform(-3, 3)]
+        else:
+            z = complex(rng.uniform(-2, 2), rng.uniform(0.01, 2))
+            rest = [z, z.conjugate()]
+        assert agree([lam, mu, *rest])
+    for k in range(1, 60):
+        ev = sorted(np.linalg.eigvals(search.period_matrix(WORD, 4, k / 60)), key=lambda z: -abs(z))
+        real = sorted((z.real for z in ev if abs(z.imag) < 1e-12 and z.real > 0), reverse=True)
+        if len(real) >= 2:
+            rest = list(ev)
+            for v in real[:2]:
+                rest.pop(int(np.argmin([abs(z - v) for z in rest])))
+            assert agree([real[0], real[1], *rest])
+
+
+def test_a_repeated_factor_of_the_sextic_is_named_not_analysed():
+    """abcacd: cp(Λ²M) has a repeated factor in κ (its plane is not unique there): that factor is listed as
+    undecided on the whole range, the other analysed, no traceback."""
+    res = five.analyse_five("abcacd")
+    assert any("multiplicity 2" in u and "not analysed" in u for u in res.undecided)
+    assert [m for _, m in five.sextic_factors("abcacd")].count(2) == 1
+
+
+def test_the_word_classes_are_the_search_tools():
+    """The census's classes (normal forms) are the float search's, independently enumerated, to length 8."""
+    assert list(five.word_classes(8)) == sorted(search.words(8, 5), key=lambda w: (len(w), w))
+
+
+@pytest.fixture(scope="module")
+def census5():
+    return five.census_five(5)
+
+
+def test_the_census_against_the_float_search(census5):
+    """Every word of the census to 5: feasible at r on a grid (away from the ends) exactly where the float
+    search finds a feasible datum, for the words whose every factor was analysed; the largest feasible r
+    is 3 - 2√2 (SymPy), attained by one of its words."""
+    import sympy as sp
+    for rec in census5["records"]:
+        if rec["word"] in census5["not_analysed_words"]:
+            continue
+        res = five.analyse_five(rec["word"])
+        spans = [(float(w.lo.digits(15)), float(w.hi.digits(15))) for w in res.intervals("feasible")]
+        for k in range(1, 50):
+            r = k / 50
+            if any(min(abs(r - a), abs(r - b)) < 1e-3 for a, b in spans):
+                continue
+            assert any(a < r < b for a, b in spans) == bool(search.data(rec["word"], r, 5)), (rec["word"], r)
+    best = census5["largest_feasible"]
+    assert abs(float(best["r"]["digits"]) - float(3 - 2 * sp.sqrt(2))) < 1e-11
+    assert best["r"]["minimal_polynomial"] == "r^2 - 6r + 1"
+
+
+def test_the_census_command():
+    """census --particles 5 prints the summary; beyond its limit, another N, or a cluster option: one line, exit 2."""
+    run = lambda *a: subprocess.run([sys.executable, "-m", "certify", "census", *a], cwd=ROOT,  # noqa: E731
+                                    capture_output=True, text=True)
+    out = run("--particles", "5", "--max-length", "4")
+    assert out.returncode == 0 and "4 words up to length 4" in out.stdout
+    for bad in (["--particles", "5", "--max-length", "9"], ["--particles", "6", "--max-length", "4"],
+                ["--particles", "5", "--max-length", "4", "--resume"]):
+        res = run(*bad)
+        assert res.returncode == 2 and len(res.stderr.strip().splitlines()) == 1 and "Traceback" not in res.stderr
+
+
+def test_the_datum_is_exact():
+    """Exact identities modulo the sextic (and y² = T y - κD²): Π is a κ-eigenvector of Λ²M, the plane's
+    Cayley–Hamilton D M²p̂ - T M p̂ + κ D p̂ = 0, q̄ a λ-eigenvector (D M q̄ = y q̄), and each contraction
+    p̂_k = ι P_k vanishes on the face of its collision; a wrong t (T + D) breaks the second."""
+    from certify.algebra.poly import LR_LAMBDA, Frac
+    from certify.dynamics.systems import of_particles, system_matrix_flint
+    cand = five.five_candidate(WORD)
+    red, ext = cand.ext.red, cand.ext
+    M = system_matrix_flint(of_particles(5), WORD)
+    W = five.second_compound(M)
+    Pi = five.eigen_plane(W, red)
+    assert all(red(e - LR_LAMBDA * p).is_zero() for e, p in zip(five.matvec(W, Pi, red), Pi))
+    Mp = five.matvec(M, cand.p0, red)
+    MMp = five.matvec(M, Mp, red)
+    for T in (cand.T, cand.T + cand.D):
+        ch = [red(cand.D * a - T * b + LR_LAMBDA * cand.D * c) for a, b, c in zip(MMp, Mp, cand.p0)]
+        assert all(e.is_zero() for e in ch) == (T is cand.T)
+    Mq = [five.matvec(M, [q[part] for q in cand.q0], red) for part in (0, 1)]
+    y = (Frac.of(0), Frac.of(1))
+    for k in range(4):
+        lhs = (red(cand.D * Mq[0][k]), red(cand.D * Mq[1][k]))
+        rhs = ext.mul(y, cand.q0[k])
+        assert (lhs[0] - rhs[0]).is_zero() and (lhs[1] - rhs[1]).is_zero()
+    for letter, p, _, _ in cand.steps:
+        assert p["abcd".index(letter)].is_zero()
