@@ -18,10 +18,15 @@
                                 its feasible and stable r-sets: DIR/CENSUS.md,
                                 DIR/census.json, census-words.csv.gz (a row a
                                 word), census-windows.png
+    census --particles 5 --max-length L [--json]
+                                every five-particle word class up to length L ≤ 8:
+                                the largest r of stable and of feasible collapse,
+                                printed (no file written; certify.patterns.five)
     pattern WORD [--json] [--r-range LO HI]
                                 the exact analysis of one periodic word (ababcb,
-                                (ab)^3(cb)^3, [ac]b, ab): where in r self-similar data
-                                exist, are feasible, are stable (certify.patterns.pattern)
+                                (ab)^3(cb)^3, [ac]b, ab; five particles: abadcbcabc):
+                                where in r self-similar data exist, are feasible,
+                                are stable (certify.patterns.pattern, .five)
     family --n-max N [--out DIR] [--force]
                                 the stability windows of (ab)^n(cb)^n for n = 2..N,
                                 checked (one interval, above 7-4√3, hi_n a zero of q_2(0),
