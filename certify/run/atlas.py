@@ -1182,37 +1182,53 @@ def _short(text: str, n: int = 34) -> str:
 LABELLED_Q = 12        # atlas.png names the resonances p/q with q ≤ 12; the others (up to 40 near 3−2√2) are lines
 
 
+ZOOM = (0.1712, 0.1800)   # atlas.png's zoom: the windows accumulating on 3−2√2 ≈ 0.171573 from above
+
+
+def _bars(ax, atts: list[dict], colour: dict, lo: float, hi: float) -> None:
+    """One row per attractor: its certified windows inside [lo, hi] as bars, the sampled r where
+    data reached it as dots."""
+    for k, a in enumerate(atts):
+        for w in a["windows"]:
+            x0, x1 = max(float(w["lo"]["digits"]), lo), min(float(w["hi"]["digits"]), hi)
+            if x0 < x1:
+                ax.barh(k, x1 - x0, left=x0, height=0.6, color=colour[w["pair"]])
+        xs = [float(Fraction(r)) for r in a.get("seen_at", []) if lo <= float(Fraction(r)) <= hi]
+        ax.plot(xs, [k] * len(xs), "k.", ms=2)
+
+
 def figure(doc: dict, path) -> Path:
     """atlas.png: top, the island's rotation number ρ(r) on ]3−2√2, 1[ (certified digits at the
-    sampled r) with the windows' resonant ends (dotted; labelled p/q where q ≤ LABELLED_Q); middle,
-    one row per attractor, its certified
-    windows as bars and the sampled r where data reached it as dots; bottom, the observed
-    shares at each sampled r (island, attracting, unresolved).  Floats: a drawing only."""
+    sampled r) with the windows' resonant ends (dotted; labelled p/q where q ≤ LABELLED_Q); then
+    one row per attractor, its certified windows as bars and the sampled r where data reached it
+    as dots; then the observed shares at each sampled r (island, attracting, unresolved); bottom,
+    a zoom on :data:`ZOOM`, near 3−2√2, where the windows are too narrow at full width (the
+    attractors with a window there).  Floats: a drawing only."""
     from . import plots, saving
     plt = saving.pyplot()
     atts = doc["attractors"]
     rows = doc["r"]
     n = len(atts) + len(doc["without_window"])
+    zoomed = [a for a in atts if any(float(w["lo"]["digits"]) < ZOOM[1] and float(w["hi"]["digits"]) > ZOOM[0]
+                                     for w in a["windows"])]
+    m = max(len(zoomed), 4)
     lo, hi = (float(Fraction(x)) for x in doc["parameters"]["r_range"])
-    fig, (ax0, ax, bx) = plt.subplots(3, 1, sharex=True, figsize=(9, 3.4 + 0.22 * max(n, 4)),
-                                      gridspec_kw={"height_ratios": [1.2, max(n, 4) * 0.3, 1.4]})
+    fig, (ax0, ax, bx, zx) = plt.subplots(4, 1, figsize=(9, 4.6 + 0.22 * (max(n, 4) + m)),
+                                          gridspec_kw={"height_ratios": [1.2, max(n, 4) * 0.3, 1.4, m * 0.3]})
+    ax.sharex(ax0)
+    bx.sharex(ax0)
     isl = [(float(Fraction(r["r"])), float(r["island"]["rotation_number"])) for r in rows if r["island"]]
     if isl:
         ax0.plot(*zip(*isl), ".-", color="tab:green", ms=2, lw=0.8)
     ends = sorted({(float(x["hi"]), x["p"], x["q"]) for x in doc["summary"]["resonant_upper_ends"]})
     for x, _p, _q in ends:
-        if lo <= x <= hi:
-            for panel in (ax0, ax):
+        for panel, (a, b) in ((ax0, (lo, hi)), (ax, (lo, hi)), (zx, ZOOM)):
+            if a <= x <= b:
                 panel.axvline(x, color="grey", lw=0.4, ls=":")
     marks = {f"{p}/{q}": x for x, p, q in ends if lo <= x <= hi and q <= LABELLED_Q}   # the others: lines only
     ax0.set_ylabel("ρ", fontsize=8)
     colour = {"real": "tab:orange", "complex": "tab:red", "real and complex": "tab:purple"}
-    for k, a in enumerate(atts):
-        for w in a["windows"]:
-            x0, x1 = float(w["lo"]["digits"]), float(w["hi"]["digits"])
-            ax.barh(k, x1 - x0, left=x0, height=0.6, color=colour[w["pair"]])
-        xs = [float(Fraction(r)) for r in a["seen_at"]]
-        ax.plot(xs, [k] * len(xs), "k.", ms=2)
+    _bars(ax, atts, colour, lo, hi)
     for k, a in enumerate(doc["without_window"], start=len(atts)):
         xs = [float(Fraction(r)) for r in a["seen_at"]]
         ax.plot(xs, [k] * len(xs), "k.", ms=2)
@@ -1220,7 +1236,8 @@ def figure(doc: dict, path) -> Path:
     labels += [_short(a["attractor"]) + " (no window)" for a in doc["without_window"]]
     ax.set_yticks(range(len(labels)), labels, fontsize=6)
     ax.invert_yaxis()
-    ax.axvline(3 - 2 * 2 ** 0.5, color="grey", lw=0.6, ls="--")
+    for panel in (ax, zx):
+        panel.axvline(3 - 2 * 2 ** 0.5, color="grey", lw=0.6, ls="--")
     ax.set_title("certified attracting windows (bars; orange: real in-plane pair, red: complex) and the sampled r "
                  "where data reached each (dots)", fontsize=7)
     xs = [float(Fraction(r["r"])) for r in rows]
@@ -1239,6 +1256,14 @@ def figure(doc: dict, path) -> Path:
     bx.legend(fontsize=6, loc="center right", bbox_to_anchor=(-0.1, 0.5))   # in the margin: it covers no bar
     bx.set_xlim(lo, hi)
     bx.set_xlabel("r")
+    _bars(zx, zoomed, colour, *ZOOM)
+    zx.set_yticks(range(len(zoomed)), [_short(a["name"]) for a in zoomed], fontsize=6)
+    zx.set_ylim(len(zoomed) - 0.5 if zoomed else 3.5, -0.5)
+    zx.set_xlim(*ZOOM)
+    zx.set_xlabel("r", fontsize=8)
+    zx.tick_params(axis="x", labelsize=7)
+    zx.set_title(f"zoom on r in [{ZOOM[0]}, {ZOOM[1]}], just above 3−2√2 (dashed): the windows accumulating there, "
+                 "the same bars and dots", fontsize=7)
     for panel in (ax0, ax):                       # each panel its own r ticks
         panel.tick_params(labelbottom=True)
     fig.tight_layout()
