@@ -21,18 +21,24 @@ reaches each attractor, the island, or stays unresolved is *observed* (a finite 
 data), and the island's area on the b-section is certified as an interval
 (:func:`certify.patterns.island_theorem.island_fraction`).
 
-Families group the words by structure: the compact spelling with its exponents replaced by
-n (the block that repeats), and the island's rotation number at the ends of each window
-(a resonance p/q decided exactly by :func:`~certify.patterns.island_theorem.resonance_of`,
-q ≤ :data:`RESONANCE_Q`, else the certified ρ and the nearest p/q with q ≤ :data:`NEAR_Q`, said "near":
-observed).
+Families are rules (:data:`FAMILIES`): member k's word and the resonance at which its window
+closes, each member and the next one predicted certified by ``orbit``.  Every window end gets
+the island's rotation number (:func:`end_rotation`: a resonance p/q, q ≤ :data:`RESONANCE_Q`,
+decided exactly by :func:`~certify.patterns.island_theorem.resonance_of`, else the certified ρ
+and the nearest p/q with q ≤ :data:`NEAR_Q`, said "near": observed).
 
-:func:`run_atlas` runs the jobs (one per r, one per word) on any executor
+At each sampled r the horseshoe search of ``certify chaos`` runs (:func:`chaos_job`): where it
+proves one, chaos is certified at that r (on a set of measure zero); the unresolved orbits are
+said what they show (observed): a long transient, near a certified horseshoe, a word repeated
+without converging (the rotation number of its loop), or nothing recognised.  The shares get
+95 % intervals (:func:`wilson`, observed).
+
+:func:`run_atlas` runs the jobs (one per r, one per word, one horseshoe search per r) on any executor
 (:mod:`.executors`), appending each record to a JSON-lines state file as it arrives; with
 ``resume`` the records already there (same data and collisions) are reused.
 :func:`check_atlas` re-derives a document: the windows by ``orbit``, the cells by stitching
 again, each cell's attractors by ``orbit_at`` at an r inside, each orbit's class by
-``identify``, the island by ``island``.
+``identify``, the island by ``island``, each horseshoe by its exact proof again.
 """
 from __future__ import annotations
 
