@@ -314,9 +314,7 @@ def chaos_job(r: str, unresolved: list, collisions: int) -> dict:
         visits = None if frames is None else horseshoe.any_in_boxes(frames, pts[horseshoe.TRANSIENT_RETURNS:])
         curve = curves.rotation_estimate(pts, max(word.count("b"), 1)) if word else None
         if curve is not None:
-            rho = Fraction(curve["rotation"])
-            near = min((Fraction(p_, q_) for q_ in range(1, NEAR_Q + 1) for p_ in range(0, q_ + 1)
-                        if math.gcd(p_, q_) == 1), key=lambda f: (abs(f - rho), f.denominator))
+            near = Fraction(curve["rotation"]).limit_denominator(NEAR_Q)     # the nearest p/q, q ≤ NEAR_Q
             curve["near"] = [near.numerator, near.denominator]
         orbits.append({"index": index, "visits_horseshoe": visits, "curve": curve})
     return {"kind": "chaos", "r": str(q), "collisions": collisions, "horseshoe": hs, "orbits": orbits,
@@ -682,8 +680,7 @@ def _rotation(x: Algebraic, Q: int) -> dict | None:
     if pq is not None:
         return {"rho": digits, "resonance": list(pq), "near": None}
     mid = _fraction((lo + hi) / 2)
-    best = min((Fraction(p, q) for q in range(2, NEAR_Q + 1) for p in range(1, q) if math.gcd(p, q) == 1),
-               key=lambda f: (abs(f - mid), f.denominator))
+    best = mid.limit_denominator(NEAR_Q)                         # the nearest p/q with q ≤ NEAR_Q
     return {"rho": digits, "resonance": None, "near": [best.numerator, best.denominator],
             "distance": f"{float(abs(best - mid)):.2e}"}
 

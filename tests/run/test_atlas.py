@@ -427,6 +427,31 @@ def test_the_committed_atlas_misses_no_seed_nor_family_member(monkeypatch):
     assert atlas.check_seeds(bad) and atlas.check_families(bad)
 
 
+def test_the_committed_atlas_horseshoes_intervals_and_loops_check():
+    """reports/atlas.json: its summaries, intervals and loops derived again from its rows; the
+    horseshoes of two sampled r proved again from their printed boxes and searched again;
+    a horseshoe dropped, a loop's rotation number or a share's interval altered is caught."""
+    from certify.run.files import load_findings
+    doc = load_findings("atlas.json")
+    if doc is None or doc["version"] < atlas.VERSION:
+        pytest.skip("the committed atlas predates version 3 (regenerate: docs/atlas.md)")
+    assert atlas.check_summaries(doc) == []
+    proved = [row for row in doc["r"] if (row["horseshoe"] or {}).get("certified")]
+    assert proved and doc["summary"]["horseshoes"]["proved"] == len(proved)
+    assert atlas.check_chaos(doc, [proved[0], proved[-1]]) == []
+    bad = copy.deepcopy(doc)
+    row = next(r for r in bad["r"] if r["r"] == proved[0]["r"])
+    row["horseshoe"] = {"certified": False, "tried": 0}
+    assert atlas.check_chaos(bad, [row]) and atlas.check_summaries(bad)
+    bad = copy.deepcopy(doc)
+    bad["curves"][0]["near"] = [[0, 1]]
+    assert atlas.check_summaries(bad)
+    bad = copy.deepcopy(doc)
+    cell = next(c for c in bad["cells"] if c["orbits"])
+    cell["intervals"][next(iter(cell["intervals"]))] = ["0.0000", "1.0000"]
+    assert atlas.check_summaries(bad)
+
+
 def test_a_window_end_is_found_a_resonance_with_a_large_denominator():
     """(abacbc)^9a(bcabac)^9bcb closes at ρ = 18/37 and the 122-letter word at 19/40: with
     resonances looked up to q ≤ 32 only, they read "near" (15 of 17 interior upper ends of a
