@@ -598,8 +598,17 @@ def _cmp(x: Algebraic, y: Algebraic) -> int:
     return 0 if x == y else -1 if x < y else 1
 
 
+_ALGEBRAIC: dict = {}
+
+
 def _alg(end) -> Algebraic:
-    return end if isinstance(end, Algebraic) else algebraic_of(end)
+    """The algebraic number of a window end as printed (:func:`algebraic_of`), read once per end."""
+    if isinstance(end, Algebraic):
+        return end
+    key = _end_key(end)
+    if key not in _ALGEBRAIC:
+        _ALGEBRAIC[key] = algebraic_of(end)
+    return _ALGEBRAIC[key]
 
 
 def attractors_of(words: list[dict]) -> list[dict]:
