@@ -944,9 +944,14 @@ def wilson(n: int, total: int, z: float = Z95) -> list[str] | None:
             f"{math.ceil(min(centre + half, 1.0) * 10 ** 4) / 10 ** 4:.4f}"]
 
 
+RULE_K = 16          # a window's word is given by a rule when it is member k ≤ RULE_K (certified range or not)
+
+
 def unruled(resonant: list[dict], attractors: list[dict]) -> list[dict]:
-    """The windows closing at an interior resonance whose word is in no family's rule."""
-    ruled = {a["name"] for a in attractors if a["family"]}
+    """The windows closing at an interior resonance whose word no rule of :data:`FAMILIES`
+    spells for any k ≤ :data:`RULE_K` (members past a rule's certified ones count as given)."""
+    spelt = {rule.word(k) for rule in FAMILIES for k in range(rule.first, RULE_K + 1)}
+    ruled = {a["name"] for a in attractors if a["family"] or a["word"] in spelt}
     return [{"attractor": x["attractor"], "p": x["p"], "q": x["q"]} for x in resonant
             if not x["island_end"] and x["attractor"] not in ruled]
 
@@ -1158,7 +1163,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
             out.append(f"| {m['k']} | {m['length']} | {wins} | {closing} | {status} |")
         out.append("")
     left = doc["summary"]["unruled_closings"]
-    out += ["Windows closing at an interior resonance whose word no rule above gives (no rule found): "
+    out += ["Windows closing at an interior resonance whose word no rule above spells, for any k ≤ "
+            f"{RULE_K} (no rule found): "
             + (", ".join(f"`{x['attractor']}` ({x['p']}/{x['q']})" for x in left) if left else "none") + ".", ""]
     out += ["## By the resonance at which the windows end", "",
             "The island's rotation number at a window's upper end, when it is exactly p/q (decided as algebraic "
