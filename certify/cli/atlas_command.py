@@ -22,12 +22,12 @@ def cmd_atlas(args) -> int:
     rs = atlas.r_values(lo, hi, args.resolution)
     data = atlas.data_grid(args.data)
     out = ensure_writable(args.out)
-    keep_larger(out / "atlas.json", "atlas", committed_size(out), size(lo, hi, args), args.force)
-    state = out / atlas.STATE
     params = {"r_range": [str(atlas.Fraction(lo)), str(atlas.Fraction(hi))], "resolution": args.resolution,
               "data": args.data, "collisions": args.collisions, "word_max": args.word_max,
               "word_seconds": args.word_seconds, "seeds": args.seeds, "refine": args.refine,
               "command": command_line(args)}
+    keep_larger(out / "atlas.json", "atlas", committed_size(out), size(params), args.force)
+    state = out / atlas.STATE
     seeds = atlas.seeds() if args.seeds == "known" else {}
     with executors.executor(args.jobs, args.scheduler) as ex:
         rrec, wrec = atlas.run_atlas(rs, data, args.collisions, ex, state, args.resume, progress=progress.Bar("job"),
@@ -49,24 +49,22 @@ def cmd_atlas(args) -> int:
     return 0
 
 
-def size(lo, hi, args) -> dict:
-    """The measures of an atlas's size: its r-range and grid, the orbits' length, the words'
-    limits (keep_larger compares them with the atlas already written)."""
-    return {"r-range": (lo, hi), "r values": args.resolution, "rounds of refinement": args.refine,
-            "initial data per r": args.data,
-            "collisions": args.collisions, "longest word": args.word_max, "seconds per word": args.word_seconds}
+def size(params: dict) -> dict:
+    """The measures of an atlas's size, from its parameters (as atlas.json holds them): its
+    r-range and grid, the orbits' length, the words' limits (keep_larger compares them with the
+    atlas already written)."""
+    from fractions import Fraction
+    return {"r-range": tuple(Fraction(x) for x in params["r_range"]), "r values": int(params["resolution"]),
+            "rounds of refinement": int(params.get("refine", 0)), "initial data per r": int(params["data"]),
+            "collisions": int(params["collisions"]), "longest word": int(params["word_max"]),
+            "seconds per word": int(params["word_seconds"])}
 
 
 def committed_size(out: Path) -> dict | None:
-    """The size of the atlas already in OUT/atlas.json (its parameters), or None."""
-    from fractions import Fraction
+    """The size of the atlas already in OUT/atlas.json (:func:`size` of its parameters), or None."""
     doc = load_findings("atlas.json", out)
     try:
-        p = doc["parameters"]
-        return {"r-range": tuple(Fraction(x) for x in p["r_range"]), "r values": int(p["resolution"]),
-                "rounds of refinement": int(p.get("refine", 0)),
-                "initial data per r": int(p["data"]), "collisions": int(p["collisions"]),
-                "longest word": int(p["word_max"]), "seconds per word": int(p["word_seconds"])}
+        return size(doc["parameters"])
     except (KeyError, TypeError, ValueError, ZeroDivisionError):
         return None
 

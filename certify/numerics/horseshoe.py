@@ -58,6 +58,7 @@ from certify.dynamics.reduction import cofactor
 
 ORIENTATION_INDEX = {"a": 1, "b": 2, "c": 0}        # t = i + 1 (mod 3) at the contact i
 BRANCHES = ("ab", "cb", "acb", "cab")              # the words of one b-to-b step (a step from b to b)
+TRANSIENT_RETURNS = 100                            # b-returns before a visit to the boxes counts (:func:`visits`)
 
 
 # --- exact: the branch of a word and its projective map ------------------------
@@ -157,6 +158,11 @@ class Box:
         return {"name": self.name, "word": self.word, "center": [str(z) for z in self.c],
                 "unstable": [str(z) for z in self.U], "stable": [str(z) for z in self.S],
                 "vertices": [[str(z) for z in p] for p in self.vertices()]}
+
+    @classmethod
+    def of_json(cls, d: dict) -> Box:
+        """The box of :meth:`as_json` (its rationals read exactly)."""
+        return cls(d["name"], d["word"], *(tuple(to_fmpq(z) for z in d[k]) for k in ("center", "unstable", "stable")))
 
 
 @dataclass
@@ -649,25 +655,40 @@ def _q(text: str) -> Fraction:
     return Fraction(text)
 
 
+def box_frames(boxes: list) -> list:
+    """Each box as (centre, the inverse of [U S]) in floats, for :func:`in_boxes`."""
+    return [(np.array([float(z) for z in b.c]),
+             np.linalg.inv(np.column_stack([[float(z) for z in b.U], [float(z) for z in b.S]]))) for b in boxes]
+
+
+def in_boxes(frames: list, z) -> bool:
+    """Whether the chart point z lies in one of the boxes (floats: observed)."""
+    return bool(any_in_boxes(frames, np.asarray(z, dtype=float).reshape(1, 2)))
+
+
+def any_in_boxes(frames: list, points: np.ndarray) -> bool:
+    """Whether one of the chart points (an n × 2 array) lies in one of the boxes (floats: observed)."""
+    return any(bool((np.abs((points - c) @ B.T).max(axis=1) <= 1).any()) for c, B in frames) if len(points) else False
+
+
 def visits(r, boxes: list, orbits: int = 100, returns: int = 2000, seed: int = 0) -> dict:
     """Observed (float64, not a proof): of ``orbits`` random orbits of f (u uniform in ]−1, 1[,
     v normal with deviation 3, seeded), how many enter some box within ``returns`` b-returns
     (after 100 transient ones), and the share of their returns spent in the boxes."""
     fm = FloatMap(r)
     rng = np.random.default_rng(seed)
-    frames = [(np.array([float(z) for z in b.c]),
-               np.linalg.inv(np.column_stack([[float(z) for z in b.U], [float(z) for z in b.S]]))) for b in boxes]
+    frames = box_frames(boxes)
     visiting = inside = counted = 0
     for _ in range(orbits):
         z = np.array([rng.uniform(-1, 1), 3 * rng.normal()])
         hit = False
-        for k in range(returns + 100):
+        for k in range(returns + TRANSIENT_RETURNS):
             z, _w = fm.step(z)
             if z is None:
                 break
-            if k >= 100:
+            if k >= TRANSIENT_RETURNS:
                 counted += 1
-                if any(np.abs(B @ (z - c)).max() <= 1 for c, B in frames):
+                if in_boxes(frames, z):
                     inside += 1
                     hit = True
         visiting += hit

@@ -40,6 +40,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from fractions import Fraction
 from functools import cache
 from pathlib import Path
 
@@ -883,12 +884,28 @@ def resonances(Q: int) -> list[Resonance]:
 
 def resonance_of(alg: Algebraic, Q: int) -> tuple[int, int] | None:
     """(p, q) when the algebraic number alg is a resonance with q ≤ Q, else None: the same
-    number (the same minimal polynomial, and isolating intervals that overlap however far
-    refined: Algebraic's exact equality)."""
+    number as a resonance r_{p/q} of :func:`resonances_of_q` (the same minimal polynomial, and
+    isolating intervals that overlap however far refined: Algebraic's exact equality).  Only
+    one p/q is tried: ρ(alg) is enclosed in a ball narrower than 1/(2Q²), and two fractions of
+    denominators ≤ Q are at least 1/Q² apart, so if ρ(alg) = p/q with q ≤ Q, p/q is the
+    fraction of denominator ≤ Q nearest the ball's midpoint."""
+    if not (LOWER_END < alg and alg < Algebraic.rational(flint.fmpq(1))):
+        return None
+    prec = 128
+    while True:
+        with precision(prec):
+            lo, hi = ends(rotation_ball(alg.arb(prec), prec))
+        if (hi - lo) * 2 * Q * Q < 1:
+            break
+        prec *= 2
+    mid = (lo + hi) / 2
+    cand = Fraction(int(mid.p), int(mid.q)).limit_denominator(Q)
+    if cand.denominator < 3:
+        return None
     m = alg.minimal_polynomial()
-    for s in resonances(Q):
+    for s in resonances_of_q(cand.denominator):
         mp = s.r.minimal_polynomial()
-        if (mp == m or mp == -m) and s.r == alg:
+        if s.p == cand.numerator and (mp == m or mp == -m) and s.r == alg:
             return s.p, s.q
     return None
 

@@ -21,25 +21,34 @@ reaches each attractor, the island, or stays unresolved is *observed* (a finite 
 data), and the island's area on the b-section is certified as an interval
 (:func:`certify.patterns.island_theorem.island_fraction`).
 
-Families group the words by structure: the compact spelling with its exponents replaced by
-n (the block that repeats), and the island's rotation number at the ends of each window
-(a resonance p/q decided exactly by :func:`~certify.patterns.island_theorem.resonance_of`,
-else the certified ρ and the nearest p/q with q ≤ 12, said "near": observed).
+Families are rules (:data:`FAMILIES`): member k's word and the resonance at which its window
+closes, each member and the next one predicted certified by ``orbit``.  Every window end gets
+the island's rotation number (:func:`end_rotation`: a resonance p/q, q ≤ :data:`RESONANCE_Q`,
+decided exactly by :func:`~certify.patterns.island_theorem.resonance_of`, else the certified ρ
+and the nearest p/q with q ≤ :data:`NEAR_Q`, said "near": observed).
 
-:func:`run_atlas` runs the jobs (one per r, one per word) on any executor
+At each sampled r the horseshoe search of ``certify chaos`` runs (:func:`chaos_job`): where it
+proves one, chaos is certified at that r (on a set of measure zero); the unresolved orbits are
+said what they show (observed): a long transient, near a certified horseshoe, a word repeated
+without converging (the rotation number of its loop), or nothing recognised.  The shares get
+95 % intervals (:func:`wilson`, observed).
+
+:func:`run_atlas` runs the jobs (one per r, one per word, one horseshoe search per r) on any executor
 (:mod:`.executors`), appending each record to a JSON-lines state file as it arrives; with
 ``resume`` the records already there (same data and collisions) are reused.
 :func:`check_atlas` re-derives a document: the windows by ``orbit``, the cells by stitching
 again, each cell's attractors by ``orbit_at`` at an r inside, each orbit's class by
-``identify``, the island by ``island``.
+``identify``, the island by ``island``, each horseshoe by its exact proof again.
 """
 from __future__ import annotations
 
 import json
 import math
+import re
 import signal
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cmp_to_key
@@ -49,6 +58,8 @@ import flint
 
 from certify.algebra import Algebraic, ends
 from certify.algebra.balls import precision
+from certify.algebra.branches import simple_rational_between, simplest_between
+from certify.algebra.poly import to_fmpq
 from certify.errors import UsageError
 from certify.numerics import grid
 from certify.patterns import compact, island_theorem, read
@@ -63,7 +74,7 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 2
+VERSION = 3
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
@@ -74,6 +85,7 @@ WORD_SECONDS = 600                            # time limit of one word's window
 REFINE = 3                                    # rounds of refinement after the first grid
 LATE = 4                                      # a long transient is run again LATE times longer
 TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
+NEAR_HORSESHOE = "near a certified horseshoe"   # an unresolved orbit whose float64 run enters a proved horseshoe's box
 RESONANCE_Q = 120                             # window ends decided to be resonances p/q, q ≤ 120
 NEAR_Q = 24                                   # a non-resonant end: the nearest p/q with q ≤ 24 (observed)
 STATE = "atlas-state.jsonl"
@@ -126,23 +138,27 @@ def data_grid(m: int) -> list[tuple[float, float]]:
 # ------------------------------------------------------------------ the seeds and the families' rules
 @dataclass(frozen=True)
 class Rule:
-    """A family of attractors as a rule: member k's word is ``spelling`` with k written in,
-    for k = ``first`` .. ``last`` (certified members) and k = ``last`` + 1 (the prediction);
-    its window closes (upper end) where the island's rotation number is
-    p_k/q_k = (a k + b)/(c k + d), ``closing`` = (a, b, c, d), or ``closing`` None (windows
-    below 3 − 2√2, where there is no island).  The rule is a conjecture read off the members;
-    the atlas certifies each member's window with ``certify orbit`` and decides its closing
-    resonance exactly."""
+    """A family of attractors as a rule: member k's word is ``spelling`` with k written in
+    ({k}; {j} is k − 1, a power ^0 dropped), or ``build(k)`` where the rule is not one spelling
+    (then ``spelling`` is how the rule reads), for k = ``first`` .. ``last`` (certified
+    members) and k = ``last`` + 1 (the prediction); its window closes (upper end) where the
+    island's rotation number is p_k/q_k = (a k + b)/(c k + d), ``closing`` = (a, b, c, d)
+    (1/4: the window ends at r = 1, where ρ → 1/4), or ``closing`` None (windows below
+    3 − 2√2, where there is no island).  The rule is a conjecture read off the members; the
+    atlas certifies each member's window with ``certify orbit`` and decides its closing
+    exactly."""
 
     name: str
     spelling: str
     first: int
     last: int
     closing: tuple[int, int, int, int] | None
+    build: Callable[[int], str] | None = None
 
     def word(self, k: int) -> str:
         """Member k's word (normal form)."""
-        return read(self.spelling.format(k=k))[0]
+        text = self.build(k) if self.build else re.sub(r"\([abc]+\)\^0", "", self.spelling.format(k=k, j=k - 1))
+        return read(text)[0]
 
     def resonance(self, k: int) -> tuple[int, int] | None:
         """p_k/q_k in lowest terms, or None."""
@@ -156,11 +172,44 @@ class Rule:
         """The members the atlas certifies: first .. last, and the prediction last + 1."""
         return range(self.first, self.last + 2)
 
+    def reads(self) -> str:
+        """The rule as ATLAS.md prints it."""
+        return self.spelling.replace("{k}", "k").replace("{j}", "(k−1)")
+
+
+def _swap(text: str) -> str:
+    return text.replace("bac", "#").replace("bca", "bac").replace("#", "bca")
+
+
+def near_one(k: int) -> str:
+    """Member k of the family whose windows end at r = 1 (ρ → 1/4), 24k + 14 letters: with
+    m = k + ⌈k/2⌉ + 1, t = ⌊(k − 1)/2⌋ and M_t = B_1 ⋯ B_t c_t B_t ⋯ B_1 (B_i = (bac)^2, (bca)^2
+    alternately, the centre c_t = bac for t even, bca for t odd), M' = M with bac and bca
+    exchanged: k odd, abca M_t bc (abcb)^m ac M_t' ba (cbab)^(m−1) cb; k even, with
+    N = M_t (bca)^2, abca N ba (cbab)^m cbac N' bc (abcb)^m."""
+    t, m = (k - 1) // 2, k + (k + 1) // 2 + 1
+    blocks = ["(bac)^2" if i % 2 == 0 else "(bca)^2" for i in range(t)]
+    M = "".join(blocks) + ("bac" if t % 2 == 0 else "bca") + "".join(reversed(blocks))
+    if k % 2:
+        return f"abca{M}bc(abcb)^{m}ac{_swap(M)}ba(cbab)^{m - 1}cb"
+    N = M + "(bca)^2"
+    return f"abca{N}ba(cbab)^{m}cbac{_swap(N)}bc(abcb)^{m}"
+
 
 FAMILIES = (
     Rule("(ab)^k(cb)^k", "(ab)^{k}(cb)^{k}", 2, 12, None),
     Rule("(abacbc)^k a(bcabac)^k bcb", "(abacbc)^{k}a(bcabac)^{k}bcb", 1, 6, (2, 0, 4, 1)),
     Rule("(abacbc)^k a(bac)^2(bcabac)^k bcb", "(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb", 1, 3, (2, 1, 4, 3)),
+    Rule("(abacbc)^k a(bcabac)^(k−1) bc(ab)^2(cbcaba)^k c(bacbca)^(k−1) ba(cb)^2",
+         "(abacbc)^{k}a(bcabac)^{j}bc(ab)^2(cbcaba)^{k}c(bacbca)^{j}ba(cb)^2", 1, 8, (4, -1, 8, 0)),
+    Rule("(abacbc)^k a(bac)^2(bcabac)^(k−1) bc(ab)^2(cbcaba)^k c(bca)^2(bacbca)^(k−1) ba(cb)^2",
+         "(abacbc)^{k}a(bac)^2(bcabac)^{j}bc(ab)^2(cbcaba)^{k}c(bca)^2(bacbca)^{j}ba(cb)^2", 1, 8, (4, 1, 8, 4)),
+    # near r = 1: k = 8 (206 letters) is left out: its window's analysis ran 38 min (10.5 min of CPU) on the
+    # loaded 2-core machine without finishing; k = 7 (182 letters, met by the atlas before the rule) is the prediction
+    Rule("abca M bc(abcb)^m ac M' ba(cbab)^(m−1) cb, near r = 1",
+         "k odd: abca M bc(abcb)^m ac M' ba(cbab)^(m−1)cb; k even: abca N ba(cbab)^m cbac N' bc(abcb)^m "
+         "(m = k + ⌈k/2⌉ + 1; M = B_1⋯B_t c B_t⋯B_1, t = ⌊(k−1)/2⌋, B_i = (bac)^2, (bca)^2 alternately, c = bac "
+         "for t even, bca for t odd; N = M(bca)^2; ' exchanges bac and bca)", 1, 6, (0, 1, 0, 4), near_one),
 )
 
 
@@ -241,6 +290,52 @@ def r_job(r: str, data: list, collisions: int) -> dict:
             "island": island, "seconds": round(time.perf_counter() - start, 3)}
 
 
+def chaos_job(r: str, unresolved: list, collisions: int) -> dict:
+    """At r: the horseshoe of ``certify chaos`` (:func:`certify.numerics.horseshoe.find`: a float
+    search, an exact proof), and for each unresolved orbit [index, θ0, φ0, the word its run
+    repeats or None] what its float64 run's states at b show (observed): whether one enters a
+    box of the proved horseshoe after the first returns, and, when it repeats a word, the
+    rotation number of its loop under G = f^k, k the b's of the word
+    (:func:`certify.numerics.curves.rotation_estimate`).  Plain data."""
+    from certify.numerics import curves, horseshoe
+    start = time.perf_counter()
+    q = Fraction(r)
+    fq = flint.fmpq(q.numerator, q.denominator)
+    found = horseshoe.find(q)
+    search = time.perf_counter() - start
+    P = found.proof if found.proof is not None and found.proof.holds else None
+    hs: dict = {"certified": P is not None, "tried": found.tried}
+    if P is not None:
+        hs.update({"saddle": found.saddle, "returns": P.k, "rho_lower": str(P.beta), "entropy_lower": P.entropy,
+                   "boxes": [{k: v for k, v in b.as_json().items() if k != "vertices"} for b in P.boxes],
+                   "edges": [list(e) for e in P.covers]})
+    frames = horseshoe.box_frames(P.boxes) if P is not None else None
+    orbits = []
+    for index, th, ph, word in unresolved:
+        pts = curves.b_states(fq, th, ph, collisions)
+        visits = None if frames is None else horseshoe.any_in_boxes(frames, pts[horseshoe.TRANSIENT_RETURNS:])
+        curve = curves.rotation_estimate(pts, max(word.count("b"), 1)) if word else None
+        if curve is not None:
+            near = Fraction(curve["rotation"]).limit_denominator(NEAR_Q)     # the nearest p/q, q ≤ NEAR_Q
+            curve["near"] = [near.numerator, near.denominator]
+        orbits.append({"index": index, "visits_horseshoe": visits, "curve": curve})
+    return {"kind": "chaos", "r": str(q), "collisions": collisions, "horseshoe": hs, "orbits": orbits,
+            "search_seconds": round(search, 3), "seconds": round(time.perf_counter() - start, 3)}
+
+
+def unresolved_of(rec: dict) -> list:
+    """The unresolved orbits of an r record as :func:`chaos_job` takes them."""
+    return [[i, o["theta0"], o["phi0"], o["observed"]] for i, o in enumerate(rec["orbits"]) if o["class"] == UNRESOLVED]
+
+
+def explained(o: dict) -> str:
+    """What an unresolved orbit of the document shows (observed): a long transient, near a
+    certified horseshoe (its run enters a proved horseshoe's box), else its kind
+    (:func:`unresolved_kind`: a word repeated without converging, or nothing recognised)."""
+    kind = o.get("unresolved") or NOTHING
+    return NEAR_HORSESHOE if kind != TRANSIENT and o.get("visits_horseshoe") else kind
+
+
 class _TimeLimit(Exception):
     pass
 
@@ -286,7 +381,7 @@ def load_state(path) -> list[dict]:
     for line in (text or "").splitlines():
         try:
             rec = json.loads(line)
-            if rec["kind"] in ("r", "word"):
+            if rec["kind"] in ("r", "word", "chaos"):
                 out.append(rec)
         except (ValueError, KeyError, TypeError):
             continue
@@ -301,13 +396,15 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
               progress=None, word_seconds: float | None = WORD_SECONDS, word_max: int = WORD_MAX,
               seeds: dict | None = None, refine: int = 0, r_range: tuple | None = None) -> tuple:
     """(r records, word records): the r jobs, a word job for each seed (``seeds``: word →
-    where known) and for each new certified word as soon as it is met; then ``refine``
+    where known) and for each new certified word as soon as it is met, a horseshoe job
+    (:func:`chaos_job`) for each r as soon as its r record is in (its record as the r
+    record's ``chaos``); then ``refine``
     rounds of :func:`refinement` inside ``r_range`` (default: the grid's ends), each adding
     the r it asks for.  Records are appended to ``state`` as they arrive.  ``resume``: the r
     records of ``state`` with the same data and collisions, and its word records with the
     same limits, are reused (the rounds are decided from the records, so a resumed atlas
-    asks for the same r)."""
-    stored_r, done_r, done_w = {}, {}, {}
+    asks for the same r; a horseshoe record is reused for the same collisions and unresolved orbits)."""
+    stored_r, done_r, done_w, stored_c, done_c = {}, {}, {}, {}, {}
     if state is not None:
         state = Path(state)
         if resume:
@@ -317,6 +414,8 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
                 elif rec["kind"] == "word" and rec["word_max"] == word_max and (
                         rec["outcome"] != "time limit" or rec["word_seconds"] == word_seconds):
                     done_w[rec["word"]] = rec
+                elif rec["kind"] == "chaos" and rec["collisions"] == collisions:
+                    stored_c[rec["r"]] = rec
         else:
             write_atomic(state, "")
     sources = dict(seeds or {})
@@ -333,6 +432,15 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
             total[0] += 1
             queue.insert(0, ("word", w))          # words first: the longest jobs start early
 
+    def want_chaos(r):
+        total[0] += 1
+        mine = stored_c.get(r)
+        if mine is not None and [o["index"] for o in mine["orbits"]] == [u[0] for u in unresolved_of(done_r[r])]:
+            done_c[r] = mine
+            count[0] += 1
+        else:
+            queue.append(("chaos", r))
+
     def want_r(rs_new):
         for r in (str(x) for x in rs_new):
             if r in wanted:
@@ -344,6 +452,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
                 count[0] += 1
                 for w in _words_of(done_r[r]):
                     want_word(w)
+                want_chaos(r)
             else:
                 queue.append(("r", r))
 
@@ -362,15 +471,21 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
             done_r[key] = rec
             for w in _words_of(rec):
                 want_word(w)
+            want_chaos(key)
+        elif kind == "chaos":
+            done_c[key] = rec
         else:
             done_w[key] = rec
         count[0] += 1
         if progress:
-            progress(count[0], total[0], f"r = {key}" if kind == "r" else f"{len(key)}-letter word")
+            progress(count[0], total[0], f"{'r' if kind == 'r' else 'horseshoe at r'} = {key}" if kind != "word"
+                     else f"{len(key)}-letter word")
 
     def submit(kind, key):
         if kind == "r":
             return executor.submit(r_job, key, data, collisions)
+        if kind == "chaos":
+            return executor.submit(chaos_job, key, unresolved_of(done_r[key]), collisions)
         return executor.submit(word_job, key, word_seconds, word_max)
 
     try:
@@ -402,7 +517,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
     finally:
         if sink is not None:
             sink.close()
-    rows = sorted((done_r[r] for r in wanted), key=lambda rec: Fraction(rec["r"]))
+    rows = sorted(({**done_r[r], "chaos": done_c.get(r)} for r in wanted), key=lambda rec: Fraction(rec["r"]))
     words = sorted(done_w.values(), key=lambda w: (w["length"], w["word"]))
     for w in words:
         w["source"] = sources.get(w["word"], "met")
@@ -410,34 +525,18 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
 
 
 # ------------------------------------------------------------------ refinement
-def simple_inside(a: Algebraic, b: Algebraic) -> Fraction:
-    """The rational with the fewest decimals in the middle half of ]a, b[ (a < b algebraic),
-    nearest the middle: a readable r that is exactly inside."""
-    prec = 64
-    while True:
-        la, ua = ends(a.arb(prec))
-        lb, ub = ends(b.arb(prec))
-        if ua < lb and (lb - ua) * 4 > (ub - la):
-            break
-        prec *= 2
-    x0 = Fraction(int(ua.p), int(ua.q))
-    x1 = Fraction(int(lb.p), int(lb.q))
-    mid, quarter = (x0 + x1) / 2, (x1 - x0) / 4
-    d = 1
-    while True:
-        s = 10 ** d
-        lo_n, hi_n = math.ceil((mid - quarter) * s), math.floor((mid + quarter) * s)
-        if lo_n <= hi_n:
-            return min((Fraction(n, s) for n in range(lo_n, hi_n + 1)), key=lambda x: (abs(x - mid), x))
-        d += 1
+def _fraction(x: flint.fmpq) -> Fraction:
+    return Fraction(int(x.p), int(x.q))
 
 
 def refinement(r_records: list[dict], word_records: list[dict], lo: Fraction, hi: Fraction) -> list[Fraction]:
     """The r the next round asks for, inside ]lo, hi[ (observed sampling; the windows are
     exact whatever is sampled): (1) in every cell of the stitched windows that no sampled r
-    lies in, its simplest rational (:func:`simple_inside`); (2) near each window end, inside
+    lies in, a simple rational of its middle half
+    (:func:`~certify.algebra.branches.simple_rational_between`); (2) near each window end, inside
     the window, the simplest rational of the eighth of the cell next to the end; (3) where the grid
-    meets a word without a window (too long, too slow), halfway to each neighbouring r.
+    meets a word without a window (too long, too slow), the simplest rational of the middle half
+    between it and each neighbouring r.
     Increasing, without the r already sampled."""
     have = sorted(Fraction(rec["r"]) for rec in r_records)
     A = Algebraic.rational(flint.fmpq(lo.numerator, lo.denominator))
@@ -451,7 +550,7 @@ def refinement(r_records: list[dict], word_records: list[dict], lo: Fraction, hi
             continue
         a, b = (a if A < a else A), (b if b < B else B)
         if not any(_in_open(q, a, b) for q in have):
-            out.add(simple_inside(a, b))
+            out.add(_fraction(simple_rational_between(a, b)))
     for lo_end, hi_end in {(_alg(w["lo"]), _alg(w["hi"])) for x in atts for w in x["windows"]}:
         for e, toward_hi in ((lo_end, False), (hi_end, True)):
             if not (A < e < B):
@@ -473,8 +572,8 @@ def refinement(r_records: list[dict], word_records: list[dict], lo: Fraction, hi
         q = Fraction(rec["r"])
         k = have.index(q)
         for other in (have[k - 1] if k else lo, have[k + 1] if k + 1 < len(have) else hi):
-            mid = (q + other) / 2
-            out.add(Fraction(round(mid * 10 ** 6), 10 ** 6))
+            a, b = sorted((q, other))
+            out.add(_fraction(simplest_between(to_fmpq(a + (b - a) / 4), to_fmpq(b - (b - a) / 4))))
     return sorted(x for x in out if lo < x < hi and x not in have and 0 < x < 1)
 
 
@@ -484,18 +583,15 @@ def _in_open(q: Fraction, a: Algebraic, b: Algebraic) -> bool:
 
 
 def _eighth(u: Algebraic, v: Algebraic, toward_hi: bool) -> Fraction | None:
-    """The simplest rational of the eighth of ]u, v[ next to v (``toward_hi``) or to u."""
+    """The simplest rational (:func:`~certify.algebra.branches.simplest_between`) of the eighth
+    of ]u, v[ next to v (``toward_hi``) or to u."""
     with precision(128):
         lu, uu = ends(u.arb(128))
         lv, uv = ends(v.arb(128))
     if not uu < lv:
         return None
-    x0, x1 = Fraction(int(uu.p), int(uu.q)), Fraction(int(lv.p), int(lv.q))
-    width = (x1 - x0) / 8
-    a, b = (x1 - width, x1) if toward_hi else (x0, x0 + width)
-    ra = Algebraic.rational(flint.fmpq(a.numerator, a.denominator))
-    rb = Algebraic.rational(flint.fmpq(b.numerator, b.denominator))
-    q = simple_inside(ra, rb)
+    width = (lv - uu) / 8
+    q = _fraction(simplest_between(lv - width, lv) if toward_hi else simplest_between(uu, uu + width))
     return q if _in_open(q, u, v) else None
 
 
@@ -504,8 +600,17 @@ def _cmp(x: Algebraic, y: Algebraic) -> int:
     return 0 if x == y else -1 if x < y else 1
 
 
+_ALGEBRAIC: dict = {}
+
+
 def _alg(end) -> Algebraic:
-    return end if isinstance(end, Algebraic) else algebraic_of(end)
+    """The algebraic number of a window end as printed (:func:`algebraic_of`), read once per end."""
+    if isinstance(end, Algebraic):
+        return end
+    key = _end_key(end)
+    if key not in _ALGEBRAIC:
+        _ALGEBRAIC[key] = algebraic_of(end)
+    return _ALGEBRAIC[key]
 
 
 def attractors_of(words: list[dict]) -> list[dict]:
@@ -551,14 +656,28 @@ def _in_cell(q: Fraction, cell: dict) -> bool:
 
 
 # ------------------------------------------------------------------ families and rotation numbers
+_ROTATIONS: dict = {}
+
+
 def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
     """The island's rotation number at a window end in [3 − 2√2, 1]: a resonance p/q (q ≤ Q)
-    decided exactly, else ρ (8 certified digits) and the nearest p/q with q ≤ :data:`NEAR_Q`
-    ("near", with the distance: an observation); None below 3 − 2√2.  The one candidate: ρ is
-    a ball of width < 1/(2Q²), so if ρ = p/q with q ≤ Q, p/q is the fraction nearest its
-    midpoint with denominator ≤ Q (two such fractions are 1/Q² apart); that candidate is
-    decided exactly (:func:`is_resonance`)."""
-    x = _alg(end)
+    decided exactly by :func:`~certify.patterns.island_theorem.resonance_of` (1/2 at 3 − 2√2,
+    1/4 at r = 1: the island's own ends), else ρ (8 certified digits) and the nearest p/q with
+    q ≤ :data:`NEAR_Q` ("near", with the distance: an observation); None below 3 − 2√2.
+    Computed once per end (the same end anywhere in the atlas)."""
+    key = (_end_key(end), Q)
+    if key not in _ROTATIONS:
+        _ROTATIONS[key] = _rotation(_alg(end), Q)
+    return _ROTATIONS[key]
+
+
+def _end_key(end) -> tuple:
+    if isinstance(end, Algebraic):
+        return (str(end.minimal_polynomial()), str(end.lo), str(end.hi))
+    return (end.get("exact"), end.get("minimal_polynomial"), tuple(end.get("interval") or ()))
+
+
+def _rotation(x: Algebraic, Q: int) -> dict | None:
     if x < LOWER_END:
         return None
     if x == LOWER_END:
@@ -566,35 +685,21 @@ def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
     if x == Algebraic.rational(flint.fmpq(1)):
         return {"rho": "0.25", "resonance": [1, 4], "near": None}
     with precision(200):
-        rho = island_theorem.rotation_ball(x.arb(200), 200)
-    lo, hi = ends(rho)
-    if not (hi - lo) * 2 * Q * Q < 1:
-        raise ArithmeticError(f"the rotation number at {x} is not narrow enough to find its resonance")
+        lo, hi = ends(island_theorem.rotation_ball(x.arb(200), 200))
     digits = f"{float((lo + hi) / 2):.8f}"
-    mid = Fraction(int((lo + hi).p), int((lo + hi).q)) / 2
-    cand = mid.limit_denominator(Q)
-    if is_resonance(x, cand.numerator, cand.denominator):
-        return {"rho": digits, "resonance": [cand.numerator, cand.denominator], "near": None}
-    best = min((Fraction(p, q) for q in range(2, NEAR_Q + 1) for p in range(1, q) if math.gcd(p, q) == 1),
-               key=lambda f: (abs(f - mid), f.denominator))
+    pq = island_theorem.resonance_of(x, Q)
+    if pq is not None:
+        return {"rho": digits, "resonance": list(pq), "near": None}
+    mid = _fraction((lo + hi) / 2)
+    best = mid.limit_denominator(NEAR_Q)                         # the nearest p/q with q ≤ NEAR_Q
     return {"rho": digits, "resonance": None, "near": [best.numerator, best.denominator],
             "distance": f"{float(abs(best - mid)):.2e}"}
 
 
-def is_resonance(x: Algebraic, p: int, q: int) -> bool:
-    """Whether the island's rotation number at x is exactly p/q: x is the same algebraic
-    number as a resonance r_{p/q} (:func:`island_theorem.resonances_of_q`; p/q = 1/2 is
-    3 − 2√2)."""
-    if (p, q) == (1, 2):
-        return x == LOWER_END
-    if q < 3:
-        return False
-    return any(s.p == p and s.r == x for s in island_theorem.resonances_of_q(q))
-
-
 def closes_at(end: dict, p: int, q: int) -> bool:
-    """Whether a window end is exactly the resonance p/q (:func:`is_resonance`)."""
-    return is_resonance(_alg(end), p, q)
+    """Whether a window end is exactly where the island's rotation number is p/q
+    (:func:`end_rotation`: 1/2 at 3 − 2√2, 1/4 at r = 1)."""
+    return (end_rotation(end, max(q, RESONANCE_Q)) or {}).get("resonance") == [p, q]
 
 
 def families(attractors: list[dict], words: list[dict]) -> list[dict]:
@@ -608,11 +713,11 @@ def families(attractors: list[dict], words: list[dict]) -> list[dict]:
     analysed = {w["word"]: w for w in words}
     out = []
     for rule in FAMILIES:
-        if any(rule.word(k) not in analysed for k in rule.members()):
+        spelt = {k: rule.word(k) for k in rule.members()}
+        if any(w not in analysed for w in spelt.values()):
             continue                          # not analysed in this atlas (seeded without its family)
         members = []
-        for k in rule.members():
-            w = rule.word(k)
+        for k, w in spelt.items():
             wins = [(a, win) for a in by_word.get(w, []) for win in a["windows"]]
             pq = rule.resonance(k)
             closes = None if pq is None else any(closes_at(win["hi"], *pq) for _a, win in wins)
@@ -623,8 +728,9 @@ def families(attractors: list[dict], words: list[dict]) -> list[dict]:
                             "closing": list(pq) if pq else None, "closes": closes,
                             "certified": bool(wins) and closes is not False})
         p1, p0, q1, q0 = rule.closing or (0, 0, 0, 0)
-        out.append({"family": rule.name, "rule": rule.spelling.replace("{k}", "k"),
-                    "closing": f"({_affine(p1, p0)})/({_affine(q1, q0)})" if rule.closing else None,
+        closing = (None if rule.closing is None else f"{p0}/{q0} (r = 1)" if p1 == q1 == 0 else
+                   f"({_affine(p1, p0)})/({_affine(q1, q0)})")
+        out.append({"family": rule.name, "rule": rule.reads(), "closing": closing,
                     "members": members,
                     "certified_members": sum(m["certified"] for m in members if not m["predicted"]),
                     "prediction_certified": any(m["certified"] for m in members if m["predicted"])})
@@ -635,12 +741,9 @@ def _affine(a: int, b: int) -> str:
     return f"{a}k" + (f" + {b}" if b > 0 else f" − {-b}" if b < 0 else "")
 
 
-def in_family(word: str) -> str | None:
-    """The name of the rule of :data:`FAMILIES` whose member ``word`` is, or None."""
-    for rule in FAMILIES:
-        if any(rule.word(k) == word for k in rule.members()):
-            return rule.name
-    return None
+def family_of(fams: list[dict]) -> dict[str, str]:
+    """Each member's word → the name of its family (of :func:`families`' output, parsed once)."""
+    return {m["word"]: f["family"] for f in fams for m in f["members"]}
 
 
 def by_resonance(resonant: list[dict]) -> list[dict]:
@@ -673,11 +776,16 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
     rows = []
     for rec in r_records:
         q = Fraction(rec["r"])
+        chaos = rec.get("chaos")
+        seen_by = {c["index"]: c for c in chaos["orbits"]} if chaos else {}
         rows.append({"r": rec["r"], "digits": f"{float(q):.6f}", "island": rec["island"],
                      "counts": _counts(rec["orbits"]), "total": len(rec["orbits"]),
+                     "horseshoe": chaos["horseshoe"] if chaos else None,
                      "orbits": [{**{k: o[k] for k in ("theta0", "phi0", "class", "certified_from", "word", "branch",
                                                      "observed", "why")},
-                                 "rerun": o.get("rerun"), "unresolved": o.get("unresolved")} for o in rec["orbits"]]})
+                                 "rerun": o.get("rerun"), "unresolved": o.get("unresolved"),
+                                 "visits_horseshoe": seen_by.get(i, {}).get("visits_horseshoe"),
+                                 "curve": seen_by.get(i, {}).get("curve")} for i, o in enumerate(rec["orbits"])]})
     for cell in cells:
         sampled = [row for row in rows if _in_cell(Fraction(row["r"]), cell)]
         cell["sampled"] = [row["r"] for row in sampled]
@@ -689,6 +797,10 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
         cell["orbits"] = total
         cell["counts"] = dict(sorted(counts.items()))
         cell["unresolved"] = counts.get(UNRESOLVED, 0)
+        cell["intervals"] = {k: wilson(n, total) for k, n in cell["counts"].items()}
+        proved = [row["horseshoe"] for row in sampled if (row["horseshoe"] or {}).get("certified")]
+        cell["horseshoes"] = {"sampled": sum(row["horseshoe"] is not None for row in sampled), "proved": len(proved),
+                              "entropy_lower": _entropy_range(proved)}
         fr = [row["island"]["fraction"] for row in sampled if row["island"]]
         cell["island_fraction"] = ([str(min(Fraction(f[0]) for f in fr)), str(max(Fraction(f[1]) for f in fr))]
                                    if fr else None)
@@ -711,8 +823,11 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
             if o["observed"]:
                 observed[o["observed"]] = observed.get(o["observed"], 0) + 1
     source = {w["word"]: w.get("source", "met") for w in word_records}
+    fams = families(atts, word_records)
+    member = family_of(fams)
     attractors = [{"name": name(a["word"], a["branch"]), **a, "source": source[a["word"]],
-                   "family": in_family(a["word"]),
+                   "windows": [{**w, "rotation": end_rotation(w["hi"])} for w in a["windows"]],
+                   "family": member.get(a["word"]),
                    "seen_at": sorted(set(seen.get(name(a["word"], a["branch"]), [])), key=Fraction)} for a in atts]
     inconsistent = []
     by_name = {a["name"]: a for a in attractors}
@@ -725,9 +840,9 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                                             (by_name[k]["windows"] if k in by_name else [])):
                 inconsistent.append({"attractor": k, "r": row["r"]})
     resonant, above, interior = [], 0, {"upper": 0, "lower": 0, "resonant_upper": 0, "resonant_lower": 0}
-    for a in atts:
+    for a in attractors:
         for w in a["windows"]:
-            rot = end_rotation(w["hi"])
+            rot = w["rotation"]
             if rot is not None:
                 above += 1
                 if rot["resonance"]:
@@ -739,7 +854,6 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                 if interior_end(end):
                     interior[side] += 1
                     interior["resonant_" + side] += bool((end_rotation(end) or {}).get("resonance"))
-    fams = families(atts, word_records)
     totals = {k: sum(row["counts"].get(k, 0) for row in rows) for k in (ISLAND, UNRESOLVED)}
     totals[ATTRACTING] = sum(n for row in rows for k, n in row["counts"].items() if k not in (ISLAND, UNRESOLVED))
     return {"schema": SCHEMA, "version": VERSION, "parameters": parameters,
@@ -749,9 +863,10 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                         "upper_ends_above": above, "resonant_upper_ends": resonant, "interior_ends": interior,
                         "seeds": sum(w.get("source", "met") != "met" for w in word_records),
                         "families": len(fams), "certified_share_above": share_above(rows),
-                        "unresolved_by_kind": unresolved_by_kind(rows)},
+                        "unruled_closings": unruled(resonant, attractors),
+                        "unresolved_by_kind": unresolved_by_kind(rows), "horseshoes": horseshoes(rows)},
             "attractors": attractors, "without_window": no_window, "cells": cells,
-            "families": fams, "by_resonance": by_resonance(resonant),
+            "families": fams, "by_resonance": by_resonance(resonant), "curves": curves_of(rows),
             "observed_words": dict(sorted(observed.items(), key=lambda kv: (-kv[1], kv[0]))),
             "words": [_timeless(w) for w in word_records], "r": rows}
 
@@ -773,24 +888,98 @@ def why_no_window(w: dict) -> str:
 
 
 def unresolved_by_kind(rows: list[dict]) -> dict:
-    """The unresolved orbits by what they show (:func:`unresolved_kind`), and the orbits whose
+    """The unresolved orbits by what they show (:func:`explained`), and the orbits whose
     class the longer run of a long transient proved."""
-    out = {k: 0 for k in (TRANSIENT, NOT_ATTRACTING, NOTHING)}
+    out = {k: 0 for k in (TRANSIENT, NEAR_HORSESHOE, NOT_ATTRACTING, NOTHING)}
     for row in rows:
         for o in row["orbits"]:
             if o["class"] == UNRESOLVED:
-                out[o["unresolved"] or NOTHING] += 1
+                out[explained(o)] += 1
     out["certified by a longer run"] = sum(1 for row in rows for o in row["orbits"]
                                            if o["rerun"] and o["class"] != UNRESOLVED)
     return out
 
 
+def _entropy_range(proved: list[dict]) -> list[str] | None:
+    """The least and the largest certified entropy bound of the proved horseshoes, or None."""
+    hs = sorted((x["entropy_lower"] for x in proved), key=Fraction)
+    return [hs[0], hs[-1]] if hs else None
+
+
+def horseshoes(rows: list[dict]) -> dict:
+    """At how many sampled r the horseshoe search ran and proved a horseshoe (certified), the
+    range of the entropy bounds, below and above 3 − 2√2, and the unresolved orbits near one
+    (observed)."""
+    searched = [row for row in rows if row["horseshoe"] is not None]
+    proved = [row for row in searched if row["horseshoe"]["certified"]]
+    return {"searched": len(searched), "proved": len(proved),
+            "proved_below": sum(row["island"] is None for row in proved),
+            "proved_above": sum(row["island"] is not None for row in proved),
+            "entropy_lower": _entropy_range([row["horseshoe"] for row in proved]),
+            "r": [row["r"] for row in proved]}
+
+
 def share_above(rows: list[dict]) -> dict:
     """The orbits sampled above 3 − 2√2 and how many have a certified class (island or
-    attracting periodic): observed counts of certified classes."""
+    attracting periodic): observed counts of certified classes, and the share's 95% interval
+    (:func:`wilson`)."""
     n = sum(row["total"] for row in rows if row["island"] is not None)
     u = sum(row["counts"].get(UNRESOLVED, 0) for row in rows if row["island"] is not None)
-    return {"orbits": n, "certified": n - u}
+    return {"orbits": n, "certified": n - u, "interval": wilson(n - u, n)}
+
+
+Z95 = 1.959963984540054                       # the normal quantile of 97.5 %: two-sided 95 %
+
+
+def wilson(n: int, total: int, z: float = Z95) -> list[str] | None:
+    """The Wilson score interval of the share n/total at 95 % (observed: it reads the data as
+    independent draws, which the grid's are not; docs/atlas.md says what it means), its ends
+    to 4 decimals (the lower rounded down, the upper up); None for no data."""
+    if not total:
+        return None
+    p, z2 = n / total, z * z
+    centre = (p + z2 / (2 * total)) / (1 + z2 / total)
+    half = z * math.sqrt(p * (1 - p) / total + z2 / (4 * total * total)) / (1 + z2 / total)
+    return [f"{math.floor(max(centre - half, 0.0) * 10 ** 4) / 10 ** 4:.4f}",
+            f"{math.ceil(min(centre + half, 1.0) * 10 ** 4) / 10 ** 4:.4f}"]
+
+
+RULE_K = 16          # a window's word is given by a rule when it is member k ≤ RULE_K (certified range or not)
+
+
+def unruled(resonant: list[dict], attractors: list[dict]) -> list[dict]:
+    """The windows closing at an interior resonance whose word no rule of :data:`FAMILIES`
+    spells for any k ≤ :data:`RULE_K` (members past a rule's certified ones count as given)."""
+    spelt = {rule.word(k) for rule in FAMILIES for k in range(rule.first, RULE_K + 1)}
+    ruled = {a["name"] for a in attractors if a["family"] or a["word"] in spelt}
+    return [{"attractor": x["attractor"], "p": x["p"], "q": x["q"]} for x in resonant
+            if not x["island_end"] and x["attractor"] not in ruled]
+
+
+def curves_of(rows: list[dict]) -> list[dict]:
+    """The unresolved orbits that repeat a word without converging, by word: how many, where,
+    and the rotation numbers of their loops (observed, :func:`chaos_job`)."""
+    out: dict[str, dict] = {}
+    for row in rows:
+        for o in row["orbits"]:
+            c = o.get("curve")
+            if o["class"] != UNRESOLVED or c is None:
+                continue
+            g = out.setdefault(o["observed"], {"word": o["observed"], "returns": c["returns"], "orbits": 0,
+                                               "r": [], "rotation": [], "near": set(), "radius_drift": []})
+            g["orbits"] += 1
+            g["r"].append(row["r"])
+            g["rotation"].append(c["rotation"])
+            g["near"].add(tuple(c["near"]))
+            g["radius_drift"].append(c["radius_drift"])
+    res = []
+    for w, g in sorted(out.items(), key=lambda kv: (-kv[1]["orbits"], kv[0])):
+        rot, drift = sorted(g["rotation"], key=Fraction), sorted(g["radius_drift"], key=float)
+        res.append({"word": w, "returns": g["returns"], "orbits": g["orbits"],
+                    "r": [min(g["r"], key=Fraction), max(g["r"], key=Fraction)], "rotation": [rot[0], rot[-1]],
+                    "near": [list(x) for x in sorted(g["near"], key=lambda pq: Fraction(*pq))],
+                    "radius_drift": [drift[0], drift[-1]]})
+    return res
 
 
 def to_json(doc: dict) -> str:
@@ -804,6 +993,56 @@ def _end(e: dict) -> str:
 
 def _share(n: int, total: int) -> str:
     return f"{n}/{total} ({100 * n / total:.0f}%)" if total else "—"
+
+
+def _interval(iv: list | None) -> str:
+    return f" [{iv[0]}, {iv[1]}]" if iv else ""
+
+
+def _cell_horseshoes(h: dict) -> str:
+    if not h["sampled"]:
+        return "—"
+    if not h["proved"]:
+        return f"none found at {h['sampled']} r"
+    lo, hi = h["entropy_lower"]
+    return f"{h['proved']} of {h['sampled']} r; entropy ≥ {lo}" + (f" to ≥ {hi}" if hi != lo else "")
+
+
+def _horseshoe_line(h: dict) -> str:
+    if not h["searched"]:
+        return "- chaos: no horseshoe search in this atlas"
+    rng = (f"; entropy bounds from {h['entropy_lower'][0]} to {h['entropy_lower'][1]} (log ρ(T)/k, certified)"
+           if h["entropy_lower"] else "")
+    return (f"- chaos (certified): a horseshoe proved at {h['proved']} of the {h['searched']} sampled r "
+            f"({h['proved_below']} below 3−2√2, {h['proved_above']} above){rng}; at the other r the search found none "
+            "(nothing is claimed there). A horseshoe is an invariant set of measure zero: it proves chaos there, not "
+            "that an unresolved orbit is chaotic")
+
+
+def _unresolved_section(doc: dict) -> list[str]:
+    """ATLAS.md's section on the unresolved orbits: by kind, the loops' rotation numbers."""
+    s = doc["summary"]
+    out = ["", "## Unresolved orbits", "",
+           "What each unresolved orbit shows (observed, never a proof): " + "; ".join(
+               f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run") + ". "
+           "*Near a certified horseshoe*: its float64 run, after the first 100 returns to b, enters a box of the "
+           "horseshoe proved at its r. That does not make the orbit chaotic: the horseshoe is a set of measure zero.",
+           "", "*Repeats a word without converging* (the word's periodic orbit at r is not attracting, or none): the "
+           "run's states at b, every k returns (k = the b's of the word), turn around a loop. Its rotation number "
+           "(observed; the mean counterclockwise turn per k returns about the loop's centre, in coordinates where "
+           "the loop is round, as the island's ρ is measured: on island orbits the estimate gives the certified ρ to "
+           "6 digits) and the radius drift (the loop's size at the end of the run over that at its middle: ≈ 1, an "
+           "invariant curve; away from 1, a spiral, a slow transient).", ""]
+    if not doc["curves"]:
+        return out + ["None in this atlas."]
+    out += ["| word | k | orbits | r | rotation number (observed) | nearest p/q (q ≤ 24) | radius drift |",
+            "|---|---:|---:|---|---|---|---|"]
+    for c in doc["curves"]:
+        w = compact(read(c["word"])[0]) if len(c["word"]) < 400 else c["word"][:40] + "…"
+        out.append(f"| `{w}` | {c['returns']} | {c['orbits']} | {c['r'][0]} to {c['r'][1]} | "
+                   f"{c['rotation'][0]} to {c['rotation'][1]} | {', '.join(f'{p}/{q}' for p, q in c['near'])} | "
+                   f"{c['radius_drift'][0]} to {c['radius_drift'][1]} |")
+    return out
 
 
 def _rot(x: dict | None) -> str:
@@ -830,8 +1069,10 @@ def markdown(doc: dict, figure: str | None = None) -> str:
                f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
            + f" (a long transient: its word attracts at r, run again {LATE}× longer; "
            f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so and are counted in their "
-           "class; a word not attracting at r: repeated without converging, an invariant curve or a slow transient, "
-           "its rotation number not computed)",
+           "class; near a certified horseshoe: its float64 run enters a box of the horseshoe proved at r; a word not "
+           "attracting at r: repeated without converging, a loop around an invariant curve or a slow transient, its "
+           "rotation number under \"Unresolved orbits\" below)",
+           _horseshoe_line(s["horseshoes"]),
            f"- words certified: {s['words']}; attractors (word, branch) with an exact window over ]0, 1[: "
            f"{s['attractors_with_windows']}; without one: {s['attractors_without_windows']} (longer than "
            f"{p['word_max']} letters, or over the time limit of {p['word_seconds']} s: known only at the r where "
@@ -847,7 +1088,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            "windows end at the island's own ends (3−2√2, ρ = 1/2; r = 1, ρ → 1/4)",
            f"- families (rules with at least three certified members and the next member predicted): "
            f"{s['families']}; orbits sampled above 3−2√2 with a certified class: "
-           f"{_share(s['certified_share_above']['certified'], s['certified_share_above']['orbits'])}",
+           f"{_share(s['certified_share_above']['certified'], s['certified_share_above']['orbits'])}"
+           f"{_interval(s['certified_share_above']['interval'])}",
            "- certified orbits outside their word's certified window: "
            + (", ".join(f"{x['attractor']} at r = {x['r']}" for x in s["inconsistent"]) or "none"), "",
            "**Certified**: each orbit's class (island: quasi-periodic for ever, by the island theorem; attracting "
@@ -855,31 +1097,40 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            "algebraic ends, `certify orbit`), the cells (the windows' ends compared exactly), the coexistence of the "
            "attractors in a cell (each is attracting at every r of the cell), the island's share of the b-section "
            "(an interval, `island_fraction`) and its rotation number. **Observed**: the share of the sampled initial "
-           "data that reaches each class or attractor (a finite grid), the unresolved orbits' words, and a window "
-           "end's nearness to a rotation number p/q that is not exactly a resonance.", ""]
+           "data that reaches each class or attractor (a finite grid) and its 95% interval (Wilson's, reading the data "
+           "as independent draws: a yardstick, see docs/atlas.md), the unresolved orbits' words, the rotation numbers "
+           "of their loops, whether they visit a horseshoe's boxes, and a window end's nearness to a rotation number "
+           "p/q that is not exactly a resonance. **Chaos** (certified where proved): at each sampled r the horseshoe "
+           "search of `certify chaos` ran; where it proved one, the b-to-b map has positive topological entropy "
+           "(the bound printed) and periodic orbits of infinitely many periods on an invariant set. That set has "
+           "measure zero: a horseshoe proves chaos on it, not that every unresolved orbit is chaotic.", ""]
     if figure:
         out += [f"![the attractors' certified windows, the island's rotation number above]({figure})", ""]
     out += ["## Cells", "",
             "The open intervals between consecutive window ends (exact; 3−2√2 added, where the island appears). "
             "Attractors: those met by the atlas whose certified window contains the cell. Shares: over the "
             "initial data at the sampled r inside the cell (observed).", "",
-            "| cell ]lo, hi[ | attractors (certified) | island | sampled r | shares of the orbits (observed) | "
-            "unresolved | island's area (certified) |", "|---|---|---|---:|---|---:|---|"]
+            "| cell ]lo, hi[ | attractors (certified) | island | sampled r | shares of the orbits, 95% interval "
+            "(observed) | unresolved | island's area (certified) | horseshoe at the sampled r (certified) |",
+            "|---|---|---|---:|---|---:|---|---|"]
     for c in doc["cells"]:
-        shares = "; ".join(f"{k}: {_share(n, c['orbits'])}" for k, n in c["counts"].items()
-                           if k != UNRESOLVED) or "—"
+        shares = "; ".join(f"{k}: {_share(n, c['orbits'])}{_interval(c['intervals'][k])}"
+                           for k, n in c["counts"].items() if k != UNRESOLVED) or "—"
         fr = c["island_fraction"]
+        unres = (_share(c["unresolved"], c["orbits"]) + _interval(c["intervals"].get(UNRESOLVED))
+                 if c["unresolved"] else _share(0, c["orbits"]))
         out.append(f"| ]{_end(c['lo'])}, {_end(c['hi'])}[ | {', '.join(f'`{a}`' for a in c['attractors']) or '—'} | "
                    f"{'yes' if c['island'] else ''} | {len(c['sampled'])} | {shares} | "
-                   f"{_share(c['unresolved'], c['orbits']) if c['orbits'] else '—'} | "
-                   f"{f'[{float(Fraction(fr[0])):.3f}, {float(Fraction(fr[1])):.3f}]' if fr else '—'} |")
+                   f"{unres} | "
+                   f"{f'[{float(Fraction(fr[0])):.3f}, {float(Fraction(fr[1])):.3f}]' if fr else '—'} | "
+                   f"{_cell_horseshoes(c['horseshoes'])} |")
     out += ["", "## Attractors and their certified windows", "",
             "| attractor (word, branch) | length | window(s) (certified) | pair | ρ at the upper end | known from | "
             "sampled r where reached |", "|---|---:|---|---|---|---|---|"]
     for a in doc["attractors"]:
         wins = "; ".join(f"]{_end(w['lo'])}, {_end(w['hi'])}[" for w in a["windows"])
         pairs = ", ".join(sorted({w["pair"] for w in a["windows"]}))
-        rot = "; ".join(_rot(end_rotation(w["hi"])) for w in a["windows"])
+        rot = "; ".join(_rot(w["rotation"]) for w in a["windows"])
         seen = ", ".join(a["seen_at"][:6]) + (f" … ({len(a['seen_at'])})" if len(a["seen_at"]) > 6 else "")
         known = a["source"] + (f" (family {a['family']})" if a["family"] and a["source"] == "met" else "")
         out.append(f"| `{a['name']}` | {a['length']} | {wins} | {pairs} | {rot} | {known} | {seen or '—'} |")
@@ -911,6 +1162,10 @@ def markdown(doc: dict, figure: str | None = None) -> str:
             status = ("predicted, " if m["predicted"] else "") + ("certified" if m["certified"] else "not certified")
             out.append(f"| {m['k']} | {m['length']} | {wins} | {closing} | {status} |")
         out.append("")
+    left = doc["summary"]["unruled_closings"]
+    out += ["Windows closing at an interior resonance whose word no rule above spells, for any k ≤ "
+            f"{RULE_K} (no rule found): "
+            + (", ".join(f"`{x['attractor']}` ({x['p']}/{x['q']})" for x in left) if left else "none") + ".", ""]
     out += ["## By the resonance at which the windows end", "",
             "The island's rotation number at a window's upper end, when it is exactly p/q (decided as algebraic "
             "numbers): the windows that close at the same resonance.", "",
@@ -922,14 +1177,20 @@ def markdown(doc: dict, figure: str | None = None) -> str:
                 "attracting at r, or the rigorous orbit did not enter a trap): observed, with how many orbits.", ""]
         out += [f"- `{compact(read(w)[0]) if len(w) < 400 else w[:40] + '…'}`: {n}"
                 for w, n in list(doc["observed_words"].items())[:30]]
+    out += _unresolved_section(doc)
     out += ["", "## Per r", "",
-            "| r | island (ρ; certified area) | orbits: shares (observed) |", "|---:|---|---|"]
+            "| r | island (ρ; certified area) | orbits: shares (observed) | horseshoe (certified: entropy ≥) |",
+            "|---:|---|---|---|"]
     for row in doc["r"]:
         isl = row["island"]
         it = (f"ρ = {isl['rotation_number']}; [{float(Fraction(isl['fraction'][0])):.3f}, "
               f"{float(Fraction(isl['fraction'][1])):.3f}]") if isl else "—"
         shares = "; ".join(f"{k}: {n}" for k, n in row["counts"].items())
-        out.append(f"| {row['r']} | {it} | {shares} (of {row['total']}) |")
+        hs = row["horseshoe"]
+        hs_text = ("not searched" if hs is None else
+                   f"{hs['entropy_lower']} (saddle {hs['saddle']}, {len(hs['boxes'])} boxes)" if hs["certified"]
+                   else "none found")
+        out.append(f"| {row['r']} | {it} | {shares} (of {row['total']}) | {hs_text} |")
     return "\n".join(out) + "\n"
 
 
@@ -941,37 +1202,53 @@ def _short(text: str, n: int = 34) -> str:
 LABELLED_Q = 12        # atlas.png names the resonances p/q with q ≤ 12; the others (up to 40 near 3−2√2) are lines
 
 
+ZOOM = (0.1712, 0.1800)   # atlas.png's zoom: the windows accumulating on 3−2√2 ≈ 0.171573 from above
+
+
+def _bars(ax, atts: list[dict], colour: dict, lo: float, hi: float) -> None:
+    """One row per attractor: its certified windows inside [lo, hi] as bars, the sampled r where
+    data reached it as dots."""
+    for k, a in enumerate(atts):
+        for w in a["windows"]:
+            x0, x1 = max(float(w["lo"]["digits"]), lo), min(float(w["hi"]["digits"]), hi)
+            if x0 < x1:
+                ax.barh(k, x1 - x0, left=x0, height=0.6, color=colour[w["pair"]])
+        xs = [float(Fraction(r)) for r in a.get("seen_at", []) if lo <= float(Fraction(r)) <= hi]
+        ax.plot(xs, [k] * len(xs), "k.", ms=2)
+
+
 def figure(doc: dict, path) -> Path:
     """atlas.png: top, the island's rotation number ρ(r) on ]3−2√2, 1[ (certified digits at the
-    sampled r) with the windows' resonant ends (dotted; labelled p/q where q ≤ LABELLED_Q); middle,
-    one row per attractor, its certified
-    windows as bars and the sampled r where data reached it as dots; bottom, the observed
-    shares at each sampled r (island, attracting, unresolved).  Floats: a drawing only."""
+    sampled r) with the windows' resonant ends (dotted; labelled p/q where q ≤ LABELLED_Q); then
+    one row per attractor, its certified windows as bars and the sampled r where data reached it
+    as dots; then the observed shares at each sampled r (island, attracting, unresolved); bottom,
+    a zoom on :data:`ZOOM`, near 3−2√2, where the windows are too narrow at full width (the
+    attractors with a window there).  Floats: a drawing only."""
     from . import plots, saving
     plt = saving.pyplot()
     atts = doc["attractors"]
     rows = doc["r"]
     n = len(atts) + len(doc["without_window"])
+    zoomed = [a for a in atts if any(float(w["lo"]["digits"]) < ZOOM[1] and float(w["hi"]["digits"]) > ZOOM[0]
+                                     for w in a["windows"])]
+    m = max(len(zoomed), 4)
     lo, hi = (float(Fraction(x)) for x in doc["parameters"]["r_range"])
-    fig, (ax0, ax, bx) = plt.subplots(3, 1, sharex=True, figsize=(9, 3.4 + 0.22 * max(n, 4)),
-                                      gridspec_kw={"height_ratios": [1.2, max(n, 4) * 0.3, 1.4]})
+    fig, (ax0, ax, bx, zx) = plt.subplots(4, 1, figsize=(9, 4.6 + 0.22 * (max(n, 4) + m)),
+                                          gridspec_kw={"height_ratios": [1.2, max(n, 4) * 0.3, 1.4, m * 0.3]})
+    ax.sharex(ax0)
+    bx.sharex(ax0)
     isl = [(float(Fraction(r["r"])), float(r["island"]["rotation_number"])) for r in rows if r["island"]]
     if isl:
         ax0.plot(*zip(*isl), ".-", color="tab:green", ms=2, lw=0.8)
     ends = sorted({(float(x["hi"]), x["p"], x["q"]) for x in doc["summary"]["resonant_upper_ends"]})
     for x, _p, _q in ends:
-        if lo <= x <= hi:
-            for panel in (ax0, ax):
+        for panel, (a, b) in ((ax0, (lo, hi)), (ax, (lo, hi)), (zx, ZOOM)):
+            if a <= x <= b:
                 panel.axvline(x, color="grey", lw=0.4, ls=":")
     marks = {f"{p}/{q}": x for x, p, q in ends if lo <= x <= hi and q <= LABELLED_Q}   # the others: lines only
     ax0.set_ylabel("ρ", fontsize=8)
     colour = {"real": "tab:orange", "complex": "tab:red", "real and complex": "tab:purple"}
-    for k, a in enumerate(atts):
-        for w in a["windows"]:
-            x0, x1 = float(w["lo"]["digits"]), float(w["hi"]["digits"])
-            ax.barh(k, x1 - x0, left=x0, height=0.6, color=colour[w["pair"]])
-        xs = [float(Fraction(r)) for r in a["seen_at"]]
-        ax.plot(xs, [k] * len(xs), "k.", ms=2)
+    _bars(ax, atts, colour, lo, hi)
     for k, a in enumerate(doc["without_window"], start=len(atts)):
         xs = [float(Fraction(r)) for r in a["seen_at"]]
         ax.plot(xs, [k] * len(xs), "k.", ms=2)
@@ -979,7 +1256,8 @@ def figure(doc: dict, path) -> Path:
     labels += [_short(a["attractor"]) + " (no window)" for a in doc["without_window"]]
     ax.set_yticks(range(len(labels)), labels, fontsize=6)
     ax.invert_yaxis()
-    ax.axvline(3 - 2 * 2 ** 0.5, color="grey", lw=0.6, ls="--")
+    for panel in (ax, zx):
+        panel.axvline(3 - 2 * 2 ** 0.5, color="grey", lw=0.6, ls="--")
     ax.set_title("certified attracting windows (bars; orange: real in-plane pair, red: complex) and the sampled r "
                  "where data reached each (dots)", fontsize=7)
     xs = [float(Fraction(r["r"])) for r in rows]
@@ -998,6 +1276,14 @@ def figure(doc: dict, path) -> Path:
     bx.legend(fontsize=6, loc="center right", bbox_to_anchor=(-0.1, 0.5))   # in the margin: it covers no bar
     bx.set_xlim(lo, hi)
     bx.set_xlabel("r")
+    _bars(zx, zoomed, colour, *ZOOM)
+    zx.set_yticks(range(len(zoomed)), [_short(a["name"]) for a in zoomed], fontsize=6)
+    zx.set_ylim(len(zoomed) - 0.5 if zoomed else 3.5, -0.5)
+    zx.set_xlim(*ZOOM)
+    zx.set_xlabel("r", fontsize=8)
+    zx.tick_params(axis="x", labelsize=7)
+    zx.set_title(f"zoom on r in [{ZOOM[0]}, {ZOOM[1]}], just above 3−2√2 (dashed): the windows accumulating there, "
+                 "the same bars and dots", fontsize=7)
     for panel in (ax0, ax):                       # each panel its own r ticks
         panel.tick_params(labelbottom=True)
     fig.tight_layout()
@@ -1174,14 +1460,67 @@ def check_families(doc: dict) -> list[str]:
     return problems
 
 
+def check_chaos(doc: dict, rows=None) -> list[str]:
+    """Each row's horseshoe (default every r): a proved one proved again exactly from its printed
+    boxes and covering relations (:func:`certify.numerics.horseshoe.prove`: the same ρ(T) bound
+    and entropy bound); and the search and the unresolved orbits' visits and loops computed
+    again (:func:`chaos_job`): a horseshoe the search proves that the atlas lacks, a visit or a
+    rotation number that differs, each is a problem."""
+    from certify.numerics import horseshoe
+    problems = []
+    for row in doc["r"] if rows is None else rows:
+        hs, q = row["horseshoe"], Fraction(row["r"])
+        if hs is not None and hs["certified"]:
+            boxes = [horseshoe.Box.of_json(b) for b in hs["boxes"]]
+            P = horseshoe.prove(q, boxes, [tuple(e) for e in hs["edges"]], hs["returns"])
+            if not P.holds or P.entropy != hs["entropy_lower"] or str(P.beta) != hs["rho_lower"]:
+                problems.append(f"r = {row['r']}: the horseshoe's boxes do not prove it (holds {P.holds}, entropy "
+                                f"{P.entropy or '—'}, ρ(T) ≥ {P.beta}; the atlas says {hs['entropy_lower']}, "
+                                f"{hs['rho_lower']})")
+        fresh = chaos_job(row["r"], unresolved_of(row), doc["parameters"]["collisions"])
+        if hs is None or fresh["horseshoe"]["certified"] != hs["certified"] or (
+                hs["certified"] and fresh["horseshoe"]["entropy_lower"] != hs["entropy_lower"]):
+            problems.append(f"r = {row['r']}: horseshoe {'not searched' if hs is None else hs['certified']} in the "
+                            f"atlas, {fresh['horseshoe']['certified']} by certify chaos's search again")
+        mine = {i: o for i, o in enumerate(row["orbits"])}
+        for o in fresh["orbits"]:
+            have = mine[o["index"]]
+            if (have.get("visits_horseshoe"), have.get("curve")) != (o["visits_horseshoe"], o["curve"]):
+                problems.append(f"r = {row['r']}, θ0 = {have['theta0']}, φ0 = {have['phi0']}: visits "
+                                f"{have.get('visits_horseshoe')}, loop {have.get('curve')} in the atlas; "
+                                f"{o['visits_horseshoe']}, {o['curve']} computed again")
+    return problems
+
+
+def check_summaries(doc: dict) -> list[str]:
+    """What the document derives from its rows, derived again: each cell's 95% intervals
+    (:func:`wilson` of its counts), the certified share above 3 − 2√2 and its interval, the
+    unresolved orbits by kind, the horseshoes' counts and entropy range, the loops."""
+    problems = []
+    for c in doc["cells"]:
+        if c["intervals"] != {k: wilson(n, c["orbits"]) for k, n in c["counts"].items()}:
+            problems.append(f"cell ]{c['lo']['digits']}, {c['hi']['digits']}[: its 95% intervals differ from "
+                            "Wilson's of its counts")
+    s = doc["summary"]
+    for key, fresh in (("certified_share_above", share_above(doc["r"])), ("unresolved_by_kind",
+                                                                           unresolved_by_kind(doc["r"])),
+                       ("horseshoes", horseshoes(doc["r"]))):
+        if s[key] != fresh:
+            problems.append(f"summary {key}: {s[key]} in the atlas, {fresh} from its rows")
+    if doc["curves"] != curves_of(doc["r"]):
+        problems.append("the loops' rotation numbers differ from the rows'")
+    return problems
+
+
 def check_atlas(doc: dict, window_max: int = 24, rows=None) -> list[str]:
     """Every way the document can be wrong that a recomputation sees (empty: it checks):
     the seeds and words (:func:`check_seeds`), the windows (:func:`check_windows`, words up
     to ``window_max`` letters), the cells (:func:`check_cells`), the families
     (:func:`check_families`), the orbits and the island (:func:`check_orbits` on ``rows``,
-    default every r), the cells' counts."""
+    default every r), the horseshoes, visits and loops (:func:`check_chaos` on ``rows``), the
+    intervals and summaries (:func:`check_summaries`), the cells' counts."""
     problems = (check_seeds(doc) + check_windows(doc, window_max) + check_cells(doc) + check_families(doc)
-                + check_orbits(doc, rows))
+                + check_orbits(doc, rows) + check_chaos(doc, rows) + check_summaries(doc))
     for c in doc["cells"]:
         rows_in = [row for row in doc["r"] if row["r"] in c["sampled"]]
         counts: dict[str, int] = {}

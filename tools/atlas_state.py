@@ -1,0 +1,50 @@
+"""The state file of ``certify atlas`` rebuilt from a committed atlas.json, so that
+``certify atlas --resume`` goes on from the committed atlas's records when its
+atlas-state.jsonl (not committed) is gone.
+
+    python tools/atlas_state.py reports/atlas.json > reports/atlas-state.jsonl
+
+An r record is the document's row (its orbits, the island) with the data and collisions of
+its parameters; a word record is the document's word (as analysed: its windows exactly as
+`certify orbit` gave them).  A horseshoe record (``chaos``) is written back only where the
+row has one.  No timing: the seconds are 0."""
+from __future__ import annotations
+
+import json
+import sys
+
+from certify.run.census_report import dumps
+
+ORBIT_KEYS = ("theta0", "phi0", "class", "certified_from", "word", "branch", "observed", "why", "rerun", "unresolved")
+
+
+def records(doc: dict):
+    """The state's records of an atlas document (r records, then word records, then chaos)."""
+    p = doc["parameters"]
+    data = 8 + p["data"]
+    for row in doc["r"]:
+        yield {"kind": "r", "r": row["r"], "data": data, "collisions": p["collisions"], "island": row["island"],
+               "orbits": [{k: o.get(k) for k in ORBIT_KEYS} for o in row["orbits"]], "seconds": 0.0}
+    for w in doc["words"]:
+        yield {**{k: v for k, v in w.items() if k != "source"}, "seconds": 0.0}
+    for row in doc["r"]:
+        if row.get("horseshoe") is not None:
+            yield {"kind": "chaos", "r": row["r"], "collisions": p["collisions"], "horseshoe": row["horseshoe"],
+                   "orbits": [{"index": i, "visits_horseshoe": o.get("visits_horseshoe"), "curve": o.get("curve")}
+                              for i, o in enumerate(row["orbits"]) if o["class"] == "unresolved"],
+                   "search_seconds": 0.0, "seconds": 0.0}
+
+
+def main(argv: list[str]) -> int:
+    if len(argv) != 1:
+        print("usage: python tools/atlas_state.py ATLAS_JSON > atlas-state.jsonl", file=sys.stderr)
+        return 2
+    with open(argv[0], encoding="utf-8") as f:
+        doc = json.load(f)
+    for rec in records(doc):
+        sys.stdout.write(dumps(rec) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
