@@ -522,11 +522,9 @@ class Analysis:
         (certified signs at the witness), in the kernel's witness form
         (:meth:`.eigenspace.Witness.kernel_form`)."""
         wanted = [q for q in self.imposed if q.name != "λ" and not q.name.startswith("dominance")]
-        out = []
-        for w in self.data.values():
-            if w.x is not None and all(w.value_sign(q.name) == q.sign for q in wanted) and w.kernel_form() not in out:
-                out.append(w.kernel_form())
-        return out
+        forms = [w.kernel_form() for w in self.data.values()
+                 if w.x is not None and all(w.value_sign(q.name) == q.sign for q in wanted)]
+        return [f for k, f in enumerate(forms) if f not in forms[:k]]
 
     def settle_by_word(self):
         """Move the points left undecided so far (by the requirements of existence: λ, u, x) at a
