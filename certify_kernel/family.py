@@ -210,14 +210,6 @@ def theta_facts(r_max: Fraction) -> None:
 
 
 # ------------------------------------------------------------- 4. dominance, in intervals
-def _poly_iv(p: list, x: Iv) -> Iv:
-    """p(x) over the interval x (Horner: an enclosure)."""
-    out = Iv(0)
-    for c in reversed(p):
-        out = out * x + c
-    return out
-
-
 def dominant(K: list, N1: int, r_max: Fraction) -> dict:
     """Part 4 for every n ≥ N1 and r ∈ ]0, R] (R = r_max ≤ 1/4), in intervals: returns the bounds
     (δ, the interval of λ, the bound of the other two eigenvalues, u, q₃ − d, λ − d²).
@@ -225,7 +217,7 @@ def dominant(K: list, N1: int, r_max: Fraction) -> dict:
     r = Iv(0, r_max)
     if not (N1 + 1) * RHO <= N1:
         raise NotVerified(f"n ρ̄^(n−1) is not shown to decrease from n = {N1}")
-    kmax = max((_poly_iv(K[i][j], r).abs() + r).hi for i in range(2) for j in range(2))
+    kmax = max((at(K[i][j], r).abs() + r).hi for i in range(2) for j in range(2))
     delta = N1 * RHO ** (N1 - 1) * max(Fraction(1), kmax)
     small = Iv(-delta, delta)
     a = b = c = d = small
@@ -335,7 +327,7 @@ def velocities(K: list, N1: int, facts: dict) -> dict:
     for k in range(16):
         r = Iv(lo + (hi - lo) * k / 16, lo + (hi - lo) * (k + 1) / 16)
         h = (1 + r) / 2
-        K11 = _poly_iv(K[0][0], r)
+        K11 = at(K[0][0], r)
         a_ = K11 - 2 * r - r * h * h * C * big
         b_ = 1 - C * h * h * big
         m_a = a_.lo if m_a is None else min(m_a, a_.lo)

@@ -128,20 +128,20 @@ def _iv(x) -> Iv:
     return x if isinstance(x, Iv) else Iv(x)
 
 
-def _sqrt_down(q: Fraction) -> Fraction:
-    """A grid point ≤ √q (q ≥ 0): isqrt of q·4^BITS, rounded down."""
-    return Fraction(isqrt(floor(q * (1 << (2 * BITS)))), 1 << BITS)
+def root_below(q: Fraction, bits: int = 64) -> Fraction:
+    """A point of the grid 2^-bits at most √q (q ≥ 0)."""
+    scale = 1 << bits
+    return Fraction(isqrt(q.numerator * scale * scale // q.denominator), scale)
 
 
-def _sqrt_up(q: Fraction) -> Fraction:
-    """A grid point ≥ √q (q ≥ 0)."""
-    m = ceil(q * (1 << (2 * BITS)))
-    s = isqrt(m)
-    return Fraction(s if s * s == m else s + 1, 1 << BITS)
+def root_above(q: Fraction, bits: int = 64) -> Fraction:
+    """A point of the grid 2^-bits at least √q (q ≥ 0)."""
+    s = root_below(q, bits)
+    return s if s * s >= q else s + Fraction(1, 1 << bits)
 
 
 def sqrt(x: Iv) -> Iv:
     """√x for x ⊂ [0, ∞[ (ValueError for a negative point): √ is increasing."""
     if x.lo < 0:
         raise ValueError(f"√ of an interval with negative points {x}")
-    return Iv(_sqrt_down(x.lo), _sqrt_up(x.hi))
+    return Iv(root_below(x.lo, BITS), root_above(x.hi, BITS))

@@ -257,18 +257,20 @@ def witnessed_feasible(witnesses: list, word: str, r0: Algebraic) -> bool:
     the candidate degenerates (Cramer's q(0) is 0/0 on a multiple eigenvalue: a line of data) any
     eigenvector is a datum, and one that realises the word is enough (the atom is an existence).
     Nothing of the witness is trusted: :func:`realised_at`."""
-    return any(isinstance(w, dict) and w.get("kind") == "datum" and w.get("word") == word and realised_at(w, r0)
-               for w in witnesses or [])
+    return any(isinstance(w, dict) and w.get("kind") == "datum" and realised_at(w, r0, word) for w in witnesses or [])
 
 
-def realised_at(w: dict, r0: Algebraic) -> bool:
+def realised_at(w: dict, r0: Algebraic, word: str | None = None) -> bool:
     """The witness's datum at r₀, checked exactly in Q(r₀)(√Δ) with the kernel's collision matrices:
     its r is r₀ (its polynomial and isolating interval, checked, equal r₀); λ > 0; q(0) = (-1, u, v)
     with u > 0 and M_w q(0) = λ q(0); x = α + β√Δ > 0 (Δ > 0 where β ≠ 0); and the four particles
     from p(0) = (1, 0, x), q(0), moved exactly (:meth:`Datum.run`: each collision the strict first),
     spell the word and return scaled: p(t_n) = μ p(0) with μ > 0 (so x is a fixed point of the
-    position map) and q(t_n) = λ q(0).  Elements of Q(r₀) are polynomials in r (lowest first)."""
+    position map) and q(t_n) = λ q(0) (so q(0) is an eigenvector of M_w for λ).  Elements of Q(r₀)
+    are polynomials in r (lowest first); ``word``, when given, the (expanded) word it must be for."""
     try:
+        if word is not None and expand_word(w["word"]) != word:
+            return False
         F = Field(r0)
         mine = Algebraic([Fraction(c) for c in w["r"]["polynomial"]], *(Fraction(e) for e in w["r"]["interval"]))
         if mine.compare(r0) != 0:
@@ -276,7 +278,9 @@ def realised_at(w: dict, r0: Algebraic) -> bool:
         of = lambda c: Num(F, [Fraction(a) for a in c])          # noqa: E731
         lam, q0 = of(w["lambda"]), tuple(of(c) for c in w["q"])
         alpha, beta, delta = (of(w["x"][k]) for k in ("alpha", "beta", "delta"))
-    except (KeyError, TypeError, ValueError, ZeroDivisionError):
+        if len(q0) != 3:
+            return False
+    except (KeyError, TypeError, ValueError, ZeroDivisionError, Undefined):
         return False
     if beta.a and delta.sign() <= 0:
         return False
@@ -284,12 +288,7 @@ def realised_at(w: dict, r0: Algebraic) -> bool:
     x = Num(F, alpha.a, beta.a)
     word = expand_word(w["word"])
     K = [[[Num(F, univariate(e)) for e in row] for row in collision(k).rows] for k in range(3)]
-    q = q0
-    for letter in word:
-        M = K["abc".index(letter)]
-        q = tuple(sum((q[j] * M[i][j] for j in range(3)), Num(F, [])) for i in range(3))
-    if len(q0) != 3 or (q0[0] + 1).sign() or q0[1].sign() <= 0 or lam.sign() <= 0 or x.sign() <= 0 or \
-            any((q[i] - lam * q0[i]).sign() for i in range(3)):
+    if (q0[0] + 1).sign() or q0[1].sign() <= 0 or lam.sign() <= 0 or x.sign() <= 0:
         return False
     one, zero = Num(F, [Fraction(1)]), Num(F, [])
     D = Datum(F, lam, (one, zero, x), q0, None, K)

@@ -8,8 +8,9 @@ arithmetic.
 from __future__ import annotations
 
 from fractions import Fraction
-from math import isqrt
 
+from .intervals import root_above as _root_above
+from .intervals import root_below as _root_below
 from .poly import divmod_, gcd, madd, mmul, reduce_circles, resultant_in, squarefree, trim, value
 from .sturm import Algebraic, count, real_roots
 
@@ -306,16 +307,6 @@ def sqrt(a) -> Algebraic:
         if s * s == q:
             return number(s)
     return _isolate(p2, *bounds(), refine)
-
-
-def _root_below(q: Fraction, bits: int = 64) -> Fraction:
-    scale = 1 << bits
-    return Fraction(isqrt(q.numerator * scale * scale // q.denominator), scale)
-
-
-def _root_above(q: Fraction, bits: int = 64) -> Fraction:
-    s = _root_below(q, bits)
-    return s if s * s >= q else s + Fraction(1, 1 << bits)
 
 
 def roots_in(p: list, lo, hi, lo_closed: bool = False, hi_closed: bool = False) -> list:

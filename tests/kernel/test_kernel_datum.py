@@ -42,6 +42,7 @@ FORGERIES = {
     "another word": lambda d: d.__setitem__("word", "acbc"),
     "q_1(0) not -1": lambda d: d["q"].__setitem__(0, ["-2"]),
     "a malformed number": lambda d: d["q"][1].__setitem__(0, "one half"),
+    "two velocities": lambda d: d["q"].pop(),
 }
 
 
