@@ -152,12 +152,9 @@ def cmd_orbit(args) -> int:
     from certify.patterns.reduction_orbits import analyse as analyse_orbit
     from certify.run import progress
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
-    if "d" in args.word:                  # five particles (issue 39): the κ route, certify.patterns.five
-        from certify.patterns.five import analyse_five, read_five
-        read_five(args.word)                                     # validate first: one line, exit 2
-        result = analyse_five(args.word, lo, hi)
-        print(result.json_text() if args.json else result.markdown())
-        return 0
+    if "d" in args.word:
+        raise UsageError("orbit: the reduction map of five particles is not built; "
+                         "`certify pattern WORD` analyses a five-particle word's self-similar data")
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     if args.trap is not None:
         if args.r_range:
