@@ -13,15 +13,16 @@ from __future__ import annotations
 import json
 import sys
 
+from certify.run import atlas
 from certify.run.census_report import dumps
 
-ORBIT_KEYS = ("theta0", "phi0", "class", "certified_from", "word", "branch", "observed", "why", "rerun", "unresolved")
+ORBIT_KEYS = atlas.ORBIT_KEYS + atlas.ORBIT_LATE_KEYS
 
 
 def records(doc: dict):
     """The state's records of an atlas document (r records, then word records, then chaos)."""
     p = doc["parameters"]
-    data = 8 + p["data"]
+    data = len(atlas.data_grid(p["data"]))
     for row in doc["r"]:
         yield {"kind": "r", "r": row["r"], "data": data, "collisions": p["collisions"], "island": row["island"],
                "orbits": [{k: o.get(k) for k in ORBIT_KEYS} for o in row["orbits"]], "seconds": 0.0}

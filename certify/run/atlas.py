@@ -88,6 +88,9 @@ TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attra
 NEAR_HORSESHOE = "near a certified horseshoe"   # an unresolved orbit whose float64 run enters a proved horseshoe's box
 RESONANCE_Q = 120                             # window ends decided to be resonances p/q, q ≤ 120
 NEAR_Q = 24                                   # a non-resonant end: the nearest p/q with q ≤ 24 (observed)
+# an orbit's record: the keys every run writes, then those written only where they apply
+ORBIT_KEYS = ("theta0", "phi0", "class", "certified_from", "word", "branch", "observed", "why")
+ORBIT_LATE_KEYS = ("rerun", "unresolved")
 STATE = "atlas-state.jsonl"
 FIGURE = "atlas.png"
 WINDOW = 16                                   # jobs in flight
@@ -781,9 +784,8 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
         rows.append({"r": rec["r"], "digits": f"{float(q):.6f}", "island": rec["island"],
                      "counts": _counts(rec["orbits"]), "total": len(rec["orbits"]),
                      "horseshoe": chaos["horseshoe"] if chaos else None,
-                     "orbits": [{**{k: o[k] for k in ("theta0", "phi0", "class", "certified_from", "word", "branch",
-                                                     "observed", "why")},
-                                 "rerun": o.get("rerun"), "unresolved": o.get("unresolved"),
+                     "orbits": [{**{k: o[k] for k in ORBIT_KEYS},
+                                 **{k: o.get(k) for k in ORBIT_LATE_KEYS},
                                  "visits_horseshoe": seen_by.get(i, {}).get("visits_horseshoe"),
                                  "curve": seen_by.get(i, {}).get("curve")} for i, o in enumerate(rec["orbits"])]})
     for cell in cells:
@@ -1021,11 +1023,13 @@ def _horseshoe_line(h: dict) -> str:
 
 def _unresolved_section(doc: dict) -> list[str]:
     """ATLAS.md's section on the unresolved orbits: by kind, the loops' rotation numbers."""
+    from certify.numerics import horseshoe
     s = doc["summary"]
     out = ["", "## Unresolved orbits", "",
            "What each unresolved orbit shows (observed, never a proof): " + "; ".join(
                f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run") + ". "
-           "*Near a certified horseshoe*: its float64 run, after the first 100 returns to b, enters a box of the "
+           f"*Near a certified horseshoe*: its float64 run, after the first {horseshoe.TRANSIENT_RETURNS} returns to "
+           "b, enters a box of the "
            "horseshoe proved at its r. That does not make the orbit chaotic: the horseshoe is a set of measure zero.",
            "", "*Repeats a word without converging* (the word's periodic orbit at r is not attracting, or none): the "
            "run's states at b, every k returns (k = the b's of the word), turn around a loop. Its rotation number "
@@ -1035,7 +1039,7 @@ def _unresolved_section(doc: dict) -> list[str]:
            "invariant curve; away from 1, a spiral, a slow transient).", ""]
     if not doc["curves"]:
         return out + ["None in this atlas."]
-    out += ["| word | k | orbits | r | rotation number (observed) | nearest p/q (q ≤ 24) | radius drift |",
+    out += [f"| word | k | orbits | r | rotation number (observed) | nearest p/q (q ≤ {NEAR_Q}) | radius drift |",
             "|---|---:|---:|---|---|---|---|"]
     for c in doc["curves"]:
         w = compact(read(c["word"])[0]) if len(c["word"]) < 400 else c["word"][:40] + "…"

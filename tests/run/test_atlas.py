@@ -313,7 +313,7 @@ def test_wilson_intervals():
 def test_refinement_samples_every_cell_and_near_the_window_ends(records, doc):
     lo, hi = Fraction("0.14"), Fraction("0.32")
     more = atlas.refinement(records[0], records[1], lo, hi)
-    assert more == sorted(set(more)) and all(lo < x < hi for x in more)
+    assert all(lo < x < hi for x in more)
     have = [Fraction(r["r"]) for r in records[0]] + more
     for c in doc["cells"]:
         a, b = atlas._alg(c["lo"]), atlas._alg(c["hi"])
@@ -322,8 +322,6 @@ def test_refinement_samples_every_cell_and_near_the_window_ends(records, doc):
             assert any(atlas._in_open(x, a, b) for x in have), c["lo"]["digits"]
     k3 = next(a for a in doc["attractors"] if a["word"] == RULE.word(3))["windows"][0]
     assert any(atlas._in_open(x, atlas._alg(k3["lo"]), atlas._alg(k3["hi"])) for x in more)
-    x = atlas._fraction(atlas.simple_rational_between(atlas._alg(k3["lo"]), atlas._alg(k3["hi"])))
-    assert x.denominator <= 10 ** 5 and atlas._in_open(x, atlas._alg(k3["lo"]), atlas._alg(k3["hi"]))
 
 
 def test_a_refined_run_reaches_the_seeded_window():
@@ -392,22 +390,17 @@ def test_unresolved_orbits_say_what_they_show(doc):
             assert (o["unresolved"] is None) == (o["class"] != atlas.UNRESOLVED)
 
 
-def test_a_wrong_unresolved_kind_or_rerun_is_caught(doc):
+def test_a_wrong_unresolved_kind_or_rerun_is_caught(doc, chaos_doc):
     bad = copy.deepcopy(doc)
     row = bad["r"][0]
     o = row["orbits"][0]
     o["rerun"] = 7
     assert any("run again" in p for p in atlas.check_orbits(bad, [row]))
-    bad = copy.deepcopy(doc)
-    row = next((r for r in bad["r"] if any(o["class"] == atlas.UNRESOLVED for o in r["orbits"])), None)
-    if row is None:                                   # the tiny atlas may resolve every orbit: make one
-        row = bad["r"][0]
-        row["orbits"] = row["orbits"][:1]
-        o = row["orbits"][0]
-    else:
-        o = next(o for o in row["orbits"] if o["class"] == atlas.UNRESOLVED)
-    o["class"], o["unresolved"] = atlas.UNRESOLVED, "no such kind"
-    assert atlas.check_orbits(bad, [row]) != []
+    bad = copy.deepcopy(chaos_doc)                  # its r = 12471/12500 has unresolved orbits (abcb repeated)
+    row = next(r for r in bad["r"] if any(o["class"] == atlas.UNRESOLVED for o in r["orbits"]))
+    o = next(o for o in row["orbits"] if o["class"] == atlas.UNRESOLVED)
+    o["unresolved"] = "no such kind"
+    assert any("no such kind" in p for p in atlas.check_orbits(bad, [row]))
 
 
 def test_the_committed_atlas_misses_no_seed_nor_family_member(monkeypatch):
