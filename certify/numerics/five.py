@@ -244,6 +244,13 @@ class FiveOrbits:
                      f"({(self.certified.sum() / done if done else 1):.2%}); certified horizon per orbit from "
                      f"{int(self.certified.min()) if self.certified.size else 0} to "
                      f"{int(self.certified.max(initial=0))}; the rest observed")
+        if self.word is not None:
+            tails: dict = {}
+            for w in self.word.ravel():
+                key = periodic_tail(str(w)) or "no periodic tail"
+                tails[key] = tails.get(key, 0) + 1
+            lines.append("  the words' tails (observed): " + ", ".join(
+                f"{k} ×{n}" for k, n in sorted(tails.items(), key=lambda x: (-x[1], x[0]))))
         return "\n".join(lines)
 
 
