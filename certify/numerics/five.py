@@ -66,9 +66,9 @@ BREAKS = {
 }
 
 
-def entry(w, k: int, l: int):
-    """ω_kl for any k ≠ l (ω_lk = −ω_kl) and the index of its slot."""
-    return (w[SLOT[k, l]], SLOT[k, l]) if k < l else (-w[SLOT[l, k]], SLOT[l, k])
+def entry(w, k: int, m: int):
+    """ω_km for any k ≠ m (ω_mk = −ω_km) and the index of its slot."""
+    return (w[SLOT[k, m]], SLOT[k, m]) if k < m else (-w[SLOT[m, k]], SLOT[m, k])
 
 
 def classify(i: int, w, bounds, sign=rules.margin_sign, finite=math.isfinite) -> tuple[int, int]:
@@ -134,13 +134,13 @@ def advance(j: int, w, rows) -> tuple:
 
 def bivector(p, q) -> tuple:
     """p ∧ q in the coordinates of :data:`PAIRS`."""
-    return tuple(p[k] * q[l] - p[l] * q[k] for k, l in PAIRS)
+    return tuple(p[k] * q[m] - p[m] * q[k] for k, m in PAIRS)
 
 
 def start(p, q, tol: float = rules.TOL64) -> tuple[tuple, tuple]:
     """The float bivector of the datum (p, q) and its bound TOL · (|p_k q_l| + |p_l q_k|)."""
     w = bivector([float(z) for z in p], [float(z) for z in q])
-    err = tuple(tol * (abs(p[k] * q[l]) + abs(p[l] * q[k])) + rules.TINY64 for k, l in PAIRS)
+    err = tuple(tol * (abs(p[k] * q[m]) + abs(p[m] * q[k])) + rules.TINY64 for k, m in PAIRS)
     return w, err
 
 
@@ -259,7 +259,7 @@ def iterate(r, p0, q0, collisions: int = 10_000, strict: bool = False, words: bo
     """The five-particle reduction map from every datum (p0, q0) on ``face`` (rows of
     (n_orbits, 4) arrays), for every r, on the float64 engine: up to ``collisions``
     collisions or a break; ``strict`` stops each orbit at its certified horizon."""
-    from . import five_kernel           # numba, where the engine first runs
+    from . import five_kernel  # numba, where the engine first runs
     r = np.atleast_1d(np.asarray(r, dtype=float))
     p0, q0 = np.atleast_2d(np.asarray(p0, dtype=float)), np.atleast_2d(np.asarray(q0, dtype=float))
     if r.ndim != 1 or not np.all((r > 0) & (r < 1)):

@@ -21,9 +21,9 @@ SLOT = np.array([[-1, 0, 1, 2], [0, -1, 3, 4], [1, 3, -1, 5], [2, 4, 5, -1]], dt
 
 
 @njit(cache=True, inline="always")
-def _entry(w, k, l):
-    """ω_kl for k ≠ l."""
-    return w[SLOT[k, l]] if k < l else -w[SLOT[k, l]]
+def _entry(w, k, m):
+    """ω_km for k ≠ m."""
+    return w[SLOT[k, m]] if k < m else -w[SLOT[k, m]]
 
 
 @njit(cache=True)

@@ -55,10 +55,10 @@ def test_exact_map_spells_the_particle_words(r):
 
 def plane_state(w, i):
     """Exact gaps p and velocities q with p ∧ q = ω on the face i (ω a plane): q_i = 1,
-    p_k = −ω_ik, q_k0 = 0 and q_l = ω_k0l / p_k0 for a k0 ≠ i."""
+    p_k = −ω_ik, q_k0 = 0 and q_m = ω_k0m / p_k0 for a k0 ≠ i."""
     p = [-five.entry(w, i, k)[0] if k != i else Q(0) for k in range(4)]
     k0 = next(k for k in range(4) if k != i)
-    q = [Q(1) if l == i else (Q(0) if l == k0 else five.entry(w, k0, l)[0] / p[k0]) for l in range(4)]
+    q = [Q(1) if m == i else (Q(0) if m == k0 else five.entry(w, k0, m)[0] / p[k0]) for m in range(4)]
     return p, q
 
 
