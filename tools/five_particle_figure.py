@@ -1,10 +1,11 @@
 """The five-particle stable windows beside the four-particle ones (issue 39): reports/five-windows.png.
 
-    python tools/five_particle_figure.py abadcbcabc [WORD ...] [--pattern-json FILE ...] [--out reports/five-windows.png]
+    python tools/five_particle_figure.py abadcbcabc [WORD ...] [--pattern-json FILE ...] [--out PNG]
 
 Each five-particle WORD is analysed exactly here (``certify pattern``, certify/patterns/five.py);
 ``--pattern-json FILE`` reads instead what ``certify pattern WORD --json [--r-range LO HI] > FILE``
-wrote (a long word's analysis, done once; its range is the one it was given).  The four-particle
+wrote (a long word's analysis, done once; its range is the one it was given); --out defaults to
+reports/five-windows.png.  The four-particle
 windows are those of the committed census (reports/census.json).  Only certified windows are
 drawn (certify/run/five_figure.py).
 """
