@@ -8,7 +8,8 @@ from pathlib import Path
 
 import flint
 
-from certify.numerics import five, rules
+from certify.numerics import five_reduction as five
+from certify.numerics import rules
 
 ROOT = Path(__file__).resolve().parents[1]
 spec = importlib.util.spec_from_file_location("five_particle_scan", ROOT / "tools" / "five_particle_scan.py")

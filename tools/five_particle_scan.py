@@ -6,7 +6,7 @@ reduction at many r, the periodic tails they settle on, and each tail's windows 
     python tools/five_particle_scan.py --certify --timeout 900 --json scan.json
 
 What is observed and what is certified.  The runs are the float64 engine of
-``certify simulate --particles 5`` (certify/numerics/five.py): only their first 40-60 collisions
+``certify simulate --particles 5`` (certify/numerics/five_reduction.py): only their first 40-60 collisions
 are certified, so the tail each orbit settles on (its last letters repeating with a period of at
 most ``--longest`` letters, four times) is *observed*.  With ``--certify`` each distinct tail of at
 most ``--max-length`` letters is given to ``certify pattern WORD --json`` (one at a time, at most
@@ -29,7 +29,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from certify.numerics import five  # noqa: E402
+from certify.numerics import five_reduction as five  # noqa: E402
 
 
 def grid(lo: float, hi: float, count: int) -> list[float]:

@@ -107,9 +107,9 @@ FIVE_REFUSED = (("theta0", "--theta0"), ("phi0", "--phi0"), ("dps", "--dps"), ("
 
 
 def simulate_five(args) -> int:
-    """``simulate --particles 5``: the five-particle reduction (certify.numerics.five) on the
+    """``simulate --particles 5``: the five-particle reduction (certify.numerics.five_reduction) on the
     float64 engine from ``--orbits N`` seeded random states on face b (``--seed``), every r."""
-    from certify.numerics import five
+    from certify.numerics import five_reduction as five
     for name, option in FIVE_REFUSED:
         if getattr(args, name) is not None:
             raise UsageError(f"{option} is for four particles; five start from --orbits N random states (--seed S)")

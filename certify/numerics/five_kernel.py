@@ -1,8 +1,8 @@
-"""The float64 engine of the five-particle reduction (:mod:`.five`): a numba transcription of
-:func:`.five.classify`, :func:`.five.advance`, :func:`.rules.step_bounds`' margins (TOL · |Ĉ||ω|)
+"""The float64 engine of the five-particle reduction (:mod:`.five_reduction`): a numba transcription of
+:func:`.five_reduction.classify`, :func:`.five_reduction.advance`, :func:`.rules.step_bounds`' margins (TOL · |Ĉ||ω|)
 and :func:`.rules.carry_bound` at length 6, one orbit at a time.
 
-``rows`` is ``five.float_rows(r)`` flat: ``rows[36 j + 6 m + c]``.  The bivector is rescaled by
+``rows`` is ``five_reduction.float_rows(r)`` flat: ``rows[36 j + 6 m + c]``.  The bivector is rescaled by
 a power of 2 when its largest entry leaves [2^-256, 2^256], both bounds with it (``err`` as in
 step (v) of carry_bound's proof), as :mod:`.kernel` does for the four-particle normal.
 """
@@ -16,7 +16,7 @@ from numba import njit
 BIG = 2.0 ** 256
 SMALL = 2.0 ** -256
 HORIZON = 5                            # rules.HORIZON
-# SLOT[k, l]: the index of ω_kl, k < l, in five.PAIRS
+# SLOT[k, l]: the index of ω_kl, k < l, in five_reduction.PAIRS
 SLOT = np.array([[-1, 0, 1, 2], [0, -1, 3, 4], [1, 3, -1, 5], [2, 4, 5, -1]], dtype=np.int64)
 
 
@@ -28,7 +28,7 @@ def _entry(w, k, m):
 
 @njit(cache=True)
 def _classify(i, w, bnd):
-    """five.classify with margin_sign: (code, next face)."""
+    """five_reduction.classify with margin_sign: (code, next face)."""
     zero = True
     for m in range(6):
         if not math.isfinite(w[m]):

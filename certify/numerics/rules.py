@@ -137,7 +137,7 @@ def gamma_bound(bits: int, length: int = 3) -> Fraction:
     """g = L u (1 + 2 L u), u = 2^-bits, L the least power of 2 ≥ ``length`` + 1: a
     representable number ≥ γ_(length+1) = (length+1)u/(1 − (length+1)u) (since
     1/(1 − x) ≤ 1 + 2x for x ≤ 1/2); see :func:`carry_bound`.  For the four-particle normals
-    (length 3) g = 4u(1 + 8u); for the five-particle bivectors (length 6, :mod:`.five`)
+    (length 3) g = 4u(1 + 8u); for the five-particle bivectors (length 6, :mod:`.five_reduction`)
     g = 8u(1 + 16u).
 
     >>> from fractions import Fraction
@@ -182,7 +182,7 @@ def carry_bound(j: int, n, err, absrows, g, kappa, tiny=0):
     componentwise, C the exact matrix of which Ĉ is the rounding, n' = fl(Ĉ n) the
     engine's next normal and x' = C x.  Then |n' − x'| ≤ err' componentwise.
 
-    The same for vectors of any length d ≤ 6 (the five-particle bivectors, :mod:`.five`, d = 6),
+    The same for vectors of any length d ≤ 6 (the five-particle bivectors, :mod:`.five_reduction`, d = 6),
     with ``g`` = ``gamma_bound(bits, d)``: the changes to the proof are noted in brackets.
 
     Proof (u = 2^-p the unit roundoff, η = 2^-1074 the smallest subnormal of float64,

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from certify import cli
-from certify.numerics import five
+from certify.numerics import five_reduction as five
 
 
 def run(capsys, *argv):

@@ -1,4 +1,4 @@
-"""The five-particle reduction map (certify.numerics.five): exact map against the exact
+"""The five-particle reduction map (certify.numerics.five_reduction): exact map against the exact
 five-particle simulator collision by collision, the float64 engine against the exact map on
 its certified collisions (and its bound against the exact error), the chart of S² × S²."""
 import math
