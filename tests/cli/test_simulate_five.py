@@ -49,3 +49,15 @@ def test_four_particles_refuse_a_seed_and_are_unchanged(tmp_path, capsys):
     assert code == 0
     with np.load(a) as x, np.load(b) as y:
         assert x.files == y.files and all(np.array_equal(x[k], y[k], equal_nan=True) for k in x.files)
+
+
+def test_the_example_of_the_docs_is_the_command(tmp_path, capsys):
+    """docs/particles.md's example of ``simulate --particles 5`` is what the command prints."""
+    from pathlib import Path
+    text = (Path(__file__).resolve().parents[2] / "docs" / "particles.md").read_text(encoding="utf-8")
+    block = text.split("$ python -m certify simulate --particles 5 ", 1)[1].split("```", 1)[0]
+    argv, printed = block.split("\n", 1)
+    argv = argv.split()
+    argv[argv.index("--out") + 1] = str(tmp_path / "five.npz")
+    code, out = run(capsys, "simulate", "--particles", "5", *argv)
+    assert code == 0 and out.out.replace(str(tmp_path / "five.npz"), "five.npz") == printed
