@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 from certify.dynamics import particles
-from certify.numerics import five, rules
+from certify.numerics import five_reduction as five
+from certify.numerics import rules
 
 Q = flint.fmpq
 
