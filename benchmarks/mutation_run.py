@@ -109,10 +109,11 @@ MUTANTS = [
            "    return classify(i, n, (err[0] if i == 0 else 0, err[1] if i == 1 else 0, err[2] if i == 2 else 0),"
            " sign, finite) == (COMPLETED, j)", listed=True),
     Mutant("g |n| dropped from carry_bound", "carry", RULES,
-           "t = [err[c] + g * abs(n[c]) for c in range(3)]", "t = [err[c] for c in range(3)]"),
+           "t = [err[c] + g * abs(n[c]) for c in range(len(n))]", "t = [err[c] for c in range(len(n))]"),
     Mutant("g |n| dropped in the kernel", "carry", KERNEL,
            "t0 = err[0] + g * a0 ", "t0 = err[0] "),
-    Mutant("γ: 4u → 3u", "carry", RULES, "return 4 * u * (1 + 8 * u)", "return 3 * u * (1 + 8 * u)"),
+    Mutant("γ: 4u → 3u", "carry", RULES, "return L * u * (1 + 2 * L * u)",
+           "return 3 * L // 4 * u * (1 + 2 * L * u)"),
     Mutant("tiny dropped from carry_bound", "carry", RULES, "out.append(s * kappa + tiny)", "out.append(s * kappa)"),
     Mutant("tiny dropped from the rescaled bound", "carry", KERNEL,
            "        e0 = e0 * f + tiny\n        e1 = e1 * f + tiny\n        e2 = e2 * f + tiny\n",

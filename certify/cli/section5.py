@@ -75,8 +75,12 @@ def initial_data(args):
 
 def cmd_simulate(args) -> int:
     """Iterate the reduction map from the tool's grid of 8 initial data (or the given
-    ones) for every r."""
+    ones) for every r; ``--particles 5``: the five-particle reduction (:func:`simulate_five`)."""
     from certify import numerics
+    if args.particles == 5:
+        return simulate_five(args)
+    if args.seed is not None:
+        raise UsageError("--seed chooses the random data of --particles 5; four particles start on the tool's grid")
     r = r_values(args)
     theta0, phi0 = initial_data(args)
     if args.out is not None:
@@ -86,9 +90,38 @@ def cmd_simulate(args) -> int:
     if args.words and args.out is None:
         raise UsageError("--words stores the words in --out FILE.npz: give --out")
     with executors.executor(args.jobs, args.scheduler) if args.engine != "float64" else nullcontext() as ex:
-        orbits = numerics.iterate(r, theta0, phi0, collisions=args.collisions, keep=args.keep,
+        orbits = numerics.iterate(r, theta0, phi0, collisions=args.collisions,
+                                   keep=args.keep if args.keep is not None else 500,
                                    engine=args.engine, dps=args.dps, executor=ex, progress=progress.Bar("r"),
                                    strict=args.strict, words=args.words)
+    if args.out is not None:
+        with atomic_path(args.out) as tmp, open(tmp, "wb") as handle:
+            orbits.save(handle)
+        print(f"wrote {args.out}")
+    print(orbits.summary())
+    return 0
+
+
+FIVE_REFUSED = (("theta0", "--theta0"), ("phi0", "--phi0"), ("dps", "--dps"), ("keep", "--keep"),
+                ("jobs", "--jobs"), ("scheduler", "--scheduler"))
+
+
+def simulate_five(args) -> int:
+    """``simulate --particles 5``: the five-particle reduction (certify.numerics.five_reduction) on the
+    float64 engine from ``--orbits N`` seeded random states on face b (``--seed``), every r."""
+    from certify.numerics import five_reduction as five
+    for name, option in FIVE_REFUSED:
+        if getattr(args, name) is not None:
+            raise UsageError(f"{option} is for four particles; five start from --orbits N random states (--seed S)")
+    if args.engine != "float64":
+        raise UsageError("five particles run on the float64 engine only (--engine float64)")
+    if args.out is not None:
+        ensure_writable_file(args.out, "--out")
+    if args.words and args.out is None:
+        raise UsageError("--words stores the words in --out FILE.npz: give --out")
+    p0, q0 = five.random_data(args.orbits if args.orbits is not None else 8, args.seed or 0)
+    orbits = five.iterate(r_values(args), p0, q0, collisions=args.collisions, strict=args.strict,
+                          words=args.words, progress=progress.Bar("r"))
     if args.out is not None:
         with atomic_path(args.out) as tmp, open(tmp, "wb") as handle:
             orbits.save(handle)
@@ -285,8 +318,14 @@ def register(commands) -> None:
                    help="also store each orbit's collision word in --out (an array `word` of strings)")
     p.add_argument("--collisions", type=positive_int, default=10_000, metavar="N",
                    help="collisions per orbit (default: 10^4)")
-    p.add_argument("--keep", type=positive_int, default=500, metavar="N",
-                   help="keep the φ of the last N b-collisions (default: 500)")
+    p.add_argument("--keep", type=positive_int, default=None, metavar="N",
+                   help="keep the φ of the last N b-collisions (default: 500; four particles)")
+    p.add_argument("--particles", type=int, choices=(4, 5), default=4,
+                   help="4: the paper's reduction; 5: the five-particle reduction on Gr⁺(2,4) ≅ S² × S² "
+                        "(docs/particles.md; float64 only, from --orbits N random states on face b, --seed S; --out "
+                        "stores r, p0, q0, breaks, collisions, certified, face, omega, angles [, word])")
+    p.add_argument("--seed", type=int, default=None, metavar="S",
+                   help="the seed of the random initial states of --particles 5 (default 0)")
     p.add_argument("--engine", choices=ENGINES, default="float64",
                    help="float64 (numba, parallel), mp (mpmath at --dps), ball (certified arb, precision up to --dps)")
     p.add_argument("--dps", type=positive_int, default=None, metavar="D",

@@ -133,19 +133,25 @@ def step_bounds(j: int, n, absrows, tolerance) -> tuple:
 
 # --- the accumulated error bound (the certified horizon) ----------------------
 
-def gamma_bound(bits: int) -> Fraction:
-    """g = 4u (1 + 8u), u = 2^-bits: a representable number ≥ γ_4 = 4u/(1 − 4u)
-    (since 1/(1 − 4u) ≤ 1 + 8u for u ≤ 1/16); see :func:`carry_bound`.
+def gamma_bound(bits: int, length: int = 3) -> Fraction:
+    """g = L u (1 + 2 L u), u = 2^-bits, L the least power of 2 ≥ ``length`` + 1: a
+    representable number ≥ γ_(length+1) = (length+1)u/(1 − (length+1)u) (since
+    1/(1 − x) ≤ 1 + 2x for x ≤ 1/2); see :func:`carry_bound`.  For the four-particle normals
+    (length 3) g = 4u(1 + 8u); for the five-particle bivectors (length 6, :mod:`.five_reduction`)
+    g = 8u(1 + 16u).
 
     >>> from fractions import Fraction
     >>> u = Fraction(1, 2 ** 53)
     >>> gamma_bound(53) >= 4 * u / (1 - 4 * u), float(gamma_bound(53)) == gamma_bound(53)
     (True, True)
+    >>> gamma_bound(53, 6) >= 7 * u / (1 - 7 * u), float(gamma_bound(53, 6)) == gamma_bound(53, 6)
+    (True, True)
 
-    Exact rationals: the bound holds for any ``bits`` ≥ 4, and at 53 bits it is a float64
-    number, so the float engine uses it without a rounding of its own."""
+    Exact rationals: the bound holds for any ``bits`` ≥ 2 log2 L + 2, and at 53 bits it is a
+    float64 number, so the float engines use it without a rounding of their own."""
     u = Fraction(1, 2 ** bits)
-    return 4 * u * (1 + 8 * u)
+    L = 1 << length.bit_length()          # the least power of 2 > length
+    return L * u * (1 + 2 * L * u)
 
 
 def inflation(bits: int) -> Fraction:
@@ -176,6 +182,9 @@ def carry_bound(j: int, n, err, absrows, g, kappa, tiny=0):
     componentwise, C the exact matrix of which Ĉ is the rounding, n' = fl(Ĉ n) the
     engine's next normal and x' = C x.  Then |n' − x'| ≤ err' componentwise.
 
+    The same for vectors of any length d ≤ 6 (the five-particle bivectors, :mod:`.five_reduction`, d = 6),
+    with ``g`` = ``gamma_bound(bits, d)``: the changes to the proof are noted in brackets.
+
     Proof (u = 2^-p the unit roundoff, η = 2^-1074 the smallest subnormal of float64,
     0 in mpmath).  (i) The entries of Ĉ are correctly rounded (``float_rows``;
     ``mpf(int)``): |Ĉ − C| ≤ u|C|, so |C| ≤ |Ĉ|/(1 − u).  (ii) A dot product of
@@ -186,6 +195,8 @@ def carry_bound(j: int, n, err, absrows, g, kappa, tiny=0):
         |n' − x'| ≤ |fl(Ĉ n) − Ĉ n| + |Ĉ − C||n| + |C||n − x|
                   ≤ (γ_3 + u/(1 − u)) |Ĉ||n| + |Ĉ| err/(1 − u) + 3η
                   ≤ S/(1 − u) + 3η                      (γ_3 + u/(1 − u) ≤ γ_4 ≤ g).
+
+    [Length d: γ_d and dη in (ii), γ_d + u/(1 − u) ≤ γ_(d+1) ≤ g in (iii).]
 
     (iv) The computed Ŝ_m takes five roundings on non-negative numbers, each
     fl(a ∘ b) ≥ (a ∘ b)(1 − u) − η/2: Ŝ_m ≥ S_m (1 − u)^5 − 5η (|Ĉ| ≤ 2).  If
@@ -199,7 +210,9 @@ def carry_bound(j: int, n, err, absrows, g, kappa, tiny=0):
     err'' = fl(fl(err' f) + tiny): when f ≥ 1 nothing underflows and fl(err' f) ≥ err' f
     (exact, or inf); when f < 1 either err' f ≥ 2^-947, it is exact and the slack
     20u Ŝ_m f ≥ η of (iv) covers the η/2, or fl(err' f + tiny) ≥ err' f − η/2 + tiny/2
-    ≥ err' f + η/2.  ∎
+    ≥ err' f + η/2.  [Length d ≤ 6: Ŝ_m takes d + 2 ≤ 8 roundings, Ŝ_m ≥ S_m (1 − u)^8 − 16η
+    (|Ĉ| ≤ 2), and (Ŝ_m + 16η)/(1 − u)^9 + 6η ≤ Ŝ_m (1 + 9.1u) + 11u Ŝ_m when Ŝ_m ≥ 2^-1020
+    (u Ŝ_m ≥ 2η), which leaves fl(Ŝ_m κ) a slack ≥ 10u Ŝ_m ≥ η for (v).]  ∎
 
     An inf or nan bound decides nothing (every comparison with it fails), so
     overflow of the bound ends the certified horizon, never extends it.  The initial
@@ -209,10 +222,12 @@ def carry_bound(j: int, n, err, absrows, g, kappa, tiny=0):
     ≤ 8u |n_c| ≤ 8u max|n|.
     """
     K_ = absrows[j]
-    t = [err[c] + g * abs(n[c]) for c in range(3)]
+    t = [err[c] + g * abs(n[c]) for c in range(len(n))]
     out = []
-    for m in range(3):
-        s = K_[m][0] * t[0] + K_[m][1] * t[1] + K_[m][2] * t[2]
+    for row in K_:
+        s = row[0] * t[0]
+        for c in range(1, len(t)):          # left to right, as the kernels add
+            s = s + row[c] * t[c]
         out.append(s * kappa + tiny)
     return tuple(out)
 
@@ -248,8 +263,15 @@ def float_rows(r) -> list[list[list[float]]]:
     (:data:`NORMAL64` = 2^-1022; r itself subnormal, e.g. 1e-310): such an entry is
     rounded to an absolute, not a relative, precision, step (i) of :func:`carry_bound`
     fails, and the kernel's power-of-2 rescaling of a subnormal normal overflows."""
+    return scaled_rows(integer_rows(r), r)
+
+
+def scaled_rows(matrices, r) -> list[list[list[float]]]:
+    """Integer matrices (a positive multiple of the exact ones) converted to float, each
+    scaled by a power of 2 so that its largest entry lies in [1, 2), correctly rounded;
+    UsageError for an entry below :data:`NORMAL64` (:func:`float_rows`)."""
     out = []
-    for rows in integer_rows(r):
+    for rows in matrices:
         shift = max(abs(int(z)) for row in rows for z in row).bit_length() - 1
         out.append([[_scaled(int(z), shift) for z in row] for row in rows])
     tiny = [abs(z) for K in out for row in K for z in row if z and abs(z) < NORMAL64]

@@ -122,3 +122,27 @@ def test_the_numerics_benchmark_figure_is_legible(monkeypatch, tmp_path):
     table = [[name] + [x for _ in bench.ORBITS for x in (sec, err, err, err)] for name, (sec, err) in engines.items()]
     fig, = fc.drawn(monkeypatch, tmp_path, bench.plot, table, marks, tmp_path / "bench_numerics.png")
     assert fc.problems(fig) == {}
+
+
+def test_the_five_particle_windows_figure_is_legible(monkeypatch, tmp_path):
+    """five-windows.png (tools/five_particle_figure.py): abadcbcabc's certified stable window
+    (certify pattern over ]1/4, 27/100[) above the committed census's four-particle windows, the
+    thresholds labelled above the axes; the rows are exactly the certified windows."""
+    from certify.patterns.five import analyse_five
+    from certify.run import five_figure
+    res = analyse_five("abadcbcabc", fmpq(1, 4), fmpq(27, 100))
+    five = five_figure.five_particle_windows({res.normal: res.to_json()})
+    from certify.patterns.pattern import end_data
+    assert five == [(res.normal, [(float(end_data(w.lo)["digits"]), float(end_data(w.hi)["digits"]))
+                                  for w in res.intervals("stable")])]
+    doc = json.loads((REPORTS / "census.json").read_text())
+    four = five_figure.four_particle_windows(doc)
+    assert [w for w, _ in four] == [r["compact"] for r in doc["words"] if r["stable"]]
+    fig, = fc.drawn(monkeypatch, tmp_path, five_figure.figure, four, five, tmp_path / "five-windows.png",
+                    five_figure.marks(), doc["census"]["max_length"])
+    assert fc.problems(fig) == {}
+    top = fig.axes[0]
+    assert [t.get_text() for t in top.get_yticklabels()] == ["abadcbcabc"] and len(top.patches) == 1
+    bar = top.patches[0]
+    (lo, hi), = five[0][1]
+    assert bar.get_x() == pytest.approx(lo) and bar.get_x() + bar.get_width() == pytest.approx(hi)

@@ -1,0 +1,77 @@
+"""The five-particle stable windows over r beside the four-particle ones (issue 39): one figure,
+``five-windows.png``, drawn from certified windows only.
+
+* five particles: the stable sets of ``certify pattern WORD`` (:func:`certify.patterns.five.analyse_five`,
+  exact ends; the JSON of a pattern result), for the words given;
+* four particles: the stable windows of the committed census (reports/census.json, every word of at
+  most its length; :func:`certify.patterns.census.windows`).
+
+Floats of the certified ends (12 digits) are a drawing only.  The thresholds of four particles
+(7 − 4√3, 3 − 2√2, abcb's r_exist ≈ 0.19166) and 2 − √3 are marked.
+
+    python tools/five_particle_figure.py abadcbcabc        # writes reports/five-windows.png
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from certify.patterns import census
+
+NAME = "five-windows.png"            # next to CENSUS.md (reports/figures is pruned by `certify all`)
+
+
+def marks() -> dict:
+    """{label: r} of the vertical lines: the four-particle thresholds and 2 − √3."""
+    from certify.numerics.thresholds import r_exist
+    return {"7−4√3": 7 - 4 * math.sqrt(3), "3−2√2": 3 - 2 * math.sqrt(2), "r_exist ≈ 0.19166 (abcb)": float(r_exist()),
+            "2−√3": 2 - math.sqrt(3)}
+
+
+def four_particle_windows(doc: dict) -> list[tuple[str, list]]:
+    """(word, its stable windows) for every word of a census document with a stable window."""
+    return [(r["compact"], census.windows(r)) for r in doc["words"] if r["stable"] and census.windows(r)]
+
+
+def five_particle_windows(results: dict) -> list[tuple[str, list]]:
+    """(word, its stable windows) from {word: the JSON of its pattern result} (certified windows)."""
+    rows = [(word, census.windows({"result": doc})) for word, doc in results.items()]
+    return [(w, s) for w, s in rows if s]
+
+
+def figure(four: list, five: list, path, lines: dict | None = None, census_length: int | None = None) -> Path | None:
+    """Two panels on one axis of r: the five-particle words' stable windows (top) and the
+    four-particle census's (bottom), one row per word, highest window first; ``lines`` the
+    thresholds.  Written through :mod:`.saving` to ``path``; None when nothing is to be drawn."""
+    from . import plots, saving
+    if not four and not five:
+        return None
+    plt = saving.pyplot()
+    four = sorted(four, key=lambda row: -max(hi for _lo, hi in row[1]))
+    five = sorted(five, key=lambda row: -max(hi for _lo, hi in row[1]))
+    fig, (ax, bx) = plt.subplots(2, 1, sharex=False, figsize=(7.2, 2.6 + 0.28 * (len(four) + len(five))),
+                                 gridspec_kw={"height_ratios": [max(len(five), 1) + 1, max(len(four), 1) + 1]})
+    lines = lines or {}
+    top = max([hi for _w, s in four + five for _lo, hi in s] + list(lines.values()))
+    for panel, rows, colour in ((ax, five, "tab:purple"), (bx, four, "tab:blue")):
+        for k, (_word, windows) in enumerate(rows):
+            for lo, hi in windows:
+                panel.barh(k, hi - lo, left=lo, height=0.5, color=colour)
+        panel.set_yticks(range(len(rows)), [w for w, _s in rows], fontsize=7)
+        panel.set_ylim(len(rows) - 0.5, -0.5 - (0 if rows else 0.5))
+        panel.set_xlim(0, math.ceil(top * 50 + 1) / 50)
+        for value in lines.values():
+            panel.axvline(value, color="grey", lw=0.6, ls="--")
+        panel.set_xlabel("r")
+    fig.tight_layout()
+    rows = plots.label_lines(ax, lines, color="grey", fontsize=6)
+    words = f"{len(five)} word{'' if len(five) == 1 else 's'}"
+    ax.set_title(f"five particles: stable self-similar windows (certify pattern; {words})", fontsize=9,
+                 pad=plots.label_pad(rows))
+    length = f"words of at most {census_length} collisions" if census_length else "the census"
+    bx.set_title(f"four particles: stable self-similar windows ({length}, certified)", fontsize=9)
+    fig.tight_layout()
+    path = Path(path)
+    with saving.output_dir(path.parent):
+        saving.save_figure(fig, path.name)
+    return path
