@@ -427,7 +427,7 @@ def test_the_committed_atlas_horseshoes_intervals_and_loops_check():
     from certify.run.files import load_findings
     doc = load_findings("atlas.json")
     if doc is None or doc["version"] < atlas.VERSION:
-        pytest.skip("the committed atlas predates version 3 (regenerate: docs/atlas.md)")
+        pytest.skip("the committed atlas predates version 4 (regenerate: docs/atlas.md)")
     assert atlas.check_summaries(doc) == []
     proved = [row for row in doc["r"] if (row["horseshoe"] or {}).get("certified")]
     assert proved and doc["summary"]["horseshoes"]["proved"] == len(proved)
@@ -555,3 +555,45 @@ def test_a_window_end_resonance_is_decided_in_one_place(doc):
     bad = copy.deepcopy(doc)
     bad["summary"]["interior_ends"]["resonant_upper"] += 1
     assert any("interior_ends" in p for p in atlas.check_ends(bad))
+
+
+def _committed(version=4):
+    from certify.run.files import load_findings
+    doc = load_findings("atlas.json")
+    if doc is None or doc["version"] < version:
+        pytest.skip(f"the committed atlas predates version {version} (regenerate: docs/atlas.md)")
+    return doc
+
+
+def test_the_committed_atlas_orbits_proved_by_the_longer_run_check():
+    """reports/atlas.json: the orbits of r = 28/33 that only the longer run proves (their first
+    run shows no period) are proved again by identify; one marked unresolved is caught; the
+    observed words are one per cyclic word."""
+    doc = _committed()
+    row = next(r for r in doc["r"] if r["r"] == "28/33")
+    late = [o for o in row["orbits"] if o["rerun"] and o["class"] != atlas.UNRESOLVED]
+    assert late and doc["summary"]["unresolved_by_kind"]["certified by a longer run"] >= len(late)
+    late = late[:1]                                          # one orbit: 100 000 collisions with its rerun
+    sub = {**row, "orbits": late, "counts": atlas._counts(late), "total": len(late)}
+    assert atlas.check_orbits(doc, [sub]) == []
+    o = late[0]
+    x = atlas.ident.classify(Fraction(row["r"]), o["theta0"], o["phi0"], doc["parameters"]["collisions"])
+    bad = copy.deepcopy(sub)
+    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOTHING, o["theta0"], o["phi0"], atlas._fq(row["r"]))
+    bad["counts"] = atlas._counts(bad["orbits"])
+    assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
+    assert all(w == atlas.least_rotation(w) for w in doc["observed_words"])
+    assert [c["word"] for c in doc["curves"]] == [atlas.least_rotation(c["word"]) for c in doc["curves"]]
+
+
+def test_the_committed_atlas_window_ends_are_decided_again():
+    """reports/atlas.json: the rotation records of the windows closing at the first resonances
+    above 3 − 2√2 decided again (island_theorem.end_rotation); a moved resonance is caught."""
+    doc = _committed()
+    atts = [a for a in doc["attractors"] if any((w["rotation"] or {}).get("resonance") for w in a["windows"])][:6]
+    sub = {**doc, "attractors": atts, "summary": {**doc["summary"], "interior_ends": atlas.interior_ends(atts)}}
+    assert atlas.check_ends(sub) == []
+    bad = copy.deepcopy(sub)
+    w = next(w for w in bad["attractors"][-1]["windows"] if (w["rotation"] or {}).get("resonance"))
+    w["rotation"]["resonance"] = [w["rotation"]["resonance"][0] + 1, w["rotation"]["resonance"][1]]
+    assert any("decided again" in p for p in atlas.check_ends(bad))
