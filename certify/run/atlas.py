@@ -1117,9 +1117,10 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            f"unresolved {cls[UNRESOLVED]} (`certify identify`'s classes)",
            "- unresolved, by what they show (observed): " + "; ".join(
                f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
-           + f" (a long transient: its word attracts at r, run again {LATE}× longer; "
-           f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so and are counted in their "
-           "class; near a certified horseshoe: its float64 run enters a box of the horseshoe proved at r; a word not "
+           + f" (a long transient: its word attracts at r; a long transient and a run with no period at all are run "
+           f"again {LATE}× longer, and {s['unresolved_by_kind']['certified by a longer run']} orbits were proved so "
+           "(identify's proof on the longer run) and are counted in their class; near a certified horseshoe: its "
+           "float64 run enters a box of the horseshoe proved at r; a word not "
            "attracting at r: repeated without converging, a loop around an invariant curve or a slow transient, its "
            "rotation number under \"Unresolved orbits\" below)",
            _horseshoe_line(s["horseshoes"]),
