@@ -882,16 +882,34 @@ def resonances(Q: int) -> list[Resonance]:
     return sorted(out, key=lambda s: s.r)
 
 
-def resonance_of(alg: Algebraic, Q: int) -> tuple[int, int] | None:
-    """(p, q) when the algebraic number alg is a resonance with q ≤ Q, else None: the same
-    number as a resonance r_{p/q} of :func:`resonances_of_q` (the same minimal polynomial, and
-    isolating intervals that overlap however far refined: Algebraic's exact equality).  Only
-    one p/q is tried: ρ(alg) is enclosed in a ball narrower than 1/(2Q²), and two fractions of
-    denominators ≤ Q are at least 1/Q² apart, so if ρ(alg) = p/q with q ≤ Q, p/q is the
-    fraction of denominator ≤ Q nearest the ball's midpoint."""
-    if not (LOWER_END < alg and alg < Algebraic.rational(flint.fmpq(1))):
+@dataclass(frozen=True)
+class EndRotation:
+    """The island's rotation number at a window end x ∈ [3 − 2√2, 1] (:func:`end_rotation`):
+    ``island_end`` when x is one of the island's own ends (3 − 2√2, ρ = 1/2; r = 1, ρ → 1/4),
+    ``ball`` ρ(x)'s certified enclosure [lo, hi] (x strictly inside; None at the ends), and
+    ``resonance`` (p, q) when ρ(x) = p/q exactly with q ≤ the Q asked (at an end: its own)."""
+    island_end: bool
+    ball: tuple | None
+    resonance: tuple[int, int] | None
+
+
+def end_rotation(alg: Algebraic, Q: int) -> EndRotation | None:
+    """The one place where a window end's resonance is decided (None below 3 − 2√2 or above
+    1): at the island's ends ρ = 1/2 (3 − 2√2, A parabolic) and 1/4 (r = 1, the elastic end);
+    strictly inside, ρ(alg)'s ball is computed once, narrower than 1/(2Q²) (from 200 bits,
+    doubled), and only one p/q is tried: two fractions of denominators ≤ Q are at least 1/Q²
+    apart, so if ρ(alg) = p/q with q ≤ Q, p/q is the fraction of denominator ≤ Q nearest the
+    ball's midpoint; it is a resonance when alg is the same number as a resonance r_{p/q} of
+    :func:`resonances_of_q` (the same minimal polynomial, and isolating intervals that overlap
+    however far refined: Algebraic's exact equality)."""
+    one = Algebraic.rational(flint.fmpq(1))
+    if alg < LOWER_END or one < alg:
         return None
-    prec = 128
+    if alg == LOWER_END:
+        return EndRotation(True, None, (1, 2))
+    if alg == one:
+        return EndRotation(True, None, (1, 4))
+    prec = 200
     while True:
         with precision(prec):
             lo, hi = ends(rotation_ball(alg.arb(prec), prec))
@@ -900,14 +918,21 @@ def resonance_of(alg: Algebraic, Q: int) -> tuple[int, int] | None:
         prec *= 2
     mid = (lo + hi) / 2
     cand = Fraction(int(mid.p), int(mid.q)).limit_denominator(Q)
-    if cand.denominator < 3:
-        return None
-    m = alg.minimal_polynomial()
-    for s in resonances_of_q(cand.denominator):
-        mp = s.r.minimal_polynomial()
-        if s.p == cand.numerator and (mp == m or mp == -m) and s.r == alg:
-            return s.p, s.q
-    return None
+    found = None
+    if cand.denominator >= 3:
+        m = alg.minimal_polynomial()
+        for s in resonances_of_q(cand.denominator):
+            mp = s.r.minimal_polynomial()
+            if s.p == cand.numerator and (mp == m or mp == -m) and s.r == alg:
+                found = (s.p, s.q)
+    return EndRotation(False, (lo, hi), found)
+
+
+def resonance_of(alg: Algebraic, Q: int) -> tuple[int, int] | None:
+    """(p, q) when the algebraic number alg, strictly inside ]3 − 2√2, 1[, is a resonance
+    with q ≤ Q, else None (:func:`end_rotation`)."""
+    e = end_rotation(alg, Q)
+    return None if e is None or e.island_end else e.resonance
 
 
 def algebraic_of(end: dict) -> Algebraic:
@@ -939,16 +964,9 @@ def window_resonances(windows: dict, Q: int = RESONANCE_Q) -> list[tuple[str, st
     for word, spans in windows.items():
         for span in spans:
             for side in ("lo", "hi"):
-                end = span[side]
-                x = algebraic_of(end)
-                if x == LOWER_END:                   # ρ = 1/2 at 3 − 2√2: the end, A parabolic
-                    out.append((word, side, end["digits"], (1, 2)))
-                elif x == 1:                         # ρ = 1/4 at r = 1: the other end
-                    out.append((word, side, end["digits"], (1, 4)))
-                elif x > LOWER_END and x < 1:
-                    pq = resonance_of(x, Q)
-                    if pq is not None:
-                        out.append((word, side, end["digits"], pq))
+                e = end_rotation(algebraic_of(span[side]), Q)
+                if e is not None and e.resonance is not None:
+                    out.append((word, side, span[side]["digits"], e.resonance))
     return out
 
 

@@ -74,7 +74,7 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 3
+VERSION = 4
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
@@ -83,7 +83,8 @@ COLLISIONS = 20_000                           # of each float64 run and rigorous
 WORD_MAX = MAX_ORBIT_LENGTH                   # longer words: no window (orbit_at at the r seen)
 WORD_SECONDS = 600                            # time limit of one word's window
 REFINE = 3                                    # rounds of refinement after the first grid
-LATE = 4                                      # a long transient is run again LATE times longer
+LATE = 4                                      # an orbit :func:`late` selects is run again LATE times longer
+LATE_RULE = 2                                 # :func:`late`'s rule (1: long transients; 2: and runs with no period)
 TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
 NEAR_HORSESHOE = "near a certified horseshoe"   # an unresolved orbit whose float64 run enters a proved horseshoe's box
 RESONANCE_Q = 120                             # window ends decided to be resonances p/q, q ≤ 120
@@ -254,43 +255,66 @@ def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
     return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
 
 
+def late(o: dict) -> bool:
+    """Whether an unresolved orbit record is run again :data:`LATE` times longer
+    (:func:`classify_late`): a long transient (its word attracts at r), or a run with no period
+    at all (nothing recognised, no word repeated): it may settle later than the run."""
+    return o["class"] == UNRESOLVED and (o["unresolved"] == TRANSIENT or
+                                         (o["unresolved"] == NOTHING and o["observed"] is None))
+
+
 def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
-    """identify's class of the orbit (θ0, φ0) at r and the collisions it was run again with: an
-    unresolved long transient (its word attracting at r) is run again :data:`LATE` times longer
-    and that run's class kept when it proves one; (class, None) otherwise."""
+    """(identify's class of the orbit (θ0, φ0) at r, the collisions it was run again with, its
+    unresolved kind): an unresolved orbit that :func:`late` selects is run again :data:`LATE`
+    times longer and that run's class kept when it proves one (its kind then None); otherwise
+    the first run's, with None and the kind (:func:`unresolved_kind`, computed once)."""
     x = ident.classify(q, th, ph, collisions)
-    if x.cls != UNRESOLVED or unresolved_kind(x.word, fq) != TRANSIENT:
-        return x, None
+    if x.cls != UNRESOLVED:
+        return x, None, None
+    kind = unresolved_kind(x.word, fq)
+    if not late({"class": x.cls, "unresolved": kind, "observed": x.word}):
+        return x, None, kind
     y = ident.classify(q, th, ph, LATE * collisions)
-    return (y if y.cls != UNRESOLVED else x), LATE * collisions
+    return (y, LATE * collisions, None) if y.cls != UNRESOLVED else (x, LATE * collisions, kind)
 
 
-def r_job(r: str, data: list, collisions: int) -> dict:
-    """Every orbit of ``data`` at r classified by identify (an unresolved long transient run
-    again, :data:`LATE` times longer, its class kept if that run proves one); the island at r
-    (the theorem, the rotation number, the certified share of the b-section).  Plain data."""
+def _orbit_record(x, rerun, kind, th, ph, fq) -> dict:
+    """The atlas's record of one orbit classified by :func:`classify_late`."""
+    rec = {"theta0": th, "phi0": ph, "class": x.cls, "certified_from": x.certified_from,
+           "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else "",
+           "rerun": rerun, "unresolved": kind}
+    if x.cls == ATTRACTING:
+        normal = read(x.word)[0]
+        rec["word"], rec["branch"] = normal, ident.decided(normal, fq).branch_name
+    elif x.cls == UNRESOLVED and x.word is not None:
+        rec["observed"] = x.word
+    return rec
+
+
+def r_job(r: str, data: list, collisions: int, previous: dict | None = None) -> dict:
+    """Every orbit of ``data`` at r classified by identify (an unresolved orbit that
+    :func:`late` selects run again, :data:`LATE` times longer, its class kept if that run
+    proves one); the island at r (the theorem, the rotation number, the certified share of
+    the b-section).  ``previous``: a record of r made before the rule :data:`LATE_RULE`; its
+    island and the orbits that rule does not run again are kept (the same computation), the
+    others run again.  Plain data."""
     start = time.perf_counter()
     q = Fraction(r)
     fq = flint.fmpq(q.numerator, q.denominator)
     orbits = []
-    for th, ph in data:
-        x, rerun = classify_late(q, fq, th, ph, collisions)
-        rec = {"theta0": th, "phi0": ph, "class": x.cls, "certified_from": x.certified_from,
-               "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else "",
-               "rerun": rerun, "unresolved": unresolved_kind(x.word, fq) if x.cls == UNRESOLVED else None}
-        if x.cls == ATTRACTING:
-            normal = read(x.word)[0]
-            rec["word"], rec["branch"] = normal, ident.decided(normal, fq).branch_name
-        elif x.cls == UNRESOLVED and x.word is not None:
-            rec["observed"] = x.word
-        orbits.append(rec)
-    island = None
-    if fq * fq - 6 * fq + 1 < 0:
+    for i, (th, ph) in enumerate(data):
+        old = previous["orbits"][i] if previous is not None else None
+        if old is not None and not (late(old) and old["rerun"] is None):
+            orbits.append(old)
+            continue
+        orbits.append(_orbit_record(*classify_late(q, fq, th, ph, collisions), th, ph, fq))
+    island = previous["island"] if previous is not None else None
+    if previous is None and fq * fq - 6 * fq + 1 < 0:
         lo, hi = island_theorem.island_fraction(fq, ISLAND_DEPTH)
         island = {"theorem": ident.elliptic(fq), "rotation_number": island_theorem.rotation_number(fq, 8),
                   "fraction": [str(lo), str(hi)], "depth": ISLAND_DEPTH}
     return {"kind": "r", "r": str(q), "data": len(data), "collisions": collisions, "orbits": orbits,
-            "island": island, "seconds": round(time.perf_counter() - start, 3)}
+            "island": island, "late": LATE_RULE, "seconds": round(time.perf_counter() - start, 3)}
 
 
 def chaos_job(r: str, unresolved: list, collisions: int) -> dict:
@@ -406,7 +430,9 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
     the r it asks for.  Records are appended to ``state`` as they arrive.  ``resume``: the r
     records of ``state`` with the same data and collisions, and its word records with the
     same limits, are reused (the rounds are decided from the records, so a resumed atlas
-    asks for the same r; a horseshoe record is reused for the same collisions and unresolved orbits)."""
+    asks for the same r; a horseshoe record is reused for the same collisions and unresolved orbits;
+    an r record made before :data:`LATE_RULE` is upgraded: :func:`r_job` runs again only the
+    orbits that rule runs longer)."""
     stored_r, done_r, done_w, stored_c, done_c = {}, {}, {}, {}, {}
     if state is not None:
         state = Path(state)
@@ -450,7 +476,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
                 continue
             wanted.append(r)
             total[0] += 1
-            if r in stored_r:
+            if r in stored_r and stored_r[r].get("late") == LATE_RULE:
                 done_r[r] = stored_r[r]
                 count[0] += 1
                 for w in _words_of(done_r[r]):
@@ -486,7 +512,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
 
     def submit(kind, key):
         if kind == "r":
-            return executor.submit(r_job, key, data, collisions)
+            return executor.submit(r_job, key, data, collisions, stored_r.get(key))   # an older record: upgraded
         if kind == "chaos":
             return executor.submit(chaos_job, key, unresolved_of(done_r[key]), collisions)
         return executor.submit(word_job, key, word_seconds, word_max)
@@ -576,7 +602,7 @@ def refinement(r_records: list[dict], word_records: list[dict], lo: Fraction, hi
         k = have.index(q)
         for other in (have[k - 1] if k else lo, have[k + 1] if k + 1 < len(have) else hi):
             a, b = sorted((q, other))
-            out.add(_fraction(simplest_between(to_fmpq(a + (b - a) / 4), to_fmpq(b - (b - a) / 4))))
+            out.add(_fraction(simple_rational_between(Algebraic.rational(to_fmpq(a)), Algebraic.rational(to_fmpq(b)))))
     return sorted(x for x in out if lo < x < hi and x not in have and 0 < x < 1)
 
 
@@ -681,22 +707,22 @@ def _end_key(end) -> tuple:
 
 
 def _rotation(x: Algebraic, Q: int) -> dict | None:
-    if x < LOWER_END:
+    """:func:`end_rotation`'s record from :func:`~certify.patterns.island_theorem.end_rotation`
+    (the one decision; ρ's ball computed once)."""
+    e = island_theorem.end_rotation(x, Q)
+    if e is None:
         return None
-    if x == LOWER_END:
-        return {"rho": "0.5", "resonance": [1, 2], "near": None}
-    if x == Algebraic.rational(flint.fmpq(1)):
-        return {"rho": "0.25", "resonance": [1, 4], "near": None}
-    with precision(200):
-        lo, hi = ends(island_theorem.rotation_ball(x.arb(200), 200))
+    if e.island_end:
+        return {"rho": "0.5" if e.resonance == (1, 2) else "0.25", "resonance": list(e.resonance), "near": None,
+                "island_end": True}
+    lo, hi = e.ball
     digits = f"{float((lo + hi) / 2):.8f}"
-    pq = island_theorem.resonance_of(x, Q)
-    if pq is not None:
-        return {"rho": digits, "resonance": list(pq), "near": None}
+    if e.resonance is not None:
+        return {"rho": digits, "resonance": list(e.resonance), "near": None, "island_end": False}
     mid = _fraction((lo + hi) / 2)
     best = mid.limit_denominator(NEAR_Q)                         # the nearest p/q with q ≤ NEAR_Q
     return {"rho": digits, "resonance": None, "near": [best.numerator, best.denominator],
-            "distance": f"{float(abs(best - mid)):.2e}"}
+            "distance": f"{float(abs(best - mid)):.2e}", "island_end": False}
 
 
 def closes_at(end: dict, p: int, q: int) -> bool:
@@ -819,11 +845,6 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                 no_window.append({"attractor": k, "word": w["word"], "length": w["length"], "why": why_no_window(w),
                                   "source": w.get("source", "met"),
                                   "seen_at": sorted(set(seen.get(k, [])), key=Fraction)})
-    observed: dict[str, int] = {}
-    for row in rows:
-        for o in row["orbits"]:
-            if o["observed"]:
-                observed[o["observed"]] = observed.get(o["observed"], 0) + 1
     source = {w["word"]: w.get("source", "met") for w in word_records}
     fams = families(atts, word_records)
     member = family_of(fams)
@@ -841,7 +862,7 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
             if word in analysed and not any(_alg(w["lo"]) < x < _alg(w["hi"]) for w in
                                             (by_name[k]["windows"] if k in by_name else [])):
                 inconsistent.append({"attractor": k, "r": row["r"]})
-    resonant, above, interior = [], 0, {"upper": 0, "lower": 0, "resonant_upper": 0, "resonant_lower": 0}
+    resonant, above = [], 0
     for a in attractors:
         for w in a["windows"]:
             rot = w["rotation"]
@@ -850,12 +871,8 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                 if rot["resonance"]:
                     resonant.append({"attractor": name(a["word"], a["branch"]), "hi": w["hi"]["digits"],
                                      "p": rot["resonance"][0], "q": rot["resonance"][1],
-                                     "island_end": not interior_end(w["hi"])})
-            for side in ("lower", "upper"):
-                end = w["lo" if side == "lower" else "hi"]
-                if interior_end(end):
-                    interior[side] += 1
-                    interior["resonant_" + side] += bool((end_rotation(end) or {}).get("resonance"))
+                                     "island_end": rot["island_end"]})
+    interior = interior_ends(attractors)
     totals = {k: sum(row["counts"].get(k, 0) for row in rows) for k in (ISLAND, UNRESOLVED)}
     totals[ATTRACTING] = sum(n for row in rows for k, n in row["counts"].items() if k not in (ISLAND, UNRESOLVED))
     return {"schema": SCHEMA, "version": VERSION, "parameters": parameters,
@@ -869,14 +886,22 @@ def document(r_records: list[dict], word_records: list[dict], parameters: dict) 
                         "unresolved_by_kind": unresolved_by_kind(rows), "horseshoes": horseshoes(rows)},
             "attractors": attractors, "without_window": no_window, "cells": cells,
             "families": fams, "by_resonance": by_resonance(resonant), "curves": curves_of(rows),
-            "observed_words": dict(sorted(observed.items(), key=lambda kv: (-kv[1], kv[0]))),
+            "observed_words": observed_words(rows),
             "words": [_timeless(w) for w in word_records], "r": rows}
 
 
-def interior_end(end: dict) -> bool:
-    """Whether a window end lies strictly inside ]3 − 2√2, 1[ (not one of the island's own ends)."""
-    x = _alg(end)
-    return LOWER_END < x < Algebraic.rational(flint.fmpq(1))
+def interior_ends(attractors: list[dict]) -> dict:
+    """How many window ends lie strictly inside ]3 − 2√2, 1[ (not the island's own ends), lower and
+    upper, and how many of them are resonances (:func:`end_rotation`, decided once per end)."""
+    out = {"upper": 0, "lower": 0, "resonant_upper": 0, "resonant_lower": 0}
+    for a in attractors:
+        for w in a["windows"]:
+            for side, end in (("lower", w["lo"]), ("upper", w["hi"])):
+                rot = end_rotation(end)
+                if rot is not None and not rot["island_end"]:
+                    out[side] += 1
+                    out["resonant_" + side] += bool(rot["resonance"])
+    return out
 
 
 def why_no_window(w: dict) -> str:
@@ -958,16 +983,37 @@ def unruled(resonant: list[dict], attractors: list[dict]) -> list[dict]:
             if not x["island_end"] and x["attractor"] not in ruled]
 
 
+def observed_words(rows: list[dict]) -> dict[str, int]:
+    """The words the unresolved orbits' runs repeat, one entry per cyclic word (its
+    :func:`least_rotation`), with how many orbits; most frequent first."""
+    out: dict[str, int] = {}
+    for row in rows:
+        for o in row["orbits"]:
+            if o["observed"]:
+                w = least_rotation(o["observed"])
+                out[w] = out.get(w, 0) + 1
+    return dict(sorted(out.items(), key=lambda kv: (-kv[1], kv[0])))
+
+
+def least_rotation(word: str) -> str:
+    """The least rotation of a cyclic word (the same periodic block read from another
+    collision: one row per cyclic word in the tables of observed words; no validation, so
+    blocks longer than the reader's 400 letters are normalised too)."""
+    return min(word[k:] + word[:k] for k in range(len(word)))
+
+
 def curves_of(rows: list[dict]) -> list[dict]:
-    """The unresolved orbits that repeat a word without converging, by word: how many, where,
-    and the rotation numbers of their loops (observed, :func:`chaos_job`)."""
+    """The unresolved orbits that repeat a word without converging, by cyclic word (its
+    :func:`least_rotation`): how many, where, and the rotation numbers of their loops
+    (observed, :func:`chaos_job`)."""
     out: dict[str, dict] = {}
     for row in rows:
         for o in row["orbits"]:
             c = o.get("curve")
             if o["class"] != UNRESOLVED or c is None:
                 continue
-            g = out.setdefault(o["observed"], {"word": o["observed"], "returns": c["returns"], "orbits": 0,
+            w = least_rotation(o["observed"])
+            g = out.setdefault(w, {"word": w, "returns": c["returns"], "orbits": 0,
                                                "r": [], "rotation": [], "near": set(), "radius_drift": []})
             g["orbits"] += 1
             g["r"].append(row["r"])
@@ -1071,9 +1117,10 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            f"unresolved {cls[UNRESOLVED]} (`certify identify`'s classes)",
            "- unresolved, by what they show (observed): " + "; ".join(
                f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
-           + f" (a long transient: its word attracts at r, run again {LATE}× longer; "
-           f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so and are counted in their "
-           "class; near a certified horseshoe: its float64 run enters a box of the horseshoe proved at r; a word not "
+           + f" (a long transient: its word attracts at r; a long transient and a run with no period at all are run "
+           f"again {LATE}× longer, and {s['unresolved_by_kind']['certified by a longer run']} orbits were proved so "
+           "(identify's proof on the longer run) and are counted in their class; near a certified horseshoe: its "
+           "float64 run enters a box of the horseshoe proved at r; a word not "
            "attracting at r: repeated without converging, a loop around an invariant curve or a slow transient, its "
            "rotation number under \"Unresolved orbits\" below)",
            _horseshoe_line(s["horseshoes"]),
@@ -1397,18 +1444,16 @@ def check_orbits(doc: dict, rows=None) -> list[str]:
         if _counts(row["orbits"]) != row["counts"] or row["total"] != len(row["orbits"]):
             problems.append(f"r = {row['r']}: the counts are not those of its orbits")
         for o in row["orbits"]:
-            x, rerun = classify_late(r, fq, o["theta0"], o["phi0"], collisions)
-            if o.get("rerun") != rerun:
+            x = _orbit_record(*classify_late(r, fq, o["theta0"], o["phi0"], collisions), o["theta0"], o["phi0"], fq)
+            if o.get("rerun") != x["rerun"]:
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: run again "
                                 f"{o.get('rerun')} in the atlas, not what identify's class asks for")
-            if o["class"] == UNRESOLVED and o.get("unresolved") != unresolved_kind(x.word, fq):
+            if o["class"] == UNRESOLVED and o.get("unresolved") != x["unresolved"]:
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: unresolved "
-                                f"{o.get('unresolved')} in the atlas, {unresolved_kind(x.word, fq)} by orbit_at")
-            word = read(x.word)[0] if x.cls == ATTRACTING else None
-            branch = ident.decided(word, fq).branch_name if word else None
-            if (x.cls, word, branch) != (o["class"], o["word"], o["branch"]):
+                                f"{o.get('unresolved')} in the atlas, {x['unresolved']} by orbit_at")
+            if (x["class"], x["word"], x["branch"]) != (o["class"], o["word"], o["branch"]):
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: {o['class']} "
-                                f"{o['word'] or ''} in the atlas, {x.cls} {word or ''} by identify")
+                                f"{o['word'] or ''} in the atlas, {x['class']} {x['word'] or ''} by identify")
             if o["class"] == ATTRACTING and name(o["word"], o["branch"]) not in _attracting_at(o["word"], fq):
                 problems.append(f"r = {row['r']}: {name(o['word'], o['branch'])} is not attracting there (orbit_at)")
             if o["class"] == ISLAND and not ident.elliptic(fq):
@@ -1513,6 +1558,23 @@ def check_summaries(doc: dict) -> list[str]:
             problems.append(f"summary {key}: {s[key]} in the atlas, {fresh} from its rows")
     if doc["curves"] != curves_of(doc["r"]):
         problems.append("the loops' rotation numbers differ from the rows'")
+    if doc["observed_words"] != observed_words(doc["r"]):
+        problems.append("the observed words differ from the rows' (one entry per cyclic word: least_rotation)")
+    return problems
+
+
+def check_ends(doc: dict) -> list[str]:
+    """Each window's upper end's rotation record (:func:`end_rotation`: resonance, island end)
+    and the interior ends' counts, decided again."""
+    problems = []
+    for a in doc["attractors"]:
+        for w in a["windows"]:
+            if w["rotation"] != end_rotation(w["hi"]):
+                problems.append(f"{a['name']}: the rotation number at the upper end ≈ {w['hi']['digits']} "
+                                f"is {w['rotation']} in the atlas, {end_rotation(w['hi'])} decided again")
+    if doc["summary"]["interior_ends"] != interior_ends(doc["attractors"]):
+        problems.append(f"summary interior_ends: {doc['summary']['interior_ends']} in the atlas, "
+                        f"{interior_ends(doc['attractors'])} decided again")
     return problems
 
 
@@ -1522,9 +1584,10 @@ def check_atlas(doc: dict, window_max: int = 24, rows=None) -> list[str]:
     to ``window_max`` letters), the cells (:func:`check_cells`), the families
     (:func:`check_families`), the orbits and the island (:func:`check_orbits` on ``rows``,
     default every r), the horseshoes, visits and loops (:func:`check_chaos` on ``rows``), the
-    intervals and summaries (:func:`check_summaries`), the cells' counts."""
+    intervals and summaries (:func:`check_summaries`), the window ends' rotation numbers
+    (:func:`check_ends`), the cells' counts."""
     problems = (check_seeds(doc) + check_windows(doc, window_max) + check_cells(doc) + check_families(doc)
-                + check_orbits(doc, rows) + check_chaos(doc, rows) + check_summaries(doc))
+                + check_orbits(doc, rows) + check_chaos(doc, rows) + check_summaries(doc) + check_ends(doc))
     for c in doc["cells"]:
         rows_in = [row for row in doc["r"] if row["r"] in c["sampled"]]
         counts: dict[str, int] = {}

@@ -427,7 +427,7 @@ def test_the_committed_atlas_horseshoes_intervals_and_loops_check():
     from certify.run.files import load_findings
     doc = load_findings("atlas.json")
     if doc is None or doc["version"] < atlas.VERSION:
-        pytest.skip("the committed atlas predates version 3 (regenerate: docs/atlas.md)")
+        pytest.skip("the committed atlas predates version 4 (regenerate: docs/atlas.md)")
     assert atlas.check_summaries(doc) == []
     proved = [row for row in doc["r"] if (row["horseshoe"] or {}).get("certified")]
     assert proved and doc["summary"]["horseshoes"]["proved"] == len(proved)
@@ -458,3 +458,142 @@ def test_a_window_end_is_found_a_resonance_with_a_large_denominator():
     off = atlas.Algebraic.rational(atlas.flint.fmpq(1731, 10000))          # ρ there is not p/q with q ≤ 120
     rot = atlas.end_rotation(end_data(off))
     assert rot["resonance"] is None and rot["near"][1] <= atlas.NEAR_Q
+
+
+def _no_period_rule_one(rec):
+    """``rec`` as the rule before :data:`atlas.LATE_RULE` made it: orbits with no period left
+    unresolved (not run again), no ``late`` mark."""
+    old = copy.deepcopy(rec)
+    del old["late"]
+    q = Fraction(rec["r"])
+    for i, o in enumerate(old["orbits"]):
+        if o["rerun"] is not None and o["class"] != atlas.UNRESOLVED:
+            x = atlas.ident.classify(q, o["theta0"], o["phi0"], rec["collisions"])
+            old["orbits"][i] = atlas._orbit_record(x, None, atlas.NOTHING, o["theta0"], o["phi0"], atlas._fq(rec["r"]))
+    return old
+
+
+def test_a_run_with_no_period_is_run_again_longer_and_its_class_checked():
+    """r = 28/33, 5000 collisions: two of the tool's 8 orbits show no period (the run settles
+    on abacba(bc)^2abcb after its middle); run again 4× longer they are proved attracting.
+    Marking one unresolved again, or not run again, makes the check fail."""
+    data = atlas.data_grid(0)
+    rec = atlas.r_job("28/33", data, 5000)
+    again = [o for o in rec["orbits"] if o["rerun"] == atlas.LATE * 5000]
+    assert len(again) >= 2 and all(o["class"] == atlas.ATTRACTING and o["unresolved"] is None for o in again)
+    for o in again:                                           # the first run alone leaves them unresolved, no period
+        x = atlas.ident.classify(Fraction(28, 33), o["theta0"], o["phi0"], 5000)
+        assert x.cls == atlas.UNRESOLVED and x.word is None
+    doc = {"parameters": {"collisions": 5000}, "r": [{**rec, "counts": atlas._counts(rec["orbits"]),
+                                                      "total": len(rec["orbits"])}]}
+    assert atlas.check_orbits(doc) == []
+    bad = copy.deepcopy(doc)
+    i = next(i for i, o in enumerate(rec["orbits"]) if o["rerun"])
+    bad["r"][0]["orbits"][i] = _no_period_rule_one(rec)["orbits"][i]
+    bad["r"][0]["counts"] = atlas._counts(bad["r"][0]["orbits"])
+    problems = atlas.check_orbits(bad)
+    assert any("run again" in p for p in problems) and any("by identify" in p for p in problems)
+
+
+def test_an_older_record_is_upgraded_by_running_only_the_late_orbits(tmp_path):
+    """An r record of the rule before LATE_RULE (resumed from an older state): r_job keeps its
+    island and the orbits the rule does not run again (a mark left in one survives), and runs
+    the others: the same record as a fresh job; run_atlas --resume does it."""
+    data = atlas.data_grid(0)
+    fresh = atlas.r_job("28/33", data, 5000)
+    old = _no_period_rule_one(fresh)
+    kept = next(i for i, o in enumerate(old["orbits"]) if o["class"] == atlas.ISLAND)
+    old["orbits"][kept]["why"] = "kept from the older record"
+    up = atlas.r_job("28/33", data, 5000, old)
+    assert up["orbits"][kept]["why"] == "kept from the older record" and up["island"] == old["island"]
+    up["orbits"][kept]["why"] = fresh["orbits"][kept]["why"]
+    assert {**up, "seconds": 0} == {**fresh, "seconds": 0}
+    state = tmp_path / "state.jsonl"
+    state.write_text(json.dumps(old) + "\n", encoding="utf-8")
+    rows, _ = atlas.run_atlas([Fraction(28, 33)], data, 5000, Serial(), state, True, seeds={}, word_max=4)
+    assert rows[0]["late"] == atlas.LATE_RULE and [o["rerun"] for o in rows[0]["orbits"]] == [
+        o["rerun"] for o in fresh["orbits"]]
+
+
+def test_the_observed_words_are_one_per_cyclic_word(chaos_doc):
+    """Rotations of one cyclic word (the same block read from another collision) are one entry
+    of the observed words and of the loops; an entry split by rotation is caught."""
+    assert atlas.least_rotation("cbab") == atlas.least_rotation("abcb") == "abcb"
+    rows = [{"r": "1/2", "orbits": [{"class": atlas.UNRESOLVED, "observed": w, "curve": None}
+                                    for w in ("abcb", "bcba", "cbab", "babc")]}]
+    assert atlas.observed_words(rows) == {"abcb": 4}
+    bad = copy.deepcopy(chaos_doc)
+    row, o = next((r, o) for r in bad["r"] for o in r["orbits"] if o.get("curve"))
+    o["observed"] = o["observed"][1:] + o["observed"][0]           # the same word read from the next collision
+    assert atlas.check_summaries(bad) == []
+    bad["observed_words"] = {o["observed"]: 1, **{w: n - (w == "abcb") for w, n in bad["observed_words"].items()}}
+    assert any("observed words" in p for p in atlas.check_summaries(bad))
+
+
+def test_a_window_end_resonance_is_decided_in_one_place(doc):
+    """island_theorem.end_rotation decides every window end (the island's own ends 1/2 and 1/4;
+    inside, ρ's ball once and the resonance); the atlas's rotation records and its counts of
+    interior ends read it; an altered resonance or island-end mark, or count, is caught."""
+    from certify.patterns import island_theorem as it
+    e = it.end_rotation(it.LOWER_END, 120)
+    assert e.island_end and e.resonance == (1, 2) and e.ball is None
+    assert it.end_rotation(atlas.Algebraic.rational(atlas.flint.fmpq(1)), 120).resonance == (1, 4)
+    assert it.end_rotation(atlas.Algebraic.rational(atlas.flint.fmpq(1, 10)), 120) is None
+    x = atlas.Algebraic.surd(2, -1, 3)                                   # 2 − √3: ρ = 1/3
+    e = it.end_rotation(x, 6)
+    assert not e.island_end and e.resonance == (1, 3) and e.ball[0] <= atlas.flint.fmpq(1, 3) <= e.ball[1]
+    assert it.resonance_of(x, 6) == (1, 3) and it.resonance_of(it.LOWER_END, 6) is None
+    assert atlas.check_ends(doc) == []
+    def inside(w):                                  # a resonant upper end strictly inside ]3 − 2√2, 1[
+        return w["rotation"] and w["rotation"]["resonance"] and not w["rotation"]["island_end"]
+    a = next(a for a in doc["attractors"] if any(inside(w) for w in a["windows"]))
+    for key, value in (("resonance", [0, 1]), ("island_end", True)):
+        bad = copy.deepcopy(doc)
+        w = next(w for w in next(b for b in bad["attractors"] if b["name"] == a["name"])["windows"] if inside(w))
+        w["rotation"][key] = value
+        assert any("decided again" in p for p in atlas.check_ends(bad))
+    bad = copy.deepcopy(doc)
+    bad["summary"]["interior_ends"]["resonant_upper"] += 1
+    assert any("interior_ends" in p for p in atlas.check_ends(bad))
+
+
+def _committed(version=4):
+    from certify.run.files import load_findings
+    doc = load_findings("atlas.json")
+    if doc is None or doc["version"] < version:
+        pytest.skip(f"the committed atlas predates version {version} (regenerate: docs/atlas.md)")
+    return doc
+
+
+def test_the_committed_atlas_orbits_proved_by_the_longer_run_check():
+    """reports/atlas.json: the orbits of r = 28/33 that only the longer run proves (their first
+    run shows no period) are proved again by identify; one marked unresolved is caught; the
+    observed words are one per cyclic word."""
+    doc = _committed()
+    row = next(r for r in doc["r"] if r["r"] == "28/33")
+    late = [o for o in row["orbits"] if o["rerun"] and o["class"] != atlas.UNRESOLVED]
+    assert late and doc["summary"]["unresolved_by_kind"]["certified by a longer run"] >= len(late)
+    late = late[:1]                                          # one orbit: 100 000 collisions with its rerun
+    sub = {**row, "orbits": late, "counts": atlas._counts(late), "total": len(late)}
+    assert atlas.check_orbits(doc, [sub]) == []
+    o = late[0]
+    x = atlas.ident.classify(Fraction(row["r"]), o["theta0"], o["phi0"], doc["parameters"]["collisions"])
+    bad = copy.deepcopy(sub)
+    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOTHING, o["theta0"], o["phi0"], atlas._fq(row["r"]))
+    bad["counts"] = atlas._counts(bad["orbits"])
+    assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
+    assert all(w == atlas.least_rotation(w) for w in doc["observed_words"])
+    assert [c["word"] for c in doc["curves"]] == [atlas.least_rotation(c["word"]) for c in doc["curves"]]
+
+
+def test_the_committed_atlas_window_ends_are_decided_again():
+    """reports/atlas.json: the rotation records of the windows closing at the first resonances
+    above 3 − 2√2 decided again (island_theorem.end_rotation); a moved resonance is caught."""
+    doc = _committed()
+    atts = [a for a in doc["attractors"] if any((w["rotation"] or {}).get("resonance") for w in a["windows"])][:6]
+    sub = {**doc, "attractors": atts, "summary": {**doc["summary"], "interior_ends": atlas.interior_ends(atts)}}
+    assert atlas.check_ends(sub) == []
+    bad = copy.deepcopy(sub)
+    w = next(w for w in bad["attractors"][-1]["windows"] if (w["rotation"] or {}).get("resonance"))
+    w["rotation"]["resonance"] = [w["rotation"]["resonance"][0] + 1, w["rotation"]["resonance"][1]]
+    assert any("decided again" in p for p in atlas.check_ends(bad))
