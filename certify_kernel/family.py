@@ -332,7 +332,8 @@ VELOCITY_RANGE = (Fraction(7, 100), Fraction(8, 100))     # ⊃ ]r*, r_n[ for ev
 def velocities(K: list, N1: int, facts: dict) -> dict:
     """Part 6 for every n ≥ N1 ≥ 6 (or n = N1 alone, with part 4's facts for it) and r ∈ ]r*, r_n[
     (0 < nθ < π), on the dominant branch: before every collision of (ab)^n(cb)^n its pair approaches.
-    Exactly (K^j = s_j K − r² s_{j−1}I, K₁₂ = h, (h, 1)K = (ht, K₁₁)), with y = K^j(−1, u) and s_j = r^{j−1} s̃_j, s̃_j = sin jθ/sin θ:
+    Exactly (K^j = s_j K − r² s_{j−1}I, K₁₂ = h, (h, 1)K = (ht, K₁₁)), with y = K^j(−1, u) and
+    s_j = r^{j−1} s̃_j, s̃_j = sin jθ/sin θ:
     q₁ before the (j+1)-th a is y₁ = −r^{j−1}[K₁₁s̃_j − r s̃_{j−1} − uh s̃_j], q₂ before the (j+1)-th b is
     −r^{j−1}[rh s̃_{j+1} − u(K₁₁s̃_j − r s̃_{j−1})].  For 1 ≤ k ≤ n − 1, 1 ≤ s̃_k ≤ n (θ ≤ kθ ≤ π − θ), and
     K₁₁ sin jθ − r sin(j−1)θ = sin jθ(K₁₁ − r cos θ) + r cos jθ sin θ ≥ sin θ(K₁₁ − 2r).  u = cX/D =

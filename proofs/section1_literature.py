@@ -506,11 +506,12 @@ def windows(ab_cb_patterns, ab_cb_seven, ab_cb_limit, n2, n3, limit, order, fami
         parts[1].evidence.append(f"NOT proved: for n ≥ {PROVED_FROM}, {gap}; the windows W_n are disjoint, the whole "
                                  "stable sets are not certified to be")
     checks += parts
-    checks.append(named("L5.3", Check(
+    checks.append(witnessed(Check(
         f"for every n ≥ 2 the windows of (ab)^n(cb)^n are {order}: the {len(parts)} checks above"
         + (" (the whole stable sets: the paper's open problem, proved)" if whole else ""), holds,
         ["every part holds" if holds else "a part fails: " + "; ".join(c.statement[:80] for c in parts if not c.holds)]
-        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, {gap}"]))))
+        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, {gap}"])),
+        "L5.3", *[ab_cb(n) for n in range(2, 6)]))          # the kernel decides n = 2..5 as in L4 (their factors)
     note = ("The paper's open problem (l. 1215: the intervals of stability \"seem to be disjoint and accumulate from "
             "above … but this has also not been proven yet\"): " + (
                 f"proved for every n ≥ 2: the stable set of (ab)^n(cb)^n in ]0, 1[ is one open interval W_n (n ≤ "

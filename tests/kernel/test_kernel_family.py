@@ -27,7 +27,7 @@ def test_the_statement_file_says_what_the_kernel_checks():
     for part in (L661, UNSTABLE, APPROACHING, REACHES, L661.replace("n ≥ 8", "n = 6"),
                  REACHES.replace("n ≥ 8", "n = 7"), stmts["L6.6.3"].formula.split(" and ")[0]):
         assert part in stmts["L6.6"].formula, part
-    assert stmts["L5.3"].unformalised            # the lower ends are not in the kernel
+    assert "family_window(\"(ab)^n(cb)^n\", n ≥ 8)" in stmts["L5.3"].formula
 
 
 def test_cdkk_point_is_verified_for_every_n_from_8_and_from_7():
@@ -377,3 +377,81 @@ def test_the_whole_conjecture_for_n_from_6():
     seven = 'family_reaches("(ab)^n(cb)^n", n = 7, n·θ = π)'
     moved = tail.replace(seven, seven.replace("= π", "= 2·π"))
     assert moved != tail and outcome(moved).startswith("not verified")
+
+
+WINDOW = 'family_window("(ab)^n(cb)^n", n ≥ 8)'
+
+
+@pytest.mark.parametrize("formula", [WINDOW, WINDOW.replace("n ≥ 8", "n = 6"), WINDOW.replace("n ≥ 8", "n = 7")])
+def test_the_stable_set_lies_between_r_n_plus_1_and_r_n(formula):
+    """L5.3 for n ≥ 6: nothing stable on ]0, r_(n+1)] (F_n > 0 there), the rest as in L6.6."""
+    assert outcome(formula) == "verified"
+
+
+@pytest.mark.parametrize("change, why", [
+    ("n = 5", "n ≥ 6"),
+    ("n ≥ 6", "change sign around 1/9"),
+])
+def test_mutants_of_the_window_are_not_verified(change, why):
+    got = outcome(WINDOW.replace("n ≥ 8", change))
+    assert got.startswith("not verified") and why in got, got
+
+
+def test_f_n_is_positive_below_r_n_plus_1_against_exact_values():
+    """F_n > 0 on ]0, r_(n+1)] (the kernel's interval bound), and F_n from K^n in exact rationals: > 0 at
+    rationals below r_(n+1) and < 0 just below r_n (math's r_n, only to pick the points)."""
+    assert family.below(8, False) > 0 and family.below(6, True) > 0
+    for n in (6, 8, 12):
+        a = 3 + 4 * math.cos(math.pi / n)
+        r_n = a - math.sqrt(a * a - 1)
+        a1 = 3 + 4 * math.cos(math.pi / (n + 1))
+        r_n1 = a1 - math.sqrt(a1 * a1 - 1)
+        for x, sign in ((r_n1 / 2, 1), (r_n1 * 0.999, 1), (r_n * 0.99999, -1)):
+            r = Fraction(x)
+            h = (1 + r) / 2
+            K = [[h * h - r, h], [-r * h, -r]]
+            P = [[Fraction(1), Fraction(0)], [Fraction(0), Fraction(1)]]
+            for _ in range(n):
+                P = [[P[i][0] * K[0][j] + P[i][1] * K[1][j] for j in range(2)] for i in range(2)]
+            (pa, pb), (pc, pd) = P
+            W1, W2 = Fraction(1, 3) - pa / 3 - 2 * pc / 3, Fraction(2, 3) - pb / 3 - 2 * pd / 3
+            F = W1 * (pa - W1 * pd + W2 * pc) + (pb * pc + W2 * pc * pd - W1 * pd * pd)
+            assert (F > 0) == (sign > 0), (n, x)
+
+
+def test_the_bound_below_is_tightened_or_broken(monkeypatch):
+    """A margin tightened: F_n/x with its x-free part lowered by 1/36 (1 + 6r − 3r² − 1 ≥ 0 only) is no
+    longer proved positive; an F_n with a term free of s_n is refused."""
+    real = family.f_n_in_s
+
+    def lowered():
+        Q = dict(real())
+        Q[(0, 0, 0)] = Q.get((0, 0, 0), Fraction(0)) - Fraction(2, 36)
+        return Q
+    monkeypatch.setattr(family, "f_n_in_s", lowered)
+    with pytest.raises(NotVerified, match="F_n > 0 below"):
+        family.below(8, False)
+    monkeypatch.setattr(family, "f_n_in_s", lambda: (_ for _ in ()).throw(ArithmeticError("a term without s_n")))
+    with pytest.raises(NotVerified, match="without s_n"):
+        family.below(8, False)
+
+
+def test_the_third_a_range_moved(monkeypatch):
+    """t < 0 on [429/2500, 1[ (exact); with t shifted up by 1/100 its root moves above 429/2500: refused."""
+    family.third_a()
+    monkeypatch.setattr(family, "T", [Fraction(1, 4) + Fraction(1, 100), Fraction(-3, 2), Fraction(1, 4)])
+    with pytest.raises(NotVerified, match="429/2500"):
+        family.third_a()
+
+
+def test_l53_is_formalised_and_its_family_part_verified():
+    """L5.3: n = 2..5 by the words' own analysis (decided with the committed witnesses by certify verify),
+    n = 5 above r_6 by a rational point, every n ≥ 6 by family_window.  A separating point below r_6 is
+    decided false."""
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    f = stmts["L5.3"].formula
+    assert not stmts["L5.3"].unformalised
+    tail = f[f.index("((79/1000)^2"):]
+    assert outcome(tail) == "verified"
+    got = outcome(tail.replace("79/1000", "77/1000"))
+    assert got.startswith("failed:") and "finds it false" in got
