@@ -534,6 +534,8 @@ def below(N1: int, single: bool, boxes: int = 16) -> Fraction:
     for _ in range(N1 - 1):
         S.append(sub(mul(T, S[-1]), mul(mul(R, R), S[-2])))
     worst = None
+    if not (single or (N1 + 1) * RHO <= N1):
+        raise NotVerified(f"n ρ̄^(n−1) is not shown to decrease from n = {N1}")
     top = VELOCITY_RANGE[1]                        # r_{n+1} < 8/100 for n ≥ 6 (as in part 6: cos θ(8/100) < √3/2)
     c08 = at(T, top) / (2 * top)
     if not (N1 >= 6 and 0 < c08 and c08 * c08 < Fraction(3, 4)):

@@ -4,6 +4,7 @@ and of the proof refused, the exact identities against the kernel's own word mat
 intervals against fractions and math at many points (enclosure, with hypothesis)."""
 from __future__ import annotations
 
+import json
 import math
 from fractions import Fraction
 
@@ -455,3 +456,28 @@ def test_l53_is_formalised_and_its_family_part_verified():
     assert outcome(tail) == "verified"
     got = outcome(tail.replace("79/1000", "77/1000"))
     assert got.startswith("failed:") and "finds it false" in got
+
+
+def test_the_window_cannot_reach_r_n_from_the_bound_below():
+    """The mutant "ℓ_n above r_n" (nothing stable up to r_n): below r_(n+1) the bound uses w ≤ t (s_(n+1) ≥ 0);
+    between r_(n+1) and r_n, w = r²s_(n−1)/s_n is unbounded (s_n → 0), and Q's x-free part is negative once
+    w > (3 − 6r − r²)/8: the proof cannot be stretched to r_n."""
+    Q = family.f_n_in_s()
+    r = Iv(Fraction(75, 1000))
+    assert family._mvalue(Q, (r, Iv(0), Iv(family.at(family.T, r).hi))).positive()
+    assert family._mvalue(Q, (r, Iv(0), Iv(Fraction(1, 2)))).negative()
+
+
+def test_l53_without_the_words_factors_is_not_verified():
+    """A witness dropped: n = 2..5 are decided with the words' factors, which the run writes into L5.3's and
+    L6.6's entries of certificates.json; without them the n = 5 part is not verified (a cut polynomial the
+    kernel does not split)."""
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    part = next(p for p in stmts["L5.3"].formula.split(" and ") if '"(ab)^5(cb)^5")}) > 79/1000' in p)
+    got = outcome(part)
+    assert got.startswith("not verified") and "witness" in got, got
+    data = json.loads((ROOT / "reports" / "certificates.json").read_text(encoding="utf-8"))
+    entries = {c["id"]: c for c in data["certificates"]}
+    for cid, sid in (("L5", "L5.3"), ("L6", "L6.6")):
+        words = [w for x in entries[cid]["statements"][sid]["witness"] if x["kind"] == "factors" for w in x["words"]]
+        assert words == [f"(ab)^{n}(cb)^{n}" for n in range(2, 6)]
