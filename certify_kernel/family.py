@@ -52,7 +52,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .evaluate import PREDICATES, NotVerified, interval, word_matrix
+from .evaluate import PREDICATES, NotVerified, collision, interval, word_matrix
 from .intervals import Iv, sqrt
 from .poly import add, madd, mmul, mul, scale, sub
 from .poly import value as at
@@ -220,12 +220,42 @@ def dominant(K: list, N1: int, r_max: Fraction) -> dict:
     kmax = max((at(K[i][j], r).abs() + r).hi for i in range(2) for j in range(2))
     delta = N1 * RHO ** (N1 - 1) * max(Fraction(1), kmax)
     small = Iv(-delta, delta)
-    a = b = c = d = small
+    return _dominance(small, small, small, small, Iv(0, RHO ** (4 * N1)), delta, f"n ≥ {N1}")
+
+
+def dominant_at(K: list, n: int, r_max: Fraction, boxes: int = 32) -> dict:
+    """Part 4 for the one n and r ∈ ]0, R], in intervals over `boxes` equal boxes of [0, R]: P = K^n
+    computed exactly (polynomials in r), its entries enclosed on each box, δ their largest modulus
+    there, det M = r^{4n} on the box; :func:`_dominance` on each, the bounds combined (the worst).
+    NotVerified when an inequality is not proved on some box."""
+    P = [[ONE, []], [[], ONE]]
+    for _ in range(n):
+        P = [[add(mul(P[i][0], K[0][j]), mul(P[i][1], K[1][j])) for j in range(2)] for i in range(2)]
+    out: dict = {}
+    for k in range(boxes):
+        r = Iv(r_max * k / boxes, r_max * (k + 1) / boxes)
+        a, b, c, d = (at(P[i][j], r) for i in range(2) for j in range(2))
+        delta = max(x.mag() for x in (a, b, c, d))
+        f = _dominance(a, b, c, d, r ** (4 * n), delta, f"n = {n}, r ∈ [{r.lo}, {r.hi}]")
+        if not out:
+            out = f
+            continue
+        worst = {"delta": max, "others": max, "u": max, "q3_minus_d": max, "Cu": max,
+                 "lambda_minus_d2": min, "q3_abs": min}
+        out = {**{k2: g(out[k2], f[k2]) for k2, g in worst.items()},
+               "lambda": (min(out["lambda"][0], f["lambda"][0]), max(out["lambda"][1], f["lambda"][1]))}
+    return out
+
+
+def _dominance(a: Iv, b: Iv, c: Iv, d: Iv, det: Iv, delta: Fraction, where: str) -> dict:
+    """The interval steps of part 4 from enclosures of P's entries (|P_ij| ≤ δ) and of det M = r^{4n}:
+    W = (1/3, 2/3)(I − P), M = N², cp changes sign on 1/9 ± WIDTH·δ (a real root λ there), the other two
+    roots have modulus < λ, Cramer's D > 0, q₃(t_2n) − d < 0 < λ − d², C_u ≥ |X|/D.  NotVerified (naming
+    `where`) when an inequality is not proved."""
     W1 = Fraction(1, 3) - a / 3 - 2 * c / 3                        # Wᵀ = (1/3, 2/3)(I − P)
     W2 = Fraction(2, 3) - b / 3 - 2 * d / 3
     N = [[W1, W2, Iv(1)], [c, d, Iv(0)], [a, b, Iv(0)]]
     M = [[N[i][0] * N[0][j] + N[i][1] * N[1][j] + N[i][2] * N[2][j] for j in range(3)] for i in range(3)]
-    det = Iv(0, RHO ** (4 * N1))                                   # det M = r^{4n}
     tr = M[0][0] + M[1][1] + M[2][2]
     e2 = sum((M[i][i] * M[j][j] - M[i][j] * M[j][i] for i, j in ((0, 1), (0, 2), (1, 2))), Iv(0))
 
@@ -234,14 +264,14 @@ def dominant(K: list, N1: int, r_max: Fraction) -> dict:
     omega = WIDTH * delta
     lo, hi = Fraction(1, 9) - omega, Fraction(1, 9) + omega
     if lo <= 0:
-        raise NotVerified(f"the interval of λ reaches 0 (n ≥ {N1}: δ = {float(delta):.3g} is too large)")
+        raise NotVerified(f"the interval of λ reaches 0 ({where}: δ = {float(delta):.3g} is too large)")
     if not (cp(Iv(lo)).negative() and cp(Iv(hi)).positive()):
-        raise NotVerified(f"the characteristic polynomial is not shown to change sign around 1/9 (n ≥ {N1})")
+        raise NotVerified(f"the characteristic polynomial is not shown to change sign around 1/9 ({where})")
     lam = Iv(lo, hi)
     S, Pi = (tr - lam).mag(), (det / lam).mag()
     others = (S / 2 + sqrt(Iv(S * S / 4 + Pi))).hi
     if not others < lam.lo:
-        raise NotVerified(f"strict dominance is not proved (n ≥ {N1})")
+        raise NotVerified(f"strict dominance is not proved ({where})")
     D = (lam - M[1][1]) * (lam - M[2][2]) - M[1][2] * M[2][1]
     if not D.positive():
         raise NotVerified("Cramer's determinant of rows 2, 3 is not shown positive")
@@ -296,13 +326,14 @@ def arcs(K: list, N1: int, r_max: Fraction, Cu: Fraction) -> dict:
 
 
 # ------------------------------------------------------------- 6. below r_n: every pair approaches
-VELOCITY_RANGE = (Fraction(7, 100), Fraction(8, 100))     # ⊃ ]r*, r_n[ for every n ≥ 7
+VELOCITY_RANGE = (Fraction(7, 100), Fraction(8, 100))     # ⊃ ]r*, r_n[ for every n ≥ 6
 
 
 def velocities(K: list, N1: int, facts: dict) -> dict:
-    """Part 6 for every n ≥ N1 ≥ 7 and r ∈ ]r*, r_n[ (0 < nθ < π), on the dominant branch: before every
-    collision of (ab)^n(cb)^n its pair approaches.  Exactly (K^j = s_j K − r² s_{j−1}I, K₁₂ = h,
-    (h, 1)K = (ht, K₁₁)), with y = K^j(−1, u) and s_j = r^{j−1} s̃_j, s̃_j = sin jθ/sin θ:
+    """Part 6 for every n ≥ N1 ≥ 6 (or n = N1 alone, with part 4's facts for it) and r ∈ ]r*, r_n[
+    (0 < nθ < π), on the dominant branch: before every collision of (ab)^n(cb)^n its pair approaches.
+    Exactly (K^j = s_j K − r² s_{j−1}I, K₁₂ = h, (h, 1)K = (ht, K₁₁)), with y = K^j(−1, u) and
+    s_j = r^{j−1} s̃_j, s̃_j = sin jθ/sin θ:
     q₁ before the (j+1)-th a is y₁ = −r^{j−1}[K₁₁s̃_j − r s̃_{j−1} − uh s̃_j], q₂ before the (j+1)-th b is
     −r^{j−1}[rh s̃_{j+1} − u(K₁₁s̃_j − r s̃_{j−1})].  For 1 ≤ k ≤ n − 1, 1 ≤ s̃_k ≤ n (θ ≤ kθ ≤ π − θ), and
     K₁₁ sin jθ − r sin(j−1)θ = sin jθ(K₁₁ − r cos θ) + r cos jθ sin θ ≥ sin θ(K₁₁ − 2r).  u = cX/D =
@@ -312,12 +343,12 @@ def velocities(K: list, N1: int, facts: dict) -> dict:
     (q₃, q₂)(t_2n) = |q₃|(−1, u′), q₃(t_2n) < d < 0 (part 4, and d = −r s_n − r² s_{n−1} < 0),
     u′ = q₂(t_2n)/|q₃| = s̃_n ω′, q₂(t_2n) = −c + du = −c(1 − dX/D): |ω′| ≤ rh r^{n−1}(1 + δC_u)/|q₃|.
     With C = max(C_u, (1 + δC_u)/|q₃|), r ∈ [7/100, 8/100] (7/100 < r*, and r_n < 8/100 as cos θ(8/100) <
-    √3/2 < cos(π/n) for n ≥ 7) and n² r^{n−1} ≤ N1²(8/100)^{N1−1} (decreasing): both margins are checked
+    √3/2 ≤ cos(π/n) for n ≥ 6) and n² r^{n−1} ≤ N1²(8/100)^{N1−1} (decreasing): both margins are checked
     positive in intervals over 16 boxes of the range.  Returns the smallest margins."""
     lo, hi = VELOCITY_RANGE
     c08 = at(T, hi) / (2 * hi)
     root = [Fraction(1), Fraction(-14), Fraction(1)]
-    if not (N1 >= 7 and at(root, lo) > 0 and 0 < c08 and c08 * c08 < Fraction(3, 4)
+    if not (N1 >= 6 and at(root, lo) > 0 and 0 < c08 and c08 * c08 < Fraction(3, 4)
             and (N1 + 1) ** 2 * hi <= N1 ** 2):
         raise NotVerified("[7/100, 8/100] ⊃ ]r*, r_n[ or the decrease of n² r^(n−1) is not proved")
     q3 = Iv(facts["q3_abs"])
@@ -337,6 +368,201 @@ def velocities(K: list, N1: int, facts: dict) -> dict:
     return {"margins": (m_a, m_b)}
 
 
+# ------------------------------------------------------------- 7. just below r_n: stable (the reflection)
+def _vars(names: tuple) -> list:
+    """The variables of Q[names] as polynomials (dicts of exponent tuples)."""
+    return [{tuple(1 if i == k else 0 for i in range(len(names))): Fraction(1)} for k in range(len(names))]
+
+
+def _c(c, n: int) -> dict:
+    return {(0,) * n: Fraction(c)} if c else {}
+
+
+def _msum(*terms) -> dict:
+    out: dict = {}
+    for t in terms:
+        out = madd(out, t)
+    return out
+
+
+def f_n(a, b, c, d, W1, W2) -> dict:
+    """F_n = W₁(a − W₁d + W₂c) + (bc + W₂cd − W₁d²) (docs/family-limit.md, part 4)."""
+    return _msum(mmul(W1, _msum(a, mmul(mmul(W1, d), _c(-1, len(next(iter(a))))), mmul(W2, c))),
+                 mmul(b, c), mmul(mmul(W2, c), d), mmul(mmul(_c(-1, len(next(iter(a)))), W1), mmul(d, d)))
+
+
+def collisions_fix_their_pair() -> bool:
+    """Exact, on the kernel's collision matrices A, B, C (pairs i = 1, 2, 3): G − I is 0 outside column i,
+    so G x = x whenever x_i = 0.  Hence the positions of a word, p(t_k) = p(t_{k−1}) − (p_i/q_i) q(t_{k−1})
+    with p_i(t_k) = 0, satisfy p(t_k) = G p(t_k) = G p(t_{k−1}) − (p_i/q_i) q(t_k): p(t_k) ≡ G p(t_{k−1})
+    modulo q(t_k), and over a prefix of matrix M', p ≡ M' p(0) modulo q = M' q(0)."""
+    for i in range(3):
+        G = _rows(collision(i))
+        for row in range(3):
+            for col in range(3):
+                if col != i and G[row][col] != (ONE if row == col else []):
+                    return False
+    return True
+
+
+def check_reflection() -> dict:
+    """The exact identities of the reflection (family_limit's part 12), each True when it holds:
+
+    * ``N̄``: in Q[a, b, c, d, W₁, W₂, u, v], with N = [[W₁, W₂, 1], [c, d, 0], [a, b, 0]], q = (−1, u, v),
+      uτ = uW₁ + c and uγ = ua − cv: u·Ne₁ = (uτ)e₁ + (uγ)e₃ + c·q, and Ne₃ = e₁;
+    * ``γσ₀``: with σ₀u = −c + du and σ₀v = −a + bu (rows 2, 3 of Nq = σ₀q), a(σ₀u) − c(σ₀v) = u(ad − bc),
+      i.e. (uγ)σ₀ = u·det P;
+    * ``F_n``: e₂(N) tr N − det N = −F_n;
+    * ``e₁e₂ − e₃``: in Q[x, y, z], (x + y + z)(xy + yz + zx) − xyz = (x + y)(y + z)(z + x);
+    * ``F_n(r_n)``: in Q[ρ], at P = −ρI and W = (1 + ρ)(1/3, 2/3): F_n = −(2/9)ρ(1 + ρ)²;
+    * ``collisions``: :func:`collisions_fix_their_pair`."""
+    names = ("a", "b", "c", "d", "W1", "W2", "u", "v")
+    a, b, c, d, W1, W2, u, v = _vars(names)
+    k = len(names)
+    one, m1 = _c(1, k), _c(-1, k)
+    N = [[W1, W2, one], [c, d, {}], [a, b, {}]]
+    q = [m1, u, v]
+    u_tau, u_gamma = madd(mmul(u, W1), c), madd(mmul(u, a), mmul(c, v), -1)
+    Ne1 = [N[i][0] for i in range(3)]
+    rhs = [madd(u_tau, mmul(c, q[0])), mmul(c, q[1]), madd(u_gamma, mmul(c, q[2]))]
+    out = {"N̄": all(not madd(mmul(u, Ne1[i]), rhs[i], -1) for i in range(3))
+           and [N[i][2] for i in range(3)] == [one, {}, {}]}
+    sig_u, sig_v = madd(mmul(d, u), c, -1), madd(mmul(b, u), a, -1)
+    det_P = madd(mmul(a, d), mmul(b, c), -1)
+    out["γσ₀"] = not madd(madd(mmul(a, sig_u), mmul(c, sig_v), -1), mmul(u, det_P), -1)
+    tr = _msum(N[0][0], N[1][1], N[2][2])
+    e2 = _msum(*(madd(mmul(N[i][i], N[j][j]), mmul(N[i][j], N[j][i]), -1) for i, j in ((0, 1), (0, 2), (1, 2))))
+    det = _msum(*(mmul(mmul(_c(sg, k), N[0][p0]), madd(mmul(N[1][p1], N[2][p2]), mmul(N[1][p2], N[2][p1]), -1))
+                  for sg, p0, p1, p2 in ((1, 0, 1, 2), (-1, 1, 0, 2), (1, 2, 0, 1))))
+    out["F_n"] = not madd(madd(mmul(e2, tr), det, -1), f_n(a, b, c, d, W1, W2))
+    x, y, z = _vars(("x", "y", "z"))
+    lhs = madd(mmul(_msum(x, y, z), _msum(mmul(x, y), mmul(y, z), mmul(z, x))), mmul(mmul(x, y), z), -1)
+    out["e₁e₂ − e₃"] = not madd(lhs, mmul(mmul(madd(x, y), madd(y, z)), madd(z, x)), -1)
+    (rho,) = _vars(("ρ",))
+    one1, zero = _c(1, 1), {}
+    W = madd(one1, rho)
+    at_rn = f_n(mmul(_c(-1, 1), rho), zero, zero, mmul(_c(-1, 1), rho), mmul(_c(Fraction(1, 3), 1), W),
+                mmul(_c(Fraction(2, 3), 1), W))
+    out["F_n(r_n)"] = not madd(at_rn, mmul(mmul(_c(Fraction(-2, 9), 1), rho), mmul(W, W)), -1)
+    out["collisions"] = collisions_fix_their_pair()
+    return out
+
+
+def reach(K: list, facts: dict) -> dict:
+    """Part 7 for every n with parts 1-4 and 6 (n ≥ N1 ≥ 7, or n = 6 alone): every r of some left neighbourhood
+    ]r_n − ε_n, r_n[ of r_n is stable (the kernel's *stable*: λ > 0 strictly dominant, u > 0, x > 0 a
+    fixed point of the position map f, every collision's pair approaching, every gap that must be open
+    open, |f'(x)| < 1).  Let r ∈ ]r*, r_n[ (0 < nθ < π).  By parts 4 and 6: λ is simple and strictly
+    dominant, u > 0, q₃(t_2n) ≤ −|q₃| < 0, every pair approaches.  N = J M_ab^n commutes with M = N²,
+    so N q(0) = σ₀ q(0) (λ simple); row 1 gives σ₀ = −q₃(t_2n) > 0, and σ₀² = λ.  As u ≠ 0, (q(0), e₁, e₃)
+    is a basis, and by the identity ``N̄`` N = [[σ₀, *], [0, N̄]] there with N̄ = [[τ, 1], [γ, 0]] on
+    (e₁, e₃) modulo q(0): cp_N = (X − σ₀)(X² − τX − γ), and γ = det P/σ₀ = r^{2n}/σ₀ > 0 (``γσ₀``; det K =
+    r²).  So N̄'s eigenvalues σ₊ > 0 > σ₋ are real (σ₊σ₋ = −γ), σ±² are M's other eigenvalues, |σ±| < σ₀
+    (strict dominance), and by ``F_n`` and ``e₁e₂ − e₃`` on (σ₀, σ₊, σ₋):
+
+        −F_n = (σ₀ + σ₊)(σ₀ + σ₋)(σ₊ + σ₋) = τ · (positive).
+
+    The positions (``collisions``): p(t_2n) ≡ M_ab^n p(0) modulo q(t_2n) = M_ab^n q(0), and p₂(t_2n) = 0
+    (its last collision is b), so J p(t_2n) = (p₃, 0, p₁)(t_2n) is the representative of N̄(1, x) =
+    (τ + x, γ); with M_cb^n = J M_ab^n J = NJ, p(T) represents N̄²(1, x): f is the Möbius map of N̄².
+    For τ ≠ 0 its fixed points are N̄'s eigenvectors (1, x±), x₊ = −σ₋ > 0, x₋ = −σ₊ < 0 (not admissible);
+    at x₊: p₃(t_2n) = σ₊ > 0, p₁(T) = σ₊² > 0 (the gap of the first a open at the end; every other gap
+    collided two collisions before, or is the first b's, p₂(t₁) = u > 0) and f'(x₊) = det N̄²/σ₊⁴ =
+    σ₋²/σ₊² < 1 exactly when τ = σ₊ + σ₋ > 0 (τ = 0: f = id; τ < 0: |f'(x₊)| > 1).  So on ]r*, r_n[,
+    r is stable exactly when F_n(r) < 0.  At r_n (nθ = π, s_n = 0 and r² s_{n−1} = r^n sin(π − θ)/sin θ =
+    r^n, part 3): P = K^n = −r_n^n I and W = (1 + r_n^n)(1/3, 2/3), so by ``F_n(r_n)`` F_n(r_n) =
+    −(2/9) r_n^n (1 + r_n^n)² < 0; F_n is a polynomial in r (the entries of K^n and W are), so F_n < 0
+    on some ]r_n − ε_n, r_n]: every r there above r* is stable.  NotVerified when an identity fails or
+    part 4 gave no bound of |q₃(t_2n)|.  Returns σ₀'s lower bound."""
+    bad = [k for k, ok in check_reflection().items() if not ok]
+    if bad:
+        raise NotVerified("part 7 (the reflection): " + "; ".join(bad) + " fails")
+    if not (facts["q3_abs"] > 0 and K[1][1] == scale(R, -1)):
+        raise NotVerified("σ₀ = −q₃(t_2n) > 0 is not proved")
+    return {"sigma0": facts["q3_abs"]}
+
+
+# ------------------------------------------------------------- 8. below r_{n+1}: F_n > 0, nothing stable
+def f_n_in_s() -> dict:
+    """F_n/x as an exact polynomial in (r, x, w), x = s_n, w = r² s_{n−1}/s_n: F_n is :func:`f_n` at P = K^n =
+    s_n K − r² s_{n−1} I (part 1) and W = (1/3, 2/3)(I − P), with K the kernel's block; every term of F_n has
+    a factor x (ArithmeticError otherwise), divided out exactly."""
+    K, _ = block()
+    names = ("r", "x", "w")
+    rr, x, w = _vars(names)
+
+    def lift(p: list) -> dict:                          # a polynomial in r
+        return {(k, 0, 0): Fraction(c) for k, c in enumerate(p) if c}
+    y = mmul(x, w)
+    P = [[madd(mmul(x, lift(K[i][j])), y if i == j else {}, -1) for j in range(2)] for i in range(2)]
+    third = (_c(Fraction(1, 3), 3), _c(Fraction(2, 3), 3))
+    W = [madd(third[j], madd(mmul(third[0], P[0][j]), mmul(third[1], P[1][j])), -1) for j in range(2)]
+    F = f_n(P[0][0], P[0][1], P[1][0], P[1][1], W[0], W[1])
+    if any(k[1] == 0 for k in F):
+        raise ArithmeticError("F_n has a term without s_n")
+    return {(k[0], k[1] - 1, k[2]): v for k, v in F.items()}
+
+
+def _mvalue(p: dict, point: tuple) -> Iv:
+    """A polynomial of (r, x, w) on intervals, term by term."""
+    out = Iv(0)
+    for k, v in p.items():
+        term = Iv(v)
+        for e, z in zip(k, point):
+            if e:
+                term = term * z ** e
+        out = out + term
+    return out
+
+
+def below(N1: int, single: bool, boxes: int = 16) -> Fraction:
+    """Part 8 for every n ≥ N1 (or n = N1 alone): F_n > 0 on ]0, r_{n+1}], so (part 7) nothing there is
+    stable.  On ]0, r_{n+1}], (n + 1)θ ≤ π (θ = 0 up to r*), so s_{n−1}, s_n > 0 and s_{n+1} = t s_n − r² s_{n−1}
+    ≥ 0 (part 3): with x = s_n > 0 and w = r² s_{n−1}/s_n, 0 ≤ w ≤ t ≤ 1/4, and x ≤ n ρ̄^{n−1} ≤ N1 4^{1−N1}
+    (one n: the largest |s_n| on the box, s_n exact).  F_n = x·Q(r, x, w) (:func:`f_n_in_s`), and
+    Q's part free of x is (3 − 6r − r² − 8w)/36 ≥ (1 + 6r − 3r²)/36 > 0 at w = t: Q > 0 is checked in
+    intervals over `boxes` boxes of r ∈ [0, 8/100] ⊃ ]0, r_{n+1}] (n ≥ 6: cos θ(8/100) < √3/2 < cos(π/(n + 1)))
+    with w ∈ [0, t(box)], x ∈ [0, x̄].  Returns the smallest Q;
+    NotVerified unless it is positive.  Why nothing is stable where F_n > 0: on ]0, r_n[, u > 0 and σ₀ > 0
+    (part 4), so (part 7) −F_n = τ (σ₀ + σ₊)(σ₀ + σ₋) with the second factor > 0: F_n > 0 gives τ < 0, and
+    then the only admissible fixed point x₊ = −σ₋ > 0 has |f'(x₊)| = σ₋²/σ₊² > 1."""
+    try:
+        Q = f_n_in_s()
+    except ArithmeticError as exc:
+        raise NotVerified(f"part 8: {exc}") from None
+    S = [[], ONE]
+    for _ in range(N1 - 1):
+        S.append(sub(mul(T, S[-1]), mul(mul(R, R), S[-2])))
+    worst = None
+    if not (single or (N1 + 1) * RHO <= N1):
+        raise NotVerified(f"n ρ̄^(n−1) is not shown to decrease from n = {N1}")
+    top = VELOCITY_RANGE[1]                        # r_{n+1} < 8/100 for n ≥ 6 (as in part 6: cos θ(8/100) < √3/2)
+    c08 = at(T, top) / (2 * top)
+    if not (N1 >= 6 and 0 < c08 and c08 * c08 < Fraction(3, 4)):
+        raise NotVerified("r_(n+1) < 8/100 is not proved")
+    for k in range(boxes):
+        r = Iv(top * k / boxes, top * (k + 1) / boxes)
+        t = at(T, r)
+        if not t.positive():
+            raise NotVerified("t > 0 on ]0, 8/100] is not proved")
+        xbar = at(S[N1], r).mag() if single else N1 * RHO ** (N1 - 1)
+        q = _mvalue(Q, (r, Iv(0, xbar), Iv(0, t.hi))).lo
+        worst = q if worst is None else min(worst, q)
+    if not worst > 0:
+        raise NotVerified(f"F_n > 0 below r_(n+1) is not proved ({'n =' if single else 'n ≥'} {N1})")
+    return worst
+
+
+def third_a() -> None:
+    """The third a (family_limit's part 11, as L6.6.3): with ℓ_j = (K^j(−1, u))₁, K² = tK − r²I (part 1) gives
+    ℓ₂ = tℓ₁ + r² for every u, so where t < 0 the second a's pair approaching (ℓ₁ < 0) makes the third a's
+    separate (ℓ₂ > 0): for n ≥ 3 nothing on [429/2500, 1[ is feasible.  Exact: t(429/2500) < 0 and t has no
+    root in [429/2500, 1] (Sturm).  NotVerified otherwise."""
+    lo = Fraction(429, 2500)
+    if not (at(T, lo) < 0 and count(T, lo, Fraction(1)) == 0):
+        raise NotVerified("t < 0 on [429/2500, 1[ is not proved")
+
+
 # ------------------------------------------------------------- the predicates
 def _pi_multiple(t) -> Fraction:
     """c in an expression cπ written π, π/m, k·π, k·π/m or kπ (a tree of the language)."""
@@ -350,12 +576,15 @@ def _pi_multiple(t) -> Fraction:
 
 
 def _arguments(ctx, word, n_bound, threshold, relation: str, r_range=None) -> tuple:
-    """(N, R, c) from the predicate's arguments, each checked for its form (R = 1/4 without a range)."""
+    """(N, R, c) from the predicate's arguments, each checked for its form (R = 1/4 without a range);
+    ``n = N`` (one n) instead of ``n ≥ N`` sets ctx.family_single."""
     if word[0] != "str" or word[1].replace(" ", "") != WORD:
         raise Undefined(f"the kernel's family route knows the word {WORD} only")
-    if n_bound[0] != "cmp" or n_bound[1] != ("≥",) or n_bound[2][0] != ("name", "n") or n_bound[2][1][0] != "num":
-        raise Undefined("the range of n is written n ≥ N")
+    if (n_bound[0] != "cmp" or n_bound[1] not in (("≥",), ("=",)) or n_bound[2][0] != ("name", "n")
+            or n_bound[2][1][0] != "num" or Fraction(n_bound[2][1][1]).denominator != 1):
+        raise Undefined("the range of n is written n ≥ N or n = N")
     N1 = int(Fraction(n_bound[2][1][1]))
+    ctx.family_single = n_bound[1] == ("=",)       # one n: part 4 on boxes of r (dominant_at)
     r_max = R_MAX
     if r_range is not None:
         if r_range[0] != "cmp" or r_range[1] != ("in",) or r_range[2][0] != ("name", "r"):
@@ -371,22 +600,89 @@ def _arguments(ctx, word, n_bound, threshold, relation: str, r_range=None) -> tu
     return N1, r_max, _pi_multiple(threshold[2][1])
 
 
+def _s_values(r0: Fraction, n: int) -> list:
+    """[s_0, ..., s_n] at the rational r0, exactly: s_0 = 0, s_1 = 1, s_{j+1} = t s_j − r² s_{j−1}."""
+    t, r2 = at(T, r0), r0 * r0
+    s = [Fraction(0), Fraction(1)]
+    while len(s) <= n:
+        s.append(t * s[-1] - r2 * s[-2])
+    return s
+
+
+def _first_nonpositive(r0: Fraction, n: int) -> int:
+    """The first j ≥ 1 with s_j(r0) ≤ 0, or n + 1 when s_1, ..., s_n > 0."""
+    s = _s_values(r0, n)
+    return next((j for j in range(1, n + 1) if s[j] <= 0), n + 1)
+
+
+def theta_point(j_lo: int, j_hi: int, r_max: Fraction) -> tuple[Fraction, int] | None:
+    """A rational r₀ ∈ ]7/100, R] and j₀ ∈ [j_lo, j_hi] with s_1, ..., s_{j₀−1} > 0 > s_{j₀} at r₀
+    (exact values, by bisection), or None.  By part 3 (s_j = r^{j−1} sin jθ / sin θ above r*, θ ∈ ]0, π[,
+    and s_j > 0 for every j at and below r*) this places θ(r₀) strictly between π/j₀ and π/(j₀ − 1):
+    (j₀ − 1)θ < π as s_1, ..., s_{j₀−1} > 0 (the first zero of sin jθ), j₀θ > π as s_{j₀} < 0."""
+    lo, hi = VELOCITY_RANGE[0], r_max              # 7/100 < r*: every s_j > 0 there (checked below)
+    if not (_first_nonpositive(lo, j_hi) > j_hi and _first_nonpositive(hi, j_hi) <= j_hi):
+        return None
+    for _ in range(400):
+        j = _first_nonpositive(hi, j_hi)
+        if j_lo <= j and _s_values(hi, j)[j] < 0:
+            return hi, j
+        mid = (lo + hi) / 2
+        if _first_nonpositive(mid, j_hi) > j_hi:
+            lo = mid
+        else:
+            hi = mid
+    return None
+
+
+def _refuting_point(c: Fraction, N1: int, r_max: Fraction, single: bool = False) -> tuple[int, Fraction, int]:
+    """For c ≠ 1 (c > 0), an n ≥ N1 and an exact r₀ that refute "q_2(0) > 0 below nθ = cπ, = 0 at it,
+    < 0 just above" (returns (n, r₀, j₀); NotVerified when none is found):
+
+    * c > 1: the smallest n ≥ N1 with n/(n − 1) ≤ c and r₀ with j₀ = n (:func:`theta_point`), so
+      π < nθ(r₀) < nπ/(n − 1) ≤ cπ: r₀ lies below the claimed zero, where the claim has q_2(0) > 0, but
+      s_n(r₀) < 0 exactly, and q_2(0) has the sign of s_n (parts 2-4);
+    * 0 < c < 1: the smallest n ≥ N1 with ⌊n/c⌋ ≥ n + 1 and r₀ with n < j₀ ≤ n/c, so cπ ≤ nπ/j₀ <
+      nθ(r₀) < π: the claimed zero lies in ]r*, r₀] (θ increases with r, part 3), where 0 < nθ < π
+      and q_2(0) > 0 (parts 2-4; exactly s_n(r₀) > 0 at its right end), not 0.
+
+    With `single` n must be N1 itself (NotVerified when N1 does not fit c)."""
+    if c > 1:
+        n = max(N1, -(-c // (c - 1)))
+        j_lo = j_hi = int(n)
+    else:
+        n = N1
+        while (n / c) // 1 < n + 1:
+            n += 1
+        j_lo, j_hi = n + 1, int(n / c)
+    found = theta_point(j_lo, j_hi, r_max) if not single or n == N1 else None
+    if found is None:
+        raise NotVerified(f"no point refuting n·θ = {c}·π was found on ]0, {r_max}]")
+    return int(n), found[0], found[1]
+
+
 def q2_sign_family(ctx, word, n_bound, r_range, threshold) -> bool:
     """The predicate of the module docstring: True when c = 1 and parts 1-4 are proved for every
-    n ≥ N on ]0, R]; False when c ≠ 1 (nθ = cπ is not where q_2(0) first vanishes: for 0 < c < 1
-    q_2(0) > 0 there, for c > 1 it vanished before, at nθ = π); NotVerified when a step is not proved
-    (R > 1/4, N too small for the intervals)."""
+    n ≥ N on ]0, R]; False when c ≠ 1 and parts 1-4 are proved and the kernel finds an n ≥ N and an
+    exact rational r₀ that refutes the claim (:func:`_refuting_point`: the sign of s_n(r₀), computed,
+    against the sign the claim gives there); NotVerified when a step is not proved (R > 1/4, N too
+    small for the intervals) or no such point is found; Undefined for c ≤ 0 (no point of ]r*, R])."""
     N1, r_max, c = _arguments(ctx, word, n_bound, threshold, "=", r_range)
-    _proved(N1, r_max)
+    if c <= 0:
+        raise Undefined("the threshold n·θ = cπ needs c > 0")
+    _proved(N1, r_max, ctx.family_single)
     if c != 1:
-        ctx.counterexample = f"n·θ = {c}π: sin(nθ) {'> 0' if c < 1 else 'vanished first at nθ = π'}"
+        n, r0, j0 = _refuting_point(c, N1, r_max, ctx.family_single)
+        how = (f"s_{n} < 0 there (π/{n} < θ < π/{n - 1}: π < nθ < cπ, below the claimed zero)" if c > 1 else
+               f"s_{n} > 0 there (π/{j0} < θ < π/{j0 - 1}: cπ < nθ < π, above the claimed zero)")
+        ctx.counterexample = f"{r0} ≈ {float(r0):.6f}, n = {n}: {how}"
         return False
     return True
 
 
-def _proved(N1: int, r_max: Fraction) -> dict:
-    """Parts 1-4 for every n ≥ N1 on ]0, R]: the facts of :func:`dominant` (NotVerified when a step
-    is not proved)."""
+def _proved(N1: int, r_max: Fraction, single: bool = False) -> dict:
+    """Parts 1-4 for every n ≥ N1 on ]0, R] (single: for n = N1 alone, part 4 by :func:`dominant_at`):
+    the facts of part 4 (NotVerified when a step is not proved)."""
     if N1 < 2:
         raise Undefined("n ≥ N with N ≥ 2")
     if r_max > R_MAX:
@@ -400,7 +696,7 @@ def _proved(N1: int, r_max: Fraction) -> dict:
         theta_facts(r_max)
     except ArithmeticError as exc:
         raise NotVerified(str(exc)) from None
-    return {"K": K, **dominant(K, N1, r_max)}
+    return {"K": K, **(dominant_at(K, N1, r_max) if single else dominant(K, N1, r_max))}
 
 
 def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
@@ -409,7 +705,7 @@ def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
     at nθ = 2π it is 0 (parts 1-4), and where nθ > 2π a b of the ab-phase separates (part 5): the word
     is not realised.  For c < 1, NotVerified (the kernel proves no stability)."""
     N1, r_max, c = _arguments(ctx, word, n_bound, threshold, ">", r_range)
-    facts = _proved(N1, r_max)
+    facts = _proved(N1, r_max, ctx.family_single)
     try:
         arcs(facts["K"], N1, r_max, facts["Cu"])
     except ArithmeticError as exc:
@@ -419,21 +715,89 @@ def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
     return True
 
 
+def last_b(K: list, N1: int, facts: dict) -> Fraction:
+    """The bracket of the last b of (ab)^n, for every n ≥ N1 ≥ 6 (or n = N1 alone) and r ∈ [7/100, 8/100]
+    (on the dominant branch): with j = n − 1 in :func:`velocities`' formula and u = s̃_n ω, q₂ before that b is
+    −r^{n−2} s̃_n [rh − ω(K₁₁ s̃_{n−1} − r s̃_{n−2})], and |K₁₁ s̃_{n−1} − r s̃_{n−2}| ≤ (K₁₁ + r) n = h² n
+    (|s̃_k| ≤ k), |ω| ≤ rh r^{n−1} C_u: the bracket is ≥ rh(1 − C_u h² n r^{n−1}) with n r^{n−1} ≤
+    N1 (8/100)^{N1−1} (decreasing: (N1 + 1)·8/100 ≤ N1).  Returns the smallest 1 − C_u h² n r^{n−1} over
+    16 boxes of the range, in intervals; NotVerified unless it is positive.  Where s̃_n < 0 (π < nθ < 2π)
+    q₂ > 0 before that b: its pair separates."""
+    lo, hi = VELOCITY_RANGE
+    if not (N1 >= 6 and (N1 + 1) * hi <= N1):
+        raise NotVerified("the decrease of n r^(n−1) on [7/100, 8/100] is not proved")
+    big = N1 * hi ** (N1 - 1)
+    margin = None
+    for k in range(16):
+        r = Iv(lo + (hi - lo) * k / 16, lo + (hi - lo) * (k + 1) / 16)
+        h = (1 + r) / 2
+        m = (1 - facts["Cu"] * h * h * big).lo
+        margin = m if margin is None else min(margin, m)
+    if not margin > 0:
+        raise NotVerified(f"the last b's bracket is not proved positive (n ≥ {N1})")
+    return margin
+
+
 def family_approaching(ctx, word, n_bound, threshold) -> bool:
     """``family_approaching("(ab)^n(cb)^n", n ≥ N, n·θ < cπ)``: for every n ≥ N and every r above
     r* = 7 − 4√3 with nθ < cπ, on the dominant branch every collision of the word comes with its pair
-    approaching.  Proved for c ≤ 1 (part 6); false for c > 1: just above r_n (nθ slightly above π, r
-    still in [7/100, 8/100]) the last b of (ab)^n has the bracket s̃_n(rh − ω(…)) < 0 as s̃_n < 0, so
-    its pair separates."""
+    approaching.  Proved for c ≤ 1 (part 6).  False for c > 1 only once the kernel has the refuting
+    point: an n ≥ N and an exact r₀ ∈ [7/100, 8/100] with π < nθ(r₀) < cπ (:func:`_refuting_point`:
+    s_n(r₀) < 0, computed) and the last b's bracket proved positive there (:func:`last_b`), so at r₀
+    q₂ > 0 before the last b of (ab)^n: its pair separates.  NotVerified when either is missing."""
     N1, _, c = _arguments(ctx, word, n_bound, threshold, "<")
-    facts = _proved(N1, R_MAX)
+    facts = _proved(N1, R_MAX, ctx.family_single)
     velocities(facts["K"], N1, facts)
     if c > 1:
-        ctx.counterexample = "just above r_n (nθ slightly above π): the last b of (ab)^n separates"
+        margin = last_b(facts["K"], N1, facts)
+        n, r0, _ = _refuting_point(c, N1, R_MAX, ctx.family_single)
+        lo, hi = VELOCITY_RANGE
+        if not lo <= r0 <= hi:
+            raise NotVerified(f"the refuting point r = {float(r0):.6f} lies outside [7/100, 8/100]")
+        ctx.counterexample = (f"{r0} ≈ {float(r0):.6f}, n = {n} (π < nθ < cπ, s_{n} < 0 there): the last "
+                              f"b of (ab)^n separates (its bracket ≥ rh·{float(margin):.4f})")
         return False
+    return True
+
+
+def family_reaches(ctx, word, n_bound, threshold) -> bool:
+    """``family_reaches("(ab)^n(cb)^n", n ≥ N, n·θ = cπ)``: for every n ≥ N, every r of some left
+    neighbourhood of the r where nθ = cπ is stable.  Proved for c = 1 (parts 1-4, 6 and 7: just below
+    r_n, F_n < 0, so τ > 0 and every condition of stability holds).  For c ≠ 1, NotVerified: the
+    kernel's route decides the neighbourhood of r_n only."""
+    N1, _, c = _arguments(ctx, word, n_bound, threshold, "=")
+    facts = _proved(N1, R_MAX, ctx.family_single)
+    velocities(facts["K"], N1, facts)
+    reach(facts["K"], facts)
+    if c != 1:
+        raise NotVerified("the kernel's route decides stability just below nθ = π only")
+    return True
+
+
+def family_window(ctx, word, n_bound) -> bool:
+    """``family_window("(ab)^n(cb)^n", n ≥ N)`` (or ``n = N``): for every such n the stable set of w_n in ]0, 1[
+    is not empty, has sup r_n (nθ = π) and lies in ]r_{n+1}, r_n[.  So the stable sets of consecutive n are
+    disjoint (r_{n+1} < r_n) and they accumulate from above on r* = 7 − 4√3 (r_n → r* as cos(π/n) → 1, r_n > r*).
+    Proved from parts 1-8 (N ≥ 6): nothing stable on ]0, r_{n+1}] (part 8), at r_n (u = 0, part 4), on
+    ]r_n, 1/4] (parts 4, 5) or on [429/2500, 1[ (:func:`third_a`, n ≥ 3); stable points just below r_n
+    (parts 6, 7)."""
+    fake = ("cmp", ("=",), (("bin", "·", ("name", "n"), ("name", "θ")), ("const", "π")))
+    N1, _, _ = _arguments(ctx, word, n_bound, fake, "=")
+    single = ctx.family_single
+    facts = _proved(N1, R_MAX, single)
+    try:
+        arcs(facts["K"], N1, R_MAX, facts["Cu"])
+    except ArithmeticError as exc:
+        raise NotVerified(str(exc)) from None
+    velocities(facts["K"], N1, facts)
+    reach(facts["K"], facts)
+    below(N1, single)
+    third_a()
     return True
 
 
 PREDICATES["q2_sign_family"] = q2_sign_family
 PREDICATES["family_approaching"] = family_approaching
 PREDICATES["family_unstable"] = family_unstable
+PREDICATES["family_reaches"] = family_reaches
+PREDICATES["family_window"] = family_window

@@ -506,11 +506,12 @@ def windows(ab_cb_patterns, ab_cb_seven, ab_cb_limit, n2, n3, limit, order, fami
         parts[1].evidence.append(f"NOT proved: for n ≥ {PROVED_FROM}, {gap}; the windows W_n are disjoint, the whole "
                                  "stable sets are not certified to be")
     checks += parts
-    checks.append(named("L5.3", Check(
+    checks.append(witnessed(Check(
         f"for every n ≥ 2 the windows of (ab)^n(cb)^n are {order}: the {len(parts)} checks above"
         + (" (the whole stable sets: the paper's open problem, proved)" if whole else ""), holds,
         ["every part holds" if holds else "a part fails: " + "; ".join(c.statement[:80] for c in parts if not c.holds)]
-        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, {gap}"]))))
+        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, {gap}"])),
+        "L5.3", *[ab_cb(n) for n in range(2, 6)]))          # the kernel decides n = 2..5 as in L4 (their factors)
     note = ("The paper's open problem (l. 1215: the intervals of stability \"seem to be disjoint and accumulate from "
             "above … but this has also not been proven yet\"): " + (
                 f"proved for every n ≥ 2: the stable set of (ab)^n(cb)^n in ]0, 1[ is one open interval W_n (n ≤ "
@@ -554,10 +555,11 @@ def large_n_q2(limit: dict) -> list[Check]:
                                      not bad and "velocity" in facts,
                                      [f"margins ≥ {min(_fq(m) for m in facts['velocity']['margins'].values()):.3g}"
                                       if "velocity" in facts else "no part 8"])))
-    if "positions" in facts:
-        out.append(Check(f"for every n ≥ {PROVED_FROM} the stable set reaches r_n from below (every r between the "
-                         "lower end's strip and r_n stable, part 9): the window's upper end hi_n is r_n", not bad,
-                         [f"positions: {len(facts['positions']['boxes'])} ε-boxes"]))
+    out.append(named("L6.6.5", Check(f"for every n ≥ {PROVED_FROM} the stable set reaches r_n from below (every r "
+                                     "between the lower end's strip and r_n stable, part 9): the window's upper end "
+                                     "hi_n is r_n", not bad and "positions" in facts,
+                                     [f"positions: {len(facts['positions']['boxes'])} ε-boxes" if "positions" in facts
+                                      else "no part 9"])))
     return out
 
 
@@ -592,14 +594,19 @@ def q2_vanishes_at_threshold(ab_cb_patterns, ab_cb_seven, ab_cb_limit, criterion
     small = [n for n in results if n > N_MAX]
     parts = [Check(f"{ab_cb(n)}: q_2(0) = 0 on the dominant branch at the upper threshold", results[n],
                    [row for row in rows if row.startswith(f"n = {n}:")]) for n in small]
+    parts.append(named("L6.6.6", Check(f"{ab_cb(6)} and {ab_cb(7)}: the stable set is one window whose upper end r_n "
+                                       "is where q_2(0) = 0 on the dominant branch (`certify pattern`, exact)",
+                                       all(results.get(n) for n in (6, 7)),
+                                       [row for row in rows if row.startswith(("n = 6:", "n = 7:"))])))
     parts += large_n_q2(ab_cb_limit)
     whole = all(c.holds for c in parts) and "positions" in ab_cb_limit["facts"]
     checks += parts
-    checks.append(named("L6.6", Check(
+    checks.append(witnessed(Check(
         f"for every n ≥ 2, {criterion} on the {branch} branch at the upper end of the window: the checks above",
         all(c.holds for c in checks),
         ["every part holds" if all(c.holds for c in checks) else "a part fails"]
-        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, that r_n is the upper end of the stable set"]))))
+        + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, that r_n is the upper end of the stable set"])),
+        "L6.6", *[ab_cb(n) for n in range(2, 6)]))          # the kernel decides n = 2..5 as in L4 (their factors)
     note = ("CDKK's conjecture (l. 1215), tested, not assumed: " + (
         "proved for every n ≥ 2 — the upper end of the window of (ab)^n(cb)^n is where q_2(0) = 0 on the dominant "
         "branch, r_n, the root of r² − (6 + 8cos(π/n))r + 1 (n ≤ 7: exact zero tests; n ≥ 8: family_limit's theorem)."

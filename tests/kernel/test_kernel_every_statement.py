@@ -41,6 +41,9 @@ SKIP = {
                "other n past its exit, any other small ε, r or digit of the datum (a robust property of an unstable "
                "orbit; its verdict flip is decided)",
     "T25.2.8": "as T25.2.7, on the lower branch",
+    "L6.6.5": "its one literal is the N of n ≥ N, and the statement holds from n = 7 on (n ≥ 7 and n ≥ 9 are true "
+              "too); its verdict flip is decided, and tests/kernel/test_kernel_family.py checks that n ≥ 6 and other "
+              "thresholds (nθ = 2π, π/2) are not verified",
     "B1.4": "Λ²M (u ∧ v) = Mu ∧ Mv holds for every square matrix M (Cauchy-Binet for the 2×2 minors): no entry "
             "of K_i can change its truth (it checks the kernel's compound; its verdict flip is decided)",
 }

@@ -4,6 +4,7 @@ and of the proof refused, the exact identities against the kernel's own word mat
 intervals against fractions and math at many points (enclosure, with hypothesis)."""
 from __future__ import annotations
 
+import json
 import math
 from fractions import Fraction
 
@@ -14,7 +15,7 @@ from hypothesis import strategies as st
 from certify_kernel import family, intervals
 from certify_kernel.evaluate import NotVerified
 from certify_kernel.intervals import Iv
-from tests.kernel.kernel_support import outcome, repository_statements
+from tests.kernel.kernel_support import ROOT, outcome, repository_statements
 
 L661 = 'q2_sign_family("(ab)^n(cb)^n", n ≥ 8, r in ]0, 1/4], n·θ = π)'
 
@@ -22,7 +23,12 @@ L661 = 'q2_sign_family("(ab)^n(cb)^n", n ≥ 8, r in ]0, 1/4], n·θ = π)'
 def test_the_statement_file_says_what_the_kernel_checks():
     stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
     assert stmts["L6.6.1"].formula == L661
-    assert stmts["L6.6"].unformalised           # the whole conjecture: not claimed verified
+    assert stmts["L6.6.5"].formula == REACHES
+    assert not stmts["L6.6"].unformalised        # the whole conjecture: n = 2..5, 6, 7 and every n ≥ 8
+    for part in (L661, UNSTABLE, APPROACHING, REACHES, L661.replace("n ≥ 8", "n = 6"),
+                 REACHES.replace("n ≥ 8", "n = 7"), stmts["L6.6.3"].formula.split(" and ")[0]):
+        assert part in stmts["L6.6"].formula, part
+    assert "family_window(\"(ab)^n(cb)^n\", n ≥ 8)" in stmts["L5.3"].formula
 
 
 def test_cdkk_point_is_verified_for_every_n_from_8_and_from_7():
@@ -30,10 +36,30 @@ def test_cdkk_point_is_verified_for_every_n_from_8_and_from_7():
     assert outcome(L661.replace("n ≥ 8", "n ≥ 7")) == "verified"
 
 
-@pytest.mark.parametrize("threshold", ["π/2", "2·π", "3·π/4"])
-def test_a_wrong_threshold_is_false(threshold):
+@pytest.mark.parametrize("threshold, sign", [("π/2", ">"), ("2·π", "<"), ("3·π/4", ">"), ("5·π/4", "<")])
+def test_a_wrong_threshold_is_false_at_a_computed_point(threshold, sign):
+    """False with the point that refutes it: an n and an exact r₀ where s_n(r₀) (computed) has the
+    sign the claim denies (below nθ = cπ, c > 1, the claim has q_2(0) > 0; above it, c < 1, < 0 ...)."""
     got = outcome(L661.replace("n·θ = π", f"n·θ = {threshold}"))
-    assert got.startswith("failed:") and "finds it false" in got
+    assert got.startswith("failed:") and "finds it false" in got and f"s_8 {sign} 0 there" in got, got
+
+
+def test_a_wrong_threshold_without_its_point_is_not_false(monkeypatch):
+    """The review: False used to follow from c alone.  Without the kernel's refuting point the
+    wrong threshold is left undecided."""
+    monkeypatch.setattr(family, "theta_point", lambda *a: None)
+    for threshold in ("π/2", "2·π"):
+        got = outcome(L661.replace("n·θ = π", f"n·θ = {threshold}"))
+        assert got.startswith("not verified") and "no point refuting" in got, got
+
+
+@pytest.mark.parametrize("j_lo, j_hi", [(8, 8), (9, 16), (2, 2), (30, 40)])
+def test_theta_point_places_theta_exactly(j_lo, j_hi):
+    """The refuting point: s_1..s_{j₀−1} > 0 > s_{j₀} at r₀, checked against θ from math (π/j₀ < θ < π/(j₀ − 1))."""
+    r0, j0 = family.theta_point(j_lo, j_hi, Fraction(1, 4))
+    assert j_lo <= j0 <= j_hi
+    theta = math.acos(float(family.at(family.T, r0)) / (2 * float(r0)))
+    assert math.pi / j0 < theta < math.pi / (j0 - 1) if j0 > 1 else True
 
 
 def test_the_refuted_verdict_is_not_verified():
@@ -84,16 +110,25 @@ def test_a_wrong_block_is_caught(monkeypatch):
         family.block()
 
 
-def test_dominance_constants_match_the_proof():
-    """δ = N₁ 4^(1−N₁) max(1, |K_ij| + r) and λ ∈ 1/9 ± 16δ (docs/family-limit.md, part 7: N₁ = 31,
-    δ ≈ 2.7·10⁻¹⁷), recomputed here from the kernel's K."""
+def _sci(x: Fraction) -> str:
+    """x as the docs print it: 2 digits, ·10⁻ᵏ."""
+    mant, exp = f"{float(x):.1e}".split("e")
+    sup = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+    return f"{mant}·10{str(int(exp)).translate(sup)}"
+
+
+def test_dominance_constants_match_the_documented_ones():
+    """The constants docs/family-limit.md ("What the kernel checks") prints for part 7's δ, λ and the
+    other eigenvalues, recomputed by the kernel: N = 8 and N = 31.  On ]0, 1/4] every |K_ij| + r < 1,
+    so δ = N 4^(1−N) exactly (the interval ends are dyadic)."""
+    doc = (ROOT / "docs" / "family-limit.md").read_text(encoding="utf-8")
     K, _ = family.block()
-    facts = family.dominant(K, 31, Fraction(1, 4))
-    kmax = max(abs(family.at(K[i][j], Fraction(k, 400))) + Fraction(k, 400) for i in range(2) for j in range(2)
-               for k in range(101))
-    assert facts["delta"] >= 31 * Fraction(1, 4) ** 30 * max(1, kmax)
-    assert facts["lambda"][0] < Fraction(1, 9) < facts["lambda"][1]
-    assert facts["others"] < facts["lambda"][0]
+    f8, f31 = family.dominant(K, 8, Fraction(1, 4)), family.dominant(K, 31, Fraction(1, 4))
+    assert f8["delta"] == 8 * Fraction(1, 4) ** 7 and f31["delta"] == 31 * Fraction(1, 4) ** 30
+    lo, hi = f8["lambda"]
+    assert f"N = 8: δ = {_sci(f8['delta'])}, λ ∈ [{float(lo):.5f}, {float(hi):.5f}], |μ|, |ν| ≤ " \
+           f"{float(f8['others']):.2g}" in doc
+    assert f"N = 31: δ ≈ {_sci(f31['delta'])}" in doc
 
 
 def test_a_tightened_margin_is_not_proved(monkeypatch):
@@ -203,7 +238,31 @@ def test_every_pair_approaches_below_r_n_and_not_above():
     assert outcome(stmts["L6.6.4"].formula) == "verified"
     assert outcome(APPROACHING) == "verified"
     got = outcome(APPROACHING.replace("n·θ < π", "n·θ < 2·π"))            # a wrong threshold: false
-    assert got.startswith("failed:") and "finds it false" in got
+    assert got.startswith("failed:") and "finds it false" in got and "the last b of (ab)^n separates" in got
+    assert "n = 8" in got and "s_8 < 0" in got
+
+
+def test_not_approaching_needs_the_last_b_bound(monkeypatch):
+    """The review: "not approaching below 2π" was decided from c alone, its bracket argument in the
+    docstring.  Now the kernel computes the last b's bracket bound; without it (here: not proved) the
+    negated half is undecided, and with it L6.6.4 is not verified."""
+    def unproved(*args):
+        raise NotVerified("the last b's bracket is not proved positive")
+    monkeypatch.setattr(family, "last_b", unproved)
+    got = outcome(APPROACHING.replace("n·θ < π", "n·θ < 2·π"))
+    assert got.startswith("not verified") and "last b" in got
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    assert outcome(stmts["L6.6.4"].formula).startswith("not verified")
+
+
+def test_the_last_b_margin_and_an_inflated_constant():
+    """The last b's bracket ≥ rh(1 − C_u h² n r^(n−1)): the margin 1 − C_u h² N (8/100)^(N−1) at N = 8 is
+    about 1 − 3.8·0.39·8·0.08⁷ ≈ 0.99999; with C_u inflated 10⁷-fold it is no longer proved."""
+    facts = family._proved(8, Fraction(1, 4))
+    m = family.last_b(facts["K"], 8, facts)
+    assert Fraction(9999, 10000) < m < 1
+    with pytest.raises(NotVerified, match="last b"):
+        family.last_b(facts["K"], 8, {**facts, "Cu": 10 ** 7 * facts["Cu"]})
 
 
 def test_the_velocity_margins_and_an_inflated_constant():
@@ -215,3 +274,210 @@ def test_the_velocity_margins_and_an_inflated_constant():
     assert Fraction(5, 100) < m_a < Fraction(6, 100) and Fraction(99, 100) < m_b < 1
     with pytest.raises(NotVerified, match="velocity margins"):
         family.velocities(facts["K"], 8, {**facts, "Cu": 10 ** 6 * facts["Cu"]})
+
+
+REACHES = 'family_reaches("(ab)^n(cb)^n", n ≥ 8, n·θ = π)'
+
+
+def test_stable_points_reach_r_n_from_below():
+    """L6.6.5: the reflection (family_limit's part 12) in the kernel: stable just below r_n, every n ≥ 8."""
+    assert outcome(REACHES) == "verified"
+    assert outcome(REACHES.replace("n ≥ 8", "n ≥ 7")) == "verified"
+
+
+@pytest.mark.parametrize("change, why", [
+    ("n ≥ 6", "change sign around 1/9"),                     # part 4 no longer closes
+    ("n·θ = 2·π", "just below nθ = π only"),                 # the upper end moved
+    ("n·θ = π/2", "just below nθ = π only"),
+])
+def test_mutants_of_reaches_are_not_verified(change, why):
+    old = "n ≥ 8" if change.startswith("n ≥") else "n·θ = π"
+    got = outcome(REACHES.replace(old, change))
+    assert got.startswith("not verified") and why in got, got
+
+
+def test_the_identities_of_the_reflection():
+    assert all(family.check_reflection().values())
+    assert family.collisions_fix_their_pair()
+
+
+@pytest.mark.parametrize("key", ["N̄", "γσ₀", "F_n", "e₁e₂ − e₃", "F_n(r_n)", "collisions"])
+def test_a_broken_reflection_identity_is_not_verified(monkeypatch, key):
+    real = family.check_reflection
+    monkeypatch.setattr(family, "check_reflection", lambda: {**real(), key: False})
+    got = outcome(REACHES)
+    assert got.startswith("not verified") and key in got, got
+
+
+def test_f_n_at_r_n_is_negative_and_a_wrong_f_n_is_caught(monkeypatch):
+    """F_n(r_n) = −(2/9) r_n^n (1 + r_n^n)²: with F_n's last term's sign flipped (bc + W₂cd + W₁d²) both
+    the identity e₂ tr − det = −F_n and the value at r_n fail."""
+    real = family.f_n
+
+    def flipped(a, b, c, d, W1, W2):
+        k = len(next(iter(a)))
+        return family.madd(real(a, b, c, d, W1, W2), family.mmul(family.mmul(family._c(2, k), W1), family.mmul(d, d)))
+    monkeypatch.setattr(family, "f_n", flipped)
+    got = family.check_reflection()
+    assert not got["F_n"] and not got["F_n(r_n)"]
+
+
+def test_a_collision_that_moves_another_gap_is_caught(monkeypatch):
+    """The position lemma needs G x = x when x_i = 0: a matrix with an entry outside column i breaks it."""
+    from certify_kernel.evaluate import Matrix
+    from certify_kernel.values import RF
+    real = family.collision
+
+    def moved(pair):
+        rows = [list(row) for row in real(pair).rows]
+        j = (pair + 1) % 3
+        rows[0][j] = rows[0][j] + RF.const(Fraction(1, 7))
+        return Matrix(rows)
+    monkeypatch.setattr(family, "collision", moved)
+    assert not family.collisions_fix_their_pair()
+
+
+SIX = [f.replace("n ≥ 8", "n = 6") for f in (L661, UNSTABLE, APPROACHING, REACHES)]
+
+
+@pytest.mark.parametrize("formula", SIX + [f.replace("n = 6", "n = 7") for f in SIX])
+def test_n_6_and_7_by_the_family_route(formula):
+    """24 and 28 collisions: part 4 for the one n on 32 boxes of r (K^n exact), the rest as for every n."""
+    assert outcome(formula) == "verified"
+
+
+def test_n_6_margins():
+    """n = 6's margins (the kernel's, recomputed): part 5 ≥ 1.94 and 0.429, part 6 ≥ 0.0515 and 0.9998."""
+    facts = family._proved(6, Fraction(1, 4), True)
+    m1, m2 = family.arcs(facts["K"], 6, Fraction(1, 4), facts["Cu"])["margins"]
+    m_a, m_b = family.velocities(facts["K"], 6, facts)["margins"]
+    assert m1 > Fraction(194, 100) and m2 > Fraction(429, 1000)
+    assert m_a > Fraction(515, 10000) and m_b > Fraction(9998, 10000)
+
+
+@pytest.mark.parametrize("change, why", [
+    ("n = 5", "n ≥ 6"),                                    # part 5 needs 3π/n ≤ π/2
+    ("n = 6", "(n = 6, r ∈ [0, 1/4])"),                    # part 4 on one box (below): not proved there
+])
+def test_mutants_of_n_6_are_not_verified(monkeypatch, change, why):
+    f = UNSTABLE.replace("n ≥ 8", change)
+    if change == "n = 6":
+        real = family.dominant_at
+        monkeypatch.setattr(family, "dominant_at", lambda K, n, r_max: real(K, n, r_max, boxes=1))
+    got = outcome(f)
+    assert got.startswith("not verified") and why in got, got
+
+
+def test_the_whole_conjecture_for_n_from_6():
+    """L6.6's formula for n ≥ 6 (its part after n = 2..5, which is L4's and L6.1-L6.4's analysis, decided
+    with the committed witnesses by certify verify) is verified; with an upper end moved it is not."""
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    f = stmts["L6.6"].formula
+    tail = f[f.index('q2_sign_family("(ab)^n(cb)^n", n = 6'):]
+    assert outcome(tail) == "verified"
+    seven = 'family_reaches("(ab)^n(cb)^n", n = 7, n·θ = π)'
+    moved = tail.replace(seven, seven.replace("= π", "= 2·π"))
+    assert moved != tail and outcome(moved).startswith("not verified")
+
+
+WINDOW = 'family_window("(ab)^n(cb)^n", n ≥ 8)'
+
+
+@pytest.mark.parametrize("formula", [WINDOW, WINDOW.replace("n ≥ 8", "n = 6"), WINDOW.replace("n ≥ 8", "n = 7")])
+def test_the_stable_set_lies_between_r_n_plus_1_and_r_n(formula):
+    """L5.3 for n ≥ 6: nothing stable on ]0, r_(n+1)] (F_n > 0 there), the rest as in L6.6."""
+    assert outcome(formula) == "verified"
+
+
+@pytest.mark.parametrize("change, why", [
+    ("n = 5", "n ≥ 6"),
+    ("n ≥ 6", "change sign around 1/9"),
+])
+def test_mutants_of_the_window_are_not_verified(change, why):
+    got = outcome(WINDOW.replace("n ≥ 8", change))
+    assert got.startswith("not verified") and why in got, got
+
+
+def test_f_n_is_positive_below_r_n_plus_1_against_exact_values():
+    """F_n > 0 on ]0, r_(n+1)] (the kernel's interval bound), and F_n from K^n in exact rationals: > 0 at
+    rationals below r_(n+1) and < 0 just below r_n (math's r_n, only to pick the points)."""
+    assert family.below(8, False) > 0 and family.below(6, True) > 0
+    for n in (6, 8, 12):
+        a = 3 + 4 * math.cos(math.pi / n)
+        r_n = a - math.sqrt(a * a - 1)
+        a1 = 3 + 4 * math.cos(math.pi / (n + 1))
+        r_n1 = a1 - math.sqrt(a1 * a1 - 1)
+        for x, sign in ((r_n1 / 2, 1), (r_n1 * 0.999, 1), (r_n * 0.99999, -1)):
+            r = Fraction(x)
+            h = (1 + r) / 2
+            K = [[h * h - r, h], [-r * h, -r]]
+            P = [[Fraction(1), Fraction(0)], [Fraction(0), Fraction(1)]]
+            for _ in range(n):
+                P = [[P[i][0] * K[0][j] + P[i][1] * K[1][j] for j in range(2)] for i in range(2)]
+            (pa, pb), (pc, pd) = P
+            W1, W2 = Fraction(1, 3) - pa / 3 - 2 * pc / 3, Fraction(2, 3) - pb / 3 - 2 * pd / 3
+            F = W1 * (pa - W1 * pd + W2 * pc) + (pb * pc + W2 * pc * pd - W1 * pd * pd)
+            assert (F > 0) == (sign > 0), (n, x)
+
+
+def test_the_bound_below_is_tightened_or_broken(monkeypatch):
+    """A margin tightened: F_n/x with its x-free part lowered by 1/36 (1 + 6r − 3r² − 1 ≥ 0 only) is no
+    longer proved positive; an F_n with a term free of s_n is refused."""
+    real = family.f_n_in_s
+
+    def lowered():
+        Q = dict(real())
+        Q[(0, 0, 0)] = Q.get((0, 0, 0), Fraction(0)) - Fraction(2, 36)
+        return Q
+    monkeypatch.setattr(family, "f_n_in_s", lowered)
+    with pytest.raises(NotVerified, match="F_n > 0 below"):
+        family.below(8, False)
+    monkeypatch.setattr(family, "f_n_in_s", lambda: (_ for _ in ()).throw(ArithmeticError("a term without s_n")))
+    with pytest.raises(NotVerified, match="without s_n"):
+        family.below(8, False)
+
+
+def test_the_third_a_range_moved(monkeypatch):
+    """t < 0 on [429/2500, 1[ (exact); with t shifted up by 1/100 its root moves above 429/2500: refused."""
+    family.third_a()
+    monkeypatch.setattr(family, "T", [Fraction(1, 4) + Fraction(1, 100), Fraction(-3, 2), Fraction(1, 4)])
+    with pytest.raises(NotVerified, match="429/2500"):
+        family.third_a()
+
+
+def test_l53_is_formalised_and_its_family_part_verified():
+    """L5.3: n = 2..5 by the words' own analysis (decided with the committed witnesses by certify verify),
+    n = 5 above r_6 by a rational point, every n ≥ 6 by family_window.  A separating point below r_6 is
+    decided false."""
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    f = stmts["L5.3"].formula
+    assert not stmts["L5.3"].unformalised
+    tail = f[f.index("((79/1000)^2"):]
+    assert outcome(tail) == "verified"
+    got = outcome(tail.replace("79/1000", "77/1000"))
+    assert got.startswith("failed:") and "finds it false" in got
+
+
+def test_the_window_cannot_reach_r_n_from_the_bound_below():
+    """The mutant "ℓ_n above r_n" (nothing stable up to r_n): below r_(n+1) the bound uses w ≤ t (s_(n+1) ≥ 0);
+    between r_(n+1) and r_n, w = r²s_(n−1)/s_n is unbounded (s_n → 0), and Q's x-free part is negative once
+    w > (3 − 6r − r²)/8: the proof cannot be stretched to r_n."""
+    Q = family.f_n_in_s()
+    r = Iv(Fraction(75, 1000))
+    assert family._mvalue(Q, (r, Iv(0), Iv(family.at(family.T, r).hi))).positive()
+    assert family._mvalue(Q, (r, Iv(0), Iv(Fraction(1, 2)))).negative()
+
+
+def test_l53_without_the_words_factors_is_not_verified():
+    """A witness dropped: n = 2..5 are decided with the words' factors, which the run writes into L5.3's and
+    L6.6's entries of certificates.json; without them the n = 5 part is not verified (a cut polynomial the
+    kernel does not split)."""
+    stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
+    part = next(p for p in stmts["L5.3"].formula.split(" and ") if '"(ab)^5(cb)^5")}) > 79/1000' in p)
+    got = outcome(part)
+    assert got.startswith("not verified") and "witness" in got, got
+    data = json.loads((ROOT / "reports" / "certificates.json").read_text(encoding="utf-8"))
+    entries = {c["id"]: c for c in data["certificates"]}
+    for cid, sid in (("L5", "L5.3"), ("L6", "L6.6")):
+        words = [w for x in entries[cid]["statements"][sid]["witness"] if x["kind"] == "factors" for w in x["words"]]
+        assert words == [f"(ab)^{n}(cb)^{n}" for n in range(2, 6)]
