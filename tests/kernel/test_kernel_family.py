@@ -481,3 +481,16 @@ def test_l53_without_the_words_factors_is_not_verified():
     for cid, sid in (("L5", "L5.3"), ("L6", "L6.6")):
         words = [w for x in entries[cid]["statements"][sid]["witness"] if x["kind"] == "factors" for w in x["words"]]
         assert words == [f"(ab)^{n}(cb)^{n}" for n in range(2, 6)]
+
+
+def test_l49_the_sixth_threshold_by_the_family_route():
+    """L4.9 (l. 1119, 24 collisions, beyond the word analysis): sup(stable) = r_6 by the family route,
+    and rmax6 = 3 + 2√3 − 2√(5 + 3√3) is r_6 (cos θ = √3/2 there); with cos(π/4) in its place (48 → 32)
+    the kernel finds it false at rmax6."""
+    paper = repository_statements()
+    l49 = next(s for c in paper.certificates for s in c.statements if s.id == "L4.9")
+    assert 'family_reaches("(ab)^n(cb)^n", n = 6, n·θ = π)' in l49.formula
+    assert outcome(l49.formula, lets=paper.lets) == "verified"
+    wrong = l49.formula.replace("= 48*r^2", "= 32*r^2")
+    assert wrong != l49.formula
+    assert outcome(wrong, lets=paper.lets).startswith("failed: ")
