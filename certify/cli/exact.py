@@ -286,7 +286,10 @@ def five_summary(s: dict) -> str:
     lines += [f"stable: {w['word']} on {'; '.join(w['windows'])}" for w in s["stable_words"]]
     lines.append(f"words with undecided points: {s['undecided_words']} (certify pattern WORD lists them)")
     if s["not_analysed"]:
-        lines.append(f"words with a factor of cp(Λ²M) not analysed (the largest r above hold for the others only): "
+        scope = ("each a repeated factor, never stable (proved): the largest stable r holds for every word, the "
+                 "largest feasible r for the factors analysed" if s["stable_complete"] else
+                 "the largest r above hold for the factors analysed only")
+        lines.append(f"words with a factor of cp(Λ²M) not analysed ({scope}): "
                      f"{', '.join(n['word'] for n in s['not_analysed'])}")
     return "\n".join(lines)
 

@@ -132,8 +132,7 @@ def norm_determinant(g: list, cp: list) -> flint.fmpz_poly:
     for col in cols:
         den = flint.fmpz(1)
         for e in col:
-            d = e.denom()
-            den = den * d // den.gcd(d)
+            den = den.lcm(e.denom())
         scaled.append([(e * den).numer() for e in col])
     return bareiss_determinant([[scaled[j][i] for j in range(n)] for i in range(n)])
 
@@ -142,7 +141,7 @@ class FiveSpectrum(Spectrum):
     """:class:`~certify.algebra.branches.Spectrum` of a sextic (or a factor) monic in κ up to a constant,
     with :meth:`resultant` by :func:`norm_determinant` (a 6×6 determinant over Z[r]) instead of the
     multivariate subresultant: the same primitive polynomial (:func:`~certify.algebra.poly.primitive`
-    removes the constant and the sign; tests/patterns/test_five.py compares both), about 3 times faster on
+    removes the constant and the sign; tests/run/test_census5.py compares both), about 3 times faster on
     the norms of degree 300 in r that dominate a five-particle word's time."""
 
     def resultant(self, g) -> flint.fmpz_poly:

@@ -113,11 +113,12 @@ def markdown(doc: dict) -> str:
               "with a factor not analysed |", "|---:|---:|---:|---:|---:|---:|---:|"]
     lines += [f"| {n} | {e['words']} | {e['exists']} | {e['feasible']} | {e['stable']} | {e['undecided']} | "
               f"{e['not_analysed']} |" for n, e in s["lengths"].items()]
-    lines += ["", "## Stable words", ""]
-    lines += [f"- {w['word']}: {'; '.join(w['windows'])}" for w in s["stable_words"]] or ["None."]
-    lines += ["", "## Feasible words", ""]
+    union = "(each the r-set of one κ branch and ordering x₊ or x₋; the same set for several is shown once)"
+    lines += ["", "## Stable words", "", union, ""]
+    lines += [f"- {w['word']}: {'; '.join(dict.fromkeys(w['windows']))}" for w in s["stable_words"]] or ["None."]
+    lines += ["", "## Feasible words", "", union, ""]
     by = {r["word"]: r for r in doc["words"]}
-    lines += [f"- {w}: {'; '.join(by[w]['feasible'])}" for w in s["feasible_words"]] or ["None."]
+    lines += [f"- {w}: {'; '.join(dict.fromkeys(by[w]['feasible']))}" for w in s["feasible_words"]] or ["None."]
     lines += ["", "## Not analysed", ""]
     lines += [f"- {n['word']}: " + "; ".join(f"{f['factor']} of multiplicity {f['multiplicity']}, stable: {f['stable']}"
                                           for f in n["factors"]) for n in s["not_analysed"]] or ["None."]

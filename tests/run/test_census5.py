@@ -126,3 +126,26 @@ def test_bareiss_is_the_determinant():
     d = five.bareiss_determinant(A)
     for r0 in range(9):
         assert d(r0) == flint.fmpz_mat([[e(r0) for e in row] for row in A]).det()
+
+
+COMMITTED = ROOT / "reports"
+
+
+def test_the_committed_census_stands_to_5():
+    """reports/census5.json: its summary and CENSUS5.md recomputed from its records, and its words to 5
+    analysed again, agree."""
+    with executor(1) as ex:
+        assert census5.check(COMMITTED, ex, max_length=5) == []
+
+
+def test_an_altered_committed_record_fails_the_check(tmp_path):
+    """A record of reports/census5.json given a stable window (the summary re-rendered to agree) fails the
+    check, which names the word and the field."""
+    out = _copy(COMMITTED, tmp_path)
+    doc = json.loads((out / census5.JSON).read_text(encoding="utf-8"))
+    rec = next(r for r in doc["words"] if r["length"] == 5 and not r["stable"])
+    rec["stable"] = ["]1/4, 2/7["]
+    census5.write_outputs(doc["words"], doc["census"]["max_length"], out)
+    with executor(1) as ex:
+        problems = census5.check(out, ex, max_length=5)
+    assert problems == [f"{rec['word']}: the record differs (stable)"]
