@@ -36,30 +36,20 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from certify.dynamics.model import alphabet, collide_gaps  # noqa: E402
+from certify.patterns.five import normal_form, word_classes  # noqa: E402
 
 
 def canonical(word: str, letters: str) -> str:
-    """The least rotation of the word or of its mirror image (a <-> the last letter, ...)."""
-    mirror = word.translate(str.maketrans(letters, letters[::-1]))
-    return min(w[k:] + w[:k] for w in (word, mirror) for k in range(len(word)))
+    """The least rotation of the word or of its mirror image (a <-> the last letter, ...): the engine's
+    normal form (certify.patterns.five.normal_form), not a copy."""
+    return normal_form(word, len(letters) + 1)[0]
 
 
 def words(max_length: int, particles: int):
-    """One word per class (rotations, mirror) of primitive periods of 2..max_length letters over
-    the pairs of N particles, every pair used, no pair twice in a row (cyclically)."""
-    letters = alphabet(particles)
-    seen = set()
-    for n in range(2, max_length + 1):
-        for t in itertools.product(letters, repeat=n):
-            w = "".join(t)
-            if any(w[k] == w[(k + 1) % n] for k in range(n)) or len(set(w)) < len(letters):
-                continue
-            if any(n % d == 0 and w == w[:d] * (n // d) for d in range(1, n)):
-                continue
-            c = canonical(w, letters)
-            if c not in seen:
-                seen.add(c)
-                yield c
+    """One word per class (rotations, mirror) of primitive periods of N - 1..max_length letters over
+    the pairs of N particles, every pair used, no pair twice in a row (cyclically): the engine's
+    (certify.patterns.five.word_classes)."""
+    yield from word_classes(max_length, particles)
 
 
 def period_matrix(word: str, gaps: int, r: float) -> np.ndarray:

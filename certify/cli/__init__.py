@@ -18,10 +18,11 @@
                                 its feasible and stable r-sets: DIR/CENSUS.md,
                                 DIR/census.json, census-words.csv.gz (a row a
                                 word), census-windows.png
-    census --particles 5 --max-length L [--json]
-                                every five-particle word class up to length L ≤ 8:
+    census --particles 5 --max-length L [--out DIR] [--state FILE] [--resume] [--check]
+                                every five-particle word class up to length L ≤ 10:
                                 the largest r of stable and of feasible collapse,
-                                printed (no file written; certify.patterns.five)
+                                DIR/CENSUS5.md, census5.json (certify.run.census5);
+                                --check analyses the committed words again
     pattern WORD [--json] [--r-range LO HI]
                                 the exact analysis of one periodic word (ababcb,
                                 (ab)^3(cb)^3, [ac]b, ab; five particles: abadcbcabc):

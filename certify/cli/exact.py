@@ -43,6 +43,9 @@ def cmd_census(args) -> int:
     signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     if args.particles != 4:
         return census_of_five(args)
+    if args.check:
+        raise UsageError("--check: for --particles 5 (the four-particle census is checked by its tests and "
+                         "tools/census_render.py)")
     if args.max_length > MAX_CENSUS_LENGTH and not args.scheduler:
         raise UsageError(f"--max-length {args.max_length}: at most {MAX_CENSUS_LENGTH} on this machine ({CENSUS_COST}; "
                          f"the words multiply by about 1.7 per collision, so a longer census does not finish in a "
@@ -224,46 +227,70 @@ def add_word_options(p, word_help: str, schema: str) -> None:
                    help="restrict to ]LO, HI[ (rationals, 0 <= LO < HI <= 1)")
 
 
-MAX_FIVE_LENGTH = 8          # census --particles 5: L = 7 (178 words) in about 4 min, 8 (528) in about 20 (measured)
+MAX_FIVE_LENGTH = 10         # census --particles 5: the classes multiply by about 3 per collision (docs/census.md)
+FIVE_COST = "the classes multiply by about 3 per collision, 528 to 8, 1508 to 9; docs/census.md gives the times"
 
 
 def census_of_five(args) -> int:
-    """``census --particles 5``: the five-particle census (certify.patterns.five.census_five), a summary on
-    stdout (JSON with --json); nothing is written to a file (none is committed yet)."""
-    from certify.patterns.five import census_five
-    from certify.run import progress
+    """``census --particles 5``: the five-particle census (certify.run.census5): DIR/CENSUS5.md and
+    census5.json, written atomically, the records streamed to the state file (--resume skips the words
+    already there); with --check, the committed DIR/census5.json analysed again up to --max-length and
+    compared (exit 1 on a difference, each named)."""
+    from certify.run import census5, executors, progress
+    from certify.run.files import ensure_writable, ensure_writable_file, keep_larger
     if args.particles != 5:
         raise UsageError(f"--particles {args.particles}: the census takes 4 (the paper's) or 5 particles")
     if args.max_length > MAX_FIVE_LENGTH:
         raise UsageError(f"--max-length {args.max_length}: at most {MAX_FIVE_LENGTH} for five particles on this "
-                         f"machine (the classes multiply by about 3 per collision: 178 words to 7, 528 to 8)")
-    if args.scheduler or args.resume or args.state is not None:
-        raise UsageError("--particles 5: no --scheduler, --state or --resume (the census runs here, in one go)")
-    doc = census_five(args.max_length, progress=progress.Bar("word"))
+                         f"machine ({FIVE_COST})")
+    if args.scheduler:
+        raise UsageError("--particles 5: no --scheduler (the five-particle census runs on local processes)")
+    if args.check:
+        with executors.executor(args.jobs, one_thread=True) as ex:
+            problems = census5.check(args.out, ex, args.max_length, progress=progress.Bar("word"))
+        for line in problems:
+            print(line)
+        print(f"{args.out / census5.JSON}: " + ("the records to length "
+              f"{args.max_length} and the summary stand" if not problems else f"{len(problems)} difference(s)"))
+        return 1 if problems else 0
+    out = ensure_writable(args.out)
+    longer = census5.written_length(out)
+    keep_larger(out / census5.JSON, "five-particle census", None if longer is None else {"longest period": longer},
+                {"longest period": args.max_length}, args.force)
+    state = args.state if args.state is not None else out / "census5-state.jsonl"
+    ensure_writable_file(state, "--state")
+    with executors.executor(args.jobs, one_thread=True) as ex:
+        records = census5.run(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
+    doc = census5.write_outputs(records, args.max_length, out)
     if args.json:
-        print(json.dumps(doc, ensure_ascii=False, indent=2, sort_keys=True))
+        print(census5.to_json(doc), end="")
         return 0
-    print(five_summary(doc))
+    print(five_summary(doc["census"]))
+    print(f"wrote {out / census5.MARKDOWN}, {census5.JSON}; state {state}")
     return 0
 
 
-def five_summary(doc: dict) -> str:
-    """The five-particle census in a few lines: words and seconds per length, the largest r of stable and
-    of feasible self-similar collapse and of an undecided point (exact), the stable words, the words with
-    undecided points and those with a factor not analysed."""
-    lines = [f"five particles, {plural(doc['words'], 'word')} up to length {doc['max_length']} (classes: rotations, "
+def five_summary(s: dict) -> str:
+    """The five-particle census in a few lines: words per length, the largest r of stable and of feasible
+    self-similar collapse and of an undecided point (exact), the stable words, the words with a factor
+    not analysed."""
+    lines = [f"five particles, {plural(s['words'], 'word')} up to length {s['max_length']} (classes: rotations, "
              "mirror a<->d, b<->c)"]
-    lines += [f"  length {n}: {e['words']} words, {e['seconds']} s" for n, e in doc["lengths"].items()]
+    lines += [f"  length {n}: {e['words']} words, {e['feasible']} feasible, {e['stable']} stable"
+              for n, e in s["lengths"].items()]
     for stage in ("stable", "feasible", "undecided"):
-        best = doc[f"largest_{stage}"]
+        best = s[f"largest_{stage}"]
         lines.append(f"largest r of {stage if stage == 'undecided' else stage + ' self-similar collapse'}: " + (
             "none" if best is None else f"≈{best['r']['digits']} (the root of {best['r']['minimal_polynomial']} in "
             f"]{best['r']['interval'][0]}, {best['r']['interval'][1]}[), {best['word']}"))
-    lines += [f"stable: {s['word']} on {'; '.join(s['windows'])}" for s in doc["stable_words"]]
-    lines.append(f"words with undecided points: {len(doc['undecided_words'])} (certify pattern WORD lists them)")
-    if doc["not_analysed_words"]:
-        lines.append(f"words with a repeated factor of cp(Λ²M), that factor not analysed (the largest r above hold for "
-                     f"the others only): {', '.join(doc['not_analysed_words'])}")
+    lines += [f"stable: {w['word']} on {'; '.join(w['windows'])}" for w in s["stable_words"]]
+    lines.append(f"words with undecided points: {s['undecided_words']} (certify pattern WORD lists them)")
+    if s["not_analysed"]:
+        scope = ("each a repeated factor, never stable (proved): the largest stable r holds for every word, the "
+                 "largest feasible r for the factors analysed" if s["stable_complete"] else
+                 "the largest r above hold for the factors analysed only")
+        lines.append(f"words with a factor of cp(Λ²M) not analysed ({scope}): "
+                     f"{', '.join(n['word'] for n in s['not_analysed'])}")
     return "\n".join(lines)
 
 
@@ -288,7 +315,11 @@ def register(commands) -> None:
                    help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
     p.add_argument("--particles", type=positive_int, default=4, metavar="N",
                    help=f"4 (the paper's, default) or 5: every five-particle word class up to L ≤ {MAX_FIVE_LENGTH} "
-                        "by the κ route of `pattern`, a summary on stdout, no file written")
+                        "by the κ route of `pattern`: DIR/CENSUS5.md and census5.json (state: "
+                        "DIR/census5-state.jsonl)")
+    p.add_argument("--check", action="store_true",
+                   help="with --particles 5: analyse the words of DIR/census5.json up to L again and compare "
+                        "(exit 1 on a difference); nothing is written")
     add_jobs(p)
 
     p = add_command(commands, "pattern", cmd_pattern, help="analyse one periodic collision word exactly",

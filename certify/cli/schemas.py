@@ -21,6 +21,7 @@ FOLDER = Path(__file__).resolve().parent.parent / "schemas"
 KERNEL = Path(__file__).resolve().parents[2] / "certify_kernel"      # its package folder, not imported
 WRITERS = {"pattern": "certify pattern WORD --json", "orbit": "certify orbit WORD --json",
            "trap": "certify orbit WORD --trap R --json", "census": "certify census: DIR/census.json",
+           "census5": "certify census --particles 5: DIR/census5.json",
            "report": "certify all: reports/report.json", "timings": "certify all: reports/timings.json",
            "numerics-paper": "certify figures --resolution paper: reports/numerics-paper.json",
            "numerics-n4": "certify figures --n4 NMAX: reports/numerics-n4.json",

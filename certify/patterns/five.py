@@ -46,17 +46,16 @@ criterion for z² + sz + p in the open disc of radius μ > 0, times D²: μ² - 
 """
 from __future__ import annotations
 
+import functools
 import itertools
 from dataclasses import dataclass
-from functools import cache
 
 import flint
 
-from certify.algebra.branches import Spectrum
+from certify.algebra.branches import Spectrum, _lambda_coefficients, less
 from certify.algebra.poly import (
     LR_LAMBDA,
     LR_R,
-    LRCTX,
     LRQCTX,
     RING,
     Frac,
@@ -64,6 +63,7 @@ from certify.algebra.poly import (
     frac_to_field,
     lr_to_ring,
     mpoly_to_ring,
+    primitive,
     ring_to_lrq,
     ring_to_mpoly,
 )
@@ -71,7 +71,9 @@ from certify.dynamics.model import alphabet, charpoly_coefficients, charpoly_rin
 from certify.dynamics.systems import of_particles, system_matrix_flint
 
 from .feasibility import Analysis, Requirement
-from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, verdict
+from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, end_data, verdict
+from .periodic import primitive_root
+from .reduction_orbits import _lr
 
 PAIRS = list(itertools.combinations(range(4), 2))       # the coordinates of Λ²R⁴: e_k ∧ e_l, k < l
 
@@ -79,6 +81,74 @@ PAIRS = list(itertools.combinations(range(4), 2))       # the coordinates of Λ�
 def second_compound(M) -> list:
     """Λ²M on the basis e_k ∧ e_l (k < l): the 2×2 minors of M (python-flint polynomials in r)."""
     return [[M[i][k] * M[j][m] - M[i][m] * M[j][k] for (k, m) in PAIRS] for (i, j) in PAIRS]
+
+
+def bareiss_determinant(A: list) -> flint.fmpz_poly:
+    """det A for a square matrix of fmpz_poly (in r) by Bareiss's fraction-free elimination: each
+    division by the previous pivot is exact (Sylvester's identity), so every entry stays in Z[r]."""
+    A, sign, previous = [list(row) for row in A], 1, flint.fmpz_poly(1)
+    n = len(A)
+    for k in range(n - 1):
+        if A[k][k].is_zero():
+            pivot = next((i for i in range(k + 1, n) if not A[i][k].is_zero()), None)
+            if pivot is None:
+                return flint.fmpz_poly(0)
+            A[k], A[pivot], sign = A[pivot], A[k], -sign
+        for i in range(k + 1, n):
+            for j in range(k + 1, n):
+                A[i][j] = (A[i][j] * A[k][k] - A[i][k] * A[k][j]) // previous
+        previous = A[k][k]
+    return sign * A[n - 1][n - 1]
+
+
+def norm_determinant(g: list, cp: list) -> flint.fmpz_poly:
+    """A non-zero rational multiple of Res_κ(g, cp) for cp of constant leading coefficient c (its
+    coefficients in κ lowest first, fmpz_poly in r; g likewise): the determinant of multiplication by g
+    on Q[r][κ]/(cp) in the basis 1, κ, …, κ^{n-1}, which is Π g(κ_i) over the roots of cp/c, i.e.
+    Res(cp/c, g) = ±c^{-deg g} Res(g, cp).  Each column (g κ^j reduced modulo cp/c, over Q[r]) is
+    scaled by its denominators' lcm (a non-zero constant), then :func:`bareiss_determinant`.  The
+    degree-n generalisation of ``branches._norm_modulo`` (degree ≤ 3)."""
+    n = len(cp) - 1
+    lead = flint.fmpq(int(cp[n][0]))
+    if cp[n].degree() > 0:
+        raise ValueError("cp's leading coefficient in κ depends on r")
+    monic = [flint.fmpq_poly(c) / lead for c in cp[:n]]
+    zero = flint.fmpq_poly(0)
+
+    def reduce(h: list) -> list:
+        h = list(h) + [zero] * max(0, n - len(h))
+        for k in range(len(h) - 1, n - 1, -1):          # κ^k ≡ -Σ monic[i] κ^(k-n+i)
+            t = h[k]
+            if not t.is_zero():
+                for i in range(n):
+                    h[k - n + i] -= t * monic[i]
+                h[k] = zero
+        return h[:n]
+
+    cols = [reduce([flint.fmpq_poly(c) for c in g])]
+    for _ in range(n - 1):
+        cols.append(reduce([zero] + cols[-1]))
+    scaled = []
+    for col in cols:
+        den = flint.fmpz(1)
+        for e in col:
+            den = den.lcm(e.denom())
+        scaled.append([(e * den).numer() for e in col])
+    return bareiss_determinant([[scaled[j][i] for j in range(n)] for i in range(n)])
+
+
+class FiveSpectrum(Spectrum):
+    """:class:`~certify.algebra.branches.Spectrum` of a sextic (or a factor) monic in κ up to a constant,
+    with :meth:`resultant` by :func:`norm_determinant` (a 6×6 determinant over Z[r]) instead of the
+    multivariate subresultant: the same primitive polynomial (:func:`~certify.algebra.poly.primitive`
+    removes the constant and the sign; tests/run/test_census5.py compares both), about 3 times faster on
+    the norms of degree 300 in r that dominate a five-particle word's time."""
+
+    def resultant(self, g) -> flint.fmpz_poly:
+        G = g if isinstance(g, flint.fmpz_mpoly) else ring_to_mpoly(g)
+        if self._cp_coeffs is None or G.is_zero() or G.degrees()[2] != 0:      # depends on s: the general route
+            return super().resultant(g)
+        return primitive(norm_determinant(_lambda_coefficients(G), self._cp_coeffs))
 
 
 class Reducer:
@@ -91,12 +161,7 @@ class Reducer:
     def poly(self, p):
         """An fmpz_mpoly in (κ, r) reduced modulo cp, as (fmpz_mpoly, positive integer scale)."""
         q = LRQCTX.from_dict({m: flint.fmpq(c) for m, c in zip(p.monoms(), p.coeffs())})
-        rem = divmod(q, self.C)[1]
-        den = 1
-        for c in rem.coeffs():
-            den = den * int(c.q) // flint.fmpz(den).gcd(int(c.q)) if c.q != 1 else den
-        terms = {m: int(c * den) for m, c in zip(rem.monoms(), rem.coeffs())}
-        return LRCTX.from_dict(terms), den
+        return _lr(divmod(q, self.C)[1])
 
     def __call__(self, F: Frac) -> Frac:
         n, a = self.poly(F.num)
@@ -170,11 +235,27 @@ def _polynomial(F: Frac) -> bool:
     return F.den.total_degree() <= 0
 
 
-def sextic_factors(word: str) -> list:
+@dataclass(frozen=True)
+class Sextic:
+    """What a word's analysis builds once: M_w (python-flint polynomials in r), W = Λ²M_w and the
+    sextic cp(Λ²M_w) = det(κI - W) in the engine's ring (κ written λ)."""
+
+    M: list
+    W: list
+    cp: object
+
+    @classmethod
+    def of(cls, word: str) -> Sextic:
+        M = system_matrix_flint(of_particles(5), word)
+        W = second_compound(M)
+        return cls(M, W, charpoly_ring(W))
+
+
+def sextic_factors(word: str, sextic: Sextic | None = None) -> list:
     """The irreducible factors of cp(Λ²M_w) in κ (over Q[r], monic: the sextic is monic), each with
     its multiplicity, as elements of the engine's ring (κ written λ)."""
-    M = system_matrix_flint(of_particles(5), word)
-    _, terms = ring_to_mpoly(charpoly_ring(second_compound(M))).factor()
+    sextic = sextic or Sextic.of(word)
+    _, terms = ring_to_mpoly(sextic.cp).factor()
     out = []
     for f, e in terms:
         if f.degrees()[1] == 0:
@@ -187,15 +268,16 @@ def sextic_factors(word: str) -> list:
     return out
 
 
-@cache
-def five_candidate(word: str, factor=None) -> FiveCandidate:
+def five_candidate(word: str, factor=None, sextic: Sextic | None = None) -> FiveCandidate:
     """The κ-route candidate of a word of five particles (see the module's docstring), κ a root of
-    ``factor`` (an irreducible factor of cp(Λ²M) of multiplicity 1, by default the sextic itself)."""
+    ``factor`` (an irreducible factor of cp(Λ²M) of multiplicity 1, by default the sextic itself);
+    ``sextic`` the word's :class:`Sextic` when the caller has it (not memoised: a census holds no
+    candidate after its word)."""
     letters = alphabet(5)
-    M = system_matrix_flint(of_particles(5), word)
-    W = second_compound(M)
-    ring_cp = charpoly_ring(W) if factor is None else factor      # det(κI - Λ²M), κ written λ in the ring
-    spectrum = Spectrum(None, ring_cp)
+    sextic = sextic or Sextic.of(word)
+    M, W = sextic.M, sextic.W
+    ring_cp = sextic.cp if factor is None else factor      # det(κI - Λ²M), κ written λ in the ring
+    spectrum = FiveSpectrum(None, ring_cp)
     red = Reducer(ring_cp)
     Pi = eigen_plane(W, red)
     common = Frac(Pi[0].den)
@@ -240,19 +322,14 @@ def contract(P: list, i: int) -> list:
 
 def wedge_collide(letter: str, P: list, red) -> list:
     """Λ²K_i P: the bivector of the plane after the collision (K_i fixes the face of pair i
-    pointwise, so p ∧ q ↦ p ∧ K_i q; certificate B1)."""
-    zero, one = Frac.of(0), Frac.of(1)
-    cols = [collide_gaps(letter, tuple(one if m == j else zero for m in range(4)), LR_R) for j in range(4)]
-    K = [[cols[j][m] for j in range(4)] for m in range(4)]
-    out = []
-    for (i, j) in PAIRS:
-        total = zero
-        for (k, m), e in zip(PAIRS, P):
-            c = K[i][k] * K[j][m] - K[i][m] * K[j][k]
-            if not c.is_zero():
-                total = total + c * e
-        out.append(red(total))
-    return out
+    pointwise, so p ∧ q ↦ p ∧ K_i q; certificate B1); K_i is the period matrix of the one-letter word."""
+    return matvec(_collision_compound(letter), P, red)
+
+
+@functools.cache
+def _collision_compound(letter: str) -> list:
+    """Λ²K_i for a letter of five particles (four of them: memoised)."""
+    return second_compound(system_matrix_flint(of_particles(5), letter))
 
 
 def run(word: str, Pi: list, q0: list, red) -> list:
@@ -311,13 +388,14 @@ def requirements(cand: FiveCandidate) -> dict:
     return {"exists": exists, "feasible": feasible, "stable": stable}
 
 
-def normal_form(word: str) -> tuple[str, str]:
-    """The least rotation of the word or of its mirror image (a <-> d, b <-> c: particles numbered
-    from the right), and why it is the same orbit."""
-    letters = alphabet(5)
+def normal_form(word: str, particles: int = 5) -> tuple[str, str]:
+    """The least rotation of the word or of its mirror image (particles numbered from the right: for
+    five a <-> d, b <-> c), and why it is the same orbit."""
+    letters = alphabet(particles)
     mirror = word.translate(str.maketrans(letters, letters[::-1]))
     best = min((w[k:] + w[:k], w is mirror) for w in (word, mirror) for k in range(len(word)))
-    why = "the least rotation" + (" of the mirror image (a<->d, b<->c)" if best[1] else "")
+    pairs = ", ".join(f"{a}<->{b}" for a, b in zip(letters, letters[::-1]) if a < b)
+    why = "the least rotation" + (f" of the mirror image ({pairs})" if best[1] else "")
     return best[0], why
 
 
@@ -329,11 +407,18 @@ def read_five(text: str) -> tuple[str, str]:
     word = check_word("".join(str(text).split()), 5)
     if set(word) != set(alphabet(5)):
         raise UsageError(f"invalid pattern word {text!r}: a five-particle word uses every pair a, b, c, d")
-    n = len(word)
-    root = next((d for d in range(1, n) if n % d == 0 and word == word[:d] * (n // d)), None)
-    if root is not None:
-        raise UsageError(f"invalid pattern word {text!r}: a proper power of {word[:root]!r}")
+    root, k = primitive_root(word)
+    if k > 1:
+        raise UsageError(f"invalid pattern word {text!r}: a proper power of {root!r}")
     return normal_form(word)
+
+
+REPEATED_NOT_STABLE = """A factor f of cp(Λ²M) of multiplicity m > 1 holds no stable datum.  The roots of
+cp(Λ²M) with multiplicity are the six products λ_iλ_j (i < j) of the eigenvalues of M, so at every r a root
+κ of f is the product of two different index pairs.  A stable datum has κ = λμ with λ > μ > |ν| for the
+two other eigenvalues ν, ν', hence |λμ| > |λν|, |λν'|, |μν|, |μν'|, |νν'|: λμ is the product of one index
+pair only.  So no branch of f is stable, at any r; only existence and feasibility on f are left
+undecided (the plane is not the κ-eigenvector: the eigenspace of κ has dimension 2 or is not semisimple)."""
 
 
 def analyse_five(text: str, lo=0, hi=1, progress=None):
@@ -343,12 +428,14 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
     import time
 
     from certify.algebra.branches import BRANCH_NAMES
-    from certify.algebra.poly import mpoly_to_univariate, primitive, show_collected, show_factored
+    from certify.algebra.poly import mpoly_to_univariate, show_collected, show_factored
 
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, why = read_five(text)
-    factors = sextic_factors(normal)
+    sextic = Sextic.of(normal)
+    factors = sextic_factors(normal, sextic)
+    not_analysed: list = []
     regions: dict = {"exists": [], "feasible": [], "stable": []}
     sets: dict = {"exists": [], "feasible": [], "stable": []}
     undecided: list = []
@@ -358,12 +445,18 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
     for number, (factor, multiplicity) in enumerate(factors, 1):
         label = f"factor {number} of cp(Λ²M), " if len(factors) > 1 else ""
         if multiplicity > 1:
+            # never stable there (REPEATED_NOT_STABLE); existence and feasibility not analysed
+            kappa = show_collected(factor, "λ").replace("λ", "κ")
+            not_analysed.append({"factor": kappa, "multiplicity": multiplicity, "stable": "none (proved)"})
             undecided.append(f"{label}κ a root of multiplicity {multiplicity} of cp(Λ²M) on all of ]{lo}, {hi}[: "
-                             "its eigenplane is not unique (not analysed)")
+                             "its eigenplane is not unique (not analysed; never stable: a multiple eigenvalue of "
+                             "Λ²M is not strictly dominant)")
             continue
         try:
-            cand = five_candidate(normal, factor if len(factors) > 1 else None)
+            cand = five_candidate(normal, factor if len(factors) > 1 else None, sextic)
         except ArithmeticError as e:
+            not_analysed.append({"factor": show_collected(factor or sextic.cp, "λ").replace("λ", "κ"),
+                                 "multiplicity": 1, "stable": f"not analysed: {e}"})
             undecided.append(f"{label}on all of ]{lo}, {hi}[: {e} (not analysed)")
             continue
         cands.append(cand)
@@ -397,16 +490,15 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
         conditions = {stage: [] for stage in ("exists", "feasible", "stable")}
 
     def printed():
-        M = [[show_factored(e) for e in row] for row in system_matrix_flint(of_particles(5), normal)]
+        M = [[show_factored(e) for e in sextic.M[i]] for i in range(4)]
         datum = {"κ": "λμ, a root of cp(Λ²M) (the branch)", "λ": "x = (T ± √(T² - 4κD²))/(2D) (x₊, x₋: the two "
                  "orderings of the pair)", "p(0)": "ι_Y Π, Π the κ-eigenvector of Λ²M, Y the last letter's gap",
                  "q(0)": "∝ M p(0) - μ p(0), q of the first letter's gap < 0"}
-        whole = charpoly_ring(second_compound(system_matrix_flint(of_particles(5), normal)))
-        return M, show_factored(primitive(mpoly_to_univariate(ring_to_mpoly(whole).discriminant("lam")))), datum
-    cp_text = lambda: show_collected(charpoly_ring(second_compound(system_matrix_flint(of_particles(5), normal))),  # noqa: E731
-                                     "λ").replace("λ", "κ")
+        return M, show_factored(primitive(mpoly_to_univariate(ring_to_mpoly(sextic.cp).discriminant("lam")))), datum
+    cp_text = lambda: show_collected(sextic.cp, "λ").replace("λ", "κ")  # noqa: E731
     res = FiveResult(text, normal, "five", why, (lo, hi), cp_text, sets["exists"], sets["feasible"], sets["stable"],
                      undecided, conditions, None, "", 0.0, regions, printed)
+    res.not_analysed = not_analysed
     res.verdict = verdict(res)
     res.seconds = time.perf_counter() - start
     return res
@@ -417,6 +509,8 @@ class FiveResult(PatternResult):
     """The :class:`.pattern.PatternResult` of a five-particle word: cp is the sextic cp(Λ²M) in κ = λμ,
     and stability is λ > μ > |ν| (its Markdown names them; the JSON's fields are the pattern schema's)."""
 
+    not_analysed: list        # the factors of cp(Λ²M) not analysed: {"factor", "multiplicity", "stable"}
+
     def markdown(self) -> str:
         text = super().markdown()
         for old, new in (("cp(M) = `", "cp(Λ²M) in κ = λμ = `"), ("disc_λ cp(M) = `", "disc_κ cp(Λ²M) = `"),
@@ -426,68 +520,52 @@ class FiveResult(PatternResult):
         return text
 
 
-def word_classes(max_length: int):
-    """One word per class (rotations, mirror a<->d, b<->c) of the five-particle periods of 4..max_length
+def word_classes(max_length: int, particles: int = 5):
+    """One word per class (rotations, mirror image) of the periods of N particles of N - 1 to max_length
     collisions: every pair used, no pair twice in a row (cyclically), not a proper power; each its
-    :func:`normal_form`, shortest first, then in lexicographic order."""
-    letters = alphabet(5)
+    :func:`normal_form`, shortest first, then in lexicographic order.  Every class has a rotation
+    starting with a, so the words starting with a and never repeating a letter (3^(n-1) of them for five
+    particles, not 4^(n-1)) are enough."""
+    letters = alphabet(particles)
     for n in range(len(letters), max_length + 1):
         found = set()
-        for t in itertools.product(letters, repeat=n - 1):
-            w = "a" + "".join(t)                      # every class has a rotation starting with a
-            if any(w[k] == w[(k + 1) % n] for k in range(n)) or len(set(w)) < len(letters):
-                continue
-            if any(n % d == 0 and w == w[:d] * (n // d) for d in range(1, n)):
-                continue
-            found.add(normal_form(w)[0])
+        stack = ["a"]
+        while stack:
+            w = stack.pop()
+            if len(w) < n:
+                stack += [w + x for x in letters if x != w[-1]]
+            elif w[-1] != w[0] and len(set(w)) == len(letters) and primitive_root(w)[1] == 1:
+                found.add(normal_form(w, particles)[0])
         yield from sorted(found)
 
 
-def census_five(max_length: int, progress=None) -> dict:
-    """``certify census --particles 5``: every class of :func:`word_classes` analysed by
-    :func:`analyse_five` over ]0, 1[; per word its certified stable and feasible windows (exact ends)
-    and its undecided points; per length the number of words and the seconds; the largest r of stable
-    and of feasible self-similar collapse (the largest upper end of a window or isolated point: exact),
-    the largest undecided point (where the proof ends) and the words with a factor of cp(Λ²M) not
-    analysed (a repeated factor: the largest r are certified for the other words and factors only)."""
+def census_record(word: str) -> dict:
+    """The record of one word of the five-particle census (the job :func:`certify.run.census5.run`
+    hands its executor; ``word`` a normal form): :func:`analyse_five` over ]0, 1[, timed once.  Its
+    certified sets (``exists``, ``feasible``, ``stable``, as r-set texts), its undecided points, the
+    factors of cp(Λ²M) not analysed (``not_analysed``, from the analysis, not from its messages), and the
+    largest r of each (``top``: the largest upper end or isolated point of the set, exact; for
+    ``undecided`` the largest undecided point of the stable stage).  ``seconds``, the CPU seconds of the
+    analysis (``time.process_time``: the measure on a shared machine), is kept in the state file only
+    (:data:`certify.patterns.census.SECONDS`): the rest is the same bytes on a rerun."""
     import time
 
-    from certify.algebra.branches import less
-
-    from .pattern import end_data
-    words = list(word_classes(max_length))
-    records, lengths = [], {}
-    best: dict = {"stable": None, "feasible": None, "undecided": None}
-    whole: list = []
-    for k, w in enumerate(words):
-        if progress is not None:
-            progress(k, len(words), w)
-        start = time.perf_counter()
-        res = analyse_five(w)
-        seconds = time.perf_counter() - start
-        entry = lengths.setdefault(len(w), {"words": 0, "seconds": 0.0})
-        entry["words"] += 1
-        entry["seconds"] += seconds
-        rec = {"word": w, "seconds": round(seconds, 2), "undecided": res.undecided}
-        if any("not analysed" in u for u in res.undecided):
-            whole.append(w)
-        for stage in ("stable", "feasible", "undecided"):
-            if stage == "undecided":
-                tops = [rc for R in res.regions["stable"] for rc, _ in R.undecided]
-            else:
-                rec[stage] = [s["set"] for s in getattr(res, stage)]
-                tops = [hi for *_, hi in res.intervals(stage)] + [at for *_, at in res.points(stage)]
-            for top in tops:
-                if best[stage] is None or less(best[stage][0], top):
-                    best[stage] = (top, w)
-        records.append(rec)
-    if progress is not None:
-        progress(len(words), len(words), "")
-    out = {"max_length": max_length, "words": len(words), "records": records,
-           "lengths": {n: {"words": e["words"], "seconds": round(e["seconds"], 1)} for n, e in sorted(lengths.items())}}
-    for stage, found in best.items():
-        out[f"largest_{stage}"] = None if found is None else {"r": end_data(found[0]), "word": found[1]}
-    out["stable_words"] = [{"word": r["word"], "windows": r["stable"]} for r in records if r["stable"]]
-    out["undecided_words"] = [r["word"] for r in records if r["undecided"]]
-    out["not_analysed_words"] = whole         # a factor of cp(Λ²M) not analysed on the whole range
-    return out
+    from .census import SECONDS
+    start = time.process_time()
+    res = analyse_five(word)
+    rec = {"word": word, "length": len(word), "verdict": str(res.verdict),
+           "exists": [s["set"] for s in res.exists], "feasible": [s["set"] for s in res.feasible],
+           "stable": [s["set"] for s in res.stable], "undecided": list(res.undecided),
+           "not_analysed": list(res.not_analysed), "top": {}}
+    for stage in ("stable", "feasible", "undecided"):
+        if stage == "undecided":
+            tops = [rc for R in res.regions["stable"] for rc, _ in R.undecided]
+        else:
+            tops = [w.hi for w in res.intervals(stage)] + [at for *_, at in res.points(stage)]
+        best = None
+        for top in tops:
+            if best is None or less(best, top):
+                best = top
+        rec["top"][stage] = None if best is None else end_data(best)
+    rec[SECONDS] = round(time.process_time() - start, 3)
+    return rec

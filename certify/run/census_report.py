@@ -57,7 +57,8 @@ def _timeless(record: dict) -> dict:
 
 
 def run_census(max_length: int, executor, state=None, resume: bool = False, progress=None,
-        job=census.analyse_word, window: int = WINDOW, complete=census.add_reduction) -> list[dict]:
+        job=census.analyse_word, window: int = WINDOW, complete=census.add_reduction,
+        words=census.iter_words) -> list[dict]:
     """The census records of every word up to ``max_length``, in census order.
 
     ``state``: a JSON-lines file the records are appended to as they finish (created,
@@ -67,8 +68,9 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
     record without its :data:`~certify.patterns.census.REDUCTION` part (from an older
     census) is reused as it is and completed by ``complete(record)``, which computes
     only that part; the completed record is appended to the state (the last line of a
-    word wins)."""
-    n = sum(1 for _ in census.iter_words(max_length))     # the words stream: never all in memory at once
+    word wins); ``complete=None``: no record is partial.  ``words(max_length)``: the words
+    in census order (the five-particle census passes its own)."""
+    n = sum(1 for _ in words(max_length))     # the words stream: never all in memory at once
     done = {}
     if state is not None:
         state = Path(state)
@@ -76,10 +78,10 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
             done = {w: rec for w, rec in load_state(state).items() if rec["length"] <= max_length}
         else:
             write_atomic(state, "")
-    partial = {w: done.pop(w) for w in list(done) if census.REDUCTION not in done[w]}
+    partial = {} if complete is None else {w: done.pop(w) for w in list(done) if census.REDUCTION not in done[w]}
     done = {w: _timeless(rec) for w, rec in done.items()}
     # shortest first (a cut census is complete up to a length), streamed: submitted as the window frees
-    todo = (w for w in census.iter_words(max_length) if w not in done)
+    todo = (w for w in words(max_length) if w not in done)
     if progress:
         progress(len(done), n, "")
     sink = state.open("a", encoding="utf-8") if state is not None else None
@@ -117,7 +119,7 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
     finally:
         if sink is not None:
             sink.close()
-    return [done[w] for w in census.iter_words(max_length)]          # census order
+    return [done[w] for w in words(max_length)]          # census order
 
 
 def completed(records: dict[str, dict]) -> int:

@@ -182,14 +182,34 @@ def test_a_repeated_factor_of_the_sextic_is_named_not_analysed():
     assert [m for _, m in five.sextic_factors("abcacd")].count(2) == 1
 
 
-def test_the_word_classes_are_the_search_tools():
-    """The census's classes (normal forms) are the float search's, independently enumerated, to length 8."""
-    assert list(five.word_classes(8)) == sorted(search.words(8, 5), key=lambda w: (len(w), w))
+def test_the_word_classes_are_the_orbits_of_rotation_and_mirror():
+    """word_classes against an independent count: every word over a, b, c, d of 4..7 letters (4^n of them,
+    no shortcut), kept when every pair is used, no pair repeats cyclically and it is not a proper power; its
+    orbit under rotations and the mirror (a<->d, b<->c) built as a set; each orbit holds exactly one listed
+    word, and every listed word is in one."""
+    import itertools
+    listed = list(five.word_classes(7))
+    assert len(listed) == len(set(listed))
+    mirror = str.maketrans("abcd", "dcba")
+    orbits = set()
+    for n in range(4, 8):
+        for t in itertools.product("abcd", repeat=n):
+            w = "".join(t)
+            if set(w) != set("abcd") or any(w[k] == w[(k + 1) % n] for k in range(n)):
+                continue
+            if any(w == w[:d] * (n // d) for d in range(1, n) if n % d == 0):
+                continue
+            orbits.add(frozenset(v[k:] + v[:k] for v in (w, w.translate(mirror)) for k in range(n)))
+    assert len(orbits) == len(listed)
+    assert all(len([w for w in listed if w in o]) == 1 for o in orbits)
 
 
 @pytest.fixture(scope="module")
 def census5():
-    return five.census_five(5)
+    from certify.run import census5
+    from certify.run.executors import executor
+    with executor(1) as ex:
+        return census5.document(census5.run(5, ex), 5)
 
 
 def test_the_census_against_the_float_search(census5):
@@ -197,8 +217,9 @@ def test_the_census_against_the_float_search(census5):
     search finds a feasible datum, for the words whose every factor was analysed; the largest feasible r
     is 3 - 2√2 (SymPy), attained by one of its words."""
     import sympy as sp
-    for rec in census5["records"]:
-        if rec["word"] in census5["not_analysed_words"]:
+    skip = {n["word"] for n in census5["census"]["not_analysed"]}
+    for rec in census5["words"]:
+        if rec["word"] in skip:
             continue
         res = five.analyse_five(rec["word"])
         spans = [(float(w.lo.digits(15)), float(w.hi.digits(15))) for w in res.intervals("feasible")]
@@ -207,20 +228,22 @@ def test_the_census_against_the_float_search(census5):
             if any(min(abs(r - a), abs(r - b)) < 1e-3 for a, b in spans):
                 continue
             assert any(a < r < b for a, b in spans) == bool(search.data(rec["word"], r, 5)), (rec["word"], r)
-    best = census5["largest_feasible"]
+    best = census5["census"]["largest_feasible"]
     assert abs(float(best["r"]["digits"]) - float(3 - 2 * sp.sqrt(2))) < 1e-11
     assert best["r"]["minimal_polynomial"] == "r^2 - 6r + 1"
 
 
-def test_the_census_command():
-    """census --particles 5 prints the summary; beyond its limit, another N, or a cluster option: one line, exit 2."""
+def test_the_census_command(tmp_path):
+    """census --particles 5 writes CENSUS5.md and census5.json into --out and prints the summary; beyond its
+    limit, another N, a cluster, or --check on the four-particle census: one line, exit 2."""
     run = lambda *a: subprocess.run([sys.executable, "-m", "certify", "census", *a], cwd=ROOT,  # noqa: E731
                                     capture_output=True, text=True)
-    out = run("--particles", "5", "--max-length", "4")
-    assert out.returncode == 0 and "4 words up to length 4" in out.stdout
-    for bad in (["--particles", "5", "--max-length", "9"], ["--particles", "6", "--max-length", "4"],
-                ["--particles", "5", "--max-length", "4", "--resume"]):
-        res = run(*bad)
+    out = run("--particles", "5", "--max-length", "4", "--out", str(tmp_path), "--jobs", "1")
+    assert out.returncode == 0 and "4 words up to length 4" in out.stdout, out.stderr
+    assert (tmp_path / "CENSUS5.md").is_file() and (tmp_path / "census5.json").is_file()
+    for bad in (["--particles", "5", "--max-length", "11"], ["--particles", "6", "--max-length", "4"],
+                ["--particles", "5", "--max-length", "4", "--scheduler", "x:1"], ["--max-length", "4", "--check"]):
+        res = run(*bad, "--out", str(tmp_path))
         assert res.returncode == 2 and len(res.stderr.strip().splitlines()) == 1 and "Traceback" not in res.stderr
 
 
@@ -247,5 +270,119 @@ def test_the_datum_is_exact():
         lhs = (red(cand.D * Mq[0][k]), red(cand.D * Mq[1][k]))
         rhs = ext.mul(y, cand.q0[k])
         assert (lhs[0] - rhs[0]).is_zero() and (lhs[1] - rhs[1]).is_zero()
+
+
+def _planes(cand, red):
+    """{(letter, id(p̂_k)): P_k}: the run through the plane again, to pair each contraction with its plane."""
+    P, out = list(five.eigen_plane(five.second_compound(cand.Mq), red)), {}
+    P = [red(e * c) for e, c in zip(P, [_scale(cand, red, P)] * 6)]
     for letter, p, _, _ in cand.steps:
-        assert p["abcd".index(letter)].is_zero()
+        P = five.wedge_collide(letter, P, red)
+        out[letter, id(p)] = P
+    return out
+
+
+def _scale(cand, red, P):
+    """The factor that makes the eigen-plane the candidate's Π (its p̂ = ι_Y Π)."""
+    Y, j = cand.face, next(j for j in range(4) if not cand.p0[j].is_zero())
+    return cand.p0[j] * five.contract(P, Y)[j].inverse()
+
+
+def _wedge3(v, P):
+    """v ∧ P in Λ³R⁴ (triples a < b < c): v_a P_bc - v_b P_ac + v_c P_ab; zero iff v lies in the plane P."""
+    import itertools
+    at = dict(zip(five.PAIRS, P))
+    return [v[a] * at[b, c] - v[b] * at[a, c] + v[c] * at[a, b] for a, b, c in itertools.combinations(range(4), 3)]
+
+
+def test_each_contraction_lies_in_its_plane():
+    """p̂_k = ι_{i_k} P_k lies in the plane P_k (v ∧ P_k = 0 modulo the sextic, which holds only because P_k
+    is decomposable and the contraction's signs are right): on the face, in the plane, so along p(t_k).
+    A contraction with the sign of its lower part flipped is caught."""
+    cand = five.five_candidate(WORD)
+    red = cand.ext.red
+    planes, caught = _planes(cand, red), 0
+    for letter, p, _, _ in cand.steps:
+        P = planes[letter, id(p)]
+        assert all(red(e).is_zero() for e in _wedge3(p, P))
+        i = "abcd".index(letter)
+        flipped = [-e if m < i else e for m, e in enumerate(p)]
+        if any(not e.is_zero() for e in flipped[:i]) and any(not e.is_zero() for e in flipped[i + 1:]):
+            caught += not all(red(e).is_zero() for e in _wedge3(flipped, P))
+    assert caught >= 3
+
+
+def test_the_stable_requirements_are_the_criterion():
+    """five.requirements' stable stage (λ - μ and Jury's three, with y = Dλ), evaluated at the word's true
+    κ = λμ and λ (eigenvalues of M_w at r = k/40 in 60 digits), holds exactly where λ > μ > |ν| for the
+    two largest positive eigenvalues λ > μ and the others ν; the points where a margin is below 1e-6 are
+    skipped.  Both outcomes occur on the grid."""
+    import mpmath
+    import sympy as sp
+
+    from certify.algebra.poly import frac_to_field
+    from certify.dynamics.systems import of_particles, system_matrix_flint
+    cand = five.five_candidate(WORD)
+    reqs = five.requirements(cand)["stable"]
+    lam, r = sp.symbols("λ r")          # the engine's field writes κ as λ
+    mpmath.mp.dps = 60
+    D = sp.lambdify((lam, r), frac_to_field(cand.D).as_expr(), "mpmath")
+    forms = [(q.sign, sp.lambdify((lam, r), q.G[0].as_expr(), "mpmath"), sp.lambdify((lam, r), q.G[1].as_expr(),
+              "mpmath")) for q in reqs]
+    M = system_matrix_flint(of_particles(5), WORD)
+    seen = set()
+    for k in range(1, 40):
+        r0 = flint.fmpq(k, 40)
+        A = mpmath.matrix([[mpmath.mpf(int(e(r0).p)) / int(e(r0).q) for e in row] for row in M])
+        ev = list(mpmath.eig(A, left=False, right=False))
+        real = sorted((z.real for z in ev if abs(z.imag) < 1e-40 and z.real > 0), reverse=True)
+        if len(real) < 2:
+            continue
+        lam0, mu0 = real[0], real[1]
+        rest = list(ev)
+        for v in (lam0, mu0):
+            rest.pop(min(range(len(rest)), key=lambda i: abs(rest[i] - v)))
+        margins = [lam0 - mu0] + [mu0 - abs(v) for v in rest]
+        if min(abs(m) for m in margins) < 1e-6:
+            continue
+        direct = all(m > 0 for m in margins)
+        y = D(lam0 * mu0, mpmath.mpf(k) / 40) * lam0
+        values = [sign * (g0(lam0 * mu0, mpmath.mpf(k) / 40) + y * g1(lam0 * mu0, mpmath.mpf(k) / 40))
+                  for sign, g0, g1 in forms]
+        assert all(v > 0 for v in values) == direct, k
+        seen.add(direct)
+    assert seen == {True, False}
+
+
+
+def test_a_repeated_factor_is_two_products_and_never_stable():
+    """REPEATED_NOT_STABLE on the words to 6 with a repeated factor: at r = k/7 its root κ is the product of
+    two different pairs of M's eigenvalues (60 digits), and the float search finds no stable datum; the
+    census record says 'none (proved)' for that factor."""
+    import itertools
+
+    import mpmath
+
+    from certify.dynamics.systems import of_particles, system_matrix_flint
+    mpmath.mp.dps = 60
+    words = [w for w in five.word_classes(6) if any(m > 1 for _, m in five.sextic_factors(w))]
+    assert words
+    for w in words:
+        (f,) = [f for f, m in five.sextic_factors(w) if m > 1]
+        assert f.degree(f.ring.gens[0]) == 1                       # κ = a polynomial in r
+        M = system_matrix_flint(of_particles(5), w)
+        for k in (2, 3, 5):
+            r0 = flint.fmpq(k, 7)
+            kappa = -mpmath.mpf(f.coeff_wrt(f.ring.gens[0], 0).as_expr().subs("r", sp_rational(r0)))
+            A = mpmath.matrix([[mpmath.mpf(int(e(r0).p)) / int(e(r0).q) for e in row] for row in M])
+            ev = list(mpmath.eig(A, left=False, right=False))
+            pairs = [p for p in itertools.combinations(range(4), 2) if abs(ev[p[0]] * ev[p[1]] - kappa) < 1e-30]
+            assert len(pairs) >= 2, (w, k)
+            assert not any(s for *_, s in search.data(w, k / 7, 5))
+        rec = five.census_record(w)
+        assert any(n["multiplicity"] > 1 and n["stable"] == "none (proved)" for n in rec["not_analysed"])
+
+
+def sp_rational(q):
+    import sympy as sp
+    return sp.Rational(int(q.p), int(q.q))

@@ -1,0 +1,66 @@
+"""The cost of a five-particle word (certify census --particles 5) by length, in CPU seconds.
+
+    python benchmarks/bench_census5.py [--max-length L] [--from-state FILE]
+
+Analyses every word class up to L (default 6) with ``five.analyse_five`` in this process, one at a
+time, and prints per length: the classes, the CPU seconds (``time.process_time``: the machine is
+shared, so wall time is not the measure), mean and max, and the growth of the classes from one length
+to the next.  ``--from-state FILE`` reads the seconds a census state file carries (wall seconds of the
+run that wrote it) instead.  Run it from a checkout (``PYTHONPATH=OTHER python benchmarks/...``
+times another checkout's code on the same words: the before/after of docs/census.md).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from collections import defaultdict
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+if str(ROOT) not in sys.path:  # run as a script from a source checkout
+    sys.path.insert(0, str(ROOT))
+
+
+def timed(max_length: int) -> dict[int, list[float]]:
+    """CPU seconds of each class's analysis, by length."""
+    from certify.patterns import five
+    by: dict[int, list[float]] = defaultdict(list)
+    for w in five.word_classes(max_length):
+        start = time.process_time()
+        five.analyse_five(w)
+        by[len(w)].append(time.process_time() - start)
+    return by
+
+
+def from_state(path: Path) -> dict[int, list[float]]:
+    by: dict[int, list[float]] = defaultdict(list)
+    for line in path.read_text(encoding="utf-8").splitlines():
+        rec = json.loads(line)
+        by[rec["length"]].append(rec["seconds"])
+    return by
+
+
+def table(by: dict[int, list[float]]) -> str:
+    rows = ["| length | classes | growth | seconds | mean | max |", "|---:|---:|---:|---:|---:|---:|"]
+    previous = None
+    for n in sorted(by):
+        v = by[n]
+        growth = f"{len(v) / previous:.2f}" if previous else ""
+        rows.append(f"| {n} | {len(v)} | {growth} | {sum(v):.1f} | {sum(v) / len(v):.2f} | {max(v):.2f} |")
+        previous = len(v)
+    return "\n".join(rows)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--max-length", type=int, default=6)
+    ap.add_argument("--from-state", type=Path, default=None)
+    args = ap.parse_args(argv)
+    print(table(from_state(args.from_state) if args.from_state else timed(args.max_length)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,173 @@
+"""The five-particle census (issue 39): every word class of :func:`certify.patterns.five.word_classes`
+up to a length, each analysed by :func:`certify.patterns.five.census_record` (the κ route of
+``certify pattern``), streamed to a state file through :func:`.census_report.run_census` (any
+executor, ``--resume``), and written atomically as DIR/CENSUS5.md and DIR/census5.json
+(schema certify/schemas/census5.schema.json).
+
+The summary is computed from the records alone (:func:`document`), so a file rendered from a state
+and one from a fresh run are the same bytes; :func:`check` analyses the words again and compares
+each record, and recomputes the summary from the committed records.  The largest r are exact
+(algebraic numbers compared exactly: :func:`certify.algebra.branches.less`); they are certified for
+the factors of cp(Λ²M) that were analysed: the factors not analysed are listed, word by word.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from certify.algebra.branches import less
+from certify.patterns import five
+from certify.patterns.census import SECONDS
+from certify.patterns.island_theorem import algebraic_of
+
+from . import census_report
+from .files import write_atomic
+
+SCHEMA = "certify-census5"
+VERSION = 1
+JSON = "census5.json"
+MARKDOWN = "CENSUS5.md"
+STAGES = ("stable", "feasible", "undecided")
+
+
+def run(max_length: int, executor, state=None, resume: bool = False, progress=None) -> list[dict]:
+    """The records of every class up to ``max_length``, in census order (shortest first, then
+    lexicographic), without their seconds; the state file and ``resume`` as the four-particle census's."""
+    return census_report.run_census(max_length, executor, state, resume, progress, job=five.census_record,
+                                    complete=None, words=five.word_classes)
+
+
+def _largest(records: list[dict], stage: str) -> dict | None:
+    """{"r": end, "word": w} for the largest ``top[stage]`` over the records (exact comparison; the
+    first word in census order on a tie), or None."""
+    best, value = None, None
+    for rec in records:
+        end = rec["top"][stage]
+        if end is None:
+            continue
+        a = algebraic_of(end)
+        if value is None or less(value, a):
+            best, value = {"r": end, "word": rec["word"]}, a
+    return best
+
+
+def document(records: list[dict], max_length: int) -> dict:
+    """census5.json: the summary (counts by length, the largest r of stable and of feasible
+    self-similar collapse and the largest undecided point, the stable words and their windows, the
+    words with a factor of cp(Λ²M) not analysed) and the records (without seconds)."""
+    records = [{k: v for k, v in rec.items() if k != SECONDS} for rec in records]
+    lengths: dict = {}
+    for rec in records:
+        entry = lengths.setdefault(str(rec["length"]), {"words": 0, "exists": 0, "feasible": 0, "stable": 0,
+                                                        "undecided": 0, "not_analysed": 0})
+        entry["words"] += 1
+        for key in ("exists", "feasible", "stable", "undecided", "not_analysed"):
+            entry[key] += bool(rec[key])
+    summary = {"particles": 5, "max_length": max_length, "words": len(records), "lengths": lengths,
+               "stable_words": [{"word": r["word"], "windows": r["stable"]} for r in records if r["stable"]],
+               "feasible_words": [r["word"] for r in records if r["feasible"]],
+               "not_analysed": [{"word": r["word"], "factors": r["not_analysed"]} for r in records
+                                if r["not_analysed"]],
+               "undecided_words": len([r for r in records if r["undecided"]]),
+               "stable_complete": all(f["multiplicity"] > 1 for r in records for f in r["not_analysed"])}
+    for stage in STAGES:
+        summary[f"largest_{stage}"] = _largest(records, stage)
+    return {"schema": SCHEMA, "version": VERSION, "census": summary, "words": records}
+
+
+def to_json(doc: dict) -> str:
+    return json.dumps(doc, ensure_ascii=False, indent=1, sort_keys=True) + "\n"
+
+
+def _end(best: dict | None) -> str:
+    if best is None:
+        return "none"
+    r = best["r"]
+    exact = r["exact"] if r["exact"] is not None else (f"the root of {r['minimal_polynomial']} in "
+                                                        f"]{r['interval'][0]}, {r['interval'][1]}[")
+    return f"≈{r['digits']} ({exact}), {best['word']}"
+
+
+def markdown(doc: dict) -> str:
+    """CENSUS5.md: the certified answers first, then the counts by length, the stable and feasible
+    words, and what is not decided."""
+    s = doc["census"]
+    L = s["max_length"]
+    lines = [f"# The five-particle census to {L} collisions", "",
+             f"Written by `certify census --particles 5 --max-length {L} --out DIR`; checked by "
+             f"`certify census --particles 5 --check` (docs/census.md).  {s['words']} word classes (rotations, "
+             "mirror image a<->d, b<->c; every pair used, no pair twice in a row, not a proper power), each "
+             "analysed exactly over ]0, 1[ by the κ = λμ route of `certify pattern` (docs/pattern.md, \"five "
+             "particles\").", "",
+             "## Certified answers", "",
+             f"- Largest r of stable self-similar collapse up to {L}: {_end(s['largest_stable'])}",
+             f"- Largest r of feasible self-similar collapse up to {L}: {_end(s['largest_feasible'])}",
+             f"- Largest undecided point (stable stage): {_end(s['largest_undecided'])}", ""]
+    if s["not_analysed"]:
+        lines += [f"{len(s['not_analysed'])} words have a factor of cp(Λ²M) that was not analysed (listed below). "
+                  + ("Each is a repeated factor, which holds no stable datum (proved: "
+                     "certify.patterns.five.REPEATED_NOT_STABLE), so the largest r of stable collapse holds for every "
+                     "word; the largest r of feasible collapse holds for the factors analysed only."
+                     if s["stable_complete"] else "Both largest r hold for the factors analysed only."), ""]
+    lines += ["## By length", "", "| length | words | exists | feasible | stable | with undecided points | "
+              "with a factor not analysed |", "|---:|---:|---:|---:|---:|---:|---:|"]
+    lines += [f"| {n} | {e['words']} | {e['exists']} | {e['feasible']} | {e['stable']} | {e['undecided']} | "
+              f"{e['not_analysed']} |" for n, e in s["lengths"].items()]
+    union = "(each the r-set of one κ branch and ordering x₊ or x₋; the same set for several is shown once)"
+    lines += ["", "## Stable words", "", union, ""]
+    lines += [f"- {w['word']}: {'; '.join(dict.fromkeys(w['windows']))}" for w in s["stable_words"]] or ["None."]
+    lines += ["", "## Feasible words", "", union, ""]
+    by = {r["word"]: r for r in doc["words"]}
+    lines += [f"- {w}: {'; '.join(dict.fromkeys(by[w]['feasible']))}" for w in s["feasible_words"]] or ["None."]
+    lines += ["", "## Not analysed", ""]
+    lines += [f"- {n['word']}: " + "; ".join(f"{f['factor']} of multiplicity {f['multiplicity']}, stable: {f['stable']}"
+                                          for f in n["factors"]) for n in s["not_analysed"]] or ["None."]
+    lines += ["", f"{s['undecided_words']} words have undecided points (ends of regions where branches meet, "
+              "0/0, or a factor not analysed); `certify pattern WORD` lists them, and census5.json keeps them.", ""]
+    return "\n".join(lines)
+
+
+def write_outputs(records: list[dict], max_length: int, out) -> dict:
+    """DIR/census5.json and DIR/CENSUS5.md, atomically; returns the document."""
+    out = Path(out)
+    doc = document(records, max_length)
+    write_atomic(out / JSON, to_json(doc))
+    write_atomic(out / MARKDOWN, markdown(doc))
+    return doc
+
+
+def written_length(out) -> int | None:
+    """The longest period of the census already in DIR/census5.json, or None."""
+    try:
+        return int(json.loads((Path(out) / JSON).read_text(encoding="utf-8"))["census"]["max_length"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def check(out, executor, max_length: int | None = None, progress=None) -> list[str]:
+    """The differences between DIR/census5.json (and CENSUS5.md) and a recomputation: every record up
+    to ``max_length`` (default: the census's) analysed again and compared; the summary and the Markdown
+    recomputed from the committed records and compared.  An empty list: the files stand."""
+    out = Path(out)
+    try:
+        doc = json.loads((out / JSON).read_text(encoding="utf-8"))
+        L = int(doc["census"]["max_length"])
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        return [f"{out / JSON}: cannot read the census ({exc})"]
+    problems = []
+    again = document(doc["words"], L)
+    if again["census"] != doc["census"]:
+        problems.append("the summary differs from the one recomputed from the records")
+    if (out / MARKDOWN).is_file() and (out / MARKDOWN).read_text(encoding="utf-8") != markdown(doc):
+        problems.append(f"{MARKDOWN} differs from the one rendered from {JSON}")
+    upto = L if max_length is None else min(L, max_length)
+    fresh = run(upto, executor, progress=progress)
+    committed = {r["word"]: r for r in doc["words"] if r["length"] <= upto}
+    if [r["word"] for r in fresh] != list(committed):
+        problems.append(f"the word classes to {upto} differ from the committed ones")
+    for rec in fresh:
+        old = committed.get(rec["word"])
+        if old is not None and old != rec:
+            keys = sorted(k for k in set(rec) | set(old) if rec.get(k) != old.get(k))
+            problems.append(f"{rec['word']}: the record differs ({', '.join(keys)})")
+    return problems
