@@ -207,3 +207,24 @@ def test_periodic_tail_and_canonical():
     assert five.periodic_tail("dd" + "abadcbcabc" * 8) == five.canonical("abadcbcabc")
     assert five.canonical("bdcbdcdabc") == "abadcbcabc"        # the mirror (a ↔ d, b ↔ c), rotated
     assert five.periodic_tail("abcdabdcbacdbadc") is None
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf])
+def test_a_nonfinite_bound_certifies_nothing(bad):
+    """rules: an inf or nan bound decides nothing.  A state whose face and next face are decided
+    with the bound 0 is not certified when the bounds of its in-face entries (or of the
+    tournament's) are nan or inf: the kernel's certification and its one-orbit count say so."""
+    from certify.numerics import five_kernel
+    p, q = (0.0, 1.0, 2.0, 3.0), (1.0, -1.0, -1.0, -1.0)      # face a, b first (test above)
+    w = np.array(five.bivector(p, q))
+    assert five_kernel._certifies(0, w, np.zeros(6), 1)
+    inface = [five.SLOT[0, k] for k in (1, 2, 3)]
+    for slots in (inface, [m for m in range(6) if m not in inface]):
+        err = np.zeros(6)
+        err[slots] = bad
+        assert not five_kernel._certifies(0, w, err, 1)
+        rows = np.array(five.float_rows(0.25)).reshape(-1)
+        out = np.empty(6)
+        _, _, certified, _ = five_kernel.orbit(0, w, err, rows, rules.TOL64, five.G64_6, rules.K64, rules.TINY64,
+                                               1, False, False, np.zeros(1, np.int8), out)
+        assert certified == 0
