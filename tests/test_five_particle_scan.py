@@ -42,11 +42,11 @@ def test_certify_word_is_the_pattern_json_or_a_timeout():
     assert scan.certify_word("abcd", "1/10", "3/10", 0.01)["status"].startswith("not finished")
 
 
-def test_the_certified_stable_word_is_an_attracting_orbit_of_the_map():
+def test_the_certified_stable_word_is_observed_attracting_in_float64():
     """certify pattern: abadcbcabc stable on ]≈0.25012, 2 − √3[.  At r = 0.26 its self-similar plane
     (the float datum of tools/five_particle_search.py, observed) perturbed by 10⁻⁶ stays on the
-    word for 3000 collisions of the reduction, and perturbed by 10⁻² it does not: the orbit attracts,
-    with a small basin (random starts at r = 0.26 all settle on another word)."""
+    word for 3000 float64 collisions of the reduction, and perturbed by 10⁻² it does not: the orbit is
+    observed to attract, with a small basin (random starts at r = 0.26 all settle on another word)."""
     import numpy as np
     search_spec = importlib.util.spec_from_file_location("search", ROOT / "tools" / "five_particle_search.py")
     search = importlib.util.module_from_spec(search_spec)
