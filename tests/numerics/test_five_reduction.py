@@ -166,7 +166,7 @@ def test_kernel_is_the_python_map():
             code, j = five.classify(i, w, bnd)
             if code:
                 break
-            bnd = tuple(rules.TOL64 * sum(a * abs(z) for a, z in zip(row, w)) for row in absrows[j])
+            bnd = rules.step_bounds(j, w, absrows, rules.TOL64)
             w = five.advance(j, w, rows)
             top = max(abs(z) for z in w)
             if top > 2.0 ** 256 or top < 2.0 ** -256:
@@ -244,7 +244,7 @@ def replay(r, p, q, collisions):
             break
         if horizon is None and five.classify(i, w, err) != (0, j):
             horizon = done
-        bnd = tuple(rules.TOL64 * sum(a * abs(z) for a, z in zip(row, w)) for row in absrows[j])
+        bnd = rules.step_bounds(j, w, absrows, rules.TOL64)
         err = rules.carry_bound(j, w, err, absrows, five.G64_6, rules.K64, rules.TINY64)
         w = five.advance(j, w, rows)
         top = max(abs(z) for z in w)
