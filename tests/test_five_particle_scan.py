@@ -38,15 +38,30 @@ def test_certify_word_is_the_pattern_json_or_a_timeout():
     res = scan.certify_word("abcd", "1/10", "3/10", 600)
     doc = json.loads(subprocess.run([sys.executable, "-m", "certify", "pattern", "abcd", "--json", "--r-range",
                                      "1/10", "3/10"], capture_output=True, text=True, cwd=ROOT).stdout)
-    assert res["status"] == "certified" and res["stable"] == doc["stable"] and res["feasible"] == doc["feasible"]
+    assert res["status"] == "analysed" and res["stable"] == doc["stable"] and res["feasible"] == doc["feasible"]
     assert scan.certify_word("abcd", "1/10", "3/10", 0.01)["status"].startswith("not finished")
 
 
-def test_the_certified_stable_word_is_an_attracting_orbit_of_the_map():
+def test_an_analysed_word_prints_its_windows(monkeypatch, capsys):
+    """A clean exit of certify pattern is "analysed" (with or without a stable window), and the
+    scan prints its windows and undecided points; a timeout prints its status."""
+    import collections
+    monkeypatch.setattr(scan, "scan", lambda *a: ({0.25: collections.Counter(["abcd", "abdc"])}, 0.0))
+    results = {"abcd": {"word": "abcd", "status": "analysed", "seconds": 1.0, "stable": [], "feasible": [],
+                        "undecided": 0},
+               "abdc": {"word": "abdc", "status": "not finished in 1 s"}}
+    monkeypatch.setattr(scan, "certify_word", lambda w, *a: results[w])
+    assert scan.main(["--certify", "--r-range", "0.2", "0.3", "1", "--below", "0.1", "0.2", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "abcd: stable on none; feasible on none; 0 undecided point(s)" in out
+    assert "abdc: not finished in 1 s" in out
+
+
+def test_the_certified_stable_word_is_observed_attracting_in_float64():
     """certify pattern: abadcbcabc stable on ]≈0.25012, 2 − √3[.  At r = 0.26 its self-similar plane
     (the float datum of tools/five_particle_search.py, observed) perturbed by 10⁻⁶ stays on the
-    word for 3000 collisions of the reduction, and perturbed by 10⁻² it does not: the orbit attracts,
-    with a small basin (random starts at r = 0.26 all settle on another word)."""
+    word for 3000 float64 collisions of the reduction, and perturbed by 10⁻² it does not: the orbit is
+    observed to attract, with a small basin (random starts at r = 0.26 all settle on another word)."""
     import numpy as np
     search_spec = importlib.util.spec_from_file_location("search", ROOT / "tools" / "five_particle_search.py")
     search = importlib.util.module_from_spec(search_spec)

@@ -11,8 +11,8 @@ are certified, so the tail each orbit settles on (its last letters repeating wit
 most ``--longest`` letters, four times) is *observed*.  With ``--certify`` each distinct tail of at
 most ``--max-length`` letters is given to ``certify pattern WORD --json`` (one at a time, at most
 ``--timeout`` seconds each, over ``--window LO HI``): its stable and feasible windows, with exact
-ends, are *certified*; a word that ran out of time is listed as such, and the points the analysis
-left undecided are counted.
+ends, are *certified*; a clean run is listed as "analysed" (whether or not it found a stable window),
+a word that ran out of time as such, and the points the analysis left undecided are counted.
 """
 from __future__ import annotations
 
@@ -60,7 +60,7 @@ def certify_word(word: str, lo: str, hi: str, timeout: float) -> dict:
     if done.returncode != 0:
         return {"word": word, "status": f"exit {done.returncode}: {done.stderr.strip()[-300:]}", "seconds": seconds}
     data = json.loads(done.stdout)
-    return {"word": word, "status": "certified", "seconds": seconds, "stable": data.get("stable", []),
+    return {"word": word, "status": "analysed", "seconds": seconds, "stable": data.get("stable", []),
             "feasible": data.get("feasible", []), "undecided": len(data.get("undecided", []))}
 
 
@@ -115,7 +115,7 @@ def main(argv=None) -> int:
                 continue
             res = certify_word(w, *args.window, args.timeout)
             results.append(res)
-            if res["status"] == "certified":
+            if res["status"] == "analysed":
                 print(f"  {w}: stable on {windows_text(res['stable'])}; feasible on {windows_text(res['feasible'])}; "
                       f"{res['undecided']} undecided point(s); {res['seconds']} s", flush=True)
             else:

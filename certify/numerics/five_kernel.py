@@ -44,7 +44,7 @@ def _classify(i, w, bnd):
             b = bnd[SLOT[i, k]]
             if x < -b:
                 return 3, -1
-            if x <= b:
+            if not (x > b):             # margin_sign 0: a nan bound decides nothing
                 short = True
     if short:
         return 2, -1
@@ -58,6 +58,22 @@ def _classify(i, w, bnd):
         if wins:
             return 0, j
     return 1, -1
+
+
+@njit(cache=True)
+def _certifies(i, w, err, j):
+    """rules.certifies for the bivector: five_reduction.classify at the bounds ``err`` decides
+    the face j, i.e. −ω_ik > err for the three k ≠ i and ω_jk > err for the two k ≠ i, j (the
+    tournament's winner is unique).  Written positively: a nan or inf bound decides nothing
+    (every comparison with it fails)."""
+    for k in range(4):
+        if k == i:
+            continue
+        if not (-_entry(w, i, k) > err[SLOT[i, k]]):
+            return False
+        if k != j and not (_entry(w, j, k) > err[SLOT[j, k]]):
+            return False
+    return True
 
 
 @njit(cache=True)
@@ -79,8 +95,7 @@ def orbit(i0, w0, e0, rows, tol, g, kappa, tiny, collisions, strict, words, lett
     for _ in range(collisions):
         code, j = _classify(i, w, bnd)
         if code == 0 and certified < 0:
-            c2, j2 = _classify(i, w, err)
-            if not (c2 == 0 and j2 == j):
+            if not _certifies(i, w, err, j):
                 certified = done
                 if strict:
                     code = HORIZON

@@ -125,10 +125,17 @@ def advance(j: int, n, rows) -> tuple:
 
 def step_bounds(j: int, n, absrows, tolerance) -> tuple:
     """The rounding bounds of the entries of :func:`advance` (j, n): TOL · (|K| |n|)_m,
-    K = cof(K_j) (``absrows``: the matrices of absolute values)."""
-    K = absrows[j]
+    K = cof(K_j) (``absrows``: the matrices of absolute values), for a vector of any length
+    (the five-particle bivectors too, :mod:`.five_reduction`), the sum left to right as the
+    kernels add it."""
     a = [abs(z) for z in n]
-    return tuple(tolerance * (K[m][0] * a[0] + K[m][1] * a[1] + K[m][2] * a[2]) for m in range(3))
+    bounds = []
+    for row in absrows[j]:
+        s = row[0] * a[0]
+        for c in range(1, len(a)):
+            s = s + row[c] * a[c]
+        bounds.append(tolerance * s)
+    return tuple(bounds)
 
 
 # --- the accumulated error bound (the certified horizon) ----------------------

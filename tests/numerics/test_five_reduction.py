@@ -166,7 +166,7 @@ def test_kernel_is_the_python_map():
             code, j = five.classify(i, w, bnd)
             if code:
                 break
-            bnd = tuple(rules.TOL64 * sum(a * abs(z) for a, z in zip(row, w)) for row in absrows[j])
+            bnd = rules.step_bounds(j, w, absrows, rules.TOL64)
             w = five.advance(j, w, rows)
             top = max(abs(z) for z in w)
             if top > 2.0 ** 256 or top < 2.0 ** -256:
@@ -207,3 +207,71 @@ def test_periodic_tail_and_canonical():
     assert five.periodic_tail("dd" + "abadcbcabc" * 8) == five.canonical("abadcbcabc")
     assert five.canonical("bdcbdcdabc") == "abadcbcabc"        # the mirror (a ↔ d, b ↔ c), rotated
     assert five.periodic_tail("abcdabdcbacdbadc") is None
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf])
+def test_a_nonfinite_bound_certifies_nothing(bad):
+    """rules: an inf or nan bound decides nothing.  A state whose face and next face are decided
+    with the bound 0 is not certified when the bounds of its in-face entries (or of the
+    tournament's) are nan or inf: the kernel's certification and its one-orbit count say so."""
+    from certify.numerics import five_kernel
+    p, q = (0.0, 1.0, 2.0, 3.0), (1.0, -1.0, -1.0, -1.0)      # face a, b first (test above)
+    w = np.array(five.bivector(p, q))
+    assert five_kernel._certifies(0, w, np.zeros(6), 1)
+    inface = [five.SLOT[0, k] for k in (1, 2, 3)]
+    for slots in (inface, [m for m in range(6) if m not in inface]):
+        err = np.zeros(6)
+        err[slots] = bad
+        assert not five_kernel._certifies(0, w, err, 1)
+        rows = np.array(five.float_rows(0.25)).reshape(-1)
+        out = np.empty(6)
+        _, _, certified, _ = five_kernel.orbit(0, w, err, rows, rules.TOL64, five.G64_6, rules.K64, rules.TINY64,
+                                               1, False, False, np.zeros(1, np.int8), out)
+        assert certified == 0
+
+
+def replay(r, p, q, collisions):
+    """The float64 engine's orbit from the datum (p, q) on face b, replayed in Python: the margins
+    TOL · |Ĉ||ω| decide each step (five.classify), rules.carry_bound carries err, the power-of-2
+    rescaling as in the kernel; (certified horizon, collisions done, rescalings)."""
+    rows = five.float_rows(r)
+    absrows = [[[abs(z) for z in row] for row in K] for K in rows]
+    w, err = five.start(p, q)
+    bnd, i, horizon, rescaled = err, 1, None, 0
+    for done in range(collisions):
+        code, j = five.classify(i, w, bnd)
+        if code:
+            break
+        if horizon is None and five.classify(i, w, err) != (0, j):
+            horizon = done
+        bnd = rules.step_bounds(j, w, absrows, rules.TOL64)
+        err = rules.carry_bound(j, w, err, absrows, five.G64_6, rules.K64, rules.TINY64)
+        w = five.advance(j, w, rows)
+        top = max(abs(z) for z in w)
+        if top > 2.0 ** 256 or 0 < top < 2.0 ** -256:
+            f = math.ldexp(1.0, -math.frexp(top)[1])
+            w, bnd, err = (tuple(z * f for z in w), tuple(z * f for z in bnd),
+                           tuple(e * f + rules.TINY64 for e in err))
+            rescaled += 1
+        i = j
+    else:
+        done = collisions
+    return (done if horizon is None else horizon), done, rescaled
+
+
+@pytest.mark.parametrize("r", [0.2, 0.26, 0.5, 0.9])
+def test_engine_certified_count_is_the_replayed_horizon(r):
+    """The count the engine reports as certified is exactly the horizon of the Python replay
+    (classify at the margins, rules.carry_bound, the rescaling), for random data and for the
+    same data scaled by 2^±150 (the bivector then rescaled at its first collision)."""
+    p0, q0 = five.random_data(3, seed=7)
+    scale = np.array([1.0, 2.0 ** 150, 2.0 ** -150])[:, None]
+    p0, q0 = p0 * scale, q0 * scale
+    orbits = five.iterate([r], p0, q0, collisions=300)
+    reached = 0
+    for b in range(len(p0)):
+        horizon, done, rescaled = replay(r, p0[b], q0[b], 300)
+        assert int(orbits.certified[0, b]) == horizon and int(orbits.collisions[0, b]) == done
+        assert rescaled or b == 0
+        reached += horizon < done
+    assert reached
