@@ -1435,7 +1435,8 @@ def check_cells(doc: dict) -> list[str]:
 
 def check_orbits(doc: dict, rows=None) -> list[str]:
     """Each orbit of the rows (default: every r) classified again by identify (class, word,
-    branch), each attracting one re-decided by ``orbit_at`` and each island one by the island
+    branch, and the collision it is certified from: inside the longer run for an orbit only
+    that run proves), each attracting one re-decided by ``orbit_at`` and each island one by the island
     theorem at r; the counts recounted; the island's share and rotation number recomputed."""
     problems = []
     collisions = doc["parameters"]["collisions"]
@@ -1451,9 +1452,11 @@ def check_orbits(doc: dict, rows=None) -> list[str]:
             if o["class"] == UNRESOLVED and o.get("unresolved") != x["unresolved"]:
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: unresolved "
                                 f"{o.get('unresolved')} in the atlas, {x['unresolved']} by orbit_at")
-            if (x["class"], x["word"], x["branch"]) != (o["class"], o["word"], o["branch"]):
+            if (x["class"], x["word"], x["branch"], x["certified_from"]) != (
+                    o["class"], o["word"], o["branch"], o.get("certified_from")):
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: {o['class']} "
-                                f"{o['word'] or ''} in the atlas, {x['class']} {x['word'] or ''} by identify")
+                                f"{o['word'] or ''} certified from {o.get('certified_from')} in the atlas, "
+                                f"{x['class']} {x['word'] or ''} from {x['certified_from']} by identify")
             if o["class"] == ATTRACTING and name(o["word"], o["branch"]) not in _attracting_at(o["word"], fq):
                 problems.append(f"r = {row['r']}: {name(o['word'], o['branch'])} is not attracting there (orbit_at)")
             if o["class"] == ISLAND and not ident.elliptic(fq):

@@ -476,7 +476,8 @@ def _no_period_rule_one(rec):
 def test_a_run_with_no_period_is_run_again_longer_and_its_class_checked():
     """r = 28/33, 5000 collisions: two of the tool's 8 orbits show no period (the run settles
     on abacba(bc)^2abcb after its middle); run again 4× longer they are proved attracting.
-    Marking one unresolved again, or not run again, makes the check fail."""
+    Marking one unresolved again, or not run again, or certified from a collision of the first
+    run, makes the check fail."""
     data = atlas.data_grid(0)
     rec = atlas.r_job("28/33", data, 5000)
     again = [o for o in rec["orbits"] if o["rerun"] == atlas.LATE * 5000]
@@ -493,6 +494,11 @@ def test_a_run_with_no_period_is_run_again_longer_and_its_class_checked():
     bad["r"][0]["counts"] = atlas._counts(bad["r"][0]["orbits"])
     problems = atlas.check_orbits(bad)
     assert any("run again" in p for p in problems) and any("by identify" in p for p in problems)
+    bad = copy.deepcopy(doc)                       # certified at a collision of the first run: not what proves it
+    o = bad["r"][0]["orbits"][i]
+    assert o["certified_from"] > 5000
+    o["certified_from"] = 4000
+    assert any("certified from 4000" in p for p in atlas.check_orbits(bad))
 
 
 def test_an_older_record_is_upgraded_by_running_only_the_late_orbits(tmp_path):
