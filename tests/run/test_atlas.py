@@ -469,7 +469,9 @@ def _no_period_rule_one(rec):
     for i, o in enumerate(old["orbits"]):
         if o["rerun"] is not None and o["class"] != atlas.UNRESOLVED:
             x = atlas.ident.classify(q, o["theta0"], o["phi0"], rec["collisions"])
-            old["orbits"][i] = atlas._orbit_record(x, None, atlas.NOTHING, o["theta0"], o["phi0"], atlas._fq(rec["r"]))
+            fq = atlas._fq(rec["r"])
+            kind = atlas.unresolved_kind(x.word, fq)
+            old["orbits"][i] = atlas._orbit_record(x, None, kind, o["theta0"], o["phi0"], fq)
     return old
 
 
@@ -585,7 +587,8 @@ def test_the_committed_atlas_orbits_proved_by_the_longer_run_check():
     o = late[0]
     x = atlas.ident.classify(Fraction(row["r"]), o["theta0"], o["phi0"], doc["parameters"]["collisions"])
     bad = copy.deepcopy(sub)
-    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOTHING, o["theta0"], o["phi0"], atlas._fq(row["r"]))
+    fq = atlas._fq(row["r"])
+    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.unresolved_kind(x.word, fq), o["theta0"], o["phi0"], fq)
     bad["counts"] = atlas._counts(bad["orbits"])
     assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
     assert all(w == atlas.least_rotation(w) for w in doc["observed_words"])
