@@ -403,14 +403,20 @@ def test_a_wrong_unresolved_kind_or_rerun_is_caught(doc, chaos_doc):
     assert any("no such kind" in p for p in atlas.check_orbits(bad, [row]))
 
 
+def _committed(version=4):
+    """reports/atlas.json, or the test skipped when it is absent or older than ``version``."""
+    from certify.run.files import load_findings
+    doc = load_findings("atlas.json")
+    if doc is None or doc["version"] < version:
+        pytest.skip(f"the committed atlas predates version {version} (regenerate: docs/atlas.md)")
+    return doc
+
+
 def test_the_committed_atlas_misses_no_seed_nor_family_member(monkeypatch):
     """reports/atlas.json: every known attractor and family member has its record and every
     family its three certified members and certified prediction; dropping one is caught."""
-    from certify.run.files import load_findings
     monkeypatch.setattr(atlas, "FAMILIES", FAMILIES)
-    doc = load_findings("atlas.json")
-    if doc is None or doc["version"] < atlas.VERSION:
-        pytest.skip("the committed atlas predates version 2 (regenerate: python -m certify atlas)")
+    doc = _committed(atlas.VERSION)
     assert atlas.check_seeds(doc) == [] and atlas.check_families(doc) == []
     assert {f["family"] for f in doc["families"]} == {rule.name for rule in FAMILIES}
     member = doc["families"][-1]["members"][1]["word"]
@@ -424,10 +430,7 @@ def test_the_committed_atlas_horseshoes_intervals_and_loops_check():
     """reports/atlas.json: its summaries, intervals and loops derived again from its rows; the
     horseshoes of two sampled r proved again from their printed boxes and searched again;
     a horseshoe dropped, a loop's rotation number or a share's interval altered is caught."""
-    from certify.run.files import load_findings
-    doc = load_findings("atlas.json")
-    if doc is None or doc["version"] < atlas.VERSION:
-        pytest.skip("the committed atlas predates version 4 (regenerate: docs/atlas.md)")
+    doc = _committed(atlas.VERSION)
     assert atlas.check_summaries(doc) == []
     proved = [row for row in doc["r"] if (row["horseshoe"] or {}).get("certified")]
     assert proved and doc["summary"]["horseshoes"]["proved"] == len(proved)
@@ -563,14 +566,6 @@ def test_a_window_end_resonance_is_decided_in_one_place(doc):
     bad = copy.deepcopy(doc)
     bad["summary"]["interior_ends"]["resonant_upper"] += 1
     assert any("interior_ends" in p for p in atlas.check_ends(bad))
-
-
-def _committed(version=4):
-    from certify.run.files import load_findings
-    doc = load_findings("atlas.json")
-    if doc is None or doc["version"] < version:
-        pytest.skip(f"the committed atlas predates version {version} (regenerate: docs/atlas.md)")
-    return doc
 
 
 def test_the_committed_atlas_orbits_proved_by_the_longer_run_check():
