@@ -1566,15 +1566,22 @@ def check_summaries(doc: dict) -> list[str]:
     return problems
 
 
-def check_ends(doc: dict) -> list[str]:
-    """Each window's upper end's rotation record (:func:`end_rotation`: resonance, island end)
-    and the interior ends' counts, decided again."""
+def check_rotations(attractors: list[dict]) -> list[str]:
+    """Each window's upper end's rotation record (:func:`end_rotation`: resonance, island end),
+    decided again."""
     problems = []
-    for a in doc["attractors"]:
+    for a in attractors:
         for w in a["windows"]:
             if w["rotation"] != end_rotation(w["hi"]):
                 problems.append(f"{a['name']}: the rotation number at the upper end ≈ {w['hi']['digits']} "
                                 f"is {w['rotation']} in the atlas, {end_rotation(w['hi'])} decided again")
+    return problems
+
+
+def check_ends(doc: dict) -> list[str]:
+    """Each window's upper end's rotation record (:func:`check_rotations`) and the interior
+    ends' counts, decided again."""
+    problems = check_rotations(doc["attractors"])
     if doc["summary"]["interior_ends"] != interior_ends(doc["attractors"]):
         problems.append(f"summary interior_ends: {doc['summary']['interior_ends']} in the atlas, "
                         f"{interior_ends(doc['attractors'])} decided again")
