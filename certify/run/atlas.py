@@ -24,7 +24,7 @@ data), and the island's area on the b-section is certified as an interval
 Families are rules (:data:`FAMILIES`): member k's word and the resonance at which its window
 closes, each member and the next one predicted certified by ``orbit``.  Every window end gets
 the island's rotation number (:func:`end_rotation`: a resonance p/q, q ≤ :data:`RESONANCE_Q`,
-decided exactly by :func:`~certify.patterns.island_theorem.resonance_of`, else the certified ρ
+decided exactly by :func:`~certify.patterns.island_theorem.end_rotation`, else the certified ρ
 and the nearest p/q with q ≤ :data:`NEAR_Q`, said "near": observed).
 
 At each sampled r the horseshoe search of ``certify chaos`` runs (:func:`chaos_job`): where it
@@ -690,7 +690,7 @@ _ROTATIONS: dict = {}
 
 def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
     """The island's rotation number at a window end in [3 − 2√2, 1]: a resonance p/q (q ≤ Q)
-    decided exactly by :func:`~certify.patterns.island_theorem.resonance_of` (1/2 at 3 − 2√2,
+    decided exactly by :func:`~certify.patterns.island_theorem.end_rotation` (1/2 at 3 − 2√2,
     1/4 at r = 1: the island's own ends), else ρ (8 certified digits) and the nearest p/q with
     q ≤ :data:`NEAR_Q` ("near", with the distance: an observation); None below 3 − 2√2.
     Computed once per end (the same end anywhere in the atlas)."""
