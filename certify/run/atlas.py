@@ -255,12 +255,17 @@ def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
     return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
 
 
+def late_kind(kind: str | None, observed: str | None) -> bool:
+    """Whether an unresolved orbit of this kind (:func:`unresolved_kind`) and observed word is
+    run again :data:`LATE` times longer (:func:`classify_late`): a long transient (its word
+    attracts at r), or a run with no period at all (nothing recognised, no word repeated): it
+    may settle later than the run."""
+    return kind == TRANSIENT or (kind == NOTHING and observed is None)
+
+
 def late(o: dict) -> bool:
-    """Whether an unresolved orbit record is run again :data:`LATE` times longer
-    (:func:`classify_late`): a long transient (its word attracts at r), or a run with no period
-    at all (nothing recognised, no word repeated): it may settle later than the run."""
-    return o["class"] == UNRESOLVED and (o["unresolved"] == TRANSIENT or
-                                         (o["unresolved"] == NOTHING and o["observed"] is None))
+    """Whether an orbit record is unresolved and run again longer (:func:`late_kind`)."""
+    return o["class"] == UNRESOLVED and late_kind(o["unresolved"], o["observed"])
 
 
 def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
@@ -272,7 +277,7 @@ def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     if x.cls != UNRESOLVED:
         return x, None, None
     kind = unresolved_kind(x.word, fq)
-    if not late({"class": x.cls, "unresolved": kind, "observed": x.word}):
+    if not late_kind(kind, x.word):
         return x, None, kind
     y = ident.classify(q, th, ph, LATE * collisions)
     return (y, LATE * collisions, None) if y.cls != UNRESOLVED else (x, LATE * collisions, kind)
