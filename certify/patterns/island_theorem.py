@@ -925,6 +925,7 @@ def end_rotation(alg: Algebraic, Q: int) -> EndRotation | None:
             mp = s.r.minimal_polynomial()
             if s.p == cand.numerator and (mp == m or mp == -m) and s.r == alg:
                 found = (s.p, s.q)
+                break
     return EndRotation(False, (lo, hi), found)
 
 

@@ -24,7 +24,7 @@ data), and the island's area on the b-section is certified as an interval
 Families are rules (:data:`FAMILIES`): member k's word and the resonance at which its window
 closes, each member and the next one predicted certified by ``orbit``.  Every window end gets
 the island's rotation number (:func:`end_rotation`: a resonance p/q, q ≤ :data:`RESONANCE_Q`,
-decided exactly by :func:`~certify.patterns.island_theorem.resonance_of`, else the certified ρ
+decided exactly by :func:`~certify.patterns.island_theorem.end_rotation`, else the certified ρ
 and the nearest p/q with q ≤ :data:`NEAR_Q`, said "near": observed).
 
 At each sampled r the horseshoe search of ``certify chaos`` runs (:func:`chaos_job`): where it
@@ -255,12 +255,17 @@ def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
     return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
 
 
+def late_kind(kind: str | None, observed: str | None) -> bool:
+    """Whether an unresolved orbit of this kind (:func:`unresolved_kind`) and observed word is
+    run again :data:`LATE` times longer (:func:`classify_late`): a long transient (its word
+    attracts at r), or a run with no period at all (nothing recognised, no word repeated): it
+    may settle later than the run."""
+    return kind == TRANSIENT or (kind == NOTHING and observed is None)
+
+
 def late(o: dict) -> bool:
-    """Whether an unresolved orbit record is run again :data:`LATE` times longer
-    (:func:`classify_late`): a long transient (its word attracts at r), or a run with no period
-    at all (nothing recognised, no word repeated): it may settle later than the run."""
-    return o["class"] == UNRESOLVED and (o["unresolved"] == TRANSIENT or
-                                         (o["unresolved"] == NOTHING and o["observed"] is None))
+    """Whether an orbit record is unresolved and run again longer (:func:`late_kind`)."""
+    return o["class"] == UNRESOLVED and late_kind(o["unresolved"], o["observed"])
 
 
 def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
@@ -272,7 +277,7 @@ def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     if x.cls != UNRESOLVED:
         return x, None, None
     kind = unresolved_kind(x.word, fq)
-    if not late({"class": x.cls, "unresolved": kind, "observed": x.word}):
+    if not late_kind(kind, x.word):
         return x, None, kind
     y = ident.classify(q, th, ph, LATE * collisions)
     return (y, LATE * collisions, None) if y.cls != UNRESOLVED else (x, LATE * collisions, kind)
@@ -690,7 +695,7 @@ _ROTATIONS: dict = {}
 
 def end_rotation(end: dict, Q: int = RESONANCE_Q) -> dict | None:
     """The island's rotation number at a window end in [3 − 2√2, 1]: a resonance p/q (q ≤ Q)
-    decided exactly by :func:`~certify.patterns.island_theorem.resonance_of` (1/2 at 3 − 2√2,
+    decided exactly by :func:`~certify.patterns.island_theorem.end_rotation` (1/2 at 3 − 2√2,
     1/4 at r = 1: the island's own ends), else ρ (8 certified digits) and the nearest p/q with
     q ≤ :data:`NEAR_Q` ("near", with the distance: an observation); None below 3 − 2√2.
     Computed once per end (the same end anywhere in the atlas)."""
@@ -1435,7 +1440,8 @@ def check_cells(doc: dict) -> list[str]:
 
 def check_orbits(doc: dict, rows=None) -> list[str]:
     """Each orbit of the rows (default: every r) classified again by identify (class, word,
-    branch), each attracting one re-decided by ``orbit_at`` and each island one by the island
+    branch, and the collision it is certified from: inside the longer run for an orbit only
+    that run proves), each attracting one re-decided by ``orbit_at`` and each island one by the island
     theorem at r; the counts recounted; the island's share and rotation number recomputed."""
     problems = []
     collisions = doc["parameters"]["collisions"]
@@ -1451,9 +1457,11 @@ def check_orbits(doc: dict, rows=None) -> list[str]:
             if o["class"] == UNRESOLVED and o.get("unresolved") != x["unresolved"]:
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: unresolved "
                                 f"{o.get('unresolved')} in the atlas, {x['unresolved']} by orbit_at")
-            if (x["class"], x["word"], x["branch"]) != (o["class"], o["word"], o["branch"]):
+            if (x["class"], x["word"], x["branch"], x["certified_from"]) != (
+                    o["class"], o["word"], o["branch"], o.get("certified_from")):
                 problems.append(f"r = {row['r']}, θ0 = {o['theta0']}, φ0 = {o['phi0']}: {o['class']} "
-                                f"{o['word'] or ''} in the atlas, {x['class']} {x['word'] or ''} by identify")
+                                f"{o['word'] or ''} certified from {o.get('certified_from')} in the atlas, "
+                                f"{x['class']} {x['word'] or ''} from {x['certified_from']} by identify")
             if o["class"] == ATTRACTING and name(o["word"], o["branch"]) not in _attracting_at(o["word"], fq):
                 problems.append(f"r = {row['r']}: {name(o['word'], o['branch'])} is not attracting there (orbit_at)")
             if o["class"] == ISLAND and not ident.elliptic(fq):
@@ -1563,15 +1571,22 @@ def check_summaries(doc: dict) -> list[str]:
     return problems
 
 
-def check_ends(doc: dict) -> list[str]:
-    """Each window's upper end's rotation record (:func:`end_rotation`: resonance, island end)
-    and the interior ends' counts, decided again."""
+def check_rotations(attractors: list[dict]) -> list[str]:
+    """Each window's upper end's rotation record (:func:`end_rotation`: resonance, island end),
+    decided again."""
     problems = []
-    for a in doc["attractors"]:
+    for a in attractors:
         for w in a["windows"]:
             if w["rotation"] != end_rotation(w["hi"]):
                 problems.append(f"{a['name']}: the rotation number at the upper end ≈ {w['hi']['digits']} "
                                 f"is {w['rotation']} in the atlas, {end_rotation(w['hi'])} decided again")
+    return problems
+
+
+def check_ends(doc: dict) -> list[str]:
+    """Each window's upper end's rotation record (:func:`check_rotations`) and the interior
+    ends' counts, decided again."""
+    problems = check_rotations(doc["attractors"])
     if doc["summary"]["interior_ends"] != interior_ends(doc["attractors"]):
         problems.append(f"summary interior_ends: {doc['summary']['interior_ends']} in the atlas, "
                         f"{interior_ends(doc['attractors'])} decided again")

@@ -403,14 +403,20 @@ def test_a_wrong_unresolved_kind_or_rerun_is_caught(doc, chaos_doc):
     assert any("no such kind" in p for p in atlas.check_orbits(bad, [row]))
 
 
+def _committed(version=4):
+    """reports/atlas.json, or the test skipped when it is absent or older than ``version``."""
+    from certify.run.files import load_findings
+    doc = load_findings("atlas.json")
+    if doc is None or doc["version"] < version:
+        pytest.skip(f"the committed atlas predates version {version} (regenerate: docs/atlas.md)")
+    return doc
+
+
 def test_the_committed_atlas_misses_no_seed_nor_family_member(monkeypatch):
     """reports/atlas.json: every known attractor and family member has its record and every
     family its three certified members and certified prediction; dropping one is caught."""
-    from certify.run.files import load_findings
     monkeypatch.setattr(atlas, "FAMILIES", FAMILIES)
-    doc = load_findings("atlas.json")
-    if doc is None or doc["version"] < atlas.VERSION:
-        pytest.skip("the committed atlas predates version 2 (regenerate: python -m certify atlas)")
+    doc = _committed(atlas.VERSION)
     assert atlas.check_seeds(doc) == [] and atlas.check_families(doc) == []
     assert {f["family"] for f in doc["families"]} == {rule.name for rule in FAMILIES}
     member = doc["families"][-1]["members"][1]["word"]
@@ -424,10 +430,7 @@ def test_the_committed_atlas_horseshoes_intervals_and_loops_check():
     """reports/atlas.json: its summaries, intervals and loops derived again from its rows; the
     horseshoes of two sampled r proved again from their printed boxes and searched again;
     a horseshoe dropped, a loop's rotation number or a share's interval altered is caught."""
-    from certify.run.files import load_findings
-    doc = load_findings("atlas.json")
-    if doc is None or doc["version"] < atlas.VERSION:
-        pytest.skip("the committed atlas predates version 4 (regenerate: docs/atlas.md)")
+    doc = _committed(atlas.VERSION)
     assert atlas.check_summaries(doc) == []
     proved = [row for row in doc["r"] if (row["horseshoe"] or {}).get("certified")]
     assert proved and doc["summary"]["horseshoes"]["proved"] == len(proved)
@@ -469,14 +472,17 @@ def _no_period_rule_one(rec):
     for i, o in enumerate(old["orbits"]):
         if o["rerun"] is not None and o["class"] != atlas.UNRESOLVED:
             x = atlas.ident.classify(q, o["theta0"], o["phi0"], rec["collisions"])
-            old["orbits"][i] = atlas._orbit_record(x, None, atlas.NOTHING, o["theta0"], o["phi0"], atlas._fq(rec["r"]))
+            fq = atlas._fq(rec["r"])
+            kind = atlas.unresolved_kind(x.word, fq)
+            old["orbits"][i] = atlas._orbit_record(x, None, kind, o["theta0"], o["phi0"], fq)
     return old
 
 
 def test_a_run_with_no_period_is_run_again_longer_and_its_class_checked():
     """r = 28/33, 5000 collisions: two of the tool's 8 orbits show no period (the run settles
     on abacba(bc)^2abcb after its middle); run again 4× longer they are proved attracting.
-    Marking one unresolved again, or not run again, makes the check fail."""
+    Marking one unresolved again, or not run again, or certified from a collision of the first
+    run, makes the check fail."""
     data = atlas.data_grid(0)
     rec = atlas.r_job("28/33", data, 5000)
     again = [o for o in rec["orbits"] if o["rerun"] == atlas.LATE * 5000]
@@ -493,6 +499,11 @@ def test_a_run_with_no_period_is_run_again_longer_and_its_class_checked():
     bad["r"][0]["counts"] = atlas._counts(bad["r"][0]["orbits"])
     problems = atlas.check_orbits(bad)
     assert any("run again" in p for p in problems) and any("by identify" in p for p in problems)
+    bad = copy.deepcopy(doc)                       # certified at a collision of the first run: not what proves it
+    o = bad["r"][0]["orbits"][i]
+    assert o["certified_from"] > 5000
+    o["certified_from"] = 4000
+    assert any("certified from 4000" in p for p in atlas.check_orbits(bad))
 
 
 def test_an_older_record_is_upgraded_by_running_only_the_late_orbits(tmp_path):
@@ -557,14 +568,6 @@ def test_a_window_end_resonance_is_decided_in_one_place(doc):
     assert any("interior_ends" in p for p in atlas.check_ends(bad))
 
 
-def _committed(version=4):
-    from certify.run.files import load_findings
-    doc = load_findings("atlas.json")
-    if doc is None or doc["version"] < version:
-        pytest.skip(f"the committed atlas predates version {version} (regenerate: docs/atlas.md)")
-    return doc
-
-
 def test_the_committed_atlas_orbits_proved_by_the_longer_run_check():
     """reports/atlas.json: the orbits of r = 28/33 that only the longer run proves (their first
     run shows no period) are proved again by identify; one marked unresolved is caught; the
@@ -579,7 +582,8 @@ def test_the_committed_atlas_orbits_proved_by_the_longer_run_check():
     o = late[0]
     x = atlas.ident.classify(Fraction(row["r"]), o["theta0"], o["phi0"], doc["parameters"]["collisions"])
     bad = copy.deepcopy(sub)
-    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOTHING, o["theta0"], o["phi0"], atlas._fq(row["r"]))
+    fq = atlas._fq(row["r"])
+    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.unresolved_kind(x.word, fq), o["theta0"], o["phi0"], fq)
     bad["counts"] = atlas._counts(bad["orbits"])
     assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
     assert all(w == atlas.least_rotation(w) for w in doc["observed_words"])
@@ -591,9 +595,44 @@ def test_the_committed_atlas_window_ends_are_decided_again():
     above 3 − 2√2 decided again (island_theorem.end_rotation); a moved resonance is caught."""
     doc = _committed()
     atts = [a for a in doc["attractors"] if any((w["rotation"] or {}).get("resonance") for w in a["windows"])][:6]
-    sub = {**doc, "attractors": atts, "summary": {**doc["summary"], "interior_ends": atlas.interior_ends(atts)}}
-    assert atlas.check_ends(sub) == []
-    bad = copy.deepcopy(sub)
-    w = next(w for w in bad["attractors"][-1]["windows"] if (w["rotation"] or {}).get("resonance"))
+    assert atlas.check_rotations(atts) == []
+    bad = copy.deepcopy(atts)
+    w = next(w for w in bad[-1]["windows"] if (w["rotation"] or {}).get("resonance"))
     w["rotation"]["resonance"] = [w["rotation"]["resonance"][0] + 1, w["rotation"]["resonance"][1]]
-    assert any("decided again" in p for p in atlas.check_ends(bad))
+    assert any("decided again" in p for p in atlas.check_rotations(bad))
+
+
+@pytest.mark.slow
+def test_the_committed_atlas_interior_ends_are_decided_again():
+    """reports/atlas.json: every window's rotation record and the summary's counts of interior
+    ends (as committed) decided again from all its attractors (check_ends); a count moved is
+    caught. About 25 s measured on 2 busy cores."""
+    doc = _committed()
+    assert atlas.check_ends(doc) == []
+    bad = copy.deepcopy(doc)
+    bad["summary"]["interior_ends"]["resonant_upper"] -= 1
+    assert any("interior_ends" in p for p in atlas.check_ends(bad))
+
+
+def _longer_run_sample(doc, step=10):
+    """The committed rows cut to every ``step``-th orbit (in the atlas's order) that only the
+    longer run proves (rerun set, class certified), each row with its counts recounted."""
+    late = [(row, o) for row in doc["r"] for o in row["orbits"] if o["rerun"] and o["class"] != atlas.UNRESOLVED]
+    rows: dict = {}
+    for row, o in late[::step]:
+        rows.setdefault(row["r"], (row, []))[1].append(o)
+    return len(late), [{**row, "orbits": os, "counts": atlas._counts(os), "total": len(os)}
+                       for row, os in rows.values()]
+
+
+@pytest.mark.slow
+def test_the_committed_atlas_longer_run_orbits_sampled_check():
+    """reports/atlas.json: every 10th of the orbits only the longer run proves (21 of 207, over
+    the r where they are) classified again by identify, run again 4× longer, with their class,
+    word, branch and the collision they are certified from (check_orbits); 45 s measured on
+    2 busy cores."""
+    doc = _committed()
+    n, rows = _longer_run_sample(doc)
+    assert n == doc["summary"]["unresolved_by_kind"]["certified by a longer run"]
+    assert sum(row["total"] for row in rows) == len(range(0, n, 10))
+    assert atlas.check_orbits(doc, rows) == []
