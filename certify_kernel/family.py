@@ -316,7 +316,7 @@ def arcs(K: list, N1: int, r_max: Fraction, Cu: Fraction) -> dict:
     if not (cmax > Fraction(-1, 2) and (N1 + 1) ** 2 * RHO <= N1 ** 2):
         raise NotVerified("θ_max < 2π/3 or the decrease of n²ρ̄^(n−1) is not proved")
     s3 = sqrt(Iv((1 - cmax) / 2)) * (1 + 2 * cmax)                # sin(3θ_max/2)
-    h2max = ((1 + r_max) / 2) ** 2
+    h2max = at(H, r_max) ** 2
     dn = N1 * RHO ** (N1 - 1)
     m1 = 2 - Cu * h2max * N1 * dn
     m2 = s3 - Cu * h2max * dn
@@ -338,8 +338,11 @@ def velocities(K: list, N1: int, facts: dict) -> dict:
     −r^{j−1}[rh s̃_{j+1} − u(K₁₁s̃_j − r s̃_{j−1})].  For 1 ≤ k ≤ n − 1, 1 ≤ s̃_k ≤ n (θ ≤ kθ ≤ π − θ), and
     K₁₁ sin jθ − r sin(j−1)θ = sin jθ(K₁₁ − r cos θ) + r cos jθ sin θ ≥ sin θ(K₁₁ − 2r).  u = cX/D =
     s̃_n ω, c = −rh r^{n−1}s̃_n, |ω| ≤ rh r^{n−1}C_u, |u| ≤ n|ω|.  So the a-brackets are ≥ K₁₁ − 2r −
-    rh²C n² r^{n−1}, the b-brackets with j ≤ n − 2 are ≥ rh(1 − Ch² n² r^{n−1}), and the last b's is
-    s̃_n(rh − |ω| n h²) > 0 with s̃_n > 0.  The cb-phase is the same map on (q₃, q₂) from
+    rh²C n² r^{n−1}, the b-brackets with j ≤ n − 2 are ≥ rh(1 − Ch² n² r^{n−1}), and the last b's (j = n − 1,
+    u = s̃_n ω): q₂ = −r^{n−2} s̃_n [rh − ω(K₁₁ s̃_{n−1} − r s̃_{n−2})] with |K₁₁ s̃_{n−1} − r s̃_{n−2}| ≤ (K₁₁ + r)n
+    = h²n, so its bracket is ≥ rh(1 − C_u h² n r^{n−1}) ≥ rh(1 − Ch² n² r^{n−1}) (C ≥ C_u, n² ≥ n), whatever the
+    sign of s̃_n: the same b-margin, and where s̃_n < 0 (π < nθ < 2π) that b's pair separates
+    (:func:`family_approaching`).  The cb-phase is the same map on (q₃, q₂) from
     (q₃, q₂)(t_2n) = |q₃|(−1, u′), q₃(t_2n) < d < 0 (part 4, and d = −r s_n − r² s_{n−1} < 0),
     u′ = q₂(t_2n)/|q₃| = s̃_n ω′, q₂(t_2n) = −c + du = −c(1 − dX/D): |ω′| ≤ rh r^{n−1}(1 + δC_u)/|q₃|.
     With C = max(C_u, (1 + δC_u)/|q₃|), r ∈ [7/100, 8/100] (7/100 < r*, and r_n < 8/100 as cos θ(8/100) <
@@ -357,7 +360,7 @@ def velocities(K: list, N1: int, facts: dict) -> dict:
     m_a = m_b = None
     for k in range(16):
         r = Iv(lo + (hi - lo) * k / 16, lo + (hi - lo) * (k + 1) / 16)
-        h = (1 + r) / 2
+        h = at(H, r)
         K11 = at(K[0][0], r)
         a_ = K11 - 2 * r - r * h * h * C * big
         b_ = 1 - C * h * h * big
@@ -715,41 +718,18 @@ def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
     return True
 
 
-def last_b(K: list, N1: int, facts: dict) -> Fraction:
-    """The bracket of the last b of (ab)^n, for every n ≥ N1 ≥ 6 (or n = N1 alone) and r ∈ [7/100, 8/100]
-    (on the dominant branch): with j = n − 1 in :func:`velocities`' formula and u = s̃_n ω, q₂ before that b is
-    −r^{n−2} s̃_n [rh − ω(K₁₁ s̃_{n−1} − r s̃_{n−2})], and |K₁₁ s̃_{n−1} − r s̃_{n−2}| ≤ (K₁₁ + r) n = h² n
-    (|s̃_k| ≤ k), |ω| ≤ rh r^{n−1} C_u: the bracket is ≥ rh(1 − C_u h² n r^{n−1}) with n r^{n−1} ≤
-    N1 (8/100)^{N1−1} (decreasing: (N1 + 1)·8/100 ≤ N1).  Returns the smallest 1 − C_u h² n r^{n−1} over
-    16 boxes of the range, in intervals; NotVerified unless it is positive.  Where s̃_n < 0 (π < nθ < 2π)
-    q₂ > 0 before that b: its pair separates."""
-    lo, hi = VELOCITY_RANGE
-    if not (N1 >= 6 and (N1 + 1) * hi <= N1):
-        raise NotVerified("the decrease of n r^(n−1) on [7/100, 8/100] is not proved")
-    big = N1 * hi ** (N1 - 1)
-    margin = None
-    for k in range(16):
-        r = Iv(lo + (hi - lo) * k / 16, lo + (hi - lo) * (k + 1) / 16)
-        h = (1 + r) / 2
-        m = (1 - facts["Cu"] * h * h * big).lo
-        margin = m if margin is None else min(margin, m)
-    if not margin > 0:
-        raise NotVerified(f"the last b's bracket is not proved positive (n ≥ {N1})")
-    return margin
-
-
 def family_approaching(ctx, word, n_bound, threshold) -> bool:
     """``family_approaching("(ab)^n(cb)^n", n ≥ N, n·θ < cπ)``: for every n ≥ N and every r above
     r* = 7 − 4√3 with nθ < cπ, on the dominant branch every collision of the word comes with its pair
     approaching.  Proved for c ≤ 1 (part 6).  False for c > 1 only once the kernel has the refuting
     point: an n ≥ N and an exact r₀ ∈ [7/100, 8/100] with π < nθ(r₀) < cπ (:func:`_refuting_point`:
-    s_n(r₀) < 0, computed) and the last b's bracket proved positive there (:func:`last_b`), so at r₀
-    q₂ > 0 before the last b of (ab)^n: its pair separates.  NotVerified when either is missing."""
+    s_n(r₀) < 0, computed) and the last b's bracket proved positive there (:func:`velocities`' b-margin,
+    which bounds it for every sign of s_n), so at r₀ q₂ > 0 before the last b of (ab)^n: its pair
+    separates.  NotVerified when either is missing."""
     N1, _, c = _arguments(ctx, word, n_bound, threshold, "<")
     facts = _proved(N1, R_MAX, ctx.family_single)
-    velocities(facts["K"], N1, facts)
+    margin = velocities(facts["K"], N1, facts)["margins"][1]     # the b-brackets', the last b's too
     if c > 1:
-        margin = last_b(facts["K"], N1, facts)
         n, r0, _ = _refuting_point(c, N1, R_MAX, ctx.family_single)
         lo, hi = VELOCITY_RANGE
         if not lo <= r0 <= hi:

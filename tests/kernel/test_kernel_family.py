@@ -244,25 +244,32 @@ def test_every_pair_approaches_below_r_n_and_not_above():
 
 def test_not_approaching_needs_the_last_b_bound(monkeypatch):
     """The review: "not approaching below 2π" was decided from c alone, its bracket argument in the
-    docstring.  Now the kernel computes the last b's bracket bound; without it (here: not proved) the
-    negated half is undecided, and with it L6.6.4 is not verified."""
-    def unproved(*args):
-        raise NotVerified("the last b's bracket is not proved positive")
-    monkeypatch.setattr(family, "last_b", unproved)
+    docstring.  Now the kernel bounds the last b's bracket by part 6's b-margin (velocities); with that
+    margin not proved (C_u inflated 10⁷-fold: a margin ≤ 0) the negated half is undecided, and L6.6.4 is
+    not verified."""
+    real = family.velocities
+    monkeypatch.setattr(family, "velocities", lambda K, N1, facts: real(K, N1, {**facts, "Cu": 10 ** 7 * facts["Cu"]}))
     got = outcome(APPROACHING.replace("n·θ < π", "n·θ < 2·π"))
-    assert got.startswith("not verified") and "last b" in got
+    assert got.startswith("not verified") and "velocity margins" in got, got
     stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
     assert outcome(stmts["L6.6.4"].formula).startswith("not verified")
 
 
 def test_the_last_b_margin_and_an_inflated_constant():
-    """The last b's bracket ≥ rh(1 − C_u h² n r^(n−1)): the margin 1 − C_u h² N (8/100)^(N−1) at N = 8 is
-    about 1 − 3.8·0.39·8·0.08⁷ ≈ 0.99999; with C_u inflated 10⁷-fold it is no longer proved."""
+    """The last b's bracket ≥ rh(1 − C_u h² n r^(n−1)) (n ≥ N = 8, r ≤ 8/100): velocities' b-margin
+    1 − C h² N² (8/100)^(N−1) (C ≥ C_u, N² ≥ N) is no larger than that bound, computed here at the worst
+    r = 8/100, and about 0.99999 at N = 8; the refutation of nθ < 2π prints it.  With C_u inflated 10⁷-fold
+    velocities refuses (the margin ≤ 0), so there is no last-b margin to print."""
     facts = family._proved(8, Fraction(1, 4))
-    m = family.last_b(facts["K"], 8, facts)
-    assert Fraction(9999, 10000) < m < 1
-    with pytest.raises(NotVerified, match="last b"):
-        family.last_b(facts["K"], 8, {**facts, "Cu": 10 ** 7 * facts["Cu"]})
+    m_b = family.velocities(facts["K"], 8, facts)["margins"][1]
+    hi = family.VELOCITY_RANGE[1]
+    h = (1 + hi) / 2
+    last = 1 - facts["Cu"] * h * h * 8 * hi ** 7
+    assert Fraction(9999, 10000) < m_b <= last < 1
+    got = outcome(APPROACHING.replace("n·θ < π", "n·θ < 2·π"))
+    assert f"its bracket ≥ rh·{float(m_b):.4f}" in got, got
+    with pytest.raises(NotVerified, match="velocity margins"):
+        family.velocities(facts["K"], 8, {**facts, "Cu": 10 ** 7 * facts["Cu"]})
 
 
 def test_the_velocity_margins_and_an_inflated_constant():
