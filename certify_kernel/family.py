@@ -746,11 +746,11 @@ def family_reaches(ctx, word, n_bound, threshold) -> bool:
     r_n, F_n < 0, so τ > 0 and every condition of stability holds).  For c ≠ 1, NotVerified: the
     kernel's route decides the neighbourhood of r_n only."""
     N1, _, c = _arguments(ctx, word, n_bound, threshold, "=")
+    if c != 1:
+        raise NotVerified("the kernel's route decides stability just below nθ = π only")
     facts = _proved(N1, R_MAX, ctx.family_single)
     velocities(facts["K"], N1, facts)
     reach(facts["K"], facts)
-    if c != 1:
-        raise NotVerified("the kernel's route decides stability just below nθ = π only")
     return True
 
 

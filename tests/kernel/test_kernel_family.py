@@ -303,6 +303,15 @@ def test_mutants_of_reaches_are_not_verified(change, why):
     assert got.startswith("not verified") and why in got, got
 
 
+def test_reaches_refuses_another_threshold_before_the_work(monkeypatch):
+    """c ≠ 1 is refused from the arguments alone: parts 1-4, 6 and 7 are not run for it."""
+    ran = []
+    monkeypatch.setattr(family, "_proved", lambda *args: ran.append(args))
+    got = outcome(REACHES.replace("n·θ = π", "n·θ = 2·π"))
+    assert got.startswith("not verified") and "just below nθ = π only" in got, got
+    assert ran == []
+
+
 def test_the_identities_of_the_reflection():
     assert all(family.check_reflection().values())
     assert family.collisions_fix_their_pair()
