@@ -578,16 +578,17 @@ def _pi_multiple(t) -> Fraction:
     raise Undefined("the threshold is written n·θ = cπ (c rational)")
 
 
-def _arguments(ctx, word, n_bound, threshold, relation: str, r_range=None) -> tuple:
-    """(N, R, c) from the predicate's arguments, each checked for its form (R = 1/4 without a range);
-    ``n = N`` (one n) instead of ``n ≥ N`` sets ctx.family_single."""
+def _arguments(ctx, word, n_bound, threshold=None, relation: str = "=", r_range=None) -> tuple:
+    """(N, R, c, single) from the predicate's arguments, each checked for its form (R = 1/4 without a range,
+    c = None without a threshold); single is True for ``n = N`` (one n: part 4 on boxes of r, dominant_at),
+    False for ``n ≥ N``."""
     if word[0] != "str" or word[1].replace(" ", "") != WORD:
         raise Undefined(f"the kernel's family route knows the word {WORD} only")
     if (n_bound[0] != "cmp" or n_bound[1] not in (("≥",), ("=",)) or n_bound[2][0] != ("name", "n")
             or n_bound[2][1][0] != "num" or Fraction(n_bound[2][1][1]).denominator != 1):
         raise Undefined("the range of n is written n ≥ N or n = N")
     N1 = int(Fraction(n_bound[2][1][1]))
-    ctx.family_single = n_bound[1] == ("=",)       # one n: part 4 on boxes of r (dominant_at)
+    single = n_bound[1] == ("=",)
     r_max = R_MAX
     if r_range is not None:
         if r_range[0] != "cmp" or r_range[1] != ("in",) or r_range[2][0] != ("name", "r"):
@@ -597,10 +598,12 @@ def _arguments(ctx, word, n_bound, threshold, relation: str, r_range=None) -> tu
         if not (lo.rational and hi.rational) or lo.lo != 0 or iv.lo_closed or not iv.hi_closed:
             raise Undefined("the range of r is ]0, R], R rational")
         r_max = Fraction(hi.lo)
+    if threshold is None:
+        return N1, r_max, None, single
     if (threshold[0] != "cmp" or threshold[1] != (relation,) or threshold[2][0][0] != "bin"
             or threshold[2][0][1:3] != ("·", ("name", "n")) or threshold[2][0][3] != ("name", "θ")):
         raise Undefined(f"the threshold is written n·θ {relation} cπ")
-    return N1, r_max, _pi_multiple(threshold[2][1])
+    return N1, r_max, _pi_multiple(threshold[2][1]), single
 
 
 def _s_values(r0: Fraction, n: int) -> list:
@@ -670,12 +673,12 @@ def q2_sign_family(ctx, word, n_bound, r_range, threshold) -> bool:
     exact rational r₀ that refutes the claim (:func:`_refuting_point`: the sign of s_n(r₀), computed,
     against the sign the claim gives there); NotVerified when a step is not proved (R > 1/4, N too
     small for the intervals) or no such point is found; Undefined for c ≤ 0 (no point of ]r*, R])."""
-    N1, r_max, c = _arguments(ctx, word, n_bound, threshold, "=", r_range)
+    N1, r_max, c, single = _arguments(ctx, word, n_bound, threshold, "=", r_range)
     if c <= 0:
         raise Undefined("the threshold n·θ = cπ needs c > 0")
-    _proved(N1, r_max, ctx.family_single)
+    _proved(N1, r_max, single)
     if c != 1:
-        n, r0, j0 = _refuting_point(c, N1, r_max, ctx.family_single)
+        n, r0, j0 = _refuting_point(c, N1, r_max, single)
         how = (f"s_{n} < 0 there (π/{n} < θ < π/{n - 1}: π < nθ < cπ, below the claimed zero)" if c > 1 else
                f"s_{n} > 0 there (π/{j0} < θ < π/{j0 - 1}: cπ < nθ < π, above the claimed zero)")
         ctx.counterexample = f"{r0} ≈ {float(r0):.6f}, n = {n}: {how}"
@@ -707,8 +710,8 @@ def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
     with nθ > cπ is stable.  Proved for c ≥ 1: where π < nθ < 2π, q_2(0) < 0 on the dominant branch and
     at nθ = 2π it is 0 (parts 1-4), and where nθ > 2π a b of the ab-phase separates (part 5): the word
     is not realised.  For c < 1, NotVerified (the kernel proves no stability)."""
-    N1, r_max, c = _arguments(ctx, word, n_bound, threshold, ">", r_range)
-    facts = _proved(N1, r_max, ctx.family_single)
+    N1, r_max, c, single = _arguments(ctx, word, n_bound, threshold, ">", r_range)
+    facts = _proved(N1, r_max, single)
     try:
         arcs(facts["K"], N1, r_max, facts["Cu"])
     except ArithmeticError as exc:
@@ -726,11 +729,11 @@ def family_approaching(ctx, word, n_bound, threshold) -> bool:
     s_n(r₀) < 0, computed) and the last b's bracket proved positive there (:func:`velocities`' b-margin,
     which bounds it for every sign of s_n), so at r₀ q₂ > 0 before the last b of (ab)^n: its pair
     separates.  NotVerified when either is missing."""
-    N1, _, c = _arguments(ctx, word, n_bound, threshold, "<")
-    facts = _proved(N1, R_MAX, ctx.family_single)
+    N1, _, c, single = _arguments(ctx, word, n_bound, threshold, "<")
+    facts = _proved(N1, R_MAX, single)
     margin = velocities(facts["K"], N1, facts)["margins"][1]     # the b-brackets', the last b's too
     if c > 1:
-        n, r0, _ = _refuting_point(c, N1, R_MAX, ctx.family_single)
+        n, r0, _ = _refuting_point(c, N1, R_MAX, single)
         lo, hi = VELOCITY_RANGE
         if not lo <= r0 <= hi:
             raise NotVerified(f"the refuting point r = {float(r0):.6f} lies outside [7/100, 8/100]")
@@ -745,10 +748,10 @@ def family_reaches(ctx, word, n_bound, threshold) -> bool:
     neighbourhood of the r where nθ = cπ is stable.  Proved for c = 1 (parts 1-4, 6 and 7: just below
     r_n, F_n < 0, so τ > 0 and every condition of stability holds).  For c ≠ 1, NotVerified: the
     kernel's route decides the neighbourhood of r_n only."""
-    N1, _, c = _arguments(ctx, word, n_bound, threshold, "=")
+    N1, _, c, single = _arguments(ctx, word, n_bound, threshold, "=")
     if c != 1:
         raise NotVerified("the kernel's route decides stability just below nθ = π only")
-    facts = _proved(N1, R_MAX, ctx.family_single)
+    facts = _proved(N1, R_MAX, single)
     velocities(facts["K"], N1, facts)
     reach(facts["K"], facts)
     return True
@@ -761,9 +764,7 @@ def family_window(ctx, word, n_bound) -> bool:
     Proved from parts 1-8 (N ≥ 6): nothing stable on ]0, r_{n+1}] (part 8), at r_n (u = 0, part 4), on
     ]r_n, 1/4] (parts 4, 5) or on [429/2500, 1[ (:func:`third_a`, n ≥ 3); stable points just below r_n
     (parts 6, 7)."""
-    fake = ("cmp", ("=",), (("bin", "·", ("name", "n"), ("name", "θ")), ("const", "π")))
-    N1, _, _ = _arguments(ctx, word, n_bound, fake, "=")
-    single = ctx.family_single
+    N1, _, _, single = _arguments(ctx, word, n_bound)
     facts = _proved(N1, R_MAX, single)
     try:
         arcs(facts["K"], N1, R_MAX, facts["Cu"])

@@ -13,8 +13,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from certify_kernel import family, intervals
-from certify_kernel.evaluate import NotVerified
+from certify_kernel.evaluate import Context, NotVerified
 from certify_kernel.intervals import Iv
+from certify_kernel.language import parse
 from tests.kernel.kernel_support import ROOT, outcome, repository_statements
 
 L661 = 'q2_sign_family("(ab)^n(cb)^n", n ≥ 8, r in ]0, 1/4], n·θ = π)'
@@ -403,6 +404,20 @@ WINDOW = 'family_window("(ab)^n(cb)^n", n ≥ 8)'
 def test_the_stable_set_lies_between_r_n_plus_1_and_r_n(formula):
     """L5.3 for n ≥ 6: nothing stable on ]0, r_(n+1)] (F_n > 0 there), the rest as in L6.6."""
     assert outcome(formula) == "verified"
+
+
+@pytest.mark.parametrize("n_bound, single", [("n = 6", True), ("n ≥ 8", False)])
+def test_the_arguments_give_one_n_or_every_n_without_state(n_bound, single):
+    """_arguments returns whether n is one n (part 4 on boxes of r) with N, R and c, and leaves the context
+    as it was (no state for the next predicate); family_window passes no threshold (c = None)."""
+    _, _, (word, bound) = parse(f'family_window("(ab)^n(cb)^n", {n_bound})')
+    _, _, (_, _, threshold) = parse(f'family_reaches("(ab)^n(cb)^n", {n_bound}, n·θ = π)')
+    ctx = Context({})
+    before = dict(vars(ctx))
+    N1 = int(n_bound[-1])
+    assert family._arguments(ctx, word, bound) == (N1, Fraction(1, 4), None, single)
+    assert family._arguments(ctx, word, bound, threshold, "=") == (N1, Fraction(1, 4), 1, single)
+    assert vars(ctx) == before
 
 
 @pytest.mark.parametrize("change, why", [
