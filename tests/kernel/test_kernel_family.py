@@ -126,6 +126,9 @@ def test_dominance_constants_match_the_documented_ones():
     K, _ = family.block()
     f8, f31 = family.dominant(K, 8, Fraction(1, 4)), family.dominant(K, 31, Fraction(1, 4))
     assert f8["delta"] == 8 * Fraction(1, 4) ** 7 and f31["delta"] == 31 * Fraction(1, 4) ** 30
+    for f in (f8, f31):                           # λ encloses 1/9 and strictly dominates the other two
+        assert f["lambda"][0] < Fraction(1, 9) < f["lambda"][1]
+        assert f["others"] < f["lambda"][0]
     lo, hi = f8["lambda"]
     assert f"N = 8: δ = {_sci(f8['delta'])}, λ ∈ [{float(lo):.5f}, {float(hi):.5f}], |μ|, |ν| ≤ " \
            f"{float(f8['others']):.2g}" in doc
