@@ -316,7 +316,7 @@ def arcs(K: list, N1: int, r_max: Fraction, Cu: Fraction) -> dict:
     if not (cmax > Fraction(-1, 2) and (N1 + 1) ** 2 * RHO <= N1 ** 2):
         raise NotVerified("θ_max < 2π/3 or the decrease of n²ρ̄^(n−1) is not proved")
     s3 = sqrt(Iv((1 - cmax) / 2)) * (1 + 2 * cmax)                # sin(3θ_max/2)
-    h2max = ((1 + r_max) / 2) ** 2
+    h2max = at(H, r_max) ** 2
     dn = N1 * RHO ** (N1 - 1)
     m1 = 2 - Cu * h2max * N1 * dn
     m2 = s3 - Cu * h2max * dn
@@ -338,8 +338,11 @@ def velocities(K: list, N1: int, facts: dict) -> dict:
     −r^{j−1}[rh s̃_{j+1} − u(K₁₁s̃_j − r s̃_{j−1})].  For 1 ≤ k ≤ n − 1, 1 ≤ s̃_k ≤ n (θ ≤ kθ ≤ π − θ), and
     K₁₁ sin jθ − r sin(j−1)θ = sin jθ(K₁₁ − r cos θ) + r cos jθ sin θ ≥ sin θ(K₁₁ − 2r).  u = cX/D =
     s̃_n ω, c = −rh r^{n−1}s̃_n, |ω| ≤ rh r^{n−1}C_u, |u| ≤ n|ω|.  So the a-brackets are ≥ K₁₁ − 2r −
-    rh²C n² r^{n−1}, the b-brackets with j ≤ n − 2 are ≥ rh(1 − Ch² n² r^{n−1}), and the last b's is
-    s̃_n(rh − |ω| n h²) > 0 with s̃_n > 0.  The cb-phase is the same map on (q₃, q₂) from
+    rh²C n² r^{n−1}, the b-brackets with j ≤ n − 2 are ≥ rh(1 − Ch² n² r^{n−1}), and the last b's (j = n − 1,
+    u = s̃_n ω): q₂ = −r^{n−2} s̃_n [rh − ω(K₁₁ s̃_{n−1} − r s̃_{n−2})] with |K₁₁ s̃_{n−1} − r s̃_{n−2}| ≤ (K₁₁ + r)n
+    = h²n, so its bracket is ≥ rh(1 − C_u h² n r^{n−1}) ≥ rh(1 − Ch² n² r^{n−1}) (C ≥ C_u, n² ≥ n), whatever the
+    sign of s̃_n: the same b-margin, and where s̃_n < 0 (π < nθ < 2π) that b's pair separates
+    (:func:`family_approaching`).  The cb-phase is the same map on (q₃, q₂) from
     (q₃, q₂)(t_2n) = |q₃|(−1, u′), q₃(t_2n) < d < 0 (part 4, and d = −r s_n − r² s_{n−1} < 0),
     u′ = q₂(t_2n)/|q₃| = s̃_n ω′, q₂(t_2n) = −c + du = −c(1 − dX/D): |ω′| ≤ rh r^{n−1}(1 + δC_u)/|q₃|.
     With C = max(C_u, (1 + δC_u)/|q₃|), r ∈ [7/100, 8/100] (7/100 < r*, and r_n < 8/100 as cos θ(8/100) <
@@ -357,7 +360,7 @@ def velocities(K: list, N1: int, facts: dict) -> dict:
     m_a = m_b = None
     for k in range(16):
         r = Iv(lo + (hi - lo) * k / 16, lo + (hi - lo) * (k + 1) / 16)
-        h = (1 + r) / 2
+        h = at(H, r)
         K11 = at(K[0][0], r)
         a_ = K11 - 2 * r - r * h * h * C * big
         b_ = 1 - C * h * h * big
@@ -575,16 +578,17 @@ def _pi_multiple(t) -> Fraction:
     raise Undefined("the threshold is written n·θ = cπ (c rational)")
 
 
-def _arguments(ctx, word, n_bound, threshold, relation: str, r_range=None) -> tuple:
-    """(N, R, c) from the predicate's arguments, each checked for its form (R = 1/4 without a range);
-    ``n = N`` (one n) instead of ``n ≥ N`` sets ctx.family_single."""
+def _arguments(ctx, word, n_bound, threshold=None, relation: str = "=", r_range=None) -> tuple:
+    """(N, R, c, single) from the predicate's arguments, each checked for its form (R = 1/4 without a range,
+    c = None without a threshold); single is True for ``n = N`` (one n: part 4 on boxes of r, dominant_at),
+    False for ``n ≥ N``."""
     if word[0] != "str" or word[1].replace(" ", "") != WORD:
         raise Undefined(f"the kernel's family route knows the word {WORD} only")
     if (n_bound[0] != "cmp" or n_bound[1] not in (("≥",), ("=",)) or n_bound[2][0] != ("name", "n")
             or n_bound[2][1][0] != "num" or Fraction(n_bound[2][1][1]).denominator != 1):
         raise Undefined("the range of n is written n ≥ N or n = N")
     N1 = int(Fraction(n_bound[2][1][1]))
-    ctx.family_single = n_bound[1] == ("=",)       # one n: part 4 on boxes of r (dominant_at)
+    single = n_bound[1] == ("=",)
     r_max = R_MAX
     if r_range is not None:
         if r_range[0] != "cmp" or r_range[1] != ("in",) or r_range[2][0] != ("name", "r"):
@@ -594,10 +598,12 @@ def _arguments(ctx, word, n_bound, threshold, relation: str, r_range=None) -> tu
         if not (lo.rational and hi.rational) or lo.lo != 0 or iv.lo_closed or not iv.hi_closed:
             raise Undefined("the range of r is ]0, R], R rational")
         r_max = Fraction(hi.lo)
+    if threshold is None:
+        return N1, r_max, None, single
     if (threshold[0] != "cmp" or threshold[1] != (relation,) or threshold[2][0][0] != "bin"
             or threshold[2][0][1:3] != ("·", ("name", "n")) or threshold[2][0][3] != ("name", "θ")):
         raise Undefined(f"the threshold is written n·θ {relation} cπ")
-    return N1, r_max, _pi_multiple(threshold[2][1])
+    return N1, r_max, _pi_multiple(threshold[2][1]), single
 
 
 def _s_values(r0: Fraction, n: int) -> list:
@@ -667,12 +673,12 @@ def q2_sign_family(ctx, word, n_bound, r_range, threshold) -> bool:
     exact rational r₀ that refutes the claim (:func:`_refuting_point`: the sign of s_n(r₀), computed,
     against the sign the claim gives there); NotVerified when a step is not proved (R > 1/4, N too
     small for the intervals) or no such point is found; Undefined for c ≤ 0 (no point of ]r*, R])."""
-    N1, r_max, c = _arguments(ctx, word, n_bound, threshold, "=", r_range)
+    N1, r_max, c, single = _arguments(ctx, word, n_bound, threshold, "=", r_range)
     if c <= 0:
         raise Undefined("the threshold n·θ = cπ needs c > 0")
-    _proved(N1, r_max, ctx.family_single)
+    _proved(N1, r_max, single)
     if c != 1:
-        n, r0, j0 = _refuting_point(c, N1, r_max, ctx.family_single)
+        n, r0, j0 = _refuting_point(c, N1, r_max, single)
         how = (f"s_{n} < 0 there (π/{n} < θ < π/{n - 1}: π < nθ < cπ, below the claimed zero)" if c > 1 else
                f"s_{n} > 0 there (π/{j0} < θ < π/{j0 - 1}: cπ < nθ < π, above the claimed zero)")
         ctx.counterexample = f"{r0} ≈ {float(r0):.6f}, n = {n}: {how}"
@@ -704,8 +710,8 @@ def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
     with nθ > cπ is stable.  Proved for c ≥ 1: where π < nθ < 2π, q_2(0) < 0 on the dominant branch and
     at nθ = 2π it is 0 (parts 1-4), and where nθ > 2π a b of the ab-phase separates (part 5): the word
     is not realised.  For c < 1, NotVerified (the kernel proves no stability)."""
-    N1, r_max, c = _arguments(ctx, word, n_bound, threshold, ">", r_range)
-    facts = _proved(N1, r_max, ctx.family_single)
+    N1, r_max, c, single = _arguments(ctx, word, n_bound, threshold, ">", r_range)
+    facts = _proved(N1, r_max, single)
     try:
         arcs(facts["K"], N1, r_max, facts["Cu"])
     except ArithmeticError as exc:
@@ -715,42 +721,19 @@ def family_unstable(ctx, word, n_bound, r_range, threshold) -> bool:
     return True
 
 
-def last_b(K: list, N1: int, facts: dict) -> Fraction:
-    """The bracket of the last b of (ab)^n, for every n ≥ N1 ≥ 6 (or n = N1 alone) and r ∈ [7/100, 8/100]
-    (on the dominant branch): with j = n − 1 in :func:`velocities`' formula and u = s̃_n ω, q₂ before that b is
-    −r^{n−2} s̃_n [rh − ω(K₁₁ s̃_{n−1} − r s̃_{n−2})], and |K₁₁ s̃_{n−1} − r s̃_{n−2}| ≤ (K₁₁ + r) n = h² n
-    (|s̃_k| ≤ k), |ω| ≤ rh r^{n−1} C_u: the bracket is ≥ rh(1 − C_u h² n r^{n−1}) with n r^{n−1} ≤
-    N1 (8/100)^{N1−1} (decreasing: (N1 + 1)·8/100 ≤ N1).  Returns the smallest 1 − C_u h² n r^{n−1} over
-    16 boxes of the range, in intervals; NotVerified unless it is positive.  Where s̃_n < 0 (π < nθ < 2π)
-    q₂ > 0 before that b: its pair separates."""
-    lo, hi = VELOCITY_RANGE
-    if not (N1 >= 6 and (N1 + 1) * hi <= N1):
-        raise NotVerified("the decrease of n r^(n−1) on [7/100, 8/100] is not proved")
-    big = N1 * hi ** (N1 - 1)
-    margin = None
-    for k in range(16):
-        r = Iv(lo + (hi - lo) * k / 16, lo + (hi - lo) * (k + 1) / 16)
-        h = (1 + r) / 2
-        m = (1 - facts["Cu"] * h * h * big).lo
-        margin = m if margin is None else min(margin, m)
-    if not margin > 0:
-        raise NotVerified(f"the last b's bracket is not proved positive (n ≥ {N1})")
-    return margin
-
-
 def family_approaching(ctx, word, n_bound, threshold) -> bool:
     """``family_approaching("(ab)^n(cb)^n", n ≥ N, n·θ < cπ)``: for every n ≥ N and every r above
     r* = 7 − 4√3 with nθ < cπ, on the dominant branch every collision of the word comes with its pair
     approaching.  Proved for c ≤ 1 (part 6).  False for c > 1 only once the kernel has the refuting
     point: an n ≥ N and an exact r₀ ∈ [7/100, 8/100] with π < nθ(r₀) < cπ (:func:`_refuting_point`:
-    s_n(r₀) < 0, computed) and the last b's bracket proved positive there (:func:`last_b`), so at r₀
-    q₂ > 0 before the last b of (ab)^n: its pair separates.  NotVerified when either is missing."""
-    N1, _, c = _arguments(ctx, word, n_bound, threshold, "<")
-    facts = _proved(N1, R_MAX, ctx.family_single)
-    velocities(facts["K"], N1, facts)
+    s_n(r₀) < 0, computed) and the last b's bracket proved positive there (:func:`velocities`' b-margin,
+    which bounds it for every sign of s_n), so at r₀ q₂ > 0 before the last b of (ab)^n: its pair
+    separates.  NotVerified when either is missing."""
+    N1, _, c, single = _arguments(ctx, word, n_bound, threshold, "<")
+    facts = _proved(N1, R_MAX, single)
+    margin = velocities(facts["K"], N1, facts)["margins"][1]     # the b-brackets', the last b's too
     if c > 1:
-        margin = last_b(facts["K"], N1, facts)
-        n, r0, _ = _refuting_point(c, N1, R_MAX, ctx.family_single)
+        n, r0, _ = _refuting_point(c, N1, R_MAX, single)
         lo, hi = VELOCITY_RANGE
         if not lo <= r0 <= hi:
             raise NotVerified(f"the refuting point r = {float(r0):.6f} lies outside [7/100, 8/100]")
@@ -765,12 +748,12 @@ def family_reaches(ctx, word, n_bound, threshold) -> bool:
     neighbourhood of the r where nθ = cπ is stable.  Proved for c = 1 (parts 1-4, 6 and 7: just below
     r_n, F_n < 0, so τ > 0 and every condition of stability holds).  For c ≠ 1, NotVerified: the
     kernel's route decides the neighbourhood of r_n only."""
-    N1, _, c = _arguments(ctx, word, n_bound, threshold, "=")
-    facts = _proved(N1, R_MAX, ctx.family_single)
-    velocities(facts["K"], N1, facts)
-    reach(facts["K"], facts)
+    N1, _, c, single = _arguments(ctx, word, n_bound, threshold, "=")
     if c != 1:
         raise NotVerified("the kernel's route decides stability just below nθ = π only")
+    facts = _proved(N1, R_MAX, single)
+    velocities(facts["K"], N1, facts)
+    reach(facts["K"], facts)
     return True
 
 
@@ -781,9 +764,7 @@ def family_window(ctx, word, n_bound) -> bool:
     Proved from parts 1-8 (N ≥ 6): nothing stable on ]0, r_{n+1}] (part 8), at r_n (u = 0, part 4), on
     ]r_n, 1/4] (parts 4, 5) or on [429/2500, 1[ (:func:`third_a`, n ≥ 3); stable points just below r_n
     (parts 6, 7)."""
-    fake = ("cmp", ("=",), (("bin", "·", ("name", "n"), ("name", "θ")), ("const", "π")))
-    N1, _, _ = _arguments(ctx, word, n_bound, fake, "=")
-    single = ctx.family_single
+    N1, _, _, single = _arguments(ctx, word, n_bound)
     facts = _proved(N1, R_MAX, single)
     try:
         arcs(facts["K"], N1, R_MAX, facts["Cu"])

@@ -235,6 +235,9 @@ def ab_cb(n: int) -> str:
     return f"(ab)^{n}(cb)^{n}"
 
 
+KERNEL_FACTORS = tuple(ab_cb(n) for n in range(2, 6))   # L5.3 and L6.6: the kernel decides n = 2..5 as in L4 (their factors)
+
+
 @quantity("ab_cb_patterns")
 def ab_cb_patterns():
     """`certify pattern (ab)^n(cb)^n` over ]0, 1[ for n = 2..N_MAX: the heavy part of L4-L6,
@@ -511,7 +514,7 @@ def windows(ab_cb_patterns, ab_cb_seven, ab_cb_limit, n2, n3, limit, order, fami
         + (" (the whole stable sets: the paper's open problem, proved)" if whole else ""), holds,
         ["every part holds" if holds else "a part fails: " + "; ".join(c.statement[:80] for c in parts if not c.holds)]
         + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, {gap}"])),
-        "L5.3", *[ab_cb(n) for n in range(2, 6)]))          # the kernel decides n = 2..5 as in L4 (their factors)
+        "L5.3", *KERNEL_FACTORS))
     note = ("The paper's open problem (l. 1215: the intervals of stability \"seem to be disjoint and accumulate from "
             "above … but this has also not been proven yet\"): " + (
                 f"proved for every n ≥ 2: the stable set of (ab)^n(cb)^n in ]0, 1[ is one open interval W_n (n ≤ "
@@ -599,14 +602,14 @@ def q2_vanishes_at_threshold(ab_cb_patterns, ab_cb_seven, ab_cb_limit, criterion
                                        all(results.get(n) for n in (6, 7)),
                                        [row for row in rows if row.startswith(("n = 6:", "n = 7:"))])))
     parts += large_n_q2(ab_cb_limit)
-    whole = all(c.holds for c in parts) and "positions" in ab_cb_limit["facts"]
+    whole = all(c.holds for c in parts)                # L6.6.5 (among parts) needs family_limit's part 9
     checks += parts
     checks.append(witnessed(Check(
         f"for every n ≥ 2, {criterion} on the {branch} branch at the upper end of the window: the checks above",
         all(c.holds for c in checks),
         ["every part holds" if all(c.holds for c in checks) else "a part fails"]
         + ([] if whole else [f"NOT certified: for n ≥ {PROVED_FROM}, that r_n is the upper end of the stable set"])),
-        "L6.6", *[ab_cb(n) for n in range(2, 6)]))          # the kernel decides n = 2..5 as in L4 (their factors)
+        "L6.6", *KERNEL_FACTORS))
     note = ("CDKK's conjecture (l. 1215), tested, not assumed: " + (
         "proved for every n ≥ 2 — the upper end of the window of (ab)^n(cb)^n is where q_2(0) = 0 on the dominant "
         "branch, r_n, the root of r² − (6 + 8cos(π/n))r + 1 (n ≤ 7: exact zero tests; n ≥ 8: family_limit's theorem)."

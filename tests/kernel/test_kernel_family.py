@@ -13,8 +13,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from certify_kernel import family, intervals
-from certify_kernel.evaluate import NotVerified
+from certify_kernel.evaluate import Context, NotVerified
 from certify_kernel.intervals import Iv
+from certify_kernel.language import parse
 from tests.kernel.kernel_support import ROOT, outcome, repository_statements
 
 L661 = 'q2_sign_family("(ab)^n(cb)^n", n ≥ 8, r in ]0, 1/4], n·θ = π)'
@@ -125,6 +126,9 @@ def test_dominance_constants_match_the_documented_ones():
     K, _ = family.block()
     f8, f31 = family.dominant(K, 8, Fraction(1, 4)), family.dominant(K, 31, Fraction(1, 4))
     assert f8["delta"] == 8 * Fraction(1, 4) ** 7 and f31["delta"] == 31 * Fraction(1, 4) ** 30
+    for f in (f8, f31):                           # λ encloses 1/9 and strictly dominates the other two
+        assert f["lambda"][0] < Fraction(1, 9) < f["lambda"][1]
+        assert f["others"] < f["lambda"][0]
     lo, hi = f8["lambda"]
     assert f"N = 8: δ = {_sci(f8['delta'])}, λ ∈ [{float(lo):.5f}, {float(hi):.5f}], |μ|, |ν| ≤ " \
            f"{float(f8['others']):.2g}" in doc
@@ -244,25 +248,32 @@ def test_every_pair_approaches_below_r_n_and_not_above():
 
 def test_not_approaching_needs_the_last_b_bound(monkeypatch):
     """The review: "not approaching below 2π" was decided from c alone, its bracket argument in the
-    docstring.  Now the kernel computes the last b's bracket bound; without it (here: not proved) the
-    negated half is undecided, and with it L6.6.4 is not verified."""
-    def unproved(*args):
-        raise NotVerified("the last b's bracket is not proved positive")
-    monkeypatch.setattr(family, "last_b", unproved)
+    docstring.  Now the kernel bounds the last b's bracket by part 6's b-margin (velocities); with that
+    margin not proved (C_u inflated 10⁷-fold: a margin ≤ 0) the negated half is undecided, and L6.6.4 is
+    not verified."""
+    real = family.velocities
+    monkeypatch.setattr(family, "velocities", lambda K, N1, facts: real(K, N1, {**facts, "Cu": 10 ** 7 * facts["Cu"]}))
     got = outcome(APPROACHING.replace("n·θ < π", "n·θ < 2·π"))
-    assert got.startswith("not verified") and "last b" in got
+    assert got.startswith("not verified") and "velocity margins" in got, got
     stmts = {s.id: s for c in repository_statements().certificates for s in c.statements}
     assert outcome(stmts["L6.6.4"].formula).startswith("not verified")
 
 
 def test_the_last_b_margin_and_an_inflated_constant():
-    """The last b's bracket ≥ rh(1 − C_u h² n r^(n−1)): the margin 1 − C_u h² N (8/100)^(N−1) at N = 8 is
-    about 1 − 3.8·0.39·8·0.08⁷ ≈ 0.99999; with C_u inflated 10⁷-fold it is no longer proved."""
+    """The last b's bracket ≥ rh(1 − C_u h² n r^(n−1)) (n ≥ N = 8, r ≤ 8/100): velocities' b-margin
+    1 − C h² N² (8/100)^(N−1) (C ≥ C_u, N² ≥ N) is no larger than that bound, computed here at the worst
+    r = 8/100, and about 0.99999 at N = 8; the refutation of nθ < 2π prints it.  With C_u inflated 10⁷-fold
+    velocities refuses (the margin ≤ 0), so there is no last-b margin to print."""
     facts = family._proved(8, Fraction(1, 4))
-    m = family.last_b(facts["K"], 8, facts)
-    assert Fraction(9999, 10000) < m < 1
-    with pytest.raises(NotVerified, match="last b"):
-        family.last_b(facts["K"], 8, {**facts, "Cu": 10 ** 7 * facts["Cu"]})
+    m_b = family.velocities(facts["K"], 8, facts)["margins"][1]
+    hi = family.VELOCITY_RANGE[1]
+    h = (1 + hi) / 2
+    last = 1 - facts["Cu"] * h * h * 8 * hi ** 7
+    assert Fraction(9999, 10000) < m_b <= last < 1
+    got = outcome(APPROACHING.replace("n·θ < π", "n·θ < 2·π"))
+    assert f"its bracket ≥ rh·{float(m_b):.4f}" in got, got
+    with pytest.raises(NotVerified, match="velocity margins"):
+        family.velocities(facts["K"], 8, {**facts, "Cu": 10 ** 7 * facts["Cu"]})
 
 
 def test_the_velocity_margins_and_an_inflated_constant():
@@ -294,6 +305,15 @@ def test_mutants_of_reaches_are_not_verified(change, why):
     old = "n ≥ 8" if change.startswith("n ≥") else "n·θ = π"
     got = outcome(REACHES.replace(old, change))
     assert got.startswith("not verified") and why in got, got
+
+
+def test_reaches_refuses_another_threshold_before_the_work(monkeypatch):
+    """c ≠ 1 is refused from the arguments alone: parts 1-4, 6 and 7 are not run for it."""
+    ran = []
+    monkeypatch.setattr(family, "_proved", lambda *args: ran.append(args))
+    got = outcome(REACHES.replace("n·θ = π", "n·θ = 2·π"))
+    assert got.startswith("not verified") and "just below nθ = π only" in got, got
+    assert ran == []
 
 
 def test_the_identities_of_the_reflection():
@@ -387,6 +407,20 @@ WINDOW = 'family_window("(ab)^n(cb)^n", n ≥ 8)'
 def test_the_stable_set_lies_between_r_n_plus_1_and_r_n(formula):
     """L5.3 for n ≥ 6: nothing stable on ]0, r_(n+1)] (F_n > 0 there), the rest as in L6.6."""
     assert outcome(formula) == "verified"
+
+
+@pytest.mark.parametrize("n_bound, single", [("n = 6", True), ("n ≥ 8", False)])
+def test_the_arguments_give_one_n_or_every_n_without_state(n_bound, single):
+    """_arguments returns whether n is one n (part 4 on boxes of r) with N, R and c, and leaves the context
+    as it was (no state for the next predicate); family_window passes no threshold (c = None)."""
+    _, _, (word, bound) = parse(f'family_window("(ab)^n(cb)^n", {n_bound})')
+    _, _, (_, _, threshold) = parse(f'family_reaches("(ab)^n(cb)^n", {n_bound}, n·θ = π)')
+    ctx = Context({})
+    before = dict(vars(ctx))
+    N1 = int(n_bound[-1])
+    assert family._arguments(ctx, word, bound) == (N1, Fraction(1, 4), None, single)
+    assert family._arguments(ctx, word, bound, threshold, "=") == (N1, Fraction(1, 4), 1, single)
+    assert vars(ctx) == before
 
 
 @pytest.mark.parametrize("change, why", [
@@ -484,12 +518,15 @@ def test_l53_without_the_words_factors_is_not_verified():
 
 
 def test_l49_the_sixth_threshold_by_the_family_route():
-    """L4.9 (l. 1119, 24 collisions, beyond the word analysis): sup(stable) = r_6 by the family route,
+    """L4.9 (l. 1119, 24 collisions, beyond the word analysis): sup(stable) = r_6 by the family route, one
+    family_window for n = 6 (its arcs, velocities, reach, below and third a, not the same clauses spelt out again),
     and rmax6 = 3 + 2√3 − 2√(5 + 3√3) is r_6 (cos θ = √3/2 there); with cos(π/4) in its place (48 → 32)
     the kernel finds it false at rmax6."""
     paper = repository_statements()
     l49 = next(s for c in paper.certificates for s in c.statements if s.id == "L4.9")
-    assert 'family_reaches("(ab)^n(cb)^n", n = 6, n·θ = π)' in l49.formula
+    family_part, _, rmax6_part = l49.formula.partition(" and ")
+    assert family_part == 'family_window("(ab)^n(cb)^n", n = 6)'
+    assert "family_" not in rmax6_part and "word(" not in rmax6_part
     assert outcome(l49.formula, lets=paper.lets) == "verified"
     wrong = l49.formula.replace("= 48*r^2", "= 32*r^2")
     assert wrong != l49.formula
