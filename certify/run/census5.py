@@ -102,7 +102,10 @@ def markdown(doc: dict) -> str:
              "## Certified answers", "",
              f"- Largest r of stable self-similar collapse up to {L}: {_end(s['largest_stable'])}",
              f"- Largest r of feasible self-similar collapse up to {L}: {_end(s['largest_feasible'])}",
-             f"- Largest undecided point (stable stage): {_end(s['largest_undecided'])}", ""]
+             f"- Largest undecided point (stable stage): {_end(s['largest_undecided'])}", "",
+             "These hold on ]0, 1[ less the words' undecided points, each an isolated r (an end of a region where "
+             "two κ branches meet, or 0/0) listed in census5.json: at those points nothing is claimed, stable or "
+             "feasible.", ""]
     if s["not_analysed"]:
         lines += [f"{len(s['not_analysed'])} words have a factor of cp(Λ²M) that was not analysed (listed below). "
                   + ("Each is a repeated factor, which holds no stable datum (proved: "
