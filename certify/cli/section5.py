@@ -94,10 +94,15 @@ def cmd_simulate(args) -> int:
                                    keep=args.keep if args.keep is not None else 500,
                                    engine=args.engine, dps=args.dps, executor=ex, progress=progress.Bar("r"),
                                    strict=args.strict, words=args.words)
-    if args.out is not None:
-        with atomic_path(args.out) as tmp, open(tmp, "wb") as handle:
+    return _save_and_summarise(orbits, args.out)
+
+
+def _save_and_summarise(orbits, out) -> int:
+    """Write the orbits to ``out`` (atomically) when given, then print their summary."""
+    if out is not None:
+        with atomic_path(out) as tmp, open(tmp, "wb") as handle:
             orbits.save(handle)
-        print(f"wrote {args.out}")
+        print(f"wrote {out}")
     print(orbits.summary())
     return 0
 
@@ -122,12 +127,7 @@ def simulate_five(args) -> int:
     p0, q0 = five.random_data(args.orbits if args.orbits is not None else 8, args.seed or 0)
     orbits = five.iterate(r_values(args), p0, q0, collisions=args.collisions, strict=args.strict,
                           words=args.words, progress=progress.Bar("r"))
-    if args.out is not None:
-        with atomic_path(args.out) as tmp, open(tmp, "wb") as handle:
-            orbits.save(handle)
-        print(f"wrote {args.out}")
-    print(orbits.summary())
-    return 0
+    return _save_and_summarise(orbits, args.out)
 
 
 def cmd_stress(args) -> int:
