@@ -500,6 +500,10 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
                      undecided, conditions, None, "", 0.0, regions, printed)
     res.not_analysed = not_analysed
     res.verdict = verdict(res)
+    if not_analysed:          # the verdict speaks of the factors analysed only: say which are not
+        res.verdict = (f"{res.verdict}; on all of ]{lo}, {hi}[, not analysed: the factor(s) "
+                       + ", ".join(f"{n['factor']} (multiplicity {n['multiplicity']})" for n in not_analysed)
+                       + " of cp(Λ²M)")
     res.seconds = time.perf_counter() - start
     return res
 

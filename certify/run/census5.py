@@ -104,15 +104,15 @@ def markdown(doc: dict) -> str:
              f"- Largest r of feasible self-similar collapse up to {L}: {_end(s['largest_feasible'])}",
              f"- Largest undecided point (stable stage): {_end(s['largest_undecided'])}", "",
              "These hold on ]0, 1[ less the words' undecided points, each an isolated r (an end of a region where "
-             "two κ branches meet, or 0/0) listed in census5.json: at those points nothing is claimed, stable or "
-             "feasible.", ""]
+             "two κ branches meet, or 0/0) listed in census5.json, and less the factors not analysed (below), on "
+             "the whole range: there nothing is claimed but what is proved of a repeated factor (never stable).", ""]
     if s["not_analysed"]:
         lines += [f"{len(s['not_analysed'])} words have a factor of cp(Λ²M) that was not analysed (listed below). "
                   + ("Each is a repeated factor, which holds no stable datum (proved: "
                      "certify.patterns.five.REPEATED_NOT_STABLE), so the largest r of stable collapse holds for every "
                      "word; the largest r of feasible collapse holds for the factors analysed only."
                      if s["stable_complete"] else "Both largest r hold for the factors analysed only."), ""]
-    lines += ["## By length", "", "| length | words | exists | feasible | stable | with undecided points | "
+    lines += ["## By length", "", "| length | words | exists (factors analysed) | feasible (factors analysed) | stable | with undecided points | "
               "with a factor not analysed |", "|---:|---:|---:|---:|---:|---:|---:|"]
     lines += [f"| {n} | {e['words']} | {e['exists']} | {e['feasible']} | {e['stable']} | {e['undecided']} | "
               f"{e['not_analysed']} |" for n, e in s["lengths"].items()]

@@ -213,7 +213,8 @@ def test_periodic_tail_and_canonical():
 def test_a_nonfinite_bound_certifies_nothing(bad):
     """rules: an inf or nan bound decides nothing.  A state whose face and next face are decided
     with the bound 0 is not certified when the bounds of its in-face entries (or of the
-    tournament's) are nan or inf: the kernel's certification and its one-orbit count say so."""
+    tournament's) are nan or inf: the kernel's certification says so; the one-orbit count (its bound
+    starts at the bad value, so the margins already stop it) checks the margin classification."""
     from certify.numerics import five_kernel
     p, q = (0.0, 1.0, 2.0, 3.0), (1.0, -1.0, -1.0, -1.0)      # face a, b first (test above)
     w = np.array(five.bivector(p, q))

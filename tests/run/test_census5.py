@@ -149,3 +149,18 @@ def test_an_altered_committed_record_fails_the_check(tmp_path):
     with executor(1) as ex:
         problems = census5.check(out, ex, max_length=5)
     assert problems == [f"{rec['word']}: the record differs (stable)"]
+
+
+def test_a_factor_not_analysed_is_named_in_the_verdict_and_the_markdown(written):
+    """The length-4 words all have a repeated factor of cp(Λ²M) (κ = ±r^k): each record's verdict names
+    it as not analysed on the whole range (the verdict of the factors analysed alone said "no candidate"),
+    and CENSUS5.md excepts the factors not analysed from its answers and qualifies its counts."""
+    doc = json.loads((written / census5.JSON).read_text(encoding="utf-8"))
+    words = [w for w in doc["words"] if w["not_analysed"]]
+    assert words
+    for w in words:
+        assert "not analysed: the factor(s) " + w["not_analysed"][0]["factor"] in w["verdict"], w["verdict"]
+    assert all("not analysed" not in w["verdict"] for w in doc["words"] if not w["not_analysed"])
+    md = (written / census5.MARKDOWN).read_text(encoding="utf-8")
+    assert "and less the factors not analysed (below), on the whole range" in md
+    assert "| exists (factors analysed) | feasible (factors analysed) |" in md
