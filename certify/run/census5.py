@@ -112,8 +112,8 @@ def markdown(doc: dict) -> str:
                      "certify.patterns.five.REPEATED_NOT_STABLE), so the largest r of stable collapse holds for every "
                      "word; the largest r of feasible collapse holds for the factors analysed only."
                      if s["stable_complete"] else "Both largest r hold for the factors analysed only."), ""]
-    lines += ["## By length", "", "| length | words | exists (factors analysed) | feasible (factors analysed) | stable | with undecided points | "
-              "with a factor not analysed |", "|---:|---:|---:|---:|---:|---:|---:|"]
+    lines += ["## By length", "", "| length | words | exists (factors analysed) | feasible (factors analysed) | "
+              "stable | with undecided points | with a factor not analysed |", "|---:|---:|---:|---:|---:|---:|---:|"]
     lines += [f"| {n} | {e['words']} | {e['exists']} | {e['feasible']} | {e['stable']} | {e['undecided']} | "
               f"{e['not_analysed']} |" for n, e in s["lengths"].items()]
     union = "(each the r-set of one κ branch and ordering x₊ or x₋; the same set for several is shown once)"
