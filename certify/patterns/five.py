@@ -68,8 +68,8 @@ from certify.algebra.poly import (
     ring_to_mpoly,
 )
 from certify.dynamics.model import alphabet, charpoly_coefficients, charpoly_ring, collide_gaps
-from certify.errors import Undecided
 from certify.dynamics.systems import of_particles, system_matrix_flint
+from certify.errors import Undecided
 
 from .feasibility import Analysis, Requirement
 from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, end_data, verdict

@@ -1,6 +1,7 @@
 """The five-particle census as files (certify/run/census5.py): the same bytes on a rerun and from a
 resumed state, the schema, the check that recomputes and compares (and fails on an altered record or
 summary), and the faster routes of five.FiveSpectrum (resultants, zero tests) against the engine's."""
+import functools
 import json
 import subprocess
 import sys
@@ -146,6 +147,7 @@ def test_the_bezout_resultant_is_the_resultant(degree_g):
     leading coefficient 4 (not monic over Z), g of degree below 6 and above it (the pseudo-remainder), and
     with a content; a g sharing a factor with cp gives 0."""
     import random
+
     from certify.algebra.poly import primitive
     rng = random.Random(degree_g)
     poly = lambda d: flint.fmpz_poly([rng.randint(-9, 9) for _ in range(d + 1)])  # noqa: E731
@@ -185,8 +187,8 @@ def test_the_high_precision_zero_test_gives_the_engines_answers(monkeypatch):
     five.analyse_five("abdbcd")
     assert len(asked) >= 2
     for sp, G, rc, branch, maxprec, answer in asked:
-        engine = lambda prec: G(prec)  # noqa: E731
-        engine.fallback = G.fallback          # the engine's two routes, its monic gcd made afresh
+        engine = functools.partial(G)         # the engine's two routes, its monic gcd made afresh
+        engine.fallback = G.fallback  # type: ignore[attr-defined]
         assert Spectrum._vanishes_on(sp, engine, rc, branch, maxprec) == answer
 
 
