@@ -1,13 +1,14 @@
 """The cost of a five-particle word (certify census --particles 5) by length, in CPU seconds.
 
-    python benchmarks/bench_census5.py [--max-length L] [--from-state FILE]
+    python benchmarks/bench_census5.py [--max-length L] [--from-state FILE] [--words W ...]
 
-Analyses every word class up to L (default 6) with ``five.analyse_five`` in this process, one at a
-time, and prints per length: the classes, the CPU seconds (``time.process_time``: the machine is
-shared, so wall time is not the measure), mean and max, and the growth of the classes from one length
-to the next.  ``--from-state FILE`` reads the seconds a census state file carries (wall seconds of the
-run that wrote it) instead.  Run it from a checkout (``PYTHONPATH=OTHER python benchmarks/...``
-times another checkout's code on the same words: the before/after of docs/census.md).
+Analyses every word class up to L (default 6), or the words given by ``--words``, with
+``five.analyse_five`` in this process, one at a time, and prints per length: the classes, the CPU
+seconds (``time.process_time``: the machine is shared, so wall time is not the measure), mean and max,
+and the growth of the classes from one length to the next.  ``--from-state FILE`` reads the seconds a
+census state file carries (the CPU seconds of ``five.census_record``) instead.  The script times the
+checkout it sits in: a copy of it in another checkout's benchmarks/ (``git archive`` of a commit) times
+that code on the same words (the before/after of docs/census.md).
 """
 from __future__ import annotations
 
@@ -23,11 +24,11 @@ if str(ROOT) not in sys.path:  # run as a script from a source checkout
     sys.path.insert(0, str(ROOT))
 
 
-def timed(max_length: int) -> dict[int, list[float]]:
-    """CPU seconds of each class's analysis, by length."""
+def timed(max_length: int, words: list[str] | None = None) -> dict[int, list[float]]:
+    """CPU seconds of each class's analysis (or of each of ``words``), by length."""
     from certify.patterns import five
     by: dict[int, list[float]] = defaultdict(list)
-    for w in five.word_classes(max_length):
+    for w in words or five.word_classes(max_length):
         start = time.process_time()
         five.analyse_five(w)
         by[len(w)].append(time.process_time() - start)
@@ -57,8 +58,9 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--max-length", type=int, default=6)
     ap.add_argument("--from-state", type=Path, default=None)
+    ap.add_argument("--words", nargs="+", default=None, help="these words (normal forms) only")
     args = ap.parse_args(argv)
-    print(table(from_state(args.from_state) if args.from_state else timed(args.max_length)))
+    print(table(from_state(args.from_state) if args.from_state else timed(args.max_length, args.words)))
     return 0
 
 

@@ -1,6 +1,7 @@
 """The five-particle census as files (certify/run/census5.py): the same bytes on a rerun and from a
 resumed state, the schema, the check that recomputes and compares (and fails on an altered record or
-summary), and the faster resultant of five.FiveSpectrum against the engine's."""
+summary), and the faster routes of five.FiveSpectrum (resultants, zero tests) against the engine's."""
+import functools
 import json
 import subprocess
 import sys
@@ -99,8 +100,9 @@ def test_the_check_command_exits_1_on_a_difference(written, tmp_path):
 
 @pytest.mark.parametrize("word", ["abcbdcb", "ababcad"])
 def test_the_resultants_are_the_engines(word, monkeypatch):
-    """FiveSpectrum.resultant (the multiplication determinant, Bareiss) equals the engine's subresultant
-    (Spectrum.resultant) on every polynomial a word's analysis asks for, as primitive polynomials."""
+    """FiveSpectrum.resultant (the Bézout determinant by Laplace's expansion) equals the engine's
+    subresultant (Spectrum.resultant) on every polynomial a word's analysis asks for, as primitive
+    polynomials."""
     from certify.algebra.branches import Spectrum
     asked = []
     mine = five.FiveSpectrum.resultant
@@ -116,16 +118,78 @@ def test_the_resultants_are_the_engines(word, monkeypatch):
         assert R == Spectrum.resultant(sp, g)
 
 
-def test_bareiss_is_the_determinant():
-    """bareiss_determinant against python-flint's integer determinant at r = 0..8, on a 5×5 matrix of
-    random integer polynomials with zero pivots forced (rows swapped)."""
+def _random_matrix(rng, n, degree):
+    return [[flint.fmpz_poly([rng.randint(-9, 9) for _ in range(rng.randint(0, degree + 1))]) for _ in range(n)]
+            for _ in range(n)]
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 5, 6])
+def test_laplace_is_the_determinant(n):
+    """laplace_determinant against python-flint's integer determinant at more integer r than its degree
+    (so the polynomials are equal), on random n×n matrices of integer polynomials with zero entries."""
     import random
-    rng = random.Random(39)
-    A = [[flint.fmpz_poly([rng.randint(-9, 9) for _ in range(rng.randint(0, 4))]) for _ in range(5)] for _ in range(5)]
+    rng = random.Random(39 + n)
+    A = _random_matrix(rng, n, 4)
     A[0][0] = flint.fmpz_poly(0)
-    d = five.bareiss_determinant(A)
-    for r0 in range(9):
+    d = five.laplace_determinant(A)
+    for r0 in range(-2 * n - 1, 2 * n + 2):           # 4n + 3 > 4n ≥ deg det points
         assert d(r0) == flint.fmpz_mat([[e(r0) for e in row] for row in A]).det()
+
+
+def _mpoly(coeffs):
+    ctx = flint.fmpz_mpoly_ctx.get(("k", "r"))
+    return ctx.from_dict({(j, i): int(c) for j, col in enumerate(coeffs) for i, c in enumerate(col.coeffs()) if c})
+
+
+@pytest.mark.parametrize("degree_g", [0, 2, 5, 9])
+def test_the_bezout_resultant_is_the_resultant(degree_g):
+    """bezout_resultant(g, cp) is python-flint's Res_κ(g, cp) made primitive, for cp of degree 6 in κ with
+    leading coefficient 4 (not monic over Z), g of degree below 6 and above it (the pseudo-remainder), and
+    with a content; a g sharing a factor with cp gives 0."""
+    import random
+
+    from certify.algebra.poly import primitive
+    rng = random.Random(degree_g)
+    poly = lambda d: flint.fmpz_poly([rng.randint(-9, 9) for _ in range(d + 1)])  # noqa: E731
+    cp = [poly(3) for _ in range(6)] + [flint.fmpz_poly([4])]
+    g = [6 * poly(4) for _ in range(degree_g + 1)]
+    expected = primitive(flint.fmpz_poly(_univariate(_mpoly(g).resultant(_mpoly(cp), "k"))))
+    assert five.bezout_resultant(g, cp) == expected and not expected.is_zero()
+    # g = (κ - r)·h and cp = (κ - r)·m share the factor κ - r: the resultant is 0
+    shift = [flint.fmpz_poly([0, -1]), flint.fmpz_poly([1])]
+    times = lambda a, b: [sum((a[i] * b[k - i] for i in range(len(a)) if 0 <= k - i < len(b)),  # noqa: E731
+                              flint.fmpz_poly(0)) for k in range(len(a) + len(b) - 1)]
+    assert five.bezout_resultant(times(shift, [poly(2) for _ in range(3)]),
+                                 times(shift, [poly(2) for _ in range(5)] + [flint.fmpz_poly([4])])).is_zero()
+
+
+def _univariate(R) -> list:
+    """The coefficients in r of an fmpz_mpoly in (k, r) free of k, lowest first."""
+    d = R.to_dict()
+    return [d.get((0, i), 0) for i in range(max((i for _k, i in d), default=0) + 1)]
+
+
+def test_the_high_precision_zero_test_gives_the_engines_answers(monkeypatch):
+    """FiveSpectrum._vanishes_on (a gcd's roots as they come, enclosed to 2^16 bits before the engine's
+    monic gcd) answers as Spectrum._vanishes_on, the engine's route with the monic gcd, wherever a word's
+    analysis asks it about a gcd not yet made monic (abdbcd asks twice)."""
+    from certify.algebra.branches import Spectrum
+    asked = []
+    mine = five.FiveSpectrum._vanishes_on
+
+    def spy(self, G, rc, branch, maxprec):
+        fresh = getattr(G, "fallback", None) is not None and getattr(G, "monic", None) is None
+        answer = mine(self, G, rc, branch, maxprec)
+        if fresh:
+            asked.append((self, G, rc, branch, maxprec, answer))
+        return answer
+    monkeypatch.setattr(five.FiveSpectrum, "_vanishes_on", spy)
+    five.analyse_five("abdbcd")
+    assert len(asked) >= 2
+    for sp, G, rc, branch, maxprec, answer in asked:
+        engine = functools.partial(G)         # the engine's two routes, its monic gcd made afresh
+        engine.fallback = G.fallback  # type: ignore[attr-defined]
+        assert Spectrum._vanishes_on(sp, engine, rc, branch, maxprec) == answer
 
 
 COMMITTED = ROOT / "reports"
