@@ -1,18 +1,22 @@
 """The five-particle stable windows beside the four-particle ones (issue 39): reports/five-windows.png.
 
+    python tools/five_particle_figure.py                     # the committed results, reports/five-patterns/
     python tools/five_particle_figure.py abadcbcabc [WORD ...] [--pattern-json FILE ...] [--out PNG]
+    python tools/five_particle_figure.py --check             # analyse the committed words again
 
-Each five-particle WORD is analysed exactly here (``certify pattern``, certify/patterns/five.py);
-``--pattern-json FILE`` reads instead what ``certify pattern WORD --json [--r-range LO HI] > FILE``
-wrote (a long word's analysis, done once; its range is the one it was given); --out defaults to
-reports/five-windows.png.  The four-particle
-windows are those of the committed census (reports/census.json).  Only certified windows are
-drawn (certify/run/five_figure.py).
+reports/five-patterns/WORD.json is what ``certify pattern WORD --json [--r-range LO HI]`` wrote, byte for
+byte (the 19-letter word's analysis takes about 13 min of CPU: done once, committed).  With no word and no
+--pattern-json the figure is drawn from those files; ``--check`` runs ``certify pattern`` again on each
+committed word over its committed r-range and compares the bytes (exit 1 on a difference, nothing is
+drawn).  Each five-particle WORD given is analysed here; ``--pattern-json FILE`` reads a result file
+instead; --out defaults to reports/five-windows.png.  The four-particle windows are those of the committed
+census (reports/census.json).  Only certified windows are drawn (certify/run/five_figure.py).
 """
 from __future__ import annotations
 
 import argparse
 import json
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -24,6 +28,26 @@ from certify.patterns.five import analyse_five  # noqa: E402
 from certify.run import five_figure  # noqa: E402
 from certify.run.files import REPORTS  # noqa: E402
 
+COMMITTED = REPORTS / "five-patterns"
+
+
+def pattern_json(word: str, r_range: list[str]) -> bytes:
+    """What ``certify pattern WORD --json --r-range LO HI`` prints now (this checkout's code)."""
+    cmd = [sys.executable, "-m", "certify", "pattern", word, "--json", "--r-range", *r_range]
+    return subprocess.run(cmd, cwd=ROOT, capture_output=True, check=True).stdout
+
+
+def differences(paths: list[Path], fresh=pattern_json) -> list[str]:
+    """One line per committed result file whose word, analysed again over its own r-range, prints
+    other bytes (``fresh(word, r_range)`` gives the new output)."""
+    out = []
+    for path in paths:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        if fresh(data["input"], data["r_range"]) != path.read_bytes():
+            out.append(f"{path.name}: certify pattern {data['input']} --r-range {' '.join(data['r_range'])} "
+                       "prints something else now")
+    return out
+
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
@@ -31,7 +55,15 @@ def main(argv=None) -> int:
     ap.add_argument("--pattern-json", nargs="+", type=Path, default=[], metavar="FILE",
                     help="five-particle results written by certify pattern WORD --json")
     ap.add_argument("--out", type=Path, default=REPORTS / five_figure.NAME)
+    ap.add_argument("--check", action="store_true", help="analyse the committed words again and compare")
     args = ap.parse_args(argv)
+    committed = sorted(COMMITTED.glob("*.json"))
+    if args.check:
+        bad = differences(committed)
+        print("\n".join(bad) or f"{len(committed)} committed five-particle results reproduced")
+        return 1 if bad else 0
+    if not args.words and not args.pattern_json:
+        args.pattern_json = committed
     results = {}
     for w in args.words:
         start = time.perf_counter()
