@@ -30,7 +30,10 @@ and the nearest p/q with q ≤ :data:`NEAR_Q`, said "near": observed).
 At each sampled r the horseshoe search of ``certify chaos`` runs (:func:`chaos_job`): where it
 proves one, chaos is certified at that r (on a set of measure zero); the unresolved orbits are
 said what they show (observed): a long transient, near a certified horseshoe, a word repeated
-without converging (the rotation number of its loop), or nothing recognised.  The shares get
+without converging (the rotation number of its loop), or nothing recognised.  Long transients,
+runs with no period and runs repeating a word not attracting at r are run again longer
+(:func:`classify_late`), their class kept only where identify proves it on that run; an
+orbit's block is decided at its r up to :data:`LONG_WORD` letters (past the parser's 400).  The shares get
 95 % intervals (:func:`wilson`, observed).
 
 :func:`run_atlas` runs the jobs (one per r, one per word, one horseshoe search per r) on any executor
