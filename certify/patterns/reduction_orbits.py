@@ -117,7 +117,7 @@ from certify.errors import UsageError
 from .feasibility import NO_X, Analysis, Requirement
 from .pattern import _cap, _cond, _copy, _nonempty, algebraic_ends, check_range, end_data
 from .pattern import analyse as analyse_pattern
-from .periodic import compact, read
+from .periodic import MAX_LENGTH, compact, normal_form, read, validate
 from .periodic import show as show_word
 
 SCHEMA_PATH = Path(__file__).with_name("orbit.schema.json")
@@ -651,7 +651,27 @@ def _cramer(M: flint.fmpq_mat, lam_: Algebraic) -> tuple:
     return None
 
 
-def orbit_at(word: str, r) -> list[PointOrbit]:
+def read_plain(text: str, max_length: int = MAX_LENGTH) -> tuple[str, str]:
+    """(normal form, system) of a period.  Up to the parser's :data:`~.periodic.MAX_LENGTH`
+    letters (or when ``max_length`` is not above it) by :func:`~.periodic.read` (powers,
+    [ac]); a longer one only as plain letters a, b, c (no powers: a float64 run's block),
+    at most ``max_length`` letters, validated and put in normal form by the same functions
+    as ``read`` (:func:`~.periodic.validate`, :func:`~.periodic.normal_form`), so the word
+    and its normal form are the ones ``read`` would give: the parser's limit guards what
+    a user types, not the exact decision at one r.  UsageError (one line) otherwise."""
+    if len(text) <= MAX_LENGTH or max_length <= MAX_LENGTH:
+        normal, system, _ = read(text)
+        return normal, system
+    if len(text) > max_length:
+        raise UsageError(f"invalid pattern word: {len(text)} letters, more than {max_length}")
+    if set(text) - set(LETTERS):
+        raise UsageError(f"invalid pattern word: a period longer than {MAX_LENGTH} letters is read as plain letters "
+                         "a, b, c only")
+    system = validate(text)
+    return normal_form(text)[0], system
+
+
+def orbit_at(word: str, r, max_length: int = MAX_LENGTH) -> list[PointOrbit]:
     """The periodic orbits of the reduction with the word ``word`` (any rotation or mirror)
     at one rational r, decided exactly: M_w over Q, cp over Q, its real roots λ as
     algebraic numbers (Sturm), n* in Q[λ] (Cramer), its run n_k = cof(K_{c_k}) n_{k-1}
@@ -661,8 +681,9 @@ def orbit_at(word: str, r) -> list[PointOrbit]:
     strict), the type by the same polynomial criteria as :func:`analyse` and the pair by
     the sign of disc_λ cp; a multiplier of modulus exactly 1 by λ³ = det M_w (a complex
     pair, |ν|² = λ³/det M_w) or cp'(λ) cp(-λ) = 0 (a real one).  The multiplier modulus is an
-    arb ball (λ/λ_y, λ/λ_z from the quadratic factor of cp).  One entry per real eigenvalue, largest first."""
-    normal, system_name, _ = read(word)
+    arb ball (λ/λ_y, λ/λ_z from the quadratic factor of cp).  One entry per real eigenvalue, largest first.
+    ``max_length``: a longer period is read as plain letters up to this many (:func:`read_plain`)."""
+    normal, system_name = read_plain(word, max_length)
     if system_name != "four":
         raise UsageError(f"orbit: {show_word(normal)!r} is a word of the {system_name} system")
     r = flint.fmpq(r)

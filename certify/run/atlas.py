@@ -30,7 +30,10 @@ and the nearest p/q with q ≤ :data:`NEAR_Q`, said "near": observed).
 At each sampled r the horseshoe search of ``certify chaos`` runs (:func:`chaos_job`): where it
 proves one, chaos is certified at that r (on a set of measure zero); the unresolved orbits are
 said what they show (observed): a long transient, near a certified horseshoe, a word repeated
-without converging (the rotation number of its loop), or nothing recognised.  The shares get
+without converging (the rotation number of its loop), or nothing recognised.  Long transients,
+runs with no period and runs repeating a word not attracting at r are run again longer
+(:func:`classify_late`), their class kept only where identify proves it on that run; an
+orbit's block is decided at its r up to :data:`LONG_WORD` letters (past the parser's 400).  The shares get
 95 % intervals (:func:`wilson`, observed).
 
 :func:`run_atlas` runs the jobs (one per r, one per word, one horseshoe search per r) on any executor
@@ -65,7 +68,8 @@ from certify.numerics import grid
 from certify.patterns import compact, island_theorem, read
 from certify.patterns.island_theorem import LOWER_END, algebraic_of
 from certify.patterns.pattern import end_data
-from certify.patterns.reduction_orbits import MAX_ORBIT_LENGTH, analyse
+from certify.patterns.periodic import MAX_LENGTH
+from certify.patterns.reduction_orbits import MAX_ORBIT_LENGTH, analyse, read_plain
 
 from . import identify as ident
 from .census_report import committed_windows, dumps
@@ -74,7 +78,7 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 4
+VERSION = 5
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
@@ -84,7 +88,10 @@ WORD_MAX = MAX_ORBIT_LENGTH                   # longer words: no window (orbit_a
 WORD_SECONDS = 600                            # time limit of one word's window
 REFINE = 3                                    # rounds of refinement after the first grid
 LATE = 4                                      # an orbit :func:`late` selects is run again LATE times longer
-LATE_RULE = 2                                 # :func:`late`'s rule (1: long transients; 2: and runs with no period)
+LONGER = 16                                   # ... and one repeating a word not attracting at r, LONGER times
+LATE_RULE = 3                                 # :func:`late`'s rule (1: long transients; 2: and runs with no period;
+                                              # 3: and words not attracting at r, LONGER; blocks up to LONG_WORD read)
+LONG_WORD = 1000                              # the longest block identify decides at one r for the atlas (below)
 TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
 NEAR_HORSESHOE = "near a certified horseshoe"   # an unresolved orbit whose float64 run enters a proved horseshoe's box
 RESONANCE_Q = 120                             # window ends decided to be resonances p/q, q ≤ 120
@@ -248,19 +255,29 @@ def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
     if observed is None:
         return NOTHING
     try:
-        normal = read(observed)[0]
+        normal = read_plain(observed, LONG_WORD)[0]
     except UsageError:
         return NOTHING
     o = ident.decided(normal, r)
     return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
 
 
+def late_factor(kind: str | None, observed: str | None) -> int | None:
+    """How many times longer an unresolved orbit of this kind (:func:`unresolved_kind`) and
+    observed word is run again (:func:`classify_late`), or None: :data:`LATE` for a long
+    transient (its word attracts at r) or a run with no period at all (nothing recognised, no
+    word repeated: it may settle later than the run); :data:`LONGER` for a run repeating a
+    word not attracting at r (near r = 1, abcb: a slow transient can wind along the loop for
+    10⁵ collisions before it settles elsewhere)."""
+    if kind == TRANSIENT or (kind == NOTHING and observed is None):
+        return LATE
+    return LONGER if kind == NOT_ATTRACTING else None
+
+
 def late_kind(kind: str | None, observed: str | None) -> bool:
-    """Whether an unresolved orbit of this kind (:func:`unresolved_kind`) and observed word is
-    run again :data:`LATE` times longer (:func:`classify_late`): a long transient (its word
-    attracts at r), or a run with no period at all (nothing recognised, no word repeated): it
-    may settle later than the run."""
-    return kind == TRANSIENT or (kind == NOTHING and observed is None)
+    """Whether an unresolved orbit of this kind and observed word is run again longer
+    (:func:`late_factor`)."""
+    return late_factor(kind, observed) is not None
 
 
 def late(o: dict) -> bool:
@@ -268,19 +285,30 @@ def late(o: dict) -> bool:
     return o["class"] == UNRESOLVED and late_kind(o["unresolved"], o["observed"])
 
 
+def unread(o: dict) -> bool:
+    """Whether an orbit record is unresolved on a block that the rule before :data:`LATE_RULE` 3
+    could not read (longer than the parser's MAX_LENGTH, at most :data:`LONG_WORD`): run again."""
+    return o["class"] == UNRESOLVED and o["observed"] is not None and MAX_LENGTH < len(o["observed"]) <= LONG_WORD
+
+
 def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     """(identify's class of the orbit (θ0, φ0) at r, the collisions it was run again with, its
-    unresolved kind): an unresolved orbit that :func:`late` selects is run again :data:`LATE`
-    times longer and that run's class kept when it proves one (its kind then None); otherwise
-    the first run's, with None and the kind (:func:`unresolved_kind`, computed once)."""
-    x = ident.classify(q, th, ph, collisions)
+    unresolved kind): an unresolved orbit that :func:`late` selects is run again
+    :func:`late_factor` times longer and that run's class kept when it proves one (its kind
+    then None); otherwise the first run's, with None and the kind (:func:`unresolved_kind`,
+    computed once).  Observed blocks are decided up to :data:`LONG_WORD` letters (identify's
+    ``word_max``): the exact route at one r (``orbit_at``, the trapping ellipse) needs no
+    parser; a longer block is "not analysed" (its exact products and the ball scan grow with
+    its length, and the atlas met none between 868 and 1000 letters)."""
+    x = ident.classify(q, th, ph, collisions, word_max=LONG_WORD)
     if x.cls != UNRESOLVED:
         return x, None, None
     kind = unresolved_kind(x.word, fq)
-    if not late_kind(kind, x.word):
+    factor = late_factor(kind, x.word)
+    if factor is None:
         return x, None, kind
-    y = ident.classify(q, th, ph, LATE * collisions)
-    return (y, LATE * collisions, None) if y.cls != UNRESOLVED else (x, LATE * collisions, kind)
+    y = ident.classify(q, th, ph, factor * collisions, word_max=LONG_WORD)
+    return (y, factor * collisions, None) if y.cls != UNRESOLVED else (x, factor * collisions, kind)
 
 
 def _orbit_record(x, rerun, kind, th, ph, fq) -> dict:
@@ -289,7 +317,7 @@ def _orbit_record(x, rerun, kind, th, ph, fq) -> dict:
            "word": None, "branch": None, "observed": None, "why": x.why if x.cls == UNRESOLVED else "",
            "rerun": rerun, "unresolved": kind}
     if x.cls == ATTRACTING:
-        normal = read(x.word)[0]
+        normal = read_plain(x.word, LONG_WORD)[0]
         rec["word"], rec["branch"] = normal, ident.decided(normal, fq).branch_name
     elif x.cls == UNRESOLVED and x.word is not None:
         rec["observed"] = x.word
@@ -301,15 +329,15 @@ def r_job(r: str, data: list, collisions: int, previous: dict | None = None) -> 
     :func:`late` selects run again, :data:`LATE` times longer, its class kept if that run
     proves one); the island at r (the theorem, the rotation number, the certified share of
     the b-section).  ``previous``: a record of r made before the rule :data:`LATE_RULE`; its
-    island and the orbits that rule does not run again are kept (the same computation), the
-    others run again.  Plain data."""
+    island and the orbits that rule does not run again (:func:`late`, not yet run again) nor
+    read anew (:func:`unread`) are kept (the same computation), the others run again.  Plain data."""
     start = time.perf_counter()
     q = Fraction(r)
     fq = flint.fmpq(q.numerator, q.denominator)
     orbits = []
     for i, (th, ph) in enumerate(data):
         old = previous["orbits"][i] if previous is not None else None
-        if old is not None and not (late(old) and old["rerun"] is None):
+        if old is not None and not ((late(old) and old["rerun"] is None) or unread(old)):
             orbits.append(old)
             continue
         orbits.append(_orbit_record(*classify_late(q, fq, th, ph, collisions), th, ph, fq))
@@ -1123,7 +1151,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            "- unresolved, by what they show (observed): " + "; ".join(
                f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
            + f" (a long transient: its word attracts at r; a long transient and a run with no period at all are run "
-           f"again {LATE}× longer, and {s['unresolved_by_kind']['certified by a longer run']} orbits were proved so "
+           f"again {LATE}× longer, a run repeating a word not attracting at r {LONGER}× longer, and "
+           f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so "
            "(identify's proof on the longer run) and are counted in their class; near a certified horseshoe: its "
            "float64 run enters a box of the horseshoe proved at r; a word not "
            "attracting at r: repeated without converging, a loop around an invariant curve or a slow transient, its "
@@ -1132,7 +1161,9 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            f"- words certified: {s['words']}; attractors (word, branch) with an exact window over ]0, 1[: "
            f"{s['attractors_with_windows']}; without one: {s['attractors_without_windows']} (longer than "
            f"{p['word_max']} letters, or over the time limit of {p['word_seconds']} s: known only at the r where "
-           "seen, by `orbit_at`)",
+           f"seen, by `orbit_at`); an orbit's block is decided at its r up to {LONG_WORD} letters (the parser's "
+           f"{MAX_LENGTH} guards what users type: the exact decision at one r needs none; a longer block is not "
+           "analysed)",
            f"- seeds: {s['seeds']} known attracting words analysed whether or not the grid meets them (the families' "
            "members, the census's and `identify --section5`'s attracting words); the grid: "
            f"{p['resolution']} r and {p.get('refine', 0)} rounds of refinement (an r in every unsampled cell, near "
@@ -1381,9 +1412,11 @@ def _fq(r: str) -> flint.fmpq:
 
 
 def _attracting_at(word: str, r: flint.fmpq) -> set[str]:
-    """The names of the attracting periodic orbits of ``word`` at r, by ``orbit_at`` (exact)."""
+    """The names of the attracting periodic orbits of ``word`` at r, by ``orbit_at`` (exact; up to
+    :data:`LONG_WORD` letters)."""
     from certify.patterns.reduction_orbits import orbit_at
-    return {name(word, o.branch_name) for o in orbit_at(word, r) if o.feasible and o.kind == ATTRACTING.split()[0]}
+    return {name(word, o.branch_name) for o in orbit_at(word, r, LONG_WORD)
+            if o.feasible and o.kind == ATTRACTING.split()[0]}
 
 
 def _same_end(x: dict, y: dict) -> bool:

@@ -51,9 +51,10 @@ from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ball_run
 from certify.errors import UsageError
 from certify.numerics import engines, grid, rules, trapping
-from certify.patterns import compact, island_theorem, read, show_word
+from certify.patterns import compact, island_theorem, show_word
 from certify.patterns.pattern import end_data
-from certify.patterns.reduction_orbits import OrbitResult, analyse, orbit_at
+from certify.patterns.periodic import MAX_LENGTH
+from certify.patterns.reduction_orbits import OrbitResult, analyse, orbit_at, read_plain
 
 SCHEMA = "certify-identify"
 VERSION = 2
@@ -61,7 +62,7 @@ ISLAND, ATTRACTING, UNRESOLVED = "island", "attracting periodic", "unresolved"
 CLASSES = (ISLAND, ATTRACTING, UNRESOLVED)
 COLLISIONS = 100_000       # default length of the float64 run (and of the rigorous scan)
 WINDOW_MAX = 24            # the window over ]0, 1[ only for words up to this length
-MAX_ANALYSED = 1000        # longer observed periods are not analysed (orbit_at, the trap)
+MAX_ANALYSED = 1000        # longer observed periods are never analysed (orbit_at, the trap); see classify's word_max
 SHOWN = 200                # an island orbit's observed quasi-period is shown up to this length
 VERIFY_START = 128         # bits of the second route's balls, raised by powers of 2 up to VERIFY_CAP
 VERIFY_CAP = 1 << 16
@@ -115,7 +116,13 @@ def orbit_analysis(normal: str) -> OrbitResult:
     return analyse(normal)
 
 
-orbits_at = caches.for_a_run(orbit_at)
+def _orbit_at(normal: str, r) -> list:
+    """``orbit_at`` reading the word up to :data:`MAX_ANALYSED` letters (:func:`read_plain`): the
+    words reaching it were admitted by :func:`classify`'s ``word_max``."""
+    return orbit_at(normal, r, MAX_ANALYSED)
+
+
+orbits_at = caches.for_a_run(_orbit_at)
 """``orbit_at`` once per (normal form, r) in a run (Section 5's explanations decide a committed
 word, then verify re-decides it: one computation)."""
 
@@ -229,7 +236,7 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
     if cls == ATTRACTING:
         if not word:
             return "no word"
-        o = decided(read(word)[0], r)
+        o = decided(read_plain(word, MAX_ANALYSED)[0], r)
         if o is None or o.kind != "attracting":
             return f"{word} has no attracting periodic orbit at r = {r} (orbit_at)"
         U = trap_of(word, r)
@@ -344,8 +351,13 @@ def _scan(x: Identified, r, theta0, phi0, U, rotation, budget):
 
 
 def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIONS,
-             windows: bool = False) -> Identified:
-    """One orbit's class (module docstring)."""
+             windows: bool = False, word_max: int = MAX_LENGTH) -> Identified:
+    """One orbit's class (module docstring).  An observed block of more than ``word_max``
+    letters (default: the parser's :data:`~certify.patterns.periodic.MAX_LENGTH`, at most
+    :data:`MAX_ANALYSED`) is not analysed; a longer one than the parser reads is read as plain
+    letters (:func:`read_plain`: the same normal form), and decided as any other."""
+    if not 0 < word_max <= MAX_ANALYSED:
+        raise UsageError(f"word_max must be in [1, {MAX_ANALYSED}], got {word_max}")
     q = flint.fmpq(r.numerator, r.denominator)
     res = engines.float64_orbit(q, theta0, phi0, collisions, word=True)
     x = Identified(str(r), float(theta0), float(phi0), res.collisions, res.code)
@@ -353,11 +365,11 @@ def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIO
     U, rotation, o, why_not = None, None, None, ""
     if block is not None:
         x.settled = settled_from(res.word, len(block))
-    if block is not None and len(block) > MAX_ANALYSED:
-        why_not = f"a block of {len(block)} letters (longer than {MAX_ANALYSED}: not analysed)"
+    if block is not None and len(block) > word_max:
+        why_not = f"a block of {len(block)} letters (longer than {word_max}: not analysed)"
     elif block is not None:
         try:
-            normal = read(block)[0]
+            normal = read_plain(block, word_max)[0]
         except UsageError as exc:
             normal, why_not = None, f"not a word of the reduction ({exc})"
             x.word = x.compact = block

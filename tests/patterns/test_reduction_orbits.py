@@ -4,6 +4,7 @@ stable windows of `certify pattern` for (ab)^n(cb)^n (L4), the exact reduction m
 certify/dynamics/reduction.py (the word followed from n*, the multipliers against a
 finite-difference Jacobian), the ball engine of certify/numerics; the schema; the CLI."""
 import json
+import re
 from fractions import Fraction
 
 import flint
@@ -408,3 +409,28 @@ def test_the_self_similar_line_of_the_122_letter_attractor_is_decided():
     from certify.patterns import analyse as analyse_pattern
     verdict = analyse_pattern(ATTRACTOR_0173).verdict
     assert "feasible self-similar data, never stable" in verdict
+
+
+def test_a_period_longer_than_the_parser_reads_is_read_as_plain_letters():
+    """read_plain: a 484-letter period ((abacbc)^40a(bcabac)^40bcb written out), which the parser
+    refuses (over its 400 letters), is read as plain letters up to ``max_length``: a rotation
+    and the mirror image give the same normal form, and orbit_at decides it at one r; over
+    ``max_length``, written with powers, or not a period (two equal letters) it is refused in
+    one line, as by read."""
+    w = "abacbc" * 40 + "a" + "bcabac" * 40 + "bcb"
+    with pytest.raises(UsageError, match="more than 400"):
+        ro.read_plain(w)
+    with pytest.raises(UsageError, match="more than 400"):
+        ro.orbit_at(w, flint.fmpq(1, 5))
+    normal, system = ro.read_plain(w, 1000)
+    assert system == "four" and len(normal) == 484 and normal[0] == "a" and normal[-1] == "b"
+    assert ro.read_plain(w[7:] + w[:7], 1000)[0] == normal == ro.read_plain(w.translate(str.maketrans("ac", "ca")),
+                                                                              1000)[0]
+    assert [o.feasible for o in ro.orbit_at(w, flint.fmpq(1, 5), 1000)] == [o.feasible for o in ro.orbit_at(
+        w[7:] + w[:7], flint.fmpq(1, 5), 1000)]
+    short = "abacbc" * 2 + "a" + "bcabac" * 2 + "bcb"
+    assert ro.read_plain(short, 1000) == ro.read_plain(short) == ro.read(short)[:2]
+    for bad, says in ((w, "484 letters, more than 480"), ("(abacbc)^40a(bcabac)^40bcb" + "ab" * 60, "more than 400"),
+                      (w[:-1] + "a", "two equal letters")):
+        with pytest.raises(UsageError, match=re.escape(says)):
+            ro.read_plain(bad, 480 if bad == w else 1000)

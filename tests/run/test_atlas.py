@@ -627,12 +627,106 @@ def _longer_run_sample(doc, step=10):
 
 @pytest.mark.slow
 def test_the_committed_atlas_longer_run_orbits_sampled_check():
-    """reports/atlas.json: every 10th of the orbits only the longer run proves (21 of 207, over
-    the r where they are) classified again by identify, run again 4× longer, with their class,
-    word, branch and the collision they are certified from (check_orbits); 45 s measured on
-    2 busy cores."""
+    """reports/atlas.json: every 10th of the orbits only a longer run proves (44 of 436 in version
+    5, over the r where they are) classified again by identify, run again 4× or 16× longer, with
+    their class, word, branch and the collision they are certified from (check_orbits)."""
     doc = _committed()
     n, rows = _longer_run_sample(doc)
     assert n == doc["summary"]["unresolved_by_kind"]["certified by a longer run"]
     assert sum(row["total"] for row in rows) == len(range(0, n, 10))
     assert atlas.check_orbits(doc, rows) == []
+
+
+def _one_row(rec):
+    return {"parameters": {"collisions": rec["collisions"]},
+            "r": [{**rec, "counts": atlas._counts(rec["orbits"]), "total": len(rec["orbits"])}]}
+
+
+def test_a_block_longer_than_the_parser_reads_is_proved_at_its_r():
+    """r = 40/233, the tool's first datum: the run repeats a 458-letter block (over the parser's
+    400 letters); the atlas decides it at r up to LONG_WORD letters and proves it attracting.
+    The word altered by one letter, or the row moved to r = 3/10 (outside where it is proved),
+    or the orbit left unresolved as rule 2 left it, makes the check fail; an r record of rule 2
+    is upgraded by running that orbit again."""
+    rec = atlas.r_job("40/233", atlas.data_grid(0)[:1], 20_000)
+    o = rec["orbits"][0]
+    assert o["class"] == atlas.ATTRACTING and len(o["word"]) == 458 > atlas.MAX_LENGTH and o["rerun"] is None
+    doc = _one_row(rec)
+    assert atlas.check_orbits(doc) == []
+    bad = copy.deepcopy(doc)
+    w = bad["r"][0]["orbits"][0]["word"]
+    i = next(i for i in range(1, len(w) - 1) if w[i] == "a" and w[i - 1:i + 2] == "bab")  # bab → bcb: a word
+    bad["r"][0]["orbits"][0]["word"] = w[:i] + "c" + w[i + 1:]
+    problems = atlas.check_orbits(bad)
+    assert any("by identify" in p for p in problems) and any("not attracting there" in p for p in problems)
+    bad = copy.deepcopy(doc)
+    bad["r"][0]["r"] = "3/10"
+    assert any("not attracting there" in p for p in atlas.check_orbits(bad))
+    old = copy.deepcopy(rec)                              # rule 2: the block not read, the orbit unresolved
+    del old["late"]
+    old["orbits"][0] = {**o, "class": atlas.UNRESOLVED, "certified_from": None, "word": None, "branch": None,
+                        "observed": o["word"], "why": "observed: not a word of the reduction (over 400)",
+                        "unresolved": atlas.NOTHING}
+    assert atlas.unread(old["orbits"][0]) and not atlas.late(old["orbits"][0])
+    assert any("by identify" in p for p in atlas.check_orbits(_one_row(old)))
+    assert {**atlas.r_job("40/233", atlas.data_grid(0)[:1], 20_000, old), "seconds": 0} == {**rec, "seconds": 0}
+
+
+def test_a_word_not_attracting_at_r_is_run_again_sixteen_times_longer():
+    """r = 93271/100000 (near r = 1), the tool's first datum: the run repeats abcb, whose
+    periodic orbit is not attracting there; run again LONGER = 16× longer it is proved to
+    follow a 14-letter word from collision 128 472, past the 4× run.  Left unresolved (not run
+    again), or certified from a collision of a shorter run, the check fails."""
+    rec = atlas.r_job("93271/100000", atlas.data_grid(0)[:1], 20_000)
+    o = rec["orbits"][0]
+    assert o["class"] == atlas.ATTRACTING and o["rerun"] == atlas.LONGER * 20_000
+    assert atlas.LATE * 20_000 < o["certified_from"] <= atlas.LONGER * 20_000
+    x = atlas.ident.classify(Fraction(93271, 100000), o["theta0"], o["phi0"], 20_000, word_max=atlas.LONG_WORD)
+    fq = atlas._fq(rec["r"])
+    assert x.cls == atlas.UNRESOLVED and atlas.unresolved_kind(x.word, fq) == atlas.NOT_ATTRACTING
+    doc = _one_row(rec)
+    assert atlas.check_orbits(doc) == []
+    bad = copy.deepcopy(doc)
+    bad["r"][0]["orbits"][0] = atlas._orbit_record(x, None, atlas.NOT_ATTRACTING, o["theta0"], o["phi0"], fq)
+    bad["r"][0]["counts"] = atlas._counts(bad["r"][0]["orbits"])
+    problems = atlas.check_orbits(bad)
+    assert any("run again" in p for p in problems) and any("by identify" in p for p in problems)
+    bad = copy.deepcopy(doc)
+    bad["r"][0]["orbits"][0]["certified_from"] = 60_000
+    assert any("certified from 60000" in p for p in atlas.check_orbits(bad))
+
+
+def test_the_committed_atlas_long_blocks_and_sixteen_times_longer_runs_check():
+    """reports/atlas.json (rule 3): an orbit proved on a block longer than the parser reads (the
+    shortest such word) and one proved only by the run 16× longer (the first at r ≤ 0.94) are
+    proved again by identify (check_orbits on those two orbits); the long word altered by one
+    letter, its row moved to r = 3/10, or the 16× orbit marked unresolved as its first run
+    leaves it, makes the check fail."""
+    doc = _committed(5)
+    collisions = doc["parameters"]["collisions"]
+    long = [(row, o) for row in doc["r"] for o in row["orbits"] if o["word"] and len(o["word"]) > atlas.MAX_LENGTH]
+    assert long and all(len(o["word"]) <= atlas.LONG_WORD for _, o in long)
+    row, o = min(long, key=lambda ro: (len(ro[1]["word"]), Fraction(ro[0]["r"])))
+    sub = {**row, "orbits": [o], "counts": atlas._counts([o]), "total": 1}
+    assert atlas.check_orbits(doc, [sub]) == []
+    bad = copy.deepcopy(sub)
+    w = o["word"]
+    i = next(i for i in range(1, len(w) - 1) if w[i] == "a" and w[i - 1:i + 2] == "bab")  # bab → bcb: a word
+    bad["orbits"][0]["word"] = w[:i] + "c" + w[i + 1:]
+    assert any("not attracting there" in p for p in atlas.check_orbits(doc, [bad]))
+    bad = {**copy.deepcopy(sub), "r": "3/10"}
+    assert any("not attracting there" in p for p in atlas.check_orbits(doc, [bad]))
+    longer = [(row, o) for row in doc["r"] for o in row["orbits"]
+              if o["rerun"] == atlas.LONGER * collisions and o["class"] != atlas.UNRESOLVED]
+    assert longer and doc["summary"]["unresolved_by_kind"]["certified by a longer run"] >= len(longer)
+    row, o = next((row, o) for row, o in longer if Fraction(row["r"]) <= Fraction(94, 100))
+    assert o["certified_from"] > collisions
+    sub = {**row, "orbits": [o], "counts": atlas._counts([o]), "total": 1}
+    assert atlas.check_orbits(doc, [sub]) == []
+    fq = atlas._fq(row["r"])
+    x = atlas.ident.classify(Fraction(row["r"]), o["theta0"], o["phi0"], collisions, word_max=atlas.LONG_WORD)
+    assert atlas.unresolved_kind(x.word, fq) == atlas.NOT_ATTRACTING
+    bad = copy.deepcopy(sub)
+    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOT_ATTRACTING, o["theta0"], o["phi0"], fq)
+    bad["counts"] = atlas._counts(bad["orbits"])
+    assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))

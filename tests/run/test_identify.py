@@ -257,3 +257,24 @@ def test_next_precision_doubles_at_least_once_and_never_passes_the_cap():
     assert ident.next_precision(128, 127, 130) == 256           # at least one rung up
     assert ident.next_precision(256, 3, 5000) == 512             # stopped early: no rate, one rung
     assert ident.next_precision(128, 100, 10 ** 9) == ident.VERIFY_CAP
+
+
+def test_a_block_longer_than_the_parser_reads_is_decided_up_to_word_max():
+    """r = 40/233, the tool's first datum: the run repeats a block of 458 letters (member k = 19
+    of the atlas's rule of 24k + 2 letters).  By default (word_max = the parser's 400) it is not analysed and
+    said so; with word_max = 1000 it is read as plain letters and proved attracting (trap and
+    second route as for a short word).  The second route refuses the claim with the word
+    altered by one letter and at r = 3/10 (not attracting there, orbit_at); word_max beyond
+    MAX_ANALYSED is a usage error."""
+    r, (th, ph) = Fraction(40, 233), (float(grid(8)[0][0]), float(grid(8)[1][0]))
+    x = ident.classify(r, th, ph, 20_000)
+    assert x.cls == ident.UNRESOLVED and "a block of 458 letters (longer than 400: not analysed)" in x.why
+    y = ident.classify(r, th, ph, 20_000, word_max=1000)
+    assert y.cls == ident.ATTRACTING and len(y.word) == 458 and y.certified_from == 1680
+    assert ident.verify(r, th, ph, ident.ATTRACTING, 1680, y.rotation) is None
+    i = next(i for i in range(len(y.rotation)) if y.rotation[i] == "a" and y.rotation[i - 1:i + 2] == "bab")
+    altered = y.rotation[:i] + "c" + y.rotation[i + 1:]
+    assert "no attracting periodic orbit" in ident.verify(r, th, ph, ident.ATTRACTING, 1680, altered)
+    assert "no attracting periodic orbit" in ident.verify(Fraction(3, 10), th, ph, ident.ATTRACTING, 1680, y.rotation)
+    with pytest.raises(ident.UsageError, match="word_max"):
+        ident.classify(r, th, ph, 1000, word_max=ident.MAX_ANALYSED + 1)
