@@ -91,7 +91,7 @@ LATE = 4                                      # an orbit :func:`late` selects is
 LONGER = 16                                   # ... and one repeating a word not attracting at r, LONGER times
 LATE_RULE = 3                                 # :func:`late`'s rule (1: long transients; 2: and runs with no period;
                                               # 3: and words not attracting at r, LONGER; blocks up to LONG_WORD read)
-LONG_WORD = 1000                              # the longest block identify decides at one r for the atlas (below)
+LONG_WORD = ident.MAX_ANALYSED                # the longest block identify decides at one r for the atlas (below)
 TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
 NEAR_HORSESHOE = "near a certified horseshoe"   # an unresolved orbit whose float64 run enters a proved horseshoe's box
 RESONANCE_Q = 120                             # window ends decided to be resonances p/q, q ≤ 120
@@ -274,15 +274,9 @@ def late_factor(kind: str | None, observed: str | None) -> int | None:
     return LONGER if kind == NOT_ATTRACTING else None
 
 
-def late_kind(kind: str | None, observed: str | None) -> bool:
-    """Whether an unresolved orbit of this kind and observed word is run again longer
-    (:func:`late_factor`)."""
-    return late_factor(kind, observed) is not None
-
-
 def late(o: dict) -> bool:
-    """Whether an orbit record is unresolved and run again longer (:func:`late_kind`)."""
-    return o["class"] == UNRESOLVED and late_kind(o["unresolved"], o["observed"])
+    """Whether an orbit record is unresolved and run again longer (:func:`late_factor`)."""
+    return o["class"] == UNRESOLVED and late_factor(o["unresolved"], o["observed"]) is not None
 
 
 def unread(o: dict) -> bool:
@@ -1412,10 +1406,9 @@ def _fq(r: str) -> flint.fmpq:
 
 
 def _attracting_at(word: str, r: flint.fmpq) -> set[str]:
-    """The names of the attracting periodic orbits of ``word`` at r, by ``orbit_at`` (exact; up to
-    :data:`LONG_WORD` letters)."""
-    from certify.patterns.reduction_orbits import orbit_at
-    return {name(word, o.branch_name) for o in orbit_at(word, r, LONG_WORD)
+    """The names of the attracting periodic orbits of ``word`` (a normal form) at r, by ``orbit_at``
+    (exact; up to :data:`LONG_WORD` letters; once per run with identify's decisions)."""
+    return {name(word, o.branch_name) for o in ident.orbits_at(word, r)
             if o.feasible and o.kind == ATTRACTING.split()[0]}
 
 

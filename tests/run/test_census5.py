@@ -182,10 +182,12 @@ def test_the_high_precision_zero_test_gives_the_engines_answers(monkeypatch):
         answer = mine(self, G, rc, branch, maxprec)
         if fresh:
             asked.append((self, G, rc, branch, maxprec, answer))
+            early.append(getattr(G, "monic", None) is None)       # decided before the monic gcd was made
         return answer
+    early: list = []
     monkeypatch.setattr(five.FiveSpectrum, "_vanishes_on", spy)
     five.analyse_five("abdbcd")
-    assert len(asked) >= 2
+    assert len(asked) >= 2 and any(early)                   # the high-precision route did decide
     for sp, G, rc, branch, maxprec, answer in asked:
         engine = functools.partial(G)         # the engine's two routes, its monic gcd made afresh
         engine.fallback = G.fallback  # type: ignore[attr-defined]
