@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 import multiprocessing
 import os
+import signal
 
 from . import family, particles, pattern, reduction, signs, substitution  # noqa: F401  (they register their functions, predicates, quantifiers)
 from .evaluate import Context, NotVerified, truth
@@ -144,6 +145,15 @@ def _one(k: int) -> dict:
     return verify_certificate(cert, _WORK["engine"].get(cert.id), _WORK["lets"])
 
 
+def _worker_start() -> None:
+    """In a forked worker: SIGTERM (the pool's terminate, when it exits) ends it at once and Ctrl-C
+    is the parent's.  A Python handler inherited from the parent could take SIGTERM without dying,
+    and the pool's exit, which holds the task queue's lock and joins its workers, would wait for
+    ever (seen under pytest-xdist, whose worker had a handler left by an earlier test)."""
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None, tick=None) -> list[dict]:
     """The results of :func:`verify_certificate` for the certificates of the statement files (those
     named by ``ids``), in their order; on ``jobs`` processes (fork), the heaviest first; ``tick(k,
@@ -157,7 +167,7 @@ def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None, tick=None) -> 
     order = sorted(range(len(certs)), key=lambda k: -len(json.dumps(engine.get(certs[k].id, ""))))
     done: dict = {}
     if jobs > 1 and len(certs) > 1 and hasattr(os, "fork"):
-        with multiprocessing.get_context("fork").Pool(jobs) as pool:
+        with multiprocessing.get_context("fork").Pool(jobs, initializer=_worker_start) as pool:
             for r in pool.imap_unordered(_one, order, chunksize=1):
                 done[next(k for k in order if certs[k].id == r["id"])] = r
                 if tick:

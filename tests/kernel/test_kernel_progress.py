@@ -44,3 +44,29 @@ def test_the_kernel_shows_progress_on_a_terminal_only(tmp_path, monkeypatch, cap
     drawn = terminal.getvalue()
     assert "\r0/3 certificates decided\x1b[K" in drawn and "2/3 certificates decided (last: " in drawn
     assert drawn.endswith("\r\x1b[K")                       # erased at the end
+
+
+def test_forked_workers_end_even_where_the_parent_swallows_sigterm(tmp_path):
+    """verify_all on 2 forked workers, in a process whose SIGTERM handler returns without
+    raising (as a test or a tool may leave one): the pool's exit terminates its workers and
+    returns.  With the handler inherited by the workers it waited for ever (issue seen under
+    pytest-xdist); run in a child process with a time limit so that a hang fails, not blocks."""
+    import subprocess
+    import sys
+    from pathlib import Path
+    statements, path = files(tmp_path)
+    script = (
+        "import json, signal, sys\n"
+        "import certify_kernel\n"
+        "from certify_kernel.statements import read\n"
+        "signal.signal(signal.SIGTERM, lambda *a: None)\n"
+        f"data, paper = json.loads(open({str(path)!r}).read()), read({str(statements)!r})\n"
+        "for _ in range(40):                     # the exit's race: the parent takes the queue's lock first\n"
+        "    res = certify_kernel.verify_all(data, paper, 4)\n"
+        "print(len(res), all(r['ok'] for r in res))\n")
+    root = Path(__file__).resolve().parents[2]
+    try:
+        out = subprocess.run([sys.executable, "-c", script], cwd=root, capture_output=True, text=True, timeout=90)
+    except subprocess.TimeoutExpired:
+        raise AssertionError("verify_all did not return: its workers took SIGTERM without ending") from None
+    assert out.returncode == 0 and out.stdout.split() == ["3", "True"], out.stderr
