@@ -320,7 +320,7 @@ def _orbit_record(x, rerun, kind, th, ph, fq) -> dict:
 
 def r_job(r: str, data: list, collisions: int, previous: dict | None = None) -> dict:
     """Every orbit of ``data`` at r classified by identify (an unresolved orbit that
-    :func:`late` selects run again, :data:`LATE` times longer, its class kept if that run
+    :func:`late` selects run again, :func:`late_factor` times longer, its class kept if that run
     proves one); the island at r (the theorem, the rotation number, the certified share of
     the b-section).  ``previous``: a record of r made before the rule :data:`LATE_RULE`; its
     island and the orbits that rule does not run again (:func:`late`, not yet run again) nor

@@ -137,8 +137,9 @@ def test_laplace_is_the_determinant(n):
 
 
 def _mpoly(coeffs):
-    ctx = flint.fmpz_mpoly_ctx.get(("k", "r"))
-    return ctx.from_dict({(j, i): int(c) for j, col in enumerate(coeffs) for i, c in enumerate(col.coeffs()) if c})
+    """The polynomial Σ_j coeffs[j](r) λ^j in poly.MCTX (r, λ, s)."""
+    from certify.algebra.poly import MCTX
+    return MCTX.from_dict({(i, j, 0): int(c) for j, col in enumerate(coeffs) for i, c in enumerate(col.coeffs()) if c})
 
 
 @pytest.mark.parametrize("degree_g", [0, 2, 5, 9])
@@ -148,12 +149,12 @@ def test_the_bezout_resultant_is_the_resultant(degree_g):
     with a content; a g sharing a factor with cp gives 0."""
     import random
 
-    from certify.algebra.poly import primitive
+    from certify.algebra.poly import mpoly_to_univariate, primitive
     rng = random.Random(degree_g)
     poly = lambda d: flint.fmpz_poly([rng.randint(-9, 9) for _ in range(d + 1)])  # noqa: E731
     cp = [poly(3) for _ in range(6)] + [flint.fmpz_poly([4])]
     g = [6 * poly(4) for _ in range(degree_g + 1)]
-    expected = primitive(flint.fmpz_poly(_univariate(_mpoly(g).resultant(_mpoly(cp), "k"))))
+    expected = primitive(mpoly_to_univariate(_mpoly(g).resultant(_mpoly(cp), "lam")))
     assert five.bezout_resultant(g, cp) == expected and not expected.is_zero()
     # g = (κ - r)·h and cp = (κ - r)·m share the factor κ - r: the resultant is 0
     shift = [flint.fmpz_poly([0, -1]), flint.fmpz_poly([1])]
@@ -161,12 +162,6 @@ def test_the_bezout_resultant_is_the_resultant(degree_g):
                               flint.fmpz_poly(0)) for k in range(len(a) + len(b) - 1)]
     assert five.bezout_resultant(times(shift, [poly(2) for _ in range(3)]),
                                  times(shift, [poly(2) for _ in range(5)] + [flint.fmpz_poly([4])])).is_zero()
-
-
-def _univariate(R) -> list:
-    """The coefficients in r of an fmpz_mpoly in (k, r) free of k, lowest first."""
-    d = R.to_dict()
-    return [d.get((0, i), 0) for i in range(max((i for _k, i in d), default=0) + 1)]
 
 
 def test_the_high_precision_zero_test_gives_the_engines_answers(monkeypatch):

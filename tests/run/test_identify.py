@@ -271,10 +271,11 @@ def test_a_block_longer_than_the_parser_reads_is_decided_up_to_word_max():
     assert x.cls == ident.UNRESOLVED and "a block of 458 letters (longer than 400: not analysed)" in x.why
     y = ident.classify(r, th, ph, 20_000, word_max=1000)
     assert y.cls == ident.ATTRACTING and len(y.word) == 458 and y.certified_from == 1680
-    assert ident.verify(r, th, ph, ident.ATTRACTING, 1680, y.rotation) is None
+    k = y.certified_from
+    assert ident.verify(r, th, ph, ident.ATTRACTING, k, y.rotation) is None
     altered = y.rotation.replace("bab", "bcb", 1)                        # one letter: still a word
     assert altered != y.rotation
-    assert "no attracting periodic orbit" in ident.verify(r, th, ph, ident.ATTRACTING, 1680, altered)
-    assert "no attracting periodic orbit" in ident.verify(Fraction(3, 10), th, ph, ident.ATTRACTING, 1680, y.rotation)
+    assert "no attracting periodic orbit" in ident.verify(r, th, ph, ident.ATTRACTING, k, altered)
+    assert "no attracting periodic orbit" in ident.verify(Fraction(3, 10), th, ph, ident.ATTRACTING, k, y.rotation)
     with pytest.raises(ident.UsageError, match="word_max"):
         ident.classify(r, th, ph, 1000, word_max=ident.MAX_ANALYSED + 1)
