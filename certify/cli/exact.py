@@ -260,7 +260,7 @@ def census_of_five(args) -> int:
     state = args.state if args.state is not None else out / "census5-state.jsonl"
     ensure_writable_file(state, "--state")
     with executors.executor(args.jobs, one_thread=True) as ex:
-        records = census5.run(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
+        records = census5.run(args.max_length, ex, state, args.resume, progress=progress.Bar("word"), notice=say)
     doc = census5.write_outputs(records, args.max_length, out)
     if args.json:
         print(census5.to_json(doc), end="")
