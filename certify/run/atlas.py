@@ -285,6 +285,18 @@ def unread(o: dict) -> bool:
     return o["class"] == UNRESOLVED and o["observed"] is not None and MAX_LENGTH < len(o["observed"]) <= LONG_WORD
 
 
+def rerun_due(o: dict) -> bool:
+    """Whether :func:`r_job` runs an orbit record of an older r record again under :data:`LATE_RULE`:
+    unresolved and selected by :func:`late` but not yet run again, or on a block :func:`unread`."""
+    return (late(o) and o["rerun"] is None) or unread(o)
+
+
+def current(rec: dict) -> bool:
+    """Whether an r record of the state is reused as it is (made under :data:`LATE_RULE`, its ``late``
+    mark); else :func:`r_job` upgrades it."""
+    return rec.get("late") == LATE_RULE
+
+
 def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     """(identify's class of the orbit (θ0, φ0) at r, the collisions it was run again with, its
     unresolved kind): an unresolved orbit that :func:`late` selects is run again
@@ -331,7 +343,7 @@ def r_job(r: str, data: list, collisions: int, previous: dict | None = None) -> 
     orbits = []
     for i, (th, ph) in enumerate(data):
         old = previous["orbits"][i] if previous is not None else None
-        if old is not None and not ((late(old) and old["rerun"] is None) or unread(old)):
+        if old is not None and not rerun_due(old):
             orbits.append(old)
             continue
         orbits.append(_orbit_record(*classify_late(q, fq, th, ph, collisions), th, ph, fq))
@@ -503,7 +515,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
                 continue
             wanted.append(r)
             total[0] += 1
-            if r in stored_r and stored_r[r].get("late") == LATE_RULE:
+            if r in stored_r and current(stored_r[r]):
                 done_r[r] = stored_r[r]
                 count[0] += 1
                 for w in _words_of(done_r[r]):
