@@ -167,9 +167,9 @@ class Rule:
     build: Callable[[int], str] | None = None
 
     def word(self, k: int) -> str:
-        """Member k's word (normal form)."""
-        text = self.build(k) if self.build else re.sub(r"\([abc]+\)\^0", "", self.spelling.format(k=k, j=k - 1))
-        return read(text)[0]
+        """Member k's word (normal form), up to :data:`LONG_WORD` letters (:func:`read_plain`)."""
+        text = self.build(k) if self.build else self.spelling.format(k=k, j=k - 1)
+        return read_plain(_written_out(text), LONG_WORD)[0]
 
     def resonance(self, k: int) -> tuple[int, int] | None:
         """p_k/q_k in lowest terms, or None."""
@@ -186,6 +186,13 @@ class Rule:
     def reads(self) -> str:
         """The rule as ATLAS.md prints it."""
         return self.spelling.replace("{k}", "k").replace("{j}", "(k−1)")
+
+
+def _written_out(text: str) -> str:
+    """A rule's spelling in plain letters: each power (x)^n of a group of letters written out, n = 0
+    dropping the group (the rules' spellings nest no group).  The parser (``read``) expands powers
+    too, but only up to its 400 letters; :func:`read_plain` reads longer words as plain letters."""
+    return re.sub(r"\(([abc]+)\)\^(\d+)", lambda m: m.group(1) * int(m.group(2)), text)
 
 
 def _swap(text: str) -> str:

@@ -756,3 +756,23 @@ def test_a_state_rebuilt_from_the_committed_atlas_is_reused_as_it_is():
                                        "rerun": None})
     [row] = [rec for rec in tool.records(older) if rec["kind"] == "r"]
     assert atlas.rerun_due(row["orbits"][0]) and not atlas.current(row)
+
+
+def test_a_rule_spells_a_member_past_the_parsers_400_letters():
+    """Rule.word reads up to LONG_WORD letters: member k = 38 of the 12k + 10 rule (466 letters) is the
+    block every orbit of reports/atlas.json at r = 29/169 was proved to follow, and so are the other long
+    blocks of docs/atlas.md, "Long blocks" (868 letters: k = 72 of the 12k + 4 rule; 554 and 458: k = 23
+    and 19 of the 24k + 2 rule); the 400-letter parser refused them."""
+    doc = _committed(atlas.VERSION)
+    rows = {row["r"]: row for row in doc["r"]}
+    by = {rule.spelling: rule for rule in FAMILIES}
+    for r, spelling, k, length in (
+            ("29/169", "(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb", 38, 466),
+            ("8579/50000", "(abacbc)^{k}a(bcabac)^{k}bcb", 72, 868),
+            ("23/134", "(abacbc)^{k}a(bcabac)^{j}bc(ab)^2(cbcaba)^{k}c(bacbca)^{j}ba(cb)^2", 23, 554),
+            ("40/233", "(abacbc)^{k}a(bcabac)^{j}bc(ab)^2(cbcaba)^{k}c(bacbca)^{j}ba(cb)^2", 19, 458)):
+        word = by[spelling].word(k)
+        assert len(word) == length > atlas.MAX_LENGTH
+        followed = [o for o in rows[r]["orbits"] if o["word"] == word]
+        assert followed and all(o["class"] == atlas.ATTRACTING for o in followed)
+    assert {o["word"] for o in rows["29/169"]["orbits"]} == {by["(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb"].word(38)}
