@@ -10,7 +10,8 @@ from pathlib import Path
 
 from certify.errors import UsageError
 
-from .options import DEFAULT_OUT, add_command, add_jobs, number, positive_int, r_range, r_value, restitution, say
+from .options import (DEFAULT_OUT, add_command, add_jobs, kill_interrupts, number, positive_int, r_range, r_value,
+                      restitution, say)
 
 MAX_DIGITS = 1000             # particles --digits
 # census --max-length: the census to 20 (5618 words) took about an hour of the two cores (7300 s of
@@ -32,15 +33,13 @@ def plural(n: int, word: str) -> str:
     return f"{n} {word}{'' if n == 1 else 's'}"
 
 
+@kill_interrupts                  # `kill` stops it like Ctrl-C: workers too
 def cmd_census(args) -> int:
     """The census of periodic patterns (certify/run/census_report.py): records stream to the
     state file, --resume skips the words already there."""
-    import signal
-
     from certify.run import census_report as census
     from certify.run import executors, progress
     from certify.run.files import ensure_writable, ensure_writable_file, keep_larger
-    signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     if args.particles != 4:
         return census_of_five(args)
     if args.check:
