@@ -10,8 +10,18 @@ from pathlib import Path
 
 from certify.errors import UsageError
 
-from .options import (DEFAULT_OUT, add_command, add_jobs, kill_interrupts, number, positive_int, r_range, r_value,
-                      restitution, say)
+from .options import (
+    DEFAULT_OUT,
+    add_command,
+    add_jobs,
+    kill_interrupts,
+    number,
+    positive_int,
+    r_range,
+    r_value,
+    restitution,
+    say,
+)
 
 MAX_DIGITS = 1000             # particles --digits
 # census --max-length: the census to 20 (5618 words) took about an hour of the two cores (7300 s of
