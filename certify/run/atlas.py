@@ -167,9 +167,9 @@ class Rule:
     build: Callable[[int], str] | None = None
 
     def word(self, k: int) -> str:
-        """Member k's word (normal form)."""
-        text = self.build(k) if self.build else re.sub(r"\([abc]+\)\^0", "", self.spelling.format(k=k, j=k - 1))
-        return read(text)[0]
+        """Member k's word (normal form), up to :data:`LONG_WORD` letters (:func:`read_plain`)."""
+        text = self.build(k) if self.build else self.spelling.format(k=k, j=k - 1)
+        return read_plain(_written_out(text), LONG_WORD)[0]
 
     def resonance(self, k: int) -> tuple[int, int] | None:
         """p_k/q_k in lowest terms, or None."""
@@ -186,6 +186,13 @@ class Rule:
     def reads(self) -> str:
         """The rule as ATLAS.md prints it."""
         return self.spelling.replace("{k}", "k").replace("{j}", "(k−1)")
+
+
+def _written_out(text: str) -> str:
+    """A rule's spelling in plain letters: each power (x)^n of a group of letters written out, n = 0
+    dropping the group (the rules' spellings nest no group).  The parser (``read``) expands powers
+    too, but only up to its 400 letters; :func:`read_plain` reads longer words as plain letters."""
+    return re.sub(r"\(([abc]+)\)\^(\d+)", lambda m: m.group(1) * int(m.group(2)), text)
 
 
 def _swap(text: str) -> str:
@@ -285,6 +292,18 @@ def unread(o: dict) -> bool:
     return o["class"] == UNRESOLVED and o["observed"] is not None and MAX_LENGTH < len(o["observed"]) <= LONG_WORD
 
 
+def rerun_due(o: dict) -> bool:
+    """Whether :func:`r_job` runs an orbit record of an older r record again under :data:`LATE_RULE`:
+    unresolved and selected by :func:`late` but not yet run again, or on a block :func:`unread`."""
+    return (late(o) and o["rerun"] is None) or unread(o)
+
+
+def current(rec: dict) -> bool:
+    """Whether an r record of the state is reused as it is (made under :data:`LATE_RULE`, its ``late``
+    mark); else :func:`r_job` upgrades it."""
+    return rec.get("late") == LATE_RULE
+
+
 def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     """(identify's class of the orbit (θ0, φ0) at r, the collisions it was run again with, its
     unresolved kind): an unresolved orbit that :func:`late` selects is run again
@@ -331,7 +350,7 @@ def r_job(r: str, data: list, collisions: int, previous: dict | None = None) -> 
     orbits = []
     for i, (th, ph) in enumerate(data):
         old = previous["orbits"][i] if previous is not None else None
-        if old is not None and not ((late(old) and old["rerun"] is None) or unread(old)):
+        if old is not None and not rerun_due(old):
             orbits.append(old)
             continue
         orbits.append(_orbit_record(*classify_late(q, fq, th, ph, collisions), th, ph, fq))
@@ -503,7 +522,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
                 continue
             wanted.append(r)
             total[0] += 1
-            if r in stored_r and stored_r[r].get("late") == LATE_RULE:
+            if r in stored_r and current(stored_r[r]):
                 done_r[r] = stored_r[r]
                 count[0] += 1
                 for w in _words_of(done_r[r]):
