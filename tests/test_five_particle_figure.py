@@ -26,6 +26,7 @@ FLOAT_WINDOWS = {
     "abadcbcabc": (0.250122, round(2 - math.sqrt(3), 6)),
     "ababcbcdcdbcdbcbabc": (0.225155, 0.259241),
     "abacbacbdcbcdcdbcdbcabcb": (0.212310, 0.212936),
+    "abacbacbcdcbcdcdbcdbcbabcb": (0.206064, 0.206808),
 }
 
 
