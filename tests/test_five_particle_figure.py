@@ -28,6 +28,7 @@ FLOAT_WINDOWS = {
     "abacbacbdcbcdcdbcdbcabcb": (0.212310, 0.212936),
     "abacbacbcdcbcdcdbcdbcbabcb": (0.206064, 0.206808),
     "abacbacbcbdcbcdcdbcdbcbabcb": (0.201452, 0.201939),
+    "abacbacbcbdcbcdcdbcdbcbcabcb": (0.201913, 0.206054),
 }
 
 
