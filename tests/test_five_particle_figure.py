@@ -29,6 +29,7 @@ FLOAT_WINDOWS = {
     "abacbacbcdcbcdcdbcdbcbabcb": (0.206064, 0.206808),
     "abacbacbcbdcbcdcdbcdbcbabcb": (0.201452, 0.201939),
     "abacbacbcbdcbcdcdbcdbcbcabcb": (0.201913, 0.206054),
+    "ababcbcabacbacbdcbdcdcbcbdcdbcdbcabc": (0.187070, 0.187596),
 }
 
 
