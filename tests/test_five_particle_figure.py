@@ -82,6 +82,6 @@ def test_check_names_a_committed_file_that_is_not_reproduced(tmp_path, name):
 @pytest.mark.slow
 def test_the_ten_letter_result_is_reproduced_by_certify_pattern():
     """`certify pattern abadcbcabc --json --r-range 0 1` prints the committed file's bytes (about 20 s);
-    the 19-letter word's (13 min of CPU) is `python tools/five_particle_figure.py --check`."""
+    the longer words' (1-6 min of CPU each) are `python tools/five_particle_figure.py --check`."""
     assert tool.differences([tool.COMMITTED / "abadcbcabc.json"]) == []
     assert census.windows({"result": committed()["abadcbcabc"]})
