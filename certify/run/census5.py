@@ -151,7 +151,7 @@ def markdown(doc: dict) -> str:
     lines += ["## By length", "", "| length | words | exists (factors analysed) | feasible (factors analysed) | "
               "stable | with undecided points | with a factor not analysed |", "|---:|---:|---:|---:|---:|---:|---:|"]
     lines += [f"| {n} | {e['words']} | {e['exists']} | {e['feasible']} | {e['stable']} | {e['undecided']} | "
-              f"{e['not_analysed']} |" for n, e in s["lengths"].items()]
+              f"{e['not_analysed']} |" for n, e in sorted(s["lengths"].items(), key=lambda ne: int(ne[0]))]
     union = "(each the r-set of one κ branch and ordering x₊ or x₋; the same set for several is shown once)"
     lines += ["", "## Stable words", "", union, ""]
     lines += [f"- {w['word']}: {'; '.join(dict.fromkeys(w['windows']))}" for w in s["stable_words"]] or ["None."]
