@@ -187,9 +187,9 @@ def test_the_bezout_resultant_is_the_resultant(degree_g):
 
 
 def test_the_high_precision_zero_test_gives_the_engines_answers(monkeypatch):
-    """FiveSpectrum._vanishes_on (a gcd's roots as they come, enclosed to 2^16 bits before the engine's
-    monic gcd) answers as Spectrum._vanishes_on, the engine's route with the monic gcd, wherever a word's
-    analysis asks it about a gcd not yet made monic (abdbcd asks twice)."""
+    """FiveSpectrum's zero test (a gcd's roots as they come, enclosed to 2^16 bits before the engine's
+    monic gcd: its _precision_ceiling) answers as Spectrum's, the engine's route with the monic gcd,
+    wherever a word's analysis asks about a gcd not yet made monic (abdbcd asks twice)."""
     from certify.algebra.branches import Spectrum
     asked = []
     mine = five.FiveSpectrum._vanishes_on
@@ -205,6 +205,7 @@ def test_the_high_precision_zero_test_gives_the_engines_answers(monkeypatch):
     monkeypatch.setattr(five.FiveSpectrum, "_vanishes_on", spy)
     five.analyse_five("abdbcd")
     assert len(asked) >= 2 and any(early)                   # the high-precision route did decide
+    monkeypatch.setattr(five.FiveSpectrum, "_precision_ceiling", Spectrum._precision_ceiling)
     for sp, G, rc, branch, maxprec, answer in asked:
         engine = functools.partial(G)         # the engine's two routes, its monic gcd made afresh
         engine.fallback = G.fallback  # type: ignore[attr-defined]
