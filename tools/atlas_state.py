@@ -7,7 +7,10 @@ atlas-state.jsonl (not committed) is gone.
 An r record is the document's row (its orbits, the island) with the data and collisions of
 its parameters; a word record is the document's word (as analysed: its windows exactly as
 `certify orbit` gave them).  A horseshoe record (``chaos``) is written back only where the
-row has one.  No timing: the seconds are 0."""
+row has one.  No timing: the seconds are 0.  An r record is marked ``late`` = LATE_RULE
+(reused as it is by ``--resume``: ``atlas.current``) when none of its orbits is one that
+``atlas.r_job`` would run again under that rule (``atlas.rerun_due``): its upgrade would give the
+same record; a row made under an older rule is left unmarked, and upgraded."""
 from __future__ import annotations
 
 import json
@@ -24,8 +27,13 @@ def records(doc: dict):
     p = doc["parameters"]
     data = len(atlas.data_grid(p["data"]))
     for row in doc["r"]:
-        yield {"kind": "r", "r": row["r"], "data": data, "collisions": p["collisions"], "island": row["island"],
-               "orbits": [{k: o.get(k) for k in ORBIT_KEYS} for o in row["orbits"]], "seconds": 0.0}
+        orbits = [{k: o.get(k) for k in ORBIT_KEYS} for o in row["orbits"]]
+        rec = {"kind": "r", "r": row["r"], "data": data, "collisions": p["collisions"], "island": row["island"],
+               "orbits": orbits, "seconds": 0.0}
+        due = [atlas.rerun_due(o, atlas._fq(row["r"]), p["collisions"]) for o in orbits]
+        if not any(due):                                   # what r_job's upgrade would give: the same record
+            rec["late"] = atlas.LATE_RULE
+        yield rec
     for w in doc["words"]:
         yield {**{k: v for k, v in w.items() if k != "source"}, "seconds": 0.0}
     for row in doc["r"]:

@@ -5,12 +5,13 @@
     python tools/five_particle_figure.py --check             # analyse the committed words again
 
 reports/five-patterns/WORD.json is what ``certify pattern WORD --json [--r-range LO HI]`` wrote, byte for
-byte (the 19-letter word's analysis takes about 13 min of CPU: done once, committed).  With no word and no
---pattern-json the figure is drawn from those files; ``--check`` runs ``certify pattern`` again on each
-committed word over its committed r-range and compares the bytes (exit 1 on a difference, nothing is
-drawn).  Each five-particle WORD given is analysed here; ``--pattern-json FILE`` reads a result file
-instead; --out defaults to reports/five-windows.png.  The four-particle windows are those of the committed
-census (reports/census.json).  Only certified windows are drawn (certify/run/five_figure.py).
+byte (the longer words' analyses take 1-6 min of CPU each: done once, committed; docs/particles.md).
+With no word and no --pattern-json the figure is drawn from those files; ``--check`` runs ``certify
+pattern`` again on each committed word over its committed r-range and compares the bytes (exit 1 on a
+difference, nothing is drawn).  Each five-particle WORD given is analysed here; ``--pattern-json FILE``
+reads a result file instead; --out defaults to reports/five-windows.png.  The four-particle windows are
+those of the committed census (reports/census.json).  Only certified windows are drawn
+(certify/run/five_figure.py).
 """
 from __future__ import annotations
 

@@ -687,12 +687,20 @@ class Spectrum:
         for H, R in bucket:
             if H == G:
                 return R
-        if self._cp_coeffs is not None and len(self._cp_coeffs) <= 4 and G.degrees()[2] == 0:          # free of s
-            R = _norm_modulo(_lambda_coefficients(G), self._cp_coeffs)
-        else:
+        R = None
+        if self._cp_coeffs is not None and not G.is_zero() and G.degrees()[2] == 0:          # free of s
+            R = self._resultant_free_of_s(_lambda_coefficients(G))
+        if R is None:
             R = mpoly_to_univariate(G.resultant(self.mpoly_cp, "lam"))
         bucket.append((G, primitive(R)))
         return bucket[-1][1]
+
+    def _resultant_free_of_s(self, g: list) -> flint.fmpz_poly | None:
+        """A non-zero rational multiple of Res_λ(g, cp) (0 when it is 0), g ∈ Z[r][λ] given by its
+        coefficients in λ and cp of constant leading coefficient: by :func:`_norm_modulo` for a cp of
+        degree ≤ 3; None for a higher degree (:meth:`resultant` takes the subresultant then).  A
+        subclass with a cheaper route for its degree overrides this."""
+        return _norm_modulo(g, self._cp_coeffs) if len(self._cp_coeffs) <= 4 else None
 
     def _resultant_off_common_factor(self, e, cond: Condition, label: str) -> flint.fmpz_poly:
         """Res_λ(e, cp) ≡ 0: e and cp share a factor G in Q(r)[λ] (cp is reducible), so e
@@ -1133,8 +1141,9 @@ class Spectrum:
         if branches is None or branch >= len(branches):
             raise Undecided("branch not isolated at this point")
         for zeros_at in _zero_routes(G):
+            top = self._precision_ceiling(zeros_at, maxprec)
             prec = 128
-            while prec <= maxprec:
+            while prec <= top:
                 zeros = zeros_at(prec)
                 balls = [b(prec) for b in branches]
                 if zeros is not None:
@@ -1145,6 +1154,12 @@ class Spectrum:
                         return bool(hit)
                 prec *= 2
         raise Undecided("zero test undecided")
+
+    def _precision_ceiling(self, zeros_at, maxprec: int) -> int:
+        """The highest precision (bits) :meth:`_vanishes_on` tries on the enclosures ``zeros_at`` (one
+        of :func:`_zero_routes`): ``maxprec`` here; a subclass may go higher on a route.  Any answer
+        the disjoint balls give is exact, at whatever precision."""
+        return maxprec
 
 
 def _union(factor_lists) -> list:

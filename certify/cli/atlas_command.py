@@ -10,14 +10,12 @@ from pathlib import Path
 from certify.run import progress
 from certify.run.files import ensure_writable, keep_larger, load_findings
 
-from .options import DEFAULT_OUT, add_command, count, positive_int, r_range
+from .options import DEFAULT_OUT, add_command, count, kill_interrupts, positive_int, r_range
 
 
+@kill_interrupts                  # `kill` stops it like Ctrl-C: workers too
 def cmd_atlas(args) -> int:
-    import signal
-
     from certify.run import atlas, executors
-    signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     lo, hi = r_range(*args.r_range) if args.r_range else (atlas.LO, atlas.HI)
     rs = atlas.r_values(lo, hi, args.resolution)
     data = atlas.data_grid(args.data)

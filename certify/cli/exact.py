@@ -10,7 +10,18 @@ from pathlib import Path
 
 from certify.errors import UsageError
 
-from .options import DEFAULT_OUT, add_command, add_jobs, number, positive_int, r_range, r_value, restitution, say
+from .options import (
+    DEFAULT_OUT,
+    add_command,
+    add_jobs,
+    kill_interrupts,
+    number,
+    positive_int,
+    r_range,
+    r_value,
+    restitution,
+    say,
+)
 
 MAX_DIGITS = 1000             # particles --digits
 # census --max-length: the census to 20 (5618 words) took about an hour of the two cores (7300 s of
@@ -32,15 +43,13 @@ def plural(n: int, word: str) -> str:
     return f"{n} {word}{'' if n == 1 else 's'}"
 
 
+@kill_interrupts                  # `kill` stops it like Ctrl-C: workers too
 def cmd_census(args) -> int:
     """The census of periodic patterns (certify/run/census_report.py): records stream to the
     state file, --resume skips the words already there."""
-    import signal
-
     from certify.run import census_report as census
     from certify.run import executors, progress
     from certify.run.files import ensure_writable, ensure_writable_file, keep_larger
-    signal.signal(signal.SIGTERM, signal.default_int_handler)     # `kill` stops it like Ctrl-C: workers too
     if args.particles != 4:
         return census_of_five(args)
     if args.check:
@@ -260,7 +269,7 @@ def census_of_five(args) -> int:
     state = args.state if args.state is not None else out / "census5-state.jsonl"
     ensure_writable_file(state, "--state")
     with executors.executor(args.jobs, one_thread=True) as ex:
-        records = census5.run(args.max_length, ex, state, args.resume, progress=progress.Bar("word"))
+        records = census5.run(args.max_length, ex, state, args.resume, progress=progress.Bar("word"), notice=say)
     doc = census5.write_outputs(records, args.max_length, out)
     if args.json:
         print(census5.to_json(doc), end="")

@@ -6,8 +6,11 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import re
+import signal
 import sys
+import threading
 from fractions import Fraction
 from pathlib import Path
 
@@ -168,6 +171,23 @@ def prepare_output(out: Path) -> Path:
     ensure_writable(out)
     ensure_writable(out / "figures")
     return out
+
+def kill_interrupts(command):
+    """``command(args)`` run with SIGTERM raising KeyboardInterrupt as Ctrl-C does (``kill`` stops a long
+    command like Ctrl-C, its workers too), the handler before restored when it returns or raises, so a
+    caller of ``cli.main`` in-process (a test, a library) keeps its own.  Outside the main thread, where
+    no handler can be set, the command runs as it is."""
+    @functools.wraps(command)
+    def run(args):
+        if threading.current_thread() is not threading.main_thread():
+            return command(args)
+        before = signal.signal(signal.SIGTERM, signal.default_int_handler)
+        try:
+            return command(args)
+        finally:
+            signal.signal(signal.SIGTERM, signal.SIG_DFL if before is None else before)
+    return run
+
 
 def say(message: str) -> None:
     """One line on stderr, prefixed with the program name."""

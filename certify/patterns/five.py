@@ -52,7 +52,7 @@ from dataclasses import dataclass
 
 import flint
 
-from certify.algebra.branches import Spectrum, _lambda_coefficients, less
+from certify.algebra.branches import Spectrum, less
 from certify.algebra.poly import (
     LR_LAMBDA,
     LR_R,
@@ -69,7 +69,6 @@ from certify.algebra.poly import (
 )
 from certify.dynamics.model import alphabet, charpoly_coefficients, charpoly_ring, collide_gaps
 from certify.dynamics.systems import of_particles, system_matrix_flint
-from certify.errors import Undecided
 
 from .feasibility import Analysis, Requirement
 from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, end_data, verdict
@@ -186,41 +185,25 @@ class FiveSpectrum(Spectrum):
     """:class:`~certify.algebra.branches.Spectrum` of a sextic (or a factor) monic in κ up to a constant,
     with two cheaper routes to the same answers:
 
-    * :meth:`resultant` by :func:`bezout_resultant` (a 6×6 Bézout determinant over Z[r], division-free)
-      instead of the multivariate subresultant: the same primitive polynomial, memoised by value;
-    * :meth:`_vanishes_on` encloses the common roots of a gcd taken as it comes to
+    * its resultants free of s by :func:`bezout_resultant` (a 6×6 Bézout determinant over Z[r],
+      division-free) instead of the multivariate subresultant: the same primitive polynomial, memoised by
+      the engine (:meth:`_resultant_free_of_s`);
+    * the zero test encloses the common roots of a gcd taken as it comes to
       :data:`AS_IT_COMES_PRECISION` bits before the engine makes it monic (an inverse in Q(r₀) by xgcd:
-      10-14 s each on words of length 9, whose gcds have coefficients of 24 000 bits)."""
+      10-14 s each on words of length 9, whose gcds have coefficients of 24 000 bits)
+      (:meth:`_precision_ceiling`)."""
 
-    def __init__(self, cp, ring_cp=None):
-        super().__init__(cp, ring_cp)
-        self._bezout: dict = {}            # (terms, degrees) -> [(G primitive, its resultant)]
+    def _resultant_free_of_s(self, g: list) -> flint.fmpz_poly:
+        """primitive(Res_κ(g, cp)) by :func:`bezout_resultant`, whatever cp's degree (the engine's
+        memo, :meth:`Spectrum.resultant`, keeps it)."""
+        return bezout_resultant(g, self._cp_coeffs)
 
-    def resultant(self, g) -> flint.fmpz_poly:
-        G = g if isinstance(g, flint.fmpz_mpoly) else ring_to_mpoly(g)
-        if self._cp_coeffs is None or G.is_zero() or G.degrees()[2] != 0:      # depends on s: the general route
-            return super().resultant(g)
-        G = G / G.content()  # type: ignore[attr-defined]
-        key = (len(G), tuple(G.degrees()))
-        for H, R in self._bezout.get(key, ()):
-            if H == G or H == -G:
-                return R
-        R = bezout_resultant(_lambda_coefficients(G), self._cp_coeffs)
-        self._bezout.setdefault(key, []).append((G, R))
-        return R
-
-    def _vanishes_on(self, G, rc, branch: int, maxprec: int) -> bool:
-        """The engine's test (disjoint certified balls), where the common roots are a gcd taken as it
-        comes whose monic form is not made yet: first its own balls up to :data:`AS_IT_COMES_PRECISION`
-        bits (the same test at higher precision: an answer it gives is the engine's), then the engine's
-        routes (the monic gcd) if those do not decide."""
-        if getattr(G, "fallback", None) is not None and getattr(G, "monic", None) is None \
-                and AS_IT_COMES_PRECISION > maxprec:
-            try:
-                return super()._vanishes_on(lambda prec: G(prec), rc, branch, AS_IT_COMES_PRECISION)
-            except Undecided:
-                pass
-        return super()._vanishes_on(G, rc, branch, maxprec)
+    def _precision_ceiling(self, zeros_at, maxprec: int) -> int:
+        """:data:`AS_IT_COMES_PRECISION` on a gcd taken as it comes whose monic form is not made yet
+        (the route :func:`~certify.algebra.branches._zero_routes` tries first), ``maxprec`` otherwise."""
+        if getattr(zeros_at, "fallback", None) is not None and getattr(zeros_at, "monic", None) is None:
+            return max(maxprec, AS_IT_COMES_PRECISION)
+        return maxprec
 
 
 class Reducer:

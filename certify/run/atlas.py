@@ -168,9 +168,9 @@ class Rule:
     build: Callable[[int], str] | None = None
 
     def word(self, k: int) -> str:
-        """Member k's word (normal form)."""
-        text = self.build(k) if self.build else re.sub(r"\([abc]+\)\^0", "", self.spelling.format(k=k, j=k - 1))
-        return read(text)[0]
+        """Member k's word (normal form), up to :data:`LONG_WORD` letters (:func:`read_plain`)."""
+        text = self.build(k) if self.build else self.spelling.format(k=k, j=k - 1)
+        return read_plain(_written_out(text), LONG_WORD)[0]
 
     def resonance(self, k: int) -> tuple[int, int] | None:
         """p_k/q_k in lowest terms, or None."""
@@ -187,6 +187,13 @@ class Rule:
     def reads(self) -> str:
         """The rule as ATLAS.md prints it."""
         return self.spelling.replace("{k}", "k").replace("{j}", "(k−1)")
+
+
+def _written_out(text: str) -> str:
+    """A rule's spelling in plain letters: each power (x)^n of a group of letters written out, n = 0
+    dropping the group (the rules' spellings nest no group).  The parser (``read``) expands powers
+    too, but only up to its 400 letters; :func:`read_plain` reads longer words as plain letters."""
+    return re.sub(r"\(([abc]+)\)\^(\d+)", lambda m: m.group(1) * int(m.group(2)), text)
 
 
 def _swap(text: str) -> str:
@@ -269,7 +276,8 @@ def late_factor(kind: str | None, observed: str | None, r: flint.fmpq) -> int | 
     transient (its word attracts at r) and for a run with no period at all (nothing recognised,
     no word repeated: it may settle later than the run) at r ≤ 3 − 2√2, where horseshoes are
     proved; :data:`LONGER` for such a run above 3 − 2√2 (the island's interval, where no
-    horseshoe is proved: near r = 1 a run can wander for 10⁵ collisions before it settles), and
+    horseshoe is proved: near r = 1 a run can wander for 10⁵ collisions before it settles; run
+    :data:`LATE` times longer first, by :func:`classify_late`), and
     for a run repeating a word not attracting at r (near r = 1, abcb: a slow transient can wind
     along the loop for 10⁵ collisions before it settles elsewhere)."""
     if kind == NOTHING and observed is None:
@@ -284,16 +292,24 @@ def late(o: dict, r: flint.fmpq) -> bool:
     return o["class"] == UNRESOLVED and late_factor(o["unresolved"], o["observed"], r) is not None
 
 
-def rerun_due(o: dict, r: flint.fmpq, collisions: int) -> bool:
-    """Whether an orbit record made under an earlier :data:`LATE_RULE` is unresolved and was not
-    yet run again as long as :func:`late_factor` now asks (never, or shorter)."""
-    return late(o, r) and (o["rerun"] or 0) < late_factor(o["unresolved"], o["observed"], r) * collisions
-
-
 def unread(o: dict) -> bool:
     """Whether an orbit record is unresolved on a block that the rule before :data:`LATE_RULE` 3
     could not read (longer than the parser's MAX_LENGTH, at most :data:`LONG_WORD`): run again."""
     return o["class"] == UNRESOLVED and o["observed"] is not None and MAX_LENGTH < len(o["observed"]) <= LONG_WORD
+
+
+def rerun_due(o: dict, r: flint.fmpq, collisions: int) -> bool:
+    """Whether :func:`r_job` runs an orbit record (at r, of a run of ``collisions``) of an older r record
+    again under :data:`LATE_RULE`: unresolved, selected by :func:`late` and not yet run again as long as
+    :func:`late_factor` now asks (never, or shorter), or on a block :func:`unread`."""
+    return (late(o, r) and (o["rerun"] or 0) < late_factor(o["unresolved"], o["observed"], r) * collisions) \
+        or unread(o)
+
+
+def current(rec: dict) -> bool:
+    """Whether an r record of the state is reused as it is (made under :data:`LATE_RULE`, its ``late``
+    mark); else :func:`r_job` upgrades it."""
+    return rec.get("late") == LATE_RULE
 
 
 def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
@@ -312,8 +328,11 @@ def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     factor = late_factor(kind, x.word, fq)
     if factor is None:
         return x, None, kind
-    y = ident.classify(q, th, ph, factor * collisions, word_max=LONG_WORD)
-    return (y, factor * collisions, None) if y.cls != UNRESOLVED else (x, factor * collisions, kind)
+    for f in (LATE, factor) if kind == NOTHING and factor != LATE else (factor,):     # rule 4: 4×, then 16×
+        y = ident.classify(q, th, ph, f * collisions, word_max=LONG_WORD)
+        if y.cls != UNRESOLVED:
+            return y, f * collisions, None
+    return x, factor * collisions, kind
 
 
 def _orbit_record(x, rerun, kind, th, ph, fq) -> dict:
@@ -342,7 +361,7 @@ def r_job(r: str, data: list, collisions: int, previous: dict | None = None) -> 
     orbits = []
     for i, (th, ph) in enumerate(data):
         old = previous["orbits"][i] if previous is not None else None
-        if old is not None and not (rerun_due(old, fq, collisions) or unread(old)):
+        if old is not None and not rerun_due(old, fq, collisions):
             orbits.append(old)
             continue
         orbits.append(_orbit_record(*classify_late(q, fq, th, ph, collisions), th, ph, fq))
@@ -514,7 +533,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
                 continue
             wanted.append(r)
             total[0] += 1
-            if r in stored_r and stored_r[r].get("late") == LATE_RULE:
+            if r in stored_r and current(stored_r[r]):
                 done_r[r] = stored_r[r]
                 count[0] += 1
                 for w in _words_of(done_r[r]):

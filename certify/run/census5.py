@@ -28,13 +28,49 @@ VERSION = 1
 JSON = "census5.json"
 MARKDOWN = "CENSUS5.md"
 STAGES = ("stable", "feasible", "undecided")
+MARK = "engine"      # a state record's engine (:func:`record`); census5.json's records do not carry it
+ENGINE = 1           # the engine of five.census_record: raise it when a change alters a record (its content or
+                     # its keys); a resume analyses again the state records of another engine (:func:`current`)
+UNMARKED = 1         # a state record without the mark is taken as engine 1's: the engine of the committed census to
+                     # 9 and of the states written before the mark (docs/census.md, "Five particles": why)
 
 
-def run(max_length: int, executor, state=None, resume: bool = False, progress=None) -> list[dict]:
+def record(word: str) -> dict:
+    """:func:`certify.patterns.five.census_record` of ``word`` marked with :data:`ENGINE` (the state's
+    records carry the mark, census5.json's do not: :func:`run` drops it)."""
+    return {**five.census_record(word), MARK: ENGINE}
+
+
+def current(rec: dict) -> bool:
+    """Whether a state record was made by this engine: its mark (:data:`UNMARKED` when it has none)
+    is :data:`ENGINE`."""
+    return rec.get(MARK, UNMARKED) == ENGINE
+
+
+def run(max_length: int, executor, state=None, resume: bool = False, progress=None, notice=None) -> list[dict]:
     """The records of every class up to ``max_length``, in census order (shortest first, then
-    lexicographic), without their seconds; the state file and ``resume`` as the four-particle census's."""
-    return census_report.run_census(max_length, executor, state, resume, progress, job=five.census_record,
-                                    complete=None, words=five.word_classes)
+    lexicographic), without their seconds and mark; the state file and ``resume`` as the four-particle
+    census's, except that a state record made by another engine (:func:`current`) is analysed again:
+    ``notice(text)`` says how many, before the first word."""
+    stale: list[str] = []
+
+    def reused(rec: dict) -> bool:
+        if current(rec):
+            return True
+        stale.append(rec["word"])
+        return False
+
+    def told(k: int, n: int, word: str) -> None:
+        if notice is not None and stale:
+            notice(f"{len(stale)} state record(s) made by another engine than {ENGINE} "
+                   f"(first {stale[0]}): analysed again")
+            stale.clear()
+        if progress:
+            progress(k, n, word)
+
+    records = census_report.run_census(max_length, executor, state, resume, told, job=record,
+                                       complete=None, words=five.word_classes, current=reused)
+    return [{k: v for k, v in rec.items() if k != MARK} for rec in records]
 
 
 def _largest(records: list[dict], stage: str) -> dict | None:
@@ -115,7 +151,7 @@ def markdown(doc: dict) -> str:
     lines += ["## By length", "", "| length | words | exists (factors analysed) | feasible (factors analysed) | "
               "stable | with undecided points | with a factor not analysed |", "|---:|---:|---:|---:|---:|---:|---:|"]
     lines += [f"| {n} | {e['words']} | {e['exists']} | {e['feasible']} | {e['stable']} | {e['undecided']} | "
-              f"{e['not_analysed']} |" for n, e in s["lengths"].items()]
+              f"{e['not_analysed']} |" for n, e in sorted(s["lengths"].items(), key=lambda ne: int(ne[0]))]
     union = "(each the r-set of one κ branch and ordering x₊ or x₋; the same set for several is shown once)"
     lines += ["", "## Stable words", "", union, ""]
     lines += [f"- {w['word']}: {'; '.join(dict.fromkeys(w['windows']))}" for w in s["stable_words"]] or ["None."]

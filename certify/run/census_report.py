@@ -58,7 +58,7 @@ def _timeless(record: dict) -> dict:
 
 def run_census(max_length: int, executor, state=None, resume: bool = False, progress=None,
         job=census.analyse_word, window: int = WINDOW, complete=census.add_reduction,
-        words=census.iter_words) -> list[dict]:
+        words=census.iter_words, current=None) -> list[dict]:
     """The census records of every word up to ``max_length``, in census order.
 
     ``state``: a JSON-lines file the records are appended to as they finish (created,
@@ -69,13 +69,15 @@ def run_census(max_length: int, executor, state=None, resume: bool = False, prog
     census) is reused as it is and completed by ``complete(record)``, which computes
     only that part; the completed record is appended to the state (the last line of a
     word wins); ``complete=None``: no record is partial.  ``words(max_length)``: the words
-    in census order (the five-particle census passes its own)."""
+    in census order (the five-particle census passes its own).  ``current(record)``: whether a
+    state record is reused (None: every one); a record it refuses is analysed again."""
     n = sum(1 for _ in words(max_length))     # the words stream: never all in memory at once
     done = {}
     if state is not None:
         state = Path(state)
         if resume:
-            done = {w: rec for w, rec in load_state(state).items() if rec["length"] <= max_length}
+            done = {w: rec for w, rec in load_state(state).items()
+                    if rec["length"] <= max_length and (current is None or current(rec))}
         else:
             write_atomic(state, "")
     partial = {} if complete is None else {w: done.pop(w) for w in list(done) if census.REDUCTION not in done[w]}

@@ -39,10 +39,14 @@ def five_particle_windows(results: dict) -> list[tuple[str, list]]:
     return [(w, s) for w, s in rows if s]
 
 
+NARROW = 1 / 150   # a window narrower than this fraction of the axis also gets a mark
+
+
 def figure(four: list, five: list, path, lines: dict | None = None, census_length: int | None = None) -> Path | None:
     """Two panels on one axis of r: the five-particle words' stable windows (top) and the
     four-particle census's (bottom), one row per word, highest window first; ``lines`` the
-    thresholds.  Written through :mod:`.saving` to ``path``; None when nothing is to be drawn."""
+    thresholds.  A window narrower than NARROW of the axis is also marked at its middle (a diamond),
+    so that it shows.  Written through :mod:`.saving` to ``path``; None when nothing is to be drawn."""
     from . import plots, saving
     if not four and not five:
         return None
@@ -53,13 +57,17 @@ def figure(four: list, five: list, path, lines: dict | None = None, census_lengt
                                  gridspec_kw={"height_ratios": [max(len(five), 1) + 1, max(len(four), 1) + 1]})
     lines = lines or {}
     top = max([hi for _w, s in four + five for _lo, hi in s] + list(lines.values()))
+    right = math.ceil(top * 50 + 1) / 50
     for panel, rows, colour in ((ax, five, "tab:purple"), (bx, four, "tab:blue")):
         for k, (_word, windows) in enumerate(rows):
             for lo, hi in windows:
                 panel.barh(k, hi - lo, left=lo, height=0.5, color=colour)
+            narrow = [(lo + hi) / 2 for lo, hi in windows if hi - lo < right * NARROW]
+            if narrow:   # a window thinner than a pixel or two: a mark at its middle as well
+                panel.plot(narrow, [k] * len(narrow), ls="none", marker="D", ms=3, color=colour)
         panel.set_yticks(range(len(rows)), [w for w, _s in rows], fontsize=7)
         panel.set_ylim(len(rows) - 0.5, -0.5 - (0 if rows else 0.5))
-        panel.set_xlim(0, math.ceil(top * 50 + 1) / 50)
+        panel.set_xlim(0, right)
         for value in lines.values():
             panel.axvline(value, color="grey", lw=0.6, ls="--")
         panel.set_xlabel("r")

@@ -496,16 +496,16 @@ def test_a_run_with_no_period_is_run_again_4_times_longer_below_and_16_above_3_m
 
 def test_a_run_with_no_period_is_run_again_longer_and_its_class_checked():
     """r = 28/33, 5000 collisions: two of the tool's 8 orbits show no period (the run settles
-    on abacba(bc)^2abcb after its middle); run again 16× longer (r above 3 − 2√2) they are proved
-    attracting.  Marking one unresolved again, or not run again, or certified from a collision of
+    on abacba(bc)^2abcb after its middle); run again 4× longer (rule 4's first stage above 3 − 2√2)
+    they are proved attracting.  Marking one unresolved again, or not run again, or certified from a collision of
     the first run, makes the check fail."""
     data = atlas.data_grid(0)
     rec = atlas.r_job("28/33", data, 5000)
-    again = [o for o in rec["orbits"] if o["rerun"] == atlas.LONGER * 5000]
-    first = [atlas.ident.classify(Fraction(28, 33), o["theta0"], o["phi0"], 5000) for o in again]
-    no_period = [o for o, x in zip(again, first) if x.word is None]          # (others repeat abcb, not attracting)
-    assert all(x.cls == atlas.UNRESOLVED for x in first) and len(no_period) >= 2
-    assert all(o["class"] == atlas.ATTRACTING and o["unresolved"] is None for o in no_period)
+    again = [o for o in rec["orbits"] if o["rerun"] == atlas.LATE * 5000]     # the 4× stage proves them
+    assert len(again) >= 2 and all(o["class"] == atlas.ATTRACTING and o["unresolved"] is None for o in again)
+    for o in again:                                           # the first run alone leaves them unresolved, no period
+        x = atlas.ident.classify(Fraction(28, 33), o["theta0"], o["phi0"], 5000)
+        assert x.cls == atlas.UNRESOLVED and x.word is None
     doc = {"parameters": {"collisions": 5000}, "r": [{**rec, "counts": atlas._counts(rec["orbits"]),
                                                       "total": len(rec["orbits"])}]}
     assert atlas.check_orbits(doc) == []
@@ -745,3 +745,50 @@ def test_the_committed_atlas_long_blocks_and_sixteen_times_longer_runs_check():
     bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOT_ATTRACTING, o["theta0"], o["phi0"], fq)
     bad["counts"] = atlas._counts(bad["orbits"])
     assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
+
+
+def _atlas_state_tool():
+    import importlib.util
+    from pathlib import Path
+    path = Path(__file__).resolve().parents[2] / "tools" / "atlas_state.py"
+    spec = importlib.util.spec_from_file_location("atlas_state", path)
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    return tool
+
+
+def test_a_state_rebuilt_from_the_committed_atlas_is_reused_as_it_is():
+    """tools/atlas_state.py on reports/atlas.json: every r record carries the ``late`` mark, so
+    ``certify atlas --resume`` takes each as done (:func:`atlas.current`, what its resume asks) rather
+    than submitting it again; a row with an orbit that :func:`atlas.r_job` would still run longer (a
+    row of an older rule) is left unmarked, to be upgraded."""
+    doc = _committed(atlas.VERSION)
+    tool = _atlas_state_tool()
+    rows = [rec for rec in tool.records(doc) if rec["kind"] == "r"]
+    assert len(rows) == len(doc["r"]) and all(atlas.current(rec) for rec in rows)
+    older = copy.deepcopy(doc)
+    older["r"] = older["r"][:1]
+    older["r"][0]["orbits"][0].update({"class": atlas.UNRESOLVED, "unresolved": atlas.NOTHING, "observed": None,
+                                       "rerun": None})
+    [row] = [rec for rec in tool.records(older) if rec["kind"] == "r"]
+    assert atlas.rerun_due(row["orbits"][0], atlas._fq(row["r"]), row["collisions"]) and not atlas.current(row)
+
+
+def test_a_rule_spells_a_member_past_the_parsers_400_letters():
+    """Rule.word reads up to LONG_WORD letters: member k = 38 of the 12k + 10 rule (466 letters) is the
+    block every orbit of reports/atlas.json at r = 29/169 was proved to follow, and so are the other long
+    blocks of docs/atlas.md, "Long blocks" (868 letters: k = 72 of the 12k + 4 rule; 554 and 458: k = 23
+    and 19 of the 24k + 2 rule); the 400-letter parser refused them."""
+    doc = _committed(atlas.VERSION)
+    rows = {row["r"]: row for row in doc["r"]}
+    by = {rule.spelling: rule for rule in FAMILIES}
+    for r, spelling, k, length in (
+            ("29/169", "(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb", 38, 466),
+            ("8579/50000", "(abacbc)^{k}a(bcabac)^{k}bcb", 72, 868),
+            ("23/134", "(abacbc)^{k}a(bcabac)^{j}bc(ab)^2(cbcaba)^{k}c(bacbca)^{j}ba(cb)^2", 23, 554),
+            ("40/233", "(abacbc)^{k}a(bcabac)^{j}bc(ab)^2(cbcaba)^{k}c(bacbca)^{j}ba(cb)^2", 19, 458)):
+        word = by[spelling].word(k)
+        assert len(word) == length > atlas.MAX_LENGTH
+        followed = [o for o in rows[r]["orbits"] if o["word"] == word]
+        assert followed and all(o["class"] == atlas.ATTRACTING for o in followed)
+    assert {o["word"] for o in rows["29/169"]["orbits"]} == {by["(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb"].word(38)}

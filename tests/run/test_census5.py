@@ -47,6 +47,28 @@ def test_a_rerun_and_a_resumed_state_write_the_same_bytes(written, tmp_path):
     assert resumed == fresh and all(w == "" for w in calls)
 
 
+def test_a_resume_analyses_again_the_records_of_another_engine(written, tmp_path):
+    """Every state record carries the engine's mark (census5.json's do not).  On resume, a record
+    marked with another engine is analysed again (and the count said), while a record without a mark
+    is taken as made by engine UNMARKED, so a state written before the mark resumes as it is."""
+    lines = [json.loads(x) for x in (written / "state.jsonl").read_text(encoding="utf-8").splitlines()]
+    assert lines and all(rec[census5.MARK] == census5.ENGINE for rec in lines)
+    assert all(census5.MARK not in rec for rec in json.loads((written / census5.JSON).read_text())["words"])
+    stale, unmarked, *rest = lines
+    stale = dict(stale, verdict="an older verdict", **{census5.MARK: census5.ENGINE - 1})
+    unmarked = {k: v for k, v in unmarked.items() if k != census5.MARK}
+    state = tmp_path / "state.jsonl"
+    state.write_text("".join(json.dumps(rec) + "\n" for rec in [stale, unmarked, *rest]), encoding="utf-8")
+    said, calls = [], []
+    with executor(1) as ex:
+        fresh = census5.run(L, ex)
+        resumed = census5.run(L, ex, state, resume=True, progress=lambda k, n, w: calls.append(w), notice=said.append)
+    assert resumed == fresh
+    assert [w for w in calls if w] == [stale["word"]]
+    assert said == [f"1 state record(s) made by another engine than {census5.ENGINE} (first {stale['word']}): "
+                    "analysed again"]
+
+
 def test_the_census_follows_its_schema(written):
     import jsonschema
     doc = json.loads((written / census5.JSON).read_text(encoding="utf-8"))
@@ -165,9 +187,9 @@ def test_the_bezout_resultant_is_the_resultant(degree_g):
 
 
 def test_the_high_precision_zero_test_gives_the_engines_answers(monkeypatch):
-    """FiveSpectrum._vanishes_on (a gcd's roots as they come, enclosed to 2^16 bits before the engine's
-    monic gcd) answers as Spectrum._vanishes_on, the engine's route with the monic gcd, wherever a word's
-    analysis asks it about a gcd not yet made monic (abdbcd asks twice)."""
+    """FiveSpectrum's zero test (a gcd's roots as they come, enclosed to 2^16 bits before the engine's
+    monic gcd: its _precision_ceiling) answers as Spectrum's, the engine's route with the monic gcd,
+    wherever a word's analysis asks about a gcd not yet made monic (abdbcd asks twice)."""
     from certify.algebra.branches import Spectrum
     asked = []
     mine = five.FiveSpectrum._vanishes_on
@@ -183,6 +205,7 @@ def test_the_high_precision_zero_test_gives_the_engines_answers(monkeypatch):
     monkeypatch.setattr(five.FiveSpectrum, "_vanishes_on", spy)
     five.analyse_five("abdbcd")
     assert len(asked) >= 2 and any(early)                   # the high-precision route did decide
+    monkeypatch.setattr(five.FiveSpectrum, "_precision_ceiling", Spectrum._precision_ceiling)
     for sp, G, rc, branch, maxprec, answer in asked:
         engine = functools.partial(G)         # the engine's two routes, its monic gcd made afresh
         engine.fallback = G.fallback  # type: ignore[attr-defined]

@@ -146,3 +146,19 @@ def test_the_five_particle_windows_figure_is_legible(monkeypatch, tmp_path):
     bar = top.patches[0]
     (lo, hi), = five[0][1]
     assert bar.get_x() == pytest.approx(lo) and bar.get_x() + bar.get_width() == pytest.approx(hi)
+
+
+def test_a_narrow_five_particle_window_is_marked(monkeypatch, tmp_path):
+    """A five-particle window narrower than five_figure.NARROW of the axis (the 36-letter word's is
+    about 0.0005 wide on an axis of 0.3) gets a diamond at its middle besides its bar, a wide one
+    only its bar; the figure stays legible."""
+    from certify.run import five_figure
+    doc = json.loads((REPORTS / "census.json").read_text())
+    five = [("wide", [(0.25, 0.2679)]), ("narrow", [(0.18707, 0.18760)])]
+    fig, = fc.drawn(monkeypatch, tmp_path, five_figure.figure, five_figure.four_particle_windows(doc), five,
+                    tmp_path / "five-windows.png", five_figure.marks(), doc["census"]["max_length"])
+    assert fc.problems(fig) == {}
+    top = fig.axes[0]
+    assert [t.get_text() for t in top.get_yticklabels()] == ["wide", "narrow"] and len(top.patches) == 2
+    marked = [(list(line.get_xdata()), list(line.get_ydata())) for line in top.lines if line.get_marker() == "D"]
+    assert marked == [([pytest.approx((0.18707 + 0.18760) / 2)], [1])]
