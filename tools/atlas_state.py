@@ -30,7 +30,8 @@ def records(doc: dict):
         orbits = [{k: o.get(k) for k in ORBIT_KEYS} for o in row["orbits"]]
         rec = {"kind": "r", "r": row["r"], "data": data, "collisions": p["collisions"], "island": row["island"],
                "orbits": orbits, "seconds": 0.0}
-        if not any(atlas.rerun_due(o) for o in orbits):   # what r_job's upgrade would give: the same record
+        due = [atlas.rerun_due(o, atlas._fq(row["r"]), p["collisions"]) for o in orbits]
+        if not any(due):                                   # what r_job's upgrade would give: the same record
             rec["late"] = atlas.LATE_RULE
         yield rec
     for w in doc["words"]:

@@ -78,7 +78,7 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 5
+VERSION = 6
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
@@ -89,8 +89,9 @@ WORD_SECONDS = 600                            # time limit of one word's window
 REFINE = 3                                    # rounds of refinement after the first grid
 LATE = 4                                      # an orbit :func:`late` selects is run again LATE times longer
 LONGER = 16                                   # ... and one repeating a word not attracting at r, LONGER times
-LATE_RULE = 3                                 # :func:`late`'s rule (1: long transients; 2: and runs with no period;
-                                              # 3: and words not attracting at r, LONGER; blocks up to LONG_WORD read)
+LATE_RULE = 4                                 # :func:`late`'s rule (1: long transients; 2: and runs with no period;
+                                              # 3: and words not attracting at r, LONGER; blocks up to LONG_WORD read;
+                                              # 4: runs with no period above 3 − 2√2, LONGER)
 LONG_WORD = ident.MAX_ANALYSED                # the longest block identify decides at one r for the atlas (below)
 TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
 NEAR_HORSESHOE = "near a certified horseshoe"   # an unresolved orbit whose float64 run enters a proved horseshoe's box
@@ -269,21 +270,26 @@ def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
     return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
 
 
-def late_factor(kind: str | None, observed: str | None) -> int | None:
+def late_factor(kind: str | None, observed: str | None, r: flint.fmpq) -> int | None:
     """How many times longer an unresolved orbit of this kind (:func:`unresolved_kind`) and
-    observed word is run again (:func:`classify_late`), or None: :data:`LATE` for a long
-    transient (its word attracts at r) or a run with no period at all (nothing recognised, no
-    word repeated: it may settle later than the run); :data:`LONGER` for a run repeating a
-    word not attracting at r (near r = 1, abcb: a slow transient can wind along the loop for
-    10⁵ collisions before it settles elsewhere)."""
-    if kind == TRANSIENT or (kind == NOTHING and observed is None):
+    observed word is run again at r (:func:`classify_late`), or None: :data:`LATE` for a long
+    transient (its word attracts at r) and for a run with no period at all (nothing recognised,
+    no word repeated: it may settle later than the run) at r ≤ 3 − 2√2, where horseshoes are
+    proved; :data:`LONGER` for such a run above 3 − 2√2 (the island's interval, where no
+    horseshoe is proved: near r = 1 a run can wander for 10⁵ collisions before it settles; run
+    :data:`LATE` times longer first, by :func:`classify_late`), and
+    for a run repeating a word not attracting at r (near r = 1, abcb: a slow transient can wind
+    along the loop for 10⁵ collisions before it settles elsewhere)."""
+    if kind == NOTHING and observed is None:
+        return LONGER if r * r - 6 * r + 1 < 0 else LATE
+    if kind == TRANSIENT:
         return LATE
     return LONGER if kind == NOT_ATTRACTING else None
 
 
-def late(o: dict) -> bool:
-    """Whether an orbit record is unresolved and run again longer (:func:`late_factor`)."""
-    return o["class"] == UNRESOLVED and late_factor(o["unresolved"], o["observed"]) is not None
+def late(o: dict, r: flint.fmpq) -> bool:
+    """Whether an orbit record at r is unresolved and run again longer (:func:`late_factor`)."""
+    return o["class"] == UNRESOLVED and late_factor(o["unresolved"], o["observed"], r) is not None
 
 
 def unread(o: dict) -> bool:
@@ -292,10 +298,12 @@ def unread(o: dict) -> bool:
     return o["class"] == UNRESOLVED and o["observed"] is not None and MAX_LENGTH < len(o["observed"]) <= LONG_WORD
 
 
-def rerun_due(o: dict) -> bool:
-    """Whether :func:`r_job` runs an orbit record of an older r record again under :data:`LATE_RULE`:
-    unresolved and selected by :func:`late` but not yet run again, or on a block :func:`unread`."""
-    return (late(o) and o["rerun"] is None) or unread(o)
+def rerun_due(o: dict, r: flint.fmpq, collisions: int) -> bool:
+    """Whether :func:`r_job` runs an orbit record (at r, of a run of ``collisions``) of an older r record
+    again under :data:`LATE_RULE`: unresolved, selected by :func:`late` and not yet run again as long as
+    :func:`late_factor` now asks (never, or shorter), or on a block :func:`unread`."""
+    return (late(o, r) and (o["rerun"] or 0) < late_factor(o["unresolved"], o["observed"], r) * collisions) \
+        or unread(o)
 
 
 def current(rec: dict) -> bool:
@@ -317,11 +325,14 @@ def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     if x.cls != UNRESOLVED:
         return x, None, None
     kind = unresolved_kind(x.word, fq)
-    factor = late_factor(kind, x.word)
+    factor = late_factor(kind, x.word, fq)
     if factor is None:
         return x, None, kind
-    y = ident.classify(q, th, ph, factor * collisions, word_max=LONG_WORD)
-    return (y, factor * collisions, None) if y.cls != UNRESOLVED else (x, factor * collisions, kind)
+    for f in (LATE, factor) if kind == NOTHING and factor != LATE else (factor,):     # rule 4: 4×, then 16×
+        y = ident.classify(q, th, ph, f * collisions, word_max=LONG_WORD)
+        if y.cls != UNRESOLVED:
+            return y, f * collisions, None
+    return x, factor * collisions, kind
 
 
 def _orbit_record(x, rerun, kind, th, ph, fq) -> dict:
@@ -350,7 +361,7 @@ def r_job(r: str, data: list, collisions: int, previous: dict | None = None) -> 
     orbits = []
     for i, (th, ph) in enumerate(data):
         old = previous["orbits"][i] if previous is not None else None
-        if old is not None and not rerun_due(old):
+        if old is not None and not rerun_due(old, fq, collisions):
             orbits.append(old)
             continue
         orbits.append(_orbit_record(*classify_late(q, fq, th, ph, collisions), th, ph, fq))
@@ -1164,7 +1175,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            "- unresolved, by what they show (observed): " + "; ".join(
                f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
            + f" (a long transient: its word attracts at r; a long transient and a run with no period at all are run "
-           f"again {LATE}× longer, a run repeating a word not attracting at r {LONGER}× longer, and "
+           f"again {LATE}× longer, a run with no period above 3−2√2 and a run repeating a word not attracting at r "
+           f"{LONGER}× longer, and "
            f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so "
            "(identify's proof on the longer run) and are counted in their class; near a certified horseshoe: its "
            "float64 run enters a box of the horseshoe proved at r; a word not "

@@ -478,14 +478,30 @@ def _no_period_rule_one(rec):
     return old
 
 
+def test_a_run_with_no_period_is_run_again_4_times_longer_below_and_16_above_3_minus_2_sqrt2():
+    """late_factor of a run with no period: LATE where horseshoes are proved (r < 3 − 2√2 ≈ 0.171573),
+    LONGER on the island's interval; a long transient LATE and a word not attracting LONGER on both."""
+    below, above = atlas._fq("17/100"), atlas._fq("43/250")
+    assert atlas.late_factor(atlas.NOTHING, None, below) == atlas.LATE
+    assert atlas.late_factor(atlas.NOTHING, None, above) == atlas.LONGER
+    for r in (below, above):
+        assert atlas.late_factor(atlas.TRANSIENT, "abcb", r) == atlas.LATE
+        assert atlas.late_factor(atlas.NOT_ATTRACTING, "abcb", r) == atlas.LONGER
+        assert atlas.late_factor(atlas.NOTHING, "x" * 1200, r) is None
+    rule_3 = {"class": atlas.UNRESOLVED, "unresolved": atlas.NOTHING, "observed": None, "rerun": atlas.LATE * 20_000}
+    assert atlas.rerun_due(rule_3, above, 20_000) and not atlas.rerun_due(rule_3, below, 20_000)
+    assert not atlas.rerun_due({**rule_3, "rerun": atlas.LONGER * 20_000}, above, 20_000)
+    assert atlas.rerun_due({**rule_3, "rerun": None}, below, 20_000)
+
+
 def test_a_run_with_no_period_is_run_again_longer_and_its_class_checked():
     """r = 28/33, 5000 collisions: two of the tool's 8 orbits show no period (the run settles
-    on abacba(bc)^2abcb after its middle); run again 4× longer they are proved attracting.
-    Marking one unresolved again, or not run again, or certified from a collision of the first
-    run, makes the check fail."""
+    on abacba(bc)^2abcb after its middle); run again 4× longer (rule 4's first stage above 3 − 2√2)
+    they are proved attracting.  Marking one unresolved again, or not run again, or certified from a collision of
+    the first run, makes the check fail."""
     data = atlas.data_grid(0)
     rec = atlas.r_job("28/33", data, 5000)
-    again = [o for o in rec["orbits"] if o["rerun"] == atlas.LATE * 5000]
+    again = [o for o in rec["orbits"] if o["rerun"] == atlas.LATE * 5000]     # the 4× stage proves them
     assert len(again) >= 2 and all(o["class"] == atlas.ATTRACTING and o["unresolved"] is None for o in again)
     for o in again:                                           # the first run alone leaves them unresolved, no period
         x = atlas.ident.classify(Fraction(28, 33), o["theta0"], o["phi0"], 5000)
@@ -667,7 +683,7 @@ def test_a_block_longer_than_the_parser_reads_is_proved_at_its_r():
     old["orbits"][0] = {**o, "class": atlas.UNRESOLVED, "certified_from": None, "word": None, "branch": None,
                         "observed": o["word"], "why": "observed: not a word of the reduction (over 400)",
                         "unresolved": atlas.NOTHING}
-    assert atlas.unread(old["orbits"][0]) and not atlas.late(old["orbits"][0])
+    assert atlas.unread(old["orbits"][0]) and not atlas.late(old["orbits"][0], atlas._fq("40/233"))
     assert any("by identify" in p for p in atlas.check_orbits(_one_row(old)))
     assert {**atlas.r_job("40/233", atlas.data_grid(0)[:1], 20_000, old), "seconds": 0} == {**rec, "seconds": 0}
 
@@ -755,7 +771,7 @@ def test_a_state_rebuilt_from_the_committed_atlas_is_reused_as_it_is():
     older["r"][0]["orbits"][0].update({"class": atlas.UNRESOLVED, "unresolved": atlas.NOTHING, "observed": None,
                                        "rerun": None})
     [row] = [rec for rec in tool.records(older) if rec["kind"] == "r"]
-    assert atlas.rerun_due(row["orbits"][0]) and not atlas.current(row)
+    assert atlas.rerun_due(row["orbits"][0], atlas._fq(row["r"]), row["collisions"]) and not atlas.current(row)
 
 
 def test_a_rule_spells_a_member_past_the_parsers_400_letters():
