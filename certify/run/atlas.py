@@ -63,6 +63,7 @@ from certify.algebra import Algebraic, ends
 from certify.algebra.balls import precision
 from certify.algebra.branches import simple_rational_between, simplest_between
 from certify.algebra.poly import to_fmpq
+from certify.dynamics.island import elliptic_polynomial
 from certify.errors import UsageError
 from certify.numerics import grid
 from certify.patterns import compact, island_theorem, read
@@ -281,7 +282,7 @@ def late_factor(kind: str | None, observed: str | None, r: flint.fmpq) -> int | 
     for a run repeating a word not attracting at r (near r = 1, abcb: a slow transient can wind
     along the loop for 10⁵ collisions before it settles elsewhere)."""
     if kind == NOTHING and observed is None:
-        return LONGER if r * r - 6 * r + 1 < 0 else LATE
+        return LONGER if elliptic_polynomial(r) < 0 else LATE
     if kind == TRANSIENT:
         return LATE
     return LONGER if kind == NOT_ATTRACTING else None
@@ -366,7 +367,7 @@ def r_job(r: str, data: list, collisions: int, previous: dict | None = None) -> 
             continue
         orbits.append(_orbit_record(*classify_late(q, fq, th, ph, collisions), th, ph, fq))
     island = previous["island"] if previous is not None else None
-    if previous is None and fq * fq - 6 * fq + 1 < 0:
+    if previous is None and elliptic_polynomial(fq) < 0:
         lo, hi = island_theorem.island_fraction(fq, ISLAND_DEPTH)
         island = {"theorem": ident.elliptic(fq), "rotation_number": island_theorem.rotation_number(fq, 8),
                   "fraction": [str(lo), str(hi)], "depth": ISLAND_DEPTH}
@@ -1524,7 +1525,7 @@ def check_orbits(doc: dict, rows=None) -> list[str]:
             if o["class"] == ISLAND and not ident.elliptic(fq):
                 problems.append(f"r = {row['r']}: an island orbit where the island theorem does not hold")
         isl = row["island"]
-        if (isl is not None) != (fq * fq - 6 * fq + 1 < 0):
+        if (isl is not None) != (elliptic_polynomial(fq) < 0):
             problems.append(f"r = {row['r']}: the island is {'given' if isl else 'missing'}")
         elif isl is not None:
             lo, hi = island_theorem.island_fraction(fq, isl["depth"])
