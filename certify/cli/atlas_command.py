@@ -106,7 +106,7 @@ def register(commands) -> None:
     p.add_argument("--word-max", type=positive_int, default=atlas.WORD_MAX, metavar="L",
                    help=f"longest word whose window over ]0, 1[ is computed (default {atlas.WORD_MAX})")
     p.add_argument("--word-seconds", type=positive_int, default=atlas.WORD_SECONDS, metavar="S",
-                   help=f"time limit of one word's window (default {atlas.WORD_SECONDS})")
+                   help=f"time limit of one word's window, in seconds of CPU (default {atlas.WORD_SECONDS})")
     p.add_argument("--refine", type=count, default=atlas.REFINE, metavar="K",
                    help=f"rounds of refinement after the grid: an r in every unsampled cell, near each window end, "
                    f"around words without a window (default {atlas.REFINE})")

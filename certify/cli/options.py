@@ -172,6 +172,7 @@ def prepare_output(out: Path) -> Path:
     ensure_writable(out / "figures")
     return out
 
+
 def kill_interrupts(command):
     """``command(args)`` run with SIGTERM raising KeyboardInterrupt as Ctrl-C does (``kill`` stops a long
     command like Ctrl-C, its workers too), the handler before restored when it returns or raises, so a

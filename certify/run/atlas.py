@@ -79,14 +79,15 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 6
+VERSION = 7
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
 DATA = 24                                     # initial data per r, besides the tool's 8
 COLLISIONS = 20_000                           # of each float64 run and rigorous scan
 WORD_MAX = MAX_ORBIT_LENGTH                   # longer words: no window (orbit_at at the r seen)
-WORD_SECONDS = 600                            # time limit of one word's window
+WORD_SECONDS = 600                            # time limit of one word's window (CPU seconds)
+WORD_CLOCK = "cpu"                            # what a "time limit" record's seconds count (before: wall time, unmarked)
 REFINE = 3                                    # rounds of refinement after the first grid
 LATE = 4                                      # an orbit :func:`late` selects is run again LATE times longer
 LONGER = 16                                   # ... and one repeating a word not attracting at r, LONGER times
@@ -427,9 +428,10 @@ class _TimeLimit(Exception):
 
 def word_job(word: str, seconds: float | None = WORD_SECONDS, word_max: int = WORD_MAX) -> dict:
     """``certify orbit`` on one word over ]0, 1[: its attracting windows (exact ends), per
-    branch; "too long" beyond ``word_max`` letters, "time limit" beyond ``seconds`` (an
-    alarm, where the job runs in a process's main thread; elsewhere no limit)."""
-    start = time.perf_counter()
+    branch; "too long" beyond ``word_max`` letters, "time limit" beyond ``seconds`` of the
+    process's CPU time (a profiling timer, SIGPROF: the load of the machine does not move
+    it; where the job runs in a process's main thread, elsewhere no limit)."""
+    start, cpu = time.perf_counter(), time.process_time()
     rec = {"kind": "word", "word": word, "compact": compact(word), "length": len(word), "outcome": "analysed",
            "attracting": [], "attracting_points": [], "undecided": [], "word_max": word_max, "word_seconds": seconds}
     if len(word) > word_max:
@@ -439,22 +441,22 @@ def word_job(word: str, seconds: float | None = WORD_SECONDS, word_max: int = WO
 
     def stop(_signum, _frame):
         raise _TimeLimit()
-    old = signal.signal(signal.SIGALRM, stop) if alarm else None
+    old = signal.signal(signal.SIGPROF, stop) if alarm else None
     try:
         if alarm:
-            signal.setitimer(signal.ITIMER_REAL, seconds)
+            signal.setitimer(signal.ITIMER_PROF, seconds)
         res = analyse(word, self_similar=False)
         rec["attracting"], rec["attracting_points"] = res.attracting(), res.attracting_points()
         rec["undecided"] = list(res.undecided)
     except _TimeLimit:
-        rec["outcome"] = "time limit"
+        rec["outcome"], rec["clock"] = "time limit", WORD_CLOCK
     except (ArithmeticError, ValueError, UsageError) as exc:
         rec["outcome"], rec["error"] = "error", f"{type(exc).__name__}: {exc}"
     finally:
         if alarm:
-            signal.setitimer(signal.ITIMER_REAL, 0)
-            signal.signal(signal.SIGALRM, old)
-    rec["seconds"] = round(time.perf_counter() - start, 3)
+            signal.setitimer(signal.ITIMER_PROF, 0)
+            signal.signal(signal.SIGPROF, old)
+    rec["seconds"], rec["cpu_seconds"] = round(time.perf_counter() - start, 3), round(time.process_time() - cpu, 3)
     return rec
 
 
@@ -499,7 +501,8 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
                 if rec["kind"] == "r" and rec["data"] == len(data) and rec["collisions"] == collisions:
                     stored_r[rec["r"]] = rec
                 elif rec["kind"] == "word" and rec["word_max"] == word_max and (
-                        rec["outcome"] != "time limit" or rec["word_seconds"] == word_seconds):
+                        rec["outcome"] != "time limit"
+                        or (rec["word_seconds"] == word_seconds and rec.get("clock") == WORD_CLOCK)):
                     done_w[rec["word"]] = rec
                 elif rec["kind"] == "chaos" and rec["collisions"] == collisions:
                     stored_c[rec["r"]] = rec
@@ -793,7 +796,11 @@ def families(attractors: list[dict], words: list[dict]) -> list[dict]:
     """Each rule of :data:`FAMILIES` whose members the atlas all analysed: member k's word, its
     certified windows, the resonance p_k/q_k the rule predicts at the upper end and whether
     the window closes there exactly; a member is *certified* when it has an attracting window
-    (closing at p_k/q_k where the rule says one); the last is the prediction."""
+    (closing at p_k/q_k where the rule says one); then the prediction; then, marked
+    ``beyond``, the members k ≤ :data:`RULE_K` past the prediction whose windows the atlas
+    computed because its orbits met them (not counted among the certified members: the rule
+    did not ask for them, they test it; a member met but too long or too slow for a window is
+    listed under the attractors without one)."""
     by_word: dict[str, list] = {}
     for a in attractors:
         by_word.setdefault(a["word"], []).append(a)
@@ -803,8 +810,10 @@ def families(attractors: list[dict], words: list[dict]) -> list[dict]:
         spelt = {k: rule.word(k) for k in rule.members()}
         if any(w not in analysed for w in spelt.values()):
             continue                          # not analysed in this atlas (seeded without its family)
+        met = {k: w for k in range(rule.last + 2, RULE_K + 1)
+               if (w := rule.word(k)) in analysed and analysed[w]["outcome"] == "analysed"}
         members = []
-        for k, w in spelt.items():
+        for k, w in {**spelt, **met}.items():
             wins = [(a, win) for a in by_word.get(w, []) for win in a["windows"]]
             pq = rule.resonance(k)
             closes = None if pq is None else any(closes_at(win["hi"], *pq) for _a, win in wins)
@@ -813,13 +822,14 @@ def families(attractors: list[dict], words: list[dict]) -> list[dict]:
                             "windows": [{"branch": a["branch"], "lo": win["lo"]["digits"], "hi": win["hi"]["digits"],
                                          "pair": win["pair"]} for a, win in wins],
                             "closing": list(pq) if pq else None, "closes": closes,
-                            "certified": bool(wins) and closes is not False})
+                            "certified": bool(wins) and closes is not False, **({"beyond": True} if k in met else {})})
         p1, p0, q1, q0 = rule.closing or (0, 0, 0, 0)
         closing = (None if rule.closing is None else f"{p0}/{q0} (r = 1)" if p1 == q1 == 0 else
                    f"({_affine(p1, p0)})/({_affine(q1, q0)})")
         out.append({"family": rule.name, "rule": rule.reads(), "closing": closing,
                     "members": members,
-                    "certified_members": sum(m["certified"] for m in members if not m["predicted"]),
+                    "certified_members": sum(m["certified"] for m in members
+                                             if not (m["predicted"] or m.get("beyond"))),
                     "prediction_certified": any(m["certified"] for m in members if m["predicted"])})
     return out
 
@@ -853,7 +863,7 @@ def _counts(orbits: list[dict]) -> dict:
 
 
 def _timeless(rec: dict) -> dict:
-    return {k: v for k, v in rec.items() if k != "seconds"}
+    return {k: v for k, v in rec.items() if k not in ("seconds", "cpu_seconds")}
 
 
 def document(r_records: list[dict], word_records: list[dict], parameters: dict) -> dict:
@@ -968,7 +978,7 @@ def why_no_window(w: dict) -> str:
         return (f"too long: {w['length']} letters, over the {w['word_max']} whose window `certify orbit` computes "
                 f"(MAX_ORBIT_LENGTH = {MAX_ORBIT_LENGTH}: the conditions' degree grows like 2L)")
     if w["outcome"] == "time limit":
-        return f"time limit: the window's analysis took over {w['word_seconds']} s"
+        return f"time limit: the window's analysis took over {w['word_seconds']} s of CPU"
     return w["outcome"] + (f" ({w['error']})" if w.get("error") else "")
 
 
@@ -1186,7 +1196,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
            _horseshoe_line(s["horseshoes"]),
            f"- words certified: {s['words']}; attractors (word, branch) with an exact window over ]0, 1[: "
            f"{s['attractors_with_windows']}; without one: {s['attractors_without_windows']} (longer than "
-           f"{p['word_max']} letters, or over the time limit of {p['word_seconds']} s: known only at the r where "
+           f"{p['word_max']} letters, or over the time limit of {p['word_seconds']} s of CPU: known only at the r "
+           "where "
            f"seen, by `orbit_at`); an orbit's block is decided at its r up to {LONG_WORD} letters (the parser's "
            f"{MAX_LENGTH} guards what users type: the exact decision at one r needs none; a longer block is not "
            "analysed)",
@@ -1260,7 +1271,9 @@ def markdown(doc: dict, figure: str | None = None) -> str:
             "Each family is a rule read off its members (a conjecture): member k's word, and the resonance "
             "p_k/q_k of the island at which its window closes (its upper end). Each member listed is certified by "
             "`certify orbit` (its exact window) and its closing decided exactly (the same algebraic number as the "
-            "resonance r_{p/q}); the last member is the rule's prediction, certified the same way.", ""]
+            "resonance r_{p/q}); then the rule's prediction, certified the same way; then the members past the "
+            f"prediction (k ≤ {RULE_K}) that the atlas's orbits met, certified the same way: they test the rule, "
+            "and are not counted among its certified members.", ""]
     for f in doc["families"]:
         out += [f"### `{f['family']}`: {f['certified_members']} certified members, the prediction "
                 f"{'certified' if f['prediction_certified'] else 'NOT certified'}", "",
@@ -1272,7 +1285,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
                 f"none ({m['outcome']})"
             closing = ("—" if m["closing"] is None else
                        f"{m['closing'][0]}/{m['closing'][1]}: {'yes, exactly' if m['closes'] else 'no'}")
-            status = ("predicted, " if m["predicted"] else "") + ("certified" if m["certified"] else "not certified")
+            status = ("predicted, " if m["predicted"] else "met beyond the prediction, " if m.get("beyond") else
+                      "") + ("certified" if m["certified"] else "not certified")
             out.append(f"| {m['k']} | {m['length']} | {wins} | {closing} | {status} |")
         out.append("")
     left = doc["summary"]["unruled_closings"]

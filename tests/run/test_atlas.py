@@ -150,6 +150,47 @@ def test_a_word_too_long_or_too_slow_gets_no_window():
     assert atlas.word_job("(ab)^3(cb)^3", seconds=0.001)["outcome"] == "time limit"
 
 
+def test_the_time_limit_counts_cpu_time_and_a_wall_clock_record_is_analysed_again(tmp_path):
+    """A word's time limit is CPU time (SIGPROF): a process asleep is not stopped; a "time limit"
+    record without the CPU clock (made by the wall-clock alarm before) is analysed again by
+    --resume, one with it is reused."""
+    import time
+    rec = atlas.word_job("(ab)^3(cb)^3", seconds=0.001)
+    assert rec["outcome"] == "time limit" and rec["clock"] == "cpu" and rec["cpu_seconds"] < 5
+    assert atlas.word_job("ababcbcb", seconds=10)["outcome"] == "analysed"
+    class Slept:                                     # an analysis that waits 0.5 s and uses no CPU
+        def attracting(self):
+            return []
+        attracting_points = attracting
+        undecided = ()
+
+    def asleep(word, self_similar):
+        time.sleep(0.5)
+        return Slept()
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(atlas, "analyse", asleep)
+        assert atlas.word_job("ababcbcb", seconds=0.2)["outcome"] == "analysed"     # a wall clock would stop it
+    word = "abacbacbcabc"
+    for clock, reran in ((None, True), ("cpu", False)):
+        state = tmp_path / f"{clock}.jsonl"
+        stale = {"kind": "word", "word": word, "compact": word, "length": 12, "outcome": "time limit",
+                 "attracting": [], "attracting_points": [], "undecided": [], "word_max": 44, "word_seconds": 60}
+        if clock:
+            stale["clock"] = clock
+        state.write_text(json.dumps(stale) + "\n", encoding="utf-8")
+        class Count(Serial):
+            ran: list = []
+
+            def submit(self, fn, /, *args, **kwargs):
+                self.ran.append(args[0])
+                return super().submit(fn, *args, **kwargs)
+        count = Count()
+        _, words = atlas.run_atlas([], atlas.data_grid(0), 5000, count, state, True, word_seconds=60,
+                                   word_max=44, seeds={word: "given"}, r_range=(Fraction(0), Fraction(1)))
+        assert (word in count.ran) == reran
+        assert [w["outcome"] for w in words] == (["analysed"] if reran else ["time limit"])
+
+
 def test_rotation_numbers_at_the_window_ends(doc):
     his = {a["name"]: a["windows"][0]["hi"] for a in doc["attractors"]}
     assert atlas.end_rotation(his["(ab)^2(cb)^2 (lower)"])["resonance"] == [1, 2]          # ends at 3−2√2
@@ -214,6 +255,24 @@ def test_a_family_reads_its_rule_and_closing_resonances(doc):
     member = atlas.family_of(doc["families"])
     assert member[RULE.word(2)] == RULE.name and "abcb" not in member
     assert next(a for a in doc["attractors"] if a["word"] == RULE.word(2))["family"] == RULE.name
+
+
+def test_a_member_met_beyond_the_prediction_is_listed_apart_and_tested(doc):
+    """A member k > last + 1 that the atlas analysed (met by its orbits) is listed after the
+    prediction, marked beyond, its closing at p_k/q_k decided like the others, and not counted
+    among the certified members; a window that does not close at p_k/q_k leaves it uncertified."""
+    far = RULE.word(6)
+    k3 = next(a for a in doc["attractors"] if a["word"] == RULE.word(3))
+    attractors = [*doc["attractors"], {**k3, "word": far}]              # k = 3's window (closing at 6/13)
+    words = [*doc["words"], {**next(w for w in doc["words"] if w["word"] == RULE.word(3)), "word": far}]
+    (fam,) = atlas.families(attractors, words)
+    assert [(m["k"], m.get("beyond", False)) for m in fam["members"]] == [(1, False), (2, False), (3, False),
+                                                                           (4, False), (6, True)]
+    assert fam["members"][-1]["closing"] == [12, 25] and fam["members"][-1]["closes"] is False
+    assert fam["members"][-1]["certified"] is False and fam["certified_members"] == 3
+    (same,) = atlas.families(attractors, words)
+    assert same == fam
+    jsonschema.validate({**doc, "families": [fam]}, SCHEMA)
 
 
 def test_the_rules_spell_the_windows_closing_at_3_8_and_5_12_and_near_1():
