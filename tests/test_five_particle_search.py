@@ -1,6 +1,7 @@
 """tools/five_particle_search.py (observed, floats): its datum against certify pattern's exact sets for
 four particles, and the five-particle word it finds."""
 import importlib.util
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
@@ -75,3 +76,50 @@ def test_the_plane_is_the_dominant_eigenvector_of_the_second_compound(word, r, p
     q0, e = U[:, np.argmin(abs(ew - lam))].real, U[:, np.argmin(abs(ew - mu))].real
     p0 = e[Y] * q0 - q0[Y] * e
     assert np.allclose(B[:, Y] / B[0, Y], p0 / p0[0], rtol=1e-9)
+
+
+COMMITTED = ROOT / "reports" / "five-patterns"
+
+
+def certified(word: str) -> tuple[list[float], list[float]]:
+    """The committed file's r range (a grid of 31 points on it) and certified stable window [lo, hi]."""
+    import json
+
+    import numpy as np
+    doc = json.loads((COMMITTED / f"{word}.json").read_text(encoding="utf-8"))
+    pieces = [p for s in doc["stable"] for p in s["pieces"] if p["kind"] == "interval"]
+    lo, hi = (float(Fraction(x)) for x in doc["r_range"])
+    return (list(np.linspace(lo, hi, 31)),
+            [min(float(p["lo"]["digits"]) for p in pieces), max(float(p["hi"]["digits"]) for p in pieces)])
+
+
+@pytest.mark.parametrize("word", ["abacbacbdcbcdcdbcdbcabcb", "ababcbcabacbacbdcbdcdcbcbdcdbcdbcabc"])
+def test_the_half_map_gives_the_datum_of_the_word(word):
+    """For the committed 24- and 36-letter words X·m(X): M_W = N², and the datum from N = J·M_X is
+    stable at the same grid points as the ordinary datum, its ends the same to 1e-8."""
+    import numpy as np
+    assert search.symmetric(word, 5) == word
+    N = search.half_map(word, 4, 0.2)
+    assert np.allclose(N @ N, search.period_matrix(word, 4, 0.2), rtol=0, atol=1e-12)
+    grid, _ = certified(word)
+    (ends, hits), (half_ends, half_hits) = (search.window(word, grid, 5, True, h) for h in (False, True))
+    assert hits and half_hits == hits and len(half_ends) == len(ends) == 2
+    assert np.allclose(half_ends, ends, rtol=0, atol=1e-8)
+
+
+def test_the_half_map_resolves_the_56_letter_word():
+    """The 56-letter word: the --half window's ends are the certified ends (committed file) to 1e-6,
+    while the ordinary datum loses μ in rounding before the certified upper end (by more than 1e-7)."""
+    word = "abacbacbcabacbcbabacbcdcdbcbdcdbcdbcbdcdbcbcdcdbcbabacbc"
+    grid, (lo, hi) = certified(word)
+    half_ends, _ = search.window(word, grid, 5, True, True)
+    assert len(half_ends) == 2 and abs(half_ends[0] - lo) < 1e-6 and abs(half_ends[1] - hi) < 1e-6
+    ends, _ = search.window(word, grid, 5, True)
+    assert abs(ends[-1] - hi) > 1e-7
+
+
+def test_half_needs_a_symmetric_word(capsys):
+    """abadcbcabc is no rotation of any X·m(X): one line on stderr, exit status 2."""
+    assert search.main(["--word", "abadcbcabc", "--half", "--r", "0.2", "0.3", "3"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "not X·m(X)" in err

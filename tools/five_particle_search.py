@@ -2,6 +2,7 @@
 
     python tools/five_particle_search.py --max-length 10 --r 0.2505 0.2675 8      # words, r grid
     python tools/five_particle_search.py --word abadcbcabc --r 0.2 0.3 1001 --ends
+    python tools/five_particle_search.py --word abacbacbdcbcdcdbcdbcabcb --half --r 0.21 0.214 401
 
 The self-similar datum of a word w of N particles (N - 1 gaps), as for four particles
 (certify pattern), from two eigenvalues of M_w.  The run from (p, q) gives after the period
@@ -21,6 +22,10 @@ then names, for each observed end, the exact polynomial in r (a factor of disc_�
 resultant whose roots are the r where the modulus of a real eigenvalue equals that of another,
 Res_y(cp_{M²}(y), cp_{Λ²M}(y)), or of Res_λ(cp, cp of M without the first letter's gap: a
 component of q(0) vanishes)) with a root there, isolated exactly (python-flint's certified roots).
+``--half``, for a symmetric word W = X·m(X) (up to rotation; m the mirror, a <-> d, b <-> c for five
+particles), computes the same datum from the half map N = J·M_X, J the reversal of the gaps (see
+half_map).  Near r ≈ 0.175 the second eigenvalue μ of M_W is below the rounding of λ past about 60
+letters; N's eigenvalues are the square roots, so floats resolve words to about 140 letters.
 What this prints is observed; ``certify pattern WORD`` certifies a five-particle word's sets exactly
 (certify/patterns/five.py).
 """
@@ -60,6 +65,21 @@ def period_matrix(word: str, gaps: int, r: float) -> np.ndarray:
     return M
 
 
+def symmetric(word: str, particles: int) -> str | None:
+    """The first rotation of the word of the form X·m(X), m the mirror (a <-> the last letter, ...),
+    or None.  The mirror of X·m(X) is m(X)·X, a rotation of it: rotations are all one needs."""
+    letters, n = alphabet(particles), len(word) // 2
+    mirror = str.maketrans(letters, letters[::-1])
+    rotations = (word[k:] + word[:k] for k in range(len(word)))
+    return next((w for w in rotations if len(word) % 2 == 0 and w[n:] == w[:n].translate(mirror)), None)
+
+
+def half_map(word: str, gaps: int, r: float) -> np.ndarray:
+    """N = J·M_X for the word X·m(X), J the reversal of the gaps.  The mirror reverses the gaps, so
+    the matrix of m(X) is J·M_X·J and M_W = M_m(X)·M_X = (J·M_X)² = N² (J² = 1)."""
+    return period_matrix(word[:len(word) // 2], gaps, r)[::-1]
+
+
 def follows(word: str, p: np.ndarray, q: np.ndarray, r: float, letters: str) -> bool:
     """Does the float run from (p, q) follow the word (each collision the strict next one)?"""
     for letter in word:
@@ -77,11 +97,22 @@ def follows(word: str, p: np.ndarray, q: np.ndarray, r: float, letters: str) -> 
     return True
 
 
-def data(word: str, r: float, particles: int) -> list[tuple[float, float, bool]]:
-    """(λ, μ, stable) for every feasible self-similar datum of the word at r."""
+def data(word: str, r: float, particles: int, half: bool = False) -> list[tuple[float, float, bool]]:
+    """(λ, μ, stable) for every feasible self-similar datum of the word at r.
+
+    half: the word is X·m(X) and the eigenpairs are N's (half_map), the eigenvalues of M_W their
+    squares n².  The pairs used are those of N's real nonzero eigenvalues n (then n² > 0 is an
+    eigenvalue of M_W), and stable means n_λ² > n_μ² > |n|² for N's two other eigenvalues.  This is
+    exactly the stable condition λ > μ > |ν| of M_W: the eigenvalues of N² are the n², with
+    multiplicity; n² is real only for n real or purely imaginary, and positive (as the datum's λ, μ
+    must be) only for n real and nonzero; the strict inequalities make λ and μ simple
+    eigenvalues of M_W, whose eigenvectors are then N's for n_λ, n_μ.  For a feasible datum that is
+    not stable the two agree where n² is simple (N has not both n and -n): only there is the
+    eigenvector of N the eigenvector of M_W.  Feasibility is the same test, the run on all of W."""
     letters, gaps = alphabet(particles), particles - 1
-    ev, V = np.linalg.eig(period_matrix(word, gaps, r))
-    real = [k for k in range(gaps) if abs(ev[k].imag) < 1e-12 and ev[k].real > 0]
+    root, V = np.linalg.eig(half_map(word, gaps, r) if half else period_matrix(word, gaps, r))
+    ev = root ** 2 if half else root
+    real = [k for k in range(gaps) if abs(root[k].imag) < 1e-12 and ev[k].real > 0]
     Y = letters.index(word[-1])
     out = []
     for a, b in itertools.permutations(real, 2):
@@ -106,10 +137,10 @@ def bisect(test, a: float, b: float) -> float:
     return (a + b) / 2
 
 
-def window(word: str, grid, particles: int, stable: bool) -> list[float]:
+def window(word: str, grid, particles: int, stable: bool, half: bool = False) -> list[float]:
     """The grid points where the word has a feasible (or stable) datum, and the ends bisected."""
-    test = (lambda r: any(s for *_, s in data(word, r, particles))) if stable else (
-        lambda r: bool(data(word, r, particles)))
+    test = (lambda r: any(s for *_, s in data(word, r, particles, half))) if stable else (
+        lambda r: bool(data(word, r, particles, half)))
     hits = [test(r) for r in grid]
     ends = [bisect(test, grid[k], grid[k + 1]) for k in range(len(grid) - 1) if hits[k] != hits[k + 1]]
     return ends, [r for r, h in zip(grid, hits) if h]
@@ -161,11 +192,18 @@ def main(argv=None) -> int:
     ap.add_argument("--word", default=None)
     ap.add_argument("--r", nargs=3, type=float, default=(0.01, 0.99, 99), metavar=("LO", "HI", "POINTS"))
     ap.add_argument("--ends", action="store_true", help="the exact polynomials at the ends of --word's window")
+    ap.add_argument("--half", action="store_true", help="--word is X·m(X): the datum from N = J·M_X")
     args = ap.parse_args(argv)
     grid = list(np.linspace(args.r[0], args.r[1], int(args.r[2])))
+    if args.half:
+        word = symmetric(args.word or "", args.particles)
+        if not word:
+            print(f"--half: {args.word!r} is not X·m(X) up to rotation (m the mirror)", file=sys.stderr)
+            return 2
+        args.word = word
     if args.word:
         for stable in (False, True):
-            ends, hits = window(args.word, grid, args.particles, stable)
+            ends, hits = window(args.word, grid, args.particles, stable, args.half)
             print(f"{'stable' if stable else 'feasible'}: {len(hits)} of {len(grid)} grid points; ends {ends}")
             if args.ends and stable:
                 exact_ends(args.word, ends, args.particles)
