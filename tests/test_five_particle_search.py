@@ -108,14 +108,13 @@ def test_the_half_map_gives_the_datum_of_the_word(word):
 
 
 def test_the_half_map_resolves_the_56_letter_word():
-    """The 56-letter word: the --half window's ends are the certified ends (committed file) to 1e-6,
-    while the ordinary datum loses μ in rounding before the certified upper end (by more than 1e-7)."""
+    """The 56-letter word: the --half window's ends are the certified ends (committed file) to 1e-6
+    (the ordinary datum loses μ in rounding: on this machine its upper end is off by about 5e-7, a
+    figure that depends on the BLAS, so it is not asserted)."""
     word = "abacbacbcabacbcbabacbcdcdbcbdcdbcdbcbdcdbcbcdcdbcbabacbc"
     grid, (lo, hi) = certified(word)
     half_ends, _ = search.window(word, grid, 5, True, True)
     assert len(half_ends) == 2 and abs(half_ends[0] - lo) < 1e-6 and abs(half_ends[1] - hi) < 1e-6
-    ends, _ = search.window(word, grid, 5, True)
-    assert abs(ends[-1] - hi) > 1e-7
 
 
 def test_half_needs_a_symmetric_word(capsys):
