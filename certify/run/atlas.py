@@ -272,21 +272,27 @@ def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
     return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
 
 
-def late_factor(kind: str | None, observed: str | None, r: flint.fmpq) -> int | None:
+def late_stages(kind: str | None, observed: str | None, r: flint.fmpq) -> tuple[int, ...]:
     """How many times longer an unresolved orbit of this kind (:func:`unresolved_kind`) and
-    observed word is run again at r (:func:`classify_late`), or None: :data:`LATE` for a long
-    transient (its word attracts at r) and for a run with no period at all (nothing recognised,
-    no word repeated: it may settle later than the run) at r ≤ 3 − 2√2, where horseshoes are
-    proved; :data:`LONGER` for such a run above 3 − 2√2 (the island's interval, where no
-    horseshoe is proved: near r = 1 a run can wander for 10⁵ collisions before it settles; run
-    :data:`LATE` times longer first, by :func:`classify_late`), and
-    for a run repeating a word not attracting at r (near r = 1, abcb: a slow transient can wind
-    along the loop for 10⁵ collisions before it settles elsewhere)."""
+    observed word is run again at r (:func:`classify_late`), stage after stage until one proves
+    a class; () when it is not: :data:`LATE` for a long transient (its word attracts at r) and
+    for a run with no period at all (nothing recognised, no word repeated: it may settle later
+    than the run) at r ≤ 3 − 2√2, where horseshoes are proved; :data:`LATE` then :data:`LONGER`
+    for such a run above 3 − 2√2 (the island's interval, where no horseshoe is proved: near
+    r = 1 a run can wander for 10⁵ collisions before it settles); :data:`LONGER` for a run
+    repeating a word not attracting at r (near r = 1, abcb: a slow transient can wind along the
+    loop for 10⁵ collisions before it settles elsewhere)."""
     if kind == NOTHING and observed is None:
-        return LONGER if elliptic_polynomial(r) < 0 else LATE
+        return (LATE, LONGER) if elliptic_polynomial(r) < 0 else (LATE,)
     if kind == TRANSIENT:
-        return LATE
-    return LONGER if kind == NOT_ATTRACTING else None
+        return (LATE,)
+    return (LONGER,) if kind == NOT_ATTRACTING else ()
+
+
+def late_factor(kind: str | None, observed: str | None, r: flint.fmpq) -> int | None:
+    """The longest run :func:`late_stages` asks, as a factor of the first run's length, or None."""
+    stages = late_stages(kind, observed, r)
+    return stages[-1] if stages else None
 
 
 def late(o: dict, r: flint.fmpq) -> bool:
@@ -316,9 +322,9 @@ def current(rec: dict) -> bool:
 
 def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     """(identify's class of the orbit (θ0, φ0) at r, the collisions it was run again with, its
-    unresolved kind): an unresolved orbit that :func:`late` selects is run again
-    :func:`late_factor` times longer and that run's class kept when it proves one (its kind
-    then None); otherwise the first run's, with None and the kind (:func:`unresolved_kind`,
+    unresolved kind): an unresolved orbit that :func:`late` selects is run again longer, stage
+    after stage (:func:`late_stages`), and the first run's class that proves one kept (its kind
+    then None); otherwise the first run's, with the longest run and the kind (:func:`unresolved_kind`,
     computed once).  Observed blocks are decided up to :data:`LONG_WORD` letters (identify's
     ``word_max``): the exact route at one r (``orbit_at``, the trapping ellipse) needs no
     parser; a longer block is "not analysed" (its exact products and the ball scan grow with
@@ -327,14 +333,12 @@ def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     if x.cls != UNRESOLVED:
         return x, None, None
     kind = unresolved_kind(x.word, fq)
-    factor = late_factor(kind, x.word, fq)
-    if factor is None:
-        return x, None, kind
-    for f in (LATE, factor) if kind == NOTHING and factor != LATE else (factor,):     # rule 4: 4×, then 16×
+    stages = late_stages(kind, x.word, fq)
+    for f in stages:
         y = ident.classify(q, th, ph, f * collisions, word_max=LONG_WORD)
         if y.cls != UNRESOLVED:
             return y, f * collisions, None
-    return x, factor * collisions, kind
+    return x, (stages[-1] * collisions if stages else None), kind
 
 
 def _orbit_record(x, rerun, kind, th, ph, fq) -> dict:

@@ -543,6 +543,8 @@ def test_a_run_with_no_period_is_run_again_4_times_longer_below_and_16_above_3_m
     below, above = atlas._fq("17/100"), atlas._fq("43/250")
     assert atlas.late_factor(atlas.NOTHING, None, below) == atlas.LATE
     assert atlas.late_factor(atlas.NOTHING, None, above) == atlas.LONGER
+    assert atlas.late_stages(atlas.NOTHING, None, below) == (atlas.LATE,)
+    assert atlas.late_stages(atlas.NOTHING, None, above) == (atlas.LATE, atlas.LONGER)         # 4×, then 16×
     for r in (below, above):
         assert atlas.late_factor(atlas.TRANSIENT, "abcb", r) == atlas.LATE
         assert atlas.late_factor(atlas.NOT_ATTRACTING, "abcb", r) == atlas.LONGER
