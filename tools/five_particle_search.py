@@ -41,7 +41,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from certify.dynamics.model import alphabet, collide_gaps  # noqa: E402
-from certify.patterns.five import normal_form, word_classes  # noqa: E402
+from certify.patterns.five import mirror, normal_form, word_classes  # noqa: E402
 
 
 def canonical(word: str, letters: str) -> str:
@@ -68,10 +68,9 @@ def period_matrix(word: str, gaps: int, r: float) -> np.ndarray:
 def symmetric(word: str, particles: int) -> str | None:
     """The first rotation of the word of the form X·m(X), m the mirror (a <-> the last letter, ...),
     or None.  The mirror of X·m(X) is m(X)·X, a rotation of it: rotations are all one needs."""
-    letters, n = alphabet(particles), len(word) // 2
-    mirror = str.maketrans(letters, letters[::-1])
+    n = len(word) // 2
     rotations = (word[k:] + word[:k] for k in range(len(word)))
-    return next((w for w in rotations if len(word) % 2 == 0 and w[n:] == w[:n].translate(mirror)), None)
+    return next((w for w in rotations if len(word) % 2 == 0 and w[n:] == mirror(w[:n], particles)), None)
 
 
 def half_map(word: str, gaps: int, r: float) -> np.ndarray:

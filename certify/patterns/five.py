@@ -443,12 +443,18 @@ def requirements(cand: FiveCandidate) -> dict:
     return {"exists": exists, "feasible": feasible, "stable": stable}
 
 
+def mirror(word: str, particles: int = 5) -> str:
+    """The word's mirror image: the particles numbered from the right (for five a <-> d, b <-> c)."""
+    letters = alphabet(particles)
+    return word.translate(str.maketrans(letters, letters[::-1]))
+
+
 def normal_form(word: str, particles: int = 5) -> tuple[str, str]:
     """The least rotation of the word or of its mirror image (particles numbered from the right: for
     five a <-> d, b <-> c), and why it is the same orbit."""
     letters = alphabet(particles)
-    mirror = word.translate(str.maketrans(letters, letters[::-1]))
-    best = min((w[k:] + w[:k], w is mirror) for w in (word, mirror) for k in range(len(word)))
+    image = mirror(word, particles)
+    best = min((w[k:] + w[:k], w is image) for w in (word, image) for k in range(len(word)))
     pairs = ", ".join(f"{a}<->{b}" for a, b in zip(letters, letters[::-1]) if a < b)
     why = "the least rotation" + (f" of the mirror image ({pairs})" if best[1] else "")
     return best[0], why
