@@ -74,10 +74,10 @@ def figure(four: list, five: list, path, lines: dict | None = None, census_lengt
     fig.tight_layout()
     rows = plots.label_lines(ax, lines, color="grey", fontsize=6)
     words = f"{len(five)} word{'' if len(five) == 1 else 's'}"
-    ax.set_title(f"five particles: stable self-similar windows (certify pattern; {words})", fontsize=9,
+    ax.set_title(f"five particles: stable self-similar windows\n(certify pattern; {words})", fontsize=9,
                  pad=plots.label_pad(rows))
     length = f"words of at most {census_length} collisions" if census_length else "the census"
-    bx.set_title(f"four particles: stable self-similar windows ({length}, certified)", fontsize=9)
+    bx.set_title(f"four particles: stable self-similar windows\n({length}, certified)", fontsize=9)
     fig.tight_layout()
     path = Path(path)
     with saving.output_dir(path.parent):
