@@ -8,8 +8,9 @@ reports/five-patterns/WORD.json is what ``certify pattern WORD --json [--r-range
 byte (the longer words' analyses take 1-6 min of CPU each: done once, committed; docs/particles.md).
 With no word and no --pattern-json the figure is drawn from those files; ``--check`` runs ``certify
 pattern`` again on each committed word over its committed r-range and compares the bytes (exit 1 on a
-difference, nothing is drawn).  Each five-particle WORD given is analysed here; ``--pattern-json FILE``
-reads a result file instead; --out defaults to reports/five-windows.png.  The four-particle windows are
+difference, nothing is drawn; a result of the half route, ``--half``, again with ``--half``).  Each
+five-particle WORD given is analysed here; ``--pattern-json FILE`` reads a result file instead; --out
+defaults to reports/five-windows.png.  The four-particle windows are
 those of the committed census (reports/census.json).  Only certified windows are drawn
 (certify/run/five_figure.py).
 """
@@ -25,28 +26,35 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from certify.patterns.five import analyse_five  # noqa: E402
+from certify.patterns.five import HALF_MARK, analyse_five  # noqa: E402
 from certify.run import five_figure  # noqa: E402
 from certify.run.files import REPORTS  # noqa: E402
 
 COMMITTED = REPORTS / "five-patterns"
 
 
-def pattern_json(word: str, r_range: list[str]) -> bytes:
-    """What ``certify pattern WORD --json --r-range LO HI`` prints now (this checkout's code)."""
-    cmd = [sys.executable, "-m", "certify", "pattern", word, "--json", "--r-range", *r_range]
+def pattern_json(word: str, r_range: list[str], *flags: str) -> bytes:
+    """What ``certify pattern WORD --json --r-range LO HI [FLAGS]`` prints now (this checkout's code)."""
+    cmd = [sys.executable, "-m", "certify", "pattern", word, "--json", "--r-range", *r_range, *flags]
     return subprocess.run(cmd, cwd=ROOT, capture_output=True, check=True).stdout
 
 
+def flags_of(data: dict) -> tuple[str, ...]:
+    """The options besides --r-range that wrote a result: ``--half`` for the half route's (its explanation
+    says so: certify.patterns.five.HALF_ROUTE)."""
+    return ("--half",) if HALF_MARK in data["explanation"] else ()
+
+
 def differences(paths: list[Path], fresh=pattern_json) -> list[str]:
-    """One line per committed result file whose word, analysed again over its own r-range, prints
-    other bytes (``fresh(word, r_range)`` gives the new output)."""
+    """One line per committed result file whose word, analysed again over its own r-range (and route),
+    prints other bytes (``fresh(word, r_range, *flags)`` gives the new output)."""
     out = []
     for path in paths:
         data = json.loads(path.read_text(encoding="utf-8"))
-        if fresh(data["input"], data["r_range"]) != path.read_bytes():
-            out.append(f"{path.name}: certify pattern {data['input']} --r-range {' '.join(data['r_range'])} "
-                       "prints something else now")
+        flags = flags_of(data)
+        if fresh(data["input"], data["r_range"], *flags) != path.read_bytes():
+            out.append(f"{path.name}: certify pattern {data['input']} --r-range {' '.join(data['r_range'])}"
+                       f"{''.join(' ' + f for f in flags)} prints something else now")
     return out
 
 

@@ -306,6 +306,48 @@ class Sextic:
         return cls(M, W, charpoly_ring(W))
 
 
+HALF_ROUTE = """The half route, for a word W = X·m(X) (m the mirror, a <-> d, b <-> c; every rotation of such a
+word is one: rotating by k letters gives X'·m(X') with X' = X[k:]·m(X[:k])).  With J the reversal of the
+gaps, J K_i J = K_{m(i)}, so M_W = M_{m(X)} M_X = J M_X J M_X = N² with N = J·M_X, of half the degree in r.
+
+A datum (p(0), q(0)) on the face Y of W's last letter is *half-symmetric* when the run of X from it is
+feasible and ends at J(α p(0), β q(0)) with α, β > 0.  Such a datum is a self-similar datum of W: the
+dynamics commutes with J and with (p, q) -> (α p, β q) (time scaled by α/β > 0), so the run of m(X) from
+J(α p(0), β q(0)) is the mirror image of X's run from (α p(0), β q(0)), feasible, and ends at
+(α² p(0), β² q(0)): λ_W = β², μ_W = α².  In N's terms q(0) is an eigenvector of N for β, and the plane
+Π = p(0) ∧ q(0) one of Λ²N for ν = αβ, on which N has the eigenvalues β and α: the κ route of this module
+applied to (X, N, face Y) instead of (W, M_W), with the run over X's |X| collisions and N's quartic for
+the other eigenvalues.  Stable: β > α > |ν'| for N's two other eigenvalues ν', which is β² > α² > |ν'|²,
+W's criterion λ > μ > |ν| (the eigenvalues of M_W are the squares of N's).
+
+Conversely a datum of W whose κ = λμ is a simple root of cp(Λ²M_W) is half-symmetric: Λ²N commutes with
+Λ²M_W = (Λ²N)², so the κ-eigenplane Π is Λ²N-invariant and N acts on it with eigenvalues ±√λ, ±√μ;
+q(t_X) = M_X q(0) = J N q(0) = ±√λ J q(0), and the first collision of m(X), pair m(i₁), needs
+q_{m(i₁)}(t_X) = ±√λ q_{i₁}(0) < 0 where q_{i₁}(0) < 0: the sign is +; p(t_X) lies on JΠ and on the
+face of X's last letter, the line of J p(0), as a positive multiple (the gaps are positive).  A stable
+datum has κ simple (see REPEATED_NOT_STABLE): so the stable sets of the two routes are the same, and the
+half route's existence and feasibility sets are those of the half-symmetric data (all data where κ is a
+simple root of cp(Λ²M_W))."""
+
+
+HALF_MARK = "; the half route: "        # in the explanation of a result of the half route
+
+
+def half_of(word: str) -> str | None:
+    """X when ``word`` = X·m(X) (m the mirror of five particles), else None."""
+    n, odd = divmod(len(word), 2)
+    return word[:n] if not odd and word[n:] == mirror(word[:n]) else None
+
+
+def half_sextic(half: str) -> Sextic:
+    """The :class:`Sextic` of the half route (:data:`HALF_ROUTE`): N = J·M_X (M_X's rows reversed),
+    Λ²N and cp(Λ²N) = det(νI - Λ²N) in the engine's ring (ν written λ)."""
+    M = system_matrix_flint(of_particles(5), half)
+    N = [list(M[3 - i]) for i in range(4)]
+    W = second_compound(N)
+    return Sextic(N, W, charpoly_ring(W))
+
+
 def sextic_factors(word: str, sextic: Sextic | None = None) -> list:
     """The irreducible factors of cp(Λ²M_w) in κ (over Q[r], monic: the sextic is monic), each with
     its multiplicity, as elements of the engine's ring (κ written λ)."""
@@ -323,11 +365,12 @@ def sextic_factors(word: str, sextic: Sextic | None = None) -> list:
     return out
 
 
-def five_candidate(word: str, factor=None, sextic: Sextic | None = None) -> FiveCandidate:
+def five_candidate(word: str, factor=None, sextic: Sextic | None = None, face: str | None = None) -> FiveCandidate:
     """The κ-route candidate of a word of five particles (see the module's docstring), κ a root of
     ``factor`` (an irreducible factor of cp(Λ²M) of multiplicity 1, by default the sextic itself);
     ``sextic`` the word's :class:`Sextic` when the caller has it (not memoised: a census holds no
-    candidate after its word)."""
+    candidate after its word).  The half route (:func:`half_sextic`): ``word`` is the half X of
+    W = X·m(X), ``sextic`` N = J·M_X's and ``face`` W's last letter m(x_last), the face of p(0)."""
     letters = alphabet(5)
     sextic = sextic or Sextic.of(word)
     M, W = sextic.M, sextic.W
@@ -341,7 +384,7 @@ def five_candidate(word: str, factor=None, sextic: Sextic | None = None) -> Five
     Pi = [red(e * common) for e in Pi]
     if not all(_polynomial(e) for e in Pi) or all(e.is_zero() for e in Pi):
         raise ArithmeticError("the eigenvector of Λ²M did not clear its denominators")
-    Y = letters.index(word[-1])
+    Y = letters.index(face or word[-1])
     p_hat = contract(Pi, Y)
     Mp = matvec(M, p_hat, red)
     MMp = matvec(M, Mp, red)
@@ -482,19 +525,28 @@ pair only.  So no branch of f is stable, at any r; only existence and feasibilit
 undecided (the plane is not the κ-eigenvector: the eigenspace of κ has dimension 2 or is not semisimple)."""
 
 
-def analyse_five(text: str, lo=0, hi=1, progress=None):
+def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
     """The exact analysis of a five-particle word over ]lo, hi[ (certified like
     :func:`.pattern.analyse`: the κ-route candidate, the requirements of :func:`requirements`
-    imposed by :class:`.feasibility.Analysis`), as a :class:`.pattern.PatternResult`."""
+    imposed by :class:`.feasibility.Analysis`), as a :class:`.pattern.PatternResult`.  ``half``: the
+    word is X·m(X) and the analysis is the half route's (:data:`HALF_ROUTE`: the same stable set, from
+    N = J·M_X of half the degree and a run of |X| collisions); UsageError for another word."""
     import time
 
     from certify.algebra.branches import BRANCH_NAMES
     from certify.algebra.poly import mpoly_to_univariate, show_collected, show_factored
+    from certify.errors import UsageError
 
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, why = read_five(text)
-    sextic = Sextic.of(normal)
+    X = half_of(normal) if half else None
+    if half and X is None:
+        raise UsageError(f"--half: {text!r} is not X·m(X) up to rotation (m the mirror a <-> d, b <-> c)")
+    if X is not None:
+        why += f"{HALF_MARK}W = X·m(X), X = {X}, M_W = N², N = J·M_X (J the reversal of the gaps)"
+    sextic = half_sextic(X) if X is not None else Sextic.of(normal)
+    run_word, face = (X, normal[-1]) if X is not None else (normal, None)
     factors = sextic_factors(normal, sextic)
     not_analysed: list = []
     regions: dict = {"exists": [], "feasible": [], "stable": []}
@@ -514,7 +566,7 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
                              "Λ²M is not strictly dominant)")
             continue
         try:
-            cand = five_candidate(normal, factor if len(factors) > 1 else None, sextic)
+            cand = five_candidate(run_word, factor if len(factors) > 1 else None, sextic, face)
         except ArithmeticError as e:
             not_analysed.append({"factor": show_collected(factor or sextic.cp, "λ").replace("λ", "κ"),
                                  "multiplicity": 1, "stable": f"not analysed: {e}"})
@@ -555,11 +607,16 @@ def analyse_five(text: str, lo=0, hi=1, progress=None):
         datum = {"κ": "λμ, a root of cp(Λ²M) (the branch)", "λ": "x = (T ± √(T² - 4κD²))/(2D) (x₊, x₋: the two "
                  "orderings of the pair)", "p(0)": "ι_Y Π, Π the κ-eigenvector of Λ²M, Y the last letter's gap",
                  "q(0)": "∝ M p(0) - μ p(0), q of the first letter's gap < 0"}
+        if X is not None:
+            datum = {"ν": "αβ, a root of cp(Λ²N) (the branch); κ = ν², λ = β², μ = α² for M_W = N²",
+                     "β": "x = (T ± √(T² - 4νD²))/(2D) (x₊, x₋: the two orderings of the pair)",
+                     "p(0)": "ι_Y Π, Π the ν-eigenvector of Λ²N, Y the last letter's gap",
+                     "q(0)": "∝ N p(0) - α p(0), q of the first letter's gap < 0; the run over X only"}
         return M, show_factored(primitive(mpoly_to_univariate(ring_to_mpoly(sextic.cp).discriminant("lam")))), datum
     cp_text = lambda: show_collected(sextic.cp, "λ").replace("λ", "κ")  # noqa: E731
     res = FiveResult(text, normal, "five", why, (lo, hi), cp_text, sets["exists"], sets["feasible"], sets["stable"],
                      undecided, conditions, None, "", 0.0, regions, printed)
-    res.not_analysed = not_analysed
+    res.not_analysed, res.half = not_analysed, X
     res.verdict = verdict(res)
     if not_analysed:          # the verdict speaks of the factors analysed only: say which are not
         res.verdict = (f"{res.verdict}; on all of ]{lo}, {hi}[, not analysed: the factor(s) "
@@ -575,10 +632,12 @@ class FiveResult(PatternResult):
     and stability is λ > μ > |ν| (its Markdown names them; the JSON's fields are the pattern schema's)."""
 
     not_analysed: list        # the factors of cp(Λ²M) not analysed: {"factor", "multiplicity", "stable"}
+    half: str | None = None   # X of the half route (W = X·m(X), M_W = N², N = J·M_X), or None
 
     def markdown(self) -> str:
         text = super().markdown()
-        for old, new in (("cp(M) = `", "cp(Λ²M) in κ = λμ = `"), ("disc_λ cp(M) = `", "disc_κ cp(Λ²M) = `"),
+        M, k, kappa = ("N", "ν", "ν = αβ (N = J·M_X, M_W = N²)") if self.half else ("M", "κ", "κ = λμ")
+        for old, new in (("cp(M) = `", f"cp(Λ²{M}) in {kappa} = `"), ("disc_λ cp(M) = `", f"disc_{k} cp(Λ²{M}) = `"),
                          ("## Stable (λ dominant, fixed point attracting)",
                           "## Stable (λ > μ > |ν| for the other eigenvalues ν: λ dominant, the plane attracting)")):
             text = text.replace(old, new, 1)

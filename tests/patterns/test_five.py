@@ -78,11 +78,16 @@ def test_a_dropped_condition_is_caught(result):
     assert any(a < _window(result).lo for a, _ in spans)         # below the certified end, compared exactly
 
 
-def _datum(r0: flint.fmpq, prec: int = 400):
+WINDOW_RANGE = (flint.fmpq(1, 4), flint.fmpq(27, 100))       # abadcbcabc's r-range of the datum tests
+
+
+def _datum(r0: flint.fmpq, prec: int = 400, word: str = WORD, rng=WINDOW_RANGE, half: bool = False):
     """p(0), q(0) (gaps, balls) of the stable datum at a rational r0 inside the window, from the candidate's
-    exact formulas: κ the certified branch, λ the root of x² - t x + κ of the stable region."""
-    cand = five.five_candidate(WORD)
-    (R,) = [R for R in five.analyse_five(WORD, flint.fmpq(1, 4), flint.fmpq(27, 100)).regions["stable"] if R.pieces]
+    exact formulas: κ the certified branch, λ the root of x² - t x + κ of the stable region (``half``: the
+    half route's candidate, ν = κ's square root and β = λ's, of N = J·M_X)."""
+    X = five.half_of(word) if half else None
+    cand = five.five_candidate(X, sextic=five.half_sextic(X), face=word[-1]) if half else five.five_candidate(word)
+    (R,) = [R for R in five.analyse_five(word, *rng, half=half).regions["stable"] if R.pieces]
     kappa = cand.spectrum.real_eigenvalues(r0)[R.branch].arb(prec)
     flint.ctx.prec = prec
     rr = flint.arb(r0)
@@ -97,7 +102,7 @@ def _datum(r0: flint.fmpq, prec: int = 400):
     y = (T + sigma * (T * T - 4 * kappa * D * D).sqrt()) / 2
     p = [ev(e) for e in cand.p0]
     q = [ev(a) + y * ev(b) for a, b in cand.q0]
-    i1 = "abcd".index(WORD[0])
+    i1 = "abcd".index(word[0])
     s = -1 if q[i1] > 0 else 1
     j0 = next(j for j in range(4) if j != cand.face and p[j] != 0)
     t = 1 if p[j0] > 0 else -1
@@ -107,9 +112,13 @@ def _datum(r0: flint.fmpq, prec: int = 400):
 def test_an_exact_particle_run_from_the_certified_datum():
     """At r = 13/50 (inside the window) the datum, rounded to rationals after half the first flight, is run
     exactly with five particles (simulate's evolve): three periods of the word, collision by collision."""
-    r0 = flint.fmpq(13, 50)
-    p, q = _datum(r0)
-    i1 = "abcd".index(WORD[0])
+    _particle_run(flint.fmpq(13, 50), WORD)
+
+
+def _particle_run(r0: flint.fmpq, word: str, **datum) -> None:
+    """The datum of :func:`_datum` at r0 run exactly with five particles: three periods of ``word``."""
+    p, q = _datum(r0, word=word, **datum)
+    i1 = "abcd".index(word[0])
     tau = -p[i1] / q[i1] / 2
     gaps = [p[j] + tau * q[j] for j in range(4)]
     def rational(b):
@@ -119,8 +128,8 @@ def test_an_exact_particle_run_from_the_certified_datum():
     for g, u in zip(gaps, q):
         x.append(x[-1] + rational(g))
         v.append(v[-1] + rational(u))
-    history = evolve(x, v, r0, 3 * len(WORD), particles=5)
-    assert history.word == WORD * 3
+    history = evolve(x, v, r0, 3 * len(word), particles=5)
+    assert history.word == word * 3
 
 
 def test_the_cli_json_follows_the_pattern_schema():
@@ -386,3 +395,44 @@ def test_a_repeated_factor_is_two_products_and_never_stable():
 def sp_rational(q):
     import sympy as sp
     return sp.Rational(int(q.p), int(q.q))
+
+
+HALF = "abacbacbdcbcdcdbcdbcabcb"                 # X·m(X), X = abacbacbdcbc (reports/five-patterns/)
+
+
+def test_the_half_map_squares_to_the_period_matrix():
+    """M_W = N² exactly for N = J·M_X (half_sextic's N), for every committed symmetric word; a word that
+    is not X·m(X) has no half."""
+    from certify.dynamics.systems import of_particles, system_matrix_flint
+    words = [f.stem for f in (ROOT / "reports" / "five-patterns").glob("*.json")]
+    symmetric = [w for w in words if five.half_of(w) is not None]
+    assert len(symmetric) >= 5 and five.half_of(WORD) is None and five.half_of("abcdabcd") is None
+    for w in symmetric:
+        N = five.half_sextic(five.half_of(w)).M
+        M = system_matrix_flint(of_particles(5), w)
+        assert all(sum((N[i][k] * N[k][j] for k in range(4)), flint.fmpz_poly(0)) == M[i][j]
+                   for i in range(4) for j in range(4))
+
+
+def test_the_half_route_gives_the_committed_window():
+    """The half route on the 24-letter word over the committed r-range: the stable, feasible and existence
+    sets of reports/five-patterns/ (the ordinary route's), exact ends and minimal polynomials included."""
+    doc = json.loads((ROOT / "reports" / "five-patterns" / f"{HALF}.json").read_text())
+    res = five.analyse_five(HALF, *(flint.fmpq(*map(int, x.split("/"))) for x in doc["r_range"]), half=True)
+    new = json.loads(res.json_text())
+    assert new["stable"] == doc["stable"] and new["feasible"] == doc["feasible"] and new["exists"] == doc["exists"]
+    assert res.half == "abacbacbdcbc" and "half route" in new["explanation"]
+
+
+def test_an_exact_particle_run_from_the_half_datum():
+    """The half route's datum (from N's eigenplane, a run over X only) at r = 1063/5000, inside the window:
+    three periods of the whole word W, collision by collision, in an exact five-particle run."""
+    _particle_run(flint.fmpq(1063, 5000), HALF, rng=(flint.fmpq(53, 250), flint.fmpq(107, 500)), half=True)
+
+
+def test_the_half_route_refuses_other_words():
+    """--half on a word that is not X·m(X), or on a four-particle word: one line, exit 2."""
+    for word in (WORD, "ababcb"):
+        res = subprocess.run([sys.executable, "-m", "certify", "pattern", word, "--half"], cwd=ROOT,
+                             capture_output=True, text=True)
+        assert res.returncode == 2 and "Traceback" not in res.stderr and len(res.stderr.strip().splitlines()) == 1
