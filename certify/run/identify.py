@@ -186,13 +186,17 @@ def elliptic(r: flint.fmpq) -> bool:
 
 
 # ------------------------------------------------------------------ the second route
-def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tuple, int] | str:
+def _state(r: flint.fmpq, theta0: float, phi0: float, k: int, first=None) -> tuple[str, tuple, int] | str:
     """The state after collision k from the datum by :func:`ball_run` (contact, oriented
     ball normal, bits), the precision raised from VERIFY_START along the rungs
     VERIFY_START·2^m (:func:`next_precision`) until all k collisions are decided; a reason
     when VERIFY_CAP does not suffice.  Beyond VERIFY_MAX collisions (the second route's
     balls wrap, about a bit per collision: minutes) the state is the first route's
-    (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
+    (:func:`certify.numerics.engines.ball_states`, exact products, seconds): ``first``, the
+    state (contact, normal, bits) the caller's scan has from ball_states at k, when given
+    (the same state: ball_states's last state is its k-th, tests/numerics/test_ball_states.py)."""
+    if k > VERIFY_MAX and first is not None:
+        return first
     if k > VERIFY_MAX:
         for done, j, n, bits in engines.ball_states(r, theta0, phi0, k, every=False):   # the last state
             if done == k:
@@ -225,10 +229,11 @@ def next_precision(prec: int, reached: int, k: int) -> int:
     return min(rung, VERIFY_CAP)
 
 
-def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = None) -> str | None:
+def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = None, first=None) -> str | None:
     """None when the claim "the orbit from (θ0, φ0) at r is of class ``cls`` from collision
     k" (``word``: the rotation followed, for the attracting class) is proved by the second
-    route of the module docstring; otherwise the reason it is refused."""
+    route of the module docstring; otherwise the reason it is refused.  ``first``: the first
+    route's state at k (contact, normal, bits), used beyond VERIFY_MAX (:func:`_state`)."""
     r = flint.fmpq(r.numerator, r.denominator) if isinstance(r, Fraction) else rules.exact_r(r)
     if cls not in (ISLAND, ATTRACTING):
         return f"{cls!r} is not a class with a proof"
@@ -246,7 +251,7 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
         U = recheck(word, r, U.centre, U.frame, U.radius, U.pair)
         if isinstance(U, str):
             return f"the trapping ellipse of {word} is not re-certified: {U}"
-    state = _state(r, theta0, phi0, k)
+    state = _state(r, theta0, phi0, k, first)
     if isinstance(state, str):
         return state
     last, n, prec = state
@@ -391,7 +396,7 @@ def _check(x: Identified, s: Scan, r, theta0, phi0, U, rotation, c0, k, j, n, bi
             if s.tries[ATTRACTING] and j == c0 and U.ball_sign(n) == 1:
                 found.append(ATTRACTING)
     for cls in found:
-        why = verify(r, theta0, phi0, cls, k, rotation)
+        why = verify(r, theta0, phi0, cls, k, rotation, (LETTERS[j], n, bits))
         if why is None:
             return cls, k
         s.tries[cls] -= 1

@@ -332,6 +332,23 @@ def test_a_scan_gone_on_proves_the_class_at_the_same_collision(monkeypatch):
     assert ident._scan(x, q, th, ph, None, None, 50, scan)[0] is None and made == list(range(51))
 
 
+def test_beyond_verify_max_the_second_route_takes_the_scans_state(monkeypatch):
+    """With VERIFY_MAX = 100, the claim at collision 180 of r = 1/2 (the test above) is checked on
+    the state the scan has (the first route's): no ball state computed again, the same answer as
+    verify computing it from the datum (ball_states to 180)."""
+    r, q = Fraction(1, 2), flint.fmpq(1, 2)
+    th, ph = float(grid(8)[0][0]), float(grid(8)[1][0])
+    rotation = ident.classify(r, th, ph, 4000).rotation
+    U = ident.trap_of(rotation, q)
+    monkeypatch.setattr(ident, "VERIFY_MAX", 100)
+    made = _counted(monkeypatch)
+    x = ident.Identified("1/2", th, ph, 400, 0)
+    assert ident._scan(x, q, th, ph, U, rotation, 400) == (ident.ATTRACTING, 180) and made == list(range(181))
+    made.clear()
+    assert ident.verify(r, th, ph, ident.ATTRACTING, 180, rotation) is None and made[-1:] == [180]
+    assert ident.verify(r, th, ph, ident.ATTRACTING, 179, rotation) is not None
+
+
 def test_a_scan_stopped_at_the_precision_cap_is_not_run_again(monkeypatch):
     """With a precision cap of 1 digit the balls stop undecided after a few collisions: the
     longer run with the same Scan computes no state again and says the same (where a run
