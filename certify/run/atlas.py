@@ -328,14 +328,17 @@ def classify_late(q: Fraction, fq, th, ph, collisions: int) -> tuple:
     computed once).  Observed blocks are decided up to :data:`LONG_WORD` letters (identify's
     ``word_max``): the exact route at one r (``orbit_at``, the trapping ellipse) needs no
     parser; a longer block is "not analysed" (its exact products and the ball scan grow with
-    its length, and the atlas met none between 868 and 1000 letters)."""
-    x = ident.classify(q, th, ph, collisions, word_max=LONG_WORD)
+    its length, and the atlas met none between 868 and 1000 letters).  The runs share the datum's
+    rigorous orbit (:class:`~certify.run.identify.Scan`): a longer run goes on from where the last
+    one's ball scan stopped when its trapping ellipse is the same (the same classes)."""
+    scan = ident.Scan()
+    x = ident.classify(q, th, ph, collisions, word_max=LONG_WORD, scan=scan)
     if x.cls != UNRESOLVED:
         return x, None, None
     kind = unresolved_kind(x.word, fq)
     stages = late_stages(kind, x.word, fq)
     for f in stages:
-        y = ident.classify(q, th, ph, f * collisions, word_max=LONG_WORD)
+        y = ident.classify(q, th, ph, f * collisions, word_max=LONG_WORD, scan=scan)
         if y.cls != UNRESOLVED:
             return y, f * collisions, None
     return x, (stages[-1] * collisions if stages else None), kind

@@ -36,6 +36,7 @@ over ]0, 1[ (:func:`window_at`) is added with ``windows=True`` for words of at m
 from __future__ import annotations
 
 import json
+import sys
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cache
@@ -185,13 +186,17 @@ def elliptic(r: flint.fmpq) -> bool:
 
 
 # ------------------------------------------------------------------ the second route
-def _state(r: flint.fmpq, theta0: float, phi0: float, k: int) -> tuple[str, tuple, int] | str:
+def _state(r: flint.fmpq, theta0: float, phi0: float, k: int, first=None) -> tuple[str, tuple, int] | str:
     """The state after collision k from the datum by :func:`ball_run` (contact, oriented
     ball normal, bits), the precision raised from VERIFY_START along the rungs
     VERIFY_START·2^m (:func:`next_precision`) until all k collisions are decided; a reason
     when VERIFY_CAP does not suffice.  Beyond VERIFY_MAX collisions (the second route's
     balls wrap, about a bit per collision: minutes) the state is the first route's
-    (:func:`certify.numerics.engines.ball_states`, exact products, seconds)."""
+    (:func:`certify.numerics.engines.ball_states`, exact products, seconds): ``first``, the
+    state (contact, normal, bits) the caller's scan has from ball_states at k, when given
+    (the same state: ball_states's last state is its k-th, tests/numerics/test_ball_states.py)."""
+    if k > VERIFY_MAX and first is not None:
+        return first
     if k > VERIFY_MAX:
         for done, j, n, bits in engines.ball_states(r, theta0, phi0, k, every=False):   # the last state
             if done == k:
@@ -224,10 +229,11 @@ def next_precision(prec: int, reached: int, k: int) -> int:
     return min(rung, VERIFY_CAP)
 
 
-def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = None) -> str | None:
+def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = None, first=None) -> str | None:
     """None when the claim "the orbit from (θ0, φ0) at r is of class ``cls`` from collision
     k" (``word``: the rotation followed, for the attracting class) is proved by the second
-    route of the module docstring; otherwise the reason it is refused."""
+    route of the module docstring; otherwise the reason it is refused.  ``first``: the first
+    route's state at k (contact, normal, bits), used beyond VERIFY_MAX (:func:`_state`)."""
     r = flint.fmpq(r.numerator, r.denominator) if isinstance(r, Fraction) else rules.exact_r(r)
     if cls not in (ISLAND, ATTRACTING):
         return f"{cls!r} is not a class with a proof"
@@ -245,7 +251,7 @@ def verify(r, theta0: float, phi0: float, cls: str, k: int, word: str | None = N
         U = recheck(word, r, U.centre, U.frame, U.radius, U.pair)
         if isinstance(U, str):
             return f"the trapping ellipse of {word} is not re-certified: {U}"
-    state = _state(r, theta0, phi0, k)
+    state = _state(r, theta0, phi0, k, first)
     if isinstance(state, str):
         return state
     last, n, prec = state
@@ -320,42 +326,93 @@ def _named(x: Identified) -> str:
     return x.word if x.compact in (None, x.word) else f"{x.word} (= {x.compact})"
 
 
-def _scan(x: Identified, r, theta0, phi0, U, rotation, budget):
-    """The rigorous orbit, state by state: the first (class, k) whose proof the second
-    route accepts; refusals recorded in x.notes.  Returns (class, k) or (None, stop note)."""
+class Scan:
+    """One datum's rigorous orbit at r, kept between the runs of :func:`classify` (``scan``)
+    that ask it for more collisions (the atlas's longer runs of an unresolved orbit).
+
+    :func:`engines.ball_states` gives the same states whatever its number of collisions (that
+    number only ends it), and every check :func:`_scan` makes on a state is decided by the
+    state, r and the trapping ellipse U (the island's, U's, the second route's :func:`verify`).
+    So a scan of states 0..N with the same U (the same ``key``) as the last one, which checked
+    states 0..``done`` ≤ N, goes on from state ``done`` + 1 with the tries and refusals left
+    by it: the same answer as a scan from the datum, without computing states 0..``done`` again.
+    A scan that ended (a class proved at k, every kind of proof refused, or the balls stopped
+    undecided at their precision cap) ends there again.  Another key starts from the datum."""
+
+    def __init__(self):
+        self.key: tuple | None = None
+        self.done = -1                   # the last state checked
+        self.ended: tuple | None = None  # the scan's answer once it ended before its budget
+        self.tries: dict = {}
+        self.notes: list = []            # the refusals so far, in order
+        self.stop = {"code": 0, "bits": 0}
+        self.states = iter(())
+
+    def start(self, key: tuple, r, theta0, phi0, budget: int, tries: dict) -> None:
+        """Go on from the last scan when it had this key and checked no state beyond ``budget``;
+        else a new scan from the datum (its ball states not bounded here: :func:`_scan` stops)."""
+        if key == self.key and self.done <= budget:
+            return
+        self.key, self.done, self.ended, self.tries, self.notes = key, -1, None, dict(tries), []
+        self.stop = {"code": 0, "bits": 0}
+        self.states = iter(engines.ball_states(r, theta0, phi0, sys.maxsize, stop=self.stop))
+
+
+def _scan(x: Identified, r, theta0, phi0, U, rotation, budget, scan: Scan | None = None):
+    """The rigorous orbit, state by state up to collision ``budget``: the first (class, k)
+    whose proof the second route accepts; refusals recorded in x.notes.  Returns (class, k)
+    or (None, stop note).  ``scan``: the datum's :class:`Scan`, gone on from where it stopped."""
     tries = {ISLAND: REFUSALS if elliptic(r) else 0, ATTRACTING: REFUSALS if U is not None else 0}
     if not any(tries.values()):
         return None, ""
-    stop = {"code": 0, "bits": 0}
-    c0 = INDEX[rotation[-1]] if rotation else -1
-    for k, j, n, bits in engines.ball_states(r, theta0, phi0, budget, stop=stop):
+    s = Scan() if scan is None else scan
+    s.start((r, theta0, phi0, rotation if U is not None else None), r, theta0, phi0, budget, tries)
+    x.notes.extend(s.notes)
+    b, c0 = INDEX["b"], INDEX[rotation[-1]] if rotation else -1
+    while s.ended is None and s.done < budget:
+        state = next(s.states, None)
+        if state is None:            # the balls stopped undecided (stop["code"] ≠ 0)
+            s.ended = (None, f"the certified orbit (balls) stopped undecided at collision {s.done + 1} "
+                             f"({s.stop['bits']} bits)")
+            break
+        k, j, n, bits = state
+        s.done = k
+        if j == b or j == c0:        # else nothing to check
+            s.ended = _check(x, s, r, theta0, phi0, U, rotation, c0, k, j, n, bits)
+    if s.ended is not None:
+        return s.ended
+    where = " or ".join(w for w, k in (("the island", ISLAND), ("the trapping ellipse", ATTRACTING)) if s.tries[k])
+    return None, f"the certified orbit (balls) was not proved inside {where} within {s.done} collisions"
+
+
+def _check(x: Identified, s: Scan, r, theta0, phi0, U, rotation, c0, k, j, n, bits) -> tuple | None:
+    """:func:`_scan`'s checks of the state after collision k: (class, k) when a proof is accepted,
+    (None, "") when every kind of proof has been refused, else None (the scan goes on)."""
+    found = []
+    if (s.tries[ISLAND] and j == INDEX["b"]) or (s.tries[ATTRACTING] and j == c0):
         with precision(bits):
-            found = []
-            if tries[ISLAND] and j == INDEX["b"] and island.inside(n, r):
+            if s.tries[ISLAND] and j == INDEX["b"] and island.inside(n, r):
                 found.append(ISLAND)
-            if tries[ATTRACTING] and j == c0 and U.ball_sign(n) == 1:
+            if s.tries[ATTRACTING] and j == c0 and U.ball_sign(n) == 1:
                 found.append(ATTRACTING)
-        for cls in found:
-            why = verify(r, theta0, phi0, cls, k, rotation)
-            if why is None:
-                return cls, k
-            tries[cls] -= 1
-            x.notes.append(f"{cls} at collision {k} refused by the second route: {why}")
-        if not any(tries.values()):
-            return None, ""
-    done = k
-    if stop["code"]:
-        return None, f"the certified orbit (balls) stopped undecided at collision {done + 1} ({stop['bits']} bits)"
-    where = " or ".join(w for w, k in (("the island", ISLAND), ("the trapping ellipse", ATTRACTING)) if tries[k])
-    return None, f"the certified orbit (balls) was not proved inside {where} within {done} collisions"
+    for cls in found:
+        why = verify(r, theta0, phi0, cls, k, rotation, (LETTERS[j], n, bits))
+        if why is None:
+            return cls, k
+        s.tries[cls] -= 1
+        note = f"{cls} at collision {k} refused by the second route: {why}"
+        s.notes.append(note)
+        x.notes.append(note)
+    return (None, "") if not any(s.tries.values()) else None
 
 
 def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIONS,
-             windows: bool = False, word_max: int = MAX_LENGTH) -> Identified:
+             windows: bool = False, word_max: int = MAX_LENGTH, scan: Scan | None = None) -> Identified:
     """One orbit's class (module docstring).  An observed block of more than ``word_max``
     letters (default: the parser's :data:`~certify.patterns.periodic.MAX_LENGTH`, at most
     :data:`MAX_ANALYSED`) is not analysed; a longer one than the parser reads is read as plain
-    letters (:func:`read_plain`: the same normal form), and decided as any other."""
+    letters (:func:`read_plain`: the same normal form), and decided as any other.  ``scan``: the
+    datum's rigorous orbit kept from an earlier run at r (:class:`Scan`; the same class)."""
     if not 0 < word_max <= MAX_ANALYSED:
         raise UsageError(f"word_max must be in [1, {MAX_ANALYSED}], got {word_max}")
     q = flint.fmpq(r.numerator, r.denominator)
@@ -391,7 +448,7 @@ def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIO
             if windows and len(normal) <= WINDOW_MAX:
                 x.window = window_at(orbit_analysis(normal), Algebraic.rational(q))[0]
     observed = _observed(x, res.word, block)
-    cls, k = _scan(x, q, theta0, phi0, U, rotation, collisions)
+    cls, k = _scan(x, q, theta0, phi0, U, rotation, collisions, scan)
     if cls == ISLAND:
         x.cls, x.certified_from = ISLAND, k
         x.why = (f"quasi-periodic for ever, proved from collision {k}: the state at b after collision {k} "

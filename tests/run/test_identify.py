@@ -279,3 +279,89 @@ def test_a_block_longer_than_the_parser_reads_is_decided_up_to_word_max():
     assert "no attracting periodic orbit" in ident.verify(Fraction(3, 10), th, ph, ident.ATTRACTING, k, y.rotation)
     with pytest.raises(ident.UsageError, match="word_max"):
         ident.classify(r, th, ph, 1000, word_max=ident.MAX_ANALYSED + 1)
+
+
+def _counted(monkeypatch) -> list:
+    """The collisions k of every ball state the scan computes (engines.ball_states wrapped)."""
+    true_states, made = ident.engines.ball_states, []
+
+    def states(*a, **kw):
+        for s in true_states(*a, **kw):
+            made.append(s[0])
+            yield s
+    monkeypatch.setattr(ident.engines, "ball_states", states)
+    return made
+
+
+def test_a_longer_run_goes_on_from_the_shorter_runs_scan(monkeypatch):
+    """r = 97447/100000 (the island's interval, near 1), an atlas datum left unresolved, its run
+    repeating no attracting word (no trapping ellipse: the scan looks for the island only): with
+    the datum's Scan, a run of 1200 collisions after one of 300 computes the ball states 0..1200
+    once (not 0..300 again), and its class and why are those of a run of 1200 from the datum."""
+    made = _counted(monkeypatch)
+    r, (th, ph) = Fraction(97447, 100000), (0.19634954084936207, 1.3962634015954636)
+    fresh = ident.classify(r, th, ph, 1200)
+    assert fresh.cls == ident.UNRESOLVED and made == list(range(1201))
+    assert "not proved inside the island within 1200 collisions" in fresh.why
+    made.clear()
+    scan = ident.Scan()
+    ident.classify(r, th, ph, 300, scan=scan)
+    longer = ident.classify(r, th, ph, 1200, scan=scan)
+    assert made == list(range(1201))
+    assert longer.to_json() == fresh.to_json() and longer.notes == fresh.notes
+
+
+def test_a_scan_gone_on_proves_the_class_at_the_same_collision(monkeypatch):
+    """r = 1/2, the tool's first datum enters the trapping ellipse of abacbabcbcabcb at collision
+    180: a scan to 100 then, with the same Scan and ellipse, to 400 proves it at 180 having
+    computed the states 0..180 once, as a scan from the datum does; without the ellipse (another
+    key) the Scan starts again from the datum."""
+    r, q = Fraction(1, 2), flint.fmpq(1, 2)
+    th, ph = float(grid(8)[0][0]), float(grid(8)[1][0])
+    rotation = ident.classify(r, th, ph, 4000).rotation
+    U = ident.trap_of(rotation, q)
+    made = _counted(monkeypatch)
+    x = ident.Identified("1/2", th, ph, 400, 0)
+    assert ident._scan(x, q, th, ph, U, rotation, 400) == (ident.ATTRACTING, 180) and made == list(range(181))
+    made.clear()
+    scan = ident.Scan()
+    short = ident._scan(x, q, th, ph, U, rotation, 100, scan)
+    assert short[0] is None and "within 100 collisions" in short[1]
+    assert ident._scan(x, q, th, ph, U, rotation, 400, scan) == (ident.ATTRACTING, 180) and made == list(range(181))
+    made.clear()
+    assert ident._scan(x, q, th, ph, None, None, 50, scan)[0] is None and made == list(range(51))
+
+
+def test_beyond_verify_max_the_second_route_takes_the_scans_state(monkeypatch):
+    """With VERIFY_MAX = 100, the claim at collision 180 of r = 1/2 (the test above) is checked on
+    the state the scan has (the first route's): no ball state computed again, the same answer as
+    verify computing it from the datum (ball_states to 180)."""
+    r, q = Fraction(1, 2), flint.fmpq(1, 2)
+    th, ph = float(grid(8)[0][0]), float(grid(8)[1][0])
+    rotation = ident.classify(r, th, ph, 4000).rotation
+    U = ident.trap_of(rotation, q)
+    monkeypatch.setattr(ident, "VERIFY_MAX", 100)
+    made = _counted(monkeypatch)
+    x = ident.Identified("1/2", th, ph, 400, 0)
+    assert ident._scan(x, q, th, ph, U, rotation, 400) == (ident.ATTRACTING, 180) and made == list(range(181))
+    made.clear()
+    assert ident.verify(r, th, ph, ident.ATTRACTING, 180, rotation) is None and made[-1:] == [180]
+    assert ident.verify(r, th, ph, ident.ATTRACTING, 179, rotation) is not None
+
+
+def test_a_scan_stopped_at_the_precision_cap_is_not_run_again(monkeypatch):
+    """With a precision cap of 1 digit the balls stop undecided after a few collisions: the
+    longer run with the same Scan computes no state again and says the same (where a run
+    from the datum would stop at the same collision)."""
+    made = _counted(monkeypatch)
+    monkeypatch.setattr(ident.engines, "BALL_CAP_DPS", 1)
+    r, (th, ph) = Fraction(97447, 100000), (0.19634954084936207, 1.3962634015954636)
+    fresh = ident.classify(r, th, ph, 1200)
+    assert "stopped undecided at collision" in fresh.why and 0 < len(made) < 1200
+    made.clear()
+    scan = ident.Scan()
+    short = ident.classify(r, th, ph, 600, scan=scan)
+    first = len(made)
+    longer = ident.classify(r, th, ph, 1200, scan=scan)
+    assert len(made) == first and longer.to_json() == fresh.to_json()
+    assert short.why.split("; ")[-1] == fresh.why.split("; ")[-1]
