@@ -7,6 +7,7 @@ import shlex
 import sys
 from pathlib import Path
 
+from certify.errors import UsageError
 from certify.run import progress
 from certify.run.files import ensure_writable, keep_larger, load_findings
 
@@ -16,6 +17,10 @@ from .options import DEFAULT_OUT, add_command, count, kill_interrupts, positive_
 @kill_interrupts                  # `kill` stops it like Ctrl-C: workers too
 def cmd_atlas(args) -> int:
     from certify.run import atlas, executors
+    if args.sample is not None and not args.check:
+        raise UsageError("--sample: only with --check")
+    if args.check:
+        return check(args)
     lo, hi = r_range(*args.r_range) if args.r_range else (atlas.LO, atlas.HI)
     rs = atlas.r_values(lo, hi, args.resolution)
     data = atlas.data_grid(args.data)
@@ -45,6 +50,31 @@ def cmd_atlas(args) -> int:
               f"{s['attractors_without_windows']} without; {len(doc['cells'])} cells; {len(doc['families'])} families")
         print(f"wrote {out / 'ATLAS.md'}, atlas.json, {atlas.FIGURE}; state {state}")
     return 0
+
+
+def check(args) -> int:
+    """``certify atlas --check [--sample K]``: DIR/atlas.json derived again (atlas.check_committed), every
+    K-th r row and analysed word; one line per problem and exit 1, or one line and exit 0.  Nothing is
+    written."""
+    import time
+
+    from certify.run import atlas, executors
+    doc = load_findings("atlas.json", args.out)
+    if doc is None:
+        raise UsageError(f"--check: no readable atlas.json in {args.out}")
+    sample = args.sample or 1
+    start = time.perf_counter()
+    with executors.executor(args.jobs, args.scheduler) as ex:
+        problems = atlas.check_committed(doc, ex, sample, doc["parameters"]["word_max"], progress.Bar("job"))
+    rows, words = len(doc["r"][::sample]), len([w for w in doc["words"] if w["outcome"] == "analysed"][::sample])
+    what = f"{rows} r rows and about {words} analysed words" + (f" (every {sample}th)" if sample > 1 else "")
+    for p in problems:
+        print(p)
+    print(f"{args.out / 'atlas.json'}: {len(problems)} problem(s) in {what}, derived again in "
+          f"{time.perf_counter() - start:.0f} s" if problems else
+          f"{args.out / 'atlas.json'} checks: {what} derived again, and its seeds, cells, families, summaries "
+          f"and ends ({time.perf_counter() - start:.0f} s)")
+    return 1 if problems else 0
 
 
 def size(params: dict) -> dict:
@@ -118,6 +148,12 @@ def register(commands) -> None:
     p.add_argument("--force", action="store_true",
                    help="replace an atlas of a larger range, grid or limits already in DIR (refused without it)")
     p.add_argument("--json", action="store_true", help="also print atlas.json on stdout")
+    p.add_argument("--check", action="store_true",
+                   help="derive DIR/atlas.json again (every orbit, horseshoe and word window, the cells, families "
+                        "and summaries: about the time of the atlas itself) and print each difference; exit 1 on one. "
+                        "Nothing is written")
+    p.add_argument("--sample", type=positive_int, default=None, metavar="K",
+                   help="with --check: every K-th r row and analysed word only (the rest in full)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
     p.add_argument("--jobs", type=positive_int, default=None, metavar="N",

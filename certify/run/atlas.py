@@ -1672,16 +1672,22 @@ def check_ends(doc: dict) -> list[str]:
     return problems
 
 
-def check_atlas(doc: dict, window_max: int = 24, rows=None) -> list[str]:
-    """Every way the document can be wrong that a recomputation sees (empty: it checks):
-    the seeds and words (:func:`check_seeds`), the windows (:func:`check_windows`, words up
-    to ``window_max`` letters), the cells (:func:`check_cells`), the families
-    (:func:`check_families`), the orbits and the island (:func:`check_orbits` on ``rows``,
-    default every r), the horseshoes, visits and loops (:func:`check_chaos` on ``rows``), the
-    intervals and summaries (:func:`check_summaries`), the window ends' rotation numbers
-    (:func:`check_ends`), the cells' counts."""
-    problems = (check_seeds(doc) + check_windows(doc, window_max) + check_cells(doc) + check_families(doc)
-                + check_orbits(doc, rows) + check_chaos(doc, rows) + check_summaries(doc) + check_ends(doc))
+def check_row(row: dict, collisions: int) -> list[str]:
+    """:func:`check_orbits` and :func:`check_chaos` on one r row of an atlas of runs of
+    ``collisions`` (a job of :func:`check_committed`)."""
+    doc = {"parameters": {"collisions": collisions}, "r": [row]}
+    return check_orbits(doc, [row]) + check_chaos(doc, [row])
+
+
+def check_word(word: dict, attractors: list[dict], window_max: int) -> list[str]:
+    """:func:`check_windows` on one word record and the atlas's attractors of that word (a job of
+    :func:`check_committed`)."""
+    return check_windows({"words": [word], "attractors": attractors}, window_max)
+
+
+def check_counts(doc: dict) -> list[str]:
+    """Each cell's sampled r and counts, summed again from the rows."""
+    problems = []
     for c in doc["cells"]:
         rows_in = [row for row in doc["r"] if row["r"] in c["sampled"]]
         counts: dict[str, int] = {}
@@ -1691,3 +1697,42 @@ def check_atlas(doc: dict, window_max: int = 24, rows=None) -> list[str]:
         if counts != c["counts"] or [row["r"] for row in doc["r"] if _in_cell(Fraction(row["r"]), c)] != c["sampled"]:
             problems.append(f"cell ]{c['lo']['digits']}, {c['hi']['digits']}[: its sampled r or counts differ")
     return problems
+
+
+def check_committed(doc: dict, executor, sample: int = 1, window_max: int = WORD_MAX, progress=None) -> list[str]:
+    """:func:`check_atlas` on a whole document through an executor: every ``sample``-th r row
+    (:func:`check_row`) and every ``sample``-th analysed word of at most ``window_max`` letters
+    (:func:`check_word`) as jobs, the rest (seeds, cells, families, summaries, ends, counts) here
+    while they run.  With ``sample`` = 1 and ``window_max`` the atlas's word limit, everything a
+    recomputation sees (about the time of the atlas from an empty state).  The problems in a fixed
+    order (rows, then words, then the rest), whatever order the jobs end in."""
+    collisions = doc["parameters"]["collisions"]
+    rows = doc["r"][::sample]
+    words = [w for w in doc["words"] if w["outcome"] == "analysed" and w["length"] <= window_max][::sample]
+    futures = {executor.submit(check_row, row, collisions): ("r", i) for i, row in enumerate(rows)}
+    futures.update({executor.submit(check_word, w, [a for a in doc["attractors"] if a["word"] == w["word"]],
+                                    window_max): ("word", i) for i, w in enumerate(words)})
+    rest = (check_seeds(doc) + check_cells(doc) + check_families(doc) + check_summaries(doc) + check_ends(doc)
+            + check_counts(doc))
+    found: dict = {}
+    pending = set(futures)
+    while pending:
+        done, pending = wait_first(pending, timeout=1.0)
+        for f in done:
+            found[futures[f]] = f.result()
+            if progress is not None:
+                progress(len(found), len(futures), f"{futures[f][0]} {futures[f][1] + 1}")
+    return [p for key in sorted(found) for p in found[key]] + rest
+
+
+def check_atlas(doc: dict, window_max: int = 24, rows=None) -> list[str]:
+    """Every way the document can be wrong that a recomputation sees (empty: it checks):
+    the seeds and words (:func:`check_seeds`), the windows (:func:`check_windows`, words up
+    to ``window_max`` letters), the cells (:func:`check_cells`), the families
+    (:func:`check_families`), the orbits and the island (:func:`check_orbits` on ``rows``,
+    default every r), the horseshoes, visits and loops (:func:`check_chaos` on ``rows``), the
+    intervals and summaries (:func:`check_summaries`), the window ends' rotation numbers
+    (:func:`check_ends`), the cells' counts."""
+    return (check_seeds(doc) + check_windows(doc, window_max) + check_cells(doc) + check_families(doc)
+            + check_orbits(doc, rows) + check_chaos(doc, rows) + check_summaries(doc) + check_ends(doc)
+            + check_counts(doc))
