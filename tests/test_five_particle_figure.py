@@ -33,6 +33,10 @@ FLOAT_WINDOWS = {
     "ababcbcabacbacbcabacbcdcbdcdcbcbdcdbcdbcbdcdbcbabc": (0.181800, 0.181845),
     # upper end: the datum at 50 digits (docs/particles.md); the float datum says 0.178700 (rounding)
     "abacbacbcabacbcbabacbcdcdbcbdcdbcdbcbdcdbcbcdcdbcbabacbc": (0.178587, 0.178701),
+    # the half route's words (certify pattern --half): the float datum from N = J·M_X (--half of the search)
+    "abacbacbcabacbcabacbcbabacbcdcdbcbdcdbcbdcdbcdbcbdcdbcbdcdbcbcdcdbcbabacbcabacbc": (0.175108, 0.175113),
+    "abacbacbcabacbcabacbcabacbcbabacbcdcdbcbdcdbcbdcdbcbdcdbcdbcbdcdbcbdcdbcbdcdbcbcdcdbcbabacbcabacbcabacbc":
+        (0.173649, 0.173650),
 }
 
 
@@ -91,3 +95,33 @@ def test_the_ten_letter_result_is_reproduced_by_certify_pattern():
     the longer words' (1-6 min of CPU each) are `python tools/five_particle_figure.py --check`."""
     assert tool.differences([tool.COMMITTED / "abadcbcabc.json"]) == []
     assert census.windows({"result": committed()["abadcbcabc"]})
+
+
+def test_the_family_of_f2_is_certified_for_k_1_2_3():
+    """X_k = A^k·abacbacbc·A^k·b·A (A = abacbc), W_k = X_k·m(X_k): the committed results of k = 1, 2, 3
+    (56, 80, 104 letters) each have one certified stable window, each strictly below the one before
+    (exact rationals of the isolating intervals); k = 4 (128 letters) is not committed (observed only)."""
+    from certify.patterns.five import FAMILY_CORES
+    results = committed()
+    core = FAMILY_CORES["F₂"]
+    assert five_figure.family_problems(results, core, range(1, 4)) == []
+    rows = five_figure.family_rows(results, core, range(1, 5))
+    assert [len(w) for _k, w, _s in rows] == [56, 80, 104, 128] and rows[-1][2] is None
+
+
+def test_a_family_member_dropped_or_out_of_order_is_named():
+    """Without member k = 2, with the results of members 1 and 2 swapped (member 2's window then lies
+    above member 1's), or with member 3's stable set emptied, the family check names the member."""
+    from certify.patterns.five import FAMILY_CORES, family_word
+    core = FAMILY_CORES["F₂"]
+    results = committed()
+    w1, w2, w3 = (family_word(core, k) for k in (1, 2, 3))
+    dropped = {w: d for w, d in results.items() if w != w2}
+    assert five_figure.family_problems(dropped, core, range(1, 4)) == [
+        f"k = 2: {w2} has no certified stable window (one interval)"]
+    swapped = dict(results, **{w2: results[w1], w1: results[w2]})
+    assert five_figure.family_problems(swapped, core, range(1, 4)) == [
+        f"k = 2: the window of {w2} does not lie below member k - 1's"]
+    empty = dict(results, **{w3: dict(results[w3], stable=[])})
+    assert five_figure.family_problems(empty, core, range(1, 4)) == [
+        f"k = 3: {w3} has no certified stable window (one interval)"]

@@ -348,6 +348,18 @@ def half_sextic(half: str) -> Sextic:
     return Sextic(N, W, charpoly_ring(W))
 
 
+A_BLOCK = "abacbc"                      # A of the five-particle families (docs/particles.md)
+FAMILY_CORES = {"F₁": "abc", "F₂": "abacbacbc"}     # F(k) = A^k·core·A^k·b: rotations of two atlas families
+
+
+def family_word(core: str, k: int, j: int = 1) -> str:
+    """The normal form of X·m(X) for X = F(k)·A^j = A^k·core·A^k·b·A^j (A = abacbc, ``core`` one of
+    :data:`FAMILY_CORES`): the member (k, j) of a five-particle family, whose first half is a
+    four-particle atlas word of particles 1-4 and second half its mirror image on particles 2-5."""
+    X = A_BLOCK * k + core + A_BLOCK * k + "b" + A_BLOCK * j
+    return normal_form(X + mirror(X))[0]
+
+
 def sextic_factors(word: str, sextic: Sextic | None = None) -> list:
     """The irreducible factors of cp(Λ²M_w) in κ (over Q[r], monic: the sextic is monic), each with
     its multiplicity, as elements of the engine's ring (κ written λ)."""

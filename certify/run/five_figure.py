@@ -39,6 +39,37 @@ def five_particle_windows(results: dict) -> list[tuple[str, list]]:
     return [(w, s) for w, s in rows if s]
 
 
+def family_rows(results: dict, core: str, ks, j: int = 1) -> list[tuple[int, str, list | None]]:
+    """(k, word, its stable windows or None when no result is committed) for the members
+    ``certify.patterns.five.family_word(core, k, j)``, k in ``ks``."""
+    from certify.patterns.five import family_word
+    rows = []
+    for k in ks:
+        word = family_word(core, k, j)
+        rows.append((k, word, census.windows({"result": results[word]}) if word in results else None))
+    return rows
+
+
+def family_problems(results: dict, core: str, ks, j: int = 1) -> list[str]:
+    """What keeps the members k in ``ks`` of a family from being certified with their windows in
+    order (empty: each has a certified stable window, one interval, and each lies strictly below the
+    one before, compared on the results' isolating intervals, exact rationals)."""
+    from fractions import Fraction
+    problems, previous = [], None
+    for k, word, windows in family_rows(results, core, ks, j):
+        doc = results.get(word)
+        pieces = [p for s in doc["stable"] for p in s["pieces"] if p["kind"] == "interval"] if doc else []
+        if not windows or len(pieces) != 1:
+            problems.append(f"k = {k}: {word} has no certified stable window (one interval)")
+            previous = None
+            continue
+        lo, hi = (tuple(Fraction(x) for x in pieces[0][end]["interval"]) for end in ("lo", "hi"))
+        if previous is not None and not hi[1] < previous[0]:
+            problems.append(f"k = {k}: the window of {word} does not lie below member k - 1's")
+        previous = lo
+    return problems
+
+
 NARROW = 1 / 150   # a window narrower than this fraction of the axis also gets a mark
 
 
