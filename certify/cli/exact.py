@@ -102,8 +102,10 @@ def cmd_pattern(args) -> int:
     from certify.patterns.family import family_n
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
     if "d" in args.word:                  # five particles (issue 39): the κ route, certify.patterns.five
-        from certify.patterns.five import analyse_five, read_five
-        read_five(args.word)                                     # validate first: one line, exit 2
+        from certify.patterns.five import analyse_five, half_of, read_five
+        normal, _why = read_five(args.word)                      # validate first: one line, exit 2
+        if not args.half and half_of(normal) is not None:
+            print(f"certify: {normal} is X·m(X): --half gives the same stable set, faster", file=sys.stderr)
         result = analyse_five(args.word, lo, hi, half=args.half)
         print(result.json_text() if args.json else result.markdown())
         return 0

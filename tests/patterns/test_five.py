@@ -430,6 +430,21 @@ def test_an_exact_particle_run_from_the_half_datum():
     _particle_run(flint.fmpq(1063, 5000), HALF, rng=(flint.fmpq(53, 250), flint.fmpq(107, 500)), half=True)
 
 
+def test_the_ordinary_route_on_a_symmetric_word_names_the_half_route(monkeypatch, capsys):
+    """certify pattern on X·m(X) without --half says on stderr that --half gives the same stable set; with
+    --half, or on another word, it says nothing (the analysis itself stubbed: only the note is tested)."""
+    from certify import cli
+
+    class Stub:
+        def markdown(self):
+            return "stub"
+    monkeypatch.setattr(five, "analyse_five", lambda *a, **k: Stub())
+    for argv, note in (([HALF], True), ([HALF, "--half"], False), ([WORD], False)):
+        assert cli.main(["pattern", *argv]) == 0
+        out = capsys.readouterr()
+        assert out.out == "stub\n" and ("--half gives the same stable set" in out.err) == note
+
+
 def test_the_half_route_refuses_other_words():
     """--half on a word that is not X·m(X), or on a four-particle word: one line, exit 2."""
     for word in (WORD, "ababcb"):
