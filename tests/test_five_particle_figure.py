@@ -125,3 +125,11 @@ def test_a_family_member_dropped_or_out_of_order_is_named():
     empty = dict(results, **{w3: dict(results[w3], stable=[])})
     assert five_figure.family_problems(empty, core, range(1, 4)) == [
         f"k = 3: {w3} has no certified stable window (one interval)"]
+
+
+def test_a_long_word_is_labelled_by_its_start_and_length():
+    """The rows of words longer than LABEL letters show their first 24 letters and their length (the
+    axes are not narrowed by 104-letter labels); shorter words show whole."""
+    assert five_figure.label("abadcbcabc") == "abadcbcabc"
+    long = max(committed(), key=len)
+    assert five_figure.label(long) == f"{long[:24]}… ({len(long)} letters)" and len(long) > five_figure.LABEL

@@ -70,6 +70,15 @@ def family_problems(results: dict, core: str, ks, j: int = 1) -> list[str]:
     return problems
 
 
+LABEL = 40         # a longer word is labelled by its first letters and its length
+
+
+def label(word: str) -> str:
+    """A row's label: the word, or for a word longer than :data:`LABEL` letters its first 24 letters,
+    an ellipsis and its length (the whole words are in the result files)."""
+    return word if len(word) <= LABEL else f"{word[:24]}… ({len(word)} letters)"
+
+
 NARROW = 1 / 150   # a window narrower than this fraction of the axis also gets a mark
 
 
@@ -96,7 +105,7 @@ def figure(four: list, five: list, path, lines: dict | None = None, census_lengt
             narrow = [(lo + hi) / 2 for lo, hi in windows if hi - lo < right * NARROW]
             if narrow:   # a window thinner than a pixel or two: a mark at its middle as well
                 panel.plot(narrow, [k] * len(narrow), ls="none", marker="D", ms=3, color=colour)
-        panel.set_yticks(range(len(rows)), [w for w, _s in rows], fontsize=7)
+        panel.set_yticks(range(len(rows)), [label(w) for w, _s in rows], fontsize=7)
         panel.set_ylim(len(rows) - 0.5, -0.5 - (0 if rows else 0.5))
         panel.set_xlim(0, right)
         for value in lines.values():
