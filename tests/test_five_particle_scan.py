@@ -42,6 +42,18 @@ def test_certify_word_is_the_pattern_json_or_a_timeout():
     assert scan.certify_word("abcd", "1/10", "3/10", 0.01)["status"].startswith("not finished")
 
 
+def test_a_symmetric_tail_is_certified_by_the_half_route(monkeypatch):
+    """A tail X·m(X) goes to certify pattern with --half, another without (the command line checked)."""
+    seen = []
+
+    class Done:
+        returncode, stdout, stderr = 0, "{}", ""
+    monkeypatch.setattr(scan.subprocess, "run", lambda cmd, **k: seen.append(cmd) or Done())
+    scan.certify_word("abacbacbdcbcdcdbcdbcabcb", "1/5", "1/4", 60)
+    scan.certify_word("abadcbcabc", "1/5", "1/4", 60)
+    assert seen[0][-1] == "--half" and "--half" not in seen[1]
+
+
 def test_an_analysed_word_prints_its_windows(monkeypatch, capsys):
     """A clean exit of certify pattern is "analysed" (with or without a stable window), and the
     scan prints its windows and undecided points; a timeout prints its status."""

@@ -30,6 +30,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from certify.numerics import five_reduction as five  # noqa: E402
+from certify.patterns.five import half_of  # noqa: E402
 
 
 def grid(lo: float, hi: float, count: int) -> list[float]:
@@ -48,12 +49,14 @@ def scan(rs, orbits: int, collisions: int, seed: int, longest: int):
 
 
 def certify_word(word: str, lo: str, hi: str, timeout: float) -> dict:
-    """``certify pattern WORD --json --r-range LO HI`` in a child process: its stable and
-    feasible windows (exact ends, with floats) and undecided count, or why it gave none."""
+    """``certify pattern WORD --json --r-range LO HI`` in a child process (with ``--half`` for a word
+    X·m(X): the same stable set, faster): its stable and feasible windows (exact ends, with floats) and
+    undecided count, or why it gave none."""
     start = time.perf_counter()
+    half = ["--half"] if half_of(word) is not None else []
     try:
-        done = subprocess.run([sys.executable, "-m", "certify", "pattern", word, "--json", "--r-range", lo, hi],
-                              capture_output=True, text=True, timeout=timeout, cwd=ROOT)
+        done = subprocess.run([sys.executable, "-m", "certify", "pattern", word, "--json", "--r-range", lo, hi,
+                               *half], capture_output=True, text=True, timeout=timeout, cwd=ROOT)
     except subprocess.TimeoutExpired:
         return {"word": word, "status": f"not finished in {timeout:.0f} s"}
     seconds = round(time.perf_counter() - start, 1)
