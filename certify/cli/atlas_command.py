@@ -62,12 +62,13 @@ def check(args) -> int:
     doc = load_findings("atlas.json", args.out)
     if doc is None:
         raise UsageError(f"--check: no readable atlas.json in {args.out}")
-    sample = args.sample or 1
+    sample, word_max = args.sample or 1, doc["parameters"]["word_max"]
     start = time.perf_counter()
     with executors.executor(args.jobs, args.scheduler) as ex:
-        problems = atlas.check_committed(doc, ex, sample, doc["parameters"]["word_max"], progress.Bar("job"))
-    rows, words = len(doc["r"][::sample]), len([w for w in doc["words"] if w["outcome"] == "analysed"][::sample])
-    what = f"{rows} r rows and about {words} analysed words" + (f" (every {sample}th)" if sample > 1 else "")
+        problems = atlas.check_committed(doc, ex, sample, word_max, progress.Bar("job"))
+    rows = len(doc["r"][::sample])
+    words = len([w for w in doc["words"] if w["outcome"] == "analysed" and w["length"] <= word_max][::sample])
+    what = f"{rows} r rows and {words} analysed words" + (f" (every {sample}th)" if sample > 1 else "")
     for p in problems:
         print(p)
     print(f"{args.out / 'atlas.json'}: {len(problems)} problem(s) in {what}, derived again in "
