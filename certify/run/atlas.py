@@ -1718,7 +1718,7 @@ def check_committed(doc: dict, executor, sample: int = 1, window_max: int = WORD
     pending = set(futures)
     while pending:
         done, pending = wait_first(pending, timeout=1.0)
-        for f in done:
+        for f in sorted(done, key=futures.get):         # a set: its order is not the jobs' order
             found[futures[f]] = f.result()
             if progress is not None:
                 progress(len(found), len(futures), f"{futures[f][0]} {futures[f][1] + 1}")
