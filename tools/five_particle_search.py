@@ -41,7 +41,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from certify.dynamics.model import alphabet, collide_gaps  # noqa: E402
-from certify.patterns.five import mirror, normal_form, word_classes  # noqa: E402
+from certify.patterns.five import half_of, normal_form, word_classes  # noqa: E402
 
 
 def canonical(word: str, letters: str) -> str:
@@ -66,11 +66,9 @@ def period_matrix(word: str, gaps: int, r: float) -> np.ndarray:
 
 
 def symmetric(word: str, particles: int) -> str | None:
-    """The first rotation of the word of the form X·m(X), m the mirror (a <-> the last letter, ...),
-    or None.  The mirror of X·m(X) is m(X)·X, a rotation of it: rotations are all one needs."""
-    n = len(word) // 2
-    rotations = (word[k:] + word[:k] for k in range(len(word)))
-    return next((w for w in rotations if len(word) % 2 == 0 and w[n:] == mirror(w[:n], particles)), None)
+    """The word when it is X·m(X), m the mirror (a <-> the last letter, ...), else None
+    (certify.patterns.five.half_of: every rotation of X·m(X) is of that form, so none other is tried)."""
+    return word if half_of(word, particles) is not None else None
 
 
 def half_map(word: str, gaps: int, r: float) -> np.ndarray:

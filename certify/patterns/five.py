@@ -333,10 +333,11 @@ simple root of cp(Λ²M_W))."""
 HALF_MARK = "; the half route: "        # in the explanation of a result of the half route
 
 
-def half_of(word: str) -> str | None:
-    """X when ``word`` = X·m(X) (m the mirror of five particles), else None."""
+def half_of(word: str, particles: int = 5) -> str | None:
+    """X when ``word`` = X·m(X) (m the mirror of ``particles`` particles), else None.  A rotation of
+    X·m(X) is X'·m(X') (:data:`HALF_ROUTE`), so no other rotation need be tried."""
     n, odd = divmod(len(word), 2)
-    return word[:n] if not odd and word[n:] == mirror(word[:n]) else None
+    return word[:n] if not odd and word[n:] == mirror(word[:n], particles) else None
 
 
 def half_sextic(half: str) -> Sextic:
