@@ -54,8 +54,10 @@ import flint
 
 from certify.algebra.branches import Spectrum, less
 from certify.algebra.poly import (
+    FIELD,
     LR_LAMBDA,
     LR_R,
+    LRCTX,
     LRQCTX,
     RING,
     Frac,
@@ -70,7 +72,7 @@ from certify.algebra.poly import (
 from certify.dynamics.model import alphabet, charpoly_coefficients, charpoly_ring, collide_gaps
 from certify.dynamics.systems import of_particles, system_matrix_flint
 
-from .feasibility import Analysis, Requirement
+from .feasibility import Analysis, Region, Requirement
 from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, end_data, verdict
 from .periodic import primitive_root
 from .reduction_orbits import _lr
@@ -230,8 +232,8 @@ class Ext:
     """Polynomials in (κ, r) (:class:`Frac` with a constant denominator) affine in y, with
     y² = T y - κ D² (y = D λ, T = D t: :func:`five_candidate`), reduced modulo the sextic."""
 
-    def __init__(self, T: Frac, D: Frac, red: Reducer):
-        self.T, self.D2k, self.red = T, red(LR_LAMBDA * D * D), red
+    def __init__(self, T: Frac, D: Frac, red: Reducer, kappa: Frac = LR_LAMBDA):
+        self.T, self.D2k, self.red = T, red(kappa * D * D), red
 
     def mul(self, u: tuple, v: tuple) -> tuple:
         """(A + yB)(C + yE) = AC - κD²BE + y(AE + BC + T BE)."""
@@ -259,6 +261,7 @@ class FiveCandidate:
     face: int                # Y, the gap of the last letter
     steps: list              # [(letter, p̂_k = ι P_k, q̄(t_{k-1}), q̄(t_k))]
     q0_other: tuple = ()
+    repeated: bool = False   # the branch variable is t = λ + μ, κ = κ₀(r) a repeated root (:data:`REPEATED_ROUTE`)
 
 
 def eigen_plane(W, red) -> list:
@@ -487,6 +490,8 @@ def requirements(cand: FiveCandidate) -> dict:
                   if m not in (i, previous)]
         feasible.append(group)
         previous = i
+    if cand.repeated:                 # REPEATED_NOT_STABLE: nothing to impose, no branch is stable
+        return {"exists": exists, "feasible": feasible, "stable": []}
     c1, c2 = cand.cp4[0], cand.cp4[1]
     Ds = red(c1 * D + T)                                     # D s
     D2p = red(c2 * D * D + T * Ds - LR_LAMBDA * D * D)       # D² p
@@ -538,6 +543,88 @@ pair only.  So no branch of f is stable, at any r; only existence and feasibilit
 undecided (the plane is not the κ-eigenvector: the eigenspace of κ has dimension 2 or is not semisimple)."""
 
 
+REPEATED_ROUTE = """The route of a repeated factor κ - κ₀(r) of cp(Λ²M) (κ₀ ∈ Q[r]; every repeated factor of the
+census to 10 is one, κ₀ = ±r^(n/2)).  When cp(M) = (x² - t₁x + κ₀)(x² - t₂x + κ₀) (checked: c₃ = κ₀c₁ and
+c₄ = κ₀², cp(M) = x⁴ + c₁x³ + c₂x² + c₃x + c₄), t₁ and t₂ are the roots of Q(t) = t² + c₁t + c₂ - 2κ₀, and
+at every r where t₁ ≠ t₂ (Q's discriminant, a critical point of the analysis, is not zero):
+
+* a datum with κ = λμ = κ₀ has its plane Π invariant under M, where M has x² - (λ + μ)x + κ₀, so
+  λ + μ ∈ {t₁, t₂}: else λ, μ are λ₁, λ₃ (one root of each quadratic, the roots of x² - t_ix + κ₀
+  named λ₁, λ₂ and λ₃, λ₄), and λ₁λ₃ = κ₀ = λ₁λ₂ = λ₃λ₄ gives λ₃ = λ₂ and λ₁ = λ₄ (κ₀ ≠ 0), t₁ = t₂;
+* the two quadratics are coprime (a common root z has (t₁ - t₂)z = 0, z = 0, but κ₀ ≠ 0), so with
+  t = λ + μ and t' = -c₁ - t the other root, Π = ker(M² - tM + κ₀) = im(M² - t'M + κ₀), of dimension
+  2: its bivector is a non-zero column of Λ²(M² - t'M + κ₀), of rank 1, polynomial in (t, r);
+* the rest is the κ-route's (the module's docstring) with t the branch, a real root of Q, in place of
+  κ, y = λ (D = 1, T = t, y² = t y - κ₀), q̄ = M p̂ - (t - y) p̂, the same requirements for existence and
+  feasibility; stability none (:data:`REPEATED_NOT_STABLE`).
+
+Q irreducible over Q(r) is required (else ArithmeticError: not analysed), as are κ₀ ∈ Q[r] and the
+factorisation of cp(M).  Π is the first column of Λ²(M² - t'M + κ₀) not zero modulo Q, divided by the
+gcd of its entries: where it vanishes at one r, that r is not in any set (as for the κ-route's Π)."""
+
+
+def repeated_candidate(word: str, factor, sextic: Sextic, face: str | None = None) -> FiveCandidate:
+    """The candidate of :data:`REPEATED_ROUTE` for a repeated factor κ - κ₀(r) of cp(Λ²M_w) (monic in κ,
+    as :func:`sextic_factors` gives it): the branch variable (λ in the engine's ring) is t = λ + μ, a root
+    of Q(t) = t² + c₁t + c₂ - 2κ₀; ArithmeticError where the route does not apply."""
+    M = sextic.M
+    n, scale = _lr(ring_to_lrq(factor))
+    if n.degrees()[0] != 1:
+        raise ArithmeticError("a repeated factor of degree > 1 in κ")
+    kappa = LR_LAMBDA - Frac(n, LRCTX.from_dict({(0, 0): int(scale)}))
+    if not kappa.num.degrees()[0] == 0 or not _polynomial(kappa):
+        raise ArithmeticError("a repeated factor κ - κ₀ with κ₀ not a polynomial in r")
+    c1, c2, c3, c4 = [flint_poly_to_frac(flint.fmpq_poly(cf)) for cf in charpoly_coefficients(M)[1:]]
+    if not (c3 == c1 * kappa and c4 == kappa * kappa):
+        raise ArithmeticError("cp(M) is not (x² - t₁x + κ₀)(x² - t₂x + κ₀)")
+    t = LR_LAMBDA
+    Q = _ring(t * t + c1 * t + c2 - Frac.of(2) * kappa)
+    _, terms = ring_to_mpoly(Q).factor()
+    if [int(e) for f, e in terms if f.degrees()[1] > 0] != [1] or ring_to_mpoly(Q).degrees()[1] != 2:
+        raise ArithmeticError("Q(t) = t² + c₁t + c₂ - 2κ₀ is reducible over Q(r)")
+    red = Reducer(Q)
+    Mf = [[flint_poly_to_frac(e) for e in row] for row in M]
+    M2 = [[sum((Mf[i][k] * Mf[k][j] for k in range(4)), Frac.of(0)) for j in range(4)] for i in range(4)]
+    other = c1 + t                                       # -t' = c₁ + t
+    B = [[red(M2[i][j] + other * Mf[i][j] + (kappa if i == j else Frac.of(0))) for j in range(4)] for i in range(4)]
+    W = [[red(e) for e in row] for row in second_compound(B)]
+    column = next((col for col in range(6) if not all(W[k][col].is_zero() for k in range(6))), None)
+    if column is None:
+        raise ArithmeticError("Λ²(M² - t'M + κ₀) vanishes modulo Q")
+    Pi = [W[k][column] for k in range(6)]
+    if not all(_polynomial(e) for e in Pi):
+        raise ArithmeticError("the plane of the repeated factor has a denominator")
+    scale = functools.reduce(lambda a, b: a.lcm(b), (flint.fmpz(e.den.coeffs()[0]) for e in Pi))
+    Pi = [e * Frac.of(scale) for e in Pi]                # integer coefficients, then their gcd divided out
+    g = functools.reduce(lambda a, b: a.gcd(b), (e.num for e in Pi if not e.is_zero()))
+    Pi = [Frac(e.num / g) if not e.is_zero() else e for e in Pi]
+    Y = alphabet(5).index(face or word[-1])
+    p_hat = contract(Pi, Y)
+    if all(e.is_zero() for e in p_hat):
+        raise ArithmeticError("the plane of the repeated factor contracts to zero")
+    Mp = matvec(M, p_hat, red)
+    T, D = t, Frac.of(1)                                # y = λ, t = λ + μ
+    ext = Ext(T, D, red, kappa)
+    q0 = [(red(Mp[k] - T * p_hat[k]), p_hat[k]) for k in range(4)]      # M p - μ p = M p - t p + y p
+    a, b, c, d = (T, -ext.D2k, Frac.of(1), Frac.of(0))
+    abcd_ring = tuple(_ring(e) for e in (a, b, c, d))
+    abcd = tuple(frac_to_field(e) for e in (a, b, c, d))
+    steps = run(word, Pi, q0, red)
+    return FiveCandidate(word, M, FiveSpectrum(None, Q), abcd, abcd_ring, T, D, p_hat, q0, [c1, c2, c3, c4], ext, Y,
+                         steps, repeated=True)
+
+
+def impose(an: Analysis, q: Requirement) -> None:
+    """``an.impose(q)``, and for a requirement identically zero on the branches (G₀ = G₁ = 0 modulo the
+    branch polynomial: a gap that stays closed, met on repeated factors) the strict sign held nowhere."""
+    if all(g == FIELD.zero for g in q.G):
+        for R in an.regions:
+            R.pieces = []
+        an.imposed.append(q)
+    else:
+        an.impose(q)
+
+
 def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
     """The exact analysis of a five-particle word over ]lo, hi[ (certified like
     :func:`.pattern.analyse`: the κ-route candidate, the requirements of :func:`requirements`
@@ -570,20 +657,25 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
     tick = progress or (lambda k, n, label="": None)
     for number, (factor, multiplicity) in enumerate(factors, 1):
         label = f"factor {number} of cp(Λ²M), " if len(factors) > 1 else ""
-        if multiplicity > 1:
+        kappa = show_collected(factor, "λ").replace("λ", "κ")
+        try:
+            if multiplicity == 1:
+                cand = five_candidate(run_word, factor if len(factors) > 1 else None, sextic, face)
+            elif X is None:          # existence and feasibility by REPEATED_ROUTE; never stable
+                cand = repeated_candidate(run_word, factor, sextic)
+                label = f"factor {number} of cp(Λ²M) ({kappa} = 0, multiplicity {multiplicity}; t = λ + μ), "
+            else:                    # the half route's proof needs κ simple
+                raise ArithmeticError("")
+        except ArithmeticError as e:
+            if multiplicity == 1:
+                not_analysed.append({"factor": kappa, "multiplicity": 1, "stable": f"not analysed: {e}"})
+                undecided.append(f"{label}on all of ]{lo}, {hi}[: {e} (not analysed)")
+                continue
             # never stable there (REPEATED_NOT_STABLE); existence and feasibility not analysed
-            kappa = show_collected(factor, "λ").replace("λ", "κ")
             not_analysed.append({"factor": kappa, "multiplicity": multiplicity, "stable": "none (proved)"})
             undecided.append(f"{label}κ a root of multiplicity {multiplicity} of cp(Λ²M) on all of ]{lo}, {hi}[: "
-                             "its eigenplane is not unique (not analysed; never stable: a multiple eigenvalue of "
-                             "Λ²M is not strictly dominant)")
-            continue
-        try:
-            cand = five_candidate(run_word, factor if len(factors) > 1 else None, sextic, face)
-        except ArithmeticError as e:
-            not_analysed.append({"factor": show_collected(factor or sextic.cp, "λ").replace("λ", "κ"),
-                                 "multiplicity": 1, "stable": f"not analysed: {e}"})
-            undecided.append(f"{label}on all of ]{lo}, {hi}[: {e} (not analysed)")
+                             "its eigenplane is not unique (not analysed" + (f": {e}" if str(e) else "")
+                             + "; never stable: a multiple eigenvalue of Λ²M is not strictly dominant)")
             continue
         cands.append(cand)
         reqs = requirements(cand)
@@ -591,24 +683,29 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
         an = Analysis(cand, lo, hi)
         stage_regions = {}
         for q in reqs["exists"]:
-            an.impose(q)
+            impose(an, q)
         stage_regions["exists"] = _copy(an.regions)
         tick(1, total, "exists")
         for m, group in enumerate(reqs["feasible"], 1):
             for q in sorted(group, key=lambda q: q.has_x):
-                an.impose(q)
+                impose(an, q)
             tick(1 + m, total, f"collision {m} of {len(reqs['feasible'])}")
         stage_regions["feasible"] = _copy(an.regions)
+        if cand.repeated:                  # REPEATED_NOT_STABLE: no branch of the factor is stable
+            stage_regions["stable"] = [Region(R.branch, R.fixed_point, [], [], []) for R in an.regions]
         for q in reqs["stable"]:
             an.impose(q)
-        stage_regions["stable"] = _copy(an.regions)
+        if not cand.repeated:
+            stage_regions["stable"] = _copy(an.regions)
         tick(total, total, "stable")
         for stage, rs in stage_regions.items():
             regions[stage] += rs
             sets[stage] += [dict(d, branch=label + d["branch"]) for d in _nonempty(rs)]
-        conditions = {"exists": [_cond(q) for q in reqs["exists"]] + ["λ real"],
-                      "feasible": [_cond(q) for g in reqs["feasible"] for q in g],
-                      "stable": [_cond(q) for q in reqs["stable"]]}
+        if not cand.repeated or not conditions:     # a simple factor's conditions, when the word has one
+            conditions = {"exists": [_cond(q) for q in reqs["exists"]] + ["λ real"],
+                          "feasible": [_cond(q) for g in reqs["feasible"] for q in g],
+                          "stable": [_cond(q) for q in reqs["stable"]] if not cand.repeated else
+                          ["none on a repeated factor (REPEATED_NOT_STABLE)"]}
         names = [BRANCH_NAMES[R.branch] if R.branch < len(BRANCH_NAMES) else f"κ{R.branch}" for R in an.regions]
         undecided += sorted({f"{label}{name} {R.fixed_point} at {_short(rc)}: {why_}"
                              for name, R in zip(names, an.regions) for rc, why_ in R.undecided})
@@ -625,6 +722,10 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
                      "β": "x = (T ± √(T² - 4νD²))/(2D) (x₊, x₋: the two orderings of the pair)",
                      "p(0)": "ι_Y Π, Π the ν-eigenvector of Λ²N, Y the last letter's gap",
                      "q(0)": "∝ N p(0) - α p(0), q of the first letter's gap < 0; the run over X only"}
+        if any(c.repeated for c in cands):
+            datum["t"] = ("on a repeated factor κ - κ₀ of cp(Λ²M): λ + μ, a root of Q(t) = t² + c₁t + c₂ - 2κ₀ (the "
+                          "branch), λ = (t ± √(t² - 4κ₀))/2, Π a column of Λ²(M² - t'M + κ₀), t' = -c₁ - t "
+                          "(REPEATED_ROUTE)")
         return M, show_factored(primitive(mpoly_to_univariate(ring_to_mpoly(sextic.cp).discriminant("lam")))), datum
     cp_text = lambda: show_collected(sextic.cp, "λ").replace("λ", "κ")  # noqa: E731
     res = FiveResult(text, normal, "five", why, (lo, hi), cp_text, sets["exists"], sets["feasible"], sets["stable"],

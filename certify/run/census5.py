@@ -29,10 +29,14 @@ JSON = "census5.json"
 MARKDOWN = "CENSUS5.md"
 STAGES = ("stable", "feasible", "undecided")
 MARK = "engine"      # a state record's engine (:func:`record`); census5.json's records do not carry it
-ENGINE = 1           # the engine of five.census_record: raise it when a change alters a record (its content or
-                     # its keys); a resume analyses again the state records of another engine (:func:`current`)
+ENGINE = 2           # the engine of five.census_record: raise it when a change alters a record (its content or
+                     # its keys), and say in CHANGED which records of the engine before it alters
 UNMARKED = 1         # a state record without the mark is taken as engine 1's: the engine of the committed census to
                      # 9 and of the states written before the mark (docs/census.md, "Five particles": why)
+# engine e -> the records of engine e - 1 that engine e alters (a resume analyses those again, :func:`current`).
+# 2: five.REPEATED_ROUTE analyses the repeated factors of cp(Λ²M), which engine 1 listed in "not_analysed"
+# (every other record is made by the same code: five_candidate and its requirements are unchanged).
+CHANGED = {2: lambda rec: bool(rec["not_analysed"])}
 
 
 def record(word: str) -> dict:
@@ -42,9 +46,10 @@ def record(word: str) -> dict:
 
 
 def current(rec: dict) -> bool:
-    """Whether a state record was made by this engine: its mark (:data:`UNMARKED` when it has none)
-    is :data:`ENGINE`."""
-    return rec.get(MARK, UNMARKED) == ENGINE
+    """Whether a state record is this engine's record: its mark (:data:`UNMARKED` when it has none) is
+    :data:`ENGINE`, or an older engine's that no engine since alters (:data:`CHANGED`)."""
+    mark = rec.get(MARK, UNMARKED)
+    return mark == ENGINE or (mark < ENGINE and not any(CHANGED[e](rec) for e in range(mark + 1, ENGINE + 1)))
 
 
 def run(max_length: int, executor, state=None, resume: bool = False, progress=None, notice=None) -> list[dict]:
@@ -140,8 +145,12 @@ def markdown(doc: dict) -> str:
              f"- Largest r of feasible self-similar collapse up to {L}: {_end(s['largest_feasible'])}",
              f"- Largest undecided point (stable stage): {_end(s['largest_undecided'])}", "",
              "These hold on ]0, 1[ less the words' undecided points, each an isolated r (an end of a region where "
-             "two κ branches meet, or 0/0) listed in census5.json, and less the factors not analysed (below), on "
-             "the whole range: there nothing is claimed but what is proved of a repeated factor (never stable).", ""]
+             "two κ branches meet, or 0/0) listed in census5.json"
+             + (", and less the factors not analysed (below), on the whole range: there nothing is claimed but what "
+                "is proved of a repeated factor (never stable)." if s["not_analysed"] else
+                ".  Every factor of cp(Λ²M) is analysed: a repeated one (κ = ±r^(n/2), of multiplicity 2) by the "
+                "route of certify.patterns.five.REPEATED_ROUTE (existence and feasibility on its two planes; never "
+                "stable: REPEATED_NOT_STABLE)."), ""]
     if s["not_analysed"]:
         lines += [f"{len(s['not_analysed'])} words have a factor of cp(Λ²M) that was not analysed (listed below). "
                   + ("Each is a repeated factor, which holds no stable datum (proved: "

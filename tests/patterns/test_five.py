@@ -183,12 +183,87 @@ def test_the_two_stability_criteria_agree():
             assert agree([real[0], real[1], *rest])
 
 
-def test_a_repeated_factor_of_the_sextic_is_named_not_analysed():
-    """abcacd: cp(Λ²M) has a repeated factor in κ (its plane is not unique there): that factor is listed as
-    undecided on the whole range, the other analysed, no traceback."""
-    res = five.analyse_five("abcacd")
-    assert any("multiplicity 2" in u and "not analysed" in u for u in res.undecided)
+def test_a_repeated_factor_is_analysed_on_its_planes(monkeypatch):
+    """abcacd: cp(Λ²M) has the repeated factor κ + r³ (κ = λμ < 0: λ, μ > 0 nowhere).  REPEATED_ROUTE
+    analyses it (nothing exists on it) and nothing is left not analysed; where the route does not apply (a
+    repeated_candidate that raises), the factor is named not analysed, never stable, with no traceback."""
     assert [m for _, m in five.sextic_factors("abcacd")].count(2) == 1
+    res = five.analyse_five("abcacd")
+    assert res.not_analysed == [] and not any("not analysed" in u for u in res.undecided)
+    assert "REPEATED_ROUTE" in res.datum["t"]
+
+    def refuse(*a, **k):
+        raise ArithmeticError("refused")
+    monkeypatch.setattr(five, "repeated_candidate", refuse)
+    res = five.analyse_five("abcacd")
+    assert [n["multiplicity"] for n in res.not_analysed] == [2] and res.not_analysed[0]["stable"] == "none (proved)"
+    assert any("multiplicity 2" in u and "not analysed: refused" in u for u in res.undecided)
+
+
+REPEATED_WORDS = ["abcd", "abdc", "abcacd", "acadbc", "abacbdcd", "abcacacd", "abdbcacd", "abdbdbdc"]
+
+
+@pytest.mark.parametrize("word", REPEATED_WORDS)
+def test_the_plane_of_a_repeated_factor_is_exact(word):
+    """REPEATED_ROUTE's datum, exactly modulo Q(t) and y² = t y - κ₀: p̂ = ι_Y Π is not zero, lies on the
+    face (p̂_Y = 0) and M has trace t on its plane (M²p̂ - t M p̂ + κ₀ p̂ = 0), and q̄ = A + yB is an
+    eigenvector for λ = y (M A = -κ₀ B, M B = A + t B).  With the other root t' = -c₁ - t in place of t
+    the trace identity fails: the plane is the one of t, not of t'."""
+    S = five.Sextic.of(word)
+    (f,) = [f for f, m in five.sextic_factors(word, S) if m > 1]
+    cand = five.repeated_candidate(word, f, S)
+    red, t, kappa = cand.ext.red, cand.T, cand.ext.D2k
+    assert cand.repeated and cand.D == five.Frac.of(1) and not kappa.num.degrees()[0]
+    p = cand.p0
+    assert any(not e.is_zero() for e in p) and p[cand.face].is_zero()
+    Mp = five.matvec(cand.Mq, p, red)
+    MMp = five.matvec(cand.Mq, Mp, red)
+    assert all(red(MMp[k] - t * Mp[k] + kappa * p[k]).is_zero() for k in range(4))
+    other = red(five.Frac.of(0) - cand.cp4[0] - t)
+    assert not all(red(MMp[k] - other * Mp[k] + kappa * p[k]).is_zero() for k in range(4))
+    A, B = [a for a, _ in cand.q0], [b for _, b in cand.q0]
+    MA, MB = five.matvec(cand.Mq, A, red), five.matvec(cand.Mq, B, red)
+    assert all(red(MA[k] + kappa * B[k]).is_zero() and red(MB[k] - A[k] - t * B[k]).is_zero() for k in range(4))
+
+
+def _repeated_data(word: str, r: float, kappa: float) -> list:
+    """Float (numpy): the pairs of real eigenvalues λ, μ of M_w(r) with λμ = κ₀ (relative 1e-7), each with
+    whether λ, μ > 0 and p(0) = the plane's vector on the face has every other gap of one sign."""
+    import itertools
+
+    import numpy as np
+
+    from certify.dynamics.systems import of_particles, system_matrix_flint
+    q = flint.fmpq(round(r * 10 ** 6), 10 ** 6)
+    M = np.array([[float(e(q)) for e in row] for row in system_matrix_flint(of_particles(5), word)])
+    ev, V = np.linalg.eig(M)
+    Y, out = "abcd".index(word[-1]), []
+    for i, j in itertools.combinations(range(4), 2):
+        real = abs(ev[i].imag) < 1e-12 and abs(ev[j].imag) < 1e-12
+        if not real or abs(ev[i].real * ev[j].real - kappa) > 1e-7 * abs(kappa):
+            continue
+        vi, vj = V[:, i].real, V[:, j].real
+        p = vj[Y] * vi - vi[Y] * vj
+        o = [p[m] / (1e-6 * max(abs(p))) for m in range(4) if m != Y]
+        out.append(ev[i].real > 0 and ev[j].real > 0 and (all(x > 1 for x in o) or all(x < -1 for x in o)))
+    return out
+
+
+@pytest.mark.parametrize("word", REPEATED_WORDS)
+def test_a_repeated_factor_against_the_floats(word):
+    """Nothing exists on the repeated factor (the route's sets are empty) and the float eigenvectors agree:
+    at r = k/25 the pairs of real eigenvalues with λμ = κ₀ (there are such pairs) never give λ, μ > 0 with
+    the gaps of p(0) of one sign."""
+    res = five.analyse_five(word)
+    S = five.Sextic.of(word)
+    assert not res.not_analysed and not res.stable
+    repeated = [d for d in res.exists if "t = λ + μ" in d["branch"]]
+    assert repeated == [] and not [d for d in res.feasible if "t = λ + μ" in d["branch"]]
+    (f,) = [f for f, m in five.sextic_factors(word, S) if m > 1]
+    sign = 1 if len(word) % 4 == 0 else -1              # κ₀ = ±r^(n/2) (κ₀² = det M = r^n)
+    assert f == f.ring.gens[0] - sign * f.ring.gens[1] ** (len(word) // 2)
+    pairs = [ok for k in range(1, 25) for ok in _repeated_data(word, k / 25, sign * (k / 25) ** (len(word) // 2))]
+    assert pairs and not any(pairs)
 
 
 def test_the_word_classes_are_the_orbits_of_rotation_and_mirror():
@@ -389,7 +464,7 @@ def test_a_repeated_factor_is_two_products_and_never_stable():
             assert len(pairs) >= 2, (w, k)
             assert not any(s for *_, s in search.data(w, k / 7, 5))
         rec = five.census_record(w)
-        assert any(n["multiplicity"] > 1 and n["stable"] == "none (proved)" for n in rec["not_analysed"])
+        assert rec["not_analysed"] == [] and rec["stable"] == []       # analysed by REPEATED_ROUTE, never stable
 
 
 def sp_rational(q):

@@ -47,25 +47,32 @@ def test_a_rerun_and_a_resumed_state_write_the_same_bytes(written, tmp_path):
     assert resumed == fresh and all(w == "" for w in calls)
 
 
-def test_a_resume_analyses_again_the_records_of_another_engine(written, tmp_path):
-    """Every state record carries the engine's mark (census5.json's do not).  On resume, a record
-    marked with another engine is analysed again (and the count said), while a record without a mark
-    is taken as made by engine UNMARKED, so a state written before the mark resumes as it is."""
+def test_a_resume_analyses_again_the_records_another_engine_made_otherwise(written, tmp_path):
+    """Every state record carries the engine's mark (census5.json's do not).  On resume, a record of an
+    older engine (a record without a mark is engine UNMARKED's) is analysed again when an engine since
+    alters it (census5.CHANGED: engine 2 alters the records with a factor not analysed) and reused
+    otherwise, so a state of engine 1 resumes without its other words analysed again; a record of an
+    unknown (newer) engine is analysed again."""
     lines = [json.loads(x) for x in (written / "state.jsonl").read_text(encoding="utf-8").splitlines()]
-    assert lines and all(rec[census5.MARK] == census5.ENGINE for rec in lines)
+    assert len(lines) == 4 and all(rec[census5.MARK] == census5.ENGINE for rec in lines)
     assert all(census5.MARK not in rec for rec in json.loads((written / census5.JSON).read_text())["words"])
-    stale, unmarked, *rest = lines
-    stale = dict(stale, verdict="an older verdict", **{census5.MARK: census5.ENGINE - 1})
-    unmarked = {k: v for k, v in unmarked.items() if k != census5.MARK}
+    older, mark = census5.ENGINE - 1, census5.MARK
+    factor = [{"factor": "-r^2 + κ", "multiplicity": 2, "stable": "none (proved)"}]     # as engine 1 wrote it
+    changed = dict(lines[0], verdict="an older verdict", not_analysed=factor, **{mark: older})
+    unmarked = {**{k: v for k, v in lines[1].items() if k != mark}, "verdict": "an older verdict",
+                "not_analysed": factor}
+    kept = dict(lines[2], **{mark: older})                  # what engine 2 makes of it: engine 1's record
+    newer = dict(lines[3], verdict="a newer verdict", **{mark: census5.ENGINE + 1})
+    assert [census5.current(rec) for rec in (changed, unmarked, kept, newer)] == [False, False, True, False]
     state = tmp_path / "state.jsonl"
-    state.write_text("".join(json.dumps(rec) + "\n" for rec in [stale, unmarked, *rest]), encoding="utf-8")
+    state.write_text("".join(json.dumps(rec) + "\n" for rec in [changed, unmarked, kept, newer]), encoding="utf-8")
     said, calls = [], []
     with executor(1) as ex:
         fresh = census5.run(L, ex)
         resumed = census5.run(L, ex, state, resume=True, progress=lambda k, n, w: calls.append(w), notice=said.append)
     assert resumed == fresh
-    assert [w for w in calls if w] == [stale["word"]]
-    assert said == [f"1 state record(s) made by another engine than {census5.ENGINE} (first {stale['word']}): "
+    assert [w for w in calls if w] == [changed["word"], unmarked["word"], newer["word"]]
+    assert said == [f"3 state record(s) made by another engine than {census5.ENGINE} (first {changed['word']}): "
                     "analysed again"]
 
 
@@ -235,16 +242,25 @@ def test_an_altered_committed_record_fails_the_check(tmp_path):
     assert problems == [f"{rec['word']}: the record differs (stable)"]
 
 
-def test_a_factor_not_analysed_is_named_in_the_verdict_and_the_markdown(written):
-    """The length-4 words all have a repeated factor of cp(Λ²M) (κ = ±r^k): each record's verdict names
-    it as not analysed on the whole range (the verdict of the factors analysed alone said "no candidate"),
-    and CENSUS5.md excepts the factors not analysed from its answers and qualifies its counts."""
+def test_a_factor_not_analysed_is_named_in_the_verdict_and_the_markdown(written, tmp_path, monkeypatch):
+    """The length-4 words all have a repeated factor of cp(Λ²M) (κ = r²), analysed on its planes
+    (five.REPEATED_ROUTE): CENSUS5.md says every factor is analysed.  Where that route does not apply (here
+    made to refuse), each record's verdict names the factor as not analysed on the whole range, and
+    CENSUS5.md excepts the factors not analysed from its answers and qualifies its counts."""
     doc = json.loads((written / census5.JSON).read_text(encoding="utf-8"))
-    words = [w for w in doc["words"] if w["not_analysed"]]
-    assert words
+    assert len(doc["words"]) == 4 and not any(w["not_analysed"] for w in doc["words"])
+    assert all("not analysed" not in w["verdict"] for w in doc["words"])
+    md = (written / census5.MARKDOWN).read_text(encoding="utf-8")
+    assert "Every factor of cp(Λ²M) is analysed" in md and "less the factors not analysed" not in md
+
+    def refuse(*a, **k):
+        raise ArithmeticError("refused")
+    monkeypatch.setattr(five, "repeated_candidate", refuse)
+    words = [five.census_record(w["word"]) for w in doc["words"]]
+    assert all(w["not_analysed"] for w in words)
     for w in words:
         assert "not analysed: the factor(s) " + w["not_analysed"][0]["factor"] in w["verdict"], w["verdict"]
-    assert all("not analysed" not in w["verdict"] for w in doc["words"] if not w["not_analysed"])
-    md = (written / census5.MARKDOWN).read_text(encoding="utf-8")
+    census5.write_outputs(words, L, tmp_path)
+    md = (tmp_path / census5.MARKDOWN).read_text(encoding="utf-8")
     assert "and less the factors not analysed (below), on the whole range" in md
     assert "| exists (factors analysed) | feasible (factors analysed) |" in md
