@@ -3,6 +3,7 @@
     python tools/five_particle_search.py --max-length 10 --r 0.2505 0.2675 8      # words, r grid
     python tools/five_particle_search.py --word abadcbcabc --r 0.2 0.3 1001 --ends
     python tools/five_particle_search.py --word abacbacbdcbcdcdbcdbcabcb --half --r 0.21 0.214 401
+    python tools/five_particle_search.py --word W --half --digits 50 --r LO HI POINTS      # long words
 
 The self-similar datum of a word w of N particles (N - 1 gaps), as for four particles
 (certify pattern), from two eigenvalues of M_w.  The run from (p, q) gives after the period
@@ -32,6 +33,7 @@ What this prints is observed; ``certify pattern WORD`` certifies a five-particle
 from __future__ import annotations
 
 import argparse
+import functools
 import itertools
 import sys
 from pathlib import Path
@@ -125,6 +127,53 @@ def data(word: str, r: float, particles: int, half: bool = False) -> list[tuple[
     return out
 
 
+def data_mp(word: str, r, particles: int, half: bool = False, digits: int = 50) -> list[tuple]:
+    """:func:`data` in mpmath at ``digits`` digits (r a float or a decimal string), for long words whose
+    μ/λ is below float64's rounding: the same datum, the same run, tolerances 10^(-digits/2) relative
+    (observed, not certified)."""
+    import mpmath as mp
+    letters, gaps = alphabet(particles), particles - 1
+    with mp.workdps(digits):
+        r, tol = mp.mpf(r), mp.mpf(10) ** (-(digits // 2))
+        cols = [tuple(mp.mpf(int(i == j)) for i in range(gaps)) for j in range(gaps)]
+        for letter in (word[:len(word) // 2] if half else word):
+            cols = [tuple(collide_gaps(letter, c, r)) for c in cols]
+        rows = [[cols[j][i] for j in range(gaps)] for i in range(gaps)]
+        root, V = mp.eig(mp.matrix(rows[::-1] if half else rows))
+        ev = [z ** 2 for z in root] if half else list(root)
+        real = [k for k in range(gaps) if abs(mp.im(root[k])) < tol * abs(root[k]) and mp.re(ev[k]) > 0]
+        Y, out = letters.index(word[-1]), []
+        for a, b in itertools.permutations(real, 2):
+            q0, e = [mp.re(V[i, a]) for i in range(gaps)], [mp.re(V[i, b]) for i in range(gaps)]
+            p0 = [e[Y] * q0[i] - q0[Y] * e[i] for i in range(gaps)]
+            p0[Y] = mp.mpf(0)
+            p0 = p0 if p0[(Y + 1) % gaps] > 0 else [-x for x in p0]
+            if not all(p0[k] > 0 for k in range(gaps) if k != Y):
+                continue
+            if any(_follows_mp(word, p0, [s * x for x in q0], r, letters, tol) for s in (1, -1)):
+                rest = [abs(ev[k]) for k in range(gaps) if k not in (a, b)]
+                out.append((float(mp.re(ev[a])), float(mp.re(ev[b])),
+                            bool(mp.re(ev[a]) > mp.re(ev[b]) > max(rest))))
+        return out
+
+
+def _follows_mp(word: str, p: list, q: list, r, letters: str, tol) -> bool:
+    """:func:`follows` in mpmath (the caller's precision), with the relative tolerance ``tol``."""
+    for letter in word:
+        times = sorted((-p[j] / q[j], j) for j in range(len(q)) if q[j] < 0)
+        if not times or letters[times[0][1]] != letter:
+            return False
+        if len(times) > 1 and times[1][0] <= times[0][0] * (1 + tol):
+            return False
+        t, i = times[0]
+        p = [x + t * v for x, v in zip(p, q)]
+        if any(x < -tol * max(abs(y) for y in p) for x in p):
+            return False
+        p[i] = 0 * p[i]
+        q = list(collide_gaps(letter, tuple(q), r))
+    return True
+
+
 def bisect(test, a: float, b: float) -> float:
     """The point where test changes between a and b (60 halvings)."""
     ta = test(a)
@@ -134,10 +183,11 @@ def bisect(test, a: float, b: float) -> float:
     return (a + b) / 2
 
 
-def window(word: str, grid, particles: int, stable: bool, half: bool = False) -> list[float]:
-    """The grid points where the word has a feasible (or stable) datum, and the ends bisected."""
-    test = (lambda r: any(s for *_, s in data(word, r, particles, half))) if stable else (
-        lambda r: bool(data(word, r, particles, half)))
+def window(word: str, grid, particles: int, stable: bool, half: bool = False, datum=data) -> list[float]:
+    """The grid points where the word has a feasible (or stable) datum, and the ends bisected
+    (``datum``: :func:`data`, or :func:`data_mp` at some digits)."""
+    test = (lambda r: any(s for *_, s in datum(word, r, particles, half))) if stable else (
+        lambda r: bool(datum(word, r, particles, half)))
     hits = [test(r) for r in grid]
     ends = [bisect(test, grid[k], grid[k + 1]) for k in range(len(grid) - 1) if hits[k] != hits[k + 1]]
     return ends, [r for r, h in zip(grid, hits) if h]
@@ -190,7 +240,9 @@ def main(argv=None) -> int:
     ap.add_argument("--r", nargs=3, type=float, default=(0.01, 0.99, 99), metavar=("LO", "HI", "POINTS"))
     ap.add_argument("--ends", action="store_true", help="the exact polynomials at the ends of --word's window")
     ap.add_argument("--half", action="store_true", help="--word is X·m(X): the datum from N = J·M_X")
+    ap.add_argument("--digits", type=int, default=None, help="--word's datum in mpmath at this many digits")
     args = ap.parse_args(argv)
+    datum = data if args.digits is None else functools.partial(data_mp, digits=args.digits)
     grid = list(np.linspace(args.r[0], args.r[1], int(args.r[2])))
     if args.half:
         word = symmetric(args.word or "", args.particles)
@@ -200,7 +252,7 @@ def main(argv=None) -> int:
         args.word = word
     if args.word:
         for stable in (False, True):
-            ends, hits = window(args.word, grid, args.particles, stable, args.half)
+            ends, hits = window(args.word, grid, args.particles, stable, args.half, datum)
             print(f"{'stable' if stable else 'feasible'}: {len(hits)} of {len(grid)} grid points; ends {ends}")
             if args.ends and stable:
                 exact_ends(args.word, ends, args.particles)
