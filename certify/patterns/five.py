@@ -539,8 +539,9 @@ REPEATED_NOT_STABLE = """A factor f of cp(Λ²M) of multiplicity m > 1 holds no 
 cp(Λ²M) with multiplicity are the six products λ_iλ_j (i < j) of the eigenvalues of M, so at every r a root
 κ of f is the product of two different index pairs.  A stable datum has κ = λμ with λ > μ > |ν| for the
 two other eigenvalues ν, ν', hence |λμ| > |λν|, |λν'|, |μν|, |μν'|, |νν'|: λμ is the product of one index
-pair only.  So no branch of f is stable, at any r; only existence and feasibility on f are left
-undecided (the plane is not the κ-eigenvector: the eigenspace of κ has dimension 2 or is not semisimple)."""
+pair only.  So no branch of f is stable, at any r; existence and feasibility on f are analysed on its planes
+by :data:`REPEATED_ROUTE` (the plane is not the κ-eigenvector: the eigenspace of κ has dimension 2, or it is
+not semisimple, where that route does not apply)."""
 
 
 REPEATED_ROUTE = """The route of a repeated factor κ - κ₀(r) of cp(Λ²M) (κ₀ ∈ Q[r]; every repeated factor of the
