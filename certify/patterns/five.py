@@ -72,6 +72,7 @@ from certify.algebra.poly import (
 from certify.dynamics.model import alphabet, charpoly_coefficients, charpoly_ring, collide_gaps
 from certify.dynamics.systems import of_particles, system_matrix_flint
 
+from .family import matmul
 from .feasibility import Analysis, Region, Requirement
 from .pattern import PatternResult, _cond, _copy, _nonempty, _short, check_range, end_data, verdict
 from .periodic import primitive_root
@@ -387,11 +388,9 @@ def five_candidate(word: str, factor=None, sextic: Sextic | None = None, face: s
     ``sextic`` the word's :class:`Sextic` when the caller has it (not memoised: a census holds no
     candidate after its word).  The half route (:func:`half_sextic`): ``word`` is the half X of
     W = X·m(X), ``sextic`` N = J·M_X's and ``face`` W's last letter m(x_last), the face of p(0)."""
-    letters = alphabet(5)
     sextic = sextic or Sextic.of(word)
     M, W = sextic.M, sextic.W
     ring_cp = sextic.cp if factor is None else factor      # det(κI - Λ²M), κ written λ in the ring
-    spectrum = FiveSpectrum(None, ring_cp)
     red = Reducer(ring_cp)
     Pi = eigen_plane(W, red)
     common = Frac(Pi[0].den)
@@ -400,7 +399,7 @@ def five_candidate(word: str, factor=None, sextic: Sextic | None = None, face: s
     Pi = [red(e * common) for e in Pi]
     if not all(_polynomial(e) for e in Pi) or all(e.is_zero() for e in Pi):
         raise ArithmeticError("the eigenvector of Λ²M did not clear its denominators")
-    Y = letters.index(face or word[-1])
+    Y = alphabet(5).index(face or word[-1])
     p_hat = contract(Pi, Y)
     Mp = matvec(M, p_hat, red)
     MMp = matvec(M, Mp, red)
@@ -408,15 +407,23 @@ def five_candidate(word: str, factor=None, sextic: Sextic | None = None, face: s
     if j is None:
         raise ArithmeticError("M p̂ vanishes")
     T, D = red(MMp[j] + LR_LAMBDA * p_hat[j]), Mp[j]          # t = T/D
-    ext = Ext(T, D, red)
+    cp4 = [flint_poly_to_frac(flint.fmpq_poly(cf)) for cf in charpoly_coefficients(M)[1:]]
+    return _candidate(word, M, ring_cp, red, Pi, Y, p_hat, Mp, T, D, cp4)
+
+
+def _candidate(word: str, M, ring_cp, red: Reducer, Pi: list, Y: int, p_hat: list, Mp: list, T: Frac, D: Frac,
+               cp4: list, kappa: Frac = LR_LAMBDA, repeated: bool = False) -> FiveCandidate:
+    """The rest of a candidate of either route once the plane Π, p̂ = ι_Y Π, M p̂ and t = T/D are known:
+    q̄ = D(M p̂ - μ p̂) affine in y = Dλ, the engine's position fixed point c y² = (a - d) y + b with
+    c = 1, a = T, b = -κD², d = 0, and the run through the plane."""
+    ext = Ext(T, D, red, kappa)
     q0 = [(red(D * Mp[k] - T * p_hat[k]), p_hat[k]) for k in range(4)]      # D(M p - μ p), y = Dλ
-    # the engine's position fixed point: c y² = (a - d) y + b with c = 1, a = T, b = -κD², d = 0
     a, b, c, d = (T, -ext.D2k, Frac.of(1), Frac.of(0))
     abcd_ring = tuple(_ring(e) for e in (a, b, c, d))
     abcd = tuple(frac_to_field(e) for e in (a, b, c, d))
-    cp4 = [flint_poly_to_frac(flint.fmpq_poly(cf)) for cf in charpoly_coefficients(M)[1:]]
     steps = run(word, Pi, q0, red)
-    return FiveCandidate(word, M, spectrum, abcd, abcd_ring, T, D, p_hat, q0, cp4, ext, Y, steps)
+    return FiveCandidate(word, M, FiveSpectrum(None, ring_cp), abcd, abcd_ring, T, D, p_hat, q0, cp4, ext, Y, steps,
+                         repeated=repeated)
 
 
 def _ring(F: Frac):
@@ -564,7 +571,7 @@ factorisation of cp(M).  Π is the first column of Λ²(M² - t'M + κ₀) not z
 gcd of its entries: where it vanishes at one r, that r is not in any set (as for the κ-route's Π)."""
 
 
-def repeated_candidate(word: str, factor, sextic: Sextic, face: str | None = None) -> FiveCandidate:
+def repeated_candidate(word: str, factor, sextic: Sextic) -> FiveCandidate:
     """The candidate of :data:`REPEATED_ROUTE` for a repeated factor κ - κ₀(r) of cp(Λ²M_w) (monic in κ,
     as :func:`sextic_factors` gives it): the branch variable (λ in the engine's ring) is t = λ + μ, a root
     of Q(t) = t² + c₁t + c₂ - 2κ₀; ArithmeticError where the route does not apply."""
@@ -585,7 +592,7 @@ def repeated_candidate(word: str, factor, sextic: Sextic, face: str | None = Non
         raise ArithmeticError("Q(t) = t² + c₁t + c₂ - 2κ₀ is reducible over Q(r)")
     red = Reducer(Q)
     Mf = [[flint_poly_to_frac(e) for e in row] for row in M]
-    M2 = [[sum((Mf[i][k] * Mf[k][j] for k in range(4)), Frac.of(0)) for j in range(4)] for i in range(4)]
+    M2 = matmul(Mf, Mf)
     other = c1 + t                                       # -t' = c₁ + t
     B = [[red(M2[i][j] + other * Mf[i][j] + (kappa if i == j else Frac.of(0))) for j in range(4)] for i in range(4)]
     W = [[red(e) for e in row] for row in second_compound(B)]
@@ -599,20 +606,13 @@ def repeated_candidate(word: str, factor, sextic: Sextic, face: str | None = Non
     Pi = [e * Frac.of(scale) for e in Pi]                # integer coefficients, then their gcd divided out
     g = functools.reduce(lambda a, b: a.gcd(b), (e.num for e in Pi if not e.is_zero()))
     Pi = [Frac(e.num / g) if not e.is_zero() else e for e in Pi]
-    Y = alphabet(5).index(face or word[-1])
+    Y = alphabet(5).index(word[-1])
     p_hat = contract(Pi, Y)
     if all(e.is_zero() for e in p_hat):
         raise ArithmeticError("the plane of the repeated factor contracts to zero")
-    Mp = matvec(M, p_hat, red)
-    T, D = t, Frac.of(1)                                # y = λ, t = λ + μ
-    ext = Ext(T, D, red, kappa)
-    q0 = [(red(Mp[k] - T * p_hat[k]), p_hat[k]) for k in range(4)]      # M p - μ p = M p - t p + y p
-    a, b, c, d = (T, -ext.D2k, Frac.of(1), Frac.of(0))
-    abcd_ring = tuple(_ring(e) for e in (a, b, c, d))
-    abcd = tuple(frac_to_field(e) for e in (a, b, c, d))
-    steps = run(word, Pi, q0, red)
-    return FiveCandidate(word, M, FiveSpectrum(None, Q), abcd, abcd_ring, T, D, p_hat, q0, [c1, c2, c3, c4], ext, Y,
-                         steps, repeated=True)
+    # y = λ, t = λ + μ: T = t, D = 1
+    return _candidate(word, M, Q, red, Pi, Y, p_hat, matvec(M, p_hat, red), t, Frac.of(1), [c1, c2, c3, c4], kappa,
+                      repeated=True)
 
 
 def impose(an: Analysis, q: Requirement) -> None:
@@ -660,13 +660,10 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
         label = f"factor {number} of cp(Λ²M), " if len(factors) > 1 else ""
         kappa = show_collected(factor, "λ").replace("λ", "κ")
         try:
-            if multiplicity == 1:
-                cand = five_candidate(run_word, factor if len(factors) > 1 else None, sextic, face)
-            elif X is None:          # existence and feasibility by REPEATED_ROUTE; never stable
-                cand = repeated_candidate(run_word, factor, sextic)
-                label = f"factor {number} of cp(Λ²M) ({kappa} = 0, multiplicity {multiplicity}; t = λ + μ), "
-            else:                    # the half route's proof needs κ simple
-                raise ArithmeticError("")
+            if multiplicity > 1 and X is not None:
+                raise ArithmeticError("the half route's proof needs κ simple")
+            cand = (five_candidate(run_word, factor if len(factors) > 1 else None, sextic, face) if multiplicity == 1
+                    else repeated_candidate(run_word, factor, sextic))     # REPEATED_ROUTE: never stable
         except ArithmeticError as e:
             if multiplicity == 1:
                 not_analysed.append({"factor": kappa, "multiplicity": 1, "stable": f"not analysed: {e}"})
@@ -675,9 +672,11 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
             # never stable there (REPEATED_NOT_STABLE); existence and feasibility not analysed
             not_analysed.append({"factor": kappa, "multiplicity": multiplicity, "stable": "none (proved)"})
             undecided.append(f"{label}κ a root of multiplicity {multiplicity} of cp(Λ²M) on all of ]{lo}, {hi}[: "
-                             "its eigenplane is not unique (not analysed" + (f": {e}" if str(e) else "")
-                             + "; never stable: a multiple eigenvalue of Λ²M is not strictly dominant)")
+                             f"its eigenplane is not unique (not analysed: {e}; never stable: a multiple eigenvalue "
+                             "of Λ²M is not strictly dominant)")
             continue
+        if cand.repeated:
+            label = f"factor {number} of cp(Λ²M) ({kappa} = 0, multiplicity {multiplicity}; t = λ + μ), "
         cands.append(cand)
         reqs = requirements(cand)
         total = len(reqs["feasible"]) + 2
@@ -692,12 +691,11 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
                 impose(an, q)
             tick(1 + m, total, f"collision {m} of {len(reqs['feasible'])}")
         stage_regions["feasible"] = _copy(an.regions)
-        if cand.repeated:                  # REPEATED_NOT_STABLE: no branch of the factor is stable
-            stage_regions["stable"] = [Region(R.branch, R.fixed_point, [], [], []) for R in an.regions]
         for q in reqs["stable"]:
             an.impose(q)
-        if not cand.repeated:
-            stage_regions["stable"] = _copy(an.regions)
+        # REPEATED_NOT_STABLE: no branch of a repeated factor is stable
+        stage_regions["stable"] = ([Region(R.branch, R.fixed_point, [], [], []) for R in an.regions] if cand.repeated
+                                   else _copy(an.regions))
         tick(total, total, "stable")
         for stage, rs in stage_regions.items():
             regions[stage] += rs
