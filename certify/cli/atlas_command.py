@@ -66,9 +66,8 @@ def check(args) -> int:
     start = time.perf_counter()
     with executors.executor(args.jobs, args.scheduler) as ex:
         problems = atlas.check_committed(doc, ex, sample, word_max, progress.Bar("job"))
-    rows = len(doc["r"][::sample])
-    words = len([w for w in doc["words"] if w["outcome"] == "analysed" and w["length"] <= word_max][::sample])
-    what = f"{rows} r rows and {words} analysed words" + (f" (every {sample}th)" if sample > 1 else "")
+    rows, words = atlas.checked(doc, sample, word_max)
+    what = f"{len(rows)} r rows and {len(words)} analysed words" + (f" (every {sample}th)" if sample > 1 else "")
     for p in problems:
         print(p)
     print(f"{args.out / 'atlas.json'}: {len(problems)} problem(s) in {what}, derived again in "

@@ -1699,6 +1699,13 @@ def check_counts(doc: dict) -> list[str]:
     return problems
 
 
+def checked(doc: dict, sample: int = 1, window_max: int = WORD_MAX) -> tuple[list, list]:
+    """The r rows and the analysed words (of at most ``window_max`` letters) that :func:`check_committed`
+    derives again: every ``sample``-th of each."""
+    words = [w for w in doc["words"] if w["outcome"] == "analysed" and w["length"] <= window_max]
+    return doc["r"][::sample], words[::sample]
+
+
 def check_committed(doc: dict, executor, sample: int = 1, window_max: int = WORD_MAX, progress=None) -> list[str]:
     """:func:`check_atlas` on a whole document through an executor: every ``sample``-th r row
     (:func:`check_row`) and every ``sample``-th analysed word of at most ``window_max`` letters
@@ -1707,8 +1714,7 @@ def check_committed(doc: dict, executor, sample: int = 1, window_max: int = WORD
     recomputation sees (about the time of the atlas from an empty state).  The problems in a fixed
     order (rows, then words, then the rest), whatever order the jobs end in."""
     collisions = doc["parameters"]["collisions"]
-    rows = doc["r"][::sample]
-    words = [w for w in doc["words"] if w["outcome"] == "analysed" and w["length"] <= window_max][::sample]
+    rows, words = checked(doc, sample, window_max)
     futures = {executor.submit(check_row, row, collisions): ("r", i) for i, row in enumerate(rows)}
     futures.update({executor.submit(check_word, w, [a for a in doc["attractors"] if a["word"] == w["word"]],
                                     window_max): ("word", i) for i, w in enumerate(words)})
