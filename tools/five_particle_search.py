@@ -108,22 +108,33 @@ def data(word: str, r: float, particles: int, half: bool = False) -> list[tuple[
     eigenvalues of M_W, whose eigenvectors are then N's for n_λ, n_μ.  For a feasible datum that is
     not stable the two agree where n² is simple (N has not both n and -n): only there is the
     eigenvector of N the eigenvector of M_W.  Feasibility is the same test, the run on all of W."""
-    letters, gaps = alphabet(particles), particles - 1
+    gaps = particles - 1
     root, V = np.linalg.eig(half_map(word, gaps, r) if half else period_matrix(word, gaps, r))
-    ev = root ** 2 if half else root
-    real = [k for k in range(gaps) if abs(root[k].imag) < 1e-12 and ev[k].real > 0]
+    return _feasible_data(word, particles, half, list(root), lambda k: list(V[:, k].real),
+                          lambda z: abs(z.imag) < 1e-12,
+                          lambda p, q: follows(word, np.array(p), np.array(q), r, alphabet(particles)))
+
+
+def _feasible_data(word: str, particles: int, half: bool, root: list, vector, is_real, follows_from) -> list[tuple]:
+    """(λ, μ, stable) of :func:`data` from the eigenvalues ``root`` of M_w (of N with ``half``: M_W's are
+    their squares) and ``vector(k)``, the real part of root[k]'s eigenvector: the pairs of real positive
+    eigenvalues whose p(0) has every gap but the face's positive and whose run ``follows_from(p, q)``
+    follows the word (q = ±q(0)); shared by the float and the mpmath datum."""
+    letters, gaps = alphabet(particles), particles - 1
+    ev = [z ** 2 for z in root] if half else root
+    real = [k for k in range(gaps) if is_real(root[k]) and ev[k].real > 0]
     Y = letters.index(word[-1])
     out = []
     for a, b in itertools.permutations(real, 2):
-        q0, e = V[:, a].real, V[:, b].real
-        p0 = e[Y] * q0 - q0[Y] * e
-        p0[Y] = 0
-        p0 = p0 if p0[(Y + 1) % gaps] > 0 else -p0
+        q0, e = vector(a), vector(b)
+        p0 = [e[Y] * q0[i] - q0[Y] * e[i] for i in range(gaps)]
+        p0[Y] = 0 * p0[Y]
+        p0 = p0 if p0[(Y + 1) % gaps] > 0 else [-x for x in p0]
         if not all(p0[k] > 0 for k in range(gaps) if k != Y):
             continue
-        if any(follows(word, p0, s * q0, r, letters) for s in (1, -1)):
+        if any(follows_from(p0, [s * x for x in q0]) for s in (1, -1)):
             rest = [abs(ev[k]) for k in range(gaps) if k not in (a, b)]
-            out.append((ev[a].real, ev[b].real, bool(ev[a].real > ev[b].real > max(rest))))
+            out.append((float(ev[a].real), float(ev[b].real), bool(ev[a].real > ev[b].real > max(rest))))
     return out
 
 
@@ -140,21 +151,9 @@ def data_mp(word: str, r, particles: int, half: bool = False, digits: int = 50) 
             cols = [tuple(collide_gaps(letter, c, r)) for c in cols]
         rows = [[cols[j][i] for j in range(gaps)] for i in range(gaps)]
         root, V = mp.eig(mp.matrix(rows[::-1] if half else rows))
-        ev = [z ** 2 for z in root] if half else list(root)
-        real = [k for k in range(gaps) if abs(mp.im(root[k])) < tol * abs(root[k]) and mp.re(ev[k]) > 0]
-        Y, out = letters.index(word[-1]), []
-        for a, b in itertools.permutations(real, 2):
-            q0, e = [mp.re(V[i, a]) for i in range(gaps)], [mp.re(V[i, b]) for i in range(gaps)]
-            p0 = [e[Y] * q0[i] - q0[Y] * e[i] for i in range(gaps)]
-            p0[Y] = mp.mpf(0)
-            p0 = p0 if p0[(Y + 1) % gaps] > 0 else [-x for x in p0]
-            if not all(p0[k] > 0 for k in range(gaps) if k != Y):
-                continue
-            if any(_follows_mp(word, p0, [s * x for x in q0], r, letters, tol) for s in (1, -1)):
-                rest = [abs(ev[k]) for k in range(gaps) if k not in (a, b)]
-                out.append((float(mp.re(ev[a])), float(mp.re(ev[b])),
-                            bool(mp.re(ev[a]) > mp.re(ev[b]) > max(rest))))
-        return out
+        return _feasible_data(word, particles, half, list(root), lambda k: [mp.re(V[i, k]) for i in range(gaps)],
+                              lambda z: abs(mp.im(z)) < tol * abs(z),
+                              lambda p, q: _follows_mp(word, p, q, r, letters, tol))
 
 
 def _follows_mp(word: str, p: list, q: list, r, letters: str, tol) -> bool:
