@@ -116,7 +116,8 @@ def test_the_family_of_f2_is_certified_for_k_1_to_4():
 
 def test_a_family_member_dropped_or_out_of_order_is_named():
     """Without member k = 2, with the results of members 1 and 2 swapped (member 2's window then lies
-    above member 1's), or with member 3's stable set emptied, the family check names the member."""
+    above member 1's, and each outside its rule interval), or with member 3's stable set emptied, the
+    family check names the member."""
     from certify.patterns.five import FAMILY_CORES, family_word
     core = FAMILY_CORES["F₂"]
     results = committed()
@@ -125,8 +126,10 @@ def test_a_family_member_dropped_or_out_of_order_is_named():
     assert five_figure.family_problems(dropped, core, range(1, 4)) == [
         f"k = 2: {w2} has no certified stable window (one interval)"]
     swapped = dict(results, **{w2: results[w1], w1: results[w2]})
-    assert five_figure.family_problems(swapped, core, range(1, 4)) == [
-        f"k = 2: the window of {w2} does not lie below member k - 1's"]
+    assert five_figure.family_problems(swapped, core, range(1, 4)) == [    # and each crosses its resonances
+        "k = 1: (1, 1): the window reaches below r_5/11 ≈ 0.176636779067",
+        f"k = 2: the window of {w2} does not lie below member k - 1's",
+        "k = 2: (2, 1): the window reaches above r_6/13 ≈ 0.175174520939"]
     empty = dict(results, **{w3: dict(results[w3], stable=[])})
     assert five_figure.family_problems(empty, core, range(1, 4)) == [
         f"k = 3: {w3} has no certified stable window (one interval)"]

@@ -155,6 +155,34 @@ def test_the_law_of_the_family_predicts_the_next_member():
     assert hits and len(word) == 152
 
 
+def test_the_resonance_rule_predicts_member_six():
+    """docs/particles.md's rule (certify/patterns/five_rule.py): F₂(k)·A is stable just below the island's
+    resonance ρ = p/q, q = 4k + 5, at ε = 1/(1 - 2ρ) - q with q²ε falling (observed).  From the certified
+    member k = 4 (its lower end's q²ε, committed file) it puts k = 6 (176 letters, q = 29) at
+    0 < ε < c₄/29² (c₄ ≈ 16.65); a 60-digit scan of that piece of r (120 points) finds the member stable there."""
+    import mpmath
+
+    from certify.patterns import five
+
+    def epsilon(r, q):
+        rho = mpmath.acos(-(1 - r) ** 2 / (4 * r)) / (2 * mpmath.pi)
+        return 1 / (1 - 2 * rho) - q
+
+    def r_at(q, eps):
+        c = mpmath.cos(mpmath.pi * (1 - 1 / (q + eps)))
+        return (1 - 2 * c) - mpmath.sqrt((1 - 2 * c) ** 2 - 1)
+
+    mpmath.mp.dps = 30
+    _, (lo4, _hi) = certified(five.family_word("abacbacbc", 4))
+    c4 = 21 ** 2 * epsilon(mpmath.mpf(lo4), 21)
+    assert 16.5 < c4 < 16.8
+    a, b = float(r_at(29, c4 / 29 ** 2)), float(r_at(29, 0))
+    word = five.family_word("abacbacbc", 6)
+    hits = [a + (b - a) * i / 119 for i in range(120)
+            if any(s for *_, s in search.data_mp(word, a + (b - a) * i / 119, 5, True, 60))]
+    assert hits and len(word) == 176
+
+
 def test_half_needs_a_symmetric_word(capsys):
     """abadcbcabc is no rotation of any X·m(X): one line on stderr, exit status 2."""
     assert search.main(["--word", "abadcbcabc", "--half", "--r", "0.2", "0.3", "3"]) == 2

@@ -52,11 +52,14 @@ def family_rows(results: dict, core: str, ks, j: int = 1) -> list[tuple[int, str
 
 def family_problems(results: dict, core: str, ks, j: int = 1) -> list[str]:
     """What keeps the members k in ``ks`` of a family from being certified with their windows in
-    order (empty: each has a certified stable window, one interval, and each lies strictly below the
-    one before, compared on the results' isolating intervals, exact rationals)."""
+    order and where the rule puts them (empty: each has a certified stable window, one interval, each
+    lies strictly below the one before, compared on the results' isolating intervals, exact rationals,
+    and each lies in its interval ]r_{(p+1)/(q+2)}, r_{p/q}[ of the island's resonances,
+    :func:`certify.patterns.five_rule.rule_problems`)."""
     from fractions import Fraction
 
     from certify.patterns.five import family_word
+    from certify.patterns.five_rule import rule_problems
     problems, previous = [], None
     for k in ks:
         word = family_word(core, k, j)
@@ -69,6 +72,7 @@ def family_problems(results: dict, core: str, ks, j: int = 1) -> list[str]:
         lo, hi = (tuple(Fraction(x) for x in pieces[0][end]["interval"]) for end in ("lo", "hi"))
         if previous is not None and not hi[1] < previous[0]:
             problems.append(f"k = {k}: the window of {word} does not lie below member k - 1's")
+        problems += [f"k = {k}: {p}" for p in rule_problems(core, k, j, lo, hi)]
         previous = lo
     return problems
 
