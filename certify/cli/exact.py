@@ -169,8 +169,7 @@ def cmd_orbit(args) -> int:
     from certify.run import progress
     lo, hi = check_range(*r_range(*args.r_range)) if args.r_range else (0, 1)
     if "d" in args.word:
-        raise UsageError("orbit: the reduction map of five particles is not built; "
-                         "`certify pattern WORD` analyses a five-particle word's self-similar data")
+        return _five_orbit(args, lo, hi)
     normal, system, _why = read(args.word)                       # validate first: one line, exit 2
     if args.trap is not None:
         if args.r_range:
@@ -178,6 +177,22 @@ def cmd_orbit(args) -> int:
         return _trap(normal, system, args.trap, args.json)
     result = analyse_orbit(args.word, lo, hi, self_similar=True if args.self_similar else None,
                            progress=progress.Bar("step"))
+    print(result.json_text() if args.json else result.markdown())
+    return 0
+
+
+def _five_orbit(args, lo, hi) -> int:
+    """``orbit WORD`` for a five-particle word: the periodic orbits of the five-particle reduction
+    (certify/patterns/five_orbits.py), Markdown or --json; --trap and --self-similar are four-particle
+    options (UsageError)."""
+    from certify.patterns.five import read_five
+    from certify.patterns.five_orbits import analyse
+    from certify.run import progress
+    read_five(args.word)                                         # validate first: one line, exit 2
+    if args.trap is not None or args.self_similar:
+        raise UsageError("orbit: --trap and --self-similar are for four-particle words (a, b, c); a five-particle "
+                         "word's self-similar data are `certify pattern WORD`'s")
+    result = analyse(args.word, lo, hi, progress=progress.Bar("step"))
     print(result.json_text() if args.json else result.markdown())
     return 0
 
@@ -297,6 +312,13 @@ def five_summary(s: dict) -> str:
             "none" if best is None else f"≈{best['r']['digits']} (the root of {best['r']['minimal_polynomial']} in "
             f"]{best['r']['interval'][0]}, {best['r']['interval'][1]}[), {best['word']}"))
     lines += [f"stable: {w['word']} on {'; '.join(w['windows'])}" for w in s["stable_words"]]
+    for key, kind in (("attracting_real", "real"), ("attracting_complex", "complex")):
+        best = s[f"largest_orbit_{key}"]
+        lines.append(f"largest r of an attracting periodic orbit of the reduction, {kind} in-plane pair: " + (
+            "none" if best is None else f"≈{best['r']['digits']}, {best['word']}"))
+    lines += [f"attracting orbit: {a['word']}: " + "; ".join([f"real pair {t}" for t in a["real"]]
+                                                             + [f"complex pair {t}" for t in a["complex"]])
+              for a in s["attracting_orbits"]]
     lines.append(f"words with undecided points: {s['undecided_words']} (certify pattern WORD lists them)")
     if s["not_analysed"]:
         scope = ("each a repeated factor, never stable (proved): the largest stable r holds for every word, the "
@@ -361,7 +383,8 @@ def register(commands) -> None:
                     description="For each real eigenvalue of M_w: where in r the periodic orbit of the "
                     "reduction with this word exists and is feasible, and whether it is attracting, a saddle "
                     "or repelling (in-plane pair real or complex), with algebraic end points.  Same words as "
-                    "`pattern` (four particles: a, b and c).")
+                    "`pattern`; a five-particle word (a, b, c, d): where its plane's periodic orbit exists, is "
+                    "feasible and attracts (real or complex in-plane pair).")
     add_word_options(p, "a period over a, b, c; powers (…)^n", "orbit.schema.json")
     p.add_argument("--trap", default=None, metavar="R",
                    help="instead: certify a trapping ellipse of the attracting orbit at the rational R in ]0,1[ "

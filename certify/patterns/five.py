@@ -263,6 +263,7 @@ class FiveCandidate:
     steps: list              # [(letter, p̂_k = ι P_k, q̄(t_{k-1}), q̄(t_k))]
     q0_other: tuple = ()
     repeated: bool = False   # the branch variable is t = λ + μ, κ = κ₀(r) a repeated root (:data:`REPEATED_ROUTE`)
+    plane: tuple = ()        # Π, the bivector p̂ contracts (integral in (κ, r)): the reduction's state (five_orbits)
 
 
 def eigen_plane(W, red) -> list:
@@ -423,7 +424,7 @@ def _candidate(word: str, M, ring_cp, red: Reducer, Pi: list, Y: int, p_hat: lis
     abcd = tuple(frac_to_field(e) for e in (a, b, c, d))
     steps = run(word, Pi, q0, red)
     return FiveCandidate(word, M, FiveSpectrum(None, ring_cp), abcd, abcd_ring, T, D, p_hat, q0, cp4, ext, Y, steps,
-                         repeated=repeated)
+                         repeated=repeated, plane=tuple(Pi))
 
 
 def _ring(F: Frac):

@@ -16,33 +16,46 @@ import json
 from pathlib import Path
 
 from certify.algebra.branches import less
-from certify.patterns import five
-from certify.patterns.census import SECONDS
+from certify.patterns import five, five_orbits
+from certify.patterns.census import REDUCTION, REDUCTION_SECONDS, SECONDS
 from certify.patterns.island_theorem import algebraic_of
 
 from . import census_report
 from .files import write_atomic
 
 SCHEMA = "certify-census5"
-VERSION = 1
+VERSION = 2          # 2: each record has its part on the periodic orbits of the reduction (REDUCTION)
 JSON = "census5.json"
 MARKDOWN = "CENSUS5.md"
 STAGES = ("stable", "feasible", "undecided")
 MARK = "engine"      # a state record's engine (:func:`record`); census5.json's records do not carry it
-ENGINE = 2           # the engine of five.census_record: raise it when a change alters a record (its content or
+ENGINE = 3           # the engine of five.census_record: raise it when a change alters a record (its content or
                      # its keys), and say in CHANGED which records of the engine before it alters
 UNMARKED = 1         # a state record without the mark is taken as engine 1's: the engine of the committed census to
                      # 9 and of the states written before the mark (docs/census.md, "Five particles": why)
 # engine e -> the records of engine e - 1 that engine e alters (a resume analyses those again, :func:`current`).
 # 2: five.REPEATED_ROUTE analyses the repeated factors of cp(Λ²M), which engine 1 listed in "not_analysed"
 # (every other record is made by the same code: five_candidate and its requirements are unchanged).
-CHANGED = {2: lambda rec: bool(rec["not_analysed"])}
+# 3: the part on the periodic orbits of the reduction (REDUCTION, five_orbits.census_part) is added to every
+# record; the self-similar part is unchanged, so an older record is kept and completed (:func:`complete`).
+CHANGED = {2: lambda rec: bool(rec["not_analysed"]), 3: lambda rec: False}
 
 
 def record(word: str) -> dict:
-    """:func:`certify.patterns.five.census_record` of ``word`` marked with :data:`ENGINE` (the state's
-    records carry the mark, census5.json's do not: :func:`run` drops it)."""
-    return {**five.census_record(word), MARK: ENGINE}
+    """:func:`certify.patterns.five.census_record` of ``word`` and its :data:`REDUCTION` part, marked with
+    :data:`ENGINE` (the state's records carry the mark, census5.json's do not: :func:`run` drops it)."""
+    return complete(five.census_record(word))
+
+
+def complete(rec: dict) -> dict:
+    """The record with its :data:`REDUCTION` part (:func:`certify.patterns.five_orbits.census_part`, the
+    periodic orbits of the five-particle reduction) computed, its CPU seconds in :data:`REDUCTION_SECONDS`
+    (state file only), marked with :data:`ENGINE`; the self-similar part is left as it is: a state record
+    of an older engine, which lacks the part, is completed without redoing the rest."""
+    import time
+    start = time.process_time()
+    part = five_orbits.census_part(rec["word"])
+    return {**rec, REDUCTION: part, REDUCTION_SECONDS: round(time.process_time() - start, 3), MARK: ENGINE}
 
 
 def current(rec: dict) -> bool:
@@ -74,16 +87,16 @@ def run(max_length: int, executor, state=None, resume: bool = False, progress=No
             progress(k, n, word)
 
     records = census_report.run_census(max_length, executor, state, resume, told, job=record,
-                                       complete=None, words=five.word_classes, current=reused)
-    return [{k: v for k, v in rec.items() if k != MARK} for rec in records]
+                                       complete=complete, words=five.word_classes, current=reused)
+    return [{k: v for k, v in rec.items() if k not in (MARK, REDUCTION_SECONDS)} for rec in records]
 
 
-def _largest(records: list[dict], stage: str) -> dict | None:
-    """{"r": end, "word": w} for the largest ``top[stage]`` over the records (exact comparison; the
-    first word in census order on a tie), or None."""
+def _largest(records: list[dict], stage: str, part=lambda rec: rec) -> dict | None:
+    """{"r": end, "word": w} for the largest ``top[stage]`` of ``part(record)`` over the records (exact
+    comparison; the first word in census order on a tie), or None."""
     best, value = None, None
     for rec in records:
-        end = rec["top"][stage]
+        end = part(rec)["top"][stage]
         if end is None:
             continue
         a = algebraic_of(end)
@@ -96,14 +109,17 @@ def document(records: list[dict], max_length: int) -> dict:
     """census5.json: the summary (counts by length, the largest r of stable and of feasible
     self-similar collapse and the largest undecided point, the stable words and their windows, the
     words with a factor of cp(Λ²M) not analysed) and the records (without seconds)."""
-    records = [{k: v for k, v in rec.items() if k != SECONDS} for rec in records]
+    records = [{k: v for k, v in rec.items() if k not in (SECONDS, REDUCTION_SECONDS)} for rec in records]
     lengths: dict = {}
     for rec in records:
         entry = lengths.setdefault(str(rec["length"]), {"words": 0, "exists": 0, "feasible": 0, "stable": 0,
-                                                        "undecided": 0, "not_analysed": 0})
+                                                        "undecided": 0, "not_analysed": 0, "orbit_feasible": 0,
+                                                        "orbit_attracting_real": 0, "orbit_attracting_complex": 0})
         entry["words"] += 1
         for key in ("exists", "feasible", "stable", "undecided", "not_analysed"):
             entry[key] += bool(rec[key])
+        for key in ("feasible", "attracting_real", "attracting_complex"):
+            entry[f"orbit_{key}"] += bool(rec[REDUCTION][key])
     summary = {"particles": 5, "max_length": max_length, "words": len(records), "lengths": lengths,
                "stable_words": [{"word": r["word"], "windows": r["stable"]} for r in records if r["stable"]],
                "feasible_words": [r["word"] for r in records if r["feasible"]],
@@ -113,6 +129,11 @@ def document(records: list[dict], max_length: int) -> dict:
                "stable_complete": all(f["multiplicity"] > 1 for r in records for f in r["not_analysed"])}
     for stage in STAGES:
         summary[f"largest_{stage}"] = _largest(records, stage)
+    summary["attracting_orbits"] = [{"word": r["word"], "real": r[REDUCTION]["attracting_real"],
+                                     "complex": r[REDUCTION]["attracting_complex"]} for r in records
+                                    if r[REDUCTION]["attracting_real"] or r[REDUCTION]["attracting_complex"]]
+    for key in ("attracting_real", "attracting_complex"):
+        summary[f"largest_orbit_{key}"] = _largest(records, key, lambda rec: rec[REDUCTION])
     return {"schema": SCHEMA, "version": VERSION, "census": summary, "words": records}
 
 
@@ -143,14 +164,24 @@ def markdown(doc: dict) -> str:
              "## Certified answers", "",
              f"- Largest r of stable self-similar collapse up to {L}: {_end(s['largest_stable'])}",
              f"- Largest r of feasible self-similar collapse up to {L}: {_end(s['largest_feasible'])}",
-             f"- Largest undecided point (stable stage): {_end(s['largest_undecided'])}", "",
+             f"- Largest undecided point (stable stage): {_end(s['largest_undecided'])}",
+             f"- Largest r of an attracting periodic orbit of the five-particle reduction up to {L}, real in-plane "
+             f"pair: {_end(s['largest_orbit_attracting_real'])}",
+             f"- Largest r of an attracting periodic orbit of the reduction up to {L}, complex in-plane pair (not a "
+             f"collapse): {_end(s['largest_orbit_attracting_complex'])}", "",
              "These hold on ]0, 1[ less the words' undecided points, each an isolated r (an end of a region where "
              "two κ branches meet, or 0/0) listed in census5.json"
              + (", and less the factors not analysed (below), on the whole range: there nothing is claimed but what "
                 "is proved of a repeated factor (never stable)." if s["not_analysed"] else
                 ".  Every factor of cp(Λ²M) is analysed: a repeated one (κ = ±r^(n/2), of multiplicity 2) by the "
                 "route of certify.patterns.five.REPEATED_ROUTE (existence and feasibility on its two planes; never "
-                "stable: REPEATED_NOT_STABLE)."), ""]
+                "stable: REPEATED_NOT_STABLE)."), "",
+             "The periodic orbits of the reduction are the second way (`certify orbit WORD`, "
+             "certify/patterns/five_orbits.py): a plane Π with Λ²M Π = κΠ, κ > 0, in the face of the last letter, "
+             "whose run follows the word; attracting when κ = λμ strictly dominates the other products of two "
+             "eigenvalues (less the undecided points of that part, in census5.json).  With a real pair λ, μ > 0 "
+             "whose datum exists it is the stable self-similar collapse; with a complex pair it is not a collapse.",
+             ""]
     if s["not_analysed"]:
         lines += [f"{len(s['not_analysed'])} words have a factor of cp(Λ²M) that was not analysed (listed below). "
                   + ("Each is a repeated factor, which holds no stable datum (proved: "
@@ -158,15 +189,22 @@ def markdown(doc: dict) -> str:
                      "word; the largest r of feasible collapse holds for the factors analysed only."
                      if s["stable_complete"] else "Both largest r hold for the factors analysed only."), ""]
     lines += ["## By length", "", "| length | words | exists (factors analysed) | feasible (factors analysed) | "
-              "stable | with undecided points | with a factor not analysed |", "|---:|---:|---:|---:|---:|---:|---:|"]
+              "stable | with undecided points | with a factor not analysed | orbit of the reduction feasible | "
+              "attracting, real pair | attracting, complex pair |", "|" + "---:|" * 10]
     lines += [f"| {n} | {e['words']} | {e['exists']} | {e['feasible']} | {e['stable']} | {e['undecided']} | "
-              f"{e['not_analysed']} |" for n, e in sorted(s["lengths"].items(), key=lambda ne: int(ne[0]))]
+              f"{e['not_analysed']} | {e['orbit_feasible']} | {e['orbit_attracting_real']} | "
+              f"{e['orbit_attracting_complex']} |" for n, e in sorted(s["lengths"].items(), key=lambda ne: int(ne[0]))]
     union = "(each the r-set of one κ branch and ordering x₊ or x₋; the same set for several is shown once)"
     lines += ["", "## Stable words", "", union, ""]
     lines += [f"- {w['word']}: {'; '.join(dict.fromkeys(w['windows']))}" for w in s["stable_words"]] or ["None."]
     lines += ["", "## Feasible words", "", union, ""]
     by = {r["word"]: r for r in doc["words"]}
     lines += [f"- {w}: {'; '.join(dict.fromkeys(by[w]['feasible']))}" for w in s["feasible_words"]] or ["None."]
+    lines += ["", "## Attracting periodic orbits of the reduction", "",
+              "(per κ branch: where the plane's periodic orbit attracts, with a real or a complex in-plane pair)", ""]
+    lines += [f"- {a['word']}: " + "; ".join([f"real pair {t}" for t in a["real"]]
+                                            + [f"complex pair {t}" for t in a["complex"]])
+              for a in s["attracting_orbits"]] or ["None."]
     lines += ["", "## Not analysed", ""]
     lines += [f"- {n['word']}: " + "; ".join(f"{f['factor']} of multiplicity {f['multiplicity']}, stable: {f['stable']}"
                                           for f in n["factors"]) for n in s["not_analysed"]] or ["None."]
