@@ -350,8 +350,8 @@ def register(commands) -> None:
                    help="run on the Dask cluster at ADDRESS (needs certify[distributed]) instead of local processes")
     p.add_argument("--particles", type=positive_int, default=4, metavar="N",
                    help=f"4 (the paper's, default) or 5: every five-particle word class up to L ≤ {MAX_FIVE_LENGTH} "
-                        "by the κ route of `pattern`: DIR/CENSUS5.md and census5.json (state: "
-                        "DIR/census5-state.jsonl)")
+                        "by the κ route of `pattern` and the periodic orbits of the reduction of `orbit`: "
+                        "DIR/CENSUS5.md and census5.json (state: DIR/census5-state.jsonl)")
     p.add_argument("--check", action="store_true",
                    help="with --particles 5: analyse the words of DIR/census5.json up to L again and compare "
                         "(exit 1 on a difference); nothing is written")

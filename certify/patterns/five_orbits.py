@@ -39,7 +39,7 @@ An attracting orbit with a real pair λ, μ > 0 whose datum also exists is the s
 ``certify pattern`` (the same plane); one with a complex pair is a periodic orbit of the reduction that
 is not a collapse (as four particles' a(bac)²bcb).  A repeated factor of cp(Λ²M) (its eigenplanes not
 unique) is not analysed here: never attracting (REPEATED_NOT_STABLE: a multiple root is not strictly
-dominant).
+dominant); one κ − κ₀(r) with κ₀ < 0 on all of ]0, 1[ (decided exactly) holds no periodic orbit at all.
 """
 from __future__ import annotations
 
@@ -166,6 +166,8 @@ def analyse(text: str, lo=0, hi=1, progress=None) -> FiveOrbitResult:
     for number, (factor, multiplicity) in enumerate(factors, 1):
         label = f"factor {number} of cp(Λ²M), " if len(factors) > 1 else ""
         kappa = show_collected(factor, "λ").replace("λ", "κ")
+        if multiplicity > 1 and _negative_root(factor):
+            continue                                  # κ < 0 on ]0, 1[: no periodic orbit (κ > 0 is needed)
         if multiplicity > 1:
             not_analysed.append(f"{kappa} (multiplicity {multiplicity}): its eigenplanes are not unique; never "
                                 "attracting (a multiple root is not strictly dominant)")
@@ -210,6 +212,20 @@ def analyse(text: str, lo=0, hi=1, progress=None) -> FiveOrbitResult:
                              for R in got[stage] for rc, w in R.undecided})
     return FiveOrbitResult(text, normal, why, (lo, hi), sets, undecided, not_analysed, conditions,
                            time.perf_counter() - start, regions)
+
+
+def _negative_root(factor) -> bool:
+    """Whether ``factor`` (monic in κ) is κ + c(r) with c > 0 on all of ]0, 1[ (exactly: no root of c in
+    ]0, 1] by Sturm, c(1/2) > 0, c(1) ≠ 0): its root κ = −c(r) < 0 holds no periodic orbit."""
+    import flint
+
+    from certify.algebra.poly import RING, mpoly_to_univariate, ring_to_mpoly
+    from certify.algebra.sturm import sturm_count
+    if factor.degree(RING.gens[0]) != 1:
+        return False
+    c = flint.fmpq_poly(mpoly_to_univariate(ring_to_mpoly(factor.coeff_wrt(RING.gens[0], 0))))
+    half = flint.fmpq(1, 2)
+    return sturm_count(c, 0, 1) == 0 and c(half) > 0
 
 
 def _name(branch: int) -> str:

@@ -180,8 +180,10 @@ def markdown(doc: dict) -> str:
              "certify/patterns/five_orbits.py): a plane Π with Λ²M Π = κΠ, κ > 0, in the face of the last letter, "
              "whose run follows the word; attracting when κ = λμ strictly dominates the other products of two "
              "eigenvalues (less the undecided points of that part, in census5.json).  With a real pair λ, μ > 0 "
-             "whose datum exists it is the stable self-similar collapse; with a complex pair it is not a collapse.",
-             ""]
+             "whose datum exists it is the stable self-similar collapse; with a complex pair it is not a collapse.  "
+             "A repeated factor of cp(Λ²M) is never attracting, so these largest r hold for every word; the counts "
+             "of feasible orbits are those of the factors analysed (a repeated κ = κ₀ > 0 is not: "
+             f"{sum(bool(r[REDUCTION]['not_analysed']) for r in doc['words'])} words).", ""]
     if s["not_analysed"]:
         lines += [f"{len(s['not_analysed'])} words have a factor of cp(Λ²M) that was not analysed (listed below). "
                   + ("Each is a repeated factor, which holds no stable datum (proved: "

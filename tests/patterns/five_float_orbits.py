@@ -1,62 +1,72 @@
 """The periodic orbits of the five-particle reduction in floats (numpy): an independent route for
-tests/patterns/test_five_orbits.py (observed, not certified)."""
+tests/patterns/test_five_orbits.py (observed, not certified).  M_w is evaluated exactly at a rational
+r and then rounded; Λ²M_w, its eigenvectors and M_w's eigenvalues are numpy's; the face and the
+tournament are read off the bivector as docs/particles.md states them."""
 import itertools
-import numpy as np
+
 import flint
-from certify.dynamics.systems import system_matrix_flint, of_particles
+import numpy as np
+
+from certify.dynamics.systems import of_particles, system_matrix_flint
 
 PAIRS = list(itertools.combinations(range(4), 2))
-LET = "abcd"
+LETTERS = "abcd"
 
-def matrix(word, r):
-    M = system_matrix_flint(of_particles(5), word)
-    return np.array([[float(e(r)) for e in row] for row in M])
 
-def compound(M):
-    return np.array([[M[i, k] * M[j, l] - M[i, l] * M[j, k] for k, l in PAIRS] for i, j in PAIRS])
+def matrix(word: str, r: flint.fmpq) -> np.ndarray:
+    """M_w at the rational r, exactly, then as floats."""
+    return np.array([[float(e(r)) for e in row] for row in system_matrix_flint(of_particles(5), word)])
 
-def ent(w, k, m):
+
+def compound(M: np.ndarray) -> np.ndarray:
+    """Λ²M in the coordinates ω_kl, k < l."""
+    return np.array([[M[i, k] * M[j, m] - M[i, m] * M[j, k] for k, m in PAIRS] for i, j in PAIRS])
+
+
+def entry(w, k: int, m: int) -> float:
+    """ω_km for any k ≠ m."""
     return w[PAIRS.index((k, m))] if k < m else -w[PAIRS.index((m, k))]
 
-def orbits(word, r, tol=1e-9):
-    """[(κ, feasible, kind)] for the real κ > 0 of Λ²M with a real eigenvector in the face of the last letter:
-    feasible when the plane's run follows the word; kind 'real'/'complex' when attracting, else None."""
-    rq = flint.fmpq(*r) if isinstance(r, tuple) else r
-    M = matrix(word, rq)
-    W = compound(M)
-    Ks = [compound(matrix(c, rq)) for c in LET]
-    vals, vecs = np.linalg.eig(W)
+
+def _attracting(ev: np.ndarray, kappa: float) -> str | None:
+    """'real' or 'complex' (the in-plane pair) when the two eigenvalues of M with product κ have larger
+    moduli than both others, else None."""
+    pair = min(itertools.combinations(range(4), 2), key=lambda ab: abs(ev[ab[0]] * ev[ab[1]] - kappa))
+    others = [ev[m] for m in range(4) if m not in pair]
+    least = min(abs(ev[pair[0]]), abs(ev[pair[1]]))
+    if not all(abs(n) < least * (1 - 1e-9) for n in others):
+        return None
+    return "complex" if abs(ev[pair[0]].imag) > 1e-12 * abs(ev[pair[0]]) else "real"
+
+
+def orbits(word: str, r: flint.fmpq, tol: float = 1e-9) -> list[tuple[float, bool, str | None]]:
+    """(κ, feasible, kind) for each simple real κ > 0 of Λ²M whose eigenvector, oriented, lies in the
+    face of the last letter: feasible when the plane's run follows the word; kind 'real' or 'complex'
+    when the feasible orbit attracts, else None."""
+    M = matrix(word, r)
+    steps = [compound(matrix(c, r)) for c in LETTERS]
+    values, vectors = np.linalg.eig(compound(M))
     ev = np.linalg.eigvals(M)
+    Y = LETTERS.index(word[-1])
     out = []
-    Y = LET.index(word[-1])
-    for k in range(6):
-        kap = vals[k]
-        if abs(kap.imag) > tol * max(1, abs(kap)) or kap.real <= 0:
+    for k, kappa in enumerate(values):
+        if abs(kappa.imag) > tol * max(1, abs(kappa)) or kappa.real <= 0:
             continue
-        if sum(abs(vals - kap) < 1e-7 * abs(kap)) > 1:
-            continue                                           # a multiple root: not analysed
-        w = np.real(vecs[:, k]); w = w / np.max(np.abs(w))
-        face = [-ent(w, Y, j) for j in range(4) if j != Y]
+        if sum(abs(values - kappa) < 1e-7 * abs(kappa)) > 1:
+            continue                                          # a multiple root: not analysed
+        w = np.real(vectors[:, k])
+        w = w / np.max(np.abs(w))
+        face = [-entry(w, Y, j) for j in range(4) if j != Y]
         if not (all(f > tol for f in face) or all(f < -tol for f in face)):
             continue
         if face[0] < 0:
             w = -w
-        i, ok = Y, True
+        i, feasible = Y, True
         for c in word:
-            j = LET.index(c)
-            if not all(ent(w, j, m) > tol * np.max(np.abs(w)) for m in range(4) if m not in (i, j)):
-                ok = False
+            j = LETTERS.index(c)
+            if not all(entry(w, j, m) > tol * np.max(np.abs(w)) for m in range(4) if m not in (i, j)):
+                feasible = False
                 break
-            w = Ks[j] @ w
-            i = j
-        kind = None
-        if ok:
-            # the plane's pair: two eigenvalues with product κ
-            best = min(((a, b) for a, b in itertools.combinations(range(4), 2)),
-                       key=lambda ab: abs(ev[ab[0]] * ev[ab[1]] - kap.real))
-            others = [ev[m] for m in range(4) if m not in best]
-            m = min(abs(ev[best[0]]), abs(ev[best[1]]))
-            if all(abs(n) < m * (1 - 1e-9) for n in others):
-                kind = "complex" if abs(ev[best[0]].imag) > 1e-12 * abs(ev[best[0]]) else "real"
-        out.append((kap.real, ok, kind))
+            w, i = steps[j] @ w, j
+        out.append((kappa.real, feasible, _attracting(ev, kappa.real) if feasible else None))
     return out

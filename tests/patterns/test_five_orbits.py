@@ -132,3 +132,10 @@ def test_the_census_part_of_abadcbcabc():
     top = part["top"]["attracting_real"]
     assert top["minimal_polynomial"] == "r^2 - 4r + 1" and top["digits"] == "0.267949192431"
     assert "κ3: ]≈0.04607447305, ≈0.07295006984[" in part["feasible"]
+
+
+def test_a_repeated_factor_is_not_analysed_unless_its_root_is_negative():
+    """abcd: κ = r² twice (its eigenplanes not unique): listed as not analysed, never attracting; abcacd:
+    κ = −r³ twice, negative on ]0, 1[ (decided exactly): no periodic orbit, nothing left out."""
+    assert [n.split(" (")[0] for n in five_orbits.analyse("abcd").not_analysed] == ["-r^2 + κ"]
+    assert five_orbits.analyse("abcacd").not_analysed == []
