@@ -500,16 +500,28 @@ def requirements(cand: FiveCandidate) -> dict:
         previous = i
     if cand.repeated:                 # REPEATED_NOT_STABLE: nothing to impose, no branch is stable
         return {"exists": exists, "feasible": feasible, "stable": []}
-    c1, c2 = cand.cp4[0], cand.cp4[1]
-    Ds = red(c1 * D + T)                                     # D s
-    D2p = red(c2 * D * D + T * Ds - LR_LAMBDA * D * D)       # D² p
+    return {"exists": exists, "feasible": feasible, "stable": stable_requirements(cand)}
+
+
+def other_factor(cand: FiveCandidate) -> tuple[Frac, Frac]:
+    """(D s, D² p) for the other factor of cp(M) = (z² - tz + κ)(z² + sz + p) (s = c₁ + t,
+    p = c₂ + ts - κ, t = T/D), reduced modulo the branch polynomial."""
+    red, T, D = cand.ext.red, cand.T, cand.D
+    Ds = red(cand.cp4[0] * D + T)
+    return Ds, red(cand.cp4[1] * D * D + T * Ds - LR_LAMBDA * D * D)
+
+
+def stable_requirements(cand: FiveCandidate) -> list:
+    """λ - μ > 0 and Jury's criterion for z² + sz + p in the open disc of radius μ (the module's
+    docstring), each times a positive power of D, affine in y = Dλ."""
+    red, T, D = cand.ext.red, cand.T, cand.D
+    Ds, D2p = other_factor(cand)
     D2mu2 = (red(T * T - LR_LAMBDA * D * D), -T)             # D² μ² = T² - κD² - T y
     sDmu = (red(Ds * T), -Ds)                                # D s · D μ
-    stable = [_req("λ - μ", (red(-D * T), red(Frac.of(2) * D)), 1),
-              _req("μ² - p", (D2mu2[0] - D2p, D2mu2[1]), 1),
-              _req("μ² + sμ + p", (D2mu2[0] + sDmu[0] + D2p, D2mu2[1] + sDmu[1]), 1),
-              _req("μ² - sμ + p", (D2mu2[0] - sDmu[0] + D2p, D2mu2[1] - sDmu[1]), 1)]
-    return {"exists": exists, "feasible": feasible, "stable": stable}
+    return [_req("λ - μ", (red(-D * T), red(Frac.of(2) * D)), 1),
+            _req("μ² - p", (D2mu2[0] - D2p, D2mu2[1]), 1),
+            _req("μ² + sμ + p", (D2mu2[0] + sDmu[0] + D2p, D2mu2[1] + sDmu[1]), 1),
+            _req("μ² - sμ + p", (D2mu2[0] - sDmu[0] + D2p, D2mu2[1] - sDmu[1]), 1)]
 
 
 def mirror(word: str, particles: int = 5) -> str:

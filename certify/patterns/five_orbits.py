@@ -59,9 +59,10 @@ from .five import (
     _req,
     five_candidate,
     impose,
+    other_factor,
     read_five,
-    requirements,
     sextic_factors,
+    stable_requirements,
     wedge_collide,
 )
 from .pattern import _copy, _nonempty, check_range, end_data
@@ -91,10 +92,8 @@ def orbit_requirements(cand: FiveCandidate) -> dict:
                          for m in range(4) if m not in (previous, i)])
         P = wedge_collide(letter, P, red)
         previous = i
-    stable = requirements(cand)["stable"]                       # [λ − μ, μ² − p, μ² + sμ + p, μ² − sμ + p]
-    c1, c2 = cand.cp4[0], cand.cp4[1]
-    Ds = red(c1 * D + T)
-    D2p = red(c2 * D * D + T * Ds - LR_LAMBDA * D * D)
+    stable = stable_requirements(cand)                          # [λ − μ, μ² − p, μ² + sμ + p, μ² − sμ + p]
+    Ds, D2p = other_factor(cand)
     kD2 = red(LR_LAMBDA * D * D)
     delta = red(T * T - Frac.of(4) * kD2)
     real = [_req("Δ", (delta, ZERO), 1), _req("λ² − μ²", (red(-T * T), red(Frac.of(2) * T)), 1)] + stable[1:]
