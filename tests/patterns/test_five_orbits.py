@@ -139,3 +139,37 @@ def test_a_repeated_factor_is_not_analysed_unless_its_root_is_negative():
     κ = −r³ twice, negative on ]0, 1[ (decided exactly): no periodic orbit, nothing left out."""
     assert [n.split(" (")[0] for n in five_orbits.analyse("abcd").not_analysed] == ["-r^2 + κ"]
     assert five_orbits.analyse("abcacd").not_analysed == []
+
+
+def _signs(word: str, r: Fraction, stage: str) -> list[int]:
+    """The signs of the stage's requirements (G₀ only: no y) at r on the plane that numpy finds feasible and
+    attracting there: κ the root of the sextic at r nearest numpy's (python-flint's certified complex roots
+    at 300 bits), the requirements' polynomials in (κ, r) evaluated by SymPy at 50 digits."""
+    import sympy as sp
+    cand = five.five_candidate(word)
+    reqs = five_orbits.orbit_requirements(cand)[stage]
+    [kappa_float] = [k for k, ok, kind in floats.orbits(word, flint.fmpq(r.numerator, r.denominator)) if kind]
+    lam, rr = sp.symbols("λ r")
+    cp = sp.Poly(five.Sextic.of(word).cp.as_expr().subs(rr, sp.Rational(r.numerator, r.denominator)), lam)
+    coeffs = [flint.fmpq(int(c.p), int(c.q)) for c in reversed(cp.all_coeffs())]
+    old, flint.ctx.prec = flint.ctx.prec, 300
+    try:
+        roots = [z.real for z, _m in flint.fmpq_poly(coeffs).complex_roots() if z.imag.contains(0)]
+    finally:
+        flint.ctx.prec = old
+    kappa = sp.Float(min((z.mid() for z in roots), key=lambda z: abs(float(z) - kappa_float)).str(70, radius=False), 60)
+    out = []
+    for q in reqs:
+        value = sp.sympify(q.G[0].as_expr()).subs({lam: kappa, rr: sp.Rational(r.numerator, r.denominator)})
+        out.append(int(sp.sign(sp.N(value, 50))))
+    return out
+
+
+def test_the_complex_pair_conditions_at_one_r_of_the_nineteen_letter_word():
+    """At r = 263/1000 numpy finds ababcbcdcdbcdbcbabc's plane feasible and attracting with a complex pair:
+    there −Δ, κ − p, κ + p and (κ + p)² − s²κ are all positive at 60 digits on its κ; at r = 6/25 (a real
+    pair, its stable window) −Δ is negative.  The requirements are the engine's (orbit_requirements)."""
+    word = "ababcbcdcdbcdbcbabc"
+    assert [kind for *_, kind in floats.orbits(word, flint.fmpq(263, 1000)) if kind] == ["complex"]
+    assert _signs(word, Fraction(263, 1000), "complex") == [1, 1, 1, 1]
+    assert _signs(word, Fraction(6, 25), "complex")[0] == -1
