@@ -149,9 +149,22 @@ def _worker_start() -> None:
     """In a forked worker: SIGTERM (the pool's terminate, when it exits) ends it at once and Ctrl-C
     is the parent's.  A Python handler inherited from the parent could take SIGTERM without dying,
     and the pool's exit, which holds the task queue's lock and joins its workers, would wait for
-    ever (seen under pytest-xdist, whose worker had a handler left by an earlier test)."""
+    ever (seen under pytest-xdist, whose worker had a handler left by an earlier test).  The worker
+    is forked with SIGTERM blocked (:func:`_pool`), so a SIGTERM that comes before this line is held,
+    not swallowed by the inherited handler, and ends the worker when it is unblocked here."""
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGTERM})
+
+
+def _pool(jobs: int):
+    """A pool of ``jobs`` forked workers (:func:`_worker_start`), forked while this thread blocks
+    SIGTERM (restored at once: a SIGTERM to this process meanwhile is delivered then)."""
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM})
+    try:
+        return multiprocessing.get_context("fork").Pool(jobs, initializer=_worker_start)
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
 def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None, tick=None) -> list[dict]:
@@ -167,7 +180,7 @@ def verify_all(data: dict, paper: Paper, jobs: int = 1, ids=None, tick=None) -> 
     order = sorted(range(len(certs)), key=lambda k: -len(json.dumps(engine.get(certs[k].id, ""))))
     done: dict = {}
     if jobs > 1 and len(certs) > 1 and hasattr(os, "fork"):
-        with multiprocessing.get_context("fork").Pool(jobs, initializer=_worker_start) as pool:
+        with _pool(jobs) as pool:
             for r in pool.imap_unordered(_one, order, chunksize=1):
                 done[next(k for k in order if certs[k].id == r["id"])] = r
                 if tick:
