@@ -37,7 +37,7 @@ from certify.algebra import Algebraic
 from certify.dynamics.model import charpoly_coefficients
 from certify.dynamics.systems import of_particles, system_matrix_flint
 
-from .five import A_BLOCK, FAMILY_CORES, family_word
+from .five import A_BLOCK, family_word
 from .island_theorem import resonances_of_q
 
 
@@ -54,9 +54,12 @@ def block_identity(block: str = A_BLOCK) -> bool:
 
 
 def resonance(core: str, k: int, j: int = 1) -> tuple[int, int]:
-    """(p, q) of member (k, j) of the family with ``core`` (one of :data:`.five.FAMILY_CORES`):
-    q = 4k + 2j + 1 for F₁ (core abc), 4k + 2j + 3 for F₂, p = (q − 1)/2."""
-    q = 4 * k + 2 * j + {"abc": 1, "abacbacbc": 3}[core]
+    """(p, q) of member (k, j) of the family with ``core`` (one of :data:`.five.FAMILY_CORES`), read off
+    its word W (:func:`.five.family_word`): q = (|W| − 2)/6, p = (q − 1)/2 (q = 4k + 2j + 1 for F₁,
+    4k + 2j + 3 for F₂)."""
+    q, rest = divmod(len(family_word(core, k, j)) - 2, 6)
+    if rest or q % 2 == 0:
+        raise ValueError(f"member ({k}, {j}) of core {core!r}: its length is not 6q + 2 with q odd")
     return (q - 1) // 2, q
 
 
@@ -75,27 +78,18 @@ def rule_interval(core: str, k: int, j: int = 1) -> tuple[Algebraic, Algebraic]:
     return resonance_point(p + 1, q + 2), resonance_point(p, q)
 
 
-def rule_problems(core: str, k: int, j: int, lo: tuple, hi: tuple) -> list[str]:
-    """What contradicts the rule for a certified window ]ℓ, h[ of member (k, j), given by the
-    isolating intervals ``lo`` ∋ ℓ and ``hi`` ∋ h (rationals): empty when r_{(p+1)/(q+2)} < lo's left
-    end and hi's right end < r_{p/q}, decided exactly (so the whole window lies in the rule's interval)."""
+def rule_problems(core: str, k: int, j: int, lo: dict, hi: dict) -> list[str]:
+    """What contradicts the rule for a certified window ]ℓ, h[ of member (k, j), its ends ``lo``, ``hi``
+    as a pattern result prints them: empty when r_{(p+1)/(q+2)} < the left end of ℓ's isolating interval
+    and the right end of h's < r_{p/q}, decided exactly (so the whole window lies in the rule's interval;
+    the ends' minimal polynomials, of degree up to several hundred, are not needed)."""
     a, b = rule_interval(core, k, j)
     p, q = resonance(core, k, j)
-    ell, h = (Algebraic.rational(flint.fmpq(x.numerator, x.denominator)) for x in (Fraction(lo[0]), Fraction(hi[1])))
+    ell, h = (Algebraic.rational(flint.fmpq(x.numerator, x.denominator))
+              for x in (Fraction(lo["interval"][0]), Fraction(hi["interval"][1])))
     out = []
     if not a < ell:
         out.append(f"({k}, {j}): the window reaches below r_{p + 1}/{q + 2} ≈ {a.digits(12)}")
     if not h < b:
         out.append(f"({k}, {j}): the window reaches above r_{p}/{q} ≈ {b.digits(12)}")
     return out
-
-
-def member_of(word: str, kmax: int = 12) -> tuple[str, int, int] | None:
-    """(core, k, j) when ``word`` (a normal form) is :func:`.five.family_word` (core, k, j) with
-    k ≤ kmax, 1 ≤ j ≤ k, else None."""
-    for core in FAMILY_CORES.values():
-        for k in range(1, kmax + 1):
-            for j in range(1, k + 1):
-                if 6 * resonance(core, k, j)[1] + 2 == len(word) and family_word(core, k, j) == word:
-                    return core, k, j
-    return None

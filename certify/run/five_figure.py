@@ -72,7 +72,7 @@ def family_problems(results: dict, core: str, ks, j: int = 1) -> list[str]:
         lo, hi = (tuple(Fraction(x) for x in pieces[0][end]["interval"]) for end in ("lo", "hi"))
         if previous is not None and not hi[1] < previous[0]:
             problems.append(f"k = {k}: the window of {word} does not lie below member k - 1's")
-        problems += [f"k = {k}: {p}" for p in rule_problems(core, k, j, lo, hi)]
+        problems += [f"k = {k}: {p}" for p in rule_problems(core, k, j, pieces[0]["lo"], pieces[0]["hi"])]
         previous = lo
     return problems
 

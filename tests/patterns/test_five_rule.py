@@ -7,10 +7,12 @@ import flint
 import numpy as np
 import pytest
 
+from certify.algebra import Algebraic
 from certify.dynamics.systems import of_particles, system_matrix_flint
 from certify.patterns import five_rule as R
 from certify.patterns.five import FAMILY_CORES, family_word
 from certify.patterns.island_theorem import rotation_ball
+from certify.patterns.pattern import end_data
 
 F1, F2 = FAMILY_CORES["F₁"], FAMILY_CORES["F₂"]
 
@@ -36,16 +38,11 @@ def test_the_block_turns_by_twice_the_island_rotation_in_floats(r):
 
 
 @pytest.mark.parametrize("core,k,j", [(F1, 2, 1), (F1, 4, 3), (F2, 1, 1), (F2, 3, 2), (F2, 5, 1)])
-def test_q_of_a_member_is_its_length_less_two_over_six(core, k, j):
-    """|W| = 6q + 2 for the words family_word builds, p = (q − 1)/2, and member_of finds (core, k, j) again."""
-    word = family_word(core, k, j)
+def test_q_read_off_a_members_length_is_the_families_closed_form(core, k, j):
+    """q = (|W| − 2)/6 of the word family_word builds is 4k + 2j + 1 for F₁ and 4k + 2j + 3 for F₂ (the
+    closed forms of docs/particles.md), and p = (q − 1)/2."""
     p, q = R.resonance(core, k, j)
-    assert len(word) == 6 * q + 2 and 2 * p + 1 == q
-    assert R.member_of(word) == (core, k, j)
-
-
-def test_a_word_outside_the_families_is_no_member():
-    assert R.member_of("abadcbcabc") is None and R.member_of(family_word(F2, 13, 1)) is None
+    assert q == 4 * k + 2 * j + (1 if core == F1 else 3) and 2 * p + 1 == q
 
 
 def test_the_rule_intervals_are_ordered_and_fall_to_three_minus_two_root_two():
@@ -67,7 +64,7 @@ def _window(core, k, j=1):
     from tests.test_five_particle_figure import committed
     doc = committed()[family_word(core, k, j)]
     [piece] = [p for s in doc["stable"] for p in s["pieces"] if p["kind"] == "interval"]
-    return piece["lo"]["interval"], piece["hi"]["interval"]
+    return piece["lo"], piece["hi"]
 
 
 @pytest.mark.parametrize("k", [1, 2, 3, 4])
@@ -85,9 +82,7 @@ def test_a_window_put_at_another_member_or_past_a_resonance_is_named():
     assert R.rule_problems(F2, 3, 1, lo, hi) == ["(3, 1): the window reaches above r_8/17 ≈ 0.173664541378"]
     assert R.rule_problems(F1, 2, 1, lo, hi) == ["(2, 1): the window reaches below r_6/13 ≈ 0.175174520939"]
     a, b = R.rule_interval(F2, 2)
-    above = str(flint.fmpq(b.floor_scaled(10 ** 15) + 2, 10 ** 15))
-    below = str(flint.fmpq(a.floor_scaled(10 ** 15) - 1, 10 ** 15))
-    assert R.rule_problems(F2, 2, 1, lo, (hi[0], above)) == [
-        "(2, 1): the window reaches above r_6/13 ≈ 0.175174520939"]
-    assert R.rule_problems(F2, 2, 1, (below, lo[1]), hi) == [
-        "(2, 1): the window reaches below r_7/15 ≈ 0.174266927309"]
+    above = end_data(Algebraic.rational(flint.fmpq(b.floor_scaled(10 ** 15) + 2, 10 ** 15)))
+    below = end_data(Algebraic.rational(flint.fmpq(a.floor_scaled(10 ** 15) - 1, 10 ** 15)))
+    assert R.rule_problems(F2, 2, 1, lo, above) == ["(2, 1): the window reaches above r_6/13 ≈ 0.175174520939"]
+    assert R.rule_problems(F2, 2, 1, below, hi) == ["(2, 1): the window reaches below r_7/15 ≈ 0.174266927309"]
