@@ -812,10 +812,16 @@ def census_record(word: str) -> dict:
             tops = [rc for R in res.regions["stable"] for rc, _ in R.undecided]
         else:
             tops = [w.hi for w in res.intervals(stage)] + [at for *_, at in res.points(stage)]
-        best = None
-        for top in tops:
-            if best is None or less(best, top):
-                best = top
-        rec["top"][stage] = None if best is None else end_data(best)
+        rec["top"][stage] = top_data(tops)
     rec[SECONDS] = round(time.process_time() - start, 3)
     return rec
+
+
+def top_data(ends) -> dict | None:
+    """The largest of exact end points (compared by :func:`certify.algebra.branches.less`) as
+    :func:`.pattern.end_data` prints it, or None for none: a census record's ``top``."""
+    best = None
+    for end in ends:
+        if best is None or less(best, end):
+            best = end
+    return None if best is None else end_data(best)

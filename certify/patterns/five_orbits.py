@@ -63,9 +63,10 @@ from .five import (
     read_five,
     sextic_factors,
     stable_requirements,
+    top_data,
     wedge_collide,
 )
-from .pattern import _copy, _nonempty, check_range, end_data
+from .pattern import _copy, _nonempty, check_range
 
 STAGES = ("orbit", "feasible", "attracting (real pair)", "attracting (complex pair)")
 ZERO = Frac.of(0)
@@ -240,19 +241,17 @@ def census_part(word: str) -> dict:
     over ]0, 1[, ``word`` a normal form): per key of :data:`PART` the r-sets as "branch: set" texts,
     the factors not analysed, the distinct undecided r (10 digits), and ``top``, the largest upper end
     or isolated point of each attracting set (exact, :func:`.pattern.end_data`; None when empty)."""
-    from certify.algebra.branches import less
     res = analyse(word)
     part = {key: [f"{d['branch']}: {d['set']}" for d in res.sets[stage]] for key, stage in PART.items()}
     part["not_analysed"] = list(res.not_analysed)
     part["undecided"] = sorted({rc.digits(10) for stage in (PART["attracting_real"], PART["attracting_complex"])
                                 for R in res.regions[stage] for rc, _why in R.undecided})
-    part["top"] = {}
-    for key in ("attracting_real", "attracting_complex"):
-        best = None
-        for R in res.regions[PART[key]]:
-            spans, points = R.merged()
-            for top in [b for _a, b in spans] + [q.lo for q in points]:
-                if best is None or less(best, top):
-                    best = top
-        part["top"][key] = None if best is None else end_data(best)
+    part["top"] = {key: top_data(end for R in res.regions[PART[key]] for end in _ends(R))
+                   for key in ("attracting_real", "attracting_complex")}
     return part
+
+
+def _ends(R) -> list:
+    """The upper ends of a region's maximal intervals and its isolated points."""
+    spans, points = R.merged()
+    return [b for _a, b in spans] + [q.lo for q in points]
