@@ -435,11 +435,15 @@ def _ring(F: Frac):
 
 
 
+def entry(P: list, k: int, m: int) -> Frac:
+    """P_km of a bivector in the coordinates P_kl, k < l (:data:`PAIRS`), for any k ≠ m (P_mk = -P_km)."""
+    return P[PAIRS.index((k, m))] if k < m else -P[PAIRS.index((m, k))]
+
+
 def contract(P: list, i: int) -> list:
-    """ι_i P: the vector (P_{li} for l < i, 0, -P_{il} for l > i) of a bivector P = p ∧ q with p_i = 0,
-    which is q_i·p (P_{li} = p_l q_i - p_i q_l, P_{il} = p_i q_l - p_l q_i)."""
-    coord = dict(zip(PAIRS, P))
-    return [coord[(m, i)] if m < i else (-coord[(i, m)] if m > i else Frac.of(0)) for m in range(4)]
+    """ι_i P: the vector (P_{li})_l (0 at l = i) of a bivector P = p ∧ q with p_i = 0, which is q_i·p
+    (P_{li} = p_l q_i - p_i q_l)."""
+    return [entry(P, m, i) if m != i else Frac.of(0) for m in range(4)]
 
 
 def wedge_collide(letter: str, P: list, red) -> list:

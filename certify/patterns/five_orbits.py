@@ -47,16 +47,19 @@ import json
 import time
 from dataclasses import dataclass, field
 
+import flint
+
 from certify.algebra.branches import BRANCH_NAMES
-from certify.algebra.poly import LR_LAMBDA, Frac, show_collected
+from certify.algebra.poly import LR_LAMBDA, RING, Frac, mpoly_to_univariate, ring_to_mpoly, show_collected
+from certify.algebra.sturm import sturm_count
 from certify.dynamics.model import alphabet
 
 from .feasibility import Analysis
 from .five import (
-    PAIRS,
     FiveCandidate,
     Sextic,
     _req,
+    entry,
     five_candidate,
     impose,
     other_factor,
@@ -66,15 +69,10 @@ from .five import (
     top_data,
     wedge_collide,
 )
-from .pattern import _copy, _nonempty, check_range
+from .pattern import _copy, check_range, region_set
 
 STAGES = ("orbit", "feasible", "attracting (real pair)", "attracting (complex pair)")
 ZERO = Frac.of(0)
-
-
-def entry(P: list, k: int, m: int) -> Frac:
-    """ω_km of a bivector in the coordinates ω_kl, k < l (:data:`.five.PAIRS`), for any k ≠ m."""
-    return P[PAIRS.index((k, m))] if k < m else -P[PAIRS.index((m, k))]
 
 
 def orbit_requirements(cand: FiveCandidate) -> dict:
@@ -203,8 +201,7 @@ def analyse(text: str, lo=0, hi=1, progress=None) -> FiveOrbitResult:
             if stage != "attracting (real pair)":        # x plays no part: one fixed point label is enough
                 rs = [R for R in rs if R.fixed_point == first]
             regions[stage] += rs
-            sets[stage] += [dict(d, branch=label + _name(R.branch)) for R, d in zip([R for R in rs if R.pieces],
-                                                                                  _nonempty(rs))]
+            sets[stage] += [dict(region_set(R), branch=label + _name(R.branch)) for R in rs if R.pieces]
         conditions = {k: [f"{q.name} > 0" for q in (v if k != "feasible" else [q for g in v for q in g])]
                       for k, v in reqs.items()}
         undecided += sorted({f"{label}{_name(R.branch)} at {rc.digits(10)}: {w}"
@@ -216,11 +213,7 @@ def analyse(text: str, lo=0, hi=1, progress=None) -> FiveOrbitResult:
 
 def _negative_root(factor) -> bool:
     """Whether ``factor`` (monic in κ) is κ + c(r) with c > 0 on all of ]0, 1[ (exactly: no root of c in
-    ]0, 1] by Sturm, c(1/2) > 0, c(1) ≠ 0): its root κ = −c(r) < 0 holds no periodic orbit."""
-    import flint
-
-    from certify.algebra.poly import RING, mpoly_to_univariate, ring_to_mpoly
-    from certify.algebra.sturm import sturm_count
+    ]0, 1] by Sturm, and c(1/2) > 0): its root κ = −c(r) < 0 holds no periodic orbit."""
     if factor.degree(RING.gens[0]) != 1:
         return False
     c = flint.fmpq_poly(mpoly_to_univariate(ring_to_mpoly(factor.coeff_wrt(RING.gens[0], 0))))
