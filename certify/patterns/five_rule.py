@@ -10,7 +10,7 @@ symmetric orbit the island turns around.  Certified by :func:`block_identity`, e
 3 − 2√2 to 1/4 at r = 1).  So on ]3 − 2√2, 1[ A has the complex pair r² e^{±iθ_A} with
 θ_A = 2π − 2θ = 2π(1 − 2ρ): the block turns by the island's rotation taken twice, and θ_A → 0 as
 r → 3 − 2√2, where cp(M_A) = (x − r²)³.  Near there, 1 − cos(π − θ) = (r − L)(L' − r)/(4r) (L, L' = 3 ∓ 2√2)
-gives θ_A² = (32 + 24√2)(r − L) + O((r − L)²).
+gives θ_A² = (32 + 24√2)(r − L) + O((r − L)²) (by hand: the expansion is not machine-checked).
 
 **The rule** (read off the members; observed on every member tried, certified on each member whose
 window is certified: :func:`rule_problems`).  Member (k, j) of a family has the half
