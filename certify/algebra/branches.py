@@ -1140,9 +1140,7 @@ class Spectrum:
         branches = self.branches_at(rc)
         if branches is None or branch >= len(branches):
             raise Undecided("branch not isolated at this point")
-        for zeros_at in _zero_routes(G):
-            top = self._precision_ceiling(zeros_at, maxprec)
-            prec = 128
+        for zeros_at, prec, top in self._attempts(G, maxprec):
             while prec <= top:
                 zeros = zeros_at(prec)
                 balls = [b(prec) for b in branches]
@@ -1155,11 +1153,13 @@ class Spectrum:
                 prec *= 2
         raise Undecided("zero test undecided")
 
-    def _precision_ceiling(self, zeros_at, maxprec: int) -> int:
-        """The highest precision (bits) :meth:`_vanishes_on` tries on the enclosures ``zeros_at`` (one
-        of :func:`_zero_routes`): ``maxprec`` here; a subclass may go higher on a route.  Any answer
-        the disjoint balls give is exact, at whatever precision."""
-        return maxprec
+    def _attempts(self, G, maxprec: int):
+        """What :meth:`_vanishes_on` tries in turn: (enclosures, first precision, last precision), each
+        of :func:`_zero_routes` from 128 bits to ``maxprec``, doubling; a subclass may add attempts.  Any
+        answer the disjoint balls give is exact, whatever the route and precision: the order of the
+        attempts changes the time, never the answer, nor whether there is one."""
+        for zeros_at in _zero_routes(G):
+            yield zeros_at, 128, maxprec
 
 
 def _union(factor_lists) -> list:

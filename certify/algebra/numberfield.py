@@ -4,10 +4,13 @@ At a critical value r = α two eigenvalue branches may collide; cp(λ; α) is th
 made squarefree exactly — Euclid's algorithm in Q(α)[λ], Q(α) = Q[r]/(m), m the minimal
 polynomial of α — before its roots are enclosed by certified balls (python-flint's
 acb root isolation).  Elements of Q(α) are python-flint ``fmpq_poly`` in r reduced
-modulo m (inverses by the extended Euclid algorithm, ``xgcd``); an element of Q(α)[λ]
-is the list of its coefficients, highest first.
+modulo m (inverses by the extended Euclid algorithm, ``xgcd``; a gcd is made monic modulo
+primes, each result checked exactly: :func:`monic`); an element of Q(α)[λ] is the list of
+its coefficients, highest first.
 """
 from __future__ import annotations
+
+import functools
 
 import flint
 import sympy as sp
@@ -60,11 +63,112 @@ def _strip(p):
 
 
 def monic(p, m):
-    """p ∈ Q(α)[λ] divided by its leading coefficient (an inverse in Q(α), by xgcd in Q[r])."""
+    """p ∈ Q(α)[λ] divided by its leading coefficient: the quotients c / p[0] in Q(α) by
+    :func:`_monic_modular` (their images modulo primes, lifted, then checked exactly), else by an
+    inverse of p[0] in Q(α) (xgcd in Q[r]).  The same polynomial either way (a monic polynomial of
+    Q(α)[λ] with the roots of p is unique)."""
+    lifted = _monic_modular(p, m)
+    if lifted is not None:
+        return lifted
     g, inv, _ = p[0].xgcd(m)          # g = inv·p[0] + _·m, g monic
     if g != 1:
         raise ZeroDivisionError(f"{p[0]} is not invertible modulo {m}")
     return [reduce(c * inv, m) for c in p]
+
+
+MODULAR_PRIMES = 256     # the most primes :func:`_monic_modular` tries before the xgcd route
+
+
+@functools.cache
+def _prime(k: int) -> int:
+    """The k-th prime below 2⁶² (k = 0, 1, ...): the moduli of :func:`_monic_modular`."""
+    q = flint.fmpz(1 << 62) if k == 0 else flint.fmpz(_prime(k - 1))
+    q -= 1
+    while not q.is_prime():
+        q -= 1
+    return int(q)
+
+
+def _image(c: flint.fmpq_poly, P: int) -> flint.nmod_poly | None:
+    """c modulo the prime P (None when P divides its denominator)."""
+    d = int(c.denom()) % P
+    if d == 0:
+        return None
+    return flint.nmod_poly(c.numer(), P) * pow(d, -1, P)
+
+
+def _rational(a: int, M: int) -> flint.fmpq | None:
+    """The fraction u/v with u ≡ a·v modulo M and |u|, v ≤ √(M/2) (Wang's rational reconstruction,
+    unique when it exists), or None."""
+    bound = int(flint.fmpz(M // 2).isqrt())
+    r0, r1, t0, t1 = M, a % M, 0, 1
+    while r1 > bound:
+        q = r0 // r1
+        r0, r1, t0, t1 = r1, r0 - q * r1, t1, t0 - q * t1
+    if t1 == 0 or abs(t1) > bound:
+        return None
+    return flint.fmpq(r1, t1) if t1 > 0 else flint.fmpq(-r1, -t1)
+
+
+def _monic_modular(p, m) -> list[flint.fmpq_poly] | None:
+    """[1, p[1]/p[0], ...] in Q(α)[λ], or None where this route gives up.  Each quotient q is found
+    modulo primes P (an inverse in GF(P)[r]/(m)), its coefficients lifted by the Chinese remainder
+    theorem and read as fractions (:func:`_rational`) after 2, 4, 8, ... primes.  A lift that agrees
+    with the quotients modulo the next prime is checked exactly, and returned only when p[0]·q ≡ p[i]
+    modulo m holds in Q[r] for every i, which makes it the quotient.  The gcds of pseudo-remainders it
+    is called on have leading coefficients of 10⁵ digits and quotients of 10³: xgcd over Q pays for the
+    first, this route for the second (100× faster)."""
+    d, rows, M, used, lifted = m.degree(), [[0] * m.degree() for _ in p[1:]], 1, 0, None
+    for k in range(MODULAR_PRIMES):
+        P = _prime(k)
+        quotients = _quotients_modulo(p, m, P)
+        if quotients is None:
+            continue
+        if lifted is not None:
+            if [_image(q, P) for q in lifted] == quotients and \
+                    all(((p[0] * q - c) % m).is_zero() for q, c in zip(lifted, p[1:])):
+                return [flint.fmpq_poly(1)] + lifted
+            lifted = None
+        step = pow(M % P, -1, P)
+        for row, q in zip(rows, quotients):
+            residues = [int(x) for x in q.coeffs()] + [0] * d
+            for j in range(d):
+                row[j] += M * ((residues[j] - row[j]) * step % P)
+        M, used = M * P, used + 1
+        if used & (used - 1) == 0 and used > 1:
+            lifted = _lift(rows, M)
+    return None
+
+
+def _quotients_modulo(p, m, P: int) -> list[flint.nmod_poly] | None:
+    """p[i]/p[0] in GF(P)[r]/(m) for i ≥ 1, or None when P divides a denominator or m's leading
+    coefficient, or p[0] is not invertible modulo (m, P)."""
+    images = []
+    for c in [m, *p]:
+        image = _image(c, P)
+        if image is None:
+            return None
+        images.append(image)
+    mP, lead, rest = images[0], images[1], images[2:]
+    if mP.degree() != m.degree():
+        return None
+    g, s, _ = lead.xgcd(mP)
+    if g.degree() != 0:
+        return None
+    s = s * pow(int(g[0]), -1, P)
+    return [c * s % mP for c in rest]
+
+
+def _lift(rows: list[list[int]], M: int) -> list[flint.fmpq_poly] | None:
+    """The polynomials whose coefficients are the fractions :func:`_rational` reads in ``rows``
+    (residues modulo M), or None when one is not read."""
+    out = []
+    for row in rows:
+        coeffs = [c for c in (_rational(x, M) for x in row) if c is not None]
+        if len(coeffs) < len(row):
+            return None
+        out.append(flint.fmpq_poly(coeffs))
+    return out
 
 
 def gcd(f, g, m, make_monic: bool = True) -> list[flint.fmpq_poly]:

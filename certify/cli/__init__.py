@@ -19,7 +19,7 @@
                                 DIR/census.json, census-words.csv.gz (a row a
                                 word), census-windows.png
     census --particles 5 --max-length L [--out DIR] [--state FILE] [--resume] [--check]
-                                every five-particle word class up to length L ≤ 10:
+                                every five-particle word class up to length L ≤ 11:
                                 the largest r of stable and of feasible collapse,
                                 DIR/CENSUS5.md, census5.json (certify.run.census5);
                                 --check analyses the committed words again

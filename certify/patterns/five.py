@@ -58,7 +58,6 @@ from certify.algebra.poly import (
     LR_LAMBDA,
     LR_R,
     LRCTX,
-    LRQCTX,
     RING,
     Frac,
     flint_poly_to_frac,
@@ -179,8 +178,8 @@ def pseudo_remainder(g: list, cp: list) -> list:
     return g[:n] if len(g) > n else g
 
 
-# the precision to which the common roots of a gcd in Q(r₀)[κ] taken as it comes are enclosed before
-# it is made monic (FiveSpectrum._vanishes_on): its coefficients reach tens of thousands of bits
+# the precision to which the common roots of a gcd in Q(r₀)[κ] taken as it comes are enclosed where the
+# engine's zero test stops at 1024 bits (FiveSpectrum._attempts): its coefficients reach tens of thousands of bits
 AS_IT_COMES_PRECISION = 1 << 16
 
 
@@ -191,22 +190,24 @@ class FiveSpectrum(Spectrum):
     * its resultants free of s by :func:`bezout_resultant` (a 6×6 Bézout determinant over Z[r],
       division-free) instead of the multivariate subresultant: the same primitive polynomial, memoised by
       the engine (:meth:`_resultant_free_of_s`);
-    * the zero test encloses the common roots of a gcd taken as it comes to
-      :data:`AS_IT_COMES_PRECISION` bits before the engine makes it monic (an inverse in Q(r₀) by xgcd:
-      10-14 s each on words of length 9, whose gcds have coefficients of 24 000 bits)
-      (:meth:`_precision_ceiling`)."""
+    * the zero test encloses the common roots of a gcd taken as it comes up to
+      :data:`AS_IT_COMES_PRECISION` bits where the engine stops at 1024 (:meth:`_attempts`): after the
+      monic gcd, which :func:`certify.algebra.numberfield.monic` makes modulo primes in milliseconds (an
+      inverse in Q(r₀) by xgcd took 10-14 s on words of length 9, whose gcds have coefficients of 24 000
+      bits, so these precisions came first until 2026-11-30)."""
 
     def _resultant_free_of_s(self, g: list) -> flint.fmpz_poly:
         """primitive(Res_κ(g, cp)) by :func:`bezout_resultant`, whatever cp's degree (the engine's
         memo, :meth:`Spectrum.resultant`, keeps it)."""
         return bezout_resultant(g, self._cp_coeffs)
 
-    def _precision_ceiling(self, zeros_at, maxprec: int) -> int:
-        """:data:`AS_IT_COMES_PRECISION` on a gcd taken as it comes whose monic form is not made yet
-        (the route :func:`~certify.algebra.branches._zero_routes` tries first), ``maxprec`` otherwise."""
-        if getattr(zeros_at, "fallback", None) is not None and getattr(zeros_at, "monic", None) is None:
-            return max(maxprec, AS_IT_COMES_PRECISION)
-        return maxprec
+    def _attempts(self, G, maxprec: int):
+        """The engine's attempts (a gcd as it comes, then the monic gcd, each to ``maxprec``), then, on a
+        gcd taken as it comes, the same from 2·maxprec to :data:`AS_IT_COMES_PRECISION` bits: tried after
+        the monic gcd, which costs milliseconds (the answers are the same in any order)."""
+        yield from super()._attempts(G, maxprec)
+        if getattr(G, "fallback", None) is not None and AS_IT_COMES_PRECISION > maxprec:
+            yield G, 2 * maxprec, AS_IT_COMES_PRECISION
 
 
 class Reducer:
@@ -215,12 +216,28 @@ class Reducer:
 
     def __init__(self, ring_cp):
         self.C = ring_to_lrq(ring_cp)
+        scale = flint.fmpz(1)
+        for c in self.C.coeffs():
+            scale = scale.lcm(c.q)
+        self.Z = LRCTX.from_dict({m: int(c * scale) for m, c in self.C.to_dict().items()})
+        self.n, self.L = self.Z.degrees()[0], self.Z.leading_coefficient()
+        if self.Z.monoms()[0] != (self.n, 0):
+            raise ArithmeticError("the polynomial reduced by is not monic in κ up to a constant")
 
     def poly(self, p):
-        """An fmpz_mpoly in (κ, r) reduced modulo cp, as (fmpz_mpoly, positive integer scale)."""
-        q = LRQCTX.from_dict({m: flint.fmpq(c) for m, c in zip(p.monoms(), p.coeffs())})
-        return _lr(divmod(q, self.C)[1])
-
+        """An fmpz_mpoly in (κ, r) reduced modulo cp, as (fmpz_mpoly, positive integer scale), over Z:
+        with C = a multiple of cp in Z[r][κ] of constant leading coefficient L and k = deg_κ p - deg C + 1,
+        L^k p = Q C + R (a pseudo-division: python-flint's division meets a leading coefficient divisible
+        by L at every step), so p ≡ R / L^k, written with the least scale (the lcm of the denominators)."""
+        k = p.degrees()[0] - self.n + 1
+        if k <= 0:
+            return p, flint.fmpz(1)
+        N = self.L ** k
+        R = divmod(p * N, self.Z)[1]
+        if N < 0:
+            R, N = -R, -N
+        g = N.gcd(R.content())
+        return (R / g, N / g) if g != 1 else (R, N)
     def __call__(self, F: Frac) -> Frac:
         n, a = self.poly(F.num)
         d, b = self.poly(F.den)
@@ -643,12 +660,40 @@ def impose(an: Analysis, q: Requirement) -> None:
         an.impose(q)
 
 
-def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
+def built(word: str, shared: dict | None = None) -> tuple[Sextic, list]:
+    """The :class:`Sextic` of a normal form and its factors (:func:`sextic_factors`), kept in ``shared``
+    when given: a dict the caller holds for one word, so that two analyses of it (the census's two parts)
+    build them once."""
+    key = ("sextic", word)
+    if shared is not None and key in shared:
+        return shared[key]
+    sextic = Sextic.of(word)
+    out = sextic, sextic_factors(word, sextic)
+    if shared is not None:
+        shared[key] = out
+    return out
+
+
+def shared_candidate(word: str, factor, sextic: Sextic, shared: dict | None = None) -> FiveCandidate:
+    """:func:`five_candidate` of ``word`` for ``factor``, kept in ``shared`` when given (see :func:`built`):
+    the second analysis gets the same candidate, whose spectrum has memoised the resultants, the sign
+    tables and the branches at critical values that the first one computed (each exact: the same answers)."""
+    key = ("candidate", word, factor)
+    if shared is not None and key in shared:
+        return shared[key]
+    cand = five_candidate(word, factor, sextic)
+    if shared is not None:
+        shared[key] = cand
+    return cand
+
+
+def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False, shared: dict | None = None):
     """The exact analysis of a five-particle word over ]lo, hi[ (certified like
     :func:`.pattern.analyse`: the κ-route candidate, the requirements of :func:`requirements`
     imposed by :class:`.feasibility.Analysis`), as a :class:`.pattern.PatternResult`.  ``half``: the
     word is X·m(X) and the analysis is the half route's (:data:`HALF_ROUTE`: the same stable set, from
-    N = J·M_X of half the degree and a run of |X| collisions); UsageError for another word."""
+    N = J·M_X of half the degree and a run of |X| collisions); UsageError for another word.  ``shared``:
+    see :func:`built` (not used by the half route)."""
     import time
 
     from certify.algebra.branches import BRANCH_NAMES
@@ -663,9 +708,12 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
         raise UsageError(f"--half: {text!r} is not X·m(X) up to rotation (m the mirror a <-> d, b <-> c)")
     if X is not None:
         why += f"{HALF_MARK}W = X·m(X), X = {X}, M_W = N², N = J·M_X (J the reversal of the gaps)"
-    sextic = half_sextic(X) if X is not None else Sextic.of(normal)
+    if X is not None:
+        sextic = half_sextic(X)
+        factors = sextic_factors(normal, sextic)
+    else:
+        sextic, factors = built(normal, shared)
     run_word, face = (X, normal[-1]) if X is not None else (normal, None)
-    factors = sextic_factors(normal, sextic)
     not_analysed: list = []
     regions: dict = {"exists": [], "feasible": [], "stable": []}
     sets: dict = {"exists": [], "feasible": [], "stable": []}
@@ -679,8 +727,9 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False):
         try:
             if multiplicity > 1 and X is not None:
                 raise ArithmeticError("the half route's proof needs κ simple")
-            cand = (five_candidate(run_word, factor if len(factors) > 1 else None, sextic, face) if multiplicity == 1
-                    else repeated_candidate(run_word, factor, sextic))     # REPEATED_ROUTE: never stable
+            cand = (repeated_candidate(run_word, factor, sextic) if multiplicity > 1    # REPEATED_ROUTE: never stable
+                    else five_candidate(run_word, factor if len(factors) > 1 else None, sextic, face) if X is not None
+                    else shared_candidate(run_word, factor if len(factors) > 1 else None, sextic, shared))
         except ArithmeticError as e:
             if multiplicity == 1:
                 not_analysed.append({"factor": kappa, "multiplicity": 1, "stable": f"not analysed: {e}"})
@@ -793,7 +842,7 @@ def word_classes(max_length: int, particles: int = 5):
         yield from sorted(found)
 
 
-def census_record(word: str) -> dict:
+def census_record(word: str, shared: dict | None = None) -> dict:
     """The record of one word of the five-particle census (the job :func:`certify.run.census5.run`
     hands its executor; ``word`` a normal form): :func:`analyse_five` over ]0, 1[, timed once.  Its
     certified sets (``exists``, ``feasible``, ``stable``, as r-set texts), its undecided points, the
@@ -801,12 +850,13 @@ def census_record(word: str) -> dict:
     largest r of each (``top``: the largest upper end or isolated point of the set, exact; for
     ``undecided`` the largest undecided point of the stable stage).  ``seconds``, the CPU seconds of the
     analysis (``time.process_time``: the measure on a shared machine), is kept in the state file only
-    (:data:`certify.patterns.census.SECONDS`): the rest is the same bytes on a rerun."""
+    (:data:`certify.patterns.census.SECONDS`): the rest is the same bytes on a rerun.  ``shared``: see
+    :func:`built`."""
     import time
 
     from .census import SECONDS
     start = time.process_time()
-    res = analyse_five(word)
+    res = analyse_five(word, shared=shared)
     rec = {"word": word, "length": len(word), "verdict": str(res.verdict),
            "exists": [s["set"] for s in res.exists], "feasible": [s["set"] for s in res.feasible],
            "stable": [s["set"] for s in res.stable], "undecided": list(res.undecided),

@@ -57,14 +57,13 @@ from certify.dynamics.model import alphabet
 from .feasibility import Analysis
 from .five import (
     FiveCandidate,
-    Sextic,
     _req,
+    built,
     entry,
-    five_candidate,
     impose,
     other_factor,
     read_five,
-    sextic_factors,
+    shared_candidate,
     stable_requirements,
     top_data,
     wedge_collide,
@@ -149,14 +148,14 @@ class FiveOrbitResult:
         return json.dumps(self.to_json(), ensure_ascii=False, indent=2, sort_keys=True)
 
 
-def analyse(text: str, lo=0, hi=1, progress=None) -> FiveOrbitResult:
+def analyse(text: str, lo=0, hi=1, progress=None, shared: dict | None = None) -> FiveOrbitResult:
     """The periodic orbits of the five-particle reduction with the word ``text`` over ]lo, hi[, certified
-    (the sets of the module's docstring, per κ branch of each simple factor of cp(Λ²M))."""
+    (the sets of the module's docstring, per κ branch of each simple factor of cp(Λ²M)); ``shared``: see
+    :func:`.five.built`."""
     start = time.perf_counter()
     lo, hi = check_range(lo, hi)
     normal, why = read_five(text)
-    sextic = Sextic.of(normal)
-    factors = sextic_factors(normal, sextic)
+    sextic, factors = built(normal, shared)
     sets: dict = {stage: [] for stage in STAGES}
     regions: dict = {stage: [] for stage in STAGES}
     undecided, not_analysed, conditions = [], [], {}
@@ -171,7 +170,7 @@ def analyse(text: str, lo=0, hi=1, progress=None) -> FiveOrbitResult:
                                 "attracting (a multiple root is not strictly dominant)")
             continue
         try:
-            cand = five_candidate(normal, factor if len(factors) > 1 else None, sextic)
+            cand = shared_candidate(normal, factor if len(factors) > 1 else None, sextic, shared)
         except ArithmeticError as e:
             not_analysed.append(f"{kappa}: {e}")
             continue
@@ -229,12 +228,13 @@ PART = {"feasible": "feasible", "attracting_real": "attracting (real pair)",
         "attracting_complex": "attracting (complex pair)"}      # a census record's keys -> the stages
 
 
-def census_part(word: str) -> dict:
+def census_part(word: str, shared: dict | None = None) -> dict:
     """The five-particle census's part on the periodic orbits of the reduction (``certify orbit WORD``
     over ]0, 1[, ``word`` a normal form): per key of :data:`PART` the r-sets as "branch: set" texts,
     the factors not analysed, the distinct undecided r (10 digits), and ``top``, the largest upper end
-    or isolated point of each attracting set (exact, :func:`.pattern.end_data`; None when empty)."""
-    res = analyse(word)
+    or isolated point of each attracting set (exact, :func:`.pattern.end_data`; None when empty);
+    ``shared``: see :func:`.five.built`."""
+    res = analyse(word, shared=shared)
     part = {key: [f"{d['branch']}: {d['set']}" for d in res.sets[stage]] for key, stage in PART.items()}
     part["not_analysed"] = list(res.not_analysed)
     part["undecided"] = sorted({rc.digits(10) for stage in (PART["attracting_real"], PART["attracting_complex"])

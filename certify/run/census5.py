@@ -43,18 +43,20 @@ CHANGED = {2: lambda rec: bool(rec["not_analysed"]), 3: lambda rec: False}
 
 def record(word: str) -> dict:
     """:func:`certify.patterns.five.census_record` of ``word`` and its :data:`REDUCTION` part, marked with
-    :data:`ENGINE` (the state's records carry the mark, census5.json's do not: :func:`run` drops it)."""
-    return complete(five.census_record(word))
+    :data:`ENGINE` (the state's records carry the mark, census5.json's do not: :func:`run` drops it).  The
+    two parts share the word's sextic and candidates (:func:`certify.patterns.five.built`)."""
+    shared: dict = {}
+    return complete(five.census_record(word, shared), shared)
 
 
-def complete(rec: dict) -> dict:
+def complete(rec: dict, shared: dict | None = None) -> dict:
     """The record with its :data:`REDUCTION` part (:func:`certify.patterns.five_orbits.census_part`, the
     periodic orbits of the five-particle reduction) computed, its CPU seconds in :data:`REDUCTION_SECONDS`
     (state file only), marked with :data:`ENGINE`; the self-similar part is left as it is: a state record
     of an older engine, which lacks the part, is completed without redoing the rest."""
     import time
     start = time.process_time()
-    part = five_orbits.census_part(rec["word"])
+    part = five_orbits.census_part(rec["word"], shared)
     return {**rec, REDUCTION: part, REDUCTION_SECONDS: round(time.process_time() - start, 3), MARK: ENGINE}
 
 

@@ -1023,3 +1023,50 @@ def test_lrq_terms_are_the_ring_terms_in_order():
         p = to_ring(e)
         q = ring_to_lrq(p)
         assert _lrq_terms(q) == ring_terms(p) == [(c, er, el) for (el, er), c in q.to_dict().items()]
+
+
+def _irreducible(coeffs: list[int]) -> flint.fmpq_poly | None:
+    """The polynomial Σ coeffs[i] r^i when it is irreducible over Q of degree ≥ 2, else None."""
+    f = flint.fmpz_poly(coeffs)
+    if f.degree() < 2:
+        return None
+    _, factors = f.factor()
+    return flint.fmpq_poly(f) if len(factors) == 1 and factors[0][1] == 1 else None
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(st.lists(st.integers(-9, 9), min_size=3, max_size=7),
+       st.lists(st.lists(st.integers(-10 ** 6, 10 ** 6), min_size=1, max_size=6), min_size=2, max_size=4),
+       st.lists(st.integers(-10 ** 40, 10 ** 40), min_size=1, max_size=6), st.integers(1, 10 ** 30))
+def test_monic_modulo_primes_is_the_monic_by_xgcd(m_coeffs, q_coeffs, c_coeffs, den):
+    """nf.monic makes p ∈ Q(α)[λ] monic modulo primes (each lift checked exactly) or by an inverse in Q(α)
+    (xgcd): the same polynomial.  p = c·q with q monic and small, c of 40-digit coefficients over a large
+    denominator, as the gcds of pseudo-remainders the engine makes monic."""
+    m = _irreducible(m_coeffs)
+    assume(m is not None)
+    c = nf.reduce(flint.fmpq_poly([flint.fmpq(x, den) for x in c_coeffs]), m)
+    assume(not c.is_zero())
+    q = [flint.fmpq_poly(1)] + [nf.reduce(flint.fmpq_poly(x), m) for x in q_coeffs[1:]]
+    p = [nf.reduce(c * e, m) for e in q]
+    g, inv, _ = p[0].xgcd(m)
+    by_xgcd = [nf.reduce(e * inv, m) for e in p]
+    assert by_xgcd == q
+    assert nf._monic_modular(p, m) == q
+    assert nf.monic(p, m) == q
+
+
+def test_a_lift_that_fails_its_exact_check_is_never_returned(monkeypatch):
+    """The modular route returns a lift only when p[0]·q ≡ p[i] modulo m holds exactly: with every lift
+    altered (a coefficient off by one) it gives up, and nf.monic falls back to the inverse by xgcd."""
+    m = flint.fmpq_poly([-2, 0, 0, 1])                                # r³ - 2
+    c = flint.fmpq_poly([flint.fmpq(3 ** 60, 7 ** 30), 5, flint.fmpq(-11, 13)])
+    q = [flint.fmpq_poly(1), flint.fmpq_poly([1, flint.fmpq(2, 3)]), flint.fmpq_poly([0, 0, 5])]
+    p = [nf.reduce(c * e, m) for e in q]
+    assert nf._monic_modular(p, m) == q
+    lift = nf._lift
+    monkeypatch.setattr(nf, "_lift", lambda rows, M: [e + 1 for e in lift(rows, M)] if lift(rows, M) else None)
+    assert nf._monic_modular(p, m) is None
+    assert nf.monic(p, m) == q
+    zero = [flint.fmpq_poly(0)] + p[1:]                              # a leading coefficient 0: no inverse
+    with pytest.raises(ZeroDivisionError):
+        nf.monic(zero, m)

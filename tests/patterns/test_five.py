@@ -325,7 +325,7 @@ def test_the_census_command(tmp_path):
     out = run("--particles", "5", "--max-length", "4", "--out", str(tmp_path), "--jobs", "1")
     assert out.returncode == 0 and "4 words up to length 4" in out.stdout, out.stderr
     assert (tmp_path / "CENSUS5.md").is_file() and (tmp_path / "census5.json").is_file()
-    for bad in (["--particles", "5", "--max-length", "11"], ["--particles", "6", "--max-length", "4"],
+    for bad in (["--particles", "5", "--max-length", "12"], ["--particles", "6", "--max-length", "4"],
                 ["--particles", "5", "--max-length", "4", "--scheduler", "x:1"], ["--max-length", "4", "--check"]):
         res = run(*bad, "--out", str(tmp_path))
         assert res.returncode == 2 and len(res.stderr.strip().splitlines()) == 1 and "Traceback" not in res.stderr
