@@ -222,7 +222,7 @@ class Reducer:
         self.Z = LRCTX.from_dict({m: int(c * scale) for m, c in self.C.to_dict().items()})
         self.n, self.L = self.Z.degrees()[0], self.Z.leading_coefficient()
         if self.Z.monoms()[0] != (self.n, 0):
-            raise ArithmeticError("the polynomial reduced by is not monic in κ up to a constant")
+            raise ArithmeticError("a reduction modulo a polynomial not monic in κ up to a constant")
 
     def poly(self, p):
         """An fmpz_mpoly in (κ, r) reduced modulo cp, as (fmpz_mpoly, positive integer scale), over Z:
@@ -238,6 +238,7 @@ class Reducer:
             R, N = -R, -N
         g = N.gcd(R.content())
         return (R / g, N / g) if g != 1 else (R, N)
+
     def __call__(self, F: Frac) -> Frac:
         n, a = self.poly(F.num)
         d, b = self.poly(F.den)

@@ -526,3 +526,31 @@ def test_the_half_route_refuses_other_words():
         res = subprocess.run([sys.executable, "-m", "certify", "pattern", word, "--half"], cwd=ROOT,
                              capture_output=True, text=True)
         assert res.returncode == 2 and "Traceback" not in res.stderr and len(res.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("modulus", ["sextic", "3κ² + rκ - 5/7"])
+def test_the_reduction_modulo_the_sextic_over_z_is_the_reduction_over_q(modulus):
+    """five.Reducer reduces an integer polynomial in (κ, r) modulo cp by a pseudo-division over Z (cp scaled
+    to integer coefficients, leading coefficient L = 2^k for a sextic, 21 for the second modulus): the
+    remainder over Q (fmpq_mpoly's division) written P/d with d the lcm of its denominators, the same P and
+    d, for κ-degrees below, at and far above deg cp."""
+    import random
+
+    import sympy as sp
+
+    from certify.algebra.poly import LRCTX, LRQCTX, lam, r, to_ring
+    ring_cp = five.Sextic.of("abadcbcabc").cp if modulus == "sextic" else \
+        to_ring(3 * lam ** 2 + r * lam - sp.Rational(5, 7))
+    red = five.Reducer(ring_cp)
+    assert red.L == (1024 if modulus == "sextic" else 21)
+    rng = random.Random(7)
+    for _ in range(60):
+        terms = {(rng.randint(0, 14), rng.randint(0, 20)): rng.randint(-10 ** 20, 10 ** 20) * 2 ** rng.randint(0, 30)
+                 for _ in range(rng.randint(1, 12))}
+        p = LRCTX.from_dict(terms)
+        remainder = divmod(LRQCTX.from_dict({m: flint.fmpq(c) for m, c in terms.items()}), red.C)[1]
+        d = flint.fmpz(1)
+        for c in remainder.coeffs():
+            d = d.lcm(c.q)
+        P, scale = red.poly(p)
+        assert scale == d and P == LRCTX.from_dict({m: int(c * d) for m, c in remainder.to_dict().items()})
