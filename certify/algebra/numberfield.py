@@ -76,7 +76,7 @@ def monic(p, m):
     return [reduce(c * inv, m) for c in p]
 
 
-MODULAR_PRIMES = 256     # the most primes :func:`_monic_modular` tries before the xgcd route
+MODULAR_PRIMES = 1024    # the most primes :func:`_monic_modular` lifts from before the xgcd route
 
 
 @functools.cache
@@ -113,13 +113,15 @@ def _rational(a: int, M: int) -> flint.fmpq | None:
 def _monic_modular(p, m) -> list[flint.fmpq_poly] | None:
     """[1, p[1]/p[0], ...] in Q(α)[λ], or None where this route gives up.  Each quotient q is found
     modulo primes P (an inverse in GF(P)[r]/(m)), its coefficients lifted by the Chinese remainder
-    theorem and read as fractions (:func:`_rational`) after 2, 4, 8, ... primes.  A lift that agrees
+    theorem and read as fractions (:func:`_lift`) after 2, 4, 8, ... primes.  A lift that agrees
     with the quotients modulo the next prime is checked exactly, and returned only when p[0]·q ≡ p[i]
     modulo m holds in Q[r] for every i, which makes it the quotient.  The gcds of pseudo-remainders it
     is called on have leading coefficients of 10⁵ digits and quotients of 10³: xgcd over Q pays for the
     first, this route for the second (100× faster)."""
     d, rows, M, used, lifted = m.degree(), [[0] * m.degree() for _ in p[1:]], 1, 0, None
-    for k in range(MODULAR_PRIMES):
+    for k in range(2 * MODULAR_PRIMES):
+        if used >= MODULAR_PRIMES and lifted is None:
+            break
         P = _prime(k)
         quotients = _quotients_modulo(p, m, P)
         if quotients is None:
@@ -160,13 +162,26 @@ def _quotients_modulo(p, m, P: int) -> list[flint.nmod_poly] | None:
 
 
 def _lift(rows: list[list[int]], M: int) -> list[flint.fmpq_poly] | None:
-    """The polynomials whose coefficients are the fractions :func:`_rational` reads in ``rows``
-    (residues modulo M), or None when one is not read."""
-    out = []
+    """The polynomials whose coefficients are fractions read in ``rows`` (residues modulo M), or None
+    when one is not read.  The coefficients of an element of Q(α) share most of their denominator: each
+    residue times the denominator D found so far is read as an integer over D when it is small (at most
+    √(M/2) in absolute value), else as a fraction (:func:`_rational`) whose denominator joins D.  Any
+    reading is only a candidate: :func:`_monic_modular` checks it exactly."""
+    bound = int(flint.fmpz(M // 2).isqrt())
+    out, D = [], 1
     for row in rows:
-        coeffs = [c for c in (_rational(x, M) for x in row) if c is not None]
-        if len(coeffs) < len(row):
-            return None
+        coeffs = []
+        for x in row:
+            y = x * D % M
+            y = y - M if y > M // 2 else y
+            if abs(y) <= bound:
+                coeffs.append(flint.fmpq(y, D))
+                continue
+            c = _rational(y, M)
+            if c is None or D * int(c.q) > bound:
+                return None
+            coeffs.append(flint.fmpq(int(c.p), int(c.q) * D))
+            D *= int(c.q)
         out.append(flint.fmpq_poly(coeffs))
     return out
 
