@@ -1070,3 +1070,17 @@ def test_a_lift_that_fails_its_exact_check_is_never_returned(monkeypatch):
     zero = [flint.fmpq_poly(0)] + p[1:]                              # a leading coefficient 0: no inverse
     with pytest.raises(ZeroDivisionError):
         nf.monic(zero, m)
+
+
+def test_a_quotient_of_ten_thousand_bits_is_lifted():
+    """A quotient whose coefficients have 5000-bit numerators over a common 5000-bit denominator (as the
+    60-letter five-particle word's gcd: 5486 and 5344 bits) needs about 160 primes of 62 bits: it is read
+    with the common denominator, and the lift of the last batch of primes is checked (256 here)."""
+    import random
+    rng = random.Random(3)
+    m = flint.fmpq_poly([-3, 1, 0, 0, 0, 1])                         # r⁵ + r - 3, irreducible
+    D = rng.getrandbits(5000) | 1
+    q = [flint.fmpq_poly(1), flint.fmpq_poly([flint.fmpq(rng.getrandbits(5000) - (1 << 4999), D) for _ in range(5)])]
+    c = flint.fmpq_poly([flint.fmpq(rng.getrandbits(200), rng.getrandbits(200) | 1) for _ in range(5)])
+    p = [nf.reduce(c * e, m) for e in q]
+    assert nf._monic_modular(p, m) == q
