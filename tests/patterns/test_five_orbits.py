@@ -70,7 +70,7 @@ def test_abadcbcabc_attracts_where_it_collapses_stably():
 
 @pytest.mark.slow
 def test_the_nineteen_letter_word_attracts_with_a_complex_pair_above_its_window():
-    """ababcbcdcdbcdbcbabc (about 60 s): a real pair on its stable window ]≈0.2251551606, ≈0.2592407154[, then
+    """ababcbcdcdbcdbcbabc (about 30 s): a real pair on its stable window ]≈0.2251551606, ≈0.2592407154[, then
     a complex pair up to 2 − √3 (not a collapse: the attractor `simulate --particles 5` meets at r = 0.26)."""
     word = "ababcbcdcdbcdbcbabc"
     result = five_orbits.analyse(word)
