@@ -40,6 +40,8 @@ FLOAT_WINDOWS = {
     # 60 letters: the float datum is at its rounding limit (stable at 1131 of 1301 points of ]0.1793, 0.1806[, with
     # scattered gaps); the datum at 50 digits puts the ends at 0.17938467006 and 0.18053842746
     "ababcbcabacbacbcabacbcbdcbcdcbdcdcbcbdcdbcdbcbdcdbcbcabcbabc": (0.179385, 0.180538),
+    # F₁(2)·A, 68 letters: the datum at 50 digits puts the ends at 0.17645855020 and 0.17647846889
+    "abacbcabacbcabcabacbcabacbcbabacbcdcdbcbdcdbcbdcbdcdbcbdcdbcbcdcdbcb": (0.176459, 0.176478),
     # 128 letters: the float datum from N is at its rounding limit (stable at scattered points of
     # ]≈0.17293420, ≈0.17293436[); to 6 decimals it agrees with the certified window
     "abacbacbcabacbcabacbcabacbcabacbcbabacbcdcdbcbdcdbcbdcdbcbdcdbcbdcdbcdbcbdcdbcbdcdbcbdcdbcbdcdbcbcdcdbcbabacbc"
