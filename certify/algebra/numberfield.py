@@ -80,13 +80,13 @@ MODULAR_PRIMES = 1024    # the most primes :func:`_monic_modular` lifts from bef
 
 
 @functools.cache
-def _prime(k: int) -> int:
-    """The k-th prime below 2⁶² (k = 0, 1, ...): the moduli of :func:`_monic_modular`."""
-    q = flint.fmpz(1 << 62) if k == 0 else flint.fmpz(_prime(k - 1))
-    q -= 1
-    while not q.is_prime():
-        q -= 1
-    return int(q)
+def _primes() -> list[int]:
+    """The 2·:data:`MODULAR_PRIMES` largest primes below 2⁶² (SymPy's ``prevprime``), largest first: the
+    moduli of :func:`_monic_modular` (0.1 s, once)."""
+    out = [sp.prevprime(1 << 62)]
+    while len(out) < 2 * MODULAR_PRIMES:
+        out.append(sp.prevprime(out[-1]))
+    return out
 
 
 def _image(c: flint.fmpq_poly, P: int) -> flint.nmod_poly | None:
@@ -119,10 +119,9 @@ def _monic_modular(p, m) -> list[flint.fmpq_poly] | None:
     is called on have leading coefficients of 10⁵ digits and quotients of 10³: xgcd over Q pays for the
     first, this route for the second (100× faster)."""
     d, rows, M, used, lifted = m.degree(), [[0] * m.degree() for _ in p[1:]], 1, 0, None
-    for k in range(2 * MODULAR_PRIMES):
+    for P in _primes():
         if used >= MODULAR_PRIMES and lifted is None:
             break
-        P = _prime(k)
         quotients = _quotients_modulo(p, m, P)
         if quotients is None:
             continue
