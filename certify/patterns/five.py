@@ -215,11 +215,11 @@ class Reducer:
     denominator separately, the same values on every branch κ(r)."""
 
     def __init__(self, ring_cp):
-        self.C = ring_to_lrq(ring_cp)
+        C = ring_to_lrq(ring_cp)
         scale = flint.fmpz(1)
-        for c in self.C.coeffs():
+        for c in C.coeffs():
             scale = scale.lcm(c.q)
-        self.Z = LRCTX.from_dict({m: int(c * scale) for m, c in self.C.to_dict().items()})
+        self.Z = LRCTX.from_dict({m: int(c * scale) for m, c in C.to_dict().items()})
         self.n, self.L = self.Z.degrees()[0], self.Z.leading_coefficient()
         if self.Z.monoms()[0] != (self.n, 0):
             raise ArithmeticError("a reduction modulo a polynomial not monic in κ up to a constant")
@@ -661,31 +661,30 @@ def impose(an: Analysis, q: Requirement) -> None:
         an.impose(q)
 
 
+def _kept(shared: dict | None, key: tuple, make):
+    """``make()``, kept in ``shared`` under ``key`` when ``shared`` is given (see :func:`built`)."""
+    if shared is None:
+        return make()
+    if key not in shared:
+        shared[key] = make()
+    return shared[key]
+
+
 def built(word: str, shared: dict | None = None) -> tuple[Sextic, list]:
     """The :class:`Sextic` of a normal form and its factors (:func:`sextic_factors`), kept in ``shared``
     when given: a dict the caller holds for one word, so that two analyses of it (the census's two parts)
     build them once."""
-    key = ("sextic", word)
-    if shared is not None and key in shared:
-        return shared[key]
-    sextic = Sextic.of(word)
-    out = sextic, sextic_factors(word, sextic)
-    if shared is not None:
-        shared[key] = out
-    return out
+    def make():
+        sextic = Sextic.of(word)
+        return sextic, sextic_factors(word, sextic)
+    return _kept(shared, ("sextic", word), make)
 
 
 def shared_candidate(word: str, factor, sextic: Sextic, shared: dict | None = None) -> FiveCandidate:
     """:func:`five_candidate` of ``word`` for ``factor``, kept in ``shared`` when given (see :func:`built`):
     the second analysis gets the same candidate, whose spectrum has memoised the resultants, the sign
     tables and the branches at critical values that the first one computed (each exact: the same answers)."""
-    key = ("candidate", word, factor)
-    if shared is not None and key in shared:
-        return shared[key]
-    cand = five_candidate(word, factor, sextic)
-    if shared is not None:
-        shared[key] = cand
-    return cand
+    return _kept(shared, ("candidate", word, factor), lambda: five_candidate(word, factor, sextic))
 
 
 def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False, shared: dict | None = None):
@@ -728,9 +727,10 @@ def analyse_five(text: str, lo=0, hi=1, progress=None, half: bool = False, share
         try:
             if multiplicity > 1 and X is not None:
                 raise ArithmeticError("the half route's proof needs κ simple")
+            simple = factor if len(factors) > 1 else None
             cand = (repeated_candidate(run_word, factor, sextic) if multiplicity > 1    # REPEATED_ROUTE: never stable
-                    else five_candidate(run_word, factor if len(factors) > 1 else None, sextic, face) if X is not None
-                    else shared_candidate(run_word, factor if len(factors) > 1 else None, sextic, shared))
+                    else five_candidate(run_word, simple, sextic, face) if X is not None    # the half route's N
+                    else shared_candidate(run_word, simple, sextic, shared))
         except ArithmeticError as e:
             if multiplicity == 1:
                 not_analysed.append({"factor": kappa, "multiplicity": 1, "stable": f"not analysed: {e}"})

@@ -531,24 +531,24 @@ def test_the_half_route_refuses_other_words():
 @pytest.mark.parametrize("modulus", ["sextic", "3κ² + rκ - 5/7"])
 def test_the_reduction_modulo_the_sextic_over_z_is_the_reduction_over_q(modulus):
     """five.Reducer reduces an integer polynomial in (κ, r) modulo cp by a pseudo-division over Z (cp scaled
-    to integer coefficients, leading coefficient L = 2^k for a sextic, 21 for the second modulus): the
-    remainder over Q (fmpq_mpoly's division) written P/d with d the lcm of its denominators, the same P and
-    d, for κ-degrees below, at and far above deg cp."""
+    to integer coefficients, of leading coefficient L > 1 for both moduli: a power of 2 for a sextic, 3·7
+    for the second): the remainder over Q (fmpq_mpoly's division) written P/d with d the lcm of its
+    denominators, the same P and d, for κ-degrees below, at and far above deg cp."""
     import random
 
     import sympy as sp
 
-    from certify.algebra.poly import LRCTX, LRQCTX, lam, r, to_ring
+    from certify.algebra.poly import LRCTX, LRQCTX, lam, r, ring_to_lrq, to_ring
     ring_cp = five.Sextic.of("abadcbcabc").cp if modulus == "sextic" else \
         to_ring(3 * lam ** 2 + r * lam - sp.Rational(5, 7))
-    red = five.Reducer(ring_cp)
-    assert red.L == (1024 if modulus == "sextic" else 21)
+    red, C = five.Reducer(ring_cp), ring_to_lrq(ring_cp)
+    assert red.L > 1                                   # the scaling by L^k is exercised
     rng = random.Random(7)
     for _ in range(60):
         terms = {(rng.randint(0, 14), rng.randint(0, 20)): rng.randint(-10 ** 20, 10 ** 20) * 2 ** rng.randint(0, 30)
                  for _ in range(rng.randint(1, 12))}
         p = LRCTX.from_dict(terms)
-        remainder = divmod(LRQCTX.from_dict({m: flint.fmpq(c) for m, c in terms.items()}), red.C)[1]
+        remainder = divmod(LRQCTX.from_dict({m: flint.fmpq(c) for m, c in terms.items()}), C)[1]
         d = flint.fmpz(1)
         for c in remainder.coeffs():
             d = d.lcm(c.q)
