@@ -256,7 +256,7 @@ def add_word_options(p, word_help: str, schema: str) -> None:
 
 
 MAX_FIVE_LENGTH = 11         # census --particles 5: the classes multiply by about 3 per collision (docs/census.md)
-FIVE_COST = ("the classes multiply by about 3 per collision, 4262 to 10, 11942 to 11 (about 4.5 h of one core); "
+FIVE_COST = ("the classes multiply by about 3 per collision, 4262 to 10, 11942 to 11 (4-6 h of one core); "
              "docs/census.md gives the times")
 
 
