@@ -1111,10 +1111,11 @@ def test_arb_of_gives_the_ball_of_each_reduced_fraction(coeffs, mid, rad, prec):
 
 
 def test_the_gcd_in_the_number_field_is_made_once_for_the_conjugate_critical_values(monkeypatch):
-    """Spectrum._gcd_modulo keeps gcd(cp, h) in Q[r]/(m)[λ] per h and m: at conjugate critical values
-    (roots of one m) the zero tests reuse it.  With the resultant hidden (every test goes to the gcd),
-    the zero tests of abacbcb's conditions with √Δ at the critical values of their tables (one m has
-    two roots in ]0, 1[) are those of a spectrum that computes every gcd again, with fewer gcds."""
+    """Spectrum._gcd_modulo keeps gcd(cp, h) in Q[r]/(m)[λ] per h and m, and _monic_modulo its monic
+    form: at conjugate critical values (roots of one m) the zero tests reuse them.  With the resultant
+    hidden (every test goes to the gcd), the zero tests of abacbcb's conditions with √Δ at the critical
+    values of their tables (one m has two roots in ]0, 1[) are those of a spectrum that computes every
+    gcd again, with fewer gcds made."""
     from certify.algebra.poly import mpoly_to_ring
     from certify.dynamics.systems import candidate_in
     from certify.patterns.feasibility import condition, fixed_point_data, prefix_requirements
@@ -1125,8 +1126,9 @@ def test_the_gcd_in_the_number_field_is_made_once_for_the_conjugate_critical_val
         monkeypatch.setattr(spec, "resultant", lambda g: flint.fmpz_poly(0))
     monkeypatch.setattr(again, "_gcd_modulo",
                         lambda h, hk, m: nf.gcd(nf.kpoly(again.ring_cp, m), hk, m, make_monic=False))
-    gcd, calls = nf.gcd, []
+    gcd, monic, calls = nf.gcd, nf.monic, []                   # the gcds and their monic forms made
     monkeypatch.setattr(nf, "gcd", lambda *a, **k: calls.append(str(a[2])) or gcd(*a, **k))
+    monkeypatch.setattr(nf, "monic", lambda *a: calls.append(str(a[1])) or monic(*a))
     reqs, _ = prefix_requirements("abacbcb", 7, cand.q0, cand.steps, cand.q0_other)
     fps = fixed_point_data(cand.abcd_ring, base.ring_cp)
     conds = [condition(req, base.lrq_cp, fp) for req in reqs if req.has_x for fp in fps]
