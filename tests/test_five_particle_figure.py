@@ -42,6 +42,9 @@ FLOAT_WINDOWS = {
     "ababcbcabacbacbcabacbcbdcbcdcbdcdcbcbdcdbcdbcbdcdbcbcabcbabc": (0.179385, 0.180538),
     # F₁(2)·A, 68 letters: the datum at 50 digits puts the ends at 0.17645855020 and 0.17647846889
     "abacbcabacbcabcabacbcabacbcbabacbcdcdbcbdcdbcbdcbdcdbcbdcdbcbcdcdbcb": (0.176459, 0.176478),
+    # F₁(3)·A, 92 letters: the datum at 50 digits puts the ends at 0.17423689616 and 0.17423864553
+    "abacbcabacbcabacbcabcabacbcabacbcabacbcbabacbcdcdbcbdcdbcbdcdbcbdcbdcdbcbdcdbcbdcdbcbcdcdbcb":
+        (0.174237, 0.174239),
     # 128 letters: the float datum from N is at its rounding limit (stable at scattered points of
     # ]≈0.17293420, ≈0.17293436[); to 6 decimals it agrees with the certified window
     "abacbacbcabacbcabacbcabacbcabacbcbabacbcdcdbcbdcdbcbdcdbcbdcdbcbdcdbcdbcbdcdbcbdcdbcbdcdbcbdcdbcbcdcdbcbabacbc"
@@ -117,6 +120,18 @@ def test_the_family_of_f2_is_certified_for_k_1_to_4():
     rows = five_figure.family_rows(results, core, range(1, 6))
     assert [len(w) for _k, w, _s in rows] == [24 * k + 32 for k in range(1, 6)] and rows[-1][2] is None
     assert all(windows for _k, _w, windows in rows[:4])
+
+
+def test_the_family_of_f1_is_certified_for_k_2_and_3():
+    """X_k = A^k·abc·A^k·b·A, W_k = X_k·m(X_k): the committed results of k = 2, 3 (68, 92 letters) each have
+    one certified stable window, the second strictly below the first, each in its rule interval; without
+    member 3 the check names it."""
+    from certify.patterns.five import FAMILY_CORES, family_word
+    results, core = committed(), FAMILY_CORES["F₁"]
+    assert five_figure.family_problems(results, core, range(2, 4)) == []
+    w3 = family_word(core, 3)
+    assert five_figure.family_problems({w: d for w, d in results.items() if w != w3}, core, range(2, 4)) == [
+        f"k = 3: {w3} has no certified stable window (one interval)"]
 
 
 def test_a_family_member_dropped_or_out_of_order_is_named():

@@ -626,6 +626,8 @@ class Spectrum:
         #                                    (branch, maxprec) -> whether h vanishes on it)
         self._sqf = {}                     # key of rc -> the squarefree part of cp(rc, λ) in Q(rc)[λ]
         self._sqf_modulo = {}              # str of m -> (that part in Q[r]/(m)[λ], gcd(cp, cp'))
+        self._gcds = {}                    # (h or id of h, str of m) -> (h, gcd(cp, h) in Q[r]/(m)[λ] as it comes)
+        self._monics = {}                  # id of such a gcd G -> [G, G monic, its squarefree part or None]
         self._resultant_ids = {}           # id of h -> (h, Res_λ(h, cp))
         self._norms = {}                   # ids of (P₀, P₁, Δ) -> (P₀, P₁, Δ, norm(P₀, P₁, Δ))
         self._checked = {}                 # id of a factor -> (it, its real roots counted both ways)
@@ -1025,7 +1027,7 @@ class Spectrum:
                 single = self._single_common_root(h, rc)
                 if single is not None:
                     return single
-        G = nf.gcd(nf.kpoly(self.ring_cp, m), hk, m, make_monic=False)
+        G = self._gcd_modulo(h, hk, m)
         if len(G) == 1:
             return False
         if len(G) == 2 or len(G) == 3 and nf.squarefree_quadratic(G, m):
@@ -1033,10 +1035,32 @@ class Spectrum:
             # those enclosures leave the zero test undecided, those of the monic gcd (an inverse)
             def roots(prec):
                 return nf.real_roots(G, rc, prec)
-            roots.fallback = lambda: _monic_roots(G, m, rc)   # type: ignore[attr-defined]
+            roots.fallback = lambda: _monic_roots(self._monic_modulo(G, m), rc)   # type: ignore[attr-defined]
             return roots
-        G, _ = nf.squarefree(nf.monic(G, m), m)
+        G = self._monic_modulo(G, m, squarefree=True)
         return lambda prec: nf.real_roots(G, rc, prec)
+
+    def _gcd_modulo(self, h, hk, m):
+        """gcd(cp, h) in Q[r]/(m)[λ] as it comes (``nf.gcd``, not monic; hk = h in Q[r]/(m)[λ]), once
+        per h and m: the gcd is computed in Q[r]/(m), so it is the same object at every root of m (a
+        critical value's conjugates are critical values too)."""
+        key = (h if isinstance(h, PolyElement) else id(h), str(m))
+        entry = self._gcds.get(key)
+        if entry is None or entry[0] is not h and not isinstance(h, PolyElement):
+            entry = self._gcds[key] = (h, nf.gcd(nf.kpoly(self.ring_cp, m), hk, m, make_monic=False))
+        return entry[1]
+
+    def _monic_modulo(self, G, m, squarefree: bool = False):
+        """G (a gcd of :meth:`_gcd_modulo`) made monic in Q[r]/(m)[λ] (``nf.monic``), or its squarefree
+        part, once per G: the same at every root of m."""
+        entry = self._monics.get(id(G))
+        if entry is None or entry[0] is not G:
+            entry = self._monics[id(G)] = [G, nf.monic(G, m), None]
+        if not squarefree:
+            return entry[1]
+        if entry[2] is None:
+            entry[2] = nf.squarefree(entry[1], m)[0]
+        return entry[2]
 
     def _norm_of(self, P0, P1, delta, M=None, R=None):
         """:func:`norm` of P₀ + P₁√Δ, memoised by the identity of the three (the same object
@@ -1260,9 +1284,8 @@ def _zero_routes(G):
         yield G.monic
 
 
-def _monic_roots(G, m, rc):
-    """prec -> the real roots of G ∈ Q(rc)[λ] (squarefree), enclosed from G made monic."""
-    M = nf.monic(G, m)
+def _monic_roots(M, rc):
+    """prec -> the real roots of a gcd G ∈ Q(rc)[λ] (squarefree) enclosed from M, G made monic."""
     return lambda prec: nf.real_roots(M, rc, prec)
 
 
