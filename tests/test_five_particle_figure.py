@@ -132,6 +132,13 @@ def test_the_family_of_f1_is_certified_for_k_2_to_4():
     from certify.patterns.five import FAMILY_CORES, family_word
     results, core = committed(), FAMILY_CORES["F₁"]
     assert five_figure.family_problems(results, core, range(2, 5)) == []
+    # the ends to 10 decimals, as the datum at 50 digits puts them (6 decimals, FLOAT_WINDOWS, do not
+    # separate F₁(4)·A's ends, 3·10⁻⁷ apart)
+    rows = dict(five_figure.five_particle_windows(results))
+    for k, ends in ((2, (0.17645855020, 0.17647846889)), (3, (0.17423689616, 0.17423864553)),
+                    (4, (0.17323577081, 0.17323607271))):
+        windows = rows[family_word(core, k)]
+        assert [windows[0][0], windows[-1][1]] == pytest.approx(ends, abs=1e-10), k
     w3 = family_word(core, 3)
     assert five_figure.family_problems({w: d for w, d in results.items() if w != w3}, core, range(2, 5)) == [
         f"k = 3: {w3} has no certified stable window (one interval)"]
