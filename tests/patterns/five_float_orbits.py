@@ -43,8 +43,11 @@ def orbits(word: str, r: flint.fmpq, tol: float = 1e-9) -> list[tuple[float, boo
     """(κ, feasible, kind) for each simple real κ > 0 of Λ²M whose eigenvector, oriented, lies in the
     face of the last letter: feasible when the plane's run follows the word; kind 'real' or 'complex'
     when the feasible orbit attracts, else None."""
-    M = matrix(word, r)
-    steps = [compound(matrix(c, r)) for c in LETTERS]
+    return orbits_of(word, matrix(word, r), [compound(matrix(c, r)) for c in LETTERS], tol)
+
+
+def orbits_of(word: str, M: np.ndarray, steps: list, tol: float = 1e-9) -> list[tuple[float, bool, str | None]]:
+    """:func:`orbits` from M = M_word and the letters' Λ²M_c (``steps``, in the order a, b, c, d), as floats."""
     values, vectors = np.linalg.eig(compound(M))
     ev = np.linalg.eigvals(M)
     Y = LETTERS.index(word[-1])
