@@ -32,7 +32,6 @@ sys.path.insert(0, str(ROOT))
 
 import flint  # noqa: E402
 
-from certify.dynamics.systems import of_particles, system_matrix_flint  # noqa: E402
 from certify.patterns.five import word_classes  # noqa: E402
 from certify.run.files import write_atomic  # noqa: E402
 from certify.run.progress import Bar  # noqa: E402
@@ -48,18 +47,14 @@ def grid(points: int) -> list[flint.fmpq]:
 
 def letter_matrices(rs: list[flint.fmpq]) -> dict[str, np.ndarray]:
     """For each letter, its matrix at every r of the grid, shape (len(rs), 4, 4): exact at r, then floats."""
-    system = of_particles(5)
-    out = {}
-    for c in LETTERS:
-        K = system_matrix_flint(system, c)
-        out[c] = np.array([[[float(e(r)) for e in row] for row in K] for r in rs])
-    return out
+    return {c: np.array([floats.matrix(c, r) for r in rs]) for c in LETTERS}
 
 
 def candidates(word: str, K: dict[str, np.ndarray], steps: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """M_w at every r (M_w = K_last ⋯ K_first) and the indices of the r where an attracting orbit may be:
     the two eigenvalues λ, μ of largest modulus dominate the other two, κ = λμ is real and positive, and
-    the plane of λ, μ (the bivector u∧v of their eigenvectors, made real) lies in the face of the last
+    the plane of λ, μ (the bivector u∧v of their eigenvectors, made real; its coordinates ω_km read by
+five_float_orbits.entry on the transpose, one row per r) lies in the face of the last
     letter and its run follows the word.  A filter, in numpy over the whole grid at once; each index it
     keeps is checked again by :func:`attractors`.  ``steps``: the letters' Λ²K_c, shape (R, 4, 6, 6)."""
     M = K[word[0]]
@@ -77,7 +72,7 @@ def candidates(word: str, K: dict[str, np.ndarray], steps: np.ndarray) -> tuple[
     big = w[np.arange(len(w)), np.argmax(np.abs(w), axis=1)]
     w = (w / np.where(big == 0, 1, big)[:, None]).real
     Y = LETTERS.index(word[-1])
-    face = np.stack([-_entry(w, Y, j) for j in range(4) if j != Y], axis=1)
+    face = np.stack([-floats.entry(w.T, Y, j) for j in range(4) if j != Y], axis=1)
     keep &= np.all(face > 1e-12, axis=1) | np.all(face < -1e-12, axis=1)
     w = w * np.sign(face[:, :1])
     i = Y
@@ -86,15 +81,10 @@ def candidates(word: str, K: dict[str, np.ndarray], steps: np.ndarray) -> tuple[
         scale = np.max(np.abs(w), axis=1)
         for m in range(4):
             if m not in (i, j):
-                keep &= _entry(w, j, m) > 1e-12 * scale
+                keep &= floats.entry(w.T, j, m) > 1e-12 * scale
         w = np.einsum("rij,rj->ri", steps[:, j], w)
         i = j
     return M, np.nonzero(keep)[0]
-
-
-def _entry(w: np.ndarray, k: int, m: int) -> np.ndarray:
-    """ω_km for k ≠ m at every r (w: shape (R, 6), coordinates ω_kl, k < l)."""
-    return w[:, floats.PAIRS.index((k, m))] if k < m else -w[:, floats.PAIRS.index((m, k))]
 
 
 def attractors(word: str, K: dict[str, np.ndarray], steps: np.ndarray) -> dict[str, list[int]]:
@@ -121,6 +111,7 @@ def runs(indices: list[int]) -> list[tuple[int, int]]:
 
 
 _STATE: dict = {}
+CHUNK = 200                      # words per job
 
 
 def _setup(points: int) -> None:
@@ -146,12 +137,12 @@ def main(argv=None) -> int:
         return 2
     start = time.perf_counter()
     words = [w for w in word_classes(args.length) if len(w) == args.length]
-    chunks = [words[i:i + 200] for i in range(0, len(words), 200)]
+    chunks = [words[i:i + CHUNK] for i in range(0, len(words), CHUNK)]
     bar, found = Bar("word"), []
     with multiprocessing.Pool(args.jobs, _setup, (args.points,)) as pool:
         for k, part in enumerate(pool.imap(_job, chunks), 1):
             found += part
-            bar(min(200 * k, len(words)), len(words))
+            bar(min(CHUNK * k, len(words)), len(words))
     seconds = time.perf_counter() - start
     step = 1 / (args.points + 1)
     print(f"{len(words)} words of {args.length}, {args.points} r in ]0, 1[ (step {step:.2g}): "
