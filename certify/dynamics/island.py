@@ -75,14 +75,16 @@ def quadratic_form(u, v, r):
 def c_max(r):
     """c_max = 1 − (1−r)²/(4r), the level of the island's boundary ellipse (the last exact r's
     kept: the scans ask it of one fmpq object at every state at b; an fmpq is immutable)."""
+    global _LAST
     if type(r) is flint.fmpq:
-        if _LAST[0] is not r:
-            _LAST[:] = [r, 1 - (1 - r) * (1 - r) / (4 * r)]
-        return _LAST[1]
+        last = _LAST                 # one read of an immutable pair: safe between threads
+        if last[0] is not r:
+            last = _LAST = (r, 1 - (1 - r) * (1 - r) / (4 * r))
+        return last[1]
     return 1 - (1 - r) * (1 - r) / (4 * r)        # x * x: an arb x ** 2 is nan when x holds 0
 
 
-_LAST: list = [None, None]       # (r, c_max(r)) of the last exact r asked
+_LAST: tuple = (None, None)      # (r, c_max(r)) of the last exact r asked
 
 
 def matrix_A(r) -> tuple:
