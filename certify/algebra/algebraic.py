@@ -21,7 +21,7 @@ from certify.errors import UNDECIDED, Undecided
 
 from .balls import GUARD, decide, precision
 from .poly import Q, from_flint, parse, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
-from .sturm import count_roots, flint_real_roots, isolate, refine, sturm_count
+from .sturm import complex_roots, count_roots, flint_real_roots, isolate, isolated_real_root, refine, sturm_count
 
 _ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
 caches.register(_ISOLATED.clear)
@@ -355,9 +355,14 @@ caches.register(_ROOTS.clear)
 
 
 def _root_ball(p, lo, hi, prec: int):
-    """The real root of p in ]lo, hi[ as a ball of radius ≤ 2^-prec, from python-flint's
-    certified complex root isolation at working precision ~prec (memoised per p and
-    precision); None when that does not single out one real ball inside ]lo, hi[."""
+    """The real root of p in ]lo, hi[ as a ball of radius ≤ 2^-prec: refined by
+    :func:`_newton_ball` from the ball of an isolation of p made already, else from
+    python-flint's certified complex root isolation at working precision ~prec (memoised
+    per p and precision); None when that does not single out one real ball inside ]lo, hi[."""
+    known = isolated_real_root(p, lo, hi)                 # p isolated already: refine its ball
+    ball = _newton_ball(p, known, prec) if known is not None else None
+    if ball is not None:
+        return ball
     key = (poly_key(p), prec)
     roots = _ROOTS.get(key)
     if roots is None:
@@ -436,9 +441,9 @@ def _enclosures(p, prec: int) -> list:
         if len(_ENCLOSURES) > 4096:
             _ENCLOSURES.clear()
         out = []
-        with precision(prec + GUARD):
+        with precision(prec + GUARD):                      # at 64 bits, the isolation count_roots made
             try:
-                roots = [c.real for c, _m in flint.fmpz_poly(p).complex_roots() if c.imag.is_zero()]  # type: ignore[misc, has-type]  # stub says list[acb]; it returns (acb, multiplicity) pairs
+                roots = [c.real for c, _m in complex_roots(p) if c.imag.is_zero()]
             except (ValueError, ArithmeticError):
                 roots = []
         for z in roots:

@@ -130,10 +130,13 @@ caches.register(_COMPLEX.clear)
 BALL_BITS = 64 + 30              # the working precision of the root balls of both uses below
 
 
-def _complex_roots(P: flint.fmpz_poly) -> list:
+def complex_roots(P) -> list:
     """python-flint's certified complex roots of P, (acb, multiplicity) pairs, at the current
-    working precision; memoised (the enclosures of :func:`count_roots` and the second
-    route's count, :func:`flint_real_roots`, isolate the same factors)."""
+    working precision; memoised by the primitive integer polynomial proportional to P, so
+    every caller shares one isolation of a polynomial (the enclosures of :func:`count_roots`,
+    the second route's count, :func:`flint_real_roots`, and the balls of algebraic numbers
+    isolate the same factors)."""
+    P = primitive(P)
     key = (poly_key(P), flint.ctx.prec)
     out = _COMPLEX.get(key)
     if out is None:
@@ -141,6 +144,27 @@ def _complex_roots(P: flint.fmpz_poly) -> list:
             _COMPLEX.clear()
         out = _COMPLEX[key] = P.complex_roots()
     return out
+
+
+def isolated_real_root(p, lo, hi):
+    """The real root ball of p inside ]lo, hi[ from an isolation of p already made at the
+    working precision of the root balls (``BALL_BITS``), when that isolation holds exactly
+    one real ball inside ]lo, hi[, it is a simple root, and no ball straddles an end; else
+    None (nothing is isolated here: the caller isolates)."""
+    roots = _COMPLEX.get((poly_key(primitive(p)), BALL_BITS))
+    if roots is None:
+        return None
+    hits = []
+    for c, m in roots:
+        if not c.imag.is_zero():
+            continue
+        x = c.real
+        a, b = x.mid().fmpq() - x.rad().fmpq(), x.mid().fmpq() + x.rad().fmpq()
+        if lo < a and b < hi:
+            hits.append((x, m))
+        elif not (b < lo or a > hi):
+            return None
+    return hits[0][0] if len(hits) == 1 and hits[0][1] == 1 else None
 
 
 def _root_enclosures(seq):
@@ -162,7 +186,7 @@ def _root_enclosures(seq):
     out = None
     try:
         with precision(BALL_BITS):
-            roots = [c.real for c, _m in _complex_roots(p0.numer()) if c.imag.is_zero()]
+            roots = [c.real for c, _m in complex_roots(p0.numer()) if c.imag.is_zero()]
         cand = []
         for z in roots:
             m, d = z.mid().fmpq(), z.rad().fmpq()
@@ -355,7 +379,7 @@ def flint_real_roots(p, a=None, b=None) -> list[flint.arb]:
     the exact rational ends of the balls (ValueError when two balls overlap)."""
     P = squarefree_part(primitive(flint.fmpq_poly(p)))
     out = []
-    roots: list[tuple[flint.acb, int]] = _complex_roots(P)  # type: ignore[assignment]  # stub says list[acb]; it returns (acb, multiplicity) pairs
+    roots: list[tuple[flint.acb, int]] = complex_roots(P)  # type: ignore[assignment]  # stub says list[acb]; it returns (acb, multiplicity) pairs
     for c, _m in roots:
         if not c.imag.is_zero():
             continue

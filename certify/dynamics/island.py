@@ -54,7 +54,8 @@ from .simulate import Undecided, sign
 def chart(n) -> tuple:
     """(u, v) of an oriented normal n at b, in the ring of n (fmpq for an integer or
     rational n, arb for a ball)."""
-    n = tuple(flint.fmpq(z) if isinstance(z, (int, flint.fmpz)) else z for z in n)
+    if not (type(n[0]) is type(n[1]) is type(n[2]) is flint.arb):    # a ball normal as it is (the scans' case)
+        n = tuple(flint.fmpq(z) if isinstance(z, (int, flint.fmpz)) else z for z in n)
     d = n[2] - n[0]
     if sign(d) <= 0:
         raise ValueError(f"n = {n} is not an oriented normal inside the face b (n_z − n_x ≤ 0)")
@@ -72,8 +73,18 @@ def quadratic_form(u, v, r):
 
 
 def c_max(r):
-    """c_max = 1 − (1−r)²/(4r), the level of the island's boundary ellipse."""
+    """c_max = 1 − (1−r)²/(4r), the level of the island's boundary ellipse (the last exact r's
+    kept: the scans ask it of one fmpq object at every state at b; an fmpq is immutable)."""
+    global _LAST
+    if type(r) is flint.fmpq:
+        last = _LAST                 # one read of an immutable pair: safe between threads
+        if last[0] is not r:
+            last = _LAST = (r, 1 - (1 - r) * (1 - r) / (4 * r))
+        return last[1]
     return 1 - (1 - r) * (1 - r) / (4 * r)        # x * x: an arb x ** 2 is nan when x holds 0
+
+
+_LAST: tuple = (None, None)      # (r, c_max(r)) of the last exact r asked
 
 
 def matrix_A(r) -> tuple:

@@ -797,6 +797,34 @@ def test_a_ball_refined_by_interval_newton_holds_the_root_at_the_precision_asked
     assert _newton_ball(a.p, flint.arb(0, 10), 128) is None       # p' vanishes on a ball that wide
 
 
+def test_a_ball_of_a_polynomial_isolated_already_is_refined_not_isolated_again(monkeypatch):
+    """Once p's roots are isolated at the root balls' working precision (count_roots's
+    enclosures, the second route's count), a ball of one of its roots at any precision is
+    refined from that isolation by interval Newton: python-flint's root isolation is not
+    called again, and the ball holds the root (p changes sign across its rational ends)."""
+    import certify.algebra.sturm as sturm
+    from certify.algebra.algebraic import _root_ball
+    from certify.algebra.balls import precision
+    p = flint.fmpz_poly([5, -50, 107, -188, 107, -50, 5])
+    monkeypatch.setattr(sturm, "_COMPLEX", {})
+    assert sturm.isolated_real_root(p, 0, 1) is None                  # nothing isolated yet
+    with precision(sturm.BALL_BITS):
+        sturm.complex_roots(-3 * p)                                    # the same isolation, p's multiple
+    a = Algebraic.roots(p, 0, 1)[0]
+    assert sturm.isolated_real_root(p, 0, 1) is not None
+    assert sturm.isolated_real_root(p, 0, 10) is None                  # two real roots in ]0, 10[
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("root finder called")
+    monkeypatch.setattr(flint.fmpz_poly, "complex_roots", refuse, raising=False)
+    monkeypatch.setattr(flint.fmpq_poly, "complex_roots", refuse, raising=False)
+    for prec in (64, 300):
+        z = _root_ball(p, a.lo, a.hi, prec)
+        assert z is not None and z.rad() <= flint.arb(2) ** -prec
+        lo, hi = z.mid().fmpq() - z.rad().fmpq(), z.mid().fmpq() + z.rad().fmpq()
+        assert a.lo < lo and hi < a.hi and (p(lo) > 0) != (p(hi) > 0)
+
+
 # ---------------------------------------------------------------- helpers moved here from the proofs
 def test_sign_table_changes_and_keeps_sign_at_a_critical_value():
     """λ² = r: the branches ±√r; g = λ - 1/2 vanishes on the upper branch at r = 1/4 (√r = 1/2)

@@ -44,3 +44,11 @@ def test_exact_states_and_states_not_at_b():
     assert not island.inside((-3, 1, 1), r)                  # Q = 9/10 > c_max
     assert not island.inside((1, 0, 1), r)                   # n_z − n_x = 0: not a state inside the face b
     assert not island.inside((flint.arb(0, 1), flint.arb(0), flint.arb(1)), r)    # n_z − n_x not decided
+
+
+def test_c_max_of_exact_r_asked_in_turn_is_each_r_own():
+    """c_max keeps the last exact r's value: asked of r, r', r again (and of a ball between),
+    each answer is 1 − (1−r)²/(4r) of the r asked."""
+    for r in RS + RS[::-1] + [flint.fmpq(3, 10)]:
+        assert island.c_max(r) == 1 - (1 - r) ** 2 / (4 * r)
+        assert island.c_max(flint.arb(r)).contains(1 - (1 - r) ** 2 / (4 * r))
