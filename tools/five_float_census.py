@@ -54,8 +54,8 @@ def candidates(word: str, K: dict[str, np.ndarray], steps: np.ndarray) -> tuple[
     """M_w at every r (M_w = K_last ⋯ K_first) and the indices of the r where an attracting orbit may be:
     the two eigenvalues λ, μ of largest modulus dominate the other two, κ = λμ is real and positive, and
     the plane of λ, μ (the bivector u∧v of their eigenvectors, made real; its coordinates ω_km read by
-five_float_orbits.entry on the transpose, one row per r) lies in the face of the last
-    letter and its run follows the word.  A filter, in numpy over the whole grid at once; each index it
+    five_float_orbits.entry on the transpose, one row per r) lies in the face of the last letter and its
+    run follows the word.  A filter, in numpy over the whole grid at once; each index it
     keeps is checked again by :func:`attractors`.  ``steps``: the letters' Λ²K_c, shape (R, 4, 6, 6)."""
     M = K[word[0]]
     for c in word[1:]:

@@ -21,7 +21,16 @@ from certify.errors import UNDECIDED, Undecided
 
 from .balls import GUARD, decide, precision
 from .poly import Q, from_flint, parse, poly_key, primitive, show, squarefree_part, to_fmpq, to_fmpz_poly
-from .sturm import complex_roots, count_roots, flint_real_roots, isolate, isolated_real_root, refine, sturm_count
+from .sturm import (
+    complex_roots,
+    count_roots,
+    flint_real_roots,
+    isolate,
+    isolated_real_root,
+    real_ball_inside,
+    refine,
+    sturm_count,
+)
 
 _ISOLATED: dict = {}             # (p, a, b) -> its roots in ]a, b[ as first isolated (copied out)
 caches.register(_ISOLATED.clear)
@@ -350,41 +359,25 @@ class Algebraic:
         return f"Algebraic({self.describe()})"
 
 
-_ROOTS: dict = {}
-caches.register(_ROOTS.clear)
-
-
 def _root_ball(p, lo, hi, prec: int):
     """The real root of p in ]lo, hi[ as a ball of radius ≤ 2^-prec: refined by
     :func:`_newton_ball` from the ball of an isolation of p made already, else from
-    python-flint's certified complex root isolation at working precision ~prec (memoised
-    per p and precision); None when that does not single out one real ball inside ]lo, hi[."""
+    python-flint's certified complex root isolation at working precision ~prec (shared with
+    every user, :func:`~certify.algebra.sturm.complex_roots`); None when that does not single
+    out one real ball inside ]lo, hi[."""
     known = isolated_real_root(p, lo, hi)                 # p isolated already: refine its ball
     ball = _newton_ball(p, known, prec) if known is not None else None
     if ball is not None:
         return ball
-    key = (poly_key(p), prec)
-    roots = _ROOTS.get(key)
-    if roots is None:
-        if len(_ROOTS) > 2048:
-            _ROOTS.clear()
-        with precision(prec + GUARD + 16):
-            try:
-                roots = [c.real for c, _m in flint.fmpz_poly(p).complex_roots() if c.imag.is_zero()]  # type: ignore[misc, has-type]  # stub says list[acb]; it returns (acb, multiplicity) pairs
-            except (ValueError, ArithmeticError):
-                roots = []
-        _ROOTS[key] = roots
-    hits = []
-    for z in roots:
-        m, d = z.mid().fmpq(), z.rad().fmpq()
-        if lo < m - d and m + d < hi:
-            hits.append((z, d))
-        elif not (m + d < lo or m - d > hi):
-            return None                      # a ball across an end: undecided here
-    if len(hits) != 1 or hits[0][1] > Q(1, 2 ** prec):
+    with precision(prec + GUARD + 16):
+        try:
+            hit = real_ball_inside(complex_roots(p), lo, hi)
+        except (ValueError, ArithmeticError):
+            hit = None
+    if hit is None or hit[0].rad().fmpq() > Q(1, 2 ** prec):
         return None
-    z, d = hits[0]
-    m = z.mid().fmpq()
+    z = hit[0]
+    m, d = z.mid().fmpq(), z.rad().fmpq()
     a, b = m - d, m + d
     pa, pb = p(a), p(b)                     # exact: the ball's ends bracket a sign change of p
     if pa == 0 or pb == 0 or (pa > 0) == (pb > 0):

@@ -152,8 +152,14 @@ def isolated_real_root(p, lo, hi):
     one real ball inside ]lo, hi[, it is a simple root, and no ball straddles an end; else
     None (nothing is isolated here: the caller isolates)."""
     roots = _COMPLEX.get((poly_key(primitive(p)), BALL_BITS))
-    if roots is None:
-        return None
+    hit = real_ball_inside(roots, lo, hi) if roots is not None else None
+    return hit[0] if hit is not None and hit[1] == 1 else None
+
+
+def real_ball_inside(roots, lo, hi):
+    """(x, multiplicity) of the one real ball x among python-flint's roots (acb, multiplicity)
+    that lies strictly inside ]lo, hi[ (rational ends); None when there is none, more than
+    one, or a real ball straddles an end (undecided here)."""
     hits = []
     for c, m in roots:
         if not c.imag.is_zero():
@@ -164,7 +170,7 @@ def isolated_real_root(p, lo, hi):
             hits.append((x, m))
         elif not (b < lo or a > hi):
             return None
-    return hits[0][0] if len(hits) == 1 and hits[0][1] == 1 else None
+    return hits[0] if len(hits) == 1 else None
 
 
 def _root_enclosures(seq):
