@@ -303,6 +303,7 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
         yield last
     history: list[int] = []
     attempt = LEAP_EVERY
+    refused: set[str] = set()           # blocks whose period matrix does not repel at r: not tried again
 
     def leapt() -> bool:
         """A proved leap from the current state (``leap``), taken; whether one was."""
@@ -313,7 +314,7 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
         if block is None:
             return False
         until = min(collisions, leap.get("until", collisions))
-        jump = leap_along(prod.mats, i, n, block, (until - done) // len(block), prec)
+        jump = leap_along(prod.mats, i, n, block, (until - done) // len(block), prec, refused)
         if jump is None:
             return False
         leap.setdefault("leaps", []).append((done, jump.J, jump.length, jump.rate))

@@ -119,13 +119,15 @@ def _follows(mats: list, i: int, n, block: str) -> list | None:
     return products
 
 
-def leap_along(mats: list, i: int, n, block: str, most: int, prec: int) -> Leap | None:
+def leap_along(mats: list, i: int, n, block: str, most: int, prec: int, refused: set | None = None) -> Leap | None:
     """The longest proved leap (module docstring) of at most ``most`` periods of ``block`` from
     the ball state n at contact i (block[-1] = LETTERS[i]; ``mats`` the integer cofactor matrices
     of a, b, c, fmpz_mat), or None (the period from n does not
-    follow the block, the block does not repel, or fewer than :data:`LEAP_MIN` periods are proved)."""
+    follow the block, the block does not repel, or fewer than :data:`LEAP_MIN` periods are proved).
+    ``refused``: the blocks whose period matrix at this r is not proved to repel, added to and read
+    (they are not tried again: N depends on the block and r only)."""
     extra = -(-LEAP_MARGIN // len(block)) + 1          # periods proved beyond the leap
-    if most < LEAP_MIN or LETTERS[i] != block[-1]:
+    if most < LEAP_MIN or LETTERS[i] != block[-1] or (refused is not None and block in refused):
         return None
     with precision(max(prec, LEAP_BITS)):
         C = _follows(mats, i, n, block)
@@ -138,10 +140,11 @@ def leap_along(mats: list, i: int, n, block: str, most: int, prec: int) -> Leap 
         except (ValueError, ZeroDivisionError):    # eigenvalues not isolated, R not inverted, at this precision
             return None
         real = [a for a in range(3) if all(not E[a].conjugate().overlaps(E[b]) for b in range(3) if b != a)]
-        if not real:
-            return None
+        repelling = [a for a in real if all(abs(E[b] / E[a]) > 1 for b in range(3) if b != a)]
+        if not repelling and refused is not None:
+            refused.add(block)
         best = None
-        for a in real:
+        for a in repelling:
             J = _periods(C[:-1], E, R, Rinv, a, n, most + extra)
             if J is not None and (best is None or J[0] > best[0]):
                 best = (J[0], J[1], a)

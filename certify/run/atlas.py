@@ -79,7 +79,7 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 7
+VERSION = 8
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
@@ -1222,7 +1222,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
                f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
            + f" (a long transient: its word attracts at r; a long transient and a run with no period at all are run "
            f"again {LATE}× longer, a run with no period above 3−2√2 and a run repeating a word not attracting at r "
-           f"{LONGER}× longer, and "
+           f"{LONGER}× longer, then, when that word repels slowly, over {SPIRAL_EFOLDS} e-folds of its repulsion (up "
+           f"to {SPIRAL_MAX}× longer; the ball scan leaps over the winding, proved), and "
            f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so "
            "(identify's proof on the longer run) and are counted in their class; near a certified horseshoe: its "
            "float64 run enters a box of the horseshoe proved at r; a word not "

@@ -117,3 +117,19 @@ def test_identify_certifies_from_the_collision_of_a_scan_of_every_state(monkeypa
 def test_the_margin_covers_every_block_identify_decides():
     """A skipped state is in no trapping ellipse of a word identify decides (module docstring of leaps)."""
     assert ident.MAX_ANALYSED + 1 <= leaps.LEAP_MARGIN
+
+
+def test_a_block_that_does_not_repel_is_refused_once_for_all():
+    """At r = 3/10 the orbit is attracted by abacbabcbcabcb with a complex in-plane pair: the one real
+    eigenvalue of its period matrix dominates, nothing repels, and leap_along refuses the block and
+    records it (a second call returns at once).  Along (ab)^2(cb)^2 at r = 7187/50000 (three real
+    eigenvalues) the least one repels, so the block is not refused: the state is near the attracting
+    eigenvector, and no leap is proved from it."""
+    for r, refuse in ((fmpq(3, 10), True), (fmpq(7187, 50000), False)):
+        states = list(engines.ball_states(r, 0.5235987755982988, 0.6283185307179586, 4096))
+        block = leaps.period_of("".join("abc"[j] for _, j, _, _ in states[1:]))
+        k, j, n, bits = states[-1]
+        assert block is not None and len(block) == (14 if refuse else 8)
+        refused: set = set()
+        assert leaps.leap_along(_mats(r), j, n, block, 10 ** 9, bits, refused) is None
+        assert refused == ({block} if refuse else set())
