@@ -862,6 +862,33 @@ def test_the_committed_atlas_long_blocks_and_sixteen_times_longer_runs_check():
     assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
 
 
+def test_the_committed_atlas_spiral_runs_check():
+    """reports/atlas.json (rule 5): the orbit of the least r that only the run over four e-folds of
+    abcb's repulsion proves (32× the first run, past the 16× run) is proved again by identify from
+    the same collision; marked unresolved as its 16× run leaves it, or certified from a collision of
+    the 16× run, the check fails."""
+    doc = _committed(8)
+    collisions = doc["parameters"]["collisions"]
+    spiral = [(row, o) for row in doc["r"] for o in row["orbits"]
+              if (o["rerun"] or 0) > atlas.LONGER * collisions and o["class"] != atlas.UNRESOLVED]
+    assert len(spiral) > 500
+    row, o = min(spiral, key=lambda ro: (ro[1]["rerun"], Fraction(ro[0]["r"])))
+    assert o["rerun"] == 2 * atlas.LONGER * collisions and o["certified_from"] > atlas.LONGER * collisions // 4
+    sub = {**row, "orbits": [o], "counts": atlas._counts([o]), "total": 1}
+    assert atlas.check_orbits(doc, [sub]) == []
+    fq = atlas._fq(row["r"])
+    x = atlas.ident.classify(Fraction(row["r"]), o["theta0"], o["phi0"], atlas.LONGER * collisions,
+                             word_max=atlas.LONG_WORD)
+    assert x.cls == atlas.UNRESOLVED
+    bad = copy.deepcopy(sub)
+    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOT_ATTRACTING, o["theta0"], o["phi0"], fq)
+    bad["counts"] = atlas._counts(bad["orbits"])
+    assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
+    bad = copy.deepcopy(sub)
+    bad["orbits"][0]["certified_from"] = atlas.LONGER * collisions // 2
+    assert atlas.check_orbits(doc, [bad])
+
+
 def _atlas_state_tool():
     import importlib.util
     from pathlib import Path
