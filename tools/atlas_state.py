@@ -3,6 +3,7 @@
 atlas-state.jsonl (not committed) is gone.
 
     python tools/atlas_state.py reports/atlas.json > reports/atlas-state.jsonl
+    python tools/atlas_state.py --retry-time-limit reports/atlas.json > reports/atlas-state.jsonl
 
 An r record is the document's row (its orbits, the island) with the data and collisions of
 its parameters; a word record is the document's word (as analysed: its windows exactly as
@@ -22,8 +23,11 @@ from certify.run.census_report import dumps
 ORBIT_KEYS = atlas.ORBIT_KEYS + atlas.ORBIT_LATE_KEYS
 
 
-def records(doc: dict):
-    """The state's records of an atlas document (r records, then word records, then chaos)."""
+def records(doc: dict, retry_time_limit: bool = False):
+    """The state's records of an atlas document (r records, then word records, then chaos).
+    ``retry_time_limit``: the words over the time limit get no record, so that the resume analyses
+    them again under the same limit (a faster engine may now finish them); ``--resume`` alone reuses
+    a "time limit" record measured in CPU time as it is."""
     p = doc["parameters"]
     data = len(atlas.data_grid(p["data"]))
     for row in doc["r"]:
@@ -35,6 +39,8 @@ def records(doc: dict):
             rec["late"] = atlas.LATE_RULE
         yield rec
     for w in doc["words"]:
+        if retry_time_limit and w["outcome"] == "time limit":
+            continue
         yield {**{k: v for k, v in w.items() if k != "source"}, "seconds": 0.0}
     for row in doc["r"]:
         if row.get("horseshoe") is not None:
@@ -45,12 +51,14 @@ def records(doc: dict):
 
 
 def main(argv: list[str]) -> int:
+    retry = "--retry-time-limit" in argv
+    argv = [a for a in argv if a != "--retry-time-limit"]
     if len(argv) != 1:
-        print("usage: python tools/atlas_state.py ATLAS_JSON > atlas-state.jsonl", file=sys.stderr)
+        print("usage: python tools/atlas_state.py [--retry-time-limit] ATLAS_JSON > atlas-state.jsonl", file=sys.stderr)
         return 2
     with open(argv[0], encoding="utf-8") as f:
         doc = json.load(f)
-    for rec in records(doc):
+    for rec in records(doc, retry):
         sys.stdout.write(dumps(rec) + "\n")
     return 0
 

@@ -35,6 +35,7 @@ from certify.algebra.balls import precision
 from certify.dynamics.model import NEXT
 
 from . import rules
+from .leaps import LEAP_EVERY, LEAP_WINDOW, Leap, leap_along, period_of
 
 ENGINES = ("float64", "mp", "ball")
 MP_DPS = 30                    # default digits of the mp engine
@@ -201,6 +202,18 @@ class _Product:
             self.steps = 0
             self.base = n
 
+    def leap(self, jump: Leap, n, prec):
+        """The proved leap ``jump`` from the current state n (the evaluation of P): P closes its
+        segment, the leap is a segment of its own (evaluated again, as a power, at a new
+        precision), and a new segment starts at the state after it, which is returned."""
+        if self.steps:
+            self.done.append(self.P)
+        self.done.append(jump)
+        self.P = flint.fmpz_mat([[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+        self.steps = 0
+        self.base = jump.apply(n, prec)
+        return self.base
+
     def rebase(self, n0, prec):
         """The datum at a new precision pushed through the finished segments."""
         for S in self.done:
@@ -221,7 +234,10 @@ class _Product:
     def evaluate(P, n0, prec):
         """A ball vector containing P n0: P rounded to arb at the working precision
         (``prec``, the caller's context; arb_mat rounds each integer with a rigorous
-        radius) times the column of balls n0, in one arb_mat product."""
+        radius) times the column of balls n0, in one arb_mat product; a :class:`.leaps.Leap`
+        by its own power."""
+        if isinstance(P, Leap):
+            return P.apply(n0, prec)
         v = flint.arb_mat(P) * flint.arb_mat([[n0[0]], [n0[1]], [n0[2]]])
         return (v[0, 0], v[1, 0], v[2, 0])
 
@@ -248,7 +264,7 @@ def _ball_classify(i: int, n) -> tuple[int, int]:
 
 
 def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, normal=None, start_bits=BALL_START,
-                stop: dict | None = None, every: bool = True):
+                stop: dict | None = None, every: bool = True, leap: dict | None = None):
     """The certified orbit, state by state: yields ``(k, j, n, bits)`` for the state right
     after collision k (k = 0: the datum, at contact ``letter``), j its contact's index and
     n a ball vector containing a positive multiple of the reduction's normal (oriented,
@@ -258,7 +274,14 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
     Ends after ``collisions`` collisions or at the first choice the cap cannot decide;
     ``stop``, when given, receives the break code and the precision (``stop["code"]``,
     ``stop["bits"]``).  ``every=False``: only the last state is yielded (the same state,
-    computed without a yield and a precision context a collision)."""
+    computed without a yield and a precision context a collision).
+
+    ``leap``, when given (a dict, read at every attempt: ``leap["until"]`` the last collision a
+    leap may reach, default ``collisions``): every :data:`.leaps.LEAP_EVERY` collisions, when the
+    last :data:`.leaps.LEAP_WINDOW` letters repeat a block, the orbit leaps over the periods of
+    the block that :func:`.leaps.leap_along` proves it follows (a repelling periodic orbit only);
+    the states inside a leap are not yielded, and ``leap["leaps"]`` lists (collision, periods,
+    letters, s − 1) of each."""
     cap = int((dps or BALL_CAP_DPS) * BITS_PER_DIGIT) + 1
     prec = min(start_bits, cap)
     with precision(prec):
@@ -278,6 +301,29 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
     last = (0, i, n, prec)
     if every:
         yield last
+    history: list[int] = []
+    attempt = LEAP_EVERY
+    refused: set[str] = set()           # blocks whose period matrix does not repel at r: not tried again
+
+    def leapt() -> bool:
+        """A proved leap from the current state (``leap``), taken; whether one was."""
+        nonlocal n, done, last, history
+        if len(history) > 2 * LEAP_WINDOW:
+            history = history[-LEAP_WINDOW:]
+        block = period_of("".join(rules.LETTERS[x] for x in history[-LEAP_WINDOW:]))
+        if block is None:
+            return False
+        until = min(collisions, leap.get("until", collisions))
+        jump = leap_along(prod.mats, i, n, block, (until - done) // len(block), prec, refused)
+        if jump is None:
+            return False
+        leap.setdefault("leaps", []).append((done, jump.J, jump.length, jump.rate))
+        n = prod.leap(jump, n, prec)
+        done += jump.J * jump.length
+        history = []
+        last = (done, i, n, prec)
+        return True
+
     while done < collisions:
         bits, before = prec, done
         with precision(prec):          # one context a collision, or (every=False) a precision
@@ -299,6 +345,12 @@ def ball_states(r, theta0, phi0, collisions, dps=None, letter=rules.START, norma
                 n = m
                 i, done = j, done + 1
                 last = (done, j, n, prec)
+                if leap is not None:
+                    history.append(j)
+                    if done >= attempt:
+                        attempt = done + LEAP_EVERY
+                        if leapt() and every:
+                            break
                 if every:
                     break
         if code:

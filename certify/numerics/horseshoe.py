@@ -356,7 +356,10 @@ class Saddle:
 def saddles(fm: FloatMap, max_returns: int = 3) -> list[Saddle]:
     """The saddle periodic points of f with at most ``max_returns`` returns (floats): for every
     word of branches, the eigenvectors of M_w whose chart point follows w, with one multiplier
-    of modulus > 1 and one < 1; sorted by period, then by the weaker of log λ and −log μ."""
+    of modulus > 1 and one < 1; sorted by period, then by the weaker of log λ and −log μ (to 9
+    digits: mirror images, such as abacb and cbcab, have the same multipliers, which floats
+    tell apart only in their last bits, differently from one numpy to another), then by the
+    word, the later in alphabetical order first."""
     import itertools
     out = []
     for k in range(1, max_returns + 1):
@@ -387,7 +390,8 @@ def saddles(fm: FloatMap, max_returns: int = 3) -> list[Saddle]:
                     continue
                 out.append(Saddle(w, k, p, M, Vj[:, a] / np.linalg.norm(Vj[:, a]),
                                   Vj[:, b] / np.linalg.norm(Vj[:, b]), lj[a], lj[b]))
-    out.sort(key=lambda s: (s.returns, -min(math.log(abs(s.lam)), -math.log(abs(s.mu)))))
+    out.sort(key=lambda s: (s.returns, float(f"{-min(math.log(abs(s.lam)), -math.log(abs(s.mu))):.9g}"),
+                            tuple(-ord(x) for x in s.word)))
     return out
 
 

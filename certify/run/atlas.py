@@ -79,7 +79,7 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 7
+VERSION = 8
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
@@ -91,9 +91,12 @@ WORD_CLOCK = "cpu"                            # what a "time limit" record's sec
 REFINE = 3                                    # rounds of refinement after the first grid
 LATE = 4                                      # an orbit :func:`late` selects is run again LATE times longer
 LONGER = 16                                   # ... and one repeating a word not attracting at r, LONGER times
-LATE_RULE = 4                                 # :func:`late`'s rule (1: long transients; 2: and runs with no period;
+SPIRAL_EFOLDS = 4                             # a repelling word's orbit run again over this many of its e-folds ...
+SPIRAL_MAX = 512                              # ... when that is at most SPIRAL_MAX times the first run (rule 5)
+LATE_RULE = 5                                 # :func:`late`'s rule (1: long transients; 2: and runs with no period;
                                               # 3: and words not attracting at r, LONGER; blocks up to LONG_WORD read;
-                                              # 4: runs with no period above 3 − 2√2, LONGER)
+                                              # 4: runs with no period above 3 − 2√2, LONGER; 5: words repelling at
+                                              # r, then over SPIRAL_EFOLDS e-folds of their repulsion)
 LONG_WORD = ident.MAX_ANALYSED                # the longest block identify decides at one r for the atlas (below)
 TRANSIENT, NOT_ATTRACTING, NOTHING = "long transient", "repeats a word not attracting at r", "nothing recognised"
 NEAR_HORSESHOE = "near a certified horseshoe"   # an unresolved orbit whose float64 run enters a proved horseshoe's box
@@ -272,6 +275,27 @@ def unresolved_kind(observed: str | None, r: flint.fmpq) -> str:
     return TRANSIENT if o is not None and o.kind == "attracting" else NOT_ATTRACTING
 
 
+def spiral_factor(observed: str, r: flint.fmpq, collisions: int = COLLISIONS) -> int | None:
+    """Rule 5: when the periodic orbit of the word ``observed`` at r repels (``orbit_at``, decided
+    exactly), an orbit winding out of it leaves after about L/ln ρ collisions an e-fold (L letters,
+    ρ the largest multiplier modulus: near r = 1, abcb repels with ρ − 1 ≈ 10⁻⁵ or less, 10⁵-10⁶
+    collisions, and such an orbit settles on an attractor after).  The least power of 2 above
+    :data:`LONGER` whose run covers :data:`SPIRAL_EFOLDS` e-folds, when the run LONGER times
+    longer does not and it is at most :data:`SPIRAL_MAX`; else None.  The run is an observation's
+    length, not a proof: the ball scan leaps over the winding (:mod:`certify.numerics.leaps`), and
+    a class is proved as any other."""
+    o = ident.decided(read_plain(observed, LONG_WORD)[0], r)
+    if o is None or o.kind != "repelling" or not o.modulus > 1:
+        return None
+    efold = len(observed) / math.log(float(o.modulus.lower()))
+    if SPIRAL_EFOLDS * efold <= LONGER * collisions:
+        return None
+    f = 2 * LONGER
+    while f * collisions < SPIRAL_EFOLDS * efold and f <= SPIRAL_MAX:
+        f *= 2
+    return f if f <= SPIRAL_MAX else None
+
+
 def late_stages(kind: str | None, observed: str | None, r: flint.fmpq) -> tuple[int, ...]:
     """How many times longer an unresolved orbit of this kind (:func:`unresolved_kind`) and
     observed word is run again at r (:func:`classify_late`), stage after stage until one proves
@@ -281,12 +305,16 @@ def late_stages(kind: str | None, observed: str | None, r: flint.fmpq) -> tuple[
     for such a run above 3 − 2√2 (the island's interval, where no horseshoe is proved: near
     r = 1 a run can wander for 10⁵ collisions before it settles); :data:`LONGER` for a run
     repeating a word not attracting at r (near r = 1, abcb: a slow transient can wind along the
-    loop for 10⁵ collisions before it settles elsewhere)."""
+    loop for 10⁵ collisions before it settles elsewhere), then :func:`spiral_factor` when the word
+    repels."""
     if kind == NOTHING and observed is None:
         return (LATE, LONGER) if elliptic_polynomial(r) < 0 else (LATE,)
     if kind == TRANSIENT:
         return (LATE,)
-    return (LONGER,) if kind == NOT_ATTRACTING else ()
+    if kind != NOT_ATTRACTING:
+        return ()
+    spiral = spiral_factor(observed, r) if observed is not None else None
+    return (LONGER,) if spiral is None else (LONGER, spiral)
 
 
 def late_factor(kind: str | None, observed: str | None, r: flint.fmpq) -> int | None:
@@ -1194,7 +1222,8 @@ def markdown(doc: dict, figure: str | None = None) -> str:
                f"{k}: {n}" for k, n in s["unresolved_by_kind"].items() if k != "certified by a longer run")
            + f" (a long transient: its word attracts at r; a long transient and a run with no period at all are run "
            f"again {LATE}× longer, a run with no period above 3−2√2 and a run repeating a word not attracting at r "
-           f"{LONGER}× longer, and "
+           f"{LONGER}× longer, then, when that word repels slowly, over {SPIRAL_EFOLDS} e-folds of its repulsion (up "
+           f"to {SPIRAL_MAX}× longer; the ball scan leaps over the winding, proved), and "
            f"{s['unresolved_by_kind']['certified by a longer run']} orbits were proved so "
            "(identify's proof on the longer run) and are counted in their class; near a certified horseshoe: its "
            "float64 run enters a box of the horseshoe proved at r; a word not "

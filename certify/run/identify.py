@@ -52,6 +52,7 @@ from certify.dynamics.model import INDEX, LETTERS
 from certify.dynamics.reduction import ball_run
 from certify.errors import UsageError
 from certify.numerics import engines, grid, rules, trapping
+from certify.numerics.leaps import period_of
 from certify.patterns import compact, island_theorem, show_word
 from certify.patterns.pattern import end_data
 from certify.patterns.periodic import MAX_LENGTH
@@ -70,27 +71,6 @@ VERIFY_CAP = 1 << 16
 VERIFY_MAX = 20_000        # the second route re-runs at most this many collisions (beyond: the first route)
 REFUSALS = 3               # a kind of proof refused this often by the second route is dropped
 GRID = "the tool's grid of 8 initial data"
-
-
-def period_of(word: str, max_period: int | None = None) -> str | None:
-    """The shortest block B such that the last half of ``word`` is periodic with period
-    |B| and holds at least 4 periods (|B| ≤ half/4, and ≤ ``max_period`` when given);
-    B = the last |B| letters.  None when there is none.  Linear time: the shortest
-    period of a string s is |s| − π(s), π the longest proper border (prefix function)."""
-    tail = word[len(word) - len(word) // 2:]
-    m = len(tail)
-    if m < 8:
-        return None
-    border, k = [0] * m, 0
-    for i in range(1, m):
-        while k and tail[k] != tail[i]:
-            k = border[k - 1]
-        if tail[k] == tail[i]:
-            k += 1
-        border[i] = k
-    p = m - border[-1]
-    bound = m // 4 if max_period is None else min(m // 4, max_period)
-    return word[-p:] if p <= bound else None
 
 
 def settled_from(word: str, p: int) -> int:
@@ -287,6 +267,7 @@ class Identified:
     trap: dict | None = None
     window: dict | None = None
     notes: list = field(default_factory=list)
+    leaps: list = field(default_factory=list)    # the ball states' proved leaps (:attr:`Scan.leaps`)
 
     @property
     def word_status(self) -> str | None:
@@ -337,7 +318,13 @@ class Scan:
     states 0..``done`` ≤ N, goes on from state ``done`` + 1 with the tries and refusals left
     by it: the same answer as a scan from the datum, without computing states 0..``done`` again.
     A scan that ended (a class proved at k, every kind of proof refused, or the balls stopped
-    undecided at their precision cap) ends there again.  Another key starts from the datum."""
+    undecided at their precision cap) ends there again.  Another key starts from the datum.
+
+    The ball states leap over the periods of a repelling block the orbit is proved to follow
+    (:mod:`certify.numerics.leaps`, up to the scan's budget): no state inside such a leap can be
+    in the island (its letters are not the island's acb/cab) or in a trapping ellipse (the orbit
+    would follow the ellipse's word for ever, not leave the block), so the class and its k are
+    those of a scan of every state; ``leaps`` lists them."""
 
     def __init__(self):
         self.key: tuple | None = None
@@ -346,16 +333,24 @@ class Scan:
         self.tries: dict = {}
         self.notes: list = []            # the refusals so far, in order
         self.stop = {"code": 0, "bits": 0}
+        self.leap: dict = {}
         self.states = iter(())
 
     def start(self, key: tuple, r, theta0, phi0, budget: int, tries: dict) -> None:
         """Go on from the last scan when it had this key and checked no state beyond ``budget``;
         else a new scan from the datum (its ball states not bounded here: :func:`_scan` stops)."""
         if key == self.key and self.done <= budget:
+            self.leap["until"] = budget
             return
         self.key, self.done, self.ended, self.tries, self.notes = key, -1, None, dict(tries), []
         self.stop = {"code": 0, "bits": 0}
-        self.states = iter(engines.ball_states(r, theta0, phi0, sys.maxsize, stop=self.stop))
+        self.leap = {"until": budget}
+        self.states = iter(engines.ball_states(r, theta0, phi0, sys.maxsize, stop=self.stop, leap=self.leap))
+
+    @property
+    def leaps(self) -> list:
+        """The leaps of the ball states so far: (collision, periods, letters, s − 1)."""
+        return self.leap.setdefault("leaps", [])
 
 
 def _scan(x: Identified, r, theta0, phi0, U, rotation, budget, scan: Scan | None = None):
@@ -369,6 +364,7 @@ def _scan(x: Identified, r, theta0, phi0, U, rotation, budget, scan: Scan | None
     s.start((r, theta0, phi0, rotation if U is not None else None), r, theta0, phi0, budget, tries)
     x.notes.extend(s.notes)
     b, c0 = INDEX["b"], INDEX[rotation[-1]] if rotation else -1
+    x.leaps = s.leaps
     while s.ended is None and s.done < budget:
         state = next(s.states, None)
         if state is None:            # the balls stopped undecided (stop["code"] ≠ 0)
@@ -472,9 +468,19 @@ def classify(r: Fraction, theta0: float, phi0: float, collisions: int = COLLISIO
         x.rotation = None
         reasons = [why for why in (why_not, k) if why]
         x.why = "observed: " + observed + ("; " + "; ".join(reasons) if reasons else "")
+    if x.leaps and x.cls != UNRESOLVED:
+        x.why += "; " + leaps_phrase(x.leaps)
     if x.notes and x.cls == UNRESOLVED:
         x.why += "; " + "; ".join(x.notes)
     return x
+
+
+def leaps_phrase(leaps: list) -> str:
+    """What the ball states' leaps proved (:mod:`certify.numerics.leaps`), in words."""
+    parts = [f"{periods} periods of {letters} letters from collision {k} (multipliers ≥ 1 + {rate})"
+             for k, periods, letters, rate in leaps]
+    return ("the ball states leapt over " + ", ".join(parts) + ": the orbit proved to follow a repelling "
+            "periodic block there (its period matrix's eigen-decomposition, certify.numerics.leaps)")
 
 
 def identify(rs: list[Fraction], theta0=None, phi0=None, orbits: int = 8, collisions: int = COLLISIONS,

@@ -583,7 +583,7 @@ def test_a_run_with_no_period_is_run_again_4_times_longer_below_and_16_above_3_m
     assert atlas.late_factor(atlas.NOTHING, None, above) == atlas.LONGER
     assert atlas.late_stages(atlas.NOTHING, None, below) == (atlas.LATE,)
     assert atlas.late_stages(atlas.NOTHING, None, above) == (atlas.LATE, atlas.LONGER)         # 4×, then 16×
-    for r in (below, above):
+    for r in (below, above):                  # abcb: a saddle at 17/100, repelling fast (ρ ≈ 5.75) at 43/250
         assert atlas.late_factor(atlas.TRANSIENT, "abcb", r) == atlas.LATE
         assert atlas.late_factor(atlas.NOT_ATTRACTING, "abcb", r) == atlas.LONGER
         assert atlas.late_factor(atlas.NOTHING, "x" * 1200, r) is None
@@ -591,6 +591,22 @@ def test_a_run_with_no_period_is_run_again_4_times_longer_below_and_16_above_3_m
     assert atlas.rerun_due(rule_3, above, 20_000) and not atlas.rerun_due(rule_3, below, 20_000)
     assert not atlas.rerun_due({**rule_3, "rerun": atlas.LONGER * 20_000}, above, 20_000)
     assert atlas.rerun_due({**rule_3, "rerun": None}, below, 20_000)
+
+
+def test_a_word_repelling_slowly_is_run_again_over_four_of_its_e_folds():
+    """Rule 5: near r = 1 abcb repels with ρ − 1 from 5.6e-5 (r = 93271/100000) down to 2e-9
+    (r = 12471/12500); its orbits are run again 16× longer, then over SPIRAL_EFOLDS e-folds L/ln ρ
+    (a power of 2 times the first run) when the 16× run does not (at 93271/100000 it does: 4 e-folds
+    are 284 000 collisions) and that is at most SPIRAL_MAX times; beyond, 16× only."""
+    stages = {r: atlas.late_stages(atlas.NOT_ATTRACTING, "abcb", atlas._fq(r))
+              for r in ("93271/100000", "19211/20000", "33/34", "12239/12500", "12471/12500")}
+    assert stages == {"93271/100000": (16,), "19211/20000": (16, 128), "33/34": (16, 256),
+                      "12239/12500": (16, 512), "12471/12500": (16,)}
+    efolds = 4 * 4 / math.log(float(atlas.ident.decided("abcb", atlas._fq("19211/20000")).modulus.mid()))
+    assert 64 * 20_000 < efolds <= 128 * 20_000
+    o = {"class": atlas.UNRESOLVED, "unresolved": atlas.NOT_ATTRACTING, "observed": "abcb", "rerun": 16 * 20_000}
+    assert atlas.rerun_due(o, atlas._fq("33/34"), 20_000) and not atlas.rerun_due(o, atlas._fq("12471/12500"), 20_000)
+    assert not atlas.rerun_due({**o, "rerun": 256 * 20_000}, atlas._fq("33/34"), 20_000)
 
 
 def test_a_run_with_no_period_is_run_again_longer_and_its_class_checked():
@@ -844,6 +860,33 @@ def test_the_committed_atlas_long_blocks_and_sixteen_times_longer_runs_check():
     bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOT_ATTRACTING, o["theta0"], o["phi0"], fq)
     bad["counts"] = atlas._counts(bad["orbits"])
     assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
+
+
+def test_the_committed_atlas_spiral_runs_check():
+    """reports/atlas.json (rule 5): the orbit of the least r that only the run over four e-folds of
+    abcb's repulsion proves (32× the first run, past the 16× run) is proved again by identify from
+    the same collision; marked unresolved as its 16× run leaves it, or certified from a collision of
+    the 16× run, the check fails."""
+    doc = _committed(8)
+    collisions = doc["parameters"]["collisions"]
+    spiral = [(row, o) for row in doc["r"] for o in row["orbits"]
+              if (o["rerun"] or 0) > atlas.LONGER * collisions and o["class"] != atlas.UNRESOLVED]
+    assert len(spiral) > 500
+    row, o = min(spiral, key=lambda ro: (ro[1]["rerun"], Fraction(ro[0]["r"])))
+    assert o["rerun"] == 2 * atlas.LONGER * collisions and o["certified_from"] > atlas.LONGER * collisions // 4
+    sub = {**row, "orbits": [o], "counts": atlas._counts([o]), "total": 1}
+    assert atlas.check_orbits(doc, [sub]) == []
+    fq = atlas._fq(row["r"])
+    x = atlas.ident.classify(Fraction(row["r"]), o["theta0"], o["phi0"], atlas.LONGER * collisions,
+                             word_max=atlas.LONG_WORD)
+    assert x.cls == atlas.UNRESOLVED
+    bad = copy.deepcopy(sub)
+    bad["orbits"][0] = atlas._orbit_record(x, None, atlas.NOT_ATTRACTING, o["theta0"], o["phi0"], fq)
+    bad["counts"] = atlas._counts(bad["orbits"])
+    assert any("by identify" in p for p in atlas.check_orbits(doc, [bad]))
+    bad = copy.deepcopy(sub)
+    bad["orbits"][0]["certified_from"] = atlas.LONGER * collisions // 2
+    assert atlas.check_orbits(doc, [bad])
 
 
 def _atlas_state_tool():

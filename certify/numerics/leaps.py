@@ -1,0 +1,190 @@
+"""A proved leap of the certified orbit along a repelling periodic block: J periods at once.
+
+Near a periodic orbit of the reduction that repels slowly (near r = 1 the orbit of abcb is a
+focus whose multipliers have modulus 1 + 10⁻⁵ or less), an orbit winds out along the block for
+10⁵-10⁷ collisions before it leaves it; the ball engine (:func:`.engines.ball_states`) would
+decide every one of them.  A leap decides them all at once, exactly as follows.
+
+Let the ball state m (at contact i, oriented) be about to follow the block s = s_1 ··· s_L
+(s_L = i: the period returns to contact i), C_t = cof(K_{s_t}) ··· cof(K_{s_1}) the integer
+cofactor products (C_0 = I) and N = C_L.  The L collisions from a normal n are decided by the
+signs of the 3L linear forms ℓ_{t,x}(n) = (C_t n)_x, x = 0, 1, 2, t = 0 ... L−1: the contact's
+two in-face entries and its own entry (:func:`.rules.classify`) and the orientation after each
+collision are signs of these, so the letters are a function of the sign pattern, unchanged when
+every sign flips (n and −n are one plane).
+
+With N = R D R⁻¹ (python-flint's rigorous eigen-decomposition, ``acb_mat.eig``: eigenvalues λ_i
+in disjoint balls, right eigenvectors the columns of R; R⁻¹ by ``acb_mat.inv``), ℓ(Nᵖ m) =
+Σ_i c_i λ_iᵖ with c_i = ℓ(R e_i)(R⁻¹ m)_i.
+Let λ_0 be a real eigenvalue (its ball meets no other's conjugate) with s_i = |λ_i/λ_0| > 1 for the
+two others: the periodic orbit (the eigenvector of λ_0) repels.  If for every form
+
+    |c_0| > Σ_{i≠0} |c_i| s_i^(J−1),
+
+then for 0 ≤ p < J the sign of ℓ(Nᵖ m) is that of λ_0ᵖ c_0: every period from Nᵖ m has the
+sign pattern of the period from m, up to one global sign.  So when the period from m follows s
+(decided here by the engine's own classification, collision by collision), the orbit follows
+s^J from m, and its state after the J periods is a positive multiple of ±N^J m, evaluated as
+the ball (N)^J m (``arb_mat`` powers: rigorous).  Only repelling blocks leap: near an attracting
+one the trapping ellipse decides instead (a leap would skip the states it reads).
+
+A leap stops :data:`LEAP_MARGIN` letters (and a period) before the end of what is proved, so
+every state it skips is followed by the block for at least that many letters.  Such a state is
+in no trapping ellipse of a word w' of at most LEAP_MARGIN − L letters (``certify identify``
+decides blocks up to 1000): from it the orbit would follow both w'^∞ and the block for
+|w'| + L letters, so w' and the block would be powers of one word (Fine and Wilf), whose
+periodic orbit repels.  Nor is it in the island: from there every b-to-b segment is acb or
+cab for ever, so the block would be the island's coding, whose period matrix is elliptic
+(|λ_i| all equal), not repelling."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import flint
+
+from certify.algebra.balls import precision
+from certify.dynamics.model import LETTERS, NEXT
+
+LEAP_BITS = 256                # the least precision of a leap's eigen-decomposition and power
+LEAP_WINDOW = 1024             # the letters of the ball orbit read for a repeated block
+LEAP_EVERY = 2048              # collisions between two attempts of a leap
+LEAP_MIN = 16                  # periods: a shorter proved leap is not taken
+LEAP_MARGIN = 1024             # letters of the block proved followed beyond a leap's end (below)
+
+
+def period_of(word: str, max_period: int | None = None) -> str | None:
+    """The shortest block B such that the last half of ``word`` is periodic with period
+    |B| and holds at least 4 periods (|B| ≤ half/4, and ≤ ``max_period`` when given);
+    B = the last |B| letters.  None when there is none.  Linear time: the shortest
+    period of a string s is |s| − π(s), π the longest proper border (prefix function)."""
+    tail = word[len(word) - len(word) // 2:]
+    m = len(tail)
+    if m < 8:
+        return None
+    border, k = [0] * m, 0
+    for i in range(1, m):
+        while k and tail[k] != tail[i]:
+            k = border[k - 1]
+        if tail[k] == tail[i]:
+            k += 1
+        border[i] = k
+    p = m - border[-1]
+    bound = m // 4 if max_period is None else min(m // 4, max_period)
+    return word[-p:] if p <= bound else None
+
+
+@dataclass(frozen=True)
+class Leap:
+    """J periods of a block proved followed: the state after them is ``sign``·N^J times the
+    state before (a positive multiple of the reduction's normal)."""
+
+    N: flint.fmpz_mat
+    J: int
+    sign: int
+    length: int                 # L, the block's letters
+    rate: str                   # min s_i − 1: the slowest repulsion per period (printed, 3 digits)
+
+    def apply(self, n, prec: int) -> tuple:
+        """A ball vector containing sign·N^J n, at ``prec`` bits (at least :data:`LEAP_BITS`)."""
+        with precision(max(prec, LEAP_BITS)):
+            v = (flint.arb_mat(self.N) ** self.J) * flint.arb_mat([[n[0]], [n[1]], [n[2]]])
+            return tuple(self.sign * v[x, 0] for x in range(3))
+
+
+def _follows(mats: list, i: int, n, block: str) -> list | None:
+    """The cofactor products C_0 ... C_L (exact) of one period of ``block`` from the ball state n at
+    contact i, when the engine's classification (:func:`.engines._ball_classify`'s comparisons, all
+    decided) follows the block; None otherwise."""
+    C = flint.fmpz_mat([[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+    products = [C]
+    m = n
+    for x in block:
+        j, k = NEXT[i]
+        a, b, c = m[i], m[j], m[k]
+        if not (b > 0 and c < 0 and (a > 0 or a < 0)):
+            return None
+        nxt = j if a > 0 else k
+        if LETTERS[nxt] != x:
+            return None
+        C = mats[nxt] * C
+        v = flint.arb_mat(C) * flint.arb_mat([[n[0]], [n[1]], [n[2]]])
+        m = (v[0, 0], v[1, 0], v[2, 0])
+        t = (nxt + 1) % 3
+        if not (m[t] > 0 or m[t] < 0):
+            return None
+        if m[t] < 0:
+            m = tuple(-z for z in m)
+        i = nxt
+        products.append(C)
+    return products
+
+
+def leap_along(mats: list, i: int, n, block: str, most: int, prec: int, refused: set | None = None) -> Leap | None:
+    """The longest proved leap (module docstring) of at most ``most`` periods of ``block`` from
+    the ball state n at contact i (block[-1] = LETTERS[i]; ``mats`` the integer cofactor matrices
+    of a, b, c, fmpz_mat), or None (the period from n does not
+    follow the block, the block does not repel, or fewer than :data:`LEAP_MIN` periods are proved).
+    ``refused``: the blocks whose period matrix at this r is not proved to repel, added to and read
+    (they are not tried again: N depends on the block and r only)."""
+    extra = -(-LEAP_MARGIN // len(block)) + 1          # periods proved beyond the leap
+    if most < LEAP_MIN or LETTERS[i] != block[-1] or (refused is not None and block in refused):
+        return None
+    with precision(max(prec, LEAP_BITS)):
+        C = _follows(mats, i, n, block)
+        if C is None:
+            return None
+        N = C[-1]
+        try:
+            E, R = flint.acb_mat(N).eig(right=True)
+            Rinv = R.inv()
+        except (ValueError, ZeroDivisionError):    # eigenvalues not isolated, R not inverted, at this precision
+            return None
+        real = [a for a in range(3) if all(not E[a].conjugate().overlaps(E[b]) for b in range(3) if b != a)]
+        repelling = [a for a in real if all(abs(E[b] / E[a]) > 1 for b in range(3) if b != a)]
+        if not repelling and refused is not None:
+            refused.add(block)
+        best = None
+        for a in repelling:
+            J = _periods(C[:-1], E, R, Rinv, a, n, most + extra)
+            if J is not None and (best is None or J[0] > best[0]):
+                best = (J[0], J[1], a)
+        if best is None or best[0] - extra < LEAP_MIN:
+            return None
+        J, rate = min(best[0] - extra, most), best[1]
+        v = (flint.arb_mat(N) ** J) * flint.arb_mat([[n[0]], [n[1]], [n[2]]])
+        t = (i + 1) % 3
+        if not (v[t, 0] > 0 or v[t, 0] < 0):
+            return None
+        return Leap(N, J, 1 if v[t, 0] > 0 else -1, len(block), (rate - 1).str(3, radius=False))
+
+
+def _periods(products: list, E, R, Rinv, a: int, n, most: int) -> tuple | None:
+    """(J, min s_i): the largest J ≤ ``most`` with |c_a| > Σ_{i≠a} |c_i| s_i^(J−1) for every form
+    ℓ_{t,x} (module docstring), λ_a the eigenvalue at the fixed point; None when a multiplier
+    s_i = |λ_i/λ_a| is not proved > 1."""
+    others = [b for b in range(3) if b != a]
+    s = [abs(E[b] / E[a]) for b in others]
+    if not all(x > 1 for x in s):
+        return None
+    top = max((x.upper() for x in s), key=float)     # the bound of J uses s_i ≤ top; checked again below
+    Lm = Rinv * flint.acb_mat([[n[0]], [n[1]], [n[2]]])
+    log_top = top.log()
+    J = most
+    for C in products:
+        FR = flint.acb_mat(C) * R                  # row x: ℓ_{t,x}(R e_i) for i = 0, 1, 2
+        for x in range(3):
+            c = [FR[x, b] * Lm[b, 0] for b in range(3)]
+            lead = abs(c[a].real)
+            rest = sum((abs(c[b]) for b in others), flint.arb(0))
+            if not lead > rest:
+                return None
+            bound = ((lead.log() - rest.log()) / log_top).lower()   # J − 1 below it
+            if bound.is_finite():
+                J = min(J, max(int(bound.floor().unique_fmpz()) + 1, 0))
+    for C in products:                             # the inequality at J checked again, in balls
+        FR = flint.acb_mat(C) * R
+        for x in range(3):
+            c = [FR[x, b] * Lm[b, 0] for b in range(3)]
+            if not abs(c[a].real) > sum((abs(c[b]) * (abs(E[b] / E[a]) ** (J - 1)) for b in others), flint.arb(0)):
+                return None
+    return J, min(s, key=lambda x: x.mid())
