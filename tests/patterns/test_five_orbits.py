@@ -36,11 +36,14 @@ def _inside(result, stage: str, r: float, margin: float) -> bool | None:
 
 
 def _agree(word: str, rs) -> int:
-    """Compare the certified sets with the float route at the rationals rs (away from every end) and
-    return how many r were compared."""
+    """Compare the certified sets with the float route at the rationals rs (away from every end, and
+    where floats resolve the spectrum of Λ²M_w: :func:`five_float_orbits.resolved`) and return how
+    many r were compared."""
     result = five_orbits.analyse(word)
     compared = 0
     for r in rs:
+        if not floats.resolved(word, r):
+            continue
         found = floats.orbits(word, r)
         x = float(Fraction(int(r.p), int(r.q)))
         want = {"orbit": bool(found), "feasible": any(ok for _k, ok, _t in found),
@@ -76,7 +79,7 @@ def test_the_nineteen_letter_word_attracts_with_a_complex_pair_above_its_window(
     result = five_orbits.analyse(word)
     assert [d["set"] for d in result.sets["attracting (real pair)"]] == ["]≈0.2251551606, ≈0.2592407154["]
     assert [d["set"] for d in result.sets["attracting (complex pair)"]] == ["]≈0.2592407154, ≈0.2679491924["]
-    assert _agree(word, [flint.fmpq(k, 400) for k in range(20, 120)]) > 80
+    assert _agree(word, [flint.fmpq(k, 400) for k in range(20, 140)]) > 80       # 26 r below 0.115 not resolved
 
 
 def test_a_requirement_dropped_or_turned_is_seen_by_the_float_route():
