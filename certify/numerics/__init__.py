@@ -6,6 +6,7 @@ billiard reduction (Section 5 of the paper), from collision to collision, in flo
 - :mod:`.rules`: the one definition of the map's step and of the break rules.
 - :mod:`.kernel`: the float64 engine, a numba transcription of the rules.
 - :mod:`.engines`: one orbit on any engine (float64, mp, ball).
+- :mod:`.leaps`: the ball engine's proved leaps along a repelling periodic block; ``period_of``.
 - :mod:`.orbits`: :func:`iterate` over r and initial data, :class:`Orbits`.
 - :mod:`.figures`: the figures 5.1-5.8 as printed (:data:`SPECS`) and their runs.
 - :mod:`.limits`: what a cloud of kept angles suggests (clusters, ω-limit kinds, coverage).
