@@ -43,7 +43,9 @@ from dataclasses import dataclass
 import flint
 
 from certify.algebra.balls import precision
-from certify.dynamics.model import LETTERS, NEXT
+from certify.dynamics.model import LETTERS
+
+from . import rules
 
 LEAP_BITS = 256                # the least precision of a leap's eigen-decomposition and power
 LEAP_WINDOW = 1024             # the letters of the ball orbit read for a repeated block
@@ -93,18 +95,14 @@ class Leap:
 
 def _follows(mats: list, i: int, n, block: str) -> list | None:
     """The cofactor products C_0 ... C_L (exact) of one period of ``block`` from the ball state n at
-    contact i, when the engine's classification (:func:`.engines._ball_classify`'s comparisons, all
+    contact i, when the engine's classification (:func:`.rules.classify` on balls, every sign
     decided) follows the block; None otherwise."""
     C = flint.fmpz_mat([[1, 0, 0], [0, 1, 0], [0, 0, 1]])
     products = [C]
     m = n
     for x in block:
-        j, k = NEXT[i]
-        a, b, c = m[i], m[j], m[k]
-        if not (b > 0 and c < 0 and (a > 0 or a < 0)):
-            return None
-        nxt = j if a > 0 else k
-        if LETTERS[nxt] != x:
+        code, nxt = rules.classify(i, m, (0, 0, 0), rules.ball_sign, flint.arb.is_finite)
+        if code != rules.COMPLETED or LETTERS[nxt] != x:
             return None
         C = mats[nxt] * C
         v = flint.arb_mat(C) * flint.arb_mat([[n[0]], [n[1]], [n[2]]])
@@ -146,7 +144,7 @@ def leap_along(mats: list, i: int, n, block: str, most: int, prec: int, refused:
         best = None
         for a in repelling:
             J = _periods(C[:-1], E, R, Rinv, a, n, most + extra)
-            if J is not None and (best is None or J[0] > best[0]):
+            if best is None or J[0] > best[0]:
                 best = (J[0], J[1], a)
         if best is None or best[0] - extra < LEAP_MIN:
             return None
@@ -158,33 +156,28 @@ def leap_along(mats: list, i: int, n, block: str, most: int, prec: int, refused:
         return Leap(N, J, 1 if v[t, 0] > 0 else -1, len(block), (rate - 1).str(3, radius=False))
 
 
-def _periods(products: list, E, R, Rinv, a: int, n, most: int) -> tuple | None:
+def _periods(products: list, E, R, Rinv, a: int, n, most: int) -> tuple:
     """(J, min s_i): the largest J ≤ ``most`` with |c_a| > Σ_{i≠a} |c_i| s_i^(J−1) for every form
-    ℓ_{t,x} (module docstring), λ_a the eigenvalue at the fixed point; None when a multiplier
-    s_i = |λ_i/λ_a| is not proved > 1."""
+    ℓ_{t,x} (module docstring), λ_a the eigenvalue at the fixed point, from which the others are
+    larger in modulus (s_i = |λ_i/λ_a| > 1, checked by the caller); J = 0 when none holds."""
     others = [b for b in range(3) if b != a]
     s = [abs(E[b] / E[a]) for b in others]
-    if not all(x > 1 for x in s):
-        return None
     top = max((x.upper() for x in s), key=float)     # the bound of J uses s_i ≤ top; checked again below
     Lm = Rinv * flint.acb_mat([[n[0]], [n[1]], [n[2]]])
-    log_top = top.log()
-    J = most
+    forms = []                                     # (|c_a|, [|c_i|, i ≠ a]) of every form
     for C in products:
         FR = flint.acb_mat(C) * R                  # row x: ℓ_{t,x}(R e_i) for i = 0, 1, 2
         for x in range(3):
             c = [FR[x, b] * Lm[b, 0] for b in range(3)]
-            lead = abs(c[a].real)
-            rest = sum((abs(c[b]) for b in others), flint.arb(0))
-            if not lead > rest:
-                return None
-            bound = ((lead.log() - rest.log()) / log_top).lower()   # J − 1 below it
-            if bound.is_finite():
-                J = min(J, max(int(bound.floor().unique_fmpz()) + 1, 0))
-    for C in products:                             # the inequality at J checked again, in balls
-        FR = flint.acb_mat(C) * R
-        for x in range(3):
-            c = [FR[x, b] * Lm[b, 0] for b in range(3)]
-            if not abs(c[a].real) > sum((abs(c[b]) * (abs(E[b] / E[a]) ** (J - 1)) for b in others), flint.arb(0)):
-                return None
+            forms.append((abs(c[a].real), [abs(c[b]) for b in others]))
+    J = most
+    for lead, rest in forms:
+        total = sum(rest, flint.arb(0))
+        if not lead > total:
+            return 0, min(s, key=lambda x: x.mid())
+        bound = ((lead.log() - total.log()) / top.log()).lower()   # J − 1 below it
+        if bound.is_finite():
+            J = min(J, max(int(bound.floor().unique_fmpz()) + 1, 0))
+    if not all(lead > sum((c * x ** (J - 1) for c, x in zip(rest, s)), flint.arb(0)) for lead, rest in forms):
+        J = 0                                      # the inequality at J, checked again in balls
     return J, min(s, key=lambda x: x.mid())
