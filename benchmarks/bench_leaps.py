@@ -12,8 +12,9 @@ winding out of abcb near r = 1 and returning to it (where the leaps pay), an orb
 and one attracted by (ab)^2(cb)^2 (where every attempt fails: the cost of trying).
 
 ``--identify``: ``identify.classify`` of orbits near r = 1 that the atlas's rule 5 runs (10.24
-million collisions), as the atlas has it (leaps, turning criterion, sieve) and as the last version
-had it (the bound alone, no sieve): CPU seconds and whether the answers are word for word the same.
+million collisions), as the atlas has it (leaps, turning criterion, sieve) and with the leaps of
+the bound alone and no sieve (the scan of the last version; its float64 run is this version's):
+CPU seconds and whether the answers are the same as the atlas records them.
 """
 from __future__ import annotations
 
@@ -70,7 +71,8 @@ def timed(r, datum, collisions, name: str):
 
 
 def classified(r: str, datum, committed: bool):
-    """identify's answer (JSON) and its CPU seconds, as committed or as the last version had it."""
+    """identify's answer and its CPU seconds, as committed or with the last version's scan (the bound
+    alone, no sieve)."""
     from fractions import Fraction
 
     from certify.run import identify
@@ -126,7 +128,7 @@ def main(argv=None) -> int:
 
 
 def identify_table(repeats: int) -> int:
-    print("| r | datum | class | from | committed (s) | last version (s) | ratio | same answer |")
+    print("| r | datum | class | from | committed (s) | bound alone, no sieve (s) | ratio | same answer |")
     print("|---|---|---|---:|---:|---:|---:|---|")
     for r, datum in IDENTIFY:
         runs: dict = {True: [], False: []}
