@@ -68,15 +68,30 @@ def _ring_to_phi(ring: list, keep: int) -> np.ndarray:
     return out
 
 
+_CODES = np.frombuffer("".join(rules.LETTERS).encode("ascii"), dtype=np.uint8)
+
+
+def _letters(indices: np.ndarray) -> str:
+    """The word of the contact indices (0, 1, 2 → a, b, c), in one array operation."""
+    return _CODES[indices].tobytes().decode("ascii")
+
+
 def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(), letter=rules.START,
                   normal=None, strict=False) -> OrbitResult:
-    """One orbit on the float64 kernel (``trace`` when the word or checkpoints are
-    asked); ``strict``: stop at the certified horizon (break 5)."""
+    """One orbit on the float64 kernel (``trace`` when the word or checkpoints are asked: the
+    letters alone, no state kept, when the word alone is); ``strict``: stop at the certified
+    horizon (break 5)."""
     from . import kernel  # numba, imported where the float64 engine first runs, not at every command's start
     rows = np.array(rules.float_rows(r)).reshape(27)           # the kernel's flat layout
     n0 = np.array(normal if normal is not None else rules.initial_normal(theta0, phi0, letter), dtype=float)
     i0 = rules.INDEX[letter]
     constants = (rules.TOL64, rules.G64, rules.K64, rules.TINY64)
+    if word and not checkpoints and not keep:           # the word alone: no state kept
+        letters = np.zeros(collisions, dtype=np.int8)
+        none = np.empty((0, 3))
+        code, done, cert = kernel.trace(i0, n0, rows, *constants, collisions, strict, letters, none, none)
+        return OrbitResult(int(code), int(done), _ring_to_phi([], 0), _letters(letters[:done]), {},
+                           certified=int(cert))
     if word or checkpoints:
         letters = np.zeros(collisions, dtype=np.int8)
         normals = np.zeros((collisions, 3))
@@ -85,7 +100,7 @@ def float64_orbit(r, theta0, phi0, collisions, keep=0, word=False, checkpoints=(
         b = [rules.phi_of(1, normals[c]) for c in range(done) if letters[c] == 1] if keep else []   # the kept φ
         cps = {c: (int(letters[c - 1]), tuple(normals[c - 1])) for c in checkpoints if 0 < c <= done}
         return OrbitResult(int(code), int(done), _ring_to_phi(b, keep),
-                           "".join(rules.LETTERS[x] for x in letters[:done]) if word else "", cps,
+                           _letters(letters[:done]) if word else "", cps,
                            certified=int(cert))
     phi = np.empty(keep)
     code, done, cert = kernel._orbit(i0, n0, rows, *constants, collisions, keep, strict, phi)

@@ -199,8 +199,9 @@ def sweep(letters0, normals0, rows, tol, g, kappa, tiny, collisions, keep, stric
 @njit(cache=True)
 def trace(i0, n_init, rows, tol, g, kappa, tiny, collisions, strict, letters, normals, errors):
     """One orbit with every state recorded (tests, benchmarks): letters[k], normals[k]
-    and the accumulated bound errors[k] after the collision k + 1.  Returns (code,
-    collisions done, collisions certified)."""
+    and the accumulated bound errors[k] after the collision k + 1; the letters alone when
+    ``normals`` has no row (the word without the 48 bytes a collision of the states).
+    Returns (code, collisions done, collisions certified)."""
     n, bnd = _start(n_init, tol)
     err = bnd
     i = i0
@@ -212,10 +213,27 @@ def trace(i0, n_init, rows, tol, g, kappa, tiny, collisions, strict, letters, no
         n, bnd, err = _advance(j, n, err, rows, tol, g, kappa, tiny)
         i = j
         letters[c] = j
-        for a in range(3):
-            normals[c, a] = n[a]
-            errors[c, a] = err[a]
+        if normals.shape[0] > 0:
+            for a in range(3):
+                normals[c, a] = n[a]
+                errors[c, a] = err[a]
     return 0, collisions, (collisions if certified < 0 else certified)
+
+
+@njit(cache=True)
+def shortest_period(s):
+    """The shortest period of the array s (len(s) ≥ 1): len(s) − π, π the longest proper border
+    (the prefix function, linear time)."""
+    m = len(s)
+    border = np.zeros(m, dtype=np.int64)
+    k = 0
+    for i in range(1, m):
+        while k > 0 and s[k] != s[i]:
+            k = border[k - 1]
+        if s[k] == s[i]:
+            k += 1
+        border[i] = k
+    return m - border[m - 1]
 
 
 @njit(cache=True)

@@ -22,11 +22,23 @@ two others: the periodic orbit (the eigenvector of λ_0) repels.  If for every f
     |c_0| > Σ_{i≠0} |c_i| s_i^(J−1),
 
 then for 0 ≤ p < J the sign of ℓ(Nᵖ m) is that of λ_0ᵖ c_0: every period from Nᵖ m has the
-sign pattern of the period from m, up to one global sign.  So when the period from m follows s
-(decided here by the engine's own classification, collision by collision), the orbit follows
-s^J from m, and its state after the J periods is a positive multiple of ±N^J m, evaluated as
-the ball (N)^J m (``arb_mat`` powers: rigorous).  Only repelling blocks leap: near an attracting
-one the trapping ellipse decides instead (a leap would skip the states it reads).
+sign pattern of the period from m, up to one global sign.
+
+When the two others are a complex pair λ, λ̄ (a focus: λ/λ_0 = s e^{iω}), the spectral parts of the
+real m on them are conjugate, so ℓ(Nᵖ m)/λ_0ᵖ = c_0 + 2|c| sᵖ cos(φ + pω), φ = arg c.  Near r = 1
+abcb's focus turns by nearly 2π/3 a period: an orbit that returns to the block far from its
+periodic orbit (2|c| ≈ |c_0|, where the inequality above fails) keeps its signs while the slow
+drift δ = 3ω − 2π has not turned a cosine the wrong way.  With k/m the fraction nearest ω/2π
+(m ≤ :data:`TURNS`) and δ = mω − 2πk, the periods p = mq + t of one residue t see the angles
+φ + tω + qδ, an arc of length |δ|(Q_t − 1) for the Q_t of them below J.  If μ ≤ min sgn(c_0) cos on
+every arc, then |c_0| + 2|c| s^(J−1) min(μ, 0) > 0 proves the same conclusion
+(:func:`_turning_periods`; the arcs of a full turn give μ = −1 and the inequality above).
+
+So when the period from m follows s (decided here by the engine's own classification,
+collision by collision), the orbit follows s^J from m, and its state after the J periods is a
+positive multiple of ±N^J m, evaluated as the ball (N)^J m (``arb_mat`` powers: rigorous).  Only
+repelling blocks leap: near an attracting one the trapping ellipse decides instead (a leap
+would skip the states it reads).
 
 A leap stops :data:`LEAP_MARGIN` letters (and a period) before the end of what is proved, so
 every state it skips is followed by the block for at least that many letters.  Such a state is
@@ -38,9 +50,11 @@ cab for ever, so the block would be the island's coding, whose period matrix is 
 (|λ_i| all equal), not repelling."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import flint
+import numpy as np
 
 from certify.algebra.balls import precision
 from certify.dynamics.model import LETTERS
@@ -52,25 +66,21 @@ LEAP_WINDOW = 1024             # the letters of the ball orbit read for a repeat
 LEAP_EVERY = 2048              # collisions between two attempts of a leap
 LEAP_MIN = 16                  # periods: a shorter proved leap is not taken
 LEAP_MARGIN = 1024             # letters of the block proved followed beyond a leap's end (below)
+TURNS = 12                     # a focus's rotation ω is read near the m-th roots of unity, m ≤ TURNS
 
 
 def period_of(word: str, max_period: int | None = None) -> str | None:
     """The shortest block B such that the last half of ``word`` is periodic with period
     |B| and holds at least 4 periods (|B| ≤ half/4, and ≤ ``max_period`` when given);
     B = the last |B| letters.  None when there is none.  Linear time: the shortest
-    period of a string s is |s| − π(s), π the longest proper border (prefix function)."""
+    period of a string s is |s| − π(s), π the longest proper border (prefix function, compiled:
+    :func:`.kernel.shortest_period`)."""
+    from . import kernel  # numba, imported where it first runs
     tail = word[len(word) - len(word) // 2:]
     m = len(tail)
     if m < 8:
         return None
-    border, k = [0] * m, 0
-    for i in range(1, m):
-        while k and tail[k] != tail[i]:
-            k = border[k - 1]
-        if tail[k] == tail[i]:
-            k += 1
-        border[i] = k
-    p = m - border[-1]
+    p = int(kernel.shortest_period(np.frombuffer(tail.encode(), dtype=np.uint8)))
     bound = m // 4 if max_period is None else min(m // 4, max_period)
     return word[-p:] if p <= bound else None
 
@@ -143,7 +153,8 @@ def leap_along(mats: list, i: int, n, block: str, most: int, prec: int, refused:
             refused.add(block)
         best = None
         for a in repelling:
-            J = _periods(C[:-1], E, R, Rinv, a, n, most + extra)
+            periods = _turning_periods if _pair(E, a) is not None else _periods
+            J = periods(C[:-1], E, R, Rinv, a, n, most + extra)
             if best is None or J[0] > best[0]:
                 best = (J[0], J[1], a)
         if best is None or best[0] - extra < LEAP_MIN:
@@ -181,3 +192,93 @@ def _periods(products: list, E, R, Rinv, a: int, n, most: int) -> tuple:
     if not all(lead > sum((c * x ** (J - 1) for c, x in zip(rest, s)), flint.arb(0)) for lead, rest in forms):
         J = 0                                      # the inequality at J, checked again in balls
     return J, min(s, key=lambda x: x.mid())
+
+
+def _pair(E, a: int) -> int | None:
+    """The index b of the eigenvalue of positive imaginary part when the two other than λ_a are a
+    complex pair (their imaginary parts decided nonzero), else None."""
+    for b in range(3):
+        if b != a and E[b].imag > 0:
+            return b
+    return None
+
+
+def _drift(omega) -> tuple[int, flint.arb]:
+    """(m, δ) with m ≤ :data:`TURNS` and δ = mω − 2πk, k the integer nearest mω/2π, for the fraction
+    k/m nearest ω/2π (|δ|/m least, read at the midpoints: a choice; δ is a ball), the least m of
+    a tie (k/m and 2k/2m are one fraction): after p = mq + t periods the rotation is tω + qδ
+    modulo 2π."""
+    two_pi = 2 * flint.arb.pi()
+    best, gap = None, math.inf
+    for m in range(1, TURNS + 1):
+        k = round(float((m * omega / two_pi).mid()))
+        d = m * omega - k * two_pi
+        if abs(float(d.mid())) / m < gap * (1 - 1e-9):
+            best, gap = (m, d), abs(float(d.mid())) / m
+    return best
+
+
+def _least_cos(lo, hi) -> flint.arb:
+    """A ball below min cos θ over the arc lo ≤ θ ≤ hi (lo, hi balls: the arc from lo's lower end
+    to hi's upper end): −1 when it may hold an odd multiple of π or turn once, else the lesser
+    cosine of its ends (cos has no other interior minimum)."""
+    a, b = flint.arb(lo.lower()), flint.arb(hi.upper())
+    two_pi = 2 * flint.arb.pi()
+    if not b - a < two_pi:
+        return flint.arb(-1)
+    first = ((a - flint.arb.pi()) / two_pi).lower().ceil()        # odd multiples (2k + 1)π with k ≥ first ...
+    last = ((b - flint.arb.pi()) / two_pi).upper().floor()        # ... and k ≤ last lie in the arc
+    if not last < first:
+        return flint.arb(-1)
+    return a.cos().min(b.cos())
+
+
+def _turning_periods(products: list, E, R, Rinv, a: int, n, most: int) -> tuple:
+    """(J, s): the largest J ≤ ``most`` for which every form ℓ_{t,x} keeps its sign over the periods
+    0 … J−1, when the eigenvalues other than λ_a are a complex pair λ, λ̄ with s = |λ/λ_a| > 1 and
+    λ/λ_a = s e^{iω}: a repelling focus.  Then ℓ(Nᵖ m)/λ_aᵖ = c_a + 2|c| sᵖ cos(φ + pω) (c = c_λ, φ its
+    argument: the spectral parts of a real vector on conjugate eigenvalues are conjugate).  With
+    (m, δ) of :func:`_drift`, p = mq + t gives the angle φ + tω + qδ modulo 2π: for each residue t
+    it stays on an arc of length |δ|(Q_t − 1), Q_t the periods p < J of that residue.  If μ ≤ min
+    sgn(c_a) cos over every arc (:func:`_least_cos`), |c_a| + 2|c| s^(J−1) min(μ, 0) > 0 proves
+    sgn ℓ(Nᵖ m) = sgn(c_a λ_aᵖ) for p < J.  A focus that turns slowly near an m-th root of unity
+    (near r = 1, abcb's turns by ≈ 2π/3 a period) keeps the signs long after the bound of
+    :func:`_periods` (the arcs of a full turn, μ = −1, which this criterion reduces to) fails."""
+    b = _pair(E, a)
+    z = E[b] / E[a]
+    s, omega = abs(z), z.arg()
+    m, delta = _drift(omega)
+    Lm = Rinv * flint.acb_mat([[n[0]], [n[1]], [n[2]]])
+    forms = []                                     # (|c_a|, 2|c|, the angle φ, plus π when c_a < 0)
+    for C in products:
+        FR = flint.acb_mat(C) * R
+        for x in range(3):
+            lead, c = FR[x, a] * Lm[a, 0], FR[x, b] * Lm[b, 0]
+            if not (lead.real > 0 or lead.real < 0):
+                return 0, s
+            turn = c.arg() if lead.real > 0 else c.arg() + flint.arb.pi()
+            forms.append((abs(lead.real), 2 * abs(c), turn))
+
+    def keeps(J: int) -> bool:
+        grow = s ** (J - 1)
+        for lead, c, turn in forms:
+            for t in range(min(m, J)):
+                span = abs(delta) * ((J - t + m - 1) // m - 1)
+                start = turn + t * omega
+                lo = start - span if not delta > 0 else start
+                hi = start + span if not delta < 0 else start
+                mu = _least_cos(lo, hi)
+                if not (mu >= 0 or lead + c * grow * mu > 0):
+                    return False
+        return True
+
+    if most < 1 or not keeps(min(most, LEAP_MIN + -(-LEAP_MARGIN // len(products)) + 1)):
+        return 0, s
+    good, bad = 1, 2
+    while bad <= most and keeps(bad):
+        good, bad = bad, 2 * bad
+    bad = min(bad, most + 1)
+    while bad - good > 1:
+        mid = (good + bad) // 2
+        good, bad = (mid, bad) if keeps(mid) else (good, mid)
+    return good, s

@@ -74,7 +74,9 @@ bisection towards the last refused radius.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import flint
 
@@ -89,6 +91,7 @@ FRAME_BITS = 64          # the frame T and the radius ρ: dyadic rationals with 
 SHRINK = flint.fmpq(4, 5)
 TRIES = 80
 BISECTIONS = 10         # then the radius is enlarged by bisection towards a refused one
+SIEVE_MARGIN = 1e-9     # :meth:`Trap.surely_outside`: the float64 margin, relative to the scale of |u|² and ρ²
 
 
 @dataclass(frozen=True)
@@ -148,6 +151,35 @@ class Trap:
         u = self.ball_coordinates(n)
         gap = self.radius * self.radius - (u[0] * u[0] + u[1] * u[1])     # x * x: arb's x ** 2 is nan at 0 ± ε
         return 1 if gap > 0 else -1 if gap < 0 else 0
+
+    @cached_property
+    def _floats(self) -> tuple:
+        """c, T (rows of the two free coordinates), the norm of T⁻¹ and ρ, rounded to float64 once."""
+        f = _free(self.chart)
+        c = tuple(float(self.centre[k]) for k in f)
+        (p, q), (s, v) = [[float(self.frame[j][k]) for j in range(2)] for k in f]
+        det = p * v - q * s
+        norm = (abs(p) + abs(q) + abs(s) + abs(v)) / abs(det) if det else math.inf
+        return c, (p, q, s, v, det), norm, float(self.radius)
+
+    def surely_outside(self, n) -> bool:
+        """A sieve before :meth:`ball_sign` (which proves): True only when ``ball_sign(n)`` is
+        certainly not +1.  The coordinates u of the midpoints of the ratio balls n_k / n_t (the
+        balls :meth:`ball_coordinates` divides, at the caller's precision), computed in float64:
+        when |u|² exceeds ρ² by :data:`SIEVE_MARGIN` times the scale of the terms (far above the
+        rounding of float64 and of the midpoints), a point of the coordinate balls lies outside U,
+        so ρ² − |u|² > 0 is not proved for the whole ball.  False (decide by ball_sign) whenever
+        the floats are not finite."""
+        t = self.chart
+        c, (p, q, s, v, det), norm, rho = self._floats
+        if not det:
+            return False
+        a, b = (float(n[k] / n[t]) for k in _free(t))
+        d0, d1 = a - c[0], b - c[1]
+        u0, u1 = (v * d0 - q * d1) / det, (p * d1 - s * d0) / det
+        gap = u0 * u0 + u1 * u1 - rho * rho
+        scale = (norm * (abs(a) + abs(b) + abs(c[0]) + abs(c[1])) + abs(u0) + abs(u1) + rho) ** 2
+        return gap > SIEVE_MARGIN * scale       # False for nan and inf
 
     def ball_coordinates(self, n) -> tuple:
         """Balls containing u with n ∝ c + T u, for a ball vector n (n_t ≠ 0): the frame

@@ -42,6 +42,7 @@ from fractions import Fraction
 from functools import cache
 
 import flint
+import numpy as np
 
 from certify import caches
 from certify.algebra.algebraic import Algebraic
@@ -74,11 +75,11 @@ GRID = "the tool's grid of 8 initial data"
 
 
 def settled_from(word: str, p: int) -> int:
-    """The first collision from which ``word`` is p-periodic to its end (observed)."""
-    i = len(word) - p - 1
-    while i >= 0 and word[i] == word[i + p]:
-        i -= 1
-    return i + 1
+    """The first collision from which ``word`` is p-periodic to its end (observed): one past the
+    last i with word[i] ≠ word[i + p] (compared as byte arrays)."""
+    w = np.frombuffer(word.encode("ascii"), dtype=np.uint8)
+    differ = np.flatnonzero(w[:-p] != w[p:]) if p < len(w) else []
+    return int(differ[-1]) + 1 if len(differ) else 0
 
 
 def followed(block: str, normal: str) -> str:
@@ -335,6 +336,7 @@ class Scan:
         self.stop = {"code": 0, "bits": 0}
         self.leap: dict = {}
         self.states = iter(())
+        self.floats = (0.0, 0.0)        # r and c_max(r) in float64, for the sieve of _check
 
     def start(self, key: tuple, r, theta0, phi0, budget: int, tries: dict) -> None:
         """Go on from the last scan when it had this key and checked no state beyond ``budget``;
@@ -346,6 +348,7 @@ class Scan:
         self.stop = {"code": 0, "bits": 0}
         self.leap = {"until": budget}
         self.states = iter(engines.ball_states(r, theta0, phi0, sys.maxsize, stop=self.stop, leap=self.leap))
+        self.floats = (float(r), float(island.c_max(r)))
 
     @property
     def leaps(self) -> list:
@@ -381,15 +384,38 @@ def _scan(x: Identified, r, theta0, phi0, U, rotation, budget, scan: Scan | None
     return None, f"the certified orbit (balls) was not proved inside {where} within {s.done} collisions"
 
 
+SIEVE = True               # _check skips the tests that float64 shows to fail (benchmarks turn it off)
+
+
+def surely_outside_island(n, r: float, c: float) -> bool:
+    """A sieve before :func:`certify.dynamics.island.inside` (which proves): True only when
+    ``inside(n, r)`` is certainly False.  At the midpoint of the ratio balls a = n_x/n_z and
+    b = n_y/n_z (float64, r and c = c_max(r) rounded), the chart point u = (1 + a)/(1 − a),
+    v = 2b/(1 − a) is that of the balls' midpoint normal, a point of the chart balls ``inside``
+    evaluates; when Q(u, v) exceeds c by :data:`~certify.numerics.trapping.SIEVE_MARGIN` times the
+    scale of Q's terms (far above float64's rounding, |1 − a| > 10⁻⁶ kept away from the chart's
+    pole), c − Q < 0 at a point of those balls, so c − Q > 0 is not proved for the whole ball.
+    False whenever undecided."""
+    a, b = float(n[0] / n[2]), float(n[1] / n[2])
+    if not abs(1 - a) > 1e-6:                       # also False for nan
+        return False
+    u, v = (1 + a) / (1 - a), 2 * b / (1 - a)
+    terms = 2 * u * u + (1 + r) * abs(u * v) + r * v * v
+    return 2 * u * u - (1 + r) * u * v + r * v * v - c > trapping.SIEVE_MARGIN * (terms + c)
+
+
 def _check(x: Identified, s: Scan, r, theta0, phi0, U, rotation, c0, k, j, n, bits) -> tuple | None:
     """:func:`_scan`'s checks of the state after collision k: (class, k) when a proof is accepted,
-    (None, "") when every kind of proof has been refused, else None (the scan goes on)."""
+    (None, "") when every kind of proof has been refused, else None (the scan goes on).  A test
+    that the float64 sieve shows to fail is skipped (:func:`surely_outside_island`,
+    :meth:`~certify.numerics.trapping.Trap.surely_outside`): the same answers, sooner."""
     found = []
     if (s.tries[ISLAND] and j == INDEX["b"]) or (s.tries[ATTRACTING] and j == c0):
         with precision(bits):
-            if s.tries[ISLAND] and j == INDEX["b"] and island.inside(n, r):
+            if s.tries[ISLAND] and j == INDEX["b"] and not (SIEVE and surely_outside_island(n, *s.floats)) \
+                    and island.inside(n, r):
                 found.append(ISLAND)
-            if s.tries[ATTRACTING] and j == c0 and U.ball_sign(n) == 1:
+            if s.tries[ATTRACTING] and j == c0 and not (SIEVE and U.surely_outside(n)) and U.ball_sign(n) == 1:
                 found.append(ATTRACTING)
     for cls in found:
         why = verify(r, theta0, phi0, cls, k, rotation, (LETTERS[j], n, bits))

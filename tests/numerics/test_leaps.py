@@ -1,12 +1,17 @@
 """The ball states' proved leaps along a repelling block (certify.numerics.leaps): the state after
 a leap is the state a scan of every collision reaches, a leap ends before the orbit leaves the
-block, and no leap is taken along an attracting block or a block the orbit does not follow."""
+block (after the first spiral too, where the focus's slow turning proves the leap), and no leap is
+taken along an attracting block or a block the orbit does not follow."""
+import math
 from fractions import Fraction
 
 import flint
 import pytest
 from flint import fmpq
+from hypothesis import given
+from hypothesis import strategies as st
 
+from certify.algebra.balls import precision
 from certify.numerics import engines, leaps, rules
 from certify.run import identify as ident
 
@@ -133,3 +138,46 @@ def test_a_block_that_does_not_repel_is_refused_once_for_all():
         refused: set = set()
         assert leaps.leap_along(_mats(r), j, n, block, 10 ** 9, bits, refused) is None
         assert refused == ({block} if refuse else set())
+
+
+def test_a_turning_leap_where_the_orbit_returns_to_the_block(plain):
+    """After the first spiral the orbit returns to abcb for runs of a few thousand letters, far from its
+    periodic orbit: no form's |c_a| exceeds the others' sum, so the bound of ``_periods`` proves nothing
+    at collision 144 149.  abcb's focus turns by nearly 2π/3 a period (m = 3, |δ| ≈ 0.004), and the
+    turning criterion proves 558 periods: the leap ends LEAP_MARGIN letters and a period before the run
+    (142 766 to 147 410 of the plain scan's letters) does, and the state at 150 000 is the plain scan's
+    (the first test)."""
+    letters = plain[0]
+    states = {k: (j, n, bits) for k, j, n, bits in engines.ball_states(R, *DATUM, 144_149) if k == 144_149}
+    j, n, bits = states[144_149]
+    block = letters[144_149 - 3:144_149 + 1]
+    assert block == "abcb"
+    jump = leaps.leap_along(_mats(R), j, n, block, 10 ** 9, bits)
+    assert jump is not None and jump.J == 558
+    end = 144_149 + 4 * jump.J
+    run_end = end
+    while letters[run_end] == letters[run_end - 4]:
+        run_end += 1
+    assert end + leaps.LEAP_MARGIN + 4 <= run_end - 1 < 150_000
+    with precision(256):
+        C = leaps._follows(_mats(R), j, n, block)
+        E, Rm = flint.acb_mat(C[-1]).eig(right=True)
+        a = next(i for i in range(3) if leaps._pair(E, i) is not None)
+        assert leaps._periods(C[:-1], E, Rm, Rm.inv(), a, n, 10 ** 9)[0] < leaps.LEAP_MIN
+        m, delta = leaps._drift((E[leaps._pair(E, a)] / E[a]).arg())
+        assert m == 3 and abs(delta) < 1e-2
+    holder = {}
+    _last(150_000, holder)
+    assert [x[:3] for x in holder["leaps"]] == [(2048, 33989, 4), (144_149, 558, 4)]
+
+
+@given(st.floats(-20, 20), st.floats(0, 7), st.integers(0, 64))
+def test_least_cos_is_below_cos_on_the_arc(start, length, k):
+    """_least_cos bounds cos from below at every point of its arc (k/64 of the way along it)."""
+    with precision(64):
+        lo, hi = flint.arb(start), flint.arb(start) + flint.arb(length)
+        bound = leaps._least_cos(lo, hi)
+    assert bound.lower() <= math.cos(start + length * k / 64) + 1e-12
+    if length < 0.5 and all(abs(math.cos(start + length * i / 64)) > 1e-3 for i in range(65)) \
+            and not any(start <= (2 * i + 1) * math.pi <= start + length for i in range(-5, 5)):
+        assert float(bound.mid()) == pytest.approx(min(math.cos(start), math.cos(start + length)), abs=1e-9)

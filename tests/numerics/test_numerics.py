@@ -298,3 +298,19 @@ def test_load_float64_imports_the_engine():
     from certify.numerics import load_float64
     load_float64()
     assert "certify.numerics.kernel" in sys.modules and "numba" in sys.modules
+
+
+@pytest.mark.parametrize("r, datum, collisions, strict", [
+    (Fraction(3, 10), (0.5235987755982988, 0.6283185307179586), 20_000, False),
+    (Fraction(93271, 100000), (0.6872233929727672, 2.55981623625835), 200_000, False),
+    (Fraction(3, 10), (0.5235987755982988, 0.6283185307179586), 20_000, True),      # stops at its horizon
+    (Fraction(1, 10), (0.0, 0.0), 5_000, False)])                                    # a break at once
+def test_the_word_alone_is_the_word_of_the_full_trace(r, datum, collisions, strict):
+    """float64_orbit's word alone (``trace`` keeping no state) gives the word, break and horizons
+    of ``trace`` (every state kept, asked with a checkpoint), letter for letter."""
+    q = flint.fmpq(r.numerator, r.denominator)
+    alone = engines.float64_orbit(q, *datum, collisions, word=True, strict=strict)
+    full = engines.float64_orbit(q, *datum, collisions, word=True, strict=strict, checkpoints=(1,))
+    assert (alone.code, alone.collisions, alone.certified, alone.word) == \
+        (full.code, full.collisions, full.certified, full.word)
+    assert len(alone.word) == alone.collisions and set(alone.word) <= set("abc")

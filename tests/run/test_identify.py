@@ -7,6 +7,8 @@ from pathlib import Path
 
 import flint
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from certify import cli
 from certify.algebra.algebraic import Algebraic
@@ -365,3 +367,58 @@ def test_a_scan_stopped_at_the_precision_cap_is_not_run_again(monkeypatch):
     longer = ident.classify(r, th, ph, 1200, scan=scan)
     assert len(made) == first and longer.to_json() == fresh.to_json()
     assert short.why.split("; ")[-1] == fresh.why.split("; ")[-1]
+
+
+def _states_at(r, datum, collisions, contact):
+    return [n for k, j, n, bits in ident.engines.ball_states(r, *datum, collisions) if j == INDEX[contact]]
+
+
+def test_the_sieves_skip_only_states_the_proofs_refuse(monkeypatch):
+    """At r = 3/10 the second datum of the grid is in the island, the first is caught by the trapping
+    ellipse U of abacbabcbcabcb.  Over every state of both at b (and of the first at c_0 for U) up to
+    collision 5000, the float64 sieves never skip a state the proof accepts (``island.inside``,
+    ``U.ball_sign`` = +1), and skip most of the others; with the margin's sign turned they skip
+    accepted states (the check can fail)."""
+    r = flint.fmpq(3, 10)
+    theta0, phi0 = grid(2)
+    floats = (float(r), float(island.c_max(r)))
+    first, second = (float(theta0[0]), float(phi0[0])), (float(theta0[1]), float(phi0[1]))
+    states = _states_at(r, second, 5000, "b") + _states_at(r, first, 5000, "b")
+    inside = [island.inside(n, r) for n in states]
+    skipped = [ident.surely_outside_island(n, *floats) for n in states]
+    assert any(inside) and not any(a and b for a, b in zip(inside, skipped))
+    assert sum(skipped) >= 0.9 * (len(states) - sum(inside)) > 0
+    x = ident.classify(Fraction(3, 10), *first, 5000)
+    U = ident.trap_of(x.rotation, r)
+    at_c0 = _states_at(r, first, 5000, x.rotation[-1])
+    caught = [U.ball_sign(n) == 1 for n in at_c0]
+    skipped = [U.surely_outside(n) for n in at_c0]
+    assert any(caught) and not any(a and b for a, b in zip(caught, skipped))
+    assert sum(skipped) >= 0.5 * (len(at_c0) - sum(caught)) > 0
+    monkeypatch.setattr(ident.trapping, "SIEVE_MARGIN", -10.0)
+    assert any(a and U.surely_outside(n) for a, n in zip(caught, at_c0))
+    assert any(a and ident.surely_outside_island(n, *floats) for a, n in zip(inside, states))
+
+
+def test_the_sieve_changes_no_class_nor_its_collision(monkeypatch):
+    """identify's answers at r = 3/10 and near r = 1 (an orbit certified after leaving abcb) are those of
+    the scan without the sieve, word for word."""
+    first = [ident.classify(Fraction(r), th, ph, 40_000, word_max=1000).to_json()
+             for r, th, ph in (("3/10", 0.5235987755982988, 0.6283185307179586),
+                               ("3/10", 0.5235987755982988, 1.2566370614359172),
+                               ("93271/100000", 0.6872233929727672, 2.55981623625835))]
+    monkeypatch.setattr(ident, "SIEVE", False)
+    again = [ident.classify(Fraction(r), th, ph, 40_000, word_max=1000).to_json()
+             for r, th, ph in (("3/10", 0.5235987755982988, 0.6283185307179586),
+                               ("3/10", 0.5235987755982988, 1.2566370614359172),
+                               ("93271/100000", 0.6872233929727672, 2.55981623625835))]
+    assert first == again and {x["class"] for x in first} == {ident.ISLAND, ident.ATTRACTING, ident.UNRESOLVED}
+
+
+@given(st.text(alphabet="abc", min_size=1, max_size=60), st.integers(1, 60))
+def test_settled_from_is_the_start_of_the_periodic_tail(word, p):
+    """From settled_from(word, p) on, word[i] = word[i + p]; one letter earlier it is not (or it is 0)."""
+    p = min(p, len(word))
+    k = ident.settled_from(word, p)
+    assert all(word[i] == word[i + p] for i in range(k, len(word) - p))
+    assert k == 0 or word[k - 1] != word[k - 1 + p]
