@@ -324,8 +324,11 @@ class Scan:
     The ball states leap over the periods of a repelling block the orbit is proved to follow
     (:mod:`certify.numerics.leaps`, up to the scan's budget): no state inside such a leap can be
     in the island (its letters are not the island's acb/cab) or in a trapping ellipse (the orbit
-    would follow the ellipse's word for ever, not leave the block), so the class and its k are
-    those of a scan of every state; ``leaps`` lists them."""
+    would follow the ellipse's word for ever, not leave the block), so no state a check could
+    accept is skipped.  The states after a leap are other balls than a scan of every state
+    computes (one power instead of J·L products), so the first one the ball test accepts may come
+    some collisions earlier or later (14 orbits of the committed atlas, by at most 474 collisions;
+    the class never changed); ``leaps`` lists them."""
 
     def __init__(self):
         self.key: tuple | None = None

@@ -934,3 +934,18 @@ def test_a_rule_spells_a_member_past_the_parsers_400_letters():
         followed = [o for o in rows[r]["orbits"] if o["word"] == word]
         assert followed and all(o["class"] == atlas.ATTRACTING for o in followed)
     assert {o["word"] for o in rows["29/169"]["orbits"]} == {by["(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb"].word(38)}
+
+
+def test_the_committed_atlas_orbit_a_turning_leap_moved_checks():
+    """reports/atlas.json: at r = 45707/50000 orbit 19 is proved from collision 28 069 by the scan with
+    the turning leaps (28 131 by the scan before them: the balls after a leap are other balls); it is
+    proved again from that collision, and with the earlier scan's collision the check fails."""
+    doc = _committed(8)
+    row = next(row for row in doc["r"] if row["r"] == "45707/50000")
+    o = row["orbits"][19]
+    assert o["class"] == atlas.ATTRACTING and o["certified_from"] == 28_069
+    sub = {**row, "orbits": [o], "counts": atlas._counts([o]), "total": 1}
+    assert atlas.check_orbits(doc, [sub]) == []
+    bad = copy.deepcopy(sub)
+    bad["orbits"][0]["certified_from"] = 28_131
+    assert atlas.check_orbits(doc, [bad])
