@@ -253,8 +253,7 @@ MUTANTS = [
     Mutant("figure_points.island_intervals: the state at b decided at its midpoint", "island", POINTS,
            "if not island.inside(z0_state, r):", "if not island.inside(tuple(z.mid() for z in z0_state), r):"),
     Mutant("identify: the scan's state at b decided at its midpoint", "island", IDENTIFY,
-           'j == INDEX["b"] and island.inside(n, r):',
-           'j == INDEX["b"] and island.inside(tuple(z.mid() for z in n), r):'),
+           "and island.inside(n, r):", "and island.inside(tuple(z.mid() for z in n), r):"),
     Mutant("identify.verify: the second route's state decided at its midpoint", "island", IDENTIFY,
            "inside = island.inside(n, r)\n", "inside = island.inside(tuple(z.mid() for z in n), r)\n"),
 ]
