@@ -402,9 +402,12 @@ def surely_outside_island(n, r: float, c: float) -> bool:
     a, b = float(n[0] / n[2]), float(n[1] / n[2])
     if not abs(1 - a) > 1e-6:                       # also False for nan
         return False
-    u, v = (1 + a) / (1 - a), 2 * b / (1 - a)
-    terms = 2 * u * u + (1 + r) * abs(u * v) + r * v * v
-    return 2 * u * u - (1 + r) * u * v + r * v * v - c > trapping.SIEVE_MARGIN * (terms + c)
+    try:
+        u, v = island.chart((a, b, 1.0))             # the normal (a, b, 1): n_z − n_x = 1 − a
+    except ValueError:                              # not in the face b at its midpoint: inside decides
+        return False
+    terms = island.quadratic_form(abs(u), -abs(v), r)            # 2u² + (1 + r)|uv| + r v²
+    return island.quadratic_form(u, v, r) - c > trapping.SIEVE_MARGIN * (terms + c)
 
 
 def _check(x: Identified, s: Scan, r, theta0, phi0, U, rotation, c0, k, j, n, bits) -> tuple | None:
