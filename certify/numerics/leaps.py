@@ -154,7 +154,7 @@ def leap_along(mats: list, i: int, n, block: str, most: int, prec: int, refused:
         best = None
         for a in repelling:
             periods = _turning_periods if _pair(E, a) is not None else _periods
-            J = periods(C[:-1], E, R, Rinv, a, n, most + extra)
+            J = periods(C[:-1], E, R, Rinv, a, n, most + extra, LEAP_MIN + extra)
             if best is None or J[0] > best[0]:
                 best = (J[0], J[1], a)
         if best is None or best[0] - extra < LEAP_MIN:
@@ -167,10 +167,12 @@ def leap_along(mats: list, i: int, n, block: str, most: int, prec: int, refused:
         return Leap(N, J, 1 if v[t, 0] > 0 else -1, len(block), (rate - 1).str(3, radius=False))
 
 
-def _periods(products: list, E, R, Rinv, a: int, n, most: int) -> tuple:
+def _periods(products: list, E, R, Rinv, a: int, n, most: int, least: int = 1) -> tuple:
     """(J, min s_i): the largest J ≤ ``most`` with |c_a| > Σ_{i≠a} |c_i| s_i^(J−1) for every form
     ℓ_{t,x} (module docstring), λ_a the eigenvalue at the fixed point, from which the others are
-    larger in modulus (s_i = |λ_i/λ_a| > 1, checked by the caller); J = 0 when none holds."""
+    larger in modulus (s_i = |λ_i/λ_a| > 1, checked by the caller); J = 0 when none holds
+    (``least``, the caller's shortest leap, is read by :func:`_turning_periods` only: here J
+    comes from one bound)."""
     others = [b for b in range(3) if b != a]
     s = [abs(E[b] / E[a]) for b in others]
     top = max((x.upper() for x in s), key=float)     # the bound of J uses s_i ≤ top; checked again below
@@ -233,9 +235,10 @@ def _least_cos(lo, hi) -> flint.arb:
     return a.cos().min(b.cos())
 
 
-def _turning_periods(products: list, E, R, Rinv, a: int, n, most: int) -> tuple:
-    """(J, s): the largest J ≤ ``most`` for which every form ℓ_{t,x} keeps its sign over the periods
-    0 … J−1, when the eigenvalues other than λ_a are a complex pair λ, λ̄ with s = |λ/λ_a| > 1 and
+def _turning_periods(products: list, E, R, Rinv, a: int, n, most: int, least: int = 1) -> tuple:
+    """(J, s): the largest J ≤ ``most`` (0 when it is below ``least``: one check, no search) for
+    which every form ℓ_{t,x} keeps its sign over the periods 0 … J−1, when the eigenvalues other
+    than λ_a are a complex pair λ, λ̄ with s = |λ/λ_a| > 1 and
     λ/λ_a = s e^{iω}: a repelling focus.  Then ℓ(Nᵖ m)/λ_aᵖ = c_a + 2|c| sᵖ cos(φ + pω) (c = c_λ, φ its
     argument: the spectral parts of a real vector on conjugate eigenvalues are conjugate).  With
     (m, δ) of :func:`_drift`, p = mq + t gives the angle φ + tω + qδ modulo 2π: for each residue t
@@ -272,7 +275,7 @@ def _turning_periods(products: list, E, R, Rinv, a: int, n, most: int) -> tuple:
                     return False
         return True
 
-    if most < 1 or not keeps(min(most, LEAP_MIN + -(-LEAP_MARGIN // len(products)) + 1)):
+    if most < 1 or not keeps(min(most, least)):
         return 0, s
     good, bad = 1, 2
     while bad <= most and keeps(bad):
