@@ -176,13 +176,7 @@ def _periods(products: list, E, R, Rinv, a: int, n, most: int, least: int = 1) -
     others = [b for b in range(3) if b != a]
     s = [abs(E[b] / E[a]) for b in others]
     top = max((x.upper() for x in s), key=float)     # the bound of J uses s_i ≤ top; checked again below
-    Lm = Rinv * flint.acb_mat([[n[0]], [n[1]], [n[2]]])
-    forms = []                                     # (|c_a|, [|c_i|, i ≠ a]) of every form
-    for C in products:
-        FR = flint.acb_mat(C) * R                  # row x: ℓ_{t,x}(R e_i) for i = 0, 1, 2
-        for x in range(3):
-            c = [FR[x, b] * Lm[b, 0] for b in range(3)]
-            forms.append((abs(c[a].real), [abs(c[b]) for b in others]))
+    forms = [(abs(c[a].real), [abs(c[b]) for b in others]) for c in _spectral(products, R, Rinv, n)]
     J = most
     for lead, rest in forms:
         total = sum(rest, flint.arb(0))
@@ -194,6 +188,18 @@ def _periods(products: list, E, R, Rinv, a: int, n, most: int, least: int = 1) -
     if not all(lead > sum((c * x ** (J - 1) for c, x in zip(rest, s)), flint.arb(0)) for lead, rest in forms):
         J = 0                                      # the inequality at J, checked again in balls
     return J, min(s, key=lambda x: x.mid())
+
+
+def _spectral(products: list, R, Rinv, n) -> list:
+    """The spectral coefficients of every form ℓ_{t,x} (module docstring): for each product C of
+    ``products`` and each row x, [c_0, c_1, c_2] with c_i = ℓ_{t,x}(R e_i)·(R⁻¹n)_i, so that
+    ℓ_{t,x}(Nᵖ n) = Σ_i c_i λ_iᵖ (R the eigenvectors of N, columns)."""
+    Lm = Rinv * flint.acb_mat([[n[0]], [n[1]], [n[2]]])
+    out = []
+    for C in products:
+        FR = flint.acb_mat(C) * R                  # row x: ℓ_{t,x}(R e_i) for i = 0, 1, 2
+        out.extend([FR[x, i] * Lm[i, 0] for i in range(3)] for x in range(3))
+    return out
 
 
 def _pair(E, a: int) -> int | None:
@@ -251,16 +257,13 @@ def _turning_periods(products: list, E, R, Rinv, a: int, n, most: int, least: in
     z = E[b] / E[a]
     s, omega = abs(z), z.arg()
     m, delta = _drift(omega)
-    Lm = Rinv * flint.acb_mat([[n[0]], [n[1]], [n[2]]])
     forms = []                                     # (|c_a|, 2|c|, the angle φ, plus π when c_a < 0)
-    for C in products:
-        FR = flint.acb_mat(C) * R
-        for x in range(3):
-            lead, c = FR[x, a] * Lm[a, 0], FR[x, b] * Lm[b, 0]
-            if not (lead.real > 0 or lead.real < 0):
-                return 0, s
-            turn = c.arg() if lead.real > 0 else c.arg() + flint.arb.pi()
-            forms.append((abs(lead.real), 2 * abs(c), turn))
+    for coefficients in _spectral(products, R, Rinv, n):
+        lead, c = coefficients[a], coefficients[b]
+        if not (lead.real > 0 or lead.real < 0):
+            return 0, s
+        turn = c.arg() if lead.real > 0 else c.arg() + flint.arb.pi()
+        forms.append((abs(lead.real), 2 * abs(c), turn))
 
     def keeps(J: int) -> bool:
         grow = s ** (J - 1)

@@ -79,7 +79,7 @@ from .files import load_findings, read_text_or_none, write_atomic
 from .section5_orbits import FINDINGS as SECTION5
 
 SCHEMA = "certify-atlas"
-VERSION = 8
+VERSION = 9
 SCHEMA_PATH = Path(__file__).parents[1] / "schemas" / "atlas.schema.json"
 LO, HI = Fraction(359, 5000), Fraction(1)     # 0.0718: just above 7 − 4√3 ≈ 0.0717968 (issue 37's range)
 RESOLUTION = 200                              # r values of the first grid (refined: :func:`refinement`)
@@ -88,7 +88,8 @@ COLLISIONS = 20_000                           # of each float64 run and rigorous
 WORD_MAX = MAX_ORBIT_LENGTH                   # longer words: no window (orbit_at at the r seen)
 WORD_SECONDS = 600                            # time limit of one word's window (CPU seconds)
 WORD_CLOCK = "cpu"                            # what a "time limit" record's seconds count (before: wall time, unmarked)
-REFINE = 3                                    # rounds of refinement after the first grid
+REFINE = 3                                    # rounds of refinement after the first grid (not to a fixpoint:
+                                              # rule (3) of refinement halves its intervals in every round)
 LATE = 4                                      # an orbit :func:`late` selects is run again LATE times longer
 LONGER = 16                                   # ... and one repeating a word not attracting at r, LONGER times
 SPIRAL_EFOLDS = 4                             # a repelling word's orbit run again over this many of its e-folds ...
@@ -222,18 +223,18 @@ def near_one(k: int) -> str:
 
 FAMILIES = (
     Rule("(ab)^k(cb)^k", "(ab)^{k}(cb)^{k}", 2, 12, None),
-    Rule("(abacbc)^k a(bcabac)^k bcb", "(abacbc)^{k}a(bcabac)^{k}bcb", 1, 6, (2, 0, 4, 1)),
-    Rule("(abacbc)^k a(bac)^2(bcabac)^k bcb", "(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb", 1, 3, (2, 1, 4, 3)),
+    Rule("(abacbc)^k a(bcabac)^k bcb", "(abacbc)^{k}a(bcabac)^{k}bcb", 1, 13, (2, 0, 4, 1)),
+    Rule("(abacbc)^k a(bac)^2(bcabac)^k bcb", "(abacbc)^{k}a(bac)^2(bcabac)^{k}bcb", 1, 13, (2, 1, 4, 3)),
     Rule("(abacbc)^k a(bcabac)^(k−1) bc(ab)^2(cbcaba)^k c(bacbca)^(k−1) ba(cb)^2",
          "(abacbc)^{k}a(bcabac)^{j}bc(ab)^2(cbcaba)^{k}c(bacbca)^{j}ba(cb)^2", 1, 8, (4, -1, 8, 0)),
     Rule("(abacbc)^k a(bac)^2(bcabac)^(k−1) bc(ab)^2(cbcaba)^k c(bca)^2(bacbca)^(k−1) ba(cb)^2",
          "(abacbc)^{k}a(bac)^2(bcabac)^{j}bc(ab)^2(cbcaba)^{k}c(bca)^2(bacbca)^{j}ba(cb)^2", 1, 8, (4, 1, 8, 4)),
-    # near r = 1: k = 8 (206 letters) is left out: its window's analysis ran 38 min (10.5 min of CPU) on the
-    # loaded 2-core machine without finishing; k = 7 (182 letters, met by the atlas before the rule) is the prediction
+    # near r = 1: k = 8 and the prediction k = 9 (206 and 230 letters) were met by the atlas's orbits before they
+    # were seeded (their analyses: 308 s and 515 s of CPU); k = 10 has 254 letters, past orbit's 240
     Rule("abca M bc(abcb)^m ac M' ba(cbab)^(m−1) cb, near r = 1",
          "k odd: abca M bc(abcb)^m ac M' ba(cbab)^(m−1)cb; k even: abca N ba(cbab)^m cbac N' bc(abcb)^m "
          "(m = k + ⌈k/2⌉ + 1; M = B_1⋯B_t c B_t⋯B_1, t = ⌊(k−1)/2⌋, B_i = (bac)^2, (bca)^2 alternately, c = bac "
-         "for t even, bca for t odd; N = M(bca)^2; ' exchanges bac and bca)", 1, 6, (0, 1, 0, 4), near_one),
+         "for t even, bca for t odd; N = M(bca)^2; ' exchanges bac and bca)", 1, 8, (0, 1, 0, 4), near_one),
 )
 
 
@@ -520,9 +521,12 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
     """(r records, word records): the r jobs, a word job for each seed (``seeds``: word →
     where known) and for each new certified word as soon as it is met, a horseshoe job
     (:func:`chaos_job`) for each r as soon as its r record is in (its record as the r
-    record's ``chaos``); then ``refine``
+    record's ``chaos``); then up to ``refine``
     rounds of :func:`refinement` inside ``r_range`` (default: the grid's ends), each adding
-    the r it asks for.  Records are appended to ``state`` as they arrive.  ``resume``: the r
+    the r it asks for, until one asks for none.  The word records returned are those of the
+    seeds and of the words the wanted r met: a state's other word records (met at r no round
+    asks for now) stay in the state, unlisted, so a resume and a run from an empty state that
+    end on the same r list the same words.  Records are appended to ``state`` as they arrive.  ``resume``: the r
     records of ``state`` with the same data and collisions, and its word records with the
     same limits, are reused (the rounds are decided from the records, so a resumed atlas
     asks for the same r; a horseshoe record is reused for the same collisions and unresolved orbits;
@@ -547,15 +551,18 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
     lo, hi = r_range or (min(rs), max(rs))
     wanted: list[str] = []
     queue: list[tuple[str, str]] = []
-    seen = set(done_w)
-    total, count = [0], [len(done_w)]
+    asked: set[str] = set()                    # the seeds and the words the wanted r met: the atlas's words
+    total, count = [0], [0]
     sink = state.open("a", encoding="utf-8") if state is not None else None
 
     def want_word(w):
-        if w not in seen:
-            seen.add(w)
+        if w not in asked:
+            asked.add(w)
             total[0] += 1
-            queue.insert(0, ("word", w))          # words first: the longest jobs start early
+            if w in done_w:
+                count[0] += 1
+            else:
+                queue.insert(0, ("word", w))      # words first: the longest jobs start early
 
     def want_chaos(r):
         total[0] += 1
@@ -581,7 +588,6 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
             else:
                 queue.append(("r", r))
 
-    total[0] += len(done_w)
     for w in sources:
         want_word(w)
     want_r(rs)
@@ -635,7 +641,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
             if rounds >= refine:
                 break
             rounds += 1
-            more = refinement([done_r[r] for r in wanted], list(done_w.values()), lo, hi)
+            more = refinement([done_r[r] for r in wanted], [done_w[w] for w in sorted(asked)], lo, hi)
             if not more:
                 break
             want_r(more)
@@ -643,7 +649,7 @@ def run_atlas(rs: list[Fraction], data: list, collisions: int, executor, state=N
         if sink is not None:
             sink.close()
     rows = sorted(({**done_r[r], "chaos": done_c.get(r)} for r in wanted), key=lambda rec: Fraction(rec["r"]))
-    words = sorted(done_w.values(), key=lambda w: (w["length"], w["word"]))
+    words = sorted((done_w[w] for w in asked), key=lambda w: (w["length"], w["word"]))
     for w in words:
         w["source"] = sources.get(w["word"], "met")
     return rows, words

@@ -455,6 +455,24 @@ def test_the_command_on_two_processes_writes_the_atlas_and_resumes(tmp_path, cap
     doc = json.loads(capsys.readouterr().out)
     jsonschema.validate(doc, SCHEMA)
     assert (tmp_path / "atlas.json").read_bytes() == first and doc["summary"]["orbits"] == 9
+    stray = {"kind": "word", "word": "ab" * 130, "compact": "(ab)^130", "length": 260, "outcome": "too long",
+             "attracting": [], "attracting_points": [], "undecided": [], "word_max": 240, "word_seconds": 600}
+    with (tmp_path / "atlas-state.jsonl").open("a") as f:                 # a word met at an r no longer asked for
+        f.write(json.dumps(stray) + "\n")
+    assert cli.main([*argv, "--jobs", "1", "--resume"]) == 0
+    assert (tmp_path / "atlas.json").read_bytes() == first               # kept in the state, not listed
+
+
+def test_the_refinement_runs_until_a_round_asks_for_no_new_r(monkeypatch):
+    asked = []
+
+    def refinement(r_records, word_records, lo, hi):
+        asked.append(len(r_records))
+        return [Fraction(1, 5 + len(asked))] if len(asked) < 3 else []
+    monkeypatch.setattr(atlas, "refinement", refinement)
+    rows, _words = atlas.run_atlas([Fraction(1, 4)], atlas.data_grid(0), 500, Serial(), refine=8,
+                                   r_range=(Fraction(1, 10), Fraction(1, 2)))
+    assert asked == [1, 2, 3] and [r["r"] for r in rows] == ["1/7", "1/6", "1/4"]
 
 
 def test_the_progress_bar_follows_a_total_that_grows():
